@@ -1,0 +1,346 @@
+// pcf_kernel.h: every PCF method of pcfscope, written once for C++ and GLSL (see pcf_prelude.h
+// for the rules this file follows). C++ side: src/kernel/pcf.h. GLSL side: shaders/scene.frag.
+//
+// Conventions (DESIGN.md section 2):
+//   shadow map W x H, depth in [0,1], 0 = near the light; texel (i, j) = column i, row j as
+//   stored; its centre is at uv = ((i + 0.5) / W, (j + 0.5) / H);
+//   texel position of a lookup: p = uv * size - 0.5, base = floor(p), frac = p - base
+//   (GL's bilinear convention); texels outside the map clamp to the edge;
+//   a tap is lit (1) when ref <= depth (GL_LEQUAL), shadowed (0) otherwise;
+//   visibility 1 = fully lit, 0 = fully shadowed.
+
+// Method ids, in the order of DESIGN.md section 3 (the command line's names: src/kernel/methods).
+PCF_CONST int PCF_NEAREST = 0;
+PCF_CONST int PCF_BOX2X2 = 1;
+PCF_CONST int PCF_BILINEAR2X2 = 2;
+PCF_CONST int PCF_HW2X2 = 3;
+PCF_CONST int PCF_NAIVE = 4;
+PCF_CONST int PCF_GATHER = 5;
+PCF_CONST int PCF_HW = 6;
+PCF_CONST int PCF_TENT = 7;
+PCF_CONST int PCF_POISSON = 8;
+PCF_CONST int PCF_METHOD_COUNT = 9;
+
+// What one fetch instruction is, for the trace and the fetch counts.
+PCF_CONST int PCF_FETCH_POINT = 0;   // one texelFetch
+PCF_CONST int PCF_FETCH_LOOKUP = 1;  // a software bilinear lookup: four texelFetch
+PCF_CONST int PCF_FETCH_GATHER = 2;  // one textureGather on the comparison sampler
+PCF_CONST int PCF_FETCH_HW = 3;      // one hardware comparison tap (sampler2DShadow, GL_LINEAR)
+
+// The 16-point Poisson disk of seed 003 (unit radius), scaled by the radius in texels.
+PCF_CONST_ARRAY(vec2, PCF_POISSON_DISK, 16) PCF_ARRAY_BEGIN(vec2, 16)
+    vec2(-0.94201624f, -0.39906216f), vec2(0.94558609f, -0.76890725f),
+    vec2(-0.094184101f, -0.92938870f), vec2(0.34495938f, 0.29387760f),
+    vec2(-0.91588581f, 0.45771432f), vec2(-0.81544232f, -0.87912464f),
+    vec2(-0.38277543f, 0.27676845f), vec2(0.97484398f, 0.75648379f),
+    vec2(0.44323325f, -0.97511554f), vec2(0.53742981f, -0.47373420f),
+    vec2(-0.26496911f, -0.41893023f), vec2(0.79197514f, 0.19090188f),
+    vec2(-0.24188840f, 0.99706507f), vec2(-0.81409955f, 0.91437590f),
+    vec2(0.19984126f, 0.78641367f), vec2(0.14383161f, -0.14100790f)
+PCF_ARRAY_END;
+
+// Per-pixel rotations of the disk: (cos, sin) of k * 22.5 degrees, k = 0..15. A table of
+// literals, not cos() and sin(), so that the CPU and the GPU rotate by the very same floats.
+PCF_CONST_ARRAY(vec2, PCF_ROTATIONS, 16) PCF_ARRAY_BEGIN(vec2, 16)
+    vec2(1.0f, 0.0f), vec2(0.92387953f, 0.38268343f),
+    vec2(0.70710678f, 0.70710678f), vec2(0.38268343f, 0.92387953f),
+    vec2(0.0f, 1.0f), vec2(-0.38268343f, 0.92387953f),
+    vec2(-0.70710678f, 0.70710678f), vec2(-0.92387953f, 0.38268343f),
+    vec2(-1.0f, 0.0f), vec2(-0.92387953f, -0.38268343f),
+    vec2(-0.70710678f, -0.70710678f), vec2(-0.38268343f, -0.92387953f),
+    vec2(0.0f, -1.0f), vec2(0.38268343f, -0.92387953f),
+    vec2(0.70710678f, -0.70710678f), vec2(0.92387953f, -0.38268343f)
+PCF_ARRAY_END;
+
+// What a method needs besides the lookup itself.
+struct PcfParams {
+    int method;     // PCF_NEAREST .. PCF_POISSON
+    int kernel;     // N: 1..8 for pcf-naive, pcf-gather and pcf-hw; 3, 5 or 7 for tent
+    float radius;   // poisson: disk radius in texels (seed 003 uses 1)
+    vec2 rotation;  // poisson: (cos, sin) of the disk's rotation; (1, 0) for none
+};
+
+// Where a lookup falls in texel space.
+struct PcfTexelPos {
+    vec2 p;      // uv * size - 0.5, in texels
+    ivec2 base;  // floor(p): the lower-left texel of the bilinear 2x2
+    vec2 frac;   // p - base, in [0,1): the sub-texel position that weights the lerp
+};
+
+PCF_FN PcfTexelPos pcfTexelPos(vec2 uv, ivec2 size) {
+    PCF_PRECISE vec2 p = uv * vec2(size) - vec2(0.5f);
+    vec2 b = floor(p);
+    return PcfTexelPos(p, ivec2(b), p - b);
+}
+
+PCF_FN ivec2 pcfClampTexel(ivec2 texel, ivec2 size) {
+    return clamp(texel, ivec2(0), size - ivec2(1));
+}
+
+// The depth comparison (GL_LEQUAL): 1 = lit, 0 = shadowed.
+PCF_FN float pcfCompare(float depth, float ref) { return ref <= depth ? 1.0f : 0.0f; }
+
+// Reads one texel (clamped to the edge), compares it, and reports the tap with its weight in
+// the final result.
+PCF_MAP_FN float pcfFetchCompare(Map map, ivec2 texel, float ref, float weight) {
+    ivec2 t = pcfClampTexel(texel, mapSize(map));
+    float depth = fetchDepth(map, t);
+    float lit = pcfCompare(depth, ref);
+    pcfTap(map, t, depth, ref, lit, weight);
+    return lit;
+}
+
+// The bilinear weights of the four texels of a 2x2, row-major: (0,0), (1,0), (0,1), (1,1).
+PCF_FN vec4 pcfBilinearWeights(vec2 f) {
+    return vec4((1.0f - f.x) * (1.0f - f.y), f.x * (1.0f - f.y), (1.0f - f.x) * f.y, f.x * f.y);
+}
+
+// Seed 000: compare the four texels around uv, then lerp the four bits by the sub-texel
+// position: lerp(lerp(b00, b10, fx), lerp(b01, b11, fx), fy). This is what NVIDIA's hardware
+// PCF does, and what pcfscope takes a hardware comparison tap to be. weight is the share of the
+// final result this lookup carries (for the trace only).
+PCF_MAP_FN float pcfBilinearCore(Map map, vec2 uv, float ref, float weight) {
+    PcfTexelPos tp = pcfTexelPos(uv, mapSize(map));
+    vec4 w = pcfBilinearWeights(tp.frac) * weight;
+    float b00 = pcfFetchCompare(map, tp.base, ref, w.x);
+    float b10 = pcfFetchCompare(map, tp.base + ivec2(1, 0), ref, w.y);
+    float b01 = pcfFetchCompare(map, tp.base + ivec2(0, 1), ref, w.z);
+    float b11 = pcfFetchCompare(map, tp.base + ivec2(1, 1), ref, w.w);
+    return mix(mix(b00, b10, tp.frac.x), mix(b01, b11, tp.frac.x), tp.frac.y);
+}
+
+PCF_MAP_FN float pcfBilinearLookup(Map map, vec2 uv, float ref, float weight) {
+    pcfFetch(map, PCF_FETCH_LOOKUP, uv, weight);
+    return pcfBilinearCore(map, uv, ref, weight);
+}
+
+#ifdef __cplusplus
+// On the CPU a hardware comparison tap is modelled exactly as the bilinear 2x2 (DESIGN.md 2).
+template <class Map>
+inline float hwTap(Map map, vec2 uv, float ref, float weight) {
+    return pcfBilinearCore(map, uv, ref, weight);
+}
+
+// On the CPU a comparison gather is four texel comparisons, returned in GL's component order.
+template <class Map>
+inline vec4 gatherCompare(Map map, vec2 uv, float ref, vec4 weights) {
+    PcfTexelPos tp = pcfTexelPos(uv, mapSize(map));
+    float x = pcfFetchCompare(map, tp.base + ivec2(0, 1), ref, weights.x);
+    float y = pcfFetchCompare(map, tp.base + ivec2(1, 1), ref, weights.y);
+    float z = pcfFetchCompare(map, tp.base + ivec2(1, 0), ref, weights.z);
+    float w = pcfFetchCompare(map, tp.base + ivec2(0, 0), ref, weights.w);
+    return vec4(x, y, z, w);
+}
+#endif
+
+PCF_MAP_FN float pcfHwTap(Map map, vec2 uv, float ref, float weight) {
+    pcfFetch(map, PCF_FETCH_HW, uv, weight);
+    return hwTap(map, uv, ref, weight);
+}
+
+// nearest: the one texel the lookup falls in, floor(uv * size). Hard: 0 or 1.
+PCF_MAP_FN float pcfNearest(Map map, vec2 uv, float ref, float weight) {
+    PCF_PRECISE vec2 p = uv * vec2(mapSize(map));
+    pcfFetch(map, PCF_FETCH_POINT, uv, weight);
+    return pcfFetchCompare(map, ivec2(floor(p)), ref, weight);
+}
+
+// box2x2: the bilinear 2x2 texels, averaged without weights: only 0, .25, .5, .75 or 1.
+PCF_MAP_FN float pcfBox2x2(Map map, vec2 uv, float ref) {
+    PcfTexelPos tp = pcfTexelPos(uv, mapSize(map));
+    float sum = 0.0f;
+    for (int j = 0; j < 2; ++j) {
+        for (int i = 0; i < 2; ++i) {
+            pcfFetch(map, PCF_FETCH_POINT, uv, 0.25f);
+            sum += pcfFetchCompare(map, tp.base + ivec2(i, j), ref, 0.25f);
+        }
+    }
+    return sum * 0.25f;
+}
+
+// Offset of lookup k of an N-wide kernel, in texels: k - (N-1)/2 (half texels when N is even).
+PCF_FN float pcfKernelOffset(int k, int n) { return float(k) - 0.5f * float(n - 1); }
+
+// pcf-naive: N x N bilinear lookups one texel apart, averaged (seed 004's loop): 4 N^2 reads.
+PCF_MAP_FN float pcfNaive(Map map, vec2 uv, float ref, int n) {
+    vec2 texelUv = vec2(1.0f) / vec2(mapSize(map));
+    float w = 1.0f / float(n * n);
+    float sum = 0.0f;
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            vec2 offset = vec2(pcfKernelOffset(i, n), pcfKernelOffset(j, n));
+            sum += pcfBilinearLookup(map, uv + offset * texelUv, ref, w);
+        }
+    }
+    return sum * w;
+}
+
+// pcf-hw: the same N x N loop with one hardware comparison tap per lookup (seed 002's loop).
+PCF_MAP_FN float pcfHw(Map map, vec2 uv, float ref, int n) {
+    vec2 texelUv = vec2(1.0f) / vec2(mapSize(map));
+    float w = 1.0f / float(n * n);
+    float sum = 0.0f;
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            vec2 offset = vec2(pcfKernelOffset(i, n), pcfKernelOffset(j, n));
+            sum += pcfHwTap(map, uv + offset * texelUv, ref, w);
+        }
+    }
+    return sum * w;
+}
+
+// Where the N x N lookups of pcf-naive land, as one footprint: all N^2 lookups share one
+// fraction g, and lookup (i, j) has its 2x2 at origin + (i, j). So the (N+1) x (N+1) texels
+// from origin carry, per axis, the weight of seed 001's table generalised to any N:
+//   m = 0: 1 - g      0 < m < N: 1      m = N: g        (then divided by N)
+struct PcfFootprint {
+    ivec2 origin;  // lower-left texel of the (N+1) x (N+1) footprint
+    vec2 frac;     // g: the fraction every lookup of the kernel shares
+};
+
+PCF_FN PcfFootprint pcfKernelFootprint(vec2 uv, ivec2 size, int n) {
+    PCF_PRECISE vec2 q = uv * vec2(size) - vec2(0.5f + 0.5f * float(n - 1));
+    vec2 b = floor(q);
+    return PcfFootprint(ivec2(b), q - b);
+}
+
+// The per-axis weight of footprint texel m (0..N) before the 1/N, for fraction g.
+PCF_FN float pcfFootprintWeight(int m, int n, float g) {
+    float w = 0.0f;
+    if (m < n) w += 1.0f - g;
+    if (m > 0) w += g;
+    return w;
+}
+
+// pcf-gather: the result of pcf-naive from the (N+1)^2 distinct texels, each read once, by
+// ceil((N+1)/2)^2 comparison gathers weighted by the footprint table (seed 001 for N = 3).
+// Each gather is placed at the shared corner of its 2x2 block, so the texture unit's own
+// floor() cannot pick another block.
+PCF_MAP_FN float pcfGather(Map map, vec2 uv, float ref, int n) {
+    ivec2 size = mapSize(map);
+    PcfFootprint fp = pcfKernelFootprint(uv, size, n);
+    float norm = 1.0f / float(n * n);
+    int blocks = (n + 2) / 2;
+    float sum = 0.0f;
+    for (int by = 0; by < blocks; ++by) {
+        for (int bx = 0; bx < blocks; ++bx) {
+            int mx = 2 * bx;
+            int my = 2 * by;
+            float wx0 = pcfFootprintWeight(mx, n, fp.frac.x);
+            float wx1 = mx + 1 <= n ? pcfFootprintWeight(mx + 1, n, fp.frac.x) : 0.0f;
+            float wy0 = pcfFootprintWeight(my, n, fp.frac.y);
+            float wy1 = my + 1 <= n ? pcfFootprintWeight(my + 1, n, fp.frac.y) : 0.0f;
+            // GL's gather order: x = (0,1), y = (1,1), z = (1,0), w = (0,0).
+            vec4 w = vec4(wx0 * wy1, wx1 * wy1, wx1 * wy0, wx0 * wy0) * norm;
+            vec2 corner = vec2(fp.origin + ivec2(mx + 1, my + 1)) / vec2(size);
+            pcfFetch(map, PCF_FETCH_GATHER, corner, 1.0f);
+            vec4 bits = gatherCompare(map, corner, ref, w);
+            sum += dot(bits, w);
+        }
+    }
+    return sum;
+}
+
+// Castano's tent filters (2013; also MJP's Shadows sample): an N x N tent (N = 3, 5, 7) from
+// 4, 9 or 16 hardware taps, each placed between two texels so that the texture unit's lerp
+// produces the right ratio of their weights. Per axis, with q = uv * size, b = floor(q + 0.5),
+// s = q + 0.5 - b in [0,1):
+//   3: w = 3-2s, 1+2s                        o = (2-s)/w0 - 1, s/w1 + 1               D = 16
+//   5: w = 4-3s, 7, 1+3s                     o = (3-2s)/w0 - 2, (3+s)/w1, s/w2 + 2    D = 144
+//   7: w = 5s-6, 11s-28, -(11s+17), -(5s+1)  o = (4s-5)/w0 - 3, (4s-16)/w1 - 1,
+//                                                -(7s+5)/w2 + 1, -s/w3 + 3            D = 2704
+// tap (i, j) samples uv' = (b - 0.5 + (o_i, o_j)) / size with weight w_i w_j / D.
+struct PcfTentAxis {
+    vec4 w;  // tap weights (unused ones 0); the 7x7 weights are all negative, D positive
+    vec4 o;  // tap offsets in texels from b - 0.5
+    int taps;
+};
+
+PCF_FN PcfTentAxis pcfTentAxis(float s, int n) {
+    if (n <= 3) {
+        vec4 w = vec4(3.0f - 2.0f * s, 1.0f + 2.0f * s, 0.0f, 0.0f);
+        vec4 o = vec4((2.0f - s) / w.x - 1.0f, s / w.y + 1.0f, 0.0f, 0.0f);
+        return PcfTentAxis(w, o, 2);
+    }
+    if (n <= 5) {
+        vec4 w = vec4(4.0f - 3.0f * s, 7.0f, 1.0f + 3.0f * s, 0.0f);
+        vec4 o = vec4((3.0f - 2.0f * s) / w.x - 2.0f, (3.0f + s) / w.y, s / w.z + 2.0f, 0.0f);
+        return PcfTentAxis(w, o, 3);
+    }
+    vec4 w = vec4(5.0f * s - 6.0f, 11.0f * s - 28.0f, -(11.0f * s + 17.0f), -(5.0f * s + 1.0f));
+    vec4 o = vec4((4.0f * s - 5.0f) / w.x - 3.0f, (4.0f * s - 16.0f) / w.y - 1.0f,
+                  -(7.0f * s + 5.0f) / w.z + 1.0f, -s / w.w + 3.0f);
+    return PcfTentAxis(w, o, 4);
+}
+
+PCF_FN float pcfTentNorm(int n) {
+    if (n <= 3) return 16.0f;
+    if (n <= 5) return 144.0f;
+    return 2704.0f;
+}
+
+// The tent's own texel position: b = floor(q + 0.5), s = q + 0.5 - b.
+PCF_FN PcfFootprint pcfTentBase(vec2 uv, ivec2 size) {
+    PCF_PRECISE vec2 q = uv * vec2(size) + vec2(0.5f);
+    vec2 b = floor(q);
+    return PcfFootprint(ivec2(b), q - b);
+}
+
+PCF_MAP_FN float pcfTent(Map map, vec2 uv, float ref, int n) {
+    ivec2 size = mapSize(map);
+    PcfFootprint tb = pcfTentBase(uv, size);
+    PcfTentAxis ax = pcfTentAxis(tb.frac.x, n);
+    PcfTentAxis ay = pcfTentAxis(tb.frac.y, n);
+    vec2 texelUv = vec2(1.0f) / vec2(size);
+    vec2 baseUv = (vec2(tb.origin) - vec2(0.5f)) * texelUv;
+    float norm = 1.0f / pcfTentNorm(n);
+    float sum = 0.0f;
+    for (int j = 0; j < ax.taps; ++j) {
+        for (int i = 0; i < ax.taps; ++i) {
+            float w = ax.w[i] * ay.w[j] * norm;
+            vec2 tapUv = baseUv + vec2(ax.o[i], ay.o[j]) * texelUv;
+            sum += w * pcfHwTap(map, tapUv, ref, w);
+        }
+    }
+    return sum;
+}
+
+// Seed 003: 16 point-sampled comparisons on a Poisson disk of the given radius in texels,
+// optionally rotated per pixel (rotation = (cos, sin)).
+PCF_FN vec2 pcfPoissonOffset(int k, float radius, vec2 rotation) {
+    vec2 d = PCF_POISSON_DISK[k];
+    PCF_PRECISE float x = d.x * rotation.x - d.y * rotation.y;
+    PCF_PRECISE float y = d.x * rotation.y + d.y * rotation.x;
+    return vec2(x, y) * radius;
+}
+
+PCF_MAP_FN float pcfPoisson(Map map, vec2 uv, float ref, float radius, vec2 rotation) {
+    vec2 texelUv = vec2(1.0f) / vec2(mapSize(map));
+    float sum = 0.0f;
+    for (int k = 0; k < 16; ++k) {
+        PCF_PRECISE vec2 tapUv = uv + pcfPoissonOffset(k, radius, rotation) * texelUv;
+        sum += pcfNearest(map, tapUv, ref, 1.0f / 16.0f);
+    }
+    return sum * (1.0f / 16.0f);
+}
+
+// A per-pixel rotation for the Poisson disk, from an integer hash of the pixel: the same on
+// every driver because it is integer math and a table lookup.
+PCF_FN vec2 pcfPixelRotation(ivec2 pixel) {
+    uint h = uint(pixel.x) * 73856093u ^ uint(pixel.y) * 19349663u;
+    h = (h ^ (h >> 13u)) * 1274126177u;
+    return PCF_ROTATIONS[int((h >> 16u) & 15u)];
+}
+
+// The one entry point: visibility of a receiver at depth ref (after bias) seen at uv.
+PCF_MAP_FN float pcfFilter(Map map, vec2 uv, float ref, PcfParams prm) {
+    if (prm.method == PCF_NEAREST) return pcfNearest(map, uv, ref, 1.0f);
+    if (prm.method == PCF_BOX2X2) return pcfBox2x2(map, uv, ref);
+    if (prm.method == PCF_BILINEAR2X2) return pcfBilinearLookup(map, uv, ref, 1.0f);
+    if (prm.method == PCF_HW2X2) return pcfHwTap(map, uv, ref, 1.0f);
+    if (prm.method == PCF_NAIVE) return pcfNaive(map, uv, ref, prm.kernel);
+    if (prm.method == PCF_GATHER) return pcfGather(map, uv, ref, prm.kernel);
+    if (prm.method == PCF_HW) return pcfHw(map, uv, ref, prm.kernel);
+    if (prm.method == PCF_TENT) return pcfTent(map, uv, ref, prm.kernel);
+    return pcfPoisson(map, uv, ref, prm.radius, prm.rotation);
+}

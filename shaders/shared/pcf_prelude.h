@@ -1,0 +1,66 @@
+// pcf_prelude.h: the few words that let one source be both C++20 (with GLM) and GLSL 4.50.
+//
+// The PCF math in pcf_kernel.h is compiled twice: by the C++ compiler into the CPU kernel that
+// the inspector, the tests and the trace use, and by the GL driver into the shaders that render
+// the picture. Writing it once is what keeps the two equal (pbrt's PBRT_CPU_GPU idea).
+//
+// Rules for code in shaders/shared/ (both compilers must accept every line):
+//   - float literals carry the f suffix (1.0f), unsigned ones the u suffix;
+//   - single components only (v.x), no swizzles (v.xy) and no bool vectors in interfaces;
+//   - no out-parameters: return a struct, built with Type(a, b, ...) (C++20 aggregate init);
+//   - every function is marked PCF_FN, or PCF_MAP_FN when it reads the shadow map;
+//   - the map is read only through fetchDepth(map, ivec2), hwTap(...) and gatherCompare(...);
+//     each texel read is reported through pcfTap(...), which records on the CPU and is
+//     nothing in GLSL;
+//   - values that feed floor() are PCF_PRECISE, so the GLSL compiler cannot fuse a multiply
+//     and an add and land on the other side of an integer than the CPU does;
+//   - constant arrays use PCF_CONST_ARRAY / PCF_ARRAY_BEGIN / PCF_ARRAY_END;
+//   - no #include here: the C++ wrapper (src/kernel/pcf.h) includes GLM, the shader loader
+//     concatenates the sources in order.
+
+#ifdef __cplusplus
+
+// C++: functions are inline; those that read the map are templates over the map type, so the
+// recording map (tracing) and the plain map (batch rendering) share one source and the plain
+// one compiles the recording away.
+#define PCF_FN inline
+#define PCF_MAP_FN template <class Map> inline
+#define PCF_PRECISE
+#define PCF_CONST inline const
+#define PCF_CONST_ARRAY(T, name, n) inline const T name[n] =
+#define PCF_ARRAY_BEGIN(T, n) {
+#define PCF_ARRAY_END }
+
+#else  // GLSL
+
+#define PCF_FN
+#define PCF_MAP_FN
+#define PCF_PRECISE precise
+#define PCF_CONST const
+#define PCF_CONST_ARRAY(T, name, n) const T name[n] =
+#define PCF_ARRAY_BEGIN(T, n) T[n](
+#define PCF_ARRAY_END )
+
+// In GLSL the map is the depth texture behind a non-comparison sampler (texelFetch), and the
+// same texture is bound a second time behind a comparison sampler (GL_LINEAR,
+// GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL, clamp to edge) for hardware taps and gathers.
+#define Map sampler2D
+uniform sampler2DShadow uPcfCompare;
+
+ivec2 mapSize(Map map) { return textureSize(map, 0); }
+float fetchDepth(Map map, ivec2 texel) { return texelFetch(map, texel, 0).r; }
+void pcfTap(Map map, ivec2 texel, float depth, float ref, float lit, float weight) {}
+void pcfFetch(Map map, int kind, vec2 uv, float weight) {}
+
+// One hardware comparison tap: four comparisons lerped by the texture unit.
+float hwTap(Map map, vec2 uv, float ref, float weight) {
+    return texture(uPcfCompare, vec3(uv, ref));
+}
+
+// One comparison gather: the four bits around uv, in GL's component order
+// x = texel (0,1), y = (1,1), z = (1,0), w = (0,0) relative to the 2x2 block's lower corner.
+vec4 gatherCompare(Map map, vec2 uv, float ref, vec4 weights) {
+    return textureGather(uPcfCompare, uv, ref);
+}
+
+#endif

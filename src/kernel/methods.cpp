@@ -1,0 +1,104 @@
+#include "kernel/methods.h"
+
+#include <array>
+#include <cmath>
+#include <sstream>
+
+namespace pcf {
+
+namespace {
+
+constexpr std::array<MethodInfo, PCF_METHOD_COUNT> METHODS = {{
+    {PCF_NEAREST, "nearest", "the one texel under the lookup, floor(uv * size): hard edges",
+     false, false},
+    {PCF_BOX2X2, "box2x2", "the 2x2 texels at base averaged: only 0, .25, .5, .75, 1", false,
+     false},
+    {PCF_BILINEAR2X2, "bilinear2x2",
+     "the same 4 bits lerped by the sub-texel fraction (NVIDIA's hardware PCF, emulated)", false,
+     false},
+    {PCF_HW2X2, "hw2x2", "one tap of the hardware comparison sampler (sampler2DShadow, linear)",
+     false, false},
+    {PCF_NAIVE, "pcf-naive", "N x N bilinear lookups one texel apart, averaged", true, false},
+    {PCF_GATHER, "pcf-gather",
+     "pcf-naive's result from the (N+1)^2 distinct texels, read by comparison gathers", true,
+     false},
+    {PCF_HW, "pcf-hw", "N x N hardware comparison taps one texel apart, averaged", true, false},
+    {PCF_TENT, "tent", "Castano's N x N tent (N = 3, 5, 7) from 4, 9 or 16 hardware taps", true,
+     false},
+    {PCF_POISSON, "poisson",
+     "16 nearest-texel comparisons on a Poisson disk of radius R texels, optionally rotated",
+     false, true},
+}};
+
+}  // namespace
+
+std::span<const MethodInfo> allMethods() { return METHODS; }
+
+const MethodInfo& methodInfo(int method) { return METHODS.at(static_cast<size_t>(method)); }
+
+std::optional<int> methodFromName(std::string_view name) {
+    for (const MethodInfo& m : METHODS) {
+        if (m.name == name) return m.id;
+    }
+    return std::nullopt;
+}
+
+std::string methodNameList() {
+    std::string list;
+    for (const MethodInfo& m : METHODS) {
+        if (!list.empty()) list += ", ";
+        list += m.name;
+    }
+    return list;
+}
+
+FetchCounts fetchCounts(int method, int kernel) {
+    int n = kernel;
+    switch (method) {
+        case PCF_NEAREST: return {1, 0, 0};
+        case PCF_BOX2X2: return {4, 0, 0};
+        case PCF_BILINEAR2X2: return {4, 0, 0};
+        case PCF_HW2X2: return {4, 0, 1};
+        case PCF_NAIVE: return {4 * n * n, 0, 0};
+        case PCF_GATHER: {
+            int blocks = (n + 2) / 2;  // ceil((N + 1) / 2) per axis
+            return {4 * blocks * blocks, blocks * blocks, 0};
+        }
+        case PCF_HW: return {4 * n * n, 0, n * n};
+        case PCF_TENT: {
+            int taps = n <= 3 ? 4 : n <= 5 ? 9 : 16;
+            return {4 * taps, 0, taps};
+        }
+        default: return {16, 0, 0};
+    }
+}
+
+PcfParams makeParams(int method, int kernel, float radius, vec2 rotation) {
+    return PcfParams{method, kernel, radius, rotation};
+}
+
+std::optional<std::string> validateParams(const PcfParams& prm) {
+    std::ostringstream s;
+    if (prm.method < 0 || prm.method >= PCF_METHOD_COUNT) {
+        s << "unknown method id " << prm.method;
+        return s.str();
+    }
+    const MethodInfo& info = methodInfo(prm.method);
+    if (info.usesKernel && (prm.kernel < MIN_KERNEL || prm.kernel > MAX_KERNEL)) {
+        s << "--kernel " << prm.kernel << " is out of range (" << MIN_KERNEL << ".."
+          << MAX_KERNEL << ")";
+        return s.str();
+    }
+    if (prm.method == PCF_TENT && prm.kernel != 3 && prm.kernel != 5 && prm.kernel != 7) {
+        s << "tent takes --kernel 3, 5 or 7, not " << prm.kernel;
+        return s.str();
+    }
+    if (prm.method == PCF_POISSON && !(std::isfinite(prm.radius) && prm.radius > 0.0f &&
+                                       prm.radius <= 64.0f)) {
+        s << "--radius " << prm.radius << " is out of range (0, 64] texels";
+        return s.str();
+    }
+    return std::nullopt;
+}
+
+}  // namespace pcf

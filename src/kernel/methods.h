@@ -1,0 +1,49 @@
+// methods.h: the PCF methods by name (the command line's ids), what each reads, and the
+// checks on their parameters.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "kernel/pcf.h"
+
+namespace pcf {
+
+struct MethodInfo {
+    int id;               // PCF_NEAREST .. PCF_POISSON
+    std::string_view name;     // the command line's id, e.g. "pcf-gather"
+    std::string_view summary;  // one line for `pcfscope methods`
+    bool usesKernel;      // takes --kernel N
+    bool usesRadius;      // takes --radius R
+};
+
+std::span<const MethodInfo> allMethods();
+const MethodInfo& methodInfo(int method);
+std::optional<int> methodFromName(std::string_view name);
+// "nearest, box2x2, ..." for error messages.
+std::string methodNameList();
+
+// What the GPU issues for one lookup: texel reads (every texel any instruction touches, so a
+// hardware tap or a gather counts 4), gathers and hardware taps.
+struct FetchCounts {
+    int texels;
+    int gathers;
+    int hwTaps;
+    bool operator==(const FetchCounts&) const = default;
+};
+FetchCounts fetchCounts(int method, int kernel);
+
+constexpr int MIN_KERNEL = 1;
+constexpr int MAX_KERNEL = 8;
+
+// Parameters with the defaults of DESIGN.md: N = 3, radius 1 texel, no rotation.
+PcfParams makeParams(int method, int kernel = 3, float radius = 1.0f,
+                     vec2 rotation = vec2(1.0f, 0.0f));
+
+// Why these parameters are not valid for their method ("tent takes --kernel 3, 5 or 7, not 4"),
+// or nullopt when they are.
+std::optional<std::string> validateParams(const PcfParams& prm);
+
+}  // namespace pcf

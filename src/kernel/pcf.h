@@ -1,0 +1,91 @@
+// pcf.h: the CPU side of the shared PCF kernel. The math itself is in
+// shaders/shared/pcf_kernel.h, compiled here as C++ and by the GL driver as GLSL.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "kernel/shadow_map.h"
+
+namespace pcf {
+
+using glm::clamp;
+using glm::dot;
+using glm::floor;
+using glm::ivec2;
+using glm::mix;
+using glm::uint;
+using glm::vec2;
+using glm::vec3;
+using glm::vec4;
+
+// The map as the batch path sees it: reads depths, records nothing. Cheap to copy.
+struct PlainMap {
+    const float* mDepths;
+    ivec2 mSize;
+};
+
+// The map as the tracer sees it: the same reads, and every tap and fetch written down.
+struct TapRecord {
+    ivec2 texel;   // the texel read (after clamping to the edge)
+    float depth;   // its stored depth
+    float ref;     // the receiver depth it was compared with
+    float lit;     // the comparison bit: 1 lit, 0 shadowed
+    float weight;  // its share of the final visibility
+    int fetch;     // index of the fetch instruction that read it
+};
+
+struct FetchRecord {
+    int kind;      // PCF_FETCH_POINT, _LOOKUP, _GATHER or _HW
+    vec2 uv;       // where the instruction sampled
+    float weight;  // the weight the method gives the instruction's result
+};
+
+struct Recording {
+    std::vector<TapRecord> taps;
+    std::vector<FetchRecord> fetches;
+};
+
+struct RecordingMap {
+    const float* mDepths;
+    ivec2 mSize;
+    Recording* mRecording;
+};
+
+// The hooks pcf_kernel.h reads the map through (see pcf_prelude.h). Texels arrive clamped.
+inline ivec2 mapSize(const PlainMap& m) { return m.mSize; }
+inline ivec2 mapSize(const RecordingMap& m) { return m.mSize; }
+inline float fetchDepth(const PlainMap& m, ivec2 t) { return m.mDepths[t.y * m.mSize.x + t.x]; }
+inline float fetchDepth(const RecordingMap& m, ivec2 t) {
+    return m.mDepths[t.y * m.mSize.x + t.x];
+}
+inline void pcfTap(const PlainMap&, ivec2, float, float, float, float) {}
+inline void pcfTap(const RecordingMap& m, ivec2 texel, float depth, float ref, float lit,
+                   float weight) {
+    int fetch = static_cast<int>(m.mRecording->fetches.size()) - 1;
+    m.mRecording->taps.push_back({texel, depth, ref, lit, weight, fetch});
+}
+inline void pcfFetch(const PlainMap&, int, vec2, float) {}
+inline void pcfFetch(const RecordingMap& m, int kind, vec2 uv, float weight) {
+    m.mRecording->fetches.push_back({kind, uv, weight});
+}
+
+#include "shaders/shared/pcf_prelude.h"
+#include "shaders/shared/pcf_kernel.h"
+
+// Visibility of one lookup on the CPU, nothing recorded (the batch path).
+inline float filterVisibility(const ShadowMap& map, vec2 uv, float ref, const PcfParams& prm) {
+    return pcfFilter(PlainMap{map.depths().data(), map.size()}, uv, ref, prm);
+}
+
+// Visibility of one lookup with every tap and fetch recorded (the tracing path: the same code).
+inline float filterRecorded(const ShadowMap& map, vec2 uv, float ref, const PcfParams& prm,
+                            Recording& out) {
+    return pcfFilter(RecordingMap{map.depths().data(), map.size(), &out}, uv, ref, prm);
+}
+
+}  // namespace pcf
