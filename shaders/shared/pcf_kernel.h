@@ -95,18 +95,24 @@ PCF_FN vec4 pcfBilinearWeights(vec2 f) {
     return vec4((1.0f - f.x) * (1.0f - f.y), f.x * (1.0f - f.y), (1.0f - f.x) * f.y, f.x * f.y);
 }
 
-// Seed 000: compare the four texels around uv, then lerp the four bits by the sub-texel
-// position: lerp(lerp(b00, b10, fx), lerp(b01, b11, fx), fy). This is what NVIDIA's hardware
-// PCF does, and what pcfscope takes a hardware comparison tap to be. weight is the share of the
-// final result this lookup carries (for the trace only).
+// Seed 000: compare the four texels around texel position p, then lerp the four bits by the
+// sub-texel position: lerp(lerp(b00, b10, fx), lerp(b01, b11, fx), fy). This is what NVIDIA's
+// hardware PCF does, and what pcfscope takes a hardware comparison tap to be. weight is the
+// share of the final result this lookup carries (for the trace only).
+PCF_MAP_FN float pcfBilinearAt(Map map, vec2 p, float ref, float weight) {
+    vec2 b = floor(p);
+    ivec2 base = ivec2(b);
+    vec2 f = p - b;
+    vec4 w = pcfBilinearWeights(f) * weight;
+    float b00 = pcfFetchCompare(map, base, ref, w.x);
+    float b10 = pcfFetchCompare(map, base + ivec2(1, 0), ref, w.y);
+    float b01 = pcfFetchCompare(map, base + ivec2(0, 1), ref, w.z);
+    float b11 = pcfFetchCompare(map, base + ivec2(1, 1), ref, w.w);
+    return mix(mix(b00, b10, f.x), mix(b01, b11, f.x), f.y);
+}
+
 PCF_MAP_FN float pcfBilinearCore(Map map, vec2 uv, float ref, float weight) {
-    PcfTexelPos tp = pcfTexelPos(uv, mapSize(map));
-    vec4 w = pcfBilinearWeights(tp.frac) * weight;
-    float b00 = pcfFetchCompare(map, tp.base, ref, w.x);
-    float b10 = pcfFetchCompare(map, tp.base + ivec2(1, 0), ref, w.y);
-    float b01 = pcfFetchCompare(map, tp.base + ivec2(0, 1), ref, w.z);
-    float b11 = pcfFetchCompare(map, tp.base + ivec2(1, 1), ref, w.w);
-    return mix(mix(b00, b10, tp.frac.x), mix(b01, b11, tp.frac.x), tp.frac.y);
+    return pcfBilinearAt(map, pcfTexelPos(uv, mapSize(map)).p, ref, weight);
 }
 
 PCF_MAP_FN float pcfBilinearLookup(Map map, vec2 uv, float ref, float weight) {
@@ -162,14 +168,20 @@ PCF_MAP_FN float pcfBox2x2(Map map, vec2 uv, float ref) {
 PCF_FN float pcfKernelOffset(int k, int n) { return float(k) - 0.5f * float(n - 1); }
 
 // pcf-naive: N x N bilinear lookups one texel apart, averaged (seed 004's loop): 4 N^2 reads.
+// The lookups step in texel space (p + offset), so every lookup has the fraction of p exactly
+// and the sum equals pcf-gather's to float rounding.
 PCF_MAP_FN float pcfNaive(Map map, vec2 uv, float ref, int n) {
-    vec2 texelUv = vec2(1.0f) / vec2(mapSize(map));
+    ivec2 size = mapSize(map);
+    vec2 p = pcfTexelPos(uv, size).p;
+    vec2 texelUv = vec2(1.0f) / vec2(size);
     float w = 1.0f / float(n * n);
     float sum = 0.0f;
     for (int j = 0; j < n; ++j) {
         for (int i = 0; i < n; ++i) {
             vec2 offset = vec2(pcfKernelOffset(i, n), pcfKernelOffset(j, n));
-            sum += pcfBilinearLookup(map, uv + offset * texelUv, ref, w);
+            PCF_PRECISE vec2 pk = p + offset;
+            pcfFetch(map, PCF_FETCH_LOOKUP, uv + offset * texelUv, w);
+            sum += pcfBilinearAt(map, pk, ref, w);
         }
     }
     return sum * w;
@@ -199,7 +211,7 @@ struct PcfFootprint {
 };
 
 PCF_FN PcfFootprint pcfKernelFootprint(vec2 uv, ivec2 size, int n) {
-    PCF_PRECISE vec2 q = uv * vec2(size) - vec2(0.5f + 0.5f * float(n - 1));
+    PCF_PRECISE vec2 q = pcfTexelPos(uv, size).p + vec2(pcfKernelOffset(0, n));
     vec2 b = floor(q);
     return PcfFootprint(ivec2(b), q - b);
 }
@@ -333,14 +345,27 @@ PCF_FN vec2 pcfPixelRotation(ivec2 pixel) {
 }
 
 // The one entry point: visibility of a receiver at depth ref (after bias) seen at uv.
+// Weighted sums can land an ulp above 1; the result is clamped to [0,1] on both sides.
 PCF_MAP_FN float pcfFilter(Map map, vec2 uv, float ref, PcfParams prm) {
-    if (prm.method == PCF_NEAREST) return pcfNearest(map, uv, ref, 1.0f);
-    if (prm.method == PCF_BOX2X2) return pcfBox2x2(map, uv, ref);
-    if (prm.method == PCF_BILINEAR2X2) return pcfBilinearLookup(map, uv, ref, 1.0f);
-    if (prm.method == PCF_HW2X2) return pcfHwTap(map, uv, ref, 1.0f);
-    if (prm.method == PCF_NAIVE) return pcfNaive(map, uv, ref, prm.kernel);
-    if (prm.method == PCF_GATHER) return pcfGather(map, uv, ref, prm.kernel);
-    if (prm.method == PCF_HW) return pcfHw(map, uv, ref, prm.kernel);
-    if (prm.method == PCF_TENT) return pcfTent(map, uv, ref, prm.kernel);
-    return pcfPoisson(map, uv, ref, prm.radius, prm.rotation);
+    float v;
+    if (prm.method == PCF_NEAREST) {
+        v = pcfNearest(map, uv, ref, 1.0f);
+    } else if (prm.method == PCF_BOX2X2) {
+        v = pcfBox2x2(map, uv, ref);
+    } else if (prm.method == PCF_BILINEAR2X2) {
+        v = pcfBilinearLookup(map, uv, ref, 1.0f);
+    } else if (prm.method == PCF_HW2X2) {
+        v = pcfHwTap(map, uv, ref, 1.0f);
+    } else if (prm.method == PCF_NAIVE) {
+        v = pcfNaive(map, uv, ref, prm.kernel);
+    } else if (prm.method == PCF_GATHER) {
+        v = pcfGather(map, uv, ref, prm.kernel);
+    } else if (prm.method == PCF_HW) {
+        v = pcfHw(map, uv, ref, prm.kernel);
+    } else if (prm.method == PCF_TENT) {
+        v = pcfTent(map, uv, ref, prm.kernel);
+    } else {
+        v = pcfPoisson(map, uv, ref, prm.radius, prm.rotation);
+    }
+    return clamp(v, 0.0f, 1.0f);
 }

@@ -1,0 +1,518 @@
+#include "kernel/trace.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+namespace pcf {
+
+float WeightGrid::at(ivec2 texel) const {
+    ivec2 local = texel - origin;
+    if (local.x < 0 || local.y < 0 || local.x >= size.x || local.y >= size.y) return 0.0f;
+    return values[static_cast<size_t>(local.y) * size.x + local.x];
+}
+
+std::string formatNumber(float value) {
+    if (value == 0.0f) return "0";  // also folds -0
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4f", static_cast<double>(value));
+    std::string s = buf;
+    while (!s.empty() && s.back() == '0') s.pop_back();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    if (s == "-0") s = "0";
+    return s;
+}
+
+namespace {
+
+std::string num(float v) { return formatNumber(v); }
+std::string pair(vec2 v) { return "(" + num(v.x) + ", " + num(v.y) + ")"; }
+std::string pair(ivec2 v) {
+    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ")";
+}
+std::string bit(float lit) { return lit >= 0.5f ? "1" : "0"; }
+
+WeightGrid mergeWeights(const std::vector<TapRecord>& taps) {
+    WeightGrid grid;
+    if (taps.empty()) return grid;
+    ivec2 lo = taps.front().texel;
+    ivec2 hi = lo;
+    for (const TapRecord& t : taps) {
+        lo = glm::min(lo, t.texel);
+        hi = glm::max(hi, t.texel);
+    }
+    grid.origin = lo;
+    grid.size = hi - lo + ivec2(1);
+    grid.values.assign(static_cast<size_t>(grid.size.x) * grid.size.y, 0.0f);
+    for (const TapRecord& t : taps) {
+        ivec2 local = t.texel - lo;
+        grid.values[static_cast<size_t>(local.y) * grid.size.x + local.x] += t.weight;
+    }
+    return grid;
+}
+
+FetchCounts countFetches(const Trace& tr) {
+    FetchCounts c{static_cast<int>(tr.taps.size()), 0, 0};
+    for (const FetchRecord& f : tr.fetches) {
+        if (f.kind == PCF_FETCH_GATHER) ++c.gathers;
+        if (f.kind == PCF_FETCH_HW) ++c.hwTaps;
+    }
+    return c;
+}
+
+// The taps a fetch instruction read, in read order.
+std::vector<TapRecord> tapsOf(const Trace& tr, int fetch) {
+    std::vector<TapRecord> out;
+    for (const TapRecord& t : tr.taps) {
+        if (t.fetch == fetch) out.push_back(t);
+    }
+    return out;
+}
+
+std::string tapLine(const TapRecord& t) {
+    std::string cmp = t.lit >= 0.5f ? " <= " : " > ";
+    return "texel " + pair(t.texel) + ": depth " + num(t.depth) + ", ref " + num(t.ref) + cmp +
+           num(t.depth) + " -> " + (t.lit >= 0.5f ? "lit (1)" : "shadowed (0)");
+}
+
+// The value one fetch instruction returned, rebuilt from its taps: sum(w * lit) / sum(w).
+// For a bilinear lookup or a hardware tap that is the lerped result.
+float fetchValue(const std::vector<TapRecord>& taps, float fetchWeight) {
+    float sum = 0.0f;
+    for (const TapRecord& t : taps) sum += t.weight * t.lit;
+    return fetchWeight > 0.0f ? sum / fetchWeight : 0.0f;
+}
+
+void addStep(Trace& tr, std::string title, std::string text) {
+    tr.steps.push_back({std::move(title), std::move(text)});
+}
+
+void stepProject(Trace& tr) {
+    std::ostringstream s;
+    s << "The receiver point under this pixel projects to uv = " << pair(tr.uv) << " in the "
+      << tr.mapSize.x << " x " << tr.mapSize.y << " shadow map, at light depth z = " << num(tr.z)
+      << ". ";
+    if (tr.ref == tr.z) {
+        s << "No bias: the comparison depth is ref = z = " << num(tr.ref) << ".";
+    } else {
+        s << "After bias the comparison depth is ref = " << num(tr.ref) << " (z "
+          << (tr.ref < tr.z ? "- " : "+ ") << num(std::fabs(tr.z - tr.ref)) << ").";
+    }
+    addStep(tr, "Project the pixel into the shadow map", s.str());
+}
+
+void stepTexelPosition(Trace& tr) {
+    std::ostringstream s;
+    s << "Texel centres sit at half-integers, so the lookup's texel position is p = uv * size - "
+         "0.5 = ("
+      << num(tr.uv.x) << " * " << tr.mapSize.x << " - 0.5, " << num(tr.uv.y) << " * "
+      << tr.mapSize.y << " - 0.5) = " << pair(tr.pos.p) << ". base = floor(p) = "
+      << pair(tr.pos.base) << " is the lower corner of the 2x2 texels around the point; frac = p - "
+         "base = "
+      << pair(tr.pos.frac) << " is where the point sits between their centres.";
+    addStep(tr, "Find the texel position and the sub-texel fraction", s.str());
+}
+
+void stepTapList(Trace& tr, const std::string& title, const std::string& intro) {
+    std::ostringstream s;
+    s << intro;
+    for (const TapRecord& t : tr.taps) s << "\n  " << tapLine(t);
+    addStep(tr, title, s.str());
+}
+
+void explainNearest(Trace& tr) {
+    const TapRecord& t = tr.taps.front();
+    PCF_PRECISE vec2 p = tr.uv * vec2(tr.mapSize);
+    std::ostringstream s;
+    s << "No filtering: the point falls in texel floor(uv * size) = floor" << pair(p) << " = "
+      << pair(t.texel) << ". One comparison decides: " << tapLine(t) << ".";
+    addStep(tr, "Read the one texel under the point", s.str());
+    addStep(tr, "Result",
+            "visibility = " + num(tr.visibility) +
+                ". Every pixel that lands in the same texel gets the same bit, so the shadow "
+                "edge follows the texel grid: hard and blocky.");
+}
+
+void explainBox(Trace& tr) {
+    stepTapList(tr, "Compare the 2x2 texels",
+                "The four texels at base " + pair(tr.pos.base) +
+                    " are each compared with ref:");
+    std::ostringstream s;
+    s << "visibility = (";
+    for (size_t k = 0; k < tr.taps.size(); ++k) s << (k ? " + " : "") << bit(tr.taps[k].lit);
+    s << ") / 4 = " << num(tr.visibility)
+      << ". The fraction " << pair(tr.pos.frac)
+      << " is ignored: four bits can only average to 0, .25, .5, .75 or 1, so the penumbra "
+         "comes in five flat steps.";
+    addStep(tr, "Average the bits", s.str());
+}
+
+void explainBilinear(Trace& tr, bool hardware) {
+    std::string intro = hardware
+        ? "One texture instruction on the comparison sampler: the texture unit reads the 2x2 "
+          "texels at base " + pair(tr.pos.base) + ", compares each with ref and lerps the bits. "
+          "pcfscope models it exactly as bilinear2x2 (real GPUs round the lerp weights, often to "
+          "8 bits). The four comparisons:"
+        : "The four texels at base " + pair(tr.pos.base) + " are each compared with ref:";
+    stepTapList(tr, hardware ? "One hardware comparison tap" : "Compare the 2x2 texels", intro);
+    const std::vector<TapRecord>& t = tr.taps;
+    float fx = tr.pos.frac.x;
+    float fy = tr.pos.frac.y;
+    float row0 = glm::mix(t[0].lit, t[1].lit, fx);
+    float row1 = glm::mix(t[2].lit, t[3].lit, fx);
+    std::ostringstream s;
+    s << "Along x by fx = " << num(fx) << ": row " << t[0].texel.y << ": lerp(" << bit(t[0].lit)
+      << ", " << bit(t[1].lit) << ", " << num(fx) << ") = " << num(row0) << "; row "
+      << t[2].texel.y << ": lerp(" << bit(t[2].lit) << ", " << bit(t[3].lit) << ", " << num(fx)
+      << ") = " << num(row1) << ".\nAlong y by fy = " << num(fy) << ": lerp(" << num(row0)
+      << ", " << num(row1) << ", " << num(fy) << ") = " << num(tr.visibility) << ".";
+    addStep(tr, "Lerp the bits by the sub-texel fraction", s.str());
+    std::ostringstream w;
+    w << "The same as weighting each bit by the area opposite it: visibility = ";
+    for (size_t k = 0; k < 4; ++k) {
+        w << (k ? " + " : "") << num(t[k].weight) << " * " << bit(t[k].lit);
+    }
+    w << " = " << num(tr.visibility)
+      << ". The result now slides smoothly with the point's position inside the texel.";
+    addStep(tr, "Result", w.str());
+}
+
+std::string weightTable(const Trace& tr, float scale) {
+    std::ostringstream s;
+    const WeightGrid& g = tr.weights;
+    for (int j = 0; j < g.size.y; ++j) {
+        s << "\n  row " << g.origin.y + j << ":";
+        for (int i = 0; i < g.size.x; ++i) {
+            s << " " << num(g.values[static_cast<size_t>(j) * g.size.x + i] * scale);
+        }
+    }
+    return s.str();
+}
+
+void stepSum(Trace& tr) {
+    // Merge duplicates: one term per distinct texel, in the order first read.
+    std::map<std::pair<int, int>, size_t> index;
+    std::vector<std::pair<TapRecord, float>> terms;  // first tap, merged weight
+    for (const TapRecord& t : tr.taps) {
+        auto key = std::make_pair(t.texel.x, t.texel.y);
+        auto it = index.find(key);
+        if (it == index.end()) {
+            index[key] = terms.size();
+            terms.push_back({t, t.weight});
+        } else {
+            terms[it->second].second += t.weight;
+        }
+    }
+    std::ostringstream s;
+    s << "visibility = sum(weight * bit) =";
+    bool first = true;
+    for (const auto& [t, w] : terms) {
+        if (w == 0.0f) continue;
+        s << (first ? " " : " + ") << num(w) << "*" << bit(t.lit);
+        first = false;
+    }
+    s << " = " << num(tr.visibility) << "  (1 = fully lit, 0 = fully shadowed).";
+    addStep(tr, "Result", s.str());
+}
+
+void explainKernelLoop(Trace& tr, bool hardware) {
+    int n = tr.params.kernel;
+    std::ostringstream head;
+    head << n << " x " << n << (hardware ? " hardware comparison taps" : " bilinear lookups")
+         << " at texel offsets k - (N-1)/2 = " << num(pcfKernelOffset(0, n)) << " .. "
+         << num(pcfKernelOffset(n - 1, n))
+         << " around the point, each weighted 1/" << n * n << ":";
+    std::ostringstream sum;
+    for (size_t f = 0; f < tr.fetches.size(); ++f) {
+        const FetchRecord& fr = tr.fetches[f];
+        std::vector<TapRecord> taps = tapsOf(tr, static_cast<int>(f));
+        int i = static_cast<int>(f) % n;
+        int j = static_cast<int>(f) / n;
+        float v = fetchValue(taps, fr.weight);
+        head << "\n  offset " << pair(vec2(pcfKernelOffset(i, n), pcfKernelOffset(j, n)))
+             << ": base " << pair(taps.front().texel) << ", bits " << bit(taps[0].lit)
+             << bit(taps[1].lit) << bit(taps[2].lit) << bit(taps[3].lit) << " -> "
+             << num(v);
+        sum << (f ? " + " : "") << num(v);
+    }
+    addStep(tr, hardware ? "Take the N x N hardware taps" : "Take the N x N bilinear lookups",
+            head.str());
+    std::ostringstream avg;
+    avg << "visibility = (" << sum.str() << ") / " << n * n << " = " << num(tr.visibility) << ".";
+    addStep(tr, "Average the lookups", avg.str());
+    std::ostringstream reads;
+    int distinct = tr.weights.size.x * tr.weights.size.y;
+    reads << "The loop read " << tr.counts.texels << " texels"
+          << (hardware ? " (4 per tap, inside the texture unit)" : "") << ", but only "
+          << distinct
+          << " are distinct: neighbouring lookups share texels. Merged, each texel's weight "
+             "(times "
+          << n * n << ") is:" << weightTable(tr, static_cast<float>(n * n))
+          << "\npcf-gather reads each of them once and gives the same result.";
+    addStep(tr, "Count the reads", reads.str());
+}
+
+void explainGather(Trace& tr) {
+    int n = tr.params.kernel;
+    PcfFootprint fp = pcfKernelFootprint(tr.uv, tr.mapSize, n);
+    std::ostringstream s;
+    s << "All " << n * n << " lookups of pcf-naive share one fraction. Footprint position q = uv "
+         "* size - 0.5 - (N-1)/2 = "
+      << pair(tr.uv * vec2(tr.mapSize) - vec2(0.5f + 0.5f * float(n - 1)))
+      << ", origin = floor(q) = " << pair(fp.origin) << ", g = q - origin = " << pair(fp.frac)
+      << ". Per axis the " << n + 1 << " texels weigh (1-g, 1, ..., 1, g) / " << n
+      << ", so the table (times " << n * n << ") is:" << weightTable(tr, float(n * n));
+    addStep(tr, "Build the weight table", s.str());
+    std::ostringstream g;
+    g << tr.counts.gathers << " comparison gathers cover the " << n + 1 << " x " << n + 1
+      << " texels, 2x2 each; a gather returns its bits in GL's order x = (0,1), y = (1,1), "
+         "z = (1,0), w = (0,0):";
+    for (size_t f = 0; f < tr.fetches.size(); ++f) {
+        std::vector<TapRecord> taps = tapsOf(tr, static_cast<int>(f));
+        g << "\n  gather at texel " << pair(taps.back().texel) << ": bits";
+        for (const TapRecord& t : taps) g << " " << bit(t.lit);
+        g << ", weights";
+        for (const TapRecord& t : taps) g << " " << num(t.weight);
+    }
+    addStep(tr, "Gather the texels", g.str());
+    stepSum(tr);
+}
+
+void explainTent(Trace& tr) {
+    int n = tr.params.kernel;
+    PcfFootprint tb = pcfTentBase(tr.uv, tr.mapSize);
+    PcfTentAxis ax = pcfTentAxis(tb.frac.x, n);
+    PcfTentAxis ay = pcfTentAxis(tb.frac.y, n);
+    float d = pcfTentNorm(n);
+    std::ostringstream s;
+    s << "q = uv * size = " << pair(tr.uv * vec2(tr.mapSize)) << ", b = floor(q + 0.5) = "
+      << pair(tb.origin) << ", (s, t) = q + 0.5 - b = " << pair(tb.frac) << ".\n  x weights:";
+    for (int i = 0; i < ax.taps; ++i) s << " " << num(ax.w[i]);
+    s << "  offsets:";
+    for (int i = 0; i < ax.taps; ++i) s << " " << num(ax.o[i]);
+    s << "\n  y weights:";
+    for (int i = 0; i < ay.taps; ++i) s << " " << num(ay.w[i]);
+    s << "  offsets:";
+    for (int i = 0; i < ay.taps; ++i) s << " " << num(ay.o[i]);
+    s << "\nEach tap sits between two texels at the spot where the texture unit's lerp gives "
+         "them the ratio of weights the tent wants; tap (i, j) weighs w_i * w_j / "
+      << num(d) << ".";
+    addStep(tr, "Place the tent's taps", s.str());
+    std::ostringstream t;
+    t << ax.taps * ay.taps << " hardware comparison taps:";
+    std::ostringstream sum;
+    for (size_t f = 0; f < tr.fetches.size(); ++f) {
+        const FetchRecord& fr = tr.fetches[f];
+        float v = fetchValue(tapsOf(tr, static_cast<int>(f)), fr.weight);
+        t << "\n  uv " << pair(fr.uv) << ": value " << num(v) << ", weight " << num(fr.weight);
+        sum << (f ? " + " : "") << num(fr.weight) << "*" << num(v);
+    }
+    addStep(tr, "Take the hardware taps", t.str());
+    std::ostringstream w;
+    w << "Merged, the taps weigh the texels (times " << num(d) << "):"
+      << weightTable(tr, d) << "\nvisibility = " << sum.str() << " = " << num(tr.visibility)
+      << ".";
+    addStep(tr, "Result", w.str());
+}
+
+void explainPoisson(Trace& tr) {
+    std::ostringstream s;
+    float angle = std::atan2(tr.params.rotation.y, tr.params.rotation.x) * 57.2957795f;
+    s << "16 points of a fixed Poisson disk, radius " << num(tr.params.radius)
+      << " texels, rotated by " << num(angle)
+      << " degrees; each point reads the nearest texel (no lerp):";
+    int lit = 0;
+    for (size_t k = 0; k < tr.taps.size(); ++k) {
+        const TapRecord& t = tr.taps[k];
+        vec2 off = pcfPoissonOffset(static_cast<int>(k), tr.params.radius, tr.params.rotation);
+        s << "\n  offset " << pair(off) << " -> " << tapLine(t);
+        if (t.lit >= 0.5f) ++lit;
+    }
+    addStep(tr, "Compare the disk's points", s.str());
+    addStep(tr, "Result",
+            "visibility = " + std::to_string(lit) + " lit / 16 = " + num(tr.visibility) +
+                ". With 16 samples the result has 17 levels; rotating the disk per pixel trades "
+                "banding for noise.");
+}
+
+}  // namespace
+
+float weightedTapSum(const Trace& trace) {
+    float sum = 0.0f;
+    for (const TapRecord& t : trace.taps) sum += t.weight * t.lit;
+    return sum;
+}
+
+Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm) {
+    Trace tr;
+    tr.params = prm;
+    tr.mapSize = map.size();
+    tr.uv = uv;
+    tr.z = z;
+    tr.ref = ref;
+    tr.pos = pcfTexelPos(uv, map.size());
+    Recording rec;
+    tr.visibility = filterRecorded(map, uv, ref, prm, rec);
+    tr.taps = std::move(rec.taps);
+    tr.fetches = std::move(rec.fetches);
+    tr.weights = mergeWeights(tr.taps);
+    tr.counts = countFetches(tr);
+
+    stepProject(tr);
+    switch (prm.method) {
+        case PCF_NEAREST: explainNearest(tr); break;
+        case PCF_BOX2X2:
+            stepTexelPosition(tr);
+            explainBox(tr);
+            break;
+        case PCF_BILINEAR2X2:
+        case PCF_HW2X2:
+            stepTexelPosition(tr);
+            explainBilinear(tr, prm.method == PCF_HW2X2);
+            break;
+        case PCF_NAIVE:
+        case PCF_HW:
+            stepTexelPosition(tr);
+            explainKernelLoop(tr, prm.method == PCF_HW);
+            break;
+        case PCF_GATHER: explainGather(tr); break;
+        case PCF_TENT: explainTent(tr); break;
+        default: explainPoisson(tr); break;
+    }
+    return tr;
+}
+
+namespace {
+
+// JSON numbers: enough digits to round-trip a float.
+std::string jnum(float v) {
+    if (!std::isfinite(v)) return "null";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
+    return buf;
+}
+std::string jvec(vec2 v) { return "[" + jnum(v.x) + "," + jnum(v.y) + "]"; }
+std::string jvec(ivec2 v) { return "[" + std::to_string(v.x) + "," + std::to_string(v.y) + "]"; }
+std::string jstr(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        switch (c) {
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\n': out += "\\n"; break;
+            case '\t': out += "\\t"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
+                    out += buf;
+                } else {
+                    out += c;
+                }
+        }
+    }
+    return out + "\"";
+}
+
+const char* fetchKindName(int kind) {
+    switch (kind) {
+        case PCF_FETCH_POINT: return "texel";
+        case PCF_FETCH_LOOKUP: return "bilinear";
+        case PCF_FETCH_GATHER: return "gather";
+        default: return "hw";
+    }
+}
+
+}  // namespace
+
+std::string traceToJson(const Trace& tr) {
+    std::ostringstream s;
+    s << "{\"method\":" << jstr(std::string(methodInfo(tr.params.method).name))
+      << ",\"kernel\":" << tr.params.kernel << ",\"radius\":" << jnum(tr.params.radius)
+      << ",\"map_size\":" << jvec(tr.mapSize) << ",\"uv\":" << jvec(tr.uv)
+      << ",\"z\":" << jnum(tr.z) << ",\"ref\":" << jnum(tr.ref) << ",\"texel\":" << jvec(tr.pos.p)
+      << ",\"base\":" << jvec(tr.pos.base) << ",\"frac\":" << jvec(tr.pos.frac) << ",\"taps\":[";
+    for (size_t k = 0; k < tr.taps.size(); ++k) {
+        const TapRecord& t = tr.taps[k];
+        s << (k ? "," : "") << "{\"texel\":" << jvec(t.texel) << ",\"depth\":" << jnum(t.depth)
+          << ",\"ref\":" << jnum(t.ref) << ",\"lit\":" << (t.lit >= 0.5f ? 1 : 0)
+          << ",\"weight\":" << jnum(t.weight) << ",\"fetch\":" << t.fetch << "}";
+    }
+    s << "],\"fetch_list\":[";
+    for (size_t k = 0; k < tr.fetches.size(); ++k) {
+        const FetchRecord& f = tr.fetches[k];
+        s << (k ? "," : "") << "{\"kind\":\"" << fetchKindName(f.kind) << "\",\"uv\":"
+          << jvec(f.uv) << ",\"weight\":" << jnum(f.weight) << "}";
+    }
+    s << "],\"weights\":{\"origin\":" << jvec(tr.weights.origin)
+      << ",\"size\":" << jvec(tr.weights.size) << ",\"values\":[";
+    for (size_t k = 0; k < tr.weights.values.size(); ++k) {
+        s << (k ? "," : "") << jnum(tr.weights.values[k]);
+    }
+    s << "]},\"fetches\":{\"texels\":" << tr.counts.texels << ",\"gathers\":" << tr.counts.gathers
+      << ",\"hw_taps\":" << tr.counts.hwTaps << "},\"visibility\":" << jnum(tr.visibility)
+      << ",\"steps\":[";
+    for (size_t k = 0; k < tr.steps.size(); ++k) {
+        s << (k ? "," : "") << "{\"title\":" << jstr(tr.steps[k].title)
+          << ",\"text\":" << jstr(tr.steps[k].text) << "}";
+    }
+    s << "]}";
+    return s.str();
+}
+
+std::string traceToText(const Trace& tr) {
+    std::ostringstream s;
+    const MethodInfo& info = methodInfo(tr.params.method);
+    s << "pcfscope trace: " << info.name;
+    if (info.usesKernel) s << ", N = " << tr.params.kernel;
+    if (info.usesRadius) s << ", radius " << num(tr.params.radius) << " texels";
+    s << "  (" << info.summary << ")\n\n";
+    for (size_t k = 0; k < tr.steps.size(); ++k) {
+        s << k + 1 << ". " << tr.steps[k].title << "\n   ";
+        for (char c : tr.steps[k].text) {
+            s << c;
+            if (c == '\n') s << "   ";
+        }
+        s << "\n\n";
+    }
+    // The neighbourhood as a table: depth, bit and merged weight per texel, rows as stored.
+    s << "Texels read (depth / bit / weight), row j down, column i across:\n";
+    const WeightGrid& g = tr.weights;
+    s << "        ";
+    for (int i = 0; i < g.size.x; ++i) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, " %-18s", ("i=" + std::to_string(g.origin.x + i)).c_str());
+        s << buf;
+    }
+    s << "\n";
+    for (int j = 0; j < g.size.y; ++j) {
+        char rowLabel[16];
+        std::snprintf(rowLabel, sizeof rowLabel, "  j=%-4d", g.origin.y + j);
+        s << rowLabel;
+        for (int i = 0; i < g.size.x; ++i) {
+            ivec2 texel = g.origin + ivec2(i, j);
+            const TapRecord* tap = nullptr;
+            for (const TapRecord& t : tr.taps) {
+                if (t.texel == texel) {
+                    tap = &t;
+                    break;
+                }
+            }
+            std::string cell = tap ? num(tap->depth) + " / " + bit(tap->lit) + " / " +
+                                         num(g.at(texel))
+                                   : "-";
+            char buf[40];
+            std::snprintf(buf, sizeof buf, " %-18s", cell.c_str());
+            s << buf;
+        }
+        s << "\n";
+    }
+    s << "\nfetches: " << tr.counts.texels << " texel reads, " << tr.counts.gathers
+      << " gathers, " << tr.counts.hwTaps << " hardware taps\n";
+    s << "visibility = " << num(tr.visibility) << "\n";
+    return s.str();
+}
+
+}  // namespace pcf

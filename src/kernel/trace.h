@@ -1,0 +1,60 @@
+// trace.h: everything one PCF lookup did, in order, for the inspector, `pcfscope trace` and the
+// lessons. Built by running the shared kernel over a recording map (see pcf.h): the numbers
+// shown are the numbers computed, never a second derivation of them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "kernel/methods.h"
+#include "kernel/pcf.h"
+#include "kernel/shadow_map.h"
+
+namespace pcf {
+
+// Merged weight per distinct texel over the bounding box of the taps, row-major from origin
+// (values[(j - origin.y) * size.x + (i - origin.x)]).
+struct WeightGrid {
+    ivec2 origin{0, 0};
+    ivec2 size{0, 0};
+    std::vector<float> values;
+    float at(ivec2 texel) const;
+};
+
+struct TraceStep {
+    std::string title;
+    std::string text;
+};
+
+struct Trace {
+    PcfParams params{};
+    ivec2 mapSize{0, 0};
+    vec2 uv{0.0f};
+    float z = 0.0f;    // receiver depth in the light's [0,1] depth, before bias
+    float ref = 0.0f;  // the depth compared with the map, after bias
+    PcfTexelPos pos{};  // GL bilinear position of uv: p, base, frac
+    std::vector<TapRecord> taps;        // one per texel read, in read order, duplicates kept
+    std::vector<FetchRecord> fetches;   // one per fetch instruction, in issue order
+    WeightGrid weights;
+    FetchCounts counts{};
+    float visibility = 1.0f;  // what the kernel returned
+    std::vector<TraceStep> steps;
+};
+
+// Runs the kernel at (uv, ref) with recording on and explains it step by step. z is the
+// receiver's depth before bias (shown to the student; the kernel only sees ref).
+Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm);
+
+// Sum of weight * lit over the taps: equals visibility up to float rounding.
+float weightedTapSum(const Trace& trace);
+
+// DESIGN.md section 4's object, one line of JSON.
+std::string traceToJson(const Trace& trace);
+
+// The step-through as a student reads it, with the texel neighbourhood as a table.
+std::string traceToText(const Trace& trace);
+
+// A number as the steps print it: up to 4 decimals, trailing zeros trimmed ("0.8", "0.0711").
+std::string formatNumber(float value);
+
+}  // namespace pcf
