@@ -1,0 +1,28 @@
+// input_error.h: the one exception for bad input (a malformed or missing scene or lesson file, a
+// value out of range). The app maps it to exit code 2 (DESIGN.md section 6).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace pcf {
+
+// what() is one line, `source:line: what is wrong` (e.g. `box.toml:7: sphere radius must be
+// positive, got -1`), or `source: what is wrong` when no line applies (line <= 0), e.g.
+// `scenes/missing.toml: cannot open file`. Lines count from 1, as editors and toml++ do.
+class InputError : public std::runtime_error {
+  public:
+    InputError(std::string source, int line, std::string problem);
+
+    const std::string& source() const { return mSource; }
+    int line() const { return mLine; }
+    // The problem without the `source:line: ` prefix.
+    const std::string& problem() const { return mProblem; }
+
+  private:
+    std::string mSource;
+    int mLine;
+    std::string mProblem;
+};
+
+}  // namespace pcf

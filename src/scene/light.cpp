@@ -1,0 +1,94 @@
+#include "scene/light.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <limits>
+
+namespace pcf {
+
+namespace {
+
+// Any up vector not parallel to the view direction works; world Y keeps the map upright for the
+// usual sideways light, world Z takes over for a light coming (almost) straight down.
+glm::vec3 lightUp(glm::vec3 directionWs) {
+    return std::abs(directionWs.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f)
+                                           : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+float diagonal(const Aabb& b) { return b.empty() ? 0.0f : glm::length(b.extentWs()); }
+
+// The margin the fitted frusta are pushed out by, scene units; never 0, so that a scene of one
+// flat plane still gets a valid depth range.
+float fitMargin(const Aabb& b) { return std::max(SHADOW_FIT_MARGIN * diagonal(b), 1e-4f); }
+
+struct ViewRange {
+    glm::vec3 lo;
+    glm::vec3 hi;
+};
+
+ViewRange cornersInView(const glm::mat4& viewFromWorld, const Aabb& b) {
+    ViewRange r{glm::vec3(std::numeric_limits<float>::infinity()),
+                glm::vec3(-std::numeric_limits<float>::infinity())};
+    for (int k = 0; k < 8; ++k) {
+        glm::vec3 p = glm::vec3(viewFromWorld * glm::vec4(b.cornerWs(k), 1.0f));
+        r.lo = glm::min(r.lo, p);
+        r.hi = glm::max(r.hi, p);
+    }
+    return r;
+}
+
+}  // namespace
+
+glm::mat4 lightFromWorld(const Light& light, const Aabb& sceneBoundsWs) {
+    glm::vec3 dir = glm::normalize(light.directionWs);
+    glm::vec3 up = lightUp(dir);
+    if (light.type == LightType::Spot) {
+        return glm::lookAtRH(light.positionWs, light.positionWs + dir, up);
+    }
+    glm::vec3 centre = sceneBoundsWs.empty() ? glm::vec3(0.0f) : sceneBoundsWs.centreWs();
+    float back = std::max(diagonal(sceneBoundsWs), 1.0f);
+    return glm::lookAtRH(centre - dir * back, centre, up);
+}
+
+glm::mat4 clipFromLight(const Light& light, const Aabb& sceneBoundsWs) {
+    Aabb b = sceneBoundsWs;
+    if (b.empty()) b = Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)};
+    glm::mat4 view = lightFromWorld(light, b);
+    ViewRange r = cornersInView(view, b);
+    float m = fitMargin(b);
+    // View space looks down -z: the nearest corner has the largest z.
+    float nearZ = -r.hi.z - m;
+    float farZ = -r.lo.z + m;
+    if (light.type == LightType::Spot) {
+        nearZ = std::max(nearZ, SPOT_MIN_NEAR);
+        farZ = std::max(farZ, nearZ + m);  // a scene wholly behind the light: any valid range
+        float fov = glm::radians(2.0f * light.coneDeg);
+        return glm::perspectiveRH_NO(fov, 1.0f, nearZ, farZ);
+    }
+    return glm::orthoRH_NO(r.lo.x - m, r.hi.x + m, r.lo.y - m, r.hi.y + m, nearZ, farZ);
+}
+
+ShadowCoord shadowCoord(const glm::mat4& shadowClipFromWorld, glm::vec3 posWs) {
+    glm::vec4 clip = shadowClipFromWorld * glm::vec4(posWs, 1.0f);
+    glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    return {glm::vec2(ndc) * 0.5f + 0.5f, ndc.z * 0.5f + 0.5f};
+}
+
+LightSample towardLight(const Light& light, glm::vec3 posWs) {
+    glm::vec3 dir = glm::normalize(light.directionWs);
+    if (light.type == LightType::Directional) {
+        return {-dir, std::numeric_limits<float>::infinity(), true};
+    }
+    glm::dvec3 d = glm::dvec3(light.positionWs) - glm::dvec3(posWs);
+    double dist = glm::length(d);
+    if (!(dist > 0.0)) return {-dir, 0.0f, false};
+    glm::dvec3 toLight = d / dist;
+    // Inside the cone when the angle between the spot axis and (p - position) is <= cone:
+    // dot(-toLight, axis) >= cos(cone).
+    double cosCone = std::cos(glm::radians(static_cast<double>(light.coneDeg)));
+    bool inside = glm::dot(-toLight, glm::dvec3(dir)) >= cosCone;
+    return {glm::vec3(toLight), static_cast<float>(dist), inside};
+}
+
+}  // namespace pcf

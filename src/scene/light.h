@@ -1,0 +1,62 @@
+// light.h: the light, the shadow map's matrices fitted to the scene, and the exact direction to
+// the light that ray-cast ground truth shoots its shadow rays along.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scene/aabb.h"
+
+namespace pcf {
+
+enum class LightType { Directional, Spot };
+
+struct Light {
+    LightType type = LightType::Directional;
+    // The unit direction the light travels (from the light into the scene).
+    glm::vec3 directionWs = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
+    // Spot only: where the light is, and the half-angle of its cone in degrees, in (0, 89].
+    glm::vec3 positionWs{0.0f, 5.0f, 0.0f};
+    float coneDeg = 30.0f;
+};
+
+// The shadow pass's view: right-handed, looking down -z along the light direction, y up as far
+// as the direction allows (world Y, or world Z when the light is within ~8 degrees of vertical).
+// Directional: the eye is placed behind the bounds' centre; only the direction matters, the
+// projection is fitted. Spot: the eye is the light's position.
+glm::mat4 lightFromWorld(const Light& light, const Aabb& sceneBoundsWs);
+
+// The shadow pass's projection, in GL's convention (clip z in [-w, w]).
+// Directional: glm::ortho fitted tightly to the scene: the 8 corners of the bounds in light view
+// space give min/max x, y, z, each side pushed out by SHADOW_FIT_MARGIN of the bounds' diagonal
+// (so that nothing is clipped by rounding), so every texel of the map covers the scene.
+// Spot: glm::perspective with fov = 2 * cone, aspect 1, near / far from the corners' depths
+// along the spot direction, pushed out by the same margin; near clamped to >= SPOT_MIN_NEAR.
+glm::mat4 clipFromLight(const Light& light, const Aabb& sceneBoundsWs);
+
+// Relative margin of the fitted light frustum (of the bounds' diagonal), and the least near
+// distance of a spot light, scene units.
+constexpr float SHADOW_FIT_MARGIN = 1e-3f;
+constexpr float SPOT_MIN_NEAR = 0.05f;
+
+// Where a world point lands in the shadow map, exactly as GL computes it after
+// clip = shadowClipFromWorld * (posWs, 1):
+//   ndc = clip.xyz / clip.w;  uvSm = ndc.xy * 0.5 + 0.5;  depth = ndc.z * 0.5 + 0.5
+// uvSm in [0,1] across the map (u along the light's view x, v along its y; v = 0 is texel row
+// 0), depth in [0,1] with 0 = near the light (glDepthRange default). Outside those ranges the
+// point is outside the light's frustum. For a spot light depth is the usual perspective
+// (hyperbolic) depth, not the distance.
+struct ShadowCoord {
+    glm::vec2 uvSm;
+    float depth;
+};
+ShadowCoord shadowCoord(const glm::mat4& shadowClipFromWorld, glm::vec3 posWs);
+
+// The light as seen from a world point, for shadow rays.
+struct LightSample {
+    glm::vec3 dirWs;  // unit, toward the light: -direction, or normalize(position - p)
+    float distance;   // to the light, scene units; +infinity for a directional light
+    bool insideCone;  // always true for a directional light
+};
+LightSample towardLight(const Light& light, glm::vec3 posWs);
+
+}  // namespace pcf

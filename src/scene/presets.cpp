@@ -1,0 +1,204 @@
+#include "scene/presets.h"
+
+#include "scene/scene_file.h"
+
+namespace pcf {
+
+namespace {
+
+struct Preset {
+    std::string_view name;
+    std::string_view toml;
+};
+
+// Every camera frames its shadow in a 16:9 image. The light directions are given as the way the
+// light travels; the angle from the ground's normal is acos(-direction.y / |direction|).
+constexpr Preset PRESETS[] = {
+    {"box-on-plane",
+     R"(# A box resting on the ground; the sun 50 degrees from the zenith, so the shadow reaches
+# tan(50) = 1.2 box heights across the ground toward the camera's right.
+[camera]
+eye = [0.8, 3.0, 5.0]
+target = [0.6, 0.35, 0.3]
+fov = 40.0
+
+[light]
+type = "directional"
+direction = [1.1, -1.0, 0.45]
+
+[[object]]
+type = "plane"
+name = "ground"
+centre = [0.0, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+size = [12.0, 12.0]
+colour = [0.8, 0.8, 0.8]
+
+[[object]]
+type = "box"
+name = "box"
+centre = [0.0, 0.5, 0.0]
+half = [0.5, 0.5, 0.5]
+rotate_y = 25.0
+colour = [0.85, 0.45, 0.25]
+)"},
+    {"sphere-over-plane",
+     R"(# A sphere floating above the ground. The light comes in 45 degrees from
+# the zenith, so the shadow is an ellipse stretched 1 / cos(45) = 1.41 times along the light.
+[camera]
+eye = [3.0, 3.0, 4.5]
+target = [0.7, 0.5, 0.3]
+fov = 40.0
+
+[light]
+type = "directional"
+direction = [0.8, -1.0, 0.6]
+
+[[object]]
+type = "plane"
+name = "ground"
+centre = [0.0, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+size = [12.0, 12.0]
+colour = [0.8, 0.8, 0.8]
+
+[[object]]
+type = "sphere"
+name = "ball"
+centre = [0.0, 1.2, 0.0]
+radius = 0.6
+colour = [0.3, 0.5, 0.85]
+)"},
+    {"pole", R"(# A thin pole standing on the ground. Its shadow must start at its foot; a depth
+# bias large enough to cure acne lifts the shadow off the foot (peter panning). The camera
+# looks down the shadow from close to the foot; the sun is 51 degrees from the zenith, so the
+# 2-unit pole throws a shadow 2 tan(51) = 2.5 units long.
+[camera]
+eye = [3.0, 1.6, 2.6]
+target = [1.1, 0.2, 0.3]
+fov = 40.0
+
+[light]
+type = "directional"
+direction = [1.2, -1.0, 0.3]
+
+[[object]]
+type = "plane"
+name = "ground"
+centre = [0.0, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+size = [8.0, 8.0]
+colour = [0.8, 0.8, 0.8]
+
+[[object]]
+type = "box"
+name = "pole"
+centre = [0.0, 1.0, 0.0]
+half = [0.08, 1.0, 0.08]
+rotate_y = 30.0
+colour = [0.85, 0.75, 0.3]
+)"},
+    {"grazing",
+     R"(# The light 82 degrees from the ground's normal: direction = (sin 82, -cos 82, 0).
+# Depth changes fast across each shadow-map texel, the classic setting for shadow acne. A low
+# box casts a long shadow, tan(82) = 7.1 times its height.
+[camera]
+eye = [-2.5, 3.0, 6.0]
+target = [1.5, 0.0, 0.0]
+fov = 40.0
+
+[light]
+type = "directional"
+direction = [0.990268, -0.139173, 0.0]
+
+[[object]]
+type = "plane"
+name = "ground"
+centre = [0.0, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+size = [10.0, 10.0]
+colour = [0.8, 0.8, 0.8]
+
+[[object]]
+type = "box"
+name = "block"
+centre = [-1.5, 0.2, 0.0]
+half = [0.4, 0.2, 0.6]
+colour = [0.85, 0.45, 0.25]
+)"},
+    {"stairs",
+     R"(# Four steps, each 0.3 higher than the one before, lit from the high side and from behind:
+# each step shadows the tread of the next lower one, and the whole flight throws a stepped
+# shadow on the ground in front, so the receivers lie at several depths from the light.
+[camera]
+eye = [-3.5, 3.0, 4.0]
+target = [0.0, 0.4, 0.0]
+fov = 40.0
+
+[light]
+type = "directional"
+direction = [-1.2, -1.0, 0.5]
+
+[[object]]
+type = "plane"
+name = "ground"
+centre = [0.0, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+size = [12.0, 12.0]
+colour = [0.8, 0.8, 0.8]
+
+[[object]]
+type = "box"
+name = "step1"
+centre = [-0.9, 0.15, 0.0]
+half = [0.3, 0.15, 1.0]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "step2"
+centre = [-0.3, 0.3, 0.0]
+half = [0.3, 0.3, 1.0]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "step3"
+centre = [0.3, 0.45, 0.0]
+half = [0.3, 0.45, 1.0]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "step4"
+centre = [0.9, 0.6, 0.0]
+half = [0.3, 0.6, 1.0]
+colour = [0.75, 0.55, 0.4]
+)"},
+};
+
+}  // namespace
+
+std::vector<std::string_view> presetNames() {
+    std::vector<std::string_view> names;
+    for (const Preset& p : PRESETS) names.push_back(p.name);
+    return names;
+}
+
+std::optional<std::string_view> presetSceneToml(std::string_view name) {
+    for (const Preset& p : PRESETS) {
+        if (p.name == name) return p.toml;
+    }
+    return std::nullopt;
+}
+
+std::optional<Scene> presetScene(std::string_view name) {
+    std::optional<std::string_view> toml = presetSceneToml(name);
+    if (!toml) return std::nullopt;
+    std::string source = "preset:" + std::string(name);
+    Scene scene = parseSceneString(*toml, source);
+    scene.name = std::string(name);
+    return scene;
+}
+
+}  // namespace pcf
