@@ -1,0 +1,37 @@
+// gpu_timer.h: how long GL work takes, measured the way that is honest on the machine at hand
+// (DESIGN.md 8).
+//
+// llvmpipe (and softpipe) run the work when it is flushed, not when it is submitted, so a
+// GL_TIME_ELAPSED query there measures submission only (0.02 ms for a 3 ms pass). On those,
+// each repetition is timed on the CPU around draw() + glFinish(); on real GPUs with
+// GL_TIME_ELAPSED queries, which leave out the CPU and the pipeline bubbles.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pcf {
+
+struct TimingResult {
+    double medianMs = 0.0;          // the median of samplesMs
+    std::vector<double> samplesMs;  // one per repetition, in the order they ran
+    std::string timer;              // "glFinish+steady_clock" or "GL_TIME_ELAPSED"
+};
+
+inline constexpr std::string_view TIMER_WALL_CLOCK = "glFinish+steady_clock";
+inline constexpr std::string_view TIMER_GPU_QUERY = "GL_TIME_ELAPSED";
+
+// True for Mesa's CPU rasterisers, whose GL_RENDERER names "llvmpipe" or "softpipe".
+bool isSoftwareRenderer(std::string_view renderer);
+
+// Runs draw() once to warm up (shader compilation, first-touch allocations), then `repeats`
+// times measured, on the current context. draw() must not use GL_TIME_ELAPSED queries itself.
+// Throws std::invalid_argument when repeats < 1.
+TimingResult timeGpu(const std::function<void()>& draw, int repeats);
+
+// The median of `samples` (the mean of the middle two for an even count); 0 when empty.
+double medianOf(std::vector<double> samples);
+
+}  // namespace pcf

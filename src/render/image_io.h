@@ -1,0 +1,49 @@
+// image_io.h: PNG and EXR in and out (OpenImageIO), the way every intermediate buffer of
+// pcfscope can be written to disk and a shadow map read back.
+//
+// Row order: the writers take rows TOP-DOWN (first row = top of the picture = first scanline
+// in the file), which is what readPixelsRgba8 / readPixelsFloat (gl_objects.h) return.
+// readDepthImage gives a ShadowMap whose row 0 is the file's first scanline (DESIGN.md 2).
+//
+// Writes are atomic: the image goes to PATH.tmp-XXXXXX in the same directory and is renamed
+// over PATH only when complete, so a failed write never leaves a half-written PATH behind.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "kernel/shadow_map.h"
+
+namespace pcf {
+
+// Bad image input or a failed write: one line, "PATH: what is wrong".
+// (src/scene/input_error.h is to take this role; until then this is what image_io throws.)
+class ImageError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+// An 8-bit RGBA PNG; rgba holds width * height * 4 bytes, rows top-down.
+void writePngRgba8(const std::string& path, int width, int height, std::span<const uint8_t> rgba);
+
+// A 32-bit float OpenEXR; data holds width * height * channels floats, rows top-down, channels
+// interleaved and named by channelNames (e.g. {"R", "G", "B"}, {"Z"}).
+void writeExr(const std::string& path, int width, int height, int channels,
+              std::span<const float> data, const std::vector<std::string>& channelNames);
+
+// The shadow map as a one-channel ("Z") float EXR, its row 0 as the first scanline: what
+// readDepthImage reads back unchanged.
+void writeDepthImage(const std::string& path, const ShadowMap& map);
+
+// A depth map: one channel of half or float, every texel in [0,1]. Row 0 = first scanline.
+// Throws ImageError: "PATH: cannot read image (REASON)", "PATH: has 3 channels; a depth map has
+// 1", "PATH: holds uint8 integers; a depth map holds floats (half or float)",
+// "PATH: texel (i, j) is NaN" (and the other ShadowMap::findInvalidTexel findings).
+ShadowMap readDepthImage(const std::string& path);
+
+bool fileExists(const std::string& path);
+
+}  // namespace pcf

@@ -1,0 +1,78 @@
+// timeGpu: a positive median from real repetitions, with the timer that is honest here.
+#include <epoxy/gl.h>
+#include <gtest/gtest.h>
+
+#include "render/gl_context.h"
+#include "render/gl_objects.h"
+#include "render/gpu_timer.h"
+#include "render/shader_loader.h"
+
+namespace pcf {
+namespace {
+
+TEST(GpuTimer, TimesRealWorkWithTheRightTimer) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    OffscreenTarget target = createOffscreenTarget(512, 512, {GL_RGBA8});
+    // Enough per-pixel work that a repetition cannot take zero time on any machine.
+    GlProgram program =
+        buildProgram({{GL_VERTEX_SHADER,
+                       {},
+                       "",
+                       {{"full.vert",
+                         "const vec2 C[3] = vec2[3](vec2(-1, -1), vec2(3, -1), vec2(-1, 3));\n"
+                         "void main() { gl_Position = vec4(C[gl_VertexID], 0, 1); }\n"}}},
+                      {GL_FRAGMENT_SHADER,
+                       {},
+                       "",
+                       {{"busy.frag",
+                         "out vec4 c;\nvoid main() {\n  float s = 0.0;\n"
+                         "  for (int k = 0; k < 64; ++k) s += sin(gl_FragCoord.x * float(k));\n"
+                         "  c = vec4(s * 1e-3, 0, 0, 1);\n}\n"}}}});
+    GlVertexArray vao = createVertexArray();
+    int calls = 0;
+    auto draw = [&] {
+        ++calls;
+        glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
+        glViewport(0, 0, 512, 512);
+        glUseProgram(program.id());
+        glBindVertexArray(vao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    };
+    TimingResult r = timeGpu(draw, 5);
+    EXPECT_EQ(calls, 6);  // one warm-up, five measured
+    ASSERT_EQ(r.samplesMs.size(), 5u);
+    for (double s : r.samplesMs) EXPECT_GT(s, 0.0);
+    EXPECT_GT(r.medianMs, 0.0);
+    EXPECT_EQ(r.medianMs, medianOf(r.samplesMs));
+    // llvmpipe runs the work at glFinish, so only the wall clock sees it (DESIGN.md 8).
+    if (isSoftwareRenderer(context->renderer())) {
+        EXPECT_EQ(r.timer, "glFinish+steady_clock") << context->renderer();
+    } else {
+        EXPECT_EQ(r.timer, "GL_TIME_ELAPSED") << context->renderer();
+    }
+    std::printf("%s: median %.3f ms over %zu (%s)\n", context->renderer().c_str(), r.medianMs,
+                r.samplesMs.size(), r.timer.c_str());
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST(GpuTimer, RecognisesSoftwareRenderers) {
+    EXPECT_TRUE(isSoftwareRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+    EXPECT_TRUE(isSoftwareRenderer("softpipe"));
+    EXPECT_FALSE(isSoftwareRenderer("NVIDIA H100 80GB HBM3/PCIe/SSE2"));
+}
+
+TEST(GpuTimer, MedianOfOddAndEvenCounts) {
+    EXPECT_EQ(medianOf({3.0, 1.0, 2.0}), 2.0);
+    EXPECT_EQ(medianOf({4.0, 1.0, 3.0, 2.0}), 2.5);
+    EXPECT_EQ(medianOf({}), 0.0);
+}
+
+TEST(GpuTimer, RejectsZeroRepeats) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    EXPECT_THROW(timeGpu([] {}, 0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace pcf
