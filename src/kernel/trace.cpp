@@ -239,9 +239,6 @@ void explainKernelLoop(Trace& tr, bool hardware) {
     }
     addStep(tr, hardware ? "Take the N x N hardware taps" : "Take the N x N bilinear lookups",
             head.str());
-    std::ostringstream avg;
-    avg << "visibility = (" << sum.str() << ") / " << n * n << " = " << num(tr.visibility) << ".";
-    addStep(tr, "Average the lookups", avg.str());
     std::ostringstream reads;
     int distinct = tr.weights.size.x * tr.weights.size.y;
     reads << "The loop read " << tr.counts.texels << " texels"
@@ -252,6 +249,10 @@ void explainKernelLoop(Trace& tr, bool hardware) {
           << n * n << ") is:" << weightTable(tr, static_cast<float>(n * n))
           << "\npcf-gather reads each of them once and gives the same result.";
     addStep(tr, "Count the reads", reads.str());
+    std::ostringstream avg;
+    avg << "visibility = (" << sum.str() << ") / " << n * n << " = " << num(tr.visibility)
+        << "  (1 = fully lit, 0 = fully shadowed).";
+    addStep(tr, "Result", avg.str());
 }
 
 void explainGather(Trace& tr) {

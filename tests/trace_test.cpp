@@ -1,0 +1,106 @@
+// The trace: what the inspector and `pcfscope trace` show for one lookup.
+#include "kernel/trace.h"
+
+#include <gtest/gtest.h>
+
+#include "json_lite.h"
+
+namespace pcf {
+namespace {
+
+Trace exampleTrace(int method, int kernel = 3) {
+    return traceLookup(exampleShadowMap(), vec2(0.4625f, 0.3875f), 0.5f, 0.5f,
+                       makeParams(method, kernel));
+}
+
+TEST(Trace, BilinearStepsWriteTheLerpWithTheNumbers) {
+    Trace tr = exampleTrace(PCF_BILINEAR2X2);
+    ASSERT_GE(tr.steps.size(), 4u);
+    std::string all;
+    for (const TraceStep& s : tr.steps) all += s.title + "\n" + s.text + "\n";
+    EXPECT_NE(all.find("base = floor(p) = (3, 2)"), std::string::npos) << all;
+    EXPECT_NE(all.find("lerp(1, 0, 0.2) = 0.8"), std::string::npos) << all;
+    EXPECT_NE(all.find("= 0.8."), std::string::npos) << all;
+    EXPECT_EQ(tr.steps.front().title, "Project the pixel into the shadow map");
+    EXPECT_EQ(tr.steps.back().title, "Result");
+}
+
+TEST(Trace, EveryMethodExplainsItselfAndEndsWithTheKernelsResult) {
+    for (const MethodInfo& m : allMethods()) {
+        Trace tr = exampleTrace(m.id);
+        EXPECT_GE(tr.steps.size(), 3u) << m.name;
+        for (const TraceStep& s : tr.steps) {
+            EXPECT_FALSE(s.title.empty()) << m.name;
+            EXPECT_FALSE(s.text.empty()) << m.name;
+        }
+        EXPECT_NE(tr.steps.back().text.find(formatNumber(tr.visibility)), std::string::npos)
+            << m.name << ": " << tr.steps.back().text;
+    }
+}
+
+TEST(Trace, TapsCarryTheirOwnRefAndFetchIndex) {
+    Trace tr = exampleTrace(PCF_NAIVE);
+    ASSERT_EQ(tr.taps.size(), 36u);
+    ASSERT_EQ(tr.fetches.size(), 9u);
+    for (size_t k = 0; k < tr.taps.size(); ++k) {
+        EXPECT_EQ(tr.taps[k].ref, 0.5f);
+        EXPECT_EQ(tr.taps[k].fetch, static_cast<int>(k / 4));  // 4 reads per bilinear lookup
+    }
+}
+
+TEST(Trace, GatherRecordsTheComponentOrder) {
+    Trace tr = exampleTrace(PCF_GATHER);
+    ASSERT_EQ(tr.taps.size(), 16u);
+    // Each gather reports x = (0,1), y = (1,1), z = (1,0), w = (0,0) of its 2x2 block.
+    for (int g = 0; g < 4; ++g) {
+        ivec2 corner = tr.taps[g * 4 + 3].texel;
+        EXPECT_EQ(tr.taps[g * 4 + 0].texel, corner + ivec2(0, 1));
+        EXPECT_EQ(tr.taps[g * 4 + 1].texel, corner + ivec2(1, 1));
+        EXPECT_EQ(tr.taps[g * 4 + 2].texel, corner + ivec2(1, 0));
+    }
+}
+
+TEST(Trace, JsonHasTheDesignFieldsAndItsNumbersAreTheKernels) {
+    for (const MethodInfo& m : allMethods()) {
+        Trace tr = exampleTrace(m.id);
+        jsonlite::Value j = jsonlite::parse(traceToJson(tr));
+        for (const char* key : {"method", "kernel", "uv", "z", "ref", "texel", "base", "frac",
+                                "taps", "weights", "fetches", "visibility", "steps"}) {
+            EXPECT_TRUE(j.has(key)) << m.name << " lacks " << key;
+        }
+        EXPECT_EQ(j["method"].string, std::string(m.name));
+        EXPECT_EQ(j["taps"].size(), tr.taps.size());
+        EXPECT_EQ(j["fetches"]["texels"].number, tr.counts.texels);
+        EXPECT_EQ(j["fetches"]["gathers"].number, tr.counts.gathers);
+        EXPECT_EQ(j["fetches"]["hw_taps"].number, tr.counts.hwTaps);
+        EXPECT_FLOAT_EQ(static_cast<float>(j["visibility"].number), tr.visibility);
+        double sum = 0.0;
+        for (const jsonlite::Value& t : j["taps"].array) sum += t["weight"].number * t["lit"].number;
+        EXPECT_NEAR(sum, tr.visibility, 1e-5) << m.name;
+        const jsonlite::Value& w = j["weights"];
+        EXPECT_EQ(w["values"].size(),
+                  static_cast<size_t>(w["size"][0].number * w["size"][1].number));
+        EXPECT_EQ(j["steps"].size(), tr.steps.size());
+        EXPECT_EQ(j["steps"][0]["title"].string, tr.steps[0].title);
+    }
+}
+
+TEST(Trace, TextShowsStepsTableAndResult) {
+    std::string text = traceToText(exampleTrace(PCF_BILINEAR2X2));
+    EXPECT_NE(text.find("1. Project the pixel"), std::string::npos) << text;
+    EXPECT_NE(text.find("j=2"), std::string::npos) << text;
+    EXPECT_NE(text.find("i=4"), std::string::npos) << text;
+    EXPECT_NE(text.find("visibility = 0.8\n"), std::string::npos) << text;
+}
+
+TEST(Trace, FormatNumberTrimsZeros) {
+    EXPECT_EQ(formatNumber(0.8f), "0.8");
+    EXPECT_EQ(formatNumber(0.25f), "0.25");
+    EXPECT_EQ(formatNumber(1.0f), "1");
+    EXPECT_EQ(formatNumber(-0.0f), "0");
+    EXPECT_EQ(formatNumber(0.071111f), "0.0711");
+    EXPECT_EQ(formatNumber(-0.00001f), "0");
+}
+
+}  // namespace
+}  // namespace pcf
