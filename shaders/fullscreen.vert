@@ -1,0 +1,5 @@
+// fullscreen.vert: one triangle that covers the viewport, no vertex buffer (gl_VertexID 0..2).
+void main() {
+    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    gl_Position = vec4(p * 2.0f - 1.0f, 0.0f, 1.0f);
+}

@@ -1,0 +1,17 @@
+// lookup.frag: pcfFilter on arbitrary lookups, one per pixel: the GPU half of the parity tests
+// on synthetic maps. Lookup (u, v, ref) comes from a float texture, so the CPU can run the very
+// same inputs. see: src/render/gpu_lookup.cpp
+uniform sampler2D uPcfDepth;
+uniform sampler2D uLookups;  // RGBA32F: u, v, ref, unused
+uniform float uRadius;
+uniform int uRotatePerPixel;
+
+layout(location = 0) out float oVisibility;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec4 lookup = texelFetch(uLookups, pixel, 0);
+    vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(pixel) : vec2(1.0f, 0.0f);
+    oVisibility = pcfFilter(uPcfDepth, vec2(lookup.x, lookup.y), lookup.z,
+                            PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation));
+}

@@ -1,0 +1,40 @@
+// overlay.frag: solid colour for shapes, glyph coverage for text (src/overlay/canvas.h).
+// Glyph quads sit on whole pixels with texel coordinates that advance one texel per pixel, so
+// floor(vUv) at a pixel centre is exactly the glyph's texel: texelFetch, no filtering, crisp.
+// The atlas is chosen per vertex; indexing a sampler array with a non-uniform value is not
+// allowed in GLSL 4.50, so each slot is read under its own constant index.
+
+in vec2 vUv;
+in vec4 vColour;
+flat in int vSlot;
+
+layout(binding = 0) uniform sampler2D uAtlas[8];
+
+layout(location = 0) out vec4 outColour;
+
+float coverage(int slot, ivec2 texel) {
+    switch (slot) {
+        case 0:
+            return texelFetch(uAtlas[0], texel, 0).r;
+        case 1:
+            return texelFetch(uAtlas[1], texel, 0).r;
+        case 2:
+            return texelFetch(uAtlas[2], texel, 0).r;
+        case 3:
+            return texelFetch(uAtlas[3], texel, 0).r;
+        case 4:
+            return texelFetch(uAtlas[4], texel, 0).r;
+        case 5:
+            return texelFetch(uAtlas[5], texel, 0).r;
+        case 6:
+            return texelFetch(uAtlas[6], texel, 0).r;
+        case 7:
+            return texelFetch(uAtlas[7], texel, 0).r;
+    }
+    return 1.0;
+}
+
+void main() {
+    float a = vSlot < 0 ? 1.0 : coverage(vSlot, ivec2(floor(vUv)));
+    outColour = vec4(vColour.rgb, vColour.a * a);
+}

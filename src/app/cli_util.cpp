@@ -1,0 +1,77 @@
+#include "app/cli_util.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace pcf {
+
+namespace {
+
+bool parseFloat(const std::string& text, float& out) {
+    if (text.empty()) return false;
+    errno = 0;
+    char* end = nullptr;
+    out = std::strtof(text.c_str(), &end);
+    return end == text.c_str() + text.size() && errno == 0 && std::isfinite(out);
+}
+
+bool parseInt(const std::string& text, int& out) {
+    if (text.empty()) return false;
+    errno = 0;
+    char* end = nullptr;
+    long v = std::strtol(text.c_str(), &end, 10);
+    if (end != text.c_str() + text.size() || errno != 0 || v < -1000000000L || v > 1000000000L) {
+        return false;
+    }
+    out = static_cast<int>(v);
+    return true;
+}
+
+}  // namespace
+
+glm::vec2 parseVec2(const std::string& option, const std::string& text) {
+    size_t comma = text.find(',');
+    glm::vec2 v;
+    if (comma == std::string::npos || !parseFloat(text.substr(0, comma), v.x) ||
+        !parseFloat(text.substr(comma + 1), v.y)) {
+        throw UsageError(option + " expects two finite numbers as A,B, got '" + text + "'");
+    }
+    return v;
+}
+
+glm::ivec2 parseIvec2(const std::string& option, const std::string& text) {
+    size_t comma = text.find(',');
+    glm::ivec2 v;
+    if (comma == std::string::npos || !parseInt(text.substr(0, comma), v.x) ||
+        !parseInt(text.substr(comma + 1), v.y)) {
+        throw UsageError(option + " expects two integers as X,Y, got '" + text + "'");
+    }
+    return v;
+}
+
+glm::ivec2 parseSize(const std::string& option, const std::string& text, int maxSide) {
+    size_t x = text.find('x');
+    glm::ivec2 v;
+    if (x == std::string::npos || !parseInt(text.substr(0, x), v.x) ||
+        !parseInt(text.substr(x + 1), v.y)) {
+        throw UsageError(option + " expects WxH, got '" + text + "'");
+    }
+    if (v.x < 1 || v.y < 1 || v.x > maxSide || v.y > maxSide) {
+        std::ostringstream s;
+        s << option << " " << text << " is out of range (1.." << maxSide << " per side)";
+        throw UsageError(s.str());
+    }
+    return v;
+}
+
+void requireRange(const std::string& option, float v, float lo, float hi) {
+    if (!std::isfinite(v) || v < lo || v > hi) {
+        std::ostringstream s;
+        s << option << " " << v << " is out of range [" << lo << ", " << hi << "]";
+        throw UsageError(s.str());
+    }
+}
+
+}  // namespace pcf

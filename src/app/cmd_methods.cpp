@@ -1,0 +1,35 @@
+#include <cstdio>
+#include <string>
+
+#include "app/commands.h"
+#include "kernel/methods.h"
+
+namespace pcf {
+
+Command addMethodsCommand(CLI::App& app) {
+    CLI::App* sub = app.add_subcommand("methods", "list the PCF methods with what each reads");
+    auto kernel = std::make_shared<int>(3);
+    sub->add_option("--kernel", *kernel, "kernel size N used for the counts")
+        ->check(CLI::Range(MIN_KERNEL, MAX_KERNEL));
+    return {sub, [kernel] {
+        std::string header = "fetches (N = " + std::to_string(*kernel) + ")";
+        std::printf("%-12s %-26s %s\n", "id", header.c_str(), "what it does");
+        for (const MethodInfo& m : allMethods()) {
+            int n = *kernel;
+            if (m.id == PCF_TENT && n != 3 && n != 5 && n != 7) n = 3;
+            FetchCounts c = fetchCounts(m.id, n);
+            auto count = [](int k, const char* what) {
+                return std::to_string(k) + " " + what + (k == 1 ? "" : "s");
+            };
+            std::string fetches = count(c.texels, "texel");
+            if (c.gathers) fetches += " in " + count(c.gathers, "gather");
+            if (c.hwTaps) fetches += " in " + count(c.hwTaps, "hw tap");
+            if (m.id == PCF_TENT && n != *kernel) fetches += " (N=3)";
+            std::printf("%-12s %-26s %s\n", std::string(m.name).c_str(), fetches.c_str(),
+                        std::string(m.summary).c_str());
+        }
+        return 0;
+    }};
+}
+
+}  // namespace pcf

@@ -1,0 +1,44 @@
+// render_options.h: the options every rendering command shares (scene, method, bias, map), and
+// their checks. Nothing is rendered or written before all of them have passed.
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "render/render_settings.h"
+#include "scene/scene.h"
+
+namespace pcf {
+
+struct RenderOptions {
+    std::string scene;      // preset name
+    std::string sceneFile;  // TOML scene file
+    std::string method = "pcf-gather";
+    int kernel = 3;
+    float radius = 1.0f;
+    bool rotate = false;
+    std::string bias = "constant";
+    float constantBias = 0.002f;
+    std::string cull = "back";
+    int mapSize = 1024;
+    std::string depthFormat = "32f";
+    std::string size = "1280x720";
+
+    // Registers the options on `sub`; `defaultScene` is used when neither --scene nor
+    // --scene-file is given (empty: one of them is required).
+    void addTo(CLI::App* sub, const std::string& defaultScene);
+
+    // The settings, checked; throws UsageError naming the option.
+    RenderSettings settings() const;
+    // The scene, loaded; throws UsageError (unknown preset) or InputError (scene file).
+    Scene loadScene() const;
+
+private:
+    std::string mDefaultScene;
+};
+
+// Throws UsageError unless `path` is free to write: it must not exist unless `force`.
+void requireWritable(const std::string& path, bool force);
+
+}  // namespace pcf

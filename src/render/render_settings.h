@@ -1,0 +1,48 @@
+// render_settings.h: what one frame of the scene is rendered with.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "kernel/pcf.h"
+
+namespace pcf {
+
+enum class DepthFormat { D16, D24, D32F };
+enum class BiasMode { None, Constant };
+enum class CullMode { Back, Front, None };
+
+constexpr int MIN_MAP_SIZE = 4;
+constexpr int MAX_MAP_SIZE = 4096;
+constexpr int MAX_FRAME_SIDE = 8192;
+
+struct RenderSettings {
+    int method = PCF_GATHER;
+    int kernel = 3;
+    float radius = 1.0f;          // poisson, texels
+    bool rotatePerPixel = false;  // poisson
+    int mapSize = 1024;           // the shadow map is mapSize x mapSize texels
+    DepthFormat depthFormat = DepthFormat::D32F;
+    BiasMode bias = BiasMode::Constant;
+    float constantBias = 0.002f;  // light depth units: ref = z - constantBias
+    CullMode shadowCull = CullMode::Back;
+    glm::ivec2 frameSize{1280, 720};
+
+    PcfParams pcfParams() const;
+    // The depth subtracted from z: 0 for BiasMode::None.
+    float depthBias() const;
+};
+
+GLenum glDepthFormat(DepthFormat format);
+std::string_view depthFormatName(DepthFormat format);  // "16", "24", "32f"
+std::optional<DepthFormat> depthFormatFromName(std::string_view name);
+std::string_view biasModeName(BiasMode mode);  // "none", "constant"
+std::optional<BiasMode> biasModeFromName(std::string_view name);
+std::string_view cullModeName(CullMode mode);  // "back", "front", "none"
+std::optional<CullMode> cullModeFromName(std::string_view name);
+
+}  // namespace pcf

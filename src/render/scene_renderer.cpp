@@ -1,0 +1,206 @@
+#include "render/scene_renderer.h"
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+
+#include "kernel/methods.h"
+#include "render/shader_loader.h"
+#include "scene/mesh.h"
+
+namespace pcf {
+
+namespace {
+
+// Where nothing is drawn: a pale grey-blue, so shadows on the ground stand out.
+constexpr glm::vec4 BACKGROUND{0.72f, 0.78f, 0.86f, 1.0f};
+
+GLint uniform(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+
+}  // namespace
+
+SceneRenderer::SceneRenderer(const Scene& scene)
+    : mScene(scene),
+      mShadowClipFromWorld(pcf::shadowClipFromWorld(scene)),
+      mScenePrograms("scene.vert", "scene.frag", "#define PCF_ALL_TARGETS 1\n"),
+      mTimingPrograms("scene.vert", "scene.frag", "#define PCF_ALL_TARGETS 0\n"),
+      mSamplers(createPcfSamplers()) {
+    mDepthProgram = buildProgram({
+        ShaderStage{GL_VERTEX_SHADER, {"depth.vert"}, "", {}},
+        ShaderStage{GL_FRAGMENT_SHADER, {"depth.frag"}, "", {}},
+    });
+    for (const SceneObject& object : mScene.objects) {
+        Mesh mesh = objectMesh(object);
+        GpuMesh gpu;
+        gpu.vao = createVertexArray();
+        gpu.vertices = createBuffer();
+        gpu.indices = createBuffer();
+        glNamedBufferStorage(gpu.vertices.id(), mesh.vertices.size() * sizeof(Vertex),
+                             mesh.vertices.data(), 0);
+        glNamedBufferStorage(gpu.indices.id(), mesh.indices.size() * sizeof(std::uint32_t),
+                             mesh.indices.data(), 0);
+        GLuint vao = gpu.vao.id();
+        glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, sizeof(Vertex));
+        glVertexArrayElementBuffer(vao, gpu.indices.id());
+        glEnableVertexArrayAttrib(vao, 0);
+        glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, posWs));
+        glVertexArrayAttribBinding(vao, 0, 0);
+        glEnableVertexArrayAttrib(vao, 1);
+        glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normalWs));
+        glVertexArrayAttribBinding(vao, 1, 0);
+        gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
+        mMeshes.push_back(std::move(gpu));
+    }
+}
+
+glm::mat4 SceneRenderer::clipFromWorld() const {
+    float aspect = mFrame.height > 0 ? static_cast<float>(mFrame.width) / mFrame.height : 1.0f;
+    return pcf::clipFromWorld(mScene.camera, aspect);
+}
+
+void SceneRenderer::ensureTargets(const RenderSettings& settings) {
+    if (mShadow.width != settings.mapSize || mShadowFormat != settings.depthFormat ||
+        !mShadow.framebuffer) {
+        mShadow = createOffscreenTarget(settings.mapSize, settings.mapSize, {},
+                                        glDepthFormat(settings.depthFormat));
+        mShadowFormat = settings.depthFormat;
+    }
+    if (mFrame.width != settings.frameSize.x || mFrame.height != settings.frameSize.y ||
+        !mFrame.framebuffer) {
+        mFrame = createOffscreenTarget(settings.frameSize.x, settings.frameSize.y,
+                                       {GL_RGBA8, GL_RGBA32F, GL_R32F, GL_RGBA32F},
+                                       GL_DEPTH_COMPONENT24);
+    }
+}
+
+void SceneRenderer::drawObjects(GLuint program, bool castersOnly, bool setMaterial) {
+    for (size_t k = 0; k < mMeshes.size(); ++k) {
+        const SceneObject& object = mScene.objects[k];
+        if (castersOnly && !object.castsShadow) continue;
+        if (setMaterial) {
+            glProgramUniform3fv(program, uniform(program, "uAlbedo"), 1, &object.colour.x);
+            glProgramUniform1i(program, uniform(program, "uReceives"),
+                               object.receivesShadow ? 1 : 0);
+        }
+        glBindVertexArray(mMeshes[k].vao.id());
+        glDrawElements(GL_TRIANGLES, mMeshes[k].indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    glBindVertexArray(0);
+}
+
+void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
+    ensureTargets(settings);
+    glBindFramebuffer(GL_FRAMEBUFFER, mShadow.framebuffer.id());
+    glViewport(0, 0, mShadow.width, mShadow.height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    if (settings.shadowCull == CullMode::None) {
+        glDisable(GL_CULL_FACE);
+    } else {
+        glEnable(GL_CULL_FACE);
+        glCullFace(settings.shadowCull == CullMode::Front ? GL_FRONT : GL_BACK);
+    }
+    GLuint program = mDepthProgram.id();
+    glUseProgram(program);
+    glProgramUniformMatrix4fv(program, uniform(program, "uShadowClipFromWorld"), 1, GL_FALSE,
+                              &mShadowClipFromWorld[0][0]);
+    drawObjects(program, true, false);
+    glDisable(GL_CULL_FACE);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void SceneRenderer::renderCameraPass(const RenderSettings& settings) {
+    ensureTargets(settings);
+    drawCameraPass(settings, mScenePrograms, mFrame);
+}
+
+void SceneRenderer::drawCameraPass(const RenderSettings& settings, PcfProgramCache& programs,
+                                   const OffscreenTarget& target) {
+    GLuint fbo = target.framebuffer.id();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, target.width, target.height);
+    const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const GLfloat one[4] = {1.0f, 0.0f, 0.0f, 0.0f};
+    glClearNamedFramebufferfv(fbo, GL_COLOR, 0, &BACKGROUND.x);
+    if (target.colors.size() == 4) {
+        glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
+        glClearNamedFramebufferfv(fbo, GL_COLOR, 2, one);
+        glClearNamedFramebufferfv(fbo, GL_COLOR, 3, zero);
+    }
+    const GLfloat farDepth = 1.0f;
+    glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+
+    GLuint program = programs.get(settings.method, settings.kernel);
+    glUseProgram(program);
+    glm::mat4 clip = clipFromWorld();
+    glProgramUniformMatrix4fv(program, uniform(program, "uClipFromWorld"), 1, GL_FALSE,
+                              &clip[0][0]);
+    glProgramUniformMatrix4fv(program, uniform(program, "uShadowClipFromWorld"), 1, GL_FALSE,
+                              &mShadowClipFromWorld[0][0]);
+    const Light& light = mScene.light;
+    glm::vec3 dir = glm::normalize(light.directionWs);
+    glProgramUniform1i(program, uniform(program, "uLightType"),
+                       light.type == LightType::Spot ? 1 : 0);
+    glProgramUniform3fv(program, uniform(program, "uLightDirWs"), 1, &dir.x);
+    glProgramUniform3fv(program, uniform(program, "uLightPosWs"), 1, &light.positionWs.x);
+    glProgramUniform1f(program, uniform(program, "uSpotCosCone"),
+                       std::cos(glm::radians(light.coneDeg)));
+    glProgramUniform1f(program, uniform(program, "uConstantBias"), settings.depthBias());
+    glProgramUniform1f(program, uniform(program, "uRadius"), settings.radius);
+    glProgramUniform1i(program, uniform(program, "uRotatePerPixel"),
+                       settings.rotatePerPixel ? 1 : 0);
+    bindShadowMap(program, mShadow.depth.id(), mSamplers);
+    drawObjects(program, false, true);
+    glBindSampler(0, 0);
+    glBindSampler(1, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void SceneRenderer::render(const RenderSettings& settings) {
+    if (auto why = validateParams(settings.pcfParams())) throw std::invalid_argument(*why);
+    renderShadowPass(settings);
+    renderCameraPass(settings);
+}
+
+TimingResult SceneRenderer::timeCameraPass(const RenderSettings& settings, int repeats) {
+    ensureTargets(settings);
+    if (mTimingFrame.width != mFrame.width || mTimingFrame.height != mFrame.height) {
+        mTimingFrame = createOffscreenTarget(mFrame.width, mFrame.height, {GL_RGBA8},
+                                             GL_DEPTH_COMPONENT24);
+    }
+    return timeGpu([&] { drawCameraPass(settings, mTimingPrograms, mTimingFrame); }, repeats);
+}
+
+std::vector<uint8_t> SceneRenderer::readColour() const {
+    return readPixelsRgba8(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT0, mFrame.width,
+                           mFrame.height);
+}
+
+std::vector<float> SceneRenderer::readLightSpace() const {
+    return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT1, mFrame.width,
+                           mFrame.height, 4);
+}
+
+std::vector<float> SceneRenderer::readVisibility() const {
+    return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT2, mFrame.width,
+                           mFrame.height, 1);
+}
+
+std::vector<float> SceneRenderer::readPositions() const {
+    return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT3, mFrame.width,
+                           mFrame.height, 4);
+}
+
+ShadowMap SceneRenderer::readShadowMap() const {
+    return ShadowMap(mShadow.width, mShadow.height,
+                     readDepthTexture(mShadow.depth.id(), mShadow.width, mShadow.height));
+}
+
+}  // namespace pcf

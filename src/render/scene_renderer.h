@@ -1,0 +1,80 @@
+// scene_renderer.h: the shadow-mapped scene on the GPU. Two passes: the light's depth pass into
+// the shadow map, then the camera pass that shades the receivers with the chosen PCF method
+// (shaders/scene.frag, which includes the shared kernel) into four targets:
+//   colour      RGBA8    what the class sees
+//   lightspace  RGBA32F  u, v, ref per pixel as the shader filtered them; alpha 1 on receivers
+//   visibility  R32F     what pcfFilter returned (1 off receivers)
+//   position    RGBA32F  world position, alpha 1 where something was drawn
+// Readbacks are rows TOP-DOWN (first row = top of the frame) except the shadow map, which keeps
+// GL row order (ShadowMap's convention).
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "kernel/shadow_map.h"
+#include "render/gl_objects.h"
+#include "render/gpu_timer.h"
+#include "render/pcf_programs.h"
+#include "render/render_settings.h"
+#include "scene/scene.h"
+
+namespace pcf {
+
+class SceneRenderer {
+public:
+    // Uploads the scene's meshes. Needs a current OpenGL 4.5 context, which must outlive this.
+    explicit SceneRenderer(const Scene& scene);
+
+    // Both passes: shadow map, then the camera pass.
+    void render(const RenderSettings& settings);
+    // The light's depth pass alone (re-created when size or format change).
+    void renderShadowPass(const RenderSettings& settings);
+    // The camera pass alone, reading the current shadow map.
+    void renderCameraPass(const RenderSettings& settings);
+    // Median time of the camera pass over `repeats` draws (gpu_timer.h says which timer), drawn
+    // the way an engine would: colour only, into an RGBA8 target of the frame's size, so the
+    // extra float targets the inspector needs do not weigh on the method's cost.
+    TimingResult timeCameraPass(const RenderSettings& settings, int repeats);
+
+    std::vector<uint8_t> readColour() const;     // RGBA8, top-down
+    std::vector<float> readLightSpace() const;   // 4 floats per pixel, top-down
+    std::vector<float> readVisibility() const;   // 1 float per pixel, top-down
+    std::vector<float> readPositions() const;    // 4 floats per pixel, top-down
+    ShadowMap readShadowMap() const;             // GL row order
+
+    glm::ivec2 frameSize() const { return {mFrame.width, mFrame.height}; }
+    GLuint frameFramebuffer() const { return mFrame.framebuffer.id(); }
+    GLuint shadowTexture() const { return mShadow.depth.id(); }
+    const Scene& scene() const { return mScene; }
+    glm::mat4 shadowClipFromWorld() const { return mShadowClipFromWorld; }
+    glm::mat4 clipFromWorld() const;
+
+private:
+    struct GpuMesh {
+        GlVertexArray vao;
+        GlBuffer vertices;
+        GlBuffer indices;
+        GLsizei indexCount = 0;
+    };
+    void ensureTargets(const RenderSettings& settings);
+    void drawObjects(GLuint program, bool castersOnly, bool setMaterial);
+    // The camera pass into `target` with a program from `programs`.
+    void drawCameraPass(const RenderSettings& settings, PcfProgramCache& programs,
+                        const OffscreenTarget& target);
+
+    Scene mScene;
+    glm::mat4 mShadowClipFromWorld{1.0f};
+    std::vector<GpuMesh> mMeshes;
+    GlProgram mDepthProgram;
+    PcfProgramCache mScenePrograms;   // all four targets
+    PcfProgramCache mTimingPrograms;  // colour only
+    PcfSamplers mSamplers;
+    OffscreenTarget mShadow;
+    DepthFormat mShadowFormat = DepthFormat::D32F;
+    OffscreenTarget mFrame;
+    OffscreenTarget mTimingFrame;
+};
+
+}  // namespace pcf

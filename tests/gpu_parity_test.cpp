@@ -1,0 +1,168 @@
+// The GLSL equals the CPU kernel: the same shared source, compiled twice, gives the same
+// visibility on the same inputs (DESIGN.md section 5). Runs on llvmpipe through EGL in CI.
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "kernel/methods.h"
+#include "kernel/pcf.h"
+#include "render/gl_context.h"
+#include "render/gpu_lookup.h"
+#include "render/scene_renderer.h"
+#include "scene/presets.h"
+
+namespace pcf {
+namespace {
+
+constexpr float PARITY_TOLERANCE = 1e-5f;
+
+class GpuParity : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { sContext = createHeadlessContext(); }
+    static void TearDownTestSuite() { sContext.reset(); }
+    static std::unique_ptr<GlContext> sContext;
+};
+std::unique_ptr<GlContext> GpuParity::sContext;
+
+std::vector<PcfParams> parityCases(std::initializer_list<int> kernels) {
+    std::vector<PcfParams> cases;
+    for (const MethodInfo& m : allMethods()) {
+        if (m.id == PCF_TENT) {
+            for (int n : {3, 5, 7}) cases.push_back(makeParams(m.id, n));
+        } else if (m.usesKernel) {
+            for (int n : kernels) cases.push_back(makeParams(m.id, n));
+        } else if (m.id == PCF_POISSON) {
+            cases.push_back(makeParams(m.id, 1, 1.0f));
+            cases.push_back(makeParams(m.id, 1, 2.5f));
+        } else {
+            cases.push_back(makeParams(m.id, 1));
+        }
+    }
+    return cases;
+}
+
+std::string describe(const PcfParams& prm) {
+    return std::string(methodInfo(prm.method).name) + " N=" + std::to_string(prm.kernel) +
+           " R=" + std::to_string(prm.radius);
+}
+
+TEST_F(GpuParity, RandomLookupsOnRandomMapsMatchTheCpuKernel) {
+    GpuLookup gpu;
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::uniform_real_distribution<float> around(-0.03f, 1.03f);
+    for (glm::ivec2 size : {glm::ivec2(37, 23), glm::ivec2(64, 64)}) {
+        ShadowMap map(size.x, size.y);
+        for (int j = 0; j < size.y; ++j) {
+            for (int i = 0; i < size.x; ++i) map.setDepth(i, j, unit(rng));
+        }
+        const int width = 64;
+        std::vector<glm::vec4> lookups(width * 64);
+        for (glm::vec4& l : lookups) l = glm::vec4(around(rng), around(rng), unit(rng), 0.0f);
+        // A few lookups exactly on texel centres and edges, where floor() decides.
+        for (int k = 0; k < 64; ++k) {
+            lookups[k].x = (k % size.x + 0.5f * (k % 3)) / size.x;
+            lookups[k].y = (k % size.y + 0.5f * (k % 2)) / size.y;
+        }
+        for (bool rotate : {false, true}) {
+            for (const PcfParams& prm : parityCases({1, 2, 3, 5, 8})) {
+                if (rotate && prm.method != PCF_POISSON) continue;
+                std::vector<float> got = gpu.run(map, lookups, width, prm, rotate);
+                float worst = 0.0f;
+                for (size_t k = 0; k < lookups.size(); ++k) {
+                    PcfParams p = prm;
+                    if (rotate) {
+                        p.rotation = pcfPixelRotation(glm::ivec2(k % width, k / width));
+                    }
+                    float cpu = filterVisibility(map, glm::vec2(lookups[k]), lookups[k].z, p);
+                    worst = std::max(worst, std::fabs(cpu - got[k]));
+                }
+                EXPECT_LE(worst, PARITY_TOLERANCE)
+                    << describe(prm) << " map " << size.x << "x" << size.y
+                    << (rotate ? " rotated" : "");
+            }
+        }
+    }
+}
+
+// textureGather's components are texels (0,1), (1,1), (1,0), (0,0) of the 2x2 block: a map
+// with one lit texel at a time, looked up at a known fraction, must give exactly that texel's
+// bilinear weight, on the GPU as on the CPU.
+TEST_F(GpuParity, GatherComponentOrderTapByTap) {
+    GpuLookup gpu;
+    const glm::vec2 frac(0.2f, 0.7f);
+    const glm::ivec2 base(1, 1);
+    glm::vec2 uv = (glm::vec2(base) + frac + 0.5f) / 4.0f;
+    const float weights[2][2] = {{(1 - frac.x) * (1 - frac.y), frac.x * (1 - frac.y)},
+                                 {(1 - frac.x) * frac.y, frac.x * frac.y}};
+    for (int dj = 0; dj < 2; ++dj) {
+        for (int di = 0; di < 2; ++di) {
+            ShadowMap map(4, 4, 0.1f);  // everything shadows a receiver at 0.5 ...
+            // ... except one texel, and every texel gets a distinct depth so a mix-up shows.
+            for (int j = 0; j < 4; ++j) {
+                for (int i = 0; i < 4; ++i) map.setDepth(i, j, 0.01f * (i + 4 * j));
+            }
+            map.setDepth(base.x + di, base.y + dj, 0.9f);
+            std::vector<glm::vec4> lookups(4, glm::vec4(uv, 0.5f, 0.0f));
+            for (int method : {PCF_GATHER, PCF_BILINEAR2X2, PCF_HW2X2}) {
+                std::vector<float> got = gpu.run(map, lookups, 2, makeParams(method, 1), false);
+                EXPECT_NEAR(got[0], weights[dj][di], 1e-5f)
+                    << methodInfo(method).name << " lit texel " << di << "," << dj;
+                EXPECT_NEAR(filterVisibility(map, uv, 0.5f, makeParams(method, 1)),
+                            weights[dj][di], 1e-6f);
+            }
+        }
+    }
+}
+
+TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
+    for (const char* preset : {"box-on-plane", "sphere-over-plane", "stairs"}) {
+        Scene scene = *presetScene(preset);
+        SceneRenderer renderer(scene);
+        for (int mapSize : {128, 512}) {
+            for (const PcfParams& prm : parityCases({3, 5})) {
+                if (prm.method == PCF_TENT && prm.kernel == 7) continue;
+                RenderSettings s;
+                s.method = prm.method;
+                s.kernel = prm.kernel;
+                s.radius = prm.radius;
+                s.rotatePerPixel = prm.method == PCF_POISSON && prm.radius > 2.0f;
+                s.mapSize = mapSize;
+                s.frameSize = {240, 136};
+                renderer.render(s);
+                ShadowMap map = renderer.readShadowMap();
+                std::vector<float> ls = renderer.readLightSpace();
+                std::vector<float> vis = renderer.readVisibility();
+                int receivers = 0;
+                int shadowed = 0;
+                float worst = 0.0f;
+                for (int y = 0; y < s.frameSize.y; ++y) {
+                    for (int x = 0; x < s.frameSize.x; ++x) {
+                        size_t k = static_cast<size_t>(y) * s.frameSize.x + x;
+                        if (ls[4 * k + 3] != 1.0f) continue;
+                        ++receivers;
+                        PcfParams p = s.pcfParams();
+                        // Rows are top-down; gl_FragCoord counts from the bottom.
+                        if (s.rotatePerPixel) {
+                            p.rotation = pcfPixelRotation(glm::ivec2(x, s.frameSize.y - 1 - y));
+                        }
+                        float cpu = filterVisibility(map, glm::vec2(ls[4 * k], ls[4 * k + 1]),
+                                                     ls[4 * k + 2], p);
+                        worst = std::max(worst, std::fabs(cpu - vis[k]));
+                        if (vis[k] < 0.5f) ++shadowed;
+                    }
+                }
+                std::string what = std::string(preset) + " map " + std::to_string(mapSize) +
+                                   " " + describe(prm);
+                EXPECT_LE(worst, PARITY_TOLERANCE) << what;
+                EXPECT_GT(receivers, s.frameSize.x * s.frameSize.y / 4) << what;
+                EXPECT_GT(shadowed, 50) << what;  // there is a shadow to agree about
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace pcf
