@@ -1,0 +1,527 @@
+#include "overlay/canvas.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "render/shader_loader.h"
+
+namespace pcf {
+
+namespace {
+
+// Antialiased edges: a fringe this wide, centred on the true edge, ramps alpha from full to 0.
+constexpr float FRINGE = 1.0f;
+// Circles are polygons whose sides stray at most this far (pixels) from the true circle.
+constexpr float MAX_ARC_ERROR = 0.1f;
+constexpr int MIN_SEGMENTS = 12;
+constexpr int MAX_SEGMENTS = 512;
+
+int circleSegments(float radius) {
+    if (radius <= MAX_ARC_ERROR * 2.0f) return MIN_SEGMENTS;
+    // Sagitta of a side spanning 2*pi/n: r * (1 - cos(pi / n)) <= MAX_ARC_ERROR.
+    double n = std::numbers::pi / std::acos(1.0 - MAX_ARC_ERROR / radius);
+    return std::clamp(static_cast<int>(std::ceil(n)), MIN_SEGMENTS, MAX_SEGMENTS);
+}
+
+// Unit vectors of n equal steps around the circle, in double so that every platform and build
+// gives the same floats for the same n.
+glm::vec2 direction(int k, int n) {
+    double angle = 2.0 * std::numbers::pi * k / n;
+    return {static_cast<float>(std::cos(angle)), static_cast<float>(std::sin(angle))};
+}
+
+Colour transparent(const Colour& c) { return {c.r, c.g, c.b, 0.0f}; }
+
+// Everything flush() changes, saved on construction and put back on destruction, so the canvas
+// can be drawn between the renderer's passes without either disturbing the other.
+class GlStateGuard {
+  public:
+    GlStateGuard() {
+        glGetIntegerv(GL_VIEWPORT, mViewport);
+        glGetIntegerv(GL_SCISSOR_BOX, mScissorBox);
+        glGetIntegerv(GL_CURRENT_PROGRAM, &mProgram);
+        glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &mVertexArray);
+        glGetIntegerv(GL_ACTIVE_TEXTURE, &mActiveTexture);
+        glGetIntegerv(GL_BLEND_SRC_RGB, &mBlendSrcRgb);
+        glGetIntegerv(GL_BLEND_DST_RGB, &mBlendDstRgb);
+        glGetIntegerv(GL_BLEND_SRC_ALPHA, &mBlendSrcAlpha);
+        glGetIntegerv(GL_BLEND_DST_ALPHA, &mBlendDstAlpha);
+        glGetIntegerv(GL_BLEND_EQUATION_RGB, &mBlendEquationRgb);
+        glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &mBlendEquationAlpha);
+        glGetBooleanv(GL_COLOR_WRITEMASK, mColourMask);
+        glGetIntegerv(GL_POLYGON_MODE, mPolygonMode);
+        for (int unit = 0; unit < Canvas::MAX_ATLASES_PER_DRAW; ++unit) {
+            glActiveTexture(GL_TEXTURE0 + unit);
+            glGetIntegerv(GL_TEXTURE_BINDING_2D, &mTextures[unit]);
+            glGetIntegerv(GL_SAMPLER_BINDING, &mSamplers[unit]);
+        }
+        for (size_t k = 0; k < std::size(CAPS); ++k) mEnabled[k] = glIsEnabled(CAPS[k]);
+    }
+    ~GlStateGuard() {
+        glViewport(mViewport[0], mViewport[1], mViewport[2], mViewport[3]);
+        glScissor(mScissorBox[0], mScissorBox[1], mScissorBox[2], mScissorBox[3]);
+        glUseProgram(static_cast<GLuint>(mProgram));
+        glBindVertexArray(static_cast<GLuint>(mVertexArray));
+        for (int unit = 0; unit < Canvas::MAX_ATLASES_PER_DRAW; ++unit) {
+            // glBindTexture, not glBindTextureUnit: binding 0 with the latter would also unbind
+            // the unit's other targets (a cube map, an array) that flush() never touched.
+            glActiveTexture(GL_TEXTURE0 + unit);
+            glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(mTextures[unit]));
+            glBindSampler(unit, static_cast<GLuint>(mSamplers[unit]));
+        }
+        glActiveTexture(static_cast<GLenum>(mActiveTexture));
+        glBlendFuncSeparate(mBlendSrcRgb, mBlendDstRgb, mBlendSrcAlpha, mBlendDstAlpha);
+        glBlendEquationSeparate(mBlendEquationRgb, mBlendEquationAlpha);
+        glColorMask(mColourMask[0], mColourMask[1], mColourMask[2], mColourMask[3]);
+        glPolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(mPolygonMode[0]));
+        for (size_t k = 0; k < std::size(CAPS); ++k) {
+            if (mEnabled[k]) {
+                glEnable(CAPS[k]);
+            } else {
+                glDisable(CAPS[k]);
+            }
+        }
+    }
+    GlStateGuard(const GlStateGuard&) = delete;
+    GlStateGuard& operator=(const GlStateGuard&) = delete;
+
+    // Switches that would change the overlay's pixels: depth/stencil/culling would drop
+    // fragments, sRGB writes and dithering would change the bytes between targets.
+    static constexpr GLenum CAPS[] = {GL_BLEND,         GL_SCISSOR_TEST,
+                                      GL_DEPTH_TEST,    GL_STENCIL_TEST,
+                                      GL_CULL_FACE,     GL_FRAMEBUFFER_SRGB,
+                                      GL_DITHER,        GL_RASTERIZER_DISCARD,
+                                      GL_MULTISAMPLE,   GL_SAMPLE_ALPHA_TO_COVERAGE,
+                                      GL_COLOR_LOGIC_OP};
+
+  private:
+    GLint mViewport[4]{};
+    GLint mScissorBox[4]{};
+    GLint mProgram = 0;
+    GLint mVertexArray = 0;
+    GLint mActiveTexture = GL_TEXTURE0;
+    GLint mBlendSrcRgb = GL_ONE;
+    GLint mBlendDstRgb = GL_ZERO;
+    GLint mBlendSrcAlpha = GL_ONE;
+    GLint mBlendDstAlpha = GL_ZERO;
+    GLint mBlendEquationRgb = GL_FUNC_ADD;
+    GLint mBlendEquationAlpha = GL_FUNC_ADD;
+    GLboolean mColourMask[4]{GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+    GLint mPolygonMode[2]{GL_FILL, GL_FILL};
+    GLint mTextures[Canvas::MAX_ATLASES_PER_DRAW]{};
+    GLint mSamplers[Canvas::MAX_ATLASES_PER_DRAW]{};
+    GLboolean mEnabled[std::size(CAPS)]{};
+};
+
+}  // namespace
+
+Canvas::Canvas() = default;
+Canvas::~Canvas() = default;
+
+void Canvas::begin(glm::ivec2 targetSize) {
+    if (targetSize.x <= 0 || targetSize.y <= 0) {
+        throw std::invalid_argument("Canvas::begin: target size must be positive, got " +
+                                    std::to_string(targetSize.x) + " x " +
+                                    std::to_string(targetSize.y));
+    }
+    mTargetSize = targetSize;
+    mVertices.clear();
+    mBatches.clear();
+    mClipStack.clear();
+}
+
+Canvas::Batch& Canvas::currentBatch() {
+    if (mBatches.empty()) {
+        Batch b;
+        b.first = mVertices.size();
+        b.clip =
+            mClipStack.empty() ? glm::ivec4(0, 0, mTargetSize.x, mTargetSize.y) : mClipStack.back();
+        mBatches.push_back(b);
+    }
+    return mBatches.back();
+}
+
+int Canvas::atlasSlot(const GlyphAtlas& atlas) {
+    Batch* b = &currentBatch();
+    for (int k = 0; k < b->atlasCount; ++k) {
+        if (b->atlases[k] == &atlas) return k;
+    }
+    if (b->atlasCount == MAX_ATLASES_PER_DRAW) {
+        Batch next;
+        next.first = mVertices.size();
+        next.clip = b->clip;
+        mBatches.push_back(next);
+        b = &mBatches.back();
+    }
+    b->atlases[b->atlasCount] = &atlas;
+    return b->atlasCount++;
+}
+
+void Canvas::setClip(glm::ivec4 clip) {
+    Batch& b = currentBatch();
+    if (b.clip == clip) return;
+    if (b.count == 0) {
+        b.clip = clip;
+        return;
+    }
+    Batch next;
+    next.first = mVertices.size();
+    next.clip = clip;
+    mBatches.push_back(next);
+}
+
+void Canvas::pushClip(const Rect& r) {
+    glm::ivec4 outer =
+        mClipStack.empty() ? glm::ivec4(0, 0, mTargetSize.x, mTargetSize.y) : mClipStack.back();
+    glm::ivec4 clip(static_cast<int>(std::lround(r.x)), static_cast<int>(std::lround(r.y)),
+                    static_cast<int>(std::lround(r.right())),
+                    static_cast<int>(std::lround(r.bottom())));
+    clip = {std::max(clip.x, outer.x), std::max(clip.y, outer.y), std::min(clip.z, outer.z),
+            std::min(clip.w, outer.w)};
+    clip.z = std::max(clip.z, clip.x);
+    clip.w = std::max(clip.w, clip.y);
+    mClipStack.push_back(clip);
+    setClip(clip);
+}
+
+void Canvas::popClip() {
+    if (mClipStack.empty()) throw std::logic_error("Canvas::popClip without pushClip");
+    mClipStack.pop_back();
+    setClip(mClipStack.empty() ? glm::ivec4(0, 0, mTargetSize.x, mTargetSize.y)
+                               : mClipStack.back());
+}
+
+void Canvas::triangle(const Vertex& a, const Vertex& b, const Vertex& c) {
+    Batch& batch = currentBatch();
+    mVertices.push_back(a);
+    mVertices.push_back(b);
+    mVertices.push_back(c);
+    batch.count += 3;
+}
+
+void Canvas::solidTriangle(glm::vec2 a, glm::vec2 b, glm::vec2 c, const Colour& colour) {
+    triangle({a, {}, colour, -1}, {b, {}, colour, -1}, {c, {}, colour, -1});
+}
+
+void Canvas::solidQuad(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d, const Colour& ca,
+                       const Colour& cb, const Colour& cc, const Colour& cd) {
+    Vertex va{a, {}, ca, -1};
+    Vertex vc{c, {}, cc, -1};
+    triangle(va, {b, {}, cb, -1}, vc);
+    triangle(va, vc, {d, {}, cd, -1});
+}
+
+void Canvas::fillRect(const Rect& r, const Colour& colour) {
+    if (r.empty()) return;
+    glm::vec2 p0(r.x, r.y);
+    glm::vec2 p1(r.right(), r.bottom());
+    solidQuad(p0, {p1.x, p0.y}, p1, {p0.x, p1.y}, colour, colour, colour, colour);
+}
+
+void Canvas::strokeRect(const Rect& r, float width, const Colour& colour) {
+    if (r.empty() || !(width > 0.0f)) return;
+    if (2.0f * width >= r.w || 2.0f * width >= r.h) {
+        fillRect(r, colour);
+        return;
+    }
+    fillRect({r.x, r.y, r.w, width}, colour);
+    fillRect({r.x, r.bottom() - width, r.w, width}, colour);
+    fillRect({r.x, r.y + width, width, r.h - 2.0f * width}, colour);
+    fillRect({r.right() - width, r.y + width, width, r.h - 2.0f * width}, colour);
+}
+
+void Canvas::line(glm::vec2 a, glm::vec2 b, float width, const Colour& colour) {
+    if (!(width > 0.0f) || a == b) return;
+    float half = 0.5f * width;
+    // Axis-aligned: the exact rect (grids and tick marks stay pixel-exact).
+    if (a.y == b.y) {
+        fillRect({std::min(a.x, b.x), a.y - half, std::abs(b.x - a.x), width}, colour);
+        return;
+    }
+    if (a.x == b.x) {
+        fillRect({a.x - half, std::min(a.y, b.y), width, std::abs(b.y - a.y)}, colour);
+        return;
+    }
+    // Thinner than the fringe: a 1 px line at the matching opacity covers the same amount.
+    Colour c = colour;
+    if (width < FRINGE) {
+        c.a *= width;
+        half = 0.5f * FRINGE;
+    }
+    glm::vec2 d = glm::normalize(b - a);
+    glm::vec2 n(-d.y * half, d.x * half);
+    const glm::vec2 quad[4] = {a + n, b + n, b - n, a - n};
+    convexPolygon(quad, c);
+}
+
+void Canvas::convexPolygon(std::span<const glm::vec2> input, const Colour& colour) {
+    // Repeated points have no edge direction; drop them (the first and last too).
+    std::vector<glm::vec2> p;
+    p.reserve(input.size());
+    for (glm::vec2 q : input) {
+        if (p.empty() || glm::distance(p.back(), q) > 1e-4f) p.push_back(q);
+    }
+    while (p.size() > 1 && glm::distance(p.front(), p.back()) <= 1e-4f) p.pop_back();
+    const size_t n = p.size();
+    if (n < 3) return;
+
+    // Shoelace: the sign of the area tells the winding, hence which normal points outwards.
+    float area = 0.0f;
+    for (size_t i = 0; i < n; ++i) {
+        const glm::vec2& u = p[i];
+        const glm::vec2& v = p[(i + 1) % n];
+        area += u.x * v.y - v.x * u.y;
+    }
+    if (area == 0.0f) return;
+    float outwards = area > 0.0f ? 1.0f : -1.0f;
+    std::vector<glm::vec2> edgeNormal(n);
+    for (size_t i = 0; i < n; ++i) {
+        glm::vec2 d = glm::normalize(p[(i + 1) % n] - p[i]);
+        edgeNormal[i] = outwards * glm::vec2(d.y, -d.x);
+    }
+    // After ImGui's AddConvexPolyFilled: each corner moves along the mean of its two edge
+    // normals, scaled by 1/|mean|^2 so both edges move by the same distance (the miter), with the
+    // scale capped so sharp corners do not spike.
+    std::vector<glm::vec2> inner(n);
+    std::vector<glm::vec2> outer(n);
+    for (size_t i = 0; i < n; ++i) {
+        glm::vec2 m = 0.5f * (edgeNormal[(i + n - 1) % n] + edgeNormal[i]);
+        float d2 = glm::dot(m, m);
+        if (d2 > 1e-6f) m *= std::min(1.0f / d2, 100.0f);
+        inner[i] = p[i] - 0.5f * FRINGE * m;
+        outer[i] = p[i] + 0.5f * FRINGE * m;
+    }
+    for (size_t i = 1; i + 1 < n; ++i) solidTriangle(inner[0], inner[i], inner[i + 1], colour);
+    Colour clear = transparent(colour);
+    for (size_t i = 0; i < n; ++i) {
+        size_t j = (i + 1) % n;
+        solidQuad(inner[i], inner[j], outer[j], outer[i], colour, colour, clear, clear);
+    }
+}
+
+void Canvas::circle(glm::vec2 centre, float radius, const Colour& colour) {
+    if (!(radius > 0.0f)) return;
+    int segments = circleSegments(radius);
+    std::vector<glm::vec2> points(static_cast<size_t>(segments));
+    for (int k = 0; k < segments; ++k) points[k] = centre + radius * direction(k, segments);
+    convexPolygon(points, colour);
+}
+
+void Canvas::band(glm::vec2 centre, float r0, float r1, const Colour& c0, const Colour& c1,
+                  int segments) {
+    if (!(r1 > r0)) return;
+    for (int k = 0; k < segments; ++k) {
+        glm::vec2 d0 = direction(k, segments);
+        glm::vec2 d1 = direction(k + 1 == segments ? 0 : k + 1, segments);
+        solidQuad(centre + r0 * d0, centre + r1 * d0, centre + r1 * d1, centre + r0 * d1, c0, c1,
+                  c1, c0);
+    }
+}
+
+void Canvas::ring(glm::vec2 centre, float radius, float width, const Colour& colour) {
+    if (!(radius > 0.0f) || !(width > 0.0f)) return;
+    float half = 0.5f * width;
+    if (radius - half <= 0.0f) {
+        circle(centre, radius + half, colour);  // no hole left
+        return;
+    }
+    Colour c = colour;
+    // Full-opacity core between the two fringes; a band thinner than the fringes keeps a
+    // zero-width core at its centre line and the matching opacity.
+    float coreIn = radius - half + 0.5f * FRINGE;
+    float coreOut = radius + half - 0.5f * FRINGE;
+    if (coreIn > coreOut) {
+        coreIn = coreOut = radius;
+        c.a *= width / FRINGE;
+    }
+    float fringeIn = std::max(0.0f, radius - half - 0.5f * FRINGE);
+    float fringeOut = radius + half + 0.5f * FRINGE;
+    int segments = circleSegments(fringeOut);
+    Colour clear = transparent(c);
+    band(centre, fringeIn, coreIn, clear, c, segments);
+    band(centre, coreIn, coreOut, c, c, segments);
+    band(centre, coreOut, fringeOut, c, clear, segments);
+}
+
+void Canvas::arrow(glm::vec2 from, glm::vec2 to, float width, const Colour& colour) {
+    if (!(width > 0.0f) || from == to) return;
+    float length = glm::distance(from, to);
+    glm::vec2 d = (to - from) / length;
+    glm::vec2 n(-d.y, d.x);
+    float headLength = std::min(length, std::max(8.0f, 4.0f * width));
+    glm::vec2 base = to - headLength * d;
+    // The shaft runs halfway into the head, so no seam shows between their antialiased edges.
+    glm::vec2 shaftEnd = to - 0.5f * headLength * d;
+    if (glm::distance(from, shaftEnd) > 0.0f && glm::dot(shaftEnd - from, d) > 0.0f) {
+        // Keep the axis-aligned fast path exact: snap the end to the shaft's own axis.
+        if (from.y == to.y) shaftEnd.y = from.y;
+        if (from.x == to.x) shaftEnd.x = from.x;
+        line(from, shaftEnd, width, colour);
+    }
+    const glm::vec2 head[3] = {to, base + 0.5f * headLength * n, base - 0.5f * headLength * n};
+    convexPolygon(head, colour);
+}
+
+Rect Canvas::drawLayout(GlyphAtlas& atlas, const TextLayout& layout, glm::vec2 pos,
+                        const TextStyle& style) {
+    glm::ivec2 origin(static_cast<int>(std::lround(pos.x)), static_cast<int>(std::lround(pos.y)));
+    std::vector<int> lineOffset(layout.lineWidths.size(), 0);
+    float left = 0.0f;
+    float right = 0.0f;
+    for (size_t k = 0; k < lineOffset.size(); ++k) {
+        float w = layout.lineWidths[k];
+        // Offsets are whole pixels, so centred and right-aligned glyphs stay on the pixel grid.
+        if (style.align == TextAlign::Center) {
+            lineOffset[k] = -static_cast<int>(std::lround(0.5f * w));
+        } else if (style.align == TextAlign::Right) {
+            lineOffset[k] = -static_cast<int>(std::lround(w));
+        }
+        float offset = static_cast<float>(lineOffset[k]);
+        left = k == 0 ? offset : std::min(left, offset);
+        right = k == 0 ? offset + w : std::max(right, offset + w);
+    }
+    if (!layout.glyphs.empty()) {
+        int slot = atlasSlot(atlas);
+        for (const PlacedGlyph& g : layout.glyphs) {
+            glm::vec2 p0(origin.x + lineOffset[g.line] + g.topLeft.x, origin.y + g.topLeft.y);
+            glm::vec2 p1 = p0 + glm::vec2(g.glyph.size);
+            glm::vec2 t0(g.glyph.atlasPos);
+            glm::vec2 t1 = t0 + glm::vec2(g.glyph.size);
+            Vertex v00{p0, t0, style.colour, slot};
+            Vertex v11{p1, t1, style.colour, slot};
+            triangle(v00, {{p1.x, p0.y}, {t1.x, t0.y}, style.colour, slot}, v11);
+            triangle(v00, v11, {{p0.x, p1.y}, {t0.x, t1.y}, style.colour, slot});
+        }
+    }
+    return {origin.x + left, static_cast<float>(origin.y), right - left, layout.size.y};
+}
+
+Rect Canvas::text(glm::vec2 pos, std::string_view utf8, const TextStyle& style) {
+    GlyphAtlas& atlas = glyphAtlas(style.face, style.pixelSize);
+    return drawLayout(atlas, layoutText(atlas, utf8), pos, style);
+}
+
+float Canvas::textBox(const Rect& box, std::string_view utf8, const TextStyle& style) {
+    GlyphAtlas& atlas = glyphAtlas(style.face, style.pixelSize);
+    std::vector<std::string> lines = wrapText(atlas, utf8, box.w);
+    float lineHeight = atlas.metrics().lineHeight;
+    float x = style.align == TextAlign::Left     ? box.x
+              : style.align == TextAlign::Center ? box.x + 0.5f * box.w
+                                                 : box.right();
+    for (size_t k = 0; k < lines.size(); ++k) {
+        drawLayout(atlas, layoutText(atlas, lines[k]),
+                   {x, box.y + static_cast<float>(k) * lineHeight}, style);
+    }
+    return static_cast<float>(lines.size()) * lineHeight;
+}
+
+void Canvas::createGlObjects() {
+    mProgram = buildProgram({{GL_VERTEX_SHADER, {"overlay.vert"}, "", {}},
+                             {GL_FRAGMENT_SHADER, {"overlay.frag"}, "", {}}});
+    mVertexBuffer = createBuffer();
+    mVertexArray = createVertexArray();
+    GLuint vao = mVertexArray.id();
+    glVertexArrayVertexBuffer(vao, 0, mVertexBuffer.id(), 0, sizeof(Vertex));
+    auto floats = [&](GLuint location, GLint components, size_t offset) {
+        glEnableVertexArrayAttrib(vao, location);
+        glVertexArrayAttribFormat(vao, location, components, GL_FLOAT, GL_FALSE,
+                                  static_cast<GLuint>(offset));
+        glVertexArrayAttribBinding(vao, location, 0);
+    };
+    floats(0, 2, offsetof(Vertex, pos));
+    floats(1, 2, offsetof(Vertex, uv));
+    floats(2, 4, offsetof(Vertex, colour));
+    glEnableVertexArrayAttrib(vao, 3);
+    glVertexArrayAttribIFormat(vao, 3, 1, GL_INT, static_cast<GLuint>(offsetof(Vertex, slot)));
+    glVertexArrayAttribBinding(vao, 3, 0);
+}
+
+void Canvas::uploadAtlas(const GlyphAtlas& atlas) {
+    AtlasTexture& t = mAtlasTextures[&atlas];
+    if (t.texture && t.version == atlas.version()) return;
+    GlyphAtlas::Image image = atlas.image();
+    if (!t.texture || t.size != image.size) {
+        t.texture = createTexture2d(GL_R8, image.size.x, image.size.y);
+        t.size = image.size;
+    }
+    // Rows of one byte each: alignment 1, and no unpack buffer or row length of someone else's.
+    GLint unpackBuffer = 0;
+    GLint alignment = 4;
+    GLint rowLength = 0;
+    GLint skipRows = 0;
+    GLint skipPixels = 0;
+    glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpackBuffer);
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+    glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
+    glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skipRows);
+    glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skipPixels);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    // Image row r becomes texel row r: the shader fetches with the image's own coordinates.
+    glTextureSubImage2D(t.texture.id(), 0, 0, 0, image.size.x, image.size.y, GL_RED,
+                        GL_UNSIGNED_BYTE, image.pixels.data());
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, skipRows);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, skipPixels);
+    t.version = image.version;
+}
+
+void Canvas::flush() {
+    if (mTargetSize.x <= 0 || mTargetSize.y <= 0) {
+        throw std::logic_error("Canvas::flush before Canvas::begin");
+    }
+    mLastFlushDrawCalls = 0;
+    if (mVertices.empty()) {
+        mBatches.clear();
+        return;
+    }
+    if (!mProgram) createGlObjects();
+    for (const Batch& b : mBatches) {
+        for (int k = 0; k < b.atlasCount; ++k) uploadAtlas(*b.atlases[k]);
+    }
+    glNamedBufferData(mVertexBuffer.id(),
+                      static_cast<GLsizeiptr>(mVertices.size() * sizeof(Vertex)), mVertices.data(),
+                      GL_STREAM_DRAW);
+
+    GlStateGuard guard;
+    for (GLenum cap : GlStateGuard::CAPS) glDisable(cap);
+    glEnable(GL_BLEND);
+    glEnable(GL_SCISSOR_TEST);
+    // Straight-alpha "over": colour = src * a + dst * (1 - a); alpha accumulates coverage, so an
+    // overlay drawn into a transparent target still has the right opacity.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glBlendEquationSeparate(GL_FUNC_ADD, GL_FUNC_ADD);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glViewport(0, 0, mTargetSize.x, mTargetSize.y);
+    glUseProgram(mProgram.id());
+    glProgramUniform2f(mProgram.id(), 0, static_cast<float>(mTargetSize.x),
+                       static_cast<float>(mTargetSize.y));
+    glBindVertexArray(mVertexArray.id());
+    for (const Batch& b : mBatches) {
+        if (b.count == 0) continue;
+        if (b.clip.z <= b.clip.x || b.clip.w <= b.clip.y) continue;  // clipped away entirely
+        for (int k = 0; k < b.atlasCount; ++k) {
+            glBindTextureUnit(k, mAtlasTextures.at(b.atlases[k]).texture.id());
+            // A sampler object left bound by someone else could make the texture incomplete.
+            glBindSampler(k, 0);
+        }
+        // Scissor boxes count rows from the bottom.
+        glScissor(b.clip.x, mTargetSize.y - b.clip.w, b.clip.z - b.clip.x, b.clip.w - b.clip.y);
+        glDrawArrays(GL_TRIANGLES, static_cast<GLint>(b.first), static_cast<GLsizei>(b.count));
+        ++mLastFlushDrawCalls;
+    }
+    mVertices.clear();
+    mBatches.clear();
+}
+
+}  // namespace pcf

@@ -1,0 +1,196 @@
+#include "overlay/text_layout.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pcf {
+
+namespace {
+
+constexpr char32_t REPLACEMENT = 0xFFFD;
+
+// Decodes the codepoint starting at s[i] and moves i past it (one byte for malformed input).
+char32_t decodeOne(std::string_view s, size_t& i) {
+    auto byte = [&](size_t k) { return static_cast<unsigned char>(s[k]); };
+    unsigned char lead = byte(i);
+    if (lead < 0x80) {
+        ++i;
+        return lead;
+    }
+    int length = 0;
+    char32_t cp = 0;
+    char32_t minimum = 0;
+    if ((lead & 0xE0) == 0xC0) {
+        length = 2, cp = lead & 0x1F, minimum = 0x80;
+    } else if ((lead & 0xF0) == 0xE0) {
+        length = 3, cp = lead & 0x0F, minimum = 0x800;
+    } else if ((lead & 0xF8) == 0xF0) {
+        length = 4, cp = lead & 0x07, minimum = 0x10000;
+    } else {
+        ++i;
+        return REPLACEMENT;
+    }
+    if (i + length > s.size()) {
+        ++i;
+        return REPLACEMENT;
+    }
+    for (int k = 1; k < length; ++k) {
+        unsigned char c = byte(i + k);
+        if ((c & 0xC0) != 0x80) {
+            ++i;
+            return REPLACEMENT;
+        }
+        cp = (cp << 6) | (c & 0x3F);
+    }
+    if (cp < minimum || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) {
+        ++i;
+        return REPLACEMENT;
+    }
+    i += length;
+    return cp;
+}
+
+// Tabs and other control characters take a space's room rather than a missing-glyph box.
+char32_t drawable(char32_t cp) { return cp < 0x20 || cp == 0x7F ? U' ' : cp; }
+
+// Pen advance of one line (no '\n' in it), exactly as layoutText advances.
+float lineWidth(GlyphAtlas& atlas, std::string_view utf8) {
+    float pen = 0.0f;
+    uint32_t previous = 0;
+    for (size_t i = 0; i < utf8.size();) {
+        char32_t cp = decodeOne(utf8, i);
+        if (cp == U'\r') continue;
+        Glyph g = atlas.glyph(drawable(cp));
+        pen += atlas.kerning(previous, g.glyphIndex) + g.advance;
+        previous = g.glyphIndex;
+    }
+    return pen;
+}
+
+// Splits a word too wide for a line between characters; appends all pieces but the last to
+// `lines` and returns the last (it may share its line with the next word).
+std::string splitLongWord(GlyphAtlas& atlas, std::string_view word, float maxWidth,
+                          std::vector<std::string>& lines) {
+    std::string piece;
+    for (size_t i = 0; i < word.size();) {
+        size_t start = i;
+        decodeOne(word, i);
+        std::string_view character = word.substr(start, i - start);
+        std::string candidate = piece + std::string(character);
+        if (!piece.empty() && lineWidth(atlas, candidate) > maxWidth) {
+            lines.push_back(piece);
+            piece = std::string(character);
+        } else {
+            piece = std::move(candidate);
+        }
+    }
+    return piece;
+}
+
+void wrapParagraph(GlyphAtlas& atlas, std::string_view paragraph, float maxWidth,
+                   std::vector<std::string>& lines) {
+    std::string line;
+    size_t i = 0;
+    while (i < paragraph.size()) {
+        // Words are split at ASCII spaces and tabs: byte-safe in UTF-8.
+        while (i < paragraph.size() && (paragraph[i] == ' ' || paragraph[i] == '\t')) ++i;
+        size_t end = i;
+        while (end < paragraph.size() && paragraph[end] != ' ' && paragraph[end] != '\t') ++end;
+        if (end == i) break;
+        std::string_view word = paragraph.substr(i, end - i);
+        i = end;
+        std::string candidate = line.empty() ? std::string(word) : line + " " + std::string(word);
+        if (lineWidth(atlas, candidate) <= maxWidth) {
+            line = std::move(candidate);
+            continue;
+        }
+        if (!line.empty()) lines.push_back(std::move(line));
+        line = lineWidth(atlas, word) <= maxWidth ? std::string(word)
+                                                  : splitLongWord(atlas, word, maxWidth, lines);
+    }
+    lines.push_back(std::move(line));
+}
+
+}  // namespace
+
+std::u32string decodeUtf8(std::string_view utf8) {
+    std::u32string out;
+    out.reserve(utf8.size());
+    for (size_t i = 0; i < utf8.size();) out.push_back(decodeOne(utf8, i));
+    return out;
+}
+
+TextLayout layoutText(GlyphAtlas& atlas, std::string_view utf8) {
+    TextLayout out;
+    out.metrics = atlas.metrics();
+    const int lineHeight = static_cast<int>(out.metrics.lineHeight);
+    const int ascender = static_cast<int>(out.metrics.ascender);
+    float pen = 0.0f;
+    int line = 0;
+    uint32_t previous = 0;
+    for (size_t i = 0; i < utf8.size();) {
+        char32_t cp = decodeOne(utf8, i);
+        if (cp == U'\n') {
+            out.lineWidths.push_back(pen);
+            pen = 0.0f;
+            previous = 0;
+            ++line;
+            continue;
+        }
+        if (cp == U'\r') continue;
+        Glyph g = atlas.glyph(drawable(cp));
+        pen += atlas.kerning(previous, g.glyphIndex);
+        if (g.size.x > 0 && g.size.y > 0) {
+            // Whole-pixel pen origin + whole-pixel bearing: the bitmap maps 1:1 to pixels.
+            int originX = static_cast<int>(std::lround(pen));
+            int baseline = line * lineHeight + ascender;
+            out.glyphs.push_back({g, {originX + g.bearing.x, baseline - g.bearing.y}, line});
+        }
+        pen += g.advance;
+        previous = g.glyphIndex;
+    }
+    out.lineWidths.push_back(pen);
+    float widest = *std::max_element(out.lineWidths.begin(), out.lineWidths.end());
+    out.size = {widest, static_cast<float>(out.lineWidths.size()) * out.metrics.lineHeight};
+    return out;
+}
+
+glm::vec2 measureText(FontFace face, float pixelSize, std::string_view utf8) {
+    GlyphAtlas& atlas = glyphAtlas(face, pixelSize);
+    float widest = 0.0f;
+    size_t lines = 0;
+    size_t start = 0;
+    while (true) {
+        size_t end = utf8.find('\n', start);
+        widest = std::max(widest, lineWidth(atlas, utf8.substr(start, end - start)));
+        ++lines;
+        if (end == std::string_view::npos) break;
+        start = end + 1;
+    }
+    return {widest, static_cast<float>(lines) * atlas.metrics().lineHeight};
+}
+
+FontMetrics fontMetrics(FontFace face, float pixelSize) {
+    return glyphAtlas(face, pixelSize).metrics();
+}
+
+std::vector<std::string> wrapText(GlyphAtlas& atlas, std::string_view utf8, float maxWidth) {
+    std::vector<std::string> lines;
+    size_t start = 0;
+    while (true) {
+        size_t end = utf8.find('\n', start);
+        std::string_view paragraph = utf8.substr(start, end - start);
+        if (!paragraph.empty() && paragraph.back() == '\r') paragraph.remove_suffix(1);
+        wrapParagraph(atlas, paragraph, maxWidth, lines);
+        if (end == std::string_view::npos) break;
+        start = end + 1;
+    }
+    return lines;
+}
+
+std::vector<std::string> wrapText(FontFace face, float pixelSize, std::string_view utf8,
+                                  float maxWidth) {
+    return wrapText(glyphAtlas(face, pixelSize), utf8, maxWidth);
+}
+
+}  // namespace pcf

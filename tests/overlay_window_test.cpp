@@ -1,0 +1,149 @@
+// The overlay draws the same bytes in a GLFW window as in an EGL offscreen target: an exported
+// frame is the window's frame. The test starts its own Xvfb (scripts/deps installs it), so it
+// needs no display from its environment and never draws on the user's.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "overlay/canvas.h"
+#include "render/gl_context.h"
+#include "render/gl_objects.h"
+
+namespace pcf {
+namespace {
+
+// An Xvfb on a free display number, which it reports through -displayfd; stopped (by its own
+// pid) when this goes away.
+class PrivateXServer {
+  public:
+    PrivateXServer() {
+        int fds[2];
+        if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
+        mPid = fork();
+        if (mPid < 0) throw std::runtime_error("fork failed");
+        if (mPid == 0) {
+            close(fds[0]);
+            int devNull = open("/dev/null", O_WRONLY);
+            if (devNull >= 0) {
+                dup2(devNull, STDOUT_FILENO);
+                dup2(devNull, STDERR_FILENO);
+            }
+            std::string fd = std::to_string(fds[1]);
+            execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "800x600x24",
+                   "-nolisten", "tcp", "-noreset", static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        close(fds[1]);
+        std::string number;
+        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        while (number.find('\n') == std::string::npos &&
+               std::chrono::steady_clock::now() < deadline) {
+            pollfd p{fds[0], POLLIN, 0};
+            if (poll(&p, 1, 200) <= 0) continue;
+            char buffer[16];
+            ssize_t n = read(fds[0], buffer, sizeof buffer);
+            if (n <= 0) break;  // Xvfb exited (not installed, or failed to start)
+            number.append(buffer, static_cast<size_t>(n));
+        }
+        close(fds[0]);
+        if (number.find('\n') == std::string::npos) {
+            stop();
+            throw std::runtime_error("Xvfb did not start (is the xvfb package installed?)");
+        }
+        // Formatted, not ":" + number: GCC 12 warns falsely (-Wrestrict) on that operator+.
+        char name[32];
+        std::snprintf(name, sizeof name, ":%d", std::atoi(number.c_str()));
+        mDisplay = std::string(name);
+    }
+    ~PrivateXServer() { stop(); }
+    PrivateXServer(const PrivateXServer&) = delete;
+    PrivateXServer& operator=(const PrivateXServer&) = delete;
+
+    const std::string& display() const { return mDisplay; }
+
+  private:
+    void stop() {
+        if (mPid > 0) {
+            kill(mPid, SIGTERM);
+            waitpid(mPid, nullptr, 0);
+            mPid = -1;
+        }
+    }
+
+    pid_t mPid = -1;
+    std::string mDisplay;
+};
+
+void drawFrame(Canvas& c, glm::ivec2 size) {
+    c.fillRect({0, 0, float(size.x), float(size.y)}, {0.08f, 0.09f, 0.12f, 1});
+    c.fillRect({10, 10, 150, 60}, {0.8f, 0.2f, 0.2f, 1});
+    c.strokeRect({10, 10, 150, 60}, 2, {1, 1, 1, 1});
+    c.text({18, 18}, "visibility = 0.75", {FontFace::Mono, 16, {1, 1, 1, 1}});
+    c.textBox({18, 40, 140, 40}, "lit when ref ≤ depth, Σw = 1", {FontFace::Sans, 12});
+    c.circle({220, 50}, 25, {0.3f, 0.8f, 1, 1});
+    c.ring({220, 50}, 35, 3, {1, 0.75f, 0.2f, 0.8f});
+    c.arrow({20, 150}, {280, 110}, 2.5f, {0.6f, 1, 0.6f, 1});
+    c.line({20, 180}, {300, 180}, 1, {1, 1, 1, 0.5f});
+    c.fillRect({100, 90, 80, 80}, {0.2f, 0.4f, 1, 0.4f});
+}
+
+std::vector<uint8_t> renderOffscreen(glm::ivec2 size) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    OffscreenTarget t = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, t.framebuffer.id());
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    {
+        Canvas canvas;
+        canvas.begin(size);
+        drawFrame(canvas, size);
+        canvas.flush();
+    }
+    return readPixelsRgba8(t.framebuffer.id(), GL_COLOR_ATTACHMENT0, size.x, size.y);
+}
+
+TEST(OverlayWindow, WindowFrameIsByteIdenticalToTheOffscreenFrame) {
+    PrivateXServer server;
+    ASSERT_EQ(setenv("DISPLAY", server.display().c_str(), 1), 0);
+    std::vector<uint8_t> windowPixels;
+    glm::ivec2 size(0, 0);
+    {
+        std::unique_ptr<GlContext> window = createWindowContext(320, 200, "overlay test", true);
+        size = window->framebufferSize();
+        ASSERT_EQ(size, glm::ivec2(320, 200));
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glDrawBuffer(GL_BACK);
+        glClearColor(0, 0, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        Canvas canvas;
+        canvas.begin(size);
+        drawFrame(canvas, size);
+        canvas.flush();
+        EXPECT_EQ(canvas.lastFlushDrawCalls(), 1);
+        glFinish();
+        windowPixels = readPixelsRgba8(0, GL_BACK, size.x, size.y);
+    }
+    unsetenv("DISPLAY");
+    std::vector<uint8_t> offscreenPixels = renderOffscreen(size);
+    ASSERT_EQ(windowPixels.size(), offscreenPixels.size());
+    // Alpha: a window without an alpha channel reads back 255, as the opaque offscreen frame.
+    size_t different = 0;
+    for (size_t k = 0; k < windowPixels.size(); ++k)
+        different += windowPixels[k] != offscreenPixels[k];
+    EXPECT_EQ(different, 0u);
+    // And the frame is not trivially empty.
+    EXPECT_NE(windowPixels[(50 * 320 + 220) * 4 + 2], 0);
+}
+
+}  // namespace
+}  // namespace pcf
