@@ -1,0 +1,89 @@
+#include "analysis/bench_report.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <set>
+
+#include "analysis/pareto.h"
+#include "kernel/methods.h"
+
+namespace pcf {
+
+namespace {
+
+std::string format(const char* fmt, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, v);
+    return buf;
+}
+
+}  // namespace
+
+std::string benchCsv(std::span<const BenchRow> rows) {
+    std::string out(BENCH_CSV_HEADER);
+    out += '\n';
+    for (const BenchRow& r : rows) {
+        out += std::string(methodInfo(r.point.method).name) + ',' + std::to_string(r.point.kernel) +
+               ',' + std::to_string(r.point.mapSize) + ',' + format("%.4f", r.gpuMs) + ',' +
+               format("%.2f", r.cpuNsPerPixel) + ',' + std::to_string(r.texelReads) + ',' +
+               format("%.9g", r.error.rmse) + ',' + format("%.9g", r.error.maxErr) + ',' +
+               format("%.9g", r.error.edgeRmse) + ',' + format("%.9g", r.error.edgeMaxErr) + ',' +
+               r.timer + '\n';
+    }
+    return out;
+}
+
+std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows) {
+    std::vector<glm::dvec2> points;
+    for (const BenchRow& r : rows) points.emplace_back(r.gpuMs, r.error.edgeRmse);
+    return paretoFront(points, PARETO_ERROR_TOLERANCE);
+}
+
+std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setup) {
+    std::string timer = rows.empty() ? std::string("none") : rows.front().timer;
+    std::string frame = std::to_string(setup.frameSize.x) + "x" + std::to_string(setup.frameSize.y);
+    std::string md = "# Speed against accuracy: " + setup.sceneName + ", " + frame + "\n\n";
+    md += "Measured on `" + setup.glRenderer + "` (OpenGL " + setup.glVersion + "). ";
+    md += "GPU time is the median of " + std::to_string(setup.gpuRepeats) +
+          " colour-only camera passes at " + frame + ", timed with `" + timer + "`";
+    if (timer == "glFinish+steady_clock") {
+        md +=
+            " (a software rasteriser runs the work when it is flushed, so a GL_TIME_ELAPSED "
+            "query would measure submission only)";
+    }
+    md +=
+        ". CPU time is the shared kernel's batch path (`filterVisibility`), one thread, the "
+        "median of " +
+        std::to_string(setup.cpuPasses) + " passes over " + std::to_string(setup.cpuLookups) +
+        " receiver pixels' light-space lookups. ";
+    md += "Errors are of visibility against the ray-cast ground truth (" +
+          std::to_string(setup.truthSpp) + "x" + std::to_string(setup.truthSpp) +
+          " samples per pixel), over the " + std::to_string(setup.comparedPixels) +
+          " receiver pixels that face the light; the edge band is the " +
+          std::to_string(setup.edgePixels) +
+          " of them within 2 pixels of a pixel the true shadow edge crosses.\n\n";
+
+    std::vector<size_t> front = benchParetoFront(rows);
+    std::set<size_t> onFront(front.begin(), front.end());
+    md +=
+        "| method | N | map | GPU ms | CPU ns/px | texel reads | RMSE | max err | edge RMSE | "
+        "edge max err |\n";
+    md += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+    for (size_t k = 0; k < rows.size(); ++k) {
+        const BenchRow& r = rows[k];
+        md += "| " + std::string(methodInfo(r.point.method).name) + (onFront.count(k) ? " *" : "") +
+              " | " + (r.point.kernel > 0 ? std::to_string(r.point.kernel) : std::string("-")) +
+              " | " + std::to_string(r.point.mapSize) + " | " + format("%.3f", r.gpuMs) + " | " +
+              format("%.1f", r.cpuNsPerPixel) + " | " + std::to_string(r.texelReads) + " | " +
+              format("%.4f", r.error.rmse) + " | " + format("%.4f", r.error.maxErr) + " | " +
+              format("%.4f", r.error.edgeRmse) + " | " + format("%.4f", r.error.edgeMaxErr) +
+              " |\n";
+    }
+    md +=
+        "\n`*` marks the Pareto front of GPU time against edge RMSE: no other run is both "
+        "faster and more accurate. `speed_vs_accuracy.png` plots the same; `diff/` holds each "
+        "run's signed error (rendered - truth: red too bright, blue too dark, white exact).\n";
+    return md;
+}
+
+}  // namespace pcf

@@ -1,0 +1,330 @@
+#include "analysis/speed_chart.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "analysis/bench_report.h"
+#include "kernel/methods.h"
+#include "overlay/canvas.h"
+#include "overlay/text_layout.h"
+#include "render/gl_objects.h"
+
+namespace pcf {
+
+namespace {
+
+const Colour WHITE{1.0f, 1.0f, 1.0f, 1.0f};
+const Colour INK{0.13f, 0.13f, 0.15f, 1.0f};
+const Colour SOFT_INK{0.35f, 0.35f, 0.38f, 1.0f};
+const Colour GRID{0.88f, 0.88f, 0.9f, 1.0f};
+const Colour FRONT{0.05f, 0.05f, 0.05f, 1.0f};
+
+struct Fonts {
+    float title, subtitle, axis, tick, label, legend;
+};
+
+Fonts fontsFor(float s) {
+    auto px = [&](float base) { return std::max(8.0f, std::round(base * s)); };
+    return {px(20.0f), px(13.0f), px(14.0f), px(12.0f), px(11.0f), px(13.0f)};
+}
+
+std::string shortName(int method) {
+    switch (method) {
+        case PCF_NEAREST:
+            return "nearest";
+        case PCF_BOX2X2:
+            return "box";
+        case PCF_BILINEAR2X2:
+            return "bilin";
+        case PCF_HW2X2:
+            return "hw2x2";
+        case PCF_NAIVE:
+            return "naive";
+        case PCF_GATHER:
+            return "gather";
+        case PCF_HW:
+            return "hw";
+        case PCF_TENT:
+            return "tent";
+        default:
+            return "poisson";
+    }
+}
+
+std::string tickText(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+// A round step (1, 2 or 5 times a power of ten) near `rough`.
+double niceStep(double rough) {
+    double p = std::pow(10.0, std::floor(std::log10(rough)));
+    double m = rough / p;
+    return (m <= 1.0 ? 1.0 : m <= 2.0 ? 2.0 : m <= 5.0 ? 5.0 : 10.0) * p;
+}
+
+float overlapArea(const Rect& a, const Rect& b) {
+    Rect o = a.intersect(b);
+    return o.w * o.h;
+}
+
+// Area of r outside `inside`.
+float outsideArea(const Rect& r, const Rect& inside) { return r.w * r.h - overlapArea(r, inside); }
+
+double safeLog(double ms) { return std::log10(std::max(ms, 1e-6)); }
+
+}  // namespace
+
+std::string chartLabel(const BenchPoint& point) {
+    std::string s = shortName(point.method);
+    if (point.kernel > 0) s += std::to_string(point.kernel);
+    return s + " " + std::to_string(point.mapSize);
+}
+
+glm::vec4 methodColour(int method) {
+    // Tableau 10, with the yellow and pink darkened to read on white.
+    static const glm::vec4 COLOURS[PCF_METHOD_COUNT] = {
+        {0.31f, 0.47f, 0.65f, 1.0f},  // nearest
+        {0.95f, 0.56f, 0.17f, 1.0f},  // box2x2
+        {0.88f, 0.34f, 0.35f, 1.0f},  // bilinear2x2
+        {0.36f, 0.66f, 0.64f, 1.0f},  // hw2x2
+        {0.35f, 0.63f, 0.31f, 1.0f},  // pcf-naive
+        {0.80f, 0.62f, 0.05f, 1.0f},  // pcf-gather
+        {0.69f, 0.48f, 0.63f, 1.0f},  // pcf-hw
+        {0.84f, 0.30f, 0.62f, 1.0f},  // tent
+        {0.61f, 0.46f, 0.37f, 1.0f},  // poisson
+    };
+    if (method < 0 || method >= PCF_METHOD_COUNT) return INK;
+    return COLOURS[method];
+}
+
+SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size) {
+    if (size.x < 64 || size.y < 64) {
+        throw std::invalid_argument("layoutSpeedChart: the chart needs at least 64 x 64 pixels");
+    }
+    SpeedChartLayout L;
+    L.size = size;
+    float s = std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
+    L.scale = s;
+    Fonts f = fontsFor(s);
+
+    // Legend: the methods present, then the front's entry.
+    for (const BenchRow& r : rows) {
+        if (std::find(L.legendMethods.begin(), L.legendMethods.end(), r.point.method) ==
+            L.legendMethods.end()) {
+            L.legendMethods.push_back(r.point.method);
+        }
+    }
+    float legendText = measureText(FontFace::Sans, f.legend, "Pareto front").x;
+    for (int m : L.legendMethods) {
+        legendText =
+            std::max(legendText, measureText(FontFace::Sans, f.legend, methodInfo(m).name).x);
+    }
+    float lineH = fontMetrics(FontFace::Sans, f.legend).lineHeight;
+    float swatch = 22.0f * s;
+    float legendW = std::round(swatch + legendText + 16.0f * s);
+    float legendH =
+        std::round((static_cast<float>(L.legendMethods.size()) + 1.0f) * lineH + 12.0f * s);
+
+    float titleH = fontMetrics(FontFace::Sans, f.title).lineHeight +
+                   fontMetrics(FontFace::Sans, f.subtitle).lineHeight +
+                   fontMetrics(FontFace::Sans, f.axis).lineHeight + 14.0f * s;
+    float left = std::round(62.0f * s);
+    float right = std::round(legendW + 28.0f * s);
+    float top = std::round(titleH);
+    float bottom = std::round(fontMetrics(FontFace::Sans, f.tick).lineHeight +
+                              fontMetrics(FontFace::Sans, f.axis).lineHeight + 20.0f * s);
+    L.plot = {left, top, std::max(16.0f, size.x - left - right),
+              std::max(16.0f, size.y - top - bottom)};
+    L.legend = {L.plot.right() + 16.0f * s, L.plot.y, legendW, legendH};
+
+    // Axes. x: log10 of the time, padded by 6% of the span (at least 0.1 decade a side).
+    double xMin = 1e300, xMax = -1e300, yMax = 0.0;
+    for (const BenchRow& r : rows) {
+        xMin = std::min(xMin, safeLog(r.gpuMs));
+        xMax = std::max(xMax, safeLog(r.gpuMs));
+        yMax = std::max(yMax, r.error.edgeRmse);
+    }
+    if (rows.empty()) xMin = xMax = 0.0;
+    double pad = std::max(0.1, 0.06 * (xMax - xMin));
+    L.xLogLo = xMin - pad;
+    L.xLogHi = xMax + pad;
+    double yStep = niceStep(std::max(yMax * 1.08, 1e-6) / 7.0);
+    L.yLo = 0.0;
+    L.yHi = std::ceil(std::max(yMax * 1.08, 1e-6) / yStep) * yStep;
+
+    auto xPixel = [&](double logMs) {
+        return L.plot.x + static_cast<float>((logMs - L.xLogLo) / (L.xLogHi - L.xLogLo)) * L.plot.w;
+    };
+    auto yPixel = [&](double e) {
+        return L.plot.bottom() - static_cast<float>((e - L.yLo) / (L.yHi - L.yLo)) * L.plot.h;
+    };
+    // x ticks at m x 10^k: m = 1, 2, 5 (denser on a narrow axis, only the 1s labelled on a
+    // wide one), so that a few labels always show.
+    double span = L.xLogHi - L.xLogLo;
+    std::vector<double> mantissas = span < 0.7   ? std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9}
+                                    : span < 1.5 ? std::vector<double>{1, 2, 3, 5}
+                                                 : std::vector<double>{1, 2, 5};
+    bool wide = span > 3.0;
+    for (int k = static_cast<int>(std::floor(L.xLogLo)); k <= static_cast<int>(std::ceil(L.xLogHi));
+         ++k) {
+        for (double m : mantissas) {
+            double v = m * std::pow(10.0, k);
+            double lv = std::log10(v);
+            if (lv < L.xLogLo || lv > L.xLogHi) continue;
+            L.xTicks.push_back({v, xPixel(lv), (!wide || m == 1.0) ? tickText(v) : ""});
+        }
+    }
+    for (double v = 0.0; v <= L.yHi + 0.5 * yStep; v += yStep) {
+        L.yTicks.push_back({v, yPixel(v), tickText(std::round(v / yStep) * yStep)});
+    }
+
+    // Dots, the front, and the labels.
+    for (const BenchRow& r : rows) {
+        L.points.emplace_back(xPixel(safeLog(r.gpuMs)), yPixel(r.error.edgeRmse));
+        L.labelTexts.push_back(chartLabel(r.point));
+    }
+    L.front = benchParetoFront(rows);
+    L.labels.assign(rows.size(), Rect{});
+
+    // Greedy placement: the front's labels first, then the rest; each takes the first spot
+    // around its dot (right, left, above, below, the diagonals; then the same farther out) that
+    // overlaps no placed label, no dot and stays in the plot, else the spot that overlaps least.
+    std::vector<size_t> order = L.front;
+    for (size_t k = 0; k < rows.size(); ++k) {
+        if (std::find(L.front.begin(), L.front.end(), k) == L.front.end()) order.push_back(k);
+    }
+    float dotR = 4.5f * s;
+    std::vector<Rect> dots;
+    for (glm::vec2 p : L.points) dots.push_back({p.x - dotR, p.y - dotR, 2 * dotR, 2 * dotR});
+    std::vector<Rect> placed;
+    for (size_t k : order) {
+        glm::vec2 t = measureText(FontFace::Sans, f.label, L.labelTexts[k]);
+        glm::vec2 p = L.points[k];
+        Rect best;
+        float bestCost = 1e30f;
+        for (float ring : {1.0f, 2.2f, 3.6f}) {
+            float r = (dotR + 3.0f * s) * ring;
+            float d = 0.7f * r;
+            const glm::vec2 spots[8] = {
+                {p.x + r, p.y - t.y / 2},       {p.x - r - t.x, p.y - t.y / 2},
+                {p.x - t.x / 2, p.y - r - t.y}, {p.x - t.x / 2, p.y + r},
+                {p.x + d, p.y - d - t.y},       {p.x + d, p.y + d},
+                {p.x - d - t.x, p.y - d - t.y}, {p.x - d - t.x, p.y + d},
+            };
+            for (glm::vec2 spot : spots) {
+                Rect box{std::round(spot.x), std::round(spot.y), t.x, t.y};
+                float cost = 4.0f * outsideArea(box, L.plot);
+                for (const Rect& o : placed) cost += overlapArea(box, o);
+                for (const Rect& o : dots) cost += 2.0f * overlapArea(box, o);
+                cost += ring;  // prefer the nearest ring among equals
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    best = box;
+                }
+            }
+            if (bestCost < 4.0f) break;  // a clean spot on this ring (cost = the ring term)
+        }
+        L.labels[k] = best;
+        placed.push_back(best);
+    }
+    return L;
+}
+
+std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
+                                    const SpeedChartText& text) {
+    SpeedChartLayout L = layoutSpeedChart(rows, size);
+    float s = L.scale;
+    Fonts f = fontsFor(s);
+
+    GLint previousDraw = 0;
+    GLint previousRead = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDraw);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousRead);
+    OffscreenTarget target = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, &WHITE.x);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer.id());
+    {
+        Canvas c;
+        c.begin(size);
+        float pad = std::round(12.0f * s);
+        Rect title = c.text({pad, pad * 0.6f}, text.title, {FontFace::Sans, f.title, INK});
+        Rect sub =
+            c.text({pad, title.bottom()}, text.subtitle, {FontFace::Sans, f.subtitle, SOFT_INK});
+        // The y axis's name above it (the canvas draws no rotated text).
+        c.text({L.plot.x, sub.bottom() + 4.0f * s}, text.yLabel, {FontFace::Sans, f.axis, INK});
+
+        // Grid and ticks.
+        float stroke = std::max(1.0f, std::round(s));
+        for (const ChartTick& t : L.xTicks) {
+            float x = std::round(t.pixel) + 0.5f;
+            c.line({x, L.plot.y}, {x, L.plot.bottom()}, stroke, GRID);
+            if (!t.text.empty()) {
+                c.text({x, L.plot.bottom() + 5.0f * s}, t.text,
+                       {FontFace::Sans, f.tick, SOFT_INK, TextAlign::Center});
+            }
+        }
+        float tickH = fontMetrics(FontFace::Sans, f.tick).lineHeight;
+        for (const ChartTick& t : L.yTicks) {
+            float y = std::round(t.pixel) + 0.5f;
+            c.line({L.plot.x, y}, {L.plot.right(), y}, stroke, GRID);
+            c.text({L.plot.x - 6.0f * s, y - tickH / 2}, t.text,
+                   {FontFace::Sans, f.tick, SOFT_INK, TextAlign::Right});
+        }
+        c.strokeRect(L.plot.expanded(stroke), stroke, SOFT_INK);
+        c.text({L.plot.centre().x, L.plot.bottom() + 8.0f * s + tickH}, text.xLabel,
+               {FontFace::Sans, f.axis, INK, TextAlign::Center});
+
+        c.pushClip(L.plot.expanded(2.0f * s));
+        // The front, under the dots.
+        for (size_t k = 1; k < L.front.size(); ++k) {
+            c.line(L.points[L.front[k - 1]], L.points[L.front[k]], 1.5f * s, FRONT);
+        }
+        float dotR = 4.5f * s;
+        for (size_t k : L.front) c.ring(L.points[k], dotR + 2.5f * s, 1.5f * s, FRONT);
+        for (size_t k = 0; k < rows.size(); ++k) {
+            c.circle(L.points[k], dotR, methodColour(rows[k].point.method));
+        }
+        c.popClip();
+        // Labels, with a thin leader where a crowd pushed one away from its dot.
+        for (size_t k = 0; k < rows.size(); ++k) {
+            const Rect& box = L.labels[k];
+            glm::vec2 p = L.points[k];
+            glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
+            if (glm::length(nearest - p) > 2.5f * dotR) {
+                c.line(p, nearest, std::max(1.0f, 0.75f * s), GRID * 0.8f + SOFT_INK * 0.2f);
+            }
+            glm::vec4 ink = methodColour(rows[k].point.method) * 0.55f;
+            ink.a = 1.0f;
+            c.text(box.position(), L.labelTexts[k], {FontFace::Sans, f.label, ink});
+        }
+
+        // Legend.
+        float lineH = fontMetrics(FontFace::Sans, f.legend).lineHeight;
+        c.fillRect(L.legend, {0.97f, 0.97f, 0.98f, 1.0f});
+        c.strokeRect(L.legend, stroke, GRID);
+        float y = L.legend.y + 6.0f * s;
+        float swatchX = L.legend.x + 12.0f * s;
+        float textX = L.legend.x + 22.0f * s + 4.0f * s;
+        for (int m : L.legendMethods) {
+            c.circle({swatchX, y + lineH / 2}, dotR, methodColour(m));
+            c.text({textX, y}, methodInfo(m).name, {FontFace::Sans, f.legend, INK});
+            y += lineH;
+        }
+        c.line({swatchX - 8.0f * s, y + lineH / 2}, {swatchX + 8.0f * s, y + lineH / 2}, 1.5f * s,
+               FRONT);
+        c.ring({swatchX, y + lineH / 2}, dotR + 2.5f * s, 1.5f * s, FRONT);
+        c.text({textX, y}, "Pareto front", {FontFace::Sans, f.legend, INK});
+        c.flush();
+    }
+    std::vector<uint8_t> rgba =
+        readPixelsRgba8(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, size.x, size.y);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousDraw));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previousRead));
+    return rgba;
+}
+
+}  // namespace pcf

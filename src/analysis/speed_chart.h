@@ -1,0 +1,65 @@
+// speed_chart.h: the bench's picture, speed_vs_accuracy.png. Camera-pass time on a LOG x axis
+// (each run's cost spans 1 to ~200 texel reads), edge-band RMSE on a linear y axis from 0, one
+// dot per run coloured by method and labelled "gather3 1024" (method, N, map size), and the
+// Pareto front (runs no other run beats on both time and error) joined by a line, its dots
+// ringed. Drawn with the overlay's Canvas (src/overlay/canvas.h) into an offscreen target.
+//
+// The layout is computed apart from the drawing (no GL), so where things go can be tested
+// without reading pixels. Coordinates are the canvas's: pixels, origin top-left, y down.
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "analysis/bench.h"
+#include "overlay/rect.h"
+
+namespace pcf {
+
+struct ChartTick {
+    double value = 0.0;
+    float pixel = 0.0f;  // x for the x axis, y for the y axis
+    std::string text;    // empty: a gridline without a label
+};
+
+struct SpeedChartText {
+    std::string title;     // e.g. "Speed against accuracy: box-on-plane, 1280x720"
+    std::string subtitle;  // e.g. the GL_RENDERER and the timer
+    std::string xLabel = "camera pass time, ms (log scale)";
+    std::string yLabel = "edge-band RMSE of visibility";
+};
+
+struct SpeedChartLayout {
+    glm::ivec2 size{0, 0};
+    float scale = 1.0f;                 // 1 at 1280x720; fonts and strokes grow with it
+    Rect plot;                          // the plotting area
+    double xLogLo = 0.0, xLogHi = 1.0;  // log10(ms) at the plot's left and right edges
+    double yLo = 0.0, yHi = 1.0;        // RMSE at the plot's bottom and top edges
+    std::vector<ChartTick> xTicks;
+    std::vector<ChartTick> yTicks;
+    std::vector<glm::vec2> points;        // per row: the dot's centre
+    std::vector<std::string> labelTexts;  // per row
+    std::vector<Rect> labels;             // per row: where its label's box goes
+    std::vector<size_t> front;            // rows on the Pareto front, fastest first
+    std::vector<int> legendMethods;       // methods present, in the rows' order of appearance
+    Rect legend;
+};
+
+// "gather3 1024", "nearest 256": the label of one run.
+std::string chartLabel(const BenchPoint& point);
+// The colour of a method's dots and legend swatch.
+glm::vec4 methodColour(int method);
+
+// Where everything goes. Needs the fonts (to measure labels), not GL. Times <= 0 are drawn at
+// the axis's low end. Throws std::invalid_argument for a side < 64 pixels.
+SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size);
+
+// The chart as RGBA8, rows top-down (for writePngRgba8), size.x * size.y * 4 bytes. Needs a
+// current OpenGL 4.5 context; leaves its framebuffer bindings as it found them.
+std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
+                                    const SpeedChartText& text);
+
+}  // namespace pcf

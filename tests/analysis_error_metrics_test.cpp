@@ -1,0 +1,258 @@
+// Error metrics, difference images, the Pareto front, the bench's CSV and table, and the chart's
+// layout and drawing, on small hand-made inputs whose answers are known.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "analysis/bench_report.h"
+#include "analysis/difference_image.h"
+#include "analysis/error_metrics.h"
+#include "analysis/pareto.h"
+#include "analysis/speed_chart.h"
+#include "kernel/methods.h"
+#include "render/gl_context.h"
+
+namespace pcf {
+namespace {
+
+// A W x H truth, every pixel a light-facing receiver, visibility 1, except what the test sets.
+GroundTruth flatTruth(int w, int h) {
+    GroundTruth t;
+    t.size = {w, h};
+    t.spp = 4;
+    t.visibility.assign(t.pixelCount(), 1.0f);
+    t.receiver.assign(t.pixelCount(), 1);
+    t.facesLight.assign(t.pixelCount(), 1);
+    return t;
+}
+
+TEST(ErrorMetrics, ComparesOnlyLightFacingReceiversTheRendererDrew) {
+    GroundTruth t = flatTruth(4, 1);
+    t.receiver[1] = 0;    // background or a non-receiver
+    t.facesLight[2] = 0;  // turned away from the light: dark by shading
+    t.visibility[2] = 0.0f;
+    std::vector<uint8_t> rendered = {1, 1, 1, 0};  // the mesh left pixel 3 to another object
+    ErrorRegions r = errorRegions(t, rendered);
+    EXPECT_EQ(r.compared, (std::vector<uint8_t>{1, 0, 0, 0}));
+    EXPECT_EQ(r.comparedCount, 1);
+    // A raw PCF result of 1 on the face turned away is no error: that pixel is not compared.
+    ErrorStats s = measureError(t, r, std::vector<float>{0.5f, 0.0f, 1.0f, 0.0f});
+    EXPECT_EQ(s.pixels, 1);
+    EXPECT_DOUBLE_EQ(s.rmse, 0.5);
+    EXPECT_DOUBLE_EQ(s.maxErr, 0.5);
+}
+
+TEST(ErrorMetrics, RmseAndMaxOverAllAndOverTheEdgeBand) {
+    // One row of 12: shadow (0) on the left, a penumbra pixel at 5, lit (1) on the right.
+    GroundTruth t = flatTruth(12, 1);
+    for (int x = 0; x < 5; ++x) t.visibility[x] = 0.0f;
+    t.visibility[5] = 0.5f;
+    ErrorRegions r = errorRegions(t);
+    // The band: pixel 5 dilated by 2 -> 3..7.
+    std::vector<uint8_t> band(12, 0);
+    for (int x = 3; x <= 7; ++x) band[x] = 1;
+    EXPECT_EQ(r.edge, band);
+    EXPECT_EQ(r.edgeCount, 5);
+
+    std::vector<float> v = t.visibility;
+    v[0] = 0.3f;  // outside the band
+    v[4] = 0.2f;  // inside
+    v[6] = 0.6f;  // inside: e = -0.4
+    ErrorStats s = measureError(t, r, v);
+    EXPECT_EQ(s.pixels, 12);
+    EXPECT_EQ(s.edgePixels, 5);
+    EXPECT_NEAR(s.rmse, std::sqrt((0.09 + 0.04 + 0.16) / 12.0), 1e-7);
+    EXPECT_NEAR(s.maxErr, 0.4, 1e-7);
+    EXPECT_NEAR(s.edgeRmse, std::sqrt((0.04 + 0.16) / 5.0), 1e-7);
+    EXPECT_NEAR(s.edgeMaxErr, 0.4, 1e-7);
+}
+
+TEST(ErrorMetrics, EdgeBandIsAFiveByFiveSquareAroundEachCrossedPixel) {
+    GroundTruth t = flatTruth(9, 9);
+    t.visibility[t.index(4, 4)] = 0.25f;
+    ErrorRegions r = errorRegions(t);
+    EXPECT_EQ(r.edgeCount, 25);
+    for (int y = 0; y < 9; ++y) {
+        for (int x = 0; x < 9; ++x) {
+            bool in = std::abs(x - 4) <= 2 && std::abs(y - 4) <= 2;
+            EXPECT_EQ(r.edge[t.index(x, y)], in ? 1 : 0) << x << ", " << y;
+        }
+    }
+    // A truth with no partial pixel has no band, and its edge errors are 0.
+    ErrorRegions none = errorRegions(flatTruth(5, 5));
+    EXPECT_EQ(none.edgeCount, 0);
+    ErrorStats s = measureError(flatTruth(5, 5), none, std::vector<float>(25, 0.0f));
+    EXPECT_DOUBLE_EQ(s.edgeRmse, 0.0);
+    EXPECT_DOUBLE_EQ(s.rmse, 1.0);
+}
+
+TEST(ErrorMetrics, RefusesImagesOfAnotherSize) {
+    GroundTruth t = flatTruth(4, 4);
+    ErrorRegions r = errorRegions(t);
+    EXPECT_THROW(measureError(t, r, std::vector<float>(15, 1.0f)), std::invalid_argument);
+    EXPECT_THROW(errorRegions(t, std::vector<uint8_t>(3, 1)), std::invalid_argument);
+}
+
+TEST(DifferenceImage, BlueNegativeWhiteZeroRedPositive) {
+    EXPECT_EQ(signedErrorColour(0.0f), glm::u8vec4(255, 255, 255, 255));
+    EXPECT_EQ(signedErrorColour(1.0f), glm::u8vec4(255, 0, 0, 255));
+    EXPECT_EQ(signedErrorColour(-1.0f), glm::u8vec4(0, 0, 255, 255));
+    EXPECT_EQ(signedErrorColour(0.5f), glm::u8vec4(255, 128, 128, 255));
+    EXPECT_EQ(signedErrorColour(-3.0f), glm::u8vec4(0, 0, 255, 255));  // clamped
+    EXPECT_EQ(signedErrorColour(0.25f, 0.5f), glm::u8vec4(255, 128, 128, 255));
+
+    GroundTruth t = flatTruth(3, 1);
+    t.receiver[2] = 0;
+    ErrorRegions r = errorRegions(t);
+    std::vector<uint8_t> img = differenceImage(t, r, std::vector<float>{0.0f, 1.0f, 0.0f});
+    ASSERT_EQ(img.size(), 12u);
+    EXPECT_EQ(glm::u8vec4(img[0], img[1], img[2], img[3]), glm::u8vec4(0, 0, 255, 255));
+    EXPECT_EQ(glm::u8vec4(img[4], img[5], img[6], img[7]), glm::u8vec4(255, 255, 255, 255));
+    EXPECT_EQ(glm::u8vec4(img[8], img[9], img[10], img[11]), DIFFERENCE_BACKGROUND);
+}
+
+TEST(Pareto, KeepsExactlyThePointsNothingBeatsOnBothCounts) {
+    std::vector<glm::dvec2> pts = {
+        {1.0, 0.9},  // 0: fastest
+        {2.0, 0.5},  // 1: front
+        {2.0, 0.7},  // 2: same time as 1, worse
+        {3.0, 0.5},  // 3: slower than 1, same error: dominated
+        {4.0, 0.2},  // 4: front
+        {5.0, 0.3},  // 5: dominated by 4
+        {4.0, 0.2},  // 6: a tie with 4: both stay
+        {8.0, 0.1},  // 7: most accurate
+    };
+    EXPECT_EQ(paretoFront(pts), (std::vector<size_t>{0, 1, 4, 6, 7}));
+    EXPECT_TRUE(paretoFront(std::vector<glm::dvec2>{}).empty());
+    // With a tolerance, an error better by a hair does not put a slower point on the front.
+    std::vector<glm::dvec2> hair = {{1.0, 0.5}, {2.0, 0.5 - 1e-9}, {3.0, 0.4}, {3.0, 0.4 + 1e-9}};
+    EXPECT_EQ(paretoFront(hair), (std::vector<size_t>{0, 1, 2}));
+    EXPECT_EQ(paretoFront(hair, 1e-6), (std::vector<size_t>{0, 2, 3}));
+}
+
+std::vector<BenchRow> sampleRows() {
+    std::vector<BenchRow> rows;
+    auto add = [&](int method, int kernel, int map, double ms, double edge) {
+        BenchRow r;
+        r.point = {method, kernel, map};
+        r.gpuMs = ms;
+        r.cpuNsPerPixel = 12.345;
+        r.texelReads = fetchCounts(method, kernel > 0 ? kernel : 3).texels;
+        r.error.rmse = edge / 10;
+        r.error.maxErr = 1.0;
+        r.error.edgeRmse = edge;
+        r.error.edgeMaxErr = 0.75;
+        r.timer = "glFinish+steady_clock";
+        rows.push_back(r);
+    };
+    add(PCF_NEAREST, 0, 256, 2.0, 0.5);
+    add(PCF_GATHER, 3, 256, 7.5, 0.3);
+    add(PCF_NAIVE, 3, 256, 18.0, 0.3);
+    add(PCF_TENT, 5, 1024, 11.0, 0.12345678912);
+    add(PCF_POISSON, 0, 1024, 130.0, 0.2);
+    return rows;
+}
+
+TEST(BenchReport, CsvHasTheDocumentedColumnsAndOneLinePerRow) {
+    std::vector<BenchRow> rows = sampleRows();
+    std::string csv = benchCsv(rows);
+    std::istringstream in(csv);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line,
+              "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,"
+              "edge_rmse,edge_max_err,timer");
+    std::getline(in, line);
+    EXPECT_EQ(line, "nearest,0,256,2.0000,12.35,1,0.05,1,0.5,0.75,glFinish+steady_clock");
+    int lines = 2;
+    while (std::getline(in, line)) {
+        ++lines;
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 10) << line;
+    }
+    EXPECT_EQ(lines, 1 + static_cast<int>(rows.size()));
+    EXPECT_NE(csv.find("tent,5,1024,11.0000,12.35,36,0.0123456789,1,0.123456789,0.75,"),
+              std::string::npos)
+        << csv;
+}
+
+TEST(BenchReport, MarkdownNamesTheMachineAndTimerAndMarksTheFront) {
+    std::vector<BenchRow> rows = sampleRows();
+    BenchSetup setup;
+    setup.sceneName = "box-on-plane";
+    setup.glRenderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
+    setup.glVersion = "4.5";
+    setup.frameSize = {1280, 720};
+    setup.gpuRepeats = 5;
+    std::string md = benchMarkdown(rows, setup);
+    EXPECT_NE(md.find("llvmpipe (LLVM 15.0.6, 256 bits)"), std::string::npos);
+    EXPECT_NE(md.find("glFinish+steady_clock"), std::string::npos);
+    EXPECT_NE(md.find("| nearest * | - | 256 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| pcf-gather * | 3 | 256 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| pcf-naive | 3 | 256 |"), std::string::npos) << md;  // dominated
+    EXPECT_NE(md.find("| tent * | 5 | 1024 |"), std::string::npos) << md;
+    EXPECT_EQ(benchParetoFront(rows), (std::vector<size_t>{0, 1, 3}));
+}
+
+TEST(SpeedChart, LayoutPutsTimeOnALogAxisAndErrorOnALinearOne) {
+    std::vector<BenchRow> rows = sampleRows();
+    SpeedChartLayout L = layoutSpeedChart(rows, {1280, 720});
+    ASSERT_EQ(L.points.size(), rows.size());
+    for (size_t k = 0; k < rows.size(); ++k) {
+        EXPECT_TRUE(L.plot.contains(L.points[k])) << k;
+        EXPECT_EQ(L.labelTexts[k], chartLabel(rows[k].point));
+    }
+    // Log x: equal ratios of time are equal distances (2 -> 18 ms is 9x, as 11 -> 99 would be).
+    double pxPerDecade = (L.points[2].x - L.points[0].x) / std::log10(18.0 / 2.0);
+    EXPECT_NEAR((L.points[4].x - L.points[3].x) / std::log10(130.0 / 11.0), pxPerDecade, 0.01);
+    // Linear y from 0 at the bottom: error 0.3 sits 0.6 of the way to 0.5's height.
+    float base = L.plot.bottom();
+    EXPECT_NEAR((base - L.points[1].y) / (base - L.points[0].y), 0.6, 1e-4);
+    EXPECT_DOUBLE_EQ(L.yLo, 0.0);
+    // Ticks at 1, 2, 5 x 10^k inside the range: 2 .. 130 ms holds 2, 5, 10, 20, 50, 100.
+    std::vector<std::string> texts;
+    for (const ChartTick& t : L.xTicks) texts.push_back(t.text);
+    for (const char* want : {"2", "5", "10", "20", "50", "100"}) {
+        EXPECT_NE(std::find(texts.begin(), texts.end(), want), texts.end()) << want;
+    }
+    EXPECT_EQ(L.front, (std::vector<size_t>{0, 1, 3}));
+    EXPECT_EQ(chartLabel({PCF_GATHER, 3, 1024}), "gather3 1024");
+    EXPECT_EQ(chartLabel({PCF_NEAREST, 0, 256}), "nearest 256");
+    // Few points, room to spare: no two labels overlap and none covers a dot.
+    for (size_t a = 0; a < L.labels.size(); ++a) {
+        for (size_t b = a + 1; b < L.labels.size(); ++b) {
+            EXPECT_TRUE(L.labels[a].intersect(L.labels[b]).empty()) << a << " " << b;
+        }
+        for (glm::vec2 p : L.points) EXPECT_FALSE(L.labels[a].contains(p)) << a;
+    }
+}
+
+TEST(SpeedChart, DrawsTheRequestedSizeWithEachMethodsColour) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    std::vector<BenchRow> rows = sampleRows();
+    glm::ivec2 size{800, 450};
+    SpeedChartText text;
+    text.title = "Speed against accuracy: test";
+    text.subtitle = context->renderer();
+    std::vector<uint8_t> rgba = drawSpeedChart(rows, size, text);
+    ASSERT_EQ(rgba.size(), static_cast<size_t>(size.x) * size.y * 4);
+    SpeedChartLayout L = layoutSpeedChart(rows, size);
+    // Each dot's centre pixel has its method's colour.
+    for (size_t k = 0; k < rows.size(); ++k) {
+        glm::ivec2 p(L.points[k]);
+        size_t at = (static_cast<size_t>(p.y) * size.x + p.x) * 4;
+        glm::vec4 want = methodColour(rows[k].point.method) * 255.0f;
+        EXPECT_NEAR(rgba[at + 0], want.r, 2.0) << k;
+        EXPECT_NEAR(rgba[at + 1], want.g, 2.0) << k;
+        EXPECT_NEAR(rgba[at + 2], want.b, 2.0) << k;
+    }
+    // The corner is the white background; the picture is not all one colour.
+    EXPECT_EQ(glm::u8vec4(rgba[0], rgba[1], rgba[2], rgba[3]), glm::u8vec4(255, 255, 255, 255));
+    size_t dark = 0;
+    for (size_t k = 0; k < rgba.size(); k += 4) dark += rgba[k] < 100 && rgba[k + 1] < 100;
+    EXPECT_GT(dark, 500u);  // text, axes, the front
+}
+
+}  // namespace
+}  // namespace pcf

@@ -1,0 +1,168 @@
+// The bench's sweep on llvmpipe: every method's error falls as the shadow map grows, pcf-naive
+// and pcf-gather (the same filter, read two ways) have the same error, and each row carries the
+// fetch counts and timings it promises.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+#include <memory>
+
+#include "analysis/bench.h"
+#include "kernel/methods.h"
+#include "render/gl_context.h"
+#include "scene/presets.h"
+
+namespace pcf {
+namespace {
+
+class BenchSweep : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() { sContext = createHeadlessContext(); }
+    static void TearDownTestSuite() { sContext.reset(); }
+    static std::unique_ptr<GlContext> sContext;
+
+    // One sweep over the whole scene; cheap timings (the test is about errors).
+    static std::vector<BenchRow> sweep(const std::string& sceneName, BenchOptions o, int spp) {
+        Scene scene = *presetScene(sceneName);
+        GroundTruthOptions t;
+        t.spp = spp;
+        GroundTruth truth = computeGroundTruth(scene, o.frameSize, t);
+        SceneRenderer renderer(scene);
+        BenchContext context;
+        context.renderer = &renderer;
+        context.truth = &truth;
+        int progress = 0;
+        int points = 0;
+        context.progress = [&](int index, int total, const BenchPoint&) {
+            EXPECT_EQ(index, progress++);
+            EXPECT_EQ(total, static_cast<int>(benchPoints(o).size()));
+        };
+        context.onPoint = [&](const BenchRow&, std::span<const float> visibility,
+                              const ErrorRegions& regions) {
+            EXPECT_EQ(visibility.size(), truth.pixelCount());
+            EXPECT_GT(regions.edgeCount, 0);
+            ++points;
+        };
+        std::vector<BenchRow> rows = runBench(context, o);
+        EXPECT_EQ(points, static_cast<int>(rows.size()));
+        return rows;
+    }
+};
+std::unique_ptr<GlContext> BenchSweep::sContext;
+
+BenchOptions cheapOptions() {
+    BenchOptions o;
+    o.frameSize = {480, 270};
+    o.gpuRepeats = 1;
+    o.cpuLookups = 2048;
+    o.cpuPasses = 1;
+    return o;
+}
+
+TEST_F(BenchSweep, ErrorFallsAsTheMapGrowsForEveryMethod) {
+    BenchOptions o = cheapOptions();
+    o.kernels = {3};
+    o.mapSizes = {128, 256, 512, 1024};
+    std::vector<BenchRow> rows = sweep("box-on-plane", o, 4);
+    ASSERT_EQ(rows.size(), 9u * 4u);
+    for (size_t k = 0; k < rows.size(); k += 4) {
+        std::string name = pointName(rows[k].point);
+        std::printf("%-16s edge RMSE", name.c_str());
+        for (size_t m = 0; m < 4; ++m) std::printf(" %.4f", rows[k + m].error.edgeRmse);
+        std::printf("   RMSE");
+        for (size_t m = 0; m < 4; ++m) std::printf(" %.4f", rows[k + m].error.rmse);
+        std::printf("\n");
+        for (size_t m = 0; m < 4; ++m) {
+            ASSERT_EQ(rows[k + m].point.method, rows[k].point.method);
+            EXPECT_EQ(rows[k + m].point.mapSize, o.mapSizes[m]);
+        }
+        // Non-increasing step by step (to a hair of noise from where texel edges happen to
+        // fall), and clearly lower at 1024 than at 128.
+        for (size_t m = 1; m < 4; ++m) {
+            EXPECT_LE(rows[k + m].error.edgeRmse, rows[k + m - 1].error.edgeRmse * 1.02)
+                << name << " map " << o.mapSizes[m];
+            EXPECT_LE(rows[k + m].error.rmse, rows[k + m - 1].error.rmse * 1.02)
+                << name << " map " << o.mapSizes[m];
+        }
+        EXPECT_LT(rows[k + 3].error.edgeRmse, 0.6 * rows[k].error.edgeRmse) << name;
+        EXPECT_LT(rows[k + 3].error.rmse, rows[k].error.rmse) << name;
+    }
+}
+
+TEST_F(BenchSweep, NaiveAndGatherHaveTheSameError) {
+    BenchOptions o = cheapOptions();
+    o.methods = {PCF_NAIVE, PCF_GATHER, PCF_HW};
+    o.kernels = {2, 3, 5};
+    o.mapSizes = {256, 1024};
+    std::vector<BenchRow> rows = sweep("sphere-over-plane", o, 2);
+    std::map<std::pair<int, int>, std::map<int, ErrorStats>> byPoint;
+    for (const BenchRow& r : rows)
+        byPoint[{r.point.kernel, r.point.mapSize}][r.point.method] = r.error;
+    ASSERT_EQ(byPoint.size(), 6u);
+    for (auto& [key, errors] : byPoint) {
+        const ErrorStats& naive = errors.at(PCF_NAIVE);
+        for (int other : {PCF_GATHER, PCF_HW}) {
+            const ErrorStats& e = errors.at(other);
+            std::string what = std::string(methodInfo(other).name) +
+                               " N=" + std::to_string(key.first) + " map " +
+                               std::to_string(key.second);
+            EXPECT_NEAR(e.rmse, naive.rmse, 1e-6) << what;
+            EXPECT_NEAR(e.edgeRmse, naive.edgeRmse, 1e-6) << what;
+            EXPECT_NEAR(e.maxErr, naive.maxErr, 1e-5) << what;
+            EXPECT_NEAR(e.edgeMaxErr, naive.edgeMaxErr, 1e-5) << what;
+            EXPECT_EQ(e.pixels, naive.pixels);
+        }
+        EXPECT_GT(naive.edgeRmse, 0.0);
+    }
+}
+
+TEST_F(BenchSweep, RowsCarryFetchCountsTimingsAndTheTimer) {
+    BenchOptions o = cheapOptions();
+    o.methods = {PCF_TENT, PCF_NEAREST, PCF_GATHER};
+    o.kernels = {3, 4, 7};
+    o.mapSizes = {64, 128};
+    std::vector<BenchRow> rows = sweep("box-on-plane", o, 2);
+    // Report order: the methods as given; tent skips N = 4; nearest runs once per map.
+    std::vector<BenchPoint> want = {
+        {PCF_TENT, 3, 64},    {PCF_TENT, 3, 128},    {PCF_TENT, 7, 64},   {PCF_TENT, 7, 128},
+        {PCF_NEAREST, 0, 64}, {PCF_NEAREST, 0, 128}, {PCF_GATHER, 3, 64}, {PCF_GATHER, 3, 128},
+        {PCF_GATHER, 4, 64},  {PCF_GATHER, 4, 128},  {PCF_GATHER, 7, 64}, {PCF_GATHER, 7, 128},
+    };
+    ASSERT_EQ(rows.size(), want.size());
+    for (size_t k = 0; k < rows.size(); ++k) {
+        const BenchRow& r = rows[k];
+        EXPECT_EQ(r.point, want[k]) << k;
+        int n = r.point.kernel > 0 ? r.point.kernel : 3;
+        EXPECT_EQ(r.texelReads, fetchCounts(r.point.method, n).texels) << k;
+        EXPECT_GT(r.gpuMs, 0.0) << k;
+        EXPECT_GT(r.cpuNsPerPixel, 0.0) << k;
+        EXPECT_EQ(r.cpuPixels, 2048) << k;
+        EXPECT_EQ(r.timer,
+                  isSoftwareRenderer(sContext->renderer()) ? TIMER_WALL_CLOCK : TIMER_GPU_QUERY);
+    }
+    EXPECT_EQ(rows[0].texelReads, 16);   // tent 3x3: 4 hardware taps
+    EXPECT_EQ(rows[6].texelReads, 16);   // gather 3x3: 4 gathers
+    EXPECT_EQ(rows[10].texelReads, 64);  // gather 7x7: 16 gathers
+}
+
+TEST(BenchOptionsCheck, NamesTheOptionThatIsOutOfRange) {
+    BenchOptions o;
+    o.kernels = {3, 9};
+    EXPECT_EQ(validateBenchOptions(o).value_or(""), "--kernels 9 is out of range (1..8)");
+    o = BenchOptions{};
+    o.mapSizes = {3};
+    EXPECT_EQ(validateBenchOptions(o).value_or(""), "--map-sizes 3 is out of range (4..4096)");
+    o = BenchOptions{};
+    o.methods = {PCF_TENT};
+    o.kernels = {2, 4};
+    EXPECT_NE(validateBenchOptions(o).value_or("").find("tent takes --kernels 3, 5 or 7"),
+              std::string::npos);
+    EXPECT_FALSE(validateBenchOptions(BenchOptions{}).has_value());
+    EXPECT_FALSE(validateBenchOptions(quickBenchOptions()).has_value());
+    // The defaults: 5 one-shot methods + 4 kernel methods x 3 sizes, at 4 map sizes.
+    EXPECT_EQ(benchPoints(BenchOptions{}).size(), 68u);
+    EXPECT_EQ(benchPoints(quickBenchOptions()).size(), 18u);
+}
+
+}  // namespace
+}  // namespace pcf
