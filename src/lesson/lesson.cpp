@@ -1,0 +1,460 @@
+#include "lesson/lesson.h"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <optional>
+#include <sstream>
+
+#include "kernel/methods.h"
+#include "kernel/shadow_map.h"
+#include "kernel/trace.h"
+#include "lesson/lesson_text.h"
+#include "scene/presets.h"
+#include "scene/scene_file.h"
+
+namespace pcf {
+
+namespace {
+
+// The keys a [settings] table and a [[step]] may set.
+constexpr std::string_view SETTING_KEYS[] = {"method",       "kernel",        "radius", "rotate",
+                                             "bias",         "constant_bias", "cull",   "map_size",
+                                             "depth_format", "pixel"};
+
+int lineOf(const toml::node& node) {
+    return std::max(1, static_cast<int>(node.source().begin.line));
+}
+
+std::string typeName(const toml::node& node) {
+    std::ostringstream s;
+    s << node.type();
+    return s.str();
+}
+
+std::string formatValue(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+bool isSettingKey(std::string_view key) {
+    return std::find(std::begin(SETTING_KEYS), std::end(SETTING_KEYS), key) !=
+           std::end(SETTING_KEYS);
+}
+
+std::string joinNames(const std::vector<std::string_view>& names) {
+    std::string out;
+    for (std::string_view n : names) {
+        if (!out.empty()) out += ", ";
+        out += n;
+    }
+    return out;
+}
+
+// Where each setting got its current value, so that a problem found only once the state is
+// complete (tent with kernel 4) is blamed on the line that made it.
+struct SettingLines {
+    int method = 0;
+    int kernel = 0;
+};
+
+class LessonParser {
+  public:
+    LessonParser(std::string_view text, std::string source)
+        : mText(text), mSource(std::move(source)) {
+        size_t start = 0;
+        while (start <= mText.size()) {
+            size_t end = mText.find('\n', start);
+            if (end == std::string_view::npos) end = mText.size();
+            mLines.push_back(mText.substr(start, end - start));
+            start = end + 1;
+        }
+    }
+
+    Lesson parse() {
+        toml::table root;
+        try {
+            root = toml::parse(mText, mSource);
+        } catch (const toml::parse_error& e) {
+            throw InputError(mSource, std::max(1, static_cast<int>(e.source().begin.line)),
+                             std::string(e.description()));
+        }
+        checkRootKeys(root);
+        Lesson lesson;
+        lesson.name = std::filesystem::path(mSource).stem().string();
+        lesson.sourcePath = mSource;
+        lesson.title = requireText(root, "title", "lesson", root);
+        lesson.scene = readScene(root);
+
+        LessonSettings state;
+        SettingLines lines;
+        if (const toml::node* node = root.get("settings")) {
+            const toml::table* settings = node->as_table();
+            if (!settings) {
+                fail(*node, "settings must be a table ([settings]), got " + typeName(*node));
+            }
+            checkKeys(*settings, "settings", {});
+            applySettings(*settings, "settings", state, lines);
+        }
+
+        const toml::node* stepsNode = root.get("step");
+        const toml::array* steps = stepsNode ? stepsNode->as_array() : nullptr;
+        if (!stepsNode || (steps && steps->empty())) {
+            throw InputError(mSource, stepsNode ? lineOf(*stepsNode) : 1,
+                             "lesson has no steps: add at least one [[step]] table");
+        }
+        if (!steps || !steps->is_array_of_tables()) {
+            fail(*stepsNode,
+                 "step must be an array of tables ([[step]]), got " +
+                     (steps ? std::string("an array of other values") : typeName(*stepsNode)));
+        }
+        for (size_t i = 0; i < steps->size(); ++i) {
+            const toml::table& table = *steps->get(i)->as_table();
+            std::string what = "step " + std::to_string(i + 1);
+            checkKeys(table, what, {"title", "text"});
+            applySettings(table, what, state, lines);
+            LessonStep step;
+            step.line = lineOf(table);
+            step.title = requireText(table, "title", what, table);
+            step.text = requireText(table, "text", what, table);
+            step.settings = state;
+            checkState(table, what, state, lines);
+            checkText(*table.get("text"), what, step);
+            lesson.steps.push_back(std::move(step));
+        }
+        return lesson;
+    }
+
+  private:
+    [[noreturn]] void fail(const toml::node& node, const std::string& problem) const {
+        throw InputError(mSource, lineOf(node), problem);
+    }
+
+    void checkRootKeys(const toml::table& root) const {
+        for (auto&& [key, value] : root) {
+            std::string_view k = key.str();
+            if (k == "title" || k == "scene" || k == "settings" || k == "step" || k == "camera" ||
+                k == "light" || k == "object") {
+                continue;
+            }
+            std::string problem = "lesson has unknown key '" + std::string(k) + "'";
+            if (k == "steps") problem += " (steps are [[step]] tables)";
+            if (k == "setting") problem += " (did you mean [settings]?)";
+            if (k == "objects") problem += " (objects are [[object]] tables)";
+            if (isSettingKey(k)) problem += " (put it in [settings] or in a [[step]])";
+            throw InputError(mSource, std::max(1, static_cast<int>(key.source().begin.line)),
+                             problem);
+        }
+    }
+
+    // Refuses keys that are neither settings nor in `extra`: a misspelt key (kernal) would
+    // otherwise be silently ignored and the lesson would show another state than intended.
+    void checkKeys(const toml::table& table, const std::string& what,
+                   std::initializer_list<std::string_view> extra) const {
+        for (auto&& [key, value] : table) {
+            std::string_view k = key.str();
+            bool known = isSettingKey(k);
+            for (std::string_view e : extra) known = known || k == e;
+            if (known) continue;
+            std::string problem = what + " has unknown key '" + std::string(k) + "'";
+            if (k == "kernal" || k == "kernel_size") problem += " (did you mean 'kernel'?)";
+            if (k == "mapsize" || k == "map-size") problem += " (did you mean 'map_size'?)";
+            if (k == "constant-bias" || k == "constantBias") {
+                problem += " (did you mean 'constant_bias'?)";
+            }
+            if (k == "depth-format" || k == "depthFormat") {
+                problem += " (did you mean 'depth_format'?)";
+            }
+            if (k == "body") problem += " (did you mean 'text'?)";
+            throw InputError(mSource, std::max(1, static_cast<int>(key.source().begin.line)),
+                             problem);
+        }
+    }
+
+    std::string requireText(const toml::table& table, std::string_view key, const std::string& what,
+                            const toml::node& owner) const {
+        const toml::node* node = table.get(key);
+        if (!node) fail(owner, what + " has no " + std::string(key));
+        const auto* s = node->as_string();
+        if (!s)
+            fail(*node,
+                 what + " " + std::string(key) + " must be a string, got " + typeName(*node));
+        std::string value = s->get();
+        if (value.find_first_not_of(" \t\r\n") == std::string::npos) {
+            fail(*node, what + " " + std::string(key) + " must not be empty");
+        }
+        return value;
+    }
+
+    Scene readScene(const toml::table& root) const {
+        bool hasTables =
+            root.contains("camera") || root.contains("light") || root.contains("object");
+        const toml::node* sceneNode = root.get("scene");
+        if (sceneNode) {
+            const auto* name = sceneNode->as_string();
+            if (!name) {
+                fail(*sceneNode, "scene must be a preset name (a string), got " +
+                                     typeName(*sceneNode) +
+                                     "; a lesson's own scene is given by top-level [camera], "
+                                     "[light] and [[object]] tables");
+            }
+            if (hasTables) {
+                fail(*sceneNode,
+                     "lesson gives both scene = \"" + name->get() +
+                         "\" and scene tables ([camera], [light], [[object]]): keep one");
+            }
+            std::optional<Scene> scene = presetScene(name->get());
+            if (!scene) {
+                fail(*sceneNode, "unknown scene preset '" + name->get() +
+                                     "' (known: " + joinNames(presetNames()) + ")");
+            }
+            return *scene;
+        }
+        if (!hasTables) {
+            throw InputError(mSource, 1,
+                             "lesson has no scene: add scene = \"box-on-plane\" (a preset) or "
+                             "the [camera], [light] and [[object]] tables");
+        }
+        return parseSceneToml(root, mSource);
+    }
+
+    std::string string(const toml::node& node, const std::string& name) const {
+        const auto* s = node.as_string();
+        if (!s) fail(node, name + " must be a string, got " + typeName(node));
+        return s->get();
+    }
+
+    int64_t integer(const toml::node& node, const std::string& name) const {
+        const auto* i = node.as_integer();
+        if (!i) fail(node, name + " must be an integer, got " + typeName(node));
+        return i->get();
+    }
+
+    double number(const toml::node& node, const std::string& name) const {
+        double v = 0.0;
+        if (const auto* i = node.as_integer()) {
+            v = static_cast<double>(i->get());
+        } else if (const auto* f = node.as_floating_point()) {
+            v = f->get();
+        } else {
+            fail(node, name + " must be a number, got " + typeName(node));
+        }
+        if (!std::isfinite(v)) fail(node, name + " must be finite, got " + formatValue(v));
+        return v;
+    }
+
+    // Sets the state from every settings key of `table` (a [settings] table or a [[step]]).
+    void applySettings(const toml::table& table, const std::string& what, LessonSettings& s,
+                       SettingLines& lines) const {
+        auto name = [&](std::string_view key) { return what + " " + std::string(key); };
+        if (const toml::node* n = table.get("method")) {
+            std::string id = string(*n, name("method"));
+            std::optional<int> method = methodFromName(id);
+            if (!method) {
+                fail(*n, "unknown method '" + id + "' (known: " + methodNameList() + ")");
+            }
+            s.method = *method;
+            lines.method = lineOf(*n);
+        }
+        if (const toml::node* n = table.get("kernel")) {
+            int64_t k = integer(*n, name("kernel"));
+            if (k < MIN_KERNEL || k > MAX_KERNEL) {
+                fail(*n, name("kernel") + " must be " + std::to_string(MIN_KERNEL) + ".." +
+                             std::to_string(MAX_KERNEL) + ", got " + std::to_string(k));
+            }
+            s.kernel = static_cast<int>(k);
+            lines.kernel = lineOf(*n);
+        }
+        if (const toml::node* n = table.get("radius")) {
+            double r = number(*n, name("radius"));
+            if (!(r > 0.0 && r <= 64.0)) {
+                fail(*n, name("radius") + " must be in (0, 64] texels, got " + formatValue(r));
+            }
+            s.radius = static_cast<float>(r);
+        }
+        if (const toml::node* n = table.get("rotate")) {
+            const auto* b = n->as_boolean();
+            if (!b) fail(*n, name("rotate") + " must be true or false, got " + typeName(*n));
+            s.rotate = b->get();
+        }
+        if (const toml::node* n = table.get("bias")) {
+            std::string bias = string(*n, name("bias"));
+            if (bias != "none" && bias != "constant") {
+                fail(*n, "unknown bias mode '" + bias + "' (known: none, constant)");
+            }
+            s.bias = bias;
+        }
+        if (const toml::node* n = table.get("constant_bias")) {
+            double b = number(*n, name("constant_bias"));
+            if (!(b >= -1.0 && b <= 1.0)) {
+                fail(*n, name("constant_bias") + " must be in [-1, 1], got " + formatValue(b));
+            }
+            s.constantBias = static_cast<float>(b);
+        }
+        if (const toml::node* n = table.get("cull")) {
+            std::string cull = string(*n, name("cull"));
+            if (cull != "back" && cull != "front" && cull != "none") {
+                fail(*n, "unknown cull mode '" + cull + "' (known: back, front, none)");
+            }
+            s.cull = cull;
+        }
+        if (const toml::node* n = table.get("map_size")) {
+            int64_t size = integer(*n, name("map_size"));
+            if (size < LESSON_MIN_MAP_SIZE || size > LESSON_MAX_MAP_SIZE) {
+                fail(*n, name("map_size") + " must be " + std::to_string(LESSON_MIN_MAP_SIZE) +
+                             ".." + std::to_string(LESSON_MAX_MAP_SIZE) + ", got " +
+                             std::to_string(size));
+            }
+            s.mapSize = static_cast<int>(size);
+        }
+        if (const toml::node* n = table.get("depth_format")) {
+            if (!n->is_string()) {
+                fail(*n, name("depth_format") +
+                             " must be a string (\"16\", \"24\" or \"32f\"), got " + typeName(*n));
+            }
+            std::string format = n->as_string()->get();
+            if (format != "16" && format != "24" && format != "32f") {
+                fail(*n, "unknown depth format '" + format + "' (known: 16, 24, 32f)");
+            }
+            s.depthFormat = format;
+        }
+        if (const toml::node* n = table.get("pixel")) s.pixel = readPixel(*n, name("pixel"));
+    }
+
+    glm::ivec2 readPixel(const toml::node& node, const std::string& name) const {
+        const toml::array* array = node.as_array();
+        if (!array || array->size() != 2) {
+            fail(node,
+                 name + " must be [x, y], two integers, got " +
+                     (array ? "an array of " + std::to_string(array->size()) : typeName(node)));
+        }
+        glm::ivec2 p;
+        for (int k = 0; k < 2; ++k) {
+            const toml::node& c = *array->get(static_cast<size_t>(k));
+            int64_t v = integer(c, name + (k == 0 ? ".x" : ".y"));
+            int limit = LESSON_FRAME_SIZE[k];
+            if (v < 0 || v >= limit) {
+                fail(c, name + (k == 0 ? ".x " : ".y ") + std::to_string(v) +
+                            " is outside the 1280 x 720 reference "
+                            "frame (x 0..1279, y 0..719, origin top-left)");
+            }
+            p[k] = static_cast<int>(v);
+        }
+        return p;
+    }
+
+    // The checks that need the whole state: the kernel a method takes.
+    void checkState(const toml::table& step, const std::string& what, const LessonSettings& s,
+                    const SettingLines& lines) const {
+        std::optional<std::string> problem =
+            validateParams(makeParams(s.method, s.kernel, s.radius));
+        if (!problem) return;
+        // validateParams speaks in command-line options ("--kernel 4"); a lesson has keys.
+        std::string text = *problem;
+        for (size_t at = text.find("--"); at != std::string::npos; at = text.find("--")) {
+            text.erase(at, 2);
+        }
+        int line = std::max(lines.method, lines.kernel);
+        if (line <= 0) line = lineOf(step);
+        throw InputError(mSource, line, what + ": " + text);
+    }
+
+    // Placeholders are checked now, not when shown: a typo must fail the lesson, not a class.
+    void checkText(const toml::node& textNode, const std::string& what,
+                   const LessonStep& step) const {
+        // The reads and fetch instructions this step's method issues, from the kernel itself.
+        ShadowMap probe(16, 16, 1.0f);
+        Trace trace = traceLookup(
+            probe, vec2(0.5f), 0.5f, 0.5f,
+            makeParams(step.settings.method, step.settings.kernel, step.settings.radius));
+        std::optional<PlaceholderProblem> problem = checkPlaceholders(
+            step.text, static_cast<int>(trace.taps.size()), static_cast<int>(trace.fetches.size()));
+        if (!problem) return;
+        throw InputError(mSource, textLine(textNode, step.text, problem->offset),
+                         what + " text: " + problem->problem);
+    }
+
+    // The line of the file holding offset `offset` of a string value. Counting the value's
+    // newlines is right for the usual """ block; when escapes or line-ending backslashes make it
+    // wrong, the line is found by searching the value's lines for the placeholder itself.
+    int textLine(const toml::node& node, const std::string& value, size_t offset) const {
+        int first = lineOf(node);
+        int last = std::max(first, static_cast<int>(node.source().end.line));
+        int counted = first;
+        if (first - 1 < static_cast<int>(mLines.size())) {
+            std::string_view opening = mLines[static_cast<size_t>(first - 1)];
+            size_t q = opening.find("\"\"\"");
+            if (q == std::string_view::npos) q = opening.find("'''");
+            // A newline right after the opening delimiter is not part of the value.
+            if (q != std::string_view::npos &&
+                opening.find_first_not_of(" \t\r", q + 3) == std::string_view::npos) {
+                ++counted;
+            }
+        }
+        counted += static_cast<int>(std::count(value.begin(), value.begin() + offset, '\n'));
+        size_t close = value.find('}', offset);
+        std::string token =
+            value.substr(offset, close == std::string::npos || value.find('\n', offset) < close
+                                     ? 1
+                                     : close - offset + 1);
+        auto lineHas = [&](int line) {
+            return line >= 1 && line <= static_cast<int>(mLines.size()) &&
+                   mLines[static_cast<size_t>(line - 1)].find(token) != std::string_view::npos;
+        };
+        if (lineHas(counted)) return counted;
+        for (int line = first; line <= last; ++line) {
+            if (lineHas(line)) return line;
+        }
+        return std::clamp(counted, first, last);
+    }
+
+    std::string_view mText;
+    std::string mSource;
+    std::vector<std::string_view> mLines;
+};
+
+}  // namespace
+
+float LessonSettings::depthBias() const { return bias == "constant" ? constantBias : 0.0f; }
+
+PcfParams LessonSettings::pcfParams(glm::ivec2 framePixel, glm::ivec2 frameSize) const {
+    vec2 rotation(1.0f, 0.0f);
+    if (rotate) {
+        // gl_FragCoord counts rows from the bottom.
+        rotation = pcfPixelRotation(ivec2(framePixel.x, frameSize.y - 1 - framePixel.y));
+    }
+    return makeParams(method, kernel, radius, rotation);
+}
+
+Lesson parseLessonFile(const std::string& path) {
+    if (std::filesystem::is_directory(path)) {
+        throw InputError(path, 0, "cannot open file (it is a directory)");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, 0, "cannot open file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::string content = text.str();
+    return parseLessonString(content, path);
+}
+
+Lesson parseLessonString(std::string_view text, const std::string& sourceName) {
+    return LessonParser(text, sourceName).parse();
+}
+
+glm::ivec2 scalePixel(glm::ivec2 pixel, glm::ivec2 frameSize) {
+    glm::ivec2 out;
+    for (int k = 0; k < 2; ++k) {
+        // The reference pixel's centre, carried to the new frame, then the pixel holding it.
+        double centre = (pixel[k] + 0.5) * frameSize[k] / LESSON_FRAME_SIZE[k];
+        out[k] = std::clamp(static_cast<int>(std::floor(centre)), 0, std::max(0, frameSize[k] - 1));
+    }
+    return out;
+}
+
+}  // namespace pcf

@@ -1,0 +1,126 @@
+// lesson.h: a lesson is a scene, a starting state of the renderer and a list of steps, each with
+// a title and a text about one picked pixel. The viewer (`pcfscope view`) and the exporter
+// (`pcfscope export`) render the scene with a step's state, trace the picked pixel's lookup with
+// the CPU kernel (traceLookup) and show the step's text with its placeholders filled from that
+// trace (lesson_text.h). So every number a step says about its pixel is the number computed.
+//
+// The format, one TOML file per lesson in lessons/ (file names sort in teaching order):
+//
+//   title = "The bilinear lerp"       required, the lesson's title
+//   scene = "box-on-plane"            a preset name (scene/presets.h), OR the scene's own
+//                                     [camera], [light] and [[object]] tables at the top level
+//                                     (scene/scene_file.h), never both
+//
+//   [settings]                        optional: the state before the first step. Every key is
+//                                     optional; the defaults are RenderSettings' (render/):
+//   method        = "bilinear2x2"     a method id (kernel/methods.h), default "pcf-gather"
+//   kernel        = 3                 N, 1..8 (tent: 3, 5 or 7), default 3
+//   radius        = 1.0               poisson disk radius in texels, (0, 64], default 1
+//   rotate        = false             poisson: rotate the disk per pixel, default false
+//   bias          = "constant"        "none" or "constant", default "constant"
+//   constant_bias = 0.002             light depth units, ref = z - constant_bias, in [-1, 1],
+//                                     default 0.002 (used only when bias = "constant")
+//   cull          = "back"            faces culled in the shadow pass: "back", "front", "none"
+//   map_size      = 256               the shadow map is map_size^2 texels, 4..4096, default 1024
+//   depth_format  = "32f"             the shadow map's depth format: "16", "24" or "32f"
+//   pixel         = [612, 388]        the picked pixel in the 1280 x 720 reference frame,
+//                                     origin top-left, y down (see scalePixel), default the
+//                                     centre [640, 360]
+//
+//   [[step]]                          one table per step, at least one, shown in file order
+//   title = "..."                     required, not empty
+//   text  = """..."""                 required, not empty; {placeholders} are filled from the
+//                                     step's trace (lesson_text.h lists them). Newlines are
+//                                     kept (line and paragraph breaks); end a source line with
+//                                     a backslash to run on into the next (TOML's
+//                                     line-ending backslash)
+//   method = "hw2x2"                  any [settings] key: it changes the state from this step
+//                                     on; the steps after it inherit it
+//
+// Every number a step's text states about its pixel is a placeholder, so the words follow the
+// kernel. What the words claim in prose (in shadow, half lit, near 0.8) depends on the pixel
+// picked: tests/lesson_pixels_test.cpp renders every step in the reference frame and in the
+// viewer's default 960 x 540 scene view and checks those claims on the traced pixel.
+//
+// Every problem throws InputError `file:line: what is wrong`, with the line of the offending
+// value (or of its table when a key is missing): TOML syntax, unknown keys, wrong types, unknown
+// names, values out of range, a method with a kernel it does not take (blamed on whichever of
+// the two was set last), an unknown placeholder in a step's text (the line of the placeholder),
+// an unknown preset, a step without title or text, a lesson without steps.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kernel/pcf.h"
+#include "scene/input_error.h"
+#include "scene/scene.h"
+
+namespace pcf {
+
+// Picked pixels are given in this frame and scaled to the frame actually rendered.
+constexpr glm::ivec2 LESSON_FRAME_SIZE{1280, 720};
+
+// The lesson's own copy of the map size range (render_settings.h has the same numbers, but the
+// lesson library must not depend on the renderer).
+constexpr int LESSON_MIN_MAP_SIZE = 4;
+constexpr int LESSON_MAX_MAP_SIZE = 4096;
+
+// The renderer's state at one step, fully resolved. Bias, cull and depth format stay validated
+// strings (the names render_settings.h parses) so that this library needs nothing from the
+// renderer; the method is its kernel id (PCF_NEAREST .. PCF_POISSON).
+struct LessonSettings {
+    int method = PCF_GATHER;
+    int kernel = 3;
+    float radius = 1.0f;              // poisson, texels
+    bool rotate = false;              // poisson: rotate the disk per pixel
+    std::string bias = "constant";    // "none" or "constant"
+    float constantBias = 0.002f;      // light depth units: ref = z - constantBias
+    std::string cull = "back";        // shadow pass culling: "back", "front" or "none"
+    int mapSize = 1024;               // texels per side
+    std::string depthFormat = "32f";  // "16", "24" or "32f"
+    glm::ivec2 pixel{640, 360};       // in the 1280 x 720 reference frame, origin top-left, y down
+
+    // What is subtracted from the receiver's depth: ref = z - depthBias(); 0 for bias "none".
+    float depthBias() const;
+
+    // The kernel's parameters for the pixel traced. framePixel is in the frame actually rendered
+    // (origin top-left, y down, as scalePixel returns it); the per-pixel Poisson rotation is
+    // hashed from GL's window coordinates (origin bottom-left), as the shaders do, so the trace
+    // rotates the disk exactly as the rendered pixel did.
+    PcfParams pcfParams(glm::ivec2 framePixel, glm::ivec2 frameSize) const;
+
+    bool operator==(const LessonSettings&) const = default;
+};
+
+struct LessonStep {
+    std::string title;
+    std::string text;         // with {placeholders}; fill with fillText (lesson_text.h)
+    int line = 0;             // the line of the step's [[step]] header in the lesson file
+    LessonSettings settings;  // the state at this step: [settings], then every step up to here
+};
+
+struct Lesson {
+    std::string name;  // the file's stem, e.g. "03-bilinear-lerp"
+    std::string title;
+    std::string sourcePath;  // the path given to parseLessonFile (the source name for strings)
+    Scene scene;             // the preset, or the scene tables of the file
+    std::vector<LessonStep> steps;
+};
+
+// Reads and parses a lesson file. A missing file: InputError `path: cannot open file`.
+Lesson parseLessonFile(const std::string& path);
+
+// Parses lesson text; sourceName names it in error messages and gives the lesson's name (its
+// stem) and sourcePath.
+Lesson parseLessonString(std::string_view text, const std::string& sourceName);
+
+// A lesson's pixel (given in the 1280 x 720 reference frame, origin top-left, y down) in a frame
+// of frameSize: the pixel whose area holds the reference pixel's centre, clamped to the frame.
+// Each axis scales on its own, so the same spot of the picture is traced only when the frame
+// keeps the reference's 16:9 shape (the camera's field of view is vertical).
+glm::ivec2 scalePixel(glm::ivec2 pixel, glm::ivec2 frameSize);
+
+}  // namespace pcf

@@ -1,0 +1,384 @@
+#include "lesson/lesson_text.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <set>
+#include <stdexcept>
+#include <utility>
+#include <variant>
+
+namespace pcf {
+
+namespace {
+
+// A placeholder's value: a number (integers kept apart so that they print without decimals), a
+// piece of text, or nothing (an index past the trace's reads).
+struct Value {
+    enum Kind { Number, Integer, Text, Missing } kind = Missing;
+    double number = 0.0;
+    std::string text;
+};
+
+Value number(double v) { return {Value::Number, v, {}}; }
+Value integer(int v) { return {Value::Integer, static_cast<double>(v), {}}; }
+Value text(std::string s) { return {Value::Text, 0.0, std::move(s)}; }
+
+using Getter = std::function<Value(const Trace&, const StepContext&)>;
+
+struct Simple {
+    std::string_view name;
+    Getter get;
+};
+
+float angleDeg(vec2 rotation) {
+    // The same expression as the trace's Poisson step, so both print the same angle.
+    return std::atan2(rotation.y, rotation.x) * 57.2957795f;
+}
+
+int distinctTexels(const Trace& tr) {
+    std::set<std::pair<int, int>> seen;
+    for (const TapRecord& t : tr.taps) seen.insert({t.texel.x, t.texel.y});
+    return static_cast<int>(seen.size());
+}
+
+int litCount(const Trace& tr) {
+    int n = 0;
+    for (const TapRecord& t : tr.taps) n += t.lit >= 0.5f ? 1 : 0;
+    return n;
+}
+
+PcfFootprint footprint(const Trace& tr) {
+    int n = std::max(1, tr.params.kernel);
+    return pcfKernelFootprint(tr.uv, tr.mapSize, n);
+}
+
+const std::vector<Simple>& simpleNames() {
+    static const std::vector<Simple> names = {
+        {"uv.x", [](const Trace& t, const StepContext&) { return number(t.uv.x); }},
+        {"uv.y", [](const Trace& t, const StepContext&) { return number(t.uv.y); }},
+        {"z", [](const Trace& t, const StepContext&) { return number(t.z); }},
+        {"ref", [](const Trace& t, const StepContext&) { return number(t.ref); }},
+        {"depth_bias", [](const Trace& t, const StepContext&) { return number(t.z - t.ref); }},
+        {"texel.x", [](const Trace& t, const StepContext&) { return number(t.pos.p.x); }},
+        {"texel.y", [](const Trace& t, const StepContext&) { return number(t.pos.p.y); }},
+        {"base.x", [](const Trace& t, const StepContext&) { return integer(t.pos.base.x); }},
+        {"base.y", [](const Trace& t, const StepContext&) { return integer(t.pos.base.y); }},
+        {"frac.x", [](const Trace& t, const StepContext&) { return number(t.pos.frac.x); }},
+        {"frac.y", [](const Trace& t, const StepContext&) { return number(t.pos.frac.y); }},
+        {"1-frac.x",
+         [](const Trace& t, const StepContext&) { return number(1.0f - t.pos.frac.x); }},
+        {"1-frac.y",
+         [](const Trace& t, const StepContext&) { return number(1.0f - t.pos.frac.y); }},
+        {"g.x", [](const Trace& t, const StepContext&) { return number(footprint(t).frac.x); }},
+        {"g.y", [](const Trace& t, const StepContext&) { return number(footprint(t).frac.y); }},
+        {"1-g.x",
+         [](const Trace& t, const StepContext&) { return number(1.0f - footprint(t).frac.x); }},
+        {"1-g.y",
+         [](const Trace& t, const StepContext&) { return number(1.0f - footprint(t).frac.y); }},
+        {"tent.s", [](const Trace& t,
+                      const StepContext&) { return number(pcfTentBase(t.uv, t.mapSize).frac.x); }},
+        {"tent.t", [](const Trace& t,
+                      const StepContext&) { return number(pcfTentBase(t.uv, t.mapSize).frac.y); }},
+        {"visibility", [](const Trace& t, const StepContext&) { return number(t.visibility); }},
+        {"shadow", [](const Trace& t, const StepContext&) { return number(1.0f - t.visibility); }},
+        {"method",
+         [](const Trace& t, const StepContext&) {
+             if (t.params.method < 0 || t.params.method >= PCF_METHOD_COUNT) return text("?");
+             return text(std::string(methodInfo(t.params.method).name));
+         }},
+        {"kernel", [](const Trace& t, const StepContext&) { return integer(t.params.kernel); }},
+        {"radius", [](const Trace& t, const StepContext&) { return number(t.params.radius); }},
+        {"rotation",
+         [](const Trace& t, const StepContext&) { return number(angleDeg(t.params.rotation)); }},
+        {"map_size", [](const Trace& t, const StepContext&) { return integer(t.mapSize.x); }},
+        {"taps", [](const Trace& t,
+                    const StepContext&) { return integer(static_cast<int>(t.taps.size())); }},
+        {"texels", [](const Trace& t, const StepContext&) { return integer(t.counts.texels); }},
+        {"gathers", [](const Trace& t, const StepContext&) { return integer(t.counts.gathers); }},
+        {"hw_taps", [](const Trace& t, const StepContext&) { return integer(t.counts.hwTaps); }},
+        {"fetches", [](const Trace& t,
+                       const StepContext&) { return integer(static_cast<int>(t.fetches.size())); }},
+        {"distinct", [](const Trace& t, const StepContext&) { return integer(distinctTexels(t)); }},
+        {"lit_count", [](const Trace& t, const StepContext&) { return integer(litCount(t)); }},
+        {"shadowed_count",
+         [](const Trace& t, const StepContext&) {
+             return integer(static_cast<int>(t.taps.size()) - litCount(t));
+         }},
+        {"weights.origin.x",
+         [](const Trace& t, const StepContext&) { return integer(t.weights.origin.x); }},
+        {"weights.origin.y",
+         [](const Trace& t, const StepContext&) { return integer(t.weights.origin.y); }},
+        {"weights.w", [](const Trace& t, const StepContext&) { return integer(t.weights.size.x); }},
+        {"weights.h", [](const Trace& t, const StepContext&) { return integer(t.weights.size.y); }},
+        {"pixel.x", [](const Trace&, const StepContext& c) { return integer(c.pixel.x); }},
+        {"pixel.y", [](const Trace&, const StepContext& c) { return integer(c.pixel.y); }},
+        {"bias", [](const Trace&, const StepContext& c) { return text(c.bias); }},
+        {"constant_bias",
+         [](const Trace&, const StepContext& c) { return number(c.constantBias); }},
+        {"cull", [](const Trace&, const StepContext& c) { return text(c.cull); }},
+        {"depth_format", [](const Trace&, const StepContext& c) { return text(c.depthFormat); }},
+    };
+    return names;
+}
+
+constexpr std::string_view TAP_FIELDS[] = {"i", "j", "depth", "ref", "margin", "lit", "weight"};
+constexpr std::string_view FETCH_FIELDS[] = {"value", "weight", "u", "v"};
+
+// A placeholder's name, taken apart: a simple name, or an indexed one (tap[K].field,
+// fetch[K].field, weight[I,J]).
+struct Name {
+    const Simple* simple = nullptr;
+    std::string_view family;  // "tap", "fetch" or "weight" for indexed names
+    std::string_view field;   // tap / fetch field
+    int index = 0;            // K, or I for weight
+    int index2 = 0;           // J for weight
+};
+
+// A non-negative decimal integer filling all of s.
+std::optional<int> parseIndex(std::string_view s) {
+    if (s.empty() || s.size() > 6) return std::nullopt;
+    int v = 0;
+    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || end != s.data() + s.size() || v < 0) return std::nullopt;
+    return v;
+}
+
+std::optional<Name> parseName(std::string_view s) {
+    for (const Simple& simple : simpleNames()) {
+        if (simple.name == s) return Name{&simple, {}, {}, 0, 0};
+    }
+    size_t open = s.find('[');
+    size_t close = s.find(']');
+    if (open == std::string_view::npos || close == std::string_view::npos || close < open) {
+        return std::nullopt;
+    }
+    std::string_view family = s.substr(0, open);
+    std::string_view inside = s.substr(open + 1, close - open - 1);
+    std::string_view rest = s.substr(close + 1);
+    Name name;
+    name.family = family;
+    if (family == "weight") {
+        size_t comma = inside.find(',');
+        if (!rest.empty() || comma == std::string_view::npos) return std::nullopt;
+        std::optional<int> i = parseIndex(inside.substr(0, comma));
+        std::optional<int> j = parseIndex(inside.substr(comma + 1));
+        if (!i || !j) return std::nullopt;
+        name.index = *i;
+        name.index2 = *j;
+        return name;
+    }
+    if (family != "tap" && family != "fetch") return std::nullopt;
+    std::optional<int> k = parseIndex(inside);
+    if (!k || rest.size() < 2 || rest[0] != '.') return std::nullopt;
+    name.index = *k;
+    name.field = rest.substr(1);
+    bool known = false;
+    if (family == "tap") {
+        for (std::string_view f : TAP_FIELDS) known = known || f == name.field;
+    } else {
+        for (std::string_view f : FETCH_FIELDS) known = known || f == name.field;
+    }
+    if (!known) return std::nullopt;
+    return name;
+}
+
+Value valueOf(const Name& name, const Trace& tr, const StepContext& ctx) {
+    if (name.simple) return name.simple->get(tr, ctx);
+    if (name.family == "weight") {
+        return number(tr.weights.at(tr.weights.origin + ivec2(name.index, name.index2)));
+    }
+    if (name.family == "tap") {
+        if (name.index >= static_cast<int>(tr.taps.size())) return {};
+        const TapRecord& t = tr.taps[static_cast<size_t>(name.index)];
+        if (name.field == "i") return integer(t.texel.x);
+        if (name.field == "j") return integer(t.texel.y);
+        if (name.field == "depth") return number(t.depth);
+        if (name.field == "ref") return number(t.ref);
+        if (name.field == "margin") return number(t.depth - t.ref);
+        if (name.field == "lit") return integer(t.lit >= 0.5f ? 1 : 0);
+        return number(t.weight);
+    }
+    if (name.index >= static_cast<int>(tr.fetches.size())) return {};
+    const FetchRecord& f = tr.fetches[static_cast<size_t>(name.index)];
+    if (name.field == "value") {
+        // What the instruction returned, rebuilt from its reads as the trace's steps do.
+        float sum = 0.0f;
+        for (const TapRecord& t : tr.taps) {
+            if (t.fetch == name.index) sum += t.weight * t.lit;
+        }
+        return number(f.weight > 0.0f ? sum / f.weight : 0.0f);
+    }
+    if (name.field == "weight") return number(f.weight);
+    if (name.field == "u") return number(f.uv.x);
+    return number(f.uv.y);
+}
+
+// One placeholder: {name[*factor][:decimals]}.
+struct Placeholder {
+    Name name;
+    std::optional<double> factor;
+    std::optional<int> decimals;
+};
+
+// Parses the inside of the braces, or says what is wrong with it.
+std::variant<Placeholder, std::string> parsePlaceholder(std::string_view inside) {
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on chains of +.
+    std::string shown = "{";
+    shown.append(inside);
+    shown.append("}");
+    Placeholder ph;
+    std::string_view body = inside;
+    size_t colon = body.rfind(':');
+    if (colon != std::string_view::npos) {
+        std::string_view digits = body.substr(colon + 1);
+        std::optional<int> n = parseIndex(digits);
+        if (!n || *n > 9) {
+            return "placeholder " + shown + " has a bad format: :N takes N = 0..9 decimals";
+        }
+        ph.decimals = *n;
+        body = body.substr(0, colon);
+    }
+    size_t star = body.find('*');
+    if (star != std::string_view::npos) {
+        std::string_view f = body.substr(star + 1);
+        double v = 0.0;
+        auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+        if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v)) {
+            return "placeholder " + shown + " has a bad factor: *F takes a number, e.g. *9";
+        }
+        ph.factor = v;
+        body = body.substr(0, star);
+    }
+    std::optional<Name> name = parseName(body);
+    if (!name) {
+        return "unknown placeholder {" + std::string(body) +
+               "} (see placeholderNames(); write {{ for a literal brace)";
+    }
+    ph.name = *name;
+    bool isText =
+        name->simple && (name->simple->name == "method" || name->simple->name == "bias" ||
+                         name->simple->name == "cull" || name->simple->name == "depth_format");
+    if (isText && (ph.factor || ph.decimals)) {
+        return "placeholder " + shown + " is text: it takes no *F or :N";
+    }
+    return ph;
+}
+
+std::string formatDecimals(double v, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    std::string s = buf;
+    // "-0.000" says nothing a student should read as negative.
+    if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+    return s;
+}
+
+std::string format(const Value& v, const Placeholder& ph) {
+    if (v.kind == Value::Missing) return "n/a";
+    if (v.kind == Value::Text) return v.text;
+    double x = v.number * ph.factor.value_or(1.0);
+    if (ph.decimals) return formatDecimals(x, *ph.decimals);
+    if (v.kind == Value::Integer && !ph.factor) return std::to_string(static_cast<int>(v.number));
+    return formatNumber(static_cast<float>(x));
+}
+
+// Walks text, calling onLiteral for plain text and onPlaceholder for each placeholder. Returns
+// the first problem met, if any.
+template <class OnLiteral, class OnPlaceholder>
+std::optional<PlaceholderProblem> scan(std::string_view text, OnLiteral onLiteral,
+                                       OnPlaceholder onPlaceholder) {
+    size_t i = 0;
+    while (i < text.size()) {
+        char c = text[i];
+        if (c == '{' && i + 1 < text.size() && text[i + 1] == '{') {
+            onLiteral("{");
+            i += 2;
+        } else if (c == '}' && i + 1 < text.size() && text[i + 1] == '}') {
+            onLiteral("}");
+            i += 2;
+        } else if (c == '}') {
+            return PlaceholderProblem{i, "a lone } (write }} for a literal brace)"};
+        } else if (c == '{') {
+            size_t close = text.find_first_of("{}\n", i + 1);
+            if (close == std::string_view::npos || text[close] != '}') {
+                return PlaceholderProblem{
+                    i, "a { with no closing } on its line (write {{ for a literal brace)"};
+            }
+            auto parsed = parsePlaceholder(text.substr(i + 1, close - i - 1));
+            if (auto* problem = std::get_if<std::string>(&parsed)) {
+                return PlaceholderProblem{i, *problem};
+            }
+            if (std::optional<std::string> problem =
+                    onPlaceholder(std::get<Placeholder>(parsed), i)) {
+                return PlaceholderProblem{i, *problem};
+            }
+            i = close + 1;
+        } else {
+            size_t next = text.find_first_of("{}", i);
+            if (next == std::string_view::npos) next = text.size();
+            onLiteral(text.substr(i, next - i));
+            i = next;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+StepContext makeStepContext(const LessonStep& step, glm::ivec2 frameSize) {
+    StepContext ctx;
+    ctx.pixel = scalePixel(step.settings.pixel, frameSize);
+    ctx.bias = step.settings.bias;
+    ctx.constantBias = step.settings.constantBias;
+    ctx.cull = step.settings.cull;
+    ctx.depthFormat = step.settings.depthFormat;
+    return ctx;
+}
+
+std::vector<std::string> placeholderNames() {
+    std::vector<std::string> names;
+    for (const Simple& s : simpleNames()) names.emplace_back(s.name);
+    for (std::string_view f : TAP_FIELDS) names.push_back("tap[K]." + std::string(f));
+    for (std::string_view f : FETCH_FIELDS) names.push_back("fetch[K]." + std::string(f));
+    names.emplace_back("weight[I,J]");
+    return names;
+}
+
+std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int tapCount,
+                                                    int fetchCount) {
+    return scan(
+        text, [](std::string_view) {},
+        [&](const Placeholder& ph, size_t) -> std::optional<std::string> {
+            const Name& n = ph.name;
+            if (n.family == "tap" && tapCount >= 0 && n.index >= tapCount) {
+                return "tap[" + std::to_string(n.index) + "] is past the " +
+                       std::to_string(tapCount) + " reads this step's method makes (K is 0.." +
+                       std::to_string(tapCount - 1) + ")";
+            }
+            if (n.family == "fetch" && fetchCount >= 0 && n.index >= fetchCount) {
+                return "fetch[" + std::to_string(n.index) + "] is past the " +
+                       std::to_string(fetchCount) +
+                       " fetch instructions this step's method issues (K is 0.." +
+                       std::to_string(fetchCount - 1) + ")";
+            }
+            return std::nullopt;
+        });
+}
+
+std::string fillText(std::string_view text, const Trace& trace, const StepContext& ctx) {
+    std::string out;
+    out.reserve(text.size());
+    std::optional<PlaceholderProblem> problem = scan(
+        text, [&](std::string_view literal) { out.append(literal); },
+        [&](const Placeholder& ph, size_t) -> std::optional<std::string> {
+            out.append(format(valueOf(ph.name, trace, ctx), ph));
+            return std::nullopt;
+        });
+    if (problem) throw std::invalid_argument(problem->problem);
+    return out;
+}
+
+}  // namespace pcf

@@ -1,0 +1,382 @@
+// The lesson format: parsing, inheritance across steps, and one-line errors at the right line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "kernel/pcf.h"
+#include "lesson/lesson.h"
+
+namespace pcf {
+namespace {
+
+const char* GOOD = R"(title = "The bilinear lerp"
+scene = "box-on-plane"
+
+[settings]
+method = "bilinear2x2"
+map_size = 256
+pixel = [612, 388]
+
+[[step]]
+title = "Four bits"
+text = """
+Visibility {visibility}."""
+
+[[step]]
+title = "One hardware tap"
+text = "The same: {visibility}."
+method = "hw2x2"
+bias = "none"
+
+[[step]]
+title = "Bigger map"
+text = "Map {map_size}."
+map_size = 1024
+pixel = [0, 719]
+depth_format = "16"
+cull = "front"
+constant_bias = 0.01
+kernel = 5
+radius = 2.5
+rotate = true
+)";
+
+TEST(LessonFormat, ParsesStepsThatInheritTheStateBeforeThem) {
+    Lesson lesson = parseLessonString(GOOD, "lessons/03-bilinear.toml");
+    EXPECT_EQ(lesson.name, "03-bilinear");
+    EXPECT_EQ(lesson.title, "The bilinear lerp");
+    EXPECT_EQ(lesson.sourcePath, "lessons/03-bilinear.toml");
+    EXPECT_EQ(lesson.scene.name, "box-on-plane");
+    EXPECT_EQ(lesson.scene.objects.size(), 2u);
+    ASSERT_EQ(lesson.steps.size(), 3u);
+
+    const LessonStep& s0 = lesson.steps[0];
+    EXPECT_EQ(s0.title, "Four bits");
+    EXPECT_EQ(s0.text, "Visibility {visibility}.");
+    EXPECT_EQ(s0.line, 9);
+    EXPECT_EQ(s0.settings.method, PCF_BILINEAR2X2);
+    EXPECT_EQ(s0.settings.mapSize, 256);
+    EXPECT_EQ(s0.settings.pixel, glm::ivec2(612, 388));
+    // Everything [settings] leaves out keeps RenderSettings' defaults.
+    EXPECT_EQ(s0.settings.kernel, 3);
+    EXPECT_EQ(s0.settings.radius, 1.0f);
+    EXPECT_FALSE(s0.settings.rotate);
+    EXPECT_EQ(s0.settings.bias, "constant");
+    EXPECT_EQ(s0.settings.constantBias, 0.002f);
+    EXPECT_EQ(s0.settings.cull, "back");
+    EXPECT_EQ(s0.settings.depthFormat, "32f");
+
+    const LessonStep& s1 = lesson.steps[1];
+    EXPECT_EQ(s1.line, 14);
+    EXPECT_EQ(s1.settings.method, PCF_HW2X2);
+    EXPECT_EQ(s1.settings.bias, "none");
+    EXPECT_EQ(s1.settings.mapSize, 256);  // inherited from [settings]
+    EXPECT_EQ(s1.settings.pixel, glm::ivec2(612, 388));
+
+    const LessonStep& s2 = lesson.steps[2];
+    EXPECT_EQ(s2.settings.method, PCF_HW2X2);  // inherited from step 2
+    EXPECT_EQ(s2.settings.bias, "none");
+    EXPECT_EQ(s2.settings.mapSize, 1024);
+    EXPECT_EQ(s2.settings.pixel, glm::ivec2(0, 719));
+    EXPECT_EQ(s2.settings.depthFormat, "16");
+    EXPECT_EQ(s2.settings.cull, "front");
+    EXPECT_EQ(s2.settings.constantBias, 0.01f);
+    EXPECT_EQ(s2.settings.kernel, 5);
+    EXPECT_EQ(s2.settings.radius, 2.5f);
+    EXPECT_TRUE(s2.settings.rotate);
+}
+
+TEST(LessonFormat, DepthBiasIsZeroWithoutConstantBias) {
+    LessonSettings s;
+    s.constantBias = 0.005f;
+    EXPECT_EQ(s.depthBias(), 0.005f);
+    s.bias = "none";
+    EXPECT_EQ(s.depthBias(), 0.0f);
+}
+
+TEST(LessonFormat, PcfParamsRotateTheDiskAsTheShaderDoesForThatPixel) {
+    LessonSettings s;
+    s.method = PCF_POISSON;
+    s.radius = 2.0f;
+    PcfParams plain = s.pcfParams({10, 20}, {1280, 720});
+    EXPECT_EQ(plain.method, PCF_POISSON);
+    EXPECT_EQ(plain.radius, 2.0f);
+    EXPECT_EQ(plain.rotation, vec2(1.0f, 0.0f));
+    s.rotate = true;
+    // gl_FragCoord counts rows from the bottom: top-left row 20 of 720 is GL row 699.
+    EXPECT_EQ(s.pcfParams({10, 20}, {1280, 720}).rotation, pcfPixelRotation(ivec2(10, 699)));
+}
+
+TEST(LessonFormat, ScalePixelKeepsTheSpotOfThePicture) {
+    EXPECT_EQ(scalePixel({612, 388}, {1280, 720}), glm::ivec2(612, 388));
+    EXPECT_EQ(scalePixel({612, 388}, {640, 360}), glm::ivec2(306, 194));
+    EXPECT_EQ(scalePixel({612, 388}, {2560, 1440}), glm::ivec2(1225, 777));
+    EXPECT_EQ(scalePixel({0, 0}, {1920, 1080}), glm::ivec2(0, 0));
+    EXPECT_EQ(scalePixel({1279, 719}, {1920, 1080}), glm::ivec2(1919, 1079));
+    EXPECT_EQ(scalePixel({1279, 719}, {1, 1}), glm::ivec2(0, 0));
+}
+
+TEST(LessonFormat, EmbeddedSceneTables) {
+    const char* text = R"(title = "Close up"
+[camera]
+eye = [0.0, 2.0, 3.0]
+target = [0.0, 0.0, 0.0]
+[light]
+type = "directional"
+direction = [0.3, -1.0, 0.2]
+[[object]]
+type = "plane"
+centre = [0, 0, 0]
+normal = [0, 1, 0]
+size = [4, 4]
+[[object]]
+type = "sphere"
+centre = [0, 1, 0]
+radius = 0.3
+[[step]]
+title = "t"
+text = "x"
+)";
+    Lesson lesson = parseLessonString(text, "close.toml");
+    EXPECT_EQ(lesson.scene.objects.size(), 2u);
+    EXPECT_EQ(lesson.scene.camera.eyeWs, glm::vec3(0.0f, 2.0f, 3.0f));
+    EXPECT_EQ(lesson.steps.size(), 1u);
+    // A step with no settings has the defaults.
+    EXPECT_EQ(lesson.steps[0].settings, LessonSettings{});
+}
+
+TEST(LessonFormat, ReadsAFileAndNamesItByItsStem) {
+    std::filesystem::path dir = std::filesystem::temp_directory_path() / "pcfscope_lesson_test";
+    std::filesystem::create_directories(dir);
+    std::filesystem::path file = dir / "07-poisson.toml";
+    {
+        std::ofstream out(file);
+        out << GOOD;
+    }
+    Lesson lesson = parseLessonFile(file.string());
+    EXPECT_EQ(lesson.name, "07-poisson");
+    EXPECT_EQ(lesson.sourcePath, file.string());
+    EXPECT_EQ(lesson.steps.size(), 3u);
+    std::filesystem::remove_all(dir);
+}
+
+// The error for `text`, which must be an InputError.
+std::string errorOf(const std::string& text, const std::string& source = "bad.toml") {
+    try {
+        parseLessonString(text, source);
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.source(), source);
+        return e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "not an InputError: " << e.what();
+        return "";
+    }
+    ADD_FAILURE() << "parsed without error:\n" << text;
+    return "";
+}
+
+// A good lesson header and one step, then `extra` appended to the step (line 5 on).
+std::string withStep(const std::string& extra) {
+    return "title = \"T\"\n"            // 1
+           "scene = \"pole\"\n"         // 2
+           "[[step]]\n"                 // 3
+           "title = \"S\"\n"            // 4
+           "text = \"{visibility}\"\n"  // 5
+           + extra;                     // 6..
+}
+
+TEST(LessonFormat, MissingFileAndDirectoryAreOneLine) {
+    try {
+        parseLessonFile("/nonexistent/lesson.toml");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "/nonexistent/lesson.toml: cannot open file");
+    }
+    EXPECT_THROW(parseLessonFile(std::filesystem::temp_directory_path().string()), InputError);
+}
+
+TEST(LessonFormat, TomlSyntaxErrorsNameTheirLine) {
+    std::string e = errorOf(withStep("kernel = = 3\n"));
+    EXPECT_EQ(e.rfind("bad.toml:6: ", 0), 0u) << e;
+}
+
+TEST(LessonFormat, UnknownKeysAreRefusedAtTheirLine) {
+    std::string e = errorOf(withStep("kernal = 3\n"));
+    EXPECT_EQ(e, "bad.toml:6: step 1 has unknown key 'kernal' (did you mean 'kernel'?)");
+    e = errorOf(
+        "title = \"T\"\nscene = \"pole\"\n\n[settings]\nmethod = \"nearest\"\n"
+        "mapsize = 64\n[[step]]\ntitle = \"S\"\ntext = \"x\"\n");
+    EXPECT_EQ(e, "bad.toml:6: settings has unknown key 'mapsize' (did you mean 'map_size'?)");
+    e = errorOf("title = \"T\"\nmethod = \"nearest\"\nscene = \"pole\"\n");
+    EXPECT_EQ(e.rfind("bad.toml:2: lesson has unknown key 'method'", 0), 0u) << e;
+}
+
+TEST(LessonFormat, WrongTypesAreRefused) {
+    EXPECT_EQ(errorOf(withStep("kernel = 3.0\n")),
+              "bad.toml:6: step 1 kernel must be an integer, got floating-point");
+    EXPECT_EQ(errorOf(withStep("rotate = \"yes\"\n")),
+              "bad.toml:6: step 1 rotate must be true or false, got string");
+    EXPECT_EQ(errorOf(withStep("method = 2\n")),
+              "bad.toml:6: step 1 method must be a string, got integer");
+    EXPECT_EQ(errorOf(withStep("radius = \"1\"\n")),
+              "bad.toml:6: step 1 radius must be a number, got string");
+    std::string e = errorOf(withStep("depth_format = 16\n"));
+    EXPECT_EQ(e.rfind("bad.toml:6: step 1 depth_format must be a string", 0), 0u) << e;
+    e = errorOf(withStep("pixel = [1.5, 2]\n"));
+    EXPECT_EQ(e, "bad.toml:6: step 1 pixel.x must be an integer, got floating-point");
+    e = errorOf(withStep("pixel = [1, 2, 3]\n"));
+    EXPECT_EQ(e.rfind("bad.toml:6: step 1 pixel must be [x, y]", 0), 0u) << e;
+    e = errorOf("title = 3\nscene = \"pole\"\n[[step]]\ntitle = \"S\"\ntext = \"x\"\n");
+    EXPECT_EQ(e, "bad.toml:1: lesson title must be a string, got integer");
+    e = errorOf(
+        "title = \"T\"\nscene = \"pole\"\nsettings = 3\n[[step]]\ntitle = \"S\"\n"
+        "text = \"x\"\n");
+    EXPECT_EQ(e.rfind("bad.toml:3: settings must be a table", 0), 0u) << e;
+}
+
+TEST(LessonFormat, UnknownNamesAreRefused) {
+    std::string e = errorOf(withStep("method = \"bilinear\"\n"));
+    EXPECT_EQ(e.rfind("bad.toml:6: unknown method 'bilinear' (known: nearest, box2x2,", 0), 0u)
+        << e;
+    EXPECT_EQ(errorOf(withStep("bias = \"slope\"\n")),
+              "bad.toml:6: unknown bias mode 'slope' (known: none, constant)");
+    EXPECT_EQ(errorOf(withStep("cull = \"both\"\n")),
+              "bad.toml:6: unknown cull mode 'both' (known: back, front, none)");
+    EXPECT_EQ(errorOf(withStep("depth_format = \"32\"\n")),
+              "bad.toml:6: unknown depth format '32' (known: 16, 24, 32f)");
+    e = errorOf("title = \"T\"\nscene = \"poles\"\n[[step]]\ntitle = \"S\"\ntext = \"x\"\n");
+    EXPECT_EQ(e,
+              "bad.toml:2: unknown scene preset 'poles' (known: box-on-plane, "
+              "sphere-over-plane, pole, grazing, stairs)");
+}
+
+TEST(LessonFormat, ValuesOutOfRangeAreRefused) {
+    EXPECT_EQ(errorOf(withStep("kernel = 9\n")), "bad.toml:6: step 1 kernel must be 1..8, got 9");
+    EXPECT_EQ(errorOf(withStep("kernel = 0\n")), "bad.toml:6: step 1 kernel must be 1..8, got 0");
+    EXPECT_EQ(errorOf(withStep("map_size = 3\n")),
+              "bad.toml:6: step 1 map_size must be 4..4096, got 3");
+    EXPECT_EQ(errorOf(withStep("map_size = 8192\n")),
+              "bad.toml:6: step 1 map_size must be 4..4096, got 8192");
+    EXPECT_EQ(errorOf(withStep("radius = 0\n")),
+              "bad.toml:6: step 1 radius must be in (0, 64] texels, got 0");
+    EXPECT_EQ(errorOf(withStep("constant_bias = 2\n")),
+              "bad.toml:6: step 1 constant_bias must be in [-1, 1], got 2");
+    EXPECT_EQ(errorOf(withStep("constant_bias = nan\n")),
+              "bad.toml:6: step 1 constant_bias must be finite, got nan");
+    std::string e = errorOf(withStep("pixel = [1280, 10]\n"));
+    EXPECT_EQ(
+        e.rfind("bad.toml:6: step 1 pixel.x 1280 is outside the 1280 x 720 reference frame", 0), 0u)
+        << e;
+    e = errorOf(withStep("pixel = [10,\n  720]\n"));
+    EXPECT_EQ(e.rfind("bad.toml:7: step 1 pixel.y 720 is outside", 0), 0u) << e;
+    e = errorOf(withStep("pixel = [-1, 0]\n"));
+    EXPECT_EQ(e.rfind("bad.toml:6: step 1 pixel.x -1 is outside", 0), 0u) << e;
+}
+
+TEST(LessonFormat, TentKernelIsBlamedOnTheKeySetLast) {
+    // The step names the method; the kernel 4 came from [settings] two lines up.
+    std::string text =
+        "title = \"T\"\nscene = \"pole\"\n[settings]\nkernel = 4\n[[step]]\ntitle = \"S\"\n"
+        "text = \"x\"\nmethod = \"tent\"\n";
+    EXPECT_EQ(errorOf(text), "bad.toml:8: step 1: tent takes kernel 3, 5 or 7, not 4");
+    // A later step changes only the kernel: now the kernel is the culprit.
+    text = withStep("method = \"tent\"\n[[step]]\ntitle = \"S2\"\ntext = \"y\"\nkernel = 6\n");
+    EXPECT_EQ(errorOf(text), "bad.toml:10: step 2: tent takes kernel 3, 5 or 7, not 6");
+}
+
+TEST(LessonFormat, StepsNeedTitleAndText) {
+    EXPECT_EQ(errorOf("title = \"T\"\nscene = \"pole\"\n[[step]]\ntitle = \"S\"\n"),
+              "bad.toml:3: step 1 has no text");
+    EXPECT_EQ(errorOf(withStep("[[step]]\ntext = \"x\"\n")), "bad.toml:6: step 2 has no title");
+    EXPECT_EQ(errorOf(withStep("[[step]]\ntitle = \"x\"\ntext = \"  \"\n")),
+              "bad.toml:8: step 2 text must not be empty");
+    EXPECT_EQ(errorOf("scene = \"pole\"\n[[step]]\ntitle = \"S\"\ntext = \"x\"\n"),
+              "bad.toml:1: lesson has no title");
+}
+
+TEST(LessonFormat, ALessonNeedsStepsAndAScene) {
+    EXPECT_EQ(errorOf("title = \"T\"\nscene = \"pole\"\n"),
+              "bad.toml:1: lesson has no steps: add at least one [[step]] table");
+    EXPECT_EQ(errorOf("title = \"T\"\nscene = \"pole\"\nstep = []\n"),
+              "bad.toml:3: lesson has no steps: add at least one [[step]] table");
+    std::string e = errorOf("title = \"T\"\nscene = \"pole\"\nstep = 3\n");
+    EXPECT_EQ(e.rfind("bad.toml:3: step must be an array of tables", 0), 0u) << e;
+    e = errorOf("title = \"T\"\n[[step]]\ntitle = \"S\"\ntext = \"x\"\n");
+    EXPECT_EQ(e.rfind("bad.toml:1: lesson has no scene", 0), 0u) << e;
+    e = errorOf("title = \"T\"\nscene = \"pole\"\n[light]\ntype = \"directional\"\n");
+    EXPECT_EQ(e.rfind("bad.toml:2: lesson gives both scene = \"pole\" and scene tables", 0), 0u)
+        << e;
+}
+
+TEST(LessonFormat, EmbeddedSceneErrorsKeepTheLessonsLines) {
+    std::string text = R"(title = "T"
+[camera]
+eye = [0.0, 2.0, 3.0]
+target = [0.0, 0.0, 0.0]
+[light]
+type = "directional"
+direction = [0.3, -1.0, 0.2]
+[[object]]
+type = "sphere"
+centre = [0, 1, 0]
+radius = -1
+[[step]]
+title = "S"
+text = "x"
+)";
+    EXPECT_EQ(errorOf(text, "close.toml"), "close.toml:11: sphere radius must be positive, got -1");
+}
+
+TEST(LessonFormat, UnknownPlaceholdersNameTheLineOfTheText) {
+    std::string text =
+        "title = \"T\"\n"                // 1
+        "scene = \"pole\"\n"             // 2
+        "[[step]]\n"                     // 3
+        "title = \"S\"\n"                // 4
+        "text = \"\"\"\n"                // 5
+        "The fraction is {frac.x},\n"    // 6
+        "and the result {visiblity}.\n"  // 7
+        "\"\"\"\n";                      // 8
+    EXPECT_EQ(errorOf(text),
+              "bad.toml:7: step 1 text: unknown placeholder {visiblity} (see placeholderNames(); "
+              "write {{ for a literal brace)");
+    // Without a newline after the opening quotes, and with escaped newlines on one line.
+    text =
+        "title = \"T\"\nscene = \"pole\"\n[[step]]\ntitle = \"S\"\n"
+        "text = \"\"\"ok {z}\n{zz}\"\"\"\n";
+    EXPECT_EQ(errorOf(text).rfind("bad.toml:6: step 1 text: unknown placeholder {zz}", 0), 0u);
+    text =
+        "title = \"T\"\nscene = \"pole\"\n[[step]]\ntitle = \"S\"\n"
+        "text = \"a\\nb\\n{zz}\"\n";
+    EXPECT_EQ(errorOf(text).rfind("bad.toml:5: step 1 text: unknown placeholder {zz}", 0), 0u);
+    // An unmatched brace.
+    text = withStep("[[step]]\ntitle = \"S2\"\ntext = \"\"\"\nfine\nset {0, 1\n\"\"\"\n");
+    std::string e = errorOf(text);
+    EXPECT_EQ(e.rfind("bad.toml:10: step 2 text: a { with no closing }", 0), 0u) << e;
+}
+
+TEST(LessonFormat, TapIndicesMustExistForTheStepsMethod) {
+    // bilinear2x2 reads 4 texels: tap[3] exists, tap[4] does not.
+    std::string ok = withStep(
+        "method = \"bilinear2x2\"\n[[step]]\ntitle = \"S2\"\n"
+        "text = \"{tap[3].depth}\"\n");
+    EXPECT_NO_THROW(parseLessonString(ok, "ok.toml"));
+    std::string e =
+        errorOf(withStep("method = \"bilinear2x2\"\n[[step]]\ntitle = \"S2\"\n"
+                         "text = \"{tap[4].depth}\"\n"));
+    EXPECT_EQ(e.rfind("bad.toml:9: step 2 text: tap[4] is past the 4 reads", 0), 0u) << e;
+    // pcf-naive 3x3: 36 reads in 9 lookups.
+    EXPECT_NO_THROW(parseLessonString(withStep("method = \"pcf-naive\"\n[[step]]\ntitle = \"S\"\n"
+                                               "text = \"{tap[35].lit} {fetch[8].value}\"\n"),
+                                      "ok.toml"));
+    e =
+        errorOf(withStep("method = \"pcf-naive\"\n[[step]]\ntitle = \"S\"\n"
+                         "text = \"{fetch[9].value}\"\n"));
+    EXPECT_EQ(e.rfind("bad.toml:9: step 2 text: fetch[9] is past the 9 fetch instructions", 0), 0u)
+        << e;
+}
+
+}  // namespace
+}  // namespace pcf

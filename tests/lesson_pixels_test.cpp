@@ -1,0 +1,204 @@
+// The lessons' picked pixels show what their text says. Each step is rendered as the viewer and
+// the exporter render it (EGL, llvmpipe in CI), its pixel's lookup is traced with the CPU kernel,
+// and the claims the step's words make about that pixel are checked on the trace.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kernel/trace.h"
+#include "lesson/lesson.h"
+#include "render/gl_context.h"
+#include "render/render_settings.h"
+#include "render/scene_renderer.h"
+
+namespace pcf {
+namespace {
+
+// The frames the claims must hold in: the lessons' reference frame, and the scene view of the
+// viewer and the exporter at their default 1600 x 900 (60% of the width, 16:9).
+constexpr glm::ivec2 FRAME_SIZES[] = {{1280, 720}, {960, 540}};
+
+RenderSettings renderSettings(const LessonSettings& s, glm::ivec2 frameSize) {
+    RenderSettings r;
+    r.method = s.method;
+    r.kernel = s.kernel;
+    r.radius = s.radius;
+    r.rotatePerPixel = s.rotate;
+    r.mapSize = s.mapSize;
+    r.depthFormat = depthFormatFromName(s.depthFormat).value();
+    r.bias = biasModeFromName(s.bias).value();
+    r.constantBias = s.constantBias;
+    r.shadowCull = cullModeFromName(s.cull).value();
+    r.frameSize = frameSize;
+    return r;
+}
+
+struct RenderedStep {
+    Trace trace;
+    float gpuVisibility;
+    bool receiver;
+};
+
+// Renders every step of a lesson and traces its pixel, as `pcfscope export` does.
+std::vector<RenderedStep> renderLesson(const std::string& name, glm::ivec2 frameSize) {
+    Lesson lesson = parseLessonFile(PCFSCOPE_SOURCE_DIR "/lessons/" + name + ".toml");
+    SceneRenderer renderer(lesson.scene);
+    std::vector<RenderedStep> out;
+    for (const LessonStep& step : lesson.steps) {
+        const LessonSettings& s = step.settings;
+        renderer.render(renderSettings(s, frameSize));
+        std::vector<float> lightSpace = renderer.readLightSpace();
+        std::vector<float> visibility = renderer.readVisibility();
+        ShadowMap map = renderer.readShadowMap();
+        glm::ivec2 px = scalePixel(s.pixel, frameSize);
+        size_t at = static_cast<size_t>(px.y) * frameSize.x + px.x;
+        const float* ls = &lightSpace[at * 4];
+        float ref = ls[2];
+        Trace trace = traceLookup(map, vec2(ls[0], ls[1]), ref + s.depthBias(), ref,
+                                  s.pcfParams(px, frameSize));
+        out.push_back({std::move(trace), visibility[at], ls[3] > 0.5f});
+    }
+    return out;
+}
+
+int litCount(const Trace& t) {
+    int n = 0;
+    for (const TapRecord& tap : t.taps) n += tap.lit > 0.5f ? 1 : 0;
+    return n;
+}
+
+bool near(float a, float b, float tolerance = 0.01f) { return std::fabs(a - b) <= tolerance; }
+
+// What the words of a step say about its pixel.
+struct Claim {
+    std::string what;
+    std::function<bool(const Trace&)> holds;
+};
+
+using Claims = std::vector<std::vector<Claim>>;  // per step
+
+Claim shadowed() {
+    return {"fully shadowed", [](const Trace& t) { return t.visibility == 0.0f; }};
+}
+Claim lit() {
+    return {"fully lit", [](const Trace& t) { return t.visibility == 1.0f; }};
+}
+Claim penumbra() {
+    return {"in the penumbra",
+            [](const Trace& t) { return t.visibility > 0.3f && t.visibility < 0.7f; }};
+}
+Claim bits(std::string expected) {
+    return {"bits " + expected, [expected](const Trace& t) {
+                std::string got;
+                for (const TapRecord& tap : t.taps) got += tap.lit > 0.5f ? '1' : '0';
+                return got == expected;
+            }};
+}
+Claim firstTapMargin(bool positive) {
+    return {positive ? "depth - ref >= 0" : "depth - ref < 0", [positive](const Trace& t) {
+                return (t.taps[0].depth - t.taps[0].ref >= 0.0f) == positive;
+            }};
+}
+
+const std::map<std::string, Claims>& lessonClaims() {
+    static const std::map<std::string, Claims> claims = {
+        {"01-hard-shadows",
+         {{shadowed(), firstTapMargin(false)},
+          {lit(), firstTapMargin(true)},
+          {shadowed()},
+          {{"0 or 1",
+            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }}}}},
+        {"02-box-average",
+         {{bits("1010"), {"half", [](const Trace& t) { return t.visibility == 0.5f; }}},
+          {{"three of four", [](const Trace& t) { return litCount(t) == 3; }}},
+          {bits("0001")},
+          {bits("1010"),
+           {"near the lit column", [](const Trace& t) { return t.pos.frac.x < 0.3f; }}}}},
+        {"03-bilinear-lerp",
+         {{bits("1010")},
+          {bits("1010"),
+           {"seed 000: fx 0.2 gives 0.8",
+            [](const Trace& t) {
+                return near(t.pos.frac.x, 0.2f, 0.005f) && near(t.visibility, 0.8f, 0.005f);
+            }}},
+          {bits("1010")},
+          {bits("1010"),
+           {"further along the ramp",
+            [](const Trace& t) { return t.pos.frac.x > 0.5f && t.visibility < 0.5f; }}},
+          {{"one hardware tap, 0.8",
+            [](const Trace& t) {
+                return t.counts.hwTaps == 1 && near(t.visibility, 0.8f, 0.005f);
+            }}}}},
+        {"04-nxn-lookups", {{penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}}},
+        {"05-gather-weights",
+         {{penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}}},
+        {"06-hardware-taps-and-tent", {{penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}}},
+        {"07-poisson-disk",
+         {{penumbra()},
+          {penumbra()},
+          {penumbra(),
+           {"rotated", [](const Trace& t) { return t.params.rotation != vec2(1.0f, 0.0f); }}}}},
+        {"08-acne-and-bias",
+         {{shadowed(), firstTapMargin(false)},
+          {lit(), firstTapMargin(true)},
+          {lit(), firstTapMargin(true)},
+          {{"faint acne",
+            [](const Trace& t) { return t.visibility > 0.5f && t.visibility < 1.0f; }}},
+          {lit()},
+          {lit(), {"nothing drawn", [](const Trace& t) { return t.taps[0].depth == 1.0f; }}}}},
+        {"09-peter-panning",
+         {{{"acne", [](const Trace& t) { return t.visibility < 0.7f; }}},
+          {shadowed()},
+          {lit()},
+          {shadowed()}}},
+        {"10-perspective-aliasing", {{shadowed()}, {shadowed()}, {penumbra()}, {shadowed()}}},
+    };
+    return claims;
+}
+
+class LessonPixels : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() { sContext = createHeadlessContext(); }
+    static void TearDownTestSuite() { sContext.reset(); }
+    static std::unique_ptr<GlContext> sContext;
+};
+std::unique_ptr<GlContext> LessonPixels::sContext;
+
+TEST(LessonPixelClaims, CoverEveryLesson) {
+    for (const auto& entry : std::filesystem::directory_iterator(PCFSCOPE_SOURCE_DIR "/lessons")) {
+        if (entry.path().extension() != ".toml") continue;
+        EXPECT_TRUE(lessonClaims().count(entry.path().stem().string()))
+            << entry.path() << " has no claims here: say what its pixels must show";
+    }
+}
+
+TEST_F(LessonPixels, EveryStepsPixelShowsWhatItsTextSays) {
+    for (const auto& [name, steps] : lessonClaims()) {
+        for (glm::ivec2 frameSize : FRAME_SIZES) {
+            std::vector<RenderedStep> rendered = renderLesson(name, frameSize);
+            ASSERT_EQ(rendered.size(), steps.size()) << name;
+            for (size_t i = 0; i < steps.size(); ++i) {
+                const RenderedStep& r = rendered[i];
+                SCOPED_TRACE(name + " step " + std::to_string(i + 1) + " in " +
+                             std::to_string(frameSize.x) + "x" + std::to_string(frameSize.y));
+                // The picked point is on a receiver, and the picture agrees with the trace.
+                EXPECT_TRUE(r.receiver);
+                EXPECT_NEAR(r.gpuVisibility, r.trace.visibility, 1e-5f);
+                for (const Claim& claim : steps[i]) {
+                    EXPECT_TRUE(claim.holds(r.trace))
+                        << claim.what << " (visibility " << r.trace.visibility << ", frac "
+                        << r.trace.pos.frac.x << ", " << r.trace.pos.frac.y << ")";
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace pcf

@@ -1,0 +1,208 @@
+// The live text of a lesson step: placeholders filled from a real trace of the kernel.
+#include "lesson/lesson_text.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "kernel/methods.h"
+#include "kernel/trace.h"
+
+namespace pcf {
+namespace {
+
+// Seed 000's worked example on the built-in map: lit texels left, shadowed right, fx = 0.2.
+Trace exampleTrace(int method, int kernel = 3) {
+    return traceLookup(exampleShadowMap(), vec2(0.4625f, 0.3875f), 0.5f, 0.5f,
+                       makeParams(method, kernel));
+}
+
+StepContext context() {
+    StepContext ctx;
+    ctx.pixel = {612, 388};
+    ctx.bias = "none";
+    ctx.constantBias = 0.0025f;
+    ctx.cull = "front";
+    ctx.depthFormat = "24";
+    return ctx;
+}
+
+std::string fill(const std::string& text, const Trace& tr) { return fillText(text, tr, context()); }
+
+TEST(LessonText, FillsTheBilinearExampleFromTheTrace) {
+    Trace tr = exampleTrace(PCF_BILINEAR2X2);
+    EXPECT_EQ(fill("{frac.x}", tr), "0.2");
+    EXPECT_EQ(fill("{frac.y}", tr), "0.6");
+    EXPECT_EQ(fill("{visibility}", tr), "0.8");
+    EXPECT_EQ(fill("{shadow}", tr), "0.2");
+    EXPECT_EQ(fill("lerp({tap[0].lit}, {tap[1].lit}, {frac.x}) = {visibility}", tr),
+              "lerp(1, 0, 0.2) = 0.8");
+    EXPECT_EQ(fill("{uv.x} {uv.y} {z} {ref} {depth_bias}", tr), "0.4625 0.3875 0.5 0.5 0");
+    EXPECT_EQ(fill("p = ({texel.x}, {texel.y}), base = ({base.x}, {base.y})", tr),
+              "p = (3.2, 2.6), base = (3, 2)");
+    EXPECT_EQ(fill("{1-frac.x} {1-frac.y}", tr), "0.8 0.4");
+    EXPECT_EQ(fill("{method} {map_size} {taps} {texels} {gathers} {hw_taps} {fetches}", tr),
+              "bilinear2x2 8 4 4 0 0 1");
+    EXPECT_EQ(fill("{lit_count} lit, {shadowed_count} shadowed, {distinct} distinct", tr),
+              "2 lit, 2 shadowed, 4 distinct");
+}
+
+TEST(LessonText, TapFieldsComeFromTheReadsInOrder) {
+    Trace tr = exampleTrace(PCF_BILINEAR2X2);
+    ASSERT_EQ(tr.taps.size(), 4u);
+    EXPECT_EQ(
+        fill("({tap[0].i}, {tap[0].j}) ({tap[1].i}, {tap[1].j}) ({tap[3].i}, {tap[3].j})", tr),
+        "(3, 2) (4, 2) (4, 3)");
+    EXPECT_EQ(fill("{tap[0].depth} {tap[1].depth}", tr),
+              formatNumber(tr.taps[0].depth) + " " + formatNumber(tr.taps[1].depth));
+    EXPECT_EQ(fill("{tap[0].depth}", tr), "0.57");
+    EXPECT_EQ(fill("{tap[1].depth}", tr), "0.3");
+    EXPECT_EQ(fill("{tap[2].ref}", tr), "0.5");
+    // Bilinear weights (1-fx)(1-fy), fx(1-fy), (1-fx)fy, fx fy = .32, .08, .48, .12.
+    EXPECT_EQ(fill("{tap[0].weight} {tap[1].weight} {tap[2].weight} {tap[3].weight}", tr),
+              "0.32 0.08 0.48 0.12");
+    EXPECT_EQ(fill("{tap[0].lit}{tap[1].lit}{tap[2].lit}{tap[3].lit}", tr), "1010");
+    EXPECT_EQ(fill("{fetch[0].value} {fetch[0].weight} {fetch[0].u}", tr), "0.8 1 0.4625");
+}
+
+TEST(LessonText, DecimalsAndFactors) {
+    Trace tr = exampleTrace(PCF_BILINEAR2X2);
+    EXPECT_EQ(fill("{frac.x:3}", tr), "0.200");
+    EXPECT_EQ(fill("{visibility:0}", tr), "1");
+    EXPECT_EQ(fill("{visibility:2}", tr), "0.80");
+    EXPECT_EQ(fill("{base.x:1}", tr), "3.0");
+    EXPECT_EQ(fill("{tap[1].weight*100}%", tr), "8%");
+    EXPECT_EQ(fill("{frac.x*10:1}", tr), "2.0");
+    EXPECT_EQ(fill("{depth_bias:3}", tr), "0.000");
+}
+
+TEST(LessonText, BracesAndLiterals) {
+    Trace tr = exampleTrace(PCF_BILINEAR2X2);
+    EXPECT_EQ(fill("{{0, .25, .5, .75, 1}}", tr), "{0, .25, .5, .75, 1}");
+    EXPECT_EQ(fill("{{{visibility}}}", tr), "{0.8}");
+    EXPECT_EQ(fill("no placeholders at all", tr), "no placeholders at all");
+    EXPECT_EQ(fill("", tr), "");
+}
+
+TEST(LessonText, GatherWeightTableIsSeed001sTableOverNine) {
+    Trace tr = exampleTrace(PCF_GATHER);
+    // N = 3: the footprint fraction equals frac (the offset -1 is whole).
+    EXPECT_EQ(fill("{g.x} {g.y}", tr), "0.2 0.6");
+    EXPECT_EQ(fill("{weights.origin.x},{weights.origin.y} {weights.w}x{weights.h}", tr), "2,1 4x4");
+    // Per axis (1-g, 1, 1, g): row 0 times 9 is (1-gx)(1-gy), (1-gy), (1-gy), gx(1-gy).
+    EXPECT_EQ(fill("{weight[0,0]*9} {weight[1,0]*9} {weight[2,0]*9} {weight[3,0]*9}", tr),
+              "0.32 0.4 0.4 0.08");
+    EXPECT_EQ(fill("{weight[0,1]*9} {weight[1,1]*9} {weight[2,2]*9} {weight[3,3]*9}", tr),
+              "0.8 1 1 0.12");
+    EXPECT_EQ(fill("{weight[1,1]:4}", tr), formatNumber(1.0f / 9.0f));
+    // Outside the grid a texel was not read: weight 0.
+    EXPECT_EQ(fill("{weight[4,0]} {weight[9,9]}", tr), "0 0");
+    EXPECT_EQ(fill("{taps} {texels} {gathers} {distinct} {fetches}", tr), "16 16 4 16 4");
+    EXPECT_EQ(fill("{visibility}", tr), formatNumber(tr.visibility));
+}
+
+TEST(LessonText, NaiveReadsThirtySixTexelsOfSixteen) {
+    Trace tr = exampleTrace(PCF_NAIVE);
+    EXPECT_EQ(fill("{taps} reads of {distinct} texels in {fetches} lookups", tr),
+              "36 reads of 16 texels in 9 lookups");
+    EXPECT_EQ(fill("{fetch[4].value}", tr), "0.8");  // the centre lookup is the bilinear one
+    EXPECT_EQ(fill("{visibility}", tr), fill("{visibility}", exampleTrace(PCF_GATHER)));
+}
+
+TEST(LessonText, HardwareAndTentCounts) {
+    EXPECT_EQ(fill("{hw_taps} {texels}", exampleTrace(PCF_HW)), "9 36");
+    EXPECT_EQ(fill("{hw_taps}", exampleTrace(PCF_TENT, 3)), "4");
+    EXPECT_EQ(fill("{hw_taps}", exampleTrace(PCF_TENT, 5)), "9");
+    EXPECT_EQ(fill("{hw_taps} {kernel}", exampleTrace(PCF_TENT, 7)), "16 7");
+    // q = uv * size = (3.7, 3.1); s = q + 0.5 - floor(q + 0.5) = 0.2, t = 0.6.
+    EXPECT_EQ(fill("{tent.s} {tent.t}", exampleTrace(PCF_TENT, 3)), "0.2 0.6");
+}
+
+TEST(LessonText, PoissonRadiusAndRotation) {
+    Trace tr = traceLookup(exampleShadowMap(), vec2(0.4625f, 0.3875f), 0.5f, 0.5f,
+                           makeParams(PCF_POISSON, 3, 1.5f, PCF_ROTATIONS[4]));
+    EXPECT_EQ(fill("{taps} {radius} {rotation}", tr), "16 1.5 90");
+    EXPECT_EQ(fill("{lit_count}", tr), std::to_string(static_cast<int>(tr.visibility * 16.0f)));
+}
+
+TEST(LessonText, ContextNamesThePixelAndTheState) {
+    Trace tr = exampleTrace(PCF_NEAREST);
+    EXPECT_EQ(fill("({pixel.x}, {pixel.y}) {bias} {constant_bias} {cull} {depth_format}", tr),
+              "(612, 388) none 0.0025 front 24");
+    EXPECT_EQ(fill("{tap[0].i},{tap[0].j} {taps}", tr), "3,3 1");
+}
+
+TEST(LessonText, StepContextScalesThePixel) {
+    LessonStep step;
+    step.settings.pixel = {612, 388};
+    step.settings.bias = "none";
+    step.settings.cull = "front";
+    step.settings.depthFormat = "16";
+    StepContext ctx = makeStepContext(step, {640, 360});
+    EXPECT_EQ(ctx.pixel, glm::ivec2(306, 194));
+    EXPECT_EQ(ctx.bias, "none");
+    EXPECT_EQ(ctx.cull, "front");
+    EXPECT_EQ(ctx.depthFormat, "16");
+    EXPECT_EQ(makeStepContext(step).pixel, glm::ivec2(612, 388));
+}
+
+TEST(LessonText, AnIndexPastTheTraceIsNotAvailable) {
+    // Possible only when the viewer changed the method under a step's text.
+    Trace tr = exampleTrace(PCF_NEAREST);
+    EXPECT_EQ(fill("{tap[3].depth} {fetch[2].u}", tr), "n/a n/a");
+}
+
+TEST(LessonText, EveryListedNameFills) {
+    Trace tr = exampleTrace(PCF_NAIVE);
+    for (std::string name : placeholderNames()) {
+        for (std::string_view from : {"[K]", "[I,J]"}) {
+            size_t at = name.find(from);
+            if (at != std::string::npos)
+                name.replace(at, from.size(), from == "[K]" ? "[1]" : "[1,1]");
+        }
+        std::string text = "{" + name + "}";
+        EXPECT_FALSE(checkPlaceholders(text)) << name;
+        std::string filled = fill(text, tr);
+        EXPECT_FALSE(filled.empty()) << name;
+        EXPECT_EQ(filled.find('{'), std::string::npos) << name;
+        EXPECT_NE(filled, "n/a") << name;
+    }
+    EXPECT_GE(placeholderNames().size(), 40u);
+}
+
+TEST(LessonText, ChecksFindTheFirstProblemAndItsOffset) {
+    EXPECT_FALSE(checkPlaceholders("{frac.x} and {{literal}} {tap[3].depth:2}"));
+    auto p = checkPlaceholders("ok {frac.x} then {frac.z}");
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->offset, 17u);
+    EXPECT_EQ(p->problem,
+              "unknown placeholder {frac.z} (see placeholderNames(); write {{ for a literal "
+              "brace)");
+    p = checkPlaceholders("a } b");
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->offset, 2u);
+    p = checkPlaceholders("a { b");
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->offset, 2u);
+    EXPECT_TRUE(checkPlaceholders("{frac.x:x}"));
+    EXPECT_TRUE(checkPlaceholders("{frac.x:12}"));
+    EXPECT_TRUE(checkPlaceholders("{frac.x*}"));
+    EXPECT_TRUE(checkPlaceholders("{method:2}"));
+    EXPECT_TRUE(checkPlaceholders("{tap[-1].depth}"));
+    EXPECT_TRUE(checkPlaceholders("{tap[0].colour}"));
+    EXPECT_TRUE(checkPlaceholders("{weight[1]}"));
+    EXPECT_TRUE(checkPlaceholders("{ frac.x }"));
+    EXPECT_FALSE(checkPlaceholders("{tap[3].lit}", 4, 1));
+    EXPECT_TRUE(checkPlaceholders("{tap[4].lit}", 4, 1));
+    EXPECT_TRUE(checkPlaceholders("{fetch[1].value}", 4, 1));
+}
+
+TEST(LessonText, FillRefusesWhatTheCheckRefuses) {
+    Trace tr = exampleTrace(PCF_BILINEAR2X2);
+    EXPECT_THROW(fill("{nope}", tr), std::invalid_argument);
+    EXPECT_THROW(fill("{", tr), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace pcf
