@@ -51,12 +51,6 @@ TEST_F(CliTest, TraceExamplePrintsTheStepsAStudentFollows) {
     EXPECT_NE(r.out.find("visibility = 0.8"), std::string::npos) << r.out;
 }
 
-TEST_F(CliTest, NoArgumentsRunsTheMainJob) {
-    auto r = runPcfscope("");
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.out.find("visibility"), std::string::npos) << r.out;
-}
-
 TEST_F(CliTest, TraceJsonOfAWrittenMapMatchesTheKernel) {
     // A 13 x 9 map of random depths, written as EXR; row 0 must stay row 0.
     std::mt19937 rng(21);

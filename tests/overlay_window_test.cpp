@@ -18,71 +18,10 @@
 #include "overlay/canvas.h"
 #include "render/gl_context.h"
 #include "render/gl_objects.h"
+#include "virtual_display.h"
 
 namespace pcf {
 namespace {
-
-// An Xvfb on a free display number, which it reports through -displayfd; stopped (by its own
-// pid) when this goes away.
-class PrivateXServer {
-  public:
-    PrivateXServer() {
-        int fds[2];
-        if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
-        mPid = fork();
-        if (mPid < 0) throw std::runtime_error("fork failed");
-        if (mPid == 0) {
-            close(fds[0]);
-            int devNull = open("/dev/null", O_WRONLY);
-            if (devNull >= 0) {
-                dup2(devNull, STDOUT_FILENO);
-                dup2(devNull, STDERR_FILENO);
-            }
-            std::string fd = std::to_string(fds[1]);
-            execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "800x600x24",
-                   "-nolisten", "tcp", "-noreset", static_cast<char*>(nullptr));
-            _exit(127);
-        }
-        close(fds[1]);
-        std::string number;
-        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-        while (number.find('\n') == std::string::npos &&
-               std::chrono::steady_clock::now() < deadline) {
-            pollfd p{fds[0], POLLIN, 0};
-            if (poll(&p, 1, 200) <= 0) continue;
-            char buffer[16];
-            ssize_t n = read(fds[0], buffer, sizeof buffer);
-            if (n <= 0) break;  // Xvfb exited (not installed, or failed to start)
-            number.append(buffer, static_cast<size_t>(n));
-        }
-        close(fds[0]);
-        if (number.find('\n') == std::string::npos) {
-            stop();
-            throw std::runtime_error("Xvfb did not start (is the xvfb package installed?)");
-        }
-        // Formatted, not ":" + number: GCC 12 warns falsely (-Wrestrict) on that operator+.
-        char name[32];
-        std::snprintf(name, sizeof name, ":%d", std::atoi(number.c_str()));
-        mDisplay = std::string(name);
-    }
-    ~PrivateXServer() { stop(); }
-    PrivateXServer(const PrivateXServer&) = delete;
-    PrivateXServer& operator=(const PrivateXServer&) = delete;
-
-    const std::string& display() const { return mDisplay; }
-
-  private:
-    void stop() {
-        if (mPid > 0) {
-            kill(mPid, SIGTERM);
-            waitpid(mPid, nullptr, 0);
-            mPid = -1;
-        }
-    }
-
-    pid_t mPid = -1;
-    std::string mDisplay;
-};
 
 void drawFrame(Canvas& c, glm::ivec2 size) {
     c.fillRect({0, 0, float(size.x), float(size.y)}, {0.08f, 0.09f, 0.12f, 1});
@@ -113,7 +52,8 @@ std::vector<uint8_t> renderOffscreen(glm::ivec2 size) {
 }
 
 TEST(OverlayWindow, WindowFrameIsByteIdenticalToTheOffscreenFrame) {
-    PrivateXServer server;
+    testutil::VirtualDisplay server;
+    ASSERT_FALSE(server.display().empty()) << "Xvfb did not start (is xvfb installed?)";
     ASSERT_EQ(setenv("DISPLAY", server.display().c_str(), 1), 0);
     std::vector<uint8_t> windowPixels;
     glm::ivec2 size(0, 0);

@@ -17,60 +17,10 @@
 
 #include "render/gl_objects.h"
 #include "render/glfw_window_context.h"
+#include "virtual_display.h"
 
 namespace pcf {
 namespace {
-
-// An Xvfb of our own, for machines with no DISPLAY (CI). -displayfd makes Xvfb pick a free
-// display number itself and write it to the pipe once it accepts connections, so parallel
-// tests cannot race for a number and there is no socket to poll for.
-class VirtualDisplay {
-  public:
-    VirtualDisplay() {
-        int fds[2];
-        if (pipe(fds) != 0) return;
-        mPid = fork();
-        if (mPid == 0) {
-            close(fds[0]);
-            int devNull = open("/dev/null", O_WRONLY);
-            dup2(devNull, STDOUT_FILENO);
-            dup2(devNull, STDERR_FILENO);
-            std::string fd = std::to_string(fds[1]);
-            execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24",
-                   "-nolisten", "tcp", "-noreset", static_cast<char*>(nullptr));
-            _exit(127);
-        }
-        close(fds[1]);
-        if (mPid < 0) {
-            close(fds[0]);
-            return;
-        }
-        std::string number;
-        pollfd p{fds[0], POLLIN, 0};
-        while (poll(&p, 1, 20000) > 0) {
-            char c = 0;
-            if (read(fds[0], &c, 1) != 1 || c == '\n') break;
-            number += c;
-        }
-        close(fds[0]);
-        if (!number.empty()) mDisplay = ":" + number;
-    }
-    ~VirtualDisplay() {
-        if (mPid > 0) {
-            kill(mPid, SIGTERM);
-            waitpid(mPid, nullptr, 0);
-        }
-    }
-    VirtualDisplay(const VirtualDisplay&) = delete;
-    VirtualDisplay& operator=(const VirtualDisplay&) = delete;
-
-    // ":N", or empty when Xvfb did not start.
-    const std::string& display() const { return mDisplay; }
-
-  private:
-    pid_t mPid = -1;
-    std::string mDisplay;
-};
 
 class GlfwWindow : public ::testing::Test {
   protected:
@@ -80,7 +30,7 @@ class GlfwWindow : public ::testing::Test {
             sDisplay = display;
             return;
         }
-        sServer = new VirtualDisplay();
+        sServer = new testutil::VirtualDisplay();
         sDisplay = sServer->display();
     }
     static void TearDownTestSuite() {
@@ -92,11 +42,11 @@ class GlfwWindow : public ::testing::Test {
         setenv("DISPLAY", sDisplay.c_str(), 1);
     }
 
-    static VirtualDisplay* sServer;
+    static testutil::VirtualDisplay* sServer;
     static std::string sDisplay;
 };
 
-VirtualDisplay* GlfwWindow::sServer = nullptr;
+testutil::VirtualDisplay* GlfwWindow::sServer = nullptr;
 std::string GlfwWindow::sDisplay;
 
 TEST_F(GlfwWindow, OpensA45CoreWindowThatRendersAndReadsBack) {

@@ -94,10 +94,4 @@ Command addTraceCommand(CLI::App& app) {
     return {sub, [o] { return runTrace(*o); }};
 }
 
-int runMainJob() {
-    TraceOptions o;
-    o.example = true;
-    return runTrace(o);
-}
-
 }  // namespace pcf

@@ -16,8 +16,13 @@ struct Command {
 Command addMethodsCommand(CLI::App& app);
 Command addTraceCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
+Command addTruthCommand(CLI::App& app);
+Command addBenchCommand(CLI::App& app);
+Command addViewCommand(CLI::App& app);
+Command addExportCommand(CLI::App& app);
 
-// `pcfscope` with no arguments.
+// `pcfscope` with no arguments: lesson 1 in the window when there is a display, otherwise its
+// frames exported into a new folder under pcfscope-frames/ (printed on stdout).
 int runMainJob();
 
 }  // namespace pcf

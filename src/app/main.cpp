@@ -26,6 +26,10 @@ int main(int argc, char** argv) {
         pcf::addMethodsCommand(app),
         pcf::addTraceCommand(app),
         pcf::addRenderCommand(app),
+        pcf::addTruthCommand(app),
+        pcf::addBenchCommand(app),
+        pcf::addViewCommand(app),
+        pcf::addExportCommand(app),
     };
 
     try {

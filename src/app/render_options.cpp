@@ -3,6 +3,8 @@
 #include <filesystem>
 
 #include "app/cli_util.h"
+#include "app/session.h"
+#include "lesson/lesson.h"
 #include "kernel/methods.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"
@@ -11,6 +13,11 @@ namespace pcf {
 
 void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     mDefaultScene = defaultScene;
+    mSub = sub;
+    sub->add_option("--lesson", lesson,
+                    "a lesson (path, number or name): its scene and its step's settings; "
+                    "options given here override them");
+    sub->add_option("--step", lessonStep, "with --lesson: the step whose settings to use");
     sub->add_option("--scene", scene, "built-in scene: box-on-plane, sphere-over-plane, pole, "
                                       "grazing, stairs");
     sub->add_option("--scene-file", sceneFile, "scene file (TOML)");
@@ -27,42 +34,76 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     sub->add_option("--size", size, "frame size WxH");
 }
 
+bool RenderOptions::given(const char* option) const {
+    return mSub != nullptr && mSub->count(option) > 0;
+}
+
 RenderSettings RenderOptions::settings() const {
     RenderSettings s;
-    std::optional<int> id = methodFromName(method);
-    if (!id) throw UsageError("unknown method '" + method + "' (known: " + methodNameList() + ")");
-    s.method = *id;
-    s.kernel = kernel;
-    s.radius = radius;
-    s.rotatePerPixel = rotate;
-    if (auto why = validateParams(s.pcfParams())) throw UsageError(*why);
-    std::optional<BiasMode> b = biasModeFromName(bias);
-    if (!b) throw UsageError("unknown bias mode '" + bias + "' (known: none, constant)");
-    s.bias = *b;
-    requireRange("--constant-bias", constantBias, -1.0f, 1.0f);
-    s.constantBias = constantBias;
-    std::optional<CullMode> c = cullModeFromName(cull);
-    if (!c) throw UsageError("unknown --cull '" + cull + "' (known: back, front, none)");
-    s.shadowCull = *c;
-    if (mapSize < MIN_MAP_SIZE || mapSize > MAX_MAP_SIZE) {
-        throw UsageError("--map-size " + std::to_string(mapSize) + " is out of range (" +
-                         std::to_string(MIN_MAP_SIZE) + ".." + std::to_string(MAX_MAP_SIZE) + ")");
+    glm::ivec2 frame = parseSize("--size", size, MAX_FRAME_SIDE);
+    bool fromLesson = !lesson.empty();
+    if (fromLesson) {
+        Lesson l = parseLessonFile(resolveLesson(lesson));
+        if (lessonStep < 1 || lessonStep > static_cast<int>(l.steps.size())) {
+            throw UsageError("--step " + std::to_string(lessonStep) + " is out of range (1.." +
+                             std::to_string(l.steps.size()) + ")");
+        }
+        s = renderSettingsFor(l.steps[static_cast<size_t>(lessonStep - 1)].settings, frame);
     }
-    s.mapSize = mapSize;
-    std::optional<DepthFormat> f = depthFormatFromName(depthFormat);
-    if (!f) throw UsageError("unknown --depth-format '" + depthFormat + "' (known: 16, 24, 32f)");
-    s.depthFormat = *f;
-    s.frameSize = parseSize("--size", size, MAX_FRAME_SIDE);
+    auto use = [&](const char* option) { return !fromLesson || given(option); };
+    if (use("--method")) {
+        std::optional<int> id = methodFromName(method);
+        if (!id) {
+            throw UsageError("unknown method '" + method + "' (known: " + methodNameList() + ")");
+        }
+        s.method = *id;
+    }
+    if (use("--kernel")) s.kernel = kernel;
+    if (use("--radius")) s.radius = radius;
+    if (use("--rotate")) s.rotatePerPixel = rotate;
+    if (auto why = validateParams(s.pcfParams())) throw UsageError(*why);
+    if (use("--bias")) {
+        std::optional<BiasMode> b = biasModeFromName(bias);
+        if (!b) throw UsageError("unknown bias mode '" + bias + "' (known: none, constant)");
+        s.bias = *b;
+    }
+    if (use("--constant-bias")) {
+        requireRange("--constant-bias", constantBias, -1.0f, 1.0f);
+        s.constantBias = constantBias;
+    }
+    if (use("--cull")) {
+        std::optional<CullMode> c = cullModeFromName(cull);
+        if (!c) throw UsageError("unknown --cull '" + cull + "' (known: back, front, none)");
+        s.shadowCull = *c;
+    }
+    if (use("--map-size")) {
+        if (mapSize < MIN_MAP_SIZE || mapSize > MAX_MAP_SIZE) {
+            throw UsageError("--map-size " + std::to_string(mapSize) + " is out of range (" +
+                             std::to_string(MIN_MAP_SIZE) + ".." + std::to_string(MAX_MAP_SIZE) +
+                             ")");
+        }
+        s.mapSize = mapSize;
+    }
+    if (use("--depth-format")) {
+        std::optional<DepthFormat> f = depthFormatFromName(depthFormat);
+        if (!f) {
+            throw UsageError("unknown --depth-format '" + depthFormat + "' (known: 16, 24, 32f)");
+        }
+        s.depthFormat = *f;
+    }
+    s.frameSize = frame;
     return s;
 }
 
 Scene RenderOptions::loadScene() const {
-    if (!scene.empty() && !sceneFile.empty()) {
-        throw UsageError("give --scene or --scene-file, not both");
+    if (static_cast<int>(!scene.empty()) + static_cast<int>(!sceneFile.empty()) +
+            static_cast<int>(!lesson.empty()) > 1) {
+        throw UsageError("give one of --scene, --scene-file or --lesson");
     }
+    if (!lesson.empty()) return parseLessonFile(resolveLesson(lesson)).scene;
     if (!sceneFile.empty()) return parseSceneFile(sceneFile);
     std::string name = scene.empty() ? mDefaultScene : scene;
-    if (name.empty()) throw UsageError("needs --scene PRESET or --scene-file FILE");
+    if (name.empty()) throw UsageError("needs --scene PRESET, --scene-file FILE or --lesson L");
     std::optional<Scene> preset = presetScene(name);
     if (!preset) {
         std::string known;

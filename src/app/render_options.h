@@ -14,6 +14,8 @@ namespace pcf {
 struct RenderOptions {
     std::string scene;      // preset name
     std::string sceneFile;  // TOML scene file
+    std::string lesson;     // a lesson: its scene, and the settings of step `lessonStep`
+    int lessonStep = 1;
     std::string method = "pcf-gather";
     int kernel = 3;
     float radius = 1.0f;
@@ -35,7 +37,11 @@ struct RenderOptions {
     Scene loadScene() const;
 
 private:
+    // An option the user gave (not a default): it overrides the lesson's settings.
+    bool given(const char* option) const;
+
     std::string mDefaultScene;
+    CLI::App* mSub = nullptr;
 };
 
 // Throws UsageError unless `path` is free to write: it must not exist unless `force`.

@@ -1,6 +1,7 @@
 #include "render/scene_renderer.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstddef>
 #include <stdexcept>
 
@@ -68,7 +69,7 @@ void SceneRenderer::ensureTargets(const RenderSettings& settings) {
     if (mFrame.width != settings.frameSize.x || mFrame.height != settings.frameSize.y ||
         !mFrame.framebuffer) {
         mFrame = createOffscreenTarget(settings.frameSize.x, settings.frameSize.y,
-                                       {GL_RGBA8, GL_RGBA32F, GL_R32F, GL_RGBA32F},
+                                       {GL_RGBA8, GL_RGBA32F, GL_R32F},
                                        GL_DEPTH_COMPONENT24);
     }
 }
@@ -125,10 +126,9 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, PcfProgramCac
     const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     const GLfloat one[4] = {1.0f, 0.0f, 0.0f, 0.0f};
     glClearNamedFramebufferfv(fbo, GL_COLOR, 0, &BACKGROUND.x);
-    if (target.colors.size() == 4) {
+    if (target.colors.size() == 3) {
         glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
         glClearNamedFramebufferfv(fbo, GL_COLOR, 2, one);
-        glClearNamedFramebufferfv(fbo, GL_COLOR, 3, zero);
     }
     const GLfloat farDepth = 1.0f;
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
@@ -193,9 +193,30 @@ std::vector<float> SceneRenderer::readVisibility() const {
                            mFrame.height, 1);
 }
 
-std::vector<float> SceneRenderer::readPositions() const {
-    return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT3, mFrame.width,
-                           mFrame.height, 4);
+std::vector<float> SceneRenderer::readLightSpaceRegion(glm::ivec2 topLeft, glm::ivec2 size) const {
+    std::vector<float> out(static_cast<size_t>(size.x) * size.y * 4, 0.0f);
+    glm::ivec2 lo = glm::max(topLeft, glm::ivec2(0));
+    glm::ivec2 hi = glm::min(topLeft + size, glm::ivec2(mFrame.width, mFrame.height));
+    if (hi.x <= lo.x || hi.y <= lo.y) return out;
+    glm::ivec2 span = hi - lo;
+    std::vector<float> rows(static_cast<size_t>(span.x) * span.y * 4);
+    // GL rows count from the bottom: the region's top row is GL row height - lo.y - 1.
+    GLint packAlignment = 4;
+    glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, mFrame.framebuffer.id());
+    glNamedFramebufferReadBuffer(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT1);
+    glReadPixels(lo.x, mFrame.height - hi.y, span.x, span.y, GL_RGBA, GL_FLOAT, rows.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
+    for (int r = 0; r < span.y; ++r) {
+        // GL row r (from the bottom of the span) is region row (span.y - 1 - r) from its top.
+        const float* src = rows.data() + static_cast<size_t>(r) * span.x * 4;
+        int y = (lo.y - topLeft.y) + (span.y - 1 - r);
+        float* dst = out.data() + (static_cast<size_t>(y) * size.x + (lo.x - topLeft.x)) * 4;
+        std::copy(src, src + static_cast<size_t>(span.x) * 4, dst);
+    }
+    return out;
 }
 
 ShadowMap SceneRenderer::readShadowMap() const {

@@ -1,0 +1,138 @@
+// pcfscope export: one annotated PNG per lesson step, plus the step's trace as JSON beside it,
+// headless (EGL). The frames are the viewer's frames: the same Session composes both.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "app/cli_util.h"
+#include "app/commands.h"
+#include "app/export.h"
+#include "app/render_options.h"
+#include "app/session.h"
+#include "render/gl_context.h"
+#include "render/image_io.h"
+
+namespace pcf {
+
+namespace {
+
+struct ExportOptions {
+    std::string lesson;
+    std::string outDir;
+    std::string size = "1600x900";
+    std::string steps;
+    bool presentation = false;
+    bool force = false;
+};
+
+// "2-4" or "3" -> 1-based inclusive range, checked against the lesson's step count.
+glm::ivec2 parseSteps(const std::string& text, int count) {
+    if (text.empty()) return {1, count};
+    size_t dash = text.find('-');
+    glm::ivec2 r;
+    try {
+        size_t used = 0;
+        r.x = std::stoi(text.substr(0, dash), &used);
+        if (used != (dash == std::string::npos ? text.size() : dash)) throw std::invalid_argument("");
+        r.y = r.x;
+        if (dash != std::string::npos) {
+            r.y = std::stoi(text.substr(dash + 1), &used);
+            if (used != text.size() - dash - 1) throw std::invalid_argument("");
+        }
+    } catch (const std::exception&) {
+        throw UsageError("--steps expects A-B or A, got '" + text + "'");
+    }
+    if (r.x < 1 || r.y > count || r.x > r.y) {
+        throw UsageError("--steps " + text + " is out of range (the lesson has steps 1.." +
+                         std::to_string(count) + ")");
+    }
+    return r;
+}
+
+int runExport(const ExportOptions& o) {
+    glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE);
+    if (size.x < 320 || size.y < 180) throw UsageError("--size " + o.size + " is too small (320x180 at least)");
+    std::string path = resolveLesson(o.lesson);
+    Lesson lesson = parseLessonFile(path);  // checked before anything is made
+    glm::ivec2 steps = parseSteps(o.steps, static_cast<int>(lesson.steps.size()));
+    std::string dir = o.outDir.empty() ? "pcfscope-frames/" + lesson.name : o.outDir;
+    ExportPlan plan = planExport(dir, lesson.name, steps, o.force);
+    exportFrames(path, plan, size, o.presentation, true);
+    return 0;
+}
+
+}  // namespace
+
+ExportPlan planExport(const std::string& dir, const std::string& lessonName, glm::ivec2 steps,
+                      bool force) {
+    ExportPlan plan;
+    plan.dir = dir;
+    plan.steps = steps;
+    for (int s = steps.x; s <= steps.y; ++s) {
+        std::string stem = (std::filesystem::path(dir) / (lessonName + "-" + std::to_string(s))).string();
+        requireWritable(stem + ".png", force);
+        requireWritable(stem + ".json", force);
+        plan.stems.push_back(stem);
+    }
+    std::error_code ec;
+    if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
+        throw UsageError("-o " + dir + " is not a directory");
+    }
+    return plan;
+}
+
+void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
+                  bool presentation, bool progress) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    Session session(size, presentation);
+    session.loadLesson(lessonPath);
+    std::filesystem::create_directories(plan.dir);
+    auto start = std::chrono::steady_clock::now();
+    for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
+        session.goToStep(s - 1);
+        session.compose();
+        const std::string& stem = plan.stems[static_cast<size_t>(s - plan.steps.x)];
+        writePngRgba8(stem + ".png", size.x, size.y, session.readFrame());
+        writeTextFile(stem + ".json", session.stepJson() + "\n");
+        if (progress) {
+            std::fprintf(stderr, "export: %s (%d/%d)\n", (stem + ".png").c_str(),
+                         s - plan.steps.x + 1, plan.steps.y - plan.steps.x + 1);
+        }
+    }
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    int frames = plan.steps.y - plan.steps.x + 1;
+    if (progress) {
+        std::fprintf(stderr, "export: %d frames of %dx%d in %.2f s (%.1f frames/s) into %s\n",
+                     frames, size.x, size.y, seconds, frames / seconds, plan.dir.c_str());
+    }
+}
+
+void writeTextFile(const std::string& path, const std::string& text) {
+    std::string tmp = path + ".tmp";
+    {
+        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+        f << text;
+        if (!f) throw std::runtime_error(path + ": cannot write");
+    }
+    std::filesystem::rename(tmp, path);
+}
+
+Command addExportCommand(CLI::App& app) {
+    auto o = std::make_shared<ExportOptions>();
+    CLI::App* sub = app.add_subcommand(
+        "export", "write a lesson's annotated frames (PNG + JSON trace per step), no display");
+    sub->add_option("lesson", o->lesson, "lesson: a .toml path, a number, or a built-in name")
+        ->required();
+    sub->add_option("-o,--out", o->outDir, "output directory (default pcfscope-frames/LESSON)");
+    sub->add_option("--size", o->size, "frame size WxH (default 1600x900, the viewer's)");
+    sub->add_option("--steps", o->steps, "steps to write, A-B or A (default all)");
+    sub->add_flag("--presentation", o->presentation, "large type and thick lines");
+    sub->add_flag("-f,--force", o->force, "overwrite existing frames");
+    return {sub, [o] { return runExport(*o); }};
+}
+
+}  // namespace pcf

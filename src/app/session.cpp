@@ -1,0 +1,297 @@
+#include "app/session.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "app/cli_util.h"
+#include "kernel/methods.h"
+#include "lesson/lesson_text.h"
+
+namespace pcf {
+
+namespace {
+
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (c == '\n') {
+            out += "\\n";
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", c);
+            out += buf;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+std::string statusLine(const LessonSettings& s, glm::ivec2 sceneSize, double frameTimeMs) {
+    const MethodInfo& info = methodInfo(s.method);
+    // A stream: GCC 12 warns falsely (-Wrestrict) on chains of string operator+.
+    std::ostringstream line;
+    line << info.name;
+    if (info.usesKernel) line << " N=" << s.kernel;
+    if (info.usesRadius) line << " R=" << formatNumber(s.radius) << (s.rotate ? " rotated" : "");
+    line << "   bias " << s.bias;
+    if (s.bias != "none") line << " " << formatNumber(s.constantBias);
+    line << "   cull " << s.cull << "   map " << s.mapSize << " " << s.depthFormat << "   scene "
+         << sceneSize.x << "x" << sceneSize.y;
+    if (frameTimeMs >= 0.0) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "   %.1f ms", frameTimeMs);
+        line << buf;
+    }
+    return line.str();
+}
+
+}  // namespace
+
+std::vector<std::string> builtInLessons() {
+    std::vector<std::string> paths;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(PCFSCOPE_LESSON_DIR, ec)) {
+        if (entry.path().extension() == ".toml") paths.push_back(entry.path().string());
+    }
+    std::sort(paths.begin(), paths.end());
+    return paths;
+}
+
+std::string resolveLesson(const std::string& nameOrPath) {
+    std::error_code ec;
+    if (nameOrPath.find('/') != std::string::npos || nameOrPath.ends_with(".toml")) {
+        return nameOrPath;  // a path: parseLessonFile says what is wrong with it
+    }
+    std::vector<std::string> lessons = builtInLessons();
+    std::string names;
+    for (size_t k = 0; k < lessons.size(); ++k) {
+        std::string stem = std::filesystem::path(lessons[k]).stem().string();
+        if (stem == nameOrPath || std::to_string(k + 1) == nameOrPath) return lessons[k];
+        names += (names.empty() ? "" : ", ") + stem;
+    }
+    throw UsageError("unknown lesson '" + nameOrPath + "' (a .toml path, a number 1.." +
+                     std::to_string(lessons.size()) + ", or one of: " + names + ")");
+}
+
+RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) {
+    RenderSettings r;
+    r.method = s.method;
+    r.kernel = s.kernel;
+    r.radius = s.radius;
+    r.rotatePerPixel = s.rotate;
+    r.mapSize = s.mapSize;
+    r.depthFormat = depthFormatFromName(s.depthFormat).value_or(DepthFormat::D32F);
+    r.bias = biasModeFromName(s.bias).value_or(BiasMode::Constant);
+    r.constantBias = s.constantBias;
+    r.shadowCull = cullModeFromName(s.cull).value_or(CullMode::Back);
+    r.frameSize = sceneSize;
+    return r;
+}
+
+Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presentation) {
+    setFrameSize(frameSize);
+}
+
+void Session::loadLesson(const std::string& path) {
+    Lesson lesson = parseLessonFile(path);
+    if (lesson.steps.empty()) throw UsageError(path + ": the lesson has no steps");
+    mLesson = std::move(lesson);
+    mRenderer = std::make_unique<SceneRenderer>(mLesson.scene);
+    mRendered.reset();
+    mSceneDirty = true;
+    goToStep(0);
+}
+
+void Session::goToStep(int step) {
+    if (mLesson.steps.empty()) return;
+    mStep = std::clamp(step, 0, stepCount() - 1);
+    const LessonStep& s = mLesson.steps[static_cast<size_t>(mStep)];
+    setSettings(s.settings);
+    setPixel(scalePixel(s.settings.pixel, glm::ivec2(mLayout.scene.size())));
+}
+
+void Session::setSettings(const LessonSettings& s) {
+    // The picked pixel is part of the settings but not of the picture: moving it re-traces
+    // without re-rendering.
+    LessonSettings a = s;
+    LessonSettings b = mSettings;
+    a.pixel = b.pixel;
+    if (!(a == b) || !mRendered) mSceneDirty = true;
+    mSettings = s;
+}
+
+void Session::setPixel(glm::ivec2 scenePixel) {
+    glm::ivec2 size(mLayout.scene.size());
+    mPixel = glm::clamp(scenePixel, glm::ivec2(0), size - glm::ivec2(1));
+}
+
+void Session::setFrameSize(glm::ivec2 frameSize) {
+    if (frameSize == mLayout.frameSize && mFrame.framebuffer) return;
+    glm::ivec2 oldScene(mLayout.scene.size());
+    mLayout = inspectorLayout(frameSize, mPresentation);
+    mFrame = createOffscreenTarget(frameSize.x, frameSize.y, {GL_RGBA8});
+    glm::ivec2 newScene(mLayout.scene.size());
+    if (oldScene.x > 0 && oldScene != newScene) {
+        mPixel = mPixel * newScene / oldScene;
+    }
+    setPixel(mPixel);
+    mSceneDirty = true;
+}
+
+void Session::setPresentation(bool on) {
+    mPresentation = on;
+    mLayout = inspectorLayout(mLayout.frameSize, on);
+    mThumbnailDirty = true;
+}
+
+void Session::blitThumbnail() {
+    Rect r = thumbnailRect(mLayout, mPresentation);
+    int side = static_cast<int>(r.w);
+    if (side <= 0 || mMap.width() <= 0) return;
+    if (mThumbnailDirty || mThumbnail.width != side) {
+        mThumbnail = createOffscreenTarget(side, side, {GL_RGBA8});
+        std::vector<uint8_t> rgba = thumbnailImage(mMap, side);
+        glTextureSubImage2D(mThumbnail.colors[0].id(), 0, 0, 0, side, side, GL_RGBA,
+                            GL_UNSIGNED_BYTE, rgba.data());
+        mThumbnailDirty = false;
+    }
+    // Texture row 0 holds the image's top row; swapped destination rows put it on top.
+    int frameH = mLayout.frameSize.y;
+    int x = static_cast<int>(r.x);
+    int top = frameH - static_cast<int>(r.y);
+    glNamedFramebufferReadBuffer(mThumbnail.framebuffer.id(), GL_COLOR_ATTACHMENT0);
+    glBlitNamedFramebuffer(mThumbnail.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, side,
+                           side, x, top, x + side, top - side, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+void Session::setHelp(bool on) { mHelp = on; }
+
+void Session::setFrameTimeMs(double ms) { mFrameTimeMs = ms; }
+
+void Session::renderScene() {
+    RenderSettings r = renderSettingsFor(mSettings, glm::ivec2(mLayout.scene.size()));
+    bool mapChanged = !mRendered || mRendered->mapSize != r.mapSize ||
+                      mRendered->depthFormat != r.depthFormat ||
+                      mRendered->shadowCull != r.shadowCull;
+    if (mapChanged) mRenderer->renderShadowPass(r);
+    mRenderer->renderCameraPass(r);
+    if (mapChanged) {
+        mMap = mRenderer->readShadowMap();
+        mThumbnailDirty = true;
+    }
+    mRendered = r;
+    mSceneDirty = false;
+}
+
+void Session::traceAtPixel() {
+    mTrace.reset();
+    glm::ivec2 size(mLayout.scene.size());
+    // Only the region the overlay draws around the pixel comes back from the GPU.
+    int radius = gridRadius(size) + 1;
+    mLightSpaceOrigin = mPixel - glm::ivec2(radius);
+    mLightSpaceSize = glm::ivec2(2 * radius + 1);
+    mLightSpace = mRenderer->readLightSpaceRegion(mLightSpaceOrigin, mLightSpaceSize);
+    size_t k = (static_cast<size_t>(radius) * mLightSpaceSize.x + radius) * 4;
+    if (mLightSpace[k + 3] != 1.0f) return;
+    glm::vec2 uv(mLightSpace[k], mLightSpace[k + 1]);
+    float ref = mLightSpace[k + 2];
+    float z = ref + mSettings.depthBias();
+    mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(mPixel, size));
+}
+
+std::string Session::stepText() const {
+    if (mLesson.steps.empty()) return "";
+    const LessonStep& s = mLesson.steps[static_cast<size_t>(mStep)];
+    if (!mTrace) {
+        return s.text.find('{') == std::string::npos
+                   ? s.text
+                   : "(The picked pixel is not on a shadow receiver, so this step's numbers "
+                     "cannot be shown. Pick a point on the ground.)";
+    }
+    StepContext ctx = makeStepContext(s, glm::ivec2(mLayout.scene.size()));
+    ctx.pixel = mPixel;
+    ctx.bias = mSettings.bias;
+    ctx.constantBias = mSettings.constantBias;
+    ctx.cull = mSettings.cull;
+    ctx.depthFormat = mSettings.depthFormat;
+    return fillText(s.text, *mTrace, ctx);
+}
+
+void Session::compose() {
+    if (!mRenderer) throw std::logic_error("Session::compose before loadLesson");
+    if (mSceneDirty) renderScene();
+    traceAtPixel();
+
+    GLuint fbo = mFrame.framebuffer.id();
+    clearInspectorPanels(fbo, mLayout);
+    // The scene goes top-left. GL rows count from the bottom, so its top edge is frame height.
+    glm::ivec2 frame = mLayout.frameSize;
+    glm::ivec2 scene(mLayout.scene.size());
+    glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
+    glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, 0,
+                           frame.y - scene.y, scene.x, frame.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+
+    InspectorModel m;
+    m.title = mLesson.title;
+    for (const LessonStep& s : mLesson.steps) m.stepTitles.push_back(s.title);
+    m.currentStep = mStep;
+    m.stepText = stepText();
+    m.pixel = mPixel;
+    m.trace = mTrace;
+    m.map = &mMap;
+    m.lightSpace = &mLightSpace;
+    m.lightSpaceOrigin = mLightSpaceOrigin;
+    m.lightSpaceSize = mLightSpaceSize;
+    m.sceneSize = scene;
+    m.status = statusLine(mSettings, scene, mFrameTimeMs);
+    m.presentation = mPresentation;
+    m.help = mHelp;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    mCanvas.begin(frame);
+    drawInspector(mCanvas, mLayout, m);
+    mCanvas.flush();
+    blitThumbnail();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    mCanvas.begin(frame);
+    drawInspectorTop(mCanvas, mLayout, m);
+    mCanvas.flush();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+std::vector<uint8_t> Session::readFrame() const {
+    return readPixelsRgba8(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT0, mFrame.width,
+                           mFrame.height);
+}
+
+std::string Session::stepJson() const {
+    const LessonSettings& s = mSettings;
+    std::string out = "{\"lesson\":" + jsonString(mLesson.name) +
+                      ",\"title\":" + jsonString(mLesson.title) +
+                      ",\"step\":" + std::to_string(mStep + 1) +
+                      ",\"step_title\":" +
+                      jsonString(mLesson.steps.empty() ? "" : mLesson.steps[mStep].title) +
+                      ",\"text\":" + jsonString(stepText()) +
+                      ",\"pixel\":[" + std::to_string(mPixel.x) + "," + std::to_string(mPixel.y) +
+                      "],\"scene_size\":[" + std::to_string(static_cast<int>(mLayout.scene.w)) +
+                      "," + std::to_string(static_cast<int>(mLayout.scene.h)) + "]" +
+                      ",\"settings\":{\"method\":" +
+                      jsonString(std::string(methodInfo(s.method).name)) +
+                      ",\"kernel\":" + std::to_string(s.kernel) +
+                      ",\"radius\":" + formatNumber(s.radius) +
+                      ",\"rotate\":" + (s.rotate ? "true" : "false") +
+                      ",\"bias\":" + jsonString(s.bias) +
+                      ",\"constant_bias\":" + formatNumber(s.constantBias) +
+                      ",\"cull\":" + jsonString(s.cull) +
+                      ",\"map_size\":" + std::to_string(s.mapSize) +
+                      ",\"depth_format\":" + jsonString(s.depthFormat) + "}" +
+                      ",\"trace\":" + (mTrace ? traceToJson(*mTrace) : std::string("null")) + "}";
+    return out;
+}
+
+}  // namespace pcf

@@ -1,0 +1,105 @@
+// session.h: one lesson on screen: the scene rendered with the current step's settings, the
+// picked pixel traced by the CPU kernel on the rendered map, and the whole teaching frame
+// composed offscreen (scene + inspector). The viewer shows that frame in a window; the exporter
+// writes it to a PNG. Same code, same pixels.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "kernel/trace.h"
+#include "lesson/lesson.h"
+#include "overlay/canvas.h"
+#include "overlay/inspector.h"
+#include "render/gl_objects.h"
+#include "render/render_settings.h"
+#include "render/scene_renderer.h"
+
+namespace pcf {
+
+// The lessons that ship with pcfscope, sorted (lessons/*.toml): 01-..., 02-...
+std::vector<std::string> builtInLessons();
+// A lesson named on the command line: a path to a .toml file, a built-in lesson's name
+// ("03-bilinear-lerp"), or its number in the list ("3"). Throws UsageError naming the choices.
+std::string resolveLesson(const std::string& nameOrPath);
+
+RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
+
+class Session {
+public:
+    // Needs a current OpenGL 4.5 context that outlives the session.
+    Session(glm::ivec2 frameSize, bool presentation);
+
+    // Loads a lesson (throws InputError) and goes to its first step.
+    void loadLesson(const std::string& path);
+    const Lesson& lesson() const { return mLesson; }
+
+    // Steps: the step's settings and pixel replace the current ones.
+    int step() const { return mStep; }
+    int stepCount() const { return static_cast<int>(mLesson.steps.size()); }
+    void goToStep(int step);
+
+    // The state on screen, which the viewer's keys may change between steps.
+    const LessonSettings& settings() const { return mSettings; }
+    void setSettings(const LessonSettings& s);
+    // Picked pixel in scene coordinates (top-left origin), clamped to the scene.
+    glm::ivec2 pixel() const { return mPixel; }
+    void setPixel(glm::ivec2 scenePixel);
+
+    void setFrameSize(glm::ivec2 frameSize);
+    glm::ivec2 frameSize() const { return mLayout.frameSize; }
+    const InspectorLayout& layout() const { return mLayout; }
+    bool presentation() const { return mPresentation; }
+    void setPresentation(bool on);
+    bool help() const { return mHelp; }
+    void setHelp(bool on);
+    // The frame time the status line shows; negative: none (exports, screenshots).
+    void setFrameTimeMs(double ms);
+
+    // Renders what changed, traces the pixel and composes the frame offscreen.
+    void compose();
+    // Makes the next compose() render the scene again (frame-time measurements).
+    void invalidateScene() { mSceneDirty = true; }
+    GLuint frameFramebuffer() const { return mFrame.framebuffer.id(); }
+    std::vector<uint8_t> readFrame() const;  // RGBA8, rows top-down
+
+    const std::optional<Trace>& trace() const { return mTrace; }
+    // The current step's text with its placeholders filled from the trace.
+    std::string stepText() const;
+    // The step as JSON: lesson, step, title, text, pixel, settings, and the trace object.
+    std::string stepJson() const;
+
+private:
+    void renderScene();
+    void traceAtPixel();
+    void blitThumbnail();
+
+    Lesson mLesson;
+    int mStep = 0;
+    LessonSettings mSettings;
+    glm::ivec2 mPixel{0, 0};
+    bool mPresentation = false;
+    bool mHelp = false;
+    double mFrameTimeMs = -1.0;
+    InspectorLayout mLayout;
+
+    std::unique_ptr<SceneRenderer> mRenderer;
+    bool mSceneDirty = true;
+    std::optional<RenderSettings> mRendered;
+    ShadowMap mMap;
+    std::vector<float> mLightSpace;  // a region around the pixel (gridRadius), rows top-down
+    glm::ivec2 mLightSpaceOrigin{0, 0};
+    glm::ivec2 mLightSpaceSize{0, 0};
+    std::optional<Trace> mTrace;
+
+    Canvas mCanvas;
+    OffscreenTarget mFrame;
+    OffscreenTarget mThumbnail;  // the map's thumbnail, rows top-down, blitted into the frame
+    bool mThumbnailDirty = true;
+};
+
+}  // namespace pcf

@@ -1,0 +1,321 @@
+#include "app/viewer.h"
+
+#include <epoxy/gl.h>
+// After epoxy, without GLFW pulling in its own GL header.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "app/cli_util.h"
+#include "app/export.h"
+#include "app/render_options.h"
+#include "app/session.h"
+#include "kernel/methods.h"
+#include "render/glfw_window_context.h"
+#include "render/image_io.h"
+
+namespace pcf {
+
+namespace {
+
+// A free name for frames exported with E: DIR/LESSON-STEP.png, then -2, -3 ... (never
+// overwriting).
+std::string freeStem(const std::string& dir, const std::string& base) {
+    std::error_code ec;
+    std::string stem = (std::filesystem::path(dir) / base).string();
+    for (int k = 2; std::filesystem::exists(stem + ".png", ec) ||
+                    std::filesystem::exists(stem + ".json", ec);
+         ++k) {
+        stem = (std::filesystem::path(dir) / (base + "-" + std::to_string(k))).string();
+    }
+    return stem;
+}
+
+class Viewer {
+public:
+    Viewer(const ViewerOptions& o, GlfwWindowContext& window)
+        : mOptions(o), mWindow(window), mSession(window.framebufferSize(), o.presentation) {
+        mLessons = builtInLessons();
+        mSession.loadLesson(o.lesson);
+        auto it = std::find(mLessons.begin(), mLessons.end(), o.lesson);
+        mLessonIndex = it == mLessons.end() ? -1 : static_cast<int>(it - mLessons.begin());
+    }
+
+    Session& session() { return mSession; }
+    bool quit() const { return mQuit; }
+
+    void press(KeyPress k) {
+        bool shift = (k.mods & GLFW_MOD_SHIFT) != 0;
+        LessonSettings s = mSession.settings();
+        glm::ivec2 px = mSession.pixel();
+        switch (k.key) {
+            case GLFW_KEY_ESCAPE: mQuit = true; break;
+            case GLFW_KEY_SPACE: mSession.goToStep(mSession.step() + 1); break;
+            case GLFW_KEY_RIGHT:
+                if (shift) mSession.setPixel(px + glm::ivec2(1, 0));
+                else mSession.goToStep(mSession.step() + 1);
+                break;
+            case GLFW_KEY_LEFT:
+                if (shift) mSession.setPixel(px - glm::ivec2(1, 0));
+                else mSession.goToStep(mSession.step() - 1);
+                break;
+            case GLFW_KEY_BACKSPACE: mSession.goToStep(mSession.step() - 1); break;
+            case GLFW_KEY_UP: mSession.setPixel(px - glm::ivec2(0, 1)); break;
+            case GLFW_KEY_DOWN: mSession.setPixel(px + glm::ivec2(0, 1)); break;
+            case GLFW_KEY_HOME: mSession.goToStep(0); break;
+            case GLFW_KEY_END: mSession.goToStep(mSession.stepCount() - 1); break;
+            case GLFW_KEY_M: {
+                s.method = (s.method + (shift ? PCF_METHOD_COUNT - 1 : 1)) % PCF_METHOD_COUNT;
+                if (s.method == PCF_TENT && s.kernel != 3 && s.kernel != 5 && s.kernel != 7) {
+                    s.kernel = 3;
+                }
+                mSession.setSettings(s);
+                break;
+            }
+            case GLFW_KEY_LEFT_BRACKET:
+            case GLFW_KEY_RIGHT_BRACKET: {
+                int step = k.key == GLFW_KEY_RIGHT_BRACKET ? 1 : -1;
+                if (s.method == PCF_TENT) step *= 2;
+                s.kernel = std::clamp(s.kernel + step, s.method == PCF_TENT ? 3 : MIN_KERNEL,
+                                      s.method == PCF_TENT ? 7 : MAX_KERNEL);
+                if (s.method == PCF_TENT && s.kernel % 2 == 0) s.kernel = 3;
+                mSession.setSettings(s);
+                break;
+            }
+            case GLFW_KEY_MINUS:
+            case GLFW_KEY_KP_SUBTRACT:
+                s.mapSize = std::max(MIN_MAP_SIZE, s.mapSize / 2);
+                mSession.setSettings(s);
+                break;
+            case GLFW_KEY_EQUAL:
+            case GLFW_KEY_KP_ADD:
+                s.mapSize = std::min(MAX_MAP_SIZE, s.mapSize * 2);
+                mSession.setSettings(s);
+                break;
+            case GLFW_KEY_B:
+                s.bias = s.bias == "none" ? "constant" : "none";
+                mSession.setSettings(s);
+                break;
+            case GLFW_KEY_L: nextLesson(shift ? -1 : 1); break;
+            case GLFW_KEY_E: exportFrame(); break;
+            case GLFW_KEY_P: mSession.setPresentation(!mSession.presentation()); break;
+            case GLFW_KEY_H: mSession.setHelp(!mSession.help()); break;
+            case GLFW_KEY_F: toggleFullscreen(); break;
+            default: break;
+        }
+    }
+
+    void click(glm::dvec2 cursor) {
+        // Cursor in screen coordinates; the frame is in framebuffer pixels (HiDPI).
+        int ww = 0, wh = 0;
+        glfwGetWindowSize(mWindow.window(), &ww, &wh);
+        glm::ivec2 fb = mWindow.framebufferSize();
+        if (ww <= 0 || wh <= 0) return;
+        glm::vec2 p(cursor.x * fb.x / ww, cursor.y * fb.y / wh);
+        const Rect& scene = mSession.layout().scene;
+        if (scene.contains(p)) mSession.setPixel(glm::ivec2(p - scene.position()));
+    }
+
+    void exportFrame() {
+        std::string dir = "pcfscope-frames";
+        std::filesystem::create_directories(dir);
+        std::string stem = freeStem(dir, mSession.lesson().name + "-" +
+                                             std::to_string(mSession.step() + 1));
+        mSession.compose();
+        glm::ivec2 size = mSession.frameSize();
+        writePngRgba8(stem + ".png", size.x, size.y, mSession.readFrame());
+        writeTextFile(stem + ".json", mSession.stepJson() + "\n");
+        std::fprintf(stderr, "view: exported %s.png\n", stem.c_str());
+    }
+
+private:
+    void nextLesson(int delta) {
+        if (mLessons.empty()) return;
+        int n = static_cast<int>(mLessons.size());
+        mLessonIndex = ((mLessonIndex < 0 ? 0 : mLessonIndex) + delta + n) % n;
+        mSession.loadLesson(mLessons[static_cast<size_t>(mLessonIndex)]);
+    }
+
+    void toggleFullscreen() {
+        GLFWwindow* w = mWindow.window();
+        if (glfwGetWindowMonitor(w)) {
+            glfwSetWindowMonitor(w, nullptr, mSaved.x, mSaved.y, mSaved.z, mSaved.w, 0);
+            return;
+        }
+        GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+        if (!monitor) return;
+        const GLFWvidmode* mode = glfwGetVideoMode(monitor);
+        glfwGetWindowPos(w, &mSaved.x, &mSaved.y);
+        glfwGetWindowSize(w, &mSaved.z, &mSaved.w);
+        glfwSetWindowMonitor(w, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+    }
+
+    const ViewerOptions& mOptions;
+    GlfwWindowContext& mWindow;
+    Session mSession;
+    std::vector<std::string> mLessons;
+    int mLessonIndex = -1;
+    bool mQuit = false;
+    glm::ivec4 mSaved{100, 100, 1600, 900};
+};
+
+Viewer* gViewer = nullptr;  // GLFW callbacks are plain functions
+
+void onKey(GLFWwindow*, int key, int, int action, int mods) {
+    if (gViewer && (action == GLFW_PRESS || action == GLFW_REPEAT)) gViewer->press({key, mods});
+}
+
+void onMouseButton(GLFWwindow* window, int button, int action, int) {
+    if (!gViewer || button != GLFW_MOUSE_BUTTON_LEFT || action != GLFW_PRESS) return;
+    double x = 0, y = 0;
+    glfwGetCursorPos(window, &x, &y);
+    gViewer->click({x, y});
+}
+
+void present(Session& session, GlfwWindowContext& window) {
+    glm::ivec2 fb = window.framebufferSize();
+    glm::ivec2 frame = session.frameSize();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fb.x, fb.y);
+    glBlitNamedFramebuffer(session.frameFramebuffer(), 0, 0, 0, frame.x, frame.y, 0, 0, frame.x,
+                           frame.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    window.swapBuffers();
+}
+
+}  // namespace
+
+KeyPress parseKeyName(const std::string& token) {
+    static const std::map<std::string, int> NAMES = {
+        {"space", GLFW_KEY_SPACE},         {"right", GLFW_KEY_RIGHT},
+        {"left", GLFW_KEY_LEFT},           {"up", GLFW_KEY_UP},
+        {"down", GLFW_KEY_DOWN},           {"home", GLFW_KEY_HOME},
+        {"end", GLFW_KEY_END},             {"backspace", GLFW_KEY_BACKSPACE},
+        {"escape", GLFW_KEY_ESCAPE},       {"esc", GLFW_KEY_ESCAPE},
+        {"left_bracket", GLFW_KEY_LEFT_BRACKET}, {"[", GLFW_KEY_LEFT_BRACKET},
+        {"right_bracket", GLFW_KEY_RIGHT_BRACKET}, {"]", GLFW_KEY_RIGHT_BRACKET},
+        {"minus", GLFW_KEY_MINUS},         {"-", GLFW_KEY_MINUS},
+        {"equal", GLFW_KEY_EQUAL},         {"plus", GLFW_KEY_EQUAL},
+        {"+", GLFW_KEY_EQUAL},             {"=", GLFW_KEY_EQUAL},
+    };
+    KeyPress k;
+    std::string name = token;
+    for (;;) {
+        size_t plus = name.find('+');
+        if (plus == std::string::npos || plus == 0 || plus + 1 == name.size()) break;
+        std::string mod = name.substr(0, plus);
+        std::transform(mod.begin(), mod.end(), mod.begin(), ::tolower);
+        if (mod == "shift") k.mods |= GLFW_MOD_SHIFT;
+        else if (mod == "ctrl" || mod == "control") k.mods |= GLFW_MOD_CONTROL;
+        else if (mod == "alt") k.mods |= GLFW_MOD_ALT;
+        else throw UsageError("--keys: unknown modifier '" + mod + "' in '" + token + "'");
+        name = name.substr(plus + 1);
+    }
+    std::string lower = name;
+    std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+    if (auto it = NAMES.find(lower); it != NAMES.end()) {
+        k.key = it->second;
+    } else if (lower.size() == 1 && lower[0] >= 'a' && lower[0] <= 'z') {
+        k.key = GLFW_KEY_A + (lower[0] - 'a');
+        if (name[0] >= 'A' && name[0] <= 'Z') k.mods |= GLFW_MOD_SHIFT;
+    } else if (lower.size() == 1 && lower[0] >= '0' && lower[0] <= '9') {
+        k.key = GLFW_KEY_0 + (lower[0] - '0');
+    } else {
+        throw UsageError("--keys: unknown key '" + token + "' (GLFW names: space, right, m, "
+                         "shift+m, left_bracket ...)");
+    }
+    return k;
+}
+
+int runViewer(const ViewerOptions& o) {
+    std::vector<KeyPress> keys;
+    std::istringstream tokens(o.keys);
+    for (std::string t; tokens >> t;) keys.push_back(parseKeyName(t));
+    if (!o.screenshot.empty()) requireWritable(o.screenshot, o.force);
+    parseLessonFile(o.lesson);  // bad lessons fail before a window opens
+
+    bool scripted = !o.screenshot.empty();
+    std::unique_ptr<GlfwWindowContext> window =
+        GlfwWindowContext::create(o.windowSize.x, o.windowSize.y, "pcfscope", true);
+    Viewer viewer(o, *window);
+    gViewer = &viewer;
+    glfwSetKeyCallback(window->window(), onKey);
+    glfwSetMouseButtonCallback(window->window(), onMouseButton);
+    for (const KeyPress& k : keys) viewer.press(k);
+
+    Session& session = viewer.session();
+    if (o.benchFrames > 0) {
+        // Frame time as the class sees it: compose (scene, trace, inspector), present, finish.
+        // Once with the scene rendered again every frame (a key changed the method), once with
+        // only the pixel moving (the scene is reused).
+        using Clock = std::chrono::steady_clock;
+        auto ms = [](Clock::time_point a, Clock::time_point b) {
+            return std::chrono::duration<double, std::milli>(b - a).count();
+        };
+        auto median = [](std::vector<double> v) {
+            std::sort(v.begin(), v.end());
+            return v[v.size() / 2];
+        };
+        struct Times {
+            double frame, compose, present;
+        };
+        auto timeFrames = [&](bool rerender) {
+            std::vector<double> frame, compose, shown;
+            for (int k = 0; k < o.benchFrames; ++k) {
+                if (rerender) session.invalidateScene();
+                else session.setPixel(session.pixel() + glm::ivec2(k % 2 ? -1 : 1, 0));
+                auto start = Clock::now();
+                session.compose();
+                glFinish();
+                auto composed = Clock::now();
+                present(session, *window);
+                glFinish();
+                auto end = Clock::now();
+                frame.push_back(ms(start, end));
+                compose.push_back(ms(start, composed));
+                shown.push_back(ms(composed, end));
+            }
+            return Times{median(frame), median(compose), median(shown)};
+        };
+        session.compose();  // warm-up: programs compiled, map rendered
+        Times full = timeFrames(true);
+        Times pick = timeFrames(false);
+        glm::ivec2 size = session.frameSize();
+        std::printf("view: %dx%d, %s, %d frames each, medians (glFinish + steady_clock):\n"
+                    "  scene re-rendered: frame %.1f ms (compose %.1f + present %.1f)\n"
+                    "  pixel moved:       frame %.1f ms (compose %.1f + present %.1f)\n",
+                    size.x, size.y, std::string(methodInfo(session.settings().method).name).c_str(),
+                    o.benchFrames, full.frame, full.compose, full.present, pick.frame,
+                    pick.compose, pick.present);
+        gViewer = nullptr;
+        return 0;
+    }
+    if (scripted) {
+        session.compose();
+        glm::ivec2 size = session.frameSize();
+        writePngRgba8(o.screenshot, size.x, size.y, session.readFrame());
+        present(session, *window);
+        gViewer = nullptr;
+        return 0;
+    }
+    while (!glfwWindowShouldClose(window->window()) && !viewer.quit()) {
+        session.setFrameSize(window->framebufferSize());
+        auto start = std::chrono::steady_clock::now();
+        session.compose();
+        glFinish();
+        double ms = std::chrono::duration<double, std::milli>(
+                        std::chrono::steady_clock::now() - start).count();
+        present(session, *window);
+        session.setFrameTimeMs(ms);
+        glfwWaitEventsTimeout(0.25);
+    }
+    gViewer = nullptr;
+    return 0;
+}
+
+}  // namespace pcf

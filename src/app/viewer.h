@@ -1,0 +1,33 @@
+// viewer.h: `pcfscope view`: the lesson in a GLFW window, driven by keys and clicks; keys can be
+// replayed from the command line (--keys) and the frame written (--screenshot) for scripts.
+#pragma once
+
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace pcf {
+
+struct ViewerOptions {
+    std::string lesson;      // resolved path
+    glm::ivec2 windowSize{1600, 900};
+    std::string keys;        // "right right m e": GLFW key names, space-separated
+    std::string screenshot;  // write the frame after the keys, then quit
+    bool presentation = false;
+    bool force = false;      // the screenshot may overwrite
+    int benchFrames = 0;     // > 0: time this many frames, print the medians, quit
+};
+
+// Runs the window until Esc (or until the screenshot is written). Throws std::runtime_error
+// "no display: ..." when no window can be opened.
+int runViewer(const ViewerOptions& options);
+
+// One key as the viewer understands it, from a --keys token ("m", "shift+m", "space", "right",
+// "left_bracket" or "[", "minus" or "-", "equal" or "+"...); throws UsageError on unknown names.
+struct KeyPress {
+    int key = 0;   // GLFW_KEY_*
+    int mods = 0;  // GLFW_MOD_*
+};
+KeyPress parseKeyName(const std::string& token);
+
+}  // namespace pcf

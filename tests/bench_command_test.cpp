@@ -1,0 +1,185 @@
+// `pcfscope bench`, run as a user runs it: --quick writes the CSV, the table, the chart and the
+// difference images; bad input is refused before anything is written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "analysis/bench_report.h"
+#include "image_read.h"
+#include "run_command.h"
+
+namespace pcf {
+namespace {
+
+namespace fs = std::filesystem;
+
+class BenchCommand : public ::testing::Test {
+  protected:
+    void SetUp() override { mDir = testutil::makeTempDir("bench"); }
+    void TearDown() override {
+        if (!HasFailure()) fs::remove_all(mDir);
+    }
+    std::string path(const std::string& name) const { return (mDir / name).string(); }
+    fs::path mDir;
+};
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+    std::vector<std::string> fields;
+    std::stringstream s(line);
+    for (std::string f; std::getline(s, f, ',');) fields.push_back(f);
+    return fields;
+}
+
+TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
+    std::string out = path("quick");
+    auto r = testutil::runPcfscope("bench --quick -o " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    // 9 methods, N = 3 for the four that take a kernel, maps 128 and 256.
+    const int points = 9 * 2;
+    EXPECT_NE(r.err.find("bench: 12/18 "), std::string::npos) << r.err;  // progress
+
+    std::ifstream csv(out + "/bench.csv");
+    std::string line;
+    ASSERT_TRUE(std::getline(csv, line));
+    EXPECT_EQ(line, BENCH_CSV_HEADER);
+    EXPECT_EQ(line,
+              "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,"
+              "edge_rmse,edge_max_err,timer");
+    std::set<std::string> methods;
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        ++rows;
+        std::vector<std::string> f = splitCsvLine(line);
+        ASSERT_EQ(f.size(), 11u) << line;
+        methods.insert(f[0]);
+        bool kernelMethod =
+            f[0] == "pcf-naive" || f[0] == "pcf-gather" || f[0] == "pcf-hw" || f[0] == "tent";
+        EXPECT_EQ(f[1], kernelMethod ? "3" : "0") << line;
+        EXPECT_TRUE(f[2] == "128" || f[2] == "256") << line;
+        EXPECT_GT(std::stod(f[3]), 0.0) << line;  // gpu_ms
+        EXPECT_GT(std::stod(f[4]), 0.0) << line;  // cpu_ns_per_pixel
+        EXPECT_GE(std::stoi(f[5]), 1) << line;    // texel_reads
+        for (int k = 6; k <= 9; ++k) {
+            double e = std::stod(f[k]);
+            EXPECT_GE(e, 0.0) << line;
+            EXPECT_LE(e, 1.0) << line;
+        }
+        EXPECT_GT(std::stod(f[8]), 0.0) << line;  // an edge band exists, and PCF misses it
+        EXPECT_TRUE(f[10] == "glFinish+steady_clock" || f[10] == "GL_TIME_ELAPSED") << line;
+    }
+    EXPECT_EQ(rows, points);
+    EXPECT_EQ(methods.size(), 9u);
+
+    std::string md = testutil::readAll(out + "/bench.md");
+    EXPECT_NE(md.find("Measured on `"), std::string::npos) << md;
+    EXPECT_NE(md.find("| pcf-gather"), std::string::npos) << md;
+    EXPECT_EQ(r.out, md);  // the table on stdout too
+
+    // The chart: the frame's size unless --chart-size says otherwise.
+    ImageSize chart = readImageSize(out + "/speed_vs_accuracy.png");
+    EXPECT_EQ(chart.width, 320);
+    EXPECT_EQ(chart.height, 180);
+    int diffs = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(out + "/diff")) {
+        ++diffs;
+        ImageSize d = readImageSize(e.path().string());
+        EXPECT_EQ(d.width, 320) << e.path();
+        EXPECT_EQ(d.height, 180) << e.path();
+    }
+    EXPECT_EQ(diffs, points);
+    EXPECT_TRUE(fs::exists(out + "/diff/pcf-gather-n3-map256.png"));
+    EXPECT_TRUE(fs::exists(out + "/diff/nearest-map128.png"));
+    // Nothing else: no staging folder left behind.
+    int entries = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(out)) {
+        (void)e;
+        ++entries;
+    }
+    EXPECT_EQ(entries, 4);
+}
+
+TEST_F(BenchCommand, ChosenMethodsKernelsMapsAndChartSize) {
+    std::string out = path("chosen");
+    auto r = testutil::runPcfscope(
+        "bench --quick --methods tent,nearest --kernels 3,5 "
+        "--map-sizes 64,96,128 --chart-size 640x400 -o " +
+        out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::string csv = testutil::readAll(out + "/bench.csv");
+    EXPECT_EQ(testutil::lineCount(csv), 1 + (2 + 1) * 3) << csv;
+    EXPECT_NE(csv.find("\ntent,5,96,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\nnearest,0,64,"), std::string::npos) << csv;
+    ImageSize chart = readImageSize(out + "/speed_vs_accuracy.png");
+    EXPECT_EQ(chart.width, 640);
+    EXPECT_EQ(chart.height, 400);
+}
+
+TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
+    struct Case {
+        std::string args;
+        std::string expect;
+    };
+    std::vector<Case> cases = {
+        {"--methods nearest,blur", "unknown method 'blur'"},
+        {"--kernels 3,9", "--kernels 9 is out of range"},
+        {"--kernels 3,x", "--kernels"},
+        {"--kernels 3,,5", "--kernels"},
+        {"--map-sizes 3", "--map-sizes 3 is out of range"},
+        {"--map-sizes 5000", "--map-sizes 5000"},
+        {"--methods tent --kernels 4", "tent takes --kernels 3, 5 or 7"},
+        {"--size 0x10", "--size"},
+        {"--chart-size 20x20", "--chart-size"},
+        {"--scene no-such", "unknown scene 'no-such'"},
+        {"--scene pole --scene-file x.toml", "not both"},
+        {"--spp 0", "--spp 0"},
+        {"--repeats 0", "--repeats"},
+        {"--cull sideways", "--cull"},
+    };
+    for (const Case& c : cases) {
+        auto r = testutil::runPcfscope("bench --quick " + c.args + " -o " + path("out"));
+        EXPECT_EQ(r.exitCode, 2) << c.args << "\n" << r.err;
+        EXPECT_EQ(testutil::lineCount(r.err), 1) << c.args << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.expect), std::string::npos) << c.args << "\n" << r.err;
+        EXPECT_FALSE(fs::exists(path("out"))) << c.args;
+    }
+    // -o naming a file, not a directory.
+    { std::ofstream(path("file")) << "x"; }
+    auto notDir = testutil::runPcfscope("bench --quick -o " + path("file"));
+    EXPECT_EQ(notDir.exitCode, 2);
+    EXPECT_NE(notDir.err.find("not a directory"), std::string::npos) << notDir.err;
+}
+
+TEST_F(BenchCommand, RefusesToOverwriteWithoutForce) {
+    std::string out = path("again");
+    fs::create_directories(out);
+    { std::ofstream(out + "/bench.csv") << "old"; }
+    auto r = testutil::runPcfscope("bench --quick --methods nearest -o " + out);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("bench.csv already exists"), std::string::npos) << r.err;
+    EXPECT_EQ(testutil::readAll(out + "/bench.csv"), "old");
+    int entries = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(out)) {
+        (void)e;
+        ++entries;
+    }
+    EXPECT_EQ(entries, 1);  // nothing written beside it
+
+    auto forced = testutil::runPcfscope("bench --quick --methods nearest -f -o " + out);
+    ASSERT_EQ(forced.exitCode, 0) << forced.err;
+    EXPECT_EQ(testutil::readAll(out + "/bench.csv").rfind(BENCH_CSV_HEADER, 0), 0u);
+    // The difference images count as output files too.
+    for (const char* name : {"bench.csv", "bench.md", "speed_vs_accuracy.png"}) {
+        fs::remove(out + "/" + name);
+    }
+    auto diffOnly = testutil::runPcfscope("bench --quick --methods nearest -o " + out);
+    EXPECT_EQ(diffOnly.exitCode, 2);
+    EXPECT_NE(diffOnly.err.find("nearest-map128.png already exists"), std::string::npos)
+        << diffOnly.err;
+    EXPECT_FALSE(fs::exists(out + "/bench.csv"));
+}
+
+}  // namespace
+}  // namespace pcf

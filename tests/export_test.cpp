@@ -1,0 +1,226 @@
+// The teaching frames as a user gets them: `pcfscope export` (headless), `pcfscope view` with
+// replayed keys under Xvfb, and the main job without a display.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "image_read.h"
+#include "json_lite.h"
+#include "kernel/methods.h"
+#include "kernel/trace.h"
+#include "lesson/lesson.h"
+#include "overlay/inspector.h"
+#include "run_command.h"
+#include "virtual_display.h"
+
+namespace pcf {
+namespace {
+
+namespace fs = std::filesystem;
+using testutil::runPcfscope;
+
+// A lesson of our own, so the test knows what each step shows.
+constexpr const char* TEST_LESSON = R"(title = "Test lesson"
+scene = "box-on-plane"
+[settings]
+map_size = 128
+cull = "front"
+pixel = [700, 420]
+[[step]]
+title = "Nearest"
+text = "texel {base.x},{base.y}: visibility = {visibility}"
+method = "nearest"
+[[step]]
+title = "Bilinear"
+text = "fx = {frac.x}, fy = {frac.y}, visibility = {visibility}"
+method = "bilinear2x2"
+pixel = [608, 300]  # on the box shadow's edge: lit and shadowed texels
+[[step]]
+title = "Gather"
+text = "{texels} texels, {gathers} gathers, visibility = {visibility}"
+method = "pcf-gather"
+)";
+
+class ExportTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        mDir = testutil::makeTempDir("export");
+        std::ofstream(mDir / "test.toml") << TEST_LESSON;
+    }
+    void TearDown() override {
+        if (!HasFailure()) fs::remove_all(mDir);
+    }
+    std::string path(const std::string& name) const { return (mDir / name).string(); }
+    fs::path mDir;
+};
+
+std::string readFile(const std::string& p) { return testutil::readAll(p); }
+
+TEST_F(ExportTest, WritesAFrameAndATracePerStep) {
+    auto r = runPcfscope("export " + path("test.toml") + " -o " + path("frames") +
+                         " --size 1280x720", "env -u DISPLAY");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (int s = 1; s <= 3; ++s) {
+        std::string stem = path("frames/test-" + std::to_string(s));
+        ImageSize size = readImageSize(stem + ".png");
+        EXPECT_EQ(size.width, 1280);
+        EXPECT_EQ(size.height, 720);
+        jsonlite::Value j = jsonlite::parse(readFile(stem + ".json"));
+        EXPECT_EQ(j["step"].number, s);
+        ASSERT_EQ(j["trace"].kind, jsonlite::Value::OBJECT) << "step " << s << " has no receiver";
+        const jsonlite::Value& tr = j["trace"];
+        // The step text shows the kernel's own numbers.
+        float visibility = static_cast<float>(tr["visibility"].number);
+        EXPECT_NE(j["text"].string.find("visibility = " + formatNumber(visibility)),
+                  std::string::npos)
+            << j["text"].string;
+        double sum = 0.0;
+        for (const jsonlite::Value& t : tr["taps"].array) {
+            sum += t["weight"].number * t["lit"].number;
+        }
+        EXPECT_NEAR(sum, visibility, 1e-5);
+    }
+    jsonlite::Value gather = jsonlite::parse(readFile(path("frames/test-3.json")));
+    EXPECT_EQ(gather["trace"]["method"].string, "pcf-gather");
+    EXPECT_NE(gather["text"].string.find("16 texels, 4 gathers"), std::string::npos);
+    EXPECT_NE(r.err.find("frames/s"), std::string::npos) << r.err;
+}
+
+// The neighbourhood's cells are tinted by their comparison bit: look at the exported pixels of
+// each tap's cell and find the lit or the shadowed colour there.
+TEST_F(ExportTest, CellsAreTintedByTheirBits) {
+    auto r = runPcfscope("export " + path("test.toml") + " -o " + path("frames") +
+                         " --size 1600x900 --steps 2", "env -u DISPLAY");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    jsonlite::Value j = jsonlite::parse(readFile(path("frames/test-2.json")));
+    std::vector<unsigned char> px = readImageBytes(path("frames/test-2.png"), 4);
+    // Rebuild the layout the exporter used from the trace it wrote.
+    Trace tr;
+    const jsonlite::Value& t = j["trace"];
+    tr.mapSize = {static_cast<int>(t["map_size"][0].number), static_cast<int>(t["map_size"][1].number)};
+    tr.uv = {static_cast<float>(t["uv"][0].number), static_cast<float>(t["uv"][1].number)};
+    tr.pos.base = {static_cast<int>(t["base"][0].number), static_cast<int>(t["base"][1].number)};
+    tr.weights.origin = {static_cast<int>(t["weights"]["origin"][0].number),
+                         static_cast<int>(t["weights"]["origin"][1].number)};
+    tr.weights.size = {static_cast<int>(t["weights"]["size"][0].number),
+                       static_cast<int>(t["weights"]["size"][1].number)};
+    tr.weights.values.assign(static_cast<size_t>(tr.weights.size.x * tr.weights.size.y), 0.25f);
+    Neighbourhood n = neighbourhoodOf(tr);
+    EXPECT_EQ(n.size, glm::ivec2(2, 2));
+    InspectorLayout layout = inspectorLayout({1600, 900}, false);
+    Rect area = neighbourhoodArea(layout, tr, false);
+    int litCells = 0;
+    int shadowedCells = 0;
+    for (const jsonlite::Value& tap : t["taps"].array) {
+        glm::ivec2 texel(static_cast<int>(tap["texel"][0].number),
+                         static_cast<int>(tap["texel"][1].number));
+        Rect cell = texelCellRect(n, area, texel);
+        // A few pixels in from the cell's top-left corner: past the grid line, before the text.
+        size_t k = (static_cast<size_t>(cell.y + 4) * 1600 + static_cast<size_t>(cell.x + 4)) * 4;
+        bool lit = tap["lit"].number == 1;
+        Colour expect = lit ? LIT_COLOUR : SHADOWED_COLOUR;
+        EXPECT_NEAR(px[k], expect.r * 255.0f, 1.0f) << "texel " << texel.x << "," << texel.y;
+        EXPECT_NEAR(px[k + 1], expect.g * 255.0f, 1.0f) << "texel " << texel.x << "," << texel.y;
+        EXPECT_NEAR(px[k + 2], expect.b * 255.0f, 1.0f) << "texel " << texel.x << "," << texel.y;
+        (lit ? litCells : shadowedCells) += 1;
+    }
+    EXPECT_EQ(litCells + shadowedCells, 4);
+    // The picked pixel of this step sits on the shadow's edge: both kinds of cell are there.
+    EXPECT_GT(litCells, 0);
+    EXPECT_GT(shadowedCells, 0);
+}
+
+TEST_F(ExportTest, SameBytesOnEveryRun) {
+    auto a = runPcfscope("export " + path("test.toml") + " -o " + path("a") + " --size 800x450");
+    auto b = runPcfscope("export " + path("test.toml") + " -o " + path("b") + " --size 800x450");
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    for (int s = 1; s <= 3; ++s) {
+        std::string name = "/test-" + std::to_string(s);
+        EXPECT_EQ(readFile(path("a") + name + ".png"), readFile(path("b") + name + ".png")) << s;
+        EXPECT_EQ(readFile(path("a") + name + ".json"), readFile(path("b") + name + ".json")) << s;
+    }
+}
+
+TEST_F(ExportTest, RefusesToOverwriteAndBadInputExitsTwo) {
+    ASSERT_EQ(runPcfscope("export " + path("test.toml") + " -o " + path("f") + " --steps 1")
+                  .exitCode,
+              0);
+    auto again = runPcfscope("export " + path("test.toml") + " -o " + path("f") + " --steps 1");
+    EXPECT_EQ(again.exitCode, 2);
+    EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
+
+    std::ofstream(mDir / "bad.toml") << "title = \"x\"\nscene = \"box-on-plane\"\n[[step]]\n"
+                                        "title = \"a\"\ntext = \"{frac.q}\"\n";
+    auto bad = runPcfscope("export " + path("bad.toml") + " -o " + path("g"));
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_EQ(testutil::lineCount(bad.err), 1) << bad.err;
+    EXPECT_NE(bad.err.find("bad.toml:5:"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(path("g")));
+
+    auto steps = runPcfscope("export " + path("test.toml") + " -o " + path("h") + " --steps 2-9");
+    EXPECT_EQ(steps.exitCode, 2);
+    EXPECT_NE(steps.err.find("--steps"), std::string::npos) << steps.err;
+    EXPECT_FALSE(fs::exists(path("h")));
+
+    auto unknown = runPcfscope("export no-such-lesson");
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_NE(unknown.err.find("unknown lesson"), std::string::npos) << unknown.err;
+}
+
+TEST_F(ExportTest, ViewWithoutADisplaySaysSoAndPointsToExport) {
+    auto r = runPcfscope("view " + path("test.toml"), "env -u DISPLAY -u WAYLAND_DISPLAY");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("display"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("pcfscope export"), std::string::npos) << r.err;
+}
+
+TEST_F(ExportTest, MainJobWithoutADisplayExportsLessonOne) {
+    auto r = runPcfscope("", "cd " + mDir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("exported"), std::string::npos) << r.out;
+    EXPECT_TRUE(fs::exists(mDir / "pcfscope-frames"));
+    int pngs = 0;
+    for (const auto& e : fs::recursive_directory_iterator(mDir / "pcfscope-frames")) {
+        pngs += e.path().extension() == ".png";
+    }
+    EXPECT_GE(pngs, 3);
+    // A second run goes to a new folder instead of overwriting the first.
+    auto again = runPcfscope("", "cd " + mDir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY");
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_NE(again.out.find("-2/"), std::string::npos) << again.out;
+}
+
+TEST_F(ExportTest, ViewKeysScreenshotIsTheExportedFrame) {
+    testutil::VirtualDisplay x;
+    ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
+    auto shot = runPcfscope("view " + path("test.toml") +
+                                " --keys \"right right\" --screenshot " + path("shot.png"),
+                            "DISPLAY=" + x.display());
+    ASSERT_EQ(shot.exitCode, 0) << shot.err;
+    auto r = runPcfscope("export " + path("test.toml") + " -o " + path("frames") + " --steps 3");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(readFile(path("shot.png")), readFile(path("frames/test-3.png")));
+    // Keys change the state: M moves pcf-gather to pcf-hw, and the frame changes with it.
+    auto other = runPcfscope("view " + path("test.toml") +
+                                 " --keys \"end m\" --screenshot " + path("shot-m.png"),
+                             "DISPLAY=" + x.display());
+    ASSERT_EQ(other.exitCode, 0) << other.err;
+    EXPECT_NE(readFile(path("shot-m.png")), readFile(path("frames/test-3.png")));
+    auto badKey = runPcfscope("view " + path("test.toml") + " --keys \"warp\" --screenshot " +
+                                  path("x.png"),
+                              "DISPLAY=" + x.display());
+    EXPECT_EQ(badKey.exitCode, 2);
+    EXPECT_NE(badKey.err.find("unknown key 'warp'"), std::string::npos) << badKey.err;
+}
+
+}  // namespace
+}  // namespace pcf

@@ -1,0 +1,108 @@
+// `pcfscope truth`: the ray-cast ground truth as an EXR, rows top-down, and bad input refused.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "analysis/ground_truth.h"
+#include "image_read.h"
+#include "run_command.h"
+#include "scene/presets.h"
+
+namespace pcf {
+namespace {
+
+class TruthCommand : public ::testing::Test {
+  protected:
+    void SetUp() override { mDir = testutil::makeTempDir("truth"); }
+    void TearDown() override {
+        if (!HasFailure()) std::filesystem::remove_all(mDir);
+    }
+    std::string path(const std::string& name) const { return (mDir / name).string(); }
+    std::filesystem::path mDir;
+};
+
+TEST_F(TruthCommand, WritesTheVisibilityTopDownAsTheLibraryComputesIt) {
+    auto r = testutil::runPcfscope("truth --scene box-on-plane --size 64x36 --spp 3 -o " +
+                                   path("gt.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("truth:"), std::string::npos);  // progress on stderr
+    ImageSize size = readImageSize(path("gt.exr"));
+    EXPECT_EQ(size.width, 64);
+    EXPECT_EQ(size.height, 36);
+    EXPECT_EQ(size.channels, 1);
+    std::vector<float> file = readImageFloats(path("gt.exr"), 1);
+    GroundTruthOptions options;
+    options.spp = 3;
+    GroundTruth truth = computeGroundTruth(*presetScene("box-on-plane"), {64, 36}, options);
+    ASSERT_EQ(file.size(), truth.visibility.size());
+    EXPECT_EQ(file, truth.visibility);
+    // Top-down: the first scanline is the sky above the ground's far edge (nothing hit: 1), and
+    // the frame holds both shadow and light.
+    for (int x = 0; x < 64; ++x) EXPECT_EQ(file[x], 1.0f) << x;
+    EXPECT_NE(std::find(file.begin(), file.end(), 0.0f), file.end());
+}
+
+TEST_F(TruthCommand, MaskAddsTheReceiverChannel) {
+    auto r = testutil::runPcfscope(
+        "truth --scene sphere-over-plane --size 48x27 --spp 2 --mask "
+        "-o " +
+        path("gt.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<float> file = readImageFloats(path("gt.exr"), 2);
+    GroundTruthOptions options;
+    options.spp = 2;
+    GroundTruth truth = computeGroundTruth(*presetScene("sphere-over-plane"), {48, 27}, options);
+    int receivers = 0;
+    for (size_t k = 0; k < truth.pixelCount(); ++k) {
+        EXPECT_EQ(file[2 * k], truth.visibility[k]);
+        EXPECT_EQ(file[2 * k + 1], truth.receiver[k] ? 1.0f : 0.0f);
+        receivers += truth.receiver[k];
+    }
+    EXPECT_GT(receivers, 48 * 27 / 3);
+}
+
+TEST_F(TruthCommand, RefusesToOverwriteWithoutForce) {
+    std::string out = path("gt.exr");
+    ASSERT_EQ(testutil::runPcfscope("truth --scene pole --size 16x9 --spp 1 -o " + out).exitCode,
+              0);
+    auto again = testutil::runPcfscope("truth --scene pole --size 32x18 --spp 1 -o " + out);
+    EXPECT_EQ(again.exitCode, 2);
+    EXPECT_EQ(testutil::lineCount(again.err), 1) << again.err;
+    EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
+    EXPECT_EQ(readImageSize(out).width, 16);
+    auto forced = testutil::runPcfscope("truth --scene pole --size 32x18 --spp 1 -f -o " + out);
+    EXPECT_EQ(forced.exitCode, 0) << forced.err;
+    EXPECT_EQ(readImageSize(out).width, 32);
+}
+
+TEST_F(TruthCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
+    struct Case {
+        std::string args;
+        std::string expect;
+    };
+    std::vector<Case> cases = {
+        {"", "needs --scene"},
+        {"--scene pole --scene-file x.toml", "not both"},
+        {"--scene no-such", "unknown scene 'no-such'"},
+        {"--scene-file " + path("missing.toml"), "missing.toml"},
+        {"--scene pole --spp 0", "--spp 0"},
+        {"--scene pole --spp 65", "--spp 65"},
+        {"--scene pole --size 0x10", "--size"},
+        {"--scene pole --size 10", "--size"},
+        {"--scene pole --threads -1", "--threads"},
+    };
+    for (const Case& c : cases) {
+        auto r = testutil::runPcfscope("truth " + c.args + " -o " + path("gt.exr"));
+        EXPECT_EQ(r.exitCode, 2) << c.args << "\n" << r.err;
+        EXPECT_EQ(testutil::lineCount(r.err), 1) << c.args << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.expect), std::string::npos) << c.args << "\n" << r.err;
+        EXPECT_FALSE(std::filesystem::exists(path("gt.exr"))) << c.args;
+    }
+    auto noOut = testutil::runPcfscope("truth --scene pole");
+    EXPECT_EQ(noOut.exitCode, 2);
+    EXPECT_NE(noOut.err.find("-o"), std::string::npos) << noOut.err;
+    EXPECT_TRUE(std::filesystem::is_empty(mDir));
+}
+
+}  // namespace
+}  // namespace pcf
