@@ -137,6 +137,25 @@ TEST_F(ExportTest, CellsAreTintedByTheirBits) {
     EXPECT_GT(shadowedCells, 0);
 }
 
+// A chart step shows the bench chart where the scene goes; the next step shows the scene again.
+TEST_F(ExportTest, ChartStepsShowTheChartInTheScenesPlace) {
+    auto r = runPcfscope("export 11-speed-and-accuracy -o " + path("chart") +
+                         " --size 1600x900 --steps 3-4");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<unsigned char> chart = readImageBytes(path("chart/11-speed-and-accuracy-3.png"), 4);
+    std::vector<unsigned char> scene = readImageBytes(path("chart/11-speed-and-accuracy-4.png"), 4);
+    // The chart's page is white at the scene's top-left corner; the scene there is sky.
+    auto at = [](const std::vector<unsigned char>& px, int x, int y) {
+        size_t k = (static_cast<size_t>(y) * 1600 + x) * 4;
+        return glm::ivec3(px[k], px[k + 1], px[k + 2]);
+    };
+    EXPECT_EQ(at(chart, 4, 4), glm::ivec3(255, 255, 255));
+    EXPECT_NE(at(scene, 4, 4), glm::ivec3(255, 255, 255));
+    // The inspector still traces the pixel on both.
+    jsonlite::Value j = jsonlite::parse(readFile(path("chart/11-speed-and-accuracy-3.json")));
+    EXPECT_EQ(j["trace"].kind, jsonlite::Value::OBJECT);
+}
+
 TEST_F(ExportTest, SameBytesOnEveryRun) {
     auto a = runPcfscope("export " + path("test.toml") + " -o " + path("a") + " --size 800x450");
     auto b = runPcfscope("export " + path("test.toml") + " -o " + path("b") + " --size 800x450");

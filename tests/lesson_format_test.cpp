@@ -7,6 +7,7 @@
 
 #include "kernel/pcf.h"
 #include "lesson/lesson.h"
+#include "scene/input_error.h"
 
 namespace pcf {
 namespace {
@@ -376,6 +377,37 @@ TEST(LessonFormat, TapIndicesMustExistForTheStepsMethod) {
                          "text = \"{fetch[9].value}\"\n"));
     EXPECT_EQ(e.rfind("bad.toml:9: step 2 text: fetch[9] is past the 9 fetch instructions", 0), 0u)
         << e;
+}
+
+}  // namespace
+}  // namespace pcf
+
+namespace pcf {
+namespace {
+
+// A step may show a bench chart, from a bench.csv beside the lesson; a missing one is named.
+TEST(LessonFormat, ChartStepsNameTheirCsvAndAMissingOneFails) {
+    Lesson lesson = parseLessonFile(PCFSCOPE_SOURCE_DIR "/lessons/11-speed-and-accuracy.toml");
+    ASSERT_GE(lesson.steps.size(), 4u);
+    EXPECT_EQ(std::filesystem::path(lesson.steps[0].chart).filename(), "bench.csv");
+    EXPECT_TRUE(std::filesystem::exists(lesson.steps[0].chart));
+    EXPECT_TRUE(lesson.steps[3].chart.empty());  // not inherited
+    const char* missing = R"(title = "x"
+scene = "box-on-plane"
+[[step]]
+title = "a"
+text = "b"
+chart = "nowhere/bench.csv"
+)";
+    try {
+        parseLessonString(missing, "/tmp/m.toml");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("/tmp/m.toml:6: step 1 chart 'nowhere/bench.csv' "
+                                              "not found", 0),
+                  0u)
+            << e.what();
+    }
 }
 
 }  // namespace

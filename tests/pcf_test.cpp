@@ -134,12 +134,14 @@ TEST(Pcf, MergedThreeByThreeWeightsAreTheSeed001TableOverNine) {
         Trace tr = traceLookup(map, uv, 0.5f, 0.5f, makeParams(method, 3));
         float x = tr.pos.frac.x;
         float y = tr.pos.frac.y;
-        const float table[4][4] = {
-            {(1 - x) * (1 - y), 1 - y, 1 - y, x * (1 - y)},
-            {1 - x, 1, 1, x},
-            {1 - x, 1, 1, x},
-            {(1 - x) * y, y, y, x * y},
-        };
+        // Seed 001's 4 x 4 table is the outer product of these per-axis weights: corners
+        // (1-x)(1-y) .. xy, edges (1-x), x, (1-y), y, and 1 in the middle four.
+        const float ax[4] = {1 - x, 1, 1, x};
+        const float ay[4] = {1 - y, 1, 1, y};
+        float table[4][4];
+        for (int j = 0; j < 4; ++j) {
+            for (int i = 0; i < 4; ++i) table[j][i] = ax[i] * ay[j];
+        }
         ASSERT_EQ(tr.weights.size, ivec2(4, 4)) << methodInfo(method).name;
         EXPECT_EQ(tr.weights.origin, tr.pos.base - ivec2(1));
         for (int j = 0; j < 4; ++j) {

@@ -1,11 +1,15 @@
 #include "analysis/bench_report.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
 #include <cstdio>
 #include <set>
 
 #include "analysis/pareto.h"
 #include "kernel/methods.h"
+#include "scene/input_error.h"
 
 namespace pcf {
 
@@ -31,6 +35,62 @@ std::string benchCsv(std::span<const BenchRow> rows) {
                r.timer + '\n';
     }
     return out;
+}
+
+std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& source) {
+    std::vector<BenchRow> rows;
+    int line = 0;
+    size_t pos = 0;
+    while (pos < text.size()) {
+        size_t end = text.find('\n', pos);
+        if (end == std::string_view::npos) end = text.size();
+        std::string row(text.substr(pos, end - pos));
+        pos = end + 1;
+        ++line;
+        if (!row.empty() && row.back() == '\r') row.pop_back();
+        if (line == 1) {
+            if (row != BENCH_CSV_HEADER) {
+                throw InputError(source, line, "not a bench.csv header: expected '" +
+                                                   std::string(BENCH_CSV_HEADER) + "'");
+            }
+            continue;
+        }
+        if (row.empty()) continue;
+        std::vector<std::string> fields;
+        size_t start = 0;
+        for (size_t comma; (comma = row.find(',', start)) != std::string::npos; start = comma + 1) {
+            fields.push_back(row.substr(start, comma - start));
+        }
+        fields.push_back(row.substr(start));
+        if (fields.size() != 11) {
+            throw InputError(source, line, "expected 11 fields, got " +
+                                               std::to_string(fields.size()));
+        }
+        auto number = [&](size_t k) {
+            char* endPtr = nullptr;
+            double v = std::strtod(fields[k].c_str(), &endPtr);
+            if (fields[k].empty() || *endPtr != '\0' || !std::isfinite(v)) {
+                throw InputError(source, line, "field " + std::to_string(k + 1) + " '" +
+                                                   fields[k] + "' is not a number");
+            }
+            return v;
+        };
+        std::optional<int> method = methodFromName(fields[0]);
+        if (!method) throw InputError(source, line, "unknown method '" + fields[0] + "'");
+        BenchRow r;
+        r.point = {*method, static_cast<int>(number(1)), static_cast<int>(number(2))};
+        r.gpuMs = number(3);
+        r.cpuNsPerPixel = number(4);
+        r.texelReads = static_cast<int>(number(5));
+        r.error.rmse = number(6);
+        r.error.maxErr = number(7);
+        r.error.edgeRmse = number(8);
+        r.error.edgeMaxErr = number(9);
+        r.timer = fields[10];
+        rows.push_back(r);
+    }
+    if (line == 0) throw InputError(source, 1, "empty file: expected a bench.csv header");
+    return rows;
 }
 
 std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows) {

@@ -20,6 +20,11 @@ inline constexpr std::string_view BENCH_CSV_HEADER =
 // back equal), timer as gpu_timer.h names it. Every line ends with '\n'.
 std::string benchCsv(std::span<const BenchRow> rows);
 
+// Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv). Throws
+// pcf::InputError "SOURCE:LINE: problem" on a wrong header, a wrong field count, an unknown
+// method or a field that is not a finite number.
+std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& source);
+
 // What the table's sentence says about where and how the numbers were taken.
 struct BenchSetup {
     std::string sceneName;

@@ -165,9 +165,13 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     // x ticks at m x 10^k: m = 1, 2, 5 (denser on a narrow axis, only the 1s labelled on a
     // wide one), so that a few labels always show.
     double span = L.xLogHi - L.xLogLo;
-    std::vector<double> mantissas = span < 0.7   ? std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9}
-                                    : span < 1.5 ? std::vector<double>{1, 2, 3, 5}
-                                                 : std::vector<double>{1, 2, 5};
+    // Narrow ranges label every integer mantissa 1..9, wider ones fewer.
+    std::vector<double> mantissas{1, 2, 5};
+    if (span < 1.5) mantissas = {1, 2, 3, 5};
+    if (span < 0.7) {
+        mantissas.clear();
+        for (int m = 1; m <= 9; ++m) mantissas.push_back(m);
+    }
     bool wide = span > 3.0;
     for (int k = static_cast<int>(std::floor(L.xLogLo)); k <= static_cast<int>(std::ceil(L.xLogHi));
          ++k) {

@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
+#include "analysis/bench_report.h"
+#include "analysis/speed_chart.h"
 #include "app/cli_util.h"
 #include "kernel/methods.h"
 #include "lesson/lesson_text.h"
+#include "scene/input_error.h"
 
 namespace pcf {
 
@@ -174,6 +178,32 @@ void Session::setHelp(bool on) { mHelp = on; }
 
 void Session::setFrameTimeMs(double ms) { mFrameTimeMs = ms; }
 
+void Session::blitChart(const std::string& csvPath) {
+    glm::ivec2 size(mLayout.scene.size());
+    std::string key = csvPath + "@" + std::to_string(size.x) + "x" + std::to_string(size.y);
+    if (key != mChartKey) {
+        std::ifstream file(csvPath, std::ios::binary);
+        std::stringstream text;
+        text << file.rdbuf();
+        if (!file) throw InputError(csvPath, 0, "cannot open file");
+        std::vector<BenchRow> rows = parseBenchCsv(text.str(), csvPath);
+        SpeedChartText labels;
+        labels.title = "Speed against accuracy";
+        labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
+                          std::filesystem::path(csvPath).filename().string();
+        std::vector<uint8_t> rgba = drawSpeedChart(rows, size, labels);
+        mChart = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
+        glTextureSubImage2D(mChart.colors[0].id(), 0, 0, 0, size.x, size.y, GL_RGBA,
+                            GL_UNSIGNED_BYTE, rgba.data());
+        mChartKey = key;
+    }
+    // Texture row 0 holds the chart's top row; swapped destination rows put it on top.
+    int frameH = mLayout.frameSize.y;
+    glNamedFramebufferReadBuffer(mChart.framebuffer.id(), GL_COLOR_ATTACHMENT0);
+    glBlitNamedFramebuffer(mChart.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, size.x, size.y,
+                           0, frameH, size.x, frameH - size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
 void Session::renderScene() {
     RenderSettings r = renderSettingsFor(mSettings, glm::ivec2(mLayout.scene.size()));
     bool mapChanged = !mRendered || mRendered->mapSize != r.mapSize ||
@@ -233,9 +263,15 @@ void Session::compose() {
     // The scene goes top-left. GL rows count from the bottom, so its top edge is frame height.
     glm::ivec2 frame = mLayout.frameSize;
     glm::ivec2 scene(mLayout.scene.size());
-    glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, 0,
-                           frame.y - scene.y, scene.x, frame.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    const std::string& chart = mLesson.steps[static_cast<size_t>(mStep)].chart;
+    if (chart.empty()) {
+        glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
+        glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, 0,
+                               frame.y - scene.y, scene.x, frame.y, GL_COLOR_BUFFER_BIT,
+                               GL_NEAREST);
+    } else {
+        blitChart(chart);
+    }
 
     InspectorModel m;
     m.title = mLesson.title;
@@ -252,6 +288,7 @@ void Session::compose() {
     m.status = statusLine(mSettings, scene, mFrameTimeMs);
     m.presentation = mPresentation;
     m.help = mHelp;
+    m.showScene = chart.empty();
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     mCanvas.begin(frame);
     drawInspector(mCanvas, mLayout, m);

@@ -77,6 +77,8 @@ private:
     void renderScene();
     void traceAtPixel();
     void blitThumbnail();
+    // A step with a chart shows it where the scene goes (lesson.h: LessonStep::chart).
+    void blitChart(const std::string& csvPath);
 
     Lesson mLesson;
     int mStep = 0;
@@ -99,6 +101,8 @@ private:
     Canvas mCanvas;
     OffscreenTarget mFrame;
     OffscreenTarget mThumbnail;  // the map's thumbnail, rows top-down, blitted into the frame
+    OffscreenTarget mChart;      // the step's chart, rows top-down
+    std::string mChartKey;       // path and size the chart was drawn for
     bool mThumbnailDirty = true;
 };
 

@@ -116,12 +116,22 @@ class LessonParser {
         for (size_t i = 0; i < steps->size(); ++i) {
             const toml::table& table = *steps->get(i)->as_table();
             std::string what = "step " + std::to_string(i + 1);
-            checkKeys(table, what, {"title", "text"});
+            checkKeys(table, what, {"title", "text", "chart"});
             applySettings(table, what, state, lines);
             LessonStep step;
             step.line = lineOf(table);
             step.title = requireText(table, "title", what, table);
             step.text = requireText(table, "text", what, table);
+            if (table.get("chart")) {
+                std::string chart = requireText(table, "chart", what, table);
+                std::filesystem::path p = std::filesystem::path(mSource).parent_path() / chart;
+                std::error_code ec;
+                if (!std::filesystem::is_regular_file(p, ec)) {
+                    fail(*table.get("chart"), what + " chart '" + chart + "' not found (looked at " +
+                                                  p.string() + ")");
+                }
+                step.chart = p.string();
+            }
             step.settings = state;
             checkState(table, what, state, lines);
             checkText(*table.get("text"), what, step);

@@ -100,6 +100,9 @@ struct LessonStep {
     std::string text;         // with {placeholders}; fill with fillText (lesson_text.h)
     int line = 0;             // the line of the step's [[step]] header in the lesson file
     LessonSettings settings;  // the state at this step: [settings], then every step up to here
+    // `chart = "figures/bench.csv"`: this step shows the speed/accuracy chart drawn from that
+    // bench.csv (a path relative to the lesson file) where the scene would be. Not inherited.
+    std::string chart;
 };
 
 struct Lesson {

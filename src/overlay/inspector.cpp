@@ -481,7 +481,7 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
 }
 
 void drawInspector(Canvas& c, const InspectorLayout& l, const InspectorModel& m) {
-    drawSceneOverlay(c, l, m);
+    if (m.showScene) drawSceneOverlay(c, l, m);
     drawStepsPanel(c, l, m);
     drawInspectorPanel(c, l, m);
     float fs = fontSize(l, 14, m.presentation);

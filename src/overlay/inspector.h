@@ -50,6 +50,7 @@ struct InspectorModel {
     std::string status;                   // method, kernel, bias, map, frame time
     bool presentation = false;            // large type, thick lines, high contrast
     bool help = false;                    // the key list over everything
+    bool showScene = true;                // false: a chart fills the scene's place (no overlay)
 };
 
 // A frame is drawn in layers: the panels' backgrounds (clearInspectorPanels) and the scene's

@@ -1,0 +1,75 @@
+// bench.csv read back: what a lesson's chart is drawn from.
+#include "analysis/bench_report.h"
+
+#include <gtest/gtest.h>
+
+#include "kernel/methods.h"
+#include "scene/input_error.h"
+
+namespace pcf {
+namespace {
+
+std::vector<BenchRow> sampleRows() {
+    BenchRow a;
+    a.point = {PCF_GATHER, 3, 1024};
+    a.gpuMs = 16.8375;
+    a.cpuNsPerPixel = 70.41;
+    a.texelReads = 16;
+    a.error = {0.0225, 1.0, 0.2102, 0.99, 0, 0};
+    a.timer = "glFinish+steady_clock";
+    BenchRow b = a;
+    b.point = {PCF_NEAREST, 0, 256};
+    b.gpuMs = 11.5;
+    b.texelReads = 1;
+    return {a, b};
+}
+
+TEST(BenchReport, CsvReadsBackWhatWasWritten) {
+    std::vector<BenchRow> rows = sampleRows();
+    std::vector<BenchRow> back = parseBenchCsv(benchCsv(rows), "bench.csv");
+    ASSERT_EQ(back.size(), 2u);
+    for (size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(back[k].point, rows[k].point);
+        EXPECT_NEAR(back[k].gpuMs, rows[k].gpuMs, 1e-4);
+        EXPECT_NEAR(back[k].cpuNsPerPixel, rows[k].cpuNsPerPixel, 1e-2);
+        EXPECT_EQ(back[k].texelReads, rows[k].texelReads);
+        EXPECT_DOUBLE_EQ(back[k].error.edgeRmse, rows[k].error.edgeRmse);
+        EXPECT_EQ(back[k].timer, rows[k].timer);
+    }
+}
+
+TEST(BenchReport, TheShippedCsvParses) {
+    std::string path = PCFSCOPE_SOURCE_DIR "/lessons/figures/bench.csv";
+    FILE* f = std::fopen(path.c_str(), "rb");
+    ASSERT_NE(f, nullptr);
+    std::string text;
+    char buf[4096];
+    for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
+    std::fclose(f);
+    std::vector<BenchRow> rows = parseBenchCsv(text, path);
+    EXPECT_GE(rows.size(), 60u);  // every method, N = 3, 5, 7, four map sizes
+}
+
+TEST(BenchReport, BadCsvNamesTheLine) {
+    std::string header = std::string(BENCH_CSV_HEADER) + "\n";
+    auto message = [](const std::string& text) {
+        try {
+            parseBenchCsv(text, "b.csv");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message("method,kernel\n"), "b.csv:1: not a bench.csv header: expected '" +
+                                               std::string(BENCH_CSV_HEADER) + "'");
+    EXPECT_EQ(message(header + "nearest,0,256\n"), "b.csv:2: expected 11 fields, got 3");
+    EXPECT_EQ(message(header + "blur,0,256,1,1,1,0,0,0,0,t\n"), "b.csv:2: unknown method 'blur'");
+    EXPECT_EQ(message(header + "nearest,0,256,x,1,1,0,0,0,0,t\n"),
+              "b.csv:2: field 4 'x' is not a number");
+    EXPECT_EQ(message(header + "nearest,0,256,nan,1,1,0,0,0,0,t\n"),
+              "b.csv:2: field 4 'nan' is not a number");
+    EXPECT_EQ(message(""), "b.csv:1: empty file: expected a bench.csv header");
+}
+
+}  // namespace
+}  // namespace pcf
