@@ -7,18 +7,10 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+#include "glm_expect.h"
 
 namespace pcf {
 namespace {
-
-#define EXPECT_VEC3_NEAR(a, b, tol)     \
-    do {                                \
-        glm::vec3 va_ = (a);            \
-        glm::vec3 vb_ = (b);            \
-        EXPECT_NEAR(va_.x, vb_.x, tol); \
-        EXPECT_NEAR(va_.y, vb_.y, tol); \
-        EXPECT_NEAR(va_.z, vb_.z, tol); \
-    } while (0)
 
 // Line numbers below are counted from the first line of each string.
 constexpr const char* GOOD = R"([camera]

@@ -10,18 +10,10 @@
 #include "scene/light.h"
 #include "scene/raycast.h"
 #include "scene/scene.h"
+#include "glm_expect.h"
 
 namespace pcf {
 namespace {
-
-#define EXPECT_VEC3_NEAR(a, b, tol)     \
-    do {                                \
-        glm::vec3 va_ = (a);            \
-        glm::vec3 vb_ = (b);            \
-        EXPECT_NEAR(va_.x, vb_.x, tol); \
-        EXPECT_NEAR(va_.y, vb_.y, tol); \
-        EXPECT_NEAR(va_.z, vb_.z, tol); \
-    } while (0)
 
 Scene testScene(glm::vec3 lightDirection) {
     Scene scene;

@@ -17,25 +17,6 @@ namespace pcf {
 
 namespace {
 
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (c == '\n') {
-            out += "\\n";
-        } else if (static_cast<unsigned char>(c) < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
-            out += buf;
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
-}
-
 std::string statusLine(const LessonSettings& s, glm::ivec2 sceneSize, double frameTimeMs) {
     const MethodInfo& info = methodInfo(s.method);
     // A stream: GCC 12 warns falsely (-Wrestrict) on chains of string operator+.
@@ -308,25 +289,25 @@ std::vector<uint8_t> Session::readFrame() const {
 
 std::string Session::stepJson() const {
     const LessonSettings& s = mSettings;
-    std::string out = "{\"lesson\":" + jsonString(mLesson.name) +
-                      ",\"title\":" + jsonString(mLesson.title) +
+    std::string out = "{\"lesson\":" + jsonQuote(mLesson.name) +
+                      ",\"title\":" + jsonQuote(mLesson.title) +
                       ",\"step\":" + std::to_string(mStep + 1) +
                       ",\"step_title\":" +
-                      jsonString(mLesson.steps.empty() ? "" : mLesson.steps[mStep].title) +
-                      ",\"text\":" + jsonString(stepText()) +
+                      jsonQuote(mLesson.steps.empty() ? "" : mLesson.steps[mStep].title) +
+                      ",\"text\":" + jsonQuote(stepText()) +
                       ",\"pixel\":[" + std::to_string(mPixel.x) + "," + std::to_string(mPixel.y) +
                       "],\"scene_size\":[" + std::to_string(static_cast<int>(mLayout.scene.w)) +
                       "," + std::to_string(static_cast<int>(mLayout.scene.h)) + "]" +
                       ",\"settings\":{\"method\":" +
-                      jsonString(std::string(methodInfo(s.method).name)) +
+                      jsonQuote(std::string(methodInfo(s.method).name)) +
                       ",\"kernel\":" + std::to_string(s.kernel) +
                       ",\"radius\":" + formatNumber(s.radius) +
                       ",\"rotate\":" + (s.rotate ? "true" : "false") +
-                      ",\"bias\":" + jsonString(s.bias) +
+                      ",\"bias\":" + jsonQuote(s.bias) +
                       ",\"constant_bias\":" + formatNumber(s.constantBias) +
-                      ",\"cull\":" + jsonString(s.cull) +
+                      ",\"cull\":" + jsonQuote(s.cull) +
                       ",\"map_size\":" + std::to_string(s.mapSize) +
-                      ",\"depth_format\":" + jsonString(s.depthFormat) + "}" +
+                      ",\"depth_format\":" + jsonQuote(s.depthFormat) + "}" +
                       ",\"trace\":" + (mTrace ? traceToJson(*mTrace) : std::string("null")) + "}";
     return out;
 }

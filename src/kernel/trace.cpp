@@ -396,7 +396,9 @@ std::string jnum(float v) {
 }
 std::string jvec(vec2 v) { return "[" + jnum(v.x) + "," + jnum(v.y) + "]"; }
 std::string jvec(ivec2 v) { return "[" + std::to_string(v.x) + "," + std::to_string(v.y) + "]"; }
-std::string jstr(const std::string& s) {
+}  // namespace
+
+std::string jsonQuote(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {
         switch (c) {
@@ -416,6 +418,10 @@ std::string jstr(const std::string& s) {
     }
     return out + "\"";
 }
+
+namespace {
+
+std::string jstr(const std::string& s) { return jsonQuote(s); }
 
 const char* fetchKindName(int kind) {
     switch (kind) {

@@ -54,6 +54,9 @@ std::string traceToJson(const Trace& trace);
 // The step-through as a student reads it, with the texel neighbourhood as a table.
 std::string traceToText(const Trace& trace);
 
+// s as a JSON string literal, quotes and escapes included.
+std::string jsonQuote(const std::string& s);
+
 // A number as the steps print it: up to 4 decimals, trailing zeros trimmed ("0.8", "0.0711").
 std::string formatNumber(float value);
 
