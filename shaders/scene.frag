@@ -1,8 +1,8 @@
 // scene.frag: shades the receivers with the chosen PCF method. The PCF math is not here: it is
 // shared/pcf_kernel.h, the same source the CPU kernel compiles (the loader puts the prelude and
 // the kernel before this file). PCF_METHOD and PCF_KERNEL arrive as defines, so the driver
-// folds the method dispatch and unrolls the kernel loops. PCF_ALL_TARGETS (1 unless the frame
-// is only being timed) adds the light-space and visibility outputs.
+// folds the method dispatch and unrolls the kernel loops. PCF_ALL_TARGETS adds outputs: 0 colour
+// only (timing), 1 + light-space and visibility (the inspector), 2 + world position (tests, --raw).
 // see: src/render/scene_renderer.cpp (uniforms, targets), src/kernel/pcf.h (CPU side)
 in vec3 vPosWs;
 in vec3 vNormalWs;
@@ -23,6 +23,9 @@ layout(location = 0) out vec4 oColour;
 #if PCF_ALL_TARGETS
 layout(location = 1) out vec4 oLightSpace;  // u, v, ref, 1 on receivers (cleared to 0)
 layout(location = 2) out float oVisibility; // what pcfFilter returned (1 off receivers)
+#endif
+#if PCF_ALL_TARGETS >= 2
+layout(location = 3) out vec4 oPosWs;       // world position, w = 1 where drawn
 #endif
 
 const float AMBIENT = 0.25f;
@@ -56,5 +59,8 @@ void main() {
 #if PCF_ALL_TARGETS
     oLightSpace = uReceives != 0 ? vec4(u, v, ref, 1.0f) : vec4(0.0f);
     oVisibility = visibility;
+#endif
+#if PCF_ALL_TARGETS >= 2
+    oPosWs = vec4(vPosWs, 1.0f);
 #endif
 }

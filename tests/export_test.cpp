@@ -156,6 +156,30 @@ TEST_F(ExportTest, ChartStepsShowTheChartInTheScenesPlace) {
     EXPECT_EQ(j["trace"].kind, jsonlite::Value::OBJECT);
 }
 
+// Every lesson that ships exports headless, a frame and a trace per step, each step's pixel on a
+// receiver (its numbers come from a trace, not from nowhere).
+TEST_F(ExportTest, EveryLessonExportsHeadless) {
+    int lessons = 0;
+    for (const auto& entry : fs::directory_iterator(PCFSCOPE_SOURCE_DIR "/lessons")) {
+        if (entry.path().extension() != ".toml") continue;
+        ++lessons;
+        Lesson lesson = parseLessonFile(entry.path().string());
+        std::string dir = path("all/" + lesson.name);
+        auto r = runPcfscope("export " + entry.path().string() + " -o " + dir +
+                                 " --size 1280x720",
+                             "env -u DISPLAY -u WAYLAND_DISPLAY");
+        ASSERT_EQ(r.exitCode, 0) << lesson.name << ": " << r.err;
+        for (size_t s = 1; s <= lesson.steps.size(); ++s) {
+            std::string stem = dir + "/" + lesson.name + "-" + std::to_string(s);
+            EXPECT_EQ(readImageSize(stem + ".png").width, 1280) << stem;
+            jsonlite::Value j = jsonlite::parse(readFile(stem + ".json"));
+            EXPECT_EQ(j["trace"].kind, jsonlite::Value::OBJECT) << stem << ": no receiver";
+            EXPECT_EQ(j["text"].string.find('{'), std::string::npos) << stem << ": unfilled";
+        }
+    }
+    EXPECT_GE(lessons, 10);
+}
+
 TEST_F(ExportTest, SameBytesOnEveryRun) {
     auto a = runPcfscope("export " + path("test.toml") + " -o " + path("a") + " --size 800x450");
     auto b = runPcfscope("export " + path("test.toml") + " -o " + path("b") + " --size 800x450");

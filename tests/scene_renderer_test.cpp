@@ -103,6 +103,52 @@ TEST_F(SceneRendererTest, EveryPresetShadowsWhereTheRayCastSays) {
     }
 }
 
+// Slope-scaled bias (glPolygonOffset in the shadow pass) cures the acne of a grazing light that
+// no bias at all leaves on the lit ground.
+TEST_F(SceneRendererTest, PolygonOffsetCuresGrazingAcne) {
+    Scene scene = *presetScene("grazing");
+    SceneRenderer renderer(scene);
+    RenderSettings s;
+    s.frameSize = {480, 270};
+    s.mapSize = 512;
+    s.bias = BiasMode::None;
+    renderer.render(s);
+    ShadowAgreement acne = compareWithRayCast(scene, renderer, 2);
+    s.polygonOffset = {2.0f, 4.0f};
+    renderer.render(s);
+    ShadowAgreement cured = compareWithRayCast(scene, renderer, 2);
+    EXPECT_GT(acne.falseShadow, acne.receivers / 20) << "no bias should show acne";
+    EXPECT_LT(cured.falseShadow, acne.falseShadow / 10);
+    EXPECT_LE(cured.missed, cured.shadowed / 50);  // the real shadow is still there
+}
+
+// The position target holds each pixel's world point: projected back with the camera, it lands
+// in that pixel.
+TEST_F(SceneRendererTest, PositionsProjectBackToTheirPixels) {
+    Scene scene = *presetScene("sphere-over-plane");
+    SceneRenderer renderer(scene);
+    RenderSettings s;
+    s.frameSize = {320, 180};
+    s.writePositions = true;
+    renderer.render(s);
+    std::vector<float> pos = renderer.readPositions();
+    glm::mat4 clip = renderer.clipFromWorld();
+    int drawn = 0;
+    for (int y = 0; y < 180; y += 7) {
+        for (int x = 0; x < 320; x += 7) {
+            size_t k = (static_cast<size_t>(y) * 320 + x) * 4;
+            if (pos[k + 3] != 1.0f) continue;
+            ++drawn;
+            glm::vec4 c = clip * glm::vec4(pos[k], pos[k + 1], pos[k + 2], 1.0f);
+            glm::vec2 ndc = glm::vec2(c) / c.w;
+            glm::vec2 px((ndc.x * 0.5f + 0.5f) * 320.0f, (0.5f - ndc.y * 0.5f) * 180.0f);
+            EXPECT_NEAR(px.x, x + 0.5f, 0.01f);
+            EXPECT_NEAR(px.y, y + 0.5f, 0.01f);
+        }
+    }
+    EXPECT_GT(drawn, 500);
+}
+
 // Each depth format renders the same shadow (to the precision of the format).
 TEST_F(SceneRendererTest, DepthFormatsAgree) {
     Scene scene = *presetScene("box-on-plane");

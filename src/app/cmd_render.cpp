@@ -31,7 +31,7 @@ int runRender(const RenderCommandOptions& o) {
     Scene scene = o.render.loadScene();
     if (o.out.empty() && o.rawDir.empty()) throw UsageError("render needs -o FILE.png or --raw DIR");
     if (!o.out.empty()) requireWritable(o.out, o.force);
-    std::string rawShadow, rawLightSpace, rawVisibility;
+    std::string rawShadow, rawLightSpace, rawVisibility, rawPositions;
     if (!o.rawDir.empty()) {
         std::error_code ec;
         if (std::filesystem::exists(o.rawDir, ec) && !std::filesystem::is_directory(o.rawDir, ec)) {
@@ -40,7 +40,9 @@ int runRender(const RenderCommandOptions& o) {
         rawShadow = (std::filesystem::path(o.rawDir) / "shadowmap.exr").string();
         rawLightSpace = (std::filesystem::path(o.rawDir) / "lightspace.exr").string();
         rawVisibility = (std::filesystem::path(o.rawDir) / "visibility.exr").string();
-        for (const std::string& p : {rawShadow, rawLightSpace, rawVisibility}) {
+        rawPositions = (std::filesystem::path(o.rawDir) / "positions.exr").string();
+        settings.writePositions = true;
+        for (const std::string& p : {rawShadow, rawLightSpace, rawVisibility, rawPositions}) {
             requireWritable(p, o.force);
         }
     }
@@ -74,6 +76,8 @@ int runRender(const RenderCommandOptions& o) {
         writeExr(rawLightSpace, size.x, size.y, 4, ls, {"R", "G", "B", "A"});
         std::vector<float> vis = renderer.readVisibility();
         writeExr(rawVisibility, size.x, size.y, 1, vis, {"Y"});
+        std::vector<float> pos = renderer.readPositions();
+        writeExr(rawPositions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
     }
     return 0;
 }
@@ -86,8 +90,8 @@ Command addRenderCommand(CLI::App& app) {
     o->render.addTo(sub, "");
     sub->add_option("-o,--out", o->out, "the frame as PNG");
     sub->add_option("--raw", o->rawDir,
-                    "write shadowmap.exr, lightspace.exr (u, v, ref, receiver) and "
-                    "visibility.exr into DIR");
+                    "write shadowmap.exr, lightspace.exr (u, v, ref, receiver), "
+                    "visibility.exr and positions.exr (world xyz, drawn) into DIR");
     sub->add_flag("-f,--force", o->force, "overwrite existing output files");
     sub->add_option("--time", o->timeRepeats,
                     "time the camera pass over this many draws and print the median");

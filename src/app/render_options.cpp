@@ -29,6 +29,8 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     sub->add_option("--constant-bias", constantBias,
                     "constant bias in light depth units (ref = z - bias)");
     sub->add_option("--cull", cull, "faces culled in the shadow pass: back, front, none");
+    sub->add_option("--polygon-offset", polygonOffset,
+                    "slope-scaled bias in the shadow pass: FACTOR,UNITS for glPolygonOffset");
     sub->add_option("--map-size", mapSize, "shadow map size in texels (4..4096)");
     sub->add_option("--depth-format", depthFormat, "shadow map depth format: 16, 24, 32f");
     sub->add_option("--size", size, "frame size WxH");
@@ -75,6 +77,11 @@ RenderSettings RenderOptions::settings() const {
         std::optional<CullMode> c = cullModeFromName(cull);
         if (!c) throw UsageError("unknown --cull '" + cull + "' (known: back, front, none)");
         s.shadowCull = *c;
+    }
+    if (use("--polygon-offset") && !polygonOffset.empty()) {
+        s.polygonOffset = parseVec2("--polygon-offset", polygonOffset);
+        requireRange("--polygon-offset factor", s.polygonOffset.x, -64.0f, 64.0f);
+        requireRange("--polygon-offset units", s.polygonOffset.y, -1.0e6f, 1.0e6f);
     }
     if (use("--map-size")) {
         if (mapSize < MIN_MAP_SIZE || mapSize > MAX_MAP_SIZE) {

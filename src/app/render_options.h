@@ -23,6 +23,7 @@ struct RenderOptions {
     std::string bias = "constant";
     float constantBias = 0.002f;
     std::string cull = "back";
+    std::string polygonOffset;  // "F,U": glPolygonOffset in the shadow pass
     int mapSize = 1024;
     std::string depthFormat = "32f";
     std::string size = "1280x720";

@@ -189,7 +189,8 @@ void Session::renderScene() {
     RenderSettings r = renderSettingsFor(mSettings, glm::ivec2(mLayout.scene.size()));
     bool mapChanged = !mRendered || mRendered->mapSize != r.mapSize ||
                       mRendered->depthFormat != r.depthFormat ||
-                      mRendered->shadowCull != r.shadowCull;
+                      mRendered->shadowCull != r.shadowCull ||
+                      mRendered->polygonOffset != r.polygonOffset;
     if (mapChanged) mRenderer->renderShadowPass(r);
     mRenderer->renderCameraPass(r);
     if (mapChanged) {

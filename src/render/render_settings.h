@@ -30,6 +30,10 @@ struct RenderSettings {
     BiasMode bias = BiasMode::Constant;
     float constantBias = 0.002f;  // light depth units: ref = z - constantBias
     CullMode shadowCull = CullMode::Back;
+    // Slope-scaled bias in the shadow pass: glPolygonOffset(factor, units); 0, 0 = off.
+    glm::vec2 polygonOffset{0.0f, 0.0f};
+    // Also fill the world-position target (tests, --raw); the viewer does without.
+    bool writePositions = false;
     glm::ivec2 frameSize{1280, 720};
 
     PcfParams pcfParams() const;

@@ -25,6 +25,7 @@ SceneRenderer::SceneRenderer(const Scene& scene)
       mShadowClipFromWorld(pcf::shadowClipFromWorld(scene)),
       mScenePrograms("scene.vert", "scene.frag", "#define PCF_ALL_TARGETS 1\n"),
       mTimingPrograms("scene.vert", "scene.frag", "#define PCF_ALL_TARGETS 0\n"),
+      mPositionPrograms("scene.vert", "scene.frag", "#define PCF_ALL_TARGETS 2\n"),
       mSamplers(createPcfSamplers()) {
     mDepthProgram = buildProgram({
         ShaderStage{GL_VERTEX_SHADER, {"depth.vert"}, "", {}},
@@ -66,10 +67,12 @@ void SceneRenderer::ensureTargets(const RenderSettings& settings) {
                                         glDepthFormat(settings.depthFormat));
         mShadowFormat = settings.depthFormat;
     }
+    size_t attachments = settings.writePositions ? 4 : 3;
     if (mFrame.width != settings.frameSize.x || mFrame.height != settings.frameSize.y ||
-        !mFrame.framebuffer) {
-        mFrame = createOffscreenTarget(settings.frameSize.x, settings.frameSize.y,
-                                       {GL_RGBA8, GL_RGBA32F, GL_R32F},
+        !mFrame.framebuffer || mFrame.colors.size() != attachments) {
+        std::vector<GLenum> formats = {GL_RGBA8, GL_RGBA32F, GL_R32F};
+        if (settings.writePositions) formats.push_back(GL_RGBA32F);
+        mFrame = createOffscreenTarget(settings.frameSize.x, settings.frameSize.y, formats,
                                        GL_DEPTH_COMPONENT24);
     }
 }
@@ -104,18 +107,26 @@ void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
         glEnable(GL_CULL_FACE);
         glCullFace(settings.shadowCull == CullMode::Front ? GL_FRONT : GL_BACK);
     }
+    // Slope-scaled bias: the rasterizer pushes each depth back by factor * its slope plus units
+    // of the format's smallest step (glPolygonOffset), before the depth is stored.
+    bool offset = settings.polygonOffset != glm::vec2(0.0f);
+    if (offset) {
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(settings.polygonOffset.x, settings.polygonOffset.y);
+    }
     GLuint program = mDepthProgram.id();
     glUseProgram(program);
     glProgramUniformMatrix4fv(program, uniform(program, "uShadowClipFromWorld"), 1, GL_FALSE,
                               &mShadowClipFromWorld[0][0]);
     drawObjects(program, true, false);
+    if (offset) glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 void SceneRenderer::renderCameraPass(const RenderSettings& settings) {
     ensureTargets(settings);
-    drawCameraPass(settings, mScenePrograms, mFrame);
+    drawCameraPass(settings, settings.writePositions ? mPositionPrograms : mScenePrograms, mFrame);
 }
 
 void SceneRenderer::drawCameraPass(const RenderSettings& settings, PcfProgramCache& programs,
@@ -126,10 +137,11 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, PcfProgramCac
     const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     const GLfloat one[4] = {1.0f, 0.0f, 0.0f, 0.0f};
     glClearNamedFramebufferfv(fbo, GL_COLOR, 0, &BACKGROUND.x);
-    if (target.colors.size() == 3) {
+    if (target.colors.size() >= 3) {
         glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
         glClearNamedFramebufferfv(fbo, GL_COLOR, 2, one);
     }
+    if (target.colors.size() >= 4) glClearNamedFramebufferfv(fbo, GL_COLOR, 3, zero);
     const GLfloat farDepth = 1.0f;
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
     glEnable(GL_DEPTH_TEST);
@@ -191,6 +203,14 @@ std::vector<float> SceneRenderer::readLightSpace() const {
 std::vector<float> SceneRenderer::readVisibility() const {
     return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT2, mFrame.width,
                            mFrame.height, 1);
+}
+
+std::vector<float> SceneRenderer::readPositions() const {
+    if (mFrame.colors.size() < 4) {
+        throw std::logic_error("readPositions: render with RenderSettings::writePositions");
+    }
+    return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT3, mFrame.width,
+                           mFrame.height, 4);
 }
 
 std::vector<float> SceneRenderer::readLightSpaceRegion(glm::ivec2 topLeft, glm::ivec2 size) const {

@@ -1,9 +1,10 @@
 // scene_renderer.h: the shadow-mapped scene on the GPU. Two passes: the light's depth pass into
 // the shadow map, then the camera pass that shades the receivers with the chosen PCF method
-// (shaders/scene.frag, which includes the shared kernel) into three targets:
+// (shaders/scene.frag, which includes the shared kernel) into these targets:
 //   colour      RGBA8    what the class sees
 //   lightspace  RGBA32F  u, v, ref per pixel as the shader filtered them; alpha 1 on receivers
 //   visibility  R32F     what pcfFilter returned (1 off receivers)
+//   position    RGBA32F  world position, alpha 1 where drawn (RenderSettings::writePositions)
 // Readbacks are rows TOP-DOWN (first row = top of the frame) except the shadow map, which keeps
 // GL row order (ShadowMap's convention).
 #pragma once
@@ -40,6 +41,8 @@ public:
     std::vector<uint8_t> readColour() const;     // RGBA8, top-down
     std::vector<float> readLightSpace() const;   // 4 floats per pixel, top-down
     std::vector<float> readVisibility() const;   // 1 float per pixel, top-down
+    // 4 floats per pixel, top-down; needs a frame rendered with writePositions.
+    std::vector<float> readPositions() const;
     // The light-space target's pixels x..x+w-1, y..y+h-1 (top-left origin), clipped to the
     // frame: 4 floats per pixel, top-down, w * h pixels (outside the frame: zeros).
     std::vector<float> readLightSpaceRegion(glm::ivec2 topLeft, glm::ivec2 size) const;
@@ -71,6 +74,7 @@ private:
     GlProgram mDepthProgram;
     PcfProgramCache mScenePrograms;   // all four targets
     PcfProgramCache mTimingPrograms;  // colour only
+    PcfProgramCache mPositionPrograms;  // all targets and the world position
     PcfSamplers mSamplers;
     OffscreenTarget mShadow;
     DepthFormat mShadowFormat = DepthFormat::D32F;
