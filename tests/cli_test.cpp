@@ -133,6 +133,11 @@ TEST_F(CliTest, BadInputExitsTwoWithOneLine) {
         {"trace --map " + path("good.exr"), "needs --uv"},
         {"trace --uv 0.5,0.5 --z 0.5", "exactly one of --map"},
         {"trace --example --kernel x", "kernel"},
+        {"trace --example --z nan", "--z nan is out of range"},
+        {"trace --example --z 1.5", "--z 1.5 is out of range"},
+        // Options the method does not use are still checked: a typo should not pass unseen.
+        {"trace --example --method poisson --kernel 99", "--kernel 99 is out of range"},
+        {"trace --example --method nearest --radius -5", "--radius -5 is out of range"},
         {"frobnicate", "frobnicate"},
     };
     for (const Case& c : cases) {

@@ -218,6 +218,28 @@ TEST_F(ExportTest, RefusesToOverwriteAndBadInputExitsTwo) {
     EXPECT_NE(unknown.err.find("unknown lesson"), std::string::npos) << unknown.err;
 }
 
+// A chart's bench.csv is read when the lesson is loaded, so a broken one is reported at the
+// lesson's line (and the CSV's) before any frame is made, by export and by view alike.
+TEST_F(ExportTest, BrokenChartIsReportedAtItsLessonLine) {
+    std::ofstream(mDir / "chart.toml") << "title = \"x\"\nscene = \"box-on-plane\"\n[[step]]\n"
+                                          "title = \"a\"\ntext = \"b\"\nchart = \"bad.csv\"\n";
+    std::ofstream(mDir / "bad.csv")
+        << "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
+           "edge_max_err,timer\npcf-gather,3,1024,fast\n";
+    // view checks the lesson before it opens a window (so no real display is needed here).
+    std::vector<testutil::CommandResult> runs = {
+        runPcfscope("export " + path("chart.toml") + " -o " + path("c")),
+        runPcfscope("view " + path("chart.toml"), "DISPLAY=:pcfscope-none"),
+    };
+    for (const testutil::CommandResult& r : runs) {
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
+        EXPECT_NE(r.err.find("chart.toml:6: step 1 chart:"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("bad.csv:2: expected 11 fields"), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(path("c")));
+}
+
 TEST_F(ExportTest, ViewWithoutADisplaySaysSoAndPointsToExport) {
     auto r = runPcfscope("view " + path("test.toml"), "env -u DISPLAY -u WAYLAND_DISPLAY");
     EXPECT_EQ(r.exitCode, 2);

@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "kernel/methods.h"
+
 namespace pcf {
 
 namespace {
@@ -51,16 +53,18 @@ glm::ivec2 parseIvec2(const std::string& option, const std::string& text) {
     return v;
 }
 
-glm::ivec2 parseSize(const std::string& option, const std::string& text, int maxSide) {
+glm::ivec2 parseSize(const std::string& option, const std::string& text, int maxSide,
+                     glm::ivec2 minSize) {
     size_t x = text.find('x');
     glm::ivec2 v;
     if (x == std::string::npos || !parseInt(text.substr(0, x), v.x) ||
         !parseInt(text.substr(x + 1), v.y)) {
         throw UsageError(option + " expects WxH, got '" + text + "'");
     }
-    if (v.x < 1 || v.y < 1 || v.x > maxSide || v.y > maxSide) {
+    if (v.x < minSize.x || v.y < minSize.y || v.x > maxSide || v.y > maxSide) {
         std::ostringstream s;
-        s << option << " " << text << " is out of range (1.." << maxSide << " per side)";
+        s << option << " " << text << " is out of range (" << minSize.x << "x" << minSize.y
+          << " up to " << maxSide << "x" << maxSide << ")";
         throw UsageError(s.str());
     }
     return v;
@@ -70,6 +74,18 @@ void requireRange(const std::string& option, float v, float lo, float hi) {
     if (!std::isfinite(v) || v < lo || v > hi) {
         std::ostringstream s;
         s << option << " " << v << " is out of range [" << lo << ", " << hi << "]";
+        throw UsageError(s.str());
+    }
+}
+
+void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, float radius) {
+    if (kernelGiven && (kernel < MIN_KERNEL || kernel > MAX_KERNEL)) {
+        throw UsageError("--kernel " + std::to_string(kernel) + " is out of range (" +
+                         std::to_string(MIN_KERNEL) + ".." + std::to_string(MAX_KERNEL) + ")");
+    }
+    if (radiusGiven && !(std::isfinite(radius) && radius > 0.0f && radius <= MAX_POISSON_RADIUS)) {
+        std::ostringstream s;
+        s << "--radius " << radius << " is out of range (0, " << MAX_POISSON_RADIUS << "] texels";
         throw UsageError(s.str());
     }
 }

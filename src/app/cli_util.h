@@ -16,11 +16,16 @@ public:
 
 // "0.25,0.5" -> (0.25, 0.5); throws UsageError naming the option on anything else, NaN included.
 glm::vec2 parseVec2(const std::string& option, const std::string& text);
-// "1280x720" -> (1280, 720); each side 1..maxSide.
-glm::ivec2 parseSize(const std::string& option, const std::string& text, int maxSide);
+// "1280x720" -> (1280, 720); each side minSize..maxSide.
+glm::ivec2 parseSize(const std::string& option, const std::string& text, int maxSide,
+                     glm::ivec2 minSize = glm::ivec2(1));
 // "12,34" -> (12, 34).
 glm::ivec2 parseIvec2(const std::string& option, const std::string& text);
 // Throws UsageError unless lo <= v <= hi and v is finite.
 void requireRange(const std::string& option, float v, float lo, float hi);
+
+// Range checks of --kernel and --radius when the user gave them, whether or not the method uses
+// them: a value no method accepts is a mistake worth a word, not something to ignore silently.
+void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, float radius);
 
 }  // namespace pcf

@@ -12,7 +12,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,6 +23,7 @@
 #include "analysis/speed_chart.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/output_files.h"
 #include "app/render_options.h"
 #include "kernel/methods.h"
 #include "render/gl_context.h"
@@ -101,36 +101,23 @@ std::string diffFileName(const BenchPoint& p) {
     return name + "-map" + std::to_string(p.mapSize) + ".png";
 }
 
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream f(path, std::ios::binary);
-    f << text;
-    f.close();
-    if (!f) throw ImageError(path + ": cannot write file");
-}
-
-// The staging folder: removed, with what it holds, unless release() was called.
+// The staging folder inside DIR: removed, with whatever is still in it, when the command ends.
 class StagingDir {
   public:
-    StagingDir(const fs::path& outDir, bool removeOutDir)
-        : mOutDir(outDir), mRemoveOutDir(removeOutDir) {
-        mPath = outDir / (".pcfscope-bench-" + std::to_string(getpid()));
+    explicit StagingDir(const fs::path& outDir)
+        : mPath(outDir / (".pcfscope-bench-" + std::to_string(getpid()))) {
         fs::create_directories(mPath / "diff");
     }
     ~StagingDir() {
         std::error_code ec;
         fs::remove_all(mPath, ec);
-        if (!mKeepOutDir && mRemoveOutDir) fs::remove(mOutDir, ec);  // only when empty
     }
     StagingDir(const StagingDir&) = delete;
     StagingDir& operator=(const StagingDir&) = delete;
     const fs::path& path() const { return mPath; }
-    void keepOutDir() { mKeepOutDir = true; }
 
   private:
-    fs::path mOutDir;
     fs::path mPath;
-    bool mRemoveOutDir;
-    bool mKeepOutDir = false;
 };
 
 int runBenchCommand(const BenchCommandOptions& o) {
@@ -192,24 +179,20 @@ int runBenchCommand(const BenchCommandOptions& o) {
 
     if (o.out.empty()) throw UsageError("-o needs a directory");
     fs::path outDir(o.out);
-    std::error_code ec;
-    bool outExists = fs::exists(outDir, ec);
-    if (outExists && !fs::is_directory(outDir, ec)) {
-        throw UsageError("-o " + o.out + " is not a directory");
-    }
     std::vector<BenchPoint> points = benchPoints(options);
     const std::string csvName = "bench.csv", mdName = "bench.md",
                       chartName = "speed_vs_accuracy.png";
     std::vector<std::string> finalNames = {csvName, mdName, chartName};
     for (const BenchPoint& p : points) finalNames.push_back("diff/" + diffFileName(p));
-    for (const std::string& name : finalNames) requireWritable((outDir / name).string(), o.force);
+    OutputFiles outputs(o.force);
+    outputs.addDirectory("-o", outDir);
+    for (const std::string& name : finalNames) outputs.add("-o", outDir / name);
 
     auto started = std::chrono::steady_clock::now();
     auto seconds = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     };
-    fs::create_directories(outDir);
-    StagingDir staging(outDir, !outExists);
+    StagingDir staging(outDir);
 
     std::unique_ptr<GlContext> context = createHeadlessContext();
     int threads = resolveThreadCount(o.threads);
@@ -263,8 +246,8 @@ int runBenchCommand(const BenchCommandOptions& o) {
     setup.comparedPixels = measuredOver.comparedCount;
     setup.edgePixels = measuredOver.edgeCount;
     std::string markdown = benchMarkdown(rows, setup);
-    writeText((staging.path() / csvName).string(), benchCsv(rows));
-    writeText((staging.path() / mdName).string(), markdown);
+    writeTextFile((staging.path() / csvName).string(), benchCsv(rows));
+    writeTextFile((staging.path() / mdName).string(), markdown);
     SpeedChartText chartText;
     chartText.title = "Speed against accuracy: " + scene.name + ", " +
                       std::to_string(options.frameSize.x) + "x" +
@@ -276,11 +259,10 @@ int runBenchCommand(const BenchCommandOptions& o) {
                   drawSpeedChart(rows, chartSize, chartText));
 
     // All written: move into place.
-    fs::create_directories(outDir / "diff");
     for (const std::string& name : finalNames) {
         fs::rename(staging.path() / name, outDir / name);
     }
-    staging.keepOutDir();
+    outputs.commit();
     std::fputs(markdown.c_str(), stdout);
     std::fprintf(stderr,
                  "bench: %zu runs in %.1f s; wrote %s/{%s, %s, %s} and %zu images in "

@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <string>
 
@@ -53,33 +52,31 @@ glm::ivec2 parseSteps(const std::string& text, int count) {
 }
 
 int runExport(const ExportOptions& o) {
-    glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE);
-    if (size.x < 320 || size.y < 180) throw UsageError("--size " + o.size + " is too small (320x180 at least)");
+    glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE, MIN_SESSION_SIZE);
     std::string path = resolveLesson(o.lesson);
-    Lesson lesson = parseLessonFile(path);  // checked before anything is made
+    Lesson lesson = loadLessonChecked(path);  // checked before anything is made
     glm::ivec2 steps = parseSteps(o.steps, static_cast<int>(lesson.steps.size()));
     std::string dir = o.outDir.empty() ? "pcfscope-frames/" + lesson.name : o.outDir;
-    ExportPlan plan = planExport(dir, lesson.name, steps, o.force);
+    OutputFiles outputs(o.force);
+    ExportPlan plan = planExport(outputs, dir, lesson.name, steps);
     exportFrames(path, plan, size, o.presentation, true);
+    outputs.commit();
     return 0;
 }
 
 }  // namespace
 
-ExportPlan planExport(const std::string& dir, const std::string& lessonName, glm::ivec2 steps,
-                      bool force) {
+ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::string& lessonName,
+                      glm::ivec2 steps) {
     ExportPlan plan;
     plan.dir = dir;
     plan.steps = steps;
+    outputs.addDirectory("-o", dir);
     for (int s = steps.x; s <= steps.y; ++s) {
         std::string stem = (std::filesystem::path(dir) / (lessonName + "-" + std::to_string(s))).string();
-        requireWritable(stem + ".png", force);
-        requireWritable(stem + ".json", force);
+        outputs.add("-o", stem + ".png");
+        outputs.add("-o", stem + ".json");
         plan.stems.push_back(stem);
-    }
-    std::error_code ec;
-    if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
-        throw UsageError("-o " + dir + " is not a directory");
     }
     return plan;
 }
@@ -89,7 +86,6 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
     std::unique_ptr<GlContext> context = createHeadlessContext();
     Session session(size, presentation);
     session.loadLesson(lessonPath);
-    std::filesystem::create_directories(plan.dir);
     auto start = std::chrono::steady_clock::now();
     for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
         session.goToStep(s - 1);
@@ -109,16 +105,6 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
         std::fprintf(stderr, "export: %d frames of %dx%d in %.2f s (%.1f frames/s) into %s\n",
                      frames, size.x, size.y, seconds, frames / seconds, plan.dir.c_str());
     }
-}
-
-void writeTextFile(const std::string& path, const std::string& text) {
-    std::string tmp = path + ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        f << text;
-        if (!f) throw std::runtime_error(path + ": cannot write");
-    }
-    std::filesystem::rename(tmp, path);
 }
 
 Command addExportCommand(CLI::App& app) {

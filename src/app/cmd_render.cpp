@@ -6,6 +6,7 @@
 
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/output_files.h"
 #include "app/render_options.h"
 #include "kernel/methods.h"
 #include "render/gl_context.h"
@@ -30,24 +31,26 @@ int runRender(const RenderCommandOptions& o) {
     RenderSettings settings = o.render.settings();
     Scene scene = o.render.loadScene();
     if (o.out.empty() && o.rawDir.empty()) throw UsageError("render needs -o FILE.png or --raw DIR");
-    if (!o.out.empty()) requireWritable(o.out, o.force);
-    std::string rawShadow, rawLightSpace, rawVisibility, rawPositions;
-    if (!o.rawDir.empty()) {
-        std::error_code ec;
-        if (std::filesystem::exists(o.rawDir, ec) && !std::filesystem::is_directory(o.rawDir, ec)) {
-            throw UsageError("--raw " + o.rawDir + " is not a directory");
-        }
-        rawShadow = (std::filesystem::path(o.rawDir) / "shadowmap.exr").string();
-        rawLightSpace = (std::filesystem::path(o.rawDir) / "lightspace.exr").string();
-        rawVisibility = (std::filesystem::path(o.rawDir) / "visibility.exr").string();
-        rawPositions = (std::filesystem::path(o.rawDir) / "positions.exr").string();
-        settings.writePositions = true;
-        for (const std::string& p : {rawShadow, rawLightSpace, rawVisibility, rawPositions}) {
-            requireWritable(p, o.force);
-        }
-    }
     if (o.timeRepeats < 0 || o.timeRepeats > 10000) {
         throw UsageError("--time " + std::to_string(o.timeRepeats) + " is out of range (0..10000)");
+    }
+    OutputFiles outputs(o.force);
+    if (!o.out.empty()) {
+        requireExtension("-o", o.out, ".png");
+        outputs.add("-o", o.out);
+    }
+    std::string rawShadow, rawLightSpace, rawVisibility, rawPositions;
+    if (!o.rawDir.empty()) {
+        std::filesystem::path dir(o.rawDir);
+        outputs.addDirectory("--raw", dir);
+        rawShadow = (dir / "shadowmap.exr").string();
+        rawLightSpace = (dir / "lightspace.exr").string();
+        rawVisibility = (dir / "visibility.exr").string();
+        rawPositions = (dir / "positions.exr").string();
+        settings.writePositions = true;
+        for (const std::string& p : {rawShadow, rawLightSpace, rawVisibility, rawPositions}) {
+            outputs.add("--raw", p);
+        }
     }
 
     std::unique_ptr<GlContext> context = createHeadlessContext();
@@ -70,7 +73,6 @@ int runRender(const RenderCommandOptions& o) {
         writePngRgba8(o.out, size.x, size.y, rgba);
     }
     if (!o.rawDir.empty()) {
-        std::filesystem::create_directories(o.rawDir);
         writeDepthImage(rawShadow, renderer.readShadowMap());
         std::vector<float> ls = renderer.readLightSpace();
         writeExr(rawLightSpace, size.x, size.y, 4, ls, {"R", "G", "B", "A"});
@@ -79,6 +81,7 @@ int runRender(const RenderCommandOptions& o) {
         std::vector<float> pos = renderer.readPositions();
         writeExr(rawPositions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
     }
+    outputs.commit();
     return 0;
 }
 

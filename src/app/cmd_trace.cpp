@@ -18,7 +18,10 @@ struct TraceOptions {
     std::string mapPath;
     bool example = false;
     std::string uv;
-    float z = NAN;
+    float z = 0.0f;
+    CLI::Option* zOption = nullptr;  // given or not: every float, NaN included, is a value
+    CLI::Option* kernelOption = nullptr;
+    CLI::Option* radiusOption = nullptr;
     float bias = 0.0f;
     std::string method = "bilinear2x2";
     int kernel = 3;
@@ -39,6 +42,8 @@ int runTrace(const TraceOptions& o) {
     if (!method) {
         throw UsageError("unknown method '" + o.method + "' (known: " + methodNameList() + ")");
     }
+    checkGivenKernelOptions(o.kernelOption->count() > 0, o.kernel, o.radiusOption->count() > 0,
+                            o.radius);
     float rad = o.rotationDeg * 0.0174532925f;
     PcfParams prm = makeParams(*method, o.kernel, o.radius, vec2(std::cos(rad), std::sin(rad)));
     if (auto why = validateParams(prm)) throw UsageError(*why);
@@ -46,13 +51,13 @@ int runTrace(const TraceOptions& o) {
 
     ShadowMap map;
     std::string uvText = o.uv;
-    float z = o.z;
+    bool zGiven = o.zOption->count() > 0;
+    float z = zGiven ? o.z : EXAMPLE_Z;
     if (o.example) {
         map = exampleShadowMap();
         if (uvText.empty()) uvText = EXAMPLE_UV;
-        if (std::isnan(z)) z = EXAMPLE_Z;
     } else {
-        if (uvText.empty() || std::isnan(z)) {
+        if (uvText.empty() || !zGiven) {
             throw UsageError("trace --map needs --uv U,V and --z Z");
         }
         try {
@@ -84,11 +89,11 @@ Command addTraceCommand(CLI::App& app) {
     sub->add_flag("--example", o->example,
                   "use the built-in 8x8 example map (default lookup: seed 000's 0.8 example)");
     sub->add_option("--uv", o->uv, "shadow-map coordinates U,V in [0,1]");
-    sub->add_option("--z", o->z, "receiver depth in [0,1] as the light sees it");
+    o->zOption = sub->add_option("--z", o->z, "receiver depth in [0,1] as the light sees it");
     sub->add_option("--bias", o->bias, "constant depth bias: ref = z - bias");
     sub->add_option("--method", o->method, "method id (see `pcfscope methods`)");
-    sub->add_option("--kernel", o->kernel, "kernel size N (1..8; tent: 3, 5, 7)");
-    sub->add_option("--radius", o->radius, "poisson: disk radius in texels");
+    o->kernelOption = sub->add_option("--kernel", o->kernel, "kernel size N (1..8; tent: 3, 5, 7)");
+    o->radiusOption = sub->add_option("--radius", o->radius, "poisson: disk radius in texels");
     sub->add_option("--rotation", o->rotationDeg, "poisson: disk rotation in degrees");
     sub->add_flag("--json", o->json, "print the trace as one JSON object");
     return {sub, [o] { return runTrace(*o); }};

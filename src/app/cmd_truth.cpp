@@ -7,6 +7,7 @@
 #include "analysis/ground_truth.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/output_files.h"
 #include "app/render_options.h"
 #include "render/image_io.h"
 
@@ -45,8 +46,10 @@ int runTruth(const TruthCommandOptions& o) {
         throw UsageError("give --scene or --scene-file, not both");
     }
     if (o.out.empty()) throw UsageError("truth needs -o FILE.exr");
-    requireWritable(o.out, o.force);
+    requireExtension("-o", o.out, ".exr");
     Scene scene = sceneOptions.loadScene();
+    OutputFiles outputs(o.force);
+    outputs.add("-o", o.out);
 
     GroundTruthOptions options;
     options.spp = o.spp;
@@ -75,6 +78,7 @@ int runTruth(const TruthCommandOptions& o) {
         }
         writeExr(o.out, size.x, size.y, 2, data, {"Y", "mask"});
     }
+    outputs.commit();
     std::fprintf(stderr, "truth: wrote %s\n", o.out.c_str());
     return 0;
 }

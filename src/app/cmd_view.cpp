@@ -29,7 +29,7 @@ struct ViewCommandOptions {
 int runView(const ViewCommandOptions& o) {
     ViewerOptions v;
     v.lesson = resolveLesson(o.lesson);
-    v.windowSize = parseSize("--size", o.size, MAX_FRAME_SIDE);
+    v.windowSize = parseSize("--size", o.size, MAX_FRAME_SIDE, MIN_SESSION_SIZE);
     v.keys = o.keys;
     v.screenshot = o.screenshot;
     v.presentation = o.presentation;
@@ -70,15 +70,17 @@ int runMainJob() {
         }
     }
     // No display: export lesson 1 into a folder of its own, never over an earlier one.
-    Lesson lesson = parseLessonFile(lessons.front());
+    Lesson lesson = loadLessonChecked(lessons.front());
     std::string dir = "pcfscope-frames/" + lesson.name;
     std::error_code ec;
     for (int k = 2; std::filesystem::exists(dir, ec); ++k) {
         dir = "pcfscope-frames/" + lesson.name + "-" + std::to_string(k);
     }
     glm::ivec2 steps(1, static_cast<int>(lesson.steps.size()));
-    ExportPlan plan = planExport(dir, lesson.name, steps, false);
+    OutputFiles outputs(false);
+    ExportPlan plan = planExport(outputs, dir, lesson.name, steps);
     exportFrames(lessons.front(), plan, {1600, 900}, false, true);
+    outputs.commit();
     std::printf("No display: lesson '%s' exported as %d frames into %s/\n", lesson.title.c_str(),
                 steps.y, dir.c_str());
     return 0;

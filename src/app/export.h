@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "app/output_files.h"
+
 namespace pcf {
 
 struct ExportPlan {
@@ -15,16 +17,14 @@ struct ExportPlan {
     std::vector<std::string> stems;  // DIR/LESSON-STEP, one per step, without extension
 };
 
-// Checks every output before anything is written: throws UsageError if a file exists (unless
-// force) or dir is not a directory.
-ExportPlan planExport(const std::string& dir, const std::string& lessonName, glm::ivec2 steps,
-                      bool force);
+// Checks every output before anything is written and adds it to `outputs` (which creates the
+// folder and takes the frames back if the export fails): throws UsageError if a file exists
+// (unless the outputs were made with force) or the folder cannot be written.
+ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::string& lessonName,
+                      glm::ivec2 steps);
 
 // Renders and writes each planned step headless; progress and frames/s on stderr.
 void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
                   bool presentation, bool progress);
-
-// Writes text to path through a temporary file and a rename (no half-written file).
-void writeTextFile(const std::string& path, const std::string& text);
 
 }  // namespace pcf

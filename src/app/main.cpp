@@ -1,6 +1,7 @@
 // pcfscope: the command line (DESIGN.md section 6).
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -53,6 +54,10 @@ int main(int argc, char** argv) {
         return fail(e.what());
     } catch (const pcf::ImageError& e) {
         return fail(e.what());
+    } catch (const std::filesystem::filesystem_error& e) {
+        // The disk said no (full, read-only, removed under us): the outputs were taken back.
+        return fail(e.path1().empty() ? e.code().message()
+                                      : e.path1().string() + ": " + e.code().message());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "pcfscope: internal error: %s\n", e.what());
         return 1;

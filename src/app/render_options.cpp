@@ -60,6 +60,7 @@ RenderSettings RenderOptions::settings() const {
         }
         s.method = *id;
     }
+    checkGivenKernelOptions(given("--kernel"), kernel, given("--radius"), radius);
     if (use("--kernel")) s.kernel = kernel;
     if (use("--radius")) s.radius = radius;
     if (use("--rotate")) s.rotatePerPixel = rotate;
@@ -118,13 +119,6 @@ Scene RenderOptions::loadScene() const {
         throw UsageError("unknown scene '" + name + "' (known: " + known + ")");
     }
     return *preset;
-}
-
-void requireWritable(const std::string& path, bool force) {
-    std::error_code ec;
-    if (!force && std::filesystem::exists(path, ec)) {
-        throw UsageError(path + " already exists; pass --force to overwrite it");
-    }
 }
 
 }  // namespace pcf

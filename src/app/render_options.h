@@ -45,7 +45,4 @@ private:
     CLI::App* mSub = nullptr;
 };
 
-// Throws UsageError unless `path` is free to write: it must not exist unless `force`.
-void requireWritable(const std::string& path, bool force);
-
 }  // namespace pcf

@@ -83,9 +83,37 @@ Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presen
     setFrameSize(frameSize);
 }
 
-void Session::loadLesson(const std::string& path) {
+namespace {
+
+std::vector<BenchRow> readChartRows(const std::string& csvPath) {
+    std::ifstream file(csvPath, std::ios::binary);
+    std::stringstream text;
+    text << file.rdbuf();
+    if (!file) throw InputError(csvPath, 0, "cannot open file");
+    return parseBenchCsv(text.str(), csvPath);
+}
+
+}  // namespace
+
+Lesson loadLessonChecked(const std::string& path) {
     Lesson lesson = parseLessonFile(path);
     if (lesson.steps.empty()) throw UsageError(path + ": the lesson has no steps");
+    for (size_t i = 0; i < lesson.steps.size(); ++i) {
+        const LessonStep& step = lesson.steps[i];
+        if (step.chart.empty()) continue;
+        try {
+            std::vector<BenchRow> rows = readChartRows(step.chart);
+            if (rows.empty()) throw InputError(step.chart, 0, "no rows to chart");
+        } catch (const InputError& e) {
+            throw InputError(path, step.chartLine,
+                             "step " + std::to_string(i + 1) + " chart: " + e.what());
+        }
+    }
+    return lesson;
+}
+
+void Session::loadLesson(const std::string& path) {
+    Lesson lesson = loadLessonChecked(path);
     mLesson = std::move(lesson);
     mRenderer = std::make_unique<SceneRenderer>(mLesson.scene);
     mRendered.reset();
@@ -163,11 +191,7 @@ void Session::blitChart(const std::string& csvPath) {
     glm::ivec2 size(mLayout.scene.size());
     std::string key = csvPath + "@" + std::to_string(size.x) + "x" + std::to_string(size.y);
     if (key != mChartKey) {
-        std::ifstream file(csvPath, std::ios::binary);
-        std::stringstream text;
-        text << file.rdbuf();
-        if (!file) throw InputError(csvPath, 0, "cannot open file");
-        std::vector<BenchRow> rows = parseBenchCsv(text.str(), csvPath);
+        std::vector<BenchRow> rows = readChartRows(csvPath);
         SpeedChartText labels;
         labels.title = "Speed against accuracy";
         labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +

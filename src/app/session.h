@@ -27,7 +27,14 @@ std::vector<std::string> builtInLessons();
 // ("03-bilinear-lerp"), or its number in the list ("3"). Throws UsageError naming the choices.
 std::string resolveLesson(const std::string& nameOrPath);
 
+// Parses a lesson and reads every bench.csv its steps chart, so that a broken chart is reported
+// at its lesson line before anything is drawn. Throws InputError (file:line) or UsageError.
+Lesson loadLessonChecked(const std::string& path);
+
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
+
+// The smallest frame the scene view and the inspector fit into side by side.
+constexpr glm::ivec2 MIN_SESSION_SIZE{320, 180};
 
 class Session {
 public:

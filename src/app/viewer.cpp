@@ -14,6 +14,7 @@
 
 #include "app/cli_util.h"
 #include "app/export.h"
+#include "app/output_files.h"
 #include "app/render_options.h"
 #include "app/session.h"
 #include "kernel/methods.h"
@@ -122,16 +123,25 @@ public:
         if (scene.contains(p)) mSession.setPixel(glm::ivec2(p - scene.position()));
     }
 
+    // E: the frame as PNG + JSON into pcfscope-frames/. A failure is reported and the class
+    // goes on; nothing half-written stays.
     void exportFrame() {
         std::string dir = "pcfscope-frames";
-        std::filesystem::create_directories(dir);
         std::string stem = freeStem(dir, mSession.lesson().name + "-" +
                                              std::to_string(mSession.step() + 1));
-        mSession.compose();
-        glm::ivec2 size = mSession.frameSize();
-        writePngRgba8(stem + ".png", size.x, size.y, mSession.readFrame());
-        writeTextFile(stem + ".json", mSession.stepJson() + "\n");
-        std::fprintf(stderr, "view: exported %s.png\n", stem.c_str());
+        try {
+            OutputFiles outputs(false);
+            outputs.add("E", stem + ".png");
+            outputs.add("E", stem + ".json");
+            mSession.compose();
+            glm::ivec2 size = mSession.frameSize();
+            writePngRgba8(stem + ".png", size.x, size.y, mSession.readFrame());
+            writeTextFile(stem + ".json", mSession.stepJson() + "\n");
+            outputs.commit();
+            std::fprintf(stderr, "view: exported %s.png\n", stem.c_str());
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "view: export failed: %s\n", e.what());
+        }
     }
 
 private:
@@ -236,8 +246,12 @@ int runViewer(const ViewerOptions& o) {
     std::vector<KeyPress> keys;
     std::istringstream tokens(o.keys);
     for (std::string t; tokens >> t;) keys.push_back(parseKeyName(t));
-    if (!o.screenshot.empty()) requireWritable(o.screenshot, o.force);
-    parseLessonFile(o.lesson);  // bad lessons fail before a window opens
+    OutputFiles outputs(o.force);
+    if (!o.screenshot.empty()) {
+        requireExtension("--screenshot", o.screenshot, ".png");
+        outputs.add("--screenshot", o.screenshot);
+    }
+    loadLessonChecked(o.lesson);  // bad lessons fail before a window opens
 
     bool scripted = !o.screenshot.empty();
     std::unique_ptr<GlfwWindowContext> window =
@@ -299,6 +313,7 @@ int runViewer(const ViewerOptions& o) {
         session.compose();
         glm::ivec2 size = session.frameSize();
         writePngRgba8(o.screenshot, size.x, size.y, session.readFrame());
+        outputs.commit();
         present(session, *window);
         gViewer = nullptr;
         return 0;

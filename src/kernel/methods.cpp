@@ -94,8 +94,9 @@ std::optional<std::string> validateParams(const PcfParams& prm) {
         return s.str();
     }
     if (prm.method == PCF_POISSON && !(std::isfinite(prm.radius) && prm.radius > 0.0f &&
-                                       prm.radius <= 64.0f)) {
-        s << "--radius " << prm.radius << " is out of range (0, 64] texels";
+                                       prm.radius <= MAX_POISSON_RADIUS)) {
+        s << "--radius " << prm.radius << " is out of range (0, " << MAX_POISSON_RADIUS
+          << "] texels";
         return s.str();
     }
     return std::nullopt;

@@ -131,6 +131,7 @@ class LessonParser {
                                                   p.string() + ")");
                 }
                 step.chart = p.string();
+                step.chartLine = lineOf(*table.get("chart"));
             }
             step.settings = state;
             checkState(table, what, state, lines);

@@ -103,6 +103,7 @@ struct LessonStep {
     // `chart = "figures/bench.csv"`: this step shows the speed/accuracy chart drawn from that
     // bench.csv (a path relative to the lesson file) where the scene would be. Not inherited.
     std::string chart;
+    int chartLine = 0;  // the line of the `chart` key
 };
 
 struct Lesson {

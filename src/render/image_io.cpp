@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <mutex>
 #include <random>
@@ -62,6 +63,29 @@ void writeImageAtomically(const std::string& path, const OIIO::ImageSpec& spec, 
         throw ImageError(path + ": cannot write image (" + reason + ")");
     }
 }
+
+}  // namespace
+
+void writeTextFile(const std::string& path, const std::string& text) {
+    std::string temp = tempPathFor(path);
+    std::error_code ec;
+    {
+        std::ofstream f(temp, std::ios::binary | std::ios::trunc);
+        f << text;
+        f.close();
+        if (!f) {
+            std::filesystem::remove(temp, ec);
+            throw ImageError(path + ": cannot write file");
+        }
+    }
+    std::filesystem::rename(temp, path, ec);
+    if (ec) {
+        std::filesystem::remove(temp, ec);
+        throw ImageError(path + ": cannot write file (" + ec.message() + ")");
+    }
+}
+
+namespace {
 
 void checkSize(const std::string& path, int width, int height, size_t have, size_t perPixel) {
     if (width <= 0 || height <= 0) {

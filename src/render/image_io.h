@@ -26,6 +26,9 @@ class ImageError : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Text written through a temporary file and a rename: never half a file. Throws ImageError.
+void writeTextFile(const std::string& path, const std::string& text);
+
 // An 8-bit RGBA PNG; rgba holds width * height * 4 bytes, rows top-down.
 void writePngRgba8(const std::string& path, int width, int height, std::span<const uint8_t> rgba);
 
