@@ -151,6 +151,24 @@ TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
     EXPECT_NE(notDir.err.find("not a directory"), std::string::npos) << notDir.err;
 }
 
+// Error is charted over the edge band; a frame without a shadow edge has none, and a row of
+// perfect zeros would be a lie. The run is refused, after the truth that shows it, with nothing
+// written.
+TEST_F(BenchCommand, RefusesAFrameWithoutAShadowEdge) {
+    std::ofstream(path("plane.toml"))
+        << "[camera]\neye = [0.0, 3.0, -6.0]\ntarget = [0.0, 0.0, 0.0]\nfov = 45.0\n"
+           "[light]\ntype = \"directional\"\ndirection = [0.3, -1.0, 0.2]\n"
+           "[[object]]\ntype = \"plane\"\nname = \"ground\"\ncentre = [0.0, 0.0, 0.0]\n"
+           "normal = [0.0, 1.0, 0.0]\nsize = [8.0, 8.0]\n";
+    auto r = testutil::runPcfscope("bench --quick --methods nearest --scene-file " +
+                                   path("plane.toml") + " -o " + path("out"));
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    std::string last = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);
+    EXPECT_NE(last.find("pcfscope: "), std::string::npos) << r.err;
+    EXPECT_NE(last.find("no shadow edge"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("out")));
+}
+
 TEST_F(BenchCommand, RefusesToOverwriteWithoutForce) {
     std::string out = path("again");
     fs::create_directories(out);

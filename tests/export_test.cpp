@@ -280,6 +280,18 @@ TEST_F(ExportTest, ViewKeysScreenshotIsTheExportedFrame) {
                              "DISPLAY=" + x.display());
     ASSERT_EQ(other.exitCode, 0) << other.err;
     EXPECT_NE(readFile(path("shot-m.png")), readFile(path("frames/test-3.png")));
+    // Keys that change the state the words were written for: the numbers follow the live
+    // state and the text says it was written for another one (the E key's JSON holds it).
+    auto wider = runPcfscope("view 5 --keys \"right_bracket e\" --screenshot " + path("n4.png"),
+                             "cd " + mDir.string() + " && DISPLAY=" + x.display());
+    ASSERT_EQ(wider.exitCode, 0) << wider.err;
+    jsonlite::Value step =
+        jsonlite::parse(readFile(path("pcfscope-frames/05-gather-weights-1.json")));
+    EXPECT_NE(step["text"].string.find("(Written for pcf-gather N=3"), std::string::npos)
+        << step["text"].string;
+    EXPECT_NE(step["text"].string.find("now pcf-gather N=4"), std::string::npos);
+    EXPECT_NE(step["text"].string.find("against 64 reads in 16 lookups"), std::string::npos)
+        << step["text"].string;
     auto badKey = runPcfscope("view " + path("test.toml") + " --keys \"warp\" --screenshot " +
                                   path("x.png"),
                               "DISPLAY=" + x.display());

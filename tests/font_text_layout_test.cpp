@@ -102,6 +102,20 @@ TEST(TextLayout, WrapSplitsAtSpacesWithinTheWidth) {
     }
 }
 
+TEST(TextLayout, ElideKeepsWhatFitsAndMarksTheCut) {
+    const std::string title = "2. Lerp by the sub-texel position";
+    float full = measureText(FontFace::Sans, 24.0f, title).x;
+    EXPECT_EQ(elideText(FontFace::Sans, 24.0f, title, full + 1.0f), title);
+    std::string cut = elideText(FontFace::Sans, 24.0f, title, full * 0.6f);
+    EXPECT_LE(measureText(FontFace::Sans, 24.0f, cut).x, full * 0.6f) << cut;
+    ASSERT_GT(cut.size(), 3u);
+    EXPECT_EQ(cut.substr(cut.size() - 3), "...");
+    EXPECT_EQ(title.rfind(cut.substr(0, cut.size() - 3), 0), 0u) << cut;  // a prefix
+    // Multi-byte characters are dropped whole.
+    std::string symbols = elideText(FontFace::Sans, 24.0f, "≤≤≤≤≤≤≤≤≤≤≤≤", 80.0f);
+    EXPECT_EQ(decodeUtf8(symbols).find(U'\uFFFD'), std::u32string::npos) << symbols;
+}
+
 TEST(TextLayout, WrapKeepsHardBreaksAndParagraphGaps) {
     std::vector<std::string> lines =
         wrapText(FontFace::Sans, 16.0f, "first  line\n\nsecond\tparagraph", 1000.0f);

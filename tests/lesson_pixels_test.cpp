@@ -20,9 +20,10 @@
 namespace pcf {
 namespace {
 
-// The frames the claims must hold in: the lessons' reference frame, and the scene view of the
-// viewer and the exporter at their default 1600 x 900 (60% of the width, 16:9).
-constexpr glm::ivec2 FRAME_SIZES[] = {{1280, 720}, {960, 540}};
+// The frames the claims must hold in, every size a class is likely to see: the lessons'
+// reference frame, the scene views of exports at 1600x900 (960x540) and 1280x720 (768x432), and
+// a larger one.
+constexpr glm::ivec2 FRAME_SIZES[] = {{1280, 720}, {960, 540}, {768, 432}, {1536, 864}};
 
 RenderSettings renderSettings(const LessonSettings& s, glm::ivec2 frameSize) {
     RenderSettings r;
@@ -122,18 +123,20 @@ const std::map<std::string, Claims>& lessonClaims() {
            {"near the lit column", [](const Trace& t) { return t.pos.frac.x < 0.3f; }}}}},
         {"03-bilinear-lerp",
          {{bits("1010")},
+          // Close to seed 000's example: one screen pixel moves the point by about 0.09 texel
+          // here, so frames of other sizes land up to half of that to either side.
           {bits("1010"),
-           {"seed 000: fx 0.2 gives 0.8",
+           {"seed 000: fx near 0.2 gives near 0.8",
             [](const Trace& t) {
-                return near(t.pos.frac.x, 0.2f, 0.005f) && near(t.visibility, 0.8f, 0.005f);
+                return near(t.pos.frac.x, 0.2f, 0.05f) && near(t.visibility, 0.8f, 0.05f);
             }}},
           {bits("1010")},
           {bits("1010"),
            {"further along the ramp",
             [](const Trace& t) { return t.pos.frac.x > 0.5f && t.visibility < 0.5f; }}},
-          {{"one hardware tap, 0.8",
+          {{"one hardware tap, near 0.8",
             [](const Trace& t) {
-                return t.counts.hwTaps == 1 && near(t.visibility, 0.8f, 0.005f);
+                return t.counts.hwTaps == 1 && near(t.visibility, 0.8f, 0.05f);
             }}}}},
         {"04-nxn-lookups", {{penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}}},
         {"05-gather-weights",

@@ -59,8 +59,9 @@ TEST_F(OutputSafetyTest, RenderWritesAllOutputsOrNone) {
     EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
     fs::remove(mDir / "dir.png");
 
-    // And when everything can be written, everything is, folders included.
-    auto ok = runPcfscope(RENDER + "-o " + path("a/b/frame.png") + " --raw " + path("raw/x"));
+    // And when everything can be written, everything is, folders included (a trailing slash
+    // names the same folder).
+    auto ok = runPcfscope(RENDER + "-o " + path("a/b/frame.png") + " --raw " + path("raw/x/"));
     ASSERT_EQ(ok.exitCode, 0) << ok.err;
     EXPECT_TRUE(fs::is_regular_file(mDir / "a/b/frame.png"));
     for (const char* name : {"shadowmap.exr", "lightspace.exr", "visibility.exr", "positions.exr"}) {
@@ -83,6 +84,11 @@ TEST_F(OutputSafetyTest, ExportAndBenchRefuseUnwritableFolders) {
     expectRefused("export 1 --steps 1 --size 100x100 -o frames", "--size 100x100 is out of range");
     expectRefused("bench --quick --methods nearest -o /proc/pcfscope-bench",
                   "cannot create folder");
+    auto ok = runPcfscope("export 1 --steps 1 --size 320x180 -o " + path("new/frames/"));
+    ASSERT_EQ(ok.exitCode, 0) << ok.err;
+    EXPECT_TRUE(fs::is_regular_file(mDir / "new/frames/01-hard-shadows-1.png"));
+    fs::remove_all(mDir / "new");
+
     std::ofstream(mDir / "file") << "x";
     auto r = runPcfscope("export 1 --steps 1 -o " + path("file"));
     EXPECT_EQ(r.exitCode, 2);

@@ -19,6 +19,7 @@
 #include "analysis/bench.h"
 #include "analysis/bench_report.h"
 #include "analysis/difference_image.h"
+#include "analysis/error_metrics.h"
 #include "analysis/ground_truth.h"
 #include "analysis/speed_chart.h"
 #include "app/cli_util.h"
@@ -214,6 +215,18 @@ int runBenchCommand(const BenchCommandOptions& o) {
     };
     GroundTruth truth = computeGroundTruth(scene, options.frameSize, truthOptions);
     std::fprintf(stderr, "bench: ground truth done (%.1f s)\n", seconds());
+    // The chart's accuracy axis is the edge band's error: without a shadow edge in view every
+    // method would score a perfect 0 and the chart would say nothing. Refuse instead.
+    ErrorRegions truthRegions = errorRegions(truth);
+    if (truthRegions.comparedCount == 0 || truthRegions.edgeCount == 0) {
+        throw UsageError(
+            "scene '" + scene.name + "' shows " +
+            (truthRegions.comparedCount == 0 ? std::string("no shadow receiver")
+                                             : std::string("no shadow edge")) +
+            " at " + std::to_string(options.frameSize.x) + "x" +
+            std::to_string(options.frameSize.y) +
+            ", so there is no edge band to measure error over; bench needs a shadow edge in view");
+    }
 
     SceneRenderer renderer(scene);
     BenchContext bench;

@@ -35,7 +35,11 @@ void OutputFiles::prepareDirectory(const std::string& option, const fs::path& ta
                                    const fs::path& dir) {
     // Walk up to the nearest folder that exists, then create the missing ones below it.
     std::vector<fs::path> missing;
+    // "frames/" names the folder "frames": drop the empty last component the slash leaves.
     fs::path at = dir.empty() ? fs::path(".") : dir;
+    while (!at.has_filename() && at.has_parent_path() && at.parent_path() != at) {
+        at = at.parent_path();
+    }
     std::error_code ec;
     while (!fs::exists(at, ec)) {
         missing.push_back(at);
@@ -46,7 +50,8 @@ void OutputFiles::prepareDirectory(const std::string& option, const fs::path& ta
         throw UsageError(quoted(option, target) + ": " + at.string() + " is not a directory");
     }
     for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-        if (!fs::create_directory(*it, ec) || ec) {
+        fs::create_directory(*it, ec);
+        if (ec || !fs::is_directory(*it)) {
             std::string why = ec ? ec.message() : "cannot create it";
             throw UsageError(quoted(option, target) + ": cannot create folder " + it->string() +
                              " (" + why + ")");

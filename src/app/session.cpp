@@ -17,7 +17,9 @@ namespace pcf {
 
 namespace {
 
-std::string statusLine(const LessonSettings& s, glm::ivec2 sceneSize, double frameTimeMs) {
+// "pcf-gather N=3   bias constant 0.02   cull back   map 256 32f": the state, in the status line's
+// words.
+std::string settingsSummary(const LessonSettings& s) {
     const MethodInfo& info = methodInfo(s.method);
     // A stream: GCC 12 warns falsely (-Wrestrict) on chains of string operator+.
     std::ostringstream line;
@@ -26,8 +28,13 @@ std::string statusLine(const LessonSettings& s, glm::ivec2 sceneSize, double fra
     if (info.usesRadius) line << " R=" << formatNumber(s.radius) << (s.rotate ? " rotated" : "");
     line << "   bias " << s.bias;
     if (s.bias != "none") line << " " << formatNumber(s.constantBias);
-    line << "   cull " << s.cull << "   map " << s.mapSize << " " << s.depthFormat << "   scene "
-         << sceneSize.x << "x" << sceneSize.y;
+    line << "   cull " << s.cull << "   map " << s.mapSize << " " << s.depthFormat;
+    return line.str();
+}
+
+std::string statusLine(const LessonSettings& s, glm::ivec2 sceneSize, double frameTimeMs) {
+    std::ostringstream line;
+    line << settingsSummary(s) << "   scene " << sceneSize.x << "x" << sceneSize.y;
     if (frameTimeMs >= 0.0) {
         char buf[32];
         std::snprintf(buf, sizeof buf, "   %.1f ms", frameTimeMs);
@@ -256,7 +263,21 @@ std::string Session::stepText() const {
     ctx.constantBias = mSettings.constantBias;
     ctx.cull = mSettings.cull;
     ctx.depthFormat = mSettings.depthFormat;
-    return fillText(s.text, *mTrace, ctx);
+    std::string text = fillText(s.text, *mTrace, ctx);
+    // Keys may have changed the state the words were written for; the numbers follow the live
+    // state, the sentences cannot. Say so rather than let them disagree in silence.
+    LessonSettings written = s.settings;
+    written.pixel = mSettings.pixel;
+    if (!(written == mSettings)) {
+        auto compact = [](std::string t) {
+            for (size_t at; (at = t.find("   ")) != std::string::npos;) t.replace(at, 3, ", ");
+            return t;
+        };
+        text = "(Written for " + compact(settingsSummary(s.settings)) + "; now " +
+               compact(settingsSummary(mSettings)) +
+               ". The numbers are live; step away and back to restore the step.)\n\n" + text;
+    }
+    return text;
 }
 
 void Session::compose() {

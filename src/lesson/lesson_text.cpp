@@ -90,6 +90,10 @@ const std::vector<Simple>& simpleNames() {
              return text(std::string(methodInfo(t.params.method).name));
          }},
         {"kernel", [](const Trace& t, const StepContext&) { return integer(t.params.kernel); }},
+        {"kernel_sq",
+         [](const Trace& t, const StepContext&) {
+             return integer(t.params.kernel * t.params.kernel);
+         }},
         {"radius", [](const Trace& t, const StepContext&) { return number(t.params.radius); }},
         {"rotation",
          [](const Trace& t, const StepContext&) { return number(angleDeg(t.params.rotation)); }},

@@ -27,6 +27,7 @@
 //   shadow                1 - visibility
 //   method                the method's id, e.g. "bilinear2x2" (text)
 //   kernel radius         N, and the Poisson disk's radius in texels
+//   kernel_sq             N^2: the lookups of an N x N kernel ("{kernel_sq*4}" reads for pcf-naive)
 //   rotation              the Poisson disk's rotation in degrees
 //   map_size              the shadow map's width in texels
 //   taps                  texel reads recorded, duplicates kept (pcf-naive 3x3: 36)

@@ -274,6 +274,10 @@ void drawInspectorPanel(Canvas& c, const InspectorLayout& l, const InspectorMode
     counts += "   uv (" + fixed(tr.uv.x, 4) + ", " + fixed(tr.uv.y, 4) + ")  ref " +
               fixed(tr.ref, 4);
     float small = fontSize(l, 13, m.presentation);
+    // One line under the title: large presentation type steps down until it fits.
+    while (small > 8.0f && measureText(FontFace::Mono, small, counts).x > p.w - 2.0f * margin) {
+        small = std::round(small * 0.92f);
+    }
     c.text({p.x + margin, y}, counts, {FontFace::Mono, small, TEXT_DIM});
 
     Rect grid = neighbourhoodArea(l, tr, m.presentation);
@@ -336,22 +340,50 @@ void drawStepsPanel(Canvas& c, const InspectorLayout& l, const InspectorModel& m
     // Step list on the left, the current step's text in the middle.
     float listW = std::round(p.w * 0.30f);
     float item = fontSize(l, 13, m.presentation);
-    float y = top;
+    // Titles wrap inside the list's column (large type in presentation mode would cut them);
+    // when the wrapped list would run out of the panel, each title keeps one line, elided.
+    float textW = listW - 8.0f;
+    std::vector<std::vector<std::string>> labels;
+    float needed = 0.0f;
     for (size_t k = 0; k < m.stepTitles.size(); ++k) {
+        labels.push_back(wrapText(FontFace::Sans, item,
+                                  std::to_string(k + 1) + ". " + m.stepTitles[k], textW));
+        needed += (static_cast<float>(labels.back().size()) * 1.2f + 0.3f) * item;
+    }
+    if (top + needed > p.bottom() - margin) {
+        for (size_t k = 0; k < labels.size(); ++k) {
+            labels[k] = {elideText(FontFace::Sans, item,
+                                   std::to_string(k + 1) + ". " + m.stepTitles[k], textW)};
+        }
+    }
+    float y = top;
+    for (size_t k = 0; k < labels.size(); ++k) {
         bool current = static_cast<int>(k) == m.currentStep;
-        std::string label = std::to_string(k + 1) + ". " + m.stepTitles[k];
-        Rect row{p.x + margin, y - 2.0f, listW, item * 1.45f};
+        float h = (static_cast<float>(labels[k].size()) * 1.2f + 0.25f) * item;
+        Rect row{p.x + margin, y - 2.0f, listW, h};
         if (current) c.fillRect(row, Colour{0.35f, 0.78f, 0.98f, 0.25f});
         c.pushClip(row);
-        c.text({p.x + margin + 4.0f, y}, label,
-               {FontFace::Sans, item, current ? TEXT : TEXT_DIM});
+        for (size_t line = 0; line < labels[k].size(); ++line) {
+            c.text({p.x + margin + 4.0f, y + static_cast<float>(line) * item * 1.2f},
+                   labels[k][line], {FontFace::Sans, item, current ? TEXT : TEXT_DIM});
+        }
         c.popClip();
-        y += item * 1.5f;
+        y += h + 0.05f * item;
     }
     Rect text{p.x + margin * 2.0f + listW, top, thumb.x - margin * 2.0f - (p.x + listW + margin),
               p.bottom() - top - margin};
+    // Presentation type is larger; where a long step would not fit, step down towards the
+    // normal size rather than cut the explanation off.
+    float size = fontSize(l, 15, m.presentation);
+    float smallest = fontSize(l, 15, false);
+    while (size > smallest &&
+           static_cast<float>(wrapText(FontFace::Sans, size, m.stepText, text.w).size()) *
+                   fontMetrics(FontFace::Sans, size).lineHeight >
+               text.h) {
+        size = std::max(smallest, std::round(size * 0.92f));
+    }
     c.pushClip(text);
-    c.textBox(text, m.stepText, {FontFace::Sans, fontSize(l, 15, m.presentation), TEXT});
+    c.textBox(text, m.stepText, {FontFace::Sans, size, TEXT});
     c.popClip();
     (void)thumb;  // the thumbnail is drawn by drawInspectorTop, over the blitted map
 }

@@ -193,4 +193,19 @@ std::vector<std::string> wrapText(FontFace face, float pixelSize, std::string_vi
     return wrapText(glyphAtlas(face, pixelSize), utf8, maxWidth);
 }
 
+std::string elideText(FontFace face, float pixelSize, std::string_view utf8, float maxWidth) {
+    GlyphAtlas& atlas = glyphAtlas(face, pixelSize);
+    if (lineWidth(atlas, utf8) <= maxWidth) return std::string(utf8);
+    std::string kept(utf8);
+    while (!kept.empty() && lineWidth(atlas, kept + "...") > maxWidth) {
+        // Drop one UTF-8 character: its continuation bytes (10xxxxxx), then its lead byte.
+        while (!kept.empty() && (static_cast<unsigned char>(kept.back()) & 0xC0u) == 0x80u) {
+            kept.pop_back();
+        }
+        if (!kept.empty()) kept.pop_back();
+    }
+    while (!kept.empty() && kept.back() == ' ') kept.pop_back();
+    return kept + "...";
+}
+
 }  // namespace pcf

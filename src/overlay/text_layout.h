@@ -52,4 +52,8 @@ std::vector<std::string> wrapText(FontFace face, float pixelSize, std::string_vi
                                   float maxWidth);
 std::vector<std::string> wrapText(GlyphAtlas& atlas, std::string_view utf8, float maxWidth);
 
+// One line of at most maxWidth: the text itself when it fits, else as much of it as fits
+// followed by "...".
+std::string elideText(FontFace face, float pixelSize, std::string_view utf8, float maxWidth);
+
 }  // namespace pcf
