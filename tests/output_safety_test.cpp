@@ -69,6 +69,18 @@ TEST_F(OutputSafetyTest, RenderWritesAllOutputsOrNone) {
     }
 }
 
+// A link the user made is theirs even when it points nowhere: refused, and still there.
+TEST_F(OutputSafetyTest, DanglingLinkIsNotTakenForAFreeName) {
+    fs::create_symlink("/nonexistent/pcfscope-target.png", mDir / "link.png");
+    auto r = runPcfscope(RENDER + "-o " + path("link.png") + " --raw /proc/pcfscope-raw");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    auto again = runPcfscope(RENDER + "-o " + path("link.png"));
+    EXPECT_EQ(again.exitCode, 2) << again.err;
+    EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(mDir / "link.png")));
+    fs::remove(mDir / "link.png");
+}
+
 TEST_F(OutputSafetyTest, TruthNeedsAWritableExr) {
     expectRefused("truth --scene pole --size 16x9 -o truth.png", "must end in .exr");
     expectRefused("truth --scene pole --size 16x9 -o /proc/truth.exr", "cannot write into /proc");

@@ -50,13 +50,13 @@ void OutputFiles::prepareDirectory(const std::string& option, const fs::path& ta
         throw UsageError(quoted(option, target) + ": " + at.string() + " is not a directory");
     }
     for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-        fs::create_directory(*it, ec);
+        bool created = fs::create_directory(*it, ec);
         if (ec || !fs::is_directory(*it)) {
             std::string why = ec ? ec.message() : "cannot create it";
             throw UsageError(quoted(option, target) + ": cannot create folder " + it->string() +
                              " (" + why + ")");
         }
-        mCreatedDirs.push_back(*it);
+        if (created) mCreatedDirs.push_back(*it);  // one that appeared meanwhile is not ours
     }
     // Access checks say yes to root everywhere; only a real file proves the folder takes one.
     fs::path probe = (dir.empty() ? fs::path(".") : dir) /
@@ -75,7 +75,8 @@ void OutputFiles::prepareDirectory(const std::string& option, const fs::path& ta
 void OutputFiles::add(const std::string& option, const fs::path& path) {
     if (path.empty()) throw UsageError(option + " needs a file name");
     std::error_code ec;
-    bool exists = fs::exists(path, ec);
+    // symlink_status: a link is the user's even when it points nowhere; never take it for free.
+    bool exists = fs::symlink_status(path, ec).type() != fs::file_type::not_found;
     if (exists && fs::is_directory(path, ec)) {
         throw UsageError(quoted(option, path) + " is a directory, not a file");
     }

@@ -266,9 +266,9 @@ std::string Session::stepText() const {
     std::string text = fillText(s.text, *mTrace, ctx);
     // Keys may have changed the state the words were written for; the numbers follow the live
     // state, the sentences cannot. Say so rather than let them disagree in silence.
-    LessonSettings written = s.settings;
-    written.pixel = mSettings.pixel;
-    if (!(written == mSettings)) {
+    // Compared as the status line words them: a kernel change under a method without one
+    // changes nothing the text talks about.
+    if (settingsSummary(s.settings) != settingsSummary(mSettings)) {
         auto compact = [](std::string t) {
             for (size_t at; (at = t.find("   ")) != std::string::npos;) t.replace(at, 3, ", ");
             return t;

@@ -30,9 +30,11 @@ namespace {
 std::string freeStem(const std::string& dir, const std::string& base) {
     std::error_code ec;
     std::string stem = (std::filesystem::path(dir) / base).string();
-    for (int k = 2; std::filesystem::exists(stem + ".png", ec) ||
-                    std::filesystem::exists(stem + ".json", ec);
-         ++k) {
+    auto taken = [&](const std::string& p) {  // a dangling link is taken too
+        return std::filesystem::symlink_status(p, ec).type() !=
+               std::filesystem::file_type::not_found;
+    };
+    for (int k = 2; taken(stem + ".png") || taken(stem + ".json"); ++k) {
         stem = (std::filesystem::path(dir) / (base + "-" + std::to_string(k))).string();
     }
     return stem;

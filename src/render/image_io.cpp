@@ -33,7 +33,10 @@ std::string tempPathFor(const std::string& path) {
         std::string temp = path + ".tmp-";
         for (int k = 0; k < 6; ++k) temp += LETTERS[pick(random)];
         std::error_code ec;
-        if (!std::filesystem::exists(temp, ec)) return temp;
+        if (std::filesystem::symlink_status(temp, ec).type() ==
+            std::filesystem::file_type::not_found) {
+            return temp;
+        }
     }
 }
 
