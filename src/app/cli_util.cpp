@@ -78,15 +78,22 @@ void requireRange(const std::string& option, float v, float lo, float hi) {
     }
 }
 
-void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, float radius) {
-    if (kernelGiven && (kernel < MIN_KERNEL || kernel > MAX_KERNEL)) {
-        throw UsageError("--kernel " + std::to_string(kernel) + " is out of range (" +
-                         std::to_string(MIN_KERNEL) + ".." + std::to_string(MAX_KERNEL) + ")");
+void requireIntRange(const std::string& option, int v, int lo, int hi) {
+    if (v < lo || v > hi) {
+        throw UsageError(option + " " + std::to_string(v) + " is out of range (" +
+                         std::to_string(lo) + ".." + std::to_string(hi) + ")");
     }
-    if (radiusGiven && !(std::isfinite(radius) && radius > 0.0f && radius <= MAX_POISSON_RADIUS)) {
-        std::ostringstream s;
-        s << "--radius " << radius << " is out of range (0, " << MAX_POISSON_RADIUS << "] texels";
-        throw UsageError(s.str());
+}
+
+void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, float radius) {
+    // The kernel's own checks, asked of a method that uses the value.
+    if (kernelGiven) {
+        if (auto why = validateParams(makeParams(PCF_NAIVE, kernel))) throw UsageError(*why);
+    }
+    if (radiusGiven) {
+        if (auto why = validateParams(makeParams(PCF_POISSON, MIN_KERNEL, radius))) {
+            throw UsageError(*why);
+        }
     }
 }
 

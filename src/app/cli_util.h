@@ -23,6 +23,8 @@ glm::ivec2 parseSize(const std::string& option, const std::string& text, int max
 glm::ivec2 parseIvec2(const std::string& option, const std::string& text);
 // Throws UsageError unless lo <= v <= hi and v is finite.
 void requireRange(const std::string& option, float v, float lo, float hi);
+// Throws UsageError ("--spp 0 is out of range (1..64)") unless lo <= v <= hi.
+void requireIntRange(const std::string& option, int v, int lo, int hi);
 
 // Range checks of --kernel and --radius when the user gave them, whether or not the method uses
 // them: a value no method accepts is a mistake worth a word, not something to ignore silently.

@@ -144,17 +144,10 @@ int runBenchCommand(const BenchCommandOptions& o) {
         throw UsageError("--chart-size " + o.chartSize + " is too small (64x64 at least)");
     }
     int spp = o.quick && !o.given("--spp") ? QUICK_TRUTH_SPP : o.spp;
-    if (spp < 1 || spp > MAX_TRUTH_SPP) {
-        throw UsageError("--spp " + std::to_string(o.spp) + " is out of range (1.." +
-                         std::to_string(MAX_TRUTH_SPP) + ")");
-    }
+    requireIntRange("--spp", spp, 1, MAX_TRUTH_SPP);
     if (!o.quick || o.given("--repeats")) options.gpuRepeats = o.repeats;
-    if (options.gpuRepeats < 1 || options.gpuRepeats > 1000) {
-        throw UsageError("--repeats " + std::to_string(o.repeats) + " is out of range (1..1000)");
-    }
-    if (o.threads < 0 || o.threads > 1024) {
-        throw UsageError("--threads " + std::to_string(o.threads) + " is out of range (0..1024)");
-    }
+    requireIntRange("--repeats", options.gpuRepeats, 1, 1000);
+    requireIntRange("--threads", o.threads, 0, 1024);
     std::optional<BiasMode> bias = biasModeFromName(o.bias);
     if (!bias) throw UsageError("unknown bias mode '" + o.bias + "' (known: none, constant)");
     options.base.bias = *bias;

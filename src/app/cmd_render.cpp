@@ -31,9 +31,7 @@ int runRender(const RenderCommandOptions& o) {
     RenderSettings settings = o.render.settings();
     Scene scene = o.render.loadScene();
     if (o.out.empty() && o.rawDir.empty()) throw UsageError("render needs -o FILE.png or --raw DIR");
-    if (o.timeRepeats < 0 || o.timeRepeats > 10000) {
-        throw UsageError("--time " + std::to_string(o.timeRepeats) + " is out of range (0..10000)");
-    }
+    requireIntRange("--time", o.timeRepeats, 0, 10000);
     OutputFiles outputs(o.force);
     if (!o.out.empty()) {
         requireExtension("-o", o.out, ".png");

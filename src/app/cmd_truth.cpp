@@ -32,13 +32,8 @@ int runTruth(const TruthCommandOptions& o) {
     sceneOptions.scene = o.scene;
     sceneOptions.sceneFile = o.sceneFile;
     glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE);
-    if (o.spp < 1 || o.spp > MAX_TRUTH_SPP) {
-        throw UsageError("--spp " + std::to_string(o.spp) + " is out of range (1.." +
-                         std::to_string(MAX_TRUTH_SPP) + ")");
-    }
-    if (o.threads < 0 || o.threads > 1024) {
-        throw UsageError("--threads " + std::to_string(o.threads) + " is out of range (0..1024)");
-    }
+    requireIntRange("--spp", o.spp, 1, MAX_TRUTH_SPP);
+    requireIntRange("--threads", o.threads, 0, 1024);
     if (o.scene.empty() && o.sceneFile.empty()) {
         throw UsageError("truth needs --scene PRESET or --scene-file FILE");
     }

@@ -35,10 +35,7 @@ int runView(const ViewCommandOptions& o) {
     v.presentation = o.presentation;
     v.force = o.force;
     v.benchFrames = o.benchFrames;
-    if (o.benchFrames < 0 || o.benchFrames > 10000) {
-        throw UsageError("--bench-frames " + std::to_string(o.benchFrames) +
-                         " is out of range (0..10000)");
-    }
+    requireIntRange("--bench-frames", o.benchFrames, 0, 10000);
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!display || !*display) && (!wayland || !*wayland)) {

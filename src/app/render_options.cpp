@@ -46,10 +46,7 @@ RenderSettings RenderOptions::settings() const {
     bool fromLesson = !lesson.empty();
     if (fromLesson) {
         Lesson l = parseLessonFile(resolveLesson(lesson));
-        if (lessonStep < 1 || lessonStep > static_cast<int>(l.steps.size())) {
-            throw UsageError("--step " + std::to_string(lessonStep) + " is out of range (1.." +
-                             std::to_string(l.steps.size()) + ")");
-        }
+        requireIntRange("--step", lessonStep, 1, static_cast<int>(l.steps.size()));
         s = renderSettingsFor(l.steps[static_cast<size_t>(lessonStep - 1)].settings, frame);
     }
     auto use = [&](const char* option) { return !fromLesson || given(option); };
@@ -85,11 +82,7 @@ RenderSettings RenderOptions::settings() const {
         requireRange("--polygon-offset units", s.polygonOffset.y, -1.0e6f, 1.0e6f);
     }
     if (use("--map-size")) {
-        if (mapSize < MIN_MAP_SIZE || mapSize > MAX_MAP_SIZE) {
-            throw UsageError("--map-size " + std::to_string(mapSize) + " is out of range (" +
-                             std::to_string(MIN_MAP_SIZE) + ".." + std::to_string(MAX_MAP_SIZE) +
-                             ")");
-        }
+        requireIntRange("--map-size", mapSize, MIN_MAP_SIZE, MAX_MAP_SIZE);
         s.mapSize = mapSize;
     }
     if (use("--depth-format")) {
