@@ -3,12 +3,19 @@
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <memory>
+
+#include "exr_header.h"
+#include "run_command.h"
 
 namespace pcf {
 namespace {
@@ -199,6 +206,47 @@ TEST_F(ImageIo, WriteReplacesAnExistingFileWhole) {
     writeExr(file, 3, 1, 1, std::vector<float>{0.75f, 1.0f, 0.0f}, {"Z"});
     EXPECT_EQ(readDepthImage(file).depths(), (std::vector<float>{0.75f, 1.0f, 0.0f}));
     EXPECT_EQ(listing(), std::vector<std::string>{"again.exr"});
+}
+
+// A header that claims more than MAX_DEPTH_IMAGE_SIDE is refused from the header: no 1.6 GB
+// allocation, no seconds spent (the file is a few hundred bytes; only its header lies).
+TEST_F(ImageIo, HugeHeadersAreRefusedBeforeAllocating) {
+    std::string file = path("huge.exr");
+    writeDepthImage(file, ShadowMap(16, 16, 0.5f));
+    ASSERT_TRUE(testutil::makeExrClaimSize(file, 20000));
+    auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(errorOf(file),
+              file + ": is 20000 x 20000 texels; a depth map is at most 16384 on a side");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+}
+
+TEST_F(ImageIo, NonRegularFilesAreRefusedWithoutBlocking) {
+    ASSERT_EQ(mkfifo(path("fifo.exr").c_str(), 0644), 0);
+    EXPECT_EQ(errorOf(path("fifo.exr")),
+              path("fifo.exr") + ": cannot read image (not a regular file)");
+    EXPECT_EQ(errorOf(mDir.string()), mDir.string() + ": cannot read image (it is a directory)");
+}
+
+// No time stamp in an EXR: the same data gives the same bytes, whenever written.
+TEST_F(ImageIo, ExrsCarryNoDateTime) {
+    writeExr(path("a.exr"), 2, 1, 1, std::vector<float>{0.25f, 0.5f}, {"Z"});
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path("a.exr"));
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().find_attribute("DateTime"), nullptr);
+    EXPECT_EQ(testutil::readAll(mDir / "a.exr").find("DateTime"), std::string::npos);
+}
+
+// A link as the output: the image goes to the file it points at, and the link stays.
+TEST_F(ImageIo, WritesThroughALink) {
+    fs::create_directory(mDir / "real");
+    fs::create_symlink("real/target.exr", mDir / "link.exr");
+    writeExr(path("link.exr"), 1, 1, 1, std::vector<float>{0.5f}, {"Z"});
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(mDir / "link.exr")));
+    EXPECT_EQ(readDepthImage(path("real/target.exr")).depths(), std::vector<float>{0.5f});
+    writeTextFile(path("link.exr"), "text");  // text writes too
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(mDir / "link.exr")));
+    EXPECT_EQ(testutil::readAll(mDir / "real/target.exr"), "text");
+    EXPECT_EQ(listing(), (std::vector<std::string>{"link.exr", "real"}));
 }
 
 TEST_F(ImageIo, FileExists) {

@@ -1,9 +1,13 @@
-// Every lesson in lessons/: it parses, teaches in 3 to 6 steps, and all its placeholders fill.
+// Every lesson in lessons/, however many: it parses, teaches in 3 to 6 steps, all its
+// placeholders fill, the files are numbered in teaching order, and the README lists no lesson
+// that is not there.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -24,16 +28,47 @@ std::vector<std::string> lessonFiles() {
     return files;
 }
 
-TEST(LessonFiles, ThereAreElevenInTeachingOrder) {
+// 01-..., 02-...: the names sort in teaching order, numbered from 01 with no gap and no
+// number twice, however many lessons there are.
+TEST(LessonFiles, NumberedContiguouslyFromOneInTeachingOrder) {
     std::vector<std::string> files = lessonFiles();
-    ASSERT_EQ(files.size(), 11u);
+    ASSERT_FALSE(files.empty());
     for (size_t i = 0; i < files.size(); ++i) {
         std::string stem = std::filesystem::path(files[i]).stem().string();
-        // 01-..., 02-...: the name sorts in the order the lessons are taught.
         char prefix[32];
         std::snprintf(prefix, sizeof prefix, "%02d-", static_cast<int>(i + 1));
         EXPECT_EQ(stem.substr(0, 3), prefix) << stem;
+        EXPECT_GT(stem.size(), 3u) << stem << ": a number and no name";
     }
+}
+
+// The README's numbered list of lessons (under "The viewer and the lessons") names lessons that
+// exist: item N is lesson NN-*.toml.
+TEST(LessonFiles, EveryLessonTheReadmeListsExists) {
+    std::ifstream readme(PCFSCOPE_SOURCE_DIR "/README.md");
+    ASSERT_TRUE(readme);
+    std::vector<std::string> files = lessonFiles();
+    bool inSection = false;
+    int listed = 0;
+    for (std::string line; std::getline(readme, line);) {
+        if (line.starts_with("### ")) inSection = line == "### The viewer and the lessons";
+        if (!inSection || line.empty() || !std::isdigit(static_cast<unsigned char>(line[0]))) {
+            continue;
+        }
+        size_t dot = line.find(". ");
+        if (dot == std::string::npos || dot > 3) continue;
+        int number = std::stoi(line.substr(0, dot));
+        char prefix[32];
+        std::snprintf(prefix, sizeof prefix, "%02d-", number);
+        bool found = std::any_of(files.begin(), files.end(), [&](const std::string& f) {
+            return std::filesystem::path(f).stem().string().starts_with(prefix);
+        });
+        EXPECT_TRUE(found) << "README lists lesson " << number << " (" << line << "), no " << prefix
+                           << "*.toml in lessons/";
+        ++listed;
+    }
+    EXPECT_GT(listed, 0)
+        << "no numbered lesson list found under \"### The viewer and the lessons\"";
 }
 
 TEST(LessonFiles, EveryLessonParsesWithThreeToSixSteps) {

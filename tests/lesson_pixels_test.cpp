@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/session.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
 #include "render/gl_context.h"
@@ -25,21 +26,6 @@ namespace {
 // a larger one.
 constexpr glm::ivec2 FRAME_SIZES[] = {{1280, 720}, {960, 540}, {768, 432}, {1536, 864}};
 
-RenderSettings renderSettings(const LessonSettings& s, glm::ivec2 frameSize) {
-    RenderSettings r;
-    r.method = s.method;
-    r.kernel = s.kernel;
-    r.radius = s.radius;
-    r.rotatePerPixel = s.rotate;
-    r.mapSize = s.mapSize;
-    r.depthFormat = depthFormatFromName(s.depthFormat).value();
-    r.bias = biasModeFromName(s.bias).value();
-    r.constantBias = s.constantBias;
-    r.shadowCull = cullModeFromName(s.cull).value();
-    r.frameSize = frameSize;
-    return r;
-}
-
 struct RenderedStep {
     Trace trace;
     float gpuVisibility;
@@ -53,7 +39,7 @@ std::vector<RenderedStep> renderLesson(const std::string& name, glm::ivec2 frame
     std::vector<RenderedStep> out;
     for (const LessonStep& step : lesson.steps) {
         const LessonSettings& s = step.settings;
-        renderer.render(renderSettings(s, frameSize));
+        renderer.render(renderSettingsFor(s, frameSize));
         std::vector<float> lightSpace = renderer.readLightSpace();
         std::vector<float> visibility = renderer.readVisibility();
         ShadowMap map = renderer.readShadowMap();

@@ -2,9 +2,13 @@
 // work, with one line and exit code 2, and nothing is left behind: no file, no folder.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include "run_command.h"
@@ -17,7 +21,7 @@ namespace fs = std::filesystem;
 using testutil::runPcfscope;
 
 class OutputSafetyTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override { mDir = testutil::makeTempDir("outputs"); }
     void TearDown() override {
         if (!HasFailure()) fs::remove_all(mDir);
@@ -40,6 +44,18 @@ protected:
         EXPECT_EQ(r.err.find("internal error"), std::string::npos) << args << "\n" << r.err;
         EXPECT_TRUE(leftovers().empty()) << args << ": left " << leftovers().front();
     }
+    // Refused with one line holding `expect` (exit 2), the folder's contents as they were.
+    void expectRefusedKeeping(const std::string& args, const std::string& expect) {
+        std::vector<std::string> before = leftovers();
+        std::sort(before.begin(), before.end());
+        auto r = runPcfscope(args, "cd " + mDir.string() + " && env");
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+        EXPECT_EQ(testutil::lineCount(r.err), 1) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find(expect), std::string::npos) << args << "\n" << r.err;
+        std::vector<std::string> after = leftovers();
+        std::sort(after.begin(), after.end());
+        EXPECT_EQ(after, before) << args;
+    }
     fs::path mDir;
 };
 
@@ -50,7 +66,8 @@ const std::string RENDER = "render --scene box-on-plane --size 160x90 ";
 TEST_F(OutputSafetyTest, RenderWritesAllOutputsOrNone) {
     expectRefused(RENDER + "-o new/deeper/frame.png --raw /proc/pcfscope-raw",
                   "--raw /proc/pcfscope-raw: cannot create folder");
-    expectRefused(RENDER + "-o /proc/pcfscope.png", "-o /proc/pcfscope.png: cannot write into /proc");
+    expectRefused(RENDER + "-o /proc/pcfscope.png",
+                  "-o /proc/pcfscope.png: cannot write into /proc");
     expectRefused(RENDER + "-o /dev/null/frame.png", "/dev/null is not a directory");
     expectRefused(RENDER + "-o frame.tif", "must end in .png");
     fs::create_directory(mDir / "dir.png");
@@ -64,7 +81,8 @@ TEST_F(OutputSafetyTest, RenderWritesAllOutputsOrNone) {
     auto ok = runPcfscope(RENDER + "-o " + path("a/b/frame.png") + " --raw " + path("raw/x/"));
     ASSERT_EQ(ok.exitCode, 0) << ok.err;
     EXPECT_TRUE(fs::is_regular_file(mDir / "a/b/frame.png"));
-    for (const char* name : {"shadowmap.exr", "lightspace.exr", "visibility.exr", "positions.exr"}) {
+    for (const char* name :
+         {"shadowmap.exr", "lightspace.exr", "visibility.exr", "positions.exr"}) {
         EXPECT_TRUE(fs::is_regular_file(mDir / "raw/x" / name)) << name;
     }
 }
@@ -105,6 +123,61 @@ TEST_F(OutputSafetyTest, ExportAndBenchRefuseUnwritableFolders) {
     auto r = runPcfscope("export 1 --steps 1 -o " + path("file"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("is not a directory"), std::string::npos) << r.err;
+}
+
+// -f never lets an output overwrite what the command reads, by its own name or another (a link).
+TEST_F(OutputSafetyTest, AnOutputMayNotBeAnInputEvenWithForce) {
+    fs::copy_file(PCFSCOPE_SOURCE_DIR "/tests/fuzz/corpus/scene/wall.toml", mDir / "s.png");
+    fs::copy_file(PCFSCOPE_SOURCE_DIR "/tests/fuzz/corpus/scene/wall.toml", mDir / "s.exr");
+    fs::create_symlink("s.png", mDir / "link.png");
+    const std::string scene = testutil::readAll(mDir / "s.png");
+    const std::string args = "render --size 160x90 --scene-file s.png -f -o ";
+    expectRefusedKeeping(args + "s.png", "-o s.png is the file --scene-file s.png reads");
+    expectRefusedKeeping(args + "link.png", "-o link.png is the file --scene-file s.png reads");
+    expectRefusedKeeping("truth --size 16x9 --spp 2 --scene-file s.exr -f -o s.exr",
+                         "-o s.exr is the file --scene-file s.exr reads");
+    EXPECT_EQ(testutil::readAll(mDir / "s.png"), scene);
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(mDir / "link.png")));
+}
+
+// An output that is a link is written through: the file it points at gets the image, the link
+// stays a link (the user made it).
+TEST_F(OutputSafetyTest, ASymlinkedOutputIsWrittenThrough) {
+    fs::create_directory(mDir / "store");
+    std::ofstream(mDir / "store/real.png") << "old";
+    fs::create_symlink("store/real.png", mDir / "link.png");
+    auto r = runPcfscope(RENDER + "-f -o " + path("link.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(mDir / "link.png")));
+    EXPECT_EQ(testutil::readAll(mDir / "store/real.png").substr(0, 4), "\x89PNG");
+    // Nothing else appeared: no temporary file left beside the link or the target.
+    EXPECT_EQ(leftovers().size(), 3u);  // link.png, store, store/real.png
+}
+
+// Every output is the same bytes on every run: EXRs carry no time stamp (OpenImageIO's
+// DateTime), PNGs none either. A second apart, so a stamp would differ.
+TEST_F(OutputSafetyTest, EveryOutputIsByteIdenticalRunToRun) {
+    const std::string truth = "truth --scene pole --size 32x18 --spp 2 -o ";
+    for (const char* run : {"1", "2"}) {
+        if (std::string(run) == "2") std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+        auto r = runPcfscope(RENDER + "-o " + path(std::string("f") + run + ".png") + " --raw " +
+                             path(std::string("raw") + run));
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        auto t = runPcfscope(truth + path(std::string("t") + run + ".exr"));
+        ASSERT_EQ(t.exitCode, 0) << t.err;
+    }
+    std::vector<std::pair<std::string, std::string>> pairs = {{"f1.png", "f2.png"},
+                                                              {"t1.exr", "t2.exr"}};
+    for (const char* name :
+         {"shadowmap.exr", "lightspace.exr", "visibility.exr", "positions.exr"}) {
+        pairs.push_back({std::string("raw1/") + name, std::string("raw2/") + name});
+    }
+    for (const auto& [a, b] : pairs) {
+        std::string bytes = testutil::readAll(mDir / a);
+        EXPECT_FALSE(bytes.empty()) << a;
+        EXPECT_EQ(bytes, testutil::readAll(mDir / b)) << a << " and " << b << " differ";
+        EXPECT_EQ(bytes.find("DateTime"), std::string::npos) << a << " carries a time stamp";
+    }
 }
 
 // A screenshot that cannot be written is refused before the replayed keys run: the E key's

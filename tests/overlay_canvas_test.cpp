@@ -2,6 +2,7 @@
 // determinism and batching. Pixels are read back with rows top-down, like the canvas counts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -12,6 +13,7 @@
 #include "render/gl_context.h"
 #include "render/gl_objects.h"
 #include "render/image_io.h"
+#include "image_read.h"
 
 namespace pcf {
 namespace {
@@ -596,12 +598,20 @@ TEST_F(OverlayCanvas, SameFrameIsByteIdenticalAcrossCanvasesAndContexts) {
     EXPECT_EQ(first.rgba, other.rgba);
 }
 
-TEST_F(OverlayCanvas, WritesADemoPicture) {
+// The demo picture written as a PNG reads back as the very pixels the canvas drew (rows and
+// alpha included): what an exported frame shows is what was on screen.
+TEST_F(OverlayCanvas, WritesADemoPictureThatReadsBackUnchanged) {
     const glm::ivec2 size(640, 400);
     Image image = render(size.x, size.y, [&](Canvas& c) { drawDemo(c, size); });
     std::string path = ::testing::TempDir() + "overlay_demo.png";
     writePngRgba8(path, size.x, size.y, image.rgba);
-    EXPECT_TRUE(fileExists(path));
+    ImageSize written = readImageSize(path);
+    EXPECT_EQ(written.width, size.x);
+    EXPECT_EQ(written.height, size.y);
+    ASSERT_EQ(written.channels, 4);
+    std::vector<unsigned char> back = readImageBytes(path, 4);
+    ASSERT_EQ(back.size(), image.rgba.size());
+    EXPECT_TRUE(std::equal(back.begin(), back.end(), image.rgba.begin()));
     std::printf("overlay demo: %s\n", path.c_str());
 }
 

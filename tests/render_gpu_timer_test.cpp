@@ -2,6 +2,10 @@
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include "render/gl_context.h"
 #include "render/gl_objects.h"
 #include "render/gpu_timer.h"
@@ -43,13 +47,15 @@ TEST(GpuTimer, TimesRealWorkWithTheRightTimer) {
     ASSERT_EQ(r.samplesMs.size(), 5u);
     for (double s : r.samplesMs) EXPECT_GT(s, 0.0);
     EXPECT_GT(r.medianMs, 0.0);
-    EXPECT_EQ(r.medianMs, medianOf(r.samplesMs));
-    // llvmpipe runs the work at glFinish, so only the wall clock sees it (DESIGN.md 8).
-    if (isSoftwareRenderer(context->renderer())) {
-        EXPECT_EQ(r.timer, "glFinish+steady_clock") << context->renderer();
-    } else {
-        EXPECT_EQ(r.timer, "GL_TIME_ELAPSED") << context->renderer();
-    }
+    // The median of five samples is the third smallest.
+    std::vector<double> sorted = r.samplesMs;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(r.medianMs, sorted[2]);
+    // llvmpipe runs the work at glFinish, so only the wall clock sees it (DESIGN.md 8); a GPU's
+    // own timer query is honest there. The renderers this suite runs on, by name:
+    const std::string& name = context->renderer();
+    bool software = name.starts_with("llvmpipe") || name.starts_with("softpipe");
+    EXPECT_EQ(r.timer, software ? "glFinish+steady_clock" : "GL_TIME_ELAPSED") << name;
     std::printf("%s: median %.3f ms over %zu (%s)\n", context->renderer().c_str(), r.medianMs,
                 r.samplesMs.size(), r.timer.c_str());
     glBindVertexArray(0);

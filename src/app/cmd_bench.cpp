@@ -144,7 +144,7 @@ int runBenchCommand(const BenchCommandOptions& o) {
         throw UsageError("--chart-size " + o.chartSize + " is too small (64x64 at least)");
     }
     int spp = o.quick && !o.given("--spp") ? QUICK_TRUTH_SPP : o.spp;
-    requireIntRange("--spp", spp, 1, MAX_TRUTH_SPP);
+    requireIntRange("--spp", spp, 2, MAX_TRUTH_SPP);  // 1: an all-or-nothing truth, no edge band
     if (!o.quick || o.given("--repeats")) options.gpuRepeats = o.repeats;
     requireIntRange("--repeats", options.gpuRepeats, 1, 1000);
     requireIntRange("--threads", o.threads, 0, 1024);

@@ -58,6 +58,8 @@ int runExport(const ExportOptions& o) {
     glm::ivec2 steps = parseSteps(o.steps, static_cast<int>(lesson.steps.size()));
     std::string dir = o.outDir.empty() ? "pcfscope-frames/" + lesson.name : o.outDir;
     OutputFiles outputs(o.force);
+    outputs.addInput("LESSON", path);
+    for (const LessonStep& step : lesson.steps) outputs.addInput("chart", step.chart);
     ExportPlan plan = planExport(outputs, dir, lesson.name, steps);
     exportFrames(path, plan, size, o.presentation, true);
     outputs.commit();

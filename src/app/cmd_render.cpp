@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
+#include "app/session.h"
 #include "kernel/methods.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
@@ -33,6 +34,8 @@ int runRender(const RenderCommandOptions& o) {
     if (o.out.empty() && o.rawDir.empty()) throw UsageError("render needs -o FILE.png or --raw DIR");
     requireIntRange("--time", o.timeRepeats, 0, 10000);
     OutputFiles outputs(o.force);
+    outputs.addInput("--scene-file", o.render.sceneFile);
+    if (!o.render.lesson.empty()) outputs.addInput("--lesson", resolveLesson(o.render.lesson));
     if (!o.out.empty()) {
         requireExtension("-o", o.out, ".png");
         outputs.add("-o", o.out);

@@ -44,6 +44,7 @@ int runTruth(const TruthCommandOptions& o) {
     requireExtension("-o", o.out, ".exr");
     Scene scene = sceneOptions.loadScene();
     OutputFiles outputs(o.force);
+    outputs.addInput("--scene-file", o.sceneFile);
     outputs.add("-o", o.out);
 
     GroundTruthOptions options;

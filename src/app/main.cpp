@@ -1,35 +1,51 @@
 // pcfscope: the command line (DESIGN.md section 6).
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <string>
 
-#include <CLI/CLI.hpp>
-
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/output_files.h"
 #include "render/image_io.h"
 #include "scene/input_error.h"
 
 namespace {
 
+// One line whatever the message holds: a newline in an option value or a file name is written
+// as \n (scene/input_error.h oneLine).
 int fail(const std::string& message) {
-    std::fprintf(stderr, "pcfscope: %s\n", message.c_str());
+    std::fprintf(stderr, "pcfscope: %s\n", pcf::oneLine(message).c_str());
     return 2;
+}
+
+// One rule for every option: a value given empty (`--size ""`, `-o ""`) is refused, never read
+// as "the default". Flags take no value and are not asked.
+void refuseEmptyValues(const CLI::App& app) {
+    for (const CLI::Option* option : app.get_options()) {
+        if (option->get_type_size() == 0 || option->count() == 0) continue;
+        for (const std::string& value : option->results()) {
+            if (value.empty()) {
+                std::string name = option->get_name();
+                if (name.empty()) name = option->get_single_name();
+                throw pcf::UsageError(name + " needs a value; an empty one is refused");
+            }
+        }
+    }
+    for (const CLI::App* sub : app.get_subcommands()) refuseEmptyValues(*sub);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Before any thread starts (app/output_files.h): Ctrl-C leaves no half output.
+    pcf::installInterruptCleanup();
     CLI::App app{"pcfscope: step through Percentage Closer Filtering, one shadow lookup at a time"};
     app.require_subcommand(0, 1);
     const pcf::Command commands[] = {
-        pcf::addMethodsCommand(app),
-        pcf::addTraceCommand(app),
-        pcf::addRenderCommand(app),
-        pcf::addTruthCommand(app),
-        pcf::addBenchCommand(app),
-        pcf::addViewCommand(app),
+        pcf::addMethodsCommand(app), pcf::addTraceCommand(app), pcf::addRenderCommand(app),
+        pcf::addTruthCommand(app),   pcf::addBenchCommand(app), pcf::addViewCommand(app),
         pcf::addExportCommand(app),
     };
 
@@ -44,6 +60,7 @@ int main(int argc, char** argv) {
     }
 
     try {
+        refuseEmptyValues(app);
         for (const pcf::Command& c : commands) {
             if (c.sub->parsed()) return c.run();
         }
@@ -59,7 +76,7 @@ int main(int argc, char** argv) {
         return fail(e.path1().empty() ? e.code().message()
                                       : e.path1().string() + ": " + e.code().message());
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "pcfscope: internal error: %s\n", e.what());
+        std::fprintf(stderr, "pcfscope: internal error: %s\n", pcf::oneLine(e.what()).c_str());
         return 1;
     }
 }

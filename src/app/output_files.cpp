@@ -1,14 +1,20 @@
 #include "app/output_files.h"
 
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <mutex>
+#include <thread>
 
 #include "app/cli_util.h"
+#include "render/image_io.h"
 
 namespace pcf {
 
@@ -20,14 +26,74 @@ std::string quoted(const std::string& option, const fs::path& path) {
     return option.empty() ? path.string() : option + " " + path.string();
 }
 
+// The live sets, for the interrupt cleanup. Guards each set's lists too: the cleanup thread
+// reads them while the command's thread may be adding to them.
+std::mutex& registryMutex() {
+    static std::mutex m;
+    return m;
+}
+
+std::vector<OutputFiles*>& registry() {
+    static std::vector<OutputFiles*> sets;
+    return sets;
+}
+
+// Scratch folders a command stages its outputs in: ".pcfscope-<what>-<pid>" (cmd_bench's).
+bool isOurScratch(const fs::path& p) {
+    std::string name = p.filename().string();
+    // Appended, not "-" + ...: GCC 12 at -O3 warns (-Wrestrict, a false positive) on that.
+    std::string suffix = "-";
+    suffix += std::to_string(getpid());
+    return name.starts_with(".pcfscope-") && name.ends_with(suffix);
+}
+
 }  // namespace
 
+OutputFiles::OutputFiles(bool force) : mForce(force) {
+    std::lock_guard lock(registryMutex());
+    registry().push_back(this);
+}
+
 OutputFiles::~OutputFiles() {
-    if (mCommitted) return;
+    {
+        std::lock_guard lock(registryMutex());
+        std::erase(registry(), this);
+    }
+    if (!mCommitted) takeBack();
+}
+
+void OutputFiles::commit() {
+    std::lock_guard lock(registryMutex());
+    mCommitted = true;
+}
+
+void OutputFiles::takeBack() {
     std::error_code ec;
     for (const fs::path& p : mNewFiles) fs::remove(p, ec);
+    for (const fs::path& dir : mDirs) {
+        for (const auto& entry : fs::directory_iterator(dir, ec)) {
+            if (isOurScratch(entry.path())) fs::remove_all(entry.path(), ec);
+        }
+    }
     for (auto it = mCreatedDirs.rbegin(); it != mCreatedDirs.rend(); ++it) {
         fs::remove(*it, ec);  // only removes it when empty
+    }
+}
+
+void OutputFiles::addInput(const std::string& option, const fs::path& path) {
+    std::lock_guard lock(registryMutex());
+    mInputs.emplace_back(option, path);
+}
+
+void OutputFiles::requireNotInput(const std::string& outputOption, const fs::path& output,
+                                  const std::string& inputOption, const fs::path& input) {
+    std::error_code ec;
+    if (input.empty() || output.empty()) return;
+    // equivalent: the same file by any name (a link, a hard link, ./x). Only files that exist
+    // can be the same; a new output is never an input.
+    if (fs::equivalent(output, input, ec) && !ec) {
+        throw UsageError(quoted(outputOption, output) + " is the file " + inputOption + " " +
+                         input.string() + " reads; write the output elsewhere");
     }
 }
 
@@ -59,8 +125,8 @@ void OutputFiles::prepareDirectory(const std::string& option, const fs::path& ta
         if (created) mCreatedDirs.push_back(*it);  // one that appeared meanwhile is not ours
     }
     // Access checks say yes to root everywhere; only a real file proves the folder takes one.
-    fs::path probe = (dir.empty() ? fs::path(".") : dir) /
-                     (".pcfscope-probe-" + std::to_string(getpid()));
+    fs::path probe =
+        (dir.empty() ? fs::path(".") : dir) / (".pcfscope-probe-" + std::to_string(getpid()));
     int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
     if (fd < 0) {
         int err = errno;
@@ -74,11 +140,15 @@ void OutputFiles::prepareDirectory(const std::string& option, const fs::path& ta
 
 void OutputFiles::add(const std::string& option, const fs::path& path) {
     if (path.empty()) throw UsageError(option + " needs a file name");
+    std::lock_guard lock(registryMutex());
     std::error_code ec;
     // symlink_status: a link is the user's even when it points nowhere; never take it for free.
     bool exists = fs::symlink_status(path, ec).type() != fs::file_type::not_found;
     if (exists && fs::is_directory(path, ec)) {
         throw UsageError(quoted(option, path) + " is a directory, not a file");
+    }
+    for (const auto& [inputOption, input] : mInputs) {
+        requireNotInput(option, path, inputOption, input);
     }
     if (exists && !mForce) {
         throw UsageError(quoted(option, path) + " already exists; pass --force to overwrite it");
@@ -89,11 +159,13 @@ void OutputFiles::add(const std::string& option, const fs::path& path) {
 
 void OutputFiles::addDirectory(const std::string& option, const fs::path& dir) {
     if (dir.empty()) throw UsageError(option + " needs a directory");
+    std::lock_guard lock(registryMutex());
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
         throw UsageError(quoted(option, dir) + " is not a directory");
     }
     prepareDirectory(option, dir, dir);
+    mDirs.push_back(dir);
 }
 
 void requireExtension(const std::string& option, const fs::path& path,
@@ -104,6 +176,35 @@ void requireExtension(const std::string& option, const fs::path& path,
     if (ext != extension) {
         throw UsageError(quoted(option, path) + ": the file name must end in " + extension);
     }
+}
+
+void installInterruptCleanup() {
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    // Blocked here, before any thread exists, so every thread (GL drivers' and the ground
+    // truth's included) inherits the mask and only the waiter below ever sees these signals.
+    pthread_sigmask(SIG_BLOCK, &set, nullptr);
+    std::thread([set] {
+        int sig = 0;
+        while (sigwait(&set, &sig) != 0) {
+        }
+        // No write is half done once the gate is ours, and none starts after: the command
+        // thread waits at the gate until the process ends.
+        std::unique_lock gate(outputWriteGate());
+        std::lock_guard lock(registryMutex());
+        bool removed = false;
+        for (OutputFiles* files : registry()) {
+            if (files->mCommitted) continue;
+            removed = removed || !files->mNewFiles.empty() || !files->mCreatedDirs.empty();
+            files->takeBack();
+        }
+        std::fprintf(stderr, "pcfscope: interrupted (%s)%s\n", sig == SIGINT ? "SIGINT" : "SIGTERM",
+                     removed ? "; removed the files this command had written" : "");
+        std::fflush(stderr);
+        _exit(128 + sig);
+    }).detach();
 }
 
 }  // namespace pcf

@@ -4,14 +4,19 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pcf {
 
+void installInterruptCleanup();
+
+// Every live OutputFiles is known to the interrupt cleanup (installInterruptCleanup below), so
+// Ctrl-C takes back what an error would have taken back.
 class OutputFiles {
-public:
+  public:
     // force: files that exist may be overwritten (otherwise they are refused).
-    explicit OutputFiles(bool force) : mForce(force) {}
+    explicit OutputFiles(bool force);
     ~OutputFiles();
     OutputFiles(const OutputFiles&) = delete;
     OutputFiles& operator=(const OutputFiles&) = delete;
@@ -24,10 +29,28 @@ public:
     // The same for a directory the command writes into (created now if missing).
     void addDirectory(const std::string& option, const std::filesystem::path& dir);
 
-    // The command succeeded: keep everything.
-    void commit() { mCommitted = true; }
+    // Records a file the command reads (call before add): add() then refuses an output that is this
+    // file (see requireNotInput), --force or not.
+    void addInput(const std::string& option, const std::filesystem::path& path);
 
-private:
+    // Refuses (UsageError) when `output` is `input` or the same file by another name (a link,
+    // a hard link, ./x): the command would overwrite what it reads, --force or not. Inputs
+    // that do not exist are skipped (their own check reports them).
+    static void requireNotInput(const std::string& outputOption,
+                                const std::filesystem::path& output, const std::string& inputOption,
+                                const std::filesystem::path& input);
+
+    // The command succeeded: keep everything.
+    void commit();
+
+    // Removes what this set created (files, then its folders, then scratch folders named
+    // ".pcfscope-*-PID" of this process inside them). Called by the destructor unless committed,
+    // and by the interrupt cleanup.
+    void takeBack();
+
+  private:
+    friend void installInterruptCleanup();
+
     void prepareDirectory(const std::string& option, const std::filesystem::path& target,
                           const std::filesystem::path& dir);
 
@@ -35,7 +58,17 @@ private:
     bool mCommitted = false;
     std::vector<std::filesystem::path> mNewFiles;     // did not exist when added
     std::vector<std::filesystem::path> mCreatedDirs;  // made by us, parents first
+    std::vector<std::pair<std::string, std::filesystem::path>> mInputs;
+    std::vector<std::filesystem::path> mDirs;  // folders written into (scratch may be there)
 };
+
+// Ctrl-C (SIGINT) and SIGTERM leave no half output. Called once by main before any thread
+// starts: both signals are blocked in every thread and one thread waits for them. On a signal it
+// takes image_io's write gate exclusively (so no image or text write is half done and no
+// temporary file exists), takes back every OutputFiles not yet committed, prints one line and
+// exits with 128 + the signal's number: 130 for SIGINT, 143 for SIGTERM (the shell's
+// convention). Commands need no checks of their own.
+void installInterruptCleanup();
 
 // Throws UsageError unless `path` ends in `extension` (".png", ".exr"; any case): the file's
 // name should say what is in it.

@@ -12,6 +12,7 @@
 #include "kernel/methods.h"
 #include "lesson/lesson_text.h"
 #include "scene/input_error.h"
+#include "scene/input_file.h"
 
 namespace pcf {
 
@@ -93,11 +94,13 @@ Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presen
 namespace {
 
 std::vector<BenchRow> readChartRows(const std::string& csvPath) {
-    std::ifstream file(csvPath, std::ios::binary);
-    std::stringstream text;
-    text << file.rdbuf();
-    if (!file) throw InputError(csvPath, 0, "cannot open file");
-    return parseBenchCsv(text.str(), csvPath);
+    std::vector<BenchRow> rows = parseBenchCsv(readInputFile(csvPath), csvPath);
+    if (rows.size() > MAX_CHART_ROWS) {
+        throw InputError(csvPath, 0,
+                         std::to_string(rows.size()) + " rows; a chart shows at most " +
+                             std::to_string(MAX_CHART_ROWS));
+    }
+    return rows;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // writes it to a PNG. Same code, same pixels.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,6 +31,10 @@ std::string resolveLesson(const std::string& nameOrPath);
 // Parses a lesson and reads every bench.csv its steps chart, so that a broken chart is reported
 // at its lesson line before anything is drawn. Throws InputError (file:line) or UsageError.
 Lesson loadLessonChecked(const std::string& path);
+
+// A chart step draws one point per bench.csv row; a bench of every method, kernel and map size
+// has a few hundred. More is refused with one line (a 50,000-row chart took 80 s and 2.3 GB).
+constexpr std::size_t MAX_CHART_ROWS = 2000;
 
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
 

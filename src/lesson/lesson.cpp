@@ -15,6 +15,7 @@
 #include "kernel/trace.h"
 #include "lesson/lesson_text.h"
 #include "scene/presets.h"
+#include "scene/input_file.h"
 #include "scene/scene_file.h"
 
 namespace pcf {
@@ -89,6 +90,7 @@ class LessonParser {
         lesson.name = std::filesystem::path(mSource).stem().string();
         lesson.sourcePath = mSource;
         lesson.title = requireText(root, "title", "lesson", root);
+        checkLength(*root.get("title"), "lesson title", lesson.title, MAX_TITLE_CHARS);
         lesson.scene = readScene(root);
 
         LessonSettings state;
@@ -113,6 +115,10 @@ class LessonParser {
                  "step must be an array of tables ([[step]]), got " +
                      (steps ? std::string("an array of other values") : typeName(*stepsNode)));
         }
+        if (steps->size() > static_cast<size_t>(MAX_LESSON_STEPS)) {
+            fail(*stepsNode, "lesson has " + std::to_string(steps->size()) +
+                                 " steps; the limit is " + std::to_string(MAX_LESSON_STEPS));
+        }
         for (size_t i = 0; i < steps->size(); ++i) {
             const toml::table& table = *steps->get(i)->as_table();
             std::string what = "step " + std::to_string(i + 1);
@@ -122,6 +128,8 @@ class LessonParser {
             step.line = lineOf(table);
             step.title = requireText(table, "title", what, table);
             step.text = requireText(table, "text", what, table);
+            checkLength(*table.get("title"), what + " title", step.title, MAX_TITLE_CHARS);
+            checkLength(*table.get("text"), what + " text", step.text, MAX_STEP_TEXT_CHARS);
             if (table.get("chart")) {
                 std::string chart = requireText(table, "chart", what, table);
                 std::filesystem::path p = std::filesystem::path(mSource).parent_path() / chart;
@@ -142,6 +150,17 @@ class LessonParser {
     }
 
   private:
+    // Characters as a reader counts them: UTF-8 code points (continuation bytes not counted).
+    void checkLength(const toml::node& node, const std::string& what, const std::string& text,
+                     size_t limit) const {
+        size_t chars = 0;
+        for (char c : text) chars += (static_cast<unsigned char>(c) & 0xC0) != 0x80 ? 1 : 0;
+        if (chars > limit) {
+            fail(node, what + " is " + std::to_string(chars) + " characters; the limit is " +
+                           std::to_string(limit));
+        }
+    }
+
     [[noreturn]] void fail(const toml::node& node, const std::string& problem) const {
         throw InputError(mSource, lineOf(node), problem);
     }
@@ -443,15 +462,7 @@ PcfParams LessonSettings::pcfParams(glm::ivec2 framePixel, glm::ivec2 frameSize)
 }
 
 Lesson parseLessonFile(const std::string& path) {
-    if (std::filesystem::is_directory(path)) {
-        throw InputError(path, 0, "cannot open file (it is a directory)");
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, 0, "cannot open file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    std::string content = text.str();
-    return parseLessonString(content, path);
+    return parseLessonString(readInputFile(path), path);
 }
 
 Lesson parseLessonString(std::string_view text, const std::string& sourceName) {

@@ -50,6 +50,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -105,6 +106,13 @@ struct LessonStep {
     std::string chart;
     int chartLine = 0;  // the line of the `chart` key
 };
+
+// What a lesson may hold; more is refused with one line naming the limit. The lessons that ship
+// use a tenth of each (titles ~35 characters, texts ~800, 6 steps); the limits keep a file that
+// is wrong by mistake (or by malice) from costing minutes and gigabytes to lay out.
+constexpr int MAX_LESSON_STEPS = 32;
+constexpr std::size_t MAX_TITLE_CHARS = 120;      // the lesson's title and each step's, in UTF-8
+constexpr std::size_t MAX_STEP_TEXT_CHARS = 4000;  // characters (code points), not bytes
 
 struct Lesson {
     std::string name;  // the file's stem, e.g. "03-bilinear-lerp"

@@ -9,16 +9,17 @@
 #include <random>
 #include <system_error>
 
+#include "scene/input_error.h"
+
 namespace pcf {
 
 namespace {
 
-// OIIO's messages can run over several lines; ours are one line.
+// OIIO's messages can run over several lines (and quote a path with a newline in it); ours are
+// one line: trailing line ends dropped, the rest escaped (oneLine), nothing cut.
 std::string firstLine(std::string s) {
-    size_t end = s.find('\n');
-    if (end != std::string::npos) s.resize(end);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
-    return s.empty() ? "unknown error" : s;
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\r' || s.back() == '\n')) s.pop_back();
+    return s.empty() ? "unknown error" : oneLine(s);
 }
 
 // PATH.tmp-XXXXXX next to PATH (same directory, so the rename is atomic). Not mkstemp: that
@@ -40,25 +41,43 @@ std::string tempPathFor(const std::string& path) {
     }
 }
 
+// An output that is a symbolic link is written through: the file it points at is replaced and
+// the link stays (a link the user made is theirs). Relative targets are taken from the link's
+// folder, as the kernel does; a loop of links gives up after 40, as the kernel does.
+std::string resolveLinks(const std::string& path) {
+    namespace fs = std::filesystem;
+    fs::path at(path);
+    std::error_code ec;
+    for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(at, ec)); ++hops) {
+        fs::path target = fs::read_symlink(at, ec);
+        if (ec) break;
+        at = target.is_absolute() ? target : at.parent_path() / target;
+    }
+    return at.string();
+}
+
 // Writes through a temporary file and renames it over `path`. The plugin is chosen from the
 // final path's extension: the temporary name has none OIIO knows.
 void writeImageAtomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
                           const void* data) {
+    std::shared_lock gate(outputWriteGate());
     std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
     if (!out) throw ImageError(path + ": cannot write image (" + firstLine(OIIO::geterror()) + ")");
-    std::string temp = tempPathFor(path);
+    const std::string target = resolveLinks(path);
+    std::string temp = tempPathFor(target);
     std::string reason;
     if (!out->open(temp, spec) || !out->write_image(type, data) || !out->close()) {
-        reason = firstLine(out->geterror());
+        reason = out->geterror();
         // The temporary name is ours, not the user's: report the path they asked for.
         for (size_t at; (at = reason.find(temp)) != std::string::npos;) {
             reason.replace(at, temp.size(), path);
         }
+        reason = firstLine(reason);
     }
     out.reset();
     std::error_code ec;
     if (reason.empty()) {
-        std::filesystem::rename(temp, path, ec);
+        std::filesystem::rename(temp, target, ec);
         if (ec) reason = ec.message();
     }
     if (!reason.empty()) {
@@ -69,8 +88,15 @@ void writeImageAtomically(const std::string& path, const OIIO::ImageSpec& spec, 
 
 }  // namespace
 
+std::shared_mutex& outputWriteGate() {
+    static std::shared_mutex gate;
+    return gate;
+}
+
 void writeTextFile(const std::string& path, const std::string& text) {
-    std::string temp = tempPathFor(path);
+    std::shared_lock gate(outputWriteGate());
+    const std::string target = resolveLinks(path);
+    std::string temp = tempPathFor(target);
     std::error_code ec;
     {
         std::ofstream f(temp, std::ios::binary | std::ios::trunc);
@@ -81,9 +107,10 @@ void writeTextFile(const std::string& path, const std::string& text) {
             throw ImageError(path + ": cannot write file");
         }
     }
-    std::filesystem::rename(temp, path, ec);
+    std::filesystem::rename(temp, target, ec);
     if (ec) {
-        std::filesystem::remove(temp, ec);
+        std::error_code ignored;
+        std::filesystem::remove(temp, ignored);
         throw ImageError(path + ": cannot write file (" + ec.message() + ")");
     }
 }
@@ -124,6 +151,9 @@ void writeExr(const std::string& path, int width, int height, int channels,
     }
     checkSize(path, width, height, data.size(), static_cast<size_t>(channels));
     OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+    // OIIO stamps "DateTime" (the time of writing) into every EXR unless told otherwise: with
+    // it two runs of the same command give different bytes. An empty value writes no header.
+    spec.attribute("DateTime", "");
     spec.channelnames = channelNames;
     spec.alpha_channel = -1;
     spec.z_channel = -1;
@@ -139,6 +169,16 @@ void writeDepthImage(const std::string& path, const ShadowMap& map) {
 }
 
 ShadowMap readDepthImage(const std::string& path) {
+    // A FIFO or device would block OIIO forever (or never end): only regular files, which is
+    // what a depth map written by pcfscope or a paint program is.
+    std::error_code ec;
+    std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+        throw ImageError(
+            path + ": cannot read image (" +
+            (std::filesystem::is_directory(status) ? "it is a directory" : "not a regular file") +
+            ")");
+    }
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
     if (!in) throw ImageError(path + ": cannot read image (" + firstLine(OIIO::geterror()) + ")");
     const OIIO::ImageSpec& spec = in->spec();
@@ -154,6 +194,11 @@ ShadowMap readDepthImage(const std::string& path) {
     }
     if (spec.deep || spec.width <= 0 || spec.height <= 0 || spec.depth > 1) {
         throw ImageError(path + ": cannot read image (not a flat 2D image)");
+    }
+    if (spec.width > MAX_DEPTH_IMAGE_SIDE || spec.height > MAX_DEPTH_IMAGE_SIDE) {
+        throw ImageError(path + ": is " + std::to_string(spec.width) + " x " +
+                         std::to_string(spec.height) + " texels; a depth map is at most " +
+                         std::to_string(MAX_DEPTH_IMAGE_SIDE) + " on a side");
     }
     std::vector<float> depths(static_cast<size_t>(spec.width) * spec.height);
     // OIIO hands scanlines in file order, first scanline first: that is ShadowMap's row 0.

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <shared_mutex>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -41,12 +42,24 @@ void writeExr(const std::string& path, int width, int height, int channels,
 // readDepthImage reads back unchanged.
 void writeDepthImage(const std::string& path, const ShadowMap& map);
 
+// The largest side of a depth map readDepthImage accepts: GL's common GL_MAX_TEXTURE_SIZE (what
+// llvmpipe and most GPUs report), 1 GiB of floats at most. Checked on the file's header, before
+// a texel is allocated, so a small file claiming a huge image costs nothing.
+constexpr int MAX_DEPTH_IMAGE_SIDE = 16384;
+
 // A depth map: one channel of half or float, every texel in [0,1]. Row 0 = first scanline.
-// Throws ImageError: "PATH: cannot read image (REASON)", "PATH: has 3 channels; a depth map has
-// 1", "PATH: holds uint8 integers; a depth map holds floats (half or float)",
-// "PATH: texel (i, j) is NaN" (and the other ShadowMap::findInvalidTexel findings).
+// Only regular files are read (a FIFO or device would block or never end).
+// Throws ImageError: "PATH: is 20000 x 20000 texels; a depth map is at most 16384 on a side",
+// "PATH: cannot read image (REASON)", "PATH: has 3 channels; a depth map has 1", "PATH: holds uint8
+// integers; a depth map holds floats (half or float)", "PATH: texel (i, j) is NaN" (and the other
+// ShadowMap::findInvalidTexel findings).
 ShadowMap readDepthImage(const std::string& path);
 
 bool fileExists(const std::string& path);
+
+// Writers (writeTextFile, writePngRgba8, writeExr) hold this shared from before the temporary
+// file exists until after the rename. Whoever holds it exclusively (the interrupt cleanup of
+// app/output_files.h) knows no write is half done and no temporary file is left.
+std::shared_mutex& outputWriteGate();
 
 }  // namespace pcf

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace pcf {
 
@@ -24,5 +25,10 @@ class InputError : public std::runtime_error {
     int mLine;
     std::string mProblem;
 };
+
+// Text made to fit on one line: newlines, tabs and other control characters written as \n, \r,
+// \t, \xNN (backslashes are kept as they are). Every message pcfscope prints goes through it,
+// so a newline inside an option value or a file name cannot split an error over lines.
+std::string oneLine(std::string_view text);
 
 }  // namespace pcf

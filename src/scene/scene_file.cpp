@@ -10,6 +10,8 @@
 #include <optional>
 #include <sstream>
 
+#include "scene/input_file.h"
+
 namespace pcf {
 
 namespace {
@@ -375,14 +377,7 @@ std::string tomlString(const std::string& s) {
 }  // namespace
 
 Scene parseSceneFile(const std::string& path) {
-    if (std::filesystem::is_directory(path)) {
-        throw InputError(path, 0, "cannot open file (it is a directory)");
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, 0, "cannot open file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseSceneString(text.str(), path);
+    return parseSceneString(readInputFile(path), path);
 }
 
 Scene parseSceneString(std::string_view text, const std::string& sourceName) {
@@ -416,6 +411,11 @@ Scene parseSceneToml(const toml::table& table, const std::string& sourceName) {
         std::string got = objects ? "an array of other values" : typeName(*objectsNode);
         throw InputError(sourceName, TableReader::lineOf(*objectsNode),
                          "object must be an array of tables ([[object]]), got " + got);
+    }
+    if (objects->size() > MAX_SCENE_OBJECTS) {
+        throw InputError(sourceName, TableReader::lineOf(*objects->get(MAX_SCENE_OBJECTS)),
+                         "scene has " + std::to_string(objects->size()) +
+                             " objects; the limit is " + std::to_string(MAX_SCENE_OBJECTS));
     }
     std::map<std::string, int> firstLine;
     for (size_t i = 0; i < objects->size(); ++i) {

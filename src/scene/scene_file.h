@@ -39,6 +39,7 @@
 
 #include <toml++/toml.h>
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -46,6 +47,11 @@
 #include "scene/scene.h"
 
 namespace pcf {
+
+// The most [[object]] tables a scene may have; more is refused with one line naming the limit.
+// Every object is drawn in both passes and ray cast for the ground truth: 10,000 took 10 s and
+// 1 GB, while a teaching scene has a handful.
+constexpr std::size_t MAX_SCENE_OBJECTS = 256;
 
 // Reads and parses a scene file. A missing file: InputError `path: cannot open file`.
 Scene parseSceneFile(const std::string& path);

@@ -1,0 +1,115 @@
+// The command line's input rules that hold for every command: errors stay on one line whatever
+// the values hold (a newline is written \n), an empty value is refused, a FIFO is refused
+// without blocking, and bench refuses what cannot work before it prints a progress line.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "exr_header.h"
+#include "kernel/shadow_map.h"
+#include "render/image_io.h"
+#include "run_command.h"
+
+namespace pcf {
+namespace {
+
+using testutil::runPcfscope;
+
+class CliInputChecks : public ::testing::Test {
+  protected:
+    void SetUp() override { mDir = testutil::makeTempDir("checks"); }
+    void TearDown() override {
+        if (!HasFailure()) std::filesystem::remove_all(mDir);
+    }
+    std::string path(const std::string& name) const { return (mDir / name).string(); }
+
+    // Runs in mDir (with a time limit: a blocked command fails instead of hanging the suite);
+    // expects exit 2, one line on stderr holding `expect`, nothing on stdout, nothing written.
+    void expectRefused(const std::string& args, const std::string& expect) {
+        auto r = runPcfscope(args, "cd " + mDir.string() + " && timeout 60");
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+        EXPECT_EQ(testutil::lineCount(r.err), 1) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find(expect), std::string::npos) << args << "\n" << r.err;
+        EXPECT_EQ(r.out, "") << args;
+        std::vector<std::string> left;
+        for (const auto& e : std::filesystem::directory_iterator(mDir)) {
+            left.push_back(e.path().filename());
+        }
+        std::sort(left.begin(), left.end());
+        EXPECT_EQ(left, mKeep) << args;
+    }
+
+    std::filesystem::path mDir;
+    std::vector<std::string> mKeep;  // files the test made itself
+};
+
+TEST_F(CliInputChecks, NewlinesInValuesAreEscapedNotPrinted) {
+    expectRefused("trace --example --method \"$(printf 'bogus\\nx')\"",
+                  "unknown method 'bogus\\nx'");
+    // OpenImageIO's message quotes the path: it is escaped too, and not cut at the newline.
+    auto r = runPcfscope("trace --map \"$(printf 'no\\nsuch.exr')\" --uv 0.5,0.5 --z 0.5");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("pcfscope: no\\nsuch.exr: cannot read image (", 0), 0u) << r.err;
+    EXPECT_EQ(r.err.substr(r.err.size() - 2), ")\n") << r.err;
+    // A control character of another kind is written as \xNN.
+    expectRefused("trace --example --method \"$(printf 'a\\033b')\"", "'a\\x1bb'");
+}
+
+TEST_F(CliInputChecks, EmptyValuesAreRefusedByEveryCommand) {
+    const std::vector<std::string> cases = {
+        "bench --methods ''",
+        "bench --kernels ''",
+        "bench --size ''",
+        "render --scene pole --polygon-offset '' -o f.png",
+        "render --scene pole --size '' -o f.png",
+        "truth --scene pole --size '' -o t.exr",
+        "export 1 -o ''",
+        "export 1 --size ''",
+        "export ''",
+        "trace --example --method ''",
+    };
+    for (const std::string& args : cases) {
+        // The option given empty: the last "--x ''" of the line ("-o" is "--out").
+        size_t at = args.rfind(" ''");
+        std::string option =
+            args.substr(args.rfind(' ', at - 1) + 1, at - args.rfind(' ', at - 1) - 1);
+        if (option == "-o") option = "--out";
+        if (option == "export") option = "lesson";
+        expectRefused(args, option + " needs a value; an empty one is refused");
+    }
+}
+
+TEST_F(CliInputChecks, AFifoAsMapOrLessonIsRefusedNotWaitedOn) {
+    ASSERT_EQ(mkfifo(path("map.exr").c_str(), 0644), 0);
+    ASSERT_EQ(mkfifo(path("lesson.toml").c_str(), 0644), 0);
+    ASSERT_EQ(mkfifo(path("scene.toml").c_str(), 0644), 0);
+    mKeep = {"lesson.toml", "map.exr", "scene.toml"};  // sorted
+    expectRefused("trace --map map.exr --uv 0.5,0.5 --z 0.5",
+                  "map.exr: cannot read image (not a regular file)");
+    expectRefused("export lesson.toml -o frames", "lesson.toml: not a regular file");
+    expectRefused("render --scene-file scene.toml -o f.png", "scene.toml: not a regular file");
+}
+
+TEST_F(CliInputChecks, BenchRefusesOneSamplePerPixelBeforeAnyProgress) {
+    // One sample per pixel makes a truth of only 0 and 1: no edge band to measure error over.
+    expectRefused("bench --quick --spp 1 -o out", "--spp 1 is out of range (2..");
+}
+
+TEST_F(CliInputChecks, HugeDepthImageHeadersAreRefusedBeforeAllocating) {
+    // A small EXR whose header claims 20000 x 20000 texels (1.6 GB as floats).
+    writeDepthImage(path("huge.exr"), ShadowMap(16, 16, 0.5f));
+    ASSERT_TRUE(testutil::makeExrClaimSize(path("huge.exr"), 20000));
+    mKeep = {"huge.exr"};
+    expectRefused("trace --map huge.exr --uv 0.5,0.5 --z 0.5",
+                  "huge.exr: is 20000 x 20000 texels; a depth map is at most 16384 on a side");
+}
+
+}  // namespace
+}  // namespace pcf
