@@ -116,7 +116,7 @@ FirstPass firstPass(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel
 constexpr int WALK_POINTS = 16;
 constexpr int BISECTION_STEPS = 8;  // 1/16 px halved 8 times: 1/4096 px
 constexpr double CROSSING_ERROR_PX = 1.0 / 4096.0;
-constexpr int FIRST_SCANLINES = 4;
+constexpr int FIRST_PANELS = 4;
 
 struct Scanline {
     double lit = 0.0;  // lit length on the centre's object, pixels
@@ -166,53 +166,71 @@ struct Refined {
     float bound;
 };
 
+// One panel [a, b] of the adaptive trapezoid rule, with its scanlines at a, the middle and b.
+struct Panel {
+    double a, b;
+    Scanline fa, fm, fb;
+    // The panel's share of the integrals (coarse: trapezoid on a, b; fine: on a, m, b), and
+    // the error bound of the fine one: 2 |fine - coarse| for lit plus the same for on.
+    double lit, on, crossings, err;
+};
+
+Panel makePanel(double a, double b, const Scanline& fa, const Scanline& fm, const Scanline& fb) {
+    Panel p{a, b, fa, fm, fb, 0.0, 0.0, 0.0, 0.0};
+    double h = b - a;
+    auto coarse = [&](double Scanline::*f) { return 0.5 * h * (fa.*f + fb.*f); };
+    auto fine = [&](double Scanline::*f) { return 0.25 * h * (fa.*f + 2.0 * fm.*f + fb.*f); };
+    p.lit = fine(&Scanline::lit);
+    p.on = fine(&Scanline::on);
+    p.crossings = 0.25 * h * (fa.crossings + 2.0 * fm.crossings + fb.crossings);
+    p.err = 2.0 * std::fabs(p.lit - coarse(&Scanline::lit)) +
+            2.0 * std::fabs(p.on - coarse(&Scanline::on));
+    return p;
+}
+
 Refined refinePixel(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel,
                     const FirstPass& first, float target) {
-    // lines[r] is the scanline at v = r / M.
-    std::vector<Scanline> lines(FIRST_SCANLINES + 1);
-    for (int r = 0; r <= FIRST_SCANLINES; ++r) {
-        lines[r] =
-            scanline(scene, rays, pixel, first.object, static_cast<double>(r) / FIRST_SCANLINES);
+    auto line = [&](double v) { return scanline(scene, rays, pixel, first.object, v); };
+    // FIRST_PANELS panels over v in [0,1]: 2 * FIRST_PANELS + 1 scanlines.
+    std::vector<Scanline> start(2 * FIRST_PANELS + 1);
+    for (int r = 0; r <= 2 * FIRST_PANELS; ++r) {
+        start[r] = line(static_cast<double>(r) / (2 * FIRST_PANELS));
     }
-    // The trapezoid rule over lines, as means over v in [0,1].
-    struct Estimate {
-        double visibility, on, crossings;
-    };
-    auto estimate = [&] {
-        int m = static_cast<int>(lines.size()) - 1;
-        double lit = 0.0, on = 0.0, crossings = 0.0;
-        for (int r = 0; r <= m; ++r) {
-            double w = (r == 0 || r == m) ? 0.5 : 1.0;
-            lit += w * lines[r].lit;
-            on += w * lines[r].on;
-            crossings += w * lines[r].crossings;
-        }
-        return Estimate{on > 0.0 ? lit / on : -1.0, on / m, crossings / m};
-    };
-    Estimate coarse = estimate();
+    std::vector<Panel> panels;
+    for (int k = 0; k < FIRST_PANELS; ++k) {
+        panels.push_back(makePanel(static_cast<double>(k) / FIRST_PANELS,
+                                   static_cast<double>(k + 1) / FIRST_PANELS, start[2 * k],
+                                   start[2 * k + 1], start[2 * k + 2]));
+    }
+    int scanlines = 2 * FIRST_PANELS + 1;
     for (;;) {
-        int m = static_cast<int>(lines.size()) - 1;
-        std::vector<Scanline> finer(static_cast<size_t>(2 * m + 1));
-        for (int r = 0; r <= 2 * m; ++r) {
-            finer[r] = (r % 2 == 0) ? lines[r / 2]
-                                    : scanline(scene, rays, pixel, first.object,
-                                               static_cast<double>(r) / (2 * m));
+        double lit = 0.0, on = 0.0, crossings = 0.0, err = 0.0;
+        size_t worst = 0;
+        for (size_t k = 0; k < panels.size(); ++k) {
+            lit += panels[k].lit;
+            on += panels[k].on;
+            crossings += panels[k].crossings;
+            err += panels[k].err;
+            if (panels[k].err > panels[worst].err) worst = k;
         }
-        lines = std::move(finer);
-        Estimate fine = estimate();
-        if (fine.visibility < 0.0 || coarse.visibility < 0.0) {
+        if (on <= 0.0) {
             // No scanline met the centre's object (a sliver of it around the centre): the
-            // centre's own answer, as the first pass gives.
-            if (fine.visibility < 0.0) return {first.visibility, 0.0f};
+            // centre's own answer, with no claim.
+            return {first.visibility, 1.0f};
         }
-        // See ground_truth.h: twice the difference of two resolutions, plus the crossings' share.
-        double bound =
-            (coarse.visibility < 0.0 ? 1.0 : 2.0 * std::fabs(fine.visibility - coarse.visibility)) +
-            2.0 * fine.crossings * CROSSING_ERROR_PX / fine.on;
-        if (bound <= target || 2 * m >= MAX_TRUTH_SCANLINES) {
-            return {static_cast<float>(fine.visibility), static_cast<float>(bound)};
+        // See ground_truth.h: |V - V*| <= (err_lit + err_on) / on, plus the crossings' share.
+        double bound = (err + 2.0 * crossings * CROSSING_ERROR_PX) / on;
+        if (bound <= target || scanlines + 2 > MAX_TRUTH_SCANLINES) {
+            return {static_cast<float>(lit / on), static_cast<float>(bound)};
         }
-        coarse = fine;
+        // Split the panel with the largest error: two new scanlines, at its quarters.
+        Panel p = panels[worst];
+        double m = 0.5 * (p.a + p.b);
+        Scanline q1 = line(0.5 * (p.a + m));
+        Scanline q3 = line(0.5 * (m + p.b));
+        scanlines += 2;
+        panels[worst] = makePanel(p.a, m, p.fa, q1, p.fm);
+        panels.push_back(makePanel(m, p.b, p.fm, q3, p.fb));
     }
 }
 

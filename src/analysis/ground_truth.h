@@ -20,21 +20,27 @@
 //    - a scanline at height v in [0,1] is walked at x = i / 16 (i = 0..16); between two walk
 //      points whose states differ the crossing is found by bisection against the exact ray cast
 //      to 1/4096 of a pixel; lit(v) and on(v) are the lit and on-object lengths of the scanline.
-//    - the pixel is the trapezoid rule over M + 1 scanlines v = r / M (r = 0..M):
-//        V_M = trap_M(lit) / trap_M(on)
-//      M = 4, 8, 16, ... (each doubling reuses the previous scanlines) until two resolutions agree:
-//        bound = 2 |V_2M - V_M| + 2 c / 4096 / mean(on)
-//      is <= the target (default 1/512), or M reaches 256. c is the trapezoid mean of crossings
-//      per scanline: each crossing is placed to within 1/4096 px (bisection half-interval plus
-//      float rounding of the ray), which moves lit and on by that much. V_2M is the value kept.
-//    Why twice the difference bounds the error: lit(v) and on(v) are continuous and piecewise
-//    smooth (a kink where an edge crosses a pixel corner, a steep ramp where an edge runs along
-//    the pixel's top or bottom, a jump at a silhouette); the trapezoid rule's error e_M then
-//    shrinks at least by half per doubling (4x on the smooth parts, 2x to 4x over a kink, ramp
-//    or jump inside a panel, exactly 2x when it sits at the panel's end). With
-//    |e_2M| <= |e_M| / 2: |e_2M| <= |V_2M - V_M|, met with equality in the last case, so the
-//    difference is doubled for a margin over rounding and over edges whose error shrinks
-//    unevenly (a curve's tangent point inside a panel).
+//    - the pixel's integral over v in [0,1] is an adaptive trapezoid rule: panels [a, b] with
+//      scanlines at a, the middle m and b; per panel a coarse estimate (trapezoid on a, b) and
+//      a fine one (on a, m, b), for lit and for on. Start with 4 panels (9 scanlines), then
+//      split the panel whose estimates differ most (two more scanlines, at its quarters) until
+//        bound = (sum over panels of 2 |fine - coarse| for lit and for on
+//                 + 2 c / 4096) / on_total
+//      is <= the target (default 1/512), or the pixel has used 513 scanlines. The value kept is
+//        V = sum of fine lit / sum of fine on
+//      c is the integral of the crossings per scanline: each crossing is placed to within
+//      1/4096 px (bisection half-interval plus float rounding of the ray), which moves lit and
+//      on by that much.
+//    Why: V - V* = (L - L*) / O + V* (O* - O) / O with V* <= 1, so |V - V*| is at most the lit
+//    and on errors over O. Per panel, lit(v) and on(v) are continuous and piecewise smooth (a
+//    kink where an edge crosses a pixel corner, a steep ramp where an edge runs along the
+//    pixel's top or bottom) or jump (a silhouette); halving a panel shrinks the trapezoid
+//    error at least by half (4x on smooth parts, 2x to 4x over a kink, ramp or jump inside it,
+//    exactly 2x when it sits at the panel's end), and |e_fine| <= |e_coarse| / 2 gives
+//    |e_fine| <= |fine - coarse|, met with equality in the last case; the factor 2 is a margin
+//    over rounding and over edges whose error shrinks unevenly (a curve's tangent point). Only
+//    the panels that hold an edge's trouble are split, so a silhouette's jump costs a few
+//    scanlines per halving of the bound, not a doubling of all of them.
 //    Assumed, and not checked: no lit or unlit sliver narrower than 1/16 px across a whole
 //    scanline's walk, and no shadow feature that fits between the first pass's samples of a
 //    pixel AND of all its neighbours (a speck smaller than a pixel, far from any other edge).
@@ -59,8 +65,8 @@ constexpr int DEFAULT_TRUTH_SPP = 2;
 constexpr int MAX_TRUTH_SPP = 64;
 // The per-pixel error the refinement aims for: 1/512, a quarter of an 8-bit step.
 constexpr float DEFAULT_TRUTH_TARGET_BOUND = 1.0f / 512.0f;
-// Refinement scanlines per pixel, at most (M of the comment above).
-constexpr int MAX_TRUTH_SCANLINES = 256;
+// Refinement scanlines per pixel, at most.
+constexpr int MAX_TRUTH_SCANLINES = 513;
 
 struct GroundTruth {
     glm::ivec2 size{0, 0};
@@ -91,7 +97,7 @@ struct GroundTruth {
 struct GroundTruthOptions {
     int spp = DEFAULT_TRUTH_SPP;  // 1..MAX_TRUTH_SPP
     int threads = 0;              // 0: std::thread::hardware_concurrency()
-    // Refine until the bound is at most this (or MAX_TRUTH_SCANLINES is reached); <= 0 turns
+    // Refine until the bound is at most this (or a pixel used MAX_TRUTH_SCANLINES); <= 0 turns
     // the refinement off (the first pass's mean; bound 1 where its samples disagree: no claim).
     float targetBound = DEFAULT_TRUTH_TARGET_BOUND;
     // Called on the calling thread, about ten times a second and once at the end, with the
