@@ -181,13 +181,15 @@ void SceneRenderer::render(const RenderSettings& settings) {
     renderCameraPass(settings);
 }
 
-TimingResult SceneRenderer::timeCameraPass(const RenderSettings& settings, int repeats) {
+TimingResult SceneRenderer::timeCameraPass(const RenderSettings& settings, int repeats,
+                                           bool warmUp) {
     ensureTargets(settings);
     if (mTimingFrame.width != mFrame.width || mTimingFrame.height != mFrame.height) {
         mTimingFrame = createOffscreenTarget(mFrame.width, mFrame.height, {GL_RGBA8},
                                              GL_DEPTH_COMPONENT24);
     }
-    return timeGpu([&] { drawCameraPass(settings, mTimingPrograms, mTimingFrame); }, repeats);
+    return timeGpu([&] { drawCameraPass(settings, mTimingPrograms, mTimingFrame); }, repeats,
+                   warmUp);
 }
 
 std::vector<uint8_t> SceneRenderer::readColour() const {
