@@ -9,7 +9,7 @@ in vec3 vNormalWs;
 
 uniform sampler2D uPcfDepth;          // the shadow map, texelFetch side (pcf_prelude.h)
 uniform mat4 uShadowClipFromWorld;    // light clip space from world
-uniform vec3 uAlbedo;                 // linear colour of this object
+uniform vec3 uAlbedoEncoded;          // pow(linear colour of this object, 1 / 2.2)
 uniform int uReceives;                // 1: look the shadow map up; 0: never shadowed
 uniform int uLightType;               // 0 directional, 1 spot
 uniform vec3 uLightDirWs;             // the direction the light travels (unit)
@@ -31,9 +31,16 @@ layout(location = 3) out vec4 oPosWs;       // world position, w = 1 where drawn
 const float AMBIENT = 0.25f;
 
 void main() {
+    // Directional: a constant direction and no cone. Only a spot pays for the normalize and
+    // the cone test (a branch every fragment of the draw takes alike).
+    vec3 toLight = -uLightDirWs;
+    float cone = 1.0f;
+    if (uLightType == 1) {
+        toLight = normalize(uLightPosWs - vPosWs);
+        cone = dot(-toLight, uLightDirWs) >= uSpotCosCone ? 1.0f : 0.0f;
+    }
     vec3 n = normalize(vNormalWs);
     if (!gl_FrontFacing) n = -n;  // a plane seen from behind
-    vec3 toLight = uLightType == 0 ? -uLightDirWs : normalize(uLightPosWs - vPosWs);
     float nDotL = max(dot(n, toLight), 0.0f);
 
     // GL convention: ndc = clip / w, uv = ndc.xy * 0.5 + 0.5, depth = ndc.z * 0.5 + 0.5.
@@ -51,11 +58,13 @@ void main() {
         visibility = pcfFilter(uPcfDepth, vec2(u, v), ref,
                                PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation));
     }
-    float cone = 1.0f;
-    if (uLightType == 1) cone = dot(-toLight, uLightDirWs) >= uSpotCosCone ? 1.0f : 0.0f;
-
-    vec3 linear = uAlbedo * (AMBIENT + (1.0f - AMBIENT) * nDotL * visibility * cone);
-    oColour = vec4(pow(linear, vec3(1.0f / 2.2f)), 1.0f);
+    // Gamma 2.2 of albedo * light, light = ambient + diffuse * visibility (a scalar):
+    //   pow(albedo * light, 1/2.2) = pow(albedo, 1/2.2) * pow(light, 1/2.2)
+    // The albedo's factor is per object, done once on the CPU (uAlbedoEncoded), so a fragment
+    // pays one pow, not three: on llvmpipe the three were about half of what the camera pass
+    // cost beyond the filter (README, "What the camera pass costs").
+    float light = AMBIENT + (1.0f - AMBIENT) * nDotL * visibility * cone;
+    oColour = vec4(uAlbedoEncoded * pow(light, 1.0f / 2.2f), 1.0f);
 #if PCF_ALL_TARGETS
     oLightSpace = uReceives != 0 ? vec4(u, v, ref, 1.0f) : vec4(0.0f);
     oVisibility = visibility;

@@ -145,6 +145,10 @@ std::vector<BenchRow> sampleRows() {
         r.error.edgeRmse = edge;
         r.error.edgeMaxErr = 0.75;
         r.timer = "glFinish+steady_clock";
+        r.gpuMsIqr = ms / 20;  // 5 %
+        r.lookupMs = ms / 2;
+        r.lookupMsIqr = ms / 4;  // 50 %: noisy
+        r.noisy = method == PCF_POISSON;
         rows.push_back(r);
     };
     add(PCF_NEAREST, 0, 256, 2.0, 0.5);
@@ -163,13 +167,15 @@ TEST(BenchReport, CsvHasTheDocumentedColumnsAndOneLinePerRow) {
     std::getline(in, line);
     EXPECT_EQ(line,
               "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,"
-              "edge_rmse,edge_max_err,timer");
+              "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy");
     std::getline(in, line);
-    EXPECT_EQ(line, "nearest,0,256,2.0000,12.35,1,0.05,1,0.5,0.75,glFinish+steady_clock");
+    EXPECT_EQ(line,
+              "nearest,0,256,2.0000,12.35,1,0.05,1,0.5,0.75,glFinish+steady_clock,0.1000,1.0000,"
+              "0.5000,0");
     int lines = 2;
     while (std::getline(in, line)) {
         ++lines;
-        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 10) << line;
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 14) << line;
     }
     EXPECT_EQ(lines, 1 + static_cast<int>(rows.size()));
     EXPECT_NE(csv.find("tent,5,1024,11.0000,12.35,36,0.0123456789,1,0.123456789,0.75,"),
@@ -193,6 +199,27 @@ TEST(BenchReport, MarkdownNamesTheMachineAndTimerAndMarksTheFront) {
     EXPECT_NE(md.find("| pcf-naive | 3 | 256 |"), std::string::npos) << md;  // dominated
     EXPECT_NE(md.find("| tent * | 5 | 1024 |"), std::string::npos) << md;
     EXPECT_EQ(benchParetoFront(rows), (std::vector<size_t>{0, 1, 3}));
+    // Both times and their IQRs are in the table; the noisy poisson row is marked.
+    EXPECT_NE(md.find("| 2.000 | 0.100 | 1.000 | 0.500 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| poisson ! | - | 1024 |"), std::string::npos) << md;
+    // A noisy point makes the machine busy: the note comes first, with the load and the share.
+    setup.loadStart = 3.5;
+    setup.loadEnd = 0.25;
+    setup.cores = 2;
+    EXPECT_TRUE(benchMachineBusy(rows, setup));
+    EXPECT_DOUBLE_EQ(noisyShare(rows), 0.2);
+    md = benchMarkdown(rows, setup);
+    size_t note = md.find("The machine was busy");
+    ASSERT_NE(note, std::string::npos) << md;
+    EXPECT_LT(note, md.find("Measured on"));
+    EXPECT_NE(md.find("3.50 at the start, 0.25 at the end, on 2 cores; 1 of 5 points (20 %)"),
+              std::string::npos)
+        << md;
+    // Quiet: no noisy point, load below half the cores.
+    for (BenchRow& r : rows) r.noisy = false;
+    setup.loadStart = 0.5;
+    EXPECT_FALSE(benchMachineBusy(rows, setup));
+    EXPECT_EQ(benchMarkdown(rows, setup).find("The machine was busy"), std::string::npos);
 }
 
 TEST(SpeedChart, LayoutPutsTimeOnALogAxisAndErrorOnALinearOne) {
@@ -201,7 +228,10 @@ TEST(SpeedChart, LayoutPutsTimeOnALogAxisAndErrorOnALinearOne) {
     ASSERT_EQ(L.points.size(), rows.size());
     for (size_t k = 0; k < rows.size(); ++k) {
         EXPECT_TRUE(L.plot.contains(L.points[k])) << k;
-        EXPECT_EQ(L.labelTexts[k], chartLabel(rows[k].point));
+        EXPECT_EQ(L.labelTexts[k], chartLabel(rows[k].point) + (rows[k].noisy ? " !" : ""));
+        // The error bar spans the IQR around the median: median -/+ IQR / 2 on the log axis.
+        EXPECT_LT(L.errorBars[k].x, L.points[k].x) << k;
+        EXPECT_GT(L.errorBars[k].y, L.points[k].x) << k;
     }
     // Log x: equal ratios of time are equal distances (2 -> 18 ms is 9x, as 11 -> 99 would be).
     double pxPerDecade = (L.points[2].x - L.points[0].x) / std::log10(18.0 / 2.0);
@@ -217,6 +247,16 @@ TEST(SpeedChart, LayoutPutsTimeOnALogAxisAndErrorOnALinearOne) {
         EXPECT_NE(std::find(texts.begin(), texts.end(), want), texts.end()) << want;
     }
     EXPECT_EQ(L.front, (std::vector<size_t>{0, 1, 3}));
+    // log10(1.025 / 0.975) of a decade: the 5 % IQR of every sample row.
+    double barPx = pxPerDecade * std::log10(1.025 / 0.975);
+    EXPECT_NEAR(L.errorBars[0].y - L.errorBars[0].x, barPx, 0.01);
+    // The lookup timing: half the time, so every dot sits log10(2) of a decade further left
+    // relative to the slowest one, and the bars are the lookup's wider IQR.
+    SpeedChartLayout lookup = layoutSpeedChart(rows, {1280, 720}, ChartTiming::Lookup);
+    EXPECT_GT(lookup.errorBars[0].y - lookup.errorBars[0].x,
+              5.0f * (L.errorBars[0].y - L.errorBars[0].x));
+    EXPECT_EQ(chartMs(rows[2], ChartTiming::Lookup), 9.0);
+    EXPECT_EQ(chartIqr(rows[2], ChartTiming::Scene), 18.0 / 20);
     EXPECT_EQ(chartLabel({PCF_GATHER, 3, 1024}), "gather3 1024");
     EXPECT_EQ(chartLabel({PCF_NEAREST, 0, 256}), "nearest 256");
     // Few points, room to spare: no two labels overlap and none covers a dot.

@@ -46,13 +46,13 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
     EXPECT_EQ(line, BENCH_CSV_HEADER);
     EXPECT_EQ(line,
               "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,"
-              "edge_rmse,edge_max_err,timer");
+              "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy");
     std::set<std::string> methods;
     int rows = 0;
     while (std::getline(csv, line)) {
         ++rows;
         std::vector<std::string> f = splitCsvLine(line);
-        ASSERT_EQ(f.size(), 11u) << line;
+        ASSERT_EQ(f.size(), 15u) << line;
         methods.insert(f[0]);
         bool kernelMethod =
             f[0] == "pcf-naive" || f[0] == "pcf-gather" || f[0] == "pcf-hw" || f[0] == "tent";
@@ -68,6 +68,14 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
         }
         EXPECT_GT(std::stod(f[8]), 0.0) << line;  // an edge band exists, and PCF misses it
         EXPECT_TRUE(f[10] == "glFinish+steady_clock" || f[10] == "GL_TIME_ELAPSED") << line;
+        EXPECT_GE(std::stod(f[11]), 0.0) << line;  // gpu_ms_iqr
+        EXPECT_GT(std::stod(f[12]), 0.0) << line;  // lookup_ms
+        EXPECT_GE(std::stod(f[13]), 0.0) << line;  // lookup_ms_iqr
+        // noisy exactly when an IQR is above 10 % of its median (to the CSV's 4 decimals)
+        EXPECT_TRUE(f[14] == "0" || f[14] == "1") << line;
+        bool noisy = std::stod(f[11]) > 0.1 * std::stod(f[3]) + 1e-4 ||
+                     std::stod(f[13]) > 0.1 * std::stod(f[12]) + 1e-4;
+        if (noisy) EXPECT_EQ(f[14], "1") << line;
     }
     EXPECT_EQ(rows, points);
     EXPECT_EQ(methods.size(), 9u);
@@ -77,10 +85,13 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
     EXPECT_NE(md.find("| pcf-gather"), std::string::npos) << md;
     EXPECT_EQ(r.out, md);  // the table on stdout too
 
-    // The chart: the frame's size unless --chart-size says otherwise.
+    // The timing rounds are reported, and the truth's bound.
+    EXPECT_NE(r.err.find("bench: timing round 5/5"), std::string::npos) << r.err;
+    EXPECT_NE(md.find("largest per-pixel bound"), std::string::npos) << md;
+    // The chart: the frame's size but at least 960x540, unless --chart-size says otherwise.
     ImageSize chart = readImageSize(out + "/speed_vs_accuracy.png");
-    EXPECT_EQ(chart.width, 320);
-    EXPECT_EQ(chart.height, 180);
+    EXPECT_EQ(chart.width, 960);
+    EXPECT_EQ(chart.height, 540);
     int diffs = 0;
     for (const fs::directory_entry& e : fs::directory_iterator(out + "/diff")) {
         ++diffs;
@@ -135,6 +146,7 @@ TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
         {"--scene pole --scene-file x.toml", "not both"},
         {"--spp 0", "--spp 0"},
         {"--repeats 0", "--repeats"},
+        {"--timing wall", "--timing"},
         {"--cull sideways", "--cull"},
     };
     for (const Case& c : cases) {

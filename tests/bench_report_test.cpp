@@ -60,14 +60,26 @@ TEST(BenchReport, BadCsvNamesTheLine) {
         }
         return std::string("no error");
     };
-    EXPECT_EQ(message("method,kernel\n"), "b.csv:1: not a bench.csv header: expected '" +
-                                               std::string(BENCH_CSV_HEADER) + "'");
-    EXPECT_EQ(message(header + "nearest,0,256\n"), "b.csv:2: expected 11 fields, got 3");
-    EXPECT_EQ(message(header + "blur,0,256,1,1,1,0,0,0,0,t\n"), "b.csv:2: unknown method 'blur'");
-    EXPECT_EQ(message(header + "nearest,0,256,x,1,1,0,0,0,0,t\n"),
+    EXPECT_EQ(message("method,kernel\n"),
+              "b.csv:1: not a bench.csv header: expected '" + std::string(BENCH_CSV_HEADER) + "'");
+    EXPECT_EQ(message(header + "nearest,0,256\n"), "b.csv:2: expected 15 fields, got 3");
+    EXPECT_EQ(message(header + "blur,0,256,1,1,1,0,0,0,0,t,0,1,0,0\n"),
+              "b.csv:2: unknown method 'blur'");
+    EXPECT_EQ(message(header + "nearest,0,256,x,1,1,0,0,0,0,t,0,1,0,0\n"),
               "b.csv:2: field 4 'x' is not a number");
-    EXPECT_EQ(message(header + "nearest,0,256,nan,1,1,0,0,0,0,t\n"),
+    EXPECT_EQ(message(header + "nearest,0,256,nan,1,1,0,0,0,0,t,0,1,0,0\n"),
               "b.csv:2: field 4 'nan' is not a number");
+    EXPECT_EQ(message(header + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,2\n"),
+              "b.csv:2: field 15 '2' is not 0 or 1");
+    // The eleven columns from before the timing spreads still read, with no spread.
+    std::string v1 = std::string(BENCH_CSV_HEADER_V1) + "\n";
+    EXPECT_EQ(message(v1 + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0\n"),
+              "b.csv:2: expected 11 fields, got 15");
+    std::vector<BenchRow> old = parseBenchCsv(v1 + "nearest,0,256,1.5,1,1,0,0,0,0,t\n", "b.csv");
+    ASSERT_EQ(old.size(), 1u);
+    EXPECT_EQ(old[0].gpuMs, 1.5);
+    EXPECT_EQ(old[0].gpuMsIqr, 0.0);
+    EXPECT_FALSE(old[0].noisy);
     EXPECT_EQ(message(""), "b.csv:1: empty file: expected a bench.csv header");
 }
 

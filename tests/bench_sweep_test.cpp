@@ -43,8 +43,14 @@ class BenchSweep : public ::testing::Test {
             EXPECT_GT(regions.edgeCount, 0);
             ++points;
         };
+        int rounds = 0;
+        context.roundProgress = [&](int round, int total) {
+            EXPECT_EQ(round, rounds++);
+            EXPECT_EQ(total, o.gpuRepeats);
+        };
         std::vector<BenchRow> rows = runBench(context, o);
         EXPECT_EQ(points, static_cast<int>(rows.size()));
+        EXPECT_EQ(rounds, o.gpuRepeats);
         return rows;
     }
 };
@@ -121,6 +127,7 @@ TEST_F(BenchSweep, RowsCarryFetchCountsTimingsAndTheTimer) {
     o.methods = {PCF_TENT, PCF_NEAREST, PCF_GATHER};
     o.kernels = {3, 4, 7};
     o.mapSizes = {64, 128};
+    o.gpuRepeats = 3;
     std::vector<BenchRow> rows = sweep("box-on-plane", o, 2);
     // Report order: the methods as given; tent skips N = 4; nearest runs once per map.
     std::vector<BenchPoint> want = {
@@ -135,6 +142,12 @@ TEST_F(BenchSweep, RowsCarryFetchCountsTimingsAndTheTimer) {
         int n = r.point.kernel > 0 ? r.point.kernel : 3;
         EXPECT_EQ(r.texelReads, fetchCounts(r.point.method, n).texels) << k;
         EXPECT_GT(r.gpuMs, 0.0) << k;
+        EXPECT_GE(r.gpuMsIqr, 0.0) << k;
+        EXPECT_GT(r.lookupMs, 0.0) << k;
+        EXPECT_GE(r.lookupMsIqr, 0.0) << k;
+        EXPECT_EQ(r.noisy, r.gpuMsIqr > NOISY_IQR_SHARE * r.gpuMs ||
+                               r.lookupMsIqr > NOISY_IQR_SHARE * r.lookupMs)
+            << k;
         EXPECT_GT(r.cpuNsPerPixel, 0.0) << k;
         EXPECT_EQ(r.cpuPixels, 2048) << k;
         EXPECT_EQ(r.timer,

@@ -1,12 +1,12 @@
 // image_read.h: reading images back in tests (OpenImageIO), rows as stored (first scanline first).
 #pragma once
 
+#include <OpenImageIO/imageio.h>
+
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <OpenImageIO/imageio.h>
 
 struct ImageSize {
     int width = 0;
@@ -19,6 +19,13 @@ inline ImageSize readImageSize(const std::string& path) {
     if (!in) throw std::runtime_error("cannot open " + path);
     const OIIO::ImageSpec& spec = in->spec();
     return {spec.width, spec.height, spec.nchannels};
+}
+
+// The channel names in the order readImageFloats returns them.
+inline std::vector<std::string> readImageChannelNames(const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw std::runtime_error("cannot open " + path);
+    return in->spec().channelnames;
 }
 
 // All pixels as floats; throws unless the image has `channels` channels.

@@ -75,6 +75,23 @@ TEST(GpuTimer, MedianOfOddAndEvenCounts) {
     EXPECT_EQ(medianOf({}), 0.0);
 }
 
+// Hyndman and Fan's definition 7 (NumPy's default): h = (n - 1) p, linear between order stats.
+TEST(GpuTimer, QuartilesInterpolateBetweenOrderStatistics) {
+    // Sorted 1..9: q1 at h = 2 -> 3, median 5, q3 at h = 6 -> 7.
+    Quartiles q = quartilesOf({9, 1, 8, 2, 7, 3, 6, 4, 5});
+    EXPECT_EQ(q.q1, 3.0);
+    EXPECT_EQ(q.median, 5.0);
+    EXPECT_EQ(q.q3, 7.0);
+    EXPECT_EQ(q.iqr(), 4.0);
+    // 1, 2, 4, 10: q1 at h = 0.75 -> 1.75, median 3, q3 at h = 2.25 -> 5.5 (numpy agrees).
+    Quartiles even = quartilesOf({10, 4, 2, 1});
+    EXPECT_DOUBLE_EQ(even.q1, 1.75);
+    EXPECT_DOUBLE_EQ(even.median, medianOf({10, 4, 2, 1}));
+    EXPECT_DOUBLE_EQ(even.q3, 5.5);
+    EXPECT_EQ(quartilesOf({2.5}).iqr(), 0.0);
+    EXPECT_EQ(quartilesOf({}).median, 0.0);
+}
+
 TEST(GpuTimer, RejectsZeroRepeats) {
     std::unique_ptr<GlContext> context = createHeadlessContext();
     EXPECT_THROW(timeGpu([] {}, 0), std::invalid_argument);

@@ -1,6 +1,7 @@
 // `pcfscope truth`: the ray-cast ground truth as an EXR, rows top-down, and bad input refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "analysis/ground_truth.h"
@@ -29,13 +30,31 @@ TEST_F(TruthCommand, WritesTheVisibilityTopDownAsTheLibraryComputesIt) {
     ImageSize size = readImageSize(path("gt.exr"));
     EXPECT_EQ(size.width, 64);
     EXPECT_EQ(size.height, 36);
-    EXPECT_EQ(size.channels, 1);
-    std::vector<float> file = readImageFloats(path("gt.exr"), 1);
+    EXPECT_EQ(size.channels, 2);
+    // EXR keeps channels sorted by name: read them by name.
+    std::vector<std::string> names = readImageChannelNames(path("gt.exr"));
+    ASSERT_EQ(names.size(), 2u);
+    size_t vis = std::find(names.begin(), names.end(), "visibility") - names.begin();
+    size_t bound = std::find(names.begin(), names.end(), "bound") - names.begin();
+    ASSERT_LT(vis, 2u);
+    ASSERT_LT(bound, 2u);
+    std::vector<float> both = readImageFloats(path("gt.exr"), 2);
     GroundTruthOptions options;
     options.spp = 3;
     GroundTruth truth = computeGroundTruth(*presetScene("box-on-plane"), {64, 36}, options);
-    ASSERT_EQ(file.size(), truth.visibility.size());
+    ASSERT_EQ(both.size(), 2 * truth.visibility.size());
+    std::vector<float> file(truth.pixelCount());
+    int refined = 0;
+    for (size_t k = 0; k < truth.pixelCount(); ++k) {
+        file[k] = both[2 * k + vis];
+        EXPECT_EQ(both[2 * k + bound], truth.bound[k]) << k;
+        EXPECT_LE(both[2 * k + bound], DEFAULT_TRUTH_TARGET_BOUND) << k;
+        refined += both[2 * k + bound] > 0.0f;
+    }
+    EXPECT_GT(refined, 0);
     EXPECT_EQ(file, truth.visibility);
+    // The largest bound is on stderr.
+    EXPECT_NE(r.err.find("largest bound"), std::string::npos) << r.err;
     // Top-down: the first scanline is the sky above the ground's far edge (nothing hit: 1), and
     // the frame holds both shadow and light.
     for (int x = 0; x < 64; ++x) EXPECT_EQ(file[x], 1.0f) << x;
@@ -48,14 +67,22 @@ TEST_F(TruthCommand, MaskAddsTheReceiverChannel) {
         "-o " +
         path("gt.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    std::vector<float> file = readImageFloats(path("gt.exr"), 2);
+    std::vector<float> file = readImageFloats(path("gt.exr"), 3);
+    std::vector<std::string> names = readImageChannelNames(path("gt.exr"));
+    auto at = [&](const char* name) {
+        return static_cast<size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+    };
+    ASSERT_LT(at("visibility"), 3u);
+    ASSERT_LT(at("bound"), 3u);
+    ASSERT_LT(at("mask"), 3u);
     GroundTruthOptions options;
     options.spp = 2;
     GroundTruth truth = computeGroundTruth(*presetScene("sphere-over-plane"), {48, 27}, options);
     int receivers = 0;
     for (size_t k = 0; k < truth.pixelCount(); ++k) {
-        EXPECT_EQ(file[2 * k], truth.visibility[k]);
-        EXPECT_EQ(file[2 * k + 1], truth.receiver[k] ? 1.0f : 0.0f);
+        EXPECT_EQ(file[3 * k + at("visibility")], truth.visibility[k]);
+        EXPECT_EQ(file[3 * k + at("bound")], truth.bound[k]);
+        EXPECT_EQ(file[3 * k + at("mask")], truth.receiver[k] ? 1.0f : 0.0f);
         receivers += truth.receiver[k];
     }
     EXPECT_GT(receivers, 48 * 27 / 3);
@@ -90,6 +117,7 @@ TEST_F(TruthCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
         {"--scene pole --size 0x10", "--size"},
         {"--scene pole --size 10", "--size"},
         {"--scene pole --threads -1", "--threads"},
+        {"--scene pole --bound 0", "--bound"},
     };
     for (const Case& c : cases) {
         auto r = testutil::runPcfscope("truth " + c.args + " -o " + path("gt.exr"));

@@ -1,14 +1,21 @@
 #include "analysis/bench.h"
 
+#include <epoxy/gl.h>
+
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 
 #include "analysis/cpu_timing.h"
 #include "kernel/methods.h"
+#include "render/gpu_lookup.h"
+#include "render/gpu_timer.h"
 
 namespace pcf {
 
 namespace {
+
+const ShadowMap& map(const std::map<int, ShadowMap>& maps, int size) { return maps.at(size); }
 
 bool tentTakes(int n) { return n == 3 || n == 5 || n == 7; }
 
@@ -52,7 +59,7 @@ BenchOptions quickBenchOptions() {
     o.kernels = {3};
     o.mapSizes = {128, 256};
     o.frameSize = {320, 180};
-    o.gpuRepeats = 2;
+    o.gpuRepeats = 5;
     o.cpuLookups = 8192;
     o.cpuPasses = 1;
     return o;
@@ -135,7 +142,9 @@ std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& option
     std::vector<BenchRow> rows(points.size());
     ErrorRegions regions;
     std::vector<glm::vec4> lookups;
-    ShadowMap map;
+    std::vector<glm::vec4> frameLookups;  // every pixel of the light-space target, GL row order
+    std::map<int, ShadowMap> maps;
+    GpuLookup lookupPass;
     int currentMap = -1;
     for (size_t run = 0; run < order.size(); ++run) {
         const BenchPoint& p = points[order[run]];
@@ -145,7 +154,8 @@ std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& option
         RenderSettings s = settingsFor(options, p);
         if (p.mapSize != currentMap) {
             renderer.renderShadowPass(s);
-            map = renderer.readShadowMap();
+            maps[p.mapSize] = renderer.readShadowMap();
+            lookupPass.setMap(maps[p.mapSize]);
             currentMap = p.mapSize;
         }
         renderer.renderCameraPass(s);
@@ -154,20 +164,69 @@ std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& option
             std::vector<float> lightSpace = renderer.readLightSpace();
             regions = errorRegions(truth, receiverMaskFromLightSpace(lightSpace));
             lookups = receiverLookups(lightSpace, static_cast<size_t>(options.cpuLookups));
+            // readLightSpace is top-down; the lookup pass takes GL rows (bottom-up).
+            int w = options.frameSize.x;
+            int h = options.frameSize.y;
+            frameLookups.resize(static_cast<size_t>(w) * h);
+            for (int y = 0; y < h; ++y) {
+                const float* src = lightSpace.data() + static_cast<size_t>(h - 1 - y) * w * 4;
+                for (int x = 0; x < w; ++x) {
+                    frameLookups[static_cast<size_t>(y) * w + x] =
+                        glm::vec4(src[4 * x], src[4 * x + 1], src[4 * x + 2], src[4 * x + 3]);
+                }
+            }
+            lookupPass.setLookups(frameLookups, w);
         }
         std::vector<float> visibility = renderer.readVisibility();
 
         BenchRow& row = rows[order[run]];
         row.point = p;
         row.error = measureError(truth, regions, visibility);
-        TimingResult gpu = renderer.timeCameraPass(s, options.gpuRepeats);
-        row.gpuMs = gpu.medianMs;
-        row.timer = gpu.timer;
+        // One untimed draw of each timed pass: compiles its programs before the rounds.
+        row.timer = renderer.timeCameraPass(s, 1).timer;
+        lookupPass.draw(s.pcfParams(), s.rotatePerPixel);
+        glFinish();
         row.cpuNsPerPixel =
-            timeCpuKernel(map, lookups, s.pcfParams(), options.cpuPasses).nsPerPixel;
+            timeCpuKernel(map(maps, p.mapSize), lookups, s.pcfParams(), options.cpuPasses)
+                .nsPerPixel;
         row.cpuPixels = static_cast<int>(lookups.size());
         row.texelReads = fetchCounts(p.method, s.kernel).texels;
         if (context.onPoint) context.onPoint(row, visibility, regions);
+    }
+
+    // The timing rounds (see bench.h): every point once per round, in run order.
+    std::vector<std::vector<double>> sceneSamples(points.size());
+    std::vector<std::vector<double>> lookupSamples(points.size());
+    for (int round = 0; round < options.gpuRepeats; ++round) {
+        if (context.roundProgress) context.roundProgress(round, options.gpuRepeats);
+        currentMap = -1;
+        for (size_t run = 0; run < order.size(); ++run) {
+            size_t k = order[run];
+            const BenchPoint& p = points[k];
+            RenderSettings s = settingsFor(options, p);
+            if (p.mapSize != currentMap) {
+                renderer.renderShadowPass(s);
+                lookupPass.setMap(maps[p.mapSize]);
+                glFinish();
+                currentMap = p.mapSize;
+            }
+            sceneSamples[k].push_back(renderer.timeCameraPass(s, 1, false).samplesMs.front());
+            PcfParams prm = s.pcfParams();
+            lookupSamples[k].push_back(
+                timeGpu([&] { lookupPass.draw(prm, s.rotatePerPixel); }, 1, false)
+                    .samplesMs.front());
+        }
+    }
+    for (size_t k = 0; k < points.size(); ++k) {
+        BenchRow& row = rows[k];
+        Quartiles scene = quartilesOf(sceneSamples[k]);
+        Quartiles lookup = quartilesOf(lookupSamples[k]);
+        row.gpuMs = scene.median;
+        row.gpuMsIqr = scene.iqr();
+        row.lookupMs = lookup.median;
+        row.lookupMsIqr = lookup.iqr();
+        row.noisy = row.gpuMsIqr > NOISY_IQR_SHARE * row.gpuMs ||
+                    row.lookupMsIqr > NOISY_IQR_SHARE * row.lookupMs;
     }
     return rows;
 }

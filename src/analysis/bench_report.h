@@ -10,17 +10,23 @@
 
 namespace pcf {
 
-// The CSV's first line, exactly (no trailing newline).
+// The CSV's first line, exactly (no trailing newline). The timing spread columns come last, so
+// a reader of the first eleven columns keeps working.
 inline constexpr std::string_view BENCH_CSV_HEADER =
+    "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
+    "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy";
+// The header before the timing spread columns: still read (shipped lesson figures).
+inline constexpr std::string_view BENCH_CSV_HEADER_V1 =
     "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
     "edge_max_err,timer";
 
 // The header, then one line per row in the given order. kernel is 0 for methods that take none;
 // times in ms / ns with 4 / 2 decimals, errors with 9 significant digits (so equal errors read
-// back equal), timer as gpu_timer.h names it. Every line ends with '\n'.
+// back equal), timer as gpu_timer.h names it, noisy 0 or 1. Every line ends with '\n'.
 std::string benchCsv(std::span<const BenchRow> rows);
 
-// Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv). Throws
+// Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv), or the eleven
+// columns of BENCH_CSV_HEADER_V1 (spreads 0, lookup_ms 0, not noisy). Throws
 // pcf::InputError "SOURCE:LINE: problem" on a wrong header, a wrong field count, an unknown
 // method or a field that is not a finite number.
 std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& source);
@@ -37,17 +43,35 @@ struct BenchSetup {
     int truthSpp = 0;
     int comparedPixels = 0;
     int edgePixels = 0;
+    float truthMaxBound = 0.0f;  // the ground truth's largest per-pixel bound
+    int truthRefined = 0;        // pixels the truth integrated finely
+    // The machine while the bench ran: 1-minute load average at the start and the end
+    // (getloadavg; < 0 when unknown), and its core count.
+    double loadStart = -1.0;
+    double loadEnd = -1.0;
+    int cores = 0;
+    bool frontByLookup = false;  // the table's Pareto front (as the chart's): lookup ms, not scene
 };
 
-// A title, a paragraph on the machine (GL_RENDERER) and the timer, the table (one line per row,
-// points on the Pareto front of gpu_ms against edge RMSE marked with *), and how to read it.
+// The share of rows flagged noisy, in [0,1] (0 without rows).
+double noisyShare(std::span<const BenchRow> rows);
+
+// Whether bench.md opens with the busy-machine note: a load average above half the cores at the
+// start or the end, or any noisy point.
+bool benchMachineBusy(std::span<const BenchRow> rows, const BenchSetup& setup);
+
+// A title, the busy-machine note when benchMachineBusy, a paragraph on the machine (GL_RENDERER),
+// the timers and the truth's bound, the table (one line per row, both times with their IQR,
+// noisy points marked with !, points on the Pareto front of gpu_ms against edge RMSE marked with
+// *), and how to read it.
 std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setup);
 
 // Edge RMSEs closer than this are a tie on the Pareto front: pcf-naive, pcf-gather and pcf-hw
 // (and bilinear2x2 and hw2x2) compute one filter, and their errors differ by float rounding.
 constexpr double PARETO_ERROR_TOLERANCE = 1e-6;
 
-// Indices of the rows on the Pareto front of (gpu_ms, edge_rmse), cheapest first (pareto.h).
-std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows);
+// Indices of the rows on the Pareto front of (gpu_ms, edge_rmse), cheapest first (pareto.h);
+// of (lookup_ms, edge_rmse) when byLookup.
+std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows, bool byLookup = false);
 
 }  // namespace pcf

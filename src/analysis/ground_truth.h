@@ -1,17 +1,50 @@
 // ground_truth.h: the exact shadow of an analytic scene, per pixel of the camera's frame: what an
-// infinitely fine shadow map (and an infinitely fine filter) would give. Every number the bench
-// reports as an error is measured against this.
+// infinitely fine shadow map (and an infinitely fine filter) would give, with a stated error bound
+// per pixel. Every number the bench reports as an error is measured against this.
 //
-// Per pixel (x, y) of a W x H frame, K x K stratified sub-pixel samples (jittered, one per cell
-// of a K x K grid over the pixel's square, from a fixed hash: the same truth on every run):
-//   ndc = ((x + sx) / W, (y + sy) / H) * 2 - 1      (GL window coordinates, y up)
-//   ray = cameraRay(camera, ndc, W / H);  hit = intersect(scene, ray)
-//   bit = litByLight(scene, hit)                     (1 lit, 0 in shadow or facing away)
-//   visibility = mean of bit over the samples that hit the object seen at the pixel CENTRE
-// Samples that land on another object or on nothing are left out: at a silhouette the truth is
-// the shadow on the surface the renderer shaded there (its one sample is the pixel centre), not
-// a blend of two surfaces, so the error measures the shadow, not the geometric aliasing. When
-// no sample lands on the centre's object, the centre's own bit is used.
+// Definition: the visibility of pixel (x, y) is the fraction of the pixel's square (in window
+// coordinates, uniform measure) whose camera ray meets the object seen at the pixel CENTRE at a
+// point the light reaches (litByLight), over the part of the square whose ray meets that object
+// at all. Parts of the square on another object or on nothing are left out: at a silhouette the
+// truth is the shadow on the surface the renderer shaded there (its one sample is the pixel
+// centre), not a blend of two surfaces, so the error measures the shadow, not the geometric
+// aliasing.
+//
+// Computed in two passes (threaded by rows):
+// 1. First pass: K x K stratified jittered samples per pixel (K = spp, from a fixed hash: the same
+//    truth on every run); each is lit, unlit, or off the centre's object.
+// 2. Refinement of every pixel where the answer is not plainly uniform: its own lit samples and
+//    unlit samples both occur, or any of its 8 neighbours is mixed or has a different uniform
+//    answer (so an edge that slips between the first pass's samples, along the pixel's border or
+//    across a corner, is still caught by the neighbour it continues into). On such a pixel:
+//    - a scanline at height v in [0,1] is walked at x = i / 16 (i = 0..16); between two walk
+//      points whose states differ the crossing is found by bisection against the exact ray cast
+//      to 1/4096 of a pixel; lit(v) and on(v) are the lit and on-object lengths of the scanline.
+//    - the pixel's integral over v in [0,1] is an adaptive trapezoid rule: panels [a, b] with
+//      scanlines at a, the middle m and b; per panel a coarse estimate (trapezoid on a, b) and
+//      a fine one (on a, m, b), for lit and for on. Start with 4 panels (9 scanlines), then
+//      split the panel whose estimates differ most (two more scanlines, at its quarters) until
+//        bound = (sum over panels of 2 |fine - coarse| for lit and for on
+//                 + 2 c / 4096) / on_total
+//      is <= the target (default 1/512), or the pixel has used 513 scanlines. The value kept is
+//        V = sum of fine lit / sum of fine on
+//      c is the integral of the crossings per scanline: each crossing is placed to within
+//      1/4096 px (bisection half-interval plus float rounding of the ray), which moves lit and
+//      on by that much.
+//    Why: V - V* = (L - L*) / O + V* (O* - O) / O with V* <= 1, so |V - V*| is at most the lit
+//    and on errors over O. Per panel, lit(v) and on(v) are continuous and piecewise smooth (a
+//    kink where an edge crosses a pixel corner, a steep ramp where an edge runs along the
+//    pixel's top or bottom) or jump (a silhouette); halving a panel shrinks the trapezoid
+//    error at least by half (4x on smooth parts, 2x to 4x over a kink, ramp or jump inside it,
+//    exactly 2x when it sits at the panel's end), and |e_fine| <= |e_coarse| / 2 gives
+//    |e_fine| <= |fine - coarse|, met with equality in the last case; the factor 2 is a margin
+//    over rounding and over edges whose error shrinks unevenly (a curve's tangent point). Only
+//    the panels that hold an edge's trouble are split, so a silhouette's jump costs a few
+//    scanlines per halving of the bound, not a doubling of all of them.
+//    Assumed, and not checked: no lit or unlit sliver narrower than 1/16 px across a whole
+//    scanline's walk, and no shadow feature that fits between the first pass's samples of a
+//    pixel AND of all its neighbours (a speck smaller than a pixel, far from any other edge).
+//    Uniform pixels keep the first pass's 0 or 1 with bound 0.
 //
 // Rows are TOP-DOWN, like every image pcfscope writes (element (H - 1 - y) * W + x is GL row y).
 #pragma once
@@ -25,8 +58,15 @@
 
 namespace pcf {
 
-constexpr int DEFAULT_TRUTH_SPP = 8;  // K: K x K samples per pixel
+// K: K x K first-pass samples per pixel. 2 is enough to find the edges (the neighbour rule
+// catches what slips between them) and keeps the first pass cheap; the bound comes from the
+// refinement, not from K.
+constexpr int DEFAULT_TRUTH_SPP = 2;
 constexpr int MAX_TRUTH_SPP = 64;
+// The per-pixel error the refinement aims for: 1/512, a quarter of an 8-bit step.
+constexpr float DEFAULT_TRUTH_TARGET_BOUND = 1.0f / 512.0f;
+// Refinement scanlines per pixel, at most.
+constexpr int MAX_TRUTH_SCANLINES = 513;
 
 struct GroundTruth {
     glm::ivec2 size{0, 0};
@@ -40,6 +80,12 @@ struct GroundTruth {
     // 1 where the surface at the pixel centre faces the light (dot(n, toLight) > 0) and lies in
     // a spot's cone. Elsewhere the truth is 0 by shading, whatever a shadow map says.
     std::vector<uint8_t> facesLight;
+    // The stated bound on |visibility - exact| per pixel (see the top of this file): 0 where the
+    // first pass found the pixel uniform, the refinement's estimate elsewhere.
+    std::vector<float> bound;
+    int refinedPixels = 0;     // pixels the refinement integrated
+    float maxBound = 0.0f;     // the largest bound of the frame
+    float targetBound = 0.0f;  // what the refinement aimed for
 
     size_t index(int x, int rowTopDown) const {
         return static_cast<size_t>(rowTopDown) * static_cast<size_t>(size.x) +
@@ -51,13 +97,16 @@ struct GroundTruth {
 struct GroundTruthOptions {
     int spp = DEFAULT_TRUTH_SPP;  // 1..MAX_TRUTH_SPP
     int threads = 0;              // 0: std::thread::hardware_concurrency()
+    // Refine until the bound is at most this (or a pixel used MAX_TRUTH_SCANLINES); <= 0 turns
+    // the refinement off (the first pass's mean; bound 1 where its samples disagree: no claim).
+    float targetBound = DEFAULT_TRUTH_TARGET_BOUND;
     // Called on the calling thread, about ten times a second and once at the end, with the
     // number of rows done out of the frame's height.
     std::function<void(int rowsDone, int rows)> progress;
 };
 
-// Throws std::invalid_argument for a frame side < 1 or spp out of range. The scene's camera must
-// have its clip planes set (presets and scene files do).
+// Throws std::invalid_argument for a frame side < 1, spp out of range or a NaN target. The scene's
+// camera must have its clip planes set (presets and scene files do).
 GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
                                const GroundTruthOptions& options = {});
 

@@ -101,7 +101,16 @@ glm::vec4 methodColour(int method) {
     return COLOURS[method];
 }
 
-SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size) {
+double chartMs(const BenchRow& row, ChartTiming timing) {
+    return timing == ChartTiming::Lookup ? row.lookupMs : row.gpuMs;
+}
+
+double chartIqr(const BenchRow& row, ChartTiming timing) {
+    return timing == ChartTiming::Lookup ? row.lookupMsIqr : row.gpuMsIqr;
+}
+
+SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
+                                  ChartTiming timing) {
     if (size.x < 64 || size.y < 64) {
         throw std::invalid_argument("layoutSpeedChart: the chart needs at least 64 x 64 pixels");
     }
@@ -143,9 +152,17 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
 
     // Axes. x: log10 of the time, padded by 6% of the span (at least 0.1 decade a side).
     double xMin = 1e300, xMax = -1e300, yMax = 0.0;
+    // The bar's low end stays above a tenth of the median on the log axis.
+    auto barLo = [&](const BenchRow& r) {
+        double ms = chartMs(r, timing);
+        return safeLog(std::max(ms - 0.5 * chartIqr(r, timing), 0.1 * ms));
+    };
+    auto barHi = [&](const BenchRow& r) {
+        return safeLog(chartMs(r, timing) + 0.5 * chartIqr(r, timing));
+    };
     for (const BenchRow& r : rows) {
-        xMin = std::min(xMin, safeLog(r.gpuMs));
-        xMax = std::max(xMax, safeLog(r.gpuMs));
+        xMin = std::min(xMin, barLo(r));
+        xMax = std::max(xMax, barHi(r));
         yMax = std::max(yMax, r.error.edgeRmse);
     }
     if (rows.empty()) xMin = xMax = 0.0;
@@ -188,10 +205,11 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
 
     // Dots, the front, and the labels.
     for (const BenchRow& r : rows) {
-        L.points.emplace_back(xPixel(safeLog(r.gpuMs)), yPixel(r.error.edgeRmse));
-        L.labelTexts.push_back(chartLabel(r.point));
+        L.points.emplace_back(xPixel(safeLog(chartMs(r, timing))), yPixel(r.error.edgeRmse));
+        L.errorBars.emplace_back(xPixel(barLo(r)), xPixel(barHi(r)));
+        L.labelTexts.push_back(chartLabel(r.point) + (r.noisy ? " !" : ""));
     }
-    L.front = benchParetoFront(rows);
+    L.front = benchParetoFront(rows, timing == ChartTiming::Lookup);
     L.labels.assign(rows.size(), Rect{});
 
     // Greedy placement: the front's labels first, then the rest; each takes the first spot
@@ -239,8 +257,8 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
 }
 
 std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
-                                    const SpeedChartText& text) {
-    SpeedChartLayout L = layoutSpeedChart(rows, size);
+                                    const SpeedChartText& text, ChartTiming timing) {
+    SpeedChartLayout L = layoutSpeedChart(rows, size, timing);
     float s = L.scale;
     Fonts f = fontsFor(s);
 
@@ -288,6 +306,18 @@ std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 s
             c.line(L.points[L.front[k - 1]], L.points[L.front[k]], 1.5f * s, FRONT);
         }
         float dotR = 4.5f * s;
+        // Error bars: the IQR of the time, with end ticks, under the dots.
+        for (size_t k = 0; k < rows.size(); ++k) {
+            glm::vec2 bar = L.errorBars[k];
+            if (bar.y - bar.x < 1.0f) continue;
+            float y = L.points[k].y;
+            glm::vec4 ink = methodColour(rows[k].point.method) * 0.7f;
+            ink.a = 1.0f;
+            float w = std::max(1.0f, 1.25f * s);
+            c.line({bar.x, y}, {bar.y, y}, w, ink);
+            c.line({bar.x, y - 3.0f * s}, {bar.x, y + 3.0f * s}, w, ink);
+            c.line({bar.y, y - 3.0f * s}, {bar.y, y + 3.0f * s}, w, ink);
+        }
         for (size_t k : L.front) c.ring(L.points[k], dotR + 2.5f * s, 1.5f * s, FRONT);
         for (size_t k = 0; k < rows.size(); ++k) {
             c.circle(L.points[k], dotR, methodColour(rows[k].point.method));

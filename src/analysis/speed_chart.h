@@ -1,4 +1,5 @@
-// speed_chart.h: the bench's picture, speed_vs_accuracy.png. Camera-pass time on a LOG x axis
+// speed_chart.h: the bench's picture, speed_vs_accuracy.png. Camera-pass or lookup-pass time
+// (ChartTiming) with an error bar as wide as its IQR on a LOG x axis
 // (each run's cost spans 1 to ~200 texel reads), edge-band RMSE on a linear y axis from 0, one
 // dot per run coloured by method and labelled "gather3 1024" (method, N, map size), and the
 // Pareto front (runs no other run beats on both time and error) joined by a line, its dots
@@ -18,6 +19,13 @@
 #include "overlay/rect.h"
 
 namespace pcf {
+
+// Which time the x axis shows (bench.h): the camera pass, or the filter alone as a bare lookup
+// pass.
+enum class ChartTiming { Scene, Lookup };
+// The row's median and IQR of that time, ms.
+double chartMs(const BenchRow& row, ChartTiming timing);
+double chartIqr(const BenchRow& row, ChartTiming timing);
 
 struct ChartTick {
     double value = 0.0;
@@ -40,7 +48,10 @@ struct SpeedChartLayout {
     double yLo = 0.0, yHi = 1.0;        // RMSE at the plot's bottom and top edges
     std::vector<ChartTick> xTicks;
     std::vector<ChartTick> yTicks;
-    std::vector<glm::vec2> points;        // per row: the dot's centre
+    std::vector<glm::vec2> points;  // per row: the dot's centre
+    // per row: the error bar's left and right x, the time's median -/+ half its IQR (a bar
+    // as wide as the IQR, centred on the median; the CSV keeps the IQR, not the quartiles)
+    std::vector<glm::vec2> errorBars;
     std::vector<std::string> labelTexts;  // per row
     std::vector<Rect> labels;             // per row: where its label's box goes
     std::vector<size_t> front;            // rows on the Pareto front, fastest first
@@ -55,11 +66,14 @@ glm::vec4 methodColour(int method);
 
 // Where everything goes. Needs the fonts (to measure labels), not GL. Times <= 0 are drawn at
 // the axis's low end. Throws std::invalid_argument for a side < 64 pixels.
-SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size);
+// Noisy rows' labels end in " !".
+SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
+                                  ChartTiming timing = ChartTiming::Scene);
 
 // The chart as RGBA8, rows top-down (for writePngRgba8), size.x * size.y * 4 bytes. Needs a
 // current OpenGL 4.5 context; leaves its framebuffer bindings as it found them.
 std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
-                                    const SpeedChartText& text);
+                                    const SpeedChartText& text,
+                                    ChartTiming timing = ChartTiming::Scene);
 
 }  // namespace pcf

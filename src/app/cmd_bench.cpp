@@ -2,7 +2,8 @@
 // shadow-map sizes on one scene and writes, into DIR:
 //   bench.csv               one row per run (analysis/bench_report.h has the columns)
 //   bench.md                the same as a table, with the machine and the timer
-//   speed_vs_accuracy.png   GPU time (log) against edge-band RMSE, the Pareto front drawn
+//   speed_vs_accuracy.png   GPU time (log; --timing scene or lookup) with IQR bars against
+//                           edge-band RMSE, the Pareto front drawn
 //   diff/NAME.png           each run's signed error against the ground truth
 // Everything is written into a staging folder inside DIR and moved into place only once the
 // whole sweep has succeeded, so a failure leaves no partial output behind.
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -51,7 +53,8 @@ struct BenchCommandOptions {
     std::string size;
     std::string chartSize;
     int spp = DEFAULT_TRUTH_SPP;  // 2 with --quick unless given
-    int repeats = 5;              // 2 with --quick unless given
+    int repeats = 9;              // timing rounds; 5 with --quick unless given
+    std::string timing = "lookup";
     int threads = 0;
     std::string bias = "constant";
     float constantBias = 0.002f;
@@ -138,7 +141,8 @@ int runBenchCommand(const BenchCommandOptions& o) {
     if (!o.kernels.empty()) options.kernels = parseIntList("--kernels", o.kernels);
     if (!o.mapSizes.empty()) options.mapSizes = parseIntList("--map-sizes", o.mapSizes);
     if (!o.size.empty()) options.frameSize = parseSize("--size", o.size, MAX_FRAME_SIDE);
-    glm::ivec2 chartSize = glm::max(options.frameSize, glm::ivec2(64));
+    // At least 960x540, so a --quick chart of a 320x180 frame is still readable.
+    glm::ivec2 chartSize = glm::max(options.frameSize, glm::ivec2(960, 540));
     if (!o.chartSize.empty()) chartSize = parseSize("--chart-size", o.chartSize, MAX_FRAME_SIDE);
     if (chartSize.x < 64 || chartSize.y < 64) {
         throw UsageError("--chart-size " + o.chartSize + " is too small (64x64 at least)");
@@ -148,6 +152,10 @@ int runBenchCommand(const BenchCommandOptions& o) {
     if (!o.quick || o.given("--repeats")) options.gpuRepeats = o.repeats;
     requireIntRange("--repeats", options.gpuRepeats, 1, 1000);
     requireIntRange("--threads", o.threads, 0, 1024);
+    if (o.timing != "scene" && o.timing != "lookup") {
+        throw UsageError("unknown --timing '" + o.timing + "' (known: scene, lookup)");
+    }
+    ChartTiming timing = o.timing == "scene" ? ChartTiming::Scene : ChartTiming::Lookup;
     std::optional<BiasMode> bias = biasModeFromName(o.bias);
     if (!bias) throw UsageError("unknown bias mode '" + o.bias + "' (known: none, constant)");
     options.base.bias = *bias;
@@ -188,11 +196,14 @@ int runBenchCommand(const BenchCommandOptions& o) {
     };
     StagingDir staging(outDir);
 
+    double loadStart = -1.0;
+    double loadEnd = -1.0;
+    getloadavg(&loadStart, 1);
     std::unique_ptr<GlContext> context = createHeadlessContext();
     int threads = resolveThreadCount(o.threads);
     std::fprintf(stderr,
-                 "bench: %s, %dx%d, %zu runs on %s; ground truth %dx%d samples per pixel on %d "
-                 "thread%s\n",
+                 "bench: %s, %dx%d, %zu runs on %s; ground truth: %dx%d first-pass samples per "
+                 "pixel, edges refined, on %d thread%s\n",
                  scene.name.c_str(), options.frameSize.x, options.frameSize.y, points.size(),
                  context->renderer().c_str(), spp, spp, threads, threads == 1 ? "" : "s");
     GroundTruthOptions truthOptions;
@@ -207,7 +218,9 @@ int runBenchCommand(const BenchCommandOptions& o) {
         }
     };
     GroundTruth truth = computeGroundTruth(scene, options.frameSize, truthOptions);
-    std::fprintf(stderr, "bench: ground truth done (%.1f s)\n", seconds());
+    std::fprintf(stderr,
+                 "bench: ground truth done (%.1f s, %d pixels refined, largest bound %.5f)\n",
+                 seconds(), truth.refinedPixels, truth.maxBound);
     // The chart's accuracy axis is the edge band's error: without a shadow edge in view every
     // method would score a perfect 0 and the chart would say nothing. Refuse instead.
     ErrorRegions truthRegions = errorRegions(truth);
@@ -233,12 +246,17 @@ int runBenchCommand(const BenchCommandOptions& o) {
     ErrorRegions measuredOver;
     bench.onPoint = [&](const BenchRow& row, std::span<const float> visibility,
                         const ErrorRegions& regions) {
-        std::fprintf(stderr, " %.3f ms, edge RMSE %.4f\n", row.gpuMs, row.error.edgeRmse);
+        std::fprintf(stderr, " edge RMSE %.4f\n", row.error.edgeRmse);
         writePngRgba8((staging.path() / "diff" / diffFileName(row.point)).string(), truth.size.x,
                       truth.size.y, differenceImage(truth, regions, visibility));
         if (measuredOver.compared.empty()) measuredOver = regions;
     };
+    bench.roundProgress = [&](int round, int rounds) {
+        std::fprintf(stderr, "bench: timing round %d/%d (every run once, %.1f s)\n", round + 1,
+                     rounds, seconds());
+    };
     std::vector<BenchRow> rows = runBench(bench, options);
+    getloadavg(&loadEnd, 1);
 
     BenchSetup setup;
     setup.sceneName = scene.name;
@@ -251,18 +269,35 @@ int runBenchCommand(const BenchCommandOptions& o) {
     setup.truthSpp = spp;
     setup.comparedPixels = measuredOver.comparedCount;
     setup.edgePixels = measuredOver.edgeCount;
+    setup.truthMaxBound = truth.maxBound;
+    setup.truthRefined = truth.refinedPixels;
+    setup.loadStart = loadStart;
+    setup.loadEnd = loadEnd;
+    setup.cores = resolveThreadCount(0);
+    setup.frontByLookup = timing == ChartTiming::Lookup;
     std::string markdown = benchMarkdown(rows, setup);
     writeTextFile((staging.path() / csvName).string(), benchCsv(rows));
     writeTextFile((staging.path() / mdName).string(), markdown);
     SpeedChartText chartText;
-    chartText.title = "Speed against accuracy: " + scene.name + ", " +
-                      std::to_string(options.frameSize.x) + "x" +
+    chartText.title = std::string("Speed against accuracy") +
+                      (o.quick ? " (--quick: timings indicative only)" : "") + ": " + scene.name +
+                      ", " + std::to_string(options.frameSize.x) + "x" +
                       std::to_string(options.frameSize.y);
-    chartText.subtitle = context->renderer() + "; GPU time: median of " +
-                         std::to_string(options.gpuRepeats) + " camera passes, " +
-                         (rows.empty() ? std::string() : rows.front().timer);
+    std::string timer = rows.empty() ? std::string() : rows.front().timer;
+    chartText.subtitle = context->renderer() + "; median of " + std::to_string(options.gpuRepeats) +
+                         " round-robin samples, " + timer +
+                         "; bars: IQR; ! noisy (IQR > 10 % of median)";
+    chartText.xLabel = timing == ChartTiming::Lookup
+                           ? "filter time: bare lookup pass, ms (log scale)"
+                           : "camera pass time, ms (log scale)";
     writePngRgba8((staging.path() / chartName).string(), chartSize.x, chartSize.y,
-                  drawSpeedChart(rows, chartSize, chartText));
+                  drawSpeedChart(rows, chartSize, chartText, timing));
+    if (benchMachineBusy(rows, setup)) {
+        std::fprintf(stderr,
+                     "bench: the machine was busy (load average %.2f -> %.2f on %d cores); %.0f %% "
+                     "of the points are noisy\n",
+                     loadStart, loadEnd, setup.cores, 100.0 * noisyShare(rows));
+    }
 
     // All written: move into place.
     for (const std::string& name : finalNames) {
@@ -297,14 +332,22 @@ Command addBenchCommand(CLI::App& app) {
                     "shadow map sizes, comma-separated (default 256,512,1024,2048)");
     sub->add_option("-o,--out", o->out, "output directory (default: bench)");
     sub->add_flag("--quick", o->quick,
-                  "a few seconds, for CI: 320x180 frame, maps 128,256, N = 3, 2 GPU repeats, "
-                  "2x2 truth samples (explicit options still win)");
+                  "a few seconds, for CI: 320x180 frame, maps 128,256, N = 3, 5 timing rounds "
+                  "(explicit options still win); its timings are indicative only");
     sub->add_option("--size", o->size, "frame size WxH (default 1280x720)");
     sub->add_option("--chart-size", o->chartSize,
-                    "speed_vs_accuracy.png size WxH (default: the frame size)");
-    sub->add_option("--spp", o->spp, "ground truth: K x K samples per pixel (default 8)");
-    sub->add_option("--repeats", o->repeats, "timed camera passes per run (default 5), median");
-    sub->add_option("--threads", o->threads, "ground truth threads (0 = all cores, the default)");
+                    "speed_vs_accuracy.png size WxH (default: the frame size, at least 960x540)");
+    sub->add_option("--spp", o->spp,
+                    "ground truth: K x K first-pass samples per pixel (default 2); edges are then "
+                    "integrated to a 1/512 bound");
+    sub->add_option("--repeats", o->repeats,
+                    "timing rounds (default 9): each times every run once, round-robin; median "
+                    "and IQR per run");
+    sub->add_option("--timing", o->timing,
+                    "the chart's time axis: lookup (default: the filter alone, a bare lookup "
+                    "pass) or scene (the camera pass)");
+    sub->add_option("--threads", o->threads,
+                    "CPU threads for the ground truth (0 = all cores, the default)");
     sub->add_option("--bias", o->bias, "bias mode: none, constant (default constant)");
     sub->add_option("--constant-bias", o->constantBias,
                     "constant bias in light depth units (ref = z - bias; default 0.002)");

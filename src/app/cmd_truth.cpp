@@ -1,5 +1,6 @@
 // pcfscope truth: the exact shadow of a scene by ray casting (analysis/ground_truth.h), as an
-// EXR of visibility per pixel, rows top-down like every image pcfscope writes.
+// EXR of visibility and its error bound per pixel, rows top-down like every image pcfscope writes.
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -21,6 +22,7 @@ struct TruthCommandOptions {
     std::string size = "1280x720";
     int spp = DEFAULT_TRUTH_SPP;
     int threads = 0;
+    float bound = DEFAULT_TRUTH_TARGET_BOUND;
     bool mask = false;
     std::string out;
     bool force = false;
@@ -34,6 +36,9 @@ int runTruth(const TruthCommandOptions& o) {
     glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE);
     requireIntRange("--spp", o.spp, 1, MAX_TRUTH_SPP);
     requireIntRange("--threads", o.threads, 0, 1024);
+    if (!(o.bound > 0.0f && o.bound <= 1.0f)) {
+        throw UsageError("--bound " + std::to_string(o.bound) + " is out of range (0..1]");
+    }
     if (o.scene.empty() && o.sceneFile.empty()) {
         throw UsageError("truth needs --scene PRESET or --scene-file FILE");
     }
@@ -50,10 +55,14 @@ int runTruth(const TruthCommandOptions& o) {
     GroundTruthOptions options;
     options.spp = o.spp;
     options.threads = o.threads;
+    options.targetBound = o.bound;
     int threads = resolveThreadCount(o.threads);
-    std::fprintf(stderr, "truth: %s, %dx%d, %dx%d samples per pixel, %d thread%s\n",
-                 scene.name.c_str(), size.x, size.y, o.spp, o.spp, threads,
+    std::fprintf(stderr,
+                 "truth: %s, %dx%d, first pass %dx%d samples per pixel, edges refined to a bound "
+                 "of %.5f, %d thread%s\n",
+                 scene.name.c_str(), size.x, size.y, o.spp, o.spp, o.bound, threads,
                  threads == 1 ? "" : "s");
+    auto start = std::chrono::steady_clock::now();
     int lastTenth = 0;
     options.progress = [&](int done, int total) {
         int tenth = done * 10 / total;
@@ -64,16 +73,20 @@ int runTruth(const TruthCommandOptions& o) {
     };
     GroundTruth truth = computeGroundTruth(scene, size, options);
 
-    if (!o.mask) {
-        writeExr(o.out, size.x, size.y, 1, truth.visibility, {"Y"});
-    } else {
-        std::vector<float> data(2 * truth.pixelCount());
-        for (size_t k = 0; k < truth.pixelCount(); ++k) {
-            data[2 * k] = truth.visibility[k];
-            data[2 * k + 1] = truth.receiver[k] ? 1.0f : 0.0f;
-        }
-        writeExr(o.out, size.x, size.y, 2, data, {"Y", "mask"});
+    std::vector<std::string> channels{"visibility", "bound"};
+    if (o.mask) channels.push_back("mask");
+    size_t n = channels.size();
+    std::vector<float> data(n * truth.pixelCount());
+    for (size_t k = 0; k < truth.pixelCount(); ++k) {
+        data[n * k] = truth.visibility[k];
+        data[n * k + 1] = truth.bound[k];
+        if (o.mask) data[n * k + 2] = truth.receiver[k] ? 1.0f : 0.0f;
     }
+    writeExr(o.out, size.x, size.y, static_cast<int>(n), data, channels);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "truth: %d pixels refined, largest bound %.6f (target %.6f), %.2f s\n",
+                 truth.refinedPixels, truth.maxBound, truth.targetBound, seconds);
     outputs.commit();
     std::fprintf(stderr, "truth: wrote %s\n", o.out.c_str());
     return 0;
@@ -84,19 +97,25 @@ int runTruth(const TruthCommandOptions& o) {
 Command addTruthCommand(CLI::App& app) {
     auto o = std::make_shared<TruthCommandOptions>();
     CLI::App* sub = app.add_subcommand(
-        "truth", "exact shadow by ray casting: visibility per pixel, averaged over K x K samples");
+        "truth",
+        "exact shadow by ray casting: visibility per pixel with its error bound (edges "
+        "integrated along sub-scanlines until two resolutions agree)");
     sub->add_option("--scene", o->scene,
                     "built-in scene: box-on-plane, sphere-over-plane, pole, grazing, stairs");
     sub->add_option("--scene-file", o->sceneFile, "scene file (TOML)");
     sub->add_option("--size", o->size, "frame size WxH (default 1280x720)");
-    sub->add_option("--spp", o->spp, "K: K x K stratified samples per pixel (1..64, default 8)");
+    sub->add_option("--spp", o->spp,
+                    "first pass: K x K stratified samples per pixel that find the edges (1..64, "
+                    "default 2)");
+    sub->add_option("--bound", o->bound,
+                    "refine edge pixels until the error bound is at most this (default 1/512)");
     sub->add_option("--threads", o->threads, "worker threads (0 = all cores, the default)");
     sub->add_flag("--mask", o->mask,
                   "add a 'mask' channel: 1 where the pixel centre's camera ray hits a shadow "
                   "receiver (the renderer's receiver pixels)");
     sub->add_option("-o,--out", o->out,
-                    "the truth as a float EXR: channel Y = visibility in "
-                    "[0,1], rows top-down");
+                    "the truth as a float EXR: channels 'visibility' in [0,1] and 'bound' (the "
+                    "stated bound on its error), rows top-down");
     sub->add_flag("-f,--force", o->force, "overwrite an existing output file");
     return {sub, [o] { return runTruth(*o); }};
 }

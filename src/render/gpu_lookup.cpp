@@ -11,27 +11,42 @@ GpuLookup::GpuLookup()
 
 std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec4> lookups,
                                   int width, const PcfParams& prm, bool rotatePerPixel) {
+    setMap(map);
+    setLookups(lookups, width);
+    draw(prm, rotatePerPixel);
+    return read();
+}
+
+void GpuLookup::setMap(const ShadowMap& map) { mDepth = createDepthTexture(map); }
+
+void GpuLookup::setLookups(std::span<const glm::vec4> lookups, int width) {
     if (width <= 0 || lookups.empty() || lookups.size() % static_cast<size_t>(width) != 0) {
         throw std::invalid_argument("lookups must fill whole rows of the grid");
     }
     int height = static_cast<int>(lookups.size() / static_cast<size_t>(width));
-    GlTexture depth = createDepthTexture(map);
-    GlTexture input = createTexture2d(GL_RGBA32F, width, height);
-    glTextureSubImage2D(input.id(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, lookups.data());
-    OffscreenTarget target = createOffscreenTarget(width, height, {GL_R32F});
+    mInput = createTexture2d(GL_RGBA32F, width, height);
+    glTextureSubImage2D(mInput.id(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, lookups.data());
+    if (mWidth != width || mHeight != height) {
+        mTarget = createOffscreenTarget(width, height, {GL_R32F});
+        mWidth = width;
+        mHeight = height;
+    }
+}
 
+void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel) {
+    if (!mDepth || !mInput) throw std::logic_error("GpuLookup::draw before setMap and setLookups");
     GLuint program = mPrograms.get(prm.method, prm.kernel);
     glUseProgram(program);
-    bindShadowMap(program, depth.id(), mSamplers);
-    glBindTextureUnit(2, input.id());
+    bindShadowMap(program, mDepth.id(), mSamplers);
+    glBindTextureUnit(2, mInput.id());
     glBindSampler(2, mSamplers.nearest.id());
     glProgramUniform1i(program, glGetUniformLocation(program, "uLookups"), 2);
     glProgramUniform1f(program, glGetUniformLocation(program, "uRadius"), prm.radius);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRotatePerPixel"),
                        rotatePerPixel ? 1 : 0);
 
-    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
-    glViewport(0, 0, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, mTarget.framebuffer.id());
+    glViewport(0, 0, mWidth, mHeight);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glBindVertexArray(mEmptyVao.id());
@@ -39,11 +54,13 @@ std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     for (GLuint unit : {0u, 1u, 2u}) glBindSampler(unit, 0);
+}
 
+std::vector<float> GpuLookup::read() const {
     // readPixelsFloat returns rows top-down; the lookups went in GL order.
     std::vector<float> out =
-        readPixelsFloat(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, width, height, 1);
-    flipRows(out, static_cast<size_t>(width), static_cast<size_t>(height));
+        readPixelsFloat(mTarget.framebuffer.id(), GL_COLOR_ATTACHMENT0, mWidth, mHeight, 1);
+    flipRows(out, static_cast<size_t>(mWidth), static_cast<size_t>(mHeight));
     return out;
 }
 

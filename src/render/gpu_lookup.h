@@ -3,10 +3,9 @@
 // (u, v, ref) and map, and compare what comes back.
 #pragma once
 
+#include <glm/glm.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "kernel/pcf.h"
 #include "kernel/shadow_map.h"
@@ -15,20 +14,37 @@
 namespace pcf {
 
 class GpuLookup {
-public:
+  public:
     // Needs a current OpenGL 4.5 context.
     GpuLookup();
 
     // Visibility of each lookup (u, v, ref; w unused), filtered by the GPU with `prm`
     // (its rotation is ignored: rotatePerPixel picks pcfPixelRotation of each lookup's pixel).
     // Lookups fill a grid `width` wide, row by row from GL row 0; the result has the same order.
+    // run() is these four in a row: setMap, setLookups, draw, read.
     std::vector<float> run(const ShadowMap& map, std::span<const glm::vec4> lookups, int width,
                            const PcfParams& prm, bool rotatePerPixel);
 
-private:
+    // The parts of run(), for timing the bare lookup pass (bench.h): upload once, then draw as
+    // often as needed, with no upload or readback in the timed part.
+    void setMap(const ShadowMap& map);
+    // Throws std::invalid_argument unless the lookups fill whole rows of a `width`-wide grid.
+    void setLookups(std::span<const glm::vec4> lookups, int width);
+    // One full-screen pass of the kernel over the lookups into an R32F target. Throws
+    // std::logic_error before setMap and setLookups.
+    void draw(const PcfParams& prm, bool rotatePerPixel);
+    // The last draw's visibilities, in the lookups' order.
+    std::vector<float> read() const;
+
+  private:
     PcfProgramCache mPrograms;
     PcfSamplers mSamplers;
     GlVertexArray mEmptyVao;
+    GlTexture mDepth;
+    GlTexture mInput;
+    OffscreenTarget mTarget;
+    int mWidth = 0;
+    int mHeight = 0;
 };
 
 }  // namespace pcf

@@ -23,7 +23,23 @@ double medianOf(std::vector<double> samples) {
     return 0.5 * (samples[mid - 1] + samples[mid]);
 }
 
-TimingResult timeGpu(const std::function<void()>& draw, int repeats) {
+Quartiles quartilesOf(std::vector<double> samples) {
+    Quartiles q;
+    if (samples.empty()) return q;
+    std::sort(samples.begin(), samples.end());
+    auto at = [&](double p) {
+        double h = static_cast<double>(samples.size() - 1) * p;
+        size_t lo = static_cast<size_t>(h);
+        size_t hi = std::min(lo + 1, samples.size() - 1);
+        return samples[lo] + (h - static_cast<double>(lo)) * (samples[hi] - samples[lo]);
+    };
+    q.q1 = at(0.25);
+    q.median = at(0.5);
+    q.q3 = at(0.75);
+    return q;
+}
+
+TimingResult timeGpu(const std::function<void()>& draw, int repeats, bool warmUp) {
     if (repeats < 1) {
         throw std::invalid_argument("timeGpu: repeats must be at least 1, got " +
                                     std::to_string(repeats));
@@ -32,7 +48,7 @@ TimingResult timeGpu(const std::function<void()>& draw, int repeats) {
     std::string_view renderer =
         rendererString != nullptr ? reinterpret_cast<const char*>(rendererString) : "";
     TimingResult result;
-    draw();
+    if (warmUp) draw();
     glFinish();
     if (isSoftwareRenderer(renderer)) {
         result.timer = TIMER_WALL_CLOCK;

@@ -82,7 +82,9 @@ void SceneRenderer::drawObjects(GLuint program, bool castersOnly, bool setMateri
         const SceneObject& object = mScene.objects[k];
         if (castersOnly && !object.castsShadow) continue;
         if (setMaterial) {
-            glProgramUniform3fv(program, uniform(program, "uAlbedo"), 1, &object.colour.x);
+            // scene.frag applies gamma 2.2 to the albedo's factor here, once per object.
+            glm::vec3 encoded = glm::pow(object.colour, glm::vec3(1.0f / 2.2f));
+            glProgramUniform3fv(program, uniform(program, "uAlbedoEncoded"), 1, &encoded.x);
             glProgramUniform1i(program, uniform(program, "uReceives"),
                                object.receivesShadow ? 1 : 0);
         }
@@ -181,13 +183,15 @@ void SceneRenderer::render(const RenderSettings& settings) {
     renderCameraPass(settings);
 }
 
-TimingResult SceneRenderer::timeCameraPass(const RenderSettings& settings, int repeats) {
+TimingResult SceneRenderer::timeCameraPass(const RenderSettings& settings, int repeats,
+                                           bool warmUp) {
     ensureTargets(settings);
     if (mTimingFrame.width != mFrame.width || mTimingFrame.height != mFrame.height) {
         mTimingFrame = createOffscreenTarget(mFrame.width, mFrame.height, {GL_RGBA8},
                                              GL_DEPTH_COMPONENT24);
     }
-    return timeGpu([&] { drawCameraPass(settings, mTimingPrograms, mTimingFrame); }, repeats);
+    return timeGpu([&] { drawCameraPass(settings, mTimingPrograms, mTimingFrame); }, repeats,
+                   warmUp);
 }
 
 std::vector<uint8_t> SceneRenderer::readColour() const {

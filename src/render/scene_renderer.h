@@ -36,7 +36,8 @@ public:
     // Median time of the camera pass over `repeats` draws (gpu_timer.h says which timer), drawn
     // the way an engine would: colour only, into an RGBA8 target of the frame's size, so the
     // extra float targets the inspector needs do not weigh on the method's cost.
-    TimingResult timeCameraPass(const RenderSettings& settings, int repeats);
+    // warmUp false: no untimed draw first (the caller warmed up and samples one at a time).
+    TimingResult timeCameraPass(const RenderSettings& settings, int repeats, bool warmUp = true);
 
     std::vector<uint8_t> readColour() const;     // RGBA8, top-down
     std::vector<float> readLightSpace() const;   // 4 floats per pixel, top-down
