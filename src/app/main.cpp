@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
         pcf::addRenderCommand(app),
         pcf::addTruthCommand(app),
         pcf::addBenchCommand(app),
+        pcf::addStabilityCommand(app),
         pcf::addViewCommand(app),
         pcf::addExportCommand(app),
     };

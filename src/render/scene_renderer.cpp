@@ -60,6 +60,17 @@ glm::mat4 SceneRenderer::clipFromWorld() const {
     return pcf::clipFromWorld(mScene.camera, aspect);
 }
 
+void SceneRenderer::setLight(const Light& light) {
+    mScene.light = light;
+    mShadowClipFromWorld = pcf::shadowClipFromWorld(mScene);
+}
+
+void SceneRenderer::setCamera(const Camera& camera) { mScene.camera = camera; }
+
+void SceneRenderer::setShadowClipFromWorld(const glm::mat4& shadowClipFromWorld) {
+    mShadowClipFromWorld = shadowClipFromWorld;
+}
+
 void SceneRenderer::ensureTargets(const RenderSettings& settings) {
     if (mShadow.width != settings.mapSize || mShadowFormat != settings.depthFormat ||
         !mShadow.framebuffer) {

@@ -54,6 +54,12 @@ public:
     const Scene& scene() const { return mScene; }
     glm::mat4 shadowClipFromWorld() const { return mShadowClipFromWorld; }
     glm::mat4 clipFromWorld() const;
+    // What the sweeps of analysis/stability.h change between frames without re-uploading the
+    // meshes: the light (the shadow matrix is re-fitted to it), the camera, or the shadow
+    // matrix itself (e.g. light.h's shiftShadowOrigin); each takes effect at the next pass.
+    void setLight(const Light& light);
+    void setCamera(const Camera& camera);
+    void setShadowClipFromWorld(const glm::mat4& shadowClipFromWorld);
 
 private:
     struct GpuMesh {
