@@ -154,11 +154,7 @@ double mean(const std::vector<float>& values) {
 class Sweeper {
   public:
     Sweeper(const StabilityContext& context, const StabilityOptions& options)
-        : mContext(context), mOptions(options) {
-        for (const StabilityMethod& m : options.methods) {
-            mReach = std::max(mReach, footprintReachTexels(m, options.base.radius) + 1.0f);
-        }
-    }
+        : mContext(context), mOptions(options) {}
 
     StabilityResult result;
 
@@ -175,7 +171,33 @@ class Sweeper {
   private:
     const StabilityContext& mContext;
     const StabilityOptions& mOptions;
-    float mReach = 1.0f;
+
+    // The footprint's reach for the clean masks: the method's own, + half a texel for the
+    // bilinear taps' rounding.
+    float reachOf(const StabilityMethod& m) const {
+        return footprintReachTexels(m, mOptions.base.radius) + 0.5f;
+    }
+
+    // The clean mask of each method's reach (methods of equal reach share one).
+    std::vector<std::vector<uint8_t>> cleanMasks(const Scene& scene, const GroundTruth& truth,
+                                                 const ErrorRegions& regions,
+                                                 const std::vector<std::optional<Hit>>& hits,
+                                                 const glm::mat4& shadowClip, bool wantLit) const {
+        std::vector<std::vector<uint8_t>> masks;
+        std::vector<float> reaches;
+        for (const StabilityMethod& m : mOptions.methods) {
+            float reach = reachOf(m);
+            auto it = std::find(reaches.begin(), reaches.end(), reach);
+            if (it != reaches.end()) {
+                masks.push_back(masks[static_cast<size_t>(it - reaches.begin())]);
+            } else {
+                masks.push_back(cleanMask(scene, truth, regions, hits, shadowClip,
+                                          mOptions.mapSize, reach, wantLit, mOptions.threads));
+            }
+            reaches.push_back(reach);
+        }
+        return masks;
+    }
 
     void say(const std::string& line) const {
         if (mContext.progress) mContext.progress(line);
@@ -241,12 +263,12 @@ class Sweeper {
             renderer.setLight(scene.light);
             GroundTruth truth = truthOf(scene);
             ErrorRegions regions = regionsOf(renderer, truth);
-            std::vector<uint8_t> lit =
-                cleanMask(scene, truth, regions, hits, renderer.shadowClipFromWorld(),
-                          mOptions.mapSize, mReach, true, mOptions.threads);
+            std::vector<std::vector<uint8_t>> lit = cleanMasks(
+                scene, truth, regions, hits, renderer.shadowClipFromWorld(), true);
             for (BiasMode bias : mOptions.biases) {
-                for (const StabilityMethod& m : mOptions.methods) {
-                    Rate r = falseShadow(frame(renderer, settings(m, bias)), lit);
+                for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
+                    const StabilityMethod& m = mOptions.methods[mi];
+                    Rate r = falseShadow(frame(renderer, settings(m, bias)), lit[mi]);
                     add(Sweep::Acne, m, bias, "elevation_deg", elev, "false_shadow_rate", r.rate);
                     add(Sweep::Acne, m, bias, "elevation_deg", elev, "mean_darkening", r.mean);
                     add(Sweep::Acne, m, bias, "elevation_deg", elev, "clean_lit_pixels",
@@ -270,14 +292,13 @@ class Sweeper {
             std::vector<std::optional<Hit>> hits =
                 centreHits(scene, mOptions.frameSize, mOptions.threads);
             glm::mat4 shadowClip = renderer.shadowClipFromWorld();
-            std::vector<uint8_t> umbra = cleanMask(scene, truth, regions, hits, shadowClip,
-                                                   mOptions.mapSize, mReach, false,
-                                                   mOptions.threads);
-            // Per clean umbra pixel: its distance from the caster, world and texels.
+            std::vector<std::vector<uint8_t>> umbras =
+                cleanMasks(scene, truth, regions, hits, shadowClip, false);
+            // Per truth umbra pixel: its distance from the caster, world and texels.
             std::vector<float> world(truth.pixelCount(), 0.0f), texels(truth.pixelCount(), 0.0f);
             float mapSize = static_cast<float>(mOptions.mapSize);
-            for (size_t k = 0; k < umbra.size(); ++k) {
-                if (!umbra[k]) continue;
+            for (size_t k = 0; k < world.size(); ++k) {
+                if (!regions.compared[k] || truth.visibility[k] > 0.0f || !hits[k]) continue;
                 glm::vec3 p = hits[k]->posWs;
                 std::optional<glm::vec3> q = nearestCasterPoint(scene, p);
                 if (!q) continue;
@@ -288,7 +309,9 @@ class Sweeper {
             }
             for (float b : mOptions.leakBiases) {
                 for (BiasMode bias : mOptions.biases) {
-                    for (const StabilityMethod& m : mOptions.methods) {
+                    for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
+                        const StabilityMethod& m = mOptions.methods[mi];
+                        const std::vector<uint8_t>& umbra = umbras[mi];
                         RenderSettings s = settings(m, bias);
                         s.constantBias = b;
                         std::vector<float> vis = frame(renderer, s);
@@ -308,6 +331,8 @@ class Sweeper {
                             name + ":leak_width_world", widthWorld);
                         add(Sweep::Leak, m, bias, "constant_bias", b,
                             name + ":leak_width_texels", widthTexels);
+                        add(Sweep::Leak, m, bias, "constant_bias", b,
+                            name + ":clean_umbra_pixels", count);
                     }
                 }
             }
@@ -424,19 +449,19 @@ class Sweeper {
         glm::mat4 fitted = renderer.shadowClipFromWorld();
         std::vector<std::optional<Hit>> hits =
             centreHits(scene, mOptions.frameSize, mOptions.threads);
-        std::vector<uint8_t> lit = cleanMask(scene, truth, regions, hits, fitted,
-                                             mOptions.mapSize, mReach, true, mOptions.threads);
+        std::vector<std::vector<uint8_t>> lit = cleanMasks(scene, truth, regions, hits, fitted, true);
         for (DepthFormat format : mOptions.depthFormats) {
             say("precision: depth format " + std::string(depthFormatName(format)));
             std::string suffix = "_d" + std::string(depthFormatName(format));
             for (float ratio : mOptions.depthRanges) {
                 renderer.setShadowClipFromWorld(widenShadowDepthRange(fitted, ratio));
                 for (BiasMode bias : mOptions.biases) {
-                    for (const StabilityMethod& m : mOptions.methods) {
+                    for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
+                        const StabilityMethod& m = mOptions.methods[mi];
                         RenderSettings s = settings(m, bias);
                         s.depthFormat = format;
                         s.constantBias = mOptions.base.constantBias / ratio;
-                        Rate r = falseShadow(frame(renderer, s), lit);
+                        Rate r = falseShadow(frame(renderer, s), lit[mi]);
                         add(Sweep::Precision, m, bias, "depth_range", ratio,
                             "false_shadow_rate" + suffix, r.rate);
                         add(Sweep::Precision, m, bias, "depth_range", ratio,
@@ -542,7 +567,7 @@ StabilityOptions quickStabilityOptions() {
     o.mapSize = 128;
     o.truthSpp = 1;
     o.elevations = {90, 45, 20, 10, 5, 2};
-    o.leakBiases = {0.0005f, 0.002f, 0.008f};
+    o.leakBiases = {0.0005f, 0.002f, 0.032f};
     o.cameraFrames = 3;
     o.depthRanges = {1, 100, 1e4f};
     o.aliasingMapSizes = {128, 512};

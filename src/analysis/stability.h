@@ -7,7 +7,7 @@
 //              AND at every point of a grid spanning +-reach texels of the map around it (moved
 //              in the map's plane, carried along the light onto the pixel's surface plane), so
 //              a filter's legitimate penumbra next to a real shadow is not counted as acne; reach
-//              is the widest footprint of the methods swept, + 1 texel.
+//              is the method's own footprint (footprintReachTexels) + 1/2 texel.
 //   leak       peter panning at the contacts of the `pole` and `box-on-plane` presets, the
 //              constant bias swept: the leak rate = share of the CLEAN UMBRA pixels (the truth
 //              says fully shadowed there and over the whole footprint, as above) where the
