@@ -23,6 +23,9 @@ namespace {
 constexpr float FULLY_LIT = 0.99f;   // acne: a clean lit pixel darker than this is false shadow
 constexpr float LEAK_LEVEL = 0.01f;  // leak: a clean umbra pixel brighter than this leaks
 constexpr int FOOTPRINT_GRID = 3;    // footprint test points per side
+// A change a display can show: half a step of an 8-bit channel. Smaller ones (float rounding
+// of the filter weights as the grid slides, ~1e-7) do not make a pixel "flicker".
+constexpr float VISIBLE_CHANGE = 1.0f / 512.0f;
 constexpr float MAX_ALIASING_JUMP = 32.0f;  // texels between neighbours: another surface
 
 // Rows [0, rows) split over the worker threads, a row at a time from a shared counter.
@@ -365,16 +368,39 @@ class Sweeper {
             for (BiasMode bias : mOptions.biases) {
                 for (const StabilityMethod& m : mOptions.methods) {
                     RenderSettings s = settings(m, bias);
-                    std::vector<float> changes, previous;
+                    std::vector<std::vector<float>> frames;
                     for (int t = 0; t < mOptions.shimmerFrames; ++t) {
                         float step = static_cast<float>(t) / SHIMMER_STEPS;
                         renderer.setShadowClipFromWorld(
                             shiftShadowOrigin(fitted, glm::vec2(step), mOptions.mapSize, snap));
-                        std::vector<float> vis = frame(renderer, s);
-                        if (t > 0) addChanges(vis, previous, regions.compared, changes);
-                        previous = std::move(vis);
+                        frames.push_back(frame(renderer, s));
+                    }
+                    // The flickering pixels: compared pixels whose value changes visibly in any frame.
+                    std::vector<uint8_t> flickers(regions.compared.size(), 0);
+                    int flickering = 0;
+                    for (size_t k = 0; k < flickers.size(); ++k) {
+                        if (!regions.compared[k]) continue;
+                        for (size_t t = 1; t < frames.size() && !flickers[k]; ++t) {
+                            flickers[k] =
+                                std::abs(frames[t][k] - frames[t - 1][k]) > VISIBLE_CHANGE ? 1 : 0;
+                        }
+                        flickering += flickers[k];
+                    }
+                    std::vector<float> changes, flickerChanges;
+                    for (size_t t = 1; t < frames.size(); ++t) {
+                        addChanges(frames[t], frames[t - 1], regions.compared, changes);
+                        addChanges(frames[t], frames[t - 1], flickers, flickerChanges);
                     }
                     std::string prefix = snap ? "snapped_" : "light_";
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
+                        prefix + "flicker_share",
+                        regions.comparedCount > 0
+                            ? static_cast<double>(flickering) / regions.comparedCount
+                            : 0.0);
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
+                        prefix + "flicker_mean", mean(flickerChanges));
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
+                        prefix + "flicker_p99", percentile(flickerChanges, 0.99));
                     add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
                         prefix + "mean", mean(changes));
                     add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,

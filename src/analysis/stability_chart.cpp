@@ -430,7 +430,7 @@ std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::i
     BarChartSpec spec;
     spec.title = "Shimmer: how much the picture flickers while nothing in the world moves";
     spec.subtitle = subtitle;
-    spec.yLabel = "99th percentile of |v(t) - v(t-1)| over the receivers";
+    spec.yLabel = "99th percentile of |v(t) - v(t-1)| over the pixels that flicker at all";
     spec.series = {"texel grid slid 1/32 texel a frame", "the same, snapped to whole texels",
                    "camera slid by sub-pixel steps (error change)"};
     for (const StabilityMethod& m : methodsOf(rows, "shimmer")) {
@@ -441,8 +441,8 @@ std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::i
                     r.bias != bias) {
                     continue;
                 }
-                if (r.metric == "light_p99") g.values[0] = r.y;
-                if (r.metric == "snapped_p99") g.values[1] = r.y;
+                if (r.metric == "light_flicker_p99") g.values[0] = r.y;
+                if (r.metric == "snapped_flicker_p99") g.values[1] = r.y;
                 if (r.metric == "camera_p99") g.values[2] = r.y;
             }
             spec.groups.push_back(g);

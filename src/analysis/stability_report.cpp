@@ -142,6 +142,9 @@ std::vector<StabilitySummary> summarizeStability(std::span<const StabilityRow> r
             if (r.metric == "light_mean") s->shimmerMean = r.y;
             if (r.metric == "light_p99") s->shimmerP99 = r.y;
             if (r.metric == "snapped_mean") s->snappedMean = r.y;
+            if (r.metric == "snapped_max") s->snappedMax = r.y;
+            if (r.metric == "light_flicker_p99") s->flickerP99 = r.y;
+            if (r.metric == "light_flicker_share") s->flickerShare = r.y;
             if (r.metric == "snapped_p99") s->snappedP99 = r.y;
             if (r.metric == "camera_mean") s->cameraMean = r.y;
             if (r.metric == "camera_p99") s->cameraP99 = r.y;
@@ -192,10 +195,10 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
     }
     md += "| method | bias | acne onset | worst acne |";
     for (const std::string& sc : leakScenes) md += " leak " + sc + " |";
-    md += " shimmer mean | shimmer p99 | snapped p99 | camera p99 |\n";
+    md += " shimmer mean | shimmer p99 | flicker p99 (share) | snapped max | camera p99 |\n";
     md += "|---|---|---:|---:|";
     for (size_t k = 0; k < leakScenes.size(); ++k) md += "---:|";
-    md += "---:|---:|---:|---:|\n";
+    md += "---:|---:|---:|---:|---:|\n";
     auto opt = [](double v, int decimals) { return v < 0.0 ? std::string("-") : fixed(v, decimals); };
     for (const StabilitySummary& s : summary) {
         md += "| " + stabilityMethodName(s.method) + " | " + s.bias + " | ";
@@ -220,7 +223,9 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
         }
         md += ' ';
         md += opt(s.shimmerMean, 4) + " | " + opt(s.shimmerP99, 3) + " | " +
-              opt(s.snappedP99, 3) + " | " + opt(s.cameraP99, 3) + " |\n";
+              opt(s.flickerP99, 3) +
+              (s.flickerShare < 0.0 ? std::string() : " (" + percent(s.flickerShare) + ")") +
+              " | " + opt(s.snappedMax, 4) + " | " + opt(s.cameraP99, 3) + " |\n";
     }
     md += "\nAcne onset: the highest light elevation (degrees above the ground, swept down from 90) "
           "where more than 1 % of the clean lit pixels (lit in the truth over the filter's whole "
@@ -233,8 +238,10 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
               "caster the light reaches, world units (shadow-map texels). ";
     }
     md += "Shimmer: |v(t) - v(t-1)| over the receivers while the map's texel grid slides 1/32 "
-          "texel a frame (the world's shadow does not move), mean and 99th percentile; snapped: "
-          "the same grid snapped to whole texels; camera: the change of the error v - truth "
+          "texel a frame (the world's shadow does not move), mean and 99th percentile; flicker: the "
+          "99th percentile over only the pixels that change at all (and their share of the "
+          "receivers); snapped max: the largest change left with the grid snapped to whole "
+          "texels; camera: the change of the error v - truth "
           "while the camera slides by sub-pixel steps.\n";
     std::string aliasing;
     for (const StabilityRow& r : rows) {

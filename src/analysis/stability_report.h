@@ -45,6 +45,8 @@ struct StabilitySummary {
     // Shimmer of the light's grid slid by 1/32 texel: mean and p99 of |v(t) - v(t-1)|; the same
     // snapped to whole texels; and the camera's change of error. Negative: not swept.
     double shimmerMean = -1.0, shimmerP99 = -1.0;
+    double flickerP99 = -1.0, flickerShare = -1.0;  // over the pixels that change at all
+    double snappedMax = -1.0;
     double snappedMean = -1.0, snappedP99 = -1.0;
     double cameraMean = -1.0, cameraP99 = -1.0;
 };
