@@ -71,9 +71,9 @@ std::vector<uint8_t> cleanMask(const Scene& scene, const GroundTruth& truth,
             float v = truth.visibility[k];
             if (wantLit ? v < 1.0f : v > 0.0f) continue;
             const Hit& h = *hits[k];
-            std::vector<glm::vec3> points = footprintPoints(
-                scene, shadowClip, mapSize, h.posWs, h.frontFace ? h.normalWs : -h.normalWs,
-                reach, FOOTPRINT_GRID);
+            std::vector<glm::vec3> points =
+                footprintPoints(scene, shadowClip, mapSize, h.posWs,
+                                h.frontFace ? h.normalWs : -h.normalWs, reach, FOOTPRINT_GRID);
             if (points.empty()) continue;
             bool clean = true;
             for (glm::vec3 p : points) {
@@ -142,8 +142,7 @@ Rate falseShadow(const std::vector<float>& vis, const std::vector<uint8_t>& clea
 double percentile(std::vector<float>& values, double q) {
     if (values.empty()) return 0.0;
     size_t k = std::min(values.size() - 1, static_cast<size_t>(q * (values.size() - 1) + 0.5));
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k),
-                     values.end());
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
     return values[k];
 }
 
@@ -163,11 +162,21 @@ class Sweeper {
 
     void run(Sweep sweep) {
         switch (sweep) {
-            case Sweep::Acne: acne(); break;
-            case Sweep::Leak: leak(); break;
-            case Sweep::Shimmer: shimmer(); break;
-            case Sweep::Precision: precision(); break;
-            case Sweep::Aliasing: aliasing(); break;
+            case Sweep::Acne:
+                acne();
+                break;
+            case Sweep::Leak:
+                leak();
+                break;
+            case Sweep::Shimmer:
+                shimmer();
+                break;
+            case Sweep::Precision:
+                precision();
+                break;
+            case Sweep::Aliasing:
+                aliasing();
+                break;
         }
     }
 
@@ -194,8 +203,8 @@ class Sweeper {
             if (it != reaches.end()) {
                 masks.push_back(masks[static_cast<size_t>(it - reaches.begin())]);
             } else {
-                masks.push_back(cleanMask(scene, truth, regions, hits, shadowClip,
-                                          mOptions.mapSize, reach, wantLit, mOptions.threads));
+                masks.push_back(cleanMask(scene, truth, regions, hits, shadowClip, mOptions.mapSize,
+                                          reach, wantLit, mOptions.threads));
             }
             reaches.push_back(reach);
         }
@@ -259,23 +268,22 @@ class Sweeper {
         for (size_t e = 0; e < elevations.size(); ++e) {
             float elev = elevations[e];
             char line[96];
-            std::snprintf(line, sizeof line, "acne %zu/%zu: light %.0f deg above the ground",
-                          e + 1, elevations.size(), elev);
+            std::snprintf(line, sizeof line, "acne %zu/%zu: light %.0f deg above the ground", e + 1,
+                          elevations.size(), elev);
             say(line);
             Scene scene = sceneAtElevation(elev);
             renderer.setLight(scene.light);
             GroundTruth truth = truthOf(scene);
             ErrorRegions regions = regionsOf(renderer, truth);
-            std::vector<std::vector<uint8_t>> lit = cleanMasks(
-                scene, truth, regions, hits, renderer.shadowClipFromWorld(), true);
+            std::vector<std::vector<uint8_t>> lit =
+                cleanMasks(scene, truth, regions, hits, renderer.shadowClipFromWorld(), true);
             for (BiasMode bias : mOptions.biases) {
                 for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
                     const StabilityMethod& m = mOptions.methods[mi];
                     Rate r = falseShadow(frame(renderer, settings(m, bias)), lit[mi]);
                     add(Sweep::Acne, m, bias, "elevation_deg", elev, "false_shadow_rate", r.rate);
                     add(Sweep::Acne, m, bias, "elevation_deg", elev, "mean_darkening", r.mean);
-                    add(Sweep::Acne, m, bias, "elevation_deg", elev, "clean_lit_pixels",
-                        r.count);
+                    add(Sweep::Acne, m, bias, "elevation_deg", elev, "clean_lit_pixels", r.count);
                 }
             }
         }
@@ -330,12 +338,12 @@ class Sweeper {
                         }
                         double rate = count > 0 ? static_cast<double>(leaking) / count : 0.0;
                         add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_rate", rate);
-                        add(Sweep::Leak, m, bias, "constant_bias", b,
-                            name + ":leak_width_world", widthWorld);
-                        add(Sweep::Leak, m, bias, "constant_bias", b,
-                            name + ":leak_width_texels", widthTexels);
-                        add(Sweep::Leak, m, bias, "constant_bias", b,
-                            name + ":clean_umbra_pixels", count);
+                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_world",
+                            widthWorld);
+                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_texels",
+                            widthTexels);
+                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":clean_umbra_pixels",
+                            count);
                     }
                 }
             }
@@ -375,7 +383,8 @@ class Sweeper {
                             shiftShadowOrigin(fitted, glm::vec2(step), mOptions.mapSize, snap));
                         frames.push_back(frame(renderer, s));
                     }
-                    // The flickering pixels: compared pixels whose value changes visibly in any frame.
+                    // The flickering pixels: compared pixels whose value changes visibly in any
+                    // frame.
                     std::vector<uint8_t> flickers(regions.compared.size(), 0);
                     int flickering = 0;
                     for (size_t k = 0; k < flickers.size(); ++k) {
@@ -401,12 +410,12 @@ class Sweeper {
                         prefix + "flicker_mean", mean(flickerChanges));
                     add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
                         prefix + "flicker_p99", percentile(flickerChanges, 0.99));
-                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
-                        prefix + "mean", mean(changes));
-                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
-                        prefix + "p99", percentile(changes, 0.99));
-                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
-                        prefix + "max", percentile(changes, 1.0));
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS, prefix + "mean",
+                        mean(changes));
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS, prefix + "p99",
+                        percentile(changes, 0.99));
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS, prefix + "max",
+                        percentile(changes, 1.0));
                 }
             }
         }
@@ -475,7 +484,8 @@ class Sweeper {
         glm::mat4 fitted = renderer.shadowClipFromWorld();
         std::vector<std::optional<Hit>> hits =
             centreHits(scene, mOptions.frameSize, mOptions.threads);
-        std::vector<std::vector<uint8_t>> lit = cleanMasks(scene, truth, regions, hits, fitted, true);
+        std::vector<std::vector<uint8_t>> lit =
+            cleanMasks(scene, truth, regions, hits, fitted, true);
         for (DepthFormat format : mOptions.depthFormats) {
             say("precision: depth format " + std::string(depthFormatName(format)));
             std::string suffix = "_d" + std::string(depthFormatName(format));
@@ -561,11 +571,16 @@ class Sweeper {
 
 std::string_view sweepName(Sweep sweep) {
     switch (sweep) {
-        case Sweep::Acne: return "acne";
-        case Sweep::Leak: return "leak";
-        case Sweep::Shimmer: return "shimmer";
-        case Sweep::Precision: return "precision";
-        default: return "aliasing";
+        case Sweep::Acne:
+            return "acne";
+        case Sweep::Leak:
+            return "leak";
+        case Sweep::Shimmer:
+            return "shimmer";
+        case Sweep::Precision:
+            return "precision";
+        default:
+            return "aliasing";
     }
 }
 
@@ -616,8 +631,8 @@ std::optional<std::string> validateStabilityOptions(const StabilityOptions& o) {
     if (o.sweeps.empty()) return std::string("--sweep is empty");
     if (o.frameSize.x < 16 || o.frameSize.y < 16 || o.frameSize.x > MAX_FRAME_SIDE ||
         o.frameSize.y > MAX_FRAME_SIDE) {
-        return std::string("the frame size is out of range (16.." +
-                           std::to_string(MAX_FRAME_SIDE) + " a side)");
+        return std::string("the frame size is out of range (16.." + std::to_string(MAX_FRAME_SIDE) +
+                           " a side)");
     }
     if (o.mapSize < MIN_MAP_SIZE || o.mapSize > MAX_MAP_SIZE) {
         return "--map-size " + std::to_string(o.mapSize) + " is out of range (" +
@@ -667,12 +682,16 @@ std::optional<std::string> validateStabilityOptions(const StabilityOptions& o) {
 
 float footprintReachTexels(const StabilityMethod& m, float poissonRadius) {
     switch (m.method) {
-        case PCF_NEAREST: return 0.5f;
+        case PCF_NEAREST:
+            return 0.5f;
         case PCF_BOX2X2:
         case PCF_BILINEAR2X2:
-        case PCF_HW2X2: return 1.0f;
-        case PCF_POISSON: return poissonRadius + 0.5f;
-        default: return 0.5f * static_cast<float>(std::max(m.kernel, 1) + 1);
+        case PCF_HW2X2:
+            return 1.0f;
+        case PCF_POISSON:
+            return poissonRadius + 0.5f;
+        default:
+            return 0.5f * static_cast<float>(std::max(m.kernel, 1) + 1);
     }
 }
 

@@ -70,8 +70,8 @@ std::string stabilityMethodName(const StabilityMethod& m);
 constexpr int SHIMMER_STEPS = 32;  // the light's grid moves 1/32 texel per frame
 
 struct StabilityOptions {
-    std::vector<StabilityMethod> methods{{PCF_NEAREST, 0}, {PCF_BILINEAR2X2, 0}, {PCF_GATHER, 3},
-                                         {PCF_GATHER, 5}};
+    std::vector<StabilityMethod> methods{
+        {PCF_NEAREST, 0}, {PCF_BILINEAR2X2, 0}, {PCF_GATHER, 3}, {PCF_GATHER, 5}};
     std::vector<BiasMode> biases{BiasMode::None, BiasMode::Constant};
     std::vector<Sweep> sweeps = allSweeps();
     // Bias parameters, culling, polygon offset, depth format of every frame (method, kernel,
@@ -79,8 +79,8 @@ struct StabilityOptions {
     RenderSettings base;
     glm::ivec2 frameSize{480, 270};
     int mapSize = 512;
-    int truthSpp = 2;   // K x K ground-truth samples per pixel
-    int threads = 0;    // for the truth and the masks; 0 = all cores
+    int truthSpp = 2;  // K x K ground-truth samples per pixel
+    int threads = 0;   // for the truth and the masks; 0 = all cores
     std::vector<float> elevations{90, 75, 60, 45, 35, 25, 18, 12, 8, 5, 3, 2};  // degrees
     std::vector<std::string> leakScenes{"pole", "box-on-plane"};
     std::vector<float> leakBiases{0.0005f, 0.001f, 0.002f, 0.004f, 0.008f, 0.016f};
@@ -101,11 +101,11 @@ std::optional<std::string> validateStabilityOptions(const StabilityOptions& opti
 
 // One measured point: the columns of stability.csv, in order.
 struct StabilityRow {
-    std::string sweep;   // sweepName
-    int method = -1;     // -1: not per method (aliasing), written "-"
+    std::string sweep;  // sweepName
+    int method = -1;    // -1: not per method (aliasing), written "-"
     int kernel = 0;
-    std::string bias;    // biasModeName, or "-" (aliasing)
-    std::string xName;   // e.g. "elevation_deg", "constant_bias", "texel_step", "depth_range"
+    std::string bias;   // biasModeName, or "-" (aliasing)
+    std::string xName;  // e.g. "elevation_deg", "constant_bias", "texel_step", "depth_range"
     double x = 0.0;
     std::string metric;  // e.g. "false_shadow_rate", "pole:leak_width_texels", "light_p99"
     double y = 0.0;

@@ -154,8 +154,8 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
     if (xLo > xHi) xLo = 0.0, xHi = 1.0;
     if (xHi - xLo < 1e-9) xLo -= 0.5, xHi += 0.5;
     double yStep = niceStep(std::max(yHi - spec.yFloor, 1e-6) * 1.05 / 5.0);
-    double yTop = spec.yFloor + std::ceil((std::max(yHi - spec.yFloor, 1e-6) * 1.05) / yStep) *
-                                    yStep;
+    double yTop =
+        spec.yFloor + std::ceil((std::max(yHi - spec.yFloor, 1e-6) * 1.05) / yStep) * yStep;
 
     std::vector<LegendEntry> legend;
     for (const ChartPanel& p : spec.panels) {
@@ -308,8 +308,7 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
             legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
         }
         legendW = std::round(legendW + 40.0f * s);
-        Rect plot{std::round(62.0f * s), std::round(top),
-                  std::round(size.x - legendW - 90.0f * s),
+        Rect plot{std::round(62.0f * s), std::round(top), std::round(size.x - legendW - 90.0f * s),
                   std::round(size.y - top - 2.0f * tickH - 20.0f * s)};
         float stroke = std::max(1.0f, std::round(s));
         auto yPixel = [&](double y) {
@@ -364,7 +363,8 @@ std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec
     LineChartSpec spec;
     spec.title = "Shadow acne: false shadow on lit receivers as the light sinks";
     spec.subtitle = subtitle;
-    spec.xLabel = "light elevation above the ground, degrees (log scale; the sun sets to the right)";
+    spec.xLabel =
+        "light elevation above the ground, degrees (log scale; the sun sets to the right)";
     spec.yLabel = "false-shadow rate (lit pixels darker than 0.99)";
     spec.logX = true;
     spec.reverseX = true;
@@ -374,8 +374,8 @@ std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec
         for (const std::string& bias : biasesOf(rows, "acne")) {
             ChartLine line{bias, biasColour(bias), false, {}};
             for (const StabilityRow& r : rows) {
-                if (r.sweep == "acne" && r.metric == "false_shadow_rate" &&
-                    r.method == m.method && r.kernel == m.kernel && r.bias == bias) {
+                if (r.sweep == "acne" && r.metric == "false_shadow_rate" && r.method == m.method &&
+                    r.kernel == m.kernel && r.bias == bias) {
                     line.points.emplace_back(r.x, r.y);
                 }
             }

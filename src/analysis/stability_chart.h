@@ -34,9 +34,9 @@ struct LineChartSpec {
     std::string xLabel;
     std::string yLabel;
     bool logX = false;
-    bool reverseX = false;   // largest x on the left
-    bool percentY = false;   // y is a share: ticks as percents
-    double yFloor = 0.0;     // y axis starts here; its top is the data's maximum, rounded up
+    bool reverseX = false;  // largest x on the left
+    bool percentY = false;  // y is a share: ticks as percents
+    double yFloor = 0.0;    // y axis starts here; its top is the data's maximum, rounded up
     std::vector<ChartPanel> panels;
     std::vector<std::string> notes;  // legend lines without a swatch (e.g. "dashed: pole")
 };
@@ -46,7 +46,7 @@ struct LineChartSpec {
 std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size);
 
 struct BarGroup {
-    std::string label;          // under the group, e.g. "gather5 constant"
+    std::string label;           // under the group, e.g. "gather5 constant"
     std::vector<double> values;  // one bar per series
 };
 

@@ -59,8 +59,9 @@ std::vector<StabilityRow> parseStabilityCsv(std::string_view text, const std::st
         if (!row.empty() && row.back() == '\r') row.pop_back();
         if (line == 1) {
             if (row != STABILITY_CSV_HEADER) {
-                throw InputError(source, line, "not a stability.csv header: expected '" +
-                                                   std::string(STABILITY_CSV_HEADER) + "'");
+                throw InputError(source, line,
+                                 "not a stability.csv header: expected '" +
+                                     std::string(STABILITY_CSV_HEADER) + "'");
             }
             continue;
         }
@@ -78,9 +79,9 @@ std::vector<StabilityRow> parseStabilityCsv(std::string_view text, const std::st
             char* endPtr = nullptr;
             double v = std::strtod(f[k].c_str(), &endPtr);
             if (f[k].empty() || *endPtr != '\0' || !std::isfinite(v)) {
-                throw InputError(source, line,
-                                 "field " + std::to_string(k + 1) + " '" + f[k] +
-                                     "' is not a number");
+                throw InputError(
+                    source, line,
+                    "field " + std::to_string(k + 1) + " '" + f[k] + "' is not a number");
             }
             return v;
         };
@@ -199,7 +200,9 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
     md += "|---|---|---:|---:|";
     for (size_t k = 0; k < leakScenes.size(); ++k) md += "---:|";
     md += "---:|---:|---:|---:|---:|\n";
-    auto opt = [](double v, int decimals) { return v < 0.0 ? std::string("-") : fixed(v, decimals); };
+    auto opt = [](double v, int decimals) {
+        return v < 0.0 ? std::string("-") : fixed(v, decimals);
+    };
     for (const StabilitySummary& s : summary) {
         md += "| " + stabilityMethodName(s.method) + " | " + s.bias + " | ";
         if (!s.acneSwept) {
@@ -222,14 +225,14 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
             }
         }
         md += ' ';
-        md += opt(s.shimmerMean, 4) + " | " + opt(s.shimmerP99, 3) + " | " +
-              opt(s.flickerP99, 3) +
+        md += opt(s.shimmerMean, 4) + " | " + opt(s.shimmerP99, 3) + " | " + opt(s.flickerP99, 3) +
               (s.flickerShare < 0.0 ? std::string() : " (" + percent(s.flickerShare) + ")") +
               " | " + opt(s.snappedMax, 4) + " | " + opt(s.cameraP99, 3) + " |\n";
     }
-    md += "\nAcne onset: the highest light elevation (degrees above the ground, swept down from 90) "
-          "where more than 1 % of the clean lit pixels (lit in the truth over the filter's whole "
-          "footprint) come out darker than 0.99; worst acne: the largest such share. ";
+    md +=
+        "\nAcne onset: the highest light elevation (degrees above the ground, swept down from 90) "
+        "where more than 1 % of the clean lit pixels (lit in the truth over the filter's whole "
+        "footprint) come out darker than 0.99; worst acne: the largest such share. ";
     if (anyLeak) {
         char buf[64];
         std::snprintf(buf, sizeof buf, "%g", constantBias);
@@ -237,12 +240,13 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
               ": the share of clean umbra pixels brighter than 0.01, and how far from the "
               "caster the light reaches, world units (shadow-map texels). ";
     }
-    md += "Shimmer: |v(t) - v(t-1)| over the receivers while the map's texel grid slides 1/32 "
-          "texel a frame (the world's shadow does not move), mean and 99th percentile; flicker: the "
-          "99th percentile over only the pixels that change at all (and their share of the "
-          "receivers); snapped max: the largest change left with the grid snapped to whole "
-          "texels; camera: the change of the error v - truth "
-          "while the camera slides by sub-pixel steps.\n";
+    md +=
+        "Shimmer: |v(t) - v(t-1)| over the receivers while the map's texel grid slides 1/32 "
+        "texel a frame (the world's shadow does not move), mean and 99th percentile; flicker: the "
+        "99th percentile over only the pixels that change at all (and their share of the "
+        "receivers); snapped max: the largest change left with the grid snapped to whole "
+        "texels; camera: the change of the error v - truth "
+        "while the camera slides by sub-pixel steps.\n";
     std::string aliasing;
     for (const StabilityRow& r : rows) {
         if (r.sweep != "aliasing") continue;

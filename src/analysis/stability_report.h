@@ -14,7 +14,8 @@
 namespace pcf {
 
 // The CSV's first line, exactly (no trailing newline).
-inline constexpr std::string_view STABILITY_CSV_HEADER = "sweep,method,kernel,bias,x_name,x,metric,y";
+inline constexpr std::string_view STABILITY_CSV_HEADER =
+    "sweep,method,kernel,bias,x_name,x,metric,y";
 
 // The header, then one line per row in the given order: method by its id ("-" when the row is
 // not per method), kernel 0 for methods that take none, x and y with 9 significant digits.

@@ -107,7 +107,7 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
     if (!o.quick || o.given("--map-size")) options.mapSize = base.mapSize;
     std::vector<int> kernels = {3, 5};
     if (o.quick) kernels = {3};
-    if (!o.kernels.empty()) {
+    if (o.given("--kernels")) {
         kernels.clear();
         for (const std::string& item : splitList("--kernels", o.kernels)) {
             char* end = nullptr;
@@ -120,9 +120,9 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
             kernels.push_back(static_cast<int>(v));
         }
     }
-    if (!o.methods.empty() || !o.kernels.empty()) {
+    if (o.given("--methods") || o.given("--kernels")) {
         std::vector<std::string> names;
-        if (o.methods.empty()) {
+        if (!o.given("--methods")) {
             for (const StabilityMethod& m : options.methods) {
                 std::string n(methodInfo(m.method).name);
                 if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
@@ -134,8 +134,8 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
         for (const std::string& name : names) {
             std::optional<int> id = methodFromName(name);
             if (!id) {
-                throw UsageError("unknown method '" + name + "' in --methods (known: " +
-                                 methodNameList() + ")");
+                throw UsageError("unknown method '" + name +
+                                 "' in --methods (known: " + methodNameList() + ")");
             }
             if (!methodInfo(*id).usesKernel) {
                 options.methods.push_back({*id, 0});
@@ -150,7 +150,7 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
             if (!any) throw UsageError(name + " takes --kernels 3, 5 or 7 and none was given");
         }
     }
-    if (!o.biases.empty()) {
+    if (o.given("--biases")) {
         options.biases.clear();
         for (const std::string& name : splitList("--biases", o.biases)) {
             std::optional<BiasMode> b = biasModeFromName(name);
@@ -158,7 +158,7 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
             options.biases.push_back(*b);
         }
     }
-    if (!o.sweeps.empty()) {
+    if (o.given("--sweep")) {
         options.sweeps.clear();
         for (const std::string& name : splitList("--sweep", o.sweeps)) {
             std::optional<Sweep> s = sweepFromName(name);
