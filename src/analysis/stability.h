@@ -83,7 +83,7 @@ struct StabilityOptions {
     int threads = 0;   // for the truth and the masks; 0 = all cores
     std::vector<float> elevations{90, 75, 60, 45, 35, 25, 18, 12, 8, 5, 3, 2};  // degrees
     std::vector<std::string> leakScenes{"pole", "box-on-plane"};
-    std::vector<float> leakBiases{0.0005f, 0.001f, 0.002f, 0.004f, 0.008f, 0.016f};
+    std::vector<float> leakBiases{0.0005f, 0.001f, 0.002f, 0.004f, 0.008f, 0.016f, 0.032f, 0.064f};
     int shimmerFrames = SHIMMER_STEPS;  // light-grid frames, 1/32 texel apart
     int cameraFrames = 6;               // camera frames, 1/cameraFrames pixel apart
     std::vector<float> depthRanges{1, 10, 100, 1e3f, 1e4f, 1e5f};

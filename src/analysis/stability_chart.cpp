@@ -156,6 +156,10 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
     double yStep = niceStep(std::max(yHi - spec.yFloor, 1e-6) * 1.05 / 5.0);
     double yTop =
         spec.yFloor + std::ceil((std::max(yHi - spec.yFloor, 1e-6) * 1.05) / yStep) * yStep;
+    if (spec.percentY && yHi <= 1.0 && (yTop > 1.0 || yHi > 0.5)) {
+        yStep = 0.2;  // a share never passes 100 %: ticks of 20 % up to exactly 100 %
+        yTop = 1.0;
+    }
 
     std::vector<LegendEntry> legend;
     for (const ChartPanel& p : spec.panels) {
@@ -224,19 +228,18 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
                     if (std::find(xs.begin(), xs.end(), q.x) == xs.end()) xs.push_back(q.x);
                 }
             }
-            float lastRight = -1e30f, lastLeft = 1e30f;
+            std::sort(xs.begin(), xs.end(),
+                      [&](double a, double b) { return xPixel(a) < xPixel(b); });
+            float lastRight = -1e30f;
             for (double x : xs) {
                 float pxX = std::round(xPixel(x)) + 0.5f;
                 c.line({pxX, plot.y}, {pxX, plot.bottom()}, stroke, GRID);
                 std::string t = tickText(x, false);
                 float w = measureText(FontFace::Sans, tickFont, t).x;
-                bool fits = spec.reverseX ? pxX + w / 2 + 4.0f * s < lastLeft
-                                          : pxX - w / 2 - 4.0f * s > lastRight;
-                if (fits) {
+                if (pxX - w / 2 - 4.0f * s > lastRight) {
                     c.text({pxX, plot.bottom() + 3.0f * s}, t,
                            {FontFace::Sans, tickFont, SOFT_INK, TextAlign::Center});
                     lastRight = pxX + w / 2;
-                    lastLeft = pxX - w / 2;
                 }
             }
             c.strokeRect(plot.expanded(stroke), stroke, SOFT_INK);

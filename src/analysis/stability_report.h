@@ -34,7 +34,7 @@ struct StabilitySummary {
     std::optional<double> acneOnsetDeg;
     bool acneSwept = false;
     double acneWorstRate = 0.0;  // the largest false-shadow rate of the sweep
-    // Leak at the constant bias nearest the run's (per leak scene, in the scenes' order).
+    // Leak at the swept constant bias nearest summarizeStability's leakBias (per leak scene).
     struct Leak {
         std::string scene;
         double bias = 0.0;
@@ -52,9 +52,10 @@ struct StabilitySummary {
     double cameraMean = -1.0, cameraP99 = -1.0;
 };
 
-// The summary lines in the rows' order of (method, bias). constantBias picks the leak column.
+// The summary lines in the rows' order of (method, bias); the leak entries are those at the
+// swept constant bias nearest leakBias.
 std::vector<StabilitySummary> summarizeStability(std::span<const StabilityRow> rows,
-                                                 double constantBias);
+                                                 double leakBias);
 
 // The value of one (sweep, method, kernel, bias, metric) at x, or nullopt.
 std::optional<double> stabilityValue(std::span<const StabilityRow> rows, std::string_view sweep,

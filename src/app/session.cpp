@@ -8,6 +8,8 @@
 
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
+#include "analysis/stability_chart.h"
+#include "analysis/stability_report.h"
 #include "app/cli_util.h"
 #include "kernel/methods.h"
 #include "lesson/lesson_text.h"
@@ -92,12 +94,64 @@ Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presen
 
 namespace {
 
-std::vector<BenchRow> readChartRows(const std::string& csvPath) {
+std::string readChartText(const std::string& csvPath) {
     std::ifstream file(csvPath, std::ios::binary);
     std::stringstream text;
     text << file.rdbuf();
     if (!file) throw InputError(csvPath, 0, "cannot open file");
-    return parseBenchCsv(text.str(), csvPath);
+    return text.str();
+}
+
+std::vector<BenchRow> readChartRows(const std::string& csvPath) {
+    return parseBenchCsv(readChartText(csvPath), csvPath);
+}
+
+// A step's chart: "PATH" (a bench.csv) or "PATH#VIEW" (a stability.csv and which of its charts:
+// acne, leak or shimmer).
+struct ChartRef {
+    std::string path;
+    std::string view;  // empty for a bench chart
+};
+
+ChartRef chartRef(const std::string& chart) {
+    size_t hash = chart.rfind('#');
+    if (hash == std::string::npos) return {chart, ""};
+    return {chart.substr(0, hash), chart.substr(hash + 1)};
+}
+
+// The stability chart `view` of a stability.csv, or InputError for an unknown view or no rows.
+std::vector<uint8_t> drawStabilityView(const ChartRef& ref, glm::ivec2 size) {
+    std::vector<StabilityRow> rows = parseStabilityCsv(readChartText(ref.path), ref.path);
+    std::string subtitle =
+        "measured by pcfscope stability, " + std::filesystem::path(ref.path).filename().string();
+    std::vector<uint8_t> rgba;
+    if (ref.view == "acne") {
+        rgba = drawAcneChart(rows, size, subtitle);
+    } else if (ref.view == "leak") {
+        rgba = drawLeakChart(rows, size, subtitle);
+    } else if (ref.view == "shimmer") {
+        rgba = drawShimmerChart(rows, size, subtitle);
+    } else {
+        throw InputError(ref.path, 0,
+                         "unknown stability chart '#" + ref.view +
+                             "' (known: #acne, #leak, #shimmer)");
+    }
+    if (rgba.empty()) throw InputError(ref.path, 0, "no " + ref.view + " rows to chart");
+    return rgba;
+}
+
+// Throws InputError unless the stability.csv has rows for the view.
+void checkStabilityView(const ChartRef& ref) {
+    std::vector<StabilityRow> rows = parseStabilityCsv(readChartText(ref.path), ref.path);
+    if (ref.view != "acne" && ref.view != "leak" && ref.view != "shimmer") {
+        throw InputError(ref.path, 0,
+                         "unknown stability chart '#" + ref.view +
+                             "' (known: #acne, #leak, #shimmer)");
+    }
+    for (const StabilityRow& r : rows) {
+        if (r.sweep == ref.view) return;
+    }
+    throw InputError(ref.path, 0, "no " + ref.view + " rows to chart");
 }
 
 }  // namespace
@@ -109,8 +163,12 @@ Lesson loadLessonChecked(const std::string& path) {
         const LessonStep& step = lesson.steps[i];
         if (step.chart.empty()) continue;
         try {
-            std::vector<BenchRow> rows = readChartRows(step.chart);
-            if (rows.empty()) throw InputError(step.chart, 0, "no rows to chart");
+            ChartRef ref = chartRef(step.chart);
+            if (!ref.view.empty()) {
+                checkStabilityView(ref);
+            } else if (readChartRows(ref.path).empty()) {
+                throw InputError(ref.path, 0, "no rows to chart");
+            }
         } catch (const InputError& e) {
             throw InputError(path, step.chartLine,
                              "step " + std::to_string(i + 1) + " chart: " + e.what());
@@ -198,12 +256,18 @@ void Session::blitChart(const std::string& csvPath) {
     glm::ivec2 size(mLayout.scene.size());
     std::string key = csvPath + "@" + std::to_string(size.x) + "x" + std::to_string(size.y);
     if (key != mChartKey) {
-        std::vector<BenchRow> rows = readChartRows(csvPath);
-        SpeedChartText labels;
-        labels.title = "Speed against accuracy";
-        labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
-                          std::filesystem::path(csvPath).filename().string();
-        std::vector<uint8_t> rgba = drawSpeedChart(rows, size, labels);
+        ChartRef ref = chartRef(csvPath);
+        std::vector<uint8_t> rgba;
+        if (!ref.view.empty()) {
+            rgba = drawStabilityView(ref, size);
+        } else {
+            std::vector<BenchRow> rows = readChartRows(csvPath);
+            SpeedChartText labels;
+            labels.title = "Speed against accuracy";
+            labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
+                              std::filesystem::path(csvPath).filename().string();
+            rgba = drawSpeedChart(rows, size, labels);
+        }
         mChart = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
         glTextureSubImage2D(mChart.colors[0].id(), 0, 0, 0, size.x, size.y, GL_RGBA,
                             GL_UNSIGNED_BYTE, rgba.data());

@@ -124,13 +124,17 @@ class LessonParser {
             step.text = requireText(table, "text", what, table);
             if (table.get("chart")) {
                 std::string chart = requireText(table, "chart", what, table);
-                std::filesystem::path p = std::filesystem::path(mSource).parent_path() / chart;
+                // "figures/stability.csv#shimmer": which of a stability.csv's charts to show.
+                size_t hash = chart.find('#');
+                std::string view = hash == std::string::npos ? "" : chart.substr(hash);
+                std::filesystem::path p =
+                    std::filesystem::path(mSource).parent_path() / chart.substr(0, hash);
                 std::error_code ec;
                 if (!std::filesystem::is_regular_file(p, ec)) {
                     fail(*table.get("chart"), what + " chart '" + chart + "' not found (looked at " +
                                                   p.string() + ")");
                 }
-                step.chart = p.string();
+                step.chart = p.string() + view;
                 step.chartLine = lineOf(*table.get("chart"));
             }
             step.settings = state;

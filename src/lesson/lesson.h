@@ -102,6 +102,8 @@ struct LessonStep {
     LessonSettings settings;  // the state at this step: [settings], then every step up to here
     // `chart = "figures/bench.csv"`: this step shows the speed/accuracy chart drawn from that
     // bench.csv (a path relative to the lesson file) where the scene would be. Not inherited.
+    // A stability.csv names its chart after a '#': "figures/stability.csv#acne" (or #leak,
+    // #shimmer), kept in `chart` after the resolved path.
     std::string chart;
     int chartLine = 0;  // the line of the `chart` key
 };
