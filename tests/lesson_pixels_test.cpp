@@ -164,6 +164,18 @@ const std::map<std::string, Claims>& lessonClaims() {
         // The chart steps trace the lesson's pixel too: it stays in the penumbra throughout.
         {"11-speed-and-accuracy",
          {{penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}}},
+        // Lesson 11's state: the chart steps keep the pixel in the penumbra.
+        {"13-shimmer-and-snapping",
+         {{penumbra()},
+          {{"0 or 1",
+            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }}},
+          {penumbra()},
+          {penumbra()}}},
+        {"14-bias-trade-off",
+         {{{"faint acne", [](const Trace& t) { return t.visibility > 0.5f && t.visibility < 1.0f; }}},
+          {{"faint acne", [](const Trace& t) { return t.visibility > 0.5f && t.visibility < 1.0f; }}},
+          {lit()},
+          {lit()}}},
     };
     return claims;
 }
