@@ -295,6 +295,10 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
     }
     double yStep = niceStep(std::max(yMax, 1e-6) * 1.1 / 5.0);
     double yTop = std::ceil(std::max(yMax, 1e-6) * 1.1 / yStep) * yStep;
+    if (yMax > 0.5 && yMax <= 1.0) {
+        yStep = 0.2;  // changes of visibility never pass 1
+        yTop = 1.0;
+    }
     static const Colour SERIES[] = {{0.0f, 0.45f, 0.70f, 1.0f},
                                     {0.55f, 0.55f, 0.58f, 1.0f},
                                     {0.84f, 0.37f, 0.0f, 1.0f},

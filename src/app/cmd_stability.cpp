@@ -197,7 +197,9 @@ std::string settingsLine(const StabilityOptions& o) {
 int runStabilityCommand(const StabilityCommandOptions& o) {
     // Every check first: nothing is computed or written unless all of it can be.
     StabilityOptions options = parseOptions(o);
-    glm::ivec2 chartSize = parseSize("--chart-size", o.chartSize, MAX_FRAME_SIDE, glm::ivec2(64));
+    // --quick draws its charts at half size unless told otherwise.
+    std::string chartText = o.quick && !o.given("--chart-size") ? "640x360" : o.chartSize;
+    glm::ivec2 chartSize = parseSize("--chart-size", chartText, MAX_FRAME_SIDE, glm::ivec2(64));
     Scene scene = o.render.loadScene();
     if (o.out.empty()) throw UsageError("-o needs a directory");
     fs::path outDir(o.out);
@@ -292,7 +294,7 @@ Command addStabilityCommand(CLI::App& app) {
                     "sweeps, comma-separated: acne, leak, shimmer, precision, aliasing (default "
                     "all)");
     sub->add_option("-o,--out", o->out, "output directory (default: stability)");
-    sub->add_option("--chart-size", o->chartSize, "chart size WxH (default 1280x720)");
+    sub->add_option("--chart-size", o->chartSize, "chart size WxH (default 1280x720; --quick 640x360)");
     sub->add_option("--spp", o->spp, "ground truth: K x K samples per pixel (default 2)");
     sub->add_option("--threads", o->threads, "ground truth threads (0 = all cores, the default)");
     sub->add_flag("--quick", o->quick,
