@@ -294,7 +294,8 @@ Command addStabilityCommand(CLI::App& app) {
                     "sweeps, comma-separated: acne, leak, shimmer, precision, aliasing (default "
                     "all)");
     sub->add_option("-o,--out", o->out, "output directory (default: stability)");
-    sub->add_option("--chart-size", o->chartSize, "chart size WxH (default 1280x720; --quick 640x360)");
+    sub->add_option("--chart-size", o->chartSize,
+                    "chart size WxH (default 1280x720; --quick 640x360)");
     sub->add_option("--spp", o->spp, "ground truth: K x K samples per pixel (default 2)");
     sub->add_option("--threads", o->threads, "ground truth threads (0 = all cores, the default)");
     sub->add_flag("--quick", o->quick,
