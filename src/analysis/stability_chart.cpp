@@ -315,6 +315,7 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
             legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
         }
         legendW = std::round(legendW + 40.0f * s);
+        top += tickH / 2;  // room for the top tick's label
         Rect plot{std::round(62.0f * s), std::round(top), std::round(size.x - legendW - 90.0f * s),
                   std::round(size.y - top - 2.0f * tickH - 20.0f * s)};
         float stroke = std::max(1.0f, std::round(s));
