@@ -24,9 +24,10 @@ std::vector<std::string> lessonFiles() {
     return files;
 }
 
-TEST(LessonFiles, ThereAreElevenInTeachingOrder) {
+// Numbered 01, 02, ... with no gap and no repeat, however many there are.
+TEST(LessonFiles, AreNumberedContiguouslyInTeachingOrder) {
     std::vector<std::string> files = lessonFiles();
-    ASSERT_EQ(files.size(), 11u);
+    ASSERT_GE(files.size(), 11u);
     for (size_t i = 0; i < files.size(); ++i) {
         std::string stem = std::filesystem::path(files[i]).stem().string();
         // 01-..., 02-...: the name sorts in the order the lessons are taught.
@@ -62,7 +63,7 @@ TEST(LessonFiles, EveryPlaceholderIsKnownAndFillsFromATrace) {
             SCOPED_TRACE(file + ": " + step.title);
             const LessonSettings& s = step.settings;
             Trace trace = traceLookup(map, vec2(0.4625f, 0.3875f), 0.5f, 0.5f - s.depthBias(),
-                                      s.pcfParams(s.pixel, LESSON_FRAME_SIZE));
+                                      s.pcfParams(s.pixel, LESSON_FRAME_SIZE), s.biasParams());
             int taps = static_cast<int>(trace.taps.size());
             int fetches = static_cast<int>(trace.fetches.size());
             EXPECT_FALSE(checkPlaceholders(step.text, taps, fetches));

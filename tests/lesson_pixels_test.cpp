@@ -35,6 +35,10 @@ RenderSettings renderSettings(const LessonSettings& s, glm::ivec2 frameSize) {
     r.depthFormat = depthFormatFromName(s.depthFormat).value();
     r.bias = biasModeFromName(s.bias).value();
     r.constantBias = s.constantBias;
+    r.slopeBias = s.slopeBias;
+    r.slopeMax = s.slopeMax;
+    r.normalOffset = s.normalOffset;
+    r.softScale = s.softScale;
     r.shadowCull = cullModeFromName(s.cull).value();
     r.frameSize = frameSize;
     return r;
@@ -56,13 +60,17 @@ std::vector<RenderedStep> renderLesson(const std::string& name, glm::ivec2 frame
         renderer.render(renderSettings(s, frameSize));
         std::vector<float> lightSpace = renderer.readLightSpace();
         std::vector<float> visibility = renderer.readVisibility();
+        std::vector<float> receiver = renderer.readReceiver();
         ShadowMap map = renderer.readShadowMap();
         glm::ivec2 px = scalePixel(s.pixel, frameSize);
         size_t at = static_cast<size_t>(px.y) * frameSize.x + px.x;
         const float* ls = &lightSpace[at * 4];
         float ref = ls[2];
-        Trace trace = traceLookup(map, vec2(ls[0], ls[1]), ref + s.depthBias(), ref,
-                                  s.pcfParams(px, frameSize));
+        // The bias mode with the receiver plane and depth the shader used (receiver target).
+        BiasParams bias = s.biasParams();
+        bias.dzduv = vec2(receiver[at * 4], receiver[at * 4 + 1]);
+        Trace trace = traceLookup(map, vec2(ls[0], ls[1]), receiver[at * 4 + 2], ref,
+                                  s.pcfParams(px, frameSize), bias);
         out.push_back({std::move(trace), visibility[at], ls[3] > 0.5f});
     }
     return out;
