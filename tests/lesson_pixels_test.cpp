@@ -172,6 +172,24 @@ const std::map<std::string, Claims>& lessonClaims() {
         // The chart steps trace the lesson's pixel too: it stays in the penumbra throughout.
         {"11-speed-and-accuracy",
          {{penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}}},
+        // One ref for all reads: read 0 tests the ground's own texel and fails; with the
+        // receiver plane the same read gets its own ref and passes, down to a tiny constant;
+        // per gather the plane is too coarse for that constant.
+        {"12-receiver-plane-bias",
+         {{{"acne: read 0 behind its own surface",
+            [](const Trace& t) {
+                return t.visibility < 1.0f && t.taps[0].depth < t.ref && t.taps[0].ref == t.ref;
+            }}},
+          {lit(),
+           firstTapMargin(true),
+           {"read 0 rescued by its own ref",
+            [](const Trace& t) { return t.taps[0].depth < t.ref && tapsChangedByPlane(t) > 0; }}},
+          {lit(), firstTapMargin(true)},
+          {{"per gather read 2 fails",
+            [](const Trace& t) {
+                return t.visibility < 1.0f && t.taps[2].depth < t.taps[2].ref &&
+                       t.counts.gathers > 0;
+            }}}}},
     };
     return claims;
 }
