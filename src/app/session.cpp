@@ -30,6 +30,11 @@ std::string settingsSummary(const LessonSettings& s) {
     if (info.usesRadius) line << " R=" << formatNumber(s.radius) << (s.rotate ? " rotated" : "");
     line << "   bias " << s.bias;
     if (s.bias != "none") line << " " << formatNumber(s.constantBias);
+    if (s.bias == "slope") {
+        line << " +" << formatNumber(s.slopeBias) << "tan<=" << formatNumber(s.slopeMax);
+    }
+    if (s.bias == "normal") line << " k=" << formatNumber(s.normalOffset);
+    if (s.bias == "soft") line << " x" << formatNumber(s.softScale);
     line << "   cull " << s.cull << "   map " << s.mapSize << " " << s.depthFormat;
     return line.str();
 }
@@ -83,6 +88,10 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) 
     r.depthFormat = depthFormatFromName(s.depthFormat).value_or(DepthFormat::D32F);
     r.bias = biasModeFromName(s.bias).value_or(BiasMode::Constant);
     r.constantBias = s.constantBias;
+    r.slopeBias = s.slopeBias;
+    r.slopeMax = s.slopeMax;
+    r.normalOffset = s.normalOffset;
+    r.softScale = s.softScale;
     r.shadowCull = cullModeFromName(s.cull).value_or(CullMode::Back);
     r.frameSize = sceneSize;
     return r;
@@ -308,8 +317,12 @@ void Session::traceAtPixel() {
     if (mLightSpace[k + 3] != 1.0f) return;
     glm::vec2 uv(mLightSpace[k], mLightSpace[k + 1]);
     float ref = mLightSpace[k + 2];
-    float z = ref + mSettings.depthBias();
-    mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(mPixel, size));
+    // The receiver target holds the plane the shader used and the depth before any bias.
+    std::vector<float> receiver = mRenderer->readReceiverRegion(mPixel, glm::ivec2(1));
+    BiasParams bias = mSettings.biasParams();
+    bias.dzduv = glm::vec2(receiver[0], receiver[1]);
+    float z = receiver[3] == 1.0f ? receiver[2] : ref + mSettings.depthBias();
+    mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(mPixel, size), bias);
 }
 
 std::string Session::stepText() const {

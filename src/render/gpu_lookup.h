@@ -24,6 +24,11 @@ public:
     // Lookups fill a grid `width` wide, row by row from GL row 0; the result has the same order.
     std::vector<float> run(const ShadowMap& map, std::span<const glm::vec4> lookups, int width,
                            const PcfParams& prm, bool rotatePerPixel);
+    // The same under a bias mode: lookup k compares per tap as PcfRef(lookup.z, uv, bias) says,
+    // with dz/duv = dzduv[k] (empty: bias.dzduv for every lookup).
+    std::vector<float> run(const ShadowMap& map, std::span<const glm::vec4> lookups, int width,
+                           const PcfParams& prm, bool rotatePerPixel, const PcfBias& bias,
+                           std::span<const glm::vec2> dzduv);
 
 private:
     PcfProgramCache mPrograms;
