@@ -3,8 +3,11 @@
 // same inputs. see: src/render/gpu_lookup.cpp
 uniform sampler2D uPcfDepth;
 uniform sampler2D uLookups;  // RGBA32F: u, v, ref, unused
+uniform sampler2D uPlanes;   // RG32F: dz/du, dz/dv of each lookup (receiver-plane bias)
 uniform float uRadius;
 uniform int uRotatePerPixel;
+uniform int uBiasMode;       // PCF_BIAS_* (the per-tap part: receiver plane, soft, interpolated)
+uniform float uSoftScale;
 
 layout(location = 0) out float oVisibility;
 
@@ -12,6 +15,9 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 lookup = texelFetch(uLookups, pixel, 0);
     vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(pixel) : vec2(1.0f, 0.0f);
-    oVisibility = pcfFilter(uPcfDepth, vec2(lookup.x, lookup.y), lookup.z,
-                            PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation));
+    vec4 plane = texelFetch(uPlanes, pixel, 0);
+    vec2 uv = vec2(lookup.x, lookup.y);
+    PcfRef ref = PcfRef(lookup.z, uv, PcfBias(uBiasMode, vec2(plane.x, plane.y), uSoftScale));
+    oVisibility = pcfFilterRef(uPcfDepth, uv, ref,
+                               PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation));
 }

@@ -2,7 +2,8 @@
 // shared/pcf_kernel.h, the same source the CPU kernel compiles (the loader puts the prelude and
 // the kernel before this file). PCF_METHOD and PCF_KERNEL arrive as defines, so the driver
 // folds the method dispatch and unrolls the kernel loops. PCF_ALL_TARGETS adds outputs: 0 colour
-// only (timing), 1 + light-space and visibility (the inspector), 2 + world position (tests, --raw).
+// only (timing), 1 + light-space, visibility and receiver (the inspector), 2 + world position
+// (tests, --raw).
 // see: src/render/scene_renderer.cpp (uniforms, targets), src/kernel/pcf.h (CPU side)
 in vec3 vPosWs;
 in vec3 vNormalWs;
@@ -15,7 +16,13 @@ uniform int uLightType;               // 0 directional, 1 spot
 uniform vec3 uLightDirWs;             // the direction the light travels (unit)
 uniform vec3 uLightPosWs;             // spot only
 uniform float uSpotCosCone;           // spot only: cos of the cone's half angle
-uniform float uConstantBias;          // ref = z - bias, in light depth units ([0,1])
+uniform int uBiasMode;                // PCF_BIAS_NONE .. (shared/pcf_kernel.h)
+uniform float uConstantBias;          // subtracted from z by every mode but none (0 for none)
+uniform float uSlopeBias;             // slope: s in min(b + s * tan(theta), max)
+uniform float uSlopeMax;              // slope: max
+uniform float uNormalOffset;          // normal: k, texels
+uniform float uShadowTexelWs;         // world size of one map texel at clip.w = 1
+uniform float uSoftScale;             // soft: the correction scale of seed 001
 uniform float uRadius;                // poisson radius in texels
 uniform int uRotatePerPixel;          // poisson: rotate the disk per pixel
 
@@ -23,9 +30,10 @@ layout(location = 0) out vec4 oColour;
 #if PCF_ALL_TARGETS
 layout(location = 1) out vec4 oLightSpace;  // u, v, ref, 1 on receivers (cleared to 0)
 layout(location = 2) out float oVisibility; // what pcfFilter returned (1 off receivers)
+layout(location = 3) out vec4 oReceiver;    // dz/du, dz/dv, z before bias, 1 on receivers
 #endif
 #if PCF_ALL_TARGETS >= 2
-layout(location = 3) out vec4 oPosWs;       // world position, w = 1 where drawn
+layout(location = 4) out vec4 oPosWs;       // world position, w = 1 where drawn
 #endif
 
 const float AMBIENT = 0.25f;
@@ -44,19 +52,39 @@ void main() {
     float nDotL = max(dot(n, toLight), 0.0f);
 
     // GL convention: ndc = clip / w, uv = ndc.xy * 0.5 + 0.5, depth = ndc.z * 0.5 + 0.5.
-    vec4 clip = uShadowClipFromWorld * vec4(vPosWs, 1.0f);
+    vec4 clip0 = uShadowClipFromWorld * vec4(vPosWs, 1.0f);
+    float z0 = (clip0.z / clip0.w) * 0.5f + 0.5f;  // the receiver's own depth, before any bias
+    // Normal offset: the point moves along its normal before it is projected
+    // (pcfNormalOffsetDistance: Holbert 2011, Castano 2013). The texel's world size grows with
+    // clip.w under a spot light's perspective and is constant under a directional light's.
+    vec3 posLookupWs = vPosWs;
+    if (uBiasMode == PCF_BIAS_NORMAL) {
+        posLookupWs = vPosWs + n * pcfNormalOffsetDistance(dot(n, toLight), uNormalOffset,
+                                                           uShadowTexelWs * clip0.w);
+    }
+    vec4 clip = uShadowClipFromWorld * vec4(posLookupWs, 1.0f);
     vec3 ndc = clip.xyz / clip.w;
     float u = ndc.x * 0.5f + 0.5f;
     float v = ndc.y * 0.5f + 0.5f;
     float z = ndc.z * 0.5f + 0.5f;
-    float ref = z - uConstantBias;
+    // The per-lookup bias: constant for every mode but none (uConstantBias is 0 there), slope
+    // scaled by tan(theta) and capped for slope (pcfSlopeBias).
+    float bias = uConstantBias;
+    if (uBiasMode == PCF_BIAS_SLOPE) {
+        bias = pcfSlopeBias(dot(n, toLight), uConstantBias, uSlopeBias, uSlopeMax);
+    }
+    float ref = z - bias;
+    // The receiver's plane in the map, from this pixel's screen-space derivatives (Isidoro 2006,
+    // pcfReceiverPlaneDzDuv); written out so the CPU kernel uses the very same slope.
+    vec2 dzduv = pcfReceiverPlaneDzDuv(dFdx(vec3(u, v, z)), dFdy(vec3(u, v, z)));
 
     float visibility = 1.0f;
     if (uReceives != 0) {
         vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(ivec2(gl_FragCoord.xy))
                                              : vec2(1.0f, 0.0f);
-        visibility = pcfFilter(uPcfDepth, vec2(u, v), ref,
-                               PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation));
+        PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(uBiasMode, dzduv, uSoftScale));
+        visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef,
+                                  PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation));
     }
     // Gamma 2.2 of albedo * light, light = ambient + diffuse * visibility (a scalar):
     //   pow(albedo * light, 1/2.2) = pow(albedo, 1/2.2) * pow(light, 1/2.2)
@@ -68,6 +96,7 @@ void main() {
 #if PCF_ALL_TARGETS
     oLightSpace = uReceives != 0 ? vec4(u, v, ref, 1.0f) : vec4(0.0f);
     oVisibility = visibility;
+    oReceiver = uReceives != 0 ? vec4(dzduv.x, dzduv.y, z0, 1.0f) : vec4(0.0f);
 #endif
 #if PCF_ALL_TARGETS >= 2
     oPosWs = vec4(vPosWs, 1.0f);

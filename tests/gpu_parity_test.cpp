@@ -1,11 +1,13 @@
 // The GLSL equals the CPU kernel: the same shared source, compiled twice, gives the same
 // visibility on the same inputs (DESIGN.md section 5). Runs on llvmpipe through EGL in CI.
-#include <algorithm>
-#include <cmath>
-#include <random>
-
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/pcf.h"
 #include "render/gl_context.h"
@@ -19,7 +21,7 @@ namespace {
 constexpr float PARITY_TOLERANCE = 1e-5f;
 
 class GpuParity : public ::testing::Test {
-protected:
+  protected:
     static void SetUpTestSuite() { sContext = createHeadlessContext(); }
     static void TearDownTestSuite() { sContext.reset(); }
     static std::unique_ptr<GlContext> sContext;
@@ -79,9 +81,8 @@ TEST_F(GpuParity, RandomLookupsOnRandomMapsMatchTheCpuKernel) {
                     float cpu = filterVisibility(map, glm::vec2(lookups[k]), lookups[k].z, p);
                     worst = std::max(worst, std::fabs(cpu - got[k]));
                 }
-                EXPECT_LE(worst, PARITY_TOLERANCE)
-                    << describe(prm) << " map " << size.x << "x" << size.y
-                    << (rotate ? " rotated" : "");
+                EXPECT_LE(worst, PARITY_TOLERANCE) << describe(prm) << " map " << size.x << "x"
+                                                   << size.y << (rotate ? " rotated" : "");
             }
         }
     }
@@ -110,8 +111,8 @@ TEST_F(GpuParity, GatherComponentOrderTapByTap) {
                 std::vector<float> got = gpu.run(map, lookups, 2, makeParams(method, 1), false);
                 EXPECT_NEAR(got[0], weights[dj][di], 1e-5f)
                     << methodInfo(method).name << " lit texel " << di << "," << dj;
-                EXPECT_NEAR(filterVisibility(map, uv, 0.5f, makeParams(method, 1)),
-                            weights[dj][di], 1e-6f);
+                EXPECT_NEAR(filterVisibility(map, uv, 0.5f, makeParams(method, 1)), weights[dj][di],
+                            1e-6f);
             }
         }
     }
@@ -154,13 +155,118 @@ TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
                         if (vis[k] < 0.5f) ++shadowed;
                     }
                 }
-                std::string what = std::string(preset) + " map " + std::to_string(mapSize) +
-                                   " " + describe(prm);
+                std::string what =
+                    std::string(preset) + " map " + std::to_string(mapSize) + " " + describe(prm);
                 EXPECT_LE(worst, PARITY_TOLERANCE) << what;
                 EXPECT_GT(receivers, s.frameSize.x * s.frameSize.y / 4) << what;
                 EXPECT_GT(shadowed, 50) << what;  // there is a shadow to agree about
             }
         }
+    }
+}
+
+// Every bias mode's per-tap part (receiver plane, soft, interpolated) with every method it
+// combines with, on random maps and lookups with a random receiver plane each: the GLSL and the
+// CPU compare each tap against the same ref and give the same visibility.
+TEST_F(GpuParity, BiasModesOnRandomLookupsMatchTheCpuKernel) {
+    GpuLookup gpu;
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::uniform_real_distribution<float> around(-0.03f, 1.03f);
+    std::uniform_real_distribution<float> slope(-3.0f, 3.0f);
+    const glm::ivec2 size(41, 32);
+    ShadowMap map(size.x, size.y);
+    // A sloped plane with noise: neighbours differ by about what a receiver plane corrects.
+    for (int j = 0; j < size.y; ++j) {
+        for (int i = 0; i < size.x; ++i) {
+            map.setDepth(i, j, 0.2f + 0.5f * (i + 0.5f) / size.x + 0.02f * unit(rng));
+        }
+    }
+    const int width = 64;
+    std::vector<glm::vec4> lookups(width * 48);
+    std::vector<glm::vec2> planes(lookups.size());
+    for (size_t k = 0; k < lookups.size(); ++k) {
+        glm::vec2 uv(around(rng), around(rng));
+        lookups[k] = glm::vec4(uv, 0.2f + 0.5f * uv.x + 0.02f * unit(rng) - 0.01f, 0.0f);
+        planes[k] = glm::vec2(slope(rng), slope(rng));
+    }
+    for (int mode : {PCF_BIAS_RECEIVER_PLANE, PCF_BIAS_SOFT, PCF_BIAS_INTERPOLATED}) {
+        float worstMode = 0.0f;
+        for (float softScale : {40.0f, 2048.0f}) {
+            if (mode != PCF_BIAS_SOFT && softScale != 40.0f) continue;
+            PcfBias bias(mode, glm::vec2(0.0f), softScale);
+            for (const PcfParams& prm : parityCases({1, 2, 3, 5})) {
+                if (validateBias(mode, prm.method)) continue;
+                std::vector<float> got = gpu.run(map, lookups, width, prm, false, bias, planes);
+                float worst = 0.0f;
+                int lit = 0;
+                int dark = 0;
+                for (size_t k = 0; k < lookups.size(); ++k) {
+                    PcfBias b = bias;
+                    b.dzduv = planes[k];
+                    float cpu = filterVisibility(map, glm::vec2(lookups[k]), lookups[k].z, prm, b);
+                    worst = std::max(worst, std::fabs(cpu - got[k]));
+                    lit += cpu > 0.5f ? 1 : 0;
+                    dark += cpu < 0.5f ? 1 : 0;
+                }
+                EXPECT_LE(worst, PARITY_TOLERANCE)
+                    << biasName(mode) << " scale " << softScale << " " << describe(prm);
+                // Neither all lit nor all dark: there are comparisons to disagree about.
+                EXPECT_GT(lit, 100) << describe(prm);
+                EXPECT_GT(dark, 100) << describe(prm);
+                worstMode = std::max(worstMode, worst);
+            }
+        }
+        std::printf("parity random lookups, bias %s: max |GPU - CPU| = %g\n",
+                    std::string(biasName(mode)).c_str(), static_cast<double>(worstMode));
+    }
+}
+
+// Every bias mode rendered: the CPU kernel, run on the GPU's own light-space target (u, v, ref
+// after the per-lookup bias) and receiver target (the dz/duv the shader derived), gives the
+// visibility the shader gave, for every method the mode combines with.
+TEST_F(GpuParity, BiasModesRenderedMatchTheCpuKernelOnTheGpusOwnTargets) {
+    Scene scene = *presetScene("grazing");
+    SceneRenderer renderer(scene);
+    for (int mode = 0; mode < PCF_BIAS_COUNT; ++mode) {
+        float worstMode = 0.0f;
+        for (const PcfParams& prm : parityCases({3})) {
+            if (validateBias(mode, prm.method)) continue;
+            if (prm.method == PCF_TENT && prm.kernel != 5) continue;
+            RenderSettings s;
+            s.method = prm.method;
+            s.kernel = prm.kernel;
+            s.radius = prm.radius;
+            s.bias = static_cast<BiasMode>(mode);
+            s.mapSize = 256;
+            s.frameSize = {200, 112};
+            renderer.render(s);
+            ShadowMap map = renderer.readShadowMap();
+            std::vector<float> ls = renderer.readLightSpace();
+            std::vector<float> rc = renderer.readReceiver();
+            std::vector<float> vis = renderer.readVisibility();
+            PcfBias bias = s.biasParams().kernelBias();
+            int receivers = 0;
+            int planes = 0;
+            float worst = 0.0f;
+            for (size_t k = 0; k < vis.size(); ++k) {
+                if (ls[4 * k + 3] != 1.0f) continue;
+                ++receivers;
+                PcfBias b = bias;
+                b.dzduv = glm::vec2(rc[4 * k], rc[4 * k + 1]);
+                if (b.dzduv != glm::vec2(0.0f)) ++planes;
+                float cpu = filterVisibility(map, glm::vec2(ls[4 * k], ls[4 * k + 1]),
+                                             ls[4 * k + 2], s.pcfParams(), b);
+                worst = std::max(worst, std::fabs(cpu - vis[k]));
+            }
+            std::string what = std::string(biasName(mode)) + " " + describe(prm);
+            EXPECT_LE(worst, PARITY_TOLERANCE) << what;
+            EXPECT_GT(receivers, s.frameSize.x * s.frameSize.y / 4) << what;
+            EXPECT_GT(planes, receivers / 2) << what;  // the shader wrote its receiver planes
+            worstMode = std::max(worstMode, worst);
+        }
+        std::printf("parity rendered grazing, bias %s: max |GPU - CPU| = %g\n",
+                    std::string(biasName(mode)).c_str(), static_cast<double>(worstMode));
     }
 }
 

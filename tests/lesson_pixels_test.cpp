@@ -42,13 +42,17 @@ std::vector<RenderedStep> renderLesson(const std::string& name, glm::ivec2 frame
         renderer.render(renderSettingsFor(s, frameSize));
         std::vector<float> lightSpace = renderer.readLightSpace();
         std::vector<float> visibility = renderer.readVisibility();
+        std::vector<float> receiver = renderer.readReceiver();
         ShadowMap map = renderer.readShadowMap();
         glm::ivec2 px = scalePixel(s.pixel, frameSize);
         size_t at = static_cast<size_t>(px.y) * frameSize.x + px.x;
         const float* ls = &lightSpace[at * 4];
         float ref = ls[2];
-        Trace trace = traceLookup(map, vec2(ls[0], ls[1]), ref + s.depthBias(), ref,
-                                  s.pcfParams(px, frameSize));
+        // The bias mode with the receiver plane and depth the shader used (receiver target).
+        BiasParams bias = s.biasParams();
+        bias.dzduv = vec2(receiver[at * 4], receiver[at * 4 + 1]);
+        Trace trace = traceLookup(map, vec2(ls[0], ls[1]), receiver[at * 4 + 2], ref,
+                                  s.pcfParams(px, frameSize), bias);
         out.push_back({std::move(trace), visibility[at], ls[3] > 0.5f});
     }
     return out;
@@ -150,6 +154,36 @@ const std::map<std::string, Claims>& lessonClaims() {
         // The chart steps trace the lesson's pixel too: it stays in the penumbra throughout.
         {"11-speed-and-accuracy",
          {{penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}, {penumbra()}}},
+        // One ref for all reads: read 0 tests the ground's own texel and fails; with the
+        // receiver plane the same read gets its own ref and passes, down to a tiny constant;
+        // per gather the plane is too coarse for that constant.
+        {"12-receiver-plane-bias",
+         {{{"acne: read 0 behind its own surface",
+            [](const Trace& t) {
+                return t.visibility < 1.0f && t.taps[0].depth < t.ref && t.taps[0].ref == t.ref;
+            }}},
+          {lit(),
+           firstTapMargin(true),
+           {"read 0 rescued by its own ref",
+            [](const Trace& t) { return t.taps[0].depth < t.ref && tapsChangedByPlane(t) > 0; }}},
+          {lit(), firstTapMargin(true)},
+          {{"per gather read 2 fails",
+            [](const Trace& t) {
+                return t.visibility < 1.0f && t.taps[2].depth < t.taps[2].ref &&
+                       t.counts.gathers > 0;
+            }}}}},
+        // Lesson 11's state: the chart steps keep the pixel in the penumbra.
+        {"13-shimmer-and-snapping",
+         {{penumbra()},
+          {{"0 or 1",
+            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }}},
+          {penumbra()},
+          {penumbra()}}},
+        {"14-bias-trade-off",
+         {{{"faint acne", [](const Trace& t) { return t.visibility > 0.5f && t.visibility < 1.0f; }}},
+          {{"faint acne", [](const Trace& t) { return t.visibility > 0.5f && t.visibility < 1.0f; }}},
+          {lit()},
+          {lit()}}},
     };
     return claims;
 }

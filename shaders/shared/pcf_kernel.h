@@ -80,13 +80,125 @@ PCF_FN ivec2 pcfClampTexel(ivec2 texel, ivec2 size) {
 // The depth comparison (GL_LEQUAL): 1 = lit, 0 = shadowed.
 PCF_FN float pcfCompare(float depth, float ref) { return ref <= depth ? 1.0f : 0.0f; }
 
+// ---- Bias modes (DESIGN.md 2 names them; see: src/kernel/bias.h for names and checks) ----
+// The per-lookup part of every bias (constant, slope, normal offset) is already in ref when the
+// kernel is called: the scene shader (shaders/scene.frag) computes it where the normal and the
+// light are known. What the kernel itself must do per tap lives here: the receiver plane's ref
+// at each tap, seed 001's soft comparison, and seed 004's comparison against interpolated depth.
+PCF_CONST int PCF_BIAS_NONE = 0;            // ref = z
+PCF_CONST int PCF_BIAS_CONSTANT = 1;        // ref = z - b
+PCF_CONST int PCF_BIAS_SLOPE = 2;           // ref = z - min(b + s * tan(theta), max)
+PCF_CONST int PCF_BIAS_NORMAL = 3;          // receiver moved along its normal, then ref = z' - b
+PCF_CONST int PCF_BIAS_RECEIVER_PLANE = 4;  // per tap: ref + dot(dz/duv, tap uv - uv)
+PCF_CONST int PCF_BIAS_SOFT = 5;            // lit = (depth > ref) * saturate((depth - ref) * k)
+PCF_CONST int PCF_BIAS_INTERPOLATED = 6;    // one comparison against the bilinear depth
+PCF_CONST int PCF_BIAS_COUNT = 7;
+
+// What the kernel needs of the bias mode per tap.
+struct PcfBias {
+    int mode;         // PCF_BIAS_NONE .. PCF_BIAS_INTERPOLATED
+    vec2 dzduv;       // receiver-plane: d(depth)/d(u, v) of the receiver, light depth per uv unit
+    float softScale;  // soft: the correction scale of seed 001 (Z_CMP_CORRECTION_SCALE), 1/depth
+};
+
+// A lookup's comparison depth with what varies it per tap.
+struct PcfRef {
+    float ref;     // the lookup's ref, light depth [0,1], after the per-lookup bias
+    vec2 uv;       // the lookup's uv: the receiver plane passes through (uv, ref)
+    PcfBias bias;
+};
+
+// One ref for every tap: what every method did before per-tap biases.
+PCF_FN PcfRef pcfPlainRef(float ref, vec2 uv) {
+    return PcfRef(ref, uv, PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f));
+}
+
+// The centre of texel t in uv (DESIGN.md 2): ((i + 0.5) / W, (j + 0.5) / H).
+PCF_FN vec2 pcfTexelCentreUv(ivec2 t, ivec2 size) {
+    return (vec2(t) + vec2(0.5f)) / vec2(size);
+}
+
+// Receiver-plane depth bias (Isidoro, "Shadow Mapping: GPU-based Tips and Techniques", GDC
+// 2006): the receiver is taken to be the plane through (uv, ref) with slope dz/duv, so a tap at
+// tapUv compares against that plane's depth there, not against the lookup's one ref:
+//   ref_tap = ref + dz/du * (tapU - u) + dz/dv * (tapV - v)        (light depth, [0,1] scale)
+// Other modes return ref unchanged.
+PCF_FN float pcfRefAt(PcfRef r, vec2 tapUv) {
+    if (r.bias.mode != PCF_BIAS_RECEIVER_PLANE) return r.ref;
+    PCF_PRECISE float du = tapUv.x - r.uv.x;
+    PCF_PRECISE float dv = tapUv.y - r.uv.y;
+    PCF_PRECISE float dz = r.bias.dzduv.x * du + r.bias.dzduv.y * dv;
+    PCF_PRECISE float tapRef = r.ref + dz;
+    return tapRef;
+}
+
+// Seed 001's soft comparison ("PCF Shadow Acne" part 2): a tap counts as lit only when the
+// stored depth is strictly beyond ref, and then only in proportion to how far, saturated:
+//   lit = (depth > ref) * saturate((depth - ref) * scale)         (scale in 1/depth units)
+// so a texel just behind the receiver's own surface fades in instead of flipping. As scale
+// grows it becomes the hard comparison (except at depth == ref, where it says 0).
+PCF_FN float pcfCompareSoft(float depth, float ref, float scale) {
+    float ahead = ref < depth ? 1.0f : 0.0f;
+    PCF_PRECISE float ramp = (depth - ref) * scale;
+    return ahead * clamp(ramp, 0.0f, 1.0f);
+}
+
+// The comparison a tap makes under the bias mode: soft for PCF_BIAS_SOFT, else GL_LEQUAL.
+PCF_FN float pcfCompareBiased(float depth, float ref, PcfBias b) {
+    if (b.mode == PCF_BIAS_SOFT) return pcfCompareSoft(depth, ref, b.softScale);
+    return pcfCompare(depth, ref);
+}
+
+// Slope-scaled bias as most engines write it (opengl-tutorial.org, Tutorial 16 "Shadow
+// mapping": bias = b * tan(acos(n.l)), clamped; Castano, "Shadow Mapping Summary Part 1",
+// 2013, the same tan with a cap): with theta the angle between the normal and the direction to
+// the light,
+//   bias = min(b + s * tan(theta), max)     tan(theta) = sqrt(1 - c^2) / c, c = cos(theta)
+// c is held >= 1e-4 so a surface edge-on to the light gets max, not infinity.
+PCF_FN float pcfSlopeBias(float cosTheta, float b, float s, float maxBias) {
+    float c = clamp(cosTheta, 1.0e-4f, 1.0f);
+    float tanTheta = sqrt(max(1.0f - c * c, 0.0f)) / c;
+    return min(b + s * tanTheta, maxBias);
+}
+
+// Normal offset (Holbert, "Saying Goodbye to Shadow Acne", GDC 2011; the scale by the sine is
+// Castano's, "Shadow Mapping Summary Part 1", 2013): before it is projected into the map, the
+// receiver point moves along its unit normal by
+//   d = k * texelWs * sin(theta)     sin(theta) = sqrt(1 - c^2), c = cos(theta) clamped to [0,1]
+// world units, where texelWs is the world size of one shadow-map texel at the point and k is
+// in texels. Facing the light (theta = 0) it does not move; edge-on it moves k texels.
+PCF_FN float pcfNormalOffsetDistance(float cosTheta, float k, float texelWs) {
+    float c = clamp(cosTheta, 0.0f, 1.0f);
+    return k * texelWs * sqrt(max(1.0f - c * c, 0.0f));
+}
+
+// dz/duv from screen-space derivatives (Isidoro, GDC 2006; the same in MJP's Shadows sample):
+// with dx = d(u, v, z)/dx and dy = d(u, v, z)/dy across the screen, the 2x2 Jacobian
+// J = [du/dx dv/dx; du/dy dv/dy] maps d(uv) to screen steps, and
+//   (dz/du, dz/dv) = J^-1 (dz/dx, dz/dy)    (the inverse transpose of d(uv)/d(x, y))
+//   dz/du = (dv/dy * dz/dx - dv/dx * dz/dy) / det,  dz/dv = (du/dx * dz/dy - du/dy * dz/dx) / det
+// with det = du/dx * dv/dy - dv/dx * du/dy. A degenerate (det = 0) or non-finite result gives 0.
+PCF_FN vec2 pcfReceiverPlaneDzDuv(vec3 dx, vec3 dy) {
+    float det = dx.x * dy.y - dx.y * dy.x;
+    if (det == 0.0f) return vec2(0.0f);
+    float a = (dy.y * dx.z - dx.y * dy.z) / det;
+    float b = (dx.x * dy.z - dy.x * dx.z) / det;
+    // NaN fails both comparisons; so does anything beyond float range.
+    if (!(abs(a) < 3.0e38f) || !(abs(b) < 3.0e38f)) return vec2(0.0f);
+    return vec2(a, b);
+}
+
 // Reads one texel (clamped to the edge), compares it, and reports the tap with its weight in
 // the final result.
-PCF_MAP_FN float pcfFetchCompare(Map map, ivec2 texel, float ref, float weight) {
-    ivec2 t = pcfClampTexel(texel, mapSize(map));
+// The tap's own ref is the receiver plane's at the (unclamped) texel's centre under
+// receiver-plane bias, and the lookup's ref otherwise; the soft mode compares softly.
+PCF_MAP_FN float pcfFetchCompare(Map map, ivec2 texel, PcfRef ref, float weight) {
+    ivec2 size = mapSize(map);
+    ivec2 t = pcfClampTexel(texel, size);
     float depth = fetchDepth(map, t);
-    float lit = pcfCompare(depth, ref);
-    pcfTap(map, t, depth, ref, lit, weight);
+    float tapRef = pcfRefAt(ref, pcfTexelCentreUv(texel, size));
+    float lit = pcfCompareBiased(depth, tapRef, ref.bias);
+    pcfTap(map, t, depth, tapRef, lit, weight);
     return lit;
 }
 
@@ -99,7 +211,7 @@ PCF_FN vec4 pcfBilinearWeights(vec2 f) {
 // sub-texel position: lerp(lerp(b00, b10, fx), lerp(b01, b11, fx), fy). This is what NVIDIA's
 // hardware PCF does, and what pcfscope takes a hardware comparison tap to be. weight is the
 // share of the final result this lookup carries (for the trace only).
-PCF_MAP_FN float pcfBilinearAt(Map map, vec2 p, float ref, float weight) {
+PCF_MAP_FN float pcfBilinearAt(Map map, vec2 p, PcfRef ref, float weight) {
     vec2 b = floor(p);
     ivec2 base = ivec2(b);
     vec2 f = p - b;
@@ -111,11 +223,11 @@ PCF_MAP_FN float pcfBilinearAt(Map map, vec2 p, float ref, float weight) {
     return mix(mix(b00, b10, f.x), mix(b01, b11, f.x), f.y);
 }
 
-PCF_MAP_FN float pcfBilinearCore(Map map, vec2 uv, float ref, float weight) {
+PCF_MAP_FN float pcfBilinearCore(Map map, vec2 uv, PcfRef ref, float weight) {
     return pcfBilinearAt(map, pcfTexelPos(uv, mapSize(map)).p, ref, weight);
 }
 
-PCF_MAP_FN float pcfBilinearLookup(Map map, vec2 uv, float ref, float weight) {
+PCF_MAP_FN float pcfBilinearLookup(Map map, vec2 uv, PcfRef ref, float weight) {
     pcfFetch(map, PCF_FETCH_LOOKUP, uv, weight);
     return pcfBilinearCore(map, uv, ref, weight);
 }
@@ -124,35 +236,95 @@ PCF_MAP_FN float pcfBilinearLookup(Map map, vec2 uv, float ref, float weight) {
 // On the CPU a hardware comparison tap is modelled exactly as the bilinear 2x2 (DESIGN.md 2).
 template <class Map>
 inline float hwTap(Map map, vec2 uv, float ref, float weight) {
-    return pcfBilinearCore(map, uv, ref, weight);
+    return pcfBilinearCore(map, uv, pcfPlainRef(ref, uv), weight);
 }
 
 // On the CPU a comparison gather is four texel comparisons, returned in GL's component order.
 template <class Map>
 inline vec4 gatherCompare(Map map, vec2 uv, float ref, vec4 weights) {
     PcfTexelPos tp = pcfTexelPos(uv, mapSize(map));
-    float x = pcfFetchCompare(map, tp.base + ivec2(0, 1), ref, weights.x);
-    float y = pcfFetchCompare(map, tp.base + ivec2(1, 1), ref, weights.y);
-    float z = pcfFetchCompare(map, tp.base + ivec2(1, 0), ref, weights.z);
-    float w = pcfFetchCompare(map, tp.base + ivec2(0, 0), ref, weights.w);
+    PcfRef r = pcfPlainRef(ref, uv);
+    float x = pcfFetchCompare(map, tp.base + ivec2(0, 1), r, weights.x);
+    float y = pcfFetchCompare(map, tp.base + ivec2(1, 1), r, weights.y);
+    float z = pcfFetchCompare(map, tp.base + ivec2(1, 0), r, weights.z);
+    float w = pcfFetchCompare(map, tp.base + ivec2(0, 0), r, weights.w);
     return vec4(x, y, z, w);
+}
+
+// On the CPU a gather of raw depths is the four texels, in GL's component order.
+template <class Map>
+inline vec4 gatherDepth(Map map, vec2 uv) {
+    ivec2 size = mapSize(map);
+    PcfTexelPos tp = pcfTexelPos(uv, size);
+    return vec4(fetchDepth(map, pcfClampTexel(tp.base + ivec2(0, 1), size)),
+                fetchDepth(map, pcfClampTexel(tp.base + ivec2(1, 1), size)),
+                fetchDepth(map, pcfClampTexel(tp.base + ivec2(1, 0), size)),
+                fetchDepth(map, pcfClampTexel(tp.base + ivec2(0, 0), size)));
 }
 #endif
 
-PCF_MAP_FN float pcfHwTap(Map map, vec2 uv, float ref, float weight) {
+// A hardware tap compares its four texels against one ref: under receiver-plane bias that is
+// the plane's depth at the tap's own uv (per tap, as engines do; not per texel).
+PCF_MAP_FN float pcfHwTap(Map map, vec2 uv, PcfRef ref, float weight) {
     pcfFetch(map, PCF_FETCH_HW, uv, weight);
-    return hwTap(map, uv, ref, weight);
+    return hwTap(map, uv, pcfRefAt(ref, uv), weight);
+}
+
+// Seed 004's "Solution 2" ("PCF Shadow Acne"): interpolate the stored depth bilinearly at uv and
+// compare once. For a planar receiver the interpolated depth follows the surface, so the
+// receiver's own texels stop shadowing it; but the sub-texel fraction is spent on the depth, so
+// the result is one hard bit and cannot be a filter (hence nearest only: src/kernel/bias.cpp).
+// The four texels are recorded with their bilinear weights, each carrying the one bit.
+PCF_MAP_FN float pcfInterpolatedCompare(Map map, vec2 uv, float ref, float weight) {
+    ivec2 size = mapSize(map);
+    PcfTexelPos tp = pcfTexelPos(uv, size);
+    vec4 w = pcfBilinearWeights(tp.frac);
+    ivec2 t00 = pcfClampTexel(tp.base, size);
+    ivec2 t10 = pcfClampTexel(tp.base + ivec2(1, 0), size);
+    ivec2 t01 = pcfClampTexel(tp.base + ivec2(0, 1), size);
+    ivec2 t11 = pcfClampTexel(tp.base + ivec2(1, 1), size);
+    float d00 = fetchDepth(map, t00);
+    float d10 = fetchDepth(map, t10);
+    float d01 = fetchDepth(map, t01);
+    float d11 = fetchDepth(map, t11);
+    PCF_PRECISE float depth = w.x * d00 + w.y * d10 + w.z * d01 + w.w * d11;
+    float lit = pcfCompare(depth, ref);
+    pcfTap(map, t00, d00, ref, lit, w.x * weight);
+    pcfTap(map, t10, d10, ref, lit, w.y * weight);
+    pcfTap(map, t01, d01, ref, lit, w.z * weight);
+    pcfTap(map, t11, d11, ref, lit, w.w * weight);
+    return lit;
+}
+
+// Seed 001's gather of raw depths with the soft comparison made in the shader (its 3x3 code
+// gathers depths through a point sampler, not comparisons). Bits in GL's gather order.
+PCF_MAP_FN vec4 pcfGatherSoft(Map map, vec2 uv, PcfRef ref, vec4 weights) {
+    ivec2 size = mapSize(map);
+    ivec2 base = pcfTexelPos(uv, size).base;
+    vec4 d = gatherDepth(map, uv);
+    float s = ref.bias.softScale;
+    vec4 bits = vec4(pcfCompareSoft(d.x, ref.ref, s), pcfCompareSoft(d.y, ref.ref, s),
+                     pcfCompareSoft(d.z, ref.ref, s), pcfCompareSoft(d.w, ref.ref, s));
+    pcfTap(map, pcfClampTexel(base + ivec2(0, 1), size), d.x, ref.ref, bits.x, weights.x);
+    pcfTap(map, pcfClampTexel(base + ivec2(1, 1), size), d.y, ref.ref, bits.y, weights.y);
+    pcfTap(map, pcfClampTexel(base + ivec2(1, 0), size), d.z, ref.ref, bits.z, weights.z);
+    pcfTap(map, pcfClampTexel(base + ivec2(0, 0), size), d.w, ref.ref, bits.w, weights.w);
+    return bits;
 }
 
 // nearest: the one texel the lookup falls in, floor(uv * size). Hard: 0 or 1.
-PCF_MAP_FN float pcfNearest(Map map, vec2 uv, float ref, float weight) {
+PCF_MAP_FN float pcfNearest(Map map, vec2 uv, PcfRef ref, float weight) {
     PCF_PRECISE vec2 p = uv * vec2(mapSize(map));
+    if (ref.bias.mode == PCF_BIAS_INTERPOLATED) {
+        pcfFetch(map, PCF_FETCH_LOOKUP, uv, weight);
+        return pcfInterpolatedCompare(map, uv, ref.ref, weight);
+    }
     pcfFetch(map, PCF_FETCH_POINT, uv, weight);
     return pcfFetchCompare(map, ivec2(floor(p)), ref, weight);
 }
 
 // box2x2: the bilinear 2x2 texels, averaged without weights: only 0, .25, .5, .75 or 1.
-PCF_MAP_FN float pcfBox2x2(Map map, vec2 uv, float ref) {
+PCF_MAP_FN float pcfBox2x2(Map map, vec2 uv, PcfRef ref) {
     PcfTexelPos tp = pcfTexelPos(uv, mapSize(map));
     float sum = 0.0f;
     for (int j = 0; j < 2; ++j) {
@@ -170,7 +342,7 @@ PCF_FN float pcfKernelOffset(int k, int n) { return float(k) - 0.5f * float(n - 
 // pcf-naive: N x N bilinear lookups one texel apart, averaged (seed 004's loop): 4 N^2 reads.
 // The lookups step in texel space (p + offset), so every lookup has the fraction of p exactly
 // and the sum equals pcf-gather's to float rounding.
-PCF_MAP_FN float pcfNaive(Map map, vec2 uv, float ref, int n) {
+PCF_MAP_FN float pcfNaive(Map map, vec2 uv, PcfRef ref, int n) {
     ivec2 size = mapSize(map);
     vec2 p = pcfTexelPos(uv, size).p;
     vec2 texelUv = vec2(1.0f) / vec2(size);
@@ -188,7 +360,7 @@ PCF_MAP_FN float pcfNaive(Map map, vec2 uv, float ref, int n) {
 }
 
 // pcf-hw: the same N x N loop with one hardware comparison tap per lookup (seed 002's loop).
-PCF_MAP_FN float pcfHw(Map map, vec2 uv, float ref, int n) {
+PCF_MAP_FN float pcfHw(Map map, vec2 uv, PcfRef ref, int n) {
     vec2 texelUv = vec2(1.0f) / vec2(mapSize(map));
     float w = 1.0f / float(n * n);
     float sum = 0.0f;
@@ -228,7 +400,7 @@ PCF_FN float pcfFootprintWeight(int m, int n, float g) {
 // ceil((N+1)/2)^2 comparison gathers weighted by the footprint table (seed 001 for N = 3).
 // Each gather is placed at the shared corner of its 2x2 block, so the texture unit's own
 // floor() cannot pick another block.
-PCF_MAP_FN float pcfGather(Map map, vec2 uv, float ref, int n) {
+PCF_MAP_FN float pcfGather(Map map, vec2 uv, PcfRef ref, int n) {
     ivec2 size = mapSize(map);
     PcfFootprint fp = pcfKernelFootprint(uv, size, n);
     float norm = 1.0f / float(n * n);
@@ -246,7 +418,12 @@ PCF_MAP_FN float pcfGather(Map map, vec2 uv, float ref, int n) {
             vec4 w = vec4(wx0 * wy1, wx1 * wy1, wx1 * wy0, wx0 * wy0) * norm;
             vec2 corner = vec2(fp.origin + ivec2(mx + 1, my + 1)) / vec2(size);
             pcfFetch(map, PCF_FETCH_GATHER, corner, 1.0f);
-            vec4 bits = gatherCompare(map, corner, ref, w);
+            // A comparison gather has one ref for its four texels: under receiver-plane bias
+            // the plane's depth at the gather's centre (its block's shared corner). The soft
+            // comparison needs the depths themselves: a gather of raw depth (seed 001).
+            vec4 bits = ref.bias.mode == PCF_BIAS_SOFT
+                            ? pcfGatherSoft(map, corner, ref, w)
+                            : gatherCompare(map, corner, pcfRefAt(ref, corner), w);
             sum += dot(bits, w);
         }
     }
@@ -298,7 +475,7 @@ PCF_FN PcfFootprint pcfTentBase(vec2 uv, ivec2 size) {
     return PcfFootprint(ivec2(b), q - b);
 }
 
-PCF_MAP_FN float pcfTent(Map map, vec2 uv, float ref, int n) {
+PCF_MAP_FN float pcfTent(Map map, vec2 uv, PcfRef ref, int n) {
     ivec2 size = mapSize(map);
     PcfFootprint tb = pcfTentBase(uv, size);
     PcfTentAxis ax = pcfTentAxis(tb.frac.x, n);
@@ -326,7 +503,7 @@ PCF_FN vec2 pcfPoissonOffset(int k, float radius, vec2 rotation) {
     return vec2(x, y) * radius;
 }
 
-PCF_MAP_FN float pcfPoisson(Map map, vec2 uv, float ref, float radius, vec2 rotation) {
+PCF_MAP_FN float pcfPoisson(Map map, vec2 uv, PcfRef ref, float radius, vec2 rotation) {
     vec2 texelUv = vec2(1.0f) / vec2(mapSize(map));
     float sum = 0.0f;
     for (int k = 0; k < 16; ++k) {
@@ -344,9 +521,9 @@ PCF_FN vec2 pcfPixelRotation(ivec2 pixel) {
     return PCF_ROTATIONS[int((h >> 16u) & 15u)];
 }
 
-// The one entry point: visibility of a receiver at depth ref (after bias) seen at uv.
-// Weighted sums can land an ulp above 1; the result is clamped to [0,1] on both sides.
-PCF_MAP_FN float pcfFilter(Map map, vec2 uv, float ref, PcfParams prm) {
+// The entry point with a bias mode: visibility of a receiver seen at uv, compared per tap as
+// ref (PcfRef) says. Weighted sums can land an ulp above 1; the result is clamped to [0,1].
+PCF_MAP_FN float pcfFilterRef(Map map, vec2 uv, PcfRef ref, PcfParams prm) {
     float v;
     if (prm.method == PCF_NEAREST) {
         v = pcfNearest(map, uv, ref, 1.0f);
@@ -368,4 +545,10 @@ PCF_MAP_FN float pcfFilter(Map map, vec2 uv, float ref, PcfParams prm) {
         v = pcfPoisson(map, uv, ref, prm.radius, prm.rotation);
     }
     return clamp(v, 0.0f, 1.0f);
+}
+
+// The one entry point without a per-tap bias: visibility of a receiver at depth ref (after
+// bias) seen at uv, every tap compared with the same ref.
+PCF_MAP_FN float pcfFilter(Map map, vec2 uv, float ref, PcfParams prm) {
+    return pcfFilterRef(map, uv, pcfPlainRef(ref, uv), prm);
 }

@@ -9,7 +9,8 @@
 //   - single components only (v.x), no swizzles (v.xy) and no bool vectors in interfaces;
 //   - no out-parameters: return a struct, built with Type(a, b, ...) (C++20 aggregate init);
 //   - every function is marked PCF_FN, or PCF_MAP_FN when it reads the shadow map;
-//   - the map is read only through fetchDepth(map, ivec2), hwTap(...) and gatherCompare(...);
+//   - the map is read only through fetchDepth(map, ivec2), hwTap(...), gatherCompare(...) and
+//     gatherDepth(...);
 //     each texel read is reported through pcfTap(...), which records on the CPU and is
 //     nothing in GLSL;
 //   - values that feed floor() are PCF_PRECISE, so the GLSL compiler cannot fuse a multiply
@@ -62,5 +63,9 @@ float hwTap(Map map, vec2 uv, float ref, float weight) {
 vec4 gatherCompare(Map map, vec2 uv, float ref, vec4 weights) {
     return textureGather(uPcfCompare, uv, ref);
 }
+
+// One gather of raw depths (no comparison), same component order: through the texelFetch side's
+// non-comparison sampler (clamp to edge), for comparisons made in the shader (soft bias).
+vec4 gatherDepth(Map map, vec2 uv) { return textureGather(map, uv, 0); }
 
 #endif

@@ -40,7 +40,7 @@ int runRender(const RenderCommandOptions& o) {
         requireExtension("-o", o.out, ".png");
         outputs.add("-o", o.out);
     }
-    std::string rawShadow, rawLightSpace, rawVisibility, rawPositions;
+    std::string rawShadow, rawLightSpace, rawVisibility, rawPositions, rawReceiver;
     if (!o.rawDir.empty()) {
         std::filesystem::path dir(o.rawDir);
         outputs.addDirectory("--raw", dir);
@@ -48,8 +48,10 @@ int runRender(const RenderCommandOptions& o) {
         rawLightSpace = (dir / "lightspace.exr").string();
         rawVisibility = (dir / "visibility.exr").string();
         rawPositions = (dir / "positions.exr").string();
+        rawReceiver = (dir / "dzduv.exr").string();
         settings.writePositions = true;
-        for (const std::string& p : {rawShadow, rawLightSpace, rawVisibility, rawPositions}) {
+        for (const std::string& p :
+             {rawShadow, rawLightSpace, rawVisibility, rawPositions, rawReceiver}) {
             outputs.add("--raw", p);
         }
     }
@@ -81,6 +83,8 @@ int runRender(const RenderCommandOptions& o) {
         writeExr(rawVisibility, size.x, size.y, 1, vis, {"Y"});
         std::vector<float> pos = renderer.readPositions();
         writeExr(rawPositions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
+        std::vector<float> receiver = renderer.readReceiver();
+        writeExr(rawReceiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
     }
     outputs.commit();
     return 0;
@@ -95,7 +99,8 @@ Command addRenderCommand(CLI::App& app) {
     sub->add_option("-o,--out", o->out, "the frame as PNG");
     sub->add_option("--raw", o->rawDir,
                     "write shadowmap.exr, lightspace.exr (u, v, ref, receiver), "
-                    "visibility.exr and positions.exr (world xyz, drawn) into DIR");
+                    "visibility.exr, positions.exr (world xyz, drawn) and dzduv.exr (dz/du, "
+                    "dz/dv of the receiver plane, z before bias, receiver) into DIR");
     sub->add_flag("-f,--force", o->force, "overwrite existing output files");
     sub->add_option("--time", o->timeRepeats,
                     "time the camera pass over this many draws and print the median");

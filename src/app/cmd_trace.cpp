@@ -6,6 +6,8 @@
 
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/render_options.h"
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/trace.h"
 #include "render/image_io.h"
@@ -22,7 +24,16 @@ struct TraceOptions {
     CLI::Option* zOption = nullptr;  // given or not: every float, NaN included, is a value
     CLI::Option* kernelOption = nullptr;
     CLI::Option* radiusOption = nullptr;
-    float bias = 0.0f;
+    std::string bias = "none";  // a bias mode name, as render's --bias
+    float constantBias = DEFAULT_CONSTANT_BIAS;
+    float slopeBias = DEFAULT_SLOPE_BIAS;
+    float slopeMax = DEFAULT_SLOPE_MAX;
+    float normalOffset = DEFAULT_NORMAL_OFFSET;
+    float softScale = DEFAULT_SOFT_SCALE;
+    float angleDeg = 0.0f;   // slope: the angle between the receiver's normal and the light
+    std::string dzduv;       // receiver-plane: "DU,DV"
+    CLI::Option* angleOption = nullptr;
+    CLI::Option* dzduvOption = nullptr;
     std::string method = "bilinear2x2";
     int kernel = 3;
     float radius = 1.0f;
@@ -48,6 +59,31 @@ int runTrace(const TraceOptions& o) {
     PcfParams prm = makeParams(*method, o.kernel, o.radius, vec2(std::cos(rad), std::sin(rad)));
     if (auto why = validateParams(prm)) throw UsageError(*why);
     requireRange("--rotation", o.rotationDeg, -360.0f, 360.0f);
+    std::optional<int> biasMode = biasFromName(o.bias);
+    if (!biasMode) {
+        throw UsageError("unknown bias mode '" + o.bias + "' (known: " + biasNameList() + ")");
+    }
+    BiasParams bias;
+    bias.mode = *biasMode;
+    bias.constant = o.constantBias;
+    bias.slope = o.slopeBias;
+    bias.slopeMax = o.slopeMax;
+    bias.normalOffset = o.normalOffset;
+    bias.softScale = o.softScale;
+    if (auto why = validateBiasParams(bias, "--")) throw UsageError(*why);
+    if (auto why = validateBias(bias.mode, *method)) throw UsageError(*why);
+    requireRange("--angle", o.angleDeg, 0.0f, 90.0f);
+    if (o.angleOption->count() > 0 && bias.mode != PCF_BIAS_SLOPE) {
+        throw UsageError("--angle is for --bias slope (the angle its tan(theta) reads)");
+    }
+    if (o.dzduvOption->count() > 0) {
+        if (bias.mode != PCF_BIAS_RECEIVER_PLANE) {
+            throw UsageError("--dzduv is for --bias receiver-plane (the receiver's plane)");
+        }
+        bias.dzduv = parseVec2("--dzduv", o.dzduv);
+        requireRange("--dzduv u", bias.dzduv.x, -1.0e6f, 1.0e6f);
+        requireRange("--dzduv v", bias.dzduv.y, -1.0e6f, 1.0e6f);
+    }
 
     ShadowMap map;
     std::string uvText = o.uv;
@@ -70,9 +106,10 @@ int runTrace(const TraceOptions& o) {
     requireRange("--uv u", uv.x, 0.0f, 1.0f);
     requireRange("--uv v", uv.y, 0.0f, 1.0f);
     requireRange("--z", z, 0.0f, 1.0f);
-    requireRange("--bias", o.bias, -1.0f, 1.0f);
 
-    Trace tr = traceLookup(map, uv, z, z - o.bias, prm);
+    // The per-lookup bias (kernel/bias.h); normal offset has already moved the point given.
+    float ref = z - bias.lookupBias(std::cos(o.angleDeg * 0.0174532925f));
+    Trace tr = traceLookup(map, uv, z, ref, prm, bias);
     std::string out = o.json ? traceToJson(tr) + "\n" : traceToText(tr);
     std::fwrite(out.data(), 1, out.size(), stdout);
     return 0;
@@ -90,7 +127,15 @@ Command addTraceCommand(CLI::App& app) {
                   "use the built-in 8x8 example map (default lookup: seed 000's 0.8 example)");
     sub->add_option("--uv", o->uv, "shadow-map coordinates U,V in [0,1]");
     o->zOption = sub->add_option("--z", o->z, "receiver depth in [0,1] as the light sees it");
-    sub->add_option("--bias", o->bias, "constant depth bias: ref = z - bias");
+    addBiasOptions(sub, o->bias, o->constantBias, o->slopeBias, o->slopeMax, o->normalOffset,
+                   o->softScale);
+    o->angleOption = sub->add_option(
+        "--angle", o->angleDeg,
+        "slope: angle in degrees between the receiver's normal and the light (default 0)");
+    o->dzduvOption = sub->add_option(
+        "--dzduv", o->dzduv,
+        "receiver-plane: the receiver's DU,DV = d(depth)/d(u, v) (render --raw writes "
+        "dzduv.exr); normal: give --uv and --z of the point already moved");
     sub->add_option("--method", o->method, "method id (see `pcfscope methods`)");
     o->kernelOption = sub->add_option("--kernel", o->kernel, "kernel size N (1..8; tent: 3, 5, 7)");
     o->radiusOption = sub->add_option("--radius", o->radius, "poisson: disk radius in texels");

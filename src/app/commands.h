@@ -18,6 +18,7 @@ Command addTraceCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addTruthCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
+Command addStabilityCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 

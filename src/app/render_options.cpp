@@ -5,11 +5,29 @@
 #include "app/cli_util.h"
 #include "app/session.h"
 #include "lesson/lesson.h"
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"
 
 namespace pcf {
+
+void addBiasOptions(CLI::App* sub, std::string& bias, float& constantBias, float& slopeBias,
+                    float& slopeMax, float& normalOffset, float& softScale) {
+    sub->add_option("--bias", bias,
+                    "bias mode: " + biasNameList() +
+                        " (README \"Bias modes\"; every mode but none subtracts --constant-bias)");
+    sub->add_option("--constant-bias", constantBias,
+                    "depth subtracted from z in light depth units (ref = z - B), default 0.002");
+    sub->add_option("--slope-bias", slopeBias,
+                    "slope: S in ref = z - min(B + S * tan(theta), M), default 0.001");
+    sub->add_option("--slope-max", slopeMax, "slope: the cap M, light depth units, default 0.01");
+    sub->add_option("--normal-offset", normalOffset,
+                    "normal: K, texels the receiver moves along its normal (times sin(theta)), "
+                    "default 1.5");
+    sub->add_option("--soft-scale", softScale,
+                    "soft: lit = (depth > ref) * saturate((depth - ref) * SCALE), default 2048");
+}
 
 void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     mDefaultScene = defaultScene;
@@ -25,9 +43,7 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     sub->add_option("--kernel", kernel, "kernel size N (1..8; tent: 3, 5, 7)");
     sub->add_option("--radius", radius, "poisson: disk radius in texels");
     sub->add_flag("--rotate", rotate, "poisson: rotate the disk per pixel");
-    sub->add_option("--bias", bias, "bias mode: none, constant");
-    sub->add_option("--constant-bias", constantBias,
-                    "constant bias in light depth units (ref = z - bias)");
+    addBiasOptions(sub, bias, constantBias, slopeBias, slopeMax, normalOffset, softScale);
     sub->add_option("--cull", cull, "faces culled in the shadow pass: back, front, none");
     sub->add_option("--polygon-offset", polygonOffset,
                     "slope-scaled bias in the shadow pass: FACTOR,UNITS for glPolygonOffset");
@@ -64,13 +80,16 @@ RenderSettings RenderOptions::settings() const {
     if (auto why = validateParams(s.pcfParams())) throw UsageError(*why);
     if (use("--bias")) {
         std::optional<BiasMode> b = biasModeFromName(bias);
-        if (!b) throw UsageError("unknown bias mode '" + bias + "' (known: none, constant)");
+        if (!b) throw UsageError("unknown bias mode '" + bias + "' (known: " + biasNameList() + ")");
         s.bias = *b;
     }
-    if (use("--constant-bias")) {
-        requireRange("--constant-bias", constantBias, -1.0f, 1.0f);
-        s.constantBias = constantBias;
-    }
+    if (use("--constant-bias")) s.constantBias = constantBias;
+    if (use("--slope-bias")) s.slopeBias = slopeBias;
+    if (use("--slope-max")) s.slopeMax = slopeMax;
+    if (use("--normal-offset")) s.normalOffset = normalOffset;
+    if (use("--soft-scale")) s.softScale = softScale;
+    if (auto why = validateBiasParams(s.biasParams(), "--")) throw UsageError(*why);
+    if (auto why = validateBias(static_cast<int>(s.bias), s.method)) throw UsageError(*why);
     if (use("--cull")) {
         std::optional<CullMode> c = cullModeFromName(cull);
         if (!c) throw UsageError("unknown --cull '" + cull + "' (known: back, front, none)");

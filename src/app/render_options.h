@@ -11,6 +11,12 @@
 
 namespace pcf {
 
+// --bias NAME and its parameters' options, with one text for every command that takes them
+// (render, bench, trace, ...). Values go into the given variables; checks are the caller's
+// (validateBiasParams, validateBias).
+void addBiasOptions(CLI::App* sub, std::string& bias, float& constantBias, float& slopeBias,
+                    float& slopeMax, float& normalOffset, float& softScale);
+
 struct RenderOptions {
     std::string scene;      // preset name
     std::string sceneFile;  // TOML scene file
@@ -20,8 +26,12 @@ struct RenderOptions {
     int kernel = 3;
     float radius = 1.0f;
     bool rotate = false;
-    std::string bias = "constant";
-    float constantBias = 0.002f;
+    std::string bias = "constant";  // a bias mode name (kernel/bias.h)
+    float constantBias = DEFAULT_CONSTANT_BIAS;
+    float slopeBias = DEFAULT_SLOPE_BIAS;
+    float slopeMax = DEFAULT_SLOPE_MAX;
+    float normalOffset = DEFAULT_NORMAL_OFFSET;
+    float softScale = DEFAULT_SOFT_SCALE;
     std::string cull = "back";
     std::string polygonOffset;  // "F,U": glPolygonOffset in the shadow pass
     int mapSize = 1024;

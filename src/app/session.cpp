@@ -8,6 +8,8 @@
 
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
+#include "analysis/stability_chart.h"
+#include "analysis/stability_report.h"
 #include "app/cli_util.h"
 #include "kernel/methods.h"
 #include "lesson/lesson_text.h"
@@ -29,6 +31,11 @@ std::string settingsSummary(const LessonSettings& s) {
     if (info.usesRadius) line << " R=" << formatNumber(s.radius) << (s.rotate ? " rotated" : "");
     line << "   bias " << s.bias;
     if (s.bias != "none") line << " " << formatNumber(s.constantBias);
+    if (s.bias == "slope") {
+        line << " +" << formatNumber(s.slopeBias) << "tan<=" << formatNumber(s.slopeMax);
+    }
+    if (s.bias == "normal") line << " k=" << formatNumber(s.normalOffset);
+    if (s.bias == "soft") line << " x" << formatNumber(s.softScale);
     line << "   cull " << s.cull << "   map " << s.mapSize << " " << s.depthFormat;
     return line.str();
 }
@@ -82,6 +89,10 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) 
     r.depthFormat = depthFormatFromName(s.depthFormat).value_or(DepthFormat::D32F);
     r.bias = biasModeFromName(s.bias).value_or(BiasMode::Constant);
     r.constantBias = s.constantBias;
+    r.slopeBias = s.slopeBias;
+    r.slopeMax = s.slopeMax;
+    r.normalOffset = s.normalOffset;
+    r.softScale = s.softScale;
     r.shadowCull = cullModeFromName(s.cull).value_or(CullMode::Back);
     r.frameSize = sceneSize;
     return r;
@@ -93,14 +104,74 @@ Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presen
 
 namespace {
 
-std::vector<BenchRow> readChartRows(const std::string& csvPath) {
-    std::vector<BenchRow> rows = parseBenchCsv(readInputFile(csvPath), csvPath);
+// A chart's CSV, read with the checks every input file gets (scene/input_file.h).
+std::string readChartText(const std::string& csvPath) { return readInputFile(csvPath); }
+
+// Refuses a chart of more rows than one frame can show.
+template <class Row>
+std::vector<Row> limitChartRows(std::vector<Row> rows, const std::string& csvPath) {
     if (rows.size() > MAX_CHART_ROWS) {
         throw InputError(csvPath, 0,
                          std::to_string(rows.size()) + " rows; a chart shows at most " +
                              std::to_string(MAX_CHART_ROWS));
     }
     return rows;
+}
+
+std::vector<BenchRow> readChartRows(const std::string& csvPath) {
+    return limitChartRows(parseBenchCsv(readChartText(csvPath), csvPath), csvPath);
+}
+
+std::vector<StabilityRow> readStabilityRows(const std::string& csvPath) {
+    return limitChartRows(parseStabilityCsv(readChartText(csvPath), csvPath), csvPath);
+}
+
+// A step's chart: "PATH" (a bench.csv) or "PATH#VIEW" (a stability.csv and which of its charts:
+// acne, leak or shimmer).
+struct ChartRef {
+    std::string path;
+    std::string view;  // empty for a bench chart
+};
+
+ChartRef chartRef(const std::string& chart) {
+    size_t hash = chart.rfind('#');
+    if (hash == std::string::npos) return {chart, ""};
+    return {chart.substr(0, hash), chart.substr(hash + 1)};
+}
+
+// The stability chart `view` of a stability.csv, or InputError for an unknown view or no rows.
+std::vector<uint8_t> drawStabilityView(const ChartRef& ref, glm::ivec2 size) {
+    std::vector<StabilityRow> rows = readStabilityRows(ref.path);
+    std::string subtitle =
+        "measured by pcfscope stability, " + std::filesystem::path(ref.path).filename().string();
+    std::vector<uint8_t> rgba;
+    if (ref.view == "acne") {
+        rgba = drawAcneChart(rows, size, subtitle);
+    } else if (ref.view == "leak") {
+        rgba = drawLeakChart(rows, size, subtitle);
+    } else if (ref.view == "shimmer") {
+        rgba = drawShimmerChart(rows, size, subtitle);
+    } else {
+        throw InputError(ref.path, 0,
+                         "unknown stability chart '#" + ref.view +
+                             "' (known: #acne, #leak, #shimmer)");
+    }
+    if (rgba.empty()) throw InputError(ref.path, 0, "no " + ref.view + " rows to chart");
+    return rgba;
+}
+
+// Throws InputError unless the stability.csv has rows for the view.
+void checkStabilityView(const ChartRef& ref) {
+    std::vector<StabilityRow> rows = readStabilityRows(ref.path);
+    if (ref.view != "acne" && ref.view != "leak" && ref.view != "shimmer") {
+        throw InputError(ref.path, 0,
+                         "unknown stability chart '#" + ref.view +
+                             "' (known: #acne, #leak, #shimmer)");
+    }
+    for (const StabilityRow& r : rows) {
+        if (r.sweep == ref.view) return;
+    }
+    throw InputError(ref.path, 0, "no " + ref.view + " rows to chart");
 }
 
 }  // namespace
@@ -112,8 +183,12 @@ Lesson loadLessonChecked(const std::string& path) {
         const LessonStep& step = lesson.steps[i];
         if (step.chart.empty()) continue;
         try {
-            std::vector<BenchRow> rows = readChartRows(step.chart);
-            if (rows.empty()) throw InputError(step.chart, 0, "no rows to chart");
+            ChartRef ref = chartRef(step.chart);
+            if (!ref.view.empty()) {
+                checkStabilityView(ref);
+            } else if (readChartRows(ref.path).empty()) {
+                throw InputError(ref.path, 0, "no rows to chart");
+            }
         } catch (const InputError& e) {
             throw InputError(path, step.chartLine,
                              "step " + std::to_string(i + 1) + " chart: " + e.what());
@@ -201,12 +276,18 @@ void Session::blitChart(const std::string& csvPath) {
     glm::ivec2 size(mLayout.scene.size());
     std::string key = csvPath + "@" + std::to_string(size.x) + "x" + std::to_string(size.y);
     if (key != mChartKey) {
-        std::vector<BenchRow> rows = readChartRows(csvPath);
-        SpeedChartText labels;
-        labels.title = "Speed against accuracy";
-        labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
-                          std::filesystem::path(csvPath).filename().string();
-        std::vector<uint8_t> rgba = drawSpeedChart(rows, size, labels);
+        ChartRef ref = chartRef(csvPath);
+        std::vector<uint8_t> rgba;
+        if (!ref.view.empty()) {
+            rgba = drawStabilityView(ref, size);
+        } else {
+            std::vector<BenchRow> rows = readChartRows(csvPath);
+            SpeedChartText labels;
+            labels.title = "Speed against accuracy";
+            labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
+                              std::filesystem::path(csvPath).filename().string();
+            rgba = drawSpeedChart(rows, size, labels);
+        }
         mChart = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
         glTextureSubImage2D(mChart.colors[0].id(), 0, 0, 0, size.x, size.y, GL_RGBA,
                             GL_UNSIGNED_BYTE, rgba.data());
@@ -247,8 +328,12 @@ void Session::traceAtPixel() {
     if (mLightSpace[k + 3] != 1.0f) return;
     glm::vec2 uv(mLightSpace[k], mLightSpace[k + 1]);
     float ref = mLightSpace[k + 2];
-    float z = ref + mSettings.depthBias();
-    mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(mPixel, size));
+    // The receiver target holds the plane the shader used and the depth before any bias.
+    std::vector<float> receiver = mRenderer->readReceiverRegion(mPixel, glm::ivec2(1));
+    BiasParams bias = mSettings.biasParams();
+    bias.dzduv = glm::vec2(receiver[0], receiver[1]);
+    float z = receiver[3] == 1.0f ? receiver[2] : ref + mSettings.depthBias();
+    mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(mPixel, size), bias);
 }
 
 std::string Session::stepText() const {

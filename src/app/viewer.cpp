@@ -17,6 +17,7 @@
 #include "app/output_files.h"
 #include "app/render_options.h"
 #include "app/session.h"
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "render/glfw_window_context.h"
 #include "render/image_io.h"
@@ -78,6 +79,10 @@ public:
                 if (s.method == PCF_TENT && s.kernel != 3 && s.kernel != 5 && s.kernel != 7) {
                     s.kernel = 3;
                 }
+                // A bias the new method cannot take (soft on hardware taps) falls back.
+                if (validateBias(biasFromName(s.bias).value_or(PCF_BIAS_CONSTANT), s.method)) {
+                    s.bias = "constant";
+                }
                 mSession.setSettings(s);
                 break;
             }
@@ -101,10 +106,17 @@ public:
                 s.mapSize = std::min(MAX_MAP_SIZE, s.mapSize * 2);
                 mSession.setSettings(s);
                 break;
-            case GLFW_KEY_B:
-                s.bias = s.bias == "none" ? "constant" : "none";
+            case GLFW_KEY_B: {
+                // Every bias mode in turn (shift: backwards), skipping those the method cannot
+                // take (kernel/bias.h: validateBias).
+                int mode = biasFromName(s.bias).value_or(PCF_BIAS_CONSTANT);
+                do {
+                    mode = (mode + (shift ? PCF_BIAS_COUNT - 1 : 1)) % PCF_BIAS_COUNT;
+                } while (validateBias(mode, s.method));
+                s.bias = std::string(biasName(mode));
                 mSession.setSettings(s);
                 break;
+            }
             case GLFW_KEY_L: nextLesson(shift ? -1 : 1); break;
             case GLFW_KEY_E: exportFrame(); break;
             case GLFW_KEY_P: mSession.setPresentation(!mSession.presentation()); break;

@@ -13,11 +13,15 @@
 
 namespace pcf {
 
+using glm::abs;
 using glm::clamp;
 using glm::dot;
 using glm::floor;
 using glm::ivec2;
+using glm::max;
+using glm::min;
 using glm::mix;
+using glm::sqrt;
 using glm::uint;
 using glm::vec2;
 using glm::vec3;
@@ -86,6 +90,18 @@ inline float filterVisibility(const ShadowMap& map, vec2 uv, float ref, const Pc
 inline float filterRecorded(const ShadowMap& map, vec2 uv, float ref, const PcfParams& prm,
                             Recording& out) {
     return pcfFilter(RecordingMap{map.depths().data(), map.size(), &out}, uv, ref, prm);
+}
+
+// The same two paths under a bias mode: ref is the lookup's (per-lookup bias applied), `bias`
+// says how each tap's comparison varies from it (receiver plane, soft, interpolated).
+inline float filterVisibility(const ShadowMap& map, vec2 uv, float ref, const PcfParams& prm,
+                              const PcfBias& bias) {
+    return pcfFilterRef(PlainMap{map.depths().data(), map.size()}, uv, PcfRef(ref, uv, bias), prm);
+}
+inline float filterRecorded(const ShadowMap& map, vec2 uv, float ref, const PcfParams& prm,
+                            const PcfBias& bias, Recording& out) {
+    return pcfFilterRef(RecordingMap{map.depths().data(), map.size(), &out}, uv,
+                        PcfRef(ref, uv, bias), prm);
 }
 
 }  // namespace pcf

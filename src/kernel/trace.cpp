@@ -32,7 +32,11 @@ std::string pair(vec2 v) { return "(" + num(v.x) + ", " + num(v.y) + ")"; }
 std::string pair(ivec2 v) {
     return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ")";
 }
-std::string bit(float lit) { return lit >= 0.5f ? "1" : "0"; }
+// A comparison's result: the bit, or the soft comparison's fraction.
+std::string bit(float lit) {
+    if (lit == 0.0f || lit == 1.0f) return lit >= 0.5f ? "1" : "0";
+    return formatNumber(lit);
+}
 
 WeightGrid mergeWeights(const std::vector<TapRecord>& taps) {
     WeightGrid grid;
@@ -72,6 +76,10 @@ std::vector<TapRecord> tapsOf(const Trace& tr, int fetch) {
 }
 
 std::string tapLine(const TapRecord& t) {
+    if (t.lit != 0.0f && t.lit != 1.0f) {  // the soft comparison's fraction
+        return "texel " + pair(t.texel) + ": depth " + num(t.depth) + ", ref " + num(t.ref) +
+               " -> soft " + num(t.lit);
+    }
     std::string cmp = t.lit >= 0.5f ? " <= " : " > ";
     return "texel " + pair(t.texel) + ": depth " + num(t.depth) + ", ref " + num(t.ref) + cmp +
            num(t.depth) + " -> " + (t.lit >= 0.5f ? "lit (1)" : "shadowed (0)");
@@ -89,18 +97,119 @@ void addStep(Trace& tr, std::string title, std::string text) {
     tr.steps.push_back({std::move(title), std::move(text)});
 }
 
+// What the bias mode did to this lookup's ref, in words (kernel/bias.h has the formulas).
+std::string biasSentence(const Trace& tr) {
+    const BiasParams& b = tr.bias;
+    std::ostringstream s;
+    std::string moved = "(z " + std::string(tr.ref < tr.z ? "- " : "+ ") +
+                        num(std::fabs(tr.z - tr.ref)) + ")";
+    switch (b.mode) {
+        case PCF_BIAS_NONE:
+            s << "No bias: the comparison depth is ref = z = " << num(tr.ref) << ".";
+            break;
+        case PCF_BIAS_SLOPE:
+            s << "Slope-scaled bias: ref = z - min(" << num(b.constant) << " + " << num(b.slope)
+              << " * tan(theta), " << num(b.slopeMax) << ") = " << num(tr.ref) << " " << moved
+              << "; theta is the angle between the surface normal and the light.";
+            break;
+        case PCF_BIAS_NORMAL:
+            s << "Normal offset: before projection the receiver point moved along its normal by "
+              << num(b.normalOffset)
+              << " texels times sin(theta), so uv above is the moved point's; the moved point's "
+                 "depth less "
+              << num(b.constant) << " gives ref = " << num(tr.ref) << " " << moved << ".";
+            break;
+        case PCF_BIAS_RECEIVER_PLANE:
+            s << "Receiver-plane bias: ref = z - " << num(b.constant) << " = " << num(tr.ref)
+              << " holds at uv only. The receiver's depth changes across the map by dz/duv = "
+              << pair(b.dzduv)
+              << " (from the renderer's screen-space derivatives), so each tap compares against "
+                 "the plane's own depth where it reads: ref + dot(dz/duv, tap uv - uv).";
+            break;
+        case PCF_BIAS_SOFT:
+            s << "ref = z - " << num(b.constant) << " = " << num(tr.ref)
+              << ". Soft comparison (\"PCF Shadow Acne\" part 2): a tap is lit by "
+                 "(depth > ref) * saturate((depth - ref) * "
+              << num(b.softScale) << "), so a texel just beyond ref counts only in part.";
+            break;
+        case PCF_BIAS_INTERPOLATED:
+            s << "ref = z - " << num(b.constant) << " = " << num(tr.ref)
+              << ". Interpolated depth (\"PCF Shadow Acne\", Solution 2): the map's depth is "
+                 "lerped at uv and compared once.";
+            break;
+        default:
+            if (tr.ref == tr.z) {
+                s << "No bias: the comparison depth is ref = z = " << num(tr.ref) << ".";
+            } else {
+                s << "After bias the comparison depth is ref = " << num(tr.ref) << " " << moved
+                  << ".";
+            }
+    }
+    return s.str();
+}
+
 void stepProject(Trace& tr) {
     std::ostringstream s;
     s << "The receiver point under this pixel projects to uv = " << pair(tr.uv) << " in the "
       << tr.mapSize.x << " x " << tr.mapSize.y << " shadow map, at light depth z = " << num(tr.z)
-      << ". ";
-    if (tr.ref == tr.z) {
-        s << "No bias: the comparison depth is ref = z = " << num(tr.ref) << ".";
-    } else {
-        s << "After bias the comparison depth is ref = " << num(tr.ref) << " (z "
-          << (tr.ref < tr.z ? "- " : "+ ") << num(std::fabs(tr.z - tr.ref)) << ").";
-    }
+      << ". " << biasSentence(tr);
     addStep(tr, "Project the pixel into the shadow map", s.str());
+}
+
+// Receiver-plane bias: every tap's own ref, how far the plane moved it from the lookup's, and
+// which bits that changed. Gathers and hardware taps compare four texels against one ref: the
+// plane's depth at their own centre.
+void stepPerTapRef(Trace& tr) {
+    if (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE) return;
+    int m = tr.params.method;
+    std::ostringstream s;
+    if (m == PCF_GATHER) {
+        s << "A comparison gather compares its four texels against one ref, so the plane is "
+             "applied per gather, at the centre of its 2x2 block:";
+    } else if (m == PCF_HW2X2 || m == PCF_HW || m == PCF_TENT) {
+        s << "The texture unit compares a hardware tap's four texels against one ref, so the "
+             "plane is applied per tap, at the tap's own uv:";
+    } else {
+        s << "Each texel is compared against the plane's depth at its own centre:";
+    }
+    std::map<std::pair<int, int>, bool> shown;
+    for (const TapRecord& t : tr.taps) {
+        auto key = std::make_pair(t.texel.x, t.texel.y);
+        if (shown.count(key) != 0 && m != PCF_HW && m != PCF_NAIVE) continue;
+        shown[key] = true;
+        float alone = pcfCompare(t.depth, tr.ref);
+        s << "\n  texel " << pair(t.texel) << ": ref " << num(t.ref) << " ("
+          << (t.ref >= tr.ref ? "+" : "-") << num(std::fabs(t.ref - tr.ref)) << "), depth "
+          << num(t.depth) << " -> " << bit(t.lit);
+        if (alone != t.lit) s << "  (one ref for all: " << bit(alone) << ")";
+        if (shown.size() >= 24) {
+            s << "\n  ...";
+            break;
+        }
+    }
+    s << "\n" << tapsChangedByPlane(tr) << " of " << tr.taps.size()
+      << " comparisons come out otherwise than with one ref for every tap.";
+    addStep(tr, "Each tap's own ref", s.str());
+}
+
+void explainInterpolated(Trace& tr) {
+    std::ostringstream s;
+    float depth = 0.0f;
+    s << "The four texels at base " << pair(tr.pos.base) << " are not compared one by one; their "
+      << "depths are lerped by frac " << pair(tr.pos.frac) << ":";
+    for (const TapRecord& t : tr.taps) {
+        s << "\n  texel " << pair(t.texel) << ": depth " << num(t.depth) << " * "
+          << num(t.weight);
+        depth += t.weight * t.depth;
+    }
+    s << "\ninterpolated depth = " << num(depth) << "; ref " << num(tr.ref)
+      << (tr.visibility >= 0.5f ? " <= " : " > ") << num(depth) << " -> "
+      << (tr.visibility >= 0.5f ? "lit (1)" : "shadowed (0)") << ".";
+    addStep(tr, "Compare against the interpolated depth", s.str());
+    addStep(tr, "Result",
+            "visibility = " + num(tr.visibility) +
+                ". One comparison, one bit: the fraction went into the depth, so nothing is "
+                "left to soften the edge. This is why interpolation cannot be PCF.");
 }
 
 void stepTexelPosition(Trace& tr) {
@@ -346,22 +455,44 @@ float weightedTapSum(const Trace& trace) {
     return sum;
 }
 
+int tapsChangedByPlane(const Trace& tr) {
+    if (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE) return 0;
+    int changed = 0;
+    for (const TapRecord& t : tr.taps) changed += pcfCompare(t.depth, tr.ref) != t.lit ? 1 : 0;
+    return changed;
+}
+
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm) {
+    BiasParams b;
+    b.mode = ref == z ? PCF_BIAS_NONE : PCF_BIAS_CONSTANT;
+    b.constant = z - ref;
+    return traceLookup(map, uv, z, ref, prm, b);
+}
+
+Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm,
+                  const BiasParams& bias) {
     Trace tr;
     tr.params = prm;
     tr.mapSize = map.size();
     tr.uv = uv;
     tr.z = z;
     tr.ref = ref;
+    tr.bias = bias;
     tr.pos = pcfTexelPos(uv, map.size());
     Recording rec;
-    tr.visibility = filterRecorded(map, uv, ref, prm, rec);
+    tr.visibility = filterRecorded(map, uv, ref, prm, bias.kernelBias(), rec);
     tr.taps = std::move(rec.taps);
     tr.fetches = std::move(rec.fetches);
     tr.weights = mergeWeights(tr.taps);
     tr.counts = countFetches(tr);
 
     stepProject(tr);
+    stepPerTapRef(tr);
+    if (bias.mode == PCF_BIAS_INTERPOLATED && prm.method == PCF_NEAREST) {
+        stepTexelPosition(tr);
+        explainInterpolated(tr);
+        return tr;
+    }
     switch (prm.method) {
         case PCF_NEAREST: explainNearest(tr); break;
         case PCF_BOX2X2:
@@ -439,12 +570,26 @@ std::string traceToJson(const Trace& tr) {
     s << "{\"method\":" << jstr(std::string(methodInfo(tr.params.method).name))
       << ",\"kernel\":" << tr.params.kernel << ",\"radius\":" << jnum(tr.params.radius)
       << ",\"map_size\":" << jvec(tr.mapSize) << ",\"uv\":" << jvec(tr.uv)
-      << ",\"z\":" << jnum(tr.z) << ",\"ref\":" << jnum(tr.ref) << ",\"texel\":" << jvec(tr.pos.p)
+      << ",\"z\":" << jnum(tr.z) << ",\"ref\":" << jnum(tr.ref) << ",\"bias\":{\"mode\":"
+      << jstr(std::string(biasName(tr.bias.mode))) << ",\"constant\":" << jnum(tr.bias.constant)
+      << ",\"slope\":" << jnum(tr.bias.slope) << ",\"slope_max\":" << jnum(tr.bias.slopeMax)
+      << ",\"normal_offset\":" << jnum(tr.bias.normalOffset)
+      << ",\"soft_scale\":" << jnum(tr.bias.softScale) << ",\"dzduv\":" << jvec(tr.bias.dzduv)
+      << ",\"per_tap\":"
+      << (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE ? "\"none\""
+          : tr.params.method == PCF_GATHER        ? "\"per gather, at its centre\""
+          : tr.params.method == PCF_HW2X2 || tr.params.method == PCF_HW ||
+                  tr.params.method == PCF_TENT
+              ? "\"per hardware tap, at its uv\""
+              : "\"per texel, at its centre\"")
+      << "},\"texel\":" << jvec(tr.pos.p)
       << ",\"base\":" << jvec(tr.pos.base) << ",\"frac\":" << jvec(tr.pos.frac) << ",\"taps\":[";
     for (size_t k = 0; k < tr.taps.size(); ++k) {
         const TapRecord& t = tr.taps[k];
         s << (k ? "," : "") << "{\"texel\":" << jvec(t.texel) << ",\"depth\":" << jnum(t.depth)
-          << ",\"ref\":" << jnum(t.ref) << ",\"lit\":" << (t.lit >= 0.5f ? 1 : 0)
+          << ",\"ref\":" << jnum(t.ref) << ",\"ref_shift\":" << jnum(t.ref - tr.ref)
+          << ",\"lit\":"
+          << (t.lit == 0.0f || t.lit == 1.0f ? std::to_string(t.lit >= 0.5f ? 1 : 0) : jnum(t.lit))
           << ",\"weight\":" << jnum(t.weight) << ",\"fetch\":" << t.fetch << "}";
     }
     s << "],\"fetch_list\":[";

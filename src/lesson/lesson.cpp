@@ -10,6 +10,7 @@
 #include <optional>
 #include <sstream>
 
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/shadow_map.h"
 #include "kernel/trace.h"
@@ -23,9 +24,10 @@ namespace pcf {
 namespace {
 
 // The keys a [settings] table and a [[step]] may set.
-constexpr std::string_view SETTING_KEYS[] = {"method",       "kernel",        "radius", "rotate",
-                                             "bias",         "constant_bias", "cull",   "map_size",
-                                             "depth_format", "pixel"};
+constexpr std::string_view SETTING_KEYS[] = {
+    "method",     "kernel",    "radius",        "rotate",     "bias",     "constant_bias",
+    "slope_bias", "slope_max", "normal_offset", "soft_scale", "cull",     "map_size",
+    "depth_format", "pixel"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));
@@ -62,6 +64,7 @@ std::string joinNames(const std::vector<std::string_view>& names) {
 struct SettingLines {
     int method = 0;
     int kernel = 0;
+    int bias = 0;
 };
 
 class LessonParser {
@@ -132,13 +135,17 @@ class LessonParser {
             checkLength(*table.get("text"), what + " text", step.text, MAX_STEP_TEXT_CHARS);
             if (table.get("chart")) {
                 std::string chart = requireText(table, "chart", what, table);
-                std::filesystem::path p = std::filesystem::path(mSource).parent_path() / chart;
+                // "figures/stability.csv#shimmer": which of a stability.csv's charts to show.
+                size_t hash = chart.find('#');
+                std::string view = hash == std::string::npos ? "" : chart.substr(hash);
+                std::filesystem::path p =
+                    std::filesystem::path(mSource).parent_path() / chart.substr(0, hash);
                 std::error_code ec;
                 if (!std::filesystem::is_regular_file(p, ec)) {
                     fail(*table.get("chart"), what + " chart '" + chart + "' not found (looked at " +
                                                   p.string() + ")");
                 }
-                step.chart = p.string();
+                step.chart = p.string() + view;
                 step.chartLine = lineOf(*table.get("chart"));
             }
             step.settings = state;
@@ -314,18 +321,34 @@ class LessonParser {
         }
         if (const toml::node* n = table.get("bias")) {
             std::string bias = string(*n, name("bias"));
-            if (bias != "none" && bias != "constant") {
-                fail(*n, "unknown bias mode '" + bias + "' (known: none, constant)");
+            if (!biasFromName(bias)) {
+                fail(*n, "unknown bias mode '" + bias + "' (known: " + biasNameList() + ")");
             }
             s.bias = bias;
+            lines.bias = lineOf(*n);
         }
-        if (const toml::node* n = table.get("constant_bias")) {
-            double b = number(*n, name("constant_bias"));
-            if (!(b >= -1.0 && b <= 1.0)) {
-                fail(*n, name("constant_bias") + " must be in [-1, 1], got " + formatValue(b));
+        // The bias parameters, range-checked as the command line checks them (kernel/bias.h).
+        auto biasParam = [&](const char* key, float& field) {
+            const toml::node* n = table.get(key);
+            if (!n) return;
+            float old = field;
+            field = static_cast<float>(number(*n, name(key)));
+            BiasParams probe;
+            probe.constant = s.constantBias;
+            probe.slope = s.slopeBias;
+            probe.slopeMax = s.slopeMax;
+            probe.normalOffset = s.normalOffset;
+            probe.softScale = s.softScale;
+            if (auto why = validateBiasParams(probe, "")) {
+                field = old;
+                fail(*n, what + " " + *why);
             }
-            s.constantBias = static_cast<float>(b);
-        }
+        };
+        biasParam("constant_bias", s.constantBias);
+        biasParam("slope_bias", s.slopeBias);
+        biasParam("slope_max", s.slopeMax);
+        biasParam("normal_offset", s.normalOffset);
+        biasParam("soft_scale", s.softScale);
         if (const toml::node* n = table.get("cull")) {
             std::string cull = string(*n, name("cull"));
             if (cull != "back" && cull != "front" && cull != "none") {
@@ -381,6 +404,10 @@ class LessonParser {
     // The checks that need the whole state: the kernel a method takes.
     void checkState(const toml::table& step, const std::string& what, const LessonSettings& s,
                     const SettingLines& lines) const {
+        if (auto why = validateBias(biasFromName(s.bias).value_or(PCF_BIAS_CONSTANT), s.method)) {
+            int line = std::max(lines.bias, lines.method);
+            throw InputError(mSource, line > 0 ? line : lineOf(step), what + ": " + *why);
+        }
         std::optional<std::string> problem =
             validateParams(makeParams(s.method, s.kernel, s.radius));
         if (!problem) return;
@@ -450,7 +477,18 @@ class LessonParser {
 
 }  // namespace
 
-float LessonSettings::depthBias() const { return bias == "constant" ? constantBias : 0.0f; }
+float LessonSettings::depthBias() const { return biasParams().baseBias(); }
+
+BiasParams LessonSettings::biasParams() const {
+    BiasParams b;
+    b.mode = biasFromName(bias).value_or(PCF_BIAS_CONSTANT);
+    b.constant = constantBias;
+    b.slope = slopeBias;
+    b.slopeMax = slopeMax;
+    b.normalOffset = normalOffset;
+    b.softScale = softScale;
+    return b;
+}
 
 PcfParams LessonSettings::pcfParams(glm::ivec2 framePixel, glm::ivec2 frameSize) const {
     vec2 rotation(1.0f, 0.0f);

@@ -55,6 +55,7 @@
 #include <string_view>
 #include <vector>
 
+#include "kernel/bias.h"
 #include "kernel/pcf.h"
 #include "scene/input_error.h"
 #include "scene/scene.h"
@@ -77,15 +78,21 @@ struct LessonSettings {
     int kernel = 3;
     float radius = 1.0f;              // poisson, texels
     bool rotate = false;              // poisson: rotate the disk per pixel
-    std::string bias = "constant";    // "none" or "constant"
-    float constantBias = 0.002f;      // light depth units: ref = z - constantBias
+    std::string bias = "constant";    // a bias mode name (kernel/bias.h)
+    float constantBias = DEFAULT_CONSTANT_BIAS;  // light depth units: ref = z - constantBias
+    float slopeBias = DEFAULT_SLOPE_BIAS;        // slope_bias: S of the slope mode
+    float slopeMax = DEFAULT_SLOPE_MAX;          // slope_max: its cap
+    float normalOffset = DEFAULT_NORMAL_OFFSET;  // normal_offset: texels
+    float softScale = DEFAULT_SOFT_SCALE;        // soft_scale
     std::string cull = "back";        // shadow pass culling: "back", "front" or "none"
     int mapSize = 1024;               // texels per side
     std::string depthFormat = "32f";  // "16", "24" or "32f"
     glm::ivec2 pixel{640, 360};       // in the 1280 x 720 reference frame, origin top-left, y down
 
-    // What is subtracted from the receiver's depth: ref = z - depthBias(); 0 for bias "none".
+    // The constant depth every mode but none subtracts from the receiver's depth (0 for none).
     float depthBias() const;
+    // The mode and its parameters as the kernel and the trace take them.
+    BiasParams biasParams() const;
 
     // The kernel's parameters for the pixel traced. framePixel is in the frame actually rendered
     // (origin top-left, y down, as scalePixel returns it); the per-pixel Poisson rotation is
@@ -103,6 +110,8 @@ struct LessonStep {
     LessonSettings settings;  // the state at this step: [settings], then every step up to here
     // `chart = "figures/bench.csv"`: this step shows the speed/accuracy chart drawn from that
     // bench.csv (a path relative to the lesson file) where the scene would be. Not inherited.
+    // A stability.csv names its chart after a '#': "figures/stability.csv#acne" (or #leak,
+    // #shimmer), kept in `chart` after the resolved path.
     std::string chart;
     int chartLine = 0;  // the line of the `chart` key
 };

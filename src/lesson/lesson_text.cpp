@@ -122,13 +122,25 @@ const std::vector<Simple>& simpleNames() {
         {"bias", [](const Trace&, const StepContext& c) { return text(c.bias); }},
         {"constant_bias",
          [](const Trace&, const StepContext& c) { return number(c.constantBias); }},
+        {"dzduv.u", [](const Trace& t, const StepContext&) { return number(t.bias.dzduv.x); }},
+        {"dzduv.v", [](const Trace& t, const StepContext&) { return number(t.bias.dzduv.y); }},
+        {"plane_changed",
+         [](const Trace& t, const StepContext&) { return integer(tapsChangedByPlane(t)); }},
+        {"lookup_shadowed_count",
+         [](const Trace& t, const StepContext&) {
+             int n = 0;
+             for (const TapRecord& tap : t.taps) n += pcfCompare(tap.depth, t.ref) < 0.5f;
+             return integer(n);
+         }},
         {"cull", [](const Trace&, const StepContext& c) { return text(c.cull); }},
         {"depth_format", [](const Trace&, const StepContext& c) { return text(c.depthFormat); }},
     };
     return names;
 }
 
-constexpr std::string_view TAP_FIELDS[] = {"i", "j", "depth", "ref", "margin", "lit", "weight"};
+constexpr std::string_view TAP_FIELDS[] = {"i",     "j",      "depth",         "ref",
+                                           "margin", "lit",   "weight",        "shift",
+                                           "lookup_margin"};
 constexpr std::string_view FETCH_FIELDS[] = {"value", "weight", "u", "v"};
 
 // A placeholder's name, taken apart: a simple name, or an indexed one (tap[K].field,
@@ -203,6 +215,8 @@ Value valueOf(const Name& name, const Trace& tr, const StepContext& ctx) {
         if (name.field == "ref") return number(t.ref);
         if (name.field == "margin") return number(t.depth - t.ref);
         if (name.field == "lit") return integer(t.lit >= 0.5f ? 1 : 0);
+        if (name.field == "shift") return number(t.ref - tr.ref);
+        if (name.field == "lookup_margin") return number(t.depth - tr.ref);
         return number(t.weight);
     }
     if (name.index >= static_cast<int>(tr.fetches.size())) return {};

@@ -39,6 +39,13 @@
 //                         read K (0-based, in read order): its texel, stored depth, the depth
 //                         compared, depth - ref (>= 0 lit, < 0 shadowed), bit, and share of
 //                         the result
+//   tap[K].shift tap[K].lookup_margin
+//                         how far the bias moved read K's own ref from the lookup's ref (its
+//                         ref - ref; nonzero under receiver-plane bias), and depth - ref with the
+//                         lookup's one ref (what the read would have said without its own ref)
+//   dzduv.u dzduv.v       receiver-plane bias: the receiver's d(depth)/d(u, v) the renderer used
+//   plane_changed         reads whose bit differs from the one-ref-for-all comparison
+//   lookup_shadowed_count reads that would fail against the lookup's one ref
 //   fetch[K].value fetch[K].weight fetch[K].u fetch[K].v
 //                         fetch instruction K: the value it returned (sum of its reads' weight *
 //                         bit over its weight), its weight, where it sampled

@@ -146,8 +146,15 @@ void drawNeighbourhood(Canvas& c, const InspectorLayout& l, const InspectorModel
             float big = std::min(cell * 0.30f, fontSize(l, 30, m.presentation));
             float small = std::min(cell * 0.16f, fontSize(l, 14, m.presentation));
             if (tap && cell >= 30.0f) {
-                c.text({r.centre().x, r.y + cell * 0.30f}, tap->lit >= 0.5f ? "1" : "0",
-                       {FontFace::Mono, big, ink, TextAlign::Center});
+                bool soft = tap->lit != 0.0f && tap->lit != 1.0f;  // the soft comparison
+                c.text({r.centre().x, r.y + cell * 0.30f},
+                       soft ? fixed(tap->lit, 2) : tap->lit >= 0.5f ? "1" : "0",
+                       {FontFace::Mono, soft ? big * 0.6f : big, ink, TextAlign::Center});
+            }
+            // The tap's own ref where the bias gave it one (receiver plane).
+            if (tap && tap->ref != tr.ref && cell >= 64.0f && small >= 9.0f) {
+                c.text({r.centre().x, r.y + cell * 0.50f}, "r " + fixed(tap->ref, 4),
+                       {FontFace::Mono, small, ink, TextAlign::Center});
             }
             if (cell >= 64.0f && small >= 9.0f) {
                 if (inMap) {
@@ -272,7 +279,7 @@ void drawInspectorPanel(Canvas& c, const InspectorLayout& l, const InspectorMode
     if (tr.counts.gathers) counts += ", " + std::to_string(tr.counts.gathers) + " gathers";
     if (tr.counts.hwTaps) counts += ", " + std::to_string(tr.counts.hwTaps) + " hardware taps";
     counts += "   uv (" + fixed(tr.uv.x, 4) + ", " + fixed(tr.uv.y, 4) + ")  ref " +
-              fixed(tr.ref, 4);
+              fixed(tr.ref, 4) + "  bias " + std::string(biasName(tr.bias.mode));
     float small = fontSize(l, 13, m.presentation);
     // One line under the title: large presentation type steps down until it fits.
     while (small > 8.0f && measureText(FontFace::Mono, small, counts).x > p.w - 2.0f * margin) {

@@ -11,21 +11,36 @@ GpuLookup::GpuLookup()
 
 std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec4> lookups,
                                   int width, const PcfParams& prm, bool rotatePerPixel) {
+    return run(map, lookups, width, prm, rotatePerPixel,
+               PcfBias(PCF_BIAS_CONSTANT, glm::vec2(0.0f), 0.0f), {});
+}
+
+std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec4> lookups,
+                                  int width, const PcfParams& prm, bool rotatePerPixel,
+                                  const PcfBias& bias, std::span<const glm::vec2> dzduv) {
     setMap(map);
-    setLookups(lookups, width);
-    draw(prm, rotatePerPixel);
+    setLookups(lookups, width, dzduv, bias.dzduv);
+    draw(prm, rotatePerPixel, bias);
     return read();
 }
 
 void GpuLookup::setMap(const ShadowMap& map) { mDepth = createDepthTexture(map); }
 
-void GpuLookup::setLookups(std::span<const glm::vec4> lookups, int width) {
+void GpuLookup::setLookups(std::span<const glm::vec4> lookups, int width,
+                           std::span<const glm::vec2> dzduv, glm::vec2 planeForAll) {
     if (width <= 0 || lookups.empty() || lookups.size() % static_cast<size_t>(width) != 0) {
         throw std::invalid_argument("lookups must fill whole rows of the grid");
+    }
+    if (!dzduv.empty() && dzduv.size() != lookups.size()) {
+        throw std::invalid_argument("dzduv needs one entry per lookup");
     }
     int height = static_cast<int>(lookups.size() / static_cast<size_t>(width));
     mInput = createTexture2d(GL_RGBA32F, width, height);
     glTextureSubImage2D(mInput.id(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, lookups.data());
+    std::vector<glm::vec2> planes(dzduv.begin(), dzduv.end());
+    if (planes.empty()) planes.assign(lookups.size(), planeForAll);
+    mPlanes = createTexture2d(GL_RG32F, width, height);
+    glTextureSubImage2D(mPlanes.id(), 0, 0, 0, width, height, GL_RG, GL_FLOAT, planes.data());
     if (mWidth != width || mHeight != height) {
         mTarget = createOffscreenTarget(width, height, {GL_R32F});
         mWidth = width;
@@ -33,7 +48,7 @@ void GpuLookup::setLookups(std::span<const glm::vec4> lookups, int width) {
     }
 }
 
-void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel) {
+void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& bias) {
     if (!mDepth || !mInput) throw std::logic_error("GpuLookup::draw before setMap and setLookups");
     GLuint program = mPrograms.get(prm.method, prm.kernel);
     glUseProgram(program);
@@ -41,6 +56,11 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel) {
     glBindTextureUnit(2, mInput.id());
     glBindSampler(2, mSamplers.nearest.id());
     glProgramUniform1i(program, glGetUniformLocation(program, "uLookups"), 2);
+    glBindTextureUnit(3, mPlanes.id());
+    glBindSampler(3, mSamplers.nearest.id());
+    glProgramUniform1i(program, glGetUniformLocation(program, "uPlanes"), 3);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uBiasMode"), bias.mode);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uSoftScale"), bias.softScale);
     glProgramUniform1f(program, glGetUniformLocation(program, "uRadius"), prm.radius);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRotatePerPixel"),
                        rotatePerPixel ? 1 : 0);
@@ -53,7 +73,7 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    for (GLuint unit : {0u, 1u, 2u}) glBindSampler(unit, 0);
+    for (GLuint unit : {0u, 1u, 2u, 3u}) glBindSampler(unit, 0);
 }
 
 std::vector<float> GpuLookup::read() const {

@@ -24,15 +24,24 @@ class GpuLookup {
     // run() is these four in a row: setMap, setLookups, draw, read.
     std::vector<float> run(const ShadowMap& map, std::span<const glm::vec4> lookups, int width,
                            const PcfParams& prm, bool rotatePerPixel);
+    // The same under a bias mode: lookup k compares per tap as PcfRef(lookup.z, uv, bias) says,
+    // with dz/duv = dzduv[k] (empty: bias.dzduv for every lookup).
+    std::vector<float> run(const ShadowMap& map, std::span<const glm::vec4> lookups, int width,
+                           const PcfParams& prm, bool rotatePerPixel, const PcfBias& bias,
+                           std::span<const glm::vec2> dzduv);
 
     // The parts of run(), for timing the bare lookup pass (bench.h): upload once, then draw as
     // often as needed, with no upload or readback in the timed part.
     void setMap(const ShadowMap& map);
-    // Throws std::invalid_argument unless the lookups fill whole rows of a `width`-wide grid.
-    void setLookups(std::span<const glm::vec4> lookups, int width);
-    // One full-screen pass of the kernel over the lookups into an R32F target. Throws
+    // Throws std::invalid_argument unless the lookups fill whole rows of a `width`-wide grid
+    // (and dzduv, when given, has one entry per lookup; empty: planeForAll for every lookup).
+    void setLookups(std::span<const glm::vec4> lookups, int width,
+                    std::span<const glm::vec2> dzduv = {}, glm::vec2 planeForAll = glm::vec2(0.0f));
+    // One full-screen pass of the kernel over the lookups into an R32F target, each lookup
+    // compared per tap as PcfRef(lookup.z, uv, bias with its own dz/duv) says. Throws
     // std::logic_error before setMap and setLookups.
-    void draw(const PcfParams& prm, bool rotatePerPixel);
+    void draw(const PcfParams& prm, bool rotatePerPixel,
+              const PcfBias& bias = PcfBias(PCF_BIAS_CONSTANT, glm::vec2(0.0f), 0.0f));
     // The last draw's visibilities, in the lookups' order.
     std::vector<float> read() const;
 
@@ -42,6 +51,7 @@ class GpuLookup {
     GlVertexArray mEmptyVao;
     GlTexture mDepth;
     GlTexture mInput;
+    GlTexture mPlanes;  // RG32F dz/du, dz/dv per lookup (receiver-plane bias)
     OffscreenTarget mTarget;
     int mWidth = 0;
     int mHeight = 0;

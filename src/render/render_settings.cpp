@@ -4,9 +4,24 @@
 
 namespace pcf {
 
+static_assert(static_cast<int>(BiasMode::None) == PCF_BIAS_NONE &&
+              static_cast<int>(BiasMode::ReceiverPlane) == PCF_BIAS_RECEIVER_PLANE &&
+              static_cast<int>(BiasMode::Interpolated) == PCF_BIAS_INTERPOLATED);
+
 PcfParams RenderSettings::pcfParams() const { return makeParams(method, kernel, radius); }
 
-float RenderSettings::depthBias() const { return bias == BiasMode::None ? 0.0f : constantBias; }
+float RenderSettings::depthBias() const { return biasParams().baseBias(); }
+
+BiasParams RenderSettings::biasParams() const {
+    BiasParams b;
+    b.mode = static_cast<int>(bias);
+    b.constant = constantBias;
+    b.slope = slopeBias;
+    b.slopeMax = slopeMax;
+    b.normalOffset = normalOffset;
+    b.softScale = softScale;
+    return b;
+}
 
 GLenum glDepthFormat(DepthFormat format) {
     switch (format) {
@@ -31,14 +46,12 @@ std::optional<DepthFormat> depthFormatFromName(std::string_view name) {
     return std::nullopt;
 }
 
-std::string_view biasModeName(BiasMode mode) {
-    return mode == BiasMode::None ? "none" : "constant";
-}
+std::string_view biasModeName(BiasMode mode) { return biasName(static_cast<int>(mode)); }
 
 std::optional<BiasMode> biasModeFromName(std::string_view name) {
-    if (name == "none") return BiasMode::None;
-    if (name == "constant") return BiasMode::Constant;
-    return std::nullopt;
+    std::optional<int> id = biasFromName(name);
+    if (!id) return std::nullopt;
+    return static_cast<BiasMode>(*id);
 }
 
 std::string_view cullModeName(CullMode mode) {

@@ -8,12 +8,14 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
+#include "kernel/bias.h"
 #include "kernel/pcf.h"
 
 namespace pcf {
 
 enum class DepthFormat { D16, D24, D32F };
-enum class BiasMode { None, Constant };
+// The bias modes, in the kernel's order (the value is PCF_BIAS_NONE ..: src/kernel/bias.h).
+enum class BiasMode { None, Constant, Slope, Normal, ReceiverPlane, Soft, Interpolated };
 enum class CullMode { Back, Front, None };
 
 constexpr int MIN_MAP_SIZE = 4;
@@ -28,7 +30,12 @@ struct RenderSettings {
     int mapSize = 1024;           // the shadow map is mapSize x mapSize texels
     DepthFormat depthFormat = DepthFormat::D32F;
     BiasMode bias = BiasMode::Constant;
-    float constantBias = 0.002f;  // light depth units: ref = z - constantBias
+    float constantBias = DEFAULT_CONSTANT_BIAS;  // light depth units: ref = z - constantBias
+    // The other modes' parameters (kernel/bias.h says which mode reads which).
+    float slopeBias = DEFAULT_SLOPE_BIAS;      // slope: depth units per unit of tan(theta)
+    float slopeMax = DEFAULT_SLOPE_MAX;        // slope: the cap, depth units
+    float normalOffset = DEFAULT_NORMAL_OFFSET;  // normal: texels
+    float softScale = DEFAULT_SOFT_SCALE;      // soft: 1 / depth units
     CullMode shadowCull = CullMode::Back;
     // Slope-scaled bias in the shadow pass: glPolygonOffset(factor, units); 0, 0 = off.
     glm::vec2 polygonOffset{0.0f, 0.0f};
@@ -37,14 +44,17 @@ struct RenderSettings {
     glm::ivec2 frameSize{1280, 720};
 
     PcfParams pcfParams() const;
-    // The depth subtracted from z: 0 for BiasMode::None.
+    // The constant depth subtracted from z first: 0 for BiasMode::None (kernel/bias.h).
     float depthBias() const;
+    // The mode and its parameters, as the kernel and the trace take them.
+    BiasParams biasParams() const;
 };
 
 GLenum glDepthFormat(DepthFormat format);
 std::string_view depthFormatName(DepthFormat format);  // "16", "24", "32f"
 std::optional<DepthFormat> depthFormatFromName(std::string_view name);
-std::string_view biasModeName(BiasMode mode);  // "none", "constant"
+// "none", "constant", "slope", ...: the names of kernel/bias.h, the one table of them.
+std::string_view biasModeName(BiasMode mode);
 std::optional<BiasMode> biasModeFromName(std::string_view name);
 std::string_view cullModeName(CullMode mode);  // "back", "front", "none"
 std::optional<CullMode> cullModeFromName(std::string_view name);

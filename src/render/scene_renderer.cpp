@@ -60,6 +60,17 @@ glm::mat4 SceneRenderer::clipFromWorld() const {
     return pcf::clipFromWorld(mScene.camera, aspect);
 }
 
+void SceneRenderer::setLight(const Light& light) {
+    mScene.light = light;
+    mShadowClipFromWorld = pcf::shadowClipFromWorld(mScene);
+}
+
+void SceneRenderer::setCamera(const Camera& camera) { mScene.camera = camera; }
+
+void SceneRenderer::setShadowClipFromWorld(const glm::mat4& shadowClipFromWorld) {
+    mShadowClipFromWorld = shadowClipFromWorld;
+}
+
 void SceneRenderer::ensureTargets(const RenderSettings& settings) {
     if (mShadow.width != settings.mapSize || mShadowFormat != settings.depthFormat ||
         !mShadow.framebuffer) {
@@ -67,10 +78,10 @@ void SceneRenderer::ensureTargets(const RenderSettings& settings) {
                                         glDepthFormat(settings.depthFormat));
         mShadowFormat = settings.depthFormat;
     }
-    size_t attachments = settings.writePositions ? 4 : 3;
+    size_t attachments = settings.writePositions ? 5 : 4;
     if (mFrame.width != settings.frameSize.x || mFrame.height != settings.frameSize.y ||
         !mFrame.framebuffer || mFrame.colors.size() != attachments) {
-        std::vector<GLenum> formats = {GL_RGBA8, GL_RGBA32F, GL_R32F};
+        std::vector<GLenum> formats = {GL_RGBA8, GL_RGBA32F, GL_R32F, GL_RGBA32F};
         if (settings.writePositions) formats.push_back(GL_RGBA32F);
         mFrame = createOffscreenTarget(settings.frameSize.x, settings.frameSize.y, formats,
                                        GL_DEPTH_COMPONENT24);
@@ -139,11 +150,12 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, PcfProgramCac
     const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     const GLfloat one[4] = {1.0f, 0.0f, 0.0f, 0.0f};
     glClearNamedFramebufferfv(fbo, GL_COLOR, 0, &BACKGROUND.x);
-    if (target.colors.size() >= 3) {
+    if (target.colors.size() >= 4) {
         glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
         glClearNamedFramebufferfv(fbo, GL_COLOR, 2, one);
+        glClearNamedFramebufferfv(fbo, GL_COLOR, 3, zero);
     }
-    if (target.colors.size() >= 4) glClearNamedFramebufferfv(fbo, GL_COLOR, 3, zero);
+    if (target.colors.size() >= 5) glClearNamedFramebufferfv(fbo, GL_COLOR, 4, zero);
     const GLfloat farDepth = 1.0f;
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
     glEnable(GL_DEPTH_TEST);
@@ -166,7 +178,19 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, PcfProgramCac
     glProgramUniform3fv(program, uniform(program, "uLightPosWs"), 1, &light.positionWs.x);
     glProgramUniform1f(program, uniform(program, "uSpotCosCone"),
                        std::cos(glm::radians(light.coneDeg)));
-    glProgramUniform1f(program, uniform(program, "uConstantBias"), settings.depthBias());
+    BiasParams bias = settings.biasParams();
+    glProgramUniform1i(program, uniform(program, "uBiasMode"), bias.mode);
+    glProgramUniform1f(program, uniform(program, "uConstantBias"), bias.baseBias());
+    glProgramUniform1f(program, uniform(program, "uSlopeBias"), bias.slope);
+    glProgramUniform1f(program, uniform(program, "uSlopeMax"), bias.slopeMax);
+    glProgramUniform1f(program, uniform(program, "uNormalOffset"), bias.normalOffset);
+    glProgramUniform1f(program, uniform(program, "uSoftScale"), bias.softScale);
+    // One texel's world size at clip.w = 1: 2 / (P00 * size) across x, likewise y (ortho: w = 1;
+    // perspective: scaled by w in the shader); the larger of the two sides.
+    glm::mat4 proj = pcf::clipFromLight(mScene);
+    float texelWs = 2.0f / (std::min(std::fabs(proj[0][0]), std::fabs(proj[1][1])) *
+                            static_cast<float>(settings.mapSize));
+    glProgramUniform1f(program, uniform(program, "uShadowTexelWs"), texelWs);
     glProgramUniform1f(program, uniform(program, "uRadius"), settings.radius);
     glProgramUniform1i(program, uniform(program, "uRotatePerPixel"),
                        settings.rotatePerPixel ? 1 : 0);
@@ -209,15 +233,29 @@ std::vector<float> SceneRenderer::readVisibility() const {
                            mFrame.height, 1);
 }
 
-std::vector<float> SceneRenderer::readPositions() const {
-    if (mFrame.colors.size() < 4) {
-        throw std::logic_error("readPositions: render with RenderSettings::writePositions");
-    }
+std::vector<float> SceneRenderer::readReceiver() const {
     return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT3, mFrame.width,
                            mFrame.height, 4);
 }
 
+std::vector<float> SceneRenderer::readPositions() const {
+    if (mFrame.colors.size() < 5) {
+        throw std::logic_error("readPositions: render with RenderSettings::writePositions");
+    }
+    return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT4, mFrame.width,
+                           mFrame.height, 4);
+}
+
 std::vector<float> SceneRenderer::readLightSpaceRegion(glm::ivec2 topLeft, glm::ivec2 size) const {
+    return readRegion(GL_COLOR_ATTACHMENT1, topLeft, size);
+}
+
+std::vector<float> SceneRenderer::readReceiverRegion(glm::ivec2 topLeft, glm::ivec2 size) const {
+    return readRegion(GL_COLOR_ATTACHMENT3, topLeft, size);
+}
+
+std::vector<float> SceneRenderer::readRegion(GLenum attachment, glm::ivec2 topLeft,
+                                             glm::ivec2 size) const {
     std::vector<float> out(static_cast<size_t>(size.x) * size.y * 4, 0.0f);
     glm::ivec2 lo = glm::max(topLeft, glm::ivec2(0));
     glm::ivec2 hi = glm::min(topLeft + size, glm::ivec2(mFrame.width, mFrame.height));
@@ -229,7 +267,7 @@ std::vector<float> SceneRenderer::readLightSpaceRegion(glm::ivec2 topLeft, glm::
     glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, mFrame.framebuffer.id());
-    glNamedFramebufferReadBuffer(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT1);
+    glNamedFramebufferReadBuffer(mFrame.framebuffer.id(), attachment);
     glReadPixels(lo.x, mFrame.height - hi.y, span.x, span.y, GL_RGBA, GL_FLOAT, rows.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);

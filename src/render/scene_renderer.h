@@ -4,6 +4,8 @@
 //   colour      RGBA8    what the class sees
 //   lightspace  RGBA32F  u, v, ref per pixel as the shader filtered them; alpha 1 on receivers
 //   visibility  R32F     what pcfFilter returned (1 off receivers)
+//   receiver    RGBA32F  dz/du, dz/dv (the receiver plane the bias used), z before bias; alpha 1
+//                        on receivers
 //   position    RGBA32F  world position, alpha 1 where drawn (RenderSettings::writePositions)
 // Readbacks are rows TOP-DOWN (first row = top of the frame) except the shadow map, which keeps
 // GL row order (ShadowMap's convention).
@@ -42,11 +44,14 @@ public:
     std::vector<uint8_t> readColour() const;     // RGBA8, top-down
     std::vector<float> readLightSpace() const;   // 4 floats per pixel, top-down
     std::vector<float> readVisibility() const;   // 1 float per pixel, top-down
+    std::vector<float> readReceiver() const;     // 4 floats per pixel, top-down
     // 4 floats per pixel, top-down; needs a frame rendered with writePositions.
     std::vector<float> readPositions() const;
     // The light-space target's pixels x..x+w-1, y..y+h-1 (top-left origin), clipped to the
     // frame: 4 floats per pixel, top-down, w * h pixels (outside the frame: zeros).
     std::vector<float> readLightSpaceRegion(glm::ivec2 topLeft, glm::ivec2 size) const;
+    // The receiver target's pixels, the same way.
+    std::vector<float> readReceiverRegion(glm::ivec2 topLeft, glm::ivec2 size) const;
     ShadowMap readShadowMap() const;             // GL row order
 
     glm::ivec2 frameSize() const { return {mFrame.width, mFrame.height}; }
@@ -55,6 +60,12 @@ public:
     const Scene& scene() const { return mScene; }
     glm::mat4 shadowClipFromWorld() const { return mShadowClipFromWorld; }
     glm::mat4 clipFromWorld() const;
+    // What the sweeps of analysis/stability.h change between frames without re-uploading the
+    // meshes: the light (the shadow matrix is re-fitted to it), the camera, or the shadow
+    // matrix itself (e.g. light.h's shiftShadowOrigin); each takes effect at the next pass.
+    void setLight(const Light& light);
+    void setCamera(const Camera& camera);
+    void setShadowClipFromWorld(const glm::mat4& shadowClipFromWorld);
 
 private:
     struct GpuMesh {
@@ -64,6 +75,7 @@ private:
         GLsizei indexCount = 0;
     };
     void ensureTargets(const RenderSettings& settings);
+    std::vector<float> readRegion(GLenum attachment, glm::ivec2 topLeft, glm::ivec2 size) const;
     void drawObjects(GLuint program, bool castersOnly, bool setMaterial);
     // The camera pass into `target` with a program from `programs`.
     void drawCameraPass(const RenderSettings& settings, PcfProgramCache& programs,

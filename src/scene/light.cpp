@@ -69,6 +69,43 @@ glm::mat4 clipFromLight(const Light& light, const Aabb& sceneBoundsWs) {
     return glm::orthoRH_NO(r.lo.x - m, r.hi.x + m, r.lo.y - m, r.hi.y + m, nearZ, farZ);
 }
 
+glm::vec3 directionAtElevation(glm::vec3 directionWs, float elevationDeg) {
+    glm::vec2 heading(directionWs.x, directionWs.z);
+    float len = glm::length(heading);
+    heading = len > 1e-6f ? heading / len : glm::vec2(1.0f, 0.0f);
+    float e = glm::radians(elevationDeg);
+    return glm::normalize(
+        glm::vec3(std::cos(e) * heading.x, -std::sin(e), std::cos(e) * heading.y));
+}
+
+glm::mat4 shiftShadowOrigin(const glm::mat4& shadowClipFromWorld, glm::vec2 offsetTexels,
+                            int mapSize, bool snapToTexels) {
+    float toNdc = 2.0f / static_cast<float>(std::max(mapSize, 1));
+    // Translating clip.xy by d * clip.w: row 3 gets d * (row 3 of w), i.e. M' = T * M.
+    glm::mat4 shift(1.0f);
+    shift[3][0] = offsetTexels.x * toNdc;
+    shift[3][1] = offsetTexels.y * toNdc;
+    glm::mat4 m = shift * shadowClipFromWorld;
+    if (snapToTexels) {
+        glm::vec4 origin = m * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        glm::vec2 texels = glm::vec2(origin) / origin.w / toNdc;
+        glm::vec2 rounding = glm::round(texels) - texels;
+        glm::mat4 snap(1.0f);
+        snap[3][0] = rounding.x * toNdc;
+        snap[3][1] = rounding.y * toNdc;
+        m = snap * m;
+    }
+    return m;
+}
+
+glm::mat4 widenShadowDepthRange(const glm::mat4& shadowClipFromWorld, float ratio) {
+    float r = std::max(ratio, 1.0f);
+    glm::mat4 widen(1.0f);
+    widen[2][2] = 1.0f / r;        // z' = z / r + w / r - w
+    widen[3][2] = 1.0f / r - 1.0f;
+    return widen * shadowClipFromWorld;
+}
+
 ShadowCoord shadowCoord(const glm::mat4& shadowClipFromWorld, glm::vec3 posWs) {
     glm::vec4 clip = shadowClipFromWorld * glm::vec4(posWs, 1.0f);
     glm::vec3 ndc = glm::vec3(clip) / clip.w;

@@ -38,6 +38,30 @@ glm::mat4 clipFromLight(const Light& light, const Aabb& sceneBoundsWs);
 constexpr float SHADOW_FIT_MARGIN = 1e-3f;
 constexpr float SPOT_MIN_NEAR = 0.05f;
 
+// The light's direction turned to `elevationDeg` above the ground (the XZ plane): 90 = straight
+// down, 0 = along the ground. The direction's compass heading (its XZ part) is kept; a straight
+// down direction, which has none, gets the heading +X. Unit.
+//   direction = (cos(e) * heading.x, -sin(e), cos(e) * heading.z)
+glm::vec3 directionAtElevation(glm::vec3 directionWs, float elevationDeg);
+
+// Moves where the shadow map's texel grid lies over the world, leaving what it sees alone: the
+// map's image is translated by `offsetTexels` (x along u, y along v, fractions allowed), i.e.
+// clip.xy += offset * 2 / mapSize * clip.w. With snapToTexels the result is then translated by
+// less than half a texel so that the world origin falls on a texel corner: the "stable" fit of
+// Valient, "Stable Rendering of Cascaded Shadow Maps" (ShaderX6, 2008), as MJP's "A Sampling of
+// Shadow Techniques" (2013) does it: o = M * (0,0,0,1); t = o.xy * mapSize / 2;
+// M.xy += (round(t) - t) * 2 / mapSize. For an orthographic (directional) light this makes every
+// snapped fit differ from another by whole texels, so the map's content only moves, never
+// changes; for a spot light the shift is a valid map too but snapping cannot make it stable.
+glm::mat4 shiftShadowOrigin(const glm::mat4& shadowClipFromWorld, glm::vec2 offsetTexels,
+                            int mapSize, bool snapToTexels);
+
+// The same map with its depth range `ratio` times as deep (ratio >= 1): the far plane pushed
+// away so the scene fills 1 / ratio of [0, 1] near depth 0, what a loosely fitted light frustum
+// does to depth precision: depth' = depth / ratio, i.e. clip.z' = (clip.z + clip.w) / ratio -
+// clip.w.
+glm::mat4 widenShadowDepthRange(const glm::mat4& shadowClipFromWorld, float ratio);
+
 // Where a world point lands in the shadow map, exactly as GL computes it after
 // clip = shadowClipFromWorld * (posWs, 1):
 //   ndc = clip.xyz / clip.w;  uvSm = ndc.xy * 0.5 + 0.5;  depth = ndc.z * 0.5 + 0.5

@@ -1,0 +1,778 @@
+#include "analysis/stability.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <thread>
+
+#include "analysis/error_metrics.h"
+#include "analysis/ground_truth.h"
+#include "kernel/methods.h"
+#include "render/scene_renderer.h"
+#include "scene/camera.h"
+#include "scene/light.h"
+#include "scene/presets.h"
+#include "scene/raycast.h"
+
+namespace pcf {
+
+namespace {
+
+constexpr float FULLY_LIT = 0.99f;   // acne: a clean lit pixel darker than this is false shadow
+constexpr float LEAK_LEVEL = 0.01f;  // leak: a clean umbra pixel brighter than this leaks
+constexpr int FOOTPRINT_GRID = 3;    // footprint test points per side
+// A change a display can show: half a step of an 8-bit channel. Smaller ones (float rounding
+// of the filter weights as the grid slides, ~1e-7) do not make a pixel "flicker".
+constexpr float VISIBLE_CHANGE = 1.0f / 512.0f;
+constexpr float MAX_ALIASING_JUMP = 32.0f;  // texels between neighbours: another surface
+
+// Rows [0, rows) split over the worker threads, a row at a time from a shared counter.
+template <class F>
+void parallelRows(int rows, int threads, F&& work) {
+    std::atomic<int> next{0};
+    auto loop = [&] {
+        for (int y; (y = next.fetch_add(1)) < rows;) work(y);
+    };
+    int n = std::max(1, std::min(resolveThreadCount(threads), rows));
+    std::vector<std::thread> pool;
+    for (int t = 1; t < n; ++t) pool.emplace_back(loop);
+    loop();
+    for (std::thread& t : pool) t.join();
+}
+
+// The camera's hit at each pixel centre, rows top-down like the truth.
+std::vector<std::optional<Hit>> centreHits(const Scene& scene, glm::ivec2 size, int threads) {
+    std::vector<std::optional<Hit>> hits(static_cast<size_t>(size.x) * size.y);
+    float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+    parallelRows(size.y, threads, [&](int y) {
+        int rowTopDown = size.y - 1 - y;
+        for (int x = 0; x < size.x; ++x) {
+            Ray ray = cameraRay(scene.camera, pixelCentreNdc({x, y}, size), aspect);
+            hits[static_cast<size_t>(rowTopDown) * size.x + x] = intersect(scene, ray);
+        }
+    });
+    return hits;
+}
+
+// 1 where the pixel is compared (error_metrics.h) and the truth is `wantLit` (fully lit, or
+// fully shadowed) at the pixel and over its whole footprint.
+std::vector<uint8_t> cleanMask(const Scene& scene, const GroundTruth& truth,
+                               const ErrorRegions& regions,
+                               const std::vector<std::optional<Hit>>& hits,
+                               const glm::mat4& shadowClip, int mapSize, float reach, bool wantLit,
+                               int threads) {
+    std::vector<uint8_t> mask(truth.pixelCount(), 0);
+    parallelRows(truth.size.y, threads, [&](int row) {
+        for (int x = 0; x < truth.size.x; ++x) {
+            size_t k = truth.index(x, row);
+            if (!regions.compared[k] || !hits[k]) continue;
+            float v = truth.visibility[k];
+            if (wantLit ? v < 1.0f : v > 0.0f) continue;
+            const Hit& h = *hits[k];
+            std::vector<glm::vec3> points =
+                footprintPoints(scene, shadowClip, mapSize, h.posWs,
+                                h.frontFace ? h.normalWs : -h.normalWs, reach, FOOTPRINT_GRID);
+            if (points.empty()) continue;
+            bool clean = true;
+            for (glm::vec3 p : points) {
+                Hit moved = h;
+                moved.posWs = p;
+                if (litByLight(scene, moved) != wantLit) {
+                    clean = false;
+                    break;
+                }
+            }
+            mask[k] = clean ? 1 : 0;
+        }
+    });
+    return mask;
+}
+
+// The nearest point of any caster that is not a plane (the pole, the box), or nullopt.
+std::optional<glm::vec3> nearestCasterPoint(const Scene& scene, glm::vec3 p) {
+    std::optional<glm::vec3> best;
+    float bestD = 1e30f;
+    for (const SceneObject& o : scene.objects) {
+        if (!o.castsShadow) continue;
+        glm::vec3 q;
+        if (const Box* box = std::get_if<Box>(&o.shape)) {
+            glm::vec3 local = boxLocalFromWorld(*box, p);
+            q = boxWorldFromLocal(*box, glm::clamp(local, -box->halfExtents, box->halfExtents));
+        } else if (const Sphere* s = std::get_if<Sphere>(&o.shape)) {
+            glm::vec3 d = p - s->centreWs;
+            float len = glm::length(d);
+            q = len > 0.0f ? s->centreWs + d * (s->radius / len) : s->centreWs;
+        } else {
+            continue;
+        }
+        float d = glm::length(p - q);
+        if (d < bestD) {
+            bestD = d;
+            best = q;
+        }
+    }
+    return best;
+}
+
+struct Rate {
+    double rate = 0.0;  // share of the mask's pixels that fail
+    double mean = 0.0;  // acne: mean darkening 1 - v; leak: mean v
+    int count = 0;
+};
+
+Rate falseShadow(const std::vector<float>& vis, const std::vector<uint8_t>& cleanLit) {
+    Rate r;
+    double dark = 0.0;
+    int bad = 0;
+    for (size_t k = 0; k < vis.size(); ++k) {
+        if (!cleanLit[k]) continue;
+        ++r.count;
+        dark += 1.0 - vis[k];
+        if (vis[k] < FULLY_LIT) ++bad;
+    }
+    if (r.count > 0) {
+        r.rate = static_cast<double>(bad) / r.count;
+        r.mean = dark / r.count;
+    }
+    return r;
+}
+
+double percentile(std::vector<float>& values, double q) {
+    if (values.empty()) return 0.0;
+    size_t k = std::min(values.size() - 1, static_cast<size_t>(q * (values.size() - 1) + 0.5));
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+    return values[k];
+}
+
+double mean(const std::vector<float>& values) {
+    if (values.empty()) return 0.0;
+    double s = 0.0;
+    for (float v : values) s += v;
+    return s / static_cast<double>(values.size());
+}
+
+class Sweeper {
+  public:
+    Sweeper(const StabilityContext& context, const StabilityOptions& options)
+        : mContext(context), mOptions(options) {}
+
+    StabilityResult result;
+
+    void run(Sweep sweep) {
+        switch (sweep) {
+            case Sweep::Acne:
+                acne();
+                break;
+            case Sweep::Leak:
+                leak();
+                break;
+            case Sweep::Shimmer:
+                shimmer();
+                break;
+            case Sweep::Precision:
+                precision();
+                break;
+            case Sweep::Aliasing:
+                aliasing();
+                break;
+        }
+    }
+
+  private:
+    const StabilityContext& mContext;
+    const StabilityOptions& mOptions;
+
+    // The footprint's reach for the clean masks: the method's own, + half a texel for the
+    // bilinear taps' rounding.
+    float reachOf(const StabilityMethod& m) const {
+        return footprintReachTexels(m, mOptions.base.radius) + 0.5f;
+    }
+
+    // The clean mask of each method's reach (methods of equal reach share one).
+    std::vector<std::vector<uint8_t>> cleanMasks(const Scene& scene, const GroundTruth& truth,
+                                                 const ErrorRegions& regions,
+                                                 const std::vector<std::optional<Hit>>& hits,
+                                                 const glm::mat4& shadowClip, bool wantLit) const {
+        std::vector<std::vector<uint8_t>> masks;
+        std::vector<float> reaches;
+        for (const StabilityMethod& m : mOptions.methods) {
+            float reach = reachOf(m);
+            auto it = std::find(reaches.begin(), reaches.end(), reach);
+            if (it != reaches.end()) {
+                masks.push_back(masks[static_cast<size_t>(it - reaches.begin())]);
+            } else {
+                masks.push_back(cleanMask(scene, truth, regions, hits, shadowClip, mOptions.mapSize,
+                                          reach, wantLit, mOptions.threads));
+            }
+            reaches.push_back(reach);
+        }
+        return masks;
+    }
+
+    void say(const std::string& line) const {
+        if (mContext.progress) mContext.progress(line);
+    }
+
+    RenderSettings settings(const StabilityMethod& m, BiasMode bias) const {
+        RenderSettings s = mOptions.base;
+        s.method = m.method;
+        s.kernel = m.kernel > 0 ? m.kernel : 3;
+        s.bias = bias;
+        s.mapSize = mOptions.mapSize;
+        s.frameSize = mOptions.frameSize;
+        s.writePositions = false;
+        return s;
+    }
+
+    void add(Sweep sweep, const StabilityMethod& m, BiasMode bias, const std::string& xName,
+             double x, const std::string& metric, double y) {
+        result.rows.push_back({std::string(sweepName(sweep)), m.method, m.kernel,
+                               std::string(biasModeName(bias)), xName, x, metric, y});
+    }
+
+    GroundTruth truthOf(const Scene& scene) const {
+        GroundTruthOptions o;
+        o.spp = mOptions.truthSpp;
+        o.threads = mOptions.threads;
+        return computeGroundTruth(scene, mOptions.frameSize, o);
+    }
+
+    // Renders both passes with the renderer's current matrices and reads the visibility.
+    std::vector<float> frame(SceneRenderer& r, const RenderSettings& s) const {
+        r.renderShadowPass(s);
+        r.renderCameraPass(s);
+        return r.readVisibility();
+    }
+
+    ErrorRegions regionsOf(SceneRenderer& r, const GroundTruth& truth) const {
+        // Any method: the light-space alpha marks the receivers, whatever was filtered.
+        RenderSettings s = settings(mOptions.methods.front(), BiasMode::Constant);
+        r.renderShadowPass(s);
+        r.renderCameraPass(s);
+        return errorRegions(truth, receiverMaskFromLightSpace(r.readLightSpace()));
+    }
+
+    Scene sceneAtElevation(float elevation) const {
+        Scene s = *mContext.scene;
+        s.light.directionWs = directionAtElevation(s.light.directionWs, elevation);
+        return s;
+    }
+
+    void acne() {
+        const std::vector<float>& elevations = mOptions.elevations;
+        SceneRenderer renderer(*mContext.scene);
+        std::vector<std::optional<Hit>> hits =
+            centreHits(*mContext.scene, mOptions.frameSize, mOptions.threads);
+        for (size_t e = 0; e < elevations.size(); ++e) {
+            float elev = elevations[e];
+            char line[96];
+            std::snprintf(line, sizeof line, "acne %zu/%zu: light %.0f deg above the ground", e + 1,
+                          elevations.size(), elev);
+            say(line);
+            Scene scene = sceneAtElevation(elev);
+            renderer.setLight(scene.light);
+            GroundTruth truth = truthOf(scene);
+            ErrorRegions regions = regionsOf(renderer, truth);
+            std::vector<std::vector<uint8_t>> lit =
+                cleanMasks(scene, truth, regions, hits, renderer.shadowClipFromWorld(), true);
+            for (BiasMode bias : mOptions.biases) {
+                for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
+                    const StabilityMethod& m = mOptions.methods[mi];
+                    Rate r = falseShadow(frame(renderer, settings(m, bias)), lit[mi]);
+                    add(Sweep::Acne, m, bias, "elevation_deg", elev, "false_shadow_rate", r.rate);
+                    add(Sweep::Acne, m, bias, "elevation_deg", elev, "mean_darkening", r.mean);
+                    add(Sweep::Acne, m, bias, "elevation_deg", elev, "clean_lit_pixels", r.count);
+                }
+            }
+        }
+    }
+
+    void leak() {
+        for (size_t si = 0; si < mOptions.leakScenes.size(); ++si) {
+            const std::string& name = mOptions.leakScenes[si];
+            std::optional<Scene> preset = presetScene(name);
+            if (!preset) throw std::invalid_argument("unknown leak scene " + name);
+            Scene& scene = *preset;
+            say("leak " + std::to_string(si + 1) + "/" +
+                std::to_string(mOptions.leakScenes.size()) + ": " + name + " contact");
+            SceneRenderer renderer(scene);
+            GroundTruth truth = truthOf(scene);
+            ErrorRegions regions = regionsOf(renderer, truth);
+            std::vector<std::optional<Hit>> hits =
+                centreHits(scene, mOptions.frameSize, mOptions.threads);
+            glm::mat4 shadowClip = renderer.shadowClipFromWorld();
+            std::vector<std::vector<uint8_t>> umbras =
+                cleanMasks(scene, truth, regions, hits, shadowClip, false);
+            // Per truth umbra pixel: its distance from the caster, world and texels.
+            std::vector<float> world(truth.pixelCount(), 0.0f), texels(truth.pixelCount(), 0.0f);
+            float mapSize = static_cast<float>(mOptions.mapSize);
+            for (size_t k = 0; k < world.size(); ++k) {
+                if (!regions.compared[k] || truth.visibility[k] > 0.0f || !hits[k]) continue;
+                glm::vec3 p = hits[k]->posWs;
+                std::optional<glm::vec3> q = nearestCasterPoint(scene, p);
+                if (!q) continue;
+                world[k] = glm::length(p - *q);
+                texels[k] = glm::length(shadowCoord(shadowClip, p).uvSm -
+                                        shadowCoord(shadowClip, *q).uvSm) *
+                            mapSize;
+            }
+            for (float b : mOptions.leakBiases) {
+                for (BiasMode bias : mOptions.biases) {
+                    for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
+                        const StabilityMethod& m = mOptions.methods[mi];
+                        const std::vector<uint8_t>& umbra = umbras[mi];
+                        RenderSettings s = settings(m, bias);
+                        s.constantBias = b;
+                        std::vector<float> vis = frame(renderer, s);
+                        int count = 0, leaking = 0;
+                        float widthWorld = 0.0f, widthTexels = 0.0f;
+                        for (size_t k = 0; k < vis.size(); ++k) {
+                            if (!umbra[k]) continue;
+                            ++count;
+                            if (vis[k] <= LEAK_LEVEL) continue;
+                            ++leaking;
+                            widthWorld = std::max(widthWorld, world[k]);
+                            widthTexels = std::max(widthTexels, texels[k]);
+                        }
+                        double rate = count > 0 ? static_cast<double>(leaking) / count : 0.0;
+                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_rate", rate);
+                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_world",
+                            widthWorld);
+                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_texels",
+                            widthTexels);
+                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":clean_umbra_pixels",
+                            count);
+                    }
+                }
+            }
+        }
+    }
+
+    // |v(t) - v(t-1)| over the compared pixels of every consecutive pair.
+    static void addChanges(const std::vector<float>& a, const std::vector<float>& b,
+                           const std::vector<uint8_t>& mask, std::vector<float>& out) {
+        for (size_t k = 0; k < a.size(); ++k) {
+            if (mask[k]) out.push_back(std::abs(a[k] - b[k]));
+        }
+    }
+
+    void shimmer() {
+        const Scene& scene = *mContext.scene;
+        SceneRenderer renderer(scene);
+        say("shimmer: ground truth");
+        GroundTruth truth = truthOf(scene);
+        ErrorRegions regions = regionsOf(renderer, truth);
+        // The fitted map, shrunk by 2 texels a side so that a shift of up to a texel and a half
+        // never pushes the scene past the map's edge.
+        float n = static_cast<float>(mOptions.mapSize);
+        glm::mat4 shrink(1.0f);
+        shrink[0][0] = shrink[1][1] = (n - 4.0f) / n;
+        glm::mat4 fitted = shrink * renderer.shadowClipFromWorld();
+        for (bool snap : {false, true}) {
+            say(std::string("shimmer: the light's texel grid slid in 1/32 texel steps") +
+                (snap ? ", snapped to whole texels" : ""));
+            for (BiasMode bias : mOptions.biases) {
+                for (const StabilityMethod& m : mOptions.methods) {
+                    RenderSettings s = settings(m, bias);
+                    std::vector<std::vector<float>> frames;
+                    for (int t = 0; t < mOptions.shimmerFrames; ++t) {
+                        float step = static_cast<float>(t) / SHIMMER_STEPS;
+                        renderer.setShadowClipFromWorld(
+                            shiftShadowOrigin(fitted, glm::vec2(step), mOptions.mapSize, snap));
+                        frames.push_back(frame(renderer, s));
+                    }
+                    // The flickering pixels: compared pixels whose value changes visibly in any
+                    // frame.
+                    std::vector<uint8_t> flickers(regions.compared.size(), 0);
+                    int flickering = 0;
+                    for (size_t k = 0; k < flickers.size(); ++k) {
+                        if (!regions.compared[k]) continue;
+                        for (size_t t = 1; t < frames.size() && !flickers[k]; ++t) {
+                            flickers[k] =
+                                std::abs(frames[t][k] - frames[t - 1][k]) > VISIBLE_CHANGE ? 1 : 0;
+                        }
+                        flickering += flickers[k];
+                    }
+                    std::vector<float> changes, flickerChanges;
+                    for (size_t t = 1; t < frames.size(); ++t) {
+                        addChanges(frames[t], frames[t - 1], regions.compared, changes);
+                        addChanges(frames[t], frames[t - 1], flickers, flickerChanges);
+                    }
+                    std::string prefix = snap ? "snapped_" : "light_";
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
+                        prefix + "flicker_share",
+                        regions.comparedCount > 0
+                            ? static_cast<double>(flickering) / regions.comparedCount
+                            : 0.0);
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
+                        prefix + "flicker_mean", mean(flickerChanges));
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
+                        prefix + "flicker_p99", percentile(flickerChanges, 0.99));
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS, prefix + "mean",
+                        mean(changes));
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS, prefix + "p99",
+                        percentile(changes, 0.99));
+                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS, prefix + "max",
+                        percentile(changes, 1.0));
+                }
+            }
+        }
+        cameraShimmer(scene);
+    }
+
+    // The camera slid right and up by 1/F pixel a frame (at the distance of its target); the
+    // truth moves with it, so what counts is the change of the error e = v - truth.
+    void cameraShimmer(const Scene& scene) {
+        int frames = mOptions.cameraFrames;
+        if (frames < 2) return;
+        glm::ivec2 size = mOptions.frameSize;
+        const Camera& c0 = scene.camera;
+        glm::vec3 forward = glm::normalize(c0.targetWs - c0.eyeWs);
+        glm::vec3 right = glm::normalize(glm::cross(forward, c0.upWs));
+        glm::vec3 up = glm::cross(right, forward);
+        float pixel = 2.0f * glm::length(c0.targetWs - c0.eyeWs) *
+                      std::tan(glm::radians(c0.fovYDeg) * 0.5f) / static_cast<float>(size.y);
+        SceneRenderer renderer(scene);
+        size_t combos = mOptions.biases.size() * mOptions.methods.size();
+        std::vector<std::vector<float>> changes(combos), previous(combos);
+        std::vector<uint8_t> previousMask;
+        for (int t = 0; t < frames; ++t) {
+            say("shimmer: camera frame " + std::to_string(t + 1) + "/" + std::to_string(frames));
+            Scene moved = scene;
+            glm::vec3 shift = (right + up) * (pixel * static_cast<float>(t) / frames);
+            moved.camera.eyeWs += shift;
+            moved.camera.targetWs += shift;
+            renderer.setCamera(moved.camera);
+            GroundTruth truth = truthOf(moved);
+            ErrorRegions regions = regionsOf(renderer, truth);
+            std::vector<uint8_t> both = regions.compared;
+            if (!previousMask.empty()) {
+                for (size_t k = 0; k < both.size(); ++k) both[k] &= previousMask[k];
+            }
+            size_t c = 0;
+            for (BiasMode bias : mOptions.biases) {
+                for (const StabilityMethod& m : mOptions.methods) {
+                    std::vector<float> err = frame(renderer, settings(m, bias));
+                    for (size_t k = 0; k < err.size(); ++k) err[k] -= truth.visibility[k];
+                    if (t > 0) addChanges(err, previous[c], both, changes[c]);
+                    previous[c++] = std::move(err);
+                }
+            }
+            previousMask = regions.compared;
+        }
+        size_t c = 0;
+        double step = 1.0 / frames;
+        for (BiasMode bias : mOptions.biases) {
+            for (const StabilityMethod& m : mOptions.methods) {
+                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_mean", mean(changes[c]));
+                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_p99",
+                    percentile(changes[c], 0.99));
+                ++c;
+            }
+        }
+    }
+
+    void precision() {
+        Scene scene = sceneAtElevation(mOptions.precisionElevation);
+        SceneRenderer renderer(scene);
+        say("precision: ground truth at " +
+            std::to_string(static_cast<int>(mOptions.precisionElevation)) + " deg");
+        GroundTruth truth = truthOf(scene);
+        ErrorRegions regions = regionsOf(renderer, truth);
+        glm::mat4 fitted = renderer.shadowClipFromWorld();
+        std::vector<std::optional<Hit>> hits =
+            centreHits(scene, mOptions.frameSize, mOptions.threads);
+        std::vector<std::vector<uint8_t>> lit =
+            cleanMasks(scene, truth, regions, hits, fitted, true);
+        for (DepthFormat format : mOptions.depthFormats) {
+            say("precision: depth format " + std::string(depthFormatName(format)));
+            std::string suffix = "_d" + std::string(depthFormatName(format));
+            for (float ratio : mOptions.depthRanges) {
+                renderer.setShadowClipFromWorld(widenShadowDepthRange(fitted, ratio));
+                for (BiasMode bias : mOptions.biases) {
+                    for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
+                        const StabilityMethod& m = mOptions.methods[mi];
+                        RenderSettings s = settings(m, bias);
+                        s.depthFormat = format;
+                        s.constantBias = mOptions.base.constantBias / ratio;
+                        Rate r = falseShadow(frame(renderer, s), lit[mi]);
+                        add(Sweep::Precision, m, bias, "depth_range", ratio,
+                            "false_shadow_rate" + suffix, r.rate);
+                        add(Sweep::Precision, m, bias, "depth_range", ratio,
+                            "mean_darkening" + suffix, r.mean);
+                    }
+                }
+            }
+        }
+    }
+
+    void aliasing() {
+        const Scene& scene = *mContext.scene;
+        say("aliasing: screen pixels per shadow-map texel");
+        SceneRenderer renderer(scene);
+        GroundTruth truth = truthOf(scene);
+        ErrorRegions regions = regionsOf(renderer, truth);
+        std::vector<float> lightSpace = renderer.readLightSpace();
+        for (int size : mOptions.aliasingMapSizes) {
+            std::vector<float> ppt = pixelsPerTexel(lightSpace, mOptions.frameSize, size);
+            std::vector<float> values;
+            for (size_t k = 0; k < ppt.size(); ++k) {
+                if (regions.compared[k] && ppt[k] > 0.0f) values.push_back(ppt[k]);
+            }
+            std::string sweep(sweepName(Sweep::Aliasing));
+            double median = percentile(values, 0.5);
+            double p99 = percentile(values, 0.99);
+            result.rows.push_back(
+                {sweep, -1, 0, "-", "map_size", double(size), "pixels_per_texel_median", median});
+            result.rows.push_back(
+                {sweep, -1, 0, "-", "map_size", double(size), "pixels_per_texel_p99", p99});
+            result.rows.push_back({sweep, -1, 0, "-", "map_size", double(size),
+                                   "undersampled_share", undersampledShare(values)});
+            if (size == mOptions.mapSize) {
+                result.images.push_back(
+                    {"aliasing_heatmap.png", mOptions.frameSize, aliasingHeatmap(ppt, regions)});
+            }
+        }
+    }
+
+    // Share of the measured pixels where one texel covers more than one pixel.
+    static double undersampledShare(const std::vector<float>& values) {
+        if (values.empty()) return 0.0;
+        size_t n = 0;
+        for (float v : values) n += v > 1.0f ? 1 : 0;
+        return static_cast<double>(n) / values.size();
+    }
+
+    // log2(pixels per texel) from -4 (deep blue: 16 texels per pixel, minified) through white
+    // (one texel per pixel) to +4 (deep red: one texel smeared over 16 pixels); grey where it
+    // is not measured.
+    static std::vector<uint8_t> aliasingHeatmap(const std::vector<float>& ppt,
+                                                const ErrorRegions& regions) {
+        std::vector<uint8_t> rgba(ppt.size() * 4);
+        for (size_t k = 0; k < ppt.size(); ++k) {
+            glm::vec3 c(0.55f);
+            if (regions.compared[k] && ppt[k] > 0.0f) {
+                float t = std::clamp(std::log2(ppt[k]) / 4.0f, -1.0f, 1.0f);
+                glm::vec3 white(1.0f), red(0.75f, 0.05f, 0.1f), blue(0.1f, 0.25f, 0.75f);
+                c = t >= 0.0f ? glm::mix(white, red, t) : glm::mix(white, blue, -t);
+            }
+            for (int i = 0; i < 3; ++i) {
+                rgba[k * 4 + i] = static_cast<uint8_t>(std::lround(c[i] * 255.0f));
+            }
+            rgba[k * 4 + 3] = 255;
+        }
+        return rgba;
+    }
+};
+
+}  // namespace
+
+std::string_view sweepName(Sweep sweep) {
+    switch (sweep) {
+        case Sweep::Acne:
+            return "acne";
+        case Sweep::Leak:
+            return "leak";
+        case Sweep::Shimmer:
+            return "shimmer";
+        case Sweep::Precision:
+            return "precision";
+        default:
+            return "aliasing";
+    }
+}
+
+std::optional<Sweep> sweepFromName(std::string_view name) {
+    for (Sweep s : allSweeps()) {
+        if (sweepName(s) == name) return s;
+    }
+    return std::nullopt;
+}
+
+std::vector<Sweep> allSweeps() {
+    return {Sweep::Acne, Sweep::Leak, Sweep::Shimmer, Sweep::Precision, Sweep::Aliasing};
+}
+
+std::string stabilityMethodName(const StabilityMethod& m) {
+    std::string name(methodInfo(m.method).name);
+    if (m.kernel > 0) name += " N=" + std::to_string(m.kernel);
+    return name;
+}
+
+StabilityOptions quickStabilityOptions() {
+    StabilityOptions o;
+    o.methods = {{PCF_NEAREST, 0}, {PCF_GATHER, 3}};
+    o.frameSize = {160, 90};
+    o.mapSize = 128;
+    o.truthSpp = 1;
+    o.elevations = {90, 45, 20, 10, 5, 2};
+    o.leakBiases = {0.0005f, 0.002f, 0.032f};
+    o.cameraFrames = 3;
+    o.depthRanges = {1, 100, 1e4f};
+    o.aliasingMapSizes = {128, 512};
+    return o;
+}
+
+std::optional<std::string> validateStabilityOptions(const StabilityOptions& o) {
+    if (o.methods.empty()) return std::string("--methods is empty");
+    for (const StabilityMethod& m : o.methods) {
+        if (m.method < 0 || m.method >= PCF_METHOD_COUNT) {
+            return "unknown method id " + std::to_string(m.method);
+        }
+        RenderSettings s;
+        s.method = m.method;
+        s.kernel = m.kernel > 0 ? m.kernel : 3;
+        s.radius = o.base.radius;
+        if (auto why = validateParams(s.pcfParams())) return *why;
+    }
+    if (o.biases.empty()) return std::string("--biases is empty");
+    if (o.sweeps.empty()) return std::string("--sweep is empty");
+    if (o.frameSize.x < 16 || o.frameSize.y < 16 || o.frameSize.x > MAX_FRAME_SIDE ||
+        o.frameSize.y > MAX_FRAME_SIDE) {
+        return std::string("the frame size is out of range (16.." + std::to_string(MAX_FRAME_SIDE) +
+                           " a side)");
+    }
+    if (o.mapSize < MIN_MAP_SIZE || o.mapSize > MAX_MAP_SIZE) {
+        return "--map-size " + std::to_string(o.mapSize) + " is out of range (" +
+               std::to_string(MIN_MAP_SIZE) + ".." + std::to_string(MAX_MAP_SIZE) + ")";
+    }
+    if (o.truthSpp < 1 || o.truthSpp > MAX_TRUTH_SPP) {
+        return "--spp " + std::to_string(o.truthSpp) + " is out of range (1.." +
+               std::to_string(MAX_TRUTH_SPP) + ")";
+    }
+    for (float e : o.elevations) {
+        if (!(e >= 1.0f && e <= 90.0f)) {
+            return "--elevations " + std::to_string(e) + " is out of range (1..90 degrees)";
+        }
+    }
+    if (o.elevations.empty()) return std::string("--elevations is empty");
+    for (float b : o.leakBiases) {
+        if (!(b >= 0.0f && b <= 1.0f)) {
+            return "--leak-biases " + std::to_string(b) + " is out of range (0..1)";
+        }
+    }
+    if (o.leakBiases.empty()) return std::string("--leak-biases is empty");
+    for (const std::string& name : o.leakScenes) {
+        if (!presetScene(name)) return "unknown leak scene '" + name + "'";
+    }
+    if (o.shimmerFrames < 2 || o.shimmerFrames > 4 * SHIMMER_STEPS) {
+        return std::string("the shimmer frames are out of range (2..128)");
+    }
+    if (o.cameraFrames < 0 || o.cameraFrames > 64) {
+        return std::string("the camera frames are out of range (0..64)");
+    }
+    for (float r : o.depthRanges) {
+        if (!(r >= 1.0f && r <= 1e7f)) {
+            return "--depth-ranges " + std::to_string(r) + " is out of range (1..1e7)";
+        }
+    }
+    if (o.depthRanges.empty()) return std::string("--depth-ranges is empty");
+    if (!(o.precisionElevation >= 1.0f && o.precisionElevation <= 90.0f)) {
+        return std::string("the precision elevation is out of range (1..90 degrees)");
+    }
+    for (int size : o.aliasingMapSizes) {
+        if (size < MIN_MAP_SIZE || size > MAX_MAP_SIZE) {
+            return "aliasing map size " + std::to_string(size) + " is out of range";
+        }
+    }
+    return std::nullopt;
+}
+
+float footprintReachTexels(const StabilityMethod& m, float poissonRadius) {
+    switch (m.method) {
+        case PCF_NEAREST:
+            return 0.5f;
+        case PCF_BOX2X2:
+        case PCF_BILINEAR2X2:
+        case PCF_HW2X2:
+            return 1.0f;
+        case PCF_POISSON:
+            return poissonRadius + 0.5f;
+        default:
+            return 0.5f * static_cast<float>(std::max(m.kernel, 1) + 1);
+    }
+}
+
+std::vector<glm::vec3> footprintPoints(const Scene& scene, const glm::mat4& shadowClipFromWorld,
+                                       int mapSize, glm::vec3 posWs, glm::vec3 normalWs,
+                                       float reachTexels, int gridSide) {
+    // One texel across the map at p's depth, as world vectors: the inverse of the shadow
+    // matrix applied to clip + (2 w / mapSize) along x (and y), minus p.
+    glm::mat4 worldFromClip = glm::inverse(shadowClipFromWorld);
+    glm::vec4 clip = shadowClipFromWorld * glm::vec4(posWs, 1.0f);
+    float step = 2.0f * clip.w / static_cast<float>(mapSize);
+    auto unproject = [&](glm::vec4 c) {
+        glm::vec4 w = worldFromClip * c;
+        return glm::vec3(w) / w.w;
+    };
+    glm::vec3 texelU = unproject(clip + glm::vec4(step, 0, 0, 0)) - posWs;
+    glm::vec3 texelV = unproject(clip + glm::vec4(0, step, 0, 0)) - posWs;
+    glm::vec3 toLight = towardLight(scene.light, posWs).dirWs;
+    float nDotL = glm::dot(normalWs, toLight);
+    std::vector<glm::vec3> points;
+    if (std::abs(nDotL) < 1e-4f) return points;
+    int side = std::max(gridSide, 2);
+    for (int j = 0; j < side; ++j) {
+        for (int i = 0; i < side; ++i) {
+            float a = reachTexels * (2.0f * i / (side - 1) - 1.0f);
+            float b = reachTexels * (2.0f * j / (side - 1) - 1.0f);
+            glm::vec3 o = a * texelU + b * texelV;
+            // Along the light (which keeps the map position) back onto the surface's plane:
+            // dot(n, o + t * toLight) = 0.
+            float t = -glm::dot(normalWs, o) / nDotL;
+            points.push_back(posWs + o + t * toLight);
+        }
+    }
+    return points;
+}
+
+std::vector<float> pixelsPerTexel(const std::vector<float>& lightSpace, glm::ivec2 size,
+                                  int mapSize) {
+    std::vector<float> out(static_cast<size_t>(size.x) * size.y, -1.0f);
+    float n = static_cast<float>(mapSize);
+    auto at = [&](int x, int y) { return &lightSpace[(static_cast<size_t>(y) * size.x + x) * 4]; };
+    auto receiver = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < size.x && y < size.y && at(x, y)[3] > 0.5f;
+    };
+    // The texel-space step to a neighbour (dx, dy), or nothing across a jump.
+    auto delta = [&](int x, int y, int dx, int dy) -> std::optional<glm::vec2> {
+        if (!receiver(x + dx, y + dy)) return std::nullopt;
+        const float* a = at(x, y);
+        const float* b = at(x + dx, y + dy);
+        glm::vec2 d((b[0] - a[0]) * n, (b[1] - a[1]) * n);
+        if (glm::length(d) > MAX_ALIASING_JUMP) return std::nullopt;
+        return d;
+    };
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            if (!receiver(x, y)) continue;
+            std::optional<glm::vec2> dx = delta(x, y, 1, 0);
+            if (!dx) {
+                dx = delta(x, y, -1, 0);
+                if (dx) *dx = -*dx;
+            }
+            // Rows are top-down: +y on screen (GL, up) is the row above.
+            std::optional<glm::vec2> dy = delta(x, y, 0, -1);
+            if (!dy) {
+                dy = delta(x, y, 0, 1);
+                if (dy) *dy = -*dy;
+            }
+            if (!dx || !dy) continue;
+            float det = std::abs(dx->x * dy->y - dx->y * dy->x);
+            if (det > 0.0f) out[static_cast<size_t>(y) * size.x + x] = 1.0f / det;
+        }
+    }
+    return out;
+}
+
+StabilityResult runStability(const StabilityContext& context, const StabilityOptions& options) {
+    if (auto why = validateStabilityOptions(options)) throw std::invalid_argument(*why);
+    if (context.scene == nullptr) throw std::invalid_argument("runStability: no scene");
+    Sweeper sweeper(context, options);
+    for (Sweep s : options.sweeps) sweeper.run(s);
+    return std::move(sweeper.result);
+}
+
+}  // namespace pcf

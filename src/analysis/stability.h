@@ -1,0 +1,153 @@
+// stability.h: where shadow-map filtering fails, measured. Five sweeps, each a curve of numbers
+// against the exact ground truth (ground_truth.h), for any list of methods and bias modes:
+//
+//   acne       the light's elevation swept from 90 down to 2 degrees over the scene; the
+//              false-shadow rate = share of the CLEAN LIT pixels where visibility < 0.99, and the
+//              mean darkening 1 - v over them. Clean lit: the truth says fully lit at the pixel
+//              AND at every point of a grid spanning +-reach texels of the map around it (moved
+//              in the map's plane, carried along the light onto the pixel's surface plane), so
+//              a filter's legitimate penumbra next to a real shadow is not counted as acne; reach
+//              is the method's own footprint (footprintReachTexels) + 1/2 texel.
+//   leak       peter panning at the contacts of the `pole` and `box-on-plane` presets, the
+//              constant bias swept: the leak rate = share of the CLEAN UMBRA pixels (the truth
+//              says fully shadowed there and over the whole footprint, as above) where the
+//              method returns > 0.01, and the leak's width: the largest distance from the caster
+//              (its nearest point; on the ground that is the contact line) of a leaking pixel,
+//              in world units and in shadow-map texels (the two points' map positions apart).
+//   shimmer    the map's texel grid slid under the world by (k/32, k/32) texel for k = 0..31
+//              (light.h's shiftShadowOrigin; the world's shadow stays where it is), mean and 99th
+//              percentile of |v(t) - v(t-1)| over the compared pixels of all frame pairs; the
+//              same with the grid snapped to whole texels (what remains is rasterisation
+//              rounding); and the camera slid by sub-pixel steps, where the truth moves too, so
+//              the change of the error e = v - truth between frames. Where the picture is still
+//              but for the shadow's edges, most receivers never change and the p99 over all of
+//              them says little; so the same statistics also over the FLICKERING pixels only
+//              (those whose value changes by more than 1/512 in any frame), and their share.
+//   precision  depth formats 16, 24, 32F with the light's depth range made 1..1e5 times deeper
+//              than the scene (light.h's widenShadowDepthRange) at one elevation; the bias is
+//              held fixed in WORLD terms (constant bias / ratio), so only the format's precision
+//              changes; the false-shadow rate and mean darkening as for acne.
+//   aliasing   screen pixels per shadow-map texel at each pixel, the perspective aliasing measure
+//              of Lloyd, Tuft, Yoon and Manocha, "Warping and Partitioning for Low Error Shadow
+//              Maps" (EGSR 2006) and "Logarithmic Perspective Shadow Maps" (Lloyd et al., ACM
+//              TOG 2008): with J = d(u, v) * mapSize / d(x, y) the texels per pixel (finite
+//              differences of the light-space target between neighbouring receiver pixels),
+//              pixels per texel = 1 / |det J|; > 1 means one texel is smeared over several
+//              pixels. Median and 99th percentile over the compared pixels, per map size, and a
+//              heat map.
+//
+// The GPU renders every frame (the same renderer as `render` and `bench`); the CPU measures.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <glm/glm.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "render/render_settings.h"
+#include "scene/scene.h"
+
+namespace pcf {
+
+enum class Sweep { Acne, Leak, Shimmer, Precision, Aliasing };
+
+std::string_view sweepName(Sweep sweep);  // "acne", "leak", "shimmer", "precision", "aliasing"
+std::optional<Sweep> sweepFromName(std::string_view name);
+std::vector<Sweep> allSweeps();
+
+struct StabilityMethod {
+    int method = PCF_NEAREST;
+    int kernel = 0;  // N, or 0 for a method that takes none
+    bool operator==(const StabilityMethod&) const = default;
+};
+
+// "pcf-gather N=5" or "nearest".
+std::string stabilityMethodName(const StabilityMethod& m);
+
+constexpr int SHIMMER_STEPS = 32;  // the light's grid moves 1/32 texel per frame
+
+struct StabilityOptions {
+    std::vector<StabilityMethod> methods{
+        {PCF_NEAREST, 0}, {PCF_BILINEAR2X2, 0}, {PCF_GATHER, 3}, {PCF_GATHER, 5}};
+    std::vector<BiasMode> biases{BiasMode::None, BiasMode::Constant};
+    std::vector<Sweep> sweeps = allSweeps();
+    // Bias parameters, culling, polygon offset, depth format of every frame (method, kernel,
+    // bias mode, map and frame size are the sweep's).
+    RenderSettings base;
+    glm::ivec2 frameSize{480, 270};
+    int mapSize = 512;
+    int truthSpp = 2;  // K x K ground-truth samples per pixel
+    int threads = 0;   // for the truth and the masks; 0 = all cores
+    std::vector<float> elevations{90, 75, 60, 45, 35, 25, 18, 12, 8, 5, 3, 2};  // degrees
+    std::vector<std::string> leakScenes{"pole", "box-on-plane"};
+    std::vector<float> leakBiases{0.0005f, 0.001f, 0.002f, 0.004f, 0.008f, 0.016f, 0.032f, 0.064f};
+    int shimmerFrames = SHIMMER_STEPS;  // light-grid frames, 1/32 texel apart
+    int cameraFrames = 6;               // camera frames, 1/cameraFrames pixel apart
+    std::vector<float> depthRanges{1, 10, 100, 1e3f, 1e4f, 1e5f};
+    std::vector<DepthFormat> depthFormats{DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F};
+    float precisionElevation = 30.0f;  // degrees
+    std::vector<int> aliasingMapSizes{256, 512, 1024, 2048};
+};
+
+// --quick: 160x90 frame, 128 map, 1x1 truth sample, 6 elevations, 3 leak biases, 3 camera frames,
+// 3 depth ranges; the methods nearest and pcf-gather N=3.
+StabilityOptions quickStabilityOptions();
+
+// Why the options cannot run, in one line naming the option; nullopt when they can.
+std::optional<std::string> validateStabilityOptions(const StabilityOptions& options);
+
+// One measured point: the columns of stability.csv, in order.
+struct StabilityRow {
+    std::string sweep;  // sweepName
+    int method = -1;    // -1: not per method (aliasing), written "-"
+    int kernel = 0;
+    std::string bias;   // biasModeName, or "-" (aliasing)
+    std::string xName;  // e.g. "elevation_deg", "constant_bias", "texel_step", "depth_range"
+    double x = 0.0;
+    std::string metric;  // e.g. "false_shadow_rate", "pole:leak_width_texels", "light_p99"
+    double y = 0.0;
+};
+
+struct StabilityImage {
+    std::string name;  // file name, e.g. "aliasing_heatmap.png"
+    glm::ivec2 size{0, 0};
+    std::vector<uint8_t> rgba;  // rows top-down
+};
+
+struct StabilityContext {
+    const Scene* scene = nullptr;  // acne, shimmer, precision, aliasing run on it
+    // A line of progress ("acne 3/12: 45 deg"), on the calling thread.
+    std::function<void(const std::string&)> progress;
+};
+
+struct StabilityResult {
+    std::vector<StabilityRow> rows;
+    std::vector<StabilityImage> images;
+};
+
+// Runs the sweeps in the options' order. Needs a current OpenGL 4.5 context. Throws
+// std::invalid_argument when validateStabilityOptions objects or the scene is missing.
+StabilityResult runStability(const StabilityContext& context, const StabilityOptions& options);
+
+// Reach of a method's footprint from the lookup point, in texels (how far a real shadow edge
+// can darken it): (N + 1) / 2 for the N x N filters, 1 for the 2x2 ones, radius + 0.5 for
+// poisson, 0.5 for nearest.
+float footprintReachTexels(const StabilityMethod& m, float poissonRadius);
+
+// The surface points a +-reachTexels grid (gridSide x gridSide points) around `hit` covers in
+// the shadow map: each grid point moved across the map's plane and carried along the light
+// onto the plane of the hit's surface. Empty when the surface is edge-on to the light.
+std::vector<glm::vec3> footprintPoints(const Scene& scene, const glm::mat4& shadowClipFromWorld,
+                                       int mapSize, glm::vec3 posWs, glm::vec3 normalWs,
+                                       float reachTexels, int gridSide);
+
+// Pixels per texel from a light-space readback (4 floats per pixel, top-down, alpha 1 on
+// receivers) for a mapSize map: per pixel 1 / |det J|, or -1 where it cannot be measured (not
+// a receiver, no receiver neighbour, or a jump of more than 32 texels to it).
+std::vector<float> pixelsPerTexel(const std::vector<float>& lightSpace, glm::ivec2 frameSize,
+                                  int mapSize);
+
+}  // namespace pcf

@@ -1,0 +1,463 @@
+#include "analysis/stability_chart.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "analysis/speed_chart.h"
+#include "kernel/methods.h"
+#include "overlay/canvas.h"
+#include "overlay/text_layout.h"
+#include "render/gl_objects.h"
+
+namespace pcf {
+
+namespace {
+
+const Colour WHITE{1.0f, 1.0f, 1.0f, 1.0f};
+const Colour INK{0.13f, 0.13f, 0.15f, 1.0f};
+const Colour SOFT_INK{0.35f, 0.35f, 0.38f, 1.0f};
+const Colour GRID{0.88f, 0.88f, 0.9f, 1.0f};
+
+float scaleFor(glm::ivec2 size) {
+    return std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
+}
+
+float px(float base, float s) { return std::max(8.0f, std::round(base * s)); }
+
+std::string tickText(double v, bool percent) {
+    char buf[32];
+    if (percent) {
+        std::snprintf(buf, sizeof buf, "%g%%", std::round(v * 1e4) / 1e2);
+    } else {
+        std::snprintf(buf, sizeof buf, "%g", v);
+    }
+    return buf;
+}
+
+double niceStep(double rough) {
+    double p = std::pow(10.0, std::floor(std::log10(rough)));
+    double m = rough / p;
+    return (m <= 1.0 ? 1.0 : m <= 2.0 ? 2.0 : m <= 5.0 ? 5.0 : 10.0) * p;
+}
+
+// Draws into an offscreen target of `size` and reads it back; `paint` records the commands.
+template <class Paint>
+std::vector<uint8_t> drawOffscreen(glm::ivec2 size, Paint&& paint) {
+    GLint previousDraw = 0, previousRead = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDraw);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousRead);
+    OffscreenTarget target = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, &WHITE.x);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer.id());
+    {
+        Canvas c;
+        c.begin(size);
+        paint(c);
+        c.flush();
+    }
+    std::vector<uint8_t> rgba =
+        readPixelsRgba8(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, size.x, size.y);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousDraw));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previousRead));
+    return rgba;
+}
+
+// Title and subtitle at the top; returns the y below them.
+float drawHeader(Canvas& c, float s, const std::string& title, const std::string& subtitle) {
+    float pad = std::round(12.0f * s);
+    Rect t = c.text({pad, pad * 0.6f}, title, {FontFace::Sans, px(20, s), INK});
+    Rect sub = c.text({pad, t.bottom()}, subtitle, {FontFace::Sans, px(13, s), SOFT_INK});
+    return sub.bottom() + 6.0f * s;
+}
+
+struct LegendEntry {
+    std::string label;
+    Colour colour;
+    bool dashed;
+};
+
+void dashedLine(Canvas& c, glm::vec2 a, glm::vec2 b, float width, const Colour& colour,
+                float dash) {
+    float len = glm::length(b - a);
+    if (len <= 0.0f) return;
+    glm::vec2 d = (b - a) / len;
+    for (float t = 0.0f; t < len; t += 2.0f * dash) {
+        c.line(a + d * t, a + d * std::min(t + dash, len), width, colour);
+    }
+}
+
+std::string shortMethod(const StabilityMethod& m) {
+    std::string s(methodInfo(m.method).name);
+    if (m.kernel > 0) s += " " + std::to_string(m.kernel) + "x" + std::to_string(m.kernel);
+    return s;
+}
+
+// The (method, kernel) pairs of the rows of one sweep, in order of appearance.
+std::vector<StabilityMethod> methodsOf(std::span<const StabilityRow> rows, std::string_view sweep) {
+    std::vector<StabilityMethod> out;
+    for (const StabilityRow& r : rows) {
+        if (r.sweep != sweep || r.method < 0) continue;
+        StabilityMethod m{r.method, r.kernel};
+        if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
+    }
+    return out;
+}
+
+std::vector<std::string> biasesOf(std::span<const StabilityRow> rows, std::string_view sweep) {
+    std::vector<std::string> out;
+    for (const StabilityRow& r : rows) {
+        if (r.sweep != sweep || r.method < 0) continue;
+        if (std::find(out.begin(), out.end(), r.bias) == out.end()) out.push_back(r.bias);
+    }
+    return out;
+}
+
+}  // namespace
+
+glm::vec4 biasColour(std::string_view bias) {
+    // One colour per bias name of DESIGN.md section 2 (Okabe-Ito, readable on white).
+    static const std::pair<std::string_view, glm::vec4> COLOURS[] = {
+        {"none", {0.84f, 0.37f, 0.0f, 1.0f}},
+        {"constant", {0.0f, 0.45f, 0.70f, 1.0f}},
+        {"slope", {0.0f, 0.62f, 0.45f, 1.0f}},
+        {"normal", {0.80f, 0.47f, 0.65f, 1.0f}},
+        {"receiver-plane", {0.34f, 0.71f, 0.91f, 1.0f}},
+        {"soft", {0.90f, 0.62f, 0.0f, 1.0f}},
+        {"interpolated", {0.35f, 0.35f, 0.35f, 1.0f}},
+    };
+    for (const auto& [name, colour] : COLOURS) {
+        if (name == bias) return colour;
+    }
+    return INK;
+}
+
+std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
+    if (size.x < 64 || size.y < 64) {
+        throw std::invalid_argument("drawLineChart: the chart needs at least 64 x 64 pixels");
+    }
+    if (spec.panels.empty()) throw std::invalid_argument("drawLineChart: no panel");
+    float s = scaleFor(size);
+    // Axis ranges shared by all panels.
+    double xLo = 1e300, xHi = -1e300, yHi = spec.yFloor;
+    for (const ChartPanel& p : spec.panels) {
+        for (const ChartLine& l : p.lines) {
+            for (glm::dvec2 q : l.points) {
+                double x = spec.logX ? std::log10(std::max(q.x, 1e-12)) : q.x;
+                xLo = std::min(xLo, x);
+                xHi = std::max(xHi, x);
+                yHi = std::max(yHi, q.y);
+            }
+        }
+    }
+    if (xLo > xHi) xLo = 0.0, xHi = 1.0;
+    if (xHi - xLo < 1e-9) xLo -= 0.5, xHi += 0.5;
+    double yStep = niceStep(std::max(yHi - spec.yFloor, 1e-6) * 1.05 / 5.0);
+    double yTop =
+        spec.yFloor + std::ceil((std::max(yHi - spec.yFloor, 1e-6) * 1.05) / yStep) * yStep;
+    if (spec.percentY && yHi <= 1.0 && (yTop > 1.0 || yHi > 0.5)) {
+        yStep = 0.2;  // a share never passes 100 %: ticks of 20 % up to exactly 100 %
+        yTop = 1.0;
+    }
+
+    std::vector<LegendEntry> legend;
+    for (const ChartPanel& p : spec.panels) {
+        for (const ChartLine& l : p.lines) {
+            bool seen = false;
+            for (const LegendEntry& e : legend) seen = seen || e.label == l.label;
+            if (!seen) legend.push_back({l.label, l.colour, l.dashed});
+        }
+    }
+
+    return drawOffscreen(size, [&](Canvas& c) {
+        float top = drawHeader(c, s, spec.title, spec.subtitle);
+        float legendFont = px(13, s), tickFont = px(12, s), axisFont = px(14, s);
+        float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
+        float legendW = 0.0f;
+        for (const LegendEntry& e : legend) {
+            legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, e.label).x);
+        }
+        for (const std::string& n : spec.notes) {
+            legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
+        }
+        legendW = std::round(legendW + 48.0f * s);
+        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, INK});
+        top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
+        float bottomText = fontMetrics(FontFace::Sans, axisFont).lineHeight + 6.0f * s;
+        Rect area{0.0f, top, size.x - legendW - 20.0f * s, size.y - top - bottomText};
+        c.text({area.centre().x, area.bottom() + 2.0f * s}, spec.xLabel,
+               {FontFace::Sans, axisFont, INK, TextAlign::Center});
+
+        int n = static_cast<int>(spec.panels.size());
+        int cols = n <= 2 ? n : (n <= 4 ? 2 : 3);
+        int rowsN = (n + cols - 1) / cols;
+        float cellW = area.w / cols, cellH = area.h / rowsN;
+        float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
+        float stroke = std::max(1.0f, std::round(s));
+        for (int k = 0; k < n; ++k) {
+            const ChartPanel& panel = spec.panels[k];
+            Rect cell{area.x + (k % cols) * cellW, area.y + (k / cols) * cellH, cellW, cellH};
+            float titleH = fontMetrics(FontFace::Sans, px(14, s)).lineHeight;
+            Rect plot{std::round(cell.x + 58.0f * s), std::round(cell.y + titleH + 4.0f * s),
+                      std::round(cell.w - 70.0f * s),
+                      std::round(cell.h - titleH - tickH - 18.0f * s)};
+            if (plot.w < 8.0f || plot.h < 8.0f) continue;
+            c.text({plot.centre().x, cell.y}, panel.title,
+                   {FontFace::Sans, px(14, s), INK, TextAlign::Center});
+            auto xPixel = [&](double x) {
+                double v = spec.logX ? std::log10(std::max(x, 1e-12)) : x;
+                double t = (v - xLo) / (xHi - xLo);
+                if (spec.reverseX) t = 1.0 - t;
+                return plot.x + static_cast<float>(t) * plot.w;
+            };
+            auto yPixel = [&](double y) {
+                return plot.bottom() -
+                       static_cast<float>((y - spec.yFloor) / (yTop - spec.yFloor)) * plot.h;
+            };
+            for (double y = spec.yFloor; y <= yTop + 0.5 * yStep; y += yStep) {
+                float py = std::round(yPixel(y)) + 0.5f;
+                c.line({plot.x, py}, {plot.right(), py}, stroke, GRID);
+                c.text({plot.x - 5.0f * s, py - tickH / 2}, tickText(y, spec.percentY),
+                       {FontFace::Sans, tickFont, SOFT_INK, TextAlign::Right});
+            }
+            // x ticks: the points' own x values (sweeps are few points), thinned to fit.
+            std::vector<double> xs;
+            for (const ChartLine& l : panel.lines) {
+                for (glm::dvec2 q : l.points) {
+                    if (std::find(xs.begin(), xs.end(), q.x) == xs.end()) xs.push_back(q.x);
+                }
+            }
+            std::sort(xs.begin(), xs.end(),
+                      [&](double a, double b) { return xPixel(a) < xPixel(b); });
+            float lastRight = -1e30f;
+            for (double x : xs) {
+                float pxX = std::round(xPixel(x)) + 0.5f;
+                c.line({pxX, plot.y}, {pxX, plot.bottom()}, stroke, GRID);
+                std::string t = tickText(x, false);
+                float w = measureText(FontFace::Sans, tickFont, t).x;
+                if (pxX - w / 2 - 4.0f * s > lastRight) {
+                    c.text({pxX, plot.bottom() + 3.0f * s}, t,
+                           {FontFace::Sans, tickFont, SOFT_INK, TextAlign::Center});
+                    lastRight = pxX + w / 2;
+                }
+            }
+            c.strokeRect(plot.expanded(stroke), stroke, SOFT_INK);
+            c.pushClip(plot.expanded(3.0f * s));
+            for (const ChartLine& l : panel.lines) {
+                glm::vec2 prev{};
+                for (size_t i = 0; i < l.points.size(); ++i) {
+                    glm::vec2 p{xPixel(l.points[i].x), yPixel(l.points[i].y)};
+                    if (i > 0) {
+                        if (l.dashed) {
+                            dashedLine(c, prev, p, 2.0f * s, l.colour, 5.0f * s);
+                        } else {
+                            c.line(prev, p, 2.0f * s, l.colour);
+                        }
+                    }
+                    c.circle(p, 3.0f * s, l.colour);
+                    prev = p;
+                }
+            }
+            c.popClip();
+        }
+
+        Rect box{size.x - legendW - 12.0f * s, top, legendW,
+                 (legend.size() + spec.notes.size()) * lineH + 12.0f * s};
+        c.fillRect(box, {0.97f, 0.97f, 0.98f, 1.0f});
+        c.strokeRect(box, stroke, GRID);
+        float y = box.y + 6.0f * s;
+        for (const LegendEntry& e : legend) {
+            glm::vec2 a{box.x + 8.0f * s, y + lineH / 2}, b{box.x + 32.0f * s, y + lineH / 2};
+            if (e.dashed) {
+                dashedLine(c, a, b, 2.0f * s, e.colour, 5.0f * s);
+            } else {
+                c.line(a, b, 2.0f * s, e.colour);
+            }
+            c.text({box.x + 38.0f * s, y}, e.label, {FontFace::Sans, legendFont, INK});
+            y += lineH;
+        }
+        for (const std::string& note : spec.notes) {
+            c.text({box.x + 8.0f * s, y}, note, {FontFace::Sans, legendFont, SOFT_INK});
+            y += lineH;
+        }
+    });
+}
+
+std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
+    if (size.x < 64 || size.y < 64) {
+        throw std::invalid_argument("drawBarChart: the chart needs at least 64 x 64 pixels");
+    }
+    float s = scaleFor(size);
+    double yMax = 0.0;
+    for (const BarGroup& g : spec.groups) {
+        for (double v : g.values) yMax = std::max(yMax, v);
+    }
+    double yStep = niceStep(std::max(yMax, 1e-6) * 1.1 / 5.0);
+    double yTop = std::ceil(std::max(yMax, 1e-6) * 1.1 / yStep) * yStep;
+    if (yMax > 0.5 && yMax <= 1.0) {
+        yStep = 0.2;  // changes of visibility never pass 1
+        yTop = 1.0;
+    }
+    static const Colour SERIES[] = {{0.0f, 0.45f, 0.70f, 1.0f},
+                                    {0.55f, 0.55f, 0.58f, 1.0f},
+                                    {0.84f, 0.37f, 0.0f, 1.0f},
+                                    {0.0f, 0.62f, 0.45f, 1.0f}};
+    return drawOffscreen(size, [&](Canvas& c) {
+        float top = drawHeader(c, s, spec.title, spec.subtitle);
+        float tickFont = px(12, s), axisFont = px(14, s), legendFont = px(13, s);
+        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, INK});
+        top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
+        float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
+        float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
+        float legendW = 0.0f;
+        for (const std::string& n : spec.series) {
+            legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
+        }
+        legendW = std::round(legendW + 40.0f * s);
+        top += tickH / 2;  // room for the top tick's label
+        Rect plot{std::round(62.0f * s), std::round(top), std::round(size.x - legendW - 90.0f * s),
+                  std::round(size.y - top - 2.0f * tickH - 20.0f * s)};
+        float stroke = std::max(1.0f, std::round(s));
+        auto yPixel = [&](double y) {
+            return plot.bottom() - static_cast<float>(y / yTop) * plot.h;
+        };
+        for (double y = 0.0; y <= yTop + 0.5 * yStep; y += yStep) {
+            float py = std::round(yPixel(y)) + 0.5f;
+            c.line({plot.x, py}, {plot.right(), py}, stroke, GRID);
+            c.text({plot.x - 5.0f * s, py - tickH / 2}, tickText(y, false),
+                   {FontFace::Sans, tickFont, SOFT_INK, TextAlign::Right});
+        }
+        size_t groups = std::max<size_t>(spec.groups.size(), 1);
+        float groupW = plot.w / groups;
+        size_t bars = std::max<size_t>(spec.series.size(), 1);
+        float barW = std::max(2.0f, std::floor(groupW * 0.8f / bars));
+        for (size_t g = 0; g < spec.groups.size(); ++g) {
+            const BarGroup& group = spec.groups[g];
+            float x0 = plot.x + g * groupW + (groupW - barW * bars) / 2;
+            for (size_t b = 0; b < group.values.size() && b < bars; ++b) {
+                float y = yPixel(group.values[b]);
+                c.fillRect({std::round(x0 + b * barW), std::round(y), barW - stroke,
+                            std::round(plot.bottom() - y)},
+                           SERIES[b % 4]);
+            }
+            // Labels on two lines when the group is narrow: "method" / "bias".
+            std::string label = group.label;
+            float w = measureText(FontFace::Sans, tickFont, label).x;
+            if (w > groupW - 4.0f * s) {
+                size_t space = label.rfind(' ');
+                if (space != std::string::npos) label[space] = '\n';
+            }
+            c.text({plot.x + (g + 0.5f) * groupW, plot.bottom() + 4.0f * s}, label,
+                   {FontFace::Sans, tickFont, INK, TextAlign::Center});
+        }
+        c.strokeRect(plot.expanded(stroke), stroke, SOFT_INK);
+        Rect box{size.x - legendW - 12.0f * s, plot.y, legendW,
+                 spec.series.size() * lineH + 12.0f * s};
+        c.fillRect(box, {0.97f, 0.97f, 0.98f, 1.0f});
+        c.strokeRect(box, stroke, GRID);
+        float y = box.y + 6.0f * s;
+        for (size_t b = 0; b < spec.series.size(); ++b) {
+            c.fillRect({box.x + 8.0f * s, y + 2.0f * s, 22.0f * s, lineH - 4.0f * s},
+                       SERIES[b % 4]);
+            c.text({box.x + 36.0f * s, y}, spec.series[b], {FontFace::Sans, legendFont, INK});
+            y += lineH;
+        }
+    });
+}
+
+std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                   const std::string& subtitle) {
+    LineChartSpec spec;
+    spec.title = "Shadow acne: false shadow on lit receivers as the light sinks";
+    spec.subtitle = subtitle;
+    spec.xLabel =
+        "light elevation above the ground, degrees (log scale; the sun sets to the right)";
+    spec.yLabel = "false-shadow rate (lit pixels darker than 0.99)";
+    spec.logX = true;
+    spec.reverseX = true;
+    spec.percentY = true;
+    for (const StabilityMethod& m : methodsOf(rows, "acne")) {
+        ChartPanel panel{shortMethod(m), {}};
+        for (const std::string& bias : biasesOf(rows, "acne")) {
+            ChartLine line{bias, biasColour(bias), false, {}};
+            for (const StabilityRow& r : rows) {
+                if (r.sweep == "acne" && r.metric == "false_shadow_rate" && r.method == m.method &&
+                    r.kernel == m.kernel && r.bias == bias) {
+                    line.points.emplace_back(r.x, r.y);
+                }
+            }
+            panel.lines.push_back(line);
+        }
+        spec.panels.push_back(panel);
+    }
+    if (spec.panels.empty()) return {};
+    spec.notes.push_back("1% = acne onset");
+    return drawLineChart(spec, size);
+}
+
+std::vector<uint8_t> drawLeakChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                   const std::string& subtitle) {
+    LineChartSpec spec;
+    spec.title = "Peter panning: how far light leaks under the caster as the bias grows";
+    spec.subtitle = subtitle;
+    spec.xLabel = "constant bias, light depth units (log scale)";
+    spec.yLabel = "leak width from the contact, shadow-map texels";
+    spec.logX = true;
+    std::vector<std::string> scenes;
+    for (const StabilityRow& r : rows) {
+        if (r.sweep != "leak") continue;
+        std::string scene = r.metric.substr(0, r.metric.find(':'));
+        if (std::find(scenes.begin(), scenes.end(), scene) == scenes.end()) scenes.push_back(scene);
+    }
+    for (const StabilityMethod& m : methodsOf(rows, "leak")) {
+        ChartPanel panel{shortMethod(m), {}};
+        for (const std::string& bias : biasesOf(rows, "leak")) {
+            for (size_t k = 0; k < scenes.size(); ++k) {
+                ChartLine line{bias, biasColour(bias), k > 0, {}};
+                for (const StabilityRow& r : rows) {
+                    if (r.sweep == "leak" && r.metric == scenes[k] + ":leak_width_texels" &&
+                        r.method == m.method && r.kernel == m.kernel && r.bias == bias) {
+                        line.points.emplace_back(r.x, r.y);
+                    }
+                }
+                panel.lines.push_back(line);
+            }
+        }
+        spec.panels.push_back(panel);
+    }
+    if (spec.panels.empty()) return {};
+    for (size_t k = 0; k < scenes.size(); ++k) {
+        spec.notes.push_back((k == 0 ? "solid: " : "dashed: ") + scenes[k]);
+    }
+    return drawLineChart(spec, size);
+}
+
+std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                      const std::string& subtitle) {
+    BarChartSpec spec;
+    spec.title = "Shimmer: how much the picture flickers while nothing in the world moves";
+    spec.subtitle = subtitle;
+    spec.yLabel = "99th percentile of |v(t) - v(t-1)| over the pixels that flicker at all";
+    spec.series = {"texel grid slid 1/32 texel a frame", "the same, snapped to whole texels",
+                   "camera slid by sub-pixel steps (error change)"};
+    for (const StabilityMethod& m : methodsOf(rows, "shimmer")) {
+        for (const std::string& bias : biasesOf(rows, "shimmer")) {
+            BarGroup g{shortMethod(m) + " " + bias, {0.0, 0.0, 0.0}};
+            for (const StabilityRow& r : rows) {
+                if (r.sweep != "shimmer" || r.method != m.method || r.kernel != m.kernel ||
+                    r.bias != bias) {
+                    continue;
+                }
+                if (r.metric == "light_flicker_p99") g.values[0] = r.y;
+                if (r.metric == "snapped_flicker_p99") g.values[1] = r.y;
+                if (r.metric == "camera_p99") g.values[2] = r.y;
+            }
+            spec.groups.push_back(g);
+        }
+    }
+    if (spec.groups.empty()) return {};
+    return drawBarChart(spec, size);
+}
+
+}  // namespace pcf

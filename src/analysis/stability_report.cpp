@@ -1,0 +1,277 @@
+#include "analysis/stability_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "kernel/methods.h"
+#include "scene/input_error.h"
+
+namespace pcf {
+
+namespace {
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", v);
+    return buf;
+}
+
+std::string fixed(double v, int decimals) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+std::string percent(double share) { return fixed(100.0 * share, share < 0.1 ? 2 : 1) + " %"; }
+
+bool sameX(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max(1.0, std::abs(b)); }
+
+bool matches(const StabilityRow& r, const StabilityMethod& m, std::string_view bias) {
+    return r.method == m.method && r.kernel == m.kernel && r.bias == bias;
+}
+
+}  // namespace
+
+std::string stabilityCsv(std::span<const StabilityRow> rows) {
+    std::string out(STABILITY_CSV_HEADER);
+    out += '\n';
+    for (const StabilityRow& r : rows) {
+        out += r.sweep + ',';
+        out += (r.method < 0 ? std::string("-") : std::string(methodInfo(r.method).name)) + ',';
+        out += std::to_string(r.kernel) + ',' + r.bias + ',' + r.xName + ',' + number(r.x) + ',' +
+               r.metric + ',' + number(r.y) + '\n';
+    }
+    return out;
+}
+
+std::vector<StabilityRow> parseStabilityCsv(std::string_view text, const std::string& source) {
+    std::vector<StabilityRow> rows;
+    int line = 0;
+    size_t pos = 0;
+    while (pos < text.size()) {
+        size_t end = text.find('\n', pos);
+        if (end == std::string_view::npos) end = text.size();
+        std::string row(text.substr(pos, end - pos));
+        pos = end + 1;
+        ++line;
+        if (!row.empty() && row.back() == '\r') row.pop_back();
+        if (line == 1) {
+            if (row != STABILITY_CSV_HEADER) {
+                throw InputError(source, line,
+                                 "not a stability.csv header: expected '" +
+                                     std::string(STABILITY_CSV_HEADER) + "'");
+            }
+            continue;
+        }
+        if (row.empty()) continue;
+        std::vector<std::string> f;
+        size_t start = 0;
+        for (size_t comma; (comma = row.find(',', start)) != std::string::npos; start = comma + 1) {
+            f.push_back(row.substr(start, comma - start));
+        }
+        f.push_back(row.substr(start));
+        if (f.size() != 8) {
+            throw InputError(source, line, "expected 8 fields, got " + std::to_string(f.size()));
+        }
+        auto num = [&](size_t k) {
+            char* endPtr = nullptr;
+            double v = std::strtod(f[k].c_str(), &endPtr);
+            if (f[k].empty() || *endPtr != '\0' || !std::isfinite(v)) {
+                throw InputError(
+                    source, line,
+                    "field " + std::to_string(k + 1) + " '" + f[k] + "' is not a number");
+            }
+            return v;
+        };
+        if (!sweepFromName(f[0])) throw InputError(source, line, "unknown sweep '" + f[0] + "'");
+        StabilityRow r;
+        r.sweep = f[0];
+        if (f[1] != "-") {
+            std::optional<int> method = methodFromName(f[1]);
+            if (!method) throw InputError(source, line, "unknown method '" + f[1] + "'");
+            r.method = *method;
+        }
+        r.kernel = static_cast<int>(num(2));
+        r.bias = f[3];
+        r.xName = f[4];
+        r.x = num(5);
+        r.metric = f[6];
+        r.y = num(7);
+        rows.push_back(r);
+    }
+    if (line == 0) throw InputError(source, 1, "empty file: expected a stability.csv header");
+    return rows;
+}
+
+std::optional<double> stabilityValue(std::span<const StabilityRow> rows, std::string_view sweep,
+                                     const StabilityMethod& method, std::string_view bias,
+                                     std::string_view metric, double x) {
+    for (const StabilityRow& r : rows) {
+        if (r.sweep == sweep && matches(r, method, bias) && r.metric == metric && sameX(r.x, x)) {
+            return r.y;
+        }
+    }
+    return std::nullopt;
+}
+
+std::vector<StabilitySummary> summarizeStability(std::span<const StabilityRow> rows,
+                                                 double leakBias) {
+    std::vector<StabilitySummary> out;
+    auto find = [&](const StabilityRow& r) -> StabilitySummary* {
+        for (StabilitySummary& s : out) {
+            if (matches(r, s.method, s.bias)) return &s;
+        }
+        return nullptr;
+    };
+    for (const StabilityRow& r : rows) {
+        if (r.method < 0) continue;
+        StabilitySummary* s = find(r);
+        if (s == nullptr) {
+            out.push_back({});
+            s = &out.back();
+            s->method = {r.method, r.kernel};
+            s->bias = r.bias;
+        }
+        if (r.sweep == "acne" && r.metric == "false_shadow_rate") {
+            // Rows come in the sweep's order, elevations from high to low.
+            s->acneSwept = true;
+            s->acneWorstRate = std::max(s->acneWorstRate, r.y);
+            if (r.y > 0.01 && (!s->acneOnsetDeg || r.x > *s->acneOnsetDeg)) s->acneOnsetDeg = r.x;
+        } else if (r.sweep == "shimmer") {
+            if (r.metric == "light_mean") s->shimmerMean = r.y;
+            if (r.metric == "light_p99") s->shimmerP99 = r.y;
+            if (r.metric == "snapped_mean") s->snappedMean = r.y;
+            if (r.metric == "snapped_max") s->snappedMax = r.y;
+            if (r.metric == "light_flicker_p99") s->flickerP99 = r.y;
+            if (r.metric == "light_flicker_share") s->flickerShare = r.y;
+            if (r.metric == "snapped_p99") s->snappedP99 = r.y;
+            if (r.metric == "camera_mean") s->cameraMean = r.y;
+            if (r.metric == "camera_p99") s->cameraP99 = r.y;
+        } else if (r.sweep == "leak") {
+            size_t colon = r.metric.find(':');
+            if (colon == std::string::npos) continue;
+            std::string scene = r.metric.substr(0, colon);
+            std::string what = r.metric.substr(colon + 1);
+            StabilitySummary::Leak* leak = nullptr;
+            for (StabilitySummary::Leak& l : s->leaks) {
+                if (l.scene == scene) leak = &l;
+            }
+            if (leak == nullptr) {
+                s->leaks.push_back({scene, r.x, 0, 0, 0});
+                leak = &s->leaks.back();
+            }
+            // Keep the bias nearest the run's constant bias.
+            if (std::abs(r.x - leakBias) < std::abs(leak->bias - leakBias) - 1e-12) {
+                *leak = {scene, r.x, 0, 0, 0};
+            }
+            if (!sameX(r.x, leak->bias)) continue;
+            if (what == "leak_rate") leak->rate = r.y;
+            if (what == "leak_width_world") leak->widthWorld = r.y;
+            if (what == "leak_width_texels") leak->widthTexels = r.y;
+        }
+    }
+    return out;
+}
+
+std::string stabilityMarkdown(std::span<const StabilityRow> rows, const StabilitySetup& setup,
+                              double constantBias) {
+    std::string frame = std::to_string(setup.frameSize.x) + "x" + std::to_string(setup.frameSize.y);
+    std::string md = "# Stability: " + setup.sceneName + ", " + frame + ", " +
+                     std::to_string(setup.mapSize) + "^2 map\n\n";
+    md += "Rendered on `" + setup.glRenderer + "`, measured against the ray-cast ground truth (" +
+          std::to_string(setup.truthSpp) + "x" + std::to_string(setup.truthSpp) +
+          " samples per pixel); " + setup.settings + ".\n\n";
+    // The leak columns show the largest bias swept: the run's own bias rarely leaks at all,
+    // and the chart shows the whole curve.
+    double leakBias = constantBias;
+    bool leakRows = false;
+    for (const StabilityRow& r : rows) {
+        if (r.sweep != "leak") continue;
+        leakBias = leakRows ? std::max(leakBias, r.x) : r.x;
+        leakRows = true;
+    }
+    char leakAt[32];
+    std::snprintf(leakAt, sizeof leakAt, "%g", leakBias);
+    std::vector<StabilitySummary> summary = summarizeStability(rows, leakBias);
+    bool anyLeak = false;
+    std::vector<std::string> leakScenes;
+    for (const StabilitySummary& s : summary) {
+        for (const StabilitySummary::Leak& l : s.leaks) {
+            anyLeak = true;
+            if (std::find(leakScenes.begin(), leakScenes.end(), l.scene) == leakScenes.end()) {
+                leakScenes.push_back(l.scene);
+            }
+        }
+    }
+    md += "| method | bias | acne onset | worst acne |";
+    for (const std::string& sc : leakScenes) md += " leak " + sc + " @" + leakAt + " |";
+    md += " shimmer mean | shimmer p99 | flicker p99 (share) | snapped max | camera p99 |\n";
+    md += "|---|---|---:|---:|";
+    for (size_t k = 0; k < leakScenes.size(); ++k) md += "---:|";
+    md += "---:|---:|---:|---:|---:|\n";
+    auto opt = [](double v, int decimals) {
+        return v < 0.0 ? std::string("-") : fixed(v, decimals);
+    };
+    for (const StabilitySummary& s : summary) {
+        md += "| " + stabilityMethodName(s.method) + " | " + s.bias + " | ";
+        if (!s.acneSwept) {
+            md += "- | - |";
+        } else {
+            md += (s.acneOnsetDeg ? fixed(*s.acneOnsetDeg, 0) + " deg" : std::string("never")) +
+                  " | " + percent(s.acneWorstRate) + " |";
+        }
+        for (const std::string& sc : leakScenes) {
+            const StabilitySummary::Leak* leak = nullptr;
+            for (const StabilitySummary::Leak& l : s.leaks) {
+                if (l.scene == sc) leak = &l;
+            }
+            if (leak == nullptr) {
+                md += " - |";
+            } else {
+                md += ' ';
+                md += percent(leak->rate) + ", " + fixed(leak->widthWorld, 3) + " (" +
+                      fixed(leak->widthTexels, 1) + " tx) |";
+            }
+        }
+        md += ' ';
+        md += opt(s.shimmerMean, 4) + " | " + opt(s.shimmerP99, 3) + " | " + opt(s.flickerP99, 3) +
+              (s.flickerShare < 0.0 ? std::string() : " (" + percent(s.flickerShare) + ")") +
+              " | " + opt(s.snappedMax, 4) + " | " + opt(s.cameraP99, 3) + " |\n";
+    }
+    md +=
+        "\nAcne onset: the highest light elevation (degrees above the ground, swept down from 90) "
+        "where more than 1 % of the clean lit pixels (lit in the truth over the filter's whole "
+        "footprint) come out darker than 0.99; worst acne: the largest such share. ";
+    if (anyLeak) {
+        md += std::string("Leak @") + leakAt +
+              " (the largest constant bias swept; stability.csv and the leak chart have every "
+              "bias): the share of clean umbra pixels brighter than 0.01, and how far from the "
+              "caster the light reaches, world units (shadow-map texels). ";
+    }
+    md +=
+        "Shimmer: |v(t) - v(t-1)| over the receivers while the map's texel grid slides 1/32 "
+        "texel a frame (the world's shadow does not move), mean and 99th percentile; flicker: the "
+        "99th percentile over only the pixels that change at all (and their share of the "
+        "receivers); snapped max: the largest change left with the grid snapped to whole "
+        "texels; camera: the change of the error v - truth "
+        "while the camera slides by sub-pixel steps.\n";
+    std::string aliasing;
+    for (const StabilityRow& r : rows) {
+        if (r.sweep != "aliasing") continue;
+        if (r.metric == "pixels_per_texel_median") {
+            aliasing += (aliasing.empty() ? "" : "; ") + std::string("map ") +
+                        std::to_string(static_cast<int>(r.x)) + ": median " + fixed(r.y, 2);
+        } else if (r.metric == "pixels_per_texel_p99") {
+            aliasing += ", p99 " + fixed(r.y, 2);
+        }
+    }
+    if (!aliasing.empty()) {
+        md += "\nPerspective aliasing (screen pixels per shadow-map texel, Lloyd et al.): " +
+              aliasing + ".\n";
+    }
+    return md;
+}
+
+}  // namespace pcf

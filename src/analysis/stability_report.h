@@ -1,0 +1,78 @@
+// stability_report.h: the stability sweeps' rows (stability.h) as the files `pcfscope stability`
+// writes: stability.csv for tools (one row per measured point), stability.md for people (per
+// method and bias: where acne starts, how wide the leak is, how much the picture shimmers).
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "analysis/stability.h"
+
+namespace pcf {
+
+// The CSV's first line, exactly (no trailing newline).
+inline constexpr std::string_view STABILITY_CSV_HEADER =
+    "sweep,method,kernel,bias,x_name,x,metric,y";
+
+// The header, then one line per row in the given order: method by its id ("-" when the row is
+// not per method), kernel 0 for methods that take none, x and y with 9 significant digits.
+std::string stabilityCsv(std::span<const StabilityRow> rows);
+
+// Reads what stabilityCsv wrote. Throws pcf::InputError "SOURCE:LINE: problem" on a wrong
+// header, a wrong field count, an unknown method or sweep, or a number that is not finite.
+std::vector<StabilityRow> parseStabilityCsv(std::string_view text, const std::string& source);
+
+// One line of the summary: a method with a bias.
+struct StabilitySummary {
+    StabilityMethod method;
+    std::string bias;
+    // Acne: the highest swept elevation (degrees) where the false-shadow rate exceeds 1 %,
+    // scanning down from the highest; nullopt when it never does (or acne was not swept).
+    std::optional<double> acneOnsetDeg;
+    bool acneSwept = false;
+    double acneWorstRate = 0.0;  // the largest false-shadow rate of the sweep
+    // Leak at the swept constant bias nearest summarizeStability's leakBias (per leak scene).
+    struct Leak {
+        std::string scene;
+        double bias = 0.0;
+        double rate = 0.0;
+        double widthWorld = 0.0;
+        double widthTexels = 0.0;
+    };
+    std::vector<Leak> leaks;
+    // Shimmer of the light's grid slid by 1/32 texel: mean and p99 of |v(t) - v(t-1)|; the same
+    // snapped to whole texels; and the camera's change of error. Negative: not swept.
+    double shimmerMean = -1.0, shimmerP99 = -1.0;
+    double flickerP99 = -1.0, flickerShare = -1.0;  // over the pixels that change at all
+    double snappedMax = -1.0;
+    double snappedMean = -1.0, snappedP99 = -1.0;
+    double cameraMean = -1.0, cameraP99 = -1.0;
+};
+
+// The summary lines in the rows' order of (method, bias); the leak entries are those at the
+// swept constant bias nearest leakBias.
+std::vector<StabilitySummary> summarizeStability(std::span<const StabilityRow> rows,
+                                                 double leakBias);
+
+// The value of one (sweep, method, kernel, bias, metric) at x, or nullopt.
+std::optional<double> stabilityValue(std::span<const StabilityRow> rows, std::string_view sweep,
+                                     const StabilityMethod& method, std::string_view bias,
+                                     std::string_view metric, double x);
+
+struct StabilitySetup {
+    std::string sceneName;
+    std::string glRenderer;
+    glm::ivec2 frameSize{0, 0};
+    int mapSize = 0;
+    int truthSpp = 0;
+    std::string settings;  // e.g. "constant bias 0.002, cull back, depth 32f"
+};
+
+// Title, setup paragraph, the summary table and the aliasing line.
+std::string stabilityMarkdown(std::span<const StabilityRow> rows, const StabilitySetup& setup,
+                              double constantBias);
+
+}  // namespace pcf

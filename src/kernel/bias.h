@@ -1,0 +1,69 @@
+// bias.h: the bias modes by name (the command line's, the lesson files', DESIGN.md 2), their
+// parameters, and which methods each can combine with. The per-tap math is in
+// shaders/shared/pcf_kernel.h (pcfRefAt, pcfCompareSoft, pcfInterpolatedCompare); the per-lookup
+// part (constant, slope, normal offset) is applied where the normal is known: shaders/scene.frag.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "kernel/pcf.h"
+
+namespace pcf {
+
+// Defaults of the bias parameters, in one place for every command and the lesson files.
+constexpr float DEFAULT_CONSTANT_BIAS = 0.002f;  // light depth units
+constexpr float DEFAULT_SLOPE_BIAS = 0.001f;     // light depth units per unit of tan(theta)
+constexpr float DEFAULT_SLOPE_MAX = 0.01f;       // light depth units
+constexpr float DEFAULT_NORMAL_OFFSET = 1.5f;    // texels
+// Seed 001 ("PCF Shadow Acne" part 2) used the literal 2048 before naming it
+// Z_CMP_CORRECTION_SCALE.
+constexpr float DEFAULT_SOFT_SCALE = 2048.0f;  // 1 / light depth units
+
+// A bias mode and every parameter any mode reads. Every mode but `none` subtracts `constant`
+// from the receiver's depth; the mode says what it does besides:
+//   constant        ref = z - constant
+//   slope           ref = z - min(constant + slope * tan(theta), slopeMax)
+//   normal          the receiver moved along its normal by normalOffset texels * sin(theta)
+//                   before projection, then ref = z' - constant
+//   receiver-plane  ref = z - constant; each tap: ref + dot(dzduv, tap uv - uv)
+//   soft            ref = z - constant; lit = (depth > ref) * saturate((depth - ref) * softScale)
+//   interpolated    ref = z - constant, compared with the bilinearly interpolated depth
+struct BiasParams {
+    int mode = PCF_BIAS_CONSTANT;
+    float constant = DEFAULT_CONSTANT_BIAS;
+    float slope = DEFAULT_SLOPE_BIAS;
+    float slopeMax = DEFAULT_SLOPE_MAX;
+    float normalOffset = DEFAULT_NORMAL_OFFSET;
+    float softScale = DEFAULT_SOFT_SCALE;
+    // receiver-plane: the receiver's d(depth)/d(u, v) at the lookup, as the renderer measured it
+    // (light depth per uv unit). Not a setting: it comes with each pixel.
+    vec2 dzduv{0.0f};
+
+    // What the kernel needs per tap.
+    PcfBias kernelBias() const { return PcfBias(mode, dzduv, softScale); }
+    // The depth every mode but none subtracts first: 0 for none, else `constant`.
+    float baseBias() const { return mode == PCF_BIAS_NONE ? 0.0f : constant; }
+    // The per-lookup bias for a surface at angle theta to the light (cos given): what is
+    // subtracted from z to give ref. Normal offset moves the point instead: baseBias() here.
+    float lookupBias(float cosTheta) const;
+};
+
+// "none", "constant", ... by id (PCF_BIAS_NONE ..), and back.
+std::string_view biasName(int mode);
+std::optional<int> biasFromName(std::string_view name);
+// "none, constant, slope, ..." for error messages.
+std::string biasNameList();
+
+// Why this bias mode cannot combine with this method (one sentence, no trailing period), or
+// nullopt when it can. soft needs the depths in the shader (not hw2x2, pcf-hw, tent);
+// interpolated is a hard comparison (nearest only).
+std::optional<std::string> validateBias(int mode, int method);
+
+// Why a parameter is out of range ("--slope-max must be in [0, 1], got 2"), or nullopt. The
+// names are the command line's with prefix "--" ("--slope-max"), the lesson files' keys with
+// prefix "" ("slope_max").
+std::optional<std::string> validateBiasParams(const BiasParams& b, const std::string& prefix);
+
+}  // namespace pcf

@@ -1,0 +1,93 @@
+// `pcfscope stability`, run as a user runs it: --quick writes the CSV with its documented
+// columns, the table (also on stdout) and the charts; bad sweep parameters exit 2 with nothing
+// written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "analysis/stability_report.h"
+#include "image_read.h"
+#include "run_command.h"
+
+namespace pcf {
+namespace {
+
+namespace fs = std::filesystem;
+
+class StabilityCommand : public ::testing::Test {
+  protected:
+    void SetUp() override { mDir = testutil::makeTempDir("stability"); }
+    void TearDown() override {
+        if (!HasFailure()) fs::remove_all(mDir);
+    }
+    std::string path(const std::string& name) const { return (mDir / name).string(); }
+    fs::path mDir;
+};
+
+TEST_F(StabilityCommand, QuickWritesEveryFile) {
+    std::string out = path("quick");
+    auto r = testutil::runPcfscope("stability --quick --chart-size 640x360 -o " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("stability: ["), std::string::npos) << r.err;  // progress
+
+    std::ifstream csv(out + "/stability.csv");
+    std::string line;
+    ASSERT_TRUE(std::getline(csv, line));
+    EXPECT_EQ(line, "sweep,method,kernel,bias,x_name,x,metric,y");
+    std::set<std::string> sweeps;
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        ++rows;
+        std::vector<std::string> f;
+        std::stringstream s(line);
+        for (std::string field; std::getline(s, field, ',');) f.push_back(field);
+        ASSERT_EQ(f.size(), 8u) << line;
+        sweeps.insert(f[0]);
+        std::stod(f[5]);
+        EXPECT_TRUE(std::isfinite(std::stod(f[7]))) << line;
+    }
+    EXPECT_GT(rows, 100);
+    EXPECT_EQ(sweeps, (std::set<std::string>{"acne", "leak", "shimmer", "precision", "aliasing"}));
+    std::string md = testutil::readAll(out + "/stability.md");
+    EXPECT_NE(md.find("| pcf-gather N=3 | constant |"), std::string::npos) << md;
+    EXPECT_EQ(r.out, md);
+    for (const char* chart :
+         {"stability_acne.png", "stability_leak.png", "stability_shimmer.png"}) {
+        ImageSize size = readImageSize(out + "/" + chart);
+        EXPECT_EQ(size.width, 640) << chart;
+        EXPECT_EQ(size.height, 360) << chart;
+    }
+    ImageSize heat = readImageSize(out + "/aliasing_heatmap.png");
+    EXPECT_EQ(heat.width, 160);
+    EXPECT_EQ(heat.height, 90);
+    // No staging folder left behind.
+    int entries = 0;
+    for (const auto& e : fs::directory_iterator(out)) entries += e.is_regular_file() ? 1 : 100;
+    EXPECT_EQ(entries, 6);
+
+    // Written once: a second run without -f is refused and leaves the files alone.
+    auto again = testutil::runPcfscope("stability --quick --sweep aliasing -o " + out);
+    EXPECT_EQ(again.exitCode, 2);
+    EXPECT_EQ(testutil::readAll(out + "/stability.md"), md);
+}
+
+TEST_F(StabilityCommand, BadSweepParametersExit2WithNothingWritten) {
+    const char* bad[] = {
+        "--sweep acne,wobble",        "--sweep ''",
+        "--methods nearest,blurry",   "--biases constant,huge",
+        "--methods tent --kernels 4", "--size 8x8",
+    };
+    for (const char* args : bad) {
+        std::string out = path("bad");
+        auto r = testutil::runPcfscope(std::string("stability --quick ") + args + " -o " + out);
+        EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
+        EXPECT_EQ(testutil::lineCount(r.err), 1) << args << ": " << r.err;
+        EXPECT_EQ(r.err.rfind("pcfscope: ", 0), 0u) << args << ": " << r.err;
+        EXPECT_FALSE(fs::exists(out)) << args;
+    }
+}
+
+}  // namespace
+}  // namespace pcf
