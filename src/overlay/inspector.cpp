@@ -148,7 +148,9 @@ void drawNeighbourhood(Canvas& c, const InspectorLayout& l, const InspectorModel
             if (tap && cell >= 30.0f) {
                 bool soft = tap->lit != 0.0f && tap->lit != 1.0f;  // the soft comparison
                 c.text({r.centre().x, r.y + cell * 0.30f},
-                       soft ? fixed(tap->lit, 2) : tap->lit >= 0.5f ? "1" : "0",
+                       soft               ? fixed(tap->lit, 2)
+                       : tap->lit >= 0.5f ? "1"
+                                          : "0",
                        {FontFace::Mono, soft ? big * 0.6f : big, ink, TextAlign::Center});
             }
             // The tap's own ref where the bias gave it one (receiver plane).
