@@ -123,7 +123,8 @@ std::string biasSentence(const Trace& tr) {
             s << "Receiver-plane bias: ref = z - " << num(b.constant) << " = " << num(tr.ref)
               << " holds at uv only. The receiver's depth changes across the map by dz/duv = "
               << pair(b.dzduv)
-              << " (from the renderer's screen-space derivatives), so each tap compares against "
+              << " (the receiver's slope in the map; the renderer derives it from screen-space "
+                 "derivatives), so each tap compares against "
                  "the plane's own depth where it reads: ref + dot(dz/duv, tap uv - uv).";
             break;
         case PCF_BIAS_SOFT:
