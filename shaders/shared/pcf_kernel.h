@@ -194,7 +194,11 @@ PCF_MAP_FN float pcfFetchCompare(Map map, ivec2 texel, PcfRef ref, float weight)
     ivec2 size = mapSize(map);
     ivec2 t = pcfClampTexel(texel, size);
     float depth = fetchDepth(map, t);
-    float tapRef = pcfRefAt(ref, pcfTexelCentreUv(texel, size));
+    // The texel's centre only where the plane needs it: the other modes pay nothing per tap.
+    float tapRef = ref.ref;
+    if (ref.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
+        tapRef = pcfRefAt(ref, pcfTexelCentreUv(texel, size));
+    }
     float lit = pcfCompareBiased(depth, tapRef, ref.bias);
     pcfTap(map, t, depth, tapRef, lit, weight);
     return lit;
