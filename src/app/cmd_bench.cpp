@@ -157,7 +157,8 @@ int runBenchCommand(const BenchCommandOptions& o) {
     }
     ChartTiming timing = o.timing == "scene" ? ChartTiming::Scene : ChartTiming::Lookup;
     std::optional<BiasMode> bias = biasModeFromName(o.bias);
-    if (!bias) throw UsageError("unknown bias mode '" + o.bias + "' (known: none, constant)");
+    if (!bias)
+        throw UsageError("unknown bias mode '" + o.bias + "' (known: " + biasNameList() + ")");
     options.base.bias = *bias;
     requireRange("--constant-bias", o.constantBias, -1.0f, 1.0f);
     options.base.constantBias = o.constantBias;
