@@ -186,9 +186,9 @@ std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& option
         row.timer = renderer.timeCameraPass(s, 1).timer;
         lookupPass.draw(s.pcfParams(), s.rotatePerPixel);
         glFinish();
-        row.cpuNsPerPixel =
-            timeCpuKernel(map(maps, p.mapSize), lookups, s.pcfParams(), options.cpuPasses)
-                .nsPerPixel;
+        row.cpuNsPerPixel = timeCpuKernel(map(maps, p.mapSize), lookups, s.pcfParams(),
+                                          options.cpuPasses, options.cpuThreads)
+                                .nsPerPixel;
         row.cpuPixels = static_cast<int>(lookups.size());
         row.texelReads = fetchCounts(p.method, s.kernel).texels;
         if (context.onPoint) context.onPoint(row, visibility, regions);

@@ -40,6 +40,7 @@ struct BenchOptions {
     int gpuRepeats = 9;      // timing rounds: samples per point of each pass (median, IQR)
     int cpuLookups = 32768;  // receiver pixels the CPU kernel is timed on, at most
     int cpuPasses = 3;       // passes over them (median)
+    int cpuThreads = 0;      // threads sharing each pass (0 = all cores)
     // Bias, depth format, culling (method, kernel, map size and frame size are the sweep's).
     // The renderer's defaults but for culling: the map holds BACK faces (front faces culled),
     // which keeps shadow acne, a bias problem, off the single-sided ground and the lit faces

@@ -162,10 +162,11 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
             "query would measure submission only)";
     }
     md +=
-        ". CPU time is the shared kernel's batch path (`filterVisibility`), one thread, the "
-        "median of " +
-        std::to_string(setup.cpuPasses) + " passes over " + std::to_string(setup.cpuLookups) +
-        " receiver pixels' light-space lookups. ";
+        ". CPU time is the shared kernel's batch path (`filterVisibility`), wall time per "
+        "lookup with " +
+        std::to_string(setup.cpuThreads) + " thread" + (setup.cpuThreads == 1 ? "" : "s") +
+        " sharing each pass, the median of " + std::to_string(setup.cpuPasses) + " passes over " +
+        std::to_string(setup.cpuLookups) + " receiver pixels' light-space lookups. ";
     md += "Errors are of visibility against the ray-cast ground truth (" +
           std::to_string(setup.truthSpp) + "x" + std::to_string(setup.truthSpp) +
           " first-pass samples per pixel, then " + std::to_string(setup.truthRefined) +

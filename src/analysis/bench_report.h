@@ -40,6 +40,7 @@ struct BenchSetup {
     int gpuRepeats = 0;
     int cpuLookups = 0;  // receiver pixels the CPU kernel was timed on
     int cpuPasses = 0;
+    int cpuThreads = 1;
     int truthSpp = 0;
     int comparedPixels = 0;
     int edgePixels = 0;

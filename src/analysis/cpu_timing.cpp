@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
+#include <thread>
 
+#include "analysis/ground_truth.h"
 #include "render/gpu_timer.h"
 
 namespace pcf {
@@ -25,8 +27,11 @@ std::vector<glm::vec4> receiverLookups(std::span<const float> lightSpace, size_t
 }
 
 CpuTiming timeCpuKernel(const ShadowMap& map, std::span<const glm::vec4> lookups,
-                        const PcfParams& params, int passes) {
+                        const PcfParams& params, int passes, int threads) {
     if (passes < 1) throw std::invalid_argument("timeCpuKernel: passes must be at least 1");
+    if (threads < 0) throw std::invalid_argument("timeCpuKernel: threads must be >= 0");
+    size_t workers = std::min(static_cast<size_t>(resolveThreadCount(threads)),
+                              std::max<size_t>(lookups.size(), 1));
     CpuTiming result;
     if (lookups.empty()) return result;
     double sink = 0.0;
@@ -36,12 +41,28 @@ CpuTiming timeCpuKernel(const ShadowMap& map, std::span<const glm::vec4> lookups
     }
     std::vector<double> nsPerPixel;
     for (int p = 0; p < passes; ++p) {
-        double sum = 0.0;
+        std::vector<double> sums(workers, 0.0);
+        auto slice = [&](size_t w) {
+            size_t lo = lookups.size() * w / workers;
+            size_t hi = lookups.size() * (w + 1) / workers;
+            double s = 0.0;
+            for (size_t k = lo; k < hi; ++k) {
+                s += filterVisibility(map, glm::vec2(lookups[k]), lookups[k].z, params);
+            }
+            sums[w] = s;
+        };
         auto start = std::chrono::steady_clock::now();
-        for (const glm::vec4& l : lookups) {
-            sum += filterVisibility(map, glm::vec2(l), l.z, params);
+        if (workers == 1) {
+            slice(0);
+        } else {
+            std::vector<std::thread> pool;
+            for (size_t w = 1; w < workers; ++w) pool.emplace_back(slice, w);
+            slice(0);
+            for (std::thread& t : pool) t.join();
         }
         auto end = std::chrono::steady_clock::now();
+        double sum = 0.0;
+        for (double s : sums) sum += s;
         nsPerPixel.push_back(std::chrono::duration<double, std::nano>(end - start).count() /
                              static_cast<double>(lookups.size()));
         result.checksum = sum;

@@ -17,14 +17,17 @@ namespace pcf {
 std::vector<glm::vec4> receiverLookups(std::span<const float> lightSpace, size_t maxCount);
 
 struct CpuTiming {
-    double nsPerPixel = 0.0;  // median over the passes, steady clock, one thread
-    double checksum = 0.0;    // sum of the visibilities of one pass (keeps the work observable)
+    // median over the passes of wall time / lookups, steady clock: with T threads, the
+    // machine's throughput (T threads share the lookups), not one lookup's latency
+    double nsPerPixel = 0.0;
+    double checksum = 0.0;  // sum of the visibilities of one pass (keeps the work observable)
 };
 
 // Runs filterVisibility over all lookups `passes` times (after one warm-up pass over up to 1024
-// of them) and reports the median time per lookup. One thread: the cost of the math, not of the
-// machine's core count. Throws std::invalid_argument when passes < 1.
+// of them) and reports the median time per lookup. threads: workers sharing each pass in equal
+// contiguous slices (0 = all cores, ground_truth.h resolveThreadCount); 1 gives the cost of
+// the math on one core. Throws std::invalid_argument when passes < 1 or threads < 0.
 CpuTiming timeCpuKernel(const ShadowMap& map, std::span<const glm::vec4> lookups,
-                        const PcfParams& params, int passes = 3);
+                        const PcfParams& params, int passes = 3, int threads = 1);
 
 }  // namespace pcf

@@ -20,9 +20,11 @@
 //    - a scanline at height v in [0,1] is walked at x = i / 16 (i = 0..16); between two walk
 //      points whose states differ the crossing is found by bisection against the exact ray cast
 //      to 1/4096 of a pixel; lit(v) and on(v) are the lit and on-object lengths of the scanline.
-//    - the pixel's integral over v in [0,1] is an adaptive trapezoid rule: panels [a, b] with
-//      scanlines at a, the middle m and b; per panel a coarse estimate (trapezoid on a, b) and
-//      a fine one (on a, m, b), for lit and for on. Start with 4 panels (9 scanlines), then
+//    - the pixel's integral over v in [0,1] is an adaptive trapezoid rule (the step-halving error
+//      estimate of Press et al., "Numerical Recipes", 3rd ed. 2007, 4.2 qtrap, applied per panel
+//      as in McKeeman, "Adaptive numerical integration by Simpson's rule", CACM 1962): panels [a,
+//      b] with scanlines at a, the middle m and b; per panel a coarse estimate (trapezoid on a, b)
+//      and a fine one (on a, m, b), for lit and for on. Start with 4 panels (9 scanlines), then
 //      split the panel whose estimates differ most (two more scanlines, at its quarters) until
 //        bound = (sum over panels of 2 |fine - coarse| for lit and for on
 //                 + 2 c / 4096) / on_total

@@ -152,6 +152,7 @@ int runBenchCommand(const BenchCommandOptions& o) {
     if (!o.quick || o.given("--repeats")) options.gpuRepeats = o.repeats;
     requireIntRange("--repeats", options.gpuRepeats, 1, 1000);
     requireIntRange("--threads", o.threads, 0, 1024);
+    options.cpuThreads = o.threads;
     if (o.timing != "scene" && o.timing != "lookup") {
         throw UsageError("unknown --timing '" + o.timing + "' (known: scene, lookup)");
     }
@@ -267,6 +268,7 @@ int runBenchCommand(const BenchCommandOptions& o) {
     setup.gpuRepeats = options.gpuRepeats;
     setup.cpuLookups = rows.empty() ? 0 : rows.front().cpuPixels;
     setup.cpuPasses = options.cpuPasses;
+    setup.cpuThreads = resolveThreadCount(o.threads);
     setup.truthSpp = spp;
     setup.comparedPixels = measuredOver.comparedCount;
     setup.edgePixels = measuredOver.edgeCount;
@@ -348,7 +350,8 @@ Command addBenchCommand(CLI::App& app) {
                     "the chart's time axis: lookup (default: the filter alone, a bare lookup "
                     "pass) or scene (the camera pass)");
     sub->add_option("--threads", o->threads,
-                    "CPU threads for the ground truth (0 = all cores, the default)");
+                    "CPU threads for the ground truth and the CPU kernel timing (0 = all cores, "
+                    "the default)");
     sub->add_option("--bias", o->bias, "bias mode: none, constant (default constant)");
     sub->add_option("--constant-bias", o->constantBias,
                     "constant bias in light depth units (ref = z - bias; default 0.002)");
