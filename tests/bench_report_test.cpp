@@ -60,8 +60,8 @@ TEST(BenchReport, BadCsvNamesTheLine) {
         }
         return std::string("no error");
     };
-    EXPECT_EQ(message("method,kernel\n"), "b.csv:1: not a bench.csv header: expected '" +
-                                               std::string(BENCH_CSV_HEADER) + "'");
+    EXPECT_EQ(message("method,kernel\n"),
+              "b.csv:1: not a bench.csv header: expected '" + std::string(BENCH_CSV_HEADER) + "'");
     EXPECT_EQ(message(header + "nearest,0,256\n"), "b.csv:2: expected 11 fields, got 3");
     EXPECT_EQ(message(header + "blur,0,256,1,1,1,0,0,0,0,t\n"), "b.csv:2: unknown method 'blur'");
     EXPECT_EQ(message(header + "nearest,0,256,x,1,1,0,0,0,0,t\n"),
@@ -69,6 +69,14 @@ TEST(BenchReport, BadCsvNamesTheLine) {
     EXPECT_EQ(message(header + "nearest,0,256,nan,1,1,0,0,0,0,t\n"),
               "b.csv:2: field 4 'nan' is not a number");
     EXPECT_EQ(message(""), "b.csv:1: empty file: expected a bench.csv header");
+    // Found by the chart_csv fuzz target: a kernel of 6.7e122 was cast to int (undefined
+    // behaviour). Counts and sizes must be whole numbers an int holds.
+    EXPECT_EQ(message(header + "pcf-naive,6.66667e+122,256,1,1,1,0,0,0,0,t\n"),
+              "b.csv:2: field 2 '6.66667e+122' is not a whole number");
+    EXPECT_EQ(message(header + "nearest,0,1e10,1,1,1,0,0,0,0,t\n"),
+              "b.csv:2: field 3 '1e10' is not a whole number");
+    EXPECT_EQ(message(header + "nearest,0,256,1,1,2.5,0,0,0,0,t\n"),
+              "b.csv:2: field 6 '2.5' is not a whole number");
 }
 
 }  // namespace

@@ -102,6 +102,17 @@ TEST_F(CliInputChecks, BenchRefusesOneSamplePerPixelBeforeAnyProgress) {
     expectRefused("bench --quick --spp 1 -o out", "--spp 1 is out of range (2..");
 }
 
+// Found by the depth_image fuzz target: a PNG cut inside a text chunk made libpng print its own
+// line before ours. The refusal is still one line.
+TEST_F(CliInputChecks, ABrokenPngMapIsOneLineToo) {
+    std::filesystem::copy_file(PCFSCOPE_SOURCE_DIR
+                               "/tests/fuzz/corpus/depth_image/png-truncated-text.png",
+                               mDir / "cut.png");
+    mKeep = {"cut.png"};
+    expectRefused("trace --map cut.png --uv 0.5,0.5 --z 0.5",
+                  "cut.png: cannot read image (Read error: hit end of file");
+}
+
 TEST_F(CliInputChecks, HugeDepthImageHeadersAreRefusedBeforeAllocating) {
     // A small EXR whose header claims 20000 x 20000 texels (1.6 GB as floats).
     writeDepthImage(path("huge.exr"), ShadowMap(16, 16, 0.5f));
