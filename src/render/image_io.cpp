@@ -188,7 +188,7 @@ namespace {
 // libpng prints its own "libpng error: ..." line on stderr before OpenImageIO reports the same
 // problem to us, which would make a bad map two lines. While a depth image is read, stderr goes
 // to /dev/null; the message still reaches the user through OIIO's error, in our one line.
-// Not in sanitizer builds, whose reports of a bad read inside a decoder must stay visible.
+// Not in sanitizer builds: a report from inside a decoder (what fuzzing looks for) must show.
 class QuietStderr {
   public:
     QuietStderr() {
