@@ -81,6 +81,14 @@ TEST(BenchReport, BadCsvNamesTheLine) {
     EXPECT_EQ(old[0].gpuMsIqr, 0.0);
     EXPECT_FALSE(old[0].noisy);
     EXPECT_EQ(message(""), "b.csv:1: empty file: expected a bench.csv header");
+    // Found by the chart_csv fuzz target: a kernel of 6.7e122 was cast to int (undefined
+    // behaviour). Counts and sizes must be whole numbers an int holds.
+    EXPECT_EQ(message(header + "pcf-naive,6.66667e+122,256,1,1,1,0,0,0,0,t,0,1,0,0\n"),
+              "b.csv:2: field 2 '6.66667e+122' is not a whole number");
+    EXPECT_EQ(message(header + "nearest,0,1e10,1,1,1,0,0,0,0,t,0,1,0,0\n"),
+              "b.csv:2: field 3 '1e10' is not a whole number");
+    EXPECT_EQ(message(header + "nearest,0,256,1,1,2.5,0,0,0,0,t,0,1,0,0\n"),
+              "b.csv:2: field 6 '2.5' is not a whole number");
 }
 
 }  // namespace

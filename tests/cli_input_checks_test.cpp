@@ -102,6 +102,26 @@ TEST_F(CliInputChecks, BenchRefusesOneSamplePerPixelBeforeAnyProgress) {
     expectRefused("bench --quick --spp 1 -o out", "--spp 1 is out of range (2..");
 }
 
+// Found by the depth_image fuzz target: a PNG cut inside a text chunk made libpng print its own
+// line before ours. The refusal is still one line.
+TEST_F(CliInputChecks, ABrokenPngMapIsOneLineToo) {
+    // The corpus file's first byte is the fuzz target's choice of reader; the PNG follows.
+    std::string png = testutil::readAll(PCFSCOPE_SOURCE_DIR
+                                        "/tests/fuzz/corpus/depth_image/png-truncated-text.png");
+    std::ofstream(mDir / "cut.png", std::ios::binary) << png.substr(1);
+    mKeep = {"cut.png"};
+#if defined(__SANITIZE_ADDRESS__)
+    // Sanitizer builds let libpng's line through (image_io.cpp QuietStderr): ours is the last.
+    auto r = runPcfscope("trace --map cut.png --uv 0.5,0.5 --z 0.5", "cd " + mDir.string() + " &&");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("\npcfscope: cut.png: cannot read image (Read error"), std::string::npos)
+        << r.err;
+#else
+    expectRefused("trace --map cut.png --uv 0.5,0.5 --z 0.5",
+                  "cut.png: cannot read image (Read error: hit end of file");
+#endif
+}
+
 TEST_F(CliInputChecks, HugeDepthImageHeadersAreRefusedBeforeAllocating) {
     // A small EXR whose header claims 20000 x 20000 texels (1.6 GB as floats).
     writeDepthImage(path("huge.exr"), ShadowMap(16, 16, 0.5f));

@@ -64,10 +64,10 @@ TEST(InputLimits, TitlesCountCharactersNotBytes) {
 TEST(InputLimits, StepTitleAndTextLimitsNameTheStep) {
     std::string longTitle(MAX_TITLE_CHARS + 5, 's');
     EXPECT_EQ(lessonError(lessonWith("L", 2, longTitle, "x")),
-              "limits.toml:5: step 1 title is 125 characters; the limit is 120");
+              "limits.toml:4: step 1 title is 125 characters; the limit is 120");
     EXPECT_EQ(lessonError(lessonWith("L", 2, "s", std::string(MAX_STEP_TEXT_CHARS, 'x'))), "");
     EXPECT_EQ(lessonError(lessonWith("L", 2, "s", std::string(MAX_STEP_TEXT_CHARS + 1, 'x'))),
-              "limits.toml:6: step 1 text is 4001 characters; the limit is 4000");
+              "limits.toml:5: step 1 text is 4001 characters; the limit is 4000");
 }
 
 TEST(InputLimits, StepCount) {
@@ -130,7 +130,7 @@ TEST_F(InputFiles, TooLargeFilesAreRefusedBeforeParsing) {
         ADD_FAILURE() << "accepted";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
-                  big + ": is 1048580 bytes; the limit for an input file is 1048576");
+                  big + ": is 1048579 bytes; the limit for an input file is 1048576");
     }
     // A link to a lesson is a lesson.
     fs::create_symlink(PCFSCOPE_SOURCE_DIR "/lessons/01-hard-shadows.toml", path("link.toml"));

@@ -81,13 +81,22 @@ std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& so
             }
             return v;
         };
+        // Counts and sizes: a whole number an int holds (a cast of 1e30 is undefined behaviour).
+        auto integer = [&](size_t k) {
+            double v = number(k);
+            if (v != std::floor(v) || std::fabs(v) > 1.0e9) {
+                throw InputError(source, line, "field " + std::to_string(k + 1) + " '" +
+                                                   fields[k] + "' is not a whole number");
+            }
+            return static_cast<int>(v);
+        };
         std::optional<int> method = methodFromName(fields[0]);
         if (!method) throw InputError(source, line, "unknown method '" + fields[0] + "'");
         BenchRow r;
-        r.point = {*method, static_cast<int>(number(1)), static_cast<int>(number(2))};
+        r.point = {*method, integer(1), integer(2)};
         r.gpuMs = number(3);
         r.cpuNsPerPixel = number(4);
-        r.texelReads = static_cast<int>(number(5));
+        r.texelReads = integer(5);
         r.error.rmse = number(6);
         r.error.maxErr = number(7);
         r.error.edgeRmse = number(8);
