@@ -64,6 +64,11 @@ struct StabilityMethod {
     bool operator==(const StabilityMethod&) const = default;
 };
 
+// Whether the bias mode can combine with the method (kernel/bias.h's validateBias): the sweeps
+// skip the pairs that cannot exist (soft with a method whose comparison the texture unit makes,
+// interpolated with anything but nearest).
+bool stabilityPairExists(const StabilityMethod& m, BiasMode bias);
+
 // "pcf-gather N=5" or "nearest".
 std::string stabilityMethodName(const StabilityMethod& m);
 
