@@ -615,6 +615,7 @@ std::string stabilityMethodName(const StabilityMethod& m) {
 StabilityOptions quickStabilityOptions() {
     StabilityOptions o;
     o.methods = {{PCF_NEAREST, 0}, {PCF_GATHER, 3}};
+    o.biases = {BiasMode::None, BiasMode::Constant};
     o.frameSize = {160, 90};
     o.mapSize = 128;
     o.truthSpp = 1;
