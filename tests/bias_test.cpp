@@ -300,6 +300,7 @@ TEST_F(BiasCli, CombinationsThatCannotExistExitTwoAndWriteNothing) {
         {"trace --example --method tent --bias soft", "tent gets its comparisons"},
         {"trace --example --method poisson --bias interpolated", "use --method nearest"},
         {"trace --example --bias 0.002", "unknown bias mode '0.002'"},
+        {"trace --example --constant-bias 0.01", "--constant-bias needs --bias NAME"},
         {"trace --example --bias constant --dzduv 1,2", "--dzduv is for --bias receiver-plane"},
         {"trace --example --bias slope --angle 95", "--angle 95 is out of range"},
     };

@@ -21,7 +21,7 @@ namespace {
 constexpr float PARITY_TOLERANCE = 1e-5f;
 
 class GpuParity : public ::testing::Test {
-  protected:
+protected:
     static void SetUpTestSuite() { sContext = createHeadlessContext(); }
     static void TearDownTestSuite() { sContext.reset(); }
     static std::unique_ptr<GlContext> sContext;
@@ -81,8 +81,9 @@ TEST_F(GpuParity, RandomLookupsOnRandomMapsMatchTheCpuKernel) {
                     float cpu = filterVisibility(map, glm::vec2(lookups[k]), lookups[k].z, p);
                     worst = std::max(worst, std::fabs(cpu - got[k]));
                 }
-                EXPECT_LE(worst, PARITY_TOLERANCE) << describe(prm) << " map " << size.x << "x"
-                                                   << size.y << (rotate ? " rotated" : "");
+                EXPECT_LE(worst, PARITY_TOLERANCE)
+                    << describe(prm) << " map " << size.x << "x" << size.y
+                    << (rotate ? " rotated" : "");
             }
         }
     }
@@ -111,8 +112,8 @@ TEST_F(GpuParity, GatherComponentOrderTapByTap) {
                 std::vector<float> got = gpu.run(map, lookups, 2, makeParams(method, 1), false);
                 EXPECT_NEAR(got[0], weights[dj][di], 1e-5f)
                     << methodInfo(method).name << " lit texel " << di << "," << dj;
-                EXPECT_NEAR(filterVisibility(map, uv, 0.5f, makeParams(method, 1)), weights[dj][di],
-                            1e-6f);
+                EXPECT_NEAR(filterVisibility(map, uv, 0.5f, makeParams(method, 1)),
+                            weights[dj][di], 1e-6f);
             }
         }
     }
@@ -155,8 +156,8 @@ TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
                         if (vis[k] < 0.5f) ++shadowed;
                     }
                 }
-                std::string what =
-                    std::string(preset) + " map " + std::to_string(mapSize) + " " + describe(prm);
+                std::string what = std::string(preset) + " map " + std::to_string(mapSize) +
+                                   " " + describe(prm);
                 EXPECT_LE(worst, PARITY_TOLERANCE) << what;
                 EXPECT_GT(receivers, s.frameSize.x * s.frameSize.y / 4) << what;
                 EXPECT_GT(shadowed, 50) << what;  // there is a shadow to agree about

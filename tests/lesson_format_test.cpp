@@ -245,16 +245,10 @@ TEST(LessonFormat, UnknownNamesAreRefused) {
               "bad.toml:6: unknown bias mode 'sloped' (known: none, constant, slope, normal, "
               "receiver-plane, soft, interpolated)");
     // A mode the step's method cannot take is blamed on the line that set the mode.
-    EXPECT_EQ(errorOf(withStep("method = \"tent\"\nbias = \"soft\"\n"))
-                  .rfind("bad.toml:7: step 1: "
-                         "bias soft compares",
-                         0),
-              0u);
-    EXPECT_EQ(errorOf(withStep("slope_max = 3\n"))
-                  .rfind("bad.toml:6: step 1 slope_max must be "
-                         "in [0, 1], got 3",
-                         0),
-              0u);
+    e = errorOf(withStep("method = \"tent\"\nbias = \"soft\"\n"));
+    EXPECT_EQ(e.rfind("bad.toml:7: step 1: bias soft compares", 0), 0u) << e;
+    e = errorOf(withStep("slope_max = 3\n"));
+    EXPECT_EQ(e, "bad.toml:6: step 1 slope_max must be in [0, 1], got 3");
     EXPECT_EQ(errorOf(withStep("cull = \"both\"\n")),
               "bad.toml:6: unknown cull mode 'both' (known: back, front, none)");
     EXPECT_EQ(errorOf(withStep("depth_format = \"32\"\n")),
@@ -416,8 +410,7 @@ chart = "nowhere/bench.csv"
         FAIL() << "no error";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()).rfind("/tmp/m.toml:6: step 1 chart 'nowhere/bench.csv' "
-                                              "not found",
-                                              0),
+                                              "not found", 0),
                   0u)
             << e.what();
     }

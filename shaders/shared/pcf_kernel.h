@@ -103,8 +103,8 @@ struct PcfBias {
 
 // A lookup's comparison depth with what varies it per tap.
 struct PcfRef {
-    float ref;     // the lookup's ref, light depth [0,1], after the per-lookup bias
-    vec2 uv;       // the lookup's uv: the receiver plane passes through (uv, ref)
+    float ref;  // the lookup's ref, light depth [0,1], after the per-lookup bias
+    vec2 uv;    // the lookup's uv: the receiver plane passes through (uv, ref)
     PcfBias bias;
 };
 
@@ -114,9 +114,7 @@ PCF_FN PcfRef pcfPlainRef(float ref, vec2 uv) {
 }
 
 // The centre of texel t in uv (DESIGN.md 2): ((i + 0.5) / W, (j + 0.5) / H).
-PCF_FN vec2 pcfTexelCentreUv(ivec2 t, ivec2 size) {
-    return (vec2(t) + vec2(0.5f)) / vec2(size);
-}
+PCF_FN vec2 pcfTexelCentreUv(ivec2 t, ivec2 size) { return (vec2(t) + vec2(0.5f)) / vec2(size); }
 
 // Receiver-plane depth bias (Isidoro, "Shadow Mapping: GPU-based Tips and Techniques", GDC
 // 2006): the receiver is taken to be the plane through (uv, ref) with slope dz/duv, so a tap at

@@ -149,7 +149,8 @@ int runBenchCommand(const BenchCommandOptions& o) {
     requireIntRange("--repeats", options.gpuRepeats, 1, 1000);
     requireIntRange("--threads", o.threads, 0, 1024);
     std::optional<BiasMode> bias = biasModeFromName(o.bias);
-    if (!bias) throw UsageError("unknown bias mode '" + o.bias + "' (known: none, constant)");
+    if (!bias)
+        throw UsageError("unknown bias mode '" + o.bias + "' (known: " + biasNameList() + ")");
     options.base.bias = *bias;
     requireRange("--constant-bias", o.constantBias, -1.0f, 1.0f);
     options.base.constantBias = o.constantBias;

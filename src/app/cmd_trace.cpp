@@ -30,10 +30,11 @@ struct TraceOptions {
     float slopeMax = DEFAULT_SLOPE_MAX;
     float normalOffset = DEFAULT_NORMAL_OFFSET;
     float softScale = DEFAULT_SOFT_SCALE;
-    float angleDeg = 0.0f;   // slope: the angle between the receiver's normal and the light
-    std::string dzduv;       // receiver-plane: "DU,DV"
+    float angleDeg = 0.0f;  // slope: the angle between the receiver's normal and the light
+    std::string dzduv;      // receiver-plane: "DU,DV"
     CLI::Option* angleOption = nullptr;
     CLI::Option* dzduvOption = nullptr;
+    CLI::App* sub = nullptr;  // to ask which bias options were given
     std::string method = "bilinear2x2";
     int kernel = 3;
     float radius = 1.0f;
@@ -71,6 +72,15 @@ int runTrace(const TraceOptions& o) {
     bias.normalOffset = o.normalOffset;
     bias.softScale = o.softScale;
     if (auto why = validateBiasParams(bias, "--")) throw UsageError(*why);
+    // trace's default mode is none: a parameter given without a mode would do nothing.
+    if (o.sub->count("--bias") == 0) {
+        for (const char* p : {"--constant-bias", "--slope-bias", "--slope-max", "--normal-offset",
+                              "--soft-scale"}) {
+            if (o.sub->count(p) > 0) {
+                throw UsageError(std::string(p) + " needs --bias NAME (trace's default is none)");
+            }
+        }
+    }
     if (auto why = validateBias(bias.mode, *method)) throw UsageError(*why);
     requireRange("--angle", o.angleDeg, 0.0f, 90.0f);
     if (o.angleOption->count() > 0 && bias.mode != PCF_BIAS_SLOPE) {
@@ -126,6 +136,7 @@ Command addTraceCommand(CLI::App& app) {
     sub->add_flag("--example", o->example,
                   "use the built-in 8x8 example map (default lookup: seed 000's 0.8 example)");
     sub->add_option("--uv", o->uv, "shadow-map coordinates U,V in [0,1]");
+    o->sub = sub;
     o->zOption = sub->add_option("--z", o->z, "receiver depth in [0,1] as the light sees it");
     addBiasOptions(sub, o->bias, o->constantBias, o->slopeBias, o->slopeMax, o->normalOffset,
                    o->softScale);
@@ -134,8 +145,9 @@ Command addTraceCommand(CLI::App& app) {
         "slope: angle in degrees between the receiver's normal and the light (default 0)");
     o->dzduvOption = sub->add_option(
         "--dzduv", o->dzduv,
-        "receiver-plane: the receiver's DU,DV = d(depth)/d(u, v) (render --raw writes "
-        "dzduv.exr); normal: give --uv and --z of the point already moved");
+        "receiver-plane: the receiver's DU,DV = d(depth)/d(u, v) (render --raw writes them in "
+        "dzduv.exr). For --bias normal give --uv and --z of the point already moved "
+        "(lightspace.exr holds them)");
     sub->add_option("--method", o->method, "method id (see `pcfscope methods`)");
     o->kernelOption = sub->add_option("--kernel", o->kernel, "kernel size N (1..8; tent: 3, 5, 7)");
     o->radiusOption = sub->add_option("--radius", o->radius, "poisson: disk radius in texels");

@@ -4,9 +4,9 @@
 
 #include "app/cli_util.h"
 #include "app/session.h"
-#include "lesson/lesson.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "lesson/lesson.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"
 
@@ -80,7 +80,8 @@ RenderSettings RenderOptions::settings() const {
     if (auto why = validateParams(s.pcfParams())) throw UsageError(*why);
     if (use("--bias")) {
         std::optional<BiasMode> b = biasModeFromName(bias);
-        if (!b) throw UsageError("unknown bias mode '" + bias + "' (known: " + biasNameList() + ")");
+        if (!b)
+            throw UsageError("unknown bias mode '" + bias + "' (known: " + biasNameList() + ")");
         s.bias = *b;
     }
     if (use("--constant-bias")) s.constantBias = constantBias;

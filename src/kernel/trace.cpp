@@ -101,8 +101,8 @@ void addStep(Trace& tr, std::string title, std::string text) {
 std::string biasSentence(const Trace& tr) {
     const BiasParams& b = tr.bias;
     std::ostringstream s;
-    std::string moved = "(z " + std::string(tr.ref < tr.z ? "- " : "+ ") +
-                        num(std::fabs(tr.z - tr.ref)) + ")";
+    std::string moved =
+        "(z " + std::string(tr.ref < tr.z ? "- " : "+ ") + num(std::fabs(tr.z - tr.ref)) + ")";
     switch (b.mode) {
         case PCF_BIAS_NONE:
             s << "No bias: the comparison depth is ref = z = " << num(tr.ref) << ".";
@@ -123,7 +123,8 @@ std::string biasSentence(const Trace& tr) {
             s << "Receiver-plane bias: ref = z - " << num(b.constant) << " = " << num(tr.ref)
               << " holds at uv only. The receiver's depth changes across the map by dz/duv = "
               << pair(b.dzduv)
-              << " (from the renderer's screen-space derivatives), so each tap compares against "
+              << " (the receiver's slope in the map; the renderer derives it from screen-space "
+                 "derivatives), so each tap compares against "
                  "the plane's own depth where it reads: ref + dot(dz/duv, tap uv - uv).";
             break;
         case PCF_BIAS_SOFT:
@@ -187,7 +188,8 @@ void stepPerTapRef(Trace& tr) {
             break;
         }
     }
-    s << "\n" << tapsChangedByPlane(tr) << " of " << tr.taps.size()
+    s << "\n"
+      << tapsChangedByPlane(tr) << " of " << tr.taps.size()
       << " comparisons come out otherwise than with one ref for every tap.";
     addStep(tr, "Each tap's own ref", s.str());
 }
@@ -198,8 +200,7 @@ void explainInterpolated(Trace& tr) {
     s << "The four texels at base " << pair(tr.pos.base) << " are not compared one by one; their "
       << "depths are lerped by frac " << pair(tr.pos.frac) << ":";
     for (const TapRecord& t : tr.taps) {
-        s << "\n  texel " << pair(t.texel) << ": depth " << num(t.depth) << " * "
-          << num(t.weight);
+        s << "\n  texel " << pair(t.texel) << ": depth " << num(t.depth) << " * " << num(t.weight);
         depth += t.weight * t.depth;
     }
     s << "\ninterpolated depth = " << num(depth) << "; ref " << num(tr.ref)
@@ -570,9 +571,10 @@ std::string traceToJson(const Trace& tr) {
     s << "{\"method\":" << jstr(std::string(methodInfo(tr.params.method).name))
       << ",\"kernel\":" << tr.params.kernel << ",\"radius\":" << jnum(tr.params.radius)
       << ",\"map_size\":" << jvec(tr.mapSize) << ",\"uv\":" << jvec(tr.uv)
-      << ",\"z\":" << jnum(tr.z) << ",\"ref\":" << jnum(tr.ref) << ",\"bias\":{\"mode\":"
-      << jstr(std::string(biasName(tr.bias.mode))) << ",\"constant\":" << jnum(tr.bias.constant)
-      << ",\"slope\":" << jnum(tr.bias.slope) << ",\"slope_max\":" << jnum(tr.bias.slopeMax)
+      << ",\"z\":" << jnum(tr.z) << ",\"ref\":" << jnum(tr.ref)
+      << ",\"bias\":{\"mode\":" << jstr(std::string(biasName(tr.bias.mode)))
+      << ",\"constant\":" << jnum(tr.bias.constant) << ",\"slope\":" << jnum(tr.bias.slope)
+      << ",\"slope_max\":" << jnum(tr.bias.slopeMax)
       << ",\"normal_offset\":" << jnum(tr.bias.normalOffset)
       << ",\"soft_scale\":" << jnum(tr.bias.softScale) << ",\"dzduv\":" << jvec(tr.bias.dzduv)
       << ",\"per_tap\":"
@@ -582,13 +584,12 @@ std::string traceToJson(const Trace& tr) {
                   tr.params.method == PCF_TENT
               ? "\"per hardware tap, at its uv\""
               : "\"per texel, at its centre\"")
-      << "},\"texel\":" << jvec(tr.pos.p)
-      << ",\"base\":" << jvec(tr.pos.base) << ",\"frac\":" << jvec(tr.pos.frac) << ",\"taps\":[";
+      << "},\"texel\":" << jvec(tr.pos.p) << ",\"base\":" << jvec(tr.pos.base)
+      << ",\"frac\":" << jvec(tr.pos.frac) << ",\"taps\":[";
     for (size_t k = 0; k < tr.taps.size(); ++k) {
         const TapRecord& t = tr.taps[k];
         s << (k ? "," : "") << "{\"texel\":" << jvec(t.texel) << ",\"depth\":" << jnum(t.depth)
-          << ",\"ref\":" << jnum(t.ref) << ",\"ref_shift\":" << jnum(t.ref - tr.ref)
-          << ",\"lit\":"
+          << ",\"ref\":" << jnum(t.ref) << ",\"ref_shift\":" << jnum(t.ref - tr.ref) << ",\"lit\":"
           << (t.lit == 0.0f || t.lit == 1.0f ? std::to_string(t.lit >= 0.5f ? 1 : 0) : jnum(t.lit))
           << ",\"weight\":" << jnum(t.weight) << ",\"fetch\":" << t.fetch << "}";
     }

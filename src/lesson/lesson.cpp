@@ -24,9 +24,8 @@ namespace {
 
 // The keys a [settings] table and a [[step]] may set.
 constexpr std::string_view SETTING_KEYS[] = {
-    "method",     "kernel",    "radius",        "rotate",     "bias",     "constant_bias",
-    "slope_bias", "slope_max", "normal_offset", "soft_scale", "cull",     "map_size",
-    "depth_format", "pixel"};
+    "method",    "kernel",        "radius",     "rotate", "bias",     "constant_bias", "slope_bias",
+    "slope_max", "normal_offset", "soft_scale", "cull",   "map_size", "depth_format",  "pixel"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));

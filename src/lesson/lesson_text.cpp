@@ -138,9 +138,8 @@ const std::vector<Simple>& simpleNames() {
     return names;
 }
 
-constexpr std::string_view TAP_FIELDS[] = {"i",     "j",      "depth",         "ref",
-                                           "margin", "lit",   "weight",        "shift",
-                                           "lookup_margin"};
+constexpr std::string_view TAP_FIELDS[] = {"i",   "j",      "depth", "ref",          "margin",
+                                           "lit", "weight", "shift", "lookup_margin"};
 constexpr std::string_view FETCH_FIELDS[] = {"value", "weight", "u", "v"};
 
 // A placeholder's name, taken apart: a simple name, or an indexed one (tap[K].field,

@@ -147,9 +147,10 @@ void drawNeighbourhood(Canvas& c, const InspectorLayout& l, const InspectorModel
             float small = std::min(cell * 0.16f, fontSize(l, 14, m.presentation));
             if (tap && cell >= 30.0f) {
                 bool soft = tap->lit != 0.0f && tap->lit != 1.0f;  // the soft comparison
-                c.text({r.centre().x, r.y + cell * 0.30f},
-                       soft ? fixed(tap->lit, 2) : tap->lit >= 0.5f ? "1" : "0",
-                       {FontFace::Mono, soft ? big * 0.6f : big, ink, TextAlign::Center});
+                bool ownRef = tap->ref != tr.ref && cell >= 64.0f;  // its ref goes below
+                std::string bitText = soft ? fixed(tap->lit, 2) : tap->lit >= 0.5f ? "1" : "0";
+                c.text({r.centre().x, r.y + cell * 0.30f}, bitText,
+                       {FontFace::Mono, soft || ownRef ? big * 0.6f : big, ink, TextAlign::Center});
             }
             // The tap's own ref where the bias gave it one (receiver plane).
             if (tap && tap->ref != tr.ref && cell >= 64.0f && small >= 9.0f) {

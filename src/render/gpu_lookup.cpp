@@ -31,8 +31,7 @@ std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec
     std::vector<glm::vec2> planes(dzduv.begin(), dzduv.end());
     if (planes.empty()) planes.assign(lookups.size(), bias.dzduv);
     GlTexture planeTexture = createTexture2d(GL_RG32F, width, height);
-    glTextureSubImage2D(planeTexture.id(), 0, 0, 0, width, height, GL_RG, GL_FLOAT,
-                        planes.data());
+    glTextureSubImage2D(planeTexture.id(), 0, 0, 0, width, height, GL_RG, GL_FLOAT, planes.data());
     OffscreenTarget target = createOffscreenTarget(width, height, {GL_R32F});
 
     GLuint program = mPrograms.get(prm.method, prm.kernel);

@@ -30,7 +30,7 @@ public:
                            const PcfParams& prm, bool rotatePerPixel, const PcfBias& bias,
                            std::span<const glm::vec2> dzduv);
 
-private:
+  private:
     PcfProgramCache mPrograms;
     PcfSamplers mSamplers;
     GlVertexArray mEmptyVao;

@@ -1,12 +1,12 @@
 // render_settings.h: what one frame of the scene is rendered with.
 #pragma once
 
+#include <epoxy/gl.h>
+
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
-
-#include <epoxy/gl.h>
-#include <glm/glm.hpp>
 
 #include "kernel/bias.h"
 #include "kernel/pcf.h"
@@ -32,10 +32,10 @@ struct RenderSettings {
     BiasMode bias = BiasMode::Constant;
     float constantBias = DEFAULT_CONSTANT_BIAS;  // light depth units: ref = z - constantBias
     // The other modes' parameters (kernel/bias.h says which mode reads which).
-    float slopeBias = DEFAULT_SLOPE_BIAS;      // slope: depth units per unit of tan(theta)
-    float slopeMax = DEFAULT_SLOPE_MAX;        // slope: the cap, depth units
+    float slopeBias = DEFAULT_SLOPE_BIAS;        // slope: depth units per unit of tan(theta)
+    float slopeMax = DEFAULT_SLOPE_MAX;          // slope: the cap, depth units
     float normalOffset = DEFAULT_NORMAL_OFFSET;  // normal: texels
-    float softScale = DEFAULT_SOFT_SCALE;      // soft: 1 / depth units
+    float softScale = DEFAULT_SOFT_SCALE;        // soft: 1 / depth units
     CullMode shadowCull = CullMode::Back;
     // Slope-scaled bias in the shadow pass: glPolygonOffset(factor, units); 0, 0 = off.
     glm::vec2 polygonOffset{0.0f, 0.0f};
