@@ -7,10 +7,10 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "glm_expect.h"
 #include "scene/light.h"
 #include "scene/raycast.h"
 #include "scene/scene.h"
-#include "glm_expect.h"
 
 namespace pcf {
 namespace {
@@ -219,6 +219,60 @@ TEST(TowardLight, DirectionalAndSpot) {
     EXPECT_FALSE(towardLight(spot, {0, 0, r31}).insideCone);
     // Behind the spot.
     EXPECT_FALSE(towardLight(spot, {0, 5, 0}).insideCone);
+}
+
+TEST(LightElevation, KeepsTheHeadingAndSetsTheAngle) {
+    glm::vec3 d = directionAtElevation(glm::vec3(1.1f, -1.0f, 0.45f), 30.0f);
+    EXPECT_NEAR(glm::length(d), 1.0f, 1e-6f);
+    EXPECT_NEAR(glm::degrees(std::asin(-d.y)), 30.0f, 1e-4f);
+    EXPECT_NEAR(d.z / d.x, 0.45f / 1.1f, 1e-5f);  // the same compass heading
+    EXPECT_NEAR(directionAtElevation(glm::vec3(0, -1, 0), 90.0f).y, -1.0f, 1e-6f);
+}
+
+// Where a world point lands, in texels of a mapSize map.
+glm::vec2 texelOf(const glm::mat4& m, glm::vec3 p, int mapSize) {
+    return shadowCoord(m, p).uvSm * static_cast<float>(mapSize);
+}
+
+TEST(ShadowOrigin, ShiftMovesTheGridAndSnappingLeavesWholeTexels) {
+    Light light;
+    Aabb bounds{glm::vec3(-6, 0, -6), glm::vec3(6, 1, 6)};
+    glm::mat4 m = clipFromLight(light, bounds) * lightFromWorld(light, bounds);
+    const int n = 512;
+    glm::vec3 p(1.3f, 0.0f, -2.7f), q(-4.1f, 0.5f, 3.3f);
+    // A shift of (0.25, -0.5) texel moves every point by exactly that in the map.
+    glm::mat4 shifted = shiftShadowOrigin(m, glm::vec2(0.25f, -0.5f), n, false);
+    glm::vec2 d = texelOf(shifted, p, n) - texelOf(m, p, n);
+    EXPECT_NEAR(d.x, 0.25f, 1e-3f);
+    EXPECT_NEAR(d.y, -0.5f, 1e-3f);
+    EXPECT_NEAR(shadowCoord(shifted, p).depth, shadowCoord(m, p).depth, 1e-7f);
+    // Snapped, two fits a fraction of a texel apart differ by whole texels only (0 or 1), for
+    // every point: the map's content moves, it does not change.
+    for (float offset : {0.1f, 0.37f, 0.62f, 0.99f}) {
+        glm::mat4 a = shiftShadowOrigin(m, glm::vec2(0.0f), n, true);
+        glm::mat4 b = shiftShadowOrigin(m, glm::vec2(offset), n, true);
+        for (glm::vec3 x : {p, q}) {
+            glm::vec2 step = texelOf(b, x, n) - texelOf(a, x, n);
+            EXPECT_NEAR(step.x, std::round(step.x), 1e-3f) << offset;
+            EXPECT_NEAR(step.y, std::round(step.y), 1e-3f) << offset;
+        }
+        // The world origin sits on a texel corner.
+        glm::vec2 o = texelOf(b, glm::vec3(0.0f), n);
+        EXPECT_NEAR(o.x, std::round(o.x), 1e-3f);
+        EXPECT_NEAR(o.y, std::round(o.y), 1e-3f);
+    }
+}
+
+TEST(ShadowDepthRange, WideningDividesTheDepth) {
+    Light light;
+    Aabb bounds{glm::vec3(-1), glm::vec3(1)};
+    glm::mat4 m = clipFromLight(light, bounds) * lightFromWorld(light, bounds);
+    glm::mat4 wide = widenShadowDepthRange(m, 100.0f);
+    for (glm::vec3 p : {glm::vec3(0.0f), glm::vec3(0.9f, -0.8f, 0.3f)}) {
+        EXPECT_NEAR(shadowCoord(wide, p).depth, shadowCoord(m, p).depth / 100.0f, 1e-7f);
+        glm::vec2 uv = shadowCoord(wide, p).uvSm - shadowCoord(m, p).uvSm;
+        EXPECT_NEAR(glm::length(uv), 0.0f, 1e-7f);
+    }
 }
 
 }  // namespace

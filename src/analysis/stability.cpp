@@ -9,6 +9,7 @@
 
 #include "analysis/error_metrics.h"
 #include "analysis/ground_truth.h"
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "render/scene_renderer.h"
 #include "scene/camera.h"
@@ -280,6 +281,7 @@ class Sweeper {
             for (BiasMode bias : mOptions.biases) {
                 for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
                     const StabilityMethod& m = mOptions.methods[mi];
+                    if (!stabilityPairExists(m, bias)) continue;
                     Rate r = falseShadow(frame(renderer, settings(m, bias)), lit[mi]);
                     add(Sweep::Acne, m, bias, "elevation_deg", elev, "false_shadow_rate", r.rate);
                     add(Sweep::Acne, m, bias, "elevation_deg", elev, "mean_darkening", r.mean);
@@ -322,6 +324,7 @@ class Sweeper {
                 for (BiasMode bias : mOptions.biases) {
                     for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
                         const StabilityMethod& m = mOptions.methods[mi];
+                        if (!stabilityPairExists(m, bias)) continue;
                         const std::vector<uint8_t>& umbra = umbras[mi];
                         RenderSettings s = settings(m, bias);
                         s.constantBias = b;
@@ -375,6 +378,7 @@ class Sweeper {
                 (snap ? ", snapped to whole texels" : ""));
             for (BiasMode bias : mOptions.biases) {
                 for (const StabilityMethod& m : mOptions.methods) {
+                    if (!stabilityPairExists(m, bias)) continue;
                     RenderSettings s = settings(m, bias);
                     std::vector<std::vector<float>> frames;
                     for (int t = 0; t < mOptions.shimmerFrames; ++t) {
@@ -454,6 +458,7 @@ class Sweeper {
             size_t c = 0;
             for (BiasMode bias : mOptions.biases) {
                 for (const StabilityMethod& m : mOptions.methods) {
+                    if (!stabilityPairExists(m, bias)) continue;
                     std::vector<float> err = frame(renderer, settings(m, bias));
                     for (size_t k = 0; k < err.size(); ++k) err[k] -= truth.visibility[k];
                     if (t > 0) addChanges(err, previous[c], both, changes[c]);
@@ -466,6 +471,7 @@ class Sweeper {
         double step = 1.0 / frames;
         for (BiasMode bias : mOptions.biases) {
             for (const StabilityMethod& m : mOptions.methods) {
+                if (!stabilityPairExists(m, bias)) continue;
                 add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_mean", mean(changes[c]));
                 add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_p99",
                     percentile(changes[c], 0.99));
@@ -494,6 +500,7 @@ class Sweeper {
                 for (BiasMode bias : mOptions.biases) {
                     for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
                         const StabilityMethod& m = mOptions.methods[mi];
+                        if (!stabilityPairExists(m, bias)) continue;
                         RenderSettings s = settings(m, bias);
                         s.depthFormat = format;
                         s.constantBias = mOptions.base.constantBias / ratio;
@@ -595,6 +602,10 @@ std::vector<Sweep> allSweeps() {
     return {Sweep::Acne, Sweep::Leak, Sweep::Shimmer, Sweep::Precision, Sweep::Aliasing};
 }
 
+bool stabilityPairExists(const StabilityMethod& m, BiasMode bias) {
+    return !validateBias(static_cast<int>(bias), m.method).has_value();
+}
+
 std::string stabilityMethodName(const StabilityMethod& m) {
     std::string name(methodInfo(m.method).name);
     if (m.kernel > 0) name += " N=" + std::to_string(m.kernel);
@@ -604,6 +615,7 @@ std::string stabilityMethodName(const StabilityMethod& m) {
 StabilityOptions quickStabilityOptions() {
     StabilityOptions o;
     o.methods = {{PCF_NEAREST, 0}, {PCF_GATHER, 3}};
+    o.biases = {BiasMode::None, BiasMode::Constant};
     o.frameSize = {160, 90};
     o.mapSize = 128;
     o.truthSpp = 1;
@@ -628,6 +640,15 @@ std::optional<std::string> validateStabilityOptions(const StabilityOptions& o) {
         if (auto why = validateParams(s.pcfParams())) return *why;
     }
     if (o.biases.empty()) return std::string("--biases is empty");
+    bool anyPair = false;
+    for (BiasMode b : o.biases) {
+        for (const StabilityMethod& m : o.methods) anyPair = anyPair || stabilityPairExists(m, b);
+    }
+    if (!anyPair) {
+        BiasMode b = o.biases.front();
+        return std::string("no method of --methods combines with --biases: ") +
+               *validateBias(static_cast<int>(b), o.methods.front().method);
+    }
     if (o.sweeps.empty()) return std::string("--sweep is empty");
     if (o.frameSize.x < 16 || o.frameSize.y < 16 || o.frameSize.x > MAX_FRAME_SIDE ||
         o.frameSize.y > MAX_FRAME_SIDE) {

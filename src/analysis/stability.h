@@ -64,15 +64,22 @@ struct StabilityMethod {
     bool operator==(const StabilityMethod&) const = default;
 };
 
+// Whether the bias mode can combine with the method (kernel/bias.h's validateBias): the sweeps
+// skip the pairs that cannot exist (soft with a method whose comparison the texture unit makes,
+// interpolated with anything but nearest).
+bool stabilityPairExists(const StabilityMethod& m, BiasMode bias);
+
 // "pcf-gather N=5" or "nearest".
 std::string stabilityMethodName(const StabilityMethod& m);
 
 constexpr int SHIMMER_STEPS = 32;  // the light's grid moves 1/32 texel per frame
 
 struct StabilityOptions {
-    std::vector<StabilityMethod> methods{
-        {PCF_NEAREST, 0}, {PCF_BILINEAR2X2, 0}, {PCF_GATHER, 3}, {PCF_GATHER, 5}};
-    std::vector<BiasMode> biases{BiasMode::None, BiasMode::Constant};
+    // The extremes of the filters (one texel, a 5x5 footprint) and the biases that differ most;
+    // every other method and bias mode runs with --methods / --biases.
+    std::vector<StabilityMethod> methods{{PCF_NEAREST, 0}, {PCF_GATHER, 5}};
+    std::vector<BiasMode> biases{BiasMode::None, BiasMode::Constant, BiasMode::Normal,
+                                 BiasMode::ReceiverPlane};
     std::vector<Sweep> sweeps = allSweeps();
     // Bias parameters, culling, polygon offset, depth format of every frame (method, kernel,
     // bias mode, map and frame size are the sweep's).

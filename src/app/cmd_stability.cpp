@@ -25,6 +25,7 @@
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
@@ -105,7 +106,7 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
     options.base = base;
     if (!o.quick || o.given("--size")) options.frameSize = base.frameSize;
     if (!o.quick || o.given("--map-size")) options.mapSize = base.mapSize;
-    std::vector<int> kernels = {3, 5};
+    std::vector<int> kernels = {5};
     if (o.quick) kernels = {3};
     if (o.given("--kernels")) {
         kernels.clear();
@@ -154,7 +155,10 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
         options.biases.clear();
         for (const std::string& name : splitList("--biases", o.biases)) {
             std::optional<BiasMode> b = biasModeFromName(name);
-            if (!b) throw UsageError("unknown bias mode '" + name + "' in --biases");
+            if (!b) {
+                throw UsageError("unknown bias mode '" + name +
+                                 "' in --biases (known: " + biasNameList() + ")");
+            }
             options.biases.push_back(*b);
         }
     }
@@ -286,10 +290,12 @@ Command addStabilityCommand(CLI::App& app) {
     o->render.mapSize = 512;
     o->render.addTo(sub, DEFAULT_SCENE);
     sub->add_option("--methods", o->methods,
-                    "method ids, comma-separated (default nearest,bilinear2x2,pcf-gather)");
+                    "method ids, comma-separated (default nearest,pcf-gather)");
     sub->add_option("--kernels", o->kernels,
-                    "N for the methods that take one, comma-separated (default 3,5; --quick 3)");
-    sub->add_option("--biases", o->biases, "bias modes, comma-separated (default none,constant)");
+                    "N for the methods that take one, comma-separated (default 5; --quick 3)");
+    sub->add_option("--biases", o->biases,
+                    "bias modes, comma-separated (default none,constant,normal,receiver-plane; "
+                    "--quick none,constant; pairs that cannot exist are skipped)");
     sub->add_option("--sweep", o->sweeps,
                     "sweeps, comma-separated: acne, leak, shimmer, precision, aliasing (default "
                     "all)");
