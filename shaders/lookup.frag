@@ -5,6 +5,8 @@ uniform sampler2D uPcfDepth;
 uniform sampler2D uLookups;  // RGBA32F: u, v, ref, unused
 uniform float uRadius;
 uniform int uRotatePerPixel;
+uniform int uWeights;  // PCF_WEIGHTS_* for pcf-naive and pcf-gather
+uniform float uSigma;  // gaussian weights, texels
 
 layout(location = 0) out float oVisibility;
 
@@ -13,5 +15,5 @@ void main() {
     vec4 lookup = texelFetch(uLookups, pixel, 0);
     vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(pixel) : vec2(1.0f, 0.0f);
     oVisibility = pcfFilter(uPcfDepth, vec2(lookup.x, lookup.y), lookup.z,
-                            PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation));
+                            PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights, uSigma));
 }

@@ -18,6 +18,8 @@ uniform float uSpotCosCone;           // spot only: cos of the cone's half angle
 uniform float uConstantBias;          // ref = z - bias, in light depth units ([0,1])
 uniform float uRadius;                // poisson radius in texels
 uniform int uRotatePerPixel;          // poisson: rotate the disk per pixel
+uniform int uWeights;                 // pcf-naive, pcf-gather: PCF_WEIGHTS_*
+uniform float uSigma;                 // gaussian weights, texels
 
 layout(location = 0) out vec4 oColour;
 #if PCF_ALL_TARGETS
@@ -49,7 +51,7 @@ void main() {
         vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(ivec2(gl_FragCoord.xy))
                                              : vec2(1.0f, 0.0f);
         visibility = pcfFilter(uPcfDepth, vec2(u, v), ref,
-                               PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation));
+                               PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights, uSigma));
     }
     float cone = 1.0f;
     if (uLightType == 1) cone = dot(-toLight, uLightDirWs) >= uSpotCosCone ? 1.0f : 0.0f;

@@ -58,6 +58,13 @@ struct PcfParams {
     int kernel;     // N: 1..8 for pcf-naive, pcf-gather and pcf-hw; 3, 5 or 7 for tent
     float radius;   // poisson: disk radius in texels (seed 003 uses 1)
     vec2 rotation;  // poisson: (cos, sin) of the disk's rotation; (1, 0) for none
+    int weights;    // pcf-naive, pcf-gather: PCF_WEIGHTS_BOX (0), _BINOMIAL or _GAUSSIAN
+    float sigma;    // gaussian weights: standard deviation in texels
+#ifdef __cplusplus
+    // The CPU's model of the texture unit (PCF_PRECISION_EXACT or _HW8). In GLSL the same
+    // choice is the uniform uPcfPrecision, read through mapPrecision(map) (pcf_prelude.h).
+    int precision = 0;
+#endif
 };
 
 // Where a lookup falls in texel space.
@@ -77,16 +84,64 @@ PCF_FN ivec2 pcfClampTexel(ivec2 texel, ivec2 size) {
     return clamp(texel, ivec2(0), size - ivec2(1));
 }
 
+// ---- The texture unit's own arithmetic (issue 10) ----------------------------------------
+//
+// Fixed-point depth (GL 4.5 core profile, section 8.23.1, "Depth Texture Comparison Mode"): for
+// a fixed-point depth format (16, 24 bit) both D_ref and D_t are clamped to [0,1] before the
+// comparison; for 32F neither is. The stored D_t of a fixed-point map is already in [0,1], so
+// only D_ref needs the clamp. mapFixedPoint(map) is 1 for a 16/24-bit map (CPU: ShadowMap's
+// format; GLSL: the uniform uPcfFixedPoint). Every method clamps, texelFetch ones included, so
+// that bilinear2x2 stays equal to the hardware tap it emulates.
+PCF_MAP_FN float pcfDepthRef(Map map, float ref) {
+    return mapFixedPoint(map) != 0 ? clamp(ref, 0.0f, 1.0f) : ref;
+}
+
+// Precision of the texel position inside hardware taps and gathers.
+//   exact: float, what llvmpipe does (measured, DESIGN.md 2);
+//   hw8:   the position kept with 8 fractional bits, i.e. in steps of 1/256 texel, as NVIDIA and
+//          AMD texture units do. Sources: Direct3D 12 functional spec, constant
+//          D3D12_SUBTEXEL_FRACTIONAL_BIT_COUNT = 8; Inigo Quilez, "hardware interpolation"
+//          (iquilezles.org, 2008): the interpolant is 24.8 fixed point; the Vulkan spec only
+//          requires subTexelPrecisionBits >= 4.
+PCF_CONST int PCF_PRECISION_EXACT = 0;
+PCF_CONST int PCF_PRECISION_HW8 = 1;
+PCF_CONST float PCF_SUBTEXEL_STEPS = 256.0f;  // 2^8 steps per texel
+
+// hw8's rounding: round to nearest, ties up, of p * 256: q = floor(p * 256 + 0.5) / 256. Both
+// steps are exact in float for |p| < 2^15 texels (p * 256 is a power-of-two scaling), so CPU and
+// GPU agree bit for bit. The result is in [p - 1/512, p + 1/512].
+PCF_FN vec2 pcfQuantiseTexelPos(vec2 p) {
+    PCF_PRECISE vec2 s = p * PCF_SUBTEXEL_STEPS + vec2(0.5f);
+    return floor(s) / PCF_SUBTEXEL_STEPS;
+}
+
+// The texel position the texture unit works with for a tap or gather at uv.
+PCF_MAP_FN vec2 pcfUnitTexelPos(Map map, vec2 uv) {
+    vec2 p = pcfTexelPos(uv, mapSize(map)).p;
+    return mapPrecision(map) == PCF_PRECISION_HW8 ? pcfQuantiseTexelPos(p) : p;
+}
+
+// The uv handed to a hardware tap or a gather: unchanged for exact; for hw8, the uv of the
+// quantised position, so that an exact texture unit (llvmpipe) computes what an 8-bit one
+// would, and an 8-bit unit rounds it back to the same step (|error| << 1/512 texel).
+PCF_MAP_FN vec2 pcfUnitUv(Map map, vec2 uv) {
+    if (mapPrecision(map) != PCF_PRECISION_HW8) return uv;
+    PCF_PRECISE vec2 q = pcfUnitTexelPos(map, uv) + vec2(0.5f);
+    return q / vec2(mapSize(map));
+}
+
 // The depth comparison (GL_LEQUAL): 1 = lit, 0 = shadowed.
 PCF_FN float pcfCompare(float depth, float ref) { return ref <= depth ? 1.0f : 0.0f; }
 
 // Reads one texel (clamped to the edge), compares it, and reports the tap with its weight in
 // the final result.
 PCF_MAP_FN float pcfFetchCompare(Map map, ivec2 texel, float ref, float weight) {
+    pcfTapWanted(map, texel);  // the trace marks taps that clamp to the edge
     ivec2 t = pcfClampTexel(texel, mapSize(map));
     float depth = fetchDepth(map, t);
-    float lit = pcfCompare(depth, ref);
-    pcfTap(map, t, depth, ref, lit, weight);
+    float r = pcfDepthRef(map, ref);  // fixed-point maps: D_ref clamped to [0,1]
+    float lit = pcfCompare(depth, r);
+    pcfTap(map, t, depth, r, lit, weight);
     return lit;
 }
 
@@ -122,26 +177,27 @@ PCF_MAP_FN float pcfBilinearLookup(Map map, vec2 uv, float ref, float weight) {
 
 #ifdef __cplusplus
 // On the CPU a hardware comparison tap is modelled exactly as the bilinear 2x2 (DESIGN.md 2).
+// With hw8 the position is quantised before floor and frac (pcfUnitTexelPos).
 template <class Map>
 inline float hwTap(Map map, vec2 uv, float ref, float weight) {
-    return pcfBilinearCore(map, uv, ref, weight);
+    return pcfBilinearAt(map, pcfUnitTexelPos(map, uv), ref, weight);
 }
 
 // On the CPU a comparison gather is four texel comparisons, returned in GL's component order.
 template <class Map>
 inline vec4 gatherCompare(Map map, vec2 uv, float ref, vec4 weights) {
-    PcfTexelPos tp = pcfTexelPos(uv, mapSize(map));
-    float x = pcfFetchCompare(map, tp.base + ivec2(0, 1), ref, weights.x);
-    float y = pcfFetchCompare(map, tp.base + ivec2(1, 1), ref, weights.y);
-    float z = pcfFetchCompare(map, tp.base + ivec2(1, 0), ref, weights.z);
-    float w = pcfFetchCompare(map, tp.base + ivec2(0, 0), ref, weights.w);
+    ivec2 base = ivec2(floor(pcfUnitTexelPos(map, uv)));
+    float x = pcfFetchCompare(map, base + ivec2(0, 1), ref, weights.x);
+    float y = pcfFetchCompare(map, base + ivec2(1, 1), ref, weights.y);
+    float z = pcfFetchCompare(map, base + ivec2(1, 0), ref, weights.z);
+    float w = pcfFetchCompare(map, base + ivec2(0, 0), ref, weights.w);
     return vec4(x, y, z, w);
 }
 #endif
 
 PCF_MAP_FN float pcfHwTap(Map map, vec2 uv, float ref, float weight) {
     pcfFetch(map, PCF_FETCH_HW, uv, weight);
-    return hwTap(map, uv, ref, weight);
+    return hwTap(map, pcfUnitUv(map, uv), ref, weight);
 }
 
 // nearest: the one texel the lookup falls in, floor(uv * size). Hard: 0 or 1.
@@ -246,7 +302,98 @@ PCF_MAP_FN float pcfGather(Map map, vec2 uv, float ref, int n) {
             vec4 w = vec4(wx0 * wy1, wx1 * wy1, wx1 * wy0, wx0 * wy0) * norm;
             vec2 corner = vec2(fp.origin + ivec2(mx + 1, my + 1)) / vec2(size);
             pcfFetch(map, PCF_FETCH_GATHER, corner, 1.0f);
-            vec4 bits = gatherCompare(map, corner, ref, w);
+            vec4 bits = gatherCompare(map, pcfUnitUv(map, corner), ref, w);
+            sum += dot(bits, w);
+        }
+    }
+    return sum;
+}
+
+// ---- Weighted kernels (issue 10) --------------------------------------------------------
+//
+// "PCF Shadow Acne" (blog post) suggests weighting the N x N lookups with a binomial or a
+// Gaussian kernel instead of the box. The weights are separable: lookup (i, j) weighs
+// a_i * a_j, with per-axis weights a_k (k = 0..N-1, offset x_k = k - (N-1)/2) summing to 1:
+//   box:      a_k = 1/N
+//   binomial: a_k = C(N-1, k) / 2^(N-1)       (Pascal's row: N = 3 gives 1/4, 1/2, 1/4)
+//   gaussian: a_k = exp(-x_k^2 / (2 sigma^2)) / sum_k exp(...)     sigma in texels, > 0
+PCF_CONST int PCF_WEIGHTS_BOX = 0;
+PCF_CONST int PCF_WEIGHTS_BINOMIAL = 1;
+PCF_CONST int PCF_WEIGHTS_GAUSSIAN = 2;
+
+PCF_FN float pcfAxisWeightRaw(int k, int n, int weights, float sigma) {
+    if (weights == PCF_WEIGHTS_BINOMIAL) {
+        float c = 1.0f;  // C(n-1, k), built up as a product: exact for n <= 8
+        for (int t = 0; t < k; ++t) c = c * float(n - 1 - t) / float(t + 1);
+        return c;
+    }
+    if (weights == PCF_WEIGHTS_GAUSSIAN) {
+        float x = pcfKernelOffset(k, n);
+        return exp(-x * x / (2.0f * sigma * sigma));
+    }
+    return 1.0f;
+}
+
+// a_k, normalised so that the N weights sum to 1.
+PCF_FN float pcfAxisWeight(int k, int n, int weights, float sigma) {
+    float total = 0.0f;
+    for (int t = 0; t < n; ++t) total += pcfAxisWeightRaw(t, n, weights, sigma);
+    return pcfAxisWeightRaw(k, n, weights, sigma) / total;
+}
+
+// pcf-naive with weights: the same N x N bilinear lookups (4 N^2 reads), lookup (i, j)
+// weighted a_i * a_j.
+PCF_MAP_FN float pcfNaiveWeighted(Map map, vec2 uv, float ref, int n, int weights, float sigma) {
+    ivec2 size = mapSize(map);
+    vec2 p = pcfTexelPos(uv, size).p;
+    vec2 texelUv = vec2(1.0f) / vec2(size);
+    float sum = 0.0f;
+    for (int j = 0; j < n; ++j) {
+        float aj = pcfAxisWeight(j, n, weights, sigma);
+        for (int i = 0; i < n; ++i) {
+            float w = pcfAxisWeight(i, n, weights, sigma) * aj;
+            vec2 offset = vec2(pcfKernelOffset(i, n), pcfKernelOffset(j, n));
+            PCF_PRECISE vec2 pk = p + offset;
+            pcfFetch(map, PCF_FETCH_LOOKUP, uv + offset * texelUv, w);
+            sum += w * pcfBilinearAt(map, pk, ref, w);
+        }
+    }
+    return sum;
+}
+
+// The footprint table for any separable weights: footprint texel m (0..N) is the 2x2's right
+// texel of lookup m-1 and the left texel of lookup m, so per axis it weighs
+//   W_m = a_m (1 - g) [m < N] + a_(m-1) g [m > 0]
+// (box: (1-g, 1, ..., 1, g) / N, seed 001's table for N = 3).
+PCF_FN float pcfFootprintWeightW(int m, int n, float g, int weights, float sigma) {
+    float w = 0.0f;
+    if (m < n) w += pcfAxisWeight(m, n, weights, sigma) * (1.0f - g);
+    if (m > 0) w += pcfAxisWeight(m - 1, n, weights, sigma) * g;
+    return w;
+}
+
+// pcf-gather with weights: the same ceil((N+1)/2)^2 gathers at the blocks' shared corners,
+// weighted by pcfFootprintWeightW. Equals pcfNaiveWeighted to float rounding.
+PCF_MAP_FN float pcfGatherWeighted(Map map, vec2 uv, float ref, int n, int weights, float sigma) {
+    ivec2 size = mapSize(map);
+    PcfFootprint fp = pcfKernelFootprint(uv, size, n);
+    int blocks = (n + 2) / 2;
+    float sum = 0.0f;
+    for (int by = 0; by < blocks; ++by) {
+        for (int bx = 0; bx < blocks; ++bx) {
+            int mx = 2 * bx;
+            int my = 2 * by;
+            float wx0 = pcfFootprintWeightW(mx, n, fp.frac.x, weights, sigma);
+            float wx1 = mx + 1 <= n ? pcfFootprintWeightW(mx + 1, n, fp.frac.x, weights, sigma)
+                                    : 0.0f;
+            float wy0 = pcfFootprintWeightW(my, n, fp.frac.y, weights, sigma);
+            float wy1 = my + 1 <= n ? pcfFootprintWeightW(my + 1, n, fp.frac.y, weights, sigma)
+                                    : 0.0f;
+            // GL's gather order: x = (0,1), y = (1,1), z = (1,0), w = (0,0).
+            vec4 w = vec4(wx0 * wy1, wx1 * wy1, wx1 * wy0, wx0 * wy0);
+            vec2 corner = vec2(fp.origin + ivec2(mx + 1, my + 1)) / vec2(size);
+            pcfFetch(map, PCF_FETCH_GATHER, corner, 1.0f);
+            vec4 bits = gatherCompare(map, pcfUnitUv(map, corner), ref, w);
             sum += dot(bits, w);
         }
     }
@@ -356,8 +503,12 @@ PCF_MAP_FN float pcfFilter(Map map, vec2 uv, float ref, PcfParams prm) {
         v = pcfBilinearLookup(map, uv, ref, 1.0f);
     } else if (prm.method == PCF_HW2X2) {
         v = pcfHwTap(map, uv, ref, 1.0f);
+    } else if (prm.method == PCF_NAIVE && prm.weights != PCF_WEIGHTS_BOX) {
+        v = pcfNaiveWeighted(map, uv, ref, prm.kernel, prm.weights, prm.sigma);
     } else if (prm.method == PCF_NAIVE) {
         v = pcfNaive(map, uv, ref, prm.kernel);
+    } else if (prm.method == PCF_GATHER && prm.weights != PCF_WEIGHTS_BOX) {
+        v = pcfGatherWeighted(map, uv, ref, prm.kernel, prm.weights, prm.sigma);
     } else if (prm.method == PCF_GATHER) {
         v = pcfGather(map, uv, ref, prm.kernel);
     } else if (prm.method == PCF_HW) {

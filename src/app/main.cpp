@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
         pcf::addBenchCommand(app),
         pcf::addViewCommand(app),
         pcf::addExportCommand(app),
+        pcf::addVerifyCommand(app),
     };
 
     try {

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "render/depth_readback.h"
+
 namespace pcf {
 
 GpuLookup::GpuLookup()
@@ -16,6 +18,14 @@ std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec
     }
     int height = static_cast<int>(lookups.size() / static_cast<size_t>(width));
     GlTexture depth = createDepthTexture(map);
+    if (map.isFixedPoint()) {
+        GLenum format = map.fixedPointBits() == 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24;
+        depth = createTexture2d(format, map.width(), map.height());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTextureSubImage2D(depth.id(), 0, 0, 0, map.width(), map.height(), GL_DEPTH_COMPONENT,
+                            GL_FLOAT, map.depths().data());
+    }
+    mStored = readSampledDepth(depth.id(), map.width(), map.height(), map.fixedPointBits());
     GlTexture input = createTexture2d(GL_RGBA32F, width, height);
     glTextureSubImage2D(input.id(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, lookups.data());
     OffscreenTarget target = createOffscreenTarget(width, height, {GL_R32F});
@@ -29,6 +39,11 @@ std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec
     glProgramUniform1f(program, glGetUniformLocation(program, "uRadius"), prm.radius);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRotatePerPixel"),
                        rotatePerPixel ? 1 : 0);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uWeights"), prm.weights);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uSigma"), prm.sigma);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uPcfPrecision"), prm.precision);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uPcfFixedPoint"),
+                       map.isFixedPoint() ? 1 : 0);
 
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
     glViewport(0, 0, width, height);

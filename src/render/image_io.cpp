@@ -138,6 +138,21 @@ void writeDepthImage(const std::string& path, const ShadowMap& map) {
     writeExr(path, map.width(), map.height(), 1, map.depths(), {"Z"});
 }
 
+FloatImage readFloatImage(const std::string& path) {
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+    if (!in) throw ImageError(path + ": cannot read image (" + firstLine(OIIO::geterror()) + ")");
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.deep || spec.width <= 0 || spec.height <= 0 || spec.depth > 1) {
+        throw ImageError(path + ": cannot read image (not a flat 2D image)");
+    }
+    FloatImage img{spec.width, spec.height, spec.nchannels, {}};
+    img.data.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.data.data())) {
+        throw ImageError(path + ": cannot read image (" + firstLine(in->geterror()) + ")");
+    }
+    return img;
+}
+
 ShadowMap readDepthImage(const std::string& path) {
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
     if (!in) throw ImageError(path + ": cannot read image (" + firstLine(OIIO::geterror()) + ")");

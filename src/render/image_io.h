@@ -47,6 +47,16 @@ void writeDepthImage(const std::string& path, const ShadowMap& map);
 // "PATH: texel (i, j) is NaN" (and the other ShadowMap::findInvalidTexel findings).
 ShadowMap readDepthImage(const std::string& path);
 
+// Any float image: width, height, channel count and the floats (rows as stored, first scanline
+// first, channels interleaved). Throws ImageError "PATH: cannot read image (REASON)".
+struct FloatImage {
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    std::vector<float> data;
+};
+FloatImage readFloatImage(const std::string& path);
+
 bool fileExists(const std::string& path);
 
 }  // namespace pcf

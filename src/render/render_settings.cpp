@@ -4,7 +4,21 @@
 
 namespace pcf {
 
-PcfParams RenderSettings::pcfParams() const { return makeParams(method, kernel, radius); }
+PcfParams RenderSettings::pcfParams() const {
+    PcfParams p = makeParams(method, kernel, radius);
+    p.weights = weights;
+    p.sigma = sigma;
+    p.precision = precision;
+    return p;
+}
+
+int depthFormatFixedPointBits(DepthFormat format) {
+    switch (format) {
+        case DepthFormat::D16: return 16;
+        case DepthFormat::D24: return 24;
+        default: return 0;
+    }
+}
 
 float RenderSettings::depthBias() const { return bias == BiasMode::None ? 0.0f : constantBias; }
 
