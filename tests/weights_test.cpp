@@ -57,7 +57,7 @@ TEST(Weights, PcfNaiveEqualsPcfGatherForEveryWeighting) {
     for (int w : {PCF_WEIGHTS_BOX, PCF_WEIGHTS_BINOMIAL, PCF_WEIGHTS_GAUSSIAN}) {
         for (int n = 1; n <= 8; ++n) {
             float worst = 0.0f;
-            for (int k = 0; k < 20000; ++k) {
+            for (int k = 0; k < 5000; ++k) {
                 vec2 uv(around(rng), around(rng));
                 float ref = u(rng);
                 float a = filterVisibility(map, uv, ref, weighted(PCF_NAIVE, n, w, 1.3f));

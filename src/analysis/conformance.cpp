@@ -66,7 +66,10 @@ VisibilityEnvelope hwTapEnvelope(const ShadowMap& map, vec2 uv, float ref,
             env.hi = std::max(env.hi, bilinear(r00.hi, r10.hi, r01.hi, r11.hi, f));
         }
     }
-    float w = std::ldexp(1.0f, -prec.weightBits);
+    // Rounded weights move a lerp between different bits by up to one weight step; four equal
+    // bits stay that bit (the weights f and 1 - f still sum to 1).
+    bool uniform = env.lo == env.hi && (env.lo == 0.0f || env.lo == 1.0f);
+    float w = uniform ? 0.0f : std::ldexp(1.0f, -prec.weightBits);
     return {std::max(0.0f, env.lo - w), std::min(1.0f, env.hi + w)};
 }
 

@@ -546,6 +546,7 @@ std::string traceToText(const Trace& tr) {
     // The neighbourhood as a table: depth, bit and merged weight per texel, rows as stored.
     s << "Texels read (depth / bit / weight), row j down, column i across:\n";
     const WeightGrid& g = tr.weights;
+    bool anyClamped = false;
     s << "        ";
     for (int i = 0; i < g.size.x; ++i) {
         char buf[32];
@@ -566,8 +567,11 @@ std::string traceToText(const Trace& tr) {
                     break;
                 }
             }
+            bool clamped = false;
+            for (const TapRecord& t : tr.taps) clamped = clamped || (t.texel == texel && t.clamped);
+            anyClamped = anyClamped || clamped;
             std::string cell = tap ? num(tap->depth) + " / " + bit(tap->lit) + " / " +
-                                         num(g.at(texel))
+                                         num(g.at(texel)) + (clamped ? " *" : "")
                                    : "-";
             char buf[40];
             std::snprintf(buf, sizeof buf, " %-18s", cell.c_str());
@@ -575,6 +579,7 @@ std::string traceToText(const Trace& tr) {
         }
         s << "\n";
     }
+    if (anyClamped) s << "* also read for texels outside the map, clamped to the edge\n";
     s << "\nfetches: " << tr.counts.texels << " texel reads, " << tr.counts.gathers
       << " gathers, " << tr.counts.hwTaps << " hardware taps\n";
     s << "visibility = " << num(tr.visibility) << "\n";
