@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -24,15 +25,20 @@ std::vector<std::string> lessonFiles() {
     return files;
 }
 
-TEST(LessonFiles, ThereAreElevenInTeachingOrder) {
+// Lessons 01-11 are the course; later numbers (15: the texture unit) may leave gaps for lessons
+// still being written. The two-digit prefixes sort in teaching order and never repeat.
+TEST(LessonFiles, NumberedInTeachingOrder) {
     std::vector<std::string> files = lessonFiles();
-    ASSERT_EQ(files.size(), 11u);
+    ASSERT_GE(files.size(), 11u);
+    int previous = 0;
     for (size_t i = 0; i < files.size(); ++i) {
         std::string stem = std::filesystem::path(files[i]).stem().string();
-        // 01-..., 02-...: the name sorts in the order the lessons are taught.
-        char prefix[32];
-        std::snprintf(prefix, sizeof prefix, "%02d-", static_cast<int>(i + 1));
-        EXPECT_EQ(stem.substr(0, 3), prefix) << stem;
+        ASSERT_GE(stem.size(), 4u) << stem;
+        ASSERT_TRUE(std::isdigit(stem[0]) && std::isdigit(stem[1]) && stem[2] == '-') << stem;
+        int number = std::stoi(stem.substr(0, 2));
+        EXPECT_GT(number, previous) << stem;
+        if (i < 11) EXPECT_EQ(number, static_cast<int>(i + 1)) << stem;
+        previous = number;
     }
 }
 

@@ -171,8 +171,10 @@ void explainBilinear(Trace& tr, bool hardware) {
         : "The four texels at base " + pair(tr.pos.base) + " are each compared with ref:";
     stepTapList(tr, hardware ? "One hardware comparison tap" : "Compare the 2x2 texels", intro);
     const std::vector<TapRecord>& t = tr.taps;
-    float fx = tr.pos.frac.x;
-    float fy = tr.pos.frac.y;
+    // hw8: the texture unit lerps by its own rounded fraction (see the 256-steps step).
+    bool hw8 = hardware && tr.params.precision == PCF_PRECISION_HW8;
+    float fx = hw8 ? tr.fracHw8.x : tr.pos.frac.x;
+    float fy = hw8 ? tr.fracHw8.y : tr.pos.frac.y;
     float row0 = glm::mix(t[0].lit, t[1].lit, fx);
     float row1 = glm::mix(t[2].lit, t[3].lit, fx);
     std::ostringstream s;
