@@ -1,10 +1,10 @@
 // The conformance envelope (analysis/conformance.h) and `pcfscope verify`, issue 10.
 #include "analysis/conformance.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <random>
-
-#include <gtest/gtest.h>
 
 #include "kernel/methods.h"
 #include "render/image_io.h"
@@ -29,7 +29,8 @@ ShadowMap randomMap(int w, int h, uint32_t seed, int bits) {
 
 std::vector<PcfParams> cases() {
     std::vector<PcfParams> all;
-    for (const MethodInfo& m : allMethods()) all.push_back(makeParams(m.id, m.id == PCF_TENT ? 5 : 3));
+    for (const MethodInfo& m : allMethods())
+        all.push_back(makeParams(m.id, m.id == PCF_TENT ? 5 : 3));
     PcfParams g = makeParams(PCF_GATHER, 4);
     g.weights = PCF_WEIGHTS_GAUSSIAN;
     all.push_back(g);
@@ -54,9 +55,8 @@ TEST(Conformance, EnvelopeHoldsTheExactAndTheHw8Results) {
                 PcfParams hw8 = prm;
                 hw8.precision = PCF_PRECISION_HW8;
                 float quantised = filterVisibility(map, uv, ref, hw8);
-                EXPECT_TRUE(env.contains(exact))
-                    << methodInfo(prm.method).name << " " << exact << " [" << env.lo << ", "
-                    << env.hi << "]";
+                EXPECT_TRUE(env.contains(exact)) << methodInfo(prm.method).name << " " << exact
+                                                 << " [" << env.lo << ", " << env.hi << "]";
                 EXPECT_TRUE(env.contains(quantised)) << methodInfo(prm.method).name;
             }
         }
@@ -72,7 +72,8 @@ TEST(Conformance, EnvelopeOpensOnlyWhereTheTextureUnitHasFreedom) {
         for (int i = 4; i < 8; ++i) map.setDepth(i, j, 0.1f);
     }
     // Far from the edge: one answer.
-    VisibilityEnvelope flat = visibilityEnvelope(map, vec2(0.1f, 0.5f), 0.5f, makeParams(PCF_HW2X2));
+    VisibilityEnvelope flat =
+        visibilityEnvelope(map, vec2(0.1f, 0.5f), 0.5f, makeParams(PCF_HW2X2));
     EXPECT_EQ(flat.lo, 1.0f);
     EXPECT_EQ(flat.hi, 1.0f);
     // On the edge's lerp (p.x = 3.3): 0.7 exactly, +- 1/16 + 1/256 with Vulkan's 4 bits.
@@ -97,8 +98,10 @@ TEST(Conformance, EnvelopeOpensOnlyWhereTheTextureUnitHasFreedom) {
 TEST(Conformance, VerifyPassesOnTheRendererAndCatchesAWrongPixel) {
     std::filesystem::path dir = makeTempDir("verify");
     std::string raw = (dir / "raw").string();
-    auto r = runPcfscope("render --scene sphere-over-plane --method tent --kernel 5 --map-size 100 "
-                         "--depth-format 24 --size 200x120 --raw " + raw);
+    auto r = runPcfscope(
+        "render --scene sphere-over-plane --method tent --kernel 5 --map-size 100 "
+        "--depth-format 24 --size 200x120 --raw " +
+        raw);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto v = runPcfscope("verify " + raw);
     EXPECT_EQ(v.exitCode, 0) << v.out << v.err;

@@ -1,10 +1,10 @@
 // The texture unit's own arithmetic in the shared kernel (issue 10): hw8's 256 steps, and the
 // [0,1] clamp of D_ref on fixed-point maps in every method.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <random>
 #include <set>
-
-#include <gtest/gtest.h>
 
 #include "kernel/methods.h"
 #include "kernel/pcf.h"
@@ -104,9 +104,10 @@ TEST(TextureUnit, CornerPlacedGathersAreImmuneToHw8) {
         for (int k = 0; k < 3000; ++k) {
             vec2 uv(u(rng), u(rng));
             float ref = u(rng);
-            EXPECT_EQ(filterVisibility(map, uv, ref, makeParams(PCF_GATHER, n)),
-                      filterVisibility(map, uv, ref,
-                                       withPrecision(makeParams(PCF_GATHER, n), PCF_PRECISION_HW8)));
+            EXPECT_EQ(
+                filterVisibility(map, uv, ref, makeParams(PCF_GATHER, n)),
+                filterVisibility(map, uv, ref,
+                                 withPrecision(makeParams(PCF_GATHER, n), PCF_PRECISION_HW8)));
         }
     }
 }
@@ -125,7 +126,8 @@ TEST(TextureUnit, FixedPointMapsClampTheReferenceInEveryMethod) {
         for (int k = 0; k < 500; ++k) {
             vec2 uv(u(rng), u(rng));
             EXPECT_NEAR(filterVisibility(fixed, uv, -0.5f, prm), 1.0f, 1e-6f) << m.name;
-            EXPECT_EQ(filterVisibility(fixed, uv, 1.5f, prm), filterVisibility(fixed, uv, 1.0f, prm))
+            EXPECT_EQ(filterVisibility(fixed, uv, 1.5f, prm),
+                      filterVisibility(fixed, uv, 1.0f, prm))
                 << m.name;
             EXPECT_EQ(filterVisibility(map, uv, 1.5f, prm), 0.0f) << m.name;
             EXPECT_NEAR(filterVisibility(map, uv, -0.5f, prm), 1.0f, 1e-6f) << m.name;

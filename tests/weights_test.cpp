@@ -1,10 +1,10 @@
 // Weighted kernels for pcf-naive and pcf-gather ("PCF Shadow Acne": binomial or Gaussian
 // instead of the box), issue 10.
-#include <cmath>
-#include <algorithm>
-#include <random>
-
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
 
 #include "kernel/methods.h"
 #include "kernel/pcf.h"

@@ -24,9 +24,9 @@
 namespace pcf {
 
 struct ConformancePrecision {
-    int subTexelBits = 4;    // Vulkan's minimum subTexelPrecisionBits
-    int weightBits = 8;      // filtering weight precision (CTS: pcfBits)
-    int referenceBits = 0;   // 0: from the map (16 or 24 fixed-point, 22 for 32F)
+    int subTexelBits = 4;   // Vulkan's minimum subTexelPrecisionBits
+    int weightBits = 8;     // filtering weight precision (CTS: pcfBits)
+    int referenceBits = 0;  // 0: from the map (16 or 24 fixed-point, 22 for 32F)
 };
 
 struct VisibilityEnvelope {

@@ -78,7 +78,8 @@ int runVerify(const VerifyOptions& o) {
 
     std::string methodName = jsonField(json, "method", where);
     std::optional<int> method = methodFromName(methodName);
-    if (!method) throw UsageError("render.json: unknown method '" + methodName + "' (" + where + ")");
+    if (!method)
+        throw UsageError("render.json: unknown method '" + methodName + "' (" + where + ")");
     PcfParams prm = makeParams(*method, static_cast<int>(jsonNumber(json, "kernel", where)),
                                jsonNumber(json, "radius", where));
     std::optional<int> weights = weightsFromName(jsonField(json, "weights", where));
@@ -91,7 +92,8 @@ int runVerify(const VerifyOptions& o) {
     prm.sigma = jsonNumber(json, "sigma", where);
     prm.precision = *precision;
     bool rotate = jsonField(json, "rotate", where) == "true";
-    if (auto why = validateParams(prm)) throw UsageError("render.json: " + *why + " (" + where + ")");
+    if (auto why = validateParams(prm))
+        throw UsageError("render.json: " + *why + " (" + where + ")");
 
     ShadowMap map;
     try {
@@ -143,22 +145,23 @@ int runVerify(const VerifyOptions& o) {
         }
     }
     if (receivers == 0) throw UsageError("no receiver pixels in " + dir.string());
-    std::printf("verify %s: %s %s, map %dx%d %s, precision %s; envelope: %d sub-texel bits, "
-                "%d weight bits, %s reference bits\n",
-                dir.string().c_str(), methodName.c_str(),
-                methodInfo(prm.method).usesKernel ? ("N=" + std::to_string(prm.kernel)).c_str()
-                                                  : "",
-                map.width(), map.height(), std::string(depthFormatName(*format)).c_str(),
-                std::string(precisionName(prm.precision)).c_str(), o.subTexelBits, o.weightBits,
-                o.referenceBits > 0 ? std::to_string(o.referenceBits).c_str() : "format's");
+    std::printf(
+        "verify %s: %s %s, map %dx%d %s, precision %s; envelope: %d sub-texel bits, "
+        "%d weight bits, %s reference bits\n",
+        dir.string().c_str(), methodName.c_str(),
+        methodInfo(prm.method).usesKernel ? ("N=" + std::to_string(prm.kernel)).c_str() : "",
+        map.width(), map.height(), std::string(depthFormatName(*format)).c_str(),
+        std::string(precisionName(prm.precision)).c_str(), o.subTexelBits, o.weightBits,
+        o.referenceBits > 0 ? std::to_string(o.referenceBits).c_str() : "format's");
     std::printf("%ld of %ld receiver pixels inside the envelope (%.4f %%)\n", inside, receivers,
                 100.0 * static_cast<double>(inside) / static_cast<double>(receivers));
     if (inside == receivers) return 0;
-    std::printf("worst outlier: pixel (%d, %d) (top-left origin): visibility %.7g, envelope "
-                "[%.7g, %.7g], outside by %.3g\n",
-                worstPixel.x, worstPixel.y, static_cast<double>(worstValue),
-                static_cast<double>(worstEnv.lo), static_cast<double>(worstEnv.hi),
-                static_cast<double>(worst));
+    std::printf(
+        "worst outlier: pixel (%d, %d) (top-left origin): visibility %.7g, envelope "
+        "[%.7g, %.7g], outside by %.3g\n",
+        worstPixel.x, worstPixel.y, static_cast<double>(worstValue),
+        static_cast<double>(worstEnv.lo), static_cast<double>(worstEnv.hi),
+        static_cast<double>(worst));
     return 1;
 }
 
@@ -172,8 +175,9 @@ Command addVerifyCommand(CLI::App& app) {
     sub->add_option("--subtexel-bits", o->subTexelBits,
                     "sub-texel precision of the texture unit (default 4: Vulkan's minimum)");
     sub->add_option("--weight-bits", o->weightBits, "precision of the lerp weights (default 8)");
-    sub->add_option("--reference-bits", o->referenceBits,
-                    "precision of the depth comparison (default: 16/24 for fixed-point, 22 for 32F)");
+    sub->add_option(
+        "--reference-bits", o->referenceBits,
+        "precision of the depth comparison (default: 16/24 for fixed-point, 22 for 32F)");
     return {sub, [o] { return runVerify(*o); }};
 }
 
