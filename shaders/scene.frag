@@ -51,7 +51,8 @@ void main() {
         vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(ivec2(gl_FragCoord.xy))
                                              : vec2(1.0f, 0.0f);
         visibility = pcfFilter(uPcfDepth, vec2(u, v), ref,
-                               PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights, uSigma));
+                               PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights,
+                                         uSigma));
     }
     float cone = 1.0f;
     if (uLightType == 1) cone = dot(-toLight, uLightDirWs) >= uSpotCosCone ? 1.0f : 0.0f;

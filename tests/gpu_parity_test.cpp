@@ -222,7 +222,7 @@ TEST_F(GpuParity, EveryFormatAndOutOfRangeRefsMatchTheCpuKernel) {
             }
             map.setFixedPointBits(bits);
             const int width = 64;
-            std::vector<glm::vec4> lookups(width * 32);
+            std::vector<glm::vec4> lookups(width * 16);
             for (glm::vec4& l : lookups) l = glm::vec4(around(rng), around(rng), refs(rng), 0.0f);
             std::vector<PcfParams> all = parityCases({1, 3, 4});
             for (int w : {PCF_WEIGHTS_BINOMIAL, PCF_WEIGHTS_GAUSSIAN}) {
