@@ -145,14 +145,18 @@ int runVerify(const VerifyOptions& o) {
         }
     }
     if (receivers == 0) throw UsageError("no receiver pixels in " + dir.string());
+    std::string what = methodName;
+    if (methodInfo(prm.method).usesKernel) what += " N=" + std::to_string(prm.kernel);
+    if (prm.weights != PCF_WEIGHTS_BOX) what += " " + std::string(weightsName(prm.weights));
+    std::string refBits =
+        o.referenceBits > 0 ? std::to_string(o.referenceBits) : std::string("format's");
     std::printf(
-        "verify %s: %s %s, map %dx%d %s, precision %s; envelope: %d sub-texel bits, "
+        "verify %s: %s, map %dx%d %s, precision %s; envelope: %d sub-texel bits, "
         "%d weight bits, %s reference bits\n",
-        dir.string().c_str(), methodName.c_str(),
-        methodInfo(prm.method).usesKernel ? ("N=" + std::to_string(prm.kernel)).c_str() : "",
-        map.width(), map.height(), std::string(depthFormatName(*format)).c_str(),
+        dir.string().c_str(), what.c_str(), map.width(), map.height(),
+        std::string(depthFormatName(*format)).c_str(),
         std::string(precisionName(prm.precision)).c_str(), o.subTexelBits, o.weightBits,
-        o.referenceBits > 0 ? std::to_string(o.referenceBits).c_str() : "format's");
+        refBits.c_str());
     std::printf("%ld of %ld receiver pixels inside the envelope (%.4f %%)\n", inside, receivers,
                 100.0 * static_cast<double>(inside) / static_cast<double>(receivers));
     if (inside == receivers) return 0;
