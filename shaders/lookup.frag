@@ -8,6 +8,8 @@ uniform float uRadius;
 uniform int uRotatePerPixel;
 uniform int uBiasMode;       // PCF_BIAS_* (the per-tap part: receiver plane, soft, interpolated)
 uniform float uSoftScale;
+uniform int uWeights;  // PCF_WEIGHTS_* for pcf-naive and pcf-gather
+uniform float uSigma;  // gaussian weights, texels
 
 layout(location = 0) out float oVisibility;
 
@@ -19,5 +21,5 @@ void main() {
     vec2 uv = vec2(lookup.x, lookup.y);
     PcfRef ref = PcfRef(lookup.z, uv, PcfBias(uBiasMode, vec2(plane.x, plane.y), uSoftScale));
     oVisibility = pcfFilterRef(uPcfDepth, uv, ref,
-                               PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation));
+                               PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights, uSigma));
 }

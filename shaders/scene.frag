@@ -25,6 +25,8 @@ uniform float uShadowTexelWs;         // world size of one map texel at clip.w =
 uniform float uSoftScale;             // soft: the correction scale of seed 001
 uniform float uRadius;                // poisson radius in texels
 uniform int uRotatePerPixel;          // poisson: rotate the disk per pixel
+uniform int uWeights;                 // pcf-naive, pcf-gather: PCF_WEIGHTS_*
+uniform float uSigma;                 // gaussian weights, texels
 
 layout(location = 0) out vec4 oColour;
 #if PCF_ALL_TARGETS
@@ -84,7 +86,8 @@ void main() {
                                              : vec2(1.0f, 0.0f);
         PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(uBiasMode, dzduv, uSoftScale));
         visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef,
-                                  PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation));
+                                  PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights,
+                                            uSigma));
     }
     // Gamma 2.2 of albedo * light, light = ambient + diffuse * visibility (a scalar):
     //   pow(albedo * light, 1/2.2) = pow(albedo, 1/2.2) * pow(light, 1/2.2)

@@ -90,6 +90,16 @@ TEST_F(CliTest, TraceJsonOfAWrittenMapMatchesTheKernel) {
     }
 }
 
+// Issue 10: any finite uv; outside the map the taps clamp to the edge, as on the GPU.
+TEST_F(CliTest, TraceTakesAnyFiniteUvAndMarksClampedTaps) {
+    auto r = runPcfscope("trace --example --method pcf-naive --uv 1.02,0.6 --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("\"clamped\":true"), std::string::npos);
+    auto far = runPcfscope("trace --example --method hw2x2 --uv -1e30,0.6 --precision hw8");
+    EXPECT_EQ(far.exitCode, 0) << far.err;
+    EXPECT_NE(far.out.find("clamped to the edge"), std::string::npos) << far.out;
+}
+
 TEST_F(CliTest, BadInputExitsTwoWithOneLine) {
     ShadowMap good(4, 4, 0.5f);
     writeDepthImage(path("good.exr"), good);
@@ -129,7 +139,9 @@ TEST_F(CliTest, BadInputExitsTwoWithOneLine) {
         {"trace --map " + path("good.exr") + " --uv 0.5 --z 0.5", "--uv expects"},
         {"trace --map " + path("good.exr") + " --uv nan,0.5 --z 0.5", "--uv expects"},
         {"trace --map " + path("good.exr") + " --uv 0.5,0.5 --z nan", "--z"},
-        {"trace --map " + path("good.exr") + " --uv 0.5,1.5 --z 0.5", "out of range"},
+        {"trace --map " + path("good.exr") + " --uv 0.5,inf --z 0.5", "--uv expects"},
+        {"trace --example --precision hw9", "unknown --precision 'hw9'"},
+        {"trace --example --method tent --weights binomial", "applies to pcf-naive"},
         {"trace --map " + path("good.exr"), "needs --uv"},
         {"trace --uv 0.5,0.5 --z 0.5", "exactly one of --map"},
         {"trace --example --kernel x", "kernel"},

@@ -8,10 +8,13 @@
 #include <random>
 
 #include "kernel/bias.h"
+#include "analysis/conformance.h"
 #include "kernel/methods.h"
 #include "kernel/pcf.h"
 #include "render/gl_context.h"
+#include "render/depth_readback.h"
 #include "render/gpu_lookup.h"
+#include "render/gpu_timer.h"
 #include "render/scene_renderer.h"
 #include "scene/presets.h"
 
@@ -22,11 +25,39 @@ constexpr float PARITY_TOLERANCE = 1e-5f;
 
 class GpuParity : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() { sContext = createHeadlessContext(); }
+    static void SetUpTestSuite() {
+        sContext = createHeadlessContext();
+        const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        sSoftware = isSoftwareRenderer(renderer ? renderer : "");
+    }
     static void TearDownTestSuite() { sContext.reset(); }
     static std::unique_ptr<GlContext> sContext;
+    static bool sSoftware;  // llvmpipe and friends: the GPU computes exactly the CPU's model
 };
 std::unique_ptr<GlContext> GpuParity::sContext;
+bool GpuParity::sSoftware = true;
+
+// How far the GPU is from the CPU kernel over many lookups. On a software renderer (llvmpipe:
+// float texel positions, float weights) the CPU's `exact` model must match to 1e-5; on any
+// other GPU the texture unit may round positions and weights (8 bits on NVIDIA and AMD, 4 are
+// allowed), so there every result must lie inside the conformance envelope instead.
+struct Agreement {
+    float worst = 0.0f;  // max |GPU - CPU exact|
+    int outside = 0;     // results outside the conformance envelope (checked off llvmpipe only)
+    void add(const ShadowMap& map, glm::vec2 uv, float ref, const PcfParams& p, float gpu,
+             bool software) {
+        float cpu = filterVisibility(map, uv, ref, p);
+        worst = std::max(worst, std::fabs(cpu - gpu));
+        if (!software && !visibilityEnvelope(map, uv, ref, p).contains(gpu)) ++outside;
+    }
+    void expectOk(bool software, const std::string& what) const {
+        if (software) {
+            EXPECT_LE(worst, PARITY_TOLERANCE) << what;
+        } else {
+            EXPECT_EQ(outside, 0) << what << " (max |GPU - CPU exact| " << worst << ")";
+        }
+    }
+};
 
 std::vector<PcfParams> parityCases(std::initializer_list<int> kernels) {
     std::vector<PcfParams> cases;
@@ -72,18 +103,16 @@ TEST_F(GpuParity, RandomLookupsOnRandomMapsMatchTheCpuKernel) {
             for (const PcfParams& prm : parityCases({1, 2, 3, 5, 8})) {
                 if (rotate && prm.method != PCF_POISSON) continue;
                 std::vector<float> got = gpu.run(map, lookups, width, prm, rotate);
-                float worst = 0.0f;
+                Agreement a;
                 for (size_t k = 0; k < lookups.size(); ++k) {
                     PcfParams p = prm;
                     if (rotate) {
                         p.rotation = pcfPixelRotation(glm::ivec2(k % width, k / width));
                     }
-                    float cpu = filterVisibility(map, glm::vec2(lookups[k]), lookups[k].z, p);
-                    worst = std::max(worst, std::fabs(cpu - got[k]));
+                    a.add(map, glm::vec2(lookups[k]), lookups[k].z, p, got[k], sSoftware);
                 }
-                EXPECT_LE(worst, PARITY_TOLERANCE)
-                    << describe(prm) << " map " << size.x << "x" << size.y
-                    << (rotate ? " rotated" : "");
+                a.expectOk(sSoftware, describe(prm) + " map " + std::to_string(size.x) + "x" +
+                                          std::to_string(size.y) + (rotate ? " rotated" : ""));
             }
         }
     }
@@ -119,6 +148,149 @@ TEST_F(GpuParity, GatherComponentOrderTapByTap) {
     }
 }
 
+// The map the CPU reads is the map the sampler compares against (issue 10). For each texel of a
+// 16- and 24-bit map, a hardware tap at its centre (fraction 0: the texel alone) is lit for
+// ref = the read-back depth and shadowed for the next float up: the comparison sampler holds
+// exactly that float. On llvmpipe that float is float(k) * float(1 / (2^bits - 1)).
+TEST_F(GpuParity, FixedPointReadbackIsTheSamplersFloat) {
+    GpuLookup gpu;
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int bits : {16, 24}) {
+        const glm::ivec2 size(64, 32);
+        ShadowMap map(size.x, size.y);
+        for (int j = 0; j < size.y; ++j) {
+            for (int i = 0; i < size.x; ++i) map.setDepth(i, j, 0.05f + 0.9f * unit(rng));
+        }
+        map.setFixedPointBits(bits);
+        std::vector<glm::vec4> probe(static_cast<size_t>(size.x) * size.y);
+        gpu.run(map, probe, size.x, makeParams(PCF_HW2X2), false);
+        ShadowMap stored = gpu.storedMap();
+        ASSERT_EQ(stored.fixedPointBits(), bits);
+        std::vector<glm::vec4> at(probe.size());
+        std::vector<glm::vec4> above(probe.size());
+        int convertedDifferently = 0;
+        for (int j = 0; j < size.y; ++j) {
+            for (int i = 0; i < size.x; ++i) {
+                size_t k = static_cast<size_t>(j) * size.x + i;
+                glm::vec2 uv((i + 0.5f) / size.x, (j + 0.5f) / size.y);
+                float d = stored.depth(i, j);
+                at[k] = glm::vec4(uv, d, 0.0f);
+                above[k] = glm::vec4(uv, std::nextafter(d, 2.0f), 0.0f);
+                // The stored integer: the k whose sampler float is d (d * scale alone can round
+                // to a neighbour, the product being off by up to half a float step).
+                double scale = static_cast<double>((1u << bits) - 1u);
+                auto guess = static_cast<int64_t>(std::lround(static_cast<double>(d) * scale));
+                int64_t found = -1;
+                for (int64_t k2 = guess - 1; k2 <= guess + 1; ++k2) {
+                    if (k2 >= 0 && unormDepthAsSampled(static_cast<uint32_t>(k2), bits) == d) {
+                        found = k2;
+                    }
+                }
+                if (sSoftware) EXPECT_GE(found, 0) << bits << "-bit texel " << i << "," << j;
+                if (found >= 0 && d != static_cast<float>(static_cast<double>(found) / scale)) {
+                    ++convertedDifferently;
+                }
+            }
+        }
+        // The same float map uploaded again (GL rounds it to the same integers).
+        std::vector<float> lit = gpu.run(map, at, size.x, makeParams(PCF_HW2X2), false);
+        std::vector<float> shadowed = gpu.run(map, above, size.x, makeParams(PCF_HW2X2), false);
+        for (size_t k = 0; k < at.size(); ++k) {
+            EXPECT_EQ(lit[k], 1.0f) << bits << "-bit texel " << k;
+            EXPECT_EQ(shadowed[k], 0.0f) << bits << "-bit texel " << k;
+        }
+        // The experiment behind issue 10: for 24 bits the sampler's float is not the correctly
+        // rounded k / (2^24 - 1) in a good share of texels (16 bits: the two agree).
+        if (sSoftware && bits == 24) EXPECT_GT(convertedDifferently, 64) << "of 2048";
+    }
+}
+
+// All three formats, refs below 0 and above 1 (clamped on fixed-point maps only), non-power-of-
+// two maps, weighted kernels and both precision models.
+TEST_F(GpuParity, EveryFormatAndOutOfRangeRefsMatchTheCpuKernel) {
+    GpuLookup gpu;
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::uniform_real_distribution<float> around(-0.03f, 1.03f);
+    std::uniform_real_distribution<float> refs(-0.4f, 1.4f);
+    for (int bits : {0, 16, 24}) {
+        for (glm::ivec2 size : {glm::ivec2(37, 23), glm::ivec2(50, 50)}) {
+            ShadowMap map(size.x, size.y);
+            for (int j = 0; j < size.y; ++j) {
+                for (int i = 0; i < size.x; ++i) {
+                    map.setDepth(i, j, unit(rng) < 0.1f ? 1.0f : unit(rng));
+                }
+            }
+            map.setFixedPointBits(bits);
+            const int width = 64;
+            std::vector<glm::vec4> lookups(width * 16);
+            for (glm::vec4& l : lookups) l = glm::vec4(around(rng), around(rng), refs(rng), 0.0f);
+            std::vector<PcfParams> all = parityCases({1, 3, 4});
+            for (int w : {PCF_WEIGHTS_BINOMIAL, PCF_WEIGHTS_GAUSSIAN}) {
+                for (int method : {PCF_NAIVE, PCF_GATHER}) {
+                    PcfParams p = makeParams(method, 4);
+                    p.weights = w;
+                    p.sigma = 1.3f;
+                    all.push_back(p);
+                }
+            }
+            for (PcfParams prm : all) {
+                for (int precision : {PCF_PRECISION_EXACT, PCF_PRECISION_HW8}) {
+                    prm.precision = precision;
+                    std::vector<float> got = gpu.run(map, lookups, width, prm, false);
+                    const ShadowMap& stored = gpu.storedMap();
+                    Agreement a;
+                    for (size_t k = 0; k < lookups.size(); ++k) {
+                        a.add(stored, glm::vec2(lookups[k]), lookups[k].z, prm, got[k], sSoftware);
+                    }
+                    a.expectOk(sSoftware, describe(prm) + " w" + std::to_string(prm.weights) +
+                                              " " + std::string(precisionName(precision)) + " " +
+                                              std::to_string(bits) + "-bit " +
+                                              std::to_string(size.x) + "x" + std::to_string(size.y));
+                }
+            }
+        }
+    }
+}
+
+// Rendered frames in every format with biases that push refs below 0 and above 1, on a
+// non-power-of-two map: the GPU's visibility against the CPU kernel on the read-back map.
+TEST_F(GpuParity, RenderedFixedPointFramesMatchWithAnyBias) {
+    for (const char* preset : {"grazing", "sphere-over-plane"}) {
+        Scene scene = *presetScene(preset);
+        SceneRenderer renderer(scene);
+        for (DepthFormat format : {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F}) {
+            for (float bias : {0.0f, -0.5f, 0.5f}) {
+                for (int method : {PCF_NEAREST, PCF_BILINEAR2X2, PCF_HW2X2, PCF_GATHER, PCF_TENT}) {
+                    RenderSettings s;
+                    s.method = method;
+                    s.kernel = method == PCF_TENT ? 5 : 3;
+                    s.mapSize = 100;
+                    s.depthFormat = format;
+                    s.bias = bias == 0.0f ? BiasMode::None : BiasMode::Constant;
+                    s.constantBias = bias;
+                    s.frameSize = {200, 112};
+                    renderer.render(s);
+                    ShadowMap map = renderer.readShadowMap();
+                    std::vector<float> ls = renderer.readLightSpace();
+                    std::vector<float> vis = renderer.readVisibility();
+                    Agreement a;
+                    for (size_t k = 0; k < vis.size(); ++k) {
+                        if (ls[4 * k + 3] != 1.0f) continue;
+                        a.add(map, glm::vec2(ls[4 * k], ls[4 * k + 1]), ls[4 * k + 2],
+                              s.pcfParams(), vis[k], sSoftware);
+                    }
+                    a.expectOk(sSoftware, std::string(preset) + " " +
+                                              std::string(depthFormatName(format)) + " bias " +
+                                              std::to_string(bias) + " " +
+                                              std::string(methodInfo(method).name));
+                }
+            }
+        }
+    }
+}
+
 TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
     for (const char* preset : {"box-on-plane", "sphere-over-plane", "stairs"}) {
         Scene scene = *presetScene(preset);
@@ -139,7 +311,7 @@ TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
                 std::vector<float> vis = renderer.readVisibility();
                 int receivers = 0;
                 int shadowed = 0;
-                float worst = 0.0f;
+                Agreement a;
                 for (int y = 0; y < s.frameSize.y; ++y) {
                     for (int x = 0; x < s.frameSize.x; ++x) {
                         size_t k = static_cast<size_t>(y) * s.frameSize.x + x;
@@ -150,15 +322,14 @@ TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
                         if (s.rotatePerPixel) {
                             p.rotation = pcfPixelRotation(glm::ivec2(x, s.frameSize.y - 1 - y));
                         }
-                        float cpu = filterVisibility(map, glm::vec2(ls[4 * k], ls[4 * k + 1]),
-                                                     ls[4 * k + 2], p);
-                        worst = std::max(worst, std::fabs(cpu - vis[k]));
+                        a.add(map, glm::vec2(ls[4 * k], ls[4 * k + 1]), ls[4 * k + 2], p, vis[k],
+                              sSoftware);
                         if (vis[k] < 0.5f) ++shadowed;
                     }
                 }
                 std::string what = std::string(preset) + " map " + std::to_string(mapSize) +
                                    " " + describe(prm);
-                EXPECT_LE(worst, PARITY_TOLERANCE) << what;
+                a.expectOk(sSoftware, what);
                 EXPECT_GT(receivers, s.frameSize.x * s.frameSize.y / 4) << what;
                 EXPECT_GT(shadowed, 50) << what;  // there is a shadow to agree about
             }

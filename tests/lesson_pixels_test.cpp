@@ -184,6 +184,22 @@ const std::map<std::string, Claims>& lessonClaims() {
           {{"faint acne", [](const Trace& t) { return t.visibility > 0.5f && t.visibility < 1.0f; }}},
           {lit()},
           {lit()}}},
+        {"15-texture-unit-precision",
+         {{bits("1010"),
+           {"near 0.8", [](const Trace& t) { return near(t.visibility, 0.8f, 0.05f); }}},
+          {bits("1010"),
+           {"hw8: whole 256ths, within 1/512 of the float fraction",
+            [](const Trace& t) {
+                return t.fracHw8.x * 256.0f == std::round(t.fracHw8.x * 256.0f) &&
+                       std::fabs(t.fracHw8.x - t.pos.frac.x) <= 1.0f / 512.0f &&
+                       t.visibility == t.visibilityHw8;
+            }}},
+          {{"inside a magnified lerp",
+            [](const Trace& t) { return t.visibility > 0.05f && t.visibility < 0.95f; }}},
+          {penumbra(),
+           {"corner gathers: hw8 = exact",
+            [](const Trace& t) { return t.visibilityHw8 == t.visibilityExact; }}},
+          {bits("1010")}}},
     };
     return claims;
 }

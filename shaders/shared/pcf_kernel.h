@@ -58,6 +58,13 @@ struct PcfParams {
     int kernel;     // N: 1..8 for pcf-naive, pcf-gather and pcf-hw; 3, 5 or 7 for tent
     float radius;   // poisson: disk radius in texels (seed 003 uses 1)
     vec2 rotation;  // poisson: (cos, sin) of the disk's rotation; (1, 0) for none
+    int weights;    // pcf-naive, pcf-gather: PCF_WEIGHTS_BOX (0), _BINOMIAL or _GAUSSIAN
+    float sigma;    // gaussian weights: standard deviation in texels
+#ifdef __cplusplus
+    // The CPU's model of the texture unit (PCF_PRECISION_EXACT or _HW8). In GLSL the same
+    // choice is the uniform uPcfPrecision, read through mapPrecision(map) (pcf_prelude.h).
+    int precision = 0;
+#endif
 };
 
 // Where a lookup falls in texel space.
@@ -75,6 +82,52 @@ PCF_FN PcfTexelPos pcfTexelPos(vec2 uv, ivec2 size) {
 
 PCF_FN ivec2 pcfClampTexel(ivec2 texel, ivec2 size) {
     return clamp(texel, ivec2(0), size - ivec2(1));
+}
+
+// ---- The texture unit's own arithmetic (issue 10) ----------------------------------------
+//
+// Fixed-point depth (GL 4.5 core profile, section 8.23.1, "Depth Texture Comparison Mode"): for
+// a fixed-point depth format (16, 24 bit) both D_ref and D_t are clamped to [0,1] before the
+// comparison; for 32F neither is. The stored D_t of a fixed-point map is already in [0,1], so
+// only D_ref needs the clamp. mapFixedPoint(map) is 1 for a 16/24-bit map (CPU: ShadowMap's
+// format; GLSL: the uniform uPcfFixedPoint). Every method clamps, texelFetch ones included, so
+// that bilinear2x2 stays equal to the hardware tap it emulates.
+PCF_MAP_FN float pcfDepthRef(Map map, float ref) {
+    return mapFixedPoint(map) != 0 ? clamp(ref, 0.0f, 1.0f) : ref;
+}
+
+// Precision of the texel position inside hardware taps and gathers.
+//   exact: float, what llvmpipe does (measured, DESIGN.md 2);
+//   hw8:   the position kept with 8 fractional bits, i.e. in steps of 1/256 texel, as NVIDIA and
+//          AMD texture units do. Sources: Direct3D 12 functional spec, constant
+//          D3D12_SUBTEXEL_FRACTIONAL_BIT_COUNT = 8; Inigo Quilez, "hardware interpolation"
+//          (iquilezles.org, 2008): the interpolant is 24.8 fixed point; the Vulkan spec only
+//          requires subTexelPrecisionBits >= 4.
+PCF_CONST int PCF_PRECISION_EXACT = 0;
+PCF_CONST int PCF_PRECISION_HW8 = 1;
+PCF_CONST float PCF_SUBTEXEL_STEPS = 256.0f;  // 2^8 steps per texel
+
+// hw8's rounding: round to nearest, ties up, of p * 256: q = floor(p * 256 + 0.5) / 256. Both
+// steps are exact in float for |p| < 2^15 texels (p * 256 is a power-of-two scaling), so CPU and
+// GPU agree bit for bit. The result is in [p - 1/512, p + 1/512].
+PCF_FN vec2 pcfQuantiseTexelPos(vec2 p) {
+    PCF_PRECISE vec2 s = p * PCF_SUBTEXEL_STEPS + vec2(0.5f);
+    return floor(s) / PCF_SUBTEXEL_STEPS;
+}
+
+// The texel position the texture unit works with for a tap or gather at uv.
+PCF_MAP_FN vec2 pcfUnitTexelPos(Map map, vec2 uv) {
+    vec2 p = pcfTexelPos(uv, mapSize(map)).p;
+    return mapPrecision(map) == PCF_PRECISION_HW8 ? pcfQuantiseTexelPos(p) : p;
+}
+
+// The uv handed to a hardware tap or a gather: unchanged for exact; for hw8, the uv of the
+// quantised position, so that an exact texture unit (llvmpipe) computes what an 8-bit one
+// would, and an 8-bit unit rounds it back to the same step (|error| << 1/512 texel).
+PCF_MAP_FN vec2 pcfUnitUv(Map map, vec2 uv) {
+    if (mapPrecision(map) != PCF_PRECISION_HW8) return uv;
+    PCF_PRECISE vec2 q = pcfUnitTexelPos(map, uv) + vec2(0.5f);
+    return q / vec2(mapSize(map));
 }
 
 // The depth comparison (GL_LEQUAL): 1 = lit, 0 = shadowed.
@@ -189,8 +242,10 @@ PCF_FN vec2 pcfReceiverPlaneDzDuv(vec3 dx, vec3 dy) {
 // Reads one texel (clamped to the edge), compares it, and reports the tap with its weight in
 // the final result.
 // The tap's own ref is the receiver plane's at the (unclamped) texel's centre under
-// receiver-plane bias, and the lookup's ref otherwise; the soft mode compares softly.
+// receiver-plane bias, and the lookup's ref otherwise; on fixed-point maps it is then clamped to
+// [0,1] (pcfDepthRef); the soft mode compares softly.
 PCF_MAP_FN float pcfFetchCompare(Map map, ivec2 texel, PcfRef ref, float weight) {
+    pcfTapWanted(map, texel);  // the trace marks taps that clamp to the edge
     ivec2 size = mapSize(map);
     ivec2 t = pcfClampTexel(texel, size);
     float depth = fetchDepth(map, t);
@@ -199,8 +254,9 @@ PCF_MAP_FN float pcfFetchCompare(Map map, ivec2 texel, PcfRef ref, float weight)
     if (ref.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
         tapRef = pcfRefAt(ref, pcfTexelCentreUv(texel, size));
     }
-    float lit = pcfCompareBiased(depth, tapRef, ref.bias);
-    pcfTap(map, t, depth, tapRef, lit, weight);
+    float r = pcfDepthRef(map, tapRef);  // fixed-point maps: D_ref clamped to [0,1]
+    float lit = pcfCompareBiased(depth, r, ref.bias);
+    pcfTap(map, t, depth, r, lit, weight);
     return lit;
 }
 
@@ -236,20 +292,21 @@ PCF_MAP_FN float pcfBilinearLookup(Map map, vec2 uv, PcfRef ref, float weight) {
 
 #ifdef __cplusplus
 // On the CPU a hardware comparison tap is modelled exactly as the bilinear 2x2 (DESIGN.md 2).
+// With hw8 the position is quantised before floor and frac (pcfUnitTexelPos).
 template <class Map>
 inline float hwTap(Map map, vec2 uv, float ref, float weight) {
-    return pcfBilinearCore(map, uv, pcfPlainRef(ref, uv), weight);
+    return pcfBilinearAt(map, pcfUnitTexelPos(map, uv), pcfPlainRef(ref, uv), weight);
 }
 
 // On the CPU a comparison gather is four texel comparisons, returned in GL's component order.
 template <class Map>
 inline vec4 gatherCompare(Map map, vec2 uv, float ref, vec4 weights) {
-    PcfTexelPos tp = pcfTexelPos(uv, mapSize(map));
+    ivec2 base = ivec2(floor(pcfUnitTexelPos(map, uv)));
     PcfRef r = pcfPlainRef(ref, uv);
-    float x = pcfFetchCompare(map, tp.base + ivec2(0, 1), r, weights.x);
-    float y = pcfFetchCompare(map, tp.base + ivec2(1, 1), r, weights.y);
-    float z = pcfFetchCompare(map, tp.base + ivec2(1, 0), r, weights.z);
-    float w = pcfFetchCompare(map, tp.base + ivec2(0, 0), r, weights.w);
+    float x = pcfFetchCompare(map, base + ivec2(0, 1), r, weights.x);
+    float y = pcfFetchCompare(map, base + ivec2(1, 1), r, weights.y);
+    float z = pcfFetchCompare(map, base + ivec2(1, 0), r, weights.z);
+    float w = pcfFetchCompare(map, base + ivec2(0, 0), r, weights.w);
     return vec4(x, y, z, w);
 }
 
@@ -269,7 +326,7 @@ inline vec4 gatherDepth(Map map, vec2 uv) {
 // the plane's depth at the tap's own uv (per tap, as engines do; not per texel).
 PCF_MAP_FN float pcfHwTap(Map map, vec2 uv, PcfRef ref, float weight) {
     pcfFetch(map, PCF_FETCH_HW, uv, weight);
-    return hwTap(map, uv, pcfRefAt(ref, uv), weight);
+    return hwTap(map, pcfUnitUv(map, uv), pcfRefAt(ref, uv), weight);
 }
 
 // Seed 004's "Solution 2" ("PCF Shadow Acne"): interpolate the stored depth bilinearly at uv and
@@ -290,6 +347,7 @@ PCF_MAP_FN float pcfInterpolatedCompare(Map map, vec2 uv, float ref, float weigh
     float d01 = fetchDepth(map, t01);
     float d11 = fetchDepth(map, t11);
     PCF_PRECISE float depth = w.x * d00 + w.y * d10 + w.z * d01 + w.w * d11;
+    ref = pcfDepthRef(map, ref);
     float lit = pcfCompare(depth, ref);
     pcfTap(map, t00, d00, ref, lit, w.x * weight);
     pcfTap(map, t10, d10, ref, lit, w.y * weight);
@@ -305,12 +363,13 @@ PCF_MAP_FN vec4 pcfGatherSoft(Map map, vec2 uv, PcfRef ref, vec4 weights) {
     ivec2 base = pcfTexelPos(uv, size).base;
     vec4 d = gatherDepth(map, uv);
     float s = ref.bias.softScale;
-    vec4 bits = vec4(pcfCompareSoft(d.x, ref.ref, s), pcfCompareSoft(d.y, ref.ref, s),
-                     pcfCompareSoft(d.z, ref.ref, s), pcfCompareSoft(d.w, ref.ref, s));
-    pcfTap(map, pcfClampTexel(base + ivec2(0, 1), size), d.x, ref.ref, bits.x, weights.x);
-    pcfTap(map, pcfClampTexel(base + ivec2(1, 1), size), d.y, ref.ref, bits.y, weights.y);
-    pcfTap(map, pcfClampTexel(base + ivec2(1, 0), size), d.z, ref.ref, bits.z, weights.z);
-    pcfTap(map, pcfClampTexel(base + ivec2(0, 0), size), d.w, ref.ref, bits.w, weights.w);
+    float r = pcfDepthRef(map, ref.ref);
+    vec4 bits = vec4(pcfCompareSoft(d.x, r, s), pcfCompareSoft(d.y, r, s),
+                     pcfCompareSoft(d.z, r, s), pcfCompareSoft(d.w, r, s));
+    pcfTap(map, pcfClampTexel(base + ivec2(0, 1), size), d.x, r, bits.x, weights.x);
+    pcfTap(map, pcfClampTexel(base + ivec2(1, 1), size), d.y, r, bits.y, weights.y);
+    pcfTap(map, pcfClampTexel(base + ivec2(1, 0), size), d.z, r, bits.z, weights.z);
+    pcfTap(map, pcfClampTexel(base + ivec2(0, 0), size), d.w, r, bits.w, weights.w);
     return bits;
 }
 
@@ -423,9 +482,107 @@ PCF_MAP_FN float pcfGather(Map map, vec2 uv, PcfRef ref, int n) {
             // A comparison gather has one ref for its four texels: under receiver-plane bias
             // the plane's depth at the gather's centre (its block's shared corner). The soft
             // comparison needs the depths themselves: a gather of raw depth (seed 001).
+            vec2 unitUv = pcfUnitUv(map, corner);
             vec4 bits = ref.bias.mode == PCF_BIAS_SOFT
-                            ? pcfGatherSoft(map, corner, ref, w)
-                            : gatherCompare(map, corner, pcfRefAt(ref, corner), w);
+                            ? pcfGatherSoft(map, unitUv, ref, w)
+                            : gatherCompare(map, unitUv, pcfRefAt(ref, corner), w);
+            sum += dot(bits, w);
+        }
+    }
+    return sum;
+}
+
+// ---- Weighted kernels (issue 10) --------------------------------------------------------
+//
+// "PCF Shadow Acne" (blog post) suggests weighting the N x N lookups with a binomial or a
+// Gaussian kernel instead of the box. The weights are separable: lookup (i, j) weighs
+// a_i * a_j, with per-axis weights a_k (k = 0..N-1, offset x_k = k - (N-1)/2) summing to 1:
+//   box:      a_k = 1/N
+//   binomial: a_k = C(N-1, k) / 2^(N-1)       (Pascal's row: N = 3 gives 1/4, 1/2, 1/4)
+//   gaussian: a_k = exp(-x_k^2 / (2 sigma^2)) / sum_k exp(...)     sigma in texels, > 0
+PCF_CONST int PCF_WEIGHTS_BOX = 0;
+PCF_CONST int PCF_WEIGHTS_BINOMIAL = 1;
+PCF_CONST int PCF_WEIGHTS_GAUSSIAN = 2;
+
+PCF_FN float pcfAxisWeightRaw(int k, int n, int weights, float sigma) {
+    if (weights == PCF_WEIGHTS_BINOMIAL) {
+        float c = 1.0f;  // C(n-1, k), built up as a product: exact for n <= 8
+        for (int t = 0; t < k; ++t) c = c * float(n - 1 - t) / float(t + 1);
+        return c;
+    }
+    if (weights == PCF_WEIGHTS_GAUSSIAN) {
+        float x = pcfKernelOffset(k, n);
+        return exp(-x * x / (2.0f * sigma * sigma));
+    }
+    return 1.0f;
+}
+
+// a_k, normalised so that the N weights sum to 1.
+PCF_FN float pcfAxisWeight(int k, int n, int weights, float sigma) {
+    float total = 0.0f;
+    for (int t = 0; t < n; ++t) total += pcfAxisWeightRaw(t, n, weights, sigma);
+    return pcfAxisWeightRaw(k, n, weights, sigma) / total;
+}
+
+// pcf-naive with weights: the same N x N bilinear lookups (4 N^2 reads), lookup (i, j)
+// weighted a_i * a_j.
+PCF_MAP_FN float pcfNaiveWeighted(Map map, vec2 uv, PcfRef ref, int n, int weights, float sigma) {
+    ivec2 size = mapSize(map);
+    vec2 p = pcfTexelPos(uv, size).p;
+    vec2 texelUv = vec2(1.0f) / vec2(size);
+    float sum = 0.0f;
+    for (int j = 0; j < n; ++j) {
+        float aj = pcfAxisWeight(j, n, weights, sigma);
+        for (int i = 0; i < n; ++i) {
+            float w = pcfAxisWeight(i, n, weights, sigma) * aj;
+            vec2 offset = vec2(pcfKernelOffset(i, n), pcfKernelOffset(j, n));
+            PCF_PRECISE vec2 pk = p + offset;
+            pcfFetch(map, PCF_FETCH_LOOKUP, uv + offset * texelUv, w);
+            sum += w * pcfBilinearAt(map, pk, ref, w);
+        }
+    }
+    return sum;
+}
+
+// The footprint table for any separable weights: footprint texel m (0..N) is the 2x2's right
+// texel of lookup m-1 and the left texel of lookup m, so per axis it weighs
+//   W_m = a_m (1 - g) [m < N] + a_(m-1) g [m > 0]
+// (box: (1-g, 1, ..., 1, g) / N, seed 001's table for N = 3).
+PCF_FN float pcfFootprintWeightW(int m, int n, float g, int weights, float sigma) {
+    float w = 0.0f;
+    if (m < n) w += pcfAxisWeight(m, n, weights, sigma) * (1.0f - g);
+    if (m > 0) w += pcfAxisWeight(m - 1, n, weights, sigma) * g;
+    return w;
+}
+
+// pcf-gather with weights: the same ceil((N+1)/2)^2 gathers at the blocks' shared corners,
+// weighted by pcfFootprintWeightW. Equals pcfNaiveWeighted to float rounding.
+PCF_MAP_FN float pcfGatherWeighted(Map map, vec2 uv, PcfRef ref, int n, int weights, float sigma) {
+    ivec2 size = mapSize(map);
+    PcfFootprint fp = pcfKernelFootprint(uv, size, n);
+    int blocks = (n + 2) / 2;
+    float sum = 0.0f;
+    for (int by = 0; by < blocks; ++by) {
+        for (int bx = 0; bx < blocks; ++bx) {
+            int mx = 2 * bx;
+            int my = 2 * by;
+            float wx0 = pcfFootprintWeightW(mx, n, fp.frac.x, weights, sigma);
+            float wx1 = mx + 1 <= n ? pcfFootprintWeightW(mx + 1, n, fp.frac.x, weights, sigma)
+                                    : 0.0f;
+            float wy0 = pcfFootprintWeightW(my, n, fp.frac.y, weights, sigma);
+            float wy1 = my + 1 <= n ? pcfFootprintWeightW(my + 1, n, fp.frac.y, weights, sigma)
+                                    : 0.0f;
+            // GL's gather order: x = (0,1), y = (1,1), z = (1,0), w = (0,0).
+            vec4 w = vec4(wx0 * wy1, wx1 * wy1, wx1 * wy0, wx0 * wy0);
+            vec2 corner = vec2(fp.origin + ivec2(mx + 1, my + 1)) / vec2(size);
+            pcfFetch(map, PCF_FETCH_GATHER, corner, 1.0f);
+            // A comparison gather has one ref for its four texels: under receiver-plane bias
+            // the plane's depth at the gather's centre (its block's shared corner). The soft
+            // comparison needs the depths themselves: a gather of raw depth (seed 001).
+            vec2 unitUv = pcfUnitUv(map, corner);
+            vec4 bits = ref.bias.mode == PCF_BIAS_SOFT
+                            ? pcfGatherSoft(map, unitUv, ref, w)
+                            : gatherCompare(map, unitUv, pcfRefAt(ref, corner), w);
             sum += dot(bits, w);
         }
     }
@@ -535,8 +692,12 @@ PCF_MAP_FN float pcfFilterRef(Map map, vec2 uv, PcfRef ref, PcfParams prm) {
         v = pcfBilinearLookup(map, uv, ref, 1.0f);
     } else if (prm.method == PCF_HW2X2) {
         v = pcfHwTap(map, uv, ref, 1.0f);
+    } else if (prm.method == PCF_NAIVE && prm.weights != PCF_WEIGHTS_BOX) {
+        v = pcfNaiveWeighted(map, uv, ref, prm.kernel, prm.weights, prm.sigma);
     } else if (prm.method == PCF_NAIVE) {
         v = pcfNaive(map, uv, ref, prm.kernel);
+    } else if (prm.method == PCF_GATHER && prm.weights != PCF_WEIGHTS_BOX) {
+        v = pcfGatherWeighted(map, uv, ref, prm.kernel, prm.weights, prm.sigma);
     } else if (prm.method == PCF_GATHER) {
         v = pcfGather(map, uv, ref, prm.kernel);
     } else if (prm.method == PCF_HW) {

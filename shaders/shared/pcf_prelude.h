@@ -49,9 +49,18 @@
 uniform sampler2DShadow uPcfCompare;
 
 ivec2 mapSize(Map map) { return textureSize(map, 0); }
+
+// The texture unit's state the kernel needs (issue 10; uniforms left unset are 0): 1 when the
+// depth texture is fixed-point (16, 24 bit: D_ref clamped to [0,1]); the precision model of
+// hardware taps and gathers (0 exact, 1 hw8: positions snapped to 1/256 texel before the tap).
+uniform int uPcfFixedPoint;
+uniform int uPcfPrecision;
+int mapFixedPoint(Map map) { return uPcfFixedPoint; }
+int mapPrecision(Map map) { return uPcfPrecision; }
 float fetchDepth(Map map, ivec2 texel) { return texelFetch(map, texel, 0).r; }
 void pcfTap(Map map, ivec2 texel, float depth, float ref, float lit, float weight) {}
 void pcfFetch(Map map, int kind, vec2 uv, float weight) {}
+void pcfTapWanted(Map map, ivec2 texel) {}
 
 // One hardware comparison tap: four comparisons lerped by the texture unit.
 float hwTap(Map map, vec2 uv, float ref, float weight) {

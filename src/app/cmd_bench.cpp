@@ -60,6 +60,9 @@ struct BenchCommandOptions {
     float constantBias = 0.002f;
     std::string cull = "front";
     std::string depthFormat = "32f";
+    std::string weights = "box";      // pcf-naive, pcf-gather
+    float sigma = 1.0f;               // gaussian weights, texels
+    std::string precision = "exact";  // hardware taps and gathers
     bool force = false;
     CLI::App* sub = nullptr;  // to tell options the user gave from defaults
 
@@ -171,6 +174,25 @@ int runBenchCommand(const BenchCommandOptions& o) {
         throw UsageError("unknown --depth-format '" + o.depthFormat + "' (known: 16, 24, 32f)");
     }
     options.base.depthFormat = *format;
+    // Issue 10: weights (pcf-naive, pcf-gather only) and the texture unit's precision model.
+    std::optional<int> weights = weightsFromName(o.weights);
+    if (!weights) {
+        throw UsageError("unknown --weights '" + o.weights + "' (known: box, binomial, gaussian)");
+    }
+    std::optional<int> precision = precisionFromName(o.precision);
+    if (!precision) throw UsageError("unknown --precision '" + o.precision + "' (known: exact, hw8)");
+    options.base.weights = *weights;
+    options.base.sigma = o.sigma;
+    options.base.precision = *precision;
+    if (*weights != PCF_WEIGHTS_BOX) {
+        if (options.methods.empty()) options.methods = {PCF_NAIVE, PCF_GATHER};
+        for (int m : options.methods) {
+            PcfParams p = makeParams(m, 3);
+            p.weights = *weights;
+            p.sigma = o.sigma;
+            if (auto why = validateParams(p)) throw UsageError(*why + " (give --methods)");
+        }
+    }
     if (auto why = validateBenchOptions(options)) throw UsageError(*why);
     if (!o.scene.empty() && !o.sceneFile.empty()) {
         throw UsageError("give --scene or --scene-file, not both");
@@ -359,6 +381,11 @@ Command addBenchCommand(CLI::App& app) {
                     "faces culled in the shadow pass: front (the default: the map holds back "
                     "faces, which keeps acne out of the error), back, none");
     sub->add_option("--depth-format", o->depthFormat, "shadow map depth format: 16, 24, 32f");
+    sub->add_option("--weights", o->weights,
+                    "pcf-naive, pcf-gather: box, binomial, gaussian (default methods: those two)");
+    sub->add_option("--sigma", o->sigma, "gaussian weights: standard deviation in texels");
+    sub->add_option("--precision", o->precision,
+                    "texel position inside hardware taps and gathers: exact, hw8");
     sub->add_flag("-f,--force", o->force, "overwrite existing output files");
     return {sub, [o] { return runBenchCommand(*o); }};
 }

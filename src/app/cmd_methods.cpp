@@ -28,6 +28,14 @@ Command addMethodsCommand(CLI::App& app) {
             std::printf("%-12s %-26s %s\n", std::string(m.name).c_str(), fetches.c_str(),
                         std::string(m.summary).c_str());
         }
+        std::printf(
+            "\nweights (pcf-naive, pcf-gather; --weights, the same fetches):\n"
+            "  box        every lookup 1/N^2 (the default)\n"
+            "  binomial   lookup (i, j) weighs C(N-1,i) C(N-1,j) / 4^(N-1)\n"
+            "  gaussian   exp(-(x^2 + y^2) / (2 sigma^2)), normalised; --sigma in texels\n"
+            "precision (hardware taps and gathers; --precision):\n"
+            "  exact      float texel position (what llvmpipe does)\n"
+            "  hw8        position rounded to 1/256 texel (8 sub-texel bits, as on NVIDIA/AMD)\n");
         return 0;
     }};
 }

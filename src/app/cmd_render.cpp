@@ -18,6 +18,22 @@ namespace pcf {
 
 namespace {
 
+// What `pcfscope verify` needs to repeat the lookups of a --raw folder: the method and its
+// parameters, the map's format (fixed-point clamps D_ref) and the precision model.
+std::string rawSettingsJson(const RenderSettings& s) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "{\"method\":\"%s\",\"kernel\":%d,\"radius\":%.9g,\"rotate\":%s,"
+                  "\"weights\":\"%s\",\"sigma\":%.9g,\"precision\":\"%s\","
+                  "\"depth_format\":\"%s\",\"map_size\":%d}\n",
+                  std::string(methodInfo(s.method).name).c_str(), s.kernel,
+                  static_cast<double>(s.radius), s.rotatePerPixel ? "true" : "false",
+                  std::string(weightsName(s.weights)).c_str(), static_cast<double>(s.sigma),
+                  std::string(precisionName(s.precision)).c_str(),
+                  std::string(depthFormatName(s.depthFormat)).c_str(), s.mapSize);
+    return buf;
+}
+
 struct RenderCommandOptions {
     RenderOptions render;
     std::string out;
@@ -40,7 +56,7 @@ int runRender(const RenderCommandOptions& o) {
         requireExtension("-o", o.out, ".png");
         outputs.add("-o", o.out);
     }
-    std::string rawShadow, rawLightSpace, rawVisibility, rawPositions, rawReceiver;
+    std::string rawShadow, rawLightSpace, rawVisibility, rawPositions, rawReceiver, rawSettings;
     if (!o.rawDir.empty()) {
         std::filesystem::path dir(o.rawDir);
         outputs.addDirectory("--raw", dir);
@@ -49,9 +65,10 @@ int runRender(const RenderCommandOptions& o) {
         rawVisibility = (dir / "visibility.exr").string();
         rawPositions = (dir / "positions.exr").string();
         rawReceiver = (dir / "dzduv.exr").string();
+        rawSettings = (dir / "render.json").string();
         settings.writePositions = true;
-        for (const std::string& p :
-             {rawShadow, rawLightSpace, rawVisibility, rawPositions, rawReceiver}) {
+        for (const std::string& p : {rawShadow, rawLightSpace, rawVisibility, rawPositions,
+                                     rawReceiver, rawSettings}) {
             outputs.add("--raw", p);
         }
     }
@@ -85,6 +102,7 @@ int runRender(const RenderCommandOptions& o) {
         writeExr(rawPositions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
         std::vector<float> receiver = renderer.readReceiver();
         writeExr(rawReceiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
+        writeTextFile(rawSettings, rawSettingsJson(settings));
     }
     outputs.commit();
     return 0;
@@ -99,8 +117,9 @@ Command addRenderCommand(CLI::App& app) {
     sub->add_option("-o,--out", o->out, "the frame as PNG");
     sub->add_option("--raw", o->rawDir,
                     "write shadowmap.exr, lightspace.exr (u, v, ref, receiver), "
-                    "visibility.exr, positions.exr (world xyz, drawn) and dzduv.exr (dz/du, "
-                    "dz/dv of the receiver plane, z before bias, receiver) into DIR");
+                    "visibility.exr, positions.exr (world xyz, drawn), dzduv.exr (dz/du, "
+                    "dz/dv of the receiver plane, z before bias, receiver) and render.json "
+                    "(method, format, precision) into DIR");
     sub->add_flag("-f,--force", o->force, "overwrite existing output files");
     sub->add_option("--time", o->timeRepeats,
                     "time the camera pass over this many draws and print the median");

@@ -40,7 +40,16 @@ struct TraceOptions {
     float radius = 1.0f;
     float rotationDeg = 0.0f;
     bool json = false;
+    std::string weights = "box";
+    float sigma = 1.0f;
+    std::string precision = "exact";
+    std::string depthFormat = "32f";
 };
+
+// Beyond this |uv| every tap of every method already reads edge texels (the widest reach is a
+// 64-texel Poisson disk on a 4-texel map: 16 uv units), so clamping there changes no result and
+// keeps uv * size far from int overflow.
+constexpr float UV_LIMIT = 20.0f;
 
 // The built-in example's lookup: bits 1 and 0 at fx = 0.2, as in seed 000's worked example.
 constexpr const char* EXAMPLE_UV = "0.4625,0.3875";
@@ -58,6 +67,21 @@ int runTrace(const TraceOptions& o) {
                             o.radius);
     float rad = o.rotationDeg * 0.0174532925f;
     PcfParams prm = makeParams(*method, o.kernel, o.radius, vec2(std::cos(rad), std::sin(rad)));
+    std::optional<int> weights = weightsFromName(o.weights);
+    if (!weights) {
+        throw UsageError("unknown --weights '" + o.weights + "' (known: box, binomial, gaussian)");
+    }
+    std::optional<int> precision = precisionFromName(o.precision);
+    if (!precision) throw UsageError("unknown --precision '" + o.precision + "' (known: exact, hw8)");
+    int fixedBits = 0;
+    if (o.depthFormat == "16" || o.depthFormat == "24") {
+        fixedBits = o.depthFormat == "16" ? 16 : 24;
+    } else if (o.depthFormat != "32f" && o.depthFormat != "32F" && o.depthFormat != "32") {
+        throw UsageError("unknown --depth-format '" + o.depthFormat + "' (known: 16, 24, 32f)");
+    }
+    prm.weights = *weights;
+    prm.sigma = o.sigma;
+    prm.precision = *precision;
     if (auto why = validateParams(prm)) throw UsageError(*why);
     requireRange("--rotation", o.rotationDeg, -360.0f, 360.0f);
     std::optional<int> biasMode = biasFromName(o.bias);
@@ -112,9 +136,10 @@ int runTrace(const TraceOptions& o) {
             throw UsageError(e.what());
         }
     }
-    vec2 uv = parseVec2("--uv", uvText);
-    requireRange("--uv u", uv.x, 0.0f, 1.0f);
-    requireRange("--uv v", uv.y, 0.0f, 1.0f);
+    map.setFixedPointBits(fixedBits);
+    // Any finite uv: texels outside the map clamp to the edge, as the GPU's sampler does; the
+    // trace marks the taps that did.
+    vec2 uv = glm::clamp(parseVec2("--uv", uvText), vec2(-UV_LIMIT), vec2(1.0f + UV_LIMIT));
     requireRange("--z", z, 0.0f, 1.0f);
 
     // The per-lookup bias (kernel/bias.h); normal offset has already moved the point given.
@@ -135,7 +160,9 @@ Command addTraceCommand(CLI::App& app) {
                     "single-channel float depth image (EXR, TIFF); row 0 = first scanline");
     sub->add_flag("--example", o->example,
                   "use the built-in 8x8 example map (default lookup: seed 000's 0.8 example)");
-    sub->add_option("--uv", o->uv, "shadow-map coordinates U,V in [0,1]");
+    sub->add_option("--uv", o->uv,
+                    "shadow-map coordinates U,V; any finite values (outside [0,1] the taps clamp "
+                    "to the edge)");
     o->sub = sub;
     o->zOption = sub->add_option("--z", o->z, "receiver depth in [0,1] as the light sees it");
     addBiasOptions(sub, o->bias, o->constantBias, o->slopeBias, o->slopeMax, o->normalOffset,
@@ -153,6 +180,13 @@ Command addTraceCommand(CLI::App& app) {
     o->radiusOption = sub->add_option("--radius", o->radius, "poisson: disk radius in texels");
     sub->add_option("--rotation", o->rotationDeg, "poisson: disk rotation in degrees");
     sub->add_flag("--json", o->json, "print the trace as one JSON object");
+    sub->add_option("--weights", o->weights,
+                    "pcf-naive, pcf-gather: weights of the lookups: box, binomial, gaussian");
+    sub->add_option("--sigma", o->sigma, "gaussian weights: standard deviation in texels");
+    sub->add_option("--precision", o->precision,
+                    "texel position inside hardware taps and gathers: exact, hw8 (1/256 texel)");
+    sub->add_option("--depth-format", o->depthFormat,
+                    "the map's format: 16, 24 (fixed-point: ref clamped to [0,1]) or 32f");
     return {sub, [o] { return runTrace(*o); }};
 }
 

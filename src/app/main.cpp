@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
         pcf::addStabilityCommand(app),
         pcf::addViewCommand(app),
         pcf::addExportCommand(app),
+        pcf::addVerifyCommand(app),
     };
 
     try {

@@ -50,6 +50,11 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     sub->add_option("--map-size", mapSize, "shadow map size in texels (4..4096)");
     sub->add_option("--depth-format", depthFormat, "shadow map depth format: 16, 24, 32f");
     sub->add_option("--size", size, "frame size WxH");
+    sub->add_option("--weights", weights,
+                    "pcf-naive, pcf-gather: weights of the N x N lookups: box, binomial, gaussian");
+    sub->add_option("--sigma", sigma, "gaussian weights: standard deviation in texels");
+    sub->add_option("--precision", precision,
+                    "texel position inside hardware taps and gathers: exact, hw8 (1/256 texel)");
 }
 
 bool RenderOptions::given(const char* option) const {
@@ -77,6 +82,20 @@ RenderSettings RenderOptions::settings() const {
     if (use("--kernel")) s.kernel = kernel;
     if (use("--radius")) s.radius = radius;
     if (use("--rotate")) s.rotatePerPixel = rotate;
+    if (use("--weights")) {
+        std::optional<int> w = weightsFromName(weights);
+        if (!w) {
+            throw UsageError("unknown --weights '" + weights +
+                             "' (known: box, binomial, gaussian)");
+        }
+        s.weights = *w;
+    }
+    if (use("--sigma")) s.sigma = sigma;
+    if (use("--precision")) {
+        std::optional<int> p = precisionFromName(precision);
+        if (!p) throw UsageError("unknown --precision '" + precision + "' (known: exact, hw8)");
+        s.precision = *p;
+    }
     if (auto why = validateParams(s.pcfParams())) throw UsageError(*why);
     if (use("--bias")) {
         std::optional<BiasMode> b = biasModeFromName(bias);

@@ -37,6 +37,9 @@ struct RenderOptions {
     int mapSize = 1024;
     std::string depthFormat = "32f";
     std::string size = "1280x720";
+    std::string weights = "box";      // pcf-naive, pcf-gather: box, binomial, gaussian
+    float sigma = 1.0f;               // gaussian weights, texels
+    std::string precision = "exact";  // hardware taps and gathers: exact, hw8
 
     // Registers the options on `sub`; `defaultScene` is used when neither --scene nor
     // --scene-file is given (empty: one of them is required).

@@ -28,6 +28,7 @@ std::string settingsSummary(const LessonSettings& s) {
     std::ostringstream line;
     line << info.name;
     if (info.usesKernel) line << " N=" << s.kernel;
+    if (s.weights != PCF_WEIGHTS_BOX) line << " " << weightsName(s.weights);
     if (info.usesRadius) line << " R=" << formatNumber(s.radius) << (s.rotate ? " rotated" : "");
     line << "   bias " << s.bias;
     if (s.bias != "none") line << " " << formatNumber(s.constantBias);
@@ -37,6 +38,7 @@ std::string settingsSummary(const LessonSettings& s) {
     if (s.bias == "normal") line << " k=" << formatNumber(s.normalOffset);
     if (s.bias == "soft") line << " x" << formatNumber(s.softScale);
     line << "   cull " << s.cull << "   map " << s.mapSize << " " << s.depthFormat;
+    if (s.precision == PCF_PRECISION_HW8) line << "   hw8";
     return line.str();
 }
 
@@ -85,6 +87,9 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) 
     r.kernel = s.kernel;
     r.radius = s.radius;
     r.rotatePerPixel = s.rotate;
+    r.weights = s.weights;
+    r.sigma = s.sigma;
+    r.precision = s.precision;
     r.mapSize = s.mapSize;
     r.depthFormat = depthFormatFromName(s.depthFormat).value_or(DepthFormat::D32F);
     r.bias = biasModeFromName(s.bias).value_or(BiasMode::Constant);

@@ -117,6 +117,11 @@ public:
                 mSession.setSettings(s);
                 break;
             }
+            case GLFW_KEY_Q:  // the texture unit's precision: exact <-> hw8 (issue 10)
+                s.precision = s.precision == PCF_PRECISION_HW8 ? PCF_PRECISION_EXACT
+                                                               : PCF_PRECISION_HW8;
+                mSession.setSettings(s);
+                break;
             case GLFW_KEY_L: nextLesson(shift ? -1 : 1); break;
             case GLFW_KEY_E: exportFrame(); break;
             case GLFW_KEY_P: mSession.setPresentation(!mSession.presentation()); break;

@@ -74,7 +74,30 @@ FetchCounts fetchCounts(int method, int kernel) {
 }
 
 PcfParams makeParams(int method, int kernel, float radius, vec2 rotation) {
-    return PcfParams{method, kernel, radius, rotation};
+    return PcfParams{method, kernel, radius, rotation, PCF_WEIGHTS_BOX, 1.0f};
+}
+
+std::optional<int> weightsFromName(std::string_view name) {
+    if (name == "box") return PCF_WEIGHTS_BOX;
+    if (name == "binomial") return PCF_WEIGHTS_BINOMIAL;
+    if (name == "gaussian") return PCF_WEIGHTS_GAUSSIAN;
+    return std::nullopt;
+}
+
+std::string_view weightsName(int weights) {
+    if (weights == PCF_WEIGHTS_BINOMIAL) return "binomial";
+    if (weights == PCF_WEIGHTS_GAUSSIAN) return "gaussian";
+    return "box";
+}
+
+std::optional<int> precisionFromName(std::string_view name) {
+    if (name == "exact") return PCF_PRECISION_EXACT;
+    if (name == "hw8") return PCF_PRECISION_HW8;
+    return std::nullopt;
+}
+
+std::string_view precisionName(int precision) {
+    return precision == PCF_PRECISION_HW8 ? "hw8" : "exact";
 }
 
 std::optional<std::string> validateParams(const PcfParams& prm) {
@@ -97,6 +120,24 @@ std::optional<std::string> validateParams(const PcfParams& prm) {
                                        prm.radius <= MAX_POISSON_RADIUS)) {
         s << "--radius " << prm.radius << " is out of range (0, " << MAX_POISSON_RADIUS
           << "] texels";
+        return s.str();
+    }
+    if (prm.weights < PCF_WEIGHTS_BOX || prm.weights > PCF_WEIGHTS_GAUSSIAN) {
+        s << "unknown weights id " << prm.weights;
+        return s.str();
+    }
+    if (prm.weights != PCF_WEIGHTS_BOX && prm.method != PCF_NAIVE && prm.method != PCF_GATHER) {
+        s << "--weights " << weightsName(prm.weights) << " applies to pcf-naive and pcf-gather, not "
+          << info.name;
+        return s.str();
+    }
+    if (prm.weights == PCF_WEIGHTS_GAUSSIAN &&
+        !(std::isfinite(prm.sigma) && prm.sigma > 0.0f && prm.sigma <= MAX_SIGMA)) {
+        s << "--sigma " << prm.sigma << " is out of range (0, " << MAX_SIGMA << "] texels";
+        return s.str();
+    }
+    if (prm.precision != PCF_PRECISION_EXACT && prm.precision != PCF_PRECISION_HW8) {
+        s << "unknown precision id " << prm.precision;
         return s.str();
     }
     return std::nullopt;

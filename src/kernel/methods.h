@@ -43,6 +43,13 @@ constexpr float MAX_POISSON_RADIUS = 64.0f;  // texels
 PcfParams makeParams(int method, int kernel = 3, float radius = 1.0f,
                      vec2 rotation = vec2(1.0f, 0.0f));
 
+// --weights (pcf-naive, pcf-gather) and --precision (hardware taps, gathers) by name.
+std::optional<int> weightsFromName(std::string_view name);  // box, binomial, gaussian
+std::string_view weightsName(int weights);
+std::optional<int> precisionFromName(std::string_view name);  // exact, hw8
+std::string_view precisionName(int precision);
+constexpr float MAX_SIGMA = 16.0f;  // texels
+
 // Why these parameters are not valid for their method ("tent takes --kernel 3, 5 or 7, not 4"),
 // or nullopt when they are.
 std::optional<std::string> validateParams(const PcfParams& prm);

@@ -16,6 +16,7 @@ namespace pcf {
 using glm::abs;
 using glm::clamp;
 using glm::dot;
+using glm::exp;
 using glm::floor;
 using glm::ivec2;
 using glm::max;
@@ -28,9 +29,12 @@ using glm::vec3;
 using glm::vec4;
 
 // The map as the batch path sees it: reads depths, records nothing. Cheap to copy.
+// mFixedPoint: 1 for a 16/24-bit map (D_ref clamped to [0,1]); mPrecision: PCF_PRECISION_*.
 struct PlainMap {
     const float* mDepths;
     ivec2 mSize;
+    int mFixedPoint = 0;
+    int mPrecision = 0;
 };
 
 // The map as the tracer sees it: the same reads, and every tap and fetch written down.
@@ -41,6 +45,7 @@ struct TapRecord {
     float lit;     // the comparison bit: 1 lit, 0 shadowed
     float weight;  // its share of the final visibility
     int fetch;     // index of the fetch instruction that read it
+    bool clamped = false;  // the texel asked for was outside the map (clamped to the edge)
 };
 
 struct FetchRecord {
@@ -52,17 +57,24 @@ struct FetchRecord {
 struct Recording {
     std::vector<TapRecord> taps;
     std::vector<FetchRecord> fetches;
+    ivec2 wanted{0, 0};  // the texel of the tap being read, before clamping
 };
 
 struct RecordingMap {
     const float* mDepths;
     ivec2 mSize;
     Recording* mRecording;
+    int mFixedPoint = 0;
+    int mPrecision = 0;
 };
 
 // The hooks pcf_kernel.h reads the map through (see pcf_prelude.h). Texels arrive clamped.
 inline ivec2 mapSize(const PlainMap& m) { return m.mSize; }
 inline ivec2 mapSize(const RecordingMap& m) { return m.mSize; }
+inline int mapFixedPoint(const PlainMap& m) { return m.mFixedPoint; }
+inline int mapFixedPoint(const RecordingMap& m) { return m.mFixedPoint; }
+inline int mapPrecision(const PlainMap& m) { return m.mPrecision; }
+inline int mapPrecision(const RecordingMap& m) { return m.mPrecision; }
 inline float fetchDepth(const PlainMap& m, ivec2 t) { return m.mDepths[t.y * m.mSize.x + t.x]; }
 inline float fetchDepth(const RecordingMap& m, ivec2 t) {
     return m.mDepths[t.y * m.mSize.x + t.x];
@@ -71,8 +83,11 @@ inline void pcfTap(const PlainMap&, ivec2, float, float, float, float) {}
 inline void pcfTap(const RecordingMap& m, ivec2 texel, float depth, float ref, float lit,
                    float weight) {
     int fetch = static_cast<int>(m.mRecording->fetches.size()) - 1;
-    m.mRecording->taps.push_back({texel, depth, ref, lit, weight, fetch});
+    bool clamped = m.mRecording->wanted != texel;
+    m.mRecording->taps.push_back({texel, depth, ref, lit, weight, fetch, clamped});
 }
+inline void pcfTapWanted(const PlainMap&, ivec2) {}
+inline void pcfTapWanted(const RecordingMap& m, ivec2 texel) { m.mRecording->wanted = texel; }
 inline void pcfFetch(const PlainMap&, int, vec2, float) {}
 inline void pcfFetch(const RecordingMap& m, int kind, vec2 uv, float weight) {
     m.mRecording->fetches.push_back({kind, uv, weight});
@@ -81,27 +96,37 @@ inline void pcfFetch(const RecordingMap& m, int kind, vec2 uv, float weight) {
 #include "shaders/shared/pcf_prelude.h"
 #include "shaders/shared/pcf_kernel.h"
 
+// The map as the batch path sees it, with the texture unit's state the lookup needs.
+inline PlainMap plainMap(const ShadowMap& map, const PcfParams& prm) {
+    return PlainMap{map.depths().data(), map.size(), map.isFixedPoint() ? 1 : 0, prm.precision};
+}
+
+// The map as the tracer sees it, recording into `out`.
+inline RecordingMap recordingMap(const ShadowMap& map, const PcfParams& prm, Recording& out) {
+    return RecordingMap{map.depths().data(), map.size(), &out, map.isFixedPoint() ? 1 : 0,
+                        prm.precision};
+}
+
 // Visibility of one lookup on the CPU, nothing recorded (the batch path).
 inline float filterVisibility(const ShadowMap& map, vec2 uv, float ref, const PcfParams& prm) {
-    return pcfFilter(PlainMap{map.depths().data(), map.size()}, uv, ref, prm);
+    return pcfFilter(plainMap(map, prm), uv, ref, prm);
 }
 
 // Visibility of one lookup with every tap and fetch recorded (the tracing path: the same code).
 inline float filterRecorded(const ShadowMap& map, vec2 uv, float ref, const PcfParams& prm,
                             Recording& out) {
-    return pcfFilter(RecordingMap{map.depths().data(), map.size(), &out}, uv, ref, prm);
+    return pcfFilter(recordingMap(map, prm, out), uv, ref, prm);
 }
 
 // The same two paths under a bias mode: ref is the lookup's (per-lookup bias applied), `bias`
 // says how each tap's comparison varies from it (receiver plane, soft, interpolated).
 inline float filterVisibility(const ShadowMap& map, vec2 uv, float ref, const PcfParams& prm,
                               const PcfBias& bias) {
-    return pcfFilterRef(PlainMap{map.depths().data(), map.size()}, uv, PcfRef(ref, uv, bias), prm);
+    return pcfFilterRef(plainMap(map, prm), uv, PcfRef(ref, uv, bias), prm);
 }
 inline float filterRecorded(const ShadowMap& map, vec2 uv, float ref, const PcfParams& prm,
                             const PcfBias& bias, Recording& out) {
-    return pcfFilterRef(RecordingMap{map.depths().data(), map.size(), &out}, uv,
-                        PcfRef(ref, uv, bias), prm);
+    return pcfFilterRef(recordingMap(map, prm, out), uv, PcfRef(ref, uv, bias), prm);
 }
 
 }  // namespace pcf

@@ -24,6 +24,13 @@ public:
     void setDepth(int i, int j, float d) { mDepths[static_cast<size_t>(j) * mSize.x + i] = d; }
     const std::vector<float>& depths() const { return mDepths; }
 
+    // The bits of the fixed-point format the depths were stored in (16 or 24), 0 for float.
+    // A fixed-point map clamps D_ref to [0,1] in every comparison (GL 4.5, 8.23.1), and its
+    // depths are the sampler's own floats for the stored integers (see readSampledDepth).
+    int fixedPointBits() const { return mFixedPointBits; }
+    bool isFixedPoint() const { return mFixedPointBits != 0; }
+    void setFixedPointBits(int bits) { mFixedPointBits = bits; }
+
     // The first texel that is not a depth in [0,1] (NaN, infinite, out of range), described in
     // words ("texel (3, 4) is NaN"); nullopt when every texel is fine.
     std::optional<std::string> findInvalidTexel() const;
@@ -31,6 +38,7 @@ public:
 private:
     glm::ivec2 mSize{0, 0};
     std::vector<float> mDepths;
+    int mFixedPointBits = 0;
 };
 
 // The built-in example of `pcfscope trace --example`: an 8 x 8 map of a ground plane (depths

@@ -81,8 +81,9 @@ std::string tapLine(const TapRecord& t) {
                " -> soft " + num(t.lit);
     }
     std::string cmp = t.lit >= 0.5f ? " <= " : " > ";
-    return "texel " + pair(t.texel) + ": depth " + num(t.depth) + ", ref " + num(t.ref) + cmp +
-           num(t.depth) + " -> " + (t.lit >= 0.5f ? "lit (1)" : "shadowed (0)");
+    return "texel " + pair(t.texel) + (t.clamped ? " (clamped to the edge)" : "") + ": depth " +
+           num(t.depth) + ", ref " + num(t.ref) + cmp + num(t.depth) + " -> " +
+           (t.lit >= 0.5f ? "lit (1)" : "shadowed (0)");
 }
 
 // The value one fetch instruction returned, rebuilt from its taps: sum(w * lit) / sum(w).
@@ -91,6 +92,18 @@ float fetchValue(const std::vector<TapRecord>& taps, float fetchWeight) {
     float sum = 0.0f;
     for (const TapRecord& t : taps) sum += t.weight * t.lit;
     return fetchWeight > 0.0f ? sum / fetchWeight : 0.0f;
+}
+
+// "weighted a_i * a_j, binomial: a = 0.25 0.5 0.25" for the weighted kernels.
+std::string weightsSentence(const PcfParams& prm) {
+    std::ostringstream s;
+    s << "lookup (i, j) weighted a_i * a_j, " << weightsName(prm.weights);
+    if (prm.weights == PCF_WEIGHTS_GAUSSIAN) s << " (sigma " << num(prm.sigma) << " texels)";
+    s << ": a =";
+    for (int k = 0; k < prm.kernel; ++k) {
+        s << " " << num(pcfAxisWeight(k, prm.kernel, prm.weights, prm.sigma));
+    }
+    return s.str();
 }
 
 void addStep(Trace& tr, std::string title, std::string text) {
@@ -268,8 +281,10 @@ void explainBilinear(Trace& tr, bool hardware) {
         : "The four texels at base " + pair(tr.pos.base) + " are each compared with ref:";
     stepTapList(tr, hardware ? "One hardware comparison tap" : "Compare the 2x2 texels", intro);
     const std::vector<TapRecord>& t = tr.taps;
-    float fx = tr.pos.frac.x;
-    float fy = tr.pos.frac.y;
+    // hw8: the texture unit lerps by its own rounded fraction (see the 256-steps step).
+    bool hw8 = hardware && tr.params.precision == PCF_PRECISION_HW8;
+    float fx = hw8 ? tr.fracHw8.x : tr.pos.frac.x;
+    float fy = hw8 ? tr.fracHw8.y : tr.pos.frac.y;
     float row0 = glm::mix(t[0].lit, t[1].lit, fx);
     float row1 = glm::mix(t[2].lit, t[3].lit, fx);
     std::ostringstream s;
@@ -332,8 +347,12 @@ void explainKernelLoop(Trace& tr, bool hardware) {
     std::ostringstream head;
     head << n << " x " << n << (hardware ? " hardware comparison taps" : " bilinear lookups")
          << " at texel offsets k - (N-1)/2 = " << num(pcfKernelOffset(0, n)) << " .. "
-         << num(pcfKernelOffset(n - 1, n))
-         << " around the point, each weighted 1/" << n * n << ":";
+         << num(pcfKernelOffset(n - 1, n)) << " around the point, ";
+    if (tr.params.weights == PCF_WEIGHTS_BOX) {
+        head << "each weighted 1/" << n * n << ":";
+    } else {
+        head << weightsSentence(tr.params) << ":";
+    }
     std::ostringstream sum;
     for (size_t f = 0; f < tr.fetches.size(); ++f) {
         const FetchRecord& fr = tr.fetches[f];
@@ -359,6 +378,10 @@ void explainKernelLoop(Trace& tr, bool hardware) {
           << n * n << ") is:" << weightTable(tr, static_cast<float>(n * n))
           << "\npcf-gather reads each of them once and gives the same result.";
     addStep(tr, "Count the reads", reads.str());
+    if (tr.params.weights != PCF_WEIGHTS_BOX) {
+        stepSum(tr);
+        return;
+    }
     std::ostringstream avg;
     avg << "visibility = (" << sum.str() << ") / " << n * n << " = " << num(tr.visibility)
         << "  (1 = fully lit, 0 = fully shadowed).";
@@ -373,8 +396,15 @@ void explainGather(Trace& tr) {
          "* size - 0.5 - (N-1)/2 = "
       << pair(tr.uv * vec2(tr.mapSize) - vec2(0.5f + 0.5f * float(n - 1)))
       << ", origin = floor(q) = " << pair(fp.origin) << ", g = q - origin = " << pair(fp.frac)
-      << ". Per axis the " << n + 1 << " texels weigh (1-g, 1, ..., 1, g) / " << n
-      << ", so the table (times " << n * n << ") is:" << weightTable(tr, float(n * n));
+      << ". ";
+    if (tr.params.weights == PCF_WEIGHTS_BOX) {
+        s << "Per axis the " << n + 1 << " texels weigh (1-g, 1, ..., 1, g) / " << n
+          << ", so the table (times " << n * n << ") is:" << weightTable(tr, float(n * n));
+    } else {
+        s << "The lookups are " << weightsSentence(tr.params)
+          << "; footprint texel m weighs a_m (1-g) + a_(m-1) g per axis, so the table is:"
+          << weightTable(tr, 1.0f);
+    }
     addStep(tr, "Build the weight table", s.str());
     std::ostringstream g;
     g << tr.counts.gathers << " comparison gathers cover the " << n + 1 << " x " << n + 1
@@ -448,6 +478,18 @@ void explainPoisson(Trace& tr) {
                 "banding for noise.");
 }
 
+// Issue 10: what an 8-bit texture unit does to this lookup.
+void stepPrecision(Trace& tr) {
+    std::ostringstream s;
+    s << "A real texture unit keeps the texel position with 8 fractional bits: it rounds p * 256 "
+         "to the nearest integer before taking floor and frac. The float fraction "
+      << pair(tr.pos.frac) << " becomes " << pair(tr.fracHw8)
+      << " (steps of 1/256). Visibility with the float position: " << num(tr.visibilityExact)
+      << "; with 8 bits: " << num(tr.visibilityHw8) << " (difference "
+      << num(tr.visibilityHw8 - tr.visibilityExact) << ").";
+    addStep(tr, "The texture unit's 256 steps", s.str());
+}
+
 }  // namespace
 
 float weightedTapSum(const Trace& trace) {
@@ -486,6 +528,15 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
     tr.fetches = std::move(rec.fetches);
     tr.weights = mergeWeights(tr.taps);
     tr.counts = countFetches(tr);
+    tr.fixedPoint = map.isFixedPoint();
+    tr.usesTextureUnit = tr.counts.gathers > 0 || tr.counts.hwTaps > 0;
+    tr.fracHw8 = glm::fract(pcfQuantiseTexelPos(tr.pos.p));
+    PcfParams exact = prm;
+    exact.precision = PCF_PRECISION_EXACT;
+    PcfParams hw8 = prm;
+    hw8.precision = PCF_PRECISION_HW8;
+    tr.visibilityExact = filterVisibility(map, uv, ref, exact, bias.kernelBias());
+    tr.visibilityHw8 = filterVisibility(map, uv, ref, hw8, bias.kernelBias());
 
     stepProject(tr);
     stepPerTapRef(tr);
@@ -514,6 +565,7 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
         case PCF_TENT: explainTent(tr); break;
         default: explainPoisson(tr); break;
     }
+    if (tr.usesTextureUnit && prm.precision == PCF_PRECISION_HW8) stepPrecision(tr);
     return tr;
 }
 
@@ -591,7 +643,8 @@ std::string traceToJson(const Trace& tr) {
         s << (k ? "," : "") << "{\"texel\":" << jvec(t.texel) << ",\"depth\":" << jnum(t.depth)
           << ",\"ref\":" << jnum(t.ref) << ",\"ref_shift\":" << jnum(t.ref - tr.ref) << ",\"lit\":"
           << (t.lit == 0.0f || t.lit == 1.0f ? std::to_string(t.lit >= 0.5f ? 1 : 0) : jnum(t.lit))
-          << ",\"weight\":" << jnum(t.weight) << ",\"fetch\":" << t.fetch << "}";
+          << ",\"weight\":" << jnum(t.weight) << ",\"fetch\":" << t.fetch
+          << ",\"clamped\":" << (t.clamped ? "true" : "false") << "}";
     }
     s << "],\"fetch_list\":[";
     for (size_t k = 0; k < tr.fetches.size(); ++k) {
@@ -606,6 +659,14 @@ std::string traceToJson(const Trace& tr) {
     }
     s << "]},\"fetches\":{\"texels\":" << tr.counts.texels << ",\"gathers\":" << tr.counts.gathers
       << ",\"hw_taps\":" << tr.counts.hwTaps << "},\"visibility\":" << jnum(tr.visibility)
+      << ",\"weights_kind\":" << jstr(std::string(weightsName(tr.params.weights)))
+      << ",\"sigma\":" << jnum(tr.params.sigma)
+      << ",\"precision\":" << jstr(std::string(precisionName(tr.params.precision)))
+      << ",\"fixed_point\":" << (tr.fixedPoint ? "true" : "false")
+      << ",\"texture_unit\":{\"frac_exact\":" << jvec(tr.pos.frac)
+      << ",\"frac_hw8\":" << jvec(tr.fracHw8)
+      << ",\"visibility_exact\":" << jnum(tr.visibilityExact)
+      << ",\"visibility_hw8\":" << jnum(tr.visibilityHw8) << "}"
       << ",\"steps\":[";
     for (size_t k = 0; k < tr.steps.size(); ++k) {
         s << (k ? "," : "") << "{\"title\":" << jstr(tr.steps[k].title)
@@ -633,6 +694,7 @@ std::string traceToText(const Trace& tr) {
     // The neighbourhood as a table: depth, bit and merged weight per texel, rows as stored.
     s << "Texels read (depth / bit / weight), row j down, column i across:\n";
     const WeightGrid& g = tr.weights;
+    bool anyClamped = false;
     s << "        ";
     for (int i = 0; i < g.size.x; ++i) {
         char buf[32];
@@ -653,8 +715,11 @@ std::string traceToText(const Trace& tr) {
                     break;
                 }
             }
+            bool clamped = false;
+            for (const TapRecord& t : tr.taps) clamped = clamped || (t.texel == texel && t.clamped);
+            anyClamped = anyClamped || clamped;
             std::string cell = tap ? num(tap->depth) + " / " + bit(tap->lit) + " / " +
-                                         num(g.at(texel))
+                                         num(g.at(texel)) + (clamped ? " *" : "")
                                    : "-";
             char buf[40];
             std::snprintf(buf, sizeof buf, " %-18s", cell.c_str());
@@ -662,9 +727,15 @@ std::string traceToText(const Trace& tr) {
         }
         s << "\n";
     }
+    if (anyClamped) s << "* also read for texels outside the map, clamped to the edge\n";
     s << "\nfetches: " << tr.counts.texels << " texel reads, " << tr.counts.gathers
       << " gathers, " << tr.counts.hwTaps << " hardware taps\n";
     s << "visibility = " << num(tr.visibility) << "\n";
+    if (tr.usesTextureUnit) {
+        s << "texture unit: frac " << pair(tr.pos.frac) << " -> visibility "
+          << num(tr.visibilityExact) << " (exact); frac " << pair(tr.fracHw8)
+          << " -> visibility " << num(tr.visibilityHw8) << " (hw8, 1/256 texel)\n";
+    }
     return s.str();
 }
 

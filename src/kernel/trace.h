@@ -43,6 +43,13 @@ struct Trace {
     FetchCounts counts{};
     float visibility = 1.0f;  // what the kernel returned
     std::vector<TraceStep> steps;
+    // The texture unit's precision (issue 10): the lookup's sub-texel fraction as a float and
+    // rounded to 1/256 texel (hw8), and the visibility the kernel gives under each model.
+    bool usesTextureUnit = false;  // the method issues hardware taps or gathers
+    vec2 fracHw8{0.0f};
+    float visibilityExact = 1.0f;
+    float visibilityHw8 = 1.0f;
+    bool fixedPoint = false;  // the map is 16/24-bit: D_ref clamped to [0,1]
 };
 
 // Runs the kernel at (uv, ref) with recording on and explains it step by step. z is the

@@ -26,7 +26,8 @@ namespace {
 // The keys a [settings] table and a [[step]] may set.
 constexpr std::string_view SETTING_KEYS[] = {
     "method",    "kernel",        "radius",     "rotate", "bias",     "constant_bias", "slope_bias",
-    "slope_max", "normal_offset", "soft_scale", "cull",   "map_size", "depth_format",  "pixel"};
+    "slope_max", "normal_offset", "soft_scale", "cull",   "map_size", "depth_format",  "pixel",
+    "precision", "weights",       "sigma"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));
@@ -375,6 +376,27 @@ class LessonParser {
             }
             s.depthFormat = format;
         }
+        if (const toml::node* n = table.get("precision")) {
+            std::optional<int> p = precisionFromName(string(*n, name("precision")));
+            if (!p) fail(*n, "unknown precision '" + n->value_or(std::string()) + "' (known: exact, hw8)");
+            s.precision = *p;
+        }
+        if (const toml::node* n = table.get("weights")) {
+            std::optional<int> w = weightsFromName(string(*n, name("weights")));
+            if (!w) {
+                fail(*n, "unknown weights '" + n->value_or(std::string()) +
+                             "' (known: box, binomial, gaussian)");
+            }
+            s.weights = *w;
+            lines.method = std::max(lines.method, lineOf(*n));
+        }
+        if (const toml::node* n = table.get("sigma")) {
+            double v = number(*n, name("sigma"));
+            if (!(v > 0.0 && v <= MAX_SIGMA)) {
+                fail(*n, name("sigma") + " must be in (0, 16] texels, got " + formatValue(v));
+            }
+            s.sigma = static_cast<float>(v);
+        }
         if (const toml::node* n = table.get("pixel")) s.pixel = readPixel(*n, name("pixel"));
     }
 
@@ -407,8 +429,10 @@ class LessonParser {
             int line = std::max(lines.bias, lines.method);
             throw InputError(mSource, line > 0 ? line : lineOf(step), what + ": " + *why);
         }
-        std::optional<std::string> problem =
-            validateParams(makeParams(s.method, s.kernel, s.radius));
+        PcfParams prm = makeParams(s.method, s.kernel, s.radius);
+        prm.weights = s.weights;
+        prm.sigma = s.sigma;
+        std::optional<std::string> problem = validateParams(prm);
         if (!problem) return;
         // validateParams speaks in command-line options ("--kernel 4"); a lesson has keys.
         std::string text = *problem;
@@ -495,7 +519,11 @@ PcfParams LessonSettings::pcfParams(glm::ivec2 framePixel, glm::ivec2 frameSize)
         // gl_FragCoord counts rows from the bottom.
         rotation = pcfPixelRotation(ivec2(framePixel.x, frameSize.y - 1 - framePixel.y));
     }
-    return makeParams(method, kernel, radius, rotation);
+    PcfParams p = makeParams(method, kernel, radius, rotation);
+    p.weights = weights;
+    p.sigma = sigma;
+    p.precision = precision;
+    return p;
 }
 
 Lesson parseLessonFile(const std::string& path) {

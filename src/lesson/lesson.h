@@ -87,6 +87,9 @@ struct LessonSettings {
     std::string cull = "back";        // shadow pass culling: "back", "front" or "none"
     int mapSize = 1024;               // texels per side
     std::string depthFormat = "32f";  // "16", "24" or "32f"
+    int precision = 0;                // PCF_PRECISION_EXACT or _HW8 (key `precision`)
+    int weights = 0;                  // PCF_WEIGHTS_* (key `weights`)
+    float sigma = 1.0f;               // gaussian weights, texels (key `sigma`)
     glm::ivec2 pixel{640, 360};       // in the 1280 x 720 reference frame, origin top-left, y down
 
     // The constant depth every mode but none subtracts from the receiver's depth (0 for none).

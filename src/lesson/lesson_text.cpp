@@ -83,6 +83,17 @@ const std::vector<Simple>& simpleNames() {
         {"tent.t", [](const Trace& t,
                       const StepContext&) { return number(pcfTentBase(t.uv, t.mapSize).frac.y); }},
         {"visibility", [](const Trace& t, const StepContext&) { return number(t.visibility); }},
+        // Issue 10: the texture unit's 8-bit position (hw8) next to the float one.
+        {"frac_hw8.x", [](const Trace& t, const StepContext&) { return number(t.fracHw8.x); }},
+        {"frac_hw8.y", [](const Trace& t, const StepContext&) { return number(t.fracHw8.y); }},
+        {"steps_hw8.x",
+         [](const Trace& t, const StepContext&) {
+             return integer(static_cast<int>(std::lround(t.fracHw8.x * 256.0f)));
+         }},
+        {"visibility_exact",
+         [](const Trace& t, const StepContext&) { return number(t.visibilityExact); }},
+        {"visibility_hw8",
+         [](const Trace& t, const StepContext&) { return number(t.visibilityHw8); }},
         {"shadow", [](const Trace& t, const StepContext&) { return number(1.0f - t.visibility); }},
         {"method",
          [](const Trace& t, const StepContext&) {

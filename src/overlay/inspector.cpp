@@ -136,6 +136,11 @@ void drawNeighbourhood(Canvas& c, const InspectorLayout& l, const InspectorModel
             Colour fill = !tap ? PADDING : tap->lit >= 0.5f ? LIT_COLOUR : SHADOWED_COLOUR;
             if (tap && weight == 0.0f) fill = glm::mix(fill, PADDING, 0.55f);
             c.fillRect(r, fill);
+            // A tap whose texel lay outside the map, read clamped to the edge: an orange frame.
+            bool clamped = std::any_of(tr.taps.begin(), tr.taps.end(), [&](const TapRecord& t) {
+                return t.texel == texel && t.clamped;
+            });
+            if (clamped) c.strokeRect(r.expanded(-3.0f * line), line, Colour{1.0f, 0.6f, 0.1f, 1});
             // Weight as a bar along the cell's bottom edge, full width = the largest weight.
             if (tap && maxWeight > 0.0f && weight > 0.0f) {
                 float h = std::max(3.0f, cell * 0.07f);
@@ -510,6 +515,7 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"[ / ]", "smaller / larger kernel"},
         {"- / +", "smaller / larger shadow map"},
         {"B", "next bias mode"},
+        {"Q", "texture unit: exact / hw8"},
         {"L / Shift+L", "next / previous lesson"},
         {"E", "export this frame (PNG + JSON)"},
         {"P", "presentation mode"},

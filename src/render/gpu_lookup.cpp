@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "render/depth_readback.h"
+
 namespace pcf {
 
 GpuLookup::GpuLookup()
@@ -24,7 +26,20 @@ std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec
     return read();
 }
 
-void GpuLookup::setMap(const ShadowMap& map) { mDepth = createDepthTexture(map); }
+// The map is uploaded in its own format: 32F, or 16/24-bit when map.fixedPointBits() says so (GL
+// rounds the floats to integers); storedMap() then holds what the GPU compares with.
+void GpuLookup::setMap(const ShadowMap& map) {
+    mDepth = createDepthTexture(map);
+    if (map.isFixedPoint()) {
+        GLenum format = map.fixedPointBits() == 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24;
+        mDepth = createTexture2d(format, map.width(), map.height());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTextureSubImage2D(mDepth.id(), 0, 0, 0, map.width(), map.height(), GL_DEPTH_COMPONENT,
+                            GL_FLOAT, map.depths().data());
+    }
+    mFixedPoint = map.isFixedPoint();
+    mStored = readSampledDepth(mDepth.id(), map.width(), map.height(), map.fixedPointBits());
+}
 
 void GpuLookup::setLookups(std::span<const glm::vec4> lookups, int width,
                            std::span<const glm::vec2> dzduv, glm::vec2 planeForAll) {
@@ -64,6 +79,11 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
     glProgramUniform1f(program, glGetUniformLocation(program, "uRadius"), prm.radius);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRotatePerPixel"),
                        rotatePerPixel ? 1 : 0);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uWeights"), prm.weights);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uSigma"), prm.sigma);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uPcfPrecision"), prm.precision);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uPcfFixedPoint"),
+                       mFixedPoint ? 1 : 0);
 
     glBindFramebuffer(GL_FRAMEBUFFER, mTarget.framebuffer.id());
     glViewport(0, 0, mWidth, mHeight);

@@ -20,6 +20,8 @@ class GpuLookup {
 
     // Visibility of each lookup (u, v, ref; w unused), filtered by the GPU with `prm`
     // (its rotation is ignored: rotatePerPixel picks pcfPixelRotation of each lookup's pixel).
+    // The map is uploaded in its own format: 32F, or 16/24-bit when map.fixedPointBits() says
+    // so (GL rounds the floats to integers); storedMap() then holds what the GPU compared with.
     // Lookups fill a grid `width` wide, row by row from GL row 0; the result has the same order.
     // run() is these four in a row: setMap, setLookups, draw, read.
     std::vector<float> run(const ShadowMap& map, std::span<const glm::vec4> lookups, int width,
@@ -45,7 +47,12 @@ class GpuLookup {
     // The last draw's visibilities, in the lookups' order.
     std::vector<float> read() const;
 
+    // The last map setMap() uploaded, read back as the sampler sees it (depth_readback.h).
+    const ShadowMap& storedMap() const { return mStored; }
+
   private:
+    ShadowMap mStored;
+    bool mFixedPoint = false;
     PcfProgramCache mPrograms;
     PcfSamplers mSamplers;
     GlVertexArray mEmptyVao;

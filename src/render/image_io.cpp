@@ -215,6 +215,21 @@ class QuietStderr {
 
 }  // namespace
 
+FloatImage readFloatImage(const std::string& path) {
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+    if (!in) throw ImageError(path + ": cannot read image (" + firstLine(OIIO::geterror()) + ")");
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.deep || spec.width <= 0 || spec.height <= 0 || spec.depth > 1) {
+        throw ImageError(path + ": cannot read image (not a flat 2D image)");
+    }
+    FloatImage img{spec.width, spec.height, spec.nchannels, {}};
+    img.data.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.data.data())) {
+        throw ImageError(path + ": cannot read image (" + firstLine(in->geterror()) + ")");
+    }
+    return img;
+}
+
 ShadowMap readDepthImage(const std::string& path) {
     // A FIFO or device would block OIIO forever (or never end): only regular files, which is
     // what a depth map written by pcfscope or a paint program is.

@@ -55,6 +55,16 @@ constexpr int MAX_DEPTH_IMAGE_SIDE = 16384;
 // ShadowMap::findInvalidTexel findings).
 ShadowMap readDepthImage(const std::string& path);
 
+// Any float image: width, height, channel count and the floats (rows as stored, first scanline
+// first, channels interleaved). Throws ImageError "PATH: cannot read image (REASON)".
+struct FloatImage {
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    std::vector<float> data;
+};
+FloatImage readFloatImage(const std::string& path);
+
 bool fileExists(const std::string& path);
 
 // Writers (writeTextFile, writePngRgba8, writeExr) hold this shared from before the temporary

@@ -8,7 +8,21 @@ static_assert(static_cast<int>(BiasMode::None) == PCF_BIAS_NONE &&
               static_cast<int>(BiasMode::ReceiverPlane) == PCF_BIAS_RECEIVER_PLANE &&
               static_cast<int>(BiasMode::Interpolated) == PCF_BIAS_INTERPOLATED);
 
-PcfParams RenderSettings::pcfParams() const { return makeParams(method, kernel, radius); }
+PcfParams RenderSettings::pcfParams() const {
+    PcfParams p = makeParams(method, kernel, radius);
+    p.weights = weights;
+    p.sigma = sigma;
+    p.precision = precision;
+    return p;
+}
+
+int depthFormatFixedPointBits(DepthFormat format) {
+    switch (format) {
+        case DepthFormat::D16: return 16;
+        case DepthFormat::D24: return 24;
+        default: return 0;
+    }
+}
 
 float RenderSettings::depthBias() const { return biasParams().baseBias(); }
 

@@ -27,6 +27,9 @@ struct RenderSettings {
     int kernel = 3;
     float radius = 1.0f;          // poisson, texels
     bool rotatePerPixel = false;  // poisson
+    int weights = 0;              // pcf-naive, pcf-gather: PCF_WEIGHTS_BOX, _BINOMIAL, _GAUSSIAN
+    float sigma = 1.0f;           // gaussian weights, texels
+    int precision = 0;            // PCF_PRECISION_EXACT or _HW8 (hardware taps and gathers)
     int mapSize = 1024;           // the shadow map is mapSize x mapSize texels
     DepthFormat depthFormat = DepthFormat::D32F;
     BiasMode bias = BiasMode::Constant;
@@ -52,6 +55,7 @@ struct RenderSettings {
 
 GLenum glDepthFormat(DepthFormat format);
 std::string_view depthFormatName(DepthFormat format);  // "16", "24", "32f"
+int depthFormatFixedPointBits(DepthFormat format);     // 16, 24, or 0 for 32F
 std::optional<DepthFormat> depthFormatFromName(std::string_view name);
 // "none", "constant", "slope", ...: the names of kernel/bias.h, the one table of them.
 std::string_view biasModeName(BiasMode mode);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "kernel/methods.h"
+#include "render/depth_readback.h"
 #include "render/shader_loader.h"
 #include "scene/mesh.h"
 
@@ -194,6 +195,11 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, PcfProgramCac
     glProgramUniform1f(program, uniform(program, "uRadius"), settings.radius);
     glProgramUniform1i(program, uniform(program, "uRotatePerPixel"),
                        settings.rotatePerPixel ? 1 : 0);
+    glProgramUniform1i(program, uniform(program, "uWeights"), settings.weights);
+    glProgramUniform1f(program, uniform(program, "uSigma"), settings.sigma);
+    glProgramUniform1i(program, uniform(program, "uPcfPrecision"), settings.precision);
+    glProgramUniform1i(program, uniform(program, "uPcfFixedPoint"),
+                       depthFormatFixedPointBits(mShadowFormat) != 0 ? 1 : 0);
     bindShadowMap(program, mShadow.depth.id(), mSamplers);
     drawObjects(program, false, true);
     glBindSampler(0, 0);
@@ -281,9 +287,10 @@ std::vector<float> SceneRenderer::readRegion(GLenum attachment, glm::ivec2 topLe
     return out;
 }
 
+// The map the sampler compares against (depth_readback.h), not glGetTextureImage's conversion.
 ShadowMap SceneRenderer::readShadowMap() const {
-    return ShadowMap(mShadow.width, mShadow.height,
-                     readDepthTexture(mShadow.depth.id(), mShadow.width, mShadow.height));
+    return readSampledDepth(mShadow.depth.id(), mShadow.width, mShadow.height,
+                            depthFormatFixedPointBits(mShadowFormat));
 }
 
 }  // namespace pcf

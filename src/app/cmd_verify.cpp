@@ -1,0 +1,188 @@
+// pcfscope verify DIR: is every receiver pixel of a `render --raw` folder inside the visibility
+// envelope a conformant texture unit may produce (analysis/conformance.h)? Exit 0: all inside;
+// 1: some outside (the worst is printed with its pixel); 2: bad input.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "analysis/conformance.h"
+#include "app/cli_util.h"
+#include "app/commands.h"
+#include "kernel/methods.h"
+#include "render/image_io.h"
+#include "render/render_settings.h"
+
+namespace pcf {
+
+namespace {
+
+struct VerifyOptions {
+    std::string dir;
+    int subTexelBits = 4;
+    int weightBits = 8;
+    int referenceBits = 0;
+};
+
+// One value of the flat render.json that `render --raw` writes: the text after "key":,
+// without quotes. Throws UsageError when the key is missing.
+std::string jsonField(const std::string& json, const std::string& key, const std::string& path) {
+    std::regex re("\"" + key + "\"\\s*:\\s*(\"([^\"]*)\"|([^,}\\s]+))");
+    std::smatch m;
+    if (!std::regex_search(json, m, re)) {
+        throw UsageError("render.json has no \"" + key + "\" (" + path + ")");
+    }
+    return m[2].matched ? m[2].str() : m[3].str();
+}
+
+float jsonNumber(const std::string& json, const std::string& key, const std::string& path) {
+    std::string text = jsonField(json, key, path);
+    char* end = nullptr;
+    float v = std::strtof(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0' || !std::isfinite(v)) {
+        throw UsageError("render.json: \"" + key + "\" is not a number (" + path + ")");
+    }
+    return v;
+}
+
+FloatImage readImage(const std::filesystem::path& path, int channels) {
+    FloatImage img;
+    try {
+        img = readFloatImage(path.string());
+    } catch (const ImageError& e) {
+        throw UsageError(e.what());
+    }
+    if (img.channels != channels) {
+        throw UsageError(path.string() + ": has " + std::to_string(img.channels) +
+                         " channels, expected " + std::to_string(channels));
+    }
+    return img;
+}
+
+int runVerify(const VerifyOptions& o) {
+    requireIntRange("--subtexel-bits", o.subTexelBits, 1, 16);
+    requireIntRange("--weight-bits", o.weightBits, 1, 16);
+    requireIntRange("--reference-bits", o.referenceBits, 0, 24);
+    std::filesystem::path dir(o.dir);
+    std::filesystem::path jsonPath = dir / "render.json";
+    std::ifstream in(jsonPath);
+    if (!in) throw UsageError("cannot read " + jsonPath.string() + " (a `render --raw` folder?)");
+    std::stringstream buf;
+    buf << in.rdbuf();
+    std::string json = buf.str();
+    std::string where = jsonPath.string();
+
+    std::string methodName = jsonField(json, "method", where);
+    std::optional<int> method = methodFromName(methodName);
+    if (!method)
+        throw UsageError("render.json: unknown method '" + methodName + "' (" + where + ")");
+    PcfParams prm = makeParams(*method, static_cast<int>(jsonNumber(json, "kernel", where)),
+                               jsonNumber(json, "radius", where));
+    std::optional<int> weights = weightsFromName(jsonField(json, "weights", where));
+    std::optional<int> precision = precisionFromName(jsonField(json, "precision", where));
+    std::optional<DepthFormat> format = depthFormatFromName(jsonField(json, "depth_format", where));
+    if (!weights || !precision || !format) {
+        throw UsageError("render.json: unknown weights, precision or depth_format (" + where + ")");
+    }
+    prm.weights = *weights;
+    prm.sigma = jsonNumber(json, "sigma", where);
+    prm.precision = *precision;
+    bool rotate = jsonField(json, "rotate", where) == "true";
+    if (auto why = validateParams(prm))
+        throw UsageError("render.json: " + *why + " (" + where + ")");
+
+    ShadowMap map;
+    try {
+        map = readDepthImage((dir / "shadowmap.exr").string());
+    } catch (const ImageError& e) {
+        throw UsageError(e.what());
+    }
+    map.setFixedPointBits(depthFormatFixedPointBits(*format));
+    FloatImage ls = readImage(dir / "lightspace.exr", 4);
+    FloatImage vis = readImage(dir / "visibility.exr", 1);
+    if (ls.width != vis.width || ls.height != vis.height) {
+        throw UsageError("lightspace.exr and visibility.exr differ in size (" + dir.string() + ")");
+    }
+
+    ConformancePrecision prec{o.subTexelBits, o.weightBits, o.referenceBits};
+    long receivers = 0;
+    long inside = 0;
+    float worst = 0.0f;
+    glm::ivec2 worstPixel(-1);
+    float worstValue = 0.0f;
+    VisibilityEnvelope worstEnv;
+    for (int y = 0; y < ls.height; ++y) {
+        for (int x = 0; x < ls.width; ++x) {
+            size_t k = static_cast<size_t>(y) * ls.width + x;
+            if (ls.data[4 * k + 3] != 1.0f) continue;
+            vec2 uv(ls.data[4 * k], ls.data[4 * k + 1]);
+            float ref = ls.data[4 * k + 2];
+            if (!std::isfinite(uv.x) || !std::isfinite(uv.y) || !std::isfinite(ref)) {
+                throw UsageError("lightspace.exr: pixel (" + std::to_string(x) + ", " +
+                                 std::to_string(y) + ") is not finite");
+            }
+            ++receivers;
+            PcfParams p = prm;
+            // Rows are top-down; gl_FragCoord counts from the bottom.
+            if (rotate) p.rotation = pcfPixelRotation(glm::ivec2(x, ls.height - 1 - y));
+            VisibilityEnvelope env = visibilityEnvelope(map, uv, ref, p, prec);
+            float v = vis.data[k];
+            if (env.contains(v)) {
+                ++inside;
+                continue;
+            }
+            float miss = v < env.lo ? env.lo - v : v - env.hi;
+            if (miss > worst) {
+                worst = miss;
+                worstPixel = {x, y};
+                worstValue = v;
+                worstEnv = env;
+            }
+        }
+    }
+    if (receivers == 0) throw UsageError("no receiver pixels in " + dir.string());
+    std::string what = methodName;
+    if (methodInfo(prm.method).usesKernel) what += " N=" + std::to_string(prm.kernel);
+    if (prm.weights != PCF_WEIGHTS_BOX) what += " " + std::string(weightsName(prm.weights));
+    std::string refBits =
+        o.referenceBits > 0 ? std::to_string(o.referenceBits) : std::string("format's");
+    std::printf(
+        "verify %s: %s, map %dx%d %s, precision %s; envelope: %d sub-texel bits, "
+        "%d weight bits, %s reference bits\n",
+        dir.string().c_str(), what.c_str(), map.width(), map.height(),
+        std::string(depthFormatName(*format)).c_str(),
+        std::string(precisionName(prm.precision)).c_str(), o.subTexelBits, o.weightBits,
+        refBits.c_str());
+    std::printf("%ld of %ld receiver pixels inside the envelope (%.4f %%)\n", inside, receivers,
+                100.0 * static_cast<double>(inside) / static_cast<double>(receivers));
+    if (inside == receivers) return 0;
+    std::printf(
+        "worst outlier: pixel (%d, %d) (top-left origin): visibility %.7g, envelope "
+        "[%.7g, %.7g], outside by %.3g\n",
+        worstPixel.x, worstPixel.y, static_cast<double>(worstValue),
+        static_cast<double>(worstEnv.lo), static_cast<double>(worstEnv.hi),
+        static_cast<double>(worst));
+    return 1;
+}
+
+}  // namespace
+
+Command addVerifyCommand(CLI::App& app) {
+    auto o = std::make_shared<VerifyOptions>();
+    CLI::App* sub = app.add_subcommand(
+        "verify", "check a `render --raw` folder against the conformance envelope of any GPU");
+    sub->add_option("dir", o->dir, "a folder written by `pcfscope render --raw DIR`")->required();
+    sub->add_option("--subtexel-bits", o->subTexelBits,
+                    "sub-texel precision of the texture unit (default 4: Vulkan's minimum)");
+    sub->add_option("--weight-bits", o->weightBits, "precision of the lerp weights (default 8)");
+    sub->add_option(
+        "--reference-bits", o->referenceBits,
+        "precision of the depth comparison (default: 16/24 for fixed-point, 22 for 32F)");
+    return {sub, [o] { return runVerify(*o); }};
+}
+
+}  // namespace pcf

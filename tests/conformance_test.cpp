@@ -1,0 +1,135 @@
+// The conformance envelope (analysis/conformance.h) and `pcfscope verify`, issue 10.
+#include "analysis/conformance.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+
+#include "kernel/methods.h"
+#include "render/image_io.h"
+#include "run_command.h"
+
+namespace pcf {
+namespace {
+
+using testutil::makeTempDir;
+using testutil::runPcfscope;
+
+ShadowMap randomMap(int w, int h, uint32_t seed, int bits) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    ShadowMap map(w, h);
+    for (int j = 0; j < h; ++j) {
+        for (int i = 0; i < w; ++i) map.setDepth(i, j, u(rng) < 0.5f ? 0.3f : 0.3f + u(rng));
+    }
+    map.setFixedPointBits(bits);
+    return map;
+}
+
+std::vector<PcfParams> cases() {
+    std::vector<PcfParams> all;
+    for (const MethodInfo& m : allMethods())
+        all.push_back(makeParams(m.id, m.id == PCF_TENT ? 5 : 3));
+    PcfParams g = makeParams(PCF_GATHER, 4);
+    g.weights = PCF_WEIGHTS_GAUSSIAN;
+    all.push_back(g);
+    return all;
+}
+
+// Both models pcfscope knows (exact = llvmpipe, hw8 = NVIDIA/AMD) are conformant: the envelope
+// holds them, for every method, format and ref, also refs outside [0,1].
+TEST(Conformance, EnvelopeHoldsTheExactAndTheHw8Results) {
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<float> u(-0.05f, 1.05f);
+    std::uniform_real_distribution<float> r(-0.2f, 1.2f);
+    for (int bits : {0, 16, 24}) {
+        ShadowMap map = randomMap(37, 23, 5, bits);
+        for (PcfParams prm : cases()) {
+            for (int k = 0; k < 1500; ++k) {
+                vec2 uv(u(rng), u(rng));
+                float ref = r(rng);
+                VisibilityEnvelope env = visibilityEnvelope(map, uv, ref, prm);
+                ASSERT_LE(env.lo, env.hi);
+                float exact = filterVisibility(map, uv, ref, prm);
+                PcfParams hw8 = prm;
+                hw8.precision = PCF_PRECISION_HW8;
+                float quantised = filterVisibility(map, uv, ref, hw8);
+                EXPECT_TRUE(env.contains(exact)) << methodInfo(prm.method).name << " " << exact
+                                                 << " [" << env.lo << ", " << env.hi << "]";
+                EXPECT_TRUE(env.contains(quantised)) << methodInfo(prm.method).name;
+            }
+        }
+    }
+}
+
+// The envelope is tight where nothing is uncertain and opens only where a texture unit has
+// freedom: near an edge, a hardware tap may return anything within 2^-subTexelBits texel of
+// its position, a texelFetch method nothing but its own result.
+TEST(Conformance, EnvelopeOpensOnlyWhereTheTextureUnitHasFreedom) {
+    ShadowMap map(8, 8, 0.9f);
+    for (int j = 0; j < 8; ++j) {
+        for (int i = 4; i < 8; ++i) map.setDepth(i, j, 0.1f);
+    }
+    // Far from the edge: one answer.
+    VisibilityEnvelope flat =
+        visibilityEnvelope(map, vec2(0.1f, 0.5f), 0.5f, makeParams(PCF_HW2X2));
+    EXPECT_EQ(flat.lo, 1.0f);
+    EXPECT_EQ(flat.hi, 1.0f);
+    // On the edge's lerp (p.x = 3.3): 0.7 exactly, +- 1/16 + 1/256 with Vulkan's 4 bits.
+    vec2 uv((3.3f + 0.5f) / 8.0f, 0.5f);
+    VisibilityEnvelope hw = visibilityEnvelope(map, uv, 0.5f, makeParams(PCF_HW2X2));
+    EXPECT_NEAR(hw.lo, 0.7f - 1.0f / 16 - 1.0f / 256, 1e-5f);
+    EXPECT_NEAR(hw.hi, 0.7f + 1.0f / 16 + 1.0f / 256, 1e-5f);
+    ConformancePrecision eight{8, 8, 0};
+    VisibilityEnvelope hw8 = visibilityEnvelope(map, uv, 0.5f, makeParams(PCF_HW2X2), eight);
+    EXPECT_LT(hw8.hi - hw8.lo, hw.hi - hw.lo);
+    VisibilityEnvelope fetch = visibilityEnvelope(map, uv, 0.5f, makeParams(PCF_BILINEAR2X2));
+    EXPECT_NEAR(fetch.lo, 0.7f, 1e-6f);
+    EXPECT_NEAR(fetch.hi, 0.7f, 1e-6f);
+    EXPECT_FALSE(hw.contains(0.6f));
+    // A comparison within the reference tolerance may go either way.
+    VisibilityEnvelope tie =
+        visibilityEnvelope(map, vec2(0.1f, 0.5f), 0.9f + 1e-8f, makeParams(PCF_NEAREST));
+    EXPECT_EQ(tie.lo, 0.0f);
+    EXPECT_EQ(tie.hi, 1.0f);
+}
+
+TEST(Conformance, VerifyPassesOnTheRendererAndCatchesAWrongPixel) {
+    std::filesystem::path dir = makeTempDir("verify");
+    std::string raw = (dir / "raw").string();
+    auto r = runPcfscope(
+        "render --scene sphere-over-plane --method tent --kernel 5 --map-size 100 "
+        "--depth-format 24 --size 200x120 --raw " +
+        raw);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto v = runPcfscope("verify " + raw);
+    EXPECT_EQ(v.exitCode, 0) << v.out << v.err;
+    EXPECT_NE(v.out.find("(100.0000 %)"), std::string::npos) << v.out;
+
+    // One pixel moved well outside what any texture unit may return.
+    FloatImage ls = readFloatImage(raw + "/lightspace.exr");
+    FloatImage vis = readFloatImage(raw + "/visibility.exr");
+    size_t pick = 0;
+    for (size_t k = 0; k < vis.data.size(); ++k) {
+        if (ls.data[4 * k + 3] == 1.0f && vis.data[k] > 0.99f) {
+            pick = k;
+            break;
+        }
+    }
+    vis.data[pick] = 0.25f;
+    writeExr(raw + "/visibility.exr", vis.width, vis.height, 1, vis.data, {"Y"});
+    auto bad = runPcfscope("verify " + raw);
+    EXPECT_EQ(bad.exitCode, 1) << bad.out << bad.err;
+    std::string where = "pixel (" + std::to_string(pick % vis.width) + ", " +
+                        std::to_string(pick / vis.width) + ")";
+    EXPECT_NE(bad.out.find("worst outlier: " + where), std::string::npos) << bad.out;
+
+    auto missing = runPcfscope("verify " + (dir / "nothing").string());
+    EXPECT_EQ(missing.exitCode, 2);
+    EXPECT_EQ(testutil::lineCount(missing.err), 1) << missing.err;
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace pcf
