@@ -370,7 +370,9 @@ TEST(SceneFile, InputErrorIsARuntimeError) {
     const std::runtime_error& base = e;
     EXPECT_STREQ(base.what(), e.what());
     EXPECT_STREQ(InputError("x.toml", 0, "cannot open file").what(), "x.toml: cannot open file");
-    EXPECT_STREQ(InputError("x.toml", 2, "two\nlines").what(), "x.toml:2: two lines");
+    // One line always: a newline in the problem (or a file name) is written \n (oneLine).
+    EXPECT_STREQ(InputError("x.toml", 2, "two\nlines").what(), "x.toml:2: two\\nlines");
+    EXPECT_STREQ(InputError("a\tb.toml", 0, "x").what(), "a\\tb.toml: x");
 }
 
 }  // namespace
