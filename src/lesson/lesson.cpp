@@ -24,7 +24,7 @@ namespace {
 // The keys a [settings] table and a [[step]] may set.
 constexpr std::string_view SETTING_KEYS[] = {"method",       "kernel",        "radius", "rotate",
                                              "bias",         "constant_bias", "cull",   "map_size",
-                                             "depth_format", "pixel"};
+                                             "depth_format", "pixel",         "grid"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));
@@ -292,6 +292,11 @@ class LessonParser {
             const auto* b = n->as_boolean();
             if (!b) fail(*n, name("rotate") + " must be true or false, got " + typeName(*n));
             s.rotate = b->get();
+        }
+        if (const toml::node* n = table.get("grid")) {
+            const auto* b = n->as_boolean();
+            if (!b) fail(*n, name("grid") + " must be true or false, got " + typeName(*n));
+            s.grid = b->get();
         }
         if (const toml::node* n = table.get("bias")) {
             std::string bias = string(*n, name("bias"));

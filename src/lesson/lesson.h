@@ -23,6 +23,9 @@
 //   cull          = "back"            faces culled in the shadow pass: "back", "front", "none"
 //   map_size      = 256               the shadow map is map_size^2 texels, 4..4096, default 1024
 //   depth_format  = "32f"             the shadow map's depth format: "16", "24" or "32f"
+//   grid          = true              the shadow map's texel grid drawn on the receiver around
+//                                     the picked pixel (G toggles it), default true; off for
+//                                     steps where its lines would hide what they show
 //   pixel         = [612, 388]        the picked pixel in the 1280 x 720 reference frame,
 //                                     origin top-left, y down (see scalePixel), default the
 //                                     centre [640, 360]
@@ -82,6 +85,7 @@ struct LessonSettings {
     int mapSize = 1024;               // texels per side
     std::string depthFormat = "32f";  // "16", "24" or "32f"
     glm::ivec2 pixel{640, 360};       // in the 1280 x 720 reference frame, origin top-left, y down
+    bool grid = true;                 // the texel grid overlay on the scene
 
     // What is subtracted from the receiver's depth: ref = z - depthBias(); 0 for bias "none".
     float depthBias() const;
