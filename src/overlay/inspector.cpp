@@ -1092,8 +1092,15 @@ void planThumbnail(Planner& pl, const InspectorLayout& l, const InspectorModel& 
         float w = l.presentation ? 3.0f : 2.0f;
         pl.op([=](Canvas& c) { c.strokeRect(nb, w, POINT); });
     }
-    std::string caption =
-        "shadow map " + std::to_string(map.width()) + " x " + std::to_string(map.height());
+    // The longest caption that is no wider than the thumbnail (the step text ends beside it).
+    std::string dims = std::to_string(map.width()) + " x " + std::to_string(map.height());
+    std::string caption = dims;
+    for (std::string c : {"shadow map " + dims, "map " + dims}) {
+        if (measureText(FontFace::Sans, t.label, c).x <= box.w) {
+            caption = c;
+            break;
+        }
+    }
     pl.text({box.centre().x, box.bottom() + 4.0f}, caption,
             {FontFace::Sans, t.label, TEXT_DIM, TextAlign::Center}, BoxKind::Label, "steps",
             "thumbnail-caption");
