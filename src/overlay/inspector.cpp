@@ -196,7 +196,6 @@ std::vector<FitLine> wrapBlock(std::string_view text, FontFace face, float size,
             out.push_back({std::move(l), false});
         prose.clear();
     };
-    bool any = false;
     while (true) {
         size_t end = text.find('\n', start);
         std::string_view line =
@@ -223,21 +222,21 @@ std::vector<FitLine> wrapBlock(std::string_view text, FontFace face, float size,
                 for (size_t k = 0; k < parts.size(); ++k) {
                     out.push_back({(k == 0 ? lead : lead + "  ") + parts[k], true});
                 }
-                any = true;
                 if (end == std::string_view::npos) break;
                 start = end + 1;
                 continue;
             }
             out.push_back({row, true});
         } else {
-            if (any && !prose.empty()) prose += '\n';
-            if (!line.empty() || !prose.empty()) prose += std::string(line);
             if (line.empty()) {
+                // A paragraph gap: one empty line.
                 flushProse();
-                if (!out.empty()) out.push_back({"", false});
+                if (!out.empty() && !out.back().text.empty()) out.push_back({"", false});
+            } else {
+                if (!prose.empty()) prose += '\n';
+                prose += std::string(line);
             }
         }
-        any = true;
         if (end == std::string_view::npos) break;
         start = end + 1;
     }
