@@ -390,17 +390,25 @@ std::string singularAfterOne(std::string text) {
     // Counts are placeholders, so the words after them were written for many: "{fetches}
     // lookups" must read "1 lookup" when a key makes it one. Only a whole "1" (not 0.1, 21).
     static const std::pair<std::string_view, std::string_view> PLURALS[] = {
-        {"hardware taps", "hardware tap"}, {"texel reads", "texel read"},
-        {"gather instructions", "gather instruction"}, {"lookups", "lookup"},
-        {"gathers", "gather"}, {"taps", "tap"}, {"reads", "read"}, {"texels", "texel"},
-        {"fetches", "fetch"}, {"points", "point"}, {"samples", "sample"}};
+        {"hardware taps", "hardware tap"},
+        {"texel reads", "texel read"},
+        {"gather instructions", "gather instruction"},
+        {"lookups", "lookup"},
+        {"gathers", "gather"},
+        {"taps", "tap"},
+        {"reads", "read"},
+        {"texels", "texel"},
+        {"fetches", "fetch"},
+        {"points", "point"},
+        {"samples", "sample"}};
     std::string out;
     out.reserve(text.size());
     for (size_t i = 0; i < text.size(); ++i) {
         out += text[i];
-        bool wholeOne = text[i] == '1' && (i == 0 || std::string_view(" (\n").find(text[i - 1]) !=
-                                                         std::string_view::npos) &&
-                        i + 1 < text.size() && text[i + 1] == ' ';
+        bool wholeOne =
+            text[i] == '1' &&
+            (i == 0 || std::string_view(" (\n").find(text[i - 1]) != std::string_view::npos) &&
+            i + 1 < text.size() && text[i + 1] == ' ';
         if (!wholeOne) continue;
         std::string_view rest = std::string_view(text).substr(i + 2);
         for (const auto& [plural, singular] : PLURALS) {
