@@ -569,6 +569,14 @@ Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t) {
     }
     int viewCells = std::max(g.view.size.x, g.view.size.y);
     g.cell = std::floor(side / static_cast<float>(viewCells));
+    // Big cells (few texels) get bigger numbers, as long as the block still fits beside marks.
+    float grown = std::min(std::round(g.cell * 0.12f), std::round(t.number * 1.8f));
+    while (grown > g.number && cellFor(grown) > g.cell) grown -= 1.0f;
+    if (grown > g.number) {
+        g.number = grown;
+        g.bit = std::round(grown * 1.5f);
+        g.bar = std::max(3.0f, grown * 0.25f);
+    }
     float gridW = g.cell * g.view.size.x;
     float gridH = g.cell * g.view.size.y;
     float x0 = std::round(p.x + margin + labelW);
