@@ -156,7 +156,11 @@ const std::map<std::string, Claims>& lessonClaims() {
           {{"one hardware tap, near 0.8",
             [](const Trace& t) {
                 return t.counts.hwTaps == 1 && near(t.visibility, 0.8f, 0.05f);
-            }}}}},
+            }}},
+          // The conventions step: the worked example's pixel, fx counted from the texel centre.
+          {bits("1010"),
+           {"near 0.8, so a shadow amount near 0.2",
+            [](const Trace& t) { return near(t.visibility, 0.8f, 0.05f); }}}}},
         {"04-nxn-lookups",
          {{penumbra(), onGround()},
           {penumbra(), onGround()},
@@ -170,6 +174,8 @@ const std::map<std::string, Claims>& lessonClaims() {
           {penumbra(), onGround()}}},
         {"06-hardware-taps-and-tent",
          {{penumbra(), onGround()},
+          {penumbra(), onGround()},
+          {penumbra(), onGround()},
           {penumbra(), onGround()},
           {penumbra(), onGround()},
           {penumbra(), onGround()}}},

@@ -84,6 +84,9 @@ const std::vector<Simple>& simpleNames() {
         {"tent.t", [](const Trace& t,
                       const StepContext&) { return number(pcfTentBase(t.uv, t.mapSize).frac.y); }},
         {"visibility", [](const Trace& t, const StepContext&) { return number(t.visibility); }},
+        // The same result counted the other way (1 = in shadow), as some articles do.
+        {"1-visibility",
+         [](const Trace& t, const StepContext&) { return number(1.0f - t.visibility); }},
         {"shadow", [](const Trace& t, const StepContext&) { return number(1.0f - t.visibility); }},
         {"method",
          [](const Trace& t, const StepContext&) {
