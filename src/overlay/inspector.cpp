@@ -527,9 +527,10 @@ Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t) {
         float blockH = lineHeightOf(bit) + 2.0f * lineHeightOf(number);
         float bar = std::max(3.0f, number * 0.25f);
         // Room for the block and, beside it, for the marks a cell may hold.
-        return std::max(blockW + 2.0f * g.pad, blockH + bar + 2.0f * g.pad) * 1.15f;
+        return std::max(blockW + 2.0f * g.pad, blockH + bar + 2.0f * g.pad) * 1.08f;
     };
-    float labelW = measureText(FontFace::Mono, t.label, "j=0000").x + 8.0f;
+    int lastRow = std::max(std::abs(g.full.origin.y), std::abs(g.full.origin.y + g.full.size.y));
+    float labelW = measureText(FontFace::Mono, t.label, "j=-" + std::to_string(lastRow)).x + 8.0f;
     float laneH = lineHeightOf(t.label) + 12.0f;
     float fyW = measureText(FontFace::Mono, t.label, "fy 0.00").x + 16.0f;
     // The grid takes at most this share of the panel's height: the legend and the formula need
@@ -903,8 +904,9 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
                         " texels, around the lookup (pcfscope trace lists all)");
     }
     if (hidden > 0) {
-        notes.push_back(std::to_string(hidden) + (hidden == 1 ? " cell keeps" : " cells keep") +
-                        " its numbers under marks off: see pcfscope trace");
+        notes.push_back("numbers of " + std::to_string(hidden) +
+                        (hidden == 1 ? " cell" : " cells") +
+                        " left out where marks fill the cell: see pcfscope trace");
     }
     for (const std::string& note : notes) {
         FittedText f =
@@ -1244,7 +1246,8 @@ InspectorLayout inspectorLayout(glm::ivec2 frameSize, bool presentation) {
     float statusH = std::round(std::max(28.0f * l.scale, lineHeightOf(t.status) + 8.0f));
     float bodyH = h - statusH;
     // Presentation gives the scene less room so that the step text and the cells can be large.
-    float sceneShare = presentation ? 0.5f : 0.6f;
+    // Tall frames too: the inspector's cells are as large as its width allows.
+    float sceneShare = presentation || h > 0.75f * w ? 0.5f : 0.6f;
     float sceneW = std::round(w * sceneShare);
     float sceneH = std::round(sceneW * 9.0f / 16.0f);
     float maxSceneH = std::round(bodyH * (presentation ? 0.5f : 0.62f));
@@ -1253,7 +1256,7 @@ InspectorLayout inspectorLayout(glm::ivec2 frameSize, bool presentation) {
         sceneW = std::round(sceneH * 16.0f / 9.0f);
     }
     l.status = {0.0f, h - statusH, w, statusH};
-    if (bodyH - sceneH < 0.3f * bodyH && w > 2.0f * h) {
+    if (w > 2.2f * h) {
         // Very wide frames: the scene at the full height on the left, then the step panel, then
         // the inspector, side by side (under the scene would leave a sliver).
         sceneH = bodyH;
