@@ -36,7 +36,12 @@
 //                                     step's trace (lesson_text.h lists them). Newlines are
 //                                     kept (line and paragraph breaks); end a source line with
 //                                     a backslash to run on into the next (TOML's
-//                                     line-ending backslash)
+//                                     line-ending backslash). A line that starts with two
+//                                     spaces is preformatted: drawn in monospace with its
+//                                     spaces kept; consecutive such lines whose cells are
+//                                     separated by two or more spaces are aligned as a table
+//                                     (overlay/inspector.cpp alignTables). A lone operator
+//                                     ("1 - g") never breaks across lines
 //   method = "hw2x2"                  any [settings] key: it changes the state from this step
 //                                     on; the steps after it inherit it
 //
