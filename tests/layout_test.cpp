@@ -132,6 +132,7 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
             m.currentStep = static_cast<int>(k);
             m.map = &map;
             m.showScene = step.chart.empty();
+            m.highlightFetch = step.highlightFetch - 1;
             m.status =
                 "pcf-gather N=3   bias constant 0.002   cull back   map 1024 32f   scene "
                 "1152x648";

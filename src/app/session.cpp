@@ -356,6 +356,7 @@ InspectorModel Session::model() const {
     m.showScene = chart.empty();
     m.grid = mGrid;
     m.textPage = mTextPage;
+    m.highlightFetch = mLesson.steps[static_cast<size_t>(mStep)].highlightFetch - 1;
     return m;
 }
 

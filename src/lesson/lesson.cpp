@@ -116,7 +116,7 @@ class LessonParser {
         for (size_t i = 0; i < steps->size(); ++i) {
             const toml::table& table = *steps->get(i)->as_table();
             std::string what = "step " + std::to_string(i + 1);
-            checkKeys(table, what, {"title", "text", "chart"});
+            checkKeys(table, what, {"title", "text", "chart", "highlight"});
             applySettings(table, what, state, lines);
             LessonStep step;
             step.line = lineOf(table);
@@ -127,11 +127,21 @@ class LessonParser {
                 std::filesystem::path p = std::filesystem::path(mSource).parent_path() / chart;
                 std::error_code ec;
                 if (!std::filesystem::is_regular_file(p, ec)) {
-                    fail(*table.get("chart"), what + " chart '" + chart + "' not found (looked at " +
-                                                  p.string() + ")");
+                    fail(*table.get("chart"),
+                         what + " chart '" + chart + "' not found (looked at " + p.string() + ")");
                 }
                 step.chart = p.string();
                 step.chartLine = lineOf(*table.get("chart"));
+            }
+            if (const toml::node* h = table.get("highlight")) {
+                const auto* v = h->as_integer();
+                if (!v || v->get() < 1 || v->get() > 64) {
+                    fail(*h, what +
+                                 " highlight must be a fetch number 1..64 (the instruction the "
+                                 "text talks about), got " +
+                                 typeName(*h));
+                }
+                step.highlightFetch = static_cast<int>(v->get());
             }
             step.settings = state;
             checkState(table, what, state, lines);

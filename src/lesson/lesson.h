@@ -113,6 +113,9 @@ struct LessonStep {
     // bench.csv (a path relative to the lesson file) where the scene would be. Not inherited.
     std::string chart;
     int chartLine = 0;  // the line of the `chart` key
+    // `highlight = 1`: the fetch instruction (1-based, in issue order) this step's text talks
+    // about, drawn in the highlight colour in the inspector; 0: none. Not inherited.
+    int highlightFetch = 0;
 };
 
 struct Lesson {

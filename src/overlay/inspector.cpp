@@ -24,6 +24,7 @@ constexpr Colour PADDING{0.30f, 0.31f, 0.35f, 1.0f};
 constexpr Colour DARK_TEXT{0.08f, 0.08f, 0.10f, 1.0f};
 constexpr Colour STATUS{0.03f, 0.03f, 0.04f, 1.0f};
 constexpr Colour WEIGHT_BAR{0.95f, 0.35f, 0.25f, 0.9f};
+constexpr Colour HIGHLIGHT{1.0f, 0.62f, 0.10f, 1.0f};
 constexpr Colour FOOTPRINT_TINT{0.2f, 0.85f, 1.0f, 0.18f};
 
 // A texel narrower than this on screen makes the grid's lines a moire that reads as acne: the
@@ -510,7 +511,8 @@ float lineOf(const InspectorLayout& l) {
     return l.presentation ? 3.0f : std::max(1.0f, std::round(l.scale));
 }
 
-Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t) {
+// highlight: the fetch (0-based) the step talks about; a windowed view keeps its texels in view.
+Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, int highlight = -1) {
     Grid g;
     const Rect& p = l.inspector;
     float margin = marginOf(l);
@@ -564,6 +566,16 @@ Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t) {
             // Keep the base 2 x 2 in view.
             want = std::min(want, tr.pos.base[a]);
             want = std::max(want, tr.pos.base[a] + 2 - k);
+            if (highlight >= 0 && highlight < static_cast<int>(tr.fetches.size())) {
+                // The 2 x 2 the highlighted fetch reads (one texel for a point read).
+                const FetchRecord& f = tr.fetches[static_cast<size_t>(highlight)];
+                float q = f.uv[a] * static_cast<float>(tr.mapSize[a]);
+                bool point = f.kind == PCF_FETCH_POINT;
+                int first = static_cast<int>(std::floor(point ? q : q - 0.5f));
+                int last = point ? first : first + 1;
+                want = std::min(want, first);
+                want = std::max(want, last + 1 - k);
+            }
             g.view.origin[a] = std::clamp(want, lo, std::max(lo, hi));
             g.view.size[a] = k;
         }
@@ -604,8 +616,8 @@ glm::vec2 viewPoint(const Grid& g, glm::vec2 texelPos) {
 }
 
 struct LegendNeeds {
-    bool weightBar = false, dots = false, rings = false, gathers = false, fraction = false,
-         baseCentre = false, padding = false, footprint = false;
+    bool highlight = false, weightBar = false, dots = false, rings = false, gathers = false,
+         fraction = false, baseCentre = false, padding = false, footprint = false;
 };
 
 void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const Grid& g,
@@ -679,14 +691,18 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     // lookups and point reads as dots, each at the uv the instruction sampled.
     std::vector<std::function<void(Canvas&)>> markOps;
     float dotR = std::max(3.0f, std::round(g.cell * 0.04f));
-    for (const FetchRecord& fr : tr.fetches) {
+    for (size_t fi = 0; fi < tr.fetches.size(); ++fi) {
+        const FetchRecord& fr = tr.fetches[fi];
         glm::vec2 at = viewPoint(g, fr.uv * size);
+        bool highlit = static_cast<int>(fi) == m.highlightFetch;
+        if (highlit) legend.highlight = true;
         if (fr.kind == PCF_FETCH_GATHER) {
             glm::ivec2 corner(glm::floor(fr.uv * size - 0.5f));
             Rect a = texelCellRect(g.view, area, corner);
             Rect b = texelCellRect(g.view, area, corner + glm::ivec2(1));
             Rect block = Rect{a.x, a.y, b.right() - a.x, b.bottom() - a.y}.expanded(-line);
-            float w = line + 1.0f;
+            float w = line + 1.0f + (highlit ? 2.0f : 0.0f);
+            Colour gatherColour = highlit ? HIGHLIGHT : GATHER;
             // Four edges, each inside the border band of its cells, clipped to the view.
             Rect edges[] = {{block.x, block.y, block.w, w},
                             {block.x, block.bottom() - w, block.w, w},
@@ -695,7 +711,7 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
             for (const Rect& e : edges) {
                 Rect ce = e.intersect(area);
                 if (ce.empty()) continue;
-                markOps.push_back([=](Canvas& c) { c.fillRect(ce, GATHER); });
+                markOps.push_back([=](Canvas& c) { c.fillRect(ce, gatherColour); });
                 mark(ce, "gather-outline");
             }
             legend.gathers = true;
@@ -703,7 +719,7 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
             float rr = std::max(5.0f, std::round(g.cell * 0.07f));
             if (!area.contains(at)) continue;
             markOps.push_back([=](Canvas& c) {
-                c.ring(at, rr, line, HW_RING);
+                c.ring(at, rr, highlit ? line + 2.0f : line, highlit ? HIGHLIGHT : HW_RING);
                 c.circle(at, std::max(2.0f, rr * 0.4f), ACCENT);
             });
             mark({at.x - rr - line, at.y - rr - line, 2 * (rr + line), 2 * (rr + line)}, "hw-tap");
@@ -711,7 +727,10 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
         } else if (tr.params.method == PCF_POISSON || tr.params.method == PCF_NAIVE ||
                    tr.params.method == PCF_HW) {
             if (!area.contains(at)) continue;
-            markOps.push_back([=](Canvas& c) { c.circle(at, dotR, ACCENT); });
+            markOps.push_back([=](Canvas& c) {
+                if (highlit) c.circle(at, dotR + 2.0f, HIGHLIGHT);
+                c.circle(at, dotR, ACCENT);
+            });
             mark({at.x - dotR - 1, at.y - dotR - 1, 2 * dotR + 2, 2 * dotR + 2}, "lookup");
             legend.dots = true;
         }
@@ -890,7 +909,7 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
                 "counts");
         y += lineHeightOf(t.number);
     }
-    Grid g = gridOf(l, tr, t);
+    Grid g = gridOf(l, tr, t, m.highlightFetch);
     LegendNeeds need;
     int hidden = 0;
     planCells(pl, l, m, g, t, need, hidden);
@@ -931,6 +950,7 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     if (need.dots) entries.push_back({ACCENT, "each lookup", 1});
     if (need.rings) entries.push_back({ACCENT, "hardware tap", 2});
     if (need.gathers) entries.push_back({GATHER, "one gather (2 x 2)", 3});
+    if (need.highlight) entries.push_back({HIGHLIGHT, "the fetch the text talks about", 3});
     if (m.showScene)
         entries.push_back({Colour{0.2f, 0.85f, 1.0f, 1.0f}, "texels read, on the scene", 0});
     float lg = t.label;

@@ -80,6 +80,7 @@ struct InspectorModel {
     bool showScene = true;              // false: a chart fills the scene's place (no overlay)
     bool grid = true;                   // the texel grid on the receiver (G, lesson `grid`)
     int textPage = 0;                   // the page of the step text shown (when it pages)
+    int highlightFetch = -1;            // the fetch (0-based) the step talks about; -1: none
 };
 
 // The frame measured and placed, nothing drawn yet: a pure function of the layout and the model
