@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -68,7 +69,7 @@ TEST_F(ExportTest, WritesAFrameAndATracePerStep) {
                          " --size 1280x720", "env -u DISPLAY");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (int s = 1; s <= 3; ++s) {
-        std::string stem = path("frames/test-" + std::to_string(s));
+        std::string stem = path("frames/test-step0" + std::to_string(s));
         ImageSize size = readImageSize(stem + ".png");
         EXPECT_EQ(size.width, 1280);
         EXPECT_EQ(size.height, 720);
@@ -86,8 +87,24 @@ TEST_F(ExportTest, WritesAFrameAndATracePerStep) {
             sum += t["weight"].number * t["lit"].number;
         }
         EXPECT_NEAR(sum, visibility, 1e-5);
+        // The sidecar lists the frame's layout: the four panels, then what was drawn in them.
+        const jsonlite::Value& layout = j["layout"];
+        ASSERT_EQ(layout.kind, jsonlite::Value::ARRAY);
+        int panels = 0, numbers = 0, stepText = 0;
+        for (const jsonlite::Value& b : layout.array) {
+            panels += b["kind"].string == "panel";
+            numbers += b["kind"].string == "number";
+            if (b["role"].string == "step-text") {
+                ++stepText;
+                EXPECT_GE(b["font_px"].number, 12.0);
+                EXPECT_EQ(b["rect"].array.size(), 4u);
+            }
+        }
+        EXPECT_EQ(panels, 4);
+        EXPECT_GT(numbers, 4);  // at least a bit per cell and the visibility
+        EXPECT_EQ(stepText, 1);
     }
-    jsonlite::Value gather = jsonlite::parse(readFile(path("frames/test-3.json")));
+    jsonlite::Value gather = jsonlite::parse(readFile(path("frames/test-step03.json")));
     EXPECT_EQ(gather["trace"]["method"].string, "pcf-gather");
     EXPECT_NE(gather["text"].string.find("16 texels, 4 gathers"), std::string::npos);
     EXPECT_NE(r.err.find("frames/s"), std::string::npos) << r.err;
@@ -99,8 +116,8 @@ TEST_F(ExportTest, CellsAreTintedByTheirBits) {
     auto r = runPcfscope("export " + path("test.toml") + " -o " + path("frames") +
                          " --size 1600x900 --steps 2", "env -u DISPLAY");
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    jsonlite::Value j = jsonlite::parse(readFile(path("frames/test-2.json")));
-    std::vector<unsigned char> px = readImageBytes(path("frames/test-2.png"), 4);
+    jsonlite::Value j = jsonlite::parse(readFile(path("frames/test-step02.json")));
+    std::vector<unsigned char> px = readImageBytes(path("frames/test-step02.png"), 4);
     // Rebuild the layout the exporter used from the trace it wrote.
     Trace tr;
     const jsonlite::Value& t = j["trace"];
@@ -142,8 +159,8 @@ TEST_F(ExportTest, ChartStepsShowTheChartInTheScenesPlace) {
     auto r = runPcfscope("export 11-speed-and-accuracy -o " + path("chart") +
                          " --size 1600x900 --steps 3-4");
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    std::vector<unsigned char> chart = readImageBytes(path("chart/11-speed-and-accuracy-3.png"), 4);
-    std::vector<unsigned char> scene = readImageBytes(path("chart/11-speed-and-accuracy-4.png"), 4);
+    std::vector<unsigned char> chart = readImageBytes(path("chart/11-speed-and-accuracy-step03.png"), 4);
+    std::vector<unsigned char> scene = readImageBytes(path("chart/11-speed-and-accuracy-step04.png"), 4);
     // The chart's page is white at the scene's top-left corner; the scene there is sky.
     auto at = [](const std::vector<unsigned char>& px, int x, int y) {
         size_t k = (static_cast<size_t>(y) * 1600 + x) * 4;
@@ -152,7 +169,7 @@ TEST_F(ExportTest, ChartStepsShowTheChartInTheScenesPlace) {
     EXPECT_EQ(at(chart, 4, 4), glm::ivec3(255, 255, 255));
     EXPECT_NE(at(scene, 4, 4), glm::ivec3(255, 255, 255));
     // The inspector still traces the pixel on both.
-    jsonlite::Value j = jsonlite::parse(readFile(path("chart/11-speed-and-accuracy-3.json")));
+    jsonlite::Value j = jsonlite::parse(readFile(path("chart/11-speed-and-accuracy-step03.json")));
     EXPECT_EQ(j["trace"].kind, jsonlite::Value::OBJECT);
 }
 
@@ -170,7 +187,9 @@ TEST_F(ExportTest, EveryLessonExportsHeadless) {
                              "env -u DISPLAY -u WAYLAND_DISPLAY");
         ASSERT_EQ(r.exitCode, 0) << lesson.name << ": " << r.err;
         for (size_t s = 1; s <= lesson.steps.size(); ++s) {
-            std::string stem = dir + "/" + lesson.name + "-" + std::to_string(s);
+            char step[16];
+            std::snprintf(step, sizeof step, "-step%02zu", s);
+            std::string stem = dir + "/" + lesson.name + step;
             EXPECT_EQ(readImageSize(stem + ".png").width, 1280) << stem;
             jsonlite::Value j = jsonlite::parse(readFile(stem + ".json"));
             EXPECT_EQ(j["trace"].kind, jsonlite::Value::OBJECT) << stem << ": no receiver";
@@ -273,20 +292,20 @@ TEST_F(ExportTest, ViewKeysScreenshotIsTheExportedFrame) {
     ASSERT_EQ(shot.exitCode, 0) << shot.err;
     auto r = runPcfscope("export " + path("test.toml") + " -o " + path("frames") + " --steps 3");
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(readFile(path("shot.png")), readFile(path("frames/test-3.png")));
+    EXPECT_EQ(readFile(path("shot.png")), readFile(path("frames/test-step03.png")));
     // Keys change the state: M moves pcf-gather to pcf-hw, and the frame changes with it.
     auto other = runPcfscope("view " + path("test.toml") +
                                  " --keys \"end m\" --screenshot " + path("shot-m.png"),
                              "DISPLAY=" + x.display());
     ASSERT_EQ(other.exitCode, 0) << other.err;
-    EXPECT_NE(readFile(path("shot-m.png")), readFile(path("frames/test-3.png")));
+    EXPECT_NE(readFile(path("shot-m.png")), readFile(path("frames/test-step03.png")));
     // Keys that change the state the words were written for: the numbers follow the live
     // state and the text says it was written for another one (the E key's JSON holds it).
     auto wider = runPcfscope("view 5 --keys \"right_bracket e\" --screenshot " + path("n4.png"),
                              "cd " + mDir.string() + " && DISPLAY=" + x.display());
     ASSERT_EQ(wider.exitCode, 0) << wider.err;
     jsonlite::Value step =
-        jsonlite::parse(readFile(path("pcfscope-frames/05-gather-weights-1.json")));
+        jsonlite::parse(readFile(path("pcfscope-frames/05-gather-weights-step01.json")));
     EXPECT_NE(step["text"].string.find("(Written for pcf-gather N=3"), std::string::npos)
         << step["text"].string;
     EXPECT_NE(step["text"].string.find("now pcf-gather N=4"), std::string::npos);
@@ -297,7 +316,7 @@ TEST_F(ExportTest, ViewKeysScreenshotIsTheExportedFrame) {
                             "cd " + mDir.string() + " && DISPLAY=" + x.display());
     ASSERT_EQ(same.exitCode, 0) << same.err;
     jsonlite::Value acne =
-        jsonlite::parse(readFile(path("pcfscope-frames/08-acne-and-bias-1.json")));
+        jsonlite::parse(readFile(path("pcfscope-frames/08-acne-and-bias-step01.json")));
     EXPECT_EQ(acne["text"].string.find("(Written for"), std::string::npos)
         << acne["text"].string;
     auto badKey = runPcfscope("view " + path("test.toml") + " --keys \"warp\" --screenshot " +

@@ -89,7 +89,7 @@ class Interrupt : public ::testing::Test {
 TEST_F(Interrupt, SigintAfterTheFirstExportFrameLeavesNothing) {
     fs::path out = mDir / "frames";
     pid_t pid = start({"export", "11", "-o", out.string(), "--size", "1280x720"});
-    ASSERT_TRUE(waitFor(out / "11-speed-and-accuracy-1.json", pid, 120s)) << stderrText();
+    ASSERT_TRUE(waitFor(out / "11-speed-and-accuracy-step01.json", pid, 120s)) << stderrText();
     ASSERT_EQ(kill(pid, SIGINT), 0);
     EXPECT_EQ(exitCodeOf(pid), 130) << stderrText();
     EXPECT_FALSE(fs::exists(out)) << "export left its folder";

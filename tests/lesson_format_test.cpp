@@ -410,10 +410,48 @@ chart = "nowhere/bench.csv"
         FAIL() << "no error";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()).rfind("/tmp/m.toml:6: step 1 chart 'nowhere/bench.csv' "
-                                              "not found", 0),
+                                              "not found",
+                                              0),
                   0u)
             << e.what();
     }
+}
+
+}  // namespace
+}  // namespace pcf
+
+namespace pcf {
+namespace {
+
+// `grid` starts a step with the texel grid off; `highlight` names the fetch its text is about
+// (not inherited); both are checked like every other key.
+TEST(LessonFormatLayoutKeys, GridAndHighlight) {
+    std::string text = std::string(GOOD) + R"(
+[[step]]
+title = "Grid off, first fetch"
+text = "Fetch one."
+grid = false
+highlight = 1
+
+[[step]]
+title = "Next"
+text = "Still off."
+)";
+    Lesson lesson = parseLessonString(text, "keys.toml");
+    ASSERT_EQ(lesson.steps.size(), 5u);
+    EXPECT_TRUE(lesson.steps[0].settings.grid);
+    EXPECT_EQ(lesson.steps[0].highlightFetch, 0);
+    EXPECT_FALSE(lesson.steps[3].settings.grid);
+    EXPECT_EQ(lesson.steps[3].highlightFetch, 1);
+    EXPECT_FALSE(lesson.steps[4].settings.grid);   // settings are inherited
+    EXPECT_EQ(lesson.steps[4].highlightFetch, 0);  // the highlight is not
+    std::string bad =
+        std::string(GOOD) + "\n[[step]]\ntitle = \"x\"\ntext = \"y\"\nhighlight = 0\n";
+    EXPECT_NE(errorOf(bad).find("highlight must be a fetch number"), std::string::npos)
+        << errorOf(bad);
+    std::string badGrid = std::string(GOOD) + "\n[[step]]\ntitle = \"x\"\ntext = \"y\"\ngrid = 1\n";
+    EXPECT_NE(errorOf(badGrid).find("grid must be true or false"), std::string::npos)
+        << errorOf(badGrid);
 }
 
 }  // namespace

@@ -206,3 +206,20 @@ TEST(LessonText, FillRefusesWhatTheCheckRefuses) {
 
 }  // namespace
 }  // namespace pcf
+
+namespace pcf {
+namespace {
+
+// A count of one reads in the singular, whatever the words were written for.
+TEST(LessonTextPlurals, OneTakesTheSingular) {
+    EXPECT_EQ(singularAfterOne("1 lookups, 1 hardware taps and 1 texel reads."),
+              "1 lookup, 1 hardware tap and 1 texel read.");
+    EXPECT_EQ(singularAfterOne("(1 gathers)"), "(1 gather)");
+    // Not a whole 1, or not a count word: unchanged.
+    EXPECT_EQ(singularAfterOne("0.1 lookups, 21 taps, 1 lookupsy, 2 reads"),
+              "0.1 lookups, 21 taps, 1 lookupsy, 2 reads");
+    EXPECT_EQ(singularAfterOne("9 lookups"), "9 lookups");
+}
+
+}  // namespace
+}  // namespace pcf

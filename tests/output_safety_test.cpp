@@ -116,7 +116,7 @@ TEST_F(OutputSafetyTest, ExportAndBenchRefuseUnwritableFolders) {
                   "cannot create folder");
     auto ok = runPcfscope("export 1 --steps 1 --size 320x180 -o " + path("new/frames/"));
     ASSERT_EQ(ok.exitCode, 0) << ok.err;
-    EXPECT_TRUE(fs::is_regular_file(mDir / "new/frames/01-hard-shadows-1.png"));
+    EXPECT_TRUE(fs::is_regular_file(mDir / "new/frames/01-hard-shadows-step01.png"));
     fs::remove_all(mDir / "new");
 
     std::ofstream(mDir / "file") << "x";

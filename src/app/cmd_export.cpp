@@ -35,7 +35,8 @@ glm::ivec2 parseSteps(const std::string& text, int count) {
     try {
         size_t used = 0;
         r.x = std::stoi(text.substr(0, dash), &used);
-        if (used != (dash == std::string::npos ? text.size() : dash)) throw std::invalid_argument("");
+        if (used != (dash == std::string::npos ? text.size() : dash))
+            throw std::invalid_argument("");
         r.y = r.x;
         if (dash != std::string::npos) {
             r.y = std::stoi(text.substr(dash + 1), &used);
@@ -61,12 +62,18 @@ int runExport(const ExportOptions& o) {
     outputs.addInput("LESSON", path);
     for (const LessonStep& step : lesson.steps) outputs.addInput("chart", step.chart);
     ExportPlan plan = planExport(outputs, dir, lesson.name, steps);
-    exportFrames(path, plan, size, o.presentation, true);
+    exportFrames(path, plan, size, o.presentation, true, &outputs);
     outputs.commit();
     return 0;
 }
 
 }  // namespace
+
+std::string frameStem(const std::string& lessonName, int step) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "-step%02d", step);
+    return lessonName + buf;
+}
 
 ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::string& lessonName,
                       glm::ivec2 steps) {
@@ -75,7 +82,7 @@ ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::s
     plan.steps = steps;
     outputs.addDirectory("-o", dir);
     for (int s = steps.x; s <= steps.y; ++s) {
-        std::string stem = (std::filesystem::path(dir) / (lessonName + "-" + std::to_string(s))).string();
+        std::string stem = (std::filesystem::path(dir) / frameStem(lessonName, s)).string();
         outputs.add("-o", stem + ".png");
         outputs.add("-o", stem + ".json");
         plan.stems.push_back(stem);
@@ -84,11 +91,12 @@ ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::s
 }
 
 void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
-                  bool presentation, bool progress) {
+                  bool presentation, bool progress, OutputFiles* outputs) {
     std::unique_ptr<GlContext> context = createHeadlessContext();
     Session session(size, presentation);
     session.loadLesson(lessonPath);
     auto start = std::chrono::steady_clock::now();
+    int extraFrames = 0;
     for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
         session.goToStep(s - 1);
         session.compose();
@@ -99,10 +107,23 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
             std::fprintf(stderr, "export: %s (%d/%d)\n", (stem + ".png").c_str(),
                          s - plan.steps.x + 1, plan.steps.y - plan.steps.x + 1);
         }
+        // The rest of a step's text, when it pages at this size: one more frame per page.
+        for (int page = 1; outputs && page < session.textPages(); ++page) {
+            std::string more = stem + "-page" + std::to_string(page + 1);
+            outputs->add("-o", more + ".png");
+            outputs->add("-o", more + ".json");
+            session.setTextPage(page);
+            session.compose();
+            writePngRgba8(more + ".png", size.x, size.y, session.readFrame());
+            writeTextFile(more + ".json", session.stepJson() + "\n");
+            if (progress)
+                std::fprintf(stderr, "export: %s (page %d)\n", (more + ".png").c_str(), page + 1);
+            ++extraFrames;
+        }
     }
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    int frames = plan.steps.y - plan.steps.x + 1;
+    int frames = plan.steps.y - plan.steps.x + 1 + extraFrames;
     if (progress) {
         std::fprintf(stderr, "export: %d frames of %dx%d in %.2f s (%.1f frames/s) into %s\n",
                      frames, size.x, size.y, seconds, frames / seconds, plan.dir.c_str());
@@ -118,7 +139,8 @@ Command addExportCommand(CLI::App& app) {
     sub->add_option("-o,--out", o->outDir, "output directory (default pcfscope-frames/LESSON)");
     sub->add_option("--size", o->size, "frame size WxH (default 1600x900, the viewer's)");
     sub->add_option("--steps", o->steps, "steps to write, A-B or A (default all)");
-    sub->add_flag("--presentation", o->presentation, "large type and thick lines");
+    sub->add_flag("--presentation", o->presentation,
+                  "what presentation mode (P) shows: 22 px step text, 18 px numbers, thick lines");
     sub->add_flag("-f,--force", o->force, "overwrite existing frames");
     return {sub, [o] { return runExport(*o); }};
 }

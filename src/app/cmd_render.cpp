@@ -47,7 +47,8 @@ int runRender(const RenderCommandOptions& o) {
     // Every check first: nothing is written unless all of it can be.
     RenderSettings settings = o.render.settings();
     Scene scene = o.render.loadScene();
-    if (o.out.empty() && o.rawDir.empty()) throw UsageError("render needs -o FILE.png or --raw DIR");
+    if (o.out.empty() && o.rawDir.empty())
+        throw UsageError("render needs -o FILE.png or --raw DIR");
     requireIntRange("--time", o.timeRepeats, 0, 10000);
     OutputFiles outputs(o.force);
     outputs.addInput("--scene-file", o.render.sceneFile);
@@ -76,7 +77,8 @@ int runRender(const RenderCommandOptions& o) {
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(scene);
     renderer.render(settings);
-    if (o.verbose) std::fprintf(stderr, "pcfscope: rendered on %s\n", context->description().c_str());
+    if (o.verbose)
+        std::fprintf(stderr, "pcfscope: rendered on %s\n", context->description().c_str());
     if (o.timeRepeats > 0) {
         TimingResult t = renderer.timeCameraPass(settings, o.timeRepeats);
         std::printf("camera pass (%s %s, %dx%d, map %d): median %.3f ms over %d draws (%s)\n",
@@ -105,6 +107,16 @@ int runRender(const RenderCommandOptions& o) {
         writeTextFile(rawSettings, rawSettingsJson(settings));
     }
     outputs.commit();
+    // Say what was written, like export does (a silent success left users looking for it).
+    std::string method = std::string(methodInfo(settings.method).name);
+    if (!o.out.empty()) {
+        std::fprintf(stderr, "render: wrote %s (%dx%d, %s, map %d)\n", o.out.c_str(), size.x,
+                     size.y, method.c_str(), settings.mapSize);
+    }
+    if (!o.rawDir.empty()) {
+        std::fprintf(stderr, "render: wrote %s, %s, %s and %s\n", rawShadow.c_str(),
+                     rawLightSpace.c_str(), rawVisibility.c_str(), rawPositions.c_str());
+    }
     return 0;
 }
 

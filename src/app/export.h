@@ -2,19 +2,22 @@
 // viewer's E key.
 #pragma once
 
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "app/output_files.h"
 
 namespace pcf {
 
+// A frame's file stem: "03-bilinear-lerp-step02" (steps counted from 1, two digits, so that
+// names sort and never read as a range). The viewer's E key and `export` name frames alike.
+std::string frameStem(const std::string& lessonName, int step);
+
 struct ExportPlan {
     std::string dir;
     glm::ivec2 steps{1, 1};          // 1-based, inclusive
-    std::vector<std::string> stems;  // DIR/LESSON-STEP, one per step, without extension
+    std::vector<std::string> stems;  // DIR/LESSON-stepNN, one per step, without extension
 };
 
 // Checks every output before anything is written and adds it to `outputs` (which creates the
@@ -23,8 +26,10 @@ struct ExportPlan {
 ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::string& lessonName,
                       glm::ivec2 steps);
 
-// Renders and writes each planned step headless; progress and frames/s on stderr.
+// Renders and writes each planned step headless; progress and frames/s on stderr. A step whose
+// text pages at this size (inspector.h) also gets one frame per further page, STEM-page2.png
+// (+ .json), added to `outputs` (checked like the rest; taken back on failure) when given.
 void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
-                  bool presentation, bool progress);
+                  bool presentation, bool progress, OutputFiles* outputs = nullptr);
 
 }  // namespace pcf

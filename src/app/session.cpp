@@ -215,6 +215,8 @@ void Session::goToStep(int step) {
     if (mLesson.steps.empty()) return;
     mStep = std::clamp(step, 0, stepCount() - 1);
     const LessonStep& s = mLesson.steps[static_cast<size_t>(mStep)];
+    mTextPage = 0;
+    mGrid = s.settings.grid;
     setSettings(s.settings);
     setPixel(scalePixel(s.settings.pixel, glm::ivec2(mLayout.scene.size())));
 }
@@ -269,11 +271,23 @@ void Session::blitThumbnail() {
     int x = static_cast<int>(r.x);
     int top = frameH - static_cast<int>(r.y);
     glNamedFramebufferReadBuffer(mThumbnail.framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mThumbnail.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, side,
-                           side, x, top, x + side, top - side, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitNamedFramebuffer(mThumbnail.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, side, side,
+                           x, top, x + side, top - side, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 void Session::setHelp(bool on) { mHelp = on; }
+
+bool Session::nextPage() {
+    if (mTextPage + 1 >= mTextPages) return false;
+    ++mTextPage;
+    return true;
+}
+
+bool Session::previousPage() {
+    if (mTextPage <= 0) return false;
+    --mTextPage;
+    return true;
+}
 
 void Session::setFrameTimeMs(double ms) { mFrameTimeMs = ms; }
 
@@ -307,10 +321,9 @@ void Session::blitChart(const std::string& csvPath) {
 
 void Session::renderScene() {
     RenderSettings r = renderSettingsFor(mSettings, glm::ivec2(mLayout.scene.size()));
-    bool mapChanged = !mRendered || mRendered->mapSize != r.mapSize ||
-                      mRendered->depthFormat != r.depthFormat ||
-                      mRendered->shadowCull != r.shadowCull ||
-                      mRendered->polygonOffset != r.polygonOffset;
+    bool mapChanged =
+        !mRendered || mRendered->mapSize != r.mapSize || mRendered->depthFormat != r.depthFormat ||
+        mRendered->shadowCull != r.shadowCull || mRendered->polygonOffset != r.polygonOffset;
     if (mapChanged) mRenderer->renderShadowPass(r);
     mRenderer->renderCameraPass(r);
     if (mapChanged) {
@@ -393,6 +406,31 @@ void Session::compose() {
         blitChart(chart);
     }
 
+    InspectorModel m = model();
+    FramePlan plan = planFrame(mLayout, m);
+    mTextPages = plan.textPages;
+    if (mTextPage >= mTextPages) {
+        // A smaller type or frame may leave fewer pages: show the last.
+        mTextPage = mTextPages - 1;
+        m.textPage = mTextPage;
+        plan = planFrame(mLayout, m);
+    }
+    mBoxes = plan.boxes;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    mCanvas.begin(frame);
+    drawPlan(mCanvas, plan.base);
+    mCanvas.flush();
+    blitThumbnail();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    mCanvas.begin(frame);
+    drawPlan(mCanvas, plan.top);
+    mCanvas.flush();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+InspectorModel Session::model() const {
+    glm::ivec2 scene(mLayout.scene.size());
+    const std::string& chart = mLesson.steps[static_cast<size_t>(mStep)].chart;
     InspectorModel m;
     m.title = mLesson.title;
     for (const LessonStep& s : mLesson.steps) m.stepTitles.push_back(s.title);
@@ -409,16 +447,10 @@ void Session::compose() {
     m.presentation = mPresentation;
     m.help = mHelp;
     m.showScene = chart.empty();
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    mCanvas.begin(frame);
-    drawInspector(mCanvas, mLayout, m);
-    mCanvas.flush();
-    blitThumbnail();
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    mCanvas.begin(frame);
-    drawInspectorTop(mCanvas, mLayout, m);
-    mCanvas.flush();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    m.grid = mGrid;
+    m.textPage = mTextPage;
+    m.highlightFetch = mLesson.steps[static_cast<size_t>(mStep)].highlightFetch - 1;
+    return m;
 }
 
 std::vector<uint8_t> Session::readFrame() const {
@@ -428,26 +460,26 @@ std::vector<uint8_t> Session::readFrame() const {
 
 std::string Session::stepJson() const {
     const LessonSettings& s = mSettings;
-    std::string out = "{\"lesson\":" + jsonQuote(mLesson.name) +
-                      ",\"title\":" + jsonQuote(mLesson.title) +
-                      ",\"step\":" + std::to_string(mStep + 1) +
-                      ",\"step_title\":" +
-                      jsonQuote(mLesson.steps.empty() ? "" : mLesson.steps[mStep].title) +
-                      ",\"text\":" + jsonQuote(stepText()) +
-                      ",\"pixel\":[" + std::to_string(mPixel.x) + "," + std::to_string(mPixel.y) +
-                      "],\"scene_size\":[" + std::to_string(static_cast<int>(mLayout.scene.w)) +
-                      "," + std::to_string(static_cast<int>(mLayout.scene.h)) + "]" +
-                      ",\"settings\":{\"method\":" +
-                      jsonQuote(std::string(methodInfo(s.method).name)) +
-                      ",\"kernel\":" + std::to_string(s.kernel) +
-                      ",\"radius\":" + formatNumber(s.radius) +
-                      ",\"rotate\":" + (s.rotate ? "true" : "false") +
-                      ",\"bias\":" + jsonQuote(s.bias) +
-                      ",\"constant_bias\":" + formatNumber(s.constantBias) +
-                      ",\"cull\":" + jsonQuote(s.cull) +
-                      ",\"map_size\":" + std::to_string(s.mapSize) +
-                      ",\"depth_format\":" + jsonQuote(s.depthFormat) + "}" +
-                      ",\"trace\":" + (mTrace ? traceToJson(*mTrace) : std::string("null")) + "}";
+    std::string out =
+        "{\"lesson\":" + jsonQuote(mLesson.name) + ",\"title\":" + jsonQuote(mLesson.title) +
+        ",\"step\":" + std::to_string(mStep + 1) +
+        ",\"step_title\":" + jsonQuote(mLesson.steps.empty() ? "" : mLesson.steps[mStep].title) +
+        ",\"text\":" + jsonQuote(stepText()) + ",\"pixel\":[" + std::to_string(mPixel.x) + "," +
+        std::to_string(mPixel.y) + "],\"scene_size\":[" +
+        std::to_string(static_cast<int>(mLayout.scene.w)) + "," +
+        std::to_string(static_cast<int>(mLayout.scene.h)) + "]" +
+        ",\"settings\":{\"method\":" + jsonQuote(std::string(methodInfo(s.method).name)) +
+        ",\"kernel\":" + std::to_string(s.kernel) + ",\"radius\":" + formatNumber(s.radius) +
+        ",\"rotate\":" + (s.rotate ? "true" : "false") + ",\"bias\":" + jsonQuote(s.bias) +
+        ",\"constant_bias\":" + formatNumber(s.constantBias) + ",\"cull\":" + jsonQuote(s.cull) +
+        ",\"map_size\":" + std::to_string(s.mapSize) +
+        ",\"depth_format\":" + jsonQuote(s.depthFormat) + "}" +
+        ",\"trace\":" + (mTrace ? traceToJson(*mTrace) : std::string("null")) +
+        ",\"frame_size\":[" + std::to_string(mLayout.frameSize.x) + "," +
+        std::to_string(mLayout.frameSize.y) + "]" +
+        ",\"presentation\":" + (mPresentation ? "true" : "false") +
+        ",\"text_page\":" + std::to_string(mTextPage + 1) +
+        ",\"text_pages\":" + std::to_string(mTextPages) + ",\"layout\":" + layoutJson(mBoxes) + "}";
     return out;
 }
 

@@ -4,13 +4,14 @@
 // writes it to a PNG. Same code, same pixels.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+
+#include <glm/glm.hpp>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
@@ -42,7 +43,7 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
 constexpr glm::ivec2 MIN_SESSION_SIZE{320, 180};
 
 class Session {
-public:
+  public:
     // Needs a current OpenGL 4.5 context that outlives the session.
     Session(glm::ivec2 frameSize, bool presentation);
 
@@ -69,6 +70,17 @@ public:
     void setPresentation(bool on);
     bool help() const { return mHelp; }
     void setHelp(bool on);
+    // The texel grid drawn on the scene (G): starts from the lesson step's `grid` setting.
+    bool grid() const { return mGrid; }
+    void setGrid(bool on) { mGrid = on; }
+    // Pages of the current step's text at this frame size (the last compose()'s count) and the
+    // page shown. nextPage()/previousPage() move within the step's pages and return false at
+    // its ends (then the viewer moves to the next or previous step).
+    int textPages() const { return mTextPages; }
+    int textPage() const { return mTextPage; }
+    void setTextPage(int page) { mTextPage = std::max(0, page); }
+    bool nextPage();
+    bool previousPage();
     // The frame time the status line shows; negative: none (exports, screenshots).
     void setFrameTimeMs(double ms);
 
@@ -82,10 +94,15 @@ public:
     const std::optional<Trace>& trace() const { return mTrace; }
     // The current step's text with its placeholders filled from the trace.
     std::string stepText() const;
-    // The step as JSON: lesson, step, title, text, pixel, settings, and the trace object.
+    // The step as JSON: lesson, step, title, text, pixel, settings, the trace object, and the
+    // layout of the last composed frame (every box drawn: inspector.h LayoutBox).
     std::string stepJson() const;
+    // The boxes of the last composed frame.
+    const std::vector<LayoutBox>& layoutBoxes() const { return mBoxes; }
+    // The model the last compose() drew (for layout checks at other sizes without rendering).
+    InspectorModel model() const;
 
-private:
+  private:
     void renderScene();
     void traceAtPixel();
     void blitThumbnail();
@@ -98,6 +115,10 @@ private:
     glm::ivec2 mPixel{0, 0};
     bool mPresentation = false;
     bool mHelp = false;
+    bool mGrid = true;
+    int mTextPage = 0;
+    int mTextPages = 1;
+    std::vector<LayoutBox> mBoxes;
     double mFrameTimeMs = -1.0;
     InspectorLayout mLayout;
 

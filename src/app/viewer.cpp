@@ -26,8 +26,8 @@ namespace pcf {
 
 namespace {
 
-// A free name for frames exported with E: DIR/LESSON-STEP.png, then -2, -3 ... (never
-// overwriting).
+// A free name for frames exported with E: DIR/LESSON-stepNN.png, then -take2, -take3 ... (never
+// overwriting; a bare "-2" after the step number read as a range of steps).
 std::string freeStem(const std::string& dir, const std::string& base) {
     std::error_code ec;
     std::string stem = (std::filesystem::path(dir) / base).string();
@@ -36,7 +36,7 @@ std::string freeStem(const std::string& dir, const std::string& base) {
                std::filesystem::file_type::not_found;
     };
     for (int k = 2; taken(stem + ".png") || taken(stem + ".json"); ++k) {
-        stem = (std::filesystem::path(dir) / (base + "-" + std::to_string(k))).string();
+        stem = (std::filesystem::path(dir) / (base + "-take" + std::to_string(k))).string();
     }
     return stem;
 }
@@ -60,16 +60,17 @@ public:
         glm::ivec2 px = mSession.pixel();
         switch (k.key) {
             case GLFW_KEY_ESCAPE: mQuit = true; break;
-            case GLFW_KEY_SPACE: mSession.goToStep(mSession.step() + 1); break;
+            case GLFW_KEY_SPACE: forward(); break;
             case GLFW_KEY_RIGHT:
                 if (shift) mSession.setPixel(px + glm::ivec2(1, 0));
-                else mSession.goToStep(mSession.step() + 1);
+                else forward();
                 break;
             case GLFW_KEY_LEFT:
                 if (shift) mSession.setPixel(px - glm::ivec2(1, 0));
-                else mSession.goToStep(mSession.step() - 1);
+                else back();
                 break;
-            case GLFW_KEY_BACKSPACE: mSession.goToStep(mSession.step() - 1); break;
+            case GLFW_KEY_BACKSPACE: back(); break;
+            case GLFW_KEY_G: mSession.setGrid(!mSession.grid()); break;
             case GLFW_KEY_UP: mSession.setPixel(px - glm::ivec2(0, 1)); break;
             case GLFW_KEY_DOWN: mSession.setPixel(px + glm::ivec2(0, 1)); break;
             case GLFW_KEY_HOME: mSession.goToStep(0); break;
@@ -146,8 +147,9 @@ public:
     // goes on; nothing half-written stays.
     void exportFrame() {
         std::string dir = "pcfscope-frames";
-        std::string stem = freeStem(dir, mSession.lesson().name + "-" +
-                                             std::to_string(mSession.step() + 1));
+        std::string base = frameStem(mSession.lesson().name, mSession.step() + 1);
+        if (mSession.textPage() > 0) base += "-page" + std::to_string(mSession.textPage() + 1);
+        std::string stem = freeStem(dir, base);
         try {
             OutputFiles outputs(false);
             outputs.add("E", stem + ".png");
@@ -164,6 +166,16 @@ public:
     }
 
 private:
+    // Space/Right: the next page of a step's text that pages, then the next step.
+    void forward() {
+        if (!mSession.nextPage()) mSession.goToStep(mSession.step() + 1);
+    }
+    void back() {
+        if (mSession.previousPage()) return;
+        int before = mSession.step();
+        mSession.goToStep(before - 1);
+    }
+
     void nextLesson(int delta) {
         if (mLessons.empty()) return;
         int n = static_cast<int>(mLessons.size());
@@ -329,6 +341,14 @@ int runViewer(const ViewerOptions& o) {
         return 0;
     }
     if (scripted) {
+        // Keys such as F change the window: let it settle, then compose at its size.
+        for (int k = 0; k < 10; ++k) {
+            glfwPollEvents();
+            if (window->framebufferSize() != session.frameSize()) break;
+            glfwWaitEventsTimeout(0.02);
+        }
+        glfwPollEvents();
+        session.setFrameSize(window->framebufferSize());
         session.compose();
         glm::ivec2 size = session.frameSize();
         writePngRgba8(o.screenshot, size.x, size.y, session.readFrame());

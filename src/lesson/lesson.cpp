@@ -27,7 +27,7 @@ namespace {
 constexpr std::string_view SETTING_KEYS[] = {
     "method",    "kernel",        "radius",     "rotate", "bias",     "constant_bias", "slope_bias",
     "slope_max", "normal_offset", "soft_scale", "cull",   "map_size", "depth_format",  "pixel",
-    "precision", "weights",       "sigma"};
+    "precision", "weights",       "sigma",      "grid"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));
@@ -125,7 +125,7 @@ class LessonParser {
         for (size_t i = 0; i < steps->size(); ++i) {
             const toml::table& table = *steps->get(i)->as_table();
             std::string what = "step " + std::to_string(i + 1);
-            checkKeys(table, what, {"title", "text", "chart"});
+            checkKeys(table, what, {"title", "text", "chart", "highlight"});
             applySettings(table, what, state, lines);
             LessonStep step;
             step.line = lineOf(table);
@@ -142,11 +142,21 @@ class LessonParser {
                     std::filesystem::path(mSource).parent_path() / chart.substr(0, hash);
                 std::error_code ec;
                 if (!std::filesystem::is_regular_file(p, ec)) {
-                    fail(*table.get("chart"), what + " chart '" + chart + "' not found (looked at " +
-                                                  p.string() + ")");
+                    fail(*table.get("chart"),
+                         what + " chart '" + chart + "' not found (looked at " + p.string() + ")");
                 }
                 step.chart = p.string() + view;
                 step.chartLine = lineOf(*table.get("chart"));
+            }
+            if (const toml::node* h = table.get("highlight")) {
+                const auto* v = h->as_integer();
+                if (!v || v->get() < 1 || v->get() > 64) {
+                    fail(*h, what +
+                                 " highlight must be a fetch number 1..64 (the instruction the "
+                                 "text talks about), got " +
+                                 typeName(*h));
+                }
+                step.highlightFetch = static_cast<int>(v->get());
             }
             step.settings = state;
             checkState(table, what, state, lines);
@@ -318,6 +328,11 @@ class LessonParser {
             const auto* b = n->as_boolean();
             if (!b) fail(*n, name("rotate") + " must be true or false, got " + typeName(*n));
             s.rotate = b->get();
+        }
+        if (const toml::node* n = table.get("grid")) {
+            const auto* b = n->as_boolean();
+            if (!b) fail(*n, name("grid") + " must be true or false, got " + typeName(*n));
+            s.grid = b->get();
         }
         if (const toml::node* n = table.get("bias")) {
             std::string bias = string(*n, name("bias"));

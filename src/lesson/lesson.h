@@ -23,6 +23,9 @@
 //   cull          = "back"            faces culled in the shadow pass: "back", "front", "none"
 //   map_size      = 256               the shadow map is map_size^2 texels, 4..4096, default 1024
 //   depth_format  = "32f"             the shadow map's depth format: "16", "24" or "32f"
+//   grid          = true              the shadow map's texel grid drawn on the receiver around
+//                                     the picked pixel (G toggles it), default true; off for
+//                                     steps where its lines would hide what they show
 //   pixel         = [612, 388]        the picked pixel in the 1280 x 720 reference frame,
 //                                     origin top-left, y down (see scalePixel), default the
 //                                     centre [640, 360]
@@ -33,7 +36,12 @@
 //                                     step's trace (lesson_text.h lists them). Newlines are
 //                                     kept (line and paragraph breaks); end a source line with
 //                                     a backslash to run on into the next (TOML's
-//                                     line-ending backslash)
+//                                     line-ending backslash). A line that starts with two
+//                                     spaces is preformatted: drawn in monospace with its
+//                                     spaces kept; consecutive such lines whose cells are
+//                                     separated by two or more spaces are aligned as a table
+//                                     (overlay/inspector.cpp alignTables). A lone operator
+//                                     ("1 - g") never breaks across lines
 //   method = "hw2x2"                  any [settings] key: it changes the state from this step
 //                                     on; the steps after it inherit it
 //
@@ -91,6 +99,7 @@ struct LessonSettings {
     int weights = 0;                  // PCF_WEIGHTS_* (key `weights`)
     float sigma = 1.0f;               // gaussian weights, texels (key `sigma`)
     glm::ivec2 pixel{640, 360};       // in the 1280 x 720 reference frame, origin top-left, y down
+    bool grid = true;                 // the texel grid overlay on the scene
 
     // The constant depth every mode but none subtracts from the receiver's depth (0 for none).
     float depthBias() const;
@@ -117,6 +126,9 @@ struct LessonStep {
     // #shimmer), kept in `chart` after the resolved path.
     std::string chart;
     int chartLine = 0;  // the line of the `chart` key
+    // `highlight = 1`: the fetch instruction (1-based, in issue order) this step's text talks
+    // about, drawn in the highlight colour in the inspector; 0: none. Not inherited.
+    int highlightFetch = 0;
 };
 
 // What a lesson may hold; more is refused with one line naming the limit. The lessons that ship

@@ -1,6 +1,7 @@
 #include "lesson/lesson_text.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -94,6 +95,9 @@ const std::vector<Simple>& simpleNames() {
          [](const Trace& t, const StepContext&) { return number(t.visibilityExact); }},
         {"visibility_hw8",
          [](const Trace& t, const StepContext&) { return number(t.visibilityHw8); }},
+        // The same result counted the other way (1 = in shadow), as some articles do.
+        {"1-visibility",
+         [](const Trace& t, const StepContext&) { return number(1.0f - t.visibility); }},
         {"shadow", [](const Trace& t, const StepContext&) { return number(1.0f - t.visibility); }},
         {"method",
          [](const Trace& t, const StepContext&) {
@@ -406,6 +410,46 @@ std::string fillText(std::string_view text, const Trace& trace, const StepContex
             return std::nullopt;
         });
     if (problem) throw std::invalid_argument(problem->problem);
+    return singularAfterOne(out);
+}
+
+std::string singularAfterOne(std::string text) {
+    // Counts are placeholders, so the words after them were written for many: "{fetches}
+    // lookups" must read "1 lookup" when a key makes it one. Only a whole "1" (not 0.1, 21).
+    static const std::pair<std::string_view, std::string_view> PLURALS[] = {
+        {"hardware taps", "hardware tap"},
+        {"texel reads", "texel read"},
+        {"gather instructions", "gather instruction"},
+        {"lookups", "lookup"},
+        {"gathers", "gather"},
+        {"taps", "tap"},
+        {"reads", "read"},
+        {"texels", "texel"},
+        {"fetches", "fetch"},
+        {"points", "point"},
+        {"samples", "sample"}};
+    std::string out;
+    out.reserve(text.size());
+    for (size_t i = 0; i < text.size(); ++i) {
+        out += text[i];
+        bool wholeOne =
+            text[i] == '1' &&
+            (i == 0 || std::string_view(" (\n").find(text[i - 1]) != std::string_view::npos) &&
+            i + 1 < text.size() && text[i + 1] == ' ';
+        if (!wholeOne) continue;
+        std::string_view rest = std::string_view(text).substr(i + 2);
+        for (const auto& [plural, singular] : PLURALS) {
+            bool wordEnds = rest.size() == plural.size() ||
+                            (rest.size() > plural.size() &&
+                             !std::isalnum(static_cast<unsigned char>(rest[plural.size()])));
+            if (rest.starts_with(plural) && wordEnds) {
+                out += ' ';
+                out += singular;
+                i += 1 + plural.size();
+                break;
+            }
+        }
+    }
     return out;
 }
 

@@ -102,4 +102,8 @@ std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int t
 // parsed, so that never happens to them).
 std::string fillText(std::string_view text, const Trace& trace, const StepContext& ctx);
 
+// "1 lookups" -> "1 lookup" (and taps, hardware taps, gathers, reads, texels, texel reads,
+// fetches, points, samples): the words after a count were written for many. fillText applies it.
+std::string singularAfterOne(std::string text);
+
 }  // namespace pcf

@@ -6,11 +6,11 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "kernel/shadow_map.h"
 #include "kernel/trace.h"
@@ -21,48 +21,96 @@
 namespace pcf {
 
 // Where things go in a frame of a given size. The scene keeps 16:9 (the frame lessons pick their
-// pixels in), top-left; the step text sits under it; the inspector fills the right.
+// pixels in), top-left; the step text sits under it; the inspector fills the right. Presentation
+// mode gives the scene less of the width so that the step text and the cells can be large.
+// Frames much wider than 16:9 put the step panel beside the scene instead of under it, so no
+// panel is left a sliver (or a large empty area).
 struct InspectorLayout {
     glm::ivec2 frameSize{0, 0};
-    Rect scene;      // the rendered scene, 16:9, whole pixels
-    Rect steps;      // lesson title, step list and the current step's text
-    Rect inspector;  // the neighbourhood, the formula, the thumbnail
-    Rect status;     // one line along the bottom
+    Rect scene;          // the rendered scene, 16:9, whole pixels
+    Rect steps;          // lesson title, step list and the current step's text
+    Rect inspector;      // the neighbourhood, the formula, the thumbnail
+    Rect status;         // one line along the bottom
+    Rect thumbnail;      // the map's thumbnail (inside steps); empty: none (presentation)
     float scale = 1.0f;  // 1 at 1600 x 900; fonts and lines scale with it
+    bool presentation = false;
 };
 InspectorLayout inspectorLayout(glm::ivec2 frameSize, bool presentation);
+
+// The type sizes of a frame, in pixels. Every text is drawn at its size or stepped down towards
+// its floor, never below; presentation floors are the projector's (step text 22 px, numbers
+// 18 px at any frame size).
+struct TypeSizes {
+    float head = 20, body = 15, item = 13, number = 14, bit = 30, label = 12, status = 14;
+    float bodyFloor = 12, itemFloor = 12, numberFloor = 12, labelFloor = 11;
+};
+TypeSizes typeSizes(const InspectorLayout& layout);
+
+// Every box the frame draws, as the layout placed it (before drawing): what the JSON sidecar's
+// `layout` lists and what the layout tests check. Rects are pixels from the frame's top left.
+enum class BoxKind { Panel, Text, Number, Label, Mark };
+const char* boxKindName(BoxKind kind);
+struct LayoutBox {
+    BoxKind kind = BoxKind::Text;
+    Rect rect;
+    std::string panel;       // "scene", "steps", "inspector", "status"
+    std::string role;        // what it is: "step-text", "cell-depth", "lookup-point" ...
+    float fontPx = 0.0f;     // text, numbers and labels: the pixel size drawn
+    bool shortened = false;  // the text did not fit whole (elided, or paged: see the "more" mark)
+};
 
 // Everything the frame shows; the caller fills it from the lesson, the renderer and the trace.
 struct InspectorModel {
     std::string title;                    // lesson title (or "pcfscope")
     std::vector<std::string> stepTitles;  // all steps, in order
     int currentStep = 0;
-    std::string stepText;                 // the current step's text, placeholders filled
-    glm::ivec2 pixel{0, 0};               // picked pixel in scene coordinates (top-left origin)
-    std::optional<Trace> trace;           // the picked pixel's lookup; none off the receivers
-    const ShadowMap* map = nullptr;       // for the thumbnail
+    std::string stepText;            // the current step's text, placeholders filled
+    glm::ivec2 pixel{0, 0};          // picked pixel in scene coordinates (top-left origin)
+    std::optional<Trace> trace;      // the picked pixel's lookup; none off the receivers
+    const ShadowMap* map = nullptr;  // for the thumbnail
     // A region of the scene's light-space target (u, v, ref, mask per pixel, rows top-down)
     // around the pixel, for the texel grid drawn on the receiver. May be null.
     const std::vector<float>* lightSpace = nullptr;
-    glm::ivec2 lightSpaceOrigin{0, 0};    // the region's top-left pixel in the scene
-    glm::ivec2 lightSpaceSize{0, 0};      // the region's size
-    glm::ivec2 sceneSize{0, 0};           // size of the rendered scene (== layout.scene size)
-    std::string status;                   // method, kernel, bias, map, frame time
-    bool presentation = false;            // large type, thick lines, high contrast
-    bool help = false;                    // the key list over everything
-    bool showScene = true;                // false: a chart fills the scene's place (no overlay)
+    glm::ivec2 lightSpaceOrigin{0, 0};  // the region's top-left pixel in the scene
+    glm::ivec2 lightSpaceSize{0, 0};    // the region's size
+    glm::ivec2 sceneSize{0, 0};         // size of the rendered scene (== layout.scene size)
+    std::string status;                 // method, kernel, bias, map, frame time
+    bool presentation = false;          // large type, thick lines, high contrast
+    bool help = false;                  // the key list over everything
+    bool showScene = true;              // false: a chart fills the scene's place (no overlay)
+    bool grid = true;                   // the texel grid on the receiver (G, lesson `grid`)
+    int textPage = 0;                   // the page of the step text shown (when it pages)
+    int highlightFetch = -1;            // the fetch (0-based) the step talks about; -1: none
 };
+
+// The frame measured and placed, nothing drawn yet: a pure function of the layout and the model
+// (fonts are measured with FreeType; no GL). Drawing replays `base` (under the map thumbnail) and
+// `top` (over it).
+struct FramePlan {
+    std::vector<LayoutBox> boxes;
+    std::vector<std::function<void(Canvas&)>> base;
+    std::vector<std::function<void(Canvas&)>> top;
+    int textPages = 1;       // pages of the current step's text at this size
+    bool gridShown = false;  // the texel grid was drawn on the scene (not hidden or off)
+};
+FramePlan planFrame(const InspectorLayout& layout, const InspectorModel& model);
+void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& ops);
+// The plan's boxes as a JSON array: [{"kind","panel","role","rect":[x,y,w,h],"font_px",
+// "shortened"}...].
+std::string layoutJson(const std::vector<LayoutBox>& boxes);
 
 // A frame is drawn in layers: the panels' backgrounds (clearInspectorPanels) and the scene's
 // pixels blitted into layout.scene; then
 // drawInspector (everything but the map thumbnail's pixels), flushed; then thumbnailImage blitted
 // into thumbnailRect; then drawInspectorTop (the thumbnail's frame and box, the help), flushed.
+// Both plan the frame (planFrame) and replay their half of it.
 void drawInspector(Canvas& canvas, const InspectorLayout& layout, const InspectorModel& model);
 void drawInspectorTop(Canvas& canvas, const InspectorLayout& layout, const InspectorModel& model);
 void clearInspectorPanels(GLuint framebuffer, const InspectorLayout& layout);
 
-// The texels the neighbourhood view shows: the weights' bounding box grown to hold the 2x2 at
-// base and the lookup point, at least 2 x 2.
+// The texels the neighbourhood holds: the weights' bounding box grown to hold the 2x2 at base and
+// the lookup point, at least 2 x 2. The view may show a window of it (neighbourhoodView) when
+// its cells would be too small for their numbers.
 struct Neighbourhood {
     glm::ivec2 origin{0, 0};
     glm::ivec2 size{2, 2};
@@ -70,17 +118,21 @@ struct Neighbourhood {
 Neighbourhood neighbourhoodOf(const Trace& trace);
 
 // The light-space region the scene overlay reads around `pixel` (clipped by the caller).
-constexpr int gridRadius(glm::ivec2 sceneSize) { return sceneSize.y / 7 > 24 ? sceneSize.y / 7 : 24; }
+constexpr int gridRadius(glm::ivec2 sceneSize) {
+    return sceneSize.y / 7 > 24 ? sceneSize.y / 7 : 24;
+}
 
 // Where the shadow-map thumbnail goes (square, whole pixels), and its pixels: the caller blits
 // thumbnailImage(map, side) there before drawInspector draws the frame and the box on it.
 Rect thumbnailRect(const InspectorLayout& layout, bool presentation);
 std::vector<uint8_t> thumbnailImage(const ShadowMap& map, int side);  // RGBA8, rows top-down
 
-// Where the neighbourhood view of this trace sits in the inspector panel.
+// The texels the view shows (a window of neighbourhoodOf around the lookup point when the whole
+// would make cells too small for numbers of the frame's size), and where it sits in the panel.
+Neighbourhood neighbourhoodView(const InspectorLayout& layout, const Trace& trace);
 Rect neighbourhoodArea(const InspectorLayout& layout, const Trace& trace, bool presentation);
 
-// The rect of texel (i, j) in the neighbourhood view inside `area` (rows j down, as stored).
+// The rect of texel (i, j) in the view of `n` inside `area` (rows j down, as stored).
 Rect texelCellRect(const Neighbourhood& n, const Rect& area, glm::ivec2 texel);
 
 // The key list the help overlay shows (also `pcfscope view --help`'s epilogue).

@@ -67,46 +67,123 @@ float lineWidth(GlyphAtlas& atlas, std::string_view utf8) {
     return pen;
 }
 
+// The pen advance of a run of text and the glyphs at its two ends, so that the width of two runs
+// joined is known without measuring the joined string again: width(a + b) = a.width +
+// kerning(a.last, b.first) + b.width, exactly what lineWidth would return (advances and kerning
+// are multiples of 1/64 px, so the sums are exact in float). This keeps wrapping linear in the
+// text's length: re-measuring the growing line for every word made a long title quadratic.
+struct Run {
+    float width = 0.0f;
+    uint32_t first = 0;  // glyph index of the first glyph, 0 for an empty run
+    uint32_t last = 0;
+};
+
+Run measureRun(GlyphAtlas& atlas, std::string_view utf8) {
+    Run r;
+    uint32_t previous = 0;
+    for (size_t i = 0; i < utf8.size();) {
+        char32_t cp = decodeOne(utf8, i);
+        if (cp == U'\r') continue;
+        Glyph g = atlas.glyph(drawable(cp));
+        r.width += atlas.kerning(previous, g.glyphIndex) + g.advance;
+        if (previous == 0 && r.first == 0) r.first = g.glyphIndex;
+        previous = g.glyphIndex;
+    }
+    r.last = previous;
+    return r;
+}
+
+Run join(GlyphAtlas& atlas, const Run& a, const Run& b) {
+    if (a.first == 0 && a.width == 0.0f) return b;
+    if (b.first == 0 && b.width == 0.0f) return a;
+    return {a.width + atlas.kerning(a.last, b.first) + b.width, a.first, b.last};
+}
+
 // Splits a word too wide for a line between characters; appends all pieces but the last to
-// `lines` and returns the last (it may share its line with the next word).
+// `lines` and returns the last (it may share its line with the next word) with its run.
 std::string splitLongWord(GlyphAtlas& atlas, std::string_view word, float maxWidth,
-                          std::vector<std::string>& lines) {
+                          std::vector<std::string>& lines, Run& pieceRun) {
     std::string piece;
+    pieceRun = {};
     for (size_t i = 0; i < word.size();) {
         size_t start = i;
         decodeOne(word, i);
         std::string_view character = word.substr(start, i - start);
-        std::string candidate = piece + std::string(character);
-        if (!piece.empty() && lineWidth(atlas, candidate) > maxWidth) {
+        Run c = measureRun(atlas, character);
+        Run candidate = join(atlas, pieceRun, c);
+        if (!piece.empty() && candidate.width > maxWidth) {
             lines.push_back(piece);
             piece = std::string(character);
+            pieceRun = c;
         } else {
-            piece = std::move(candidate);
+            piece += character;
+            pieceRun = candidate;
         }
     }
     return piece;
 }
 
+// A word that is a lone operator ("1 - g", "a = b") is kept on one line with its neighbours, so
+// a formula in prose does not break at its operator.
+bool isOperator(std::string_view word) {
+    return word == "-" || word == "+" || word == "=" || word == "*" || word == "/" || word == "x" ||
+           word == "<=" || word == ">=" || word == "<" || word == ">";
+}
+
 void wrapParagraph(GlyphAtlas& atlas, std::string_view paragraph, float maxWidth,
                    std::vector<std::string>& lines) {
+    // Words are split at ASCII spaces and tabs (byte-safe in UTF-8); operators glue their
+    // neighbours into one unit.
+    std::vector<std::string> units;
+    {
+        std::vector<std::string_view> words;
+        size_t i = 0;
+        while (i < paragraph.size()) {
+            while (i < paragraph.size() && (paragraph[i] == ' ' || paragraph[i] == '\t')) ++i;
+            size_t end = i;
+            while (end < paragraph.size() && paragraph[end] != ' ' && paragraph[end] != '\t') {
+                ++end;
+            }
+            if (end == i) break;
+            words.push_back(paragraph.substr(i, end - i));
+            i = end;
+        }
+        // An operator takes the word after it, and the word before it when that word stands
+        // alone ("1 - g" is one unit; a long sum "a + b + c" still breaks before a "+").
+        bool glueNext = false;
+        bool lastAlone = false;
+        for (std::string_view w : words) {
+            bool op = isOperator(w);
+            bool glue = !units.empty() && (glueNext || (op && lastAlone));
+            lastAlone = !glue;
+            if (glue) {
+                units.back() += " ";
+                units.back() += w;
+            } else {
+                units.emplace_back(w);
+            }
+            glueNext = op;
+        }
+    }
+    const Run space = measureRun(atlas, " ");
     std::string line;
-    size_t i = 0;
-    while (i < paragraph.size()) {
-        // Words are split at ASCII spaces and tabs: byte-safe in UTF-8.
-        while (i < paragraph.size() && (paragraph[i] == ' ' || paragraph[i] == '\t')) ++i;
-        size_t end = i;
-        while (end < paragraph.size() && paragraph[end] != ' ' && paragraph[end] != '\t') ++end;
-        if (end == i) break;
-        std::string_view word = paragraph.substr(i, end - i);
-        i = end;
-        std::string candidate = line.empty() ? std::string(word) : line + " " + std::string(word);
-        if (lineWidth(atlas, candidate) <= maxWidth) {
-            line = std::move(candidate);
+    Run lineRun;
+    for (const std::string& word : units) {
+        Run w = measureRun(atlas, word);
+        Run candidate = line.empty() ? w : join(atlas, join(atlas, lineRun, space), w);
+        if (candidate.width <= maxWidth) {
+            if (!line.empty()) line += ' ';
+            line += word;
+            lineRun = candidate;
             continue;
         }
         if (!line.empty()) lines.push_back(std::move(line));
-        line = lineWidth(atlas, word) <= maxWidth ? std::string(word)
-                                                  : splitLongWord(atlas, word, maxWidth, lines);
+        if (w.width <= maxWidth) {
+            line = word;
+            lineRun = w;
+        } else {
+            line = splitLongWord(atlas, word, maxWidth, lines, lineRun);
+        }
     }
     lines.push_back(std::move(line));
 }
@@ -196,16 +273,23 @@ std::vector<std::string> wrapText(FontFace face, float pixelSize, std::string_vi
 std::string elideText(FontFace face, float pixelSize, std::string_view utf8, float maxWidth) {
     GlyphAtlas& atlas = glyphAtlas(face, pixelSize);
     if (lineWidth(atlas, utf8) <= maxWidth) return std::string(utf8);
-    std::string kept(utf8);
-    while (!kept.empty() && lineWidth(atlas, kept + "...") > maxWidth) {
-        // Drop one UTF-8 character: its continuation bytes (10xxxxxx), then its lead byte.
-        while (!kept.empty() && (static_cast<unsigned char>(kept.back()) & 0xC0u) == 0x80u) {
-            kept.pop_back();
-        }
-        if (!kept.empty()) kept.pop_back();
+    // One pass: the prefix grows character by character while prefix + "..." fits (widths
+    // joined as runs, so this is linear in the text's length).
+    const Run dots = measureRun(atlas, "...");
+    Run prefix;
+    size_t kept = 0;
+    for (size_t i = 0; i < utf8.size();) {
+        size_t start = i;
+        decodeOne(utf8, i);
+        Run c = measureRun(atlas, utf8.substr(start, i - start));
+        Run next = join(atlas, prefix, c);
+        if (join(atlas, next, dots).width > maxWidth) break;
+        prefix = next;
+        kept = i;
     }
-    while (!kept.empty() && kept.back() == ' ') kept.pop_back();
-    return kept + "...";
+    std::string out(utf8.substr(0, kept));
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    return out + "...";
 }
 
 }  // namespace pcf

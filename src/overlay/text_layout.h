@@ -47,7 +47,10 @@ FontMetrics fontMetrics(FontFace face, float pixelSize);
 // <= maxWidth; '\n' forces a break (an empty line stays, as a paragraph gap); runs of spaces
 // between words collapse to one. A word wider than maxWidth alone is split between characters,
 // so the width promise holds for every line (one character always goes on a line, even when
-// it alone is wider). Lines carry no leading or trailing spaces.
+// it alone is wider). Lines carry no leading or trailing spaces. A lone operator word ("-", "+",
+// "=", "*", "/", "x", "<=", ...) stays on the line of the word after it, and of the word before
+// it when that word is not already part of such a group: "1 - g" never breaks, and a long sum
+// breaks before a "+". Linear in the text's length (widths of joined runs are added, not re-measured).
 std::vector<std::string> wrapText(FontFace face, float pixelSize, std::string_view utf8,
                                   float maxWidth);
 std::vector<std::string> wrapText(GlyphAtlas& atlas, std::string_view utf8, float maxWidth);

@@ -1,0 +1,348 @@
+// The frame's layout, checked from the boxes it lists (inspector.h: planFrame, LayoutBox): for
+// every step of every lesson, at the sizes a class meets (1024x768, 1280x720, 1600x900,
+// 1920x1080), normal and presentation: no text outside its panel, no label or mark on a number or
+// a text, type at or above its floor. The layout is a pure function of the frame size and the
+// model, so each step is rendered and traced once (EGL, llvmpipe in CI) and laid out at all
+// eight sizes without drawing.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kernel/trace.h"
+#include "lesson/lesson.h"
+#include "lesson/lesson_text.h"
+#include "overlay/inspector.h"
+#include "overlay/text_layout.h"
+#include "render/gl_context.h"
+#include "render/render_settings.h"
+#include "render/scene_renderer.h"
+
+namespace pcf {
+namespace {
+
+constexpr glm::ivec2 SIZES[] = {{1024, 768}, {1280, 720}, {1600, 900}, {1920, 1080}};
+
+RenderSettings renderSettings(const LessonSettings& s, glm::ivec2 frameSize) {
+    RenderSettings r;
+    r.method = s.method;
+    r.kernel = s.kernel;
+    r.radius = s.radius;
+    r.rotatePerPixel = s.rotate;
+    r.mapSize = s.mapSize;
+    r.depthFormat = depthFormatFromName(s.depthFormat).value();
+    r.bias = biasModeFromName(s.bias).value();
+    r.constantBias = s.constantBias;
+    r.shadowCull = cullModeFromName(s.cull).value();
+    r.frameSize = frameSize;
+    return r;
+}
+
+bool isTextual(BoxKind k) {
+    return k == BoxKind::Text || k == BoxKind::Number || k == BoxKind::Label;
+}
+
+// The problems of one plan, as readable lines (empty: none).
+std::vector<std::string> problems(const FramePlan& plan, const InspectorLayout& l) {
+    std::vector<std::string> out;
+    std::map<std::string, Rect> panels;
+    for (const LayoutBox& b : plan.boxes) {
+        if (b.kind == BoxKind::Panel) panels[b.panel] = b.rect;
+    }
+    auto name = [](const LayoutBox& b) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "%s %s/%s [%g %g %g %g] %gpx", boxKindName(b.kind),
+                      b.panel.c_str(), b.role.c_str(), b.rect.x, b.rect.y, b.rect.w, b.rect.h,
+                      b.fontPx);
+        return std::string(buf);
+    };
+    TypeSizes t = typeSizes(l);
+    for (const LayoutBox& b : plan.boxes) {
+        if (b.kind == BoxKind::Panel) continue;
+        const Rect& p = panels.at(b.panel);
+        if (isTextual(b.kind) || b.kind == BoxKind::Mark) {
+            Rect in = b.rect.intersect(p);
+            if (std::abs(in.w - b.rect.w) > 0.5f || std::abs(in.h - b.rect.h) > 0.5f) {
+                out.push_back(name(b) + " runs out of its panel");
+            }
+        }
+        if (isTextual(b.kind)) {
+            float floor = b.kind == BoxKind::Number  ? t.numberFloor
+                          : b.kind == BoxKind::Label ? t.labelFloor
+                                                     : std::min(t.bodyFloor, t.labelFloor);
+            if (b.role == "step-text" || b.role == "step-title") floor = t.bodyFloor;
+            if (b.fontPx + 0.01f < floor) out.push_back(name(b) + " below its floor");
+        }
+    }
+    // Labels and marks never on a number or a text; and no two texts on each other.
+    for (size_t i = 0; i < plan.boxes.size(); ++i) {
+        const LayoutBox& a = plan.boxes[i];
+        if (a.kind == BoxKind::Panel) continue;
+        for (size_t j = 0; j < plan.boxes.size(); ++j) {
+            const LayoutBox& b = plan.boxes[j];
+            if (b.kind != BoxKind::Number && b.kind != BoxKind::Text) continue;
+            bool textOnText = a.kind == BoxKind::Number || a.kind == BoxKind::Text;
+            if (i == j || (textOnText && j < i)) continue;
+            if (!a.rect.intersect(b.rect).empty()) {
+                out.push_back(name(a) + " covers " + name(b));
+            }
+        }
+    }
+    return out;
+}
+
+class Layout : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() { sContext = createHeadlessContext(); }
+    static void TearDownTestSuite() { sContext.reset(); }
+    static std::unique_ptr<GlContext> sContext;
+};
+std::unique_ptr<GlContext> Layout::sContext;
+
+TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveFloors) {
+    auto start = std::chrono::steady_clock::now();
+    int plans = 0;
+    int pagedPresentation = 0;
+    // Rendered once per step in the scene of a 1280x720 frame, the size a projector gets.
+    glm::ivec2 renderScene(inspectorLayout({1280, 720}, false).scene.size());
+    std::vector<std::string> lessons;
+    for (const auto& e : std::filesystem::directory_iterator(PCFSCOPE_SOURCE_DIR "/lessons")) {
+        if (e.path().extension() == ".toml") lessons.push_back(e.path().string());
+    }
+    std::sort(lessons.begin(), lessons.end());
+    ASSERT_GE(lessons.size(), 10u);
+    for (const std::string& path : lessons) {
+        Lesson lesson = parseLessonFile(path);
+        SceneRenderer renderer(lesson.scene);
+        for (size_t k = 0; k < lesson.steps.size(); ++k) {
+            const LessonStep& step = lesson.steps[k];
+            const LessonSettings& s = step.settings;
+            renderer.render(renderSettings(s, renderScene));
+            ShadowMap map = renderer.readShadowMap();
+            glm::ivec2 px = scalePixel(s.pixel, renderScene);
+            std::vector<float> ls = renderer.readLightSpaceRegion(px, {1, 1});
+            InspectorModel m;
+            m.title = lesson.title;
+            for (const LessonStep& st : lesson.steps) m.stepTitles.push_back(st.title);
+            m.currentStep = static_cast<int>(k);
+            m.map = &map;
+            m.showScene = step.chart.empty();
+            m.highlightFetch = step.highlightFetch - 1;
+            m.status =
+                "pcf-gather N=3   bias constant 0.002   cull back   map 1024 32f   scene "
+                "1152x648";
+            if (ls[3] == 1.0f) {
+                m.trace = traceLookup(map, vec2(ls[0], ls[1]), ls[2] + s.depthBias(), ls[2],
+                                      s.pcfParams(px, renderScene));
+                StepContext ctx = makeStepContext(step, renderScene);
+                m.stepText = fillText(step.text, *m.trace, ctx);
+            } else {
+                m.stepText = step.text;
+            }
+            for (glm::ivec2 size : SIZES) {
+                for (bool presentation : {false, true}) {
+                    InspectorLayout l = inspectorLayout(size, presentation);
+                    m.presentation = presentation;
+                    m.sceneSize = glm::ivec2(l.scene.size());
+                    m.pixel = scalePixel(s.pixel, m.sceneSize);
+                    FramePlan plan = planFrame(l, m);
+                    ++plans;
+                    std::string where = lesson.name + " step " + std::to_string(k + 1) + " at " +
+                                        std::to_string(size.x) + "x" + std::to_string(size.y) +
+                                        (presentation ? " presentation" : "");
+                    // Every page of the text, not only the first.
+                    for (int page = 0; page < plan.textPages; ++page) {
+                        FramePlan p = plan;
+                        if (page > 0) {
+                            m.textPage = page;
+                            p = planFrame(l, m);
+                            m.textPage = 0;
+                        }
+                        for (const std::string& problem : problems(p, l)) {
+                            ADD_FAILURE() << where << " page " << page + 1 << ": " << problem;
+                        }
+                    }
+                    if (presentation && plan.textPages > 1) ++pagedPresentation;
+                    // The cells and the step text are there at every size.
+                    bool stepText = false;
+                    int cellNumbers = 0;
+                    for (const LayoutBox& b : plan.boxes) {
+                        stepText |= b.role == "step-text";
+                        cellNumbers += b.role.starts_with("cell-");
+                    }
+                    EXPECT_TRUE(stepText) << where;
+                    if (m.trace) {
+                        EXPECT_GE(cellNumbers, 4) << where;
+                    }
+                }
+            }
+        }
+    }
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("layout: %d plans checked in %.1f s; %d presentation frames page their text\n",
+                plans, seconds, pagedPresentation);
+}
+
+// Presentation type is a projector's at the small sizes: 22 px step text, 18 px numbers.
+TEST_F(Layout, PresentationTypeIsLargeAtProjectorSizes) {
+    for (glm::ivec2 size : {glm::ivec2{1280, 720}, glm::ivec2{1024, 768}}) {
+        TypeSizes t = typeSizes(inspectorLayout(size, true));
+        EXPECT_GE(t.body, 22.0f);
+        EXPECT_GE(t.bodyFloor, 22.0f);
+        EXPECT_GE(t.number, 18.0f);
+        EXPECT_GE(t.numberFloor, 18.0f);
+        TypeSizes normal = typeSizes(inspectorLayout(size, false));
+        EXPECT_GT(t.body, normal.body);
+        EXPECT_GT(t.number, normal.number);
+    }
+}
+
+Trace syntheticTrace() {
+    Trace tr;
+    tr.mapSize = {64, 64};
+    tr.uv = {0.5f, 0.5f};
+    tr.pos.base = {31, 31};
+    tr.pos.frac = {0.5f, 0.5f};
+    tr.params.method = PCF_BILINEAR2X2;
+    for (int j = 0; j < 2; ++j) {
+        for (int i = 0; i < 2; ++i) {
+            tr.taps.push_back({{31 + i, 31 + j}, 0.5f, 0.4f, 1.0f, 0.25f, 0});
+        }
+    }
+    tr.weights.origin = {31, 31};
+    tr.weights.size = {2, 2};
+    tr.weights.values = {0.25f, 0.25f, 0.25f, 0.25f};
+    tr.visibility = 1.0f;
+    return tr;
+}
+
+// Text that cannot fit pages, says so with a "more" mark, and every page stays in its panel.
+TEST_F(Layout, LongStepTextPagesWithAMoreMarkInsteadOfClipping) {
+    InspectorModel m;
+    m.title = "Paging";
+    m.stepTitles = {"One", "Two"};
+    m.trace = syntheticTrace();
+    std::string text;
+    for (int k = 0; k < 120; ++k) text += "Sentence " + std::to_string(k) + " of a long step. ";
+    m.stepText = text;
+    InspectorLayout l = inspectorLayout({1280, 720}, true);
+    m.presentation = true;
+    m.sceneSize = glm::ivec2(l.scene.size());
+    FramePlan plan = planFrame(l, m);
+    ASSERT_GT(plan.textPages, 1);
+    bool more = false;
+    for (const LayoutBox& b : plan.boxes) {
+        more |= b.role == "more";
+        if (b.role == "step-text") {
+            EXPECT_TRUE(b.shortened);
+            EXPECT_GE(b.fontPx, 22.0f);
+        }
+    }
+    EXPECT_TRUE(more);
+    // The last page holds the last sentence's words (nothing is dropped between pages).
+    m.textPage = plan.textPages - 1;
+    FramePlan last = planFrame(l, m);
+    EXPECT_TRUE(problems(last, l).empty());
+    // A short text is one page, not shortened, no mark.
+    m.stepText = "Short.";
+    m.textPage = 0;
+    FramePlan one = planFrame(l, m);
+    EXPECT_EQ(one.textPages, 1);
+    for (const LayoutBox& b : one.boxes) {
+        EXPECT_NE(b.role, "more");
+        if (b.role == "step-text") {
+            EXPECT_FALSE(b.shortened);
+        }
+    }
+}
+
+// Preformatted rows (two leading spaces) keep their columns: cells padded to the widest.
+TEST_F(Layout, TableRowsKeepTheirColumnsInMonospace) {
+    InspectorModel m;
+    m.trace = syntheticTrace();
+    m.stepTitles = {"Table"};
+    m.stepText = "Weights:\n  0.1171   1   0.0678\n  1   0.6333   1\nend";
+    InspectorLayout l = inspectorLayout({1600, 900}, false);
+    m.sceneSize = glm::ivec2(l.scene.size());
+    FramePlan plan = planFrame(l, m);
+    // Draw into a recording canvas is GL; instead check the rows' widths: equal in monospace.
+    // The step-text box is as wide as its widest line; both rows pad to "0.1171   0.6333   ..."
+    // so that the width of the block equals the measured row of the widest cells.
+    float rowW = measureText(FontFace::Mono, typeSizes(l).body, "  0.1171   0.6333   0.0678").x;
+    for (const LayoutBox& b : plan.boxes) {
+        if (b.role == "step-text") {
+            EXPECT_GE(b.rect.w + 0.5f, rowW);
+        }
+    }
+}
+
+// A title of 200,000 characters is laid out in linear time (it once took minutes: wrapping
+// re-measured the growing line for every word).
+TEST_F(Layout, LongTitlesLayOutInLinearTime) {
+    auto timeFor = [](size_t chars) {
+        InspectorModel m;
+        std::string title;
+        while (title.size() < chars) title += "word ";
+        m.title = title;
+        m.stepTitles = {title, "short"};
+        m.stepText = title;
+        m.trace = syntheticTrace();
+        InspectorLayout l = inspectorLayout({1280, 720}, false);
+        m.sceneSize = glm::ivec2(l.scene.size());
+        auto start = std::chrono::steady_clock::now();
+        FramePlan plan = planFrame(l, m);
+        EXPECT_FALSE(plan.boxes.empty());
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    timeFor(1000);  // atlases warm
+    double small = timeFor(50000);
+    double large = timeFor(200000);
+    std::printf("layout of a 50,000-char title %.3f s, 200,000-char %.3f s\n", small, large);
+    EXPECT_LT(large, 5.0);
+    // Linear: 4x the text, well under 16x the time (allow noise on a shared machine).
+    EXPECT_LT(large, 10.0 * small + 0.2);
+}
+
+// The texel grid is drawn where a texel spans several pixels, and hidden (or off) otherwise.
+TEST_F(Layout, GridHiddenWhenTexelsAreSmallOrTurnedOff) {
+    InspectorModel m;
+    m.trace = syntheticTrace();
+    m.stepTitles = {"Grid"};
+    m.stepText = "Grid.";
+    InspectorLayout l = inspectorLayout({1600, 900}, false);
+    m.sceneSize = glm::ivec2(l.scene.size());
+    m.pixel = m.sceneSize / 2;
+    int radius = gridRadius(m.sceneSize) + 1;
+    auto lightSpace = [&](float pixelsPerTexel) {
+        std::vector<float> ls;
+        for (int y = -radius; y <= radius; ++y) {
+            for (int x = -radius; x <= radius; ++x) {
+                ls.push_back(0.5f + x / pixelsPerTexel / 64.0f);
+                ls.push_back(0.5f + y / pixelsPerTexel / 64.0f);
+                ls.push_back(0.4f);
+                ls.push_back(1.0f);
+            }
+        }
+        return ls;
+    };
+    m.lightSpaceOrigin = m.pixel - glm::ivec2(radius);
+    m.lightSpaceSize = glm::ivec2(2 * radius + 1);
+    std::vector<float> big = lightSpace(9.0f);
+    std::vector<float> tiny = lightSpace(1.5f);
+    m.lightSpace = &big;
+    EXPECT_TRUE(planFrame(l, m).gridShown);
+    m.lightSpace = &tiny;
+    EXPECT_FALSE(planFrame(l, m).gridShown);
+    m.lightSpace = &big;
+    m.grid = false;
+    EXPECT_FALSE(planFrame(l, m).gridShown);
+}
+
+}  // namespace
+}  // namespace pcf
