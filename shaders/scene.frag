@@ -22,7 +22,7 @@ uniform float uSlopeBias;             // slope: s in min(b + s * tan(theta), max
 uniform float uSlopeMax;              // slope: max
 uniform float uNormalOffset;          // normal: k, texels
 uniform float uShadowTexelWs;         // world size of one map texel at clip.w = 1
-uniform float uSoftScale;             // soft: the correction scale of seed 001
+uniform float uSoftScale;             // soft: the correction scale of "PCF Shadow Acne 2"
 uniform float uRadius;                // poisson radius in texels
 uniform int uRotatePerPixel;          // poisson: rotate the disk per pixel
 uniform int uWeights;                 // pcf-naive, pcf-gather: PCF_WEIGHTS_*

@@ -147,7 +147,7 @@ TEST(Bias, ReceiverPlaneRemovesTheAcneOfOneRefForAllNeighbours) {
     EXPECT_EQ(acnePlane, 0);
 }
 
-// Seed 001's soft comparison at a scale beyond any depth step is the hard one (away from
+// "PCF Shadow Acne 2"'s soft comparison at a scale beyond any depth step is the hard one (away from
 // depth == ref, where the soft one says 0 and GL_LEQUAL says 1).
 TEST(Bias, SoftComparisonAtHugeScaleEqualsTheHardOne) {
     ShadowMap map = randomMap(23, 17, 7);
@@ -183,8 +183,9 @@ TEST(Bias, SoftComparisonDarkensTexelsJustBeyondTheReceiver) {
     EXPECT_NEAR(soft, 0.5f, 1e-4f);  // depth - ref = 0.001, times 500
 }
 
-// Seed 004's Solution 2: on a sloped surface the interpolated depth follows it, so a receiver
-// on the surface is lit wherever it looks it up; the nearest texel alone shadows half of them.
+// "PCF Shadow Acne", Solution 2: on a sloped surface the interpolated depth follows it, so a
+// receiver on the surface is lit wherever it looks it up; the nearest texel alone shadows half of
+// them.
 TEST(Bias, InterpolatedDepthFollowsAPlanarSurfaceWhereNearestMakesAcne) {
     const int size = 32;
     ShadowMap map(size, size);

@@ -132,10 +132,10 @@ const std::map<std::string, Claims>& lessonClaims() {
            {"near the lit column", [](const Trace& t) { return t.pos.frac.x < 0.3f; }}}}},
         {"03-bilinear-lerp",
          {{bits("1010")},
-          // Close to seed 000's example: one screen pixel moves the point by about 0.09 texel
+          // Close to "What Is PCF"'s example: one screen pixel moves the point by about 0.09 texel
           // here, so frames of other sizes land up to half of that to either side.
           {bits("1010"),
-           {"seed 000: fx near 0.2 gives near 0.8",
+           {"What Is PCF: fx near 0.2 gives near 0.8",
             [](const Trace& t) {
                 return near(t.pos.frac.x, 0.2f, 0.05f) && near(t.visibility, 0.8f, 0.05f);
             }}},

@@ -12,7 +12,7 @@
 namespace pcf {
 namespace {
 
-// Seed 000's worked example on the built-in map: lit texels left, shadowed right, fx = 0.2.
+// "What Is PCF"'s worked example on the built-in map: lit texels left, shadowed right, fx = 0.2.
 Trace exampleTrace(int method, int kernel = 3) {
     return traceLookup(exampleShadowMap(), vec2(0.4625f, 0.3875f), 0.5f, 0.5f,
                        makeParams(method, kernel));

@@ -134,7 +134,7 @@ TEST(Pcf, MergedThreeByThreeWeightsAreTheSeed001TableOverNine) {
         Trace tr = traceLookup(map, uv, 0.5f, 0.5f, makeParams(method, 3));
         float x = tr.pos.frac.x;
         float y = tr.pos.frac.y;
-        // Seed 001's 4 x 4 table is the outer product of these per-axis weights: corners
+        // "PCF Shadow Acne 2"'s 4 x 4 table is the outer product of these per-axis weights: corners
         // (1-x)(1-y) .. xy, edges (1-x), x, (1-y), y, and 1 in the middle four.
         const float ax[4] = {1 - x, 1, 1, x};
         const float ay[4] = {1 - y, 1, 1, y};

@@ -148,7 +148,7 @@ TEST(TextureUnit, FixedPointMapsClampTheReferenceInEveryMethod) {
 
 TEST(TextureUnit, TraceShowsBothFractionsAndBothVisibilities) {
     ShadowMap map = exampleShadowMap();
-    vec2 uv(0.4625f, 0.3875f);  // seed 000's example: fx = 0.2, which 8 bits cannot hold
+    vec2 uv(0.4625f, 0.3875f);  // "What Is PCF"'s example: fx = 0.2, which 8 bits cannot hold
     PcfParams prm = withPrecision(makeParams(PCF_HW2X2), PCF_PRECISION_HW8);
     Trace tr = traceLookup(map, uv, 0.5f, 0.5f, prm);
     EXPECT_TRUE(tr.usesTextureUnit);

@@ -27,7 +27,7 @@ PCF_CONST int PCF_FETCH_LOOKUP = 1;  // a software bilinear lookup: four texelFe
 PCF_CONST int PCF_FETCH_GATHER = 2;  // one textureGather on the comparison sampler
 PCF_CONST int PCF_FETCH_HW = 3;      // one hardware comparison tap (sampler2DShadow, GL_LINEAR)
 
-// The 16-point Poisson disk of seed 003 (unit radius), scaled by the radius in texels.
+// The 16-point Poisson disk of Jimmy 2010 (unit radius), scaled by the radius in texels.
 PCF_CONST_ARRAY(vec2, PCF_POISSON_DISK, 16) PCF_ARRAY_BEGIN(vec2, 16)
     vec2(-0.94201624f, -0.39906216f), vec2(0.94558609f, -0.76890725f),
     vec2(-0.094184101f, -0.92938870f), vec2(0.34495938f, 0.29387760f),
@@ -56,7 +56,7 @@ PCF_ARRAY_END;
 struct PcfParams {
     int method;     // PCF_NEAREST .. PCF_POISSON
     int kernel;     // N: 1..8 for pcf-naive, pcf-gather and pcf-hw; 3, 5 or 7 for tent
-    float radius;   // poisson: disk radius in texels (seed 003 uses 1)
+    float radius;   // poisson: disk radius in texels (Jimmy 2010 uses 1)
     vec2 rotation;  // poisson: (cos, sin) of the disk's rotation; (1, 0) for none
     int weights;    // pcf-naive, pcf-gather: PCF_WEIGHTS_BOX (0), _BINOMIAL or _GAUSSIAN
     float sigma;    // gaussian weights: standard deviation in texels
@@ -137,7 +137,8 @@ PCF_FN float pcfCompare(float depth, float ref) { return ref <= depth ? 1.0f : 0
 // The per-lookup part of every bias (constant, slope, normal offset) is already in ref when the
 // kernel is called: the scene shader (shaders/scene.frag) computes it where the normal and the
 // light are known. What the kernel itself must do per tap lives here: the receiver plane's ref
-// at each tap, seed 001's soft comparison, and seed 004's comparison against interpolated depth.
+// at each tap, the soft comparison of "PCF Shadow Acne 2", and the comparison against
+// interpolated depth of "PCF Shadow Acne".
 PCF_CONST int PCF_BIAS_NONE = 0;            // ref = z
 PCF_CONST int PCF_BIAS_CONSTANT = 1;        // ref = z - b
 PCF_CONST int PCF_BIAS_SLOPE = 2;           // ref = z - min(b + s * tan(theta), max)
@@ -151,7 +152,7 @@ PCF_CONST int PCF_BIAS_COUNT = 7;
 struct PcfBias {
     int mode;         // PCF_BIAS_NONE .. PCF_BIAS_INTERPOLATED
     vec2 dzduv;       // receiver-plane: d(depth)/d(u, v) of the receiver, light depth per uv unit
-    float softScale;  // soft: the correction scale of seed 001 (Z_CMP_CORRECTION_SCALE), 1/depth
+    float softScale;  // soft: "PCF Shadow Acne 2"'s Z_CMP_CORRECTION_SCALE, 1/depth
 };
 
 // A lookup's comparison depth with what varies it per tap.
@@ -183,7 +184,7 @@ PCF_FN float pcfRefAt(PcfRef r, vec2 tapUv) {
     return tapRef;
 }
 
-// Seed 001's soft comparison ("PCF Shadow Acne" part 2): a tap counts as lit only when the
+// The soft comparison of "PCF Shadow Acne 2": a tap counts as lit only when the
 // stored depth is strictly beyond ref, and then only in proportion to how far, saturated:
 //   lit = (depth > ref) * saturate((depth - ref) * scale)         (scale in 1/depth units)
 // so a texel just behind the receiver's own surface fades in instead of flipping. As scale
@@ -265,7 +266,7 @@ PCF_FN vec4 pcfBilinearWeights(vec2 f) {
     return vec4((1.0f - f.x) * (1.0f - f.y), f.x * (1.0f - f.y), (1.0f - f.x) * f.y, f.x * f.y);
 }
 
-// Seed 000: compare the four texels around texel position p, then lerp the four bits by the
+// "What Is PCF": compare the four texels around texel position p, then lerp the four bits by the
 // sub-texel position: lerp(lerp(b00, b10, fx), lerp(b01, b11, fx), fy). This is what NVIDIA's
 // hardware PCF does, and what pcfscope takes a hardware comparison tap to be. weight is the
 // share of the final result this lookup carries (for the trace only).
@@ -329,7 +330,7 @@ PCF_MAP_FN float pcfHwTap(Map map, vec2 uv, PcfRef ref, float weight) {
     return hwTap(map, pcfUnitUv(map, uv), pcfRefAt(ref, uv), weight);
 }
 
-// Seed 004's "Solution 2" ("PCF Shadow Acne"): interpolate the stored depth bilinearly at uv and
+// "PCF Shadow Acne", Solution 2: interpolate the stored depth bilinearly at uv and
 // compare once. For a planar receiver the interpolated depth follows the surface, so the
 // receiver's own texels stop shadowing it; but the sub-texel fraction is spent on the depth, so
 // the result is one hard bit and cannot be a filter (hence nearest only: src/kernel/bias.cpp).
@@ -356,7 +357,7 @@ PCF_MAP_FN float pcfInterpolatedCompare(Map map, vec2 uv, float ref, float weigh
     return lit;
 }
 
-// Seed 001's gather of raw depths with the soft comparison made in the shader (its 3x3 code
+// "PCF Shadow Acne 2"'s gather of raw depths, the soft comparison made in the shader (its 3x3 code
 // gathers depths through a point sampler, not comparisons). Bits in GL's gather order.
 PCF_MAP_FN vec4 pcfGatherSoft(Map map, vec2 uv, PcfRef ref, vec4 weights) {
     ivec2 size = mapSize(map);
@@ -400,7 +401,7 @@ PCF_MAP_FN float pcfBox2x2(Map map, vec2 uv, PcfRef ref) {
 // Offset of lookup k of an N-wide kernel, in texels: k - (N-1)/2 (half texels when N is even).
 PCF_FN float pcfKernelOffset(int k, int n) { return float(k) - 0.5f * float(n - 1); }
 
-// pcf-naive: N x N bilinear lookups one texel apart, averaged (seed 004's loop): 4 N^2 reads.
+// pcf-naive: N x N bilinear lookups one texel apart, averaged ("PCF Shadow Acne"): 4 N^2 reads.
 // The lookups step in texel space (p + offset), so every lookup has the fraction of p exactly
 // and the sum equals pcf-gather's to float rounding.
 PCF_MAP_FN float pcfNaive(Map map, vec2 uv, PcfRef ref, int n) {
@@ -420,7 +421,7 @@ PCF_MAP_FN float pcfNaive(Map map, vec2 uv, PcfRef ref, int n) {
     return sum * w;
 }
 
-// pcf-hw: the same N x N loop with one hardware comparison tap per lookup (seed 002's loop).
+// pcf-hw: the same N x N loop with one hardware comparison tap per lookup (ogldev 42's loop).
 PCF_MAP_FN float pcfHw(Map map, vec2 uv, PcfRef ref, int n) {
     vec2 texelUv = vec2(1.0f) / vec2(mapSize(map));
     float w = 1.0f / float(n * n);
@@ -436,7 +437,7 @@ PCF_MAP_FN float pcfHw(Map map, vec2 uv, PcfRef ref, int n) {
 
 // Where the N x N lookups of pcf-naive land, as one footprint: all N^2 lookups share one
 // fraction g, and lookup (i, j) has its 2x2 at origin + (i, j). So the (N+1) x (N+1) texels
-// from origin carry, per axis, the weight of seed 001's table generalised to any N:
+// from origin carry, per axis, the weight of "PCF Shadow Acne 2"'s table generalised to any N:
 //   m = 0: 1 - g      0 < m < N: 1      m = N: g        (then divided by N)
 struct PcfFootprint {
     ivec2 origin;  // lower-left texel of the (N+1) x (N+1) footprint
@@ -458,7 +459,7 @@ PCF_FN float pcfFootprintWeight(int m, int n, float g) {
 }
 
 // pcf-gather: the result of pcf-naive from the (N+1)^2 distinct texels, each read once, by
-// ceil((N+1)/2)^2 comparison gathers weighted by the footprint table (seed 001 for N = 3).
+// ceil((N+1)/2)^2 comparison gathers weighted by the footprint table ("PCF Shadow Acne 2", N = 3).
 // Each gather is placed at the shared corner of its 2x2 block, so the texture unit's own
 // floor() cannot pick another block.
 PCF_MAP_FN float pcfGather(Map map, vec2 uv, PcfRef ref, int n) {
@@ -481,7 +482,7 @@ PCF_MAP_FN float pcfGather(Map map, vec2 uv, PcfRef ref, int n) {
             pcfFetch(map, PCF_FETCH_GATHER, corner, 1.0f);
             // A comparison gather has one ref for its four texels: under receiver-plane bias
             // the plane's depth at the gather's centre (its block's shared corner). The soft
-            // comparison needs the depths themselves: a gather of raw depth (seed 001).
+            // comparison needs the depths themselves: a gather of raw depth ("PCF Shadow Acne 2").
             vec2 unitUv = pcfUnitUv(map, corner);
             vec4 bits = ref.bias.mode == PCF_BIAS_SOFT
                             ? pcfGatherSoft(map, unitUv, ref, w)
@@ -547,7 +548,7 @@ PCF_MAP_FN float pcfNaiveWeighted(Map map, vec2 uv, PcfRef ref, int n, int weigh
 // The footprint table for any separable weights: footprint texel m (0..N) is the 2x2's right
 // texel of lookup m-1 and the left texel of lookup m, so per axis it weighs
 //   W_m = a_m (1 - g) [m < N] + a_(m-1) g [m > 0]
-// (box: (1-g, 1, ..., 1, g) / N, seed 001's table for N = 3).
+// (box: (1-g, 1, ..., 1, g) / N, "PCF Shadow Acne 2"'s table for N = 3).
 PCF_FN float pcfFootprintWeightW(int m, int n, float g, int weights, float sigma) {
     float w = 0.0f;
     if (m < n) w += pcfAxisWeight(m, n, weights, sigma) * (1.0f - g);
@@ -578,7 +579,7 @@ PCF_MAP_FN float pcfGatherWeighted(Map map, vec2 uv, PcfRef ref, int n, int weig
             pcfFetch(map, PCF_FETCH_GATHER, corner, 1.0f);
             // A comparison gather has one ref for its four texels: under receiver-plane bias
             // the plane's depth at the gather's centre (its block's shared corner). The soft
-            // comparison needs the depths themselves: a gather of raw depth (seed 001).
+            // comparison needs the depths themselves: a gather of raw depth ("PCF Shadow Acne 2").
             vec2 unitUv = pcfUnitUv(map, corner);
             vec4 bits = ref.bias.mode == PCF_BIAS_SOFT
                             ? pcfGatherSoft(map, unitUv, ref, w)
@@ -653,7 +654,7 @@ PCF_MAP_FN float pcfTent(Map map, vec2 uv, PcfRef ref, int n) {
     return sum;
 }
 
-// Seed 003: 16 point-sampled comparisons on a Poisson disk of the given radius in texels,
+// Jimmy 2010: 16 point-sampled comparisons on a Poisson disk of the given radius in texels,
 // optionally rotated per pixel (rotation = (cos, sin)).
 PCF_FN vec2 pcfPoissonOffset(int k, float radius, vec2 rotation) {
     vec2 d = PCF_POISSON_DISK[k];

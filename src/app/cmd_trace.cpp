@@ -51,7 +51,7 @@ struct TraceOptions {
 // keeps uv * size far from int overflow.
 constexpr float UV_LIMIT = 20.0f;
 
-// The built-in example's lookup: bits 1 and 0 at fx = 0.2, as in seed 000's worked example.
+// The built-in example's lookup: bits 1 and 0 at fx = 0.2, as in "What Is PCF"'s worked example.
 constexpr const char* EXAMPLE_UV = "0.4625,0.3875";
 constexpr float EXAMPLE_Z = 0.5f;
 
@@ -159,7 +159,7 @@ Command addTraceCommand(CLI::App& app) {
     sub->add_option("--map", o->mapPath,
                     "single-channel float depth image (EXR, TIFF); row 0 = first scanline");
     sub->add_flag("--example", o->example,
-                  "use the built-in 8x8 example map (default lookup: seed 000's 0.8 example)");
+                  "use the built-in 8x8 example map (default lookup: What Is PCF's 0.8 example)");
     sub->add_option("--uv", o->uv,
                     "shadow-map coordinates U,V; any finite values (outside [0,1] the taps clamp "
                     "to the edge)");

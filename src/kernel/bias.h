@@ -17,7 +17,7 @@ constexpr float DEFAULT_CONSTANT_BIAS = 0.002f;  // light depth units
 constexpr float DEFAULT_SLOPE_BIAS = 0.001f;     // light depth units per unit of tan(theta)
 constexpr float DEFAULT_SLOPE_MAX = 0.01f;       // light depth units
 constexpr float DEFAULT_NORMAL_OFFSET = 1.5f;    // texels
-// Seed 001 ("PCF Shadow Acne" part 2) used the literal 2048 before naming it
+// "PCF Shadow Acne 2" used the literal 2048 before naming it
 // Z_CMP_CORRECTION_SCALE.
 constexpr float DEFAULT_SOFT_SCALE = 2048.0f;  // 1 / light depth units
 

@@ -5,8 +5,8 @@
 // Syntax: {name} writes the value as the trace's steps do (formatNumber: up to 4 decimals,
 // trailing zeros trimmed, "0.8"); {name:N} writes it with exactly N decimals (N = 0..9,
 // "{frac.x:3}" -> "0.200"); {name*F} multiplies it by the number F first, e.g. "{weight[0,0]*9}"
-// for seed 001's table in ninths (both may be combined: "{weight[1,1]*9:2}"). {{ and }} are a
-// literal { and }.
+// for the table of "PCF Shadow Acne 2" in ninths (both may be combined: "{weight[1,1]*9:2}").
+// {{ and }} are a literal { and }.
 //
 // Names (every number is the traced lookup's; "texel space" is the map's texel grid):
 //   uv.x uv.y             where the pixel lands in the shadow map, in [0,1]
