@@ -12,19 +12,10 @@
 #include "kernel/methods.h"
 #include "kernel/trace.h"
 #include "run_command.h"
+#include "random_map.h"
 
 namespace pcf {
 namespace {
-
-ShadowMap randomMap(int w, int h, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    ShadowMap map(w, h);
-    for (int j = 0; j < h; ++j) {
-        for (int i = 0; i < w; ++i) map.setDepth(i, j, u(rng));
-    }
-    return map;
-}
 
 std::vector<PcfParams> everyMethod() {
     std::vector<PcfParams> all;

@@ -9,21 +9,10 @@
 
 #include "kernel/methods.h"
 #include "kernel/trace.h"
+#include "random_map.h"
 
 namespace pcf {
 namespace {
-
-// A map with structure at every scale: random depths in [0,1] over blocky occluders, so random
-// receivers see edges, corners and single texels.
-ShadowMap randomMap(int w, int h, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    ShadowMap map(w, h);
-    for (int j = 0; j < h; ++j) {
-        for (int i = 0; i < w; ++i) map.setDepth(i, j, u(rng));
-    }
-    return map;
-}
 
 std::vector<PcfParams> everyMethodAndKernel() {
     std::vector<PcfParams> all;
