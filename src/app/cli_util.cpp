@@ -1,5 +1,6 @@
 #include "app/cli_util.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -95,6 +96,20 @@ void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, flo
             throw UsageError(*why);
         }
     }
+}
+
+std::vector<std::string> splitList(const std::string& option, const std::string& text) {
+    std::vector<std::string> items;
+    size_t start = 0;
+    for (;;) {
+        size_t comma = text.find(',', start);
+        std::string item = text.substr(start, comma == std::string::npos ? comma : comma - start);
+        if (item.empty()) throw UsageError(option + " has an empty item in '" + text + "'");
+        if (std::find(items.begin(), items.end(), item) == items.end()) items.push_back(item);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return items;
 }
 
 }  // namespace pcf

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -13,6 +14,10 @@ class UsageError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
+
+// "a,b,a" -> {"a", "b"}: the comma-separated items, each once, in order; throws UsageError naming
+// the option on an empty item.
+std::vector<std::string> splitList(const std::string& option, const std::string& text);
 
 // "0.25,0.5" -> (0.25, 0.5); throws UsageError naming the option on anything else, NaN included.
 glm::vec2 parseVec2(const std::string& option, const std::string& text);

@@ -69,20 +69,6 @@ struct BenchCommandOptions {
     bool given(const char* option) const { return sub != nullptr && sub->count(option) > 0; }
 };
 
-std::vector<std::string> splitList(const std::string& option, const std::string& text) {
-    std::vector<std::string> items;
-    size_t start = 0;
-    for (;;) {
-        size_t comma = text.find(',', start);
-        std::string item = text.substr(start, comma == std::string::npos ? comma : comma - start);
-        if (item.empty()) throw UsageError(option + " has an empty item in '" + text + "'");
-        items.push_back(item);
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-    }
-    return items;
-}
-
 template <class T>
 void appendUnique(std::vector<T>& list, const T& value) {
     if (std::find(list.begin(), list.end(), value) == list.end()) list.push_back(value);
@@ -107,25 +93,6 @@ std::string diffFileName(const BenchPoint& p) {
     if (p.kernel > 0) name += "-n" + std::to_string(p.kernel);
     return name + "-map" + std::to_string(p.mapSize) + ".png";
 }
-
-// The staging folder inside DIR: removed, with whatever is still in it, when the command ends.
-class StagingDir {
-  public:
-    explicit StagingDir(const fs::path& outDir)
-        : mPath(outDir / (".pcfscope-bench-" + std::to_string(getpid()))) {
-        fs::create_directories(mPath / "diff");
-    }
-    ~StagingDir() {
-        std::error_code ec;
-        fs::remove_all(mPath, ec);
-    }
-    StagingDir(const StagingDir&) = delete;
-    StagingDir& operator=(const StagingDir&) = delete;
-    const fs::path& path() const { return mPath; }
-
-  private:
-    fs::path mPath;
-};
 
 int runBenchCommand(const BenchCommandOptions& o) {
     // Every check first: nothing is computed or written unless all of it can be.
@@ -218,7 +185,7 @@ int runBenchCommand(const BenchCommandOptions& o) {
     auto seconds = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     };
-    StagingDir staging(outDir);
+    StagingDir staging(outDir, "bench", "diff");
 
     double loadStart = -1.0;
     double loadEnd = -1.0;

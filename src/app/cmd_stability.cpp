@@ -55,39 +55,6 @@ struct StabilityCommandOptions {
     bool given(const char* option) const { return sub != nullptr && sub->count(option) > 0; }
 };
 
-std::vector<std::string> splitList(const std::string& option, const std::string& text) {
-    std::vector<std::string> items;
-    size_t start = 0;
-    for (;;) {
-        size_t comma = text.find(',', start);
-        std::string item = text.substr(start, comma == std::string::npos ? comma : comma - start);
-        if (item.empty()) throw UsageError(option + " has an empty item in '" + text + "'");
-        if (std::find(items.begin(), items.end(), item) == items.end()) items.push_back(item);
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-    }
-    return items;
-}
-
-// The staging folder inside DIR: removed, with whatever is still in it, when the command ends.
-class StagingDir {
-  public:
-    explicit StagingDir(const fs::path& outDir)
-        : mPath(outDir / (".pcfscope-stability-" + std::to_string(getpid()))) {
-        fs::create_directories(mPath);
-    }
-    ~StagingDir() {
-        std::error_code ec;
-        fs::remove_all(mPath, ec);
-    }
-    StagingDir(const StagingDir&) = delete;
-    StagingDir& operator=(const StagingDir&) = delete;
-    const fs::path& path() const { return mPath; }
-
-  private:
-    fs::path mPath;
-};
-
 bool has(const std::vector<Sweep>& sweeps, Sweep s) {
     return std::find(sweeps.begin(), sweeps.end(), s) != sweeps.end();
 }
@@ -221,7 +188,7 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
     auto seconds = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     };
-    StagingDir staging(outDir);
+    StagingDir staging(outDir, "stability");
     std::unique_ptr<GlContext> context = createHeadlessContext();
     std::fprintf(stderr,
                  "stability: %s, %dx%d frame, %d^2 map, %zu method(s) x %zu bias(es) on %s; "

@@ -207,4 +207,14 @@ void installInterruptCleanup() {
     }).detach();
 }
 
+StagingDir::StagingDir(const fs::path& outDir, const std::string& what, const std::string& subdir)
+    : mPath(outDir / (".pcfscope-" + what + "-" + std::to_string(getpid()))) {
+    fs::create_directories(subdir.empty() ? mPath : mPath / subdir);
+}
+
+StagingDir::~StagingDir() {
+    std::error_code ec;
+    fs::remove_all(mPath, ec);
+}
+
 }  // namespace pcf

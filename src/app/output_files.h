@@ -62,6 +62,22 @@ class OutputFiles {
     std::vector<std::filesystem::path> mDirs;  // folders written into (scratch may be there)
 };
 
+// A scratch folder ".pcfscope-<what>-<pid>" inside DIR that a command stages its outputs in (and
+// with `subdir`, that folder inside it too); removed, with whatever is still in it, when it goes
+// out of scope. The interrupt cleanup finds it by that name.
+class StagingDir {
+  public:
+    StagingDir(const std::filesystem::path& outDir, const std::string& what,
+               const std::string& subdir = "");
+    ~StagingDir();
+    StagingDir(const StagingDir&) = delete;
+    StagingDir& operator=(const StagingDir&) = delete;
+    const std::filesystem::path& path() const { return mPath; }
+
+  private:
+    std::filesystem::path mPath;
+};
+
 // Ctrl-C (SIGINT) and SIGTERM leave no half output. Called once by main before any thread
 // starts: both signals are blocked in every thread and one thread waits for them. On a signal it
 // takes image_io's write gate exclusively (so no image or text write is half done and no
