@@ -341,7 +341,9 @@ Command addBenchCommand(CLI::App& app) {
     sub->add_option("--threads", o->threads,
                     "CPU threads for the ground truth and the CPU kernel timing (0 = all cores, "
                     "the default)");
-    sub->add_option("--bias", o->bias, "bias mode: none, constant (default constant)");
+    sub->add_option("--bias", o->bias,
+                    "bias mode: " + biasNameList() + " (default constant, with its default "
+                    "parameters)");
     sub->add_option("--constant-bias", o->constantBias,
                     "constant bias in light depth units (ref = z - bias; default 0.002)");
     sub->add_option("--cull", o->cull,
