@@ -46,13 +46,15 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
     EXPECT_EQ(line, BENCH_CSV_HEADER);
     EXPECT_EQ(line,
               "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,"
-              "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy");
+              "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,"
+              "acne_share,acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,"
+              "shimmer_mean,shimmer_p99,flicker_share,change_mean");
     std::set<std::string> methods;
     int rows = 0;
     while (std::getline(csv, line)) {
         ++rows;
         std::vector<std::string> f = splitCsvLine(line);
-        ASSERT_EQ(f.size(), 15u) << line;
+        ASSERT_EQ(f.size(), 27u) << line;
         methods.insert(f[0]);
         bool kernelMethod =
             f[0] == "pcf-naive" || f[0] == "pcf-gather" || f[0] == "pcf-hw" || f[0] == "tent";
@@ -76,6 +78,23 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
         bool noisy = std::stod(f[11]) > 0.1 * std::stod(f[3]) + 1e-4 ||
                      std::stod(f[13]) > 0.1 * std::stod(f[12]) + 1e-4;
         if (noisy) EXPECT_EQ(f[14], "1") << line;
+        EXPECT_EQ(f[15], "box") << line;  // weights
+        EXPECT_EQ(f[16], "0") << line;    // sigma: not gaussian
+        // Shares and shimmer are in [0,1]; the clean masks hold pixels of both kinds (the
+        // ground around the box's shadow is lit, the shadow's core is umbra).
+        for (int k : {17, 18, 20, 21, 23, 24, 25, 26}) {
+            EXPECT_GE(std::stod(f[k]), 0.0) << k << ": " << line;
+            EXPECT_LE(std::stod(f[k]), 1.0) << k << ": " << line;
+        }
+        EXPECT_GT(std::stoi(f[19]), 1000) << line;  // clean lit pixels
+        EXPECT_GT(std::stoi(f[22]), 100) << line;   // clean umbra pixels
+        // The darkening is at most the share darker than 0.99 plus 1 % of the rest.
+        EXPECT_LE(std::stod(f[18]), std::stod(f[17]) + 0.01) << line;
+        // Some pixel flickers as the grid slides, and nearest jumps all the way (0 <-> 1).
+        EXPECT_GT(std::stod(f[25]), 0.0) << line;
+        EXPECT_GT(std::stod(f[24]), 0.0) << line;
+        if (f[0] == "nearest") EXPECT_EQ(f[24], "1") << line;
+        if (f[0] == "pcf-gather") EXPECT_LT(std::stod(f[24]), 0.5) << line;
     }
     EXPECT_EQ(rows, points);
     EXPECT_EQ(methods.size(), 9u);
@@ -89,9 +108,11 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
     EXPECT_NE(r.err.find("bench: timing round 5/5"), std::string::npos) << r.err;
     EXPECT_NE(md.find("largest per-pixel bound"), std::string::npos) << md;
     // The chart: the frame's size but at least 960x540, unless --chart-size says otherwise.
-    ImageSize chart = readImageSize(out + "/speed_vs_accuracy.png");
-    EXPECT_EQ(chart.width, 960);
-    EXPECT_EQ(chart.height, 540);
+    for (const char* name : {"/speed_vs_accuracy.png", "/speed_vs_stability.png"}) {
+        ImageSize chart = readImageSize(out + name);
+        EXPECT_EQ(chart.width, 960) << name;
+        EXPECT_EQ(chart.height, 540) << name;
+    }
     int diffs = 0;
     for (const fs::directory_entry& e : fs::directory_iterator(out + "/diff")) {
         ++diffs;
@@ -108,7 +129,7 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
         (void)e;
         ++entries;
     }
-    EXPECT_EQ(entries, 4);
+    EXPECT_EQ(entries, 5);
 }
 
 TEST_F(BenchCommand, ChosenMethodsKernelsMapsAndChartSize) {
@@ -127,6 +148,32 @@ TEST_F(BenchCommand, ChosenMethodsKernelsMapsAndChartSize) {
     EXPECT_EQ(chart.height, 400);
 }
 
+// --weights takes a list: pcf-naive and pcf-gather run once per weighting, every other method
+// with the box; the CSV names the weighting and the gaussian's sigma.
+TEST_F(BenchCommand, WeightsListSweepsTheWeightedMethods) {
+    std::string out = path("weights");
+    auto r = testutil::runPcfscope(
+        "bench --quick --methods pcf-gather,nearest --weights box,gaussian --sigma 1.5 "
+        "--map-sizes 128 --repeats 1 --shimmer-frames 0 -o " +
+        out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<BenchRow> rows = parseBenchCsv(testutil::readAll(out + "/bench.csv"), "bench.csv");
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows[0].point.weights, 0);  // box
+    EXPECT_EQ(rows[0].point.sigma, 0.0f);
+    EXPECT_EQ(rows[1].point.method, rows[0].point.method);
+    EXPECT_EQ(rows[1].point.weights, 2);  // gaussian
+    EXPECT_FLOAT_EQ(rows[1].point.sigma, 1.5f);
+    EXPECT_EQ(rows[2].point.weights, 0);  // nearest: the box only
+    // A different filter: a different error (the Gaussian is wider than the 3x3 box).
+    EXPECT_NE(rows[0].error.edgeRmse, rows[1].error.edgeRmse);
+    EXPECT_TRUE(fs::exists(out + "/diff/pcf-gather-n3-gaussian-map128.png"));
+    EXPECT_TRUE(fs::exists(out + "/diff/pcf-gather-n3-map128.png"));
+    EXPECT_NE(r.out.find("| pcf-gather gaussian 1.5"), std::string::npos) << r.out;
+    // No shimmer frames: the shimmer columns are 0.
+    EXPECT_EQ(rows[0].shimmer.flickerP99, 0.0);
+}
+
 TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
     struct Case {
         std::string args;
@@ -143,7 +190,13 @@ TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
         {"--size 0x10", "--size"},
         {"--chart-size 20x20", "--chart-size"},
         {"--scene no-such", "unknown scene 'no-such'"},
-        {"--scene pole --scene-file x.toml", "not both"},
+        {"--scene pole --scene-file x.toml", "give one of --scene, --scene-file"},
+        {"--method nearest", "--method does not apply to bench"},
+        {"--shimmer-frames 40", "--shimmer-frames 40 is out of range"},
+        {"--weights box,sharp", "unknown --weights 'sharp'"},
+        {"--methods nearest --weights gaussian", "pcf-naive and pcf-gather only"},
+        {"--weights gaussian --sigma -1", "sigma"},
+        {"--methods hw2x2 --bias soft", "soft"},
         {"--spp 0", "--spp 0"},
         {"--repeats 0", "--repeats"},
         {"--timing wall", "--timing"},
@@ -175,9 +228,10 @@ TEST_F(BenchCommand, RefusesAFrameWithoutAShadowEdge) {
     auto r = testutil::runPcfscope("bench --quick --methods nearest --scene-file " +
                                    path("plane.toml") + " -o " + path("out"));
     EXPECT_EQ(r.exitCode, 2) << r.err;
-    std::string last = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);
-    EXPECT_NE(last.find("pcfscope: "), std::string::npos) << r.err;
-    EXPECT_NE(last.find("no shadow edge"), std::string::npos) << r.err;
+    // The refusal is the only line: no progress before it (the truth is checked first).
+    EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("pcfscope: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("no shadow edge"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(path("out")));
 }
 
@@ -201,7 +255,8 @@ TEST_F(BenchCommand, RefusesToOverwriteWithoutForce) {
     ASSERT_EQ(forced.exitCode, 0) << forced.err;
     EXPECT_EQ(testutil::readAll(out + "/bench.csv").rfind(BENCH_CSV_HEADER, 0), 0u);
     // The difference images count as output files too.
-    for (const char* name : {"bench.csv", "bench.md", "speed_vs_accuracy.png"}) {
+    for (const char* name :
+         {"bench.csv", "bench.md", "speed_vs_accuracy.png", "speed_vs_stability.png"}) {
         fs::remove(out + "/" + name);
     }
     auto diffOnly = testutil::runPcfscope("bench --quick --methods nearest -o " + out);

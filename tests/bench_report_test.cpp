@@ -17,8 +17,18 @@ std::vector<BenchRow> sampleRows() {
     a.texelReads = 16;
     a.error = {0.0225, 1.0, 0.2102, 0.99, 0, 0};
     a.timer = "glFinish+steady_clock";
+    a.point.weights = PCF_WEIGHTS_GAUSSIAN;
+    a.point.sigma = 1.25f;
+    a.acne = {0.125, 0.03125, 4096};
+    a.leak = {0.0625, 0.015625, 512};
+    a.shimmer.flickerMean = 0.0123456789;
+    a.shimmer.flickerP99 = 0.375;
+    a.shimmer.flickerShare = 0.02;
+    a.shimmer.mean = 0.000246913578;
     BenchRow b = a;
     b.point = {PCF_NEAREST, 0, 256};
+    b.acne = {};
+    b.shimmer.flickerP99 = 1.0;
     b.gpuMs = 11.5;
     b.texelReads = 1;
     return {a, b};
@@ -35,7 +45,26 @@ TEST(BenchReport, CsvReadsBackWhatWasWritten) {
         EXPECT_EQ(back[k].texelReads, rows[k].texelReads);
         EXPECT_DOUBLE_EQ(back[k].error.edgeRmse, rows[k].error.edgeRmse);
         EXPECT_EQ(back[k].timer, rows[k].timer);
+        // The error split, the weighting and the shimmer: exact to 9 digits.
+        EXPECT_EQ(back[k].point.weights, rows[k].point.weights);
+        EXPECT_EQ(back[k].point.sigma, rows[k].point.sigma);
+        EXPECT_EQ(back[k].acne.share, rows[k].acne.share);
+        EXPECT_EQ(back[k].acne.mean, rows[k].acne.mean);
+        EXPECT_EQ(back[k].acne.count, rows[k].acne.count);
+        EXPECT_EQ(back[k].leak.share, rows[k].leak.share);
+        EXPECT_EQ(back[k].leak.mean, rows[k].leak.mean);
+        EXPECT_EQ(back[k].leak.count, rows[k].leak.count);
+        EXPECT_NEAR(back[k].shimmer.flickerMean, rows[k].shimmer.flickerMean, 1e-12);
+        EXPECT_EQ(back[k].shimmer.flickerP99, rows[k].shimmer.flickerP99);
+        EXPECT_NEAR(back[k].shimmer.flickerShare, rows[k].shimmer.flickerShare, 1e-12);
+        EXPECT_NEAR(back[k].shimmer.mean, rows[k].shimmer.mean, 1e-15);
     }
+    // The columns by name: the weighting's name, and the gaussian's sigma.
+    std::string csv = benchCsv(rows);
+    EXPECT_NE(csv.find(",gaussian,1.25,0.125,0.03125,4096,0.0625,0.015625,512,0.0123456789,0.375,"
+                       "0.02,0.000246913578\n"),
+              std::string::npos)
+        << csv;
 }
 
 TEST(BenchReport, TheShippedCsvParses) {
@@ -51,7 +80,7 @@ TEST(BenchReport, TheShippedCsvParses) {
 }
 
 TEST(BenchReport, BadCsvNamesTheLine) {
-    std::string header = std::string(BENCH_CSV_HEADER) + "\n";
+    std::string header = std::string(BENCH_CSV_HEADER_V2) + "\n";
     auto message = [](const std::string& text) {
         try {
             parseBenchCsv(text, "b.csv");
@@ -71,6 +100,16 @@ TEST(BenchReport, BadCsvNamesTheLine) {
               "b.csv:2: field 4 'nan' is not a number");
     EXPECT_EQ(message(header + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,2\n"),
               "b.csv:2: field 15 '2' is not 0 or 1");
+    // The current header: its 27 fields, a weighting it knows.
+    std::string v3 = std::string(BENCH_CSV_HEADER) + "\n";
+    const std::string head = "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0,";
+    EXPECT_EQ(message(v3 + head + "box,0,0,0,10,0,0,10,0,0,0,0\n").substr(0, 8), "no error");
+    EXPECT_EQ(message(v3 + head + "sharp,0,0,0,10,0,0,10,0,0,0,0\n"),
+              "b.csv:2: unknown weights 'sharp'");
+    EXPECT_EQ(message(v3 + head + "box,0,0,0,1.5,0,0,10,0,0,0,0\n"),
+              "b.csv:2: field 20 '1.5' is not a whole number");
+    EXPECT_EQ(message(v3 + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0\n"),
+              "b.csv:2: expected 27 fields, got 15");
     // The eleven columns from before the timing spreads still read, with no spread.
     std::string v1 = std::string(BENCH_CSV_HEADER_V1) + "\n";
     EXPECT_EQ(message(v1 + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0\n"),

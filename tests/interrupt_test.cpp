@@ -130,5 +130,40 @@ TEST_F(Interrupt, ExistingFilesAreNotTouched) {
     EXPECT_EQ(testutil::readAll(mDir / "keep.txt"), "mine");
 }
 
+// bench stages everything in a scratch folder inside -o and moves it into place at the end,
+// under the write gate: SIGINT after the first run's difference image went to the scratch
+// folder leaves neither the scratch folder nor the -o folder bench made.
+TEST_F(Interrupt, SigintDuringBenchLeavesNothing) {
+    fs::path out = mDir / "bench";
+    pid_t pid = start({"bench", "--quick", "--methods", "nearest,pcf-gather", "--repeats", "200",
+                       "-o", out.string()});
+    ASSERT_TRUE(waitForStderr("bench: timing round 2/200", pid, 120s)) << stderrText();
+    ASSERT_EQ(kill(pid, SIGINT), 0);
+    EXPECT_EQ(exitCodeOf(pid), 130) << stderrText();
+    EXPECT_FALSE(fs::exists(out)) << "bench left its folder";
+    EXPECT_NE(stderrText().find("pcfscope: interrupted (SIGINT); removed the files"),
+              std::string::npos)
+        << stderrText();
+}
+
+// SIGTERM while bench measures its runs, into a folder the user made: the folder stays, empty
+// (no scratch folder, no file), and a file of the user's in it is untouched.
+TEST_F(Interrupt, SigtermDuringBenchKeepsTheUsersFolder) {
+    fs::path out = mDir / "mine";
+    fs::create_directories(out);
+    { std::ofstream(out / "notes.txt") << "mine"; }
+    pid_t pid = start({"bench", "--quick", "--methods", "nearest", "--map-sizes",
+                       "64,96,128,160,192,224,256", "-o", out.string()});
+    ASSERT_TRUE(waitForStderr("bench: 2/7 ", pid, 120s)) << stderrText();
+    ASSERT_EQ(kill(pid, SIGTERM), 0);
+    EXPECT_EQ(exitCodeOf(pid), 143) << stderrText();
+    std::vector<std::string> left;
+    for (const auto& e : fs::recursive_directory_iterator(out)) {
+        left.push_back(fs::relative(e.path(), out).string());
+    }
+    EXPECT_EQ(left, std::vector<std::string>{"notes.txt"});
+    EXPECT_EQ(testutil::readAll(out / "notes.txt"), "mine");
+}
+
 }  // namespace
 }  // namespace pcf

@@ -136,6 +136,12 @@ TEST_F(OutputSafetyTest, AnOutputMayNotBeAnInputEvenWithForce) {
     expectRefusedKeeping(args + "link.png", "-o link.png is the file --scene-file s.png reads");
     expectRefusedKeeping("truth --size 16x9 --spp 2 --scene-file s.exr -f -o s.exr",
                          "-o s.exr is the file --scene-file s.exr reads");
+    // bench's outputs are fixed names in -o: a scene file named like one of them is refused too.
+    fs::create_directory(mDir / "b");
+    fs::copy_file(PCFSCOPE_SOURCE_DIR "/tests/fuzz/corpus/scene/wall.toml", mDir / "b/bench.md");
+    expectRefusedKeeping("bench --quick --methods nearest --scene-file b/bench.md -f -o b",
+                         "-o b/bench.md is the file --scene-file b/bench.md reads");
+    EXPECT_EQ(testutil::readAll(mDir / "b/bench.md"), scene);
     EXPECT_EQ(testutil::readAll(mDir / "s.png"), scene);
     EXPECT_TRUE(fs::is_symlink(fs::symlink_status(mDir / "link.png")));
 }

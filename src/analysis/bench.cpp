@@ -3,13 +3,17 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 
 #include "analysis/cpu_timing.h"
+#include "analysis/stability.h"
 #include "kernel/methods.h"
 #include "render/gpu_lookup.h"
 #include "render/gpu_timer.h"
+#include "scene/light.h"
 
 namespace pcf {
 
@@ -43,7 +47,17 @@ RenderSettings settingsFor(const BenchOptions& options, const BenchPoint& p) {
     s.kernel = p.kernel > 0 ? p.kernel : 3;
     s.mapSize = p.mapSize;
     s.frameSize = options.frameSize;
+    s.weights = p.weights;
+    if (p.weights == PCF_WEIGHTS_GAUSSIAN) s.sigma = p.sigma;
     return s;
+}
+
+bool takesWeights(int method) { return method == PCF_NAIVE || method == PCF_GATHER; }
+
+// The weightings a method runs with: the options' for pcf-naive and pcf-gather, else the box.
+std::vector<int> weightsOf(int method, const BenchOptions& options) {
+    if (takesWeights(method)) return options.weights;
+    return {PCF_WEIGHTS_BOX};
 }
 
 }  // namespace
@@ -62,6 +76,9 @@ BenchOptions quickBenchOptions() {
     o.gpuRepeats = 5;
     o.cpuLookups = 8192;
     o.cpuPasses = 1;
+    o.truthSpp = 2;
+    o.shimmerFrames = 4;
+    o.cleanStride = 2;
     return o;
 }
 
@@ -69,7 +86,10 @@ std::vector<BenchPoint> benchPoints(const BenchOptions& options) {
     std::vector<BenchPoint> points;
     for (int method : methodsOf(options)) {
         for (int n : kernelsOf(method, options)) {
-            for (int size : options.mapSizes) points.push_back({method, n, size});
+            for (int w : weightsOf(method, options)) {
+                float sigma = w == PCF_WEIGHTS_GAUSSIAN ? options.sigma : 0.0f;
+                for (int size : options.mapSizes) points.push_back({method, n, size, w, sigma});
+            }
         }
     }
     return points;
@@ -105,6 +125,30 @@ std::optional<std::string> validateBenchOptions(const BenchOptions& options) {
         options.frameSize.x > MAX_FRAME_SIDE || options.frameSize.y > MAX_FRAME_SIDE) {
         return std::string("the frame size is out of range");
     }
+    if (options.weights.empty()) return std::string("--weights is empty");
+    bool box = false;
+    for (int w : options.weights) {
+        if (w < PCF_WEIGHTS_BOX || w > PCF_WEIGHTS_GAUSSIAN) {
+            return "unknown weights id " + std::to_string(w);
+        }
+        box = box || w == PCF_WEIGHTS_BOX;
+        PcfParams p = makeParams(PCF_GATHER, 3);
+        p.weights = w;
+        p.sigma = options.sigma;
+        if (auto why = validateParams(p)) return why;
+    }
+    for (int method : methodsOf(options)) {
+        if (!box && !takesWeights(method)) {
+            return std::string(methodInfo(method).name) +
+                   " weighs its taps as it must: --weights other than box apply to pcf-naive "
+                   "and pcf-gather only (give --methods)";
+        }
+    }
+    if (options.truthSpp < 2 || options.truthSpp > MAX_TRUTH_SPP) {
+        // One sample per pixel makes a truth of only 0 and 1: no edge band to measure.
+        return "--spp " + std::to_string(options.truthSpp) + " is out of range (2.." +
+               std::to_string(MAX_TRUTH_SPP) + ")";
+    }
     if (options.gpuRepeats < 1) return std::string("the GPU repeats must be at least 1");
     if (options.cpuPasses < 1) return std::string("the CPU passes must be at least 1");
     return std::nullopt;
@@ -113,22 +157,32 @@ std::optional<std::string> validateBenchOptions(const BenchOptions& options) {
 std::string pointName(const BenchPoint& point) {
     std::string name(methodInfo(point.method).name);
     if (point.kernel > 0) name += " N=" + std::to_string(point.kernel);
+    if (point.weights != PCF_WEIGHTS_BOX) name += " " + std::string(weightsName(point.weights));
+    if (point.weights == PCF_WEIGHTS_GAUSSIAN) {
+        char sigma[32];
+        std::snprintf(sigma, sizeof sigma, " %g", point.sigma);
+        name += sigma;
+    }
     return name;
 }
 
-std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& options) {
-    if (auto why = validateBenchOptions(options)) throw std::invalid_argument(*why);
-    if (context.renderer == nullptr || context.truth == nullptr) {
-        throw std::invalid_argument("runBench: the context needs a renderer and a truth");
-    }
-    const GroundTruth& truth = *context.truth;
-    if (truth.size != options.frameSize) {
-        throw std::invalid_argument("runBench: the ground truth is not of the frame's size");
-    }
-    SceneRenderer& renderer = *context.renderer;
-    std::vector<BenchPoint> points = benchPoints(options);
+namespace {
 
-    // Run order: map size outer, then the report order within it.
+// The light-space readback (top-down) as the lookup pass takes it: GL rows, bottom-up.
+std::vector<glm::vec4> glRowLookups(const std::vector<float>& lightSpace, glm::ivec2 size) {
+    std::vector<glm::vec4> lookups(static_cast<size_t>(size.x) * size.y);
+    for (int y = 0; y < size.y; ++y) {
+        const float* src = lightSpace.data() + static_cast<size_t>(size.y - 1 - y) * size.x * 4;
+        for (int x = 0; x < size.x; ++x) {
+            lookups[static_cast<size_t>(y) * size.x + x] =
+                glm::vec4(src[4 * x], src[4 * x + 1], src[4 * x + 2], src[4 * x + 3]);
+        }
+    }
+    return lookups;
+}
+
+// The run order: map size outer (each map rendered and read once), then the report order.
+std::vector<size_t> runOrder(const std::vector<BenchPoint>& points, const BenchOptions& options) {
     std::vector<size_t> order(points.size());
     for (size_t k = 0; k < order.size(); ++k) order[k] = k;
     auto mapRank = [&](int size) {
@@ -138,97 +192,220 @@ std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& option
     std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
         return mapRank(points[a].mapSize) < mapRank(points[b].mapSize);
     });
+    return order;
+}
 
-    std::vector<BenchRow> rows(points.size());
-    ErrorRegions regions;
-    std::vector<glm::vec4> lookups;
-    std::vector<glm::vec4> frameLookups;  // every pixel of the light-space target, GL row order
-    std::map<int, ShadowMap> maps;
-    GpuLookup lookupPass;
-    int currentMap = -1;
-    for (size_t run = 0; run < order.size(); ++run) {
-        const BenchPoint& p = points[order[run]];
-        if (context.progress) {
-            context.progress(static_cast<int>(run), static_cast<int>(order.size()), p);
-        }
-        RenderSettings s = settingsFor(options, p);
-        if (p.mapSize != currentMap) {
-            renderer.renderShadowPass(s);
-            maps[p.mapSize] = renderer.readShadowMap();
-            lookupPass.setMap(maps[p.mapSize]);
-            currentMap = p.mapSize;
-        }
-        renderer.renderCameraPass(s);
-        if (lookups.empty() && regions.compared.empty()) {
-            // Depends on the geometry only: the same for every method and map size.
-            std::vector<float> lightSpace = renderer.readLightSpace();
-            regions = errorRegions(truth, receiverMaskFromLightSpace(lightSpace));
-            lookups = receiverLookups(lightSpace, static_cast<size_t>(options.cpuLookups));
-            // readLightSpace is top-down; the lookup pass takes GL rows (bottom-up).
-            int w = options.frameSize.x;
-            int h = options.frameSize.y;
-            frameLookups.resize(static_cast<size_t>(w) * h);
-            for (int y = 0; y < h; ++y) {
-                const float* src = lightSpace.data() + static_cast<size_t>(h - 1 - y) * w * 4;
-                for (int x = 0; x < w; ++x) {
-                    frameLookups[static_cast<size_t>(y) * w + x] =
-                        glm::vec4(src[4 * x], src[4 * x + 1], src[4 * x + 2], src[4 * x + 3]);
-                }
+// One bench run over its points: phase 1 (measurePoint per point), then the timing rounds.
+class BenchRun {
+  public:
+    BenchRun(BenchContext& context, const BenchOptions& options)
+        : mContext(context),
+          mOptions(options),
+          mRenderer(*context.renderer),
+          mTruth(*context.truth),
+          mPoints(benchPoints(options)),
+          mOrder(runOrder(mPoints, options)),
+          mRows(mPoints.size()) {}
+
+    std::vector<BenchRow> run() {
+        for (size_t run = 0; run < mOrder.size(); ++run) {
+            const BenchPoint& p = mPoints[mOrder[run]];
+            if (mContext.progress) {
+                mContext.progress(static_cast<int>(run), static_cast<int>(mOrder.size()), p);
             }
-            lookupPass.setLookups(frameLookups, w);
+            measurePoint(mRows[mOrder[run]], p);
         }
-        std::vector<float> visibility = renderer.readVisibility();
+        timeRounds();
+        return std::move(mRows);
+    }
 
-        BenchRow& row = rows[order[run]];
+  private:
+    BenchContext& mContext;
+    const BenchOptions& mOptions;
+    SceneRenderer& mRenderer;
+    const GroundTruth& mTruth;
+    std::vector<BenchPoint> mPoints;
+    std::vector<size_t> mOrder;
+    std::vector<BenchRow> mRows;
+    ErrorRegions mRegions;
+    std::vector<glm::vec4> mCpuLookups;  // receiver pixels the CPU kernel is timed on
+    std::map<int, ShadowMap> mMaps;
+    GpuLookup mLookupPass;
+    int mCurrentMap = -1;
+    std::vector<std::optional<Hit>> mHits;  // the clean masks' surface points, once
+    // Clean lit and clean umbra masks per (footprint reach, map size).
+    std::map<std::pair<float, int>, std::pair<std::vector<uint8_t>, std::vector<uint8_t>>> mClean;
+
+    // The first camera pass fixes what depends on the geometry only: the regions, the lookups.
+    void readGeometry() {
+        std::vector<float> lightSpace = mRenderer.readLightSpace();
+        mRegions = errorRegions(mTruth, receiverMaskFromLightSpace(lightSpace));
+        mCpuLookups = receiverLookups(lightSpace, static_cast<size_t>(mOptions.cpuLookups));
+        mLookupPass.setLookups(glRowLookups(lightSpace, mOptions.frameSize), mOptions.frameSize.x);
+    }
+
+    void measurePoint(BenchRow& row, const BenchPoint& p) {
+        RenderSettings s = settingsFor(mOptions, p);
+        if (p.mapSize != mCurrentMap) {
+            mRenderer.renderShadowPass(s);
+            mMaps[p.mapSize] = mRenderer.readShadowMap();
+            mLookupPass.setMap(mMaps[p.mapSize]);
+            mCurrentMap = p.mapSize;
+        }
+        mRenderer.renderCameraPass(s);
+        if (mRegions.compared.empty()) readGeometry();
+        std::vector<float> visibility = mRenderer.readVisibility();
         row.point = p;
-        row.error = measureError(truth, regions, visibility);
+        row.error = measureError(mTruth, mRegions, visibility);
+        if (mContext.scene != nullptr) {
+            const auto& [lit, umbra] = cleanMasks(p);
+            row.acne = falseShadow(visibility, lit);
+            row.leak = falseLight(visibility, umbra);
+        }
+        row.shimmer = measureShimmer(s);
         // One untimed draw of each timed pass: compiles its programs before the rounds.
-        row.timer = renderer.timeCameraPass(s, 1).timer;
-        lookupPass.draw(s.pcfParams(), s.rotatePerPixel);
+        row.timer = mRenderer.timeCameraPass(s, 1).timer;
+        mLookupPass.draw(s.pcfParams(), s.rotatePerPixel);
         glFinish();
-        row.cpuNsPerPixel = timeCpuKernel(map(maps, p.mapSize), lookups, s.pcfParams(),
-                                          options.cpuPasses, options.cpuThreads)
+        row.cpuNsPerPixel = timeCpuKernel(map(mMaps, p.mapSize), mCpuLookups, s.pcfParams(),
+                                          mOptions.cpuPasses, mOptions.cpuThreads)
                                 .nsPerPixel;
-        row.cpuPixels = static_cast<int>(lookups.size());
+        row.cpuPixels = static_cast<int>(mCpuLookups.size());
         row.texelReads = fetchCounts(p.method, s.kernel).texels;
-        if (context.onPoint) context.onPoint(row, visibility, regions);
+        if (mContext.onPoint) mContext.onPoint(row, visibility, mRegions);
+    }
+
+    int cleanStride() const {
+        if (mOptions.cleanStride > 0) return mOptions.cleanStride;
+        double ratio = static_cast<double>(mRegions.comparedCount) / CLEAN_SAMPLE_TARGET;
+        return std::max(1, static_cast<int>(std::ceil(std::sqrt(ratio))));
+    }
+
+    // The clean masks of the point's footprint (the stability sweeps' reach: the method's own
+    // footprint + half a texel for the bilinear taps' rounding) at its map size.
+    const std::pair<std::vector<uint8_t>, std::vector<uint8_t>>& cleanMasks(const BenchPoint& p) {
+        StabilityMethod m{p.method, p.kernel};
+        float reach = footprintReachTexels(m, mOptions.base.radius) + 0.5f;
+        auto key = std::make_pair(reach, p.mapSize);
+        auto it = mClean.find(key);
+        if (it != mClean.end()) return it->second;
+        const Scene& scene = *mContext.scene;
+        if (mHits.empty()) mHits = centreHits(scene, mTruth.size, mOptions.cpuThreads);
+        glm::mat4 clip = mRenderer.shadowClipFromWorld();
+        int stride = cleanStride();
+        auto mask = [&](bool lit) {
+            return cleanPixelMask(scene, mTruth, mRegions, mHits, clip, p.mapSize, reach, lit,
+                                  mOptions.cpuThreads, stride);
+        };
+        return mClean[key] = {mask(true), mask(false)};
+    }
+
+    // The map's grid slid 1/32 texel a frame along its diagonal, the world still (the fit shrunk
+    // by 2 texels a side so no shift pushes the scene off the map, as the stability sweep does).
+    ShimmerStats measureShimmer(const RenderSettings& s) {
+        if (mOptions.shimmerFrames < 2) return {};
+        glm::mat4 fitted = mRenderer.shadowClipFromWorld();
+        float n = static_cast<float>(s.mapSize);
+        glm::mat4 shrink(1.0f);
+        shrink[0][0] = shrink[1][1] = (n - 4.0f) / n;
+        std::vector<std::vector<float>> frames;
+        for (int t = 0; t < mOptions.shimmerFrames; ++t) {
+            float step = static_cast<float>(t) / SHIMMER_STEPS;
+            mRenderer.setShadowClipFromWorld(
+                shiftShadowOrigin(shrink * fitted, glm::vec2(step), s.mapSize, false));
+            mRenderer.renderShadowPass(s);
+            mRenderer.renderCameraPass(s);
+            frames.push_back(mRenderer.readVisibility());
+        }
+        mRenderer.setShadowClipFromWorld(fitted);
+        mRenderer.renderShadowPass(s);  // the point's own map again, for what follows
+        return shimmerStats(frames, mRegions.compared);
     }
 
     // The timing rounds (see bench.h): every point once per round, in run order.
-    std::vector<std::vector<double>> sceneSamples(points.size());
-    std::vector<std::vector<double>> lookupSamples(points.size());
-    for (int round = 0; round < options.gpuRepeats; ++round) {
-        if (context.roundProgress) context.roundProgress(round, options.gpuRepeats);
-        currentMap = -1;
-        for (size_t run = 0; run < order.size(); ++run) {
-            size_t k = order[run];
-            const BenchPoint& p = points[k];
-            RenderSettings s = settingsFor(options, p);
-            if (p.mapSize != currentMap) {
-                renderer.renderShadowPass(s);
-                lookupPass.setMap(maps[p.mapSize]);
-                glFinish();
-                currentMap = p.mapSize;
+    void timeRounds() {
+        std::vector<std::vector<double>> sceneSamples(mPoints.size());
+        std::vector<std::vector<double>> lookupSamples(mPoints.size());
+        for (int round = 0; round < mOptions.gpuRepeats; ++round) {
+            if (mContext.roundProgress) mContext.roundProgress(round, mOptions.gpuRepeats);
+            mCurrentMap = -1;
+            for (size_t k : mOrder) {
+                const BenchPoint& p = mPoints[k];
+                RenderSettings s = settingsFor(mOptions, p);
+                if (p.mapSize != mCurrentMap) {
+                    mRenderer.renderShadowPass(s);
+                    mLookupPass.setMap(mMaps[p.mapSize]);
+                    glFinish();
+                    mCurrentMap = p.mapSize;
+                }
+                sceneSamples[k].push_back(mRenderer.timeCameraPass(s, 1, false).samplesMs.front());
+                PcfParams prm = s.pcfParams();
+                lookupSamples[k].push_back(
+                    timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel); }, 1, false)
+                        .samplesMs.front());
             }
-            sceneSamples[k].push_back(renderer.timeCameraPass(s, 1, false).samplesMs.front());
-            PcfParams prm = s.pcfParams();
-            lookupSamples[k].push_back(
-                timeGpu([&] { lookupPass.draw(prm, s.rotatePerPixel); }, 1, false)
-                    .samplesMs.front());
+        }
+        for (size_t k = 0; k < mPoints.size(); ++k) {
+            BenchRow& row = mRows[k];
+            Quartiles scene = quartilesOf(sceneSamples[k]);
+            Quartiles lookup = quartilesOf(lookupSamples[k]);
+            row.gpuMs = scene.median;
+            row.gpuMsIqr = scene.iqr();
+            row.lookupMs = lookup.median;
+            row.lookupMsIqr = lookup.iqr();
+            row.noisy = row.gpuMsIqr > NOISY_IQR_SHARE * row.gpuMs ||
+                        row.lookupMsIqr > NOISY_IQR_SHARE * row.lookupMs;
         }
     }
-    for (size_t k = 0; k < points.size(); ++k) {
-        BenchRow& row = rows[k];
-        Quartiles scene = quartilesOf(sceneSamples[k]);
-        Quartiles lookup = quartilesOf(lookupSamples[k]);
-        row.gpuMs = scene.median;
-        row.gpuMsIqr = scene.iqr();
-        row.lookupMs = lookup.median;
-        row.lookupMsIqr = lookup.iqr();
-        row.noisy = row.gpuMsIqr > NOISY_IQR_SHARE * row.gpuMs ||
-                    row.lookupMsIqr > NOISY_IQR_SHARE * row.lookupMs;
+};
+
+}  // namespace
+
+std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& options) {
+    if (auto why = validateBenchOptions(options)) throw std::invalid_argument(*why);
+    if (context.renderer == nullptr || context.truth == nullptr) {
+        throw std::invalid_argument("runBench: the context needs a renderer and a truth");
     }
-    return rows;
+    if (context.truth->size != options.frameSize) {
+        throw std::invalid_argument("runBench: the ground truth is not of the frame's size");
+    }
+    return BenchRun(context, options).run();
+}
+
+BenchResult runBenchSweep(const BenchConfig& config, BenchContext callbacks,
+                          const std::function<void(const GroundTruth&)>& truthDone) {
+    const BenchOptions& options = config.options;
+    if (auto why = validateBenchOptions(options)) throw std::invalid_argument(*why);
+    BenchResult result;
+    GroundTruthOptions truthOptions;
+    truthOptions.spp = options.truthSpp;
+    truthOptions.threads = options.cpuThreads;
+    result.truth = computeGroundTruth(config.scene, options.frameSize, truthOptions);
+    // The chart's accuracy axis is the edge band's error: without a shadow edge in view every
+    // method would score a perfect 0 and the chart would say nothing. Refuse instead.
+    ErrorRegions truthRegions = errorRegions(result.truth);
+    if (truthRegions.comparedCount == 0 || truthRegions.edgeCount == 0) {
+        throw BenchSceneError(
+            "scene '" + config.scene.name + "' shows " +
+            (truthRegions.comparedCount == 0 ? std::string("no shadow receiver")
+                                             : std::string("no shadow edge")) +
+            " at " + std::to_string(options.frameSize.x) + "x" +
+            std::to_string(options.frameSize.y) +
+            ", so there is no edge band to measure error over; bench needs a shadow edge in view");
+    }
+    if (truthDone) truthDone(result.truth);
+    SceneRenderer renderer(config.scene);
+    callbacks.renderer = &renderer;
+    callbacks.truth = &result.truth;
+    callbacks.scene = &config.scene;
+    auto onPoint = callbacks.onPoint;
+    callbacks.onPoint = [&](const BenchRow& row, std::span<const float> visibility,
+                            const ErrorRegions& regions) {
+        if (result.regions.compared.empty()) result.regions = regions;
+        if (onPoint) onPoint(row, visibility, regions);
+    };
+    result.rows = runBench(callbacks, options);
+    return result;
 }
 
 }  // namespace pcf

@@ -1,28 +1,44 @@
-// bench.h: speed against accuracy. One sweep over methods x kernel sizes x shadow-map sizes on
-// one scene: per point two GPU times (the camera pass, and the filter alone as a bare lookup
-// pass), the CPU kernel's time per pixel, the texel reads per lookup, and the error against the
-// ground truth (error_metrics.h).
+// bench.h: speed against accuracy. One sweep over methods x kernel sizes x weightings x
+// shadow-map sizes on one scene: per point two GPU times (the camera pass, and the filter alone
+// as a bare lookup pass), the CPU kernel's time per pixel, the texel reads per lookup, the error
+// against the ground truth split by cause, and the shimmer as the map's grid slides.
+//
+// The error, split as the stability sweeps split it (failure_measures.h), so that the chart does
+// not mix bias errors with filter errors:
+//   aliasing     the edge band's RMSE (error_metrics.h): where the truth is partly lit, the
+//                filter's own error;
+//   acne         false shadow: over the CLEAN LIT pixels (fully lit in the truth over the whole
+//                footprint of the method at that map size) the share with v < 0.99 and the mean
+//                darkening 1 - v;
+//   leak         false light: over the CLEAN UMBRA pixels the share with v > 0.01.
+// Shimmer, the second accuracy axis: the map's texel grid slid under the still world in steps of
+// 1/32 texel (stability.h's SHIMMER_STEPS, light.h's shiftShadowOrigin), shimmerFrames frames;
+// mean and 99th percentile of |v(t) - v(t-1)| over the pixels that flicker (failure_measures.h):
+// how far a pixel jumps when it moves at all. (The mean over ALL receivers hardly tells filters
+// apart: sliding any linear filter over an edge changes the picture by about the same total.)
 //
 // The ground truth is computed once per scene and frame size (the map size and method do not
 // change it); the light-space target, which depends on neither either, is read back once.
 //
 // Two phases. First, per point (map sizes outer, so each shadow map is rendered and read back
-// once): the camera pass, its error, the CPU kernel's time, and one untimed draw of each timed
-// pass (shader compilation, first touch). Then the timing, ROUND-ROBIN: gpuRepeats rounds, each
-// taking one sample of every point's camera pass and lookup pass, so a burst of load from
-// elsewhere lands on every method alike instead of on whichever ran during it. Per point the
-// median and the interquartile range of its samples (gpu_timer.h quartilesOf); a point is
-// `noisy` when either IQR exceeds NOISY_IQR_SHARE of its median.
+// once): the camera pass, its error, its shimmer frames, the CPU kernel's time, and one untimed
+// draw of each timed pass (shader compilation, first touch). Then the timing, ROUND-ROBIN:
+// gpuRepeats rounds, each taking one sample of every point's camera pass and lookup pass, so a
+// burst of load from elsewhere lands on every method alike instead of on whichever ran during
+// it. Per point the median and the interquartile range of its samples (gpu_timer.h
+// quartilesOf); a point is `noisy` when either IQR exceeds NOISY_IQR_SHARE of its median.
 #pragma once
 
 #include <functional>
 #include <glm/glm.hpp>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "analysis/error_metrics.h"
+#include "analysis/failure_measures.h"
 #include "analysis/ground_truth.h"
 #include "render/render_settings.h"
 #include "render/scene_renderer.h"
@@ -36,7 +52,16 @@ struct BenchOptions {
     std::vector<int> methods;           // method ids, in this order; empty = all
     std::vector<int> kernels{3, 5, 7};  // N for the methods that take one (tent: 3, 5, 7 only)
     std::vector<int> mapSizes{256, 512, 1024, 2048};
+    // Weightings of the N x N lookups (PCF_WEIGHTS_*), for pcf-naive and pcf-gather; every
+    // other method runs with the box only. sigma: the gaussian's, in texels.
+    std::vector<int> weights{PCF_WEIGHTS_BOX};
+    float sigma = 1.0f;
     glm::ivec2 frameSize{1280, 720};
+    int truthSpp = DEFAULT_TRUTH_SPP;  // K x K first-pass samples of the ground truth (>= 2)
+    int shimmerFrames = 8;             // frames of the grid slid 1/32 texel apart (< 2: none)
+    // The clean-pixel masks (acne, leak) test every stride-th pixel in x and y; 0 = the stride
+    // that leaves about CLEAN_SAMPLE_TARGET compared pixels.
+    int cleanStride = 0;
     int gpuRepeats = 9;      // timing rounds: samples per point of each pass (median, IQR)
     int cpuLookups = 32768;  // receiver pixels the CPU kernel is timed on, at most
     int cpuPasses = 3;       // passes over them (median)
@@ -51,19 +76,25 @@ struct BenchOptions {
 
 // A point is noisy when the IQR of a timing is above this share of its median.
 constexpr double NOISY_IQR_SHARE = 0.10;
+// Compared pixels the clean masks test at most (cleanStride 0), to keep their ray casts cheap.
+constexpr int CLEAN_SAMPLE_TARGET = 60000;
 
-// The --quick settings: 320x180 frame, maps 128 and 256, N = 3, 5 rounds, few CPU lookups.
+// The --quick settings: 320x180 frame, maps 128 and 256, N = 3, 5 rounds, few CPU lookups,
+// 2x2 truth samples, 4 shimmer frames, clean masks on every 2nd pixel.
 BenchOptions quickBenchOptions();
 
 struct BenchPoint {
     int method = PCF_NEAREST;
     int kernel = 0;  // N, or 0 for a method that takes none
     int mapSize = 0;
+    int weights = PCF_WEIGHTS_BOX;  // pcf-naive, pcf-gather
+    float sigma = 0.0f;             // gaussian weights' sigma in texels; 0 for the others
     bool operator==(const BenchPoint&) const = default;
 };
 
 // The points of the sweep in the order rows are reported: by method (options' order), kernel,
-// map size. A method without a kernel appears once per map size; tent only with N = 3, 5, 7.
+// weighting, map size. A method without a kernel appears once per map size; tent only with
+// N = 3, 5, 7; only pcf-naive and pcf-gather once per weighting (the others with the box).
 std::vector<BenchPoint> benchPoints(const BenchOptions& options);
 
 // Why the options cannot run (a kernel or map size out of range, a method with no kernel left,
@@ -82,16 +113,20 @@ struct BenchRow {
     double cpuNsPerPixel = 0.0;
     int cpuPixels = 0;   // receiver pixels the CPU kernel was timed on
     int texelReads = 0;  // fetchCounts(method, N).texels
-    ErrorStats error;
+    ErrorStats error;    // error.edgeRmse: the aliasing error (see the top of this file)
+    FailureRate acne;    // false shadow over the clean lit pixels
+    FailureRate leak;    // false light over the clean umbra pixels
+    ShimmerStats shimmer;
     std::string timer;  // which timer gave gpuMs
 };
 
-// "pcf-gather N=3" or "nearest".
+// "pcf-gather N=3", "pcf-gather N=3 gaussian 1.5" or "nearest".
 std::string pointName(const BenchPoint& point);
 
 struct BenchContext {
     SceneRenderer* renderer = nullptr;   // the scene's renderer; its GL context current
     const GroundTruth* truth = nullptr;  // of the same scene at options.frameSize
+    const Scene* scene = nullptr;        // the scene, for the clean masks (none: no acne/leak)
     // Before each point is measured: index (0-based, in run order), total, the point.
     std::function<void(int index, int total, const BenchPoint& point)> progress;
     // Before each timing round: round (0-based), rounds.
@@ -106,5 +141,31 @@ struct BenchContext {
 // Runs the sweep. Throws std::invalid_argument when validateBenchOptions objects, when a pointer
 // in the context is null, or when the truth's size is not the frame's.
 std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& options);
+
+// The scene cannot be benched (no shadow receiver or no shadow edge in view: every method would
+// score a perfect 0 on the chart's accuracy axis). what() is one line for the user.
+class BenchSceneError : public std::invalid_argument {
+  public:
+    using std::invalid_argument::invalid_argument;
+};
+
+// What the whole bench needs to know: the scene and the sweep's options.
+struct BenchConfig {
+    Scene scene;
+    BenchOptions options;
+};
+
+struct BenchResult {
+    std::vector<BenchRow> rows;
+    GroundTruth truth;
+    ErrorRegions regions;  // compared pixels and edge band the errors were measured over
+};
+
+// The whole bench, for a current GL context: the ground truth (its own progress: none), the
+// check that the scene has a shadow edge in view (BenchSceneError before any callback runs),
+// then `truthDone`, then runBench with the callbacks of `callbacks` (its renderer, truth and
+// scene are set here).
+BenchResult runBenchSweep(const BenchConfig& config, BenchContext callbacks,
+                          const std::function<void(const GroundTruth&)>& truthDone = {});
 
 }  // namespace pcf

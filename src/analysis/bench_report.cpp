@@ -21,28 +21,137 @@ std::string format(const char* fmt, double v) {
     return buf;
 }
 
+// One line of bench.md's table.
+std::string tableLine(const BenchRow& r, bool onFront) {
+    std::string name(methodInfo(r.point.method).name);
+    if (r.point.weights != PCF_WEIGHTS_BOX) name += " " + std::string(weightsName(r.point.weights));
+    if (r.point.weights == PCF_WEIGHTS_GAUSSIAN) name += format(" %g", r.point.sigma);
+    return "| " + name + (onFront ? " *" : "") + (r.noisy ? " !" : "") + " | " +
+           (r.point.kernel > 0 ? std::to_string(r.point.kernel) : std::string("-")) + " | " +
+           std::to_string(r.point.mapSize) + " | " + format("%.3f", r.gpuMs) + " | " +
+           format("%.3f", r.gpuMsIqr) + " | " + format("%.3f", r.lookupMs) + " | " +
+           format("%.3f", r.lookupMsIqr) + " | " + format("%.1f", r.cpuNsPerPixel) + " | " +
+           std::to_string(r.texelReads) + " | " + format("%.4f", r.error.rmse) + " | " +
+           format("%.4f", r.error.maxErr) + " | " + format("%.4f", r.error.edgeRmse) + " | " +
+           format("%.4f", r.error.edgeMaxErr) + " | " + format("%.2f", 100.0 * r.acne.share) +
+           " | " + format("%.2f", 100.0 * r.leak.share) + " | " +
+           format("%.3f", r.shimmer.flickerP99) + " | " +
+           format("%.2f", 100.0 * r.shimmer.flickerShare) + " |\n";
+}
+
 }  // namespace
 
 std::string benchCsv(std::span<const BenchRow> rows) {
     std::string out(BENCH_CSV_HEADER);
     out += '\n';
+    auto g = [](double v) { return ',' + format("%.9g", v); };
     for (const BenchRow& r : rows) {
         out += std::string(methodInfo(r.point.method).name) + ',' + std::to_string(r.point.kernel) +
                ',' + std::to_string(r.point.mapSize) + ',' + format("%.4f", r.gpuMs) + ',' +
-               format("%.2f", r.cpuNsPerPixel) + ',' + std::to_string(r.texelReads) + ',' +
-               format("%.9g", r.error.rmse) + ',' + format("%.9g", r.error.maxErr) + ',' +
-               format("%.9g", r.error.edgeRmse) + ',' + format("%.9g", r.error.edgeMaxErr) + ',' +
-               r.timer + ',' + format("%.4f", r.gpuMsIqr) + ',' + format("%.4f", r.lookupMs) + ',' +
-               format("%.4f", r.lookupMsIqr) + ',' + (r.noisy ? "1" : "0") + '\n';
+               format("%.2f", r.cpuNsPerPixel) + ',' + std::to_string(r.texelReads) +
+               g(r.error.rmse) + g(r.error.maxErr) + g(r.error.edgeRmse) + g(r.error.edgeMaxErr) +
+               ',' + r.timer + ',' + format("%.4f", r.gpuMsIqr) + ',' + format("%.4f", r.lookupMs) +
+               ',' + format("%.4f", r.lookupMsIqr) + ',' + (r.noisy ? "1" : "0") + ',' +
+               std::string(weightsName(r.point.weights)) + g(r.point.sigma) + g(r.acne.share) +
+               g(r.acne.mean) + ',' + std::to_string(r.acne.count) + g(r.leak.share) +
+               g(r.leak.mean) + ',' + std::to_string(r.leak.count) + g(r.shimmer.flickerMean) +
+               g(r.shimmer.flickerP99) + g(r.shimmer.flickerShare) + g(r.shimmer.mean) + '\n';
     }
     return out;
 }
+
+namespace {
+
+// One data line of a bench.csv, split at commas; the field readers name the line on failure.
+class CsvFields {
+  public:
+    CsvFields(const std::string& row, const std::string& source, int line)
+        : mSource(source), mLine(line) {
+        size_t start = 0;
+        for (size_t comma; (comma = row.find(',', start)) != std::string::npos; start = comma + 1) {
+            mFields.push_back(row.substr(start, comma - start));
+        }
+        mFields.push_back(row.substr(start));
+    }
+    size_t size() const { return mFields.size(); }
+    const std::string& text(size_t k) const { return mFields[k]; }
+    [[noreturn]] void fail(const std::string& problem) const {
+        throw InputError(mSource, mLine, problem);
+    }
+    double number(size_t k) const {
+        char* endPtr = nullptr;
+        double v = std::strtod(mFields[k].c_str(), &endPtr);
+        if (mFields[k].empty() || *endPtr != '\0' || !std::isfinite(v)) {
+            fail("field " + std::to_string(k + 1) + " '" + mFields[k] + "' is not a number");
+        }
+        return v;
+    }
+    // Counts and sizes: a whole number an int holds (a cast of 1e30 is undefined behaviour).
+    int integer(size_t k) const {
+        double v = number(k);
+        if (v != std::floor(v) || std::fabs(v) > 1.0e9) {
+            fail("field " + std::to_string(k + 1) + " '" + mFields[k] + "' is not a whole number");
+        }
+        return static_cast<int>(v);
+    }
+    bool flag(size_t k) const {
+        double v = number(k);
+        if (v != 0.0 && v != 1.0) {
+            fail("field " + std::to_string(k + 1) + " '" + mFields[k] + "' is not 0 or 1");
+        }
+        return v == 1.0;
+    }
+
+  private:
+    std::vector<std::string> mFields;
+    const std::string& mSource;
+    int mLine;
+};
+
+BenchRow parseBenchRow(const CsvFields& f) {
+    std::optional<int> method = methodFromName(f.text(0));
+    if (!method) f.fail("unknown method '" + f.text(0) + "'");
+    BenchRow r;
+    r.point = {*method, f.integer(1), f.integer(2)};
+    r.gpuMs = f.number(3);
+    r.cpuNsPerPixel = f.number(4);
+    r.texelReads = f.integer(5);
+    r.error = {f.number(6), f.number(7), f.number(8), f.number(9), 0, 0};
+    r.timer = f.text(10);
+    if (f.size() == 11) return r;
+    r.gpuMsIqr = f.number(11);
+    r.lookupMs = f.number(12);
+    r.lookupMsIqr = f.number(13);
+    r.noisy = f.flag(14);
+    if (f.size() == 15) return r;
+    std::optional<int> weights = weightsFromName(f.text(15));
+    if (!weights) f.fail("unknown weights '" + f.text(15) + "'");
+    r.point.weights = *weights;
+    r.point.sigma = static_cast<float>(f.number(16));
+    r.acne = {f.number(17), f.number(18), f.integer(19)};
+    r.leak = {f.number(20), f.number(21), f.integer(22)};
+    r.shimmer.flickerMean = f.number(23);
+    r.shimmer.flickerP99 = f.number(24);
+    r.shimmer.flickerShare = f.number(25);
+    r.shimmer.mean = f.number(26);
+    return r;
+}
+
+// The field count a header line promises, or 0 when it is not a bench.csv header.
+size_t fieldsOfHeader(const std::string& header) {
+    for (std::string_view h : {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
+        if (header == h) return static_cast<size_t>(std::count(h.begin(), h.end(), ',')) + 1;
+    }
+    return 0;
+}
+
+}  // namespace
 
 std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& source) {
     std::vector<BenchRow> rows;
     int line = 0;
     size_t pos = 0;
-    size_t fieldCount = 15;
+    size_t fieldCount = 0;
     while (pos < text.size()) {
         size_t end = text.find('\n', pos);
         if (end == std::string_view::npos) end = text.size();
@@ -51,8 +160,8 @@ std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& so
         ++line;
         if (!row.empty() && row.back() == '\r') row.pop_back();
         if (line == 1) {
-            if (row == BENCH_CSV_HEADER_V1) fieldCount = 11;
-            if (row != BENCH_CSV_HEADER && row != BENCH_CSV_HEADER_V1) {
+            fieldCount = fieldsOfHeader(row);
+            if (fieldCount == 0) {
                 throw InputError(
                     source, line,
                     "not a bench.csv header: expected '" + std::string(BENCH_CSV_HEADER) + "'");
@@ -60,59 +169,12 @@ std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& so
             continue;
         }
         if (row.empty()) continue;
-        std::vector<std::string> fields;
-        size_t start = 0;
-        for (size_t comma; (comma = row.find(',', start)) != std::string::npos; start = comma + 1) {
-            fields.push_back(row.substr(start, comma - start));
-        }
-        fields.push_back(row.substr(start));
+        CsvFields fields(row, source, line);
         if (fields.size() != fieldCount) {
-            throw InputError(source, line,
-                             "expected " + std::to_string(fieldCount) + " fields, got " +
-                                 std::to_string(fields.size()));
+            fields.fail("expected " + std::to_string(fieldCount) + " fields, got " +
+                        std::to_string(fields.size()));
         }
-        auto number = [&](size_t k) {
-            char* endPtr = nullptr;
-            double v = std::strtod(fields[k].c_str(), &endPtr);
-            if (fields[k].empty() || *endPtr != '\0' || !std::isfinite(v)) {
-                throw InputError(
-                    source, line,
-                    "field " + std::to_string(k + 1) + " '" + fields[k] + "' is not a number");
-            }
-            return v;
-        };
-        // Counts and sizes: a whole number an int holds (a cast of 1e30 is undefined behaviour).
-        auto integer = [&](size_t k) {
-            double v = number(k);
-            if (v != std::floor(v) || std::fabs(v) > 1.0e9) {
-                throw InputError(source, line, "field " + std::to_string(k + 1) + " '" +
-                                                   fields[k] + "' is not a whole number");
-            }
-            return static_cast<int>(v);
-        };
-        std::optional<int> method = methodFromName(fields[0]);
-        if (!method) throw InputError(source, line, "unknown method '" + fields[0] + "'");
-        BenchRow r;
-        r.point = {*method, integer(1), integer(2)};
-        r.gpuMs = number(3);
-        r.cpuNsPerPixel = number(4);
-        r.texelReads = integer(5);
-        r.error.rmse = number(6);
-        r.error.maxErr = number(7);
-        r.error.edgeRmse = number(8);
-        r.error.edgeMaxErr = number(9);
-        r.timer = fields[10];
-        if (fieldCount == 15) {
-            r.gpuMsIqr = number(11);
-            r.lookupMs = number(12);
-            r.lookupMsIqr = number(13);
-            double noisy = number(14);
-            if (noisy != 0.0 && noisy != 1.0) {
-                throw InputError(source, line, "field 15 '" + fields[14] + "' is not 0 or 1");
-            }
-            r.noisy = noisy == 1.0;
-        }
-        rows.push_back(r);
+        rows.push_back(parseBenchRow(fields));
     }
     if (line == 0) throw InputError(source, 1, "empty file: expected a bench.csv header");
     return rows;
@@ -190,25 +252,23 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
     std::set<size_t> onFront(front.begin(), front.end());
     md +=
         "| method | N | map | scene ms | IQR | lookup ms | IQR | CPU ns/px | texel reads | RMSE | "
-        "max err | edge RMSE | edge max err |\n";
-    md += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
-    for (size_t k = 0; k < rows.size(); ++k) {
-        const BenchRow& r = rows[k];
-        md += "| " + std::string(methodInfo(r.point.method).name) + (onFront.count(k) ? " *" : "") +
-              (r.noisy ? " !" : "") + " | " +
-              (r.point.kernel > 0 ? std::to_string(r.point.kernel) : std::string("-")) + " | " +
-              std::to_string(r.point.mapSize) + " | " + format("%.3f", r.gpuMs) + " | " +
-              format("%.3f", r.gpuMsIqr) + " | " + format("%.3f", r.lookupMs) + " | " +
-              format("%.3f", r.lookupMsIqr) + " | " + format("%.1f", r.cpuNsPerPixel) + " | " +
-              std::to_string(r.texelReads) + " | " + format("%.4f", r.error.rmse) + " | " +
-              format("%.4f", r.error.maxErr) + " | " + format("%.4f", r.error.edgeRmse) + " | " +
-              format("%.4f", r.error.edgeMaxErr) + " |\n";
-    }
+        "max err | edge RMSE | edge max err | acne % | leak % | shimmer p99 | flicker % |\n";
+    md += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+    for (size_t k = 0; k < rows.size(); ++k) md += tableLine(rows[k], onFront.count(k) > 0);
     md += "\n`*` marks the Pareto front of " +
           std::string(setup.frontByLookup ? "lookup" : "scene") +
           " time against edge RMSE: no other run is both "
           "faster and more accurate; `!` a noisy point (an IQR above 10 % of its median). "
-          "`speed_vs_accuracy.png` plots the same; `diff/` holds each "
+          "Edge RMSE is the filter's aliasing error (the edge band, where the truth is partly "
+          "lit); acne % is the share of the clean lit pixels (fully lit over the method's whole "
+          "footprint) the method darkens below 0.99, leak % the share of the clean umbra pixels "
+          "it lights above 0.01: bias errors, kept apart from the filter's. Shimmer p99 is the "
+          "99th percentile of a pixel's change per 1/32-texel slide of the map's grid (" +
+          std::to_string(setup.shimmerFrames) +
+          " frames) over the pixels that flicker (change by more than 1/512), flicker % their "
+          "share of the receivers. `speed_vs_accuracy.png` plots edge RMSE, "
+          "`speed_vs_stability.png` shimmer, "
+          "against time; `diff/` holds each "
           "run's signed error (rendered - truth: red too bright, blue too dark, white exact).\n";
     return md;
 }

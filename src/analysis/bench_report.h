@@ -10,9 +10,15 @@
 
 namespace pcf {
 
-// The CSV's first line, exactly (no trailing newline). The timing spread columns come last, so
-// a reader of the first eleven columns keeps working.
+// The CSV's first line, exactly (no trailing newline). Newer columns come last, so a reader of
+// the first eleven (or fifteen) columns keeps working.
 inline constexpr std::string_view BENCH_CSV_HEADER =
+    "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
+    "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,acne_share,"
+    "acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,shimmer_mean,shimmer_p99,"
+    "flicker_share,change_mean";
+// The header before the weights, the error split and the shimmer: still read.
+inline constexpr std::string_view BENCH_CSV_HEADER_V2 =
     "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
     "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy";
 // The header before the timing spread columns: still read (shipped lesson figures).
@@ -21,12 +27,14 @@ inline constexpr std::string_view BENCH_CSV_HEADER_V1 =
     "edge_max_err,timer";
 
 // The header, then one line per row in the given order. kernel is 0 for methods that take none;
-// times in ms / ns with 4 / 2 decimals, errors with 9 significant digits (so equal errors read
-// back equal), timer as gpu_timer.h names it, noisy 0 or 1. Every line ends with '\n'.
+// times in ms / ns with 4 / 2 decimals, errors, shares and shimmer with 9 significant digits (so
+// equal values read back equal), timer as gpu_timer.h names it, noisy 0 or 1, weights box,
+// binomial or gaussian, sigma 0 unless gaussian. Every line ends with '\n'.
 std::string benchCsv(std::span<const BenchRow> rows);
 
-// Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv), or the eleven
-// columns of BENCH_CSV_HEADER_V1 (spreads 0, lookup_ms 0, not noisy). Throws
+// Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv), or the fifteen
+// columns of BENCH_CSV_HEADER_V2 or the eleven of BENCH_CSV_HEADER_V1 (what they lack: 0, box,
+// not noisy). Throws
 // pcf::InputError "SOURCE:LINE: problem" on a wrong header, a wrong field count, an unknown
 // method or a field that is not a finite number.
 std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& source);
@@ -51,6 +59,7 @@ struct BenchSetup {
     double loadStart = -1.0;
     double loadEnd = -1.0;
     int cores = 0;
+    int shimmerFrames = 0;       // frames of the shimmer slide
     bool frontByLookup = false;  // the table's Pareto front (as the chart's): lookup ms, not scene
 };
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "analysis/bench_report.h"
+#include "analysis/pareto.h"
 #include "kernel/methods.h"
 #include "overlay/canvas.h"
 #include "overlay/text_layout.h"
@@ -81,6 +82,8 @@ double safeLog(double ms) { return std::log10(std::max(ms, 1e-6)); }
 std::string chartLabel(const BenchPoint& point) {
     std::string s = shortName(point.method);
     if (point.kernel > 0) s += std::to_string(point.kernel);
+    if (point.weights == PCF_WEIGHTS_BINOMIAL) s += " binom";
+    if (point.weights == PCF_WEIGHTS_GAUSSIAN) s += " gauss" + tickText(point.sigma);
     return s + " " + std::to_string(point.mapSize);
 }
 
@@ -109,8 +112,12 @@ double chartIqr(const BenchRow& row, ChartTiming timing) {
     return timing == ChartTiming::Lookup ? row.lookupMsIqr : row.gpuMsIqr;
 }
 
+double chartAccuracy(const BenchRow& row, ChartAccuracy accuracy) {
+    return accuracy == ChartAccuracy::Shimmer ? row.shimmer.flickerP99 : row.error.edgeRmse;
+}
+
 SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
-                                  ChartTiming timing) {
+                                  ChartTiming timing, ChartAccuracy accuracy) {
     if (size.x < 64 || size.y < 64) {
         throw std::invalid_argument("layoutSpeedChart: the chart needs at least 64 x 64 pixels");
     }
@@ -163,7 +170,7 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     for (const BenchRow& r : rows) {
         xMin = std::min(xMin, barLo(r));
         xMax = std::max(xMax, barHi(r));
-        yMax = std::max(yMax, r.error.edgeRmse);
+        yMax = std::max(yMax, chartAccuracy(r, accuracy));
     }
     if (rows.empty()) xMin = xMax = 0.0;
     double pad = std::max(0.1, 0.06 * (xMax - xMin));
@@ -205,11 +212,16 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
 
     // Dots, the front, and the labels.
     for (const BenchRow& r : rows) {
-        L.points.emplace_back(xPixel(safeLog(chartMs(r, timing))), yPixel(r.error.edgeRmse));
+        L.points.emplace_back(xPixel(safeLog(chartMs(r, timing))),
+                              yPixel(chartAccuracy(r, accuracy)));
         L.errorBars.emplace_back(xPixel(barLo(r)), xPixel(barHi(r)));
         L.labelTexts.push_back(chartLabel(r.point) + (r.noisy ? " !" : ""));
     }
-    L.front = benchParetoFront(rows, timing == ChartTiming::Lookup);
+    std::vector<glm::dvec2> frontPoints;
+    for (const BenchRow& r : rows) {
+        frontPoints.emplace_back(chartMs(r, timing), chartAccuracy(r, accuracy));
+    }
+    L.front = paretoFront(frontPoints, PARETO_ERROR_TOLERANCE);
     L.labels.assign(rows.size(), Rect{});
 
     // Greedy placement: the front's labels first, then the rest; each takes the first spot
@@ -257,8 +269,9 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
 }
 
 std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
-                                    const SpeedChartText& text, ChartTiming timing) {
-    SpeedChartLayout L = layoutSpeedChart(rows, size, timing);
+                                    const SpeedChartText& text, ChartTiming timing,
+                                    ChartAccuracy accuracy) {
+    SpeedChartLayout L = layoutSpeedChart(rows, size, timing, accuracy);
     float s = L.scale;
     Fonts f = fontsFor(s);
 

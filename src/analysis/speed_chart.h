@@ -27,6 +27,12 @@ enum class ChartTiming { Scene, Lookup };
 double chartMs(const BenchRow& row, ChartTiming timing);
 double chartIqr(const BenchRow& row, ChartTiming timing);
 
+// Which accuracy the y axis shows: the edge band's RMSE (the filter's aliasing error,
+// speed_vs_accuracy.png), or the shimmer as the map's grid slides (bench.h; the 99th percentile
+// of a flickering pixel's change per 1/32-texel step, speed_vs_stability.png).
+enum class ChartAccuracy { EdgeRmse, Shimmer };
+double chartAccuracy(const BenchRow& row, ChartAccuracy accuracy);
+
 struct ChartTick {
     double value = 0.0;
     float pixel = 0.0f;  // x for the x axis, y for the y axis
@@ -59,7 +65,7 @@ struct SpeedChartLayout {
     Rect legend;
 };
 
-// "gather3 1024", "nearest 256": the label of one run.
+// "gather3 1024", "nearest 256", "gather3 gauss1.5 1024": the label of one run.
 std::string chartLabel(const BenchPoint& point);
 // The colour of a method's dots and legend swatch.
 glm::vec4 methodColour(int method);
@@ -67,13 +73,16 @@ glm::vec4 methodColour(int method);
 // Where everything goes. Needs the fonts (to measure labels), not GL. Times <= 0 are drawn at
 // the axis's low end. Throws std::invalid_argument for a side < 64 pixels.
 // Noisy rows' labels end in " !".
+// The Pareto front is of time against the chosen accuracy.
 SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
-                                  ChartTiming timing = ChartTiming::Scene);
+                                  ChartTiming timing = ChartTiming::Scene,
+                                  ChartAccuracy accuracy = ChartAccuracy::EdgeRmse);
 
 // The chart as RGBA8, rows top-down (for writePngRgba8), size.x * size.y * 4 bytes. Needs a
 // current OpenGL 4.5 context; leaves its framebuffer bindings as it found them.
 std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                     const SpeedChartText& text,
-                                    ChartTiming timing = ChartTiming::Scene);
+                                    ChartTiming timing = ChartTiming::Scene,
+                                    ChartAccuracy accuracy = ChartAccuracy::EdgeRmse);
 
 }  // namespace pcf

@@ -112,4 +112,19 @@ std::vector<std::string> splitList(const std::string& option, const std::string&
     return items;
 }
 
+std::vector<int> parseIntList(const std::string& option, const std::string& text) {
+    std::vector<int> values;
+    for (const std::string& item : splitList(option, text)) {
+        char* end = nullptr;
+        long v = std::strtol(item.c_str(), &end, 10);
+        if (end != item.c_str() + item.size() || v < -1000000 || v > 1000000) {
+            throw UsageError(option + " expects integers separated by commas, got '" + item + "'");
+        }
+        if (std::find(values.begin(), values.end(), static_cast<int>(v)) == values.end()) {
+            values.push_back(static_cast<int>(v));
+        }
+    }
+    return values;
+}
+
 }  // namespace pcf

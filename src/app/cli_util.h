@@ -19,6 +19,10 @@ public:
 // the option on an empty item.
 std::vector<std::string> splitList(const std::string& option, const std::string& text);
 
+// "3,5,3" -> {3, 5}: splitList's items as integers (within +-1e6; the caller checks ranges);
+// throws UsageError naming the option on an item that is not one.
+std::vector<int> parseIntList(const std::string& option, const std::string& text);
+
 // "0.25,0.5" -> (0.25, 0.5); throws UsageError naming the option on anything else, NaN included.
 glm::vec2 parseVec2(const std::string& option, const std::string& text);
 // "1280x720" -> (1280, 720); each side minSize..maxSide.

@@ -1,18 +1,19 @@
-// pcfscope bench: speed against accuracy (analysis/bench.h). Sweeps methods x kernel sizes x
-// shadow-map sizes on one scene and writes, into DIR:
-//   bench.csv               one row per run (analysis/bench_report.h has the columns)
-//   bench.md                the same as a table, with the machine and the timer
-//   speed_vs_accuracy.png   GPU time (log; --timing scene or lookup) with IQR bars against
-//                           edge-band RMSE, the Pareto front drawn
-//   diff/NAME.png           each run's signed error against the ground truth
+// pcfscope bench: speed against accuracy. The sweep is analysis/bench.h's (truth, error split,
+// shimmer, round-robin timing); this file parses the options (the shared ones through
+// RenderOptions), checks the outputs, reports progress and writes, into DIR:
+//   bench.csv                one row per run (analysis/bench_report.h has the columns)
+//   bench.md                 the same as a table, with the machine and the timer
+//   speed_vs_accuracy.png    GPU time (log; --timing scene or lookup) with IQR bars against
+//                            edge-band RMSE, the Pareto front drawn
+//   speed_vs_stability.png   the same against shimmer
+//   diff/NAME.png            each run's signed error against the ground truth
 // Everything is written into a staging folder inside DIR and moved into place only once the
-// whole sweep has succeeded, so a failure leaves no partial output behind.
+// whole sweep has succeeded, so a failure or an interrupt leaves no partial output behind.
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -21,17 +22,16 @@
 #include "analysis/bench.h"
 #include "analysis/bench_report.h"
 #include "analysis/difference_image.h"
-#include "analysis/error_metrics.h"
-#include "analysis/ground_truth.h"
 #include "analysis/speed_chart.h"
+#include "analysis/stability.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
-#include "render/scene_renderer.h"
 
 namespace pcf {
 
@@ -40,268 +40,314 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* DEFAULT_SCENE = "box-on-plane";
-constexpr int QUICK_TRUTH_SPP = 2;
+constexpr const char* CSV_NAME = "bench.csv";
+constexpr const char* MD_NAME = "bench.md";
+constexpr const char* ACCURACY_CHART = "speed_vs_accuracy.png";
+constexpr const char* STABILITY_CHART = "speed_vs_stability.png";
 
 struct BenchCommandOptions {
-    std::string scene;
-    std::string sceneFile;
+    // Scene, bias and its parameters, culling, polygon offset, depth format, frame size,
+    // weights (here a list), sigma, precision: the options every rendering command shares.
+    RenderOptions render;
     std::string methods;
     std::string kernels;
     std::string mapSizes;
     std::string out = "bench";
     bool quick = false;
-    std::string size;
     std::string chartSize;
-    int spp = DEFAULT_TRUTH_SPP;  // 2 with --quick unless given
-    int repeats = 9;              // timing rounds; 5 with --quick unless given
+    int spp = DEFAULT_TRUTH_SPP;
+    int repeats = 9;  // timing rounds; 5 with --quick unless given
+    int shimmerFrames = 8;
     std::string timing = "lookup";
     int threads = 0;
-    std::string bias = "constant";
-    float constantBias = 0.002f;
-    std::string cull = "front";
-    std::string depthFormat = "32f";
-    std::string weights = "box";      // pcf-naive, pcf-gather
-    float sigma = 1.0f;               // gaussian weights, texels
-    std::string precision = "exact";  // hardware taps and gathers
     bool force = false;
     CLI::App* sub = nullptr;  // to tell options the user gave from defaults
 
     bool given(const char* option) const { return sub != nullptr && sub->count(option) > 0; }
 };
 
-template <class T>
-void appendUnique(std::vector<T>& list, const T& value) {
-    if (std::find(list.begin(), list.end(), value) == list.end()) list.push_back(value);
-}
+// What the command runs: the sweep's config and how to draw it.
+struct BenchPlan {
+    BenchConfig config;
+    glm::ivec2 chartSize{960, 540};
+    ChartTiming timing = ChartTiming::Lookup;
+};
 
-std::vector<int> parseIntList(const std::string& option, const std::string& text) {
-    std::vector<int> values;
-    for (const std::string& item : splitList(option, text)) {
-        char* end = nullptr;
-        long v = std::strtol(item.c_str(), &end, 10);
-        if (end != item.c_str() + item.size() || v < -1000000 || v > 1000000) {
-            throw UsageError(option + " expects integers separated by commas, got '" + item + "'");
-        }
-        appendUnique(values, static_cast<int>(v));
-    }
-    return values;
-}
-
-// "pcf-gather-n3-map1024.png": one difference image per run.
+// "pcf-gather-n3-map1024.png", "pcf-gather-n3-gaussian-map1024.png": one image per run.
 std::string diffFileName(const BenchPoint& p) {
     std::string name(methodInfo(p.method).name);
     if (p.kernel > 0) name += "-n" + std::to_string(p.kernel);
+    if (p.weights != PCF_WEIGHTS_BOX) name += "-" + std::string(weightsName(p.weights));
     return name + "-map" + std::to_string(p.mapSize) + ".png";
+}
+
+std::vector<int> parseMethods(const std::string& text) {
+    std::vector<int> ids;
+    for (const std::string& name : splitList("--methods", text)) {
+        std::optional<int> id = methodFromName(name);
+        if (!id) {
+            throw UsageError("unknown method '" + name +
+                             "' in --methods (known: " + methodNameList() + ")");
+        }
+        ids.push_back(*id);
+    }
+    return ids;
+}
+
+std::vector<int> parseWeightsList(const std::string& text) {
+    std::vector<int> ids;
+    for (const std::string& name : splitList("--weights", text)) {
+        std::optional<int> w = weightsFromName(name);
+        if (!w) {
+            throw UsageError("unknown --weights '" + name + "' (known: box, binomial, gaussian)");
+        }
+        ids.push_back(*w);
+    }
+    return ids;
+}
+
+// The shared options' checks (RenderOptions::settings) for the bias, culling, polygon offset,
+// depth format, frame size, sigma and precision. The single method and weights there are
+// stand-ins: bench checks its lists itself.
+RenderSettings baseSettings(const BenchCommandOptions& o) {
+    for (const char* single :
+         {"--method", "--kernel", "--map-size", "--radius", "--rotate", "--lesson", "--step"}) {
+        if (o.given(single)) {
+            throw UsageError(std::string(single) +
+                             " does not apply to bench (use --methods, --kernels, --map-sizes, "
+                             "--scene)");
+        }
+    }
+    RenderOptions stand = o.render;
+    stand.method = "nearest";
+    stand.weights = "box";
+    return stand.settings();
+}
+
+// The methods the bias can combine with (kernel/bias.h): given methods must all combine; of
+// the default (all) methods those that cannot are left out.
+void applyBias(BenchOptions& options, const RenderSettings& base, bool methodsGiven) {
+    if (!methodsGiven) {
+        for (const MethodInfo& m : allMethods()) {
+            if (!validateBias(static_cast<int>(base.bias), m.id)) options.methods.push_back(m.id);
+        }
+        return;
+    }
+    for (int m : options.methods) {
+        if (auto why = validateBias(static_cast<int>(base.bias), m)) throw UsageError(*why);
+    }
+}
+
+BenchOptions parseSweep(const BenchCommandOptions& o) {
+    BenchOptions options = o.quick ? quickBenchOptions() : BenchOptions{};
+    RenderSettings base = baseSettings(o);
+    options.base = base;
+    if (!o.quick || o.given("--size")) options.frameSize = base.frameSize;
+    if (o.given("--methods")) options.methods = parseMethods(o.methods);
+    if (o.given("--kernels")) options.kernels = parseIntList("--kernels", o.kernels);
+    if (o.given("--map-sizes")) options.mapSizes = parseIntList("--map-sizes", o.mapSizes);
+    if (o.given("--weights")) options.weights = parseWeightsList(o.render.weights);
+    options.sigma = base.sigma;
+    bool weightedOnly = std::find(options.weights.begin(), options.weights.end(),
+                                  PCF_WEIGHTS_BOX) == options.weights.end();
+    if (weightedOnly && !o.given("--methods")) options.methods = {PCF_NAIVE, PCF_GATHER};
+    applyBias(options, base, o.given("--methods") || weightedOnly);
+    if (!o.quick || o.given("--spp")) options.truthSpp = o.spp;
+    if (!o.quick || o.given("--repeats")) options.gpuRepeats = o.repeats;
+    if (!o.quick || o.given("--shimmer-frames")) options.shimmerFrames = o.shimmerFrames;
+    requireIntRange("--spp", options.truthSpp, 2, MAX_TRUTH_SPP);  // 1: no edge band
+    requireIntRange("--repeats", options.gpuRepeats, 1, 1000);
+    requireIntRange("--shimmer-frames", options.shimmerFrames, 0, SHIMMER_STEPS);
+    requireIntRange("--threads", o.threads, 0, 1024);
+    options.cpuThreads = o.threads;
+    if (auto why = validateBenchOptions(options)) throw UsageError(*why);
+    return options;
+}
+
+BenchPlan parsePlan(const BenchCommandOptions& o) {
+    BenchPlan plan;
+    plan.config.options = parseSweep(o);
+    // At least 960x540, so a --quick chart of a 320x180 frame is still readable.
+    plan.chartSize = glm::max(plan.config.options.frameSize, glm::ivec2(960, 540));
+    if (o.given("--chart-size")) {
+        plan.chartSize = parseSize("--chart-size", o.chartSize, MAX_FRAME_SIDE, glm::ivec2(64));
+    }
+    if (o.timing != "scene" && o.timing != "lookup") {
+        throw UsageError("unknown --timing '" + o.timing + "' (known: scene, lookup)");
+    }
+    plan.timing = o.timing == "scene" ? ChartTiming::Scene : ChartTiming::Lookup;
+    plan.config.scene = o.render.loadScene();
+    return plan;
+}
+
+// The files the bench writes, relative to -o, checked (and the folders made) before any work;
+// none may be the scene file it reads, --force or not.
+std::vector<std::string> checkOutputs(const BenchCommandOptions& o, const BenchPlan& plan,
+                                      OutputFiles& outputs) {
+    if (o.out.empty()) throw UsageError("-o needs a directory");
+    std::vector<std::string> names = {CSV_NAME, MD_NAME, ACCURACY_CHART, STABILITY_CHART};
+    for (const BenchPoint& p : benchPoints(plan.config.options)) {
+        names.push_back("diff/" + diffFileName(p));
+    }
+    outputs.addInput("--scene-file", o.render.sceneFile);
+    outputs.addDirectory("-o", o.out);
+    for (const std::string& name : names) outputs.add("-o", fs::path(o.out) / name);
+    return names;
+}
+
+class Stopwatch {
+  public:
+    double seconds() const {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - mStart).count();
+    }
+
+  private:
+    std::chrono::steady_clock::time_point mStart = std::chrono::steady_clock::now();
+};
+
+// Progress on stderr, and each run's difference image into the staging folder. Says nothing
+// before the truth has passed its checks, so a refusal is the only line on stderr.
+class BenchReporter {
+  public:
+    BenchReporter(const BenchPlan& plan, const GlContext& gl, fs::path staging)
+        : mPlan(plan), mGl(gl), mStaging(std::move(staging)) {}
+
+    const Stopwatch& clock() const { return mClock; }
+
+    void truthDone(const GroundTruth& truth) {
+        mTruth = &truth;
+        const BenchOptions& o = mPlan.config.options;
+        int threads = resolveThreadCount(o.cpuThreads);
+        std::fprintf(stderr,
+                     "bench: %s, %dx%d, %zu runs on %s; ground truth: %dx%d first-pass samples "
+                     "per pixel, edges refined, on %d thread%s\n",
+                     mPlan.config.scene.name.c_str(), o.frameSize.x, o.frameSize.y,
+                     benchPoints(o).size(), mGl.renderer().c_str(), o.truthSpp, o.truthSpp, threads,
+                     threads == 1 ? "" : "s");
+        std::fprintf(stderr,
+                     "bench: ground truth done (%.1f s, %d pixels refined, largest bound %.5f)\n",
+                     mClock.seconds(), truth.refinedPixels, truth.maxBound);
+    }
+
+    BenchContext callbacks() {
+        BenchContext c;
+        c.progress = [](int index, int total, const BenchPoint& p) {
+            std::fprintf(stderr, "bench: %d/%d %s map %d ...", index + 1, total,
+                         pointName(p).c_str(), p.mapSize);
+            std::fflush(stderr);
+        };
+        c.onPoint = [this](const BenchRow& row, std::span<const float> visibility,
+                           const ErrorRegions& regions) {
+            std::fprintf(stderr, " edge RMSE %.4f, acne %.2f %%, leak %.2f %%, shimmer p99 %.3f\n",
+                         row.error.edgeRmse, 100.0 * row.acne.share, 100.0 * row.leak.share,
+                         row.shimmer.flickerP99);
+            writePngRgba8((mStaging / "diff" / diffFileName(row.point)).string(), mTruth->size.x,
+                          mTruth->size.y, differenceImage(*mTruth, regions, visibility));
+        };
+        c.roundProgress = [this](int round, int rounds) {
+            std::fprintf(stderr, "bench: timing round %d/%d (every run once, %.1f s)\n", round + 1,
+                         rounds, mClock.seconds());
+        };
+        return c;
+    }
+
+  private:
+    const BenchPlan& mPlan;
+    const GlContext& mGl;
+    fs::path mStaging;
+    Stopwatch mClock;
+    const GroundTruth* mTruth = nullptr;
+};
+
+BenchSetup setupOf(const BenchPlan& plan, const BenchResult& result, const GlContext& gl,
+                   double loadStart, double loadEnd) {
+    const BenchOptions& o = plan.config.options;
+    BenchSetup setup;
+    setup.sceneName = plan.config.scene.name;
+    setup.glRenderer = gl.renderer();
+    setup.glVersion = gl.version();
+    setup.frameSize = o.frameSize;
+    setup.gpuRepeats = o.gpuRepeats;
+    setup.cpuLookups = result.rows.empty() ? 0 : result.rows.front().cpuPixels;
+    setup.cpuPasses = o.cpuPasses;
+    setup.cpuThreads = resolveThreadCount(o.cpuThreads);
+    setup.truthSpp = o.truthSpp;
+    setup.comparedPixels = result.regions.comparedCount;
+    setup.edgePixels = result.regions.edgeCount;
+    setup.truthMaxBound = result.truth.maxBound;
+    setup.truthRefined = result.truth.refinedPixels;
+    setup.loadStart = loadStart;
+    setup.loadEnd = loadEnd;
+    setup.cores = resolveThreadCount(0);
+    setup.shimmerFrames = o.shimmerFrames;
+    setup.frontByLookup = plan.timing == ChartTiming::Lookup;
+    return setup;
+}
+
+// The two charts into the staging folder: time against edge RMSE, and against shimmer.
+void writeCharts(const BenchPlan& plan, const BenchResult& result, const GlContext& gl, bool quick,
+                 const fs::path& staging) {
+    const BenchOptions& o = plan.config.options;
+    std::string where = plan.config.scene.name + ", " + std::to_string(o.frameSize.x) + "x" +
+                        std::to_string(o.frameSize.y);
+    std::string indicative = quick ? " (--quick: timings indicative only)" : "";
+    std::string timer = result.rows.empty() ? std::string() : result.rows.front().timer;
+    SpeedChartText text;
+    text.subtitle = gl.renderer() + "; median of " + std::to_string(o.gpuRepeats) +
+                    " round-robin samples, " + timer +
+                    "; bars: IQR; ! noisy (IQR > 10 % of median)";
+    text.xLabel = plan.timing == ChartTiming::Lookup
+                      ? "filter time: bare lookup pass, ms (log scale)"
+                      : "camera pass time, ms (log scale)";
+    text.title = "Speed against accuracy" + indicative + ": " + where;
+    text.yLabel = "aliasing: edge-band RMSE of visibility";
+    writePngRgba8((staging / ACCURACY_CHART).string(), plan.chartSize.x, plan.chartSize.y,
+                  drawSpeedChart(result.rows, plan.chartSize, text, plan.timing));
+    text.title = "Speed against stability" + indicative + ": " + where;
+    text.yLabel =
+        "shimmer: 99th percentile of a flickering pixel's change per 1/32-texel "
+        "slide of the map (" +
+        std::to_string(o.shimmerFrames) + " frames)";
+    writePngRgba8(
+        (staging / STABILITY_CHART).string(), plan.chartSize.x, plan.chartSize.y,
+        drawSpeedChart(result.rows, plan.chartSize, text, plan.timing, ChartAccuracy::Shimmer));
 }
 
 int runBenchCommand(const BenchCommandOptions& o) {
     // Every check first: nothing is computed or written unless all of it can be.
-    BenchOptions options = o.quick ? quickBenchOptions() : BenchOptions{};
-    if (!o.methods.empty()) {
-        options.methods.clear();
-        for (const std::string& name : splitList("--methods", o.methods)) {
-            std::optional<int> id = methodFromName(name);
-            if (!id) {
-                throw UsageError("unknown method '" + name +
-                                 "' in --methods (known: " + methodNameList() + ")");
-            }
-            appendUnique(options.methods, *id);
-        }
-    }
-    if (!o.kernels.empty()) options.kernels = parseIntList("--kernels", o.kernels);
-    if (!o.mapSizes.empty()) options.mapSizes = parseIntList("--map-sizes", o.mapSizes);
-    if (!o.size.empty()) options.frameSize = parseSize("--size", o.size, MAX_FRAME_SIDE);
-    // At least 960x540, so a --quick chart of a 320x180 frame is still readable.
-    glm::ivec2 chartSize = glm::max(options.frameSize, glm::ivec2(960, 540));
-    if (!o.chartSize.empty()) chartSize = parseSize("--chart-size", o.chartSize, MAX_FRAME_SIDE);
-    if (chartSize.x < 64 || chartSize.y < 64) {
-        throw UsageError("--chart-size " + o.chartSize + " is too small (64x64 at least)");
-    }
-    int spp = o.quick && !o.given("--spp") ? QUICK_TRUTH_SPP : o.spp;
-    requireIntRange("--spp", spp, 2, MAX_TRUTH_SPP);  // 1: an all-or-nothing truth, no edge band
-    if (!o.quick || o.given("--repeats")) options.gpuRepeats = o.repeats;
-    requireIntRange("--repeats", options.gpuRepeats, 1, 1000);
-    requireIntRange("--threads", o.threads, 0, 1024);
-    options.cpuThreads = o.threads;
-    if (o.timing != "scene" && o.timing != "lookup") {
-        throw UsageError("unknown --timing '" + o.timing + "' (known: scene, lookup)");
-    }
-    ChartTiming timing = o.timing == "scene" ? ChartTiming::Scene : ChartTiming::Lookup;
-    std::optional<BiasMode> bias = biasModeFromName(o.bias);
-    if (!bias)
-        throw UsageError("unknown bias mode '" + o.bias + "' (known: " + biasNameList() + ")");
-    options.base.bias = *bias;
-    requireRange("--constant-bias", o.constantBias, -1.0f, 1.0f);
-    options.base.constantBias = o.constantBias;
-    std::optional<CullMode> cull = cullModeFromName(o.cull);
-    if (!cull) throw UsageError("unknown --cull '" + o.cull + "' (known: back, front, none)");
-    options.base.shadowCull = *cull;
-    std::optional<DepthFormat> format = depthFormatFromName(o.depthFormat);
-    if (!format) {
-        throw UsageError("unknown --depth-format '" + o.depthFormat + "' (known: 16, 24, 32f)");
-    }
-    options.base.depthFormat = *format;
-    // Issue 10: weights (pcf-naive, pcf-gather only) and the texture unit's precision model.
-    std::optional<int> weights = weightsFromName(o.weights);
-    if (!weights) {
-        throw UsageError("unknown --weights '" + o.weights + "' (known: box, binomial, gaussian)");
-    }
-    std::optional<int> precision = precisionFromName(o.precision);
-    if (!precision) throw UsageError("unknown --precision '" + o.precision + "' (known: exact, hw8)");
-    options.base.weights = *weights;
-    options.base.sigma = o.sigma;
-    options.base.precision = *precision;
-    if (*weights != PCF_WEIGHTS_BOX) {
-        if (options.methods.empty()) options.methods = {PCF_NAIVE, PCF_GATHER};
-        for (int m : options.methods) {
-            PcfParams p = makeParams(m, 3);
-            p.weights = *weights;
-            p.sigma = o.sigma;
-            if (auto why = validateParams(p)) throw UsageError(*why + " (give --methods)");
-        }
-    }
-    if (auto why = validateBenchOptions(options)) throw UsageError(*why);
-    if (!o.scene.empty() && !o.sceneFile.empty()) {
-        throw UsageError("give --scene or --scene-file, not both");
-    }
-    RenderOptions sceneOptions;
-    sceneOptions.scene = o.scene;
-    sceneOptions.sceneFile = o.sceneFile;
-    if (o.scene.empty() && o.sceneFile.empty()) sceneOptions.scene = DEFAULT_SCENE;
-    Scene scene = sceneOptions.loadScene();
-
-    if (o.out.empty()) throw UsageError("-o needs a directory");
-    fs::path outDir(o.out);
-    std::vector<BenchPoint> points = benchPoints(options);
-    const std::string csvName = "bench.csv", mdName = "bench.md",
-                      chartName = "speed_vs_accuracy.png";
-    std::vector<std::string> finalNames = {csvName, mdName, chartName};
-    for (const BenchPoint& p : points) finalNames.push_back("diff/" + diffFileName(p));
+    BenchPlan plan = parsePlan(o);
     OutputFiles outputs(o.force);
-    outputs.addDirectory("-o", outDir);
-    for (const std::string& name : finalNames) outputs.add("-o", outDir / name);
-
-    auto started = std::chrono::steady_clock::now();
-    auto seconds = [&] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    };
-    StagingDir staging(outDir, "bench", "diff");
-
-    double loadStart = -1.0;
-    double loadEnd = -1.0;
+    std::vector<std::string> names = checkOutputs(o, plan, outputs);
+    StagingDir staging(o.out, "bench", "diff");
+    double loadStart = -1.0, loadEnd = -1.0;
     getloadavg(&loadStart, 1);
-    std::unique_ptr<GlContext> context = createHeadlessContext();
-    int threads = resolveThreadCount(o.threads);
-    std::fprintf(stderr,
-                 "bench: %s, %dx%d, %zu runs on %s; ground truth: %dx%d first-pass samples per "
-                 "pixel, edges refined, on %d thread%s\n",
-                 scene.name.c_str(), options.frameSize.x, options.frameSize.y, points.size(),
-                 context->renderer().c_str(), spp, spp, threads, threads == 1 ? "" : "s");
-    GroundTruthOptions truthOptions;
-    truthOptions.spp = spp;
-    truthOptions.threads = o.threads;
-    int lastQuarter = 0;
-    truthOptions.progress = [&](int done, int total) {
-        int quarter = done * 4 / total;
-        if (quarter > lastQuarter && quarter < 4) {
-            std::fprintf(stderr, "bench: ground truth %d%%\n", quarter * 25);
-            lastQuarter = quarter;
-        }
-    };
-    GroundTruth truth = computeGroundTruth(scene, options.frameSize, truthOptions);
-    std::fprintf(stderr,
-                 "bench: ground truth done (%.1f s, %d pixels refined, largest bound %.5f)\n",
-                 seconds(), truth.refinedPixels, truth.maxBound);
-    // The chart's accuracy axis is the edge band's error: without a shadow edge in view every
-    // method would score a perfect 0 and the chart would say nothing. Refuse instead.
-    ErrorRegions truthRegions = errorRegions(truth);
-    if (truthRegions.comparedCount == 0 || truthRegions.edgeCount == 0) {
-        throw UsageError(
-            "scene '" + scene.name + "' shows " +
-            (truthRegions.comparedCount == 0 ? std::string("no shadow receiver")
-                                             : std::string("no shadow edge")) +
-            " at " + std::to_string(options.frameSize.x) + "x" +
-            std::to_string(options.frameSize.y) +
-            ", so there is no edge band to measure error over; bench needs a shadow edge in view");
+    std::unique_ptr<GlContext> gl = createHeadlessContext();
+    BenchReporter reporter(plan, *gl, staging.path());
+    BenchResult result;
+    try {
+        result = runBenchSweep(plan.config, reporter.callbacks(),
+                               [&](const GroundTruth& t) { reporter.truthDone(t); });
+    } catch (const BenchSceneError& e) {
+        throw UsageError(e.what());
     }
-
-    SceneRenderer renderer(scene);
-    BenchContext bench;
-    bench.renderer = &renderer;
-    bench.truth = &truth;
-    bench.progress = [&](int index, int total, const BenchPoint& p) {
-        std::fprintf(stderr, "bench: %d/%d %s map %d ...", index + 1, total, pointName(p).c_str(),
-                     p.mapSize);
-        std::fflush(stderr);
-    };
-    ErrorRegions measuredOver;
-    bench.onPoint = [&](const BenchRow& row, std::span<const float> visibility,
-                        const ErrorRegions& regions) {
-        std::fprintf(stderr, " edge RMSE %.4f\n", row.error.edgeRmse);
-        writePngRgba8((staging.path() / "diff" / diffFileName(row.point)).string(), truth.size.x,
-                      truth.size.y, differenceImage(truth, regions, visibility));
-        if (measuredOver.compared.empty()) measuredOver = regions;
-    };
-    bench.roundProgress = [&](int round, int rounds) {
-        std::fprintf(stderr, "bench: timing round %d/%d (every run once, %.1f s)\n", round + 1,
-                     rounds, seconds());
-    };
-    std::vector<BenchRow> rows = runBench(bench, options);
     getloadavg(&loadEnd, 1);
-
-    BenchSetup setup;
-    setup.sceneName = scene.name;
-    setup.glRenderer = context->renderer();
-    setup.glVersion = context->version();
-    setup.frameSize = options.frameSize;
-    setup.gpuRepeats = options.gpuRepeats;
-    setup.cpuLookups = rows.empty() ? 0 : rows.front().cpuPixels;
-    setup.cpuPasses = options.cpuPasses;
-    setup.cpuThreads = resolveThreadCount(o.threads);
-    setup.truthSpp = spp;
-    setup.comparedPixels = measuredOver.comparedCount;
-    setup.edgePixels = measuredOver.edgeCount;
-    setup.truthMaxBound = truth.maxBound;
-    setup.truthRefined = truth.refinedPixels;
-    setup.loadStart = loadStart;
-    setup.loadEnd = loadEnd;
-    setup.cores = resolveThreadCount(0);
-    setup.frontByLookup = timing == ChartTiming::Lookup;
-    std::string markdown = benchMarkdown(rows, setup);
-    writeTextFile((staging.path() / csvName).string(), benchCsv(rows));
-    writeTextFile((staging.path() / mdName).string(), markdown);
-    SpeedChartText chartText;
-    chartText.title = std::string("Speed against accuracy") +
-                      (o.quick ? " (--quick: timings indicative only)" : "") + ": " + scene.name +
-                      ", " + std::to_string(options.frameSize.x) + "x" +
-                      std::to_string(options.frameSize.y);
-    std::string timer = rows.empty() ? std::string() : rows.front().timer;
-    chartText.subtitle = context->renderer() + "; median of " + std::to_string(options.gpuRepeats) +
-                         " round-robin samples, " + timer +
-                         "; bars: IQR; ! noisy (IQR > 10 % of median)";
-    chartText.xLabel = timing == ChartTiming::Lookup
-                           ? "filter time: bare lookup pass, ms (log scale)"
-                           : "camera pass time, ms (log scale)";
-    writePngRgba8((staging.path() / chartName).string(), chartSize.x, chartSize.y,
-                  drawSpeedChart(rows, chartSize, chartText, timing));
-    if (benchMachineBusy(rows, setup)) {
+    BenchSetup setup = setupOf(plan, result, *gl, loadStart, loadEnd);
+    std::string markdown = benchMarkdown(result.rows, setup);
+    writeTextFile((staging.path() / CSV_NAME).string(), benchCsv(result.rows));
+    writeTextFile((staging.path() / MD_NAME).string(), markdown);
+    writeCharts(plan, result, *gl, o.quick, staging.path());
+    if (benchMachineBusy(result.rows, setup)) {
         std::fprintf(stderr,
                      "bench: the machine was busy (load average %.2f -> %.2f on %d cores); %.0f %% "
                      "of the points are noisy\n",
-                     loadStart, loadEnd, setup.cores, 100.0 * noisyShare(rows));
+                     loadStart, loadEnd, setup.cores, 100.0 * noisyShare(result.rows));
     }
-
-    // All written: move into place.
-    for (const std::string& name : finalNames) {
-        fs::rename(staging.path() / name, outDir / name);
-    }
-    outputs.commit();
+    outputs.commitStaged(staging.path(), o.out, names);
     std::fputs(markdown.c_str(), stdout);
     std::fprintf(stderr,
-                 "bench: %zu runs in %.1f s; wrote %s/{%s, %s, %s} and %zu images in "
-                 "%s/diff\n",
-                 rows.size(), seconds(), o.out.c_str(), csvName.c_str(), mdName.c_str(),
-                 chartName.c_str(), points.size(), o.out.c_str());
+                 "bench: %zu runs in %.1f s; wrote %s/{%s, %s, %s, %s} and %zu images in %s/diff\n",
+                 result.rows.size(), reporter.clock().seconds(), o.out.c_str(), CSV_NAME, MD_NAME,
+                 ACCURACY_CHART, STABILITY_CHART, result.rows.size(), o.out.c_str());
     return 0;
 }
 
@@ -310,13 +356,16 @@ int runBenchCommand(const BenchCommandOptions& o) {
 Command addBenchCommand(CLI::App& app) {
     auto o = std::make_shared<BenchCommandOptions>();
     CLI::App* sub = app.add_subcommand(
-        "bench", "speed against accuracy: sweep methods x kernels x map sizes; CSV, table, chart");
+        "bench",
+        "speed against accuracy and stability: sweep methods x kernels x weights x map sizes; "
+        "CSV, table, charts");
     o->sub = sub;
-    sub->add_option("--scene", o->scene,
-                    "built-in scene (default box-on-plane): box-on-plane, sphere-over-plane, pole, "
-                    "grazing, stairs");
-    sub->add_option("--scene-file", o->sceneFile, "scene file (TOML)");
-    sub->add_option("--methods", o->methods, "method ids, comma-separated (default: all)");
+    // The map holds back faces by default (front faces culled): shadow acne, a bias problem,
+    // stays off the lit faces, so the edge error measures the filter (analysis/bench.h).
+    o->render.cull = "front";
+    o->render.addTo(sub, DEFAULT_SCENE);
+    sub->add_option("--methods", o->methods,
+                    "method ids, comma-separated (default: all that combine with --bias)");
     sub->add_option("--kernels", o->kernels,
                     "N for the methods that take one, comma-separated (default 3,5,7; tent runs "
                     "only 3, 5, 7)");
@@ -324,37 +373,26 @@ Command addBenchCommand(CLI::App& app) {
                     "shadow map sizes, comma-separated (default 256,512,1024,2048)");
     sub->add_option("-o,--out", o->out, "output directory (default: bench)");
     sub->add_flag("--quick", o->quick,
-                  "a few seconds, for CI: 320x180 frame, maps 128,256, N = 3, 5 timing rounds "
-                  "(explicit options still win); its timings are indicative only");
-    sub->add_option("--size", o->size, "frame size WxH (default 1280x720)");
+                  "a few seconds, for CI: 320x180 frame, maps 128,256, N = 3, 5 timing rounds, "
+                  "4 shimmer frames (explicit options still win); its timings are indicative "
+                  "only");
     sub->add_option("--chart-size", o->chartSize,
-                    "speed_vs_accuracy.png size WxH (default: the frame size, at least 960x540)");
+                    "size WxH of the two charts (default: the frame size, at least 960x540)");
     sub->add_option("--spp", o->spp,
-                    "ground truth: K x K first-pass samples per pixel (default 2); edges are then "
-                    "integrated to a 1/512 bound");
+                    "ground truth: K x K first-pass samples per pixel (2..64, default 2); edges "
+                    "are then integrated to a 1/512 bound");
     sub->add_option("--repeats", o->repeats,
                     "timing rounds (default 9): each times every run once, round-robin; median "
                     "and IQR per run");
+    sub->add_option("--shimmer-frames", o->shimmerFrames,
+                    "frames of the map's grid slid 1/32 texel apart, per run (default 8; --quick "
+                    "4; 0 or 1: no shimmer)");
     sub->add_option("--timing", o->timing,
-                    "the chart's time axis: lookup (default: the filter alone, a bare lookup "
+                    "the charts' time axis: lookup (default: the filter alone, a bare lookup "
                     "pass) or scene (the camera pass)");
     sub->add_option("--threads", o->threads,
-                    "CPU threads for the ground truth and the CPU kernel timing (0 = all cores, "
-                    "the default)");
-    sub->add_option("--bias", o->bias,
-                    "bias mode: " + biasNameList() + " (default constant, with its default "
-                    "parameters)");
-    sub->add_option("--constant-bias", o->constantBias,
-                    "constant bias in light depth units (ref = z - bias; default 0.002)");
-    sub->add_option("--cull", o->cull,
-                    "faces culled in the shadow pass: front (the default: the map holds back "
-                    "faces, which keeps acne out of the error), back, none");
-    sub->add_option("--depth-format", o->depthFormat, "shadow map depth format: 16, 24, 32f");
-    sub->add_option("--weights", o->weights,
-                    "pcf-naive, pcf-gather: box, binomial, gaussian (default methods: those two)");
-    sub->add_option("--sigma", o->sigma, "gaussian weights: standard deviation in texels");
-    sub->add_option("--precision", o->precision,
-                    "texel position inside hardware taps and gathers: exact, hw8");
+                    "CPU threads for the ground truth, the clean masks and the CPU kernel "
+                    "timing (0 = all cores, the default)");
     sub->add_flag("-f,--force", o->force, "overwrite existing output files");
     return {sub, [o] { return runBenchCommand(*o); }};
 }

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <shared_mutex>
 #include <thread>
 
 #include "app/cli_util.h"
@@ -65,6 +66,13 @@ OutputFiles::~OutputFiles() {
 void OutputFiles::commit() {
     std::lock_guard lock(registryMutex());
     mCommitted = true;
+}
+
+void OutputFiles::commitStaged(const fs::path& stagingDir, const fs::path& outDir,
+                               const std::vector<std::string>& names) {
+    std::shared_lock gate(outputWriteGate());
+    for (const std::string& name : names) fs::rename(stagingDir / name, outDir / name);
+    commit();
 }
 
 void OutputFiles::takeBack() {

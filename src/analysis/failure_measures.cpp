@@ -1,0 +1,165 @@
+#include "analysis/failure_measures.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+#include "analysis/stability.h"
+#include "scene/camera.h"
+
+namespace pcf {
+
+namespace {
+
+// Rows [0, rows) split over the worker threads, a row at a time from a shared counter.
+template <class F>
+void parallelRows(int rows, int threads, F&& work) {
+    std::atomic<int> next{0};
+    auto loop = [&] {
+        for (int y; (y = next.fetch_add(1)) < rows;) work(y);
+    };
+    int n = std::max(1, std::min(resolveThreadCount(threads), rows));
+    std::vector<std::thread> pool;
+    for (int t = 1; t < n; ++t) pool.emplace_back(loop);
+    loop();
+    for (std::thread& t : pool) t.join();
+}
+
+// Whether every footprint point of the hit is lit (wantLit) or shadowed (!wantLit).
+bool footprintIs(const Scene& scene, const Hit& h, const glm::mat4& shadowClip, int mapSize,
+                 float reach, bool wantLit) {
+    std::vector<glm::vec3> points =
+        footprintPoints(scene, shadowClip, mapSize, h.posWs, h.frontFace ? h.normalWs : -h.normalWs,
+                        reach, FOOTPRINT_GRID);
+    if (points.empty()) return false;  // edge-on to the light: no footprint to speak of
+    for (glm::vec3 p : points) {
+        Hit moved = h;
+        moved.posWs = p;
+        if (litByLight(scene, moved) != wantLit) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+std::vector<std::optional<Hit>> centreHits(const Scene& scene, glm::ivec2 size, int threads) {
+    std::vector<std::optional<Hit>> hits(static_cast<size_t>(size.x) * size.y);
+    float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+    parallelRows(size.y, threads, [&](int y) {
+        int rowTopDown = size.y - 1 - y;
+        for (int x = 0; x < size.x; ++x) {
+            Ray ray = cameraRay(scene.camera, pixelCentreNdc({x, y}, size), aspect);
+            hits[static_cast<size_t>(rowTopDown) * size.x + x] = intersect(scene, ray);
+        }
+    });
+    return hits;
+}
+
+std::vector<uint8_t> cleanPixelMask(const Scene& scene, const GroundTruth& truth,
+                                    const ErrorRegions& regions,
+                                    const std::vector<std::optional<Hit>>& hits,
+                                    const glm::mat4& shadowClip, int mapSize, float reachTexels,
+                                    bool wantLit, int threads, int stride) {
+    stride = std::max(1, stride);
+    std::vector<uint8_t> mask(truth.pixelCount(), 0);
+    parallelRows(truth.size.y, threads, [&](int row) {
+        if (row % stride != 0) return;
+        for (int x = 0; x < truth.size.x; x += stride) {
+            size_t k = truth.index(x, row);
+            if (!regions.compared[k] || !hits[k]) continue;
+            float v = truth.visibility[k];
+            if (wantLit ? v < 1.0f : v > 0.0f) continue;
+            mask[k] = footprintIs(scene, *hits[k], shadowClip, mapSize, reachTexels, wantLit);
+        }
+    });
+    return mask;
+}
+
+FailureRate falseShadow(const std::vector<float>& visibility,
+                        const std::vector<uint8_t>& cleanLit) {
+    FailureRate r;
+    double dark = 0.0;
+    int bad = 0;
+    for (size_t k = 0; k < visibility.size() && k < cleanLit.size(); ++k) {
+        if (!cleanLit[k]) continue;
+        ++r.count;
+        dark += 1.0 - visibility[k];
+        if (visibility[k] < FULLY_LIT_LEVEL) ++bad;
+    }
+    if (r.count > 0) {
+        r.share = static_cast<double>(bad) / r.count;
+        r.mean = dark / r.count;
+    }
+    return r;
+}
+
+FailureRate falseLight(const std::vector<float>& visibility,
+                       const std::vector<uint8_t>& cleanUmbra) {
+    FailureRate r;
+    double light = 0.0;
+    int bad = 0;
+    for (size_t k = 0; k < visibility.size() && k < cleanUmbra.size(); ++k) {
+        if (!cleanUmbra[k]) continue;
+        ++r.count;
+        light += visibility[k];
+        if (visibility[k] > LEAK_LEVEL) ++bad;
+    }
+    if (r.count > 0) {
+        r.share = static_cast<double>(bad) / r.count;
+        r.mean = light / r.count;
+    }
+    return r;
+}
+
+double quantileOf(std::vector<float>& values, double q) {
+    if (values.empty()) return 0.0;
+    size_t k = std::min(values.size() - 1, static_cast<size_t>(q * (values.size() - 1) + 0.5));
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+    return values[k];
+}
+
+namespace {
+
+double meanOf(const std::vector<float>& values) {
+    if (values.empty()) return 0.0;
+    double s = 0.0;
+    for (float v : values) s += v;
+    return s / static_cast<double>(values.size());
+}
+
+}  // namespace
+
+ShimmerStats shimmerStats(const std::vector<std::vector<float>>& frames,
+                          const std::vector<uint8_t>& compared) {
+    ShimmerStats s;
+    if (frames.size() < 2) return s;
+    std::vector<uint8_t> flickers(compared.size(), 0);
+    int comparedCount = 0, flickering = 0;
+    for (size_t k = 0; k < compared.size(); ++k) {
+        if (!compared[k]) continue;
+        ++comparedCount;
+        for (size_t t = 1; t < frames.size() && !flickers[k]; ++t) {
+            flickers[k] = std::abs(frames[t][k] - frames[t - 1][k]) > VISIBLE_CHANGE ? 1 : 0;
+        }
+        flickering += flickers[k];
+    }
+    std::vector<float> changes, flickerChanges;
+    for (size_t t = 1; t < frames.size(); ++t) {
+        for (size_t k = 0; k < compared.size(); ++k) {
+            if (!compared[k]) continue;
+            float d = std::abs(frames[t][k] - frames[t - 1][k]);
+            changes.push_back(d);
+            if (flickers[k]) flickerChanges.push_back(d);
+        }
+    }
+    s.flickerShare = comparedCount > 0 ? static_cast<double>(flickering) / comparedCount : 0.0;
+    s.mean = meanOf(changes);
+    s.flickerMean = meanOf(flickerChanges);
+    s.max = quantileOf(changes, 1.0);
+    s.p99 = quantileOf(changes, 0.99);
+    s.flickerP99 = quantileOf(flickerChanges, 0.99);
+    return s;
+}
+
+}  // namespace pcf

@@ -1,0 +1,79 @@
+// failure_measures.h: the measures of where a filter fails, shared by `bench` (bench.h) and the
+// stability sweeps (stability.h), so both split a picture's error the same way:
+//
+//   clean lit    the truth says fully lit at the pixel AND at every point of a grid spanning
+//                +-reach texels of the map around it (footprintPoints in stability.h): a filter
+//                may not darken it at all; where it does, that is false shadow (acne), a bias
+//                error, not the filter's legitimate penumbra next to a real edge.
+//   clean umbra  the same for fully shadowed: where a filter lights it, that is false light
+//                (a leak, peter panning).
+//   shimmer      |v(t) - v(t-1)| between frames whose shadow-map grid slid by a sub-texel step
+//                under a still world, over the compared pixels; and over the FLICKERING ones
+//                only (whose value changes visibly, by more than 1/512, in any frame pair).
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <optional>
+#include <vector>
+
+#include "analysis/error_metrics.h"
+#include "analysis/ground_truth.h"
+#include "scene/raycast.h"
+#include "scene/scene.h"
+
+namespace pcf {
+
+// A clean lit pixel darker than this shows false shadow; a clean umbra pixel brighter than
+// LEAK_LEVEL shows false light.
+constexpr float FULLY_LIT_LEVEL = 0.99f;
+constexpr float LEAK_LEVEL = 0.01f;
+// A change a display can show: half a step of an 8-bit channel. Smaller ones (float rounding of
+// the filter weights as the grid slides, ~1e-7) do not make a pixel flicker.
+constexpr float VISIBLE_CHANGE = 1.0f / 512.0f;
+constexpr int FOOTPRINT_GRID = 3;  // footprint test points per side
+
+// The camera's hit at each pixel centre, rows top-down like the truth; `threads` 0 = all cores.
+std::vector<std::optional<Hit>> centreHits(const Scene& scene, glm::ivec2 size, int threads);
+
+// 1 where the pixel is compared (error_metrics.h) and the truth is `wantLit` (fully lit, or
+// fully shadowed) at the pixel and over its whole footprint: +-reachTexels of a mapSize map
+// whose clip transform is shadowClip. With stride > 1 only the pixels whose x and y are both
+// multiples of it are tested (the others are 0): a share measured over them is an unbiased
+// sample at 1/stride^2 of the ray casts.
+std::vector<uint8_t> cleanPixelMask(const Scene& scene, const GroundTruth& truth,
+                                    const ErrorRegions& regions,
+                                    const std::vector<std::optional<Hit>>& hits,
+                                    const glm::mat4& shadowClip, int mapSize, float reachTexels,
+                                    bool wantLit, int threads, int stride = 1);
+
+struct FailureRate {
+    double share = 0.0;  // of the mask's pixels, those that fail
+    double mean = 0.0;   // false shadow: mean darkening 1 - v; false light: mean v
+    int count = 0;       // the mask's pixels
+};
+
+// Over a clean lit mask: the share with v < FULLY_LIT_LEVEL and the mean darkening 1 - v.
+FailureRate falseShadow(const std::vector<float>& visibility, const std::vector<uint8_t>& cleanLit);
+// Over a clean umbra mask: the share with v > LEAK_LEVEL and the mean v.
+FailureRate falseLight(const std::vector<float>& visibility,
+                       const std::vector<uint8_t>& cleanUmbra);
+
+struct ShimmerStats {
+    double mean = 0.0;          // mean |dv| over the compared pixels of every frame pair
+    double p99 = 0.0;           // its 99th percentile
+    double flickerShare = 0.0;  // share of the compared pixels that flicker
+    double flickerMean = 0.0;   // mean |dv| over the flickering pixels of every frame pair
+    double flickerP99 = 0.0;    // its 99th percentile
+    double max = 0.0;           // the largest |dv|
+};
+
+// frames: visibilities of consecutive frames (each the compared mask's size); fewer than two
+// frames give zeros.
+ShimmerStats shimmerStats(const std::vector<std::vector<float>>& frames,
+                          const std::vector<uint8_t>& compared);
+
+// The q-quantile (0..1, nearest rank) of `values` (reordered); 0 when empty.
+double quantileOf(std::vector<float>& values, double q);
+
+}  // namespace pcf
