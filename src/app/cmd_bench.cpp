@@ -44,6 +44,9 @@ constexpr const char* CSV_NAME = "bench.csv";
 constexpr const char* MD_NAME = "bench.md";
 constexpr const char* ACCURACY_CHART = "speed_vs_accuracy.png";
 constexpr const char* STABILITY_CHART = "speed_vs_stability.png";
+// RenderOptions' options for one run, which the sweep's lists replace.
+constexpr const char* SINGLE_RUN_OPTIONS[] = {"--method", "--kernel", "--map-size", "--radius",
+                                              "--rotate", "--lesson", "--step"};
 
 struct BenchCommandOptions {
     // Scene, bias and its parameters, culling, polygon offset, depth format, frame size,
@@ -364,6 +367,14 @@ Command addBenchCommand(CLI::App& app) {
     // stays off the lit faces, so the edge error measures the filter (analysis/bench.h).
     o->render.cull = "front";
     o->render.addTo(sub, DEFAULT_SCENE);
+    // The single-run options bench refuses (baseSettings) stay out of its help.
+    for (const char* single : SINGLE_RUN_OPTIONS) sub->get_option(single)->group("");
+    sub->get_option("--weights")
+        ->description(
+            "pcf-naive, pcf-gather: weightings of the N x N lookups, comma-separated: box, "
+            "binomial, gaussian (default box; each given is a run)");
+    sub->get_option("--cull")->description(
+        "faces culled in the shadow pass: front (the default here), back, none");
     sub->add_option("--methods", o->methods,
                     "method ids, comma-separated (default: all that combine with --bias)");
     sub->add_option("--kernels", o->kernels,
