@@ -3,14 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <shared_mutex>
 #include <string>
 #include <thread>
 #include <utility>
 #include <vector>
 
+#include "app/output_files.h"
+#include "render/image_io.h"
 #include "run_command.h"
 #include "virtual_display.h"
 
@@ -196,6 +200,59 @@ TEST_F(OutputSafetyTest, ViewChecksTheScreenshotBeforeReplayingKeys) {
                   "DISPLAY=" + x.display());
     expectRefused("view 1 --keys e --screenshot v.jpg", "must end in .png",
                   "DISPLAY=" + x.display());
+}
+
+// bench's last step (OutputFiles::commitStaged): the staged files move into place and the set is
+// committed under the writers' gate, so the interrupt cleanup, which takes the gate first, finds
+// either nothing moved or everything kept.
+TEST_F(OutputSafetyTest, StagedFilesMoveIntoPlaceUnderTheWriteGate) {
+    fs::path out = mDir / "out";
+    {
+        OutputFiles outputs(false);
+        outputs.addDirectory("-o", out);
+        outputs.add("-o", out / "a.txt");
+        outputs.add("-o", out / "sub/b.txt");
+        StagingDir staging(out, "test", "sub");
+        std::ofstream(staging.path() / "a.txt") << "a";
+        std::ofstream(staging.path() / "sub/b.txt") << "b";
+        std::atomic<bool> done{false};
+        std::thread committer;
+        {
+            std::unique_lock gate(outputWriteGate());  // as the interrupt cleanup holds it
+            committer = std::thread([&] {
+                outputs.commitStaged(staging.path(), out, {"a.txt", "sub/b.txt"});
+                done = true;
+            });
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+            EXPECT_FALSE(done) << "commitStaged did not wait for the gate";
+            EXPECT_FALSE(fs::exists(out / "a.txt"));
+        }
+        committer.join();
+        EXPECT_TRUE(done);
+    }
+    // Committed: the set's end keeps the files; the staging folder is gone.
+    EXPECT_EQ(testutil::readAll(out / "a.txt"), "a");
+    EXPECT_EQ(testutil::readAll(out / "sub/b.txt"), "b");
+    std::vector<std::string> left = leftovers();
+    std::sort(left.begin(), left.end());
+    EXPECT_EQ(left, (std::vector<std::string>{"out", "out/a.txt", "out/sub", "out/sub/b.txt"}));
+}
+
+// A move that fails half way throws, and the set, not committed, takes back what was moved.
+TEST_F(OutputSafetyTest, AFailedStagedMoveTakesEverythingBack) {
+    fs::path out = mDir / "out";
+    {
+        OutputFiles outputs(false);
+        outputs.addDirectory("-o", out);
+        outputs.add("-o", out / "a.txt");
+        outputs.add("-o", out / "missing.txt");
+        StagingDir staging(out, "test");
+        std::ofstream(staging.path() / "a.txt") << "a";
+        EXPECT_THROW(outputs.commitStaged(staging.path(), out, {"a.txt", "missing.txt"}),
+                     fs::filesystem_error);
+        EXPECT_TRUE(fs::exists(out / "a.txt"));  // moved before the failure
+    }
+    EXPECT_TRUE(leftovers().empty()) << leftovers().front();
 }
 
 }  // namespace
