@@ -77,6 +77,15 @@ TEST(BenchReport, TheShippedCsvParses) {
     std::fclose(f);
     std::vector<BenchRow> rows = parseBenchCsv(text, path);
     EXPECT_GE(rows.size(), 60u);  // every method, N = 3, 5, 7, four map sizes
+    // The current columns: the error split and the shimmer are there, and say what they must.
+    EXPECT_EQ(text.rfind(std::string(BENCH_CSV_HEADER) + "\n", 0), 0u);
+    for (const BenchRow& r : rows) {
+        std::string name = pointName(r.point) + " map " + std::to_string(r.point.mapSize);
+        EXPECT_GT(r.acne.count, 0) << name;
+        EXPECT_GT(r.leak.count, 0) << name;
+        EXPECT_GT(r.shimmer.flickerShare, 0.0) << name;
+        if (r.point.method == PCF_NEAREST) EXPECT_EQ(r.shimmer.flickerP99, 1.0) << name;
+    }
 }
 
 TEST(BenchReport, BadCsvNamesTheLine) {
