@@ -77,7 +77,9 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
         EXPECT_TRUE(f[14] == "0" || f[14] == "1") << line;
         bool noisy = std::stod(f[11]) > 0.1 * std::stod(f[3]) + 1e-4 ||
                      std::stod(f[13]) > 0.1 * std::stod(f[12]) + 1e-4;
-        if (noisy) EXPECT_EQ(f[14], "1") << line;
+        if (noisy) {
+            EXPECT_EQ(f[14], "1") << line;
+        }
         EXPECT_EQ(f[15], "box") << line;  // weights
         EXPECT_EQ(f[16], "0") << line;    // sigma: not gaussian
         // Shares and shimmer are in [0,1]; the clean masks hold pixels of both kinds (the
@@ -93,8 +95,12 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
         // Some pixel flickers as the grid slides, and nearest jumps all the way (0 <-> 1).
         EXPECT_GT(std::stod(f[25]), 0.0) << line;
         EXPECT_GT(std::stod(f[24]), 0.0) << line;
-        if (f[0] == "nearest") EXPECT_EQ(f[24], "1") << line;
-        if (f[0] == "pcf-gather") EXPECT_LT(std::stod(f[24]), 0.5) << line;
+        if (f[0] == "nearest") {
+            EXPECT_EQ(f[24], "1") << line;
+        }
+        if (f[0] == "pcf-gather") {
+            EXPECT_LT(std::stod(f[24]), 0.5) << line;
+        }
     }
     EXPECT_EQ(rows, points);
     EXPECT_EQ(methods.size(), 9u);

@@ -84,7 +84,9 @@ TEST(BenchReport, TheShippedCsvParses) {
         EXPECT_GT(r.acne.count, 0) << name;
         EXPECT_GT(r.leak.count, 0) << name;
         EXPECT_GT(r.shimmer.flickerShare, 0.0) << name;
-        if (r.point.method == PCF_NEAREST) EXPECT_EQ(r.shimmer.flickerP99, 1.0) << name;
+        if (r.point.method == PCF_NEAREST) {
+            EXPECT_EQ(r.shimmer.flickerP99, 1.0) << name;
+        }
     }
 }
 

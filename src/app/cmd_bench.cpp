@@ -113,8 +113,7 @@ std::vector<int> parseWeightsList(const std::string& text) {
 // depth format, frame size, sigma and precision. The single method and weights there are
 // stand-ins: bench checks its lists itself.
 RenderSettings baseSettings(const BenchCommandOptions& o) {
-    for (const char* single :
-         {"--method", "--kernel", "--map-size", "--radius", "--rotate", "--lesson", "--step"}) {
+    for (const char* single : SINGLE_RUN_OPTIONS) {
         if (o.given(single)) {
             throw UsageError(std::string(single) +
                              " does not apply to bench (use --methods, --kernels, --map-sizes, "
