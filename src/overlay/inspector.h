@@ -57,6 +57,7 @@ struct LayoutBox {
     std::string role;        // what it is: "step-text", "cell-depth", "lookup-point" ...
     float fontPx = 0.0f;     // text, numbers and labels: the pixel size drawn
     bool shortened = false;  // the text did not fit whole (elided, or paged: see the "more" mark)
+    std::string text;        // a text, number or label drawn by itself: its words (not in JSON)
 };
 
 // Everything the frame shows; the caller fills it from the lesson, the renderer and the trace.

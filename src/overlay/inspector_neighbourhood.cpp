@@ -40,6 +40,8 @@ constexpr float FY_BRACKET_GAP_PX = 5.0f;   // the fy bracket right of the cells
 constexpr float BRACKET_TICK_PX = 6.0f;     // the brackets' end ticks
 constexpr float FX_LABEL_GAP_PX = 1.0f;     // "fx" under its bracket
 constexpr float FY_LABEL_GAP_PX = 3.0f;     // "fy" right of its bracket
+constexpr float INSET_SHARE = 0.3f;         // hw8: the inset's side, this share of the width
+constexpr float INSET_GAP_PX = 6.0f;        // between the fy lane and the inset
 
 // The number block's type sizes for a number size.
 float bitFor(float number) { return std::round(number * BIT_PER_NUMBER); }
@@ -68,11 +70,23 @@ Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float
         measureText(FontFace::Mono, t.label, "j=-" + std::to_string(lastRow)).x + INDEX_GAP_PX;
     float laneH = lineHeightOf(t.label) + INDEX_LANE_PAD_PX;
     float fyW = measureText(FontFace::Mono, t.label, "fy 0.00").x + FRACTION_LANE_PAD_PX;
+    // hw8: the fractions get four decimals and their 8-bit step on a second line (the bottom
+    // lane one line taller), and a column right of the fy lane holds the sub-texel inset.
+    g.hw8 = hw8Lookup(tr);
+    float laneBottomH = laneH;
+    float insetW = 0.0f;
+    if (g.hw8) {
+        fyW = std::max(measureText(FontFace::Mono, t.label, "fy 0.0000").x,
+                       measureText(FontFace::Mono, t.label, "255/256").x) +
+              FRACTION_LANE_PAD_PX;
+        laneBottomH += lineHeightOf(t.label);
+        insetW = std::round((width - labelW - fyW) * INSET_SHARE) + INSET_GAP_PX;
+    }
     // The grid takes at most this share of the panel's height: the legend and the formula need
     // the rest.
-    float maxH = p.bottom() - margin - top - laneH * 2.0f -
+    float maxH = p.bottom() - margin - top - laneH - laneBottomH -
                  std::max(BELOW_MIN_LINES * lineHeightOf(t.number), BELOW_MIN_SHARE * p.h);
-    float side = std::max(MIN_GRID_SIDE_PX, std::min(width - labelW - fyW, maxH));
+    float side = std::max(MIN_GRID_SIDE_PX, std::min(width - labelW - fyW - insetW, maxH));
     int cellsFull = std::max(g.full.size.x, g.full.size.y);
     // Whole neighbourhood at the largest number size that fits, down to the floor; else a window
     // of it at the starting size.
@@ -132,8 +146,17 @@ Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float
     g.laneTop = {x0, y0 - laneH, gridW, laneH};
     g.laneLeft = {p.x + margin, y0, labelW, gridH};
     g.laneRight = {x0 + gridW, y0, fyW, gridH};
-    g.laneBottom = {x0, y0 + gridH, gridW, laneH};
-    g.bottom = y0 + gridH + laneH;
+    g.laneBottom = {x0, y0 + gridH, gridW, laneBottomH};
+    g.bottom = y0 + gridH + laneBottomH;
+    if (g.hw8) {
+        // Square, level with the cells, within the height the cells may take; the caption in
+        // the lane above it.
+        float insetSide = std::floor(std::min(insetW - INSET_GAP_PX, side));
+        float ix = std::round(g.laneRight.right() + INSET_GAP_PX);
+        g.inset = {ix, y0, insetSide, insetSide};
+        g.insetCaption = {ix, g.laneTop.y, insetSide, laneH};
+        g.bottom = std::max(g.bottom, g.inset.bottom() + INSET_GAP_PX);
+    }
     return g;
 }
 
@@ -447,16 +470,27 @@ void planFractions(Planner& pl, const InspectorLayout& l, const Trace& tr, const
     });
     pl.box(BoxKind::Mark, hb, panel, "fx-bracket");
     pl.box(BoxKind::Mark, vb, panel, "fy-bracket");
-    std::string fx = "fx " + fixed(tr.pos.frac.x, 2);
-    std::string fy = "fy " + fixed(tr.pos.frac.y, 2);
+    // With hw8 the float fraction gets four decimals, and under it the 8-bit one, k/256, that
+    // the texture unit lerps with (the trace's fracHw8).
+    int decimals = g.hw8 ? 4 : 2;
+    std::string fx = "fx " + fixed(tr.pos.frac.x, decimals);
+    std::string fy = "fy " + fixed(tr.pos.frac.y, decimals);
     TextStyle fst{FontFace::Mono, t.label, POINT, TextAlign::Left};
+    TextStyle qst{FontFace::Mono, t.label, HW8_POINT, TextAlign::Left};
     Rect fxs = pl.measure({0, 0}, fx, fst);
+    float rows = g.hw8 ? 2.0f : 1.0f;
     float fxX =
         std::clamp((x0 + x1) * 0.5f - fxs.w * 0.5f, g.laneBottom.x, g.laneBottom.right() - fxs.w);
-    pl.text({fxX, ly + tick + FX_LABEL_GAP_PX}, fx, fst, BoxKind::Label, panel, "fx");
-    float fyY =
-        std::clamp((y0 + y1) * 0.5f - fxs.h * 0.5f, g.laneRight.y, g.laneRight.bottom() - fxs.h);
-    pl.text({lx + tick + FY_LABEL_GAP_PX, fyY}, fy, fst, BoxKind::Label, panel, "fy");
+    Rect fxBox = pl.text({fxX, ly + tick + FX_LABEL_GAP_PX}, fx, fst, BoxKind::Label, panel, "fx");
+    float fyY = std::clamp((y0 + y1) * 0.5f - fxs.h * rows * 0.5f, g.laneRight.y,
+                           g.laneRight.bottom() - fxs.h * rows);
+    Rect fyBox = pl.text({lx + tick + FY_LABEL_GAP_PX, fyY}, fy, fst, BoxKind::Label, panel, "fy");
+    if (g.hw8) {
+        pl.text({fxBox.x, fxBox.bottom()}, hw8Steps(tr.fracHw8.x), qst, BoxKind::Label, panel,
+                "fx-hw8");
+        pl.text({fyBox.x, fyBox.bottom()}, hw8Steps(tr.fracHw8.y), qst, BoxKind::Label, panel,
+                "fy-hw8");
+    }
 }
 
 }  // namespace
@@ -474,6 +508,8 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
         legend.fraction = true;
         planFractions(pl, l, tr, g, t);
     }
+    planSubtexelInset(pl, l, tr, g, t);
+    legend.hw8 = g.hw8;
 }
 
 }  // namespace inspector_detail

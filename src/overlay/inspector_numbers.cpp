@@ -130,6 +130,7 @@ float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
     if (need.weightBar) entries.push_back({WEIGHT_BAR, "weight bar", BAR});
     entries.push_back({POINT, "lookup point", DOT});
     if (need.fraction) entries.push_back({POINT, "fx, fy: lookup point - base texel centre", BAR});
+    if (need.hw8) entries.push_back({HW8_POINT, "8-bit position (1/256 texel)", OUTLINE});
     if (need.dots) entries.push_back({ACCENT, "each lookup", DOT});
     if (need.rings) entries.push_back({ACCENT, "hardware tap", RING});
     if (need.gathers) entries.push_back({GATHER, "one gather (2 x 2)", OUTLINE});

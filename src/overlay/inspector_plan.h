@@ -80,7 +80,7 @@ struct Planner {
     }
     void box(BoxKind kind, const Rect& r, const std::string& panel, const std::string& role,
              float font = 0.0f, bool shortened = false) {
-        plan.boxes.push_back({kind, r, panel, role, font, shortened});
+        plan.boxes.push_back({kind, r, panel, role, font, shortened, {}});
     }
     void fill(const Rect& r, const Colour& c) {
         op([=](Canvas& cv) { cv.fillRect(r, c); });
@@ -101,6 +101,7 @@ struct Planner {
         glm::vec2 at = r.position();
         op([=](Canvas& cv) { cv.text(at, s, left); });
         box(kind, r, panel, role, st.pixelSize, shortened);
+        plan.boxes.back().text = s;
         return r;
     }
 };
@@ -153,8 +154,21 @@ struct Grid {
     float pad = 0.0f;  // inset of the numbers from the cell's edge (gather outlines live there)
     float bar = 0.0f;  // weight bar height
     Rect laneTop, laneLeft, laneRight, laneBottom;
-    float bottom = 0.0f;  // below the bottom lane
+    float bottom = 0.0f;  // below the bottom lane (and the sub-texel inset)
+    // hw8 (the texture unit keeps 8 fractional bits): the fx and fy labels add the 8-bit
+    // fraction k/256 on a second line, and the sub-texel inset, right of the fy lane, magnifies
+    // the 1/256 steps around the lookup point. Empty when the trace is not hw8.
+    bool hw8 = false;
+    Rect inset;
+    Rect insetCaption;  // the lane above the inset
 };
+
+// True when the lookup's hardware taps or gathers ran with 8 fractional bits (issue 10).
+inline bool hw8Lookup(const Trace& tr) {
+    return tr.usesTextureUnit && tr.params.precision == PCF_PRECISION_HW8;
+}
+// The 8-bit fraction as the labels print it, "k/256" with k = fracHw8 * 256 (0..255).
+std::string hw8Steps(float fracHw8);
 
 // Everything the inspector panel places for a trace, computed once: the plan, neighbourhoodView
 // and neighbourhoodArea all read it. highlight: the fetch (0-based) the step talks about; a
@@ -179,12 +193,22 @@ struct LegendNeeds {
     bool highlight = false, weightBar = false, dots = false, rings = false, gathers = false,
          fraction = false, baseCentre = false, padding = false, footprint = false;
     bool clamped = false;  // a texel read clamped to the edge (any finite uv)
+    bool hw8 = false;      // the 8-bit position (the sub-texel inset)
 };
 
 // The cells, their numbers, the fetch marks and the fx/fy brackets; counts the cells whose
 // numbers the marks left no room for.
 void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const Grid& g,
                const TypeSizes& t, LegendNeeds& legend, int& hiddenCells);
+
+// ---- inspector_subtexel.cpp: the hw8 inset. ----
+
+// The 1/256-texel lattice around the lookup point, magnified in g.inset: the float position,
+// the 8-bit one it rounds to and the square of positions that round there. Nothing unless g.hw8.
+void planSubtexelInset(Planner& pl, const InspectorLayout& l, const Trace& tr, const Grid& g,
+                       const TypeSizes& t);
+// The colour of the 8-bit position (inset, fx/fy labels, legend).
+constexpr Colour HW8_POINT{0.72f, 1.0f, 0.28f, 1.0f};
 
 // ---- One function per panel (the files named at the top). ----
 
