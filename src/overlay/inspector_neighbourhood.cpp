@@ -508,7 +508,7 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
         legend.fraction = true;
         planFractions(pl, l, tr, g, t);
     }
-    planSubtexelInset(pl, l, tr, g, t);
+    planSubtexelInset(pl, l, tr, g, t, m.highlightFetch);
     legend.hw8 = g.hw8;
 }
 

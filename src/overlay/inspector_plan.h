@@ -203,10 +203,11 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
 
 // ---- inspector_subtexel.cpp: the hw8 inset. ----
 
-// The 1/256-texel lattice around the lookup point, magnified in g.inset: the float position,
+// The 1/256-texel lattice around a hardware tap's or gather's position (the highlighted fetch's,
+// else the one nearest the lookup point), magnified in g.inset: the float position,
 // the 8-bit one it rounds to and the square of positions that round there. Nothing unless g.hw8.
 void planSubtexelInset(Planner& pl, const InspectorLayout& l, const Trace& tr, const Grid& g,
-                       const TypeSizes& t);
+                       const TypeSizes& t, int highlight);
 // The colour of the 8-bit position (inset, fx/fy labels, legend).
 constexpr Colour HW8_POINT{0.72f, 1.0f, 0.28f, 1.0f};
 

@@ -2,8 +2,8 @@
 // fractional bits (Direct3D 12 functional spec, D3D12_SUBTEXEL_FRACTIONAL_BIT_COUNT = 8; Inigo
 // Quilez, "hardware interpolation", 2008: 24.8 fixed point) can only stand on a lattice of
 // 1/256 texel. At the cells' scale (a texel is 100 to 300 px) one step is under a pixel, so the
-// inset magnifies a few steps around the lookup point: the lattice, the float position, and the
-// lattice point it rounds to, q = floor(p * 256 + 0.5) / 256 (pcfQuantiseTexelPos, the kernel's
+// inset magnifies a few steps around the position a fetch hands the unit (unitPosition): the
+// lattice, the float position, and the lattice point it rounds to, q = floor(p * 256 + 0.5) / 256 (pcfQuantiseTexelPos, the kernel's
 // own rounding), with the square of positions that round to q.
 #include "overlay/inspector_plan.h"
 
@@ -23,6 +23,32 @@ constexpr Colour LATTICE{0.66f, 0.69f, 0.76f, 0.45f};
 constexpr Colour TEXEL_EDGE{0.95f, 0.95f, 0.98f, 0.9f};   // a lattice line on a texel border
 constexpr Colour ROUNDS_HERE{0.72f, 1.0f, 0.28f, 0.22f};  // positions that round to q
 
+// The texel position the texture unit rounds, as the inset shows it: the highlighted fetch's when
+// it is a hardware tap or a gather, else the tap or gather nearest the lookup point (hw2x2's
+// one tap is the lookup point itself; pcf-gather's gathers sit on texel corners).
+vec2 unitPosition(const Trace& tr, int highlight) {
+    vec2 size(tr.mapSize);
+    auto isUnit = [](const FetchRecord& f) {
+        return f.kind == PCF_FETCH_HW || f.kind == PCF_FETCH_GATHER;
+    };
+    if (highlight >= 0 && highlight < static_cast<int>(tr.fetches.size()) &&
+        isUnit(tr.fetches[static_cast<size_t>(highlight)])) {
+        return tr.fetches[static_cast<size_t>(highlight)].uv * size - vec2(0.5f);
+    }
+    vec2 best = tr.pos.p;
+    float bestDist = 1e30f;
+    for (const FetchRecord& f : tr.fetches) {
+        if (!isUnit(f)) continue;
+        vec2 p = f.uv * size - vec2(0.5f);
+        float d = glm::length(p - tr.pos.p);
+        if (d < bestDist) {
+            bestDist = d;
+            best = p;
+        }
+    }
+    return best;
+}
+
 }  // namespace
 
 std::string hw8Steps(float fracHw8) {
@@ -32,13 +58,14 @@ std::string hw8Steps(float fracHw8) {
 }
 
 void planSubtexelInset(Planner& pl, const InspectorLayout& l, const Trace& tr, const Grid& g,
-                       const TypeSizes& t) {
+                       const TypeSizes& t, int highlight) {
     if (!g.hw8 || g.inset.empty()) return;
     const std::string panel = "inspector";
     const Rect box = g.inset;
     // Lattice coordinates: texel position * 256. The 8-bit position sits in the inset's middle.
-    glm::vec2 s = tr.pos.p * PCF_SUBTEXEL_STEPS;
-    glm::vec2 q = pcfQuantiseTexelPos(tr.pos.p) * PCF_SUBTEXEL_STEPS;
+    vec2 unit = unitPosition(tr, highlight);
+    glm::vec2 s = unit * PCF_SUBTEXEL_STEPS;
+    glm::vec2 q = pcfQuantiseTexelPos(unit) * PCF_SUBTEXEL_STEPS;
     glm::vec2 origin = q - glm::vec2(static_cast<float>(INSET_STEPS / 2));
     float step = box.w / static_cast<float>(INSET_STEPS);
     auto at = [&](glm::vec2 lattice) {
