@@ -3,8 +3,9 @@
 // Quilez, "hardware interpolation", 2008: 24.8 fixed point) can only stand on a lattice of
 // 1/256 texel. At the cells' scale (a texel is 100 to 300 px) one step is under a pixel, so the
 // inset magnifies a few steps around the position a fetch hands the unit (unitPosition): the
-// lattice, the float position, and the lattice point it rounds to, q = floor(p * 256 + 0.5) / 256 (pcfQuantiseTexelPos, the kernel's
-// own rounding), with the square of positions that round to q.
+// lattice, the float position, and the lattice point it rounds to,
+//   q = floor(p * 256 + 0.5) / 256        (pcfQuantiseTexelPos, the kernel's own rounding)
+// with the square of positions that round to q.
 #include "overlay/inspector_plan.h"
 
 namespace pcf::inspector_detail {
