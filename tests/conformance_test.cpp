@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <random>
 
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "render/image_io.h"
 #include "run_command.h"
@@ -93,6 +94,66 @@ TEST(Conformance, EnvelopeOpensOnlyWhereTheTextureUnitHasFreedom) {
         visibilityEnvelope(map, vec2(0.1f, 0.5f), 0.9f + 1e-8f, makeParams(PCF_NEAREST));
     EXPECT_EQ(tie.lo, 0.0f);
     EXPECT_EQ(tie.hi, 1.0f);
+}
+
+// Under every bias mode the envelope holds the kernel's own result (each tap with its plane's
+// ref, soft fractions, the interpolated comparison), and the receiver plane's per-tap refs move
+// it: a steep plane and a flat one give different envelopes for the same lookup.
+TEST(Conformance, EnvelopeUnderEveryBiasModeHoldsTheKernelsResult) {
+    std::mt19937 rng(33);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::uniform_real_distribution<float> slope(-2.0f, 2.0f);
+    for (int bits : {0, 16, 24}) {
+        ShadowMap map = randomMap(29, 31, 8, bits);
+        for (int mode = 0; mode < PCF_BIAS_COUNT; ++mode) {
+            for (PcfParams prm : cases()) {
+                if (validateBias(mode, prm.method)) continue;
+                for (int k = 0; k < 300; ++k) {
+                    vec2 uv(u(rng), u(rng));
+                    float ref = 0.25f + u(rng);
+                    PcfBias b(mode, vec2(slope(rng), slope(rng)), 40.0f);
+                    VisibilityEnvelope env = visibilityEnvelope(map, uv, ref, prm, b);
+                    float v = filterVisibility(map, uv, ref, prm, b);
+                    EXPECT_TRUE(env.contains(v))
+                        << biasName(mode) << " " << methodInfo(prm.method).name << " " << v << " ["
+                        << env.lo << ", " << env.hi << "] bits " << bits;
+                }
+            }
+        }
+    }
+    // A receiver plane rising by 0.5 per uv unit across a step edge: the taps right of the
+    // lookup compare against a deeper ref than the lookup's own.
+    ShadowMap edge(8, 8, 0.51f);
+    for (int j = 0; j < 8; ++j) {
+        for (int i = 4; i < 8; ++i) edge.setDepth(i, j, 0.53f);
+    }
+    vec2 uv((3.5f + 0.5f) / 8.0f, 0.5f);
+    PcfParams prm = makeParams(PCF_BILINEAR2X2);
+    VisibilityEnvelope flat =
+        visibilityEnvelope(edge, uv, 0.5f, prm, PcfBias(PCF_BIAS_RECEIVER_PLANE, vec2(0.0f), 0));
+    VisibilityEnvelope steep = visibilityEnvelope(
+        edge, uv, 0.5f, prm, PcfBias(PCF_BIAS_RECEIVER_PLANE, vec2(0.5f, 0.0f), 0));
+    EXPECT_NEAR(flat.lo, 1.0f, 1e-6f);   // ref 0.5 < every depth
+    EXPECT_NEAR(steep.hi, 0.5f, 1e-6f);  // the right column's ref 0.5 + 0.5/8 > 0.53
+}
+
+// `render --raw` records the bias mode, and verify repeats each pixel under it: a receiver-plane
+// frame (every tap its own ref, from dzduv.exr) passes in every depth format.
+TEST(Conformance, VerifyRepeatsTheReceiverPlaneOfEveryPixel) {
+    std::filesystem::path dir = makeTempDir("verify-plane");
+    for (const char* format : {"16", "24", "32f"}) {
+        std::string raw = (dir / format).string();
+        auto r = runPcfscope(
+            "render --scene grazing --method pcf-gather --kernel 3 --bias receiver-plane "
+            "--map-size 128 --depth-format " +
+            std::string(format) + " --size 160x90 --raw " + raw);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        auto v = runPcfscope("verify " + raw);
+        EXPECT_EQ(v.exitCode, 0) << format << ": " << v.out << v.err;
+        EXPECT_NE(v.out.find("bias receiver-plane"), std::string::npos) << v.out;
+        EXPECT_NE(v.out.find("(100.0000 %)"), std::string::npos) << format << ": " << v.out;
+    }
+    std::filesystem::remove_all(dir);
 }
 
 TEST(Conformance, VerifyPassesOnTheRendererAndCatchesAWrongPixel) {

@@ -7,12 +7,12 @@
 #include <cstdio>
 #include <random>
 
-#include "kernel/bias.h"
 #include "analysis/conformance.h"
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/pcf.h"
-#include "render/gl_context.h"
 #include "render/depth_readback.h"
+#include "render/gl_context.h"
 #include "render/gpu_lookup.h"
 #include "render/gpu_timer.h"
 #include "render/scene_renderer.h"
@@ -24,7 +24,7 @@ namespace {
 constexpr float PARITY_TOLERANCE = 1e-5f;
 
 class GpuParity : public ::testing::Test {
-protected:
+  protected:
     static void SetUpTestSuite() {
         sContext = createHeadlessContext();
         const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -141,8 +141,8 @@ TEST_F(GpuParity, GatherComponentOrderTapByTap) {
                 std::vector<float> got = gpu.run(map, lookups, 2, makeParams(method, 1), false);
                 EXPECT_NEAR(got[0], weights[dj][di], 1e-5f)
                     << methodInfo(method).name << " lit texel " << di << "," << dj;
-                EXPECT_NEAR(filterVisibility(map, uv, 0.5f, makeParams(method, 1)),
-                            weights[dj][di], 1e-6f);
+                EXPECT_NEAR(filterVisibility(map, uv, 0.5f, makeParams(method, 1)), weights[dj][di],
+                            1e-6f);
             }
         }
     }
@@ -244,10 +244,11 @@ TEST_F(GpuParity, EveryFormatAndOutOfRangeRefsMatchTheCpuKernel) {
                     for (size_t k = 0; k < lookups.size(); ++k) {
                         a.add(stored, glm::vec2(lookups[k]), lookups[k].z, prm, got[k], sSoftware);
                     }
-                    a.expectOk(sSoftware, describe(prm) + " w" + std::to_string(prm.weights) +
-                                              " " + std::string(precisionName(precision)) + " " +
+                    a.expectOk(sSoftware, describe(prm) + " w" + std::to_string(prm.weights) + " " +
+                                              std::string(precisionName(precision)) + " " +
                                               std::to_string(bits) + "-bit " +
-                                              std::to_string(size.x) + "x" + std::to_string(size.y));
+                                              std::to_string(size.x) + "x" +
+                                              std::to_string(size.y));
                 }
             }
         }
@@ -327,8 +328,8 @@ TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
                         if (vis[k] < 0.5f) ++shadowed;
                     }
                 }
-                std::string what = std::string(preset) + " map " + std::to_string(mapSize) +
-                                   " " + describe(prm);
+                std::string what =
+                    std::string(preset) + " map " + std::to_string(mapSize) + " " + describe(prm);
                 a.expectOk(sSoftware, what);
                 EXPECT_GT(receivers, s.frameSize.x * s.frameSize.y / 4) << what;
                 EXPECT_GT(shadowed, 50) << what;  // there is a shadow to agree about
@@ -397,47 +398,57 @@ TEST_F(GpuParity, BiasModesOnRandomLookupsMatchTheCpuKernel) {
 // Every bias mode rendered: the CPU kernel, run on the GPU's own light-space target (u, v, ref
 // after the per-lookup bias) and receiver target (the dz/duv the shader derived), gives the
 // visibility the shader gave, for every method the mode combines with.
+// 32F with every method; the fixed-point formats (their D_ref clamp and read-back map) with one
+// method of each fetch kind, so that every bias mode x format pair is rendered.
 TEST_F(GpuParity, BiasModesRenderedMatchTheCpuKernelOnTheGpusOwnTargets) {
     Scene scene = *presetScene("grazing");
     SceneRenderer renderer(scene);
     for (int mode = 0; mode < PCF_BIAS_COUNT; ++mode) {
         float worstMode = 0.0f;
-        for (const PcfParams& prm : parityCases({3})) {
-            if (validateBias(mode, prm.method)) continue;
-            if (prm.method == PCF_TENT && prm.kernel != 5) continue;
-            RenderSettings s;
-            s.method = prm.method;
-            s.kernel = prm.kernel;
-            s.radius = prm.radius;
-            s.bias = static_cast<BiasMode>(mode);
-            s.mapSize = 256;
-            s.frameSize = {200, 112};
-            renderer.render(s);
-            ShadowMap map = renderer.readShadowMap();
-            std::vector<float> ls = renderer.readLightSpace();
-            std::vector<float> rc = renderer.readReceiver();
-            std::vector<float> vis = renderer.readVisibility();
-            PcfBias bias = s.biasParams().kernelBias();
-            int receivers = 0;
-            int planes = 0;
-            float worst = 0.0f;
-            for (size_t k = 0; k < vis.size(); ++k) {
-                if (ls[4 * k + 3] != 1.0f) continue;
-                ++receivers;
-                PcfBias b = bias;
-                b.dzduv = glm::vec2(rc[4 * k], rc[4 * k + 1]);
-                if (b.dzduv != glm::vec2(0.0f)) ++planes;
-                float cpu = filterVisibility(map, glm::vec2(ls[4 * k], ls[4 * k + 1]),
-                                             ls[4 * k + 2], s.pcfParams(), b);
-                worst = std::max(worst, std::fabs(cpu - vis[k]));
+        for (DepthFormat format : {DepthFormat::D32F, DepthFormat::D16, DepthFormat::D24}) {
+            for (const PcfParams& prm : parityCases({3})) {
+                if (validateBias(mode, prm.method)) continue;
+                if (prm.method == PCF_TENT && prm.kernel != 5) continue;
+                if (format != DepthFormat::D32F && prm.method != PCF_NEAREST &&
+                    prm.method != PCF_BILINEAR2X2 && prm.method != PCF_HW2X2 &&
+                    prm.method != PCF_GATHER && prm.method != PCF_TENT)
+                    continue;
+                RenderSettings s;
+                s.depthFormat = format;
+                s.method = prm.method;
+                s.kernel = prm.kernel;
+                s.radius = prm.radius;
+                s.bias = static_cast<BiasMode>(mode);
+                s.mapSize = 256;
+                s.frameSize = {200, 112};
+                renderer.render(s);
+                ShadowMap map = renderer.readShadowMap();
+                std::vector<float> ls = renderer.readLightSpace();
+                std::vector<float> rc = renderer.readReceiver();
+                std::vector<float> vis = renderer.readVisibility();
+                PcfBias bias = s.biasParams().kernelBias();
+                int receivers = 0;
+                int planes = 0;
+                float worst = 0.0f;
+                for (size_t k = 0; k < vis.size(); ++k) {
+                    if (ls[4 * k + 3] != 1.0f) continue;
+                    ++receivers;
+                    PcfBias b = bias;
+                    b.dzduv = glm::vec2(rc[4 * k], rc[4 * k + 1]);
+                    if (b.dzduv != glm::vec2(0.0f)) ++planes;
+                    float cpu = filterVisibility(map, glm::vec2(ls[4 * k], ls[4 * k + 1]),
+                                                 ls[4 * k + 2], s.pcfParams(), b);
+                    worst = std::max(worst, std::fabs(cpu - vis[k]));
+                }
+                std::string what = std::string(biasName(mode)) + " " + describe(prm) + " " +
+                                   std::string(depthFormatName(format));
+                EXPECT_LE(worst, PARITY_TOLERANCE) << what;
+                EXPECT_GT(receivers, s.frameSize.x * s.frameSize.y / 4) << what;
+                EXPECT_GT(planes, receivers / 2) << what;  // the shader wrote its receiver planes
+                worstMode = std::max(worstMode, worst);
             }
-            std::string what = std::string(biasName(mode)) + " " + describe(prm);
-            EXPECT_LE(worst, PARITY_TOLERANCE) << what;
-            EXPECT_GT(receivers, s.frameSize.x * s.frameSize.y / 4) << what;
-            EXPECT_GT(planes, receivers / 2) << what;  // the shader wrote its receiver planes
-            worstMode = std::max(worstMode, worst);
         }
-        std::printf("parity rendered grazing, bias %s: max |GPU - CPU| = %g\n",
+        std::printf("parity rendered grazing, bias %s, formats 32f/16/24: max |GPU - CPU| = %g\n",
                     std::string(biasName(mode)).c_str(), static_cast<double>(worstMode));
     }
 }

@@ -237,6 +237,13 @@ const std::map<std::string, Claims>& lessonClaims() {
                        std::fabs(t.fracHw8.x - t.pos.frac.x) <= 1.0f / 512.0f &&
                        t.visibility == t.visibilityHw8;
             }}},
+          // The inset's step: the same tap, rounded to a different step than the float one.
+          {bits("1010"),
+           {"hw8 moves the tap: a visibility other than the float one",
+            [](const Trace& t) {
+                return t.usesTextureUnit && t.visibility == t.visibilityHw8 &&
+                       t.visibilityHw8 != t.visibilityExact;
+            }}},
           {{"inside a magnified lerp",
             [](const Trace& t) { return t.visibility > 0.05f && t.visibility < 0.95f; }}},
           {penumbra(),

@@ -29,6 +29,14 @@ BitRange compareRange(const ShadowMap& map, ivec2 texel, float ref, float eps) {
     return {lit, lit};
 }
 
+// The soft comparison of one texel (bias soft): shader arithmetic, one value.
+BitRange softRange(const ShadowMap& map, ivec2 texel, float ref, const PcfBias& bias) {
+    ivec2 t = pcfClampTexel(texel, map.size());
+    float r = map.isFixedPoint() ? std::clamp(ref, 0.0f, 1.0f) : ref;
+    float lit = pcfCompareBiased(map.depth(t.x, t.y), r, bias);
+    return {lit, lit};
+}
+
 float bilinear(float b00, float b10, float b01, float b11, vec2 f) {
     return glm::mix(glm::mix(b00, b10, f.x), glm::mix(b01, b11, f.x), f.y);
 }
@@ -75,12 +83,23 @@ VisibilityEnvelope hwTapEnvelope(const ShadowMap& map, vec2 uv, float ref,
 
 VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
                                       const PcfParams& prm, const ConformancePrecision& prec) {
+    return visibilityEnvelope(map, uv, ref, prm, PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f),
+                              prec);
+}
+
+VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
+                                      const PcfParams& prm, const PcfBias& bias,
+                                      const ConformancePrecision& prec) {
     float eps = std::ldexp(1.0f, -referenceBitsFor(map, prec));
     float e = std::ldexp(1.0f, -prec.subTexelBits);
     PcfParams exact = prm;
     exact.precision = PCF_PRECISION_EXACT;
     Recording rec;
-    filterRecorded(map, uv, ref, exact, rec);
+    filterRecorded(map, uv, ref, exact, bias, rec);
+    // Soft and interpolated comparisons are shader arithmetic on fetched texels: their recorded
+    // values are what any GPU computes, but for float rounding (a continuous ramp, or one
+    // comparison against a lerped depth that the reference tolerance covers).
+    bool shaderCompare = bias.mode == PCF_BIAS_SOFT || bias.mode == PCF_BIAS_INTERPOLATED;
     double lo = 0.0;
     double hi = 0.0;
     for (size_t f = 0; f < rec.fetches.size(); ++f) {
@@ -112,7 +131,11 @@ VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
                     double sl = 0.0;
                     double sh = 0.0;
                     for (size_t c = 0; c < 4 && c < taps.size(); ++c) {
-                        BitRange r = compareRange(map, base + order[c], tapRef, eps);
+                        // Soft bias gathers raw depths and compares in the shader ("PCF Shadow
+                        // Acne 2"): a ramp, not a bit, whichever block the unit picks.
+                        BitRange r = bias.mode == PCF_BIAS_SOFT
+                                         ? softRange(map, base + order[c], tapRef, bias)
+                                         : compareRange(map, base + order[c], tapRef, eps);
                         sl += taps[c].weight * r.lo;
                         sh += taps[c].weight * r.hi;
                     }
@@ -123,9 +146,23 @@ VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
             lo += glo;
             hi += ghi;
         } else {
-            // Texel fetches and shader arithmetic: exact but for near-equal comparisons.
+            // Texel fetches and shader arithmetic: exact but for near-equal comparisons. The
+            // interpolated mode compares once, against the lerp of the fetch's depths: a lerped
+            // depth within the tolerance of ref may go either way.
+            bool uncertainLerp = false;
+            if (bias.mode == PCF_BIAS_INTERPOLATED) {
+                double wsum = 0.0;
+                double dsum = 0.0;
+                for (const TapRecord& t : taps) {
+                    wsum += t.weight;
+                    dsum += static_cast<double>(t.weight) * t.depth;
+                }
+                uncertainLerp = wsum > 0.0 && std::fabs(dsum / wsum - taps.front().ref) <= 2 * eps;
+            }
             for (const TapRecord& t : taps) {
-                BitRange r = compareRange(map, t.texel, t.ref, eps);
+                BitRange r = uncertainLerp   ? BitRange{0.0f, 1.0f}
+                             : shaderCompare ? BitRange{t.lit, t.lit}
+                                             : compareRange(map, t.texel, t.ref, eps);
                 lo += t.weight * r.lo;
                 hi += t.weight * r.hi;
             }

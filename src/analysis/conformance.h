@@ -41,6 +41,12 @@ struct VisibilityEnvelope {
 // Always contains the exact CPU result (precision `exact`) and the hw8 one.
 VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
                                       const PcfParams& prm, const ConformancePrecision& prec = {});
+// The same under a bias mode that acts per tap (receiver-plane: each tap's own ref from the
+// plane; soft: fractional comparisons; interpolated: one comparison against the bilinear depth),
+// as pcfFilter(map, uv, ref, prm, bias) computes it.
+VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
+                                      const PcfParams& prm, const PcfBias& bias,
+                                      const ConformancePrecision& prec = {});
 
 // The interval of one hardware comparison tap at uv (bilinear of the four bits).
 VisibilityEnvelope hwTapEnvelope(const ShadowMap& map, vec2 uv, float ref,

@@ -19,18 +19,22 @@ namespace pcf {
 namespace {
 
 // What `pcfscope verify` needs to repeat the lookups of a --raw folder: the method and its
-// parameters, the map's format (fixed-point clamps D_ref) and the precision model.
+// parameters, the map's format (fixed-point clamps D_ref), the precision model, and the bias
+// mode (receiver-plane, soft and interpolated change each tap's comparison; dzduv.exr holds the
+// receiver planes).
 std::string rawSettingsJson(const RenderSettings& s) {
     char buf[512];
     std::snprintf(buf, sizeof buf,
                   "{\"method\":\"%s\",\"kernel\":%d,\"radius\":%.9g,\"rotate\":%s,"
                   "\"weights\":\"%s\",\"sigma\":%.9g,\"precision\":\"%s\","
-                  "\"depth_format\":\"%s\",\"map_size\":%d}\n",
+                  "\"depth_format\":\"%s\",\"map_size\":%d,\"bias\":\"%s\","
+                  "\"soft_scale\":%.9g}\n",
                   std::string(methodInfo(s.method).name).c_str(), s.kernel,
                   static_cast<double>(s.radius), s.rotatePerPixel ? "true" : "false",
                   std::string(weightsName(s.weights)).c_str(), static_cast<double>(s.sigma),
                   std::string(precisionName(s.precision)).c_str(),
-                  std::string(depthFormatName(s.depthFormat)).c_str(), s.mapSize);
+                  std::string(depthFormatName(s.depthFormat)).c_str(), s.mapSize,
+                  std::string(biasModeName(s.bias)).c_str(), static_cast<double>(s.softScale));
     return buf;
 }
 

@@ -92,6 +92,17 @@ int runVerify(const VerifyOptions& o) {
     prm.sigma = jsonNumber(json, "sigma", where);
     prm.precision = *precision;
     bool rotate = jsonField(json, "rotate", where) == "true";
+    // The bias mode: folders written before render.json had it hold none of the per-tap modes.
+    BiasMode biasMode = BiasMode::Constant;
+    float softScale = 0.0f;
+    if (json.find("\"bias\"") != std::string::npos) {
+        std::string name = jsonField(json, "bias", where);
+        std::optional<BiasMode> mode = biasModeFromName(name);
+        if (!mode) throw UsageError("render.json: unknown bias '" + name + "' (" + where + ")");
+        biasMode = *mode;
+        softScale = jsonNumber(json, "soft_scale", where);
+    }
+    PcfBias bias(static_cast<int>(biasMode), vec2(0.0f), softScale);
     if (auto why = validateParams(prm))
         throw UsageError("render.json: " + *why + " (" + where + ")");
 
@@ -106,6 +117,14 @@ int runVerify(const VerifyOptions& o) {
     FloatImage vis = readImage(dir / "visibility.exr", 1);
     if (ls.width != vis.width || ls.height != vis.height) {
         throw UsageError("lightspace.exr and visibility.exr differ in size (" + dir.string() + ")");
+    }
+    // Receiver-plane bias: each pixel's plane, dz/du and dz/dv, as the shader derived them.
+    FloatImage planes;
+    if (bias.mode == PCF_BIAS_RECEIVER_PLANE) {
+        planes = readImage(dir / "dzduv.exr", 4);
+        if (planes.width != ls.width || planes.height != ls.height) {
+            throw UsageError("dzduv.exr and lightspace.exr differ in size (" + dir.string() + ")");
+        }
     }
 
     ConformancePrecision prec{o.subTexelBits, o.weightBits, o.referenceBits};
@@ -129,7 +148,9 @@ int runVerify(const VerifyOptions& o) {
             PcfParams p = prm;
             // Rows are top-down; gl_FragCoord counts from the bottom.
             if (rotate) p.rotation = pcfPixelRotation(glm::ivec2(x, ls.height - 1 - y));
-            VisibilityEnvelope env = visibilityEnvelope(map, uv, ref, p, prec);
+            PcfBias b = bias;
+            if (!planes.data.empty()) b.dzduv = vec2(planes.data[4 * k], planes.data[4 * k + 1]);
+            VisibilityEnvelope env = visibilityEnvelope(map, uv, ref, p, b, prec);
             float v = vis.data[k];
             if (env.contains(v)) {
                 ++inside;
@@ -151,10 +172,10 @@ int runVerify(const VerifyOptions& o) {
     std::string refBits =
         o.referenceBits > 0 ? std::to_string(o.referenceBits) : std::string("format's");
     std::printf(
-        "verify %s: %s, map %dx%d %s, precision %s; envelope: %d sub-texel bits, "
+        "verify %s: %s, bias %s, map %dx%d %s, precision %s; envelope: %d sub-texel bits, "
         "%d weight bits, %s reference bits\n",
-        dir.string().c_str(), what.c_str(), map.width(), map.height(),
-        std::string(depthFormatName(*format)).c_str(),
+        dir.string().c_str(), what.c_str(), std::string(biasModeName(biasMode)).c_str(),
+        map.width(), map.height(), std::string(depthFormatName(*format)).c_str(),
         std::string(precisionName(prm.precision)).c_str(), o.subTexelBits, o.weightBits,
         refBits.c_str());
     std::printf("%ld of %ld receiver pixels inside the envelope (%.4f %%)\n", inside, receivers,

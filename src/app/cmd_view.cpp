@@ -94,6 +94,12 @@ Command addViewCommand(CLI::App& app) {
     sub->add_flag("-f,--force", o->force, "let --screenshot overwrite an existing file");
     sub->add_option("--bench-frames", o->benchFrames,
                     "time this many frames (after --keys), print the median frame time, quit");
+    // The keys, from the table the help overlay (H) draws (overlay/inspector_keys.cpp).
+    std::string keys = "\nKeys in the window:\n";
+    for (const auto& [key, what] : viewerKeys()) {
+        keys += "  " + key + std::string(key.size() < 18 ? 18 - key.size() : 1, ' ') + what + "\n";
+    }
+    sub->footer(keys);
     return {sub, [o] { return runView(*o); }};
 }
 

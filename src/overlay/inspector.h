@@ -57,6 +57,7 @@ struct LayoutBox {
     std::string role;        // what it is: "step-text", "cell-depth", "lookup-point" ...
     float fontPx = 0.0f;     // text, numbers and labels: the pixel size drawn
     bool shortened = false;  // the text did not fit whole (elided, or paged: see the "more" mark)
+    std::string text;        // a text, number or label drawn by itself: its words (not in JSON)
 };
 
 // Everything the frame shows; the caller fills it from the lesson, the renderer and the trace.
@@ -135,7 +136,8 @@ Rect neighbourhoodArea(const InspectorLayout& layout, const Trace& trace, bool p
 // The rect of texel (i, j) in the view of `n` inside `area` (rows j down, as stored).
 Rect texelCellRect(const Neighbourhood& n, const Rect& area, glm::ivec2 texel);
 
-// The key list the help overlay shows (also `pcfscope view --help`'s epilogue).
+// The viewer's keys, one table (inspector_keys.cpp) for the help overlay (H) and `pcfscope view
+// --help`'s footer; Viewer::press (app/viewer.cpp) acts on them: a key added there goes here.
 const std::vector<std::pair<std::string, std::string>>& viewerKeys();
 
 // Colours of the comparison bits, shared with tests that look for them in exported frames.

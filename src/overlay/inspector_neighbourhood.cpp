@@ -1,0 +1,547 @@
+// inspector_neighbourhood.cpp: the magnified texel neighbourhood: where its cells go (the
+// inspector panel's one layout, panelLayout) and what each cell shows (fill, bit, depth, weight,
+// the fetches' marks, the lookup point, the fx and fy brackets).
+#include "overlay/inspector_plan.h"
+
+namespace pcf {
+
+namespace inspector_detail {
+
+namespace {
+
+// The neighbourhood's proportions, named once. Sizes scale with the numbers' type size or the
+// cell; the _PX ones are pixels at any size.
+constexpr float BIT_PER_NUMBER = 1.5f;         // the comparison bit's type size / the numbers'
+constexpr float BAR_MIN_PX = 3.0f;             // the weight bar's height: at least this,
+constexpr float BAR_PER_NUMBER = 0.25f;        // else this share of the numbers' size
+constexpr float OUTLINE_EXTRA_PX = 1.0f;       // a gather outline is the line width plus this
+constexpr float PAD_GAP_PX = 2.0f;             // numbers keep this far inside the gather outline
+constexpr float MARK_ROOM = 1.08f;             // a cell is this much larger than its number block
+constexpr float INDEX_GAP_PX = 8.0f;           // the "j=" lane: the widest label plus this
+constexpr float INDEX_LANE_PAD_PX = 12.0f;     // the "i=" lane: a label line plus this
+constexpr float FRACTION_LANE_PAD_PX = 16.0f;  // the fy lane: "fy 0.00" plus this
+constexpr float MIN_GRID_SIDE_PX = 40.0f;      // the cells' square, however small the panel
+constexpr float BELOW_MIN_LINES = 4.0f;        // room kept under the cells for the legend and the
+constexpr float BELOW_MIN_SHARE = 0.22f;  // formula: these many lines, or this share of the panel
+constexpr float GROWN_PER_CELL = 0.12f;   // big cells: numbers up to this share of the cell,
+constexpr float GROWN_MAX_PER_NUMBER = 1.8f;  // and at most this times the frame's number size
+constexpr float INDEX_TOP_GAP_PX = 4.0f;      // "i=" labels below the lane's top
+constexpr float INDEX_RIGHT_GAP_PX = 6.0f;    // "j=" labels left of the cells
+constexpr float DOT_MIN_PX = 3.0f, DOT_PER_CELL = 0.04f;      // a lookup's dot radius
+constexpr float RING_MIN_PX = 5.0f, RING_PER_CELL = 0.07f;    // a hardware tap's ring radius
+constexpr float RING_CORE_MIN_PX = 2.0f, RING_CORE = 0.4f;    // the dot inside the ring
+constexpr float POINT_MIN_PX = 4.0f, POINT_PER_CELL = 0.05f;  // the lookup point's radius
+constexpr float POINT_OUTLINE_PX = 1.5f;                      // its dark outline
+constexpr float HIGHLIGHT_EXTRA_PX = 2.0f;  // the highlighted fetch's mark grows by this
+constexpr float MARK_CLEARANCE_PX = 2.0f;   // numbers keep this far from any mark
+constexpr float BRACKET_MIN_PX = 2.0f;      // the fx/fy brackets' line width, at least
+constexpr float BRACKET_GAP_PX = 4.0f;      // the fx bracket below the cells
+constexpr float FY_BRACKET_GAP_PX = 5.0f;   // the fy bracket right of the cells
+constexpr float BRACKET_TICK_PX = 6.0f;     // the brackets' end ticks
+constexpr float FX_LABEL_GAP_PX = 1.0f;     // "fx" under its bracket
+constexpr float FY_LABEL_GAP_PX = 3.0f;     // "fy" right of its bracket
+constexpr float INSET_SHARE = 0.3f;         // hw8: the inset's side, this share of the width
+constexpr float INSET_GAP_PX = 6.0f;        // between the fy lane and the inset
+
+// The number block's type sizes for a number size.
+float bitFor(float number) { return std::round(number * BIT_PER_NUMBER); }
+float barFor(float number) { return std::max(BAR_MIN_PX, number * BAR_PER_NUMBER); }
+
+// The cells under the header: their size, the window of the neighbourhood they show, the lanes
+// around them. `top`: the header's bottom.
+Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float margin,
+            float width, float top, int highlight) {
+    Grid g;
+    const Rect& p = l.inspector;
+    g.full = neighbourhoodOf(tr);
+    float line = lineOf(l);
+    // The cell's border band: the gather outline (inset `line`, `line + 1` wide), then 2 px.
+    g.pad = 2.0f * line + (OUTLINE_EXTRA_PX + PAD_GAP_PX);
+    auto cellFor = [&](float number) {
+        float bit = bitFor(number);
+        float blockW = measureText(FontFace::Mono, number, "d 0.000").x;
+        float blockH = lineHeightOf(bit) + 2.0f * lineHeightOf(number);
+        float bar = barFor(number);
+        // Room for the block and, beside it, for the marks a cell may hold.
+        return std::max(blockW + 2.0f * g.pad, blockH + bar + 2.0f * g.pad) * MARK_ROOM;
+    };
+    int lastRow = std::max(std::abs(g.full.origin.y), std::abs(g.full.origin.y + g.full.size.y));
+    float labelW =
+        measureText(FontFace::Mono, t.label, "j=-" + std::to_string(lastRow)).x + INDEX_GAP_PX;
+    float laneH = lineHeightOf(t.label) + INDEX_LANE_PAD_PX;
+    float fyW = measureText(FontFace::Mono, t.label, "fy 0.00").x + FRACTION_LANE_PAD_PX;
+    // hw8: the fractions get four decimals and their 8-bit step on a second line (the bottom
+    // lane one line taller), and a column right of the fy lane holds the sub-texel inset.
+    g.hw8 = hw8Lookup(tr);
+    float laneBottomH = laneH;
+    float insetW = 0.0f;
+    if (g.hw8) {
+        fyW = std::max(measureText(FontFace::Mono, t.label, "fy 0.0000").x,
+                       measureText(FontFace::Mono, t.label, "255/256").x) +
+              FRACTION_LANE_PAD_PX;
+        laneBottomH += lineHeightOf(t.label);
+        insetW = std::round((width - labelW - fyW) * INSET_SHARE) + INSET_GAP_PX;
+    }
+    // The grid takes at most this share of the panel's height: the legend and the formula need
+    // the rest.
+    float maxH = p.bottom() - margin - top - laneH - laneBottomH -
+                 std::max(BELOW_MIN_LINES * lineHeightOf(t.number), BELOW_MIN_SHARE * p.h);
+    float side = std::max(MIN_GRID_SIDE_PX, std::min(width - labelW - fyW - insetW, maxH));
+    int cellsFull = std::max(g.full.size.x, g.full.size.y);
+    // Whole neighbourhood at the largest number size that fits, down to the floor; else a window
+    // of it at the starting size.
+    float number = t.number;
+    while (cellFor(number) * cellsFull > side && number > t.numberFloor) {
+        number = stepDown(number, t.numberFloor);
+    }
+    int cells = cellsFull;
+    if (cellFor(number) * cellsFull > side) {
+        number = t.number;
+        cells = std::clamp(static_cast<int>(side / cellFor(number)), 2, cellsFull);
+    }
+    g.number = number;
+    g.bit = bitFor(number);
+    g.bar = barFor(number);
+    g.view = g.full;
+    if (cells < cellsFull) {
+        glm::vec2 pt = tr.uv * glm::vec2(tr.mapSize);
+        for (int a = 0; a < 2; ++a) {
+            int k = std::min(cells, g.full.size[a]);
+            int lo = g.full.origin[a];
+            int hi = g.full.origin[a] + g.full.size[a] - k;
+            int want = static_cast<int>(std::floor(pt[a])) - (k - 1) / 2;
+            // Keep the base 2 x 2 in view.
+            want = std::min(want, tr.pos.base[a]);
+            want = std::max(want, tr.pos.base[a] + 2 - k);
+            if (highlight >= 0 && highlight < static_cast<int>(tr.fetches.size())) {
+                // The 2 x 2 the highlighted fetch reads (one texel for a point read).
+                const FetchRecord& f = tr.fetches[static_cast<size_t>(highlight)];
+                float q = f.uv[a] * static_cast<float>(tr.mapSize[a]);
+                bool point = f.kind == PCF_FETCH_POINT;
+                int first = static_cast<int>(std::floor(point ? q : q - 0.5f));
+                int last = point ? first : first + 1;
+                want = std::min(want, first);
+                want = std::max(want, last + 1 - k);
+            }
+            g.view.origin[a] = std::clamp(want, lo, std::max(lo, hi));
+            g.view.size[a] = k;
+        }
+    }
+    int viewCells = std::max(g.view.size.x, g.view.size.y);
+    g.cell = std::floor(side / static_cast<float>(viewCells));
+    // Big cells (few texels) get bigger numbers, as long as the block still fits beside marks.
+    float grown =
+        std::min(std::round(g.cell * GROWN_PER_CELL), std::round(t.number * GROWN_MAX_PER_NUMBER));
+    while (grown > g.number && cellFor(grown) > g.cell) grown -= 1.0f;
+    if (grown > g.number) {
+        g.number = grown;
+        g.bit = bitFor(grown);
+        g.bar = barFor(grown);
+    }
+    float gridW = g.cell * g.view.size.x;
+    float gridH = g.cell * g.view.size.y;
+    float x0 = std::round(p.x + margin + labelW);
+    float y0 = std::round(top + laneH);
+    g.area = {x0, y0, gridW, gridH};
+    g.laneTop = {x0, y0 - laneH, gridW, laneH};
+    g.laneLeft = {p.x + margin, y0, labelW, gridH};
+    g.laneRight = {x0 + gridW, y0, fyW, gridH};
+    g.laneBottom = {x0, y0 + gridH, gridW, laneBottomH};
+    g.bottom = y0 + gridH + laneBottomH;
+    if (g.hw8) {
+        // Square, level with the cells, within the height the cells may take; the caption in
+        // the lane above it.
+        float insetSide = std::floor(std::min(insetW - INSET_GAP_PX, side));
+        float ix = std::round(g.laneRight.right() + INSET_GAP_PX);
+        g.inset = {ix, y0, insetSide, insetSide};
+        g.insetCaption = {ix, g.laneTop.y, insetSide, laneH};
+        g.bottom = std::max(g.bottom, g.inset.bottom() + INSET_GAP_PX);
+    }
+    return g;
+}
+
+const TapRecord* firstTapAt(const Trace& tr, glm::ivec2 texel) {
+    for (const TapRecord& tp : tr.taps) {
+        if (tp.texel == texel) return &tp;
+    }
+    return nullptr;
+}
+
+glm::vec2 viewPoint(const Grid& g, glm::vec2 texelPos) {
+    return {g.area.x + (texelPos.x - static_cast<float>(g.view.origin.x)) * g.cell,
+            g.area.y + (texelPos.y - static_cast<float>(g.view.origin.y)) * g.cell};
+}
+
+}  // namespace
+
+PanelLayout panelLayout(const InspectorLayout& l, const Trace& tr, const TypeSizes& t,
+                        int highlight) {
+    PanelLayout pl;
+    const Rect& p = l.inspector;
+    pl.margin = inspectorMargin(l);
+    pl.width = p.w - 2 * pl.margin;
+    pl.header = headerOf(tr, t, pl.width);
+    float top = p.y + pl.margin + pl.header.height + t.label * 0.5f;
+    pl.grid = gridOf(l, tr, t, pl.margin, pl.width, top, highlight);
+    return pl;
+}
+
+namespace {
+
+// Marks go first: they sit where the math puts them, and the numbers then find room beside them.
+// Their rects (clipped to the cells) are what the numbers avoid; their draw calls run after the
+// numbers', so that a mark is never hidden under a number's cell.
+struct CellMarks {
+    std::vector<Rect> rects;
+    std::vector<std::function<void(Canvas&)>> ops;
+    void add(Planner& pl, const Rect& area, const Rect& r, const std::string& role) {
+        Rect clipped = r.intersect(area);
+        if (clipped.empty()) return;
+        rects.push_back(clipped);
+        pl.box(BoxKind::Mark, clipped, "inspector", role);
+    }
+};
+
+// Each cell's fill (its bit's colour), the clamped frame and the weight bar.
+void planCellFills(Planner& pl, const InspectorLayout& l, const Trace& tr, const Grid& g,
+                   CellMarks& marks, LegendNeeds& legend) {
+    float line = lineOf(l);
+    float maxWeight = 0.0f;
+    for (float w : tr.weights.values) maxWeight = std::max(maxWeight, w);
+    for (int j = 0; j < g.view.size.y; ++j) {
+        for (int i = 0; i < g.view.size.x; ++i) {
+            glm::ivec2 texel = g.view.origin + glm::ivec2(i, j);
+            Rect r = texelCellRect(g.view, g.area, texel);
+            const TapRecord* tap = firstTapAt(tr, texel);
+            float weight = tr.weights.at(texel);
+            Colour fill = !tap ? PADDING : tap->lit >= 0.5f ? LIT_COLOUR : SHADOWED_COLOUR;
+            if (tap && weight == 0.0f) fill = glm::mix(fill, PADDING, 0.55f);
+            if (!tap) legend.padding = true;
+            pl.fill(r, fill);
+            // A tap whose texel lay outside the map, read clamped to the edge: an orange frame
+            // in the cell's border band, where no number goes.
+            bool clamped = std::any_of(tr.taps.begin(), tr.taps.end(), [&](const TapRecord& tp) {
+                return tp.texel == texel && tp.clamped;
+            });
+            if (clamped) {
+                legend.clamped = true;
+                Rect frame = r.expanded(-line);
+                pl.op([frame, line](Canvas& c) { c.strokeRect(frame, line, CLAMPED); });
+            }
+            if (tap && maxWeight > 0.0f && weight > 0.0f) {
+                float band = 2.0f * line + OUTLINE_EXTRA_PX;
+                Rect bar{r.x + band, r.bottom() - g.bar - band,
+                         (r.w - 2 * band) * weight / maxWeight, g.bar};
+                pl.fill(bar, WEIGHT_BAR);
+                marks.add(pl, g.area, bar, "weight-bar");
+                legend.weightBar = true;
+            }
+        }
+    }
+}
+
+// The cell borders (the numbers stay g.pad inside them) and the texel indices in the lanes
+// above and to the left.
+void planGridLines(Planner& pl, const InspectorLayout& l, const Grid& g, const TypeSizes& t) {
+    const std::string panel = "inspector";
+    float line = lineOf(l);
+    Rect area = g.area;
+    std::vector<std::pair<glm::vec2, glm::vec2>> lines;
+    for (int i = 0; i <= g.view.size.x; ++i) {
+        float x = area.x + i * g.cell;
+        lines.push_back({{x, area.y}, {x, area.bottom()}});
+    }
+    for (int j = 0; j <= g.view.size.y; ++j) {
+        float y = area.y + j * g.cell;
+        lines.push_back({{area.x, y}, {area.right(), y}});
+    }
+    pl.op([lines, line](Canvas& c) {
+        for (const auto& [a, b] : lines) c.line(a, b, line, Colour{0, 0, 0, 0.9f});
+    });
+    for (int i = 0; i < g.view.size.x; ++i) {
+        pl.text({area.x + (i + 0.5f) * g.cell, g.laneTop.y + INDEX_TOP_GAP_PX},
+                "i=" + std::to_string(g.view.origin.x + i),
+                {FontFace::Mono, t.label, TEXT_DIM, TextAlign::Center}, BoxKind::Label, panel,
+                "texel-index");
+    }
+    for (int j = 0; j < g.view.size.y; ++j) {
+        pl.text({g.laneLeft.right() - INDEX_RIGHT_GAP_PX,
+                 area.y + (j + 0.5f) * g.cell - lineHeightOf(t.label) * 0.5f},
+                "j=" + std::to_string(g.view.origin.y + j),
+                {FontFace::Mono, t.label, TEXT_DIM, TextAlign::Right}, BoxKind::Label, panel,
+                "texel-index");
+    }
+}
+
+// The fetches: gathers as outlines in the cells' border band, hardware taps as small rings,
+// lookups and point reads as dots, each at the uv the instruction sampled; then the lookup point.
+// The base texel's centre is not marked in the cell (its bit sits there): the fx and fy
+// brackets in the lanes start at its column and row.
+void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const Grid& g,
+                    CellMarks& marks, LegendNeeds& legend) {
+    const Trace& tr = *m.trace;
+    float line = lineOf(l);
+    glm::vec2 size(tr.mapSize);
+    Rect area = g.area;
+    auto mark = [&](const Rect& r, const std::string& role) { marks.add(pl, area, r, role); };
+    std::vector<std::function<void(Canvas&)>>& markOps = marks.ops;
+    float dotR = std::max(DOT_MIN_PX, std::round(g.cell * DOT_PER_CELL));
+    for (size_t fi = 0; fi < tr.fetches.size(); ++fi) {
+        const FetchRecord& fr = tr.fetches[fi];
+        glm::vec2 at = viewPoint(g, fr.uv * size);
+        bool highlit = static_cast<int>(fi) == m.highlightFetch;
+        if (highlit) legend.highlight = true;
+        if (fr.kind == PCF_FETCH_GATHER) {
+            glm::ivec2 corner(glm::floor(fr.uv * size - 0.5f));
+            Rect a = texelCellRect(g.view, area, corner);
+            Rect b = texelCellRect(g.view, area, corner + glm::ivec2(1));
+            Rect block = Rect{a.x, a.y, b.right() - a.x, b.bottom() - a.y}.expanded(-line);
+            float w = line + OUTLINE_EXTRA_PX + (highlit ? HIGHLIGHT_EXTRA_PX : 0.0f);
+            Colour gatherColour = highlit ? HIGHLIGHT : GATHER;
+            // Four edges, each inside the border band of its cells, clipped to the view.
+            Rect edges[] = {{block.x, block.y, block.w, w},
+                            {block.x, block.bottom() - w, block.w, w},
+                            {block.x, block.y, w, block.h},
+                            {block.right() - w, block.y, w, block.h}};
+            for (const Rect& e : edges) {
+                Rect ce = e.intersect(area);
+                if (ce.empty()) continue;
+                markOps.push_back([=](Canvas& c) { c.fillRect(ce, gatherColour); });
+                mark(ce, "gather-outline");
+            }
+            legend.gathers = true;
+        } else if (fr.kind == PCF_FETCH_HW) {
+            float rr = std::max(RING_MIN_PX, std::round(g.cell * RING_PER_CELL));
+            if (!area.contains(at)) continue;
+            markOps.push_back([=](Canvas& c) {
+                c.ring(at, rr, highlit ? line + HIGHLIGHT_EXTRA_PX : line,
+                       highlit ? HIGHLIGHT : HW_RING);
+                c.circle(at, std::max(RING_CORE_MIN_PX, rr * RING_CORE), ACCENT);
+            });
+            mark({at.x - rr - line, at.y - rr - line, 2 * (rr + line), 2 * (rr + line)}, "hw-tap");
+            legend.rings = true;
+        } else if (tr.params.method == PCF_POISSON || tr.params.method == PCF_NAIVE ||
+                   tr.params.method == PCF_HW) {
+            if (!area.contains(at)) continue;
+            markOps.push_back([=](Canvas& c) {
+                if (highlit) c.circle(at, dotR + HIGHLIGHT_EXTRA_PX, HIGHLIGHT);
+                c.circle(at, dotR, ACCENT);
+            });
+            mark({at.x - dotR - 1, at.y - dotR - 1, 2 * dotR + 2, 2 * dotR + 2}, "lookup");
+            legend.dots = true;
+        }
+    }
+    glm::vec2 point = viewPoint(g, tr.uv * size);
+    float pr = std::max(POINT_MIN_PX, std::round(g.cell * POINT_PER_CELL));
+    if (area.contains(point)) {
+        markOps.push_back([=](Canvas& c) {
+            c.circle(point, pr + POINT_OUTLINE_PX, Colour{0, 0, 0, 0.9f});
+            c.circle(point, pr, POINT);
+        });
+        mark({point.x - pr - 2, point.y - pr - 2, 2 * pr + 4, 2 * pr + 4}, "lookup-point");
+    }
+}
+
+// Numbers: each cell's block (bit, own ref, depth, weight) goes where no mark is; a smaller
+// block, or none, where the whole does not fit. Returns the cells left without numbers.
+int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const CellMarks& cm) {
+    const Trace& tr = *m.trace;
+    const std::string panel = "inspector";
+    Rect area = g.area;
+    const std::vector<Rect>& marks = cm.rects;
+    int hiddenCells = 0;
+    Colour inkLit = DARK_TEXT;
+    for (int j = 0; j < g.view.size.y; ++j) {
+        for (int i = 0; i < g.view.size.x; ++i) {
+            glm::ivec2 texel = g.view.origin + glm::ivec2(i, j);
+            Rect r = texelCellRect(g.view, area, texel);
+            const TapRecord* tap = firstTapAt(tr, texel);
+            bool inMap =
+                texel.x >= 0 && texel.y >= 0 && texel.x < tr.mapSize.x && texel.y < tr.mapSize.y;
+            Colour ink = tap && tap->lit >= 0.5f ? inkLit : TEXT;
+            struct Item {
+                std::string text;
+                float size;
+                std::string role;
+            };
+            std::vector<Item> all;
+            // The bit; a soft comparison's fraction (bias soft) in its place.
+            bool soft = tap && tap->lit != 0.0f && tap->lit != 1.0f;
+            if (tap) {
+                all.push_back({soft               ? fixed(tap->lit, 2)
+                               : tap->lit >= 0.5f ? "1"
+                                                  : "0",
+                               g.bit, "cell-bit"});
+            }
+            // The tap's own ref where the bias gave it one (receiver plane), under its bit.
+            bool ownRef = tap && tap->ref != tr.ref;
+            if (ownRef) all.push_back({"r " + fixed(tap->ref, 4), g.number, "cell-ref"});
+            bool hasDepth = inMap;
+            if (inMap) {
+                float depth = m.map ? m.map->depth(texel.x, texel.y) : (tap ? tap->depth : 0.0f);
+                all.push_back({"d " + fixed(depth, 3), g.number, "cell-depth"});
+            }
+            if (tap)
+                all.push_back({"w " + fixed(tr.weights.at(texel), 3), g.number, "cell-weight"});
+            // Variants from whole to nothing: all, without depth, weight alone.
+            std::vector<std::vector<Item>> variants{all};
+            if (tap && hasDepth) {
+                std::vector<Item> noDepth;
+                for (const Item& it : all) {
+                    if (it.role != "cell-depth") noDepth.push_back(it);
+                }
+                variants.push_back(noDepth);
+            }
+            if (tap) variants.push_back({all.back()});
+            variants.push_back({});
+            Rect inner = r.expanded(-g.pad);
+            inner.h -= g.bar + 1.0f;
+            std::vector<Rect> cellMarks;
+            for (const Rect& mk : marks) {
+                if (overlaps(mk, r)) cellMarks.push_back(mk.expanded(MARK_CLEARANCE_PX));
+            }
+            bool placed = false;
+            for (size_t v = 0; v < variants.size() && !placed; ++v) {
+                const std::vector<Item>& items = variants[v];
+                if (items.empty()) {
+                    if (!all.empty()) ++hiddenCells;
+                    placed = true;
+                    break;
+                }
+                float bw = 0, bh = 0;
+                for (const Item& it : items) {
+                    bw = std::max(bw, measureText(FontFace::Mono, it.size, it.text).x);
+                    bh += lineHeightOf(it.size);
+                }
+                if (bw > inner.w || bh > inner.h) continue;
+                float cx = inner.x + (inner.w - bw) * 0.5f, cy = inner.y + (inner.h - bh) * 0.5f;
+                float rx = inner.right() - bw, by = inner.bottom() - bh;
+                const glm::vec2 spots[] = {{cx, cy},      {cx, inner.y}, {cx, by},
+                                           {inner.x, cy}, {rx, cy},      {inner.x, inner.y},
+                                           {rx, inner.y}, {inner.x, by}, {rx, by}};
+                for (glm::vec2 s : spots) {
+                    Rect blk{std::round(s.x), std::round(s.y), bw, bh};
+                    bool free = std::none_of(cellMarks.begin(), cellMarks.end(),
+                                             [&](const Rect& mk) { return overlaps(mk, blk); });
+                    if (!free) continue;
+                    float y = blk.y;
+                    for (const Item& it : items) {
+                        pl.text({blk.x + bw * 0.5f, y}, it.text,
+                                {FontFace::Mono, it.size, ink, TextAlign::Center}, BoxKind::Number,
+                                panel, it.role);
+                        y += lineHeightOf(it.size);
+                    }
+                    placed = true;
+                    break;
+                }
+            }
+        }
+    }
+    return hiddenCells;
+}
+
+// fx and fy in the lanes under and beside the cells: a bracket from the base texel's centre
+// to the lookup point, with its value.
+void planFractions(Planner& pl, const InspectorLayout& l, const Trace& tr, const Grid& g,
+                   const TypeSizes& t) {
+    const std::string panel = "inspector";
+    glm::vec2 size(tr.mapSize);
+    Rect area = g.area;
+    float line = lineOf(l);
+    glm::vec2 point = viewPoint(g, tr.uv * size);
+    glm::vec2 baseCentre = viewPoint(g, glm::vec2(tr.pos.base) + 0.5f);
+    float x0 = std::clamp(baseCentre.x, area.x, area.right());
+    float x1 = std::clamp(point.x, area.x, area.right());
+    float y0 = std::clamp(baseCentre.y, area.y, area.bottom());
+    float y1 = std::clamp(point.y, area.y, area.bottom());
+    float lw = std::max(BRACKET_MIN_PX, line);
+    float ly = g.laneBottom.y + BRACKET_GAP_PX;
+    float lx = g.laneRight.x + FY_BRACKET_GAP_PX;
+    float tick = BRACKET_TICK_PX;
+    Rect hb{std::min(x0, x1) - lw, ly, std::abs(x1 - x0) + 2 * lw, tick};
+    Rect vb{lx, std::min(y0, y1) - lw, tick, std::abs(y1 - y0) + 2 * lw};
+    pl.op([=](Canvas& c) {
+        c.line({x0, ly + tick * 0.5f}, {x1, ly + tick * 0.5f}, lw, POINT);
+        c.line({x0, ly}, {x0, ly + tick}, lw, POINT);
+        c.line({x1, ly}, {x1, ly + tick}, lw, POINT);
+        c.line({lx + tick * 0.5f, y0}, {lx + tick * 0.5f, y1}, lw, POINT);
+        c.line({lx, y0}, {lx + tick, y0}, lw, POINT);
+        c.line({lx, y1}, {lx + tick, y1}, lw, POINT);
+    });
+    pl.box(BoxKind::Mark, hb, panel, "fx-bracket");
+    pl.box(BoxKind::Mark, vb, panel, "fy-bracket");
+    // With hw8 the float fraction gets four decimals, and under it the 8-bit one, k/256, that
+    // the texture unit lerps with (the trace's fracHw8).
+    int decimals = g.hw8 ? 4 : 2;
+    std::string fx = "fx " + fixed(tr.pos.frac.x, decimals);
+    std::string fy = "fy " + fixed(tr.pos.frac.y, decimals);
+    TextStyle fst{FontFace::Mono, t.label, POINT, TextAlign::Left};
+    TextStyle qst{FontFace::Mono, t.label, HW8_POINT, TextAlign::Left};
+    Rect fxs = pl.measure({0, 0}, fx, fst);
+    float rows = g.hw8 ? 2.0f : 1.0f;
+    float fxX =
+        std::clamp((x0 + x1) * 0.5f - fxs.w * 0.5f, g.laneBottom.x, g.laneBottom.right() - fxs.w);
+    Rect fxBox = pl.text({fxX, ly + tick + FX_LABEL_GAP_PX}, fx, fst, BoxKind::Label, panel, "fx");
+    float fyY = std::clamp((y0 + y1) * 0.5f - fxs.h * rows * 0.5f, g.laneRight.y,
+                           g.laneRight.bottom() - fxs.h * rows);
+    Rect fyBox = pl.text({lx + tick + FY_LABEL_GAP_PX, fyY}, fy, fst, BoxKind::Label, panel, "fy");
+    if (g.hw8) {
+        pl.text({fxBox.x, fxBox.bottom()}, hw8Steps(tr.fracHw8.x), qst, BoxKind::Label, panel,
+                "fx-hw8");
+        pl.text({fyBox.x, fyBox.bottom()}, hw8Steps(tr.fracHw8.y), qst, BoxKind::Label, panel,
+                "fy-hw8");
+    }
+}
+
+}  // namespace
+
+void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const Grid& g,
+               const TypeSizes& t, LegendNeeds& legend, int& hiddenCells) {
+    const Trace& tr = *m.trace;
+    CellMarks marks;
+    planCellFills(pl, l, tr, g, marks, legend);
+    planGridLines(pl, l, g, t);
+    planFetchMarks(pl, l, m, g, marks, legend);
+    hiddenCells += planCellNumbers(pl, m, g, marks);
+    for (auto& f : marks.ops) pl.op(std::move(f));
+    if (tr.params.method != PCF_NEAREST && tr.params.method != PCF_POISSON) {
+        legend.fraction = true;
+        planFractions(pl, l, tr, g, t);
+    }
+    planSubtexelInset(pl, l, tr, g, t, m.highlightFetch);
+    legend.hw8 = g.hw8;
+}
+
+}  // namespace inspector_detail
+
+using namespace inspector_detail;
+
+Neighbourhood neighbourhoodView(const InspectorLayout& l, const Trace& tr) {
+    return panelLayout(l, tr, typeSizes(l)).grid.view;
+}
+
+Rect neighbourhoodArea(const InspectorLayout& l, const Trace& tr, bool) {
+    return panelLayout(l, tr, typeSizes(l)).grid.area;
+}
+
+Neighbourhood neighbourhoodOf(const Trace& tr) {
+    glm::ivec2 lo = tr.pos.base;
+    glm::ivec2 hi = tr.pos.base + glm::ivec2(1);
+    if (!tr.weights.values.empty()) {
+        lo = glm::min(lo, tr.weights.origin);
+        hi = glm::max(hi, tr.weights.origin + tr.weights.size - glm::ivec2(1));
+    }
+    glm::ivec2 point(glm::floor(tr.uv * glm::vec2(tr.mapSize)));
+    lo = glm::min(lo, point);
+    hi = glm::max(hi, point);
+    return {lo, hi - lo + glm::ivec2(1)};
+}
+
+Rect texelCellRect(const Neighbourhood& n, const Rect& area, glm::ivec2 texel) {
+    // The area is exactly as wide as the view's columns.
+    float cell = area.w / static_cast<float>(std::max(1, n.size.x));
+    return {area.x + static_cast<float>(texel.x - n.origin.x) * cell,
+            area.y + static_cast<float>(texel.y - n.origin.y) * cell, cell, cell};
+}
+
+}  // namespace pcf

@@ -1,0 +1,241 @@
+// inspector_numbers.cpp: the inspector panel's words and numbers: the header (method,
+// visibility, fetch counts, uv, ref, bias), the notes on what the cells leave out, the legend of
+// the marks drawn, and the formula with its numbers from the kernel's own explanation.
+#include "kernel/methods.h"
+#include "overlay/inspector_plan.h"
+
+namespace pcf::inspector_detail {
+
+// The header's title line and the counts under it are this far apart.
+constexpr float HEADER_GAP_PX = 4.0f;
+
+Header headerOf(const Trace& tr, const TypeSizes& t, float width) {
+    Header h;
+    const MethodInfo& info = methodInfo(tr.params.method);
+    h.title = std::string(info.name);
+    if (info.usesKernel) h.title += "  N = " + std::to_string(tr.params.kernel);
+    if (info.usesRadius) h.title += "  R = " + formatNumber(tr.params.radius);
+    h.result = "visibility = " + formatNumber(tr.visibility);
+    float tw = measureText(FontFace::Mono, t.head, h.title).x;
+    float rw = measureText(FontFace::Mono, t.head, h.result).x;
+    h.resultOnOwnLine = tw + rw + t.head > width;
+    auto plural = [](int n, const char* one, const char* many) {
+        return std::to_string(n) + " " + (n == 1 ? one : many);
+    };
+    std::string counts = plural(tr.counts.texels, "texel read", "texel reads");
+    if (tr.counts.gathers) counts += ", " + plural(tr.counts.gathers, "gather", "gathers");
+    if (tr.counts.hwTaps)
+        counts += ", " + plural(tr.counts.hwTaps, "hardware tap", "hardware taps");
+    counts += "\nuv (" + fixed(tr.uv.x, 4) + ", " + fixed(tr.uv.y, 4) + ")  ref " +
+              fixed(tr.ref, 4) + "  bias " + std::string(biasName(tr.bias.mode));
+    // Two lines when one does not hold them, and each wraps again if need be.
+    std::string oneLine = counts;
+    std::replace(oneLine.begin(), oneLine.end(), '\n', ' ');
+    oneLine.insert(oneLine.find(" uv ("), "  ");
+    if (measureText(FontFace::Mono, t.number, oneLine).x <= width) {
+        h.counts = {oneLine};
+    } else {
+        h.counts = wrapText(FontFace::Mono, t.number, counts, width);
+    }
+    float headLh = lineHeightOf(t.head);
+    h.height = headLh * (h.resultOnOwnLine ? 2.0f : 1.0f) + HEADER_GAP_PX +
+               lineHeightOf(t.number) * static_cast<float>(h.counts.size());
+    return h;
+}
+
+float inspectorMargin(const InspectorLayout& l) {
+    return std::max(8.0f, std::round(18.0f * l.scale));
+}
+
+namespace {
+
+std::string formulaText(const Trace& tr) {
+    std::string out;
+    for (size_t k = 0; k < tr.steps.size(); ++k) {
+        const TraceStep& s = tr.steps[k];
+        bool last = k + 1 == tr.steps.size();
+        if (last || s.title.find("Lerp") != std::string::npos) {
+            if (!out.empty()) out += "\n";
+            out += s.text;
+        }
+    }
+    return out;
+}
+
+void planHeader(Planner& pl, const InspectorLayout& l, const Header& h, const TypeSizes& t,
+                float margin) {
+    const Rect& p = l.inspector;
+    const std::string panel = "inspector";
+    float y = p.y + margin;
+    pl.text({p.x + margin, y}, h.title, {FontFace::Mono, t.head, ACCENT}, BoxKind::Text, panel,
+            "method");
+    if (h.resultOnOwnLine) {
+        y += lineHeightOf(t.head);
+        pl.text({p.x + margin, y}, h.result, {FontFace::Mono, t.head, TEXT}, BoxKind::Number, panel,
+                "visibility");
+    } else {
+        pl.text({p.right() - margin, y}, h.result, {FontFace::Mono, t.head, TEXT, TextAlign::Right},
+                BoxKind::Number, panel, "visibility");
+    }
+    y += lineHeightOf(t.head) + HEADER_GAP_PX;
+    for (const std::string& c : h.counts) {
+        pl.text({p.x + margin, y}, c, {FontFace::Mono, t.number, TEXT_DIM}, BoxKind::Number, panel,
+                "counts");
+        y += lineHeightOf(t.number);
+    }
+}
+
+// What the cells leave out, said in words, from `y` down; returns the new y.
+float planNotes(Planner& pl, const InspectorLayout& l, const Grid& g, int hidden,
+                const TypeSizes& t, float margin, float y) {
+    const Rect& p = l.inspector;
+    float width = p.w - 2 * margin;
+    std::vector<std::string> notes;
+    if (g.view.size != g.full.size) {
+        notes.push_back("showing " + std::to_string(g.view.size.x) + " x " +
+                        std::to_string(g.view.size.y) + " of the " + std::to_string(g.full.size.x) +
+                        " x " + std::to_string(g.full.size.y) +
+                        " texels, around the lookup (pcfscope trace lists all)");
+    }
+    if (hidden > 0) {
+        notes.push_back("numbers of " + std::to_string(hidden) +
+                        (hidden == 1 ? " cell" : " cells") +
+                        " left out where marks fill the cell: see pcfscope trace");
+    }
+    for (const std::string& note : notes) {
+        FittedText f =
+            fitText(note, FontFace::Sans, t.label, t.labelFloor, width, 3 * lineHeightOf(t.label));
+        y += placeFitted(pl, f, {p.x + margin, y, width, 3 * lineHeightOf(t.label)}, 0,
+                         FontFace::Sans, TEXT_DIM, "inspector", "view-note", "");
+    }
+    return y;
+}
+
+// The legend: a swatch and a word for every kind of mark this frame draws, flowing onto more
+// lines when the panel is narrow. From `y` down; returns the new y.
+float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                 const LegendNeeds& need, const TypeSizes& t, float margin, float y) {
+    const Rect& p = l.inspector;
+    const std::string panel = "inspector";
+    enum Shape { SQUARE, DOT, RING, OUTLINE, BAR };
+    struct Entry {
+        Colour colour;
+        std::string text;
+        Shape shape;
+    };
+    std::vector<Entry> entries{{LIT_COLOUR, "lit: ref <= depth", SQUARE},
+                               {SHADOWED_COLOUR, "shadowed", SQUARE}};
+    if (need.padding) entries.push_back({PADDING, "not read", SQUARE});
+    if (need.clamped) entries.push_back({CLAMPED, "read clamped to the edge", OUTLINE});
+    if (need.weightBar) entries.push_back({WEIGHT_BAR, "weight bar", BAR});
+    entries.push_back({POINT, "lookup point", DOT});
+    if (need.fraction) entries.push_back({POINT, "fx, fy: lookup point - base texel centre", BAR});
+    if (need.hw8) entries.push_back({HW8_POINT, "8-bit position (1/256 texel)", OUTLINE});
+    if (need.dots) entries.push_back({ACCENT, "each lookup", DOT});
+    if (need.rings) entries.push_back({ACCENT, "hardware tap", RING});
+    if (need.gathers) entries.push_back({GATHER, "one gather (2 x 2)", OUTLINE});
+    if (need.highlight) entries.push_back({HIGHLIGHT, "the fetch the text talks about", OUTLINE});
+    if (m.showScene)
+        entries.push_back({Colour{0.2f, 0.85f, 1.0f, 1.0f}, "texels read, on the scene", SQUARE});
+    float lg = t.label;
+    float lh = lineHeightOf(lg);
+    float swatchW = lg * 1.4f;  // a swatch and the gap after it
+    float x = p.x + margin;
+    for (const Entry& e : entries) {
+        float tw = measureText(FontFace::Sans, lg, e.text).x;
+        float w = swatchW + tw;
+        if (x > p.x + margin && x + w > p.right() - margin) {
+            x = p.x + margin;
+            y += lh;
+        }
+        Rect sw{x, y + (lh - lg) * 0.5f, lg, lg};
+        Colour col = e.colour;
+        Shape shape = e.shape;
+        pl.op([=](Canvas& c) {
+            glm::vec2 cc = sw.centre();
+            switch (shape) {
+                case DOT:
+                    c.circle(cc, lg * 0.35f + 1.5f, Colour{1, 1, 1, 0.9f});
+                    c.circle(cc, lg * 0.35f, col);
+                    break;
+                case RING:
+                    c.ring(cc, lg * 0.38f, 2.0f, HW_RING);
+                    c.circle(cc, lg * 0.16f, col);
+                    break;
+                case OUTLINE:
+                    c.strokeRect(sw, 3.0f, col);
+                    break;
+                case BAR:
+                    c.fillRect({sw.x, sw.y + sw.h * 0.6f, sw.w, sw.h * 0.3f}, col);
+                    break;
+                case SQUARE:
+                    c.fillRect(sw, col);
+                    break;
+            }
+        });
+        pl.box(BoxKind::Mark, sw, panel, "legend-swatch");
+        std::string text = e.text;
+        if (tw > p.right() - margin - (x + swatchW)) {
+            text = elideText(FontFace::Sans, lg, e.text, p.right() - margin - (x + swatchW));
+        }
+        pl.text({x + swatchW, y}, text, {FontFace::Sans, lg, TEXT_DIM}, BoxKind::Text, panel,
+                "legend", text != e.text);
+        x += w + swatchW;
+    }
+    return y + lh + lg * 0.6f;
+}
+
+// The formula with its numbers, from the kernel's own explanation, from `y` to the panel's
+// bottom; the short form when the whole would not fit.
+void planFormula(Planner& pl, const InspectorLayout& l, const Trace& tr, const TypeSizes& t,
+                 float margin, float y) {
+    const Rect& p = l.inspector;
+    float width = p.w - 2 * margin;
+    Rect formula{p.x + margin, y, width, p.bottom() - margin - y};
+    if (formula.h < lineHeightOf(t.labelFloor)) return;
+    FittedText f =
+        fitText(formulaText(tr), FontFace::Mono, t.number, t.numberFloor, width, formula.h);
+    bool shortened = false;
+    if (f.pages > 1) {
+        std::string shortForm =
+            "visibility = sum(weight * bit) over the " + std::to_string(tr.taps.size()) +
+            " taps = " + formatNumber(tr.visibility) + "\n(every term: pcfscope trace)";
+        f = fitText(shortForm, FontFace::Mono, t.number, t.numberFloor, width, formula.h);
+        shortened = true;
+    }
+    placeFitted(pl, f, formula, 0, FontFace::Mono, TEXT, "inspector", "formula", "");
+    if (shortened) pl.plan.boxes.back().shortened = true;
+}
+
+}  // namespace
+
+void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                   const TypeSizes& t) {
+    const Rect& p = l.inspector;
+    float margin = inspectorMargin(l);
+    if (!m.trace) {
+        float width = p.w - 2 * margin;
+        float y = p.y + margin;
+        pl.text({p.x + margin, y}, "Inspector", {FontFace::Sans, t.head, TEXT}, BoxKind::Text,
+                "inspector", "heading");
+        y += lineHeightOf(t.head) * 1.5f;
+        FittedText f = fitText(
+            "No shadow receiver under the picked pixel. Click a point on the "
+            "ground or on an object to see its shadow lookup.",
+            FontFace::Sans, t.body, t.bodyFloor, width, p.bottom() - margin - y);
+        placeFitted(pl, f, {p.x + margin, y, width, p.bottom() - margin - y}, 0, FontFace::Sans,
+                    TEXT_DIM, "inspector", "no-trace", "");
+        return;
+    }
+    const Trace& tr = *m.trace;
+    PanelLayout layout = panelLayout(l, tr, t, m.highlightFetch);
+    planHeader(pl, l, layout.header, t, margin);
+    LegendNeeds need;
+    int hidden = 0;
+    planCells(pl, l, m, layout.grid, t, need, hidden);
+    float y = planNotes(pl, l, layout.grid, hidden, t, margin, layout.grid.bottom + 2.0f);
+    y = planLegend(pl, l, m, need, t, margin, y + 4.0f);
+    planFormula(pl, l, tr, t, margin, y);
+}
+
+}  // namespace pcf::inspector_detail

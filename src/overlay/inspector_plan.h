@@ -1,0 +1,231 @@
+// inspector_plan.h: the parts the inspector's source files share (internal to src/overlay; the
+// public interface is inspector.h). A frame is planned, panel by panel, into boxes and draw
+// commands (FramePlan) by these functions, one file each:
+//   inspector.cpp               the frame's panels (inspectorLayout), type sizes, planFrame, JSON
+//   inspector_text.cpp          text blocks that fit: wrap, smaller type to a floor, then pages
+//   inspector_scene.cpp         the scene: the picked pixel, its label, the texel grid
+//   inspector_neighbourhood.cpp the magnified cells: their one layout (panelLayout) and drawing
+//   inspector_numbers.cpp       the inspector's header, notes, legend and formula
+//   inspector_steps.cpp         the step panel, the map thumbnail, the status line
+//   inspector_keys.cpp          the key table and the help overlay drawn from it
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "overlay/inspector.h"
+#include "overlay/text_layout.h"
+
+namespace pcf::inspector_detail {
+
+// Colours (straight alpha).
+constexpr Colour PANEL{0.10f, 0.11f, 0.14f, 1.0f};
+constexpr Colour PANEL_LIGHT{0.16f, 0.17f, 0.21f, 1.0f};
+constexpr Colour TEXT{0.92f, 0.93f, 0.95f, 1.0f};
+constexpr Colour TEXT_DIM{0.66f, 0.69f, 0.76f, 1.0f};
+constexpr Colour MONO_TEXT{0.80f, 0.92f, 1.0f, 1.0f};
+constexpr Colour ACCENT{0.35f, 0.78f, 0.98f, 1.0f};
+constexpr Colour POINT{0.95f, 0.20f, 0.45f, 1.0f};
+constexpr Colour GATHER{0.30f, 0.90f, 0.50f, 1.0f};
+constexpr Colour HW_RING{0.10f, 0.10f, 0.10f, 0.95f};
+constexpr Colour PADDING{0.30f, 0.31f, 0.35f, 1.0f};
+constexpr Colour CLAMPED{1.0f, 0.6f, 0.1f, 1.0f};  // a texel read clamped to the edge
+constexpr Colour DARK_TEXT{0.08f, 0.08f, 0.10f, 1.0f};
+constexpr Colour STATUS{0.03f, 0.03f, 0.04f, 1.0f};
+constexpr Colour WEIGHT_BAR{0.95f, 0.35f, 0.25f, 0.9f};
+constexpr Colour HIGHLIGHT{1.0f, 0.62f, 0.10f, 1.0f};
+constexpr Colour FOOTPRINT_TINT{0.2f, 0.85f, 1.0f, 0.18f};
+
+// A texel narrower than this on screen makes the grid's lines a moire that reads as acne: the
+// grid is hidden then (the footprint tint stays).
+constexpr float GRID_MIN_TEXEL_PX = 4.0f;
+
+inline std::string fixed(float v, int decimals) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, static_cast<double>(v));
+    return buf;
+}
+
+inline float lineHeightOf(float size) {
+    return std::max(fontMetrics(FontFace::Sans, size).lineHeight,
+                    fontMetrics(FontFace::Mono, size).lineHeight);
+}
+
+// The next smaller size on the way down to a floor.
+inline float stepDown(float size, float floor) {
+    float next = std::round(size * 0.92f);
+    if (next >= size) next = size - 1.0f;
+    return std::max(floor, next);
+}
+
+inline bool overlaps(const Rect& a, const Rect& b) { return !a.intersect(b).empty(); }
+
+inline bool inside(const Rect& inner, const Rect& outer) {
+    return inner.x >= outer.x - 0.01f && inner.y >= outer.y - 0.01f &&
+           inner.right() <= outer.right() + 0.01f && inner.bottom() <= outer.bottom() + 0.01f;
+}
+
+// Records boxes and the draw commands that go with them.
+struct Planner {
+    FramePlan& plan;
+    bool onTop = false;
+
+    void op(std::function<void(Canvas&)> f) {
+        (onTop ? plan.top : plan.base).push_back(std::move(f));
+    }
+    void box(BoxKind kind, const Rect& r, const std::string& panel, const std::string& role,
+             float font = 0.0f, bool shortened = false) {
+        plan.boxes.push_back({kind, r, panel, role, font, shortened, {}});
+    }
+    void fill(const Rect& r, const Colour& c) {
+        op([=](Canvas& cv) { cv.fillRect(r, c); });
+    }
+    // Text at a whole-pixel position; returns its measured box (what Canvas::text will cover).
+    Rect measure(glm::vec2 pos, const std::string& s, const TextStyle& st) const {
+        glm::vec2 size = measureText(st.face, st.pixelSize, s);
+        float x = std::round(pos.x);
+        if (st.align == TextAlign::Center) x = std::round(pos.x - size.x * 0.5f);
+        if (st.align == TextAlign::Right) x = std::round(pos.x - size.x);
+        return {x, std::round(pos.y), size.x, size.y};
+    }
+    Rect text(glm::vec2 pos, const std::string& s, const TextStyle& st, BoxKind kind,
+              const std::string& panel, const std::string& role, bool shortened = false) {
+        Rect r = measure(pos, s, st);
+        TextStyle left = st;
+        left.align = TextAlign::Left;
+        glm::vec2 at = r.position();
+        op([=](Canvas& cv) { cv.text(at, s, left); });
+        box(kind, r, panel, role, st.pixelSize, shortened);
+        plan.boxes.back().text = s;
+        return r;
+    }
+};
+
+// ---- inspector_text.cpp: text blocks that fit. ----
+
+struct FitLine {
+    std::string text;
+    bool mono = false;  // a preformatted line: monospace, spaces kept, never rewrapped
+};
+
+struct FittedText {
+    float size = 0.0f;
+    float lineHeight = 0.0f;
+    std::vector<FitLine> lines;
+    int linesPerPage = 0;
+    int pages = 1;
+    bool stepped = false;  // drawn below its starting size
+};
+
+// Wraps `text` into `width`, stepping the type down from `start` towards `floor` until it fits
+// `height`; what still does not fit is paged.
+FittedText fitText(std::string_view text, FontFace face, float start, float floor, float width,
+                   float height);
+// Draws page `page` of a fitted block at the top-left of `area`, with the "more" mark on the
+// last line of the area when there are more pages. Returns the height used.
+float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, FontFace face,
+                  const Colour& colour, const std::string& panel, const std::string& role,
+                  const std::string& moreHint);
+
+// ---- inspector_neighbourhood.cpp: the inspector panel's one layout and the cells. ----
+
+// The inspector's header: method, visibility, fetch counts, uv/ref/bias (wrapped to the panel).
+struct Header {
+    std::string title;
+    std::string result;
+    std::vector<std::string> counts;  // wrapped
+    bool resultOnOwnLine = false;
+    float height = 0.0f;
+};
+
+// The cell geometry the inspector uses for a trace.
+struct Grid {
+    Neighbourhood full;
+    Neighbourhood view;
+    Rect area;  // the cells
+    float cell = 0.0f;
+    float number = 0.0f;  // the cells' number size
+    float bit = 0.0f;
+    float pad = 0.0f;  // inset of the numbers from the cell's edge (gather outlines live there)
+    float bar = 0.0f;  // weight bar height
+    Rect laneTop, laneLeft, laneRight, laneBottom;
+    float bottom = 0.0f;  // below the bottom lane (and the sub-texel inset)
+    // hw8 (the texture unit keeps 8 fractional bits): the fx and fy labels add the 8-bit
+    // fraction k/256 on a second line, and the sub-texel inset, right of the fy lane, magnifies
+    // the 1/256 steps around the lookup point. Empty when the trace is not hw8.
+    bool hw8 = false;
+    Rect inset;
+    Rect insetCaption;  // the lane above the inset
+};
+
+// True when the lookup's hardware taps or gathers ran with 8 fractional bits (issue 10).
+inline bool hw8Lookup(const Trace& tr) {
+    return tr.usesTextureUnit && tr.params.precision == PCF_PRECISION_HW8;
+}
+// The 8-bit fraction as the labels print it, "k/256" with k = fracHw8 * 256 (0..255).
+std::string hw8Steps(float fracHw8);
+
+// Everything the inspector panel places for a trace, computed once: the plan, neighbourhoodView
+// and neighbourhoodArea all read it. highlight: the fetch (0-based) the step talks about; a
+// windowed view keeps its texels in view.
+struct PanelLayout {
+    float margin = 0.0f;  // inside the panel, all round
+    float width = 0.0f;   // the panel's width less the margins
+    Header header;
+    Grid grid;
+};
+float inspectorMargin(const InspectorLayout& l);
+PanelLayout panelLayout(const InspectorLayout& l, const Trace& tr, const TypeSizes& t,
+                        int highlight = -1);
+
+// The line width of the inspector's strokes.
+inline float lineOf(const InspectorLayout& l) {
+    return l.presentation ? 3.0f : std::max(1.0f, std::round(l.scale));
+}
+
+// Which kinds of mark the cells drew (the legend names only those).
+struct LegendNeeds {
+    bool highlight = false, weightBar = false, dots = false, rings = false, gathers = false,
+         fraction = false, baseCentre = false, padding = false, footprint = false;
+    bool clamped = false;  // a texel read clamped to the edge (any finite uv)
+    bool hw8 = false;      // the 8-bit position (the sub-texel inset)
+};
+
+// The cells, their numbers, the fetch marks and the fx/fy brackets; counts the cells whose
+// numbers the marks left no room for.
+void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const Grid& g,
+               const TypeSizes& t, LegendNeeds& legend, int& hiddenCells);
+
+// ---- inspector_subtexel.cpp: the hw8 inset. ----
+
+// The 1/256-texel lattice around a hardware tap's or gather's position (the highlighted fetch's,
+// else the one nearest the lookup point), magnified in g.inset: the float position,
+// the 8-bit one it rounds to and the square of positions that round there. Nothing unless g.hw8.
+void planSubtexelInset(Planner& pl, const InspectorLayout& l, const Trace& tr, const Grid& g,
+                       const TypeSizes& t, int highlight);
+// The colour of the 8-bit position (inset, fx/fy labels, legend).
+constexpr Colour HW8_POINT{0.72f, 1.0f, 0.28f, 1.0f};
+
+// ---- One function per panel (the files named at the top). ----
+
+Header headerOf(const Trace& tr, const TypeSizes& t, float width);
+void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t);
+void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                   const TypeSizes& t);
+void planSteps(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t);
+void planThumbnail(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                   const TypeSizes& t);
+void planStatus(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t);
+void planHelp(Planner& pl, const InspectorLayout& l, const TypeSizes& t);
+
+// The step panel's margin and the top of what sits under the lesson title (the step text and
+// the thumbnail): one definition for inspectorLayout and planSteps.
+float stepsMargin(const InspectorLayout& l);
+float stepsBodyTop(const InspectorLayout& l, const TypeSizes& t);
+
+}  // namespace pcf::inspector_detail

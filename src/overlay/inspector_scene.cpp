@@ -1,0 +1,127 @@
+// inspector_scene.cpp: the scene panel's overlay: the picked pixel's ring and label, and the
+// shadow map's texel grid projected onto the receiver around it (the texels read tinted).
+#include "overlay/inspector_plan.h"
+
+namespace pcf::inspector_detail {
+
+void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t) {
+    glm::vec2 origin = l.scene.position();
+    glm::vec2 centre = origin + glm::vec2(m.pixel) + 0.5f;
+    float lineWidth = l.presentation ? 3.0f : 2.0f;
+    Rect scene = l.scene;
+    pl.op([=](Canvas& c) { c.pushClip(scene); });
+    glm::ivec2 region = m.lightSpaceSize;
+    if (m.trace && m.lightSpace && region.x > 0 &&
+        m.lightSpace->size() == static_cast<size_t>(region.x) * region.y * 4) {
+        const std::vector<float>& ls = *m.lightSpace;
+        glm::vec2 mapSize(m.trace->mapSize);
+        int radius = gridRadius(m.sceneSize);
+        auto texelAt = [&](int x, int y, glm::ivec2& out) {
+            if (x < 0 || y < 0 || x >= m.sceneSize.x || y >= m.sceneSize.y) return false;
+            glm::ivec2 r = glm::ivec2(x, y) - m.lightSpaceOrigin;
+            if (r.x < 0 || r.y < 0 || r.x >= region.x || r.y >= region.y) return false;
+            size_t k = (static_cast<size_t>(r.y) * region.x + r.x) * 4;
+            if (ls[k + 3] != 1.0f) return false;
+            out = glm::ivec2(glm::floor(glm::vec2(ls[k], ls[k + 1]) * mapSize));
+            return true;
+        };
+        // How many screen pixels a texel spans here: pixels per texel change along the row and
+        // the column through the picked pixel (the smaller of the two).
+        auto spanAlong = [&](glm::ivec2 dir) {
+            int valid = 0, changes = 0;
+            glm::ivec2 prev{0}, cur{0};
+            bool havePrev = false;
+            for (int k = -radius; k <= radius; ++k) {
+                glm::ivec2 q = m.pixel + dir * k;
+                if (!texelAt(q.x, q.y, cur)) {
+                    havePrev = false;
+                    continue;
+                }
+                ++valid;
+                if (havePrev && cur != prev) ++changes;
+                prev = cur;
+                havePrev = true;
+            }
+            return valid == 0 ? 0.0f : static_cast<float>(valid) / static_cast<float>(changes + 1);
+        };
+        float texelPx = std::min(spanAlong({1, 0}), spanAlong({0, 1}));
+        bool drawEdges = m.grid && texelPx >= GRID_MIN_TEXEL_PX;
+        pl.plan.gridShown = drawEdges;
+        Neighbourhood n = neighbourhoodOf(*m.trace);
+        enum Kind { NONE, FOOTPRINT_EDGE, EDGE, FOOTPRINT };
+        const Colour colours[] = {Colour{0.0f}, Colour{0.1f, 0.9f, 1.0f, 0.95f},
+                                  Colour{0.05f, 0.05f, 0.1f, 0.35f}, FOOTPRINT_TINT};
+        // Per row, runs of pixels of one kind become one rect.
+        std::vector<std::pair<Rect, Colour>> runs;
+        for (int y = m.pixel.y - radius; y <= m.pixel.y + radius; ++y) {
+            Kind runKind = NONE;
+            int runStart = 0;
+            for (int x = m.pixel.x - radius; x <= m.pixel.x + radius + 1; ++x) {
+                Kind kind = NONE;
+                glm::ivec2 tx, left, up;
+                if (x <= m.pixel.x + radius && texelAt(x, y, tx)) {
+                    bool inFootprint = tx.x >= n.origin.x && tx.y >= n.origin.y &&
+                                       tx.x < n.origin.x + n.size.x && tx.y < n.origin.y + n.size.y;
+                    bool edge = drawEdges && ((texelAt(x - 1, y, left) && left != tx) ||
+                                              (texelAt(x, y - 1, up) && up != tx));
+                    kind = edge ? (inFootprint ? FOOTPRINT_EDGE : EDGE)
+                                : (inFootprint ? FOOTPRINT : NONE);
+                }
+                if (kind != runKind) {
+                    if (runKind != NONE) {
+                        runs.push_back({{origin.x + runStart, origin.y + y,
+                                         static_cast<float>(x - runStart), 1.0f},
+                                        colours[runKind]});
+                    }
+                    runKind = kind;
+                    runStart = x;
+                }
+            }
+        }
+        pl.op([runs = std::move(runs)](Canvas& c) {
+            for (const auto& [r, col] : runs) c.fillRect(r, col);
+        });
+    }
+    float ringR = std::max(7.0f, 9.0f * l.scale);
+    pl.op([=](Canvas& c) {
+        c.ring(centre, ringR, lineWidth, Colour{0, 0, 0, 0.8f});
+        c.ring(centre, ringR, lineWidth * 0.5f, POINT);
+        c.fillRect({centre.x - 0.5f, centre.y - 0.5f, 1.0f, 1.0f}, POINT);
+        c.popClip();
+    });
+    Rect ring{centre.x - ringR - lineWidth, centre.y - ringR - lineWidth, 2 * (ringR + lineWidth),
+              2 * (ringR + lineWidth)};
+    pl.box(BoxKind::Mark, ring.intersect(l.scene), "scene", "picked-pixel");
+    std::string label = "pixel (" + std::to_string(m.pixel.x) + ", " + std::to_string(m.pixel.y) +
+                        ")" + (m.trace ? "" : ": no shadow receiver here");
+    TextStyle st{FontFace::Sans, t.label, TEXT};
+    // Beside the ring, in the first corner where the whole label stays in the scene.
+    Rect size = pl.measure({0, 0}, label, st);
+    float gap = ringR + lineWidth + 4.0f;
+    const glm::vec2 candidates[] = {{centre.x + gap, centre.y + gap * 0.3f},
+                                    {centre.x - gap - size.w, centre.y + gap * 0.3f},
+                                    {centre.x + gap, centre.y - gap * 0.3f - size.h},
+                                    {centre.x - gap - size.w, centre.y - gap * 0.3f - size.h}};
+    Rect scenePad = l.scene.expanded(-4.0f);
+    glm::vec2 at = candidates[0];
+    bool placed = false;
+    for (glm::vec2 c : candidates) {
+        Rect r{std::round(c.x), std::round(c.y), size.w, size.h};
+        if (inside(r, scenePad)) {
+            at = r.position();
+            placed = true;
+            break;
+        }
+    }
+    if (!placed) {
+        at.x = std::clamp(at.x, scenePad.x, std::max(scenePad.x, scenePad.right() - size.w));
+        at.y = std::clamp(at.y, scenePad.y, std::max(scenePad.y, scenePad.bottom() - size.h));
+    }
+    bool fits = size.w <= scenePad.w;
+    std::string shown = fits ? label : elideText(FontFace::Sans, t.label, label, scenePad.w);
+    Rect r = pl.measure(at, shown, st);
+    pl.fill(r.expanded(3).intersect(l.scene), Colour{0, 0, 0, 0.6f});
+    pl.text(at, shown, st, BoxKind::Label, "scene", "pixel-label", !fits);
+}
+
+}  // namespace pcf::inspector_detail

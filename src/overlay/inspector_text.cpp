@@ -1,0 +1,226 @@
+// inspector_text.cpp: text blocks that fit a box: wrapped, then set in smaller type down to a
+// floor, then paged (the step text, the notes, the formula).
+#include "overlay/inspector_plan.h"
+
+namespace pcf::inspector_detail {
+
+namespace {
+
+// A line of lesson text that starts with two spaces (or a tab) is preformatted: a table row or a
+// formula whose columns must stay put. It is drawn in the monospace face with every space kept;
+// only a row wider than the box is cut into pieces (at the floor size), never reflowed.
+bool preformatted(std::string_view line) {
+    return line.starts_with("  ") || line.starts_with("\t");
+}
+
+size_t codepoints(std::string_view s) {
+    size_t n = 0;
+    for (unsigned char ch : s) n += (ch & 0xC0u) != 0x80u;
+    return n;
+}
+
+// Consecutive preformatted rows whose cells are separated by two or more spaces form a table:
+// each column is padded to its widest cell, so the columns line up in the monospace face even
+// when the numbers filled into them differ in length ("1" under "0.6333").
+std::string alignTables(std::string_view text) {
+    std::vector<std::string> lines;
+    size_t start = 0;
+    while (true) {
+        size_t end = text.find('\n', start);
+        lines.emplace_back(text.substr(start, end == std::string_view::npos ? end : end - start));
+        if (end == std::string_view::npos) break;
+        start = end + 1;
+    }
+    auto cellsOf = [](const std::string& row, size_t& indent) {
+        std::vector<std::string> cells;
+        indent = row.find_first_not_of(" \t");
+        if (indent == std::string::npos) return cells;
+        size_t i = indent;
+        while (i < row.size()) {
+            size_t gap = row.find("  ", i);
+            if (gap == std::string::npos) gap = row.size();
+            cells.push_back(row.substr(i, gap - i));
+            i = row.find_first_not_of(' ', gap);
+            if (i == std::string::npos) break;
+        }
+        return cells;
+    };
+    for (size_t k = 0; k < lines.size();) {
+        size_t end = k;
+        while (end < lines.size() && preformatted(lines[end])) ++end;
+        if (end - k >= 2) {
+            std::vector<std::vector<std::string>> rows;
+            std::vector<size_t> indents;
+            bool table = true;
+            for (size_t r = k; r < end; ++r) {
+                size_t indent = 0;
+                rows.push_back(cellsOf(lines[r], indent));
+                indents.push_back(indent);
+                if (rows.back().size() < 2) table = false;
+            }
+            if (table) {
+                std::vector<size_t> widths;
+                for (const auto& row : rows) {
+                    if (widths.size() < row.size()) widths.resize(row.size(), 0);
+                    for (size_t c = 0; c < row.size(); ++c) {
+                        widths[c] = std::max(widths[c], codepoints(row[c]));
+                    }
+                }
+                for (size_t r = 0; r < rows.size(); ++r) {
+                    std::string out(indents[r], ' ');
+                    for (size_t c = 0; c < rows[r].size(); ++c) {
+                        out += rows[r][c];
+                        if (c + 1 < rows[r].size()) {
+                            out += std::string(widths[c] - codepoints(rows[r][c]) + 3, ' ');
+                        }
+                    }
+                    lines[k + r] = out;
+                }
+            }
+        }
+        k = std::max(end, k + 1);
+    }
+    std::string out;
+    for (size_t k = 0; k < lines.size(); ++k) out += (k ? "\n" : "") + lines[k];
+    return out;
+}
+
+std::vector<FitLine> wrapBlock(std::string_view text, FontFace face, float size, float width,
+                               bool& tooWide) {
+    std::vector<FitLine> out;
+    size_t start = 0;
+    std::string prose;  // consecutive prose lines form one paragraph source ('\n' kept)
+    auto flushProse = [&]() {
+        if (prose.empty()) return;
+        for (std::string& l : wrapText(face, size, prose, width))
+            out.push_back({std::move(l), false});
+        prose.clear();
+    };
+    while (true) {
+        size_t end = text.find('\n', start);
+        std::string_view line =
+            text.substr(start, end == std::string_view::npos ? end : end - start);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        if (preformatted(line)) {
+            flushProse();
+            std::string row(line);
+            for (char& ch : row) {
+                if (ch == '\t') ch = ' ';
+            }
+            float w = measureText(FontFace::Mono, size, row).x;
+            if (w > width) {
+                // Too wide for the box: wrapped at its spaces, continuation lines indented
+                // further (a table row this wide has no columns to keep at this size).
+                tooWide = true;
+                size_t indent = row.find_first_not_of(' ');
+                if (indent == std::string::npos) indent = 0;
+                std::string lead(indent, ' ');
+                float leadW = measureText(FontFace::Mono, size, lead + "  ").x;
+                std::vector<std::string> parts =
+                    wrapText(FontFace::Mono, size, row.substr(indent),
+                             std::max(8.0f * size * 0.6f, width - leadW));
+                for (size_t k = 0; k < parts.size(); ++k) {
+                    out.push_back({(k == 0 ? lead : lead + "  ") + parts[k], true});
+                }
+                if (end == std::string_view::npos) break;
+                start = end + 1;
+                continue;
+            }
+            out.push_back({row, true});
+        } else {
+            if (line.empty()) {
+                // A paragraph gap: one empty line.
+                flushProse();
+                if (!out.empty() && !out.back().text.empty()) out.push_back({"", false});
+            } else {
+                if (!prose.empty()) prose += '\n';
+                prose += std::string(line);
+            }
+        }
+        if (end == std::string_view::npos) break;
+        start = end + 1;
+    }
+    flushProse();
+    // Leading and trailing empty lines take room and say nothing.
+    while (!out.empty() && out.back().text.empty()) out.pop_back();
+    while (!out.empty() && out.front().text.empty()) out.erase(out.begin());
+    if (out.empty()) out.push_back({"", false});
+    return out;
+}
+
+}  // namespace
+
+FittedText fitText(std::string_view text, FontFace face, float start, float floor, float width,
+                   float height) {
+    FittedText f;
+    std::string aligned = alignTables(text);
+    text = aligned;
+    float size = std::max(start, floor);
+    while (true) {
+        bool tooWide = false;
+        bool atFloor = size <= floor;
+        f.lines = wrapBlock(text, face, size, width, tooWide);
+        f.size = size;
+        f.lineHeight = lineHeightOf(size);
+        float needed = static_cast<float>(f.lines.size()) * f.lineHeight;
+        // A preformatted row that had to wrap loses its columns: smaller type first, if the
+        // floor allows (then the rows wrap at the floor).
+        if ((needed <= height && !tooWide) || atFloor) break;
+        size = stepDown(size, floor);
+        f.stepped = true;
+    }
+    int fitting = std::max(1, static_cast<int>(std::floor(height / f.lineHeight)));
+    if (static_cast<int>(f.lines.size()) <= fitting) {
+        f.linesPerPage = static_cast<int>(f.lines.size());
+        f.pages = 1;
+    } else {
+        // One line of every page is the "more" mark's.
+        f.linesPerPage = std::max(1, fitting - 1);
+        f.pages = (static_cast<int>(f.lines.size()) + f.linesPerPage - 1) / f.linesPerPage;
+    }
+    return f;
+}
+
+float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, FontFace face,
+                  const Colour& colour, const std::string& panel, const std::string& role,
+                  const std::string& moreHint) {
+    page = std::clamp(page, 0, f.pages - 1);
+    size_t first = static_cast<size_t>(page * f.linesPerPage);
+    size_t last = std::min(f.lines.size(), first + static_cast<size_t>(f.linesPerPage));
+    float y = area.y;
+    float widest = 0.0f;
+    for (size_t k = first; k < last; ++k) {
+        const FitLine& line = f.lines[k];
+        if (!line.text.empty()) {
+            FontFace lf = line.mono ? FontFace::Mono : face;
+            TextStyle st{lf, f.size, line.mono ? MONO_TEXT : colour};
+            glm::vec2 at{std::round(area.x), std::round(y)};
+            std::string s = line.text;
+            pl.op([=](Canvas& cv) { cv.text(at, s, st); });
+            widest = std::max(widest, measureText(lf, f.size, s).x);
+        }
+        y += f.lineHeight;
+    }
+    float used = y - area.y;
+    pl.box(BoxKind::Text, {std::round(area.x), std::round(area.y), std::min(widest, area.w), used},
+           panel, role, f.size, f.pages > 1);
+    if (f.pages > 1) {
+        std::string more =
+            page + 1 < f.pages
+                ? "more " + moreHint + " (" + std::to_string(page + 1) + "/" +
+                      std::to_string(f.pages) + ")"
+                : "(" + std::to_string(page + 1) + "/" + std::to_string(f.pages) + ")";
+        float ms = std::max(10.0f, std::round(f.size * 0.85f));
+        Rect r = pl.measure({area.right(), area.bottom() - lineHeightOf(ms)}, more,
+                            {FontFace::Sans, ms, ACCENT, TextAlign::Right});
+        // The mark has the area's last line to itself (linesPerPage left it free).
+        r.y = std::max(r.y, y);
+        pl.fill(r.expanded(2), Colour{0.35f, 0.78f, 0.98f, 0.18f});
+        glm::vec2 at = r.position();
+        pl.op([=](Canvas& cv) { cv.text(at, more, {FontFace::Sans, ms, ACCENT}); });
+        pl.box(BoxKind::Mark, r, panel, "more", ms);
+    }
+    return used;
+}
+
+}  // namespace pcf::inspector_detail
