@@ -502,24 +502,27 @@ void Session::blitHeatmap() {
 // per texel, and the median over the receivers.
 void Session::drawHeatLegend() {
     const Rect& scene = mLayout.scene;
-    float s = mLayout.scale;
-    float font = std::max(12.0f, std::round((mPresentation ? 18.0f : 14.0f) * s));
-    float pad = std::round(font * 0.6f);
-    float barW = std::round(font * 16.0f);
-    float barH = std::round(font * 0.9f);
-    float lineH = std::round(font * 1.35f);
-    Rect box{scene.x + pad, 0.0f, barW + 2.0f * pad, 2.0f * pad + 2.0f * lineH + barH};
-    box.y = scene.y + scene.h - pad - box.h;
-    mCanvas.fillRect(box, {0.08f, 0.09f, 0.11f, 0.85f});
+    float font = std::max(12.0f, std::round((mPresentation ? 18.0f : 14.0f) * mLayout.scale));
     std::vector<float> measured;
     for (float v : mHeatValues) {
         if (v > 0.0f) measured.push_back(v);
     }
-    std::string title = "Screen pixels per shadow-map texel (Lloyd et al.)";
+    std::string title = "screen pixels per texel";
     if (!measured.empty()) {
         std::nth_element(measured.begin(), measured.begin() + measured.size() / 2, measured.end());
-        title += ", median " + formatNumber(measured[measured.size() / 2]);
+        char median[32];
+        std::snprintf(median, sizeof median, ", median %.3g",
+                      static_cast<double>(measured[measured.size() / 2]));
+        title += median;
     }
+    float pad = std::round(font * 0.6f);
+    float lineH = std::round(font * 1.35f);
+    float barH = std::round(font * 0.9f);
+    float barW = std::max(std::round(font * 14.0f), measureText(FontFace::Sans, font, title).x);
+    barW = std::min(barW, scene.w - 4.0f * pad);
+    Rect box{scene.x + pad, 0.0f, barW + 2.0f * pad, 2.0f * pad + 2.0f * lineH + barH};
+    box.y = scene.y + scene.h - pad - box.h;
+    mCanvas.fillRect(box, {0.08f, 0.09f, 0.11f, 0.85f});
     TextStyle text{FontFace::Sans, font, {0.92f, 0.93f, 0.95f, 1.0f}};
     mCanvas.text({box.x + pad, box.y + pad}, title, text);
     float barY = box.y + pad + lineH;
@@ -532,13 +535,13 @@ void Session::drawHeatLegend() {
         mCanvas.fillRect({x0, barY, x1 - x0, barH}, {c, 1.0f});
     }
     float labelY = barY + barH + std::round(font * 0.2f);
-    TextStyle label = text;
-    label.align = TextAlign::Left;
-    mCanvas.text({box.x + pad, labelY}, "1/16 (minified)", label);
-    label.align = TextAlign::Center;
-    mCanvas.text({box.x + pad + barW / 2.0f, labelY}, "1", label);
-    label.align = TextAlign::Right;
-    mCanvas.text({box.x + pad + barW, labelY}, "16 (one texel, many pixels)", label);
+    mCanvas.text({box.x + pad, labelY}, "1/16", text);
+    TextStyle centre = text;
+    centre.align = TextAlign::Center;
+    mCanvas.text({box.x + pad + barW / 2.0f, labelY}, "1", centre);
+    TextStyle right = text;
+    right.align = TextAlign::Right;
+    mCanvas.text({box.x + pad + barW, labelY}, "16", right);
 }
 
 InspectorModel Session::model() const {
