@@ -43,7 +43,8 @@ std::string settingsSummary(const LessonSettings& s) {
     if (s.bias == "receiver-plane") line << " dz<=" << formatNumber(s.rpdbMax);
     line << "   cull " << s.cull << "   map " << s.mapSize << " " << s.depthFormat;
     if (s.originShift != 0.0f || s.snap) {
-        line << "   grid +" << formatNumber(s.originShift) << " texel" << (s.snap ? " snapped" : "");
+        line << "   grid +" << formatNumber(s.originShift) << " texel"
+             << (s.snap ? " snapped" : "");
     }
     if (s.precision == PCF_PRECISION_HW8) line << "   hw8";
     return line.str();
