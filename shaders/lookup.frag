@@ -8,6 +8,7 @@ uniform float uRadius;
 uniform int uRotatePerPixel;
 uniform int uBiasMode;       // PCF_BIAS_* (the per-tap part: receiver plane, soft, interpolated)
 uniform float uSoftScale;
+uniform float uRpdbMax;      // receiver-plane: cap on dz/duv, depth per uv unit
 uniform int uWeights;  // PCF_WEIGHTS_* for pcf-naive and pcf-gather
 uniform float uSigma;  // gaussian weights, texels
 
@@ -19,7 +20,7 @@ void main() {
     vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(pixel) : vec2(1.0f, 0.0f);
     vec4 plane = texelFetch(uPlanes, pixel, 0);
     vec2 uv = vec2(lookup.x, lookup.y);
-    PcfRef ref = PcfRef(lookup.z, uv, PcfBias(uBiasMode, vec2(plane.x, plane.y), uSoftScale));
+    PcfRef ref = PcfRef(lookup.z, uv, PcfBias(uBiasMode, vec2(plane.x, plane.y), uSoftScale, uRpdbMax));
     oVisibility = pcfFilterRef(uPcfDepth, uv, ref,
                                PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights, uSigma));
 }

@@ -23,6 +23,7 @@ uniform float uSlopeMax;              // slope: max
 uniform float uNormalOffset;          // normal: k, texels
 uniform float uShadowTexelWs;         // world size of one map texel at clip.w = 1
 uniform float uSoftScale;             // soft: the correction scale of "PCF Shadow Acne 2"
+uniform float uRpdbMax;               // receiver-plane: cap on dz/duv, depth per uv unit
 uniform float uRadius;                // poisson radius in texels
 uniform int uRotatePerPixel;          // poisson: rotate the disk per pixel
 uniform int uWeights;                 // pcf-naive, pcf-gather: PCF_WEIGHTS_*
@@ -77,14 +78,15 @@ void main() {
     }
     float ref = z - bias;
     // The receiver's plane in the map, from this pixel's screen-space derivatives (Isidoro 2006,
-    // pcfReceiverPlaneDzDuv); written out so the CPU kernel uses the very same slope.
+    // pcfReceiverPlaneDzDuv); written out so the CPU kernel uses the very same slope. The kernel
+    // caps it (pcfClampDzDuv, uRpdbMax): the target holds the slope as measured.
     vec2 dzduv = pcfReceiverPlaneDzDuv(dFdx(vec3(u, v, z)), dFdy(vec3(u, v, z)));
 
     float visibility = 1.0f;
     if (uReceives != 0) {
         vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(ivec2(gl_FragCoord.xy))
                                              : vec2(1.0f, 0.0f);
-        PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(uBiasMode, dzduv, uSoftScale));
+        PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(uBiasMode, dzduv, uSoftScale, uRpdbMax));
         visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef,
                                   PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights,
                                             uSigma));

@@ -4,15 +4,22 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <random>
+#include <sstream>
 
 #include "json_lite.h"
 #include "kernel/methods.h"
 #include "kernel/trace.h"
-#include "run_command.h"
 #include "random_map.h"
+#include "render/gl_context.h"
+#include "render/scene_renderer.h"
+#include "run_command.h"
+#include "scene/presets.h"
+#include "scene/raycast.h"
 
 namespace pcf {
 namespace {
@@ -67,8 +74,9 @@ TEST(Bias, ConstantAndFlatReceiverPlaneLeaveEveryMethodUnchanged) {
             float plain = filterVisibility(map, uv, ref, prm);
             for (int mode : {PCF_BIAS_NONE, PCF_BIAS_CONSTANT, PCF_BIAS_SLOPE, PCF_BIAS_NORMAL,
                              PCF_BIAS_RECEIVER_PLANE}) {
-                EXPECT_EQ(filterVisibility(map, uv, ref, prm, PcfBias(mode, vec2(0.0f), 7.0f)),
-                          plain)
+                EXPECT_EQ(
+                    filterVisibility(map, uv, ref, prm, PcfBias(mode, vec2(0.0f), 7.0f, 0.01f)),
+                    plain)
                     << biasName(mode) << " " << methodInfo(prm.method).name;
             }
         }
@@ -131,7 +139,7 @@ TEST(Bias, ReceiverPlaneRemovesTheAcneOfOneRefForAllNeighbours) {
         float ref = surface - 0.001f;  // a constant bias far below one texel's depth step
         PcfParams prm = makeParams(PCF_GATHER, 3);
         acneConstant += filterVisibility(map, uv, ref, prm) < 0.99f ? 1 : 0;
-        PcfBias plane(PCF_BIAS_RECEIVER_PLANE, dzduv, 0.0f);
+        PcfBias plane(PCF_BIAS_RECEIVER_PLANE, dzduv, 0.0f, PCF_DZDUV_UNCLAMPED);
         acnePlane += filterVisibility(map, uv, ref, makeParams(PCF_NAIVE, 3), plane) < 0.99f;
     }
     EXPECT_GT(acneConstant, 150);  // nearly every lookup darkened by its own surface
@@ -144,7 +152,7 @@ TEST(Bias, SoftComparisonAtHugeScaleEqualsTheHardOne) {
     ShadowMap map = randomMap(23, 17, 7);
     std::mt19937 rng(8);
     std::uniform_real_distribution<float> u(-0.05f, 1.05f);
-    PcfBias soft(PCF_BIAS_SOFT, vec2(0.0f), 1.0e9f);
+    PcfBias soft(PCF_BIAS_SOFT, vec2(0.0f), 1.0e9f, PCF_DZDUV_UNCLAMPED);
     int checked = 0;
     for (const PcfParams& prm : everyMethod()) {
         if (validateBias(PCF_BIAS_SOFT, prm.method)) continue;
@@ -170,7 +178,8 @@ TEST(Bias, SoftComparisonDarkensTexelsJustBeyondTheReceiver) {
     vec2 uv(0.5f);
     PcfParams prm = makeParams(PCF_GATHER, 3);
     EXPECT_EQ(filterVisibility(map, uv, 0.499f, prm), 1.0f);
-    float soft = filterVisibility(map, uv, 0.499f, prm, PcfBias(PCF_BIAS_SOFT, vec2(0.0f), 500.0f));
+    float soft = filterVisibility(map, uv, 0.499f, prm,
+                                  PcfBias(PCF_BIAS_SOFT, vec2(0.0f), 500.0f, PCF_DZDUV_UNCLAMPED));
     EXPECT_NEAR(soft, 0.5f, 1e-4f);  // depth - ref = 0.001, times 500
 }
 
@@ -183,7 +192,7 @@ TEST(Bias, InterpolatedDepthFollowsAPlanarSurfaceWhereNearestMakesAcne) {
     for (int j = 0; j < size; ++j) {
         for (int i = 0; i < size; ++i) map.setDepth(i, j, 0.2f + 0.01f * i + 0.004f * j);
     }
-    PcfBias interp(PCF_BIAS_INTERPOLATED, vec2(0.0f), 0.0f);
+    PcfBias interp(PCF_BIAS_INTERPOLATED, vec2(0.0f), 0.0f, PCF_DZDUV_UNCLAMPED);
     std::mt19937 rng(9);
     std::uniform_real_distribution<float> u(0.1f, 0.9f);
     int acneNearest = 0;
@@ -252,6 +261,7 @@ TEST(Bias, TraceJsonCarriesTheModeItsParametersAndEachTapsShift) {
     b.dzduv = vec2(0.5f, 0.25f);
     Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.498f, makeParams(PCF_BILINEAR2X2), b);
     std::string json = traceToJson(tr);
+    EXPECT_NE(json.find("\"rpdb_max\":100,\"dzduv_used\":[0.5,0.25]"), std::string::npos) << json;
     EXPECT_NE(json.find("\"bias\":{\"mode\":\"receiver-plane\""), std::string::npos) << json;
     EXPECT_NE(json.find("\"dzduv\":[0.5,0.25]"), std::string::npos) << json;
     EXPECT_NE(json.find("\"per_tap\":\"per texel, at its centre\""), std::string::npos);
@@ -260,6 +270,164 @@ TEST(Bias, TraceJsonCarriesTheModeItsParametersAndEachTapsShift) {
     bool perTapStep = false;
     for (const TraceStep& s : tr.steps) perTapStep = perTapStep || s.title == "Each tap's own ref";
     EXPECT_TRUE(perTapStep);
+}
+
+// The cap on the receiver plane's slope (pcfClampDzDuv): per component, in depth per uv unit,
+// and a slope within it passes unchanged.
+TEST(Bias, ReceiverPlaneSlopeIsCappedPerComponent) {
+    EXPECT_EQ(pcfClampDzDuv(vec2(0.5f, -3.0f), 2.0f), vec2(0.5f, -2.0f));
+    EXPECT_EQ(pcfClampDzDuv(vec2(-7.0f, 2.5f), 2.0f), vec2(-2.0f, 2.0f));
+    const vec2 below(1.23456f, -0.987654f);
+    EXPECT_EQ(pcfClampDzDuv(below, 2.0f), below);       // bit for bit
+    EXPECT_EQ(pcfClampDzDuv(below, 0.0f), vec2(0.0f));  // 0: one ref for every tap
+
+    // The kernel applies it: a steep plane under a cap looks up exactly as the capped plane.
+    ShadowMap map = randomMap(24, 20, 8);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(0.1f, 0.9f);
+    std::uniform_real_distribution<float> steep(-4.0f, 4.0f);
+    int changed = 0;
+    for (const PcfParams& prm : everyMethod()) {
+        for (int k = 0; k < 100; ++k) {
+            vec2 uv(u(rng), u(rng));
+            float ref = u(rng);
+            vec2 g(steep(rng), steep(rng));
+            PcfBias withCap(PCF_BIAS_RECEIVER_PLANE, g, 0.0f, 0.5f);
+            PcfBias asCapped(PCF_BIAS_RECEIVER_PLANE, pcfClampDzDuv(g, 0.5f), 0.0f,
+                             PCF_DZDUV_UNCLAMPED);
+            PcfBias unclamped(PCF_BIAS_RECEIVER_PLANE, g, 0.0f, PCF_DZDUV_UNCLAMPED);
+            float v = filterVisibility(map, uv, ref, prm, withCap);
+            EXPECT_EQ(v, filterVisibility(map, uv, ref, prm, asCapped))
+                << methodInfo(prm.method).name;
+            changed += v != filterVisibility(map, uv, ref, prm, unclamped) ? 1 : 0;
+        }
+    }
+    EXPECT_GT(changed, 100);  // the cap bound, and mattered
+}
+
+// What the cap is for: a pixel on an outline gets a "slope" from a derivative across two
+// surfaces, far steeper than its own flat surface. On a flat, lit receiver (depth 0.5 stored,
+// ref a constant bias in front) that slope sends half the taps' refs behind the map; capped,
+// every tap stays within the constant bias and the receiver is lit again.
+TEST(Bias, TheCapKeepsAWrongSlopeFromShadowingAFlatLitSurface) {
+    ShadowMap map(64, 64, 0.5f);
+    const vec2 garbage(3000.0f, -50.0f);  // what an outline pixel's derivatives can give
+    int darkUnclamped = 0;
+    int darkCapped = 0;
+    for (const PcfParams& prm : everyMethod()) {
+        if (validateBias(PCF_BIAS_RECEIVER_PLANE, prm.method)) continue;
+        float ref = 0.5f - DEFAULT_CONSTANT_BIAS;
+        vec2 uv(0.5f + 0.3f / 64.0f, 0.5f - 0.2f / 64.0f);
+        PcfBias unclamped(PCF_BIAS_RECEIVER_PLANE, garbage, 0.0f, PCF_DZDUV_UNCLAMPED);
+        // A cap small enough for this map: 0.02 depth per uv = 0.0003 per texel, so even the
+        // widest footprint here (tent 7x7, about 4 texels out) stays within the constant 0.002.
+        PcfBias capped(PCF_BIAS_RECEIVER_PLANE, garbage, 0.0f, 0.02f);
+        darkUnclamped += filterVisibility(map, uv, ref, prm, unclamped) < 0.99f ? 1 : 0;
+        darkCapped += filterVisibility(map, uv, ref, prm, capped) < 0.99f ? 1 : 0;
+    }
+    EXPECT_GT(darkUnclamped, 10);
+    EXPECT_EQ(darkCapped, 0);
+}
+
+// The trace says when the cap bound, and the JSON carries the slope the taps used.
+TEST(Bias, TraceShowsTheCappedSlope) {
+    ShadowMap map = randomMap(8, 8, 11);
+    BiasParams b;
+    b.mode = PCF_BIAS_RECEIVER_PLANE;
+    b.dzduv = vec2(0.5f, 0.25f);
+    b.rpdbMax = 0.125f;
+    Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.498f, makeParams(PCF_BILINEAR2X2), b);
+    std::string json = traceToJson(tr);
+    EXPECT_NE(json.find("\"dzduv\":[0.5,0.25],\"rpdb_max\":0.125,\"dzduv_used\":[0.125,0.125]"),
+              std::string::npos)
+        << json;
+    // Texel (3,3)'s centre is half a texel left and below uv 0.5: shift -(0.125 + 0.125) / 16.
+    EXPECT_NE(json.find("\"ref_shift\":-0.015625"), std::string::npos) << json;
+    std::string all;
+    for (const TraceStep& s : tr.steps) all += s.text;
+    EXPECT_NE(all.find("capped at 0.125 depth per uv unit"), std::string::npos) << all;
+}
+
+// The default cap on `grazing`: its flat surfaces (the ground and the box top share one slope,
+// 1.3 light depth per uv unit) are far below it, and so is every lit face, so the picture a
+// viewer sees does not change. It binds only where the screen-space derivative is no slope: on
+// the box's faces edge-on to the light or turned from it (up to ~2e5 per uv unit there), which
+// shading leaves dark whatever the filter says. (The unclamped plane does NOT darken the box
+// top here: measured, 0 of its ~1400 pixels below 0.99 with pcf-gather 3x3 and 5x5, pcf-naive
+// 5x5 at maps 512 and 1024.) Pixels the cap changes that a viewer would see are judged by a
+// shadow ray from their own world point: toward the truth or away from it.
+TEST(BiasRendered, TheDefaultCapChangesNothingAViewerSeesOnGrazing) {
+    std::unique_ptr<GlContext> gl = createHeadlessContext();
+    Scene scene = *presetScene("grazing");
+    SceneRenderer renderer(scene);
+    glm::vec3 toLight = -glm::normalize(scene.light.directionWs);
+    RenderSettings s;
+    s.frameSize = {480, 270};
+    s.bias = BiasMode::ReceiverPlane;
+    s.writePositions = true;
+    std::vector<float> caps = {DEFAULT_RPDB_MAX};
+    if (const char* e = std::getenv("PCF_RPDB_CAPS")) {  // exploring other caps by hand
+        caps.clear();
+        for (std::istringstream in(e); in.good();) {
+            float c = 0.0f;
+            in >> c;
+            caps.push_back(c);
+        }
+    }
+    for (float cap : caps) {
+        int fixed = 0;
+        int broken = 0;
+        int steep = 0;
+        int flatChanged = 0;
+        int unseenChanged = 0;
+        int receivers = 0;
+        for (int mapSize : {256, 512, 1024}) {
+            for (const PcfParams& prm : {makeParams(PCF_GATHER, 3), makeParams(PCF_GATHER, 5),
+                                         makeParams(PCF_NAIVE, 5), makeParams(PCF_HW, 5)}) {
+                s.mapSize = mapSize;
+                s.method = prm.method;
+                s.kernel = prm.kernel;
+                s.rpdbMax = PCF_DZDUV_UNCLAMPED;
+                renderer.render(s);
+                std::vector<float> measured = renderer.readVisibility();
+                std::vector<float> rc = renderer.readReceiver();
+                std::vector<float> pos = renderer.readPositions();
+                s.rpdbMax = cap;
+                renderer.render(s);
+                std::vector<float> capped = renderer.readVisibility();
+                for (size_t k = 0; k < capped.size(); ++k) {
+                    if (rc[4 * k + 3] != 1.0f) continue;
+                    ++receivers;
+                    glm::vec2 g(rc[4 * k], rc[4 * k + 1]);
+                    bool isSteep = glm::max(std::fabs(g.x), std::fabs(g.y)) > cap;
+                    steep += isSteep ? 1 : 0;
+                    float d = capped[k] - measured[k];
+                    if (std::fabs(d) <= 0.01f) continue;
+                    if (!isSteep) ++flatChanged;
+                    glm::vec3 p(pos[4 * k], pos[4 * k + 1], pos[4 * k + 2]);
+                    // The box's faces turned from the light (x = -1.1) or edge-on to it
+                    // (z = +-0.6) are dark by shading: what the filter says there is not seen.
+                    if (std::fabs(p.x + 1.1f) < 1e-3f || std::fabs(std::fabs(p.z) - 0.6f) < 1e-3f) {
+                        ++unseenChanged;
+                        continue;
+                    }
+                    bool lit = !occluded(scene, p + 1e-3f * toLight, toLight, RAY_T_MAX);
+                    ((d > 0.0f) == lit ? fixed : broken) += 1;
+                }
+            }
+        }
+        std::printf(
+            "grazing, receiver-plane, rpdb-max %g: %d of %d receiver pixels capped; "
+            "changed: %d on unlit faces; of those a viewer sees, %d toward the truth, "
+            "%d away\n",
+            static_cast<double>(cap), steep, receivers, unseenChanged, fixed, broken);
+        if (cap != DEFAULT_RPDB_MAX) continue;
+        EXPECT_EQ(flatChanged, 0) << "only pixels the cap bound on change";
+        EXPECT_GT(steep, 0) << "there are derivatives that are no slope";
+        EXPECT_LT(steep, receivers / 1000) << "the cap binds on those only";
+        EXPECT_GT(unseenChanged, 0);
+        EXPECT_EQ(fixed + broken, 0) << "nothing a viewer sees changes";
+    }
 }
 
 // ---- The command line ----

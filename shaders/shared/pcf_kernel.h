@@ -153,7 +153,11 @@ struct PcfBias {
     int mode;         // PCF_BIAS_NONE .. PCF_BIAS_INTERPOLATED
     vec2 dzduv;       // receiver-plane: d(depth)/d(u, v) of the receiver, light depth per uv unit
     float softScale;  // soft: "PCF Shadow Acne 2"'s Z_CMP_CORRECTION_SCALE, 1/depth
+    float dzduvMax;   // receiver-plane: cap on |dz/du|, |dz/dv|, light depth per uv unit
 };
+
+// A cap so large no receiver reaches it: the receiver plane as measured (tests, old callers).
+PCF_CONST float PCF_DZDUV_UNCLAMPED = 1.0e30f;
 
 // A lookup's comparison depth with what varies it per tap.
 struct PcfRef {
@@ -164,7 +168,7 @@ struct PcfRef {
 
 // One ref for every tap: what every method did before per-tap biases.
 PCF_FN PcfRef pcfPlainRef(float ref, vec2 uv) {
-    return PcfRef(ref, uv, PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f));
+    return PcfRef(ref, uv, PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, PCF_DZDUV_UNCLAMPED));
 }
 
 // The centre of texel t in uv (DESIGN.md 2): ((i + 0.5) / W, (j + 0.5) / H).
@@ -182,6 +186,23 @@ PCF_FN float pcfRefAt(PcfRef r, vec2 tapUv) {
     PCF_PRECISE float dz = r.bias.dzduv.x * du + r.bias.dzduv.y * dv;
     PCF_PRECISE float tapRef = r.ref + dz;
     return tapRef;
+}
+
+// The receiver plane's slope, capped. The slope comes from screen-space derivatives, and where
+// a pixel's 2x2 quad straddles two surfaces (an outline, a box's edge) or the surface is edge-on
+// to the light, dz/duv is no usable slope (on `grazing` up to ~2e5 light depth per uv unit, where
+// the ground has 1.3) and the plane sends the taps' refs far off. Engines therefore clamp it
+// before use: DiligentFX (DiligentGraphics, Shaders/Common/public/Shadows.fxh,
+// fReceiverPlaneDepthBiasClamp) clamps each component of dz/duv, in depth per uv unit, before it
+// scales it to texels:
+//   dz/du' = clamp(dz/du, -M, M),  dz/dv' = clamp(dz/dv, -M, M)     (light depth per uv unit)
+// Per uv unit, as there, the cap is a property of the surface's tilt and means the same at every
+// map size. A slope within the cap is returned unchanged, bit for bit.
+// (MJP's Shadows sample, Mesh.hlsl, caps a related static term instead,
+// min(dot(texelSize, |dz/duv|), 0.01), and Unity's UnityShadowLibrary.cginc does the same with
+// its own constant; pcfscope has no such term: --constant-bias plays its part.)
+PCF_FN vec2 pcfClampDzDuv(vec2 dzduv, float maxPerUv) {
+    return vec2(clamp(dzduv.x, -maxPerUv, maxPerUv), clamp(dzduv.y, -maxPerUv, maxPerUv));
 }
 
 // The soft comparison of "PCF Shadow Acne 2": a tap counts as lit only when the
@@ -684,6 +705,9 @@ PCF_FN vec2 pcfPixelRotation(ivec2 pixel) {
 // The entry point with a bias mode: visibility of a receiver seen at uv, compared per tap as
 // ref (PcfRef) says. Weighted sums can land an ulp above 1; the result is clamped to [0,1].
 PCF_MAP_FN float pcfFilterRef(Map map, vec2 uv, PcfRef ref, PcfParams prm) {
+    if (ref.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
+        ref.bias.dzduv = pcfClampDzDuv(ref.bias.dzduv, ref.bias.dzduvMax);
+    }
     float v;
     if (prm.method == PCF_NEAREST) {
         v = pcfNearest(map, uv, ref, 1.0f);

@@ -552,19 +552,13 @@ class Sweeper {
         return static_cast<double>(n) / values.size();
     }
 
-    // log2(pixels per texel) from -4 (deep blue: 16 texels per pixel, minified) through white
-    // (one texel per pixel) to +4 (deep red: one texel smeared over 16 pixels); grey where it
-    // is not measured.
+    // aliasingHeatColour per pixel; grey where it is not measured.
     static std::vector<uint8_t> aliasingHeatmap(const std::vector<float>& ppt,
                                                 const ErrorRegions& regions) {
         std::vector<uint8_t> rgba(ppt.size() * 4);
         for (size_t k = 0; k < ppt.size(); ++k) {
-            glm::vec3 c(0.55f);
-            if (regions.compared[k] && ppt[k] > 0.0f) {
-                float t = std::clamp(std::log2(ppt[k]) / 4.0f, -1.0f, 1.0f);
-                glm::vec3 white(1.0f), red(0.75f, 0.05f, 0.1f), blue(0.1f, 0.25f, 0.75f);
-                c = t >= 0.0f ? glm::mix(white, red, t) : glm::mix(white, blue, -t);
-            }
+            glm::vec3 c = ALIASING_HEAT_NONE;
+            if (regions.compared[k] && ppt[k] > 0.0f) c = aliasingHeatColour(ppt[k]);
             for (int i = 0; i < 3; ++i) {
                 rgba[k * 4 + i] = static_cast<uint8_t>(std::lround(c[i] * 255.0f));
             }
@@ -575,6 +569,12 @@ class Sweeper {
 };
 
 }  // namespace
+
+glm::vec3 aliasingHeatColour(float pixelsPerTexel) {
+    float t = std::clamp(std::log2(pixelsPerTexel) / ALIASING_HEAT_LOG2_RANGE, -1.0f, 1.0f);
+    glm::vec3 white(1.0f), red(0.75f, 0.05f, 0.1f), blue(0.1f, 0.25f, 0.75f);
+    return t >= 0.0f ? glm::mix(white, red, t) : glm::mix(white, blue, -t);
+}
 
 std::string_view sweepName(Sweep sweep) {
     switch (sweep) {

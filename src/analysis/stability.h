@@ -157,4 +157,12 @@ std::vector<glm::vec3> footprintPoints(const Scene& scene, const glm::mat4& shad
 std::vector<float> pixelsPerTexel(const std::vector<float>& lightSpace, glm::ivec2 frameSize,
                                   int mapSize);
 
+// The heat map's colour of one pixels-per-texel value (aliasing_heatmap.png and the viewer's A
+// key): log2 of it from -4 (deep blue: 16 texels per pixel) through white (one texel per pixel)
+// to +4 (deep red: one texel over 16 pixels), clamped beyond; RGB in [0,1].
+constexpr float ALIASING_HEAT_LOG2_RANGE = 4.0f;
+glm::vec3 aliasingHeatColour(float pixelsPerTexel);
+// The colour of a value not measured (-1 from pixelsPerTexel).
+constexpr glm::vec3 ALIASING_HEAT_NONE{0.55f, 0.55f, 0.55f};
+
 }  // namespace pcf

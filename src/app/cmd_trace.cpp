@@ -30,6 +30,7 @@ struct TraceOptions {
     float slopeMax = DEFAULT_SLOPE_MAX;
     float normalOffset = DEFAULT_NORMAL_OFFSET;
     float softScale = DEFAULT_SOFT_SCALE;
+    float rpdbMax = DEFAULT_RPDB_MAX;
     float angleDeg = 0.0f;  // slope: the angle between the receiver's normal and the light
     std::string dzduv;      // receiver-plane: "DU,DV"
     CLI::Option* angleOption = nullptr;
@@ -95,11 +96,12 @@ int runTrace(const TraceOptions& o) {
     bias.slopeMax = o.slopeMax;
     bias.normalOffset = o.normalOffset;
     bias.softScale = o.softScale;
+    bias.rpdbMax = o.rpdbMax;
     if (auto why = validateBiasParams(bias, "--")) throw UsageError(*why);
     // trace's default mode is none: a parameter given without a mode would do nothing.
     if (o.sub->count("--bias") == 0) {
         for (const char* p : {"--constant-bias", "--slope-bias", "--slope-max", "--normal-offset",
-                              "--soft-scale"}) {
+                              "--soft-scale", "--rpdb-max"}) {
             if (o.sub->count(p) > 0) {
                 throw UsageError(std::string(p) + " needs --bias NAME (trace's default is none)");
             }
@@ -166,7 +168,7 @@ Command addTraceCommand(CLI::App& app) {
     o->sub = sub;
     o->zOption = sub->add_option("--z", o->z, "receiver depth in [0,1] as the light sees it");
     addBiasOptions(sub, o->bias, o->constantBias, o->slopeBias, o->slopeMax, o->normalOffset,
-                   o->softScale);
+                   o->softScale, o->rpdbMax);
     o->angleOption = sub->add_option(
         "--angle", o->angleDeg,
         "slope: angle in degrees between the receiver's normal and the light (default 0)");

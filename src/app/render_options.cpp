@@ -13,7 +13,7 @@
 namespace pcf {
 
 void addBiasOptions(CLI::App* sub, std::string& bias, float& constantBias, float& slopeBias,
-                    float& slopeMax, float& normalOffset, float& softScale) {
+                    float& slopeMax, float& normalOffset, float& softScale, float& rpdbMax) {
     sub->add_option("--bias", bias,
                     "bias mode: " + biasNameList() +
                         " (README \"Bias modes\"; every mode but none subtracts --constant-bias)");
@@ -27,6 +27,9 @@ void addBiasOptions(CLI::App* sub, std::string& bias, float& constantBias, float
                     "default 1.5");
     sub->add_option("--soft-scale", softScale,
                     "soft: lit = (depth > ref) * saturate((depth - ref) * SCALE), default 2048");
+    sub->add_option("--rpdb-max", rpdbMax,
+                    "receiver-plane: cap M on each component of dz/duv, light depth per uv unit "
+                    "(the whole map), default 100");
 }
 
 void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
@@ -43,7 +46,8 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     sub->add_option("--kernel", kernel, "kernel size N (1..8; tent: 3, 5, 7)");
     sub->add_option("--radius", radius, "poisson: disk radius in texels");
     sub->add_flag("--rotate", rotate, "poisson: rotate the disk per pixel");
-    addBiasOptions(sub, bias, constantBias, slopeBias, slopeMax, normalOffset, softScale);
+    addBiasOptions(sub, bias, constantBias, slopeBias, slopeMax, normalOffset, softScale,
+                   rpdbMax);
     sub->add_option("--cull", cull, "faces culled in the shadow pass: back, front, none");
     sub->add_option("--polygon-offset", polygonOffset,
                     "slope-scaled bias in the shadow pass: FACTOR,UNITS for glPolygonOffset");
@@ -108,6 +112,7 @@ RenderSettings RenderOptions::settings() const {
     if (use("--slope-max")) s.slopeMax = slopeMax;
     if (use("--normal-offset")) s.normalOffset = normalOffset;
     if (use("--soft-scale")) s.softScale = softScale;
+    if (use("--rpdb-max")) s.rpdbMax = rpdbMax;
     if (auto why = validateBiasParams(s.biasParams(), "--")) throw UsageError(*why);
     if (auto why = validateBias(static_cast<int>(s.bias), s.method)) throw UsageError(*why);
     if (use("--cull")) {

@@ -15,7 +15,7 @@ namespace pcf {
 // (render, bench, trace, ...). Values go into the given variables; checks are the caller's
 // (validateBiasParams, validateBias).
 void addBiasOptions(CLI::App* sub, std::string& bias, float& constantBias, float& slopeBias,
-                    float& slopeMax, float& normalOffset, float& softScale);
+                    float& slopeMax, float& normalOffset, float& softScale, float& rpdbMax);
 
 struct RenderOptions {
     std::string scene;      // preset name
@@ -32,6 +32,7 @@ struct RenderOptions {
     float slopeMax = DEFAULT_SLOPE_MAX;
     float normalOffset = DEFAULT_NORMAL_OFFSET;
     float softScale = DEFAULT_SOFT_SCALE;
+    float rpdbMax = DEFAULT_RPDB_MAX;
     std::string cull = "back";
     std::string polygonOffset;  // "F,U": glPolygonOffset in the shadow pass
     int mapSize = 1024;

@@ -1,6 +1,7 @@
 #include "app/session.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -8,6 +9,7 @@
 
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
+#include "analysis/stability.h"
 #include "analysis/stability_chart.h"
 #include "analysis/stability_report.h"
 #include "app/cli_util.h"
@@ -15,6 +17,7 @@
 #include "lesson/lesson_text.h"
 #include "scene/input_error.h"
 #include "scene/input_file.h"
+#include "scene/light.h"
 
 namespace pcf {
 
@@ -37,7 +40,12 @@ std::string settingsSummary(const LessonSettings& s) {
     }
     if (s.bias == "normal") line << " k=" << formatNumber(s.normalOffset);
     if (s.bias == "soft") line << " x" << formatNumber(s.softScale);
+    if (s.bias == "receiver-plane") line << " dz<=" << formatNumber(s.rpdbMax);
     line << "   cull " << s.cull << "   map " << s.mapSize << " " << s.depthFormat;
+    if (s.originShift != 0.0f || s.snap) {
+        line << "   grid +" << formatNumber(s.originShift) << " texel"
+             << (s.snap ? " snapped" : "");
+    }
     if (s.precision == PCF_PRECISION_HW8) line << "   hw8";
     return line.str();
 }
@@ -65,20 +73,40 @@ std::vector<std::string> builtInLessons() {
     return paths;
 }
 
+std::optional<std::string> findLesson(const std::vector<std::string>& lessons,
+                                      const std::string& nameOrNumber) {
+    // A number names the file numbered so (13 -> 13-*.toml, also "013"), never the 13th file:
+    // a lesson directory with a gap (no 12) would shift every lesson after it.
+    bool number = !nameOrNumber.empty() && nameOrNumber.size() <= 6 &&
+                  std::all_of(nameOrNumber.begin(), nameOrNumber.end(),
+                              [](char c) { return c >= '0' && c <= '9'; });
+    for (const std::string& path : lessons) {
+        std::string stem = std::filesystem::path(path).stem().string();
+        if (stem == nameOrNumber) return path;
+        if (!number) continue;
+        size_t digits = 0;
+        while (digits < stem.size() && digits < 6 && stem[digits] >= '0' && stem[digits] <= '9') {
+            ++digits;
+        }
+        if (digits > 0 && std::stoi(stem.substr(0, digits)) == std::stoi(nameOrNumber)) {
+            return path;
+        }
+    }
+    return std::nullopt;
+}
+
 std::string resolveLesson(const std::string& nameOrPath) {
-    std::error_code ec;
     if (nameOrPath.find('/') != std::string::npos || nameOrPath.ends_with(".toml")) {
         return nameOrPath;  // a path: parseLessonFile says what is wrong with it
     }
     std::vector<std::string> lessons = builtInLessons();
+    if (std::optional<std::string> found = findLesson(lessons, nameOrPath)) return *found;
     std::string names;
-    for (size_t k = 0; k < lessons.size(); ++k) {
-        std::string stem = std::filesystem::path(lessons[k]).stem().string();
-        if (stem == nameOrPath || std::to_string(k + 1) == nameOrPath) return lessons[k];
-        names += (names.empty() ? "" : ", ") + stem;
+    for (const std::string& path : lessons) {
+        names += (names.empty() ? "" : ", ") + std::filesystem::path(path).stem().string();
     }
-    throw UsageError("unknown lesson '" + nameOrPath + "' (a .toml path, a number 1.." +
-                     std::to_string(lessons.size()) + ", or one of: " + names + ")");
+    throw UsageError("unknown lesson '" + nameOrPath + "' (a .toml path, a lesson's number, " +
+                     "or one of: " + names + ")");
 }
 
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) {
@@ -98,6 +126,7 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) 
     r.slopeMax = s.slopeMax;
     r.normalOffset = s.normalOffset;
     r.softScale = s.softScale;
+    r.rpdbMax = s.rpdbMax;
     r.shadowCull = cullModeFromName(s.cull).value_or(CullMode::Back);
     r.frameSize = sceneSize;
     return r;
@@ -217,6 +246,7 @@ void Session::goToStep(int step) {
     const LessonStep& s = mLesson.steps[static_cast<size_t>(mStep)];
     mTextPage = 0;
     mGrid = s.settings.grid;
+    mHeatmap = s.settings.heatmap;
     setSettings(s.settings);
     setPixel(scalePixel(s.settings.pixel, glm::ivec2(mLayout.scene.size())));
 }
@@ -321,9 +351,21 @@ void Session::blitChart(const std::string& csvPath) {
 
 void Session::renderScene() {
     RenderSettings r = renderSettingsFor(mSettings, glm::ivec2(mLayout.scene.size()));
+    // The map's texel grid slid and snapped as the lesson says (light.h: shiftShadowOrigin).
+    glm::vec3 shift(mSettings.originShift, mSettings.originShift, mSettings.snap ? 1.0f : 0.0f);
     bool mapChanged =
         !mRendered || mRendered->mapSize != r.mapSize || mRendered->depthFormat != r.depthFormat ||
-        mRendered->shadowCull != r.shadowCull || mRendered->polygonOffset != r.polygonOffset;
+        mRendered->shadowCull != r.shadowCull || mRendered->polygonOffset != r.polygonOffset ||
+        shift != mRenderedShift;
+    if (mapChanged) {
+        glm::mat4 fit = shadowClipFromWorld(mLesson.scene);
+        if (shift != glm::vec3(0.0f)) {
+            fit = shiftShadowOrigin(fit, glm::vec2(shift.x, shift.y), r.mapSize, shift.z != 0.0f);
+        }
+        mRenderer->setShadowClipFromWorld(fit);
+        mRenderedShift = shift;
+    }
+    mHeatDirty = true;
     if (mapChanged) mRenderer->renderShadowPass(r);
     mRenderer->renderCameraPass(r);
     if (mapChanged) {
@@ -402,6 +444,7 @@ void Session::compose() {
         glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, 0,
                                frame.y - scene.y, scene.x, frame.y, GL_COLOR_BUFFER_BIT,
                                GL_NEAREST);
+        if (mHeatmap) blitHeatmap();
     } else {
         blitChart(chart);
     }
@@ -424,8 +467,82 @@ void Session::compose() {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     mCanvas.begin(frame);
     drawPlan(mCanvas, plan.top);
+    if (mHeatmap && chart.empty()) drawHeatLegend();
     mCanvas.flush();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (!mHeatmap || !chart.empty()) mHeatValues.clear();
+}
+
+// The heat map replaces the scene on its receivers (each pixel the colour of its pixels per
+// texel); elsewhere the scene stays. Computed once per rendered scene: moving the pixel reuses it.
+void Session::blitHeatmap() {
+    glm::ivec2 size(mLayout.scene.size());
+    if (mHeatDirty || mHeat.width != size.x || mHeat.height != size.y) {
+        mHeatValues = pixelsPerTexel(mRenderer->readLightSpace(), size, mRendered->mapSize);
+        std::vector<uint8_t> rgba = mRenderer->readColour();
+        for (size_t k = 0; k < mHeatValues.size(); ++k) {
+            if (mHeatValues[k] <= 0.0f) continue;
+            glm::vec3 c = aliasingHeatColour(mHeatValues[k]);
+            for (int i = 0; i < 3; ++i) {
+                rgba[k * 4 + i] = static_cast<uint8_t>(std::lround(c[i] * 255.0f));
+            }
+        }
+        mHeat = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
+        glTextureSubImage2D(mHeat.colors[0].id(), 0, 0, 0, size.x, size.y, GL_RGBA,
+                            GL_UNSIGNED_BYTE, rgba.data());
+        mHeatDirty = false;
+    }
+    // Texture row 0 holds the image's top row; swapped destination rows put it on top.
+    int frameH = mLayout.frameSize.y;
+    glNamedFramebufferReadBuffer(mHeat.framebuffer.id(), GL_COLOR_ATTACHMENT0);
+    glBlitNamedFramebuffer(mHeat.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, size.x, size.y,
+                           0, frameH, size.x, frameH - size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+// The legend in the scene's bottom-left corner: the colour ramp from 1/16 to 16 screen pixels
+// per texel, and the median over the receivers.
+void Session::drawHeatLegend() {
+    const Rect& scene = mLayout.scene;
+    float font = std::max(12.0f, std::round((mPresentation ? 18.0f : 14.0f) * mLayout.scale));
+    std::vector<float> measured;
+    for (float v : mHeatValues) {
+        if (v > 0.0f) measured.push_back(v);
+    }
+    std::string title = "screen pixels per texel";
+    if (!measured.empty()) {
+        std::nth_element(measured.begin(), measured.begin() + measured.size() / 2, measured.end());
+        char median[32];
+        std::snprintf(median, sizeof median, ", median %.3g",
+                      static_cast<double>(measured[measured.size() / 2]));
+        title += median;
+    }
+    float pad = std::round(font * 0.6f);
+    float lineH = std::round(font * 1.35f);
+    float barH = std::round(font * 0.9f);
+    float barW = std::max(std::round(font * 14.0f), measureText(FontFace::Sans, font, title).x);
+    barW = std::min(barW, scene.w - 4.0f * pad);
+    Rect box{scene.x + pad, 0.0f, barW + 2.0f * pad, 2.0f * pad + 2.0f * lineH + barH};
+    box.y = scene.y + scene.h - pad - box.h;
+    mCanvas.fillRect(box, {0.08f, 0.09f, 0.11f, 0.85f});
+    TextStyle text{FontFace::Sans, font, {0.92f, 0.93f, 0.95f, 1.0f}};
+    mCanvas.text({box.x + pad, box.y + pad}, title, text);
+    float barY = box.y + pad + lineH;
+    const int steps = 64;
+    for (int i = 0; i < steps; ++i) {
+        float x0 = std::round(box.x + pad + barW * i / steps);
+        float x1 = std::round(box.x + pad + barW * (i + 1) / steps);
+        float t = (i + 0.5f) / steps * 2.0f - 1.0f;  // log2 / range, -1 .. 1
+        glm::vec3 c = aliasingHeatColour(std::exp2(t * ALIASING_HEAT_LOG2_RANGE));
+        mCanvas.fillRect({x0, barY, x1 - x0, barH}, {c, 1.0f});
+    }
+    float labelY = barY + barH + std::round(font * 0.2f);
+    mCanvas.text({box.x + pad, labelY}, "1/16", text);
+    TextStyle centre = text;
+    centre.align = TextAlign::Center;
+    mCanvas.text({box.x + pad + barW / 2.0f, labelY}, "1", centre);
+    TextStyle right = text;
+    right.align = TextAlign::Right;
+    mCanvas.text({box.x + pad + barW, labelY}, "16", right);
 }
 
 InspectorModel Session::model() const {

@@ -28,6 +28,11 @@ std::vector<std::string> builtInLessons();
 // A lesson named on the command line: a path to a .toml file, a built-in lesson's name
 // ("03-bilinear-lerp"), or its number in the list ("3"). Throws UsageError naming the choices.
 std::string resolveLesson(const std::string& nameOrPath);
+// The lesson of `lessons` (paths) whose file name is nameOrNumber, or, for a number, the one
+// whose file name starts with that number ("13" -> "13-shimmer-and-snapping.toml", whatever its
+// place in the list); nullopt when none is.
+std::optional<std::string> findLesson(const std::vector<std::string>& lessons,
+                                      const std::string& nameOrNumber);
 
 // Parses a lesson and reads every bench.csv its steps chart, so that a broken chart is reported
 // at its lesson line before anything is drawn. Throws InputError (file:line) or UsageError.
@@ -73,6 +78,13 @@ class Session {
     // The texel grid drawn on the scene (G): starts from the lesson step's `grid` setting.
     bool grid() const { return mGrid; }
     void setGrid(bool on) { mGrid = on; }
+    // The aliasing heat map over the scene (A; lesson key `heatmap`): each receiver pixel
+    // coloured by its screen pixels per shadow-map texel (analysis/stability.h, pixelsPerTexel,
+    // aliasingHeatColour), with a legend. heatValues(): the values the last compose() drew,
+    // scene pixels top-down, -1 where not measured; empty when the heat map is off.
+    bool heatmap() const { return mHeatmap; }
+    void setHeatmap(bool on) { mHeatmap = on; }
+    const std::vector<float>& heatValues() const { return mHeatValues; }
     // Pages of the current step's text at this frame size (the last compose()'s count) and the
     // page shown. nextPage()/previousPage() move within the step's pages and return false at
     // its ends (then the viewer moves to the next or previous step).
@@ -108,6 +120,8 @@ class Session {
     void blitThumbnail();
     // A step with a chart shows it where the scene goes (lesson.h: LessonStep::chart).
     void blitChart(const std::string& csvPath);
+    void blitHeatmap();
+    void drawHeatLegend();
 
     Lesson mLesson;
     int mStep = 0;
@@ -116,6 +130,11 @@ class Session {
     bool mPresentation = false;
     bool mHelp = false;
     bool mGrid = true;
+    bool mHeatmap = false;
+    bool mHeatDirty = true;
+    std::vector<float> mHeatValues;
+    OffscreenTarget mHeat;  // the heat map, rows top-down, blitted over the scene
+    glm::vec3 mRenderedShift{0.0f};  // origin shift and snap (1) the map was rendered with
     int mTextPage = 0;
     int mTextPages = 1;
     std::vector<LayoutBox> mBoxes;

@@ -71,6 +71,16 @@ public:
                 break;
             case GLFW_KEY_BACKSPACE: back(); break;
             case GLFW_KEY_G: mSession.setGrid(!mSession.grid()); break;
+            case GLFW_KEY_A: mSession.setHeatmap(!mSession.heatmap()); break;
+            case GLFW_KEY_O:  // slide the map's texel grid by 1/8 texel (lesson 13)
+                s.originShift = std::clamp(s.originShift + (shift ? -0.125f : 0.125f), -64.0f,
+                                           64.0f);
+                mSession.setSettings(s);
+                break;
+            case GLFW_KEY_S:  // snap the map's fit to whole texels
+                s.snap = !s.snap;
+                mSession.setSettings(s);
+                break;
             case GLFW_KEY_UP: mSession.setPixel(px - glm::ivec2(0, 1)); break;
             case GLFW_KEY_DOWN: mSession.setPixel(px + glm::ivec2(0, 1)); break;
             case GLFW_KEY_HOME: mSession.goToStep(0); break;

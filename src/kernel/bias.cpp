@@ -75,6 +75,7 @@ std::optional<std::string> validateBiasParams(const BiasParams& b, const std::st
     if (auto e = range("slope-max", b.slopeMax, 0.0f, 1.0f)) return e;
     if (auto e = range("normal-offset", b.normalOffset, 0.0f, 64.0f)) return e;
     if (auto e = range("soft-scale", b.softScale, 1.0f, 1.0e9f)) return e;
+    if (auto e = range("rpdb-max", b.rpdbMax, 0.0f, 1.0e9f)) return e;
     return std::nullopt;
 }
 

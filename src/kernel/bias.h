@@ -17,6 +17,10 @@ constexpr float DEFAULT_CONSTANT_BIAS = 0.002f;  // light depth units
 constexpr float DEFAULT_SLOPE_BIAS = 0.001f;     // light depth units per unit of tan(theta)
 constexpr float DEFAULT_SLOPE_MAX = 0.01f;       // light depth units
 constexpr float DEFAULT_NORMAL_OFFSET = 1.5f;    // texels
+// receiver-plane: the cap on |dz/du| and |dz/dv|, light depth per uv unit (pcfClampDzDuv). The
+// ground of `grazing` (82 degrees from the light) has 1.3, at 88 degrees about 5; the cap binds
+// where the screen-space derivative is no slope (outlines, faces edge-on to the light).
+constexpr float DEFAULT_RPDB_MAX = 100.0f;  // light depth units per uv unit
 // "PCF Shadow Acne 2" used the literal 2048 before naming it
 // Z_CMP_CORRECTION_SCALE.
 constexpr float DEFAULT_SOFT_SCALE = 2048.0f;  // 1 / light depth units
@@ -27,7 +31,8 @@ constexpr float DEFAULT_SOFT_SCALE = 2048.0f;  // 1 / light depth units
 //   slope           ref = z - min(constant + slope * tan(theta), slopeMax)
 //   normal          the receiver moved along its normal by normalOffset texels * sin(theta)
 //                   before projection, then ref = z' - constant
-//   receiver-plane  ref = z - constant; each tap: ref + dot(dzduv, tap uv - uv)
+//   receiver-plane  ref = z - constant; each tap: ref + dot(dzduv', tap uv - uv), with dzduv'
+//                   each component of dzduv clamped to [-rpdbMax, rpdbMax] (depth per uv unit)
 //   soft            ref = z - constant; lit = (depth > ref) * saturate((depth - ref) * softScale)
 //   interpolated    ref = z - constant, compared with the bilinearly interpolated depth
 struct BiasParams {
@@ -37,12 +42,13 @@ struct BiasParams {
     float slopeMax = DEFAULT_SLOPE_MAX;
     float normalOffset = DEFAULT_NORMAL_OFFSET;
     float softScale = DEFAULT_SOFT_SCALE;
+    float rpdbMax = DEFAULT_RPDB_MAX;
     // receiver-plane: the receiver's d(depth)/d(u, v) at the lookup, as the renderer measured it
     // (light depth per uv unit). Not a setting: it comes with each pixel.
     vec2 dzduv{0.0f};
 
     // What the kernel needs per tap.
-    PcfBias kernelBias() const { return PcfBias(mode, dzduv, softScale); }
+    PcfBias kernelBias() const { return PcfBias(mode, dzduv, softScale, rpdbMax); }
     // The depth every mode but none subtracts first: 0 for none, else `constant`.
     float baseBias() const { return mode == PCF_BIAS_NONE ? 0.0f : constant; }
     // The per-lookup bias for a surface at angle theta to the light (cos given): what is

@@ -132,14 +132,21 @@ std::string biasSentence(const Trace& tr) {
                  "depth less "
               << num(b.constant) << " gives ref = " << num(tr.ref) << " " << moved << ".";
             break;
-        case PCF_BIAS_RECEIVER_PLANE:
+        case PCF_BIAS_RECEIVER_PLANE: {
             s << "Receiver-plane bias: ref = z - " << num(b.constant) << " = " << num(tr.ref)
               << " holds at uv only. The receiver's depth changes across the map by dz/duv = "
               << pair(b.dzduv)
               << " (the receiver's slope in the map; the renderer derives it from screen-space "
                  "derivatives), so each tap compares against "
                  "the plane's own depth where it reads: ref + dot(dz/duv, tap uv - uv).";
+            vec2 used = pcfClampDzDuv(b.dzduv, b.rpdbMax);
+            if (used != b.dzduv) {
+                s << " The slope is capped at " << num(b.rpdbMax)
+                  << " depth per uv unit (--rpdb-max), so the taps use dz/duv = " << pair(used)
+                  << ".";
+            }
             break;
+        }
         case PCF_BIAS_SOFT:
             s << "ref = z - " << num(b.constant) << " = " << num(tr.ref)
               << ". Soft comparison (\"PCF Shadow Acne\" part 2): a tap is lit by "
@@ -629,6 +636,10 @@ std::string traceToJson(const Trace& tr) {
       << ",\"slope_max\":" << jnum(tr.bias.slopeMax)
       << ",\"normal_offset\":" << jnum(tr.bias.normalOffset)
       << ",\"soft_scale\":" << jnum(tr.bias.softScale) << ",\"dzduv\":" << jvec(tr.bias.dzduv)
+      << ",\"rpdb_max\":" << jnum(tr.bias.rpdbMax) << ",\"dzduv_used\":"
+      << jvec(tr.bias.mode == PCF_BIAS_RECEIVER_PLANE
+                  ? pcfClampDzDuv(tr.bias.dzduv, tr.bias.rpdbMax)
+                  : tr.bias.dzduv)
       << ",\"per_tap\":"
       << (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE ? "\"none\""
           : tr.params.method == PCF_GATHER        ? "\"per gather, at its centre\""

@@ -27,7 +27,8 @@ namespace {
 constexpr std::string_view SETTING_KEYS[] = {
     "method",    "kernel",        "radius",     "rotate", "bias",     "constant_bias", "slope_bias",
     "slope_max", "normal_offset", "soft_scale", "cull",   "map_size", "depth_format",  "pixel",
-    "precision", "weights",       "sigma",      "grid"};
+    "precision", "weights",       "sigma",      "grid",   "rpdb_max", "heatmap", "origin_shift",
+    "snap"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));
@@ -329,6 +330,21 @@ class LessonParser {
             if (!b) fail(*n, name("rotate") + " must be true or false, got " + typeName(*n));
             s.rotate = b->get();
         }
+        for (auto [key, field] : {std::pair<const char*, bool*>{"heatmap", &s.heatmap},
+                                  std::pair<const char*, bool*>{"snap", &s.snap}}) {
+            if (const toml::node* n = table.get(key)) {
+                const auto* b = n->as_boolean();
+                if (!b) fail(*n, name(key) + " must be true or false, got " + typeName(*n));
+                *field = b->get();
+            }
+        }
+        if (const toml::node* n = table.get("origin_shift")) {
+            double shift = number(*n, name("origin_shift"));
+            if (!(shift >= -64.0 && shift <= 64.0)) {
+                fail(*n, what + " origin_shift must be in [-64, 64] texels");
+            }
+            s.originShift = static_cast<float>(shift);
+        }
         if (const toml::node* n = table.get("grid")) {
             const auto* b = n->as_boolean();
             if (!b) fail(*n, name("grid") + " must be true or false, got " + typeName(*n));
@@ -354,6 +370,7 @@ class LessonParser {
             probe.slopeMax = s.slopeMax;
             probe.normalOffset = s.normalOffset;
             probe.softScale = s.softScale;
+            probe.rpdbMax = s.rpdbMax;
             if (auto why = validateBiasParams(probe, "")) {
                 field = old;
                 fail(*n, what + " " + *why);
@@ -364,6 +381,7 @@ class LessonParser {
         biasParam("slope_max", s.slopeMax);
         biasParam("normal_offset", s.normalOffset);
         biasParam("soft_scale", s.softScale);
+        biasParam("rpdb_max", s.rpdbMax);
         if (const toml::node* n = table.get("cull")) {
             std::string cull = string(*n, name("cull"));
             if (cull != "back" && cull != "front" && cull != "none") {
@@ -525,6 +543,7 @@ BiasParams LessonSettings::biasParams() const {
     b.slopeMax = slopeMax;
     b.normalOffset = normalOffset;
     b.softScale = softScale;
+    b.rpdbMax = rpdbMax;
     return b;
 }
 

@@ -92,6 +92,7 @@ struct LessonSettings {
     float slopeMax = DEFAULT_SLOPE_MAX;          // slope_max: its cap
     float normalOffset = DEFAULT_NORMAL_OFFSET;  // normal_offset: texels
     float softScale = DEFAULT_SOFT_SCALE;        // soft_scale
+    float rpdbMax = DEFAULT_RPDB_MAX;            // rpdb_max: receiver-plane's cap on dz/duv
     std::string cull = "back";        // shadow pass culling: "back", "front" or "none"
     int mapSize = 1024;               // texels per side
     std::string depthFormat = "32f";  // "16", "24" or "32f"
@@ -100,6 +101,12 @@ struct LessonSettings {
     float sigma = 1.0f;               // gaussian weights, texels (key `sigma`)
     glm::ivec2 pixel{640, 360};       // in the 1280 x 720 reference frame, origin top-left, y down
     bool grid = true;                 // the texel grid overlay on the scene
+    bool heatmap = false;             // the aliasing heat map over the scene (viewer key A)
+    // The shadow map's texel grid slid under the world by (s, s) texels (light.h's
+    // shiftShadowOrigin), then with `snap` moved to the nearest whole-texel fit (viewer keys
+    // O / Shift+O step s by 1/8 texel, S toggles snap). 0 and false: the plain fit.
+    float originShift = 0.0f;         // origin_shift, texels
+    bool snap = false;                // snap
 
     // The constant depth every mode but none subtracts from the receiver's depth (0 for none).
     float depthBias() const;

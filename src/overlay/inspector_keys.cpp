@@ -18,6 +18,8 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"B / Shift+B", "next / previous bias mode"},
         {"Q", "texture unit: exact / hw8"},
         {"G", "texel grid on the scene on / off"},
+        {"A", "aliasing heat map (pixels per texel)"},
+        {"O / Shift+O, S", "slide the map's grid 1/8 texel; snap"},
         {"L / Shift+L", "next / previous lesson"},
         {"E", "export this frame (PNG + JSON)"},
         {"P", "presentation mode"},

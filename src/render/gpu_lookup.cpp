@@ -14,7 +14,7 @@ GpuLookup::GpuLookup()
 std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec4> lookups,
                                   int width, const PcfParams& prm, bool rotatePerPixel) {
     return run(map, lookups, width, prm, rotatePerPixel,
-               PcfBias(PCF_BIAS_CONSTANT, glm::vec2(0.0f), 0.0f), {});
+               PcfBias(PCF_BIAS_CONSTANT, glm::vec2(0.0f), 0.0f, PCF_DZDUV_UNCLAMPED), {});
 }
 
 std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec4> lookups,
@@ -76,6 +76,7 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
     glProgramUniform1i(program, glGetUniformLocation(program, "uPlanes"), 3);
     glProgramUniform1i(program, glGetUniformLocation(program, "uBiasMode"), bias.mode);
     glProgramUniform1f(program, glGetUniformLocation(program, "uSoftScale"), bias.softScale);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.dzduvMax);
     glProgramUniform1f(program, glGetUniformLocation(program, "uRadius"), prm.radius);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRotatePerPixel"),
                        rotatePerPixel ? 1 : 0);

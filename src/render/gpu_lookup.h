@@ -43,7 +43,8 @@ class GpuLookup {
     // compared per tap as PcfRef(lookup.z, uv, bias with its own dz/duv) says. Throws
     // std::logic_error before setMap and setLookups.
     void draw(const PcfParams& prm, bool rotatePerPixel,
-              const PcfBias& bias = PcfBias(PCF_BIAS_CONSTANT, glm::vec2(0.0f), 0.0f));
+              const PcfBias& bias = PcfBias(PCF_BIAS_CONSTANT, glm::vec2(0.0f), 0.0f,
+                                            PCF_DZDUV_UNCLAMPED));
     // The last draw's visibilities, in the lookups' order.
     std::vector<float> read() const;
 

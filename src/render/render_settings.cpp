@@ -34,6 +34,7 @@ BiasParams RenderSettings::biasParams() const {
     b.slopeMax = slopeMax;
     b.normalOffset = normalOffset;
     b.softScale = softScale;
+    b.rpdbMax = rpdbMax;
     return b;
 }
 

@@ -39,6 +39,7 @@ struct RenderSettings {
     float slopeMax = DEFAULT_SLOPE_MAX;          // slope: the cap, depth units
     float normalOffset = DEFAULT_NORMAL_OFFSET;  // normal: texels
     float softScale = DEFAULT_SOFT_SCALE;        // soft: 1 / depth units
+    float rpdbMax = DEFAULT_RPDB_MAX;            // receiver-plane: cap on dz/duv, depth per uv
     CullMode shadowCull = CullMode::Back;
     // Slope-scaled bias in the shadow pass: glPolygonOffset(factor, units); 0, 0 = off.
     glm::vec2 polygonOffset{0.0f, 0.0f};

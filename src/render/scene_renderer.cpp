@@ -186,6 +186,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, PcfProgramCac
     glProgramUniform1f(program, uniform(program, "uSlopeMax"), bias.slopeMax);
     glProgramUniform1f(program, uniform(program, "uNormalOffset"), bias.normalOffset);
     glProgramUniform1f(program, uniform(program, "uSoftScale"), bias.softScale);
+    glProgramUniform1f(program, uniform(program, "uRpdbMax"), bias.rpdbMax);
     // One texel's world size at clip.w = 1: 2 / (P00 * size) across x, likewise y (ortho: w = 1;
     // perspective: scaled by w in the shader); the larger of the two sides.
     glm::mat4 proj = pcf::clipFromLight(mScene);
