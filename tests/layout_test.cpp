@@ -189,6 +189,32 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                 plans, seconds, pagedPresentation);
 }
 
+// Each step shows something its neighbour does not: consecutive steps that render the same scene
+// at the same pixel with the same settings, the same chart and the same highlight would export
+// the same picture beside different words. (The step text and the step list always differ; the
+// scene, the cells and the chart are what a class looks at.)
+TEST(LessonSteps, ConsecutiveStepsShowDifferentPictures) {
+    std::vector<std::string> lessons;
+    for (const auto& e : std::filesystem::directory_iterator(PCFSCOPE_SOURCE_DIR "/lessons")) {
+        if (e.path().extension() == ".toml") lessons.push_back(e.path().string());
+    }
+    std::sort(lessons.begin(), lessons.end());
+    ASSERT_GE(lessons.size(), 10u);
+    for (const std::string& path : lessons) {
+        Lesson lesson = parseLessonFile(path);
+        for (size_t k = 1; k < lesson.steps.size(); ++k) {
+            const LessonStep& a = lesson.steps[k - 1];
+            const LessonStep& b = lesson.steps[k];
+            bool same = a.settings == b.settings && a.chart == b.chart &&
+                        a.chartHighlight == b.chartHighlight &&
+                        a.highlightFetch == b.highlightFetch;
+            EXPECT_FALSE(same) << lesson.name << " steps " << k << " and " << k + 1
+                               << " show the same picture: change the pixel, a setting, or "
+                                  "highlight what the text talks about";
+        }
+    }
+}
+
 // Presentation type is a projector's at the small sizes: 22 px step text, 18 px numbers.
 TEST_F(Layout, PresentationTypeIsLargeAtProjectorSizes) {
     for (glm::ivec2 size : {glm::ivec2{1280, 720}, glm::ivec2{1024, 768}}) {

@@ -143,7 +143,7 @@ const std::map<std::string, Claims>& lessonClaims() {
           {{"three of four", [](const Trace& t) { return litCount(t) == 3; }}},
           {bits("0001")},
           {bits("1010"),
-           {"near the lit column", [](const Trace& t) { return t.pos.frac.x < 0.3f; }}}}},
+           {"near the shadowed column", [](const Trace& t) { return t.pos.frac.x > 0.7f; }}}}},
         {"03-bilinear-lerp",
          {{bits("1010")},
           // Close to "What Is PCF"'s example: one screen pixel moves the point by about 0.09 texel

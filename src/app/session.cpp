@@ -198,6 +198,16 @@ Lesson loadLessonChecked(const std::string& path) {
             throw InputError(path, step.chartLine,
                              "step " + std::to_string(i + 1) + " chart: " + e.what());
         }
+        if (step.chartHighlight.empty()) continue;
+        try {
+            chartRowsMatching(readChartRows(chartRef(step.chart).path), step.chartHighlight);
+        } catch (const std::invalid_argument& e) {
+            throw InputError(path, step.chartHighlightLine,
+                             "step " + std::to_string(i + 1) + " chart_highlight: " + e.what());
+        } catch (const InputError& e) {
+            throw InputError(path, step.chartLine,
+                             "step " + std::to_string(i + 1) + " chart: " + e.what());
+        }
     }
     return lesson;
 }
@@ -293,7 +303,9 @@ void Session::setFrameTimeMs(double ms) { mFrameTimeMs = ms; }
 
 void Session::blitChart(const std::string& csvPath) {
     glm::ivec2 size(mLayout.scene.size());
-    std::string key = csvPath + "@" + std::to_string(size.x) + "x" + std::to_string(size.y);
+    const std::string& highlight = mLesson.steps[static_cast<size_t>(mStep)].chartHighlight;
+    std::string key = csvPath + "@" + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                      "#" + highlight;
     if (key != mChartKey) {
         ChartRef ref = chartRef(csvPath);
         std::vector<uint8_t> rgba;
@@ -305,6 +317,7 @@ void Session::blitChart(const std::string& csvPath) {
             labels.title = "Speed against accuracy";
             labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
                               std::filesystem::path(csvPath).filename().string();
+            if (!highlight.empty()) labels.highlight = chartRowsMatching(rows, highlight);
             rgba = drawSpeedChart(rows, size, labels);
         }
         mChart = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
