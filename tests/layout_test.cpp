@@ -288,6 +288,35 @@ TEST_F(Layout, LongStepTextPagesWithAMoreMarkInsteadOfClipping) {
     }
 }
 
+// Presentation mode keeps the step list's neighbours of the current step, at 18 px or more at
+// projector sizes: the previous step on the left, the next on the right.
+TEST_F(Layout, PresentationShowsTheNeighbouringStepsAtReadableSize) {
+    InspectorModel m;
+    m.trace = syntheticTrace();
+    m.stepTitles = {"First step", "Second step", "Third step"};
+    m.stepText = "Short.";
+    m.presentation = true;
+    for (glm::ivec2 size : {glm::ivec2{1280, 720}, glm::ivec2{1024, 768}}) {
+        InspectorLayout l = inspectorLayout(size, true);
+        m.sceneSize = glm::ivec2(l.scene.size());
+        for (int current : {0, 1, 2}) {
+            m.currentStep = current;
+            FramePlan plan = planFrame(l, m);
+            std::vector<LayoutBox> items;
+            for (const LayoutBox& b : plan.boxes) {
+                if (b.role == "step-list") items.push_back(b);
+            }
+            ASSERT_EQ(items.size(), current == 1 ? 2u : 1u) << current;
+            for (const LayoutBox& b : items) {
+                EXPECT_GE(b.fontPx, 18.0f);
+                EXPECT_FALSE(b.shortened);
+            }
+            if (current == 1) EXPECT_LT(items[0].rect.x, items[1].rect.x);  // previous, next
+            EXPECT_TRUE(problems(plan, l).empty());
+        }
+    }
+}
+
 // Preformatted rows (two leading spaces) keep their columns: cells padded to the widest.
 TEST_F(Layout, TableRowsKeepTheirColumnsInMonospace) {
     InspectorModel m;
