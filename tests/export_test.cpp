@@ -173,6 +173,32 @@ TEST_F(ExportTest, ChartStepsShowTheChartInTheScenesPlace) {
     EXPECT_EQ(j["trace"].kind, jsonlite::Value::OBJECT);
 }
 
+// `render --lesson L --step S` of a chart step writes the chart, as export shows it, at --size;
+// the step's chart_highlight rings its dots in orange; a scene step still writes the scene.
+TEST_F(ExportTest, RenderOfAChartStepWritesTheChart) {
+    auto r = runPcfscope("render --lesson 11 --step 2 --size 960x540 -o " + path("chart.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("the chart of lesson step 2"), std::string::npos) << r.err;
+    auto s = runPcfscope("render --lesson 11 --step 4 --size 960x540 -o " + path("scene.png"));
+    ASSERT_EQ(s.exitCode, 0) << s.err;
+    std::vector<unsigned char> chart = readImageBytes(path("chart.png"), 4);
+    std::vector<unsigned char> scene = readImageBytes(path("scene.png"), 4);
+    ASSERT_EQ(chart.size(), 960u * 540u * 4u);
+    auto at = [](const std::vector<unsigned char>& px, int x, int y) {
+        size_t k = (static_cast<size_t>(y) * 960 + x) * 4;
+        return glm::ivec3(px[k], px[k + 1], px[k + 2]);
+    };
+    EXPECT_EQ(at(chart, 4, 4), glm::ivec3(255, 255, 255));
+    EXPECT_NE(at(scene, 4, 4), glm::ivec3(255, 255, 255));
+    // The highlight's orange (255, 140, 0) is on the chart: the Pareto front's dots.
+    int orange = 0;
+    for (size_t k = 0; k < chart.size(); k += 4) {
+        orange += chart[k] >= 250 && chart[k + 1] >= 130 && chart[k + 1] <= 150 &&
+                  chart[k + 2] <= 10;  // not box2x2's dots (242, 143, 43)
+    }
+    EXPECT_GT(orange, 50);
+}
+
 // Every lesson that ships exports headless, a frame and a trace per step, each step's pixel on a
 // receiver (its numbers come from a trace, not from nowhere).
 TEST_F(ExportTest, EveryLessonExportsHeadless) {

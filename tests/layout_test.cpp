@@ -189,6 +189,32 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                 plans, seconds, pagedPresentation);
 }
 
+// Each step shows something its neighbour does not: consecutive steps that render the same scene
+// at the same pixel with the same settings, the same chart and the same highlight would export
+// the same picture beside different words. (The step text and the step list always differ; the
+// scene, the cells and the chart are what a class looks at.)
+TEST(LessonSteps, ConsecutiveStepsShowDifferentPictures) {
+    std::vector<std::string> lessons;
+    for (const auto& e : std::filesystem::directory_iterator(PCFSCOPE_SOURCE_DIR "/lessons")) {
+        if (e.path().extension() == ".toml") lessons.push_back(e.path().string());
+    }
+    std::sort(lessons.begin(), lessons.end());
+    ASSERT_GE(lessons.size(), 10u);
+    for (const std::string& path : lessons) {
+        Lesson lesson = parseLessonFile(path);
+        for (size_t k = 1; k < lesson.steps.size(); ++k) {
+            const LessonStep& a = lesson.steps[k - 1];
+            const LessonStep& b = lesson.steps[k];
+            bool same = a.settings == b.settings && a.chart == b.chart &&
+                        a.chartHighlight == b.chartHighlight &&
+                        a.highlightFetch == b.highlightFetch;
+            EXPECT_FALSE(same) << lesson.name << " steps " << k << " and " << k + 1
+                               << " show the same picture: change the pixel, a setting, or "
+                                  "highlight what the text talks about";
+        }
+    }
+}
+
 // Presentation type is a projector's at the small sizes: 22 px step text, 18 px numbers.
 TEST_F(Layout, PresentationTypeIsLargeAtProjectorSizes) {
     for (glm::ivec2 size : {glm::ivec2{1280, 720}, glm::ivec2{1024, 768}}) {
@@ -258,6 +284,35 @@ TEST_F(Layout, LongStepTextPagesWithAMoreMarkInsteadOfClipping) {
         EXPECT_NE(b.role, "more");
         if (b.role == "step-text") {
             EXPECT_FALSE(b.shortened);
+        }
+    }
+}
+
+// Presentation mode keeps the step list's neighbours of the current step, at 18 px or more at
+// projector sizes: the previous step on the left, the next on the right.
+TEST_F(Layout, PresentationShowsTheNeighbouringStepsAtReadableSize) {
+    InspectorModel m;
+    m.trace = syntheticTrace();
+    m.stepTitles = {"First step", "Second step", "Third step"};
+    m.stepText = "Short.";
+    m.presentation = true;
+    for (glm::ivec2 size : {glm::ivec2{1280, 720}, glm::ivec2{1024, 768}}) {
+        InspectorLayout l = inspectorLayout(size, true);
+        m.sceneSize = glm::ivec2(l.scene.size());
+        for (int current : {0, 1, 2}) {
+            m.currentStep = current;
+            FramePlan plan = planFrame(l, m);
+            std::vector<LayoutBox> items;
+            for (const LayoutBox& b : plan.boxes) {
+                if (b.role == "step-list") items.push_back(b);
+            }
+            ASSERT_EQ(items.size(), current == 1 ? 2u : 1u) << current;
+            for (const LayoutBox& b : items) {
+                EXPECT_GE(b.fontPx, 18.0f);
+                EXPECT_FALSE(b.shortened);
+            }
+            if (current == 1) EXPECT_LT(items[0].rect.x, items[1].rect.x);  // previous, next
+            EXPECT_TRUE(problems(plan, l).empty());
         }
     }
 }

@@ -1,10 +1,13 @@
 // The lesson format: parsing, inheritance across steps, and one-line errors at the right line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "analysis/bench_report.h"
+#include "analysis/speed_chart.h"
 #include "kernel/pcf.h"
 #include "lesson/lesson.h"
 #include "scene/input_error.h"
@@ -452,6 +455,43 @@ text = "Still off."
     std::string badGrid = std::string(GOOD) + "\n[[step]]\ntitle = \"x\"\ntext = \"y\"\ngrid = 1\n";
     EXPECT_NE(errorOf(badGrid).find("grid must be true or false"), std::string::npos)
         << errorOf(badGrid);
+}
+
+// `chart_highlight` names bench-chart dots: it needs a bench chart, and it is not inherited.
+TEST(LessonFormatLayoutKeys, ChartHighlightNeedsABenchChart) {
+    std::string noChart = std::string(GOOD) +
+                          "\n[[step]]\ntitle = \"x\"\ntext = \"y\"\nchart_highlight = \"front\"\n";
+    EXPECT_NE(errorOf(noChart).find("chart_highlight needs a bench chart"), std::string::npos)
+        << errorOf(noChart);
+    Lesson lesson = parseLessonFile(PCFSCOPE_SOURCE_DIR "/lessons/11-speed-and-accuracy.toml");
+    ASSERT_GE(lesson.steps.size(), 3u);
+    EXPECT_EQ(lesson.steps[1].chartHighlight, "front");
+    for (const LessonStep& step : lesson.steps) {
+        if (step.chart.empty()) EXPECT_TRUE(step.chartHighlight.empty());
+    }
+}
+
+// The selectors: "front" is the chart's Pareto front, a first word takes every map size, a
+// full label one dot; a selector that names no dot is refused.
+TEST(LessonFormatLayoutKeys, ChartHighlightSelectsDotsByLabel) {
+    std::ifstream in(PCFSCOPE_SOURCE_DIR "/lessons/figures/bench.csv");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<BenchRow> rows = parseBenchCsv(text, "bench.csv");
+    std::vector<size_t> gather3 = chartRowsMatching(rows, "gather3");
+    ASSERT_EQ(gather3.size(), 4u);  // maps 256 .. 2048
+    for (size_t k : gather3) {
+        EXPECT_EQ(rows[k].point.method, PCF_GATHER);
+        EXPECT_EQ(rows[k].point.kernel, 3);
+    }
+    std::vector<size_t> one = chartRowsMatching(rows, " gather3 256 ,tent5 1024");
+    ASSERT_EQ(one.size(), 2u);
+    EXPECT_EQ(chartLabel(rows[one[0]].point), "gather3 256");
+    EXPECT_EQ(chartLabel(rows[one[1]].point), "tent5 1024");
+    std::vector<size_t> front = benchParetoFront(rows);
+    std::sort(front.begin(), front.end());  // the front is fastest first; the matches row order
+    EXPECT_EQ(chartRowsMatching(rows, "front"), front);
+    EXPECT_THROW(chartRowsMatching(rows, "gather3, gather9"), std::invalid_argument);
+    EXPECT_THROW(chartRowsMatching(rows, "gather"), std::invalid_argument);  // not a whole word
 }
 
 }  // namespace

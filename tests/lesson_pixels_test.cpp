@@ -110,6 +110,19 @@ Claim bits(std::string expected) {
                 return got == expected;
             }};
 }
+// nearest reads texel floor(uv * size); the point sits clearly inside it (its position in the
+// texel, fract(uv * size) = fract(frac + 0.5) per axis, is not within 0.1 of a border), so the
+// inspector's lookup dot is not on a grid line and which texel is read is plain to see.
+Claim insideTexel() {
+    return {"inside a texel", [](const Trace& t) {
+                for (int k = 0; k < 2; ++k) {
+                    float inTexel = t.pos.frac[k] + 0.5f;
+                    inTexel -= std::floor(inTexel);
+                    if (inTexel < 0.1f || inTexel > 0.9f) return false;
+                }
+                return true;
+            }};
+}
 Claim firstTapMargin(bool positive) {
     return {positive ? "depth - ref >= 0" : "depth - ref < 0", [positive](const Trace& t) {
                 return (t.taps[0].depth - t.taps[0].ref >= 0.0f) == positive;
@@ -119,17 +132,18 @@ Claim firstTapMargin(bool positive) {
 const std::map<std::string, Claims>& lessonClaims() {
     static const std::map<std::string, Claims> claims = {
         {"01-hard-shadows",
-         {{shadowed(), firstTapMargin(false)},
-          {lit(), firstTapMargin(true)},
-          {shadowed()},
+         {{shadowed(), firstTapMargin(false), insideTexel()},
+          {lit(), firstTapMargin(true), insideTexel()},
+          {shadowed(), insideTexel()},
           {{"0 or 1",
-            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }}}}},
+            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }},
+           insideTexel()}}},
         {"02-box-average",
          {{bits("1010"), {"half", [](const Trace& t) { return t.visibility == 0.5f; }}},
           {{"three of four", [](const Trace& t) { return litCount(t) == 3; }}},
           {bits("0001")},
           {bits("1010"),
-           {"near the lit column", [](const Trace& t) { return t.pos.frac.x < 0.3f; }}}}},
+           {"near the shadowed column", [](const Trace& t) { return t.pos.frac.x > 0.7f; }}}}},
         {"03-bilinear-lerp",
          {{bits("1010")},
           // Close to "What Is PCF"'s example: one screen pixel moves the point by about 0.09 texel
@@ -175,19 +189,25 @@ const std::map<std::string, Claims>& lessonClaims() {
           {penumbra(),
            {"rotated", [](const Trace& t) { return t.params.rotation != vec2(1.0f, 0.0f); }}}}},
         {"08-acne-and-bias",
-         {{shadowed(), firstTapMargin(false)},
-          {lit(), firstTapMargin(true)},
-          {lit(), firstTapMargin(true)},
+         {{shadowed(), firstTapMargin(false), insideTexel()},
+          {lit(), firstTapMargin(true), insideTexel()},
+          {lit(), firstTapMargin(true), insideTexel()},
           {{"faint acne",
             [](const Trace& t) { return t.visibility > 0.5f && t.visibility < 1.0f; }}},
           {lit()},
-          {lit(), {"nothing drawn", [](const Trace& t) { return t.taps[0].depth == 1.0f; }}}}},
+          {lit(),
+           {"nothing drawn", [](const Trace& t) { return t.taps[0].depth == 1.0f; }},
+           insideTexel()}}},
         {"09-peter-panning",
          {{{"acne", [](const Trace& t) { return t.visibility < 0.7f; }}},
           {shadowed()},
           {lit()},
           {shadowed()}}},
-        {"10-perspective-aliasing", {{shadowed()}, {shadowed()}, {penumbra()}, {shadowed()}}},
+        {"10-perspective-aliasing",
+         {{shadowed(), insideTexel()},
+          {shadowed(), insideTexel()},
+          {penumbra()},
+          {shadowed(), insideTexel()}}},
         // The chart steps trace the lesson's pixel too: it stays in the penumbra throughout, and
         // the steps that show the scene say "a pixel on the ground in the penumbra".
         {"11-speed-and-accuracy",

@@ -79,6 +79,36 @@ double safeLog(double ms) { return std::log10(std::max(ms, 1e-6)); }
 
 }  // namespace
 
+std::vector<size_t> chartRowsMatching(std::span<const BenchRow> rows,
+                                      const std::string& selectors) {
+    std::vector<bool> on(rows.size(), false);
+    size_t start = 0;
+    while (start <= selectors.size()) {
+        size_t comma = selectors.find(',', start);
+        if (comma == std::string::npos) comma = selectors.size();
+        std::string sel = selectors.substr(start, comma - start);
+        start = comma + 1;
+        sel.erase(0, sel.find_first_not_of(' '));
+        sel.erase(sel.find_last_not_of(' ') + 1);
+        if (sel.empty()) continue;
+        bool any = false;
+        if (sel == "front") {
+            for (size_t k : benchParetoFront(rows, false)) on[k] = any = true;
+        } else {
+            for (size_t k = 0; k < rows.size(); ++k) {
+                std::string label = chartLabel(rows[k].point);
+                if (label == sel || label.starts_with(sel + " ")) on[k] = any = true;
+            }
+        }
+        if (!any) throw std::invalid_argument("'" + sel + "' names no dot of the chart");
+    }
+    std::vector<size_t> out;
+    for (size_t k = 0; k < rows.size(); ++k) {
+        if (on[k]) out.push_back(k);
+    }
+    return out;
+}
+
 std::string chartLabel(const BenchPoint& point) {
     std::string s = shortName(point.method);
     if (point.kernel > 0) s += std::to_string(point.kernel);
@@ -332,6 +362,13 @@ std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 s
             c.line({bar.y, y - 3.0f * s}, {bar.y, y + 3.0f * s}, w, ink);
         }
         for (size_t k : L.front) c.ring(L.points[k], dotR + 2.5f * s, 1.5f * s, FRONT);
+        // The dots a lesson step talks about: a thick orange ring outside the front's.
+        for (size_t k : text.highlight) {
+            if (k < rows.size()) {
+                c.ring(L.points[k], dotR + 5.5f * s, std::max(2.5f, 3.0f * s),
+                       glm::vec4(1.0f, 0.55f, 0.0f, 1.0f));
+            }
+        }
         for (size_t k = 0; k < rows.size(); ++k) {
             c.circle(L.points[k], dotR, methodColour(rows[k].point.method));
         }

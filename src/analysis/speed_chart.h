@@ -44,6 +44,8 @@ struct SpeedChartText {
     std::string subtitle;  // e.g. the GL_RENDERER and the timer
     std::string xLabel = "camera pass time, ms (log scale)";
     std::string yLabel = "edge-band RMSE of visibility";
+    // Rows ringed in orange: the dots a lesson step talks about (chartRowsMatching).
+    std::vector<size_t> highlight;
 };
 
 struct SpeedChartLayout {
@@ -67,6 +69,11 @@ struct SpeedChartLayout {
 
 // "gather3 1024", "nearest 256", "gather3 gauss1.5 1024": the label of one run.
 std::string chartLabel(const BenchPoint& point);
+// The rows a lesson's `chart_highlight` names, in row order: a comma-separated list of "front"
+// (the Pareto front of the scene timing), full labels ("gather3 256") and label first words
+// ("gather3": that method and N at every map size). Throws std::invalid_argument naming a
+// selector that matches no row.
+std::vector<size_t> chartRowsMatching(std::span<const BenchRow> rows, const std::string& selectors);
 // The colour of a method's dots and legend swatch.
 glm::vec4 methodColour(int method);
 

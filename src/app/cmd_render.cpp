@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/cli_util.h"
@@ -56,7 +57,21 @@ int runRender(const RenderCommandOptions& o) {
     requireIntRange("--time", o.timeRepeats, 0, 10000);
     OutputFiles outputs(o.force);
     outputs.addInput("--scene-file", o.render.sceneFile);
-    if (!o.render.lesson.empty()) outputs.addInput("--lesson", resolveLesson(o.render.lesson));
+    // A lesson step that shows a chart: -o writes that chart, as `export` shows it in the
+    // scene's place (--raw still writes the scene's buffers at the step's settings).
+    std::string chart;
+    std::optional<LessonStep> chartStep;
+    if (!o.render.lesson.empty()) {
+        std::string path = resolveLesson(o.render.lesson);
+        outputs.addInput("--lesson", path);
+        Lesson lesson = loadLessonChecked(path);
+        const LessonStep& step = lesson.steps[static_cast<size_t>(o.render.lessonStep - 1)];
+        if (!step.chart.empty()) {
+            chartStep = step;
+            chart = step.chart.substr(0, step.chart.rfind('#'));
+            outputs.addInput("chart", chart);
+        }
+    }
     if (!o.out.empty()) {
         requireExtension("-o", o.out, ".png");
         outputs.add("-o", o.out);
@@ -95,7 +110,8 @@ int runRender(const RenderCommandOptions& o) {
     }
     glm::ivec2 size = renderer.frameSize();
     if (!o.out.empty()) {
-        std::vector<uint8_t> rgba = renderer.readColour();
+        std::vector<uint8_t> rgba =
+            chartStep ? drawStepChart(*chartStep, size) : renderer.readColour();
         writePngRgba8(o.out, size.x, size.y, rgba);
     }
     if (!o.rawDir.empty()) {
@@ -113,7 +129,10 @@ int runRender(const RenderCommandOptions& o) {
     outputs.commit();
     // Say what was written, like export does (a silent success left users looking for it).
     std::string method = std::string(methodInfo(settings.method).name);
-    if (!o.out.empty()) {
+    if (!o.out.empty() && chartStep) {
+        std::fprintf(stderr, "render: wrote %s (%dx%d, the chart of lesson step %d: %s)\n",
+                     o.out.c_str(), size.x, size.y, o.render.lessonStep, chart.c_str());
+    } else if (!o.out.empty()) {
         std::fprintf(stderr, "render: wrote %s (%dx%d, %s, map %d)\n", o.out.c_str(), size.x,
                      size.y, method.c_str(), settings.mapSize);
     }

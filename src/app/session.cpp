@@ -227,6 +227,16 @@ Lesson loadLessonChecked(const std::string& path) {
             throw InputError(path, step.chartLine,
                              "step " + std::to_string(i + 1) + " chart: " + e.what());
         }
+        if (step.chartHighlight.empty()) continue;
+        try {
+            chartRowsMatching(readChartRows(chartRef(step.chart).path), step.chartHighlight);
+        } catch (const std::invalid_argument& e) {
+            throw InputError(path, step.chartHighlightLine,
+                             "step " + std::to_string(i + 1) + " chart_highlight: " + e.what());
+        } catch (const InputError& e) {
+            throw InputError(path, step.chartLine,
+                             "step " + std::to_string(i + 1) + " chart: " + e.what());
+        }
     }
     return lesson;
 }
@@ -321,22 +331,26 @@ bool Session::previousPage() {
 
 void Session::setFrameTimeMs(double ms) { mFrameTimeMs = ms; }
 
+std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size) {
+    ChartRef ref = chartRef(step.chart);
+    if (!ref.view.empty()) return drawStabilityView(ref, size);
+    std::vector<BenchRow> rows = readChartRows(step.chart);
+    SpeedChartText labels;
+    labels.title = "Speed against accuracy";
+    labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
+                      std::filesystem::path(step.chart).filename().string();
+    if (!step.chartHighlight.empty())
+        labels.highlight = chartRowsMatching(rows, step.chartHighlight);
+    return drawSpeedChart(rows, size, labels);
+}
+
 void Session::blitChart(const std::string& csvPath) {
     glm::ivec2 size(mLayout.scene.size());
-    std::string key = csvPath + "@" + std::to_string(size.x) + "x" + std::to_string(size.y);
+    const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
+    std::string key = csvPath + "@" + std::to_string(size.x) + "x" + std::to_string(size.y) + "#" +
+                      step.chartHighlight;
     if (key != mChartKey) {
-        ChartRef ref = chartRef(csvPath);
-        std::vector<uint8_t> rgba;
-        if (!ref.view.empty()) {
-            rgba = drawStabilityView(ref, size);
-        } else {
-            std::vector<BenchRow> rows = readChartRows(csvPath);
-            SpeedChartText labels;
-            labels.title = "Speed against accuracy";
-            labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
-                              std::filesystem::path(csvPath).filename().string();
-            rgba = drawSpeedChart(rows, size, labels);
-        }
+        std::vector<uint8_t> rgba = drawStepChart(step, size);
         mChart = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
         glTextureSubImage2D(mChart.colors[0].id(), 0, 0, 0, size.x, size.y, GL_RGBA,
                             GL_UNSIGNED_BYTE, rgba.data());

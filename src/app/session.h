@@ -42,6 +42,11 @@ Lesson loadLessonChecked(const std::string& path);
 // has a few hundred. More is refused with one line (a 50,000-row chart took 80 s and 2.3 GB).
 constexpr std::size_t MAX_CHART_ROWS = 2000;
 
+// A chart step's chart (LessonStep::chart, with its chart_highlight) as RGBA8 of `size`, rows
+// top-down, as the frame shows it in the scene's place; `render --lesson L --step S` writes it.
+// Needs a current OpenGL 4.5 context. Throws InputError for a bad chart file.
+std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size);
+
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
 
 // The smallest frame the scene view and the inspector fit into side by side.

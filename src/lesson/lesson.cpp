@@ -126,7 +126,7 @@ class LessonParser {
         for (size_t i = 0; i < steps->size(); ++i) {
             const toml::table& table = *steps->get(i)->as_table();
             std::string what = "step " + std::to_string(i + 1);
-            checkKeys(table, what, {"title", "text", "chart", "highlight"});
+            checkKeys(table, what, {"title", "text", "chart", "chart_highlight", "highlight"});
             applySettings(table, what, state, lines);
             LessonStep step;
             step.line = lineOf(table);
@@ -148,6 +148,13 @@ class LessonParser {
                 }
                 step.chart = p.string() + view;
                 step.chartLine = lineOf(*table.get("chart"));
+            }
+            if (const toml::node* h = table.get("chart_highlight")) {
+                if (step.chart.empty() || step.chart.find('#') != std::string::npos) {
+                    fail(*h, what + " chart_highlight needs a bench chart (chart = \"....csv\")");
+                }
+                step.chartHighlight = requireText(table, "chart_highlight", what, table);
+                step.chartHighlightLine = lineOf(*h);
             }
             if (const toml::node* h = table.get("highlight")) {
                 const auto* v = h->as_integer();

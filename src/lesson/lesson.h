@@ -42,6 +42,9 @@
 //                                     separated by two or more spaces are aligned as a table
 //                                     (overlay/inspector.cpp alignTables). A lone operator
 //                                     ("1 - g") never breaks across lines
+//   chart = "figures/bench.csv"       the step shows that chart instead of the scene
+//   chart_highlight = "gather3"       the chart's dots the text talks about (see LessonStep)
+//   highlight = 1                     the fetch the text talks about (see LessonStep)
 //   method = "hw2x2"                  any [settings] key: it changes the state from this step
 //                                     on; the steps after it inherit it
 //
@@ -133,6 +136,11 @@ struct LessonStep {
     // #shimmer), kept in `chart` after the resolved path.
     std::string chart;
     int chartLine = 0;  // the line of the `chart` key
+    // `chart_highlight = "front"` or `"gather3, tent3 256"`: the bench chart's dots the step's
+    // text talks about, ringed in the highlight colour: "front" (the Pareto front), or a dot's
+    // label ("gather3 256") or its first word ("gather3": every map size). Needs `chart`.
+    std::string chartHighlight;
+    int chartHighlightLine = 0;
     // `highlight = 1`: the fetch instruction (1-based, in issue order) this step's text talks
     // about, drawn in the highlight colour in the inspector; 0: none. Not inherited.
     int highlightFetch = 0;

@@ -324,10 +324,11 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
                    tr.params.method == PCF_HW) {
             if (!area.contains(at)) continue;
             markOps.push_back([=](Canvas& c) {
-                if (highlit) c.circle(at, dotR + HIGHLIGHT_EXTRA_PX, HIGHLIGHT);
+                if (highlit) c.circle(at, dotR * 2.0f + 1.0f, HIGHLIGHT);
                 c.circle(at, dotR, ACCENT);
             });
-            mark({at.x - dotR - 1, at.y - dotR - 1, 2 * dotR + 2, 2 * dotR + 2}, "lookup");
+            float mr = highlit ? dotR * 2.0f + 2.0f : dotR + 1.0f;  // the highlight's halo too
+            mark({at.x - mr, at.y - mr, 2 * mr, 2 * mr}, "lookup");
             legend.dots = true;
         }
     }

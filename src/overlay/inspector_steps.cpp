@@ -37,6 +37,23 @@ void planSteps(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
                     "step-title", cut);
             y += lineHeightOf(t.body);
         }
+        // The step list's neighbours of this step, one line at the numbers' size (18 px at
+        // projector sizes): where the lesson came from, left, and where it goes, right.
+        float listPx = std::max(t.numberFloor, t.label);
+        int k = m.currentStep;
+        std::string prev = k > 0 ? "< " + std::to_string(k) + ". " + m.stepTitles[k - 1] : "";
+        std::string next =
+            k + 1 < n ? std::to_string(k + 2) + ". " + m.stepTitles[k + 1] + " >" : "";
+        float half = std::floor((width - listPx) / 2);
+        for (bool right : {false, true}) {
+            const std::string& item = right ? next : prev;
+            if (item.empty()) continue;
+            std::string shown = elideText(FontFace::Sans, listPx, item, half);
+            pl.text({right ? p.right() - margin : p.x + margin, y}, shown,
+                    {FontFace::Sans, listPx, TEXT_DIM, right ? TextAlign::Right : TextAlign::Left},
+                    BoxKind::Text, panel, "step-list", shown != item);
+        }
+        if (n > 1) y += lineHeightOf(listPx);
         y += t.body * 0.4f;
         text = {p.x + margin, y, width, p.bottom() - margin * 0.7f - y};
     } else {
