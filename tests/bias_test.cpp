@@ -11,8 +11,9 @@
 #include "json_lite.h"
 #include "kernel/methods.h"
 #include "kernel/trace.h"
-#include "run_command.h"
+#include "kernel/trace_json.h"
 #include "random_map.h"
+#include "run_command.h"
 
 namespace pcf {
 namespace {
@@ -258,7 +259,8 @@ TEST(Bias, TraceJsonCarriesTheModeItsParametersAndEachTapsShift) {
     // Texel (3,3)'s centre is half a texel left and below uv 0.5: shift -(0.5 + 0.25) / 16.
     EXPECT_NE(json.find("\"ref_shift\":-0.046875"), std::string::npos) << json;
     bool perTapStep = false;
-    for (const TraceStep& s : tr.steps) perTapStep = perTapStep || s.title == "Each tap's own ref";
+    for (const TraceStep& s : tr.steps)
+        perTapStep = perTapStep || s.kind == TraceStepKind::PerTapRef;
     EXPECT_TRUE(perTapStep);
 }
 

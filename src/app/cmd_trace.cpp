@@ -10,6 +10,7 @@
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/trace.h"
+#include "kernel/trace_json.h"
 #include "render/image_io.h"
 
 namespace pcf {

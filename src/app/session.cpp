@@ -12,6 +12,8 @@
 #include "analysis/stability_report.h"
 #include "app/cli_util.h"
 #include "kernel/methods.h"
+#include "kernel/trace_explain.h"
+#include "kernel/trace_json.h"
 #include "lesson/lesson_text.h"
 #include "scene/input_error.h"
 #include "scene/input_file.h"
