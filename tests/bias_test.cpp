@@ -313,7 +313,7 @@ TEST_F(BiasCli, TraceTakesTheModeByNameAndItsParameters) {
         "trace --example --json --bias receiver-plane --constant-bias 0.001 --dzduv 0.4,-0.2");
     ASSERT_EQ(plane.exitCode, 0) << plane.err;
     EXPECT_NE(plane.out.find("\"mode\":\"receiver-plane\""), std::string::npos) << plane.out;
-    EXPECT_NE(plane.out.find("\"ref\":0.499000013"), std::string::npos) << plane.out;
+    EXPECT_NE(plane.out.find("\"ref\":0.499"), std::string::npos) << plane.out;
     auto slope = testutil::runPcfscope(
         "trace --example --bias slope --constant-bias 0.001 "
         "--slope-bias 0.002 --slope-max 0.1 --angle 45");

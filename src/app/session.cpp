@@ -460,29 +460,41 @@ std::vector<uint8_t> Session::readFrame() const {
                            mFrame.height);
 }
 
+namespace {
+
+// A setting as the status line and the step text print it (formatNumber: up to 4 decimals), as a
+// JSON number: 0.005 stays "0.005", not the float's "0.00499999989".
+Json settingNumber(float v) { return Json::parse(formatNumber(v)); }
+
+}  // namespace
+
 std::string Session::stepJson() const {
     const LessonSettings& s = mSettings;
-    std::string out =
-        "{\"lesson\":" + jsonQuote(mLesson.name) + ",\"title\":" + jsonQuote(mLesson.title) +
-        ",\"step\":" + std::to_string(mStep + 1) +
-        ",\"step_title\":" + jsonQuote(mLesson.steps.empty() ? "" : mLesson.steps[mStep].title) +
-        ",\"text\":" + jsonQuote(stepText()) + ",\"pixel\":[" + std::to_string(mPixel.x) + "," +
-        std::to_string(mPixel.y) + "],\"scene_size\":[" +
-        std::to_string(static_cast<int>(mLayout.scene.w)) + "," +
-        std::to_string(static_cast<int>(mLayout.scene.h)) + "]" +
-        ",\"settings\":{\"method\":" + jsonQuote(std::string(methodInfo(s.method).name)) +
-        ",\"kernel\":" + std::to_string(s.kernel) + ",\"radius\":" + formatNumber(s.radius) +
-        ",\"rotate\":" + (s.rotate ? "true" : "false") + ",\"bias\":" + jsonQuote(s.bias) +
-        ",\"constant_bias\":" + formatNumber(s.constantBias) + ",\"cull\":" + jsonQuote(s.cull) +
-        ",\"map_size\":" + std::to_string(s.mapSize) +
-        ",\"depth_format\":" + jsonQuote(s.depthFormat) + "}" +
-        ",\"trace\":" + (mTrace ? traceToJson(*mTrace) : std::string("null")) +
-        ",\"frame_size\":[" + std::to_string(mLayout.frameSize.x) + "," +
-        std::to_string(mLayout.frameSize.y) + "]" +
-        ",\"presentation\":" + (mPresentation ? "true" : "false") +
-        ",\"text_page\":" + std::to_string(mTextPage + 1) +
-        ",\"text_pages\":" + std::to_string(mTextPages) + ",\"layout\":" + layoutJson(mBoxes) + "}";
-    return out;
+    Json settings = {{"method", methodInfo(s.method).name},
+                     {"kernel", s.kernel},
+                     {"radius", settingNumber(s.radius)},
+                     {"rotate", s.rotate},
+                     {"bias", s.bias},
+                     {"constant_bias", settingNumber(s.constantBias)},
+                     {"cull", s.cull},
+                     {"map_size", s.mapSize},
+                     {"depth_format", s.depthFormat}};
+    Json j = {{"lesson", mLesson.name},
+              {"title", mLesson.title},
+              {"step", mStep + 1},
+              {"step_title", mLesson.steps.empty() ? "" : mLesson.steps[mStep].title},
+              {"text", stepText()},
+              {"pixel", jsonPair(mPixel)},
+              {"scene_size", jsonPair(glm::ivec2(mLayout.scene.size()))},
+              {"settings", settings},
+              {"trace", mTrace ? traceJson(*mTrace) : Json(nullptr)},
+              {"frame_size", jsonPair(mLayout.frameSize)},
+              {"presentation", mPresentation},
+              {"text_page", mTextPage + 1},
+              {"text_pages", mTextPages},
+              // inspector.h writes the layout's JSON itself (layoutJson); taken as it is.
+              {"layout", Json::parse(layoutJson(mBoxes))}};
+    return jsonDump(j);
 }
 
 }  // namespace pcf

@@ -2,7 +2,9 @@
 #include "kernel/trace_json.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "kernel/trace_explain.h"
@@ -11,49 +13,6 @@ namespace pcf {
 
 namespace {
 
-// JSON numbers: enough digits to round-trip a float.
-std::string jnum(float v) {
-    if (!std::isfinite(v)) return "null";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
-    return buf;
-}
-std::string jvec(vec2 v) { return "[" + jnum(v.x) + "," + jnum(v.y) + "]"; }
-std::string jvec(ivec2 v) { return "[" + std::to_string(v.x) + "," + std::to_string(v.y) + "]"; }
-}  // namespace
-
-std::string jsonQuote(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        switch (c) {
-            case '"':
-                out += "\\\"";
-                break;
-            case '\\':
-                out += "\\\\";
-                break;
-            case '\n':
-                out += "\\n";
-                break;
-            case '\t':
-                out += "\\t";
-                break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                    out += buf;
-                } else {
-                    out += c;
-                }
-        }
-    }
-    return out + "\"";
-}
-
-namespace {
-
-std::string jstr(const std::string& s) { return jsonQuote(s); }
 std::string num(float v) { return formatNumber(v); }
 std::string pair(vec2 v) { return "(" + num(v.x) + ", " + num(v.y) + ")"; }
 // A comparison's result: the bit, or the soft comparison's fraction.
@@ -77,64 +36,107 @@ const char* fetchKindName(int kind) {
 
 }  // namespace
 
-std::string traceToJson(const Trace& tr) {
-    std::ostringstream s;
-    s << "{\"method\":" << jstr(std::string(methodInfo(tr.params.method).name))
-      << ",\"kernel\":" << tr.params.kernel << ",\"radius\":" << jnum(tr.params.radius)
-      << ",\"map_size\":" << jvec(tr.mapSize) << ",\"uv\":" << jvec(tr.uv)
-      << ",\"z\":" << jnum(tr.z) << ",\"ref\":" << jnum(tr.ref)
-      << ",\"bias\":{\"mode\":" << jstr(std::string(biasName(tr.bias.mode)))
-      << ",\"constant\":" << jnum(tr.bias.constant) << ",\"slope\":" << jnum(tr.bias.slope)
-      << ",\"slope_max\":" << jnum(tr.bias.slopeMax)
-      << ",\"normal_offset\":" << jnum(tr.bias.normalOffset)
-      << ",\"soft_scale\":" << jnum(tr.bias.softScale) << ",\"dzduv\":" << jvec(tr.bias.dzduv)
-      << ",\"per_tap\":"
-      << (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE ? "\"none\""
-          : tr.params.method == PCF_GATHER        ? "\"per gather, at its centre\""
-          : tr.params.method == PCF_HW2X2 || tr.params.method == PCF_HW ||
-                  tr.params.method == PCF_TENT
-              ? "\"per hardware tap, at its uv\""
-              : "\"per texel, at its centre\"")
-      << "},\"texel\":" << jvec(tr.pos.p) << ",\"base\":" << jvec(tr.pos.base)
-      << ",\"frac\":" << jvec(tr.pos.frac) << ",\"taps\":[";
-    for (size_t k = 0; k < tr.taps.size(); ++k) {
-        const TapRecord& t = tr.taps[k];
-        s << (k ? "," : "") << "{\"texel\":" << jvec(t.texel) << ",\"depth\":" << jnum(t.depth)
-          << ",\"ref\":" << jnum(t.ref) << ",\"ref_shift\":" << jnum(t.ref - tr.ref) << ",\"lit\":"
-          << (t.lit == 0.0f || t.lit == 1.0f ? std::to_string(t.lit >= 0.5f ? 1 : 0) : jnum(t.lit))
-          << ",\"weight\":" << jnum(t.weight) << ",\"fetch\":" << t.fetch
-          << ",\"clamped\":" << (t.clamped ? "true" : "false") << "}";
-    }
-    s << "],\"fetch_list\":[";
-    for (size_t k = 0; k < tr.fetches.size(); ++k) {
-        const FetchRecord& f = tr.fetches[k];
-        s << (k ? "," : "") << "{\"kind\":\"" << fetchKindName(f.kind) << "\",\"uv\":" << jvec(f.uv)
-          << ",\"weight\":" << jnum(f.weight) << "}";
-    }
-    s << "],\"weights\":{\"origin\":" << jvec(tr.weights.origin)
-      << ",\"size\":" << jvec(tr.weights.size) << ",\"values\":[";
-    for (size_t k = 0; k < tr.weights.values.size(); ++k) {
-        s << (k ? "," : "") << jnum(tr.weights.values[k]);
-    }
-    s << "]},\"fetches\":{\"texels\":" << tr.counts.texels << ",\"gathers\":" << tr.counts.gathers
-      << ",\"hw_taps\":" << tr.counts.hwTaps << "},\"visibility\":" << jnum(tr.visibility)
-      << ",\"weights_kind\":" << jstr(std::string(weightsName(tr.params.weights)))
-      << ",\"sigma\":" << jnum(tr.params.sigma)
-      << ",\"precision\":" << jstr(std::string(precisionName(tr.params.precision)))
-      << ",\"fixed_point\":" << (tr.fixedPoint ? "true" : "false")
-      << ",\"texture_unit\":{\"frac_exact\":" << jvec(tr.pos.frac)
-      << ",\"frac_hw8\":" << jvec(tr.fracHw8)
-      << ",\"visibility_exact\":" << jnum(tr.visibilityExact)
-      << ",\"visibility_hw8\":" << jnum(tr.visibilityHw8) << "}"
-      << ",\"steps\":[";
-    for (size_t k = 0; k < tr.steps.size(); ++k) {
-        s << (k ? "," : "") << "{\"kind\":" << jstr(stepKindName(tr.steps[k].kind))
-          << ",\"title\":" << jstr(tr.steps[k].title) << ",\"text\":" << jstr(tr.steps[k].text)
-          << "}";
-    }
-    s << "]}";
-    return s.str();
+Json jsonNumber(float v) {
+    if (!std::isfinite(v)) return nullptr;
+    if (v == std::trunc(v) && std::fabs(v) < 1e9f) return static_cast<std::int64_t>(v);
+    return v;
 }
+
+Json jsonPair(vec2 v) { return Json::array({jsonNumber(v.x), jsonNumber(v.y)}); }
+Json jsonPair(ivec2 v) { return Json::array({v.x, v.y}); }
+
+std::string jsonDump(const Json& j) {
+    return j.dump(-1, ' ', false, nlohmann::detail::error_handler_t::replace);
+}
+
+namespace {
+
+// Receiver-plane bias: where each tap's own ref is taken.
+const char* perTapName(const Trace& tr) {
+    if (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE) return "none";
+    switch (tr.params.method) {
+        case PCF_GATHER:
+            return "per gather, at its centre";
+        case PCF_HW2X2:
+        case PCF_HW:
+        case PCF_TENT:
+            return "per hardware tap, at its uv";
+        default:
+            return "per texel, at its centre";
+    }
+}
+
+}  // namespace
+
+Json traceJson(const Trace& tr) {
+    Json bias = {{"mode", biasName(tr.bias.mode)},
+                 {"constant", jsonNumber(tr.bias.constant)},
+                 {"slope", jsonNumber(tr.bias.slope)},
+                 {"slope_max", jsonNumber(tr.bias.slopeMax)},
+                 {"normal_offset", jsonNumber(tr.bias.normalOffset)},
+                 {"soft_scale", jsonNumber(tr.bias.softScale)},
+                 {"dzduv", jsonPair(tr.bias.dzduv)},
+                 {"per_tap", perTapName(tr)}};
+    Json taps = Json::array();
+    for (const TapRecord& t : tr.taps) {
+        // A comparison bit as 0 or 1; the soft comparison's fraction as a number.
+        Json lit = t.lit == 0.0f || t.lit == 1.0f ? Json(t.lit >= 0.5f ? 1 : 0) : jsonNumber(t.lit);
+        taps.push_back({{"texel", jsonPair(t.texel)},
+                        {"depth", jsonNumber(t.depth)},
+                        {"ref", jsonNumber(t.ref)},
+                        {"ref_shift", jsonNumber(t.ref - tr.ref)},
+                        {"lit", lit},
+                        {"weight", jsonNumber(t.weight)},
+                        {"fetch", t.fetch},
+                        {"clamped", t.clamped}});
+    }
+    Json fetches = Json::array();
+    for (const FetchRecord& f : tr.fetches) {
+        fetches.push_back({{"kind", fetchKindName(f.kind)},
+                           {"uv", jsonPair(f.uv)},
+                           {"weight", jsonNumber(f.weight)}});
+    }
+    Json weights = Json::array();
+    for (float w : tr.weights.values) weights.push_back(jsonNumber(w));
+    Json steps = Json::array();
+    for (const TraceStep& s : tr.steps) {
+        steps.push_back({{"kind", stepKindName(s.kind)}, {"title", s.title}, {"text", s.text}});
+    }
+    return {{"method", methodInfo(tr.params.method).name},
+            {"kernel", tr.params.kernel},
+            {"radius", jsonNumber(tr.params.radius)},
+            {"map_size", jsonPair(tr.mapSize)},
+            {"uv", jsonPair(tr.uv)},
+            {"z", jsonNumber(tr.z)},
+            {"ref", jsonNumber(tr.ref)},
+            {"bias", bias},
+            {"texel", jsonPair(tr.pos.p)},
+            {"base", jsonPair(tr.pos.base)},
+            {"frac", jsonPair(tr.pos.frac)},
+            {"taps", taps},
+            {"fetch_list", fetches},
+            {"weights",
+             {{"origin", jsonPair(tr.weights.origin)},
+              {"size", jsonPair(tr.weights.size)},
+              {"values", weights}}},
+            {"fetches",
+             {{"texels", tr.counts.texels},
+              {"gathers", tr.counts.gathers},
+              {"hw_taps", tr.counts.hwTaps}}},
+            {"visibility", jsonNumber(tr.visibility)},
+            {"weights_kind", weightsName(tr.params.weights)},
+            {"sigma", jsonNumber(tr.params.sigma)},
+            {"precision", precisionName(tr.params.precision)},
+            {"fixed_point", tr.fixedPoint},
+            {"texture_unit",
+             {{"frac_exact", jsonPair(tr.pos.frac)},
+              {"frac_hw8", jsonPair(tr.fracHw8)},
+              {"visibility_exact", jsonNumber(tr.visibilityExact)},
+              {"visibility_hw8", jsonNumber(tr.visibilityHw8)}}},
+            {"steps", steps}};
+}
+
+std::string traceToJson(const Trace& tr) { return jsonDump(traceJson(tr)); }
 
 std::string traceToText(const Trace& tr) {
     std::ostringstream s;
