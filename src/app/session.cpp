@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
@@ -83,6 +84,18 @@ std::string resolveLesson(const std::string& nameOrPath) {
                      std::to_string(lessons.size()) + ", or one of: " + names + ")");
 }
 
+namespace {
+
+// A name the lesson parser or the viewer's keys already checked: an unknown one here is a bug,
+// reported as such instead of silently drawing something else.
+template <class T>
+T checked(std::optional<T> value, const char* what, const std::string& name) {
+    if (!value) throw std::logic_error("unchecked " + std::string(what) + " '" + name + "'");
+    return *value;
+}
+
+}  // namespace
+
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) {
     RenderSettings r;
     r.method = s.method;
@@ -93,14 +106,14 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) 
     r.sigma = s.sigma;
     r.precision = s.precision;
     r.mapSize = s.mapSize;
-    r.depthFormat = depthFormatFromName(s.depthFormat).value_or(DepthFormat::D32F);
-    r.bias = biasModeFromName(s.bias).value_or(BiasMode::Constant);
+    r.depthFormat = checked(depthFormatFromName(s.depthFormat), "depth format", s.depthFormat);
+    r.bias = checked(biasModeFromName(s.bias), "bias", s.bias);
     r.constantBias = s.constantBias;
     r.slopeBias = s.slopeBias;
     r.slopeMax = s.slopeMax;
     r.normalOffset = s.normalOffset;
     r.softScale = s.softScale;
-    r.shadowCull = cullModeFromName(s.cull).value_or(CullMode::Back);
+    r.shadowCull = checked(cullModeFromName(s.cull), "cull", s.cull);
     r.frameSize = sceneSize;
     return r;
 }
@@ -221,16 +234,35 @@ void Session::goToStep(int step) {
     mGrid = s.settings.grid;
     setSettings(s.settings);
     setPixel(scalePixel(s.settings.pixel, glm::ivec2(mLayout.scene.size())));
+    mStepEdited = false;
 }
 
-void Session::setSettings(const LessonSettings& s) {
-    // The picked pixel is part of the settings but not of the picture: moving it re-traces
-    // without re-rendering.
-    LessonSettings a = s;
-    LessonSettings b = mSettings;
+namespace {
+
+// Equal apart from the picked pixel, which is part of the settings but not of the picture.
+bool samePicture(LessonSettings a, const LessonSettings& b) {
     a.pixel = b.pixel;
-    if (!(a == b) || !mRendered) mSceneDirty = true;
+    return a == b;
+}
+
+// Equal in what a step's words can talk about: also ignores a kernel size or radius the method
+// does not use (a kernel change under bilinear2x2 leaves its text true).
+bool sameForTheWords(LessonSettings a, const LessonSettings& b) {
+    const MethodInfo& info = methodInfo(a.method);
+    if (a.method == b.method && !info.usesKernel) a.kernel = b.kernel;
+    if (a.method == b.method && !info.usesRadius) a.radius = b.radius;
+    return samePicture(a, b);
+}
+
+}  // namespace
+
+void Session::setSettings(const LessonSettings& s) {
+    // Moving the pixel re-traces without re-rendering.
+    if (!samePicture(s, mSettings) || !mRendered) mSceneDirty = true;
     mSettings = s;
+    // Keys changed what the step's words were written for (goToStep clears it).
+    mStepEdited = !mLesson.steps.empty() &&
+                  !sameForTheWords(s, mLesson.steps[static_cast<size_t>(mStep)].settings);
 }
 
 void Session::setPixel(glm::ivec2 scenePixel) {
@@ -374,9 +406,7 @@ std::string Session::stepText() const {
     std::string text = fillText(s.text, *mTrace, ctx);
     // Keys may have changed the state the words were written for; the numbers follow the live
     // state, the sentences cannot. Say so rather than let them disagree in silence.
-    // Compared as the status line words them: a kernel change under a method without one
-    // changes nothing the text talks about.
-    if (settingsSummary(s.settings) != settingsSummary(mSettings)) {
+    if (mStepEdited) {
         auto compact = [](std::string t) {
             for (size_t at; (at = t.find("   ")) != std::string::npos;) t.replace(at, 3, ", ");
             return t;
