@@ -86,9 +86,7 @@ public:
             case GLFW_KEY_END: mSession.goToStep(mSession.stepCount() - 1); break;
             case GLFW_KEY_M: {
                 s.method = (s.method + (shift ? PCF_METHOD_COUNT - 1 : 1)) % PCF_METHOD_COUNT;
-                if (s.method == PCF_TENT && s.kernel != 3 && s.kernel != 5 && s.kernel != 7) {
-                    s.kernel = 3;
-                }
+                s.kernel = fitKernel(s.method, s.kernel);
                 // A bias the new method cannot take (soft on hardware taps) falls back.
                 if (validateBias(checkedBias(s), s.method)) {
                     s.bias = "constant";
@@ -98,11 +96,7 @@ public:
             }
             case GLFW_KEY_LEFT_BRACKET:
             case GLFW_KEY_RIGHT_BRACKET: {
-                int step = k.key == GLFW_KEY_RIGHT_BRACKET ? 1 : -1;
-                if (s.method == PCF_TENT) step *= 2;
-                s.kernel = std::clamp(s.kernel + step, s.method == PCF_TENT ? 3 : MIN_KERNEL,
-                                      s.method == PCF_TENT ? 7 : MAX_KERNEL);
-                if (s.method == PCF_TENT && s.kernel % 2 == 0) s.kernel = 3;
+                s.kernel = stepKernel(s.method, s.kernel, k.key == GLFW_KEY_RIGHT_BRACKET ? 1 : -1);
                 mSession.setSettings(s);
                 break;
             }

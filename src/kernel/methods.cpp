@@ -1,5 +1,7 @@
 #include "kernel/methods.h"
 
+#include "kernel/settings.h"
+
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -112,8 +114,8 @@ std::optional<std::string> validateParams(const PcfParams& prm) {
           << MAX_KERNEL << ")";
         return s.str();
     }
-    if (prm.method == PCF_TENT && prm.kernel != 3 && prm.kernel != 5 && prm.kernel != 7) {
-        s << "tent takes --kernel 3, 5 or 7, not " << prm.kernel;
+    if (!kernelFits(prm.method, prm.kernel)) {
+        s << "tent takes --kernel " << kernelSizesText(prm.method) << ", not " << prm.kernel;
         return s.str();
     }
     if (prm.method == PCF_POISSON && !(std::isfinite(prm.radius) && prm.radius > 0.0f &&

@@ -319,8 +319,9 @@ class LessonParser {
         }
         if (const toml::node* n = table.get("radius")) {
             double r = number(*n, name("radius"));
-            if (!(r > 0.0 && r <= 64.0)) {
-                fail(*n, name("radius") + " must be in (0, 64] texels, got " + formatValue(r));
+            if (!(r > 0.0 && r <= MAX_POISSON_RADIUS)) {
+                fail(*n, name("radius") + " must be in (0, " + formatValue(MAX_POISSON_RADIUS) +
+                             "] texels, got " + formatValue(r));
             }
             s.radius = static_cast<float>(r);
         }
@@ -366,16 +367,17 @@ class LessonParser {
         biasParam("soft_scale", s.softScale);
         if (const toml::node* n = table.get("cull")) {
             std::string cull = string(*n, name("cull"));
-            if (cull != "back" && cull != "front" && cull != "none") {
-                fail(*n, "unknown cull mode '" + cull + "' (known: back, front, none)");
+            if (!cullModeFromName(cull)) {
+                fail(*n, "unknown cull mode '" + cull + "' (known: " +
+                             std::string(CULL_MODE_NAMES) + ")");
             }
             s.cull = cull;
         }
         if (const toml::node* n = table.get("map_size")) {
             int64_t size = integer(*n, name("map_size"));
-            if (size < LESSON_MIN_MAP_SIZE || size > LESSON_MAX_MAP_SIZE) {
-                fail(*n, name("map_size") + " must be " + std::to_string(LESSON_MIN_MAP_SIZE) +
-                             ".." + std::to_string(LESSON_MAX_MAP_SIZE) + ", got " +
+            if (size < MIN_MAP_SIZE || size > MAX_MAP_SIZE) {
+                fail(*n, name("map_size") + " must be " + std::to_string(MIN_MAP_SIZE) +
+                             ".." + std::to_string(MAX_MAP_SIZE) + ", got " +
                              std::to_string(size));
             }
             s.mapSize = static_cast<int>(size);
@@ -386,8 +388,11 @@ class LessonParser {
                              " must be a string (\"16\", \"24\" or \"32f\"), got " + typeName(*n));
             }
             std::string format = n->as_string()->get();
-            if (format != "16" && format != "24" && format != "32f") {
-                fail(*n, "unknown depth format '" + format + "' (known: 16, 24, 32f)");
+            // The lesson's canonical names only (depthFormatFromName also reads "32").
+            std::optional<DepthFormat> f = depthFormatFromName(format);
+            if (!f || depthFormatName(*f) != format) {
+                fail(*n, "unknown depth format '" + format + "' (known: " +
+                             std::string(DEPTH_FORMAT_NAMES) + ")");
             }
             s.depthFormat = format;
         }
