@@ -452,13 +452,9 @@ class LessonParser {
         PcfParams prm = makeParams(s.method, s.kernel, s.radius);
         prm.weights = s.weights;
         prm.sigma = s.sigma;
-        std::optional<std::string> problem = validateParams(prm);
+        std::optional<ParamProblem> problem = checkParams(prm);
         if (!problem) return;
-        // validateParams speaks in command-line options ("--kernel 4"); a lesson has keys.
-        std::string text = *problem;
-        for (size_t at = text.find("--"); at != std::string::npos; at = text.find("--")) {
-            text.erase(at, 2);
-        }
+        std::string text = problem->text();  // the kernel's words are the lesson's keys
         int line = std::max(lines.method, lines.kernel);
         if (line <= 0) line = lineOf(step);
         throw InputError(mSource, line, what + ": " + text);
