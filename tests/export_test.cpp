@@ -15,7 +15,7 @@
 #include "image_read.h"
 #include "json_lite.h"
 #include "kernel/methods.h"
-#include "kernel/trace.h"
+#include "kernel/trace_explain.h"
 #include "lesson/lesson.h"
 #include "overlay/inspector.h"
 #include "run_command.h"

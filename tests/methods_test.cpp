@@ -33,10 +33,14 @@ TEST(Methods, FetchCountsOfTheDesignTable) {
 TEST(Methods, ValidationNamesTheProblem) {
     EXPECT_FALSE(validateParams(makeParams(PCF_NAIVE, 8)).has_value());
     EXPECT_EQ(validateParams(makeParams(PCF_NAIVE, 9)).value(),
-              "--kernel 9 is out of range (1..8)");
+              "kernel 9 is out of range (1..8)");
     EXPECT_EQ(validateParams(makeParams(PCF_GATHER, 0)).value(),
-              "--kernel 0 is out of range (1..8)");
-    EXPECT_EQ(validateParams(makeParams(PCF_TENT, 4)).value(), "tent takes --kernel 3, 5 or 7, not 4");
+              "kernel 0 is out of range (1..8)");
+    EXPECT_EQ(validateParams(makeParams(PCF_TENT, 4)).value(), "tent takes kernel 3, 5 or 7, not 4");
+    // The setting is named once, so each caller can name it its own way.
+    ParamProblem p = checkParams(makeParams(PCF_TENT, 4)).value();
+    EXPECT_EQ(p.setting, "kernel");
+    EXPECT_EQ(p.say("--kernel"), "tent takes --kernel 3, 5 or 7, not 4");
     EXPECT_FALSE(validateParams(makeParams(PCF_TENT, 7)).has_value());
     EXPECT_TRUE(validateParams(makeParams(PCF_POISSON, 3, 0.0f)).has_value());
     EXPECT_TRUE(validateParams(makeParams(PCF_POISSON, 3, NAN)).has_value());

@@ -9,6 +9,7 @@
 #include "kernel/methods.h"
 #include "kernel/pcf.h"
 #include "kernel/trace.h"
+#include "kernel/trace_json.h"
 #include "random_map.h"
 
 namespace pcf {

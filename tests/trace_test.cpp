@@ -3,7 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+#include <vector>
+
 #include "json_lite.h"
+#include "kernel/trace_explain.h"
+#include "kernel/trace_json.h"
 
 namespace pcf {
 namespace {
@@ -75,7 +80,8 @@ TEST(Trace, JsonHasTheDesignFieldsAndItsNumbersAreTheKernels) {
         EXPECT_EQ(j["fetches"]["hw_taps"].number, tr.counts.hwTaps);
         EXPECT_FLOAT_EQ(static_cast<float>(j["visibility"].number), tr.visibility);
         double sum = 0.0;
-        for (const jsonlite::Value& t : j["taps"].array) sum += t["weight"].number * t["lit"].number;
+        for (const jsonlite::Value& t : j["taps"].array)
+            sum += t["weight"].number * t["lit"].number;
         EXPECT_NEAR(sum, tr.visibility, 1e-5) << m.name;
         const jsonlite::Value& w = j["weights"];
         EXPECT_EQ(w["values"].size(),
@@ -100,6 +106,82 @@ TEST(Trace, FormatNumberTrimsZeros) {
     EXPECT_EQ(formatNumber(-0.0f), "0");
     EXPECT_EQ(formatNumber(0.071111f), "0.0711");
     EXPECT_EQ(formatNumber(-0.00001f), "0");
+}
+
+// The split (trace.h records, trace_explain.h words, trace_json.h writes): consumers switch on
+// the step kind, so every method's steps carry the kinds its explanation promises.
+TEST(TraceSplit, StepKindsNameWhatEachMethodExplains) {
+    auto kinds = [](const Trace& tr) {
+        std::vector<TraceStepKind> out;
+        for (const TraceStep& s : tr.steps) out.push_back(s.kind);
+        return out;
+    };
+    using K = TraceStepKind;
+    EXPECT_EQ(kinds(exampleTrace(PCF_BILINEAR2X2)),
+              (std::vector<K>{K::Project, K::TexelPosition, K::CompareTexels, K::Lerp, K::Result}));
+    EXPECT_EQ(kinds(exampleTrace(PCF_HW2X2)),
+              (std::vector<K>{K::Project, K::TexelPosition, K::HardwareTap, K::Lerp, K::Result}));
+    EXPECT_EQ(kinds(exampleTrace(PCF_NEAREST)),
+              (std::vector<K>{K::Project, K::ReadTexel, K::Result}));
+    EXPECT_EQ(kinds(exampleTrace(PCF_GATHER)),
+              (std::vector<K>{K::Project, K::WeightTable, K::Gather, K::Result}));
+    EXPECT_EQ(kinds(exampleTrace(PCF_TENT)),
+              (std::vector<K>{K::Project, K::TentTaps, K::TentHardwareTaps, K::Result}));
+    for (const MethodInfo& m : allMethods()) {
+        Trace tr = exampleTrace(m.id);
+        ASSERT_FALSE(tr.steps.empty()) << m.name;
+        // The last step states the visibility: box2x2's average is its result.
+        K last = m.id == PCF_BOX2X2 ? K::AverageBits : K::Result;
+        EXPECT_EQ(tr.steps.back().kind, last) << m.name;
+        // Only the bilinear lookups lerp two rows of bits in a step of their own.
+        bool lerps = m.id == PCF_BILINEAR2X2 || m.id == PCF_HW2X2;
+        bool hasLerp = false;
+        for (const TraceStep& s : tr.steps) {
+            EXPECT_EQ(s.title, stepTitle(s.kind)) << m.name;
+            hasLerp = hasLerp || s.kind == K::Lerp;
+        }
+        EXPECT_EQ(hasLerp, lerps) << m.name;
+    }
+}
+
+TEST(TraceSplit, ExplainingTheRecordAgainGivesTheSameSteps) {
+    for (const MethodInfo& m : allMethods()) {
+        Trace tr = exampleTrace(m.id);
+        std::vector<TraceStep> again = explainTrace(tr);
+        ASSERT_EQ(again.size(), tr.steps.size()) << m.name;
+        for (size_t k = 0; k < again.size(); ++k) {
+            EXPECT_EQ(again[k].kind, tr.steps[k].kind) << m.name;
+            EXPECT_EQ(again[k].text, tr.steps[k].text) << m.name;
+        }
+    }
+}
+
+// The explanation prints the footprint the record holds: change the record and the words follow
+// (nothing is derived a second time from uv).
+TEST(TraceSplit, GatherWordsReadTheRecordedFootprint) {
+    Trace tr = exampleTrace(PCF_GATHER);
+    PcfFootprint kernel = pcfKernelFootprint(tr.uv, tr.mapSize, tr.params.kernel);
+    EXPECT_EQ(tr.footprint.origin, kernel.origin);
+    EXPECT_EQ(tr.footprint.frac, kernel.frac);
+    tr.footprint.origin = ivec2(40, 50);
+    tr.footprint.frac = vec2(0.25f, 0.75f);
+    std::string words = explainTrace(tr)[1].text;
+    EXPECT_NE(words.find("= (40.25, 50.75), origin = floor(q) = (40, 50)"), std::string::npos)
+        << words;
+}
+
+TEST(TraceSplit, JsonStepsCarryTheKindId) {
+    Trace tr = exampleTrace(PCF_BILINEAR2X2);
+    jsonlite::Value j = jsonlite::parse(traceToJson(tr));
+    ASSERT_EQ(j["steps"].size(), tr.steps.size());
+    EXPECT_EQ(j["steps"][0]["kind"].string, "project");
+    EXPECT_EQ(j["steps"][3]["kind"].string, "lerp");
+    EXPECT_EQ(j["steps"][4]["kind"].string, "result");
+    std::set<std::string> names;
+    for (int k = 0; k <= static_cast<int>(TraceStepKind::Result); ++k) {
+        names.insert(stepKindName(static_cast<TraceStepKind>(k)));
+    }
+    EXPECT_EQ(names.size(), static_cast<size_t>(TraceStepKind::Result) + 1);  // all distinct
 }
 
 }  // namespace

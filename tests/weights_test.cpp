@@ -9,6 +9,7 @@
 #include "kernel/methods.h"
 #include "kernel/pcf.h"
 #include "kernel/trace.h"
+#include "kernel/trace_json.h"
 
 namespace pcf {
 namespace {
@@ -91,9 +92,9 @@ TEST(Weights, SameFetchesAndWeightsThatSumToOne) {
 TEST(Weights, ValidationNamesTheOption) {
     EXPECT_FALSE(validateParams(weighted(PCF_GATHER, 3, PCF_WEIGHTS_BINOMIAL)).has_value());
     EXPECT_EQ(validateParams(weighted(PCF_TENT, 3, PCF_WEIGHTS_BINOMIAL)).value(),
-              "--weights binomial applies to pcf-naive and pcf-gather, not tent");
+              "weights binomial applies to pcf-naive and pcf-gather, not tent");
     EXPECT_EQ(validateParams(weighted(PCF_NAIVE, 3, PCF_WEIGHTS_GAUSSIAN, 0.0f)).value(),
-              "--sigma 0 is out of range (0, 16] texels");
+              "sigma 0 is out of range (0, 16] texels");
     EXPECT_EQ(weightsFromName("gaussian"), PCF_WEIGHTS_GAUSSIAN);
     EXPECT_FALSE(weightsFromName("tent").has_value());
 }

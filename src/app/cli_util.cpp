@@ -89,10 +89,10 @@ void requireIntRange(const std::string& option, int v, int lo, int hi) {
 void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, float radius) {
     // The kernel's own checks, asked of a method that uses the value.
     if (kernelGiven) {
-        if (auto why = validateParams(makeParams(PCF_NAIVE, kernel))) throw UsageError(*why);
+        if (auto why = cliParamsProblem(makeParams(PCF_NAIVE, kernel))) throw UsageError(*why);
     }
     if (radiusGiven) {
-        if (auto why = validateParams(makeParams(PCF_POISSON, MIN_KERNEL, radius))) {
+        if (auto why = cliParamsProblem(makeParams(PCF_POISSON, MIN_KERNEL, radius))) {
             throw UsageError(*why);
         }
     }
@@ -125,6 +125,12 @@ std::vector<int> parseIntList(const std::string& option, const std::string& text
         }
     }
     return values;
+}
+
+std::optional<std::string> cliParamsProblem(const PcfParams& prm) {
+    std::optional<ParamProblem> p = checkParams(prm);
+    if (!p) return std::nullopt;
+    return p->setting.empty() ? p->text() : p->say("--" + p->setting);
 }
 
 }  // namespace pcf

@@ -1,11 +1,14 @@
 // cli_util.h: parsing of the command line's small values, with one-line errors.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "kernel/methods.h"
 
 namespace pcf {
 
@@ -38,5 +41,9 @@ void requireIntRange(const std::string& option, int v, int lo, int hi);
 // Range checks of --kernel and --radius when the user gave them, whether or not the method uses
 // them: a value no method accepts is a mistake worth a word, not something to ignore silently.
 void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, float radius);
+
+// checkParams (kernel/methods.h) in the command line's words: the setting named as its flag
+// ("tent takes --kernel 3, 5 or 7, not 4"); nullopt when the parameters are valid.
+std::optional<std::string> cliParamsProblem(const PcfParams& prm);
 
 }  // namespace pcf

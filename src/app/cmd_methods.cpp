@@ -3,6 +3,7 @@
 
 #include "app/commands.h"
 #include "kernel/methods.h"
+#include "kernel/settings.h"
 
 namespace pcf {
 
@@ -16,7 +17,7 @@ Command addMethodsCommand(CLI::App& app) {
         std::printf("%-12s %-26s %s\n", "id", header.c_str(), "what it does");
         for (const MethodInfo& m : allMethods()) {
             int n = *kernel;
-            if (m.id == PCF_TENT && n != 3 && n != 5 && n != 7) n = 3;
+            n = fitKernel(m.id, n);
             FetchCounts c = fetchCounts(m.id, n);
             auto count = [](int k, const char* what) {
                 return std::to_string(k) + " " + what + (k == 1 ? "" : "s");

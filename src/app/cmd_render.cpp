@@ -11,6 +11,7 @@
 #include "app/render_options.h"
 #include "app/session.h"
 #include "kernel/methods.h"
+#include "kernel/trace_json.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "render/scene_renderer.h"
@@ -24,19 +25,19 @@ namespace {
 // mode (receiver-plane, soft and interpolated change each tap's comparison; dzduv.exr holds the
 // receiver planes).
 std::string rawSettingsJson(const RenderSettings& s) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "{\"method\":\"%s\",\"kernel\":%d,\"radius\":%.9g,\"rotate\":%s,"
-                  "\"weights\":\"%s\",\"sigma\":%.9g,\"precision\":\"%s\","
-                  "\"depth_format\":\"%s\",\"map_size\":%d,\"bias\":\"%s\","
-                  "\"soft_scale\":%.9g}\n",
-                  std::string(methodInfo(s.method).name).c_str(), s.kernel,
-                  static_cast<double>(s.radius), s.rotatePerPixel ? "true" : "false",
-                  std::string(weightsName(s.weights)).c_str(), static_cast<double>(s.sigma),
-                  std::string(precisionName(s.precision)).c_str(),
-                  std::string(depthFormatName(s.depthFormat)).c_str(), s.mapSize,
-                  std::string(biasModeName(s.bias)).c_str(), static_cast<double>(s.softScale));
-    return buf;
+    Json j = {{"method", methodInfo(s.method).name},
+              {"kernel", s.kernel},
+              {"radius", jsonNumber(s.radius)},
+              {"rotate", s.rotatePerPixel},
+              {"weights", weightsName(s.weights)},
+              {"sigma", jsonNumber(s.sigma)},
+              {"precision", precisionName(s.precision)},
+              {"depth_format", depthFormatName(s.depthFormat)},
+              {"map_size", s.mapSize},
+              {"bias", biasModeName(s.bias)},
+              {"soft_scale", jsonNumber(s.softScale)},
+              {"rpdb_max", jsonNumber(s.rpdbMax)}};
+    return jsonDump(j) + "\n";
 }
 
 struct RenderCommandOptions {
@@ -87,8 +88,8 @@ int runRender(const RenderCommandOptions& o) {
         rawReceiver = (dir / "dzduv.exr").string();
         rawSettings = (dir / "render.json").string();
         settings.writePositions = true;
-        for (const std::string& p : {rawShadow, rawLightSpace, rawVisibility, rawPositions,
-                                     rawReceiver, rawSettings}) {
+        for (const std::string& p :
+             {rawShadow, rawLightSpace, rawVisibility, rawPositions, rawReceiver, rawSettings}) {
             outputs.add("--raw", p);
         }
     }

@@ -10,6 +10,7 @@
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/trace.h"
+#include "kernel/trace_json.h"
 #include "render/image_io.h"
 
 namespace pcf {
@@ -83,7 +84,7 @@ int runTrace(const TraceOptions& o) {
     prm.weights = *weights;
     prm.sigma = o.sigma;
     prm.precision = *precision;
-    if (auto why = validateParams(prm)) throw UsageError(*why);
+    if (auto why = cliParamsProblem(prm)) throw UsageError(*why);
     requireRange("--rotation", o.rotationDeg, -360.0f, 360.0f);
     std::optional<int> biasMode = biasFromName(o.bias);
     if (!biasMode) {

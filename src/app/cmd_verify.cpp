@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <regex>
 #include <sstream>
 #include <string>
 
@@ -14,6 +13,7 @@
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "kernel/methods.h"
+#include "kernel/trace_json.h"
 #include "render/image_io.h"
 #include "render/render_settings.h"
 
@@ -28,25 +28,41 @@ struct VerifyOptions {
     int referenceBits = 0;
 };
 
-// One value of the flat render.json that `render --raw` writes: the text after "key":,
-// without quotes. Throws UsageError when the key is missing.
-std::string jsonField(const std::string& json, const std::string& key, const std::string& path) {
-    std::regex re("\"" + key + "\"\\s*:\\s*(\"([^\"]*)\"|([^,}\\s]+))");
-    std::smatch m;
-    if (!std::regex_search(json, m, re)) {
-        throw UsageError("render.json has no \"" + key + "\" (" + path + ")");
+// The render.json that `render --raw` writes, read by nlohmann-json. Throws UsageError naming
+// the file when it is not JSON, or a key is missing or of the wrong type.
+Json readRenderJson(const std::string& text, const std::string& path) {
+    Json j = Json::parse(text, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) {
+        throw UsageError("render.json is not a JSON object (" + path + ")");
     }
-    return m[2].matched ? m[2].str() : m[3].str();
+    return j;
 }
 
-float jsonNumber(const std::string& json, const std::string& key, const std::string& path) {
-    std::string text = jsonField(json, key, path);
-    char* end = nullptr;
-    float v = std::strtof(text.c_str(), &end);
-    if (end == text.c_str() || *end != '\0' || !std::isfinite(v)) {
+std::string jsonField(const Json& json, const std::string& key, const std::string& path) {
+    auto it = json.find(key);
+    if (it == json.end()) throw UsageError("render.json has no \"" + key + "\" (" + path + ")");
+    if (!it->is_string()) {
+        throw UsageError("render.json: \"" + key + "\" is not a string (" + path + ")");
+    }
+    return it->get<std::string>();
+}
+
+float jsonFloat(const Json& json, const std::string& key, const std::string& path) {
+    auto it = json.find(key);
+    if (it == json.end()) throw UsageError("render.json has no \"" + key + "\" (" + path + ")");
+    if (!it->is_number() || !std::isfinite(it->get<float>())) {
         throw UsageError("render.json: \"" + key + "\" is not a number (" + path + ")");
     }
-    return v;
+    return it->get<float>();
+}
+
+bool jsonBool(const Json& json, const std::string& key, const std::string& path) {
+    auto it = json.find(key);
+    if (it == json.end()) throw UsageError("render.json has no \"" + key + "\" (" + path + ")");
+    if (!it->is_boolean()) {
+        throw UsageError("render.json: \"" + key + "\" is not true or false (" + path + ")");
+    }
+    return it->get<bool>();
 }
 
 FloatImage readImage(const std::filesystem::path& path, int channels) {
@@ -73,15 +89,15 @@ int runVerify(const VerifyOptions& o) {
     if (!in) throw UsageError("cannot read " + jsonPath.string() + " (a `render --raw` folder?)");
     std::stringstream buf;
     buf << in.rdbuf();
-    std::string json = buf.str();
     std::string where = jsonPath.string();
+    Json json = readRenderJson(buf.str(), where);
 
     std::string methodName = jsonField(json, "method", where);
     std::optional<int> method = methodFromName(methodName);
     if (!method)
         throw UsageError("render.json: unknown method '" + methodName + "' (" + where + ")");
-    PcfParams prm = makeParams(*method, static_cast<int>(jsonNumber(json, "kernel", where)),
-                               jsonNumber(json, "radius", where));
+    PcfParams prm = makeParams(*method, static_cast<int>(jsonFloat(json, "kernel", where)),
+                               jsonFloat(json, "radius", where));
     std::optional<int> weights = weightsFromName(jsonField(json, "weights", where));
     std::optional<int> precision = precisionFromName(jsonField(json, "precision", where));
     std::optional<DepthFormat> format = depthFormatFromName(jsonField(json, "depth_format", where));
@@ -89,20 +105,22 @@ int runVerify(const VerifyOptions& o) {
         throw UsageError("render.json: unknown weights, precision or depth_format (" + where + ")");
     }
     prm.weights = *weights;
-    prm.sigma = jsonNumber(json, "sigma", where);
+    prm.sigma = jsonFloat(json, "sigma", where);
     prm.precision = *precision;
-    bool rotate = jsonField(json, "rotate", where) == "true";
+    bool rotate = jsonBool(json, "rotate", where);
     // The bias mode: folders written before render.json had it hold none of the per-tap modes.
     BiasMode biasMode = BiasMode::Constant;
     float softScale = 0.0f;
-    if (json.find("\"bias\"") != std::string::npos) {
+    float rpdbMax = DEFAULT_RPDB_MAX;
+    if (json.contains("bias")) {
         std::string name = jsonField(json, "bias", where);
         std::optional<BiasMode> mode = biasModeFromName(name);
         if (!mode) throw UsageError("render.json: unknown bias '" + name + "' (" + where + ")");
         biasMode = *mode;
-        softScale = jsonNumber(json, "soft_scale", where);
+        softScale = jsonFloat(json, "soft_scale", where);
+        if (json.contains("rpdb_max")) rpdbMax = jsonFloat(json, "rpdb_max", where);
     }
-    PcfBias bias(static_cast<int>(biasMode), vec2(0.0f), softScale);
+    PcfBias bias(static_cast<int>(biasMode), vec2(0.0f), softScale, rpdbMax);
     if (auto why = validateParams(prm))
         throw UsageError("render.json: " + *why + " (" + where + ")");
 

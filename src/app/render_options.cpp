@@ -100,7 +100,7 @@ RenderSettings RenderOptions::settings() const {
         if (!p) throw UsageError("unknown --precision '" + precision + "' (known: exact, hw8)");
         s.precision = *p;
     }
-    if (auto why = validateParams(s.pcfParams())) throw UsageError(*why);
+    if (auto why = cliParamsProblem(s.pcfParams())) throw UsageError(*why);
     if (use("--bias")) {
         std::optional<BiasMode> b = biasModeFromName(bias);
         if (!b)

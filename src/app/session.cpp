@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
@@ -14,6 +15,8 @@
 #include "analysis/stability_report.h"
 #include "app/cli_util.h"
 #include "kernel/methods.h"
+#include "kernel/trace_explain.h"
+#include "kernel/trace_json.h"
 #include "lesson/lesson_text.h"
 #include "scene/input_error.h"
 #include "scene/input_file.h"
@@ -109,6 +112,18 @@ std::string resolveLesson(const std::string& nameOrPath) {
                      "or one of: " + names + ")");
 }
 
+namespace {
+
+// A name the lesson parser or the viewer's keys already checked: an unknown one here is a bug,
+// reported as such instead of silently drawing something else.
+template <class T>
+T checked(std::optional<T> value, const char* what, const std::string& name) {
+    if (!value) throw std::logic_error("unchecked " + std::string(what) + " '" + name + "'");
+    return *value;
+}
+
+}  // namespace
+
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) {
     RenderSettings r;
     r.method = s.method;
@@ -119,15 +134,15 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) 
     r.sigma = s.sigma;
     r.precision = s.precision;
     r.mapSize = s.mapSize;
-    r.depthFormat = depthFormatFromName(s.depthFormat).value_or(DepthFormat::D32F);
-    r.bias = biasModeFromName(s.bias).value_or(BiasMode::Constant);
+    r.depthFormat = checked(depthFormatFromName(s.depthFormat), "depth format", s.depthFormat);
+    r.bias = checked(biasModeFromName(s.bias), "bias", s.bias);
     r.constantBias = s.constantBias;
     r.slopeBias = s.slopeBias;
     r.slopeMax = s.slopeMax;
     r.normalOffset = s.normalOffset;
     r.softScale = s.softScale;
     r.rpdbMax = s.rpdbMax;
-    r.shadowCull = cullModeFromName(s.cull).value_or(CullMode::Back);
+    r.shadowCull = checked(cullModeFromName(s.cull), "cull", s.cull);
     r.frameSize = sceneSize;
     return r;
 }
@@ -259,16 +274,35 @@ void Session::goToStep(int step) {
     mHeatmap = s.settings.heatmap;
     setSettings(s.settings);
     setPixel(scalePixel(s.settings.pixel, glm::ivec2(mLayout.scene.size())));
+    mStepEdited = false;
 }
 
-void Session::setSettings(const LessonSettings& s) {
-    // The picked pixel is part of the settings but not of the picture: moving it re-traces
-    // without re-rendering.
-    LessonSettings a = s;
-    LessonSettings b = mSettings;
+namespace {
+
+// Equal apart from the picked pixel, which is part of the settings but not of the picture.
+bool samePicture(LessonSettings a, const LessonSettings& b) {
     a.pixel = b.pixel;
-    if (!(a == b) || !mRendered) mSceneDirty = true;
+    return a == b;
+}
+
+// Equal in what a step's words can talk about: also ignores a kernel size or radius the method
+// does not use (a kernel change under bilinear2x2 leaves its text true).
+bool sameForTheWords(LessonSettings a, const LessonSettings& b) {
+    const MethodInfo& info = methodInfo(a.method);
+    if (a.method == b.method && !info.usesKernel) a.kernel = b.kernel;
+    if (a.method == b.method && !info.usesRadius) a.radius = b.radius;
+    return samePicture(a, b);
+}
+
+}  // namespace
+
+void Session::setSettings(const LessonSettings& s) {
+    // Moving the pixel re-traces without re-rendering.
+    if (!samePicture(s, mSettings) || !mRendered) mSceneDirty = true;
     mSettings = s;
+    // Keys changed what the step's words were written for (goToStep clears it).
+    mStepEdited = !mLesson.steps.empty() &&
+                  !sameForTheWords(s, mLesson.steps[static_cast<size_t>(mStep)].settings);
 }
 
 void Session::setPixel(glm::ivec2 scenePixel) {
@@ -428,9 +462,7 @@ std::string Session::stepText() const {
     std::string text = fillText(s.text, *mTrace, ctx);
     // Keys may have changed the state the words were written for; the numbers follow the live
     // state, the sentences cannot. Say so rather than let them disagree in silence.
-    // Compared as the status line words them: a kernel change under a method without one
-    // changes nothing the text talks about.
-    if (settingsSummary(s.settings) != settingsSummary(mSettings)) {
+    if (mStepEdited) {
         auto compact = [](std::string t) {
             for (size_t at; (at = t.find("   ")) != std::string::npos;) t.replace(at, 3, ", ");
             return t;
@@ -589,29 +621,41 @@ std::vector<uint8_t> Session::readFrame() const {
                            mFrame.height);
 }
 
+namespace {
+
+// A setting as the status line and the step text print it (formatNumber: up to 4 decimals), as a
+// JSON number: 0.005 stays "0.005", not the float's "0.00499999989".
+Json settingNumber(float v) { return Json::parse(formatNumber(v)); }
+
+}  // namespace
+
 std::string Session::stepJson() const {
     const LessonSettings& s = mSettings;
-    std::string out =
-        "{\"lesson\":" + jsonQuote(mLesson.name) + ",\"title\":" + jsonQuote(mLesson.title) +
-        ",\"step\":" + std::to_string(mStep + 1) +
-        ",\"step_title\":" + jsonQuote(mLesson.steps.empty() ? "" : mLesson.steps[mStep].title) +
-        ",\"text\":" + jsonQuote(stepText()) + ",\"pixel\":[" + std::to_string(mPixel.x) + "," +
-        std::to_string(mPixel.y) + "],\"scene_size\":[" +
-        std::to_string(static_cast<int>(mLayout.scene.w)) + "," +
-        std::to_string(static_cast<int>(mLayout.scene.h)) + "]" +
-        ",\"settings\":{\"method\":" + jsonQuote(std::string(methodInfo(s.method).name)) +
-        ",\"kernel\":" + std::to_string(s.kernel) + ",\"radius\":" + formatNumber(s.radius) +
-        ",\"rotate\":" + (s.rotate ? "true" : "false") + ",\"bias\":" + jsonQuote(s.bias) +
-        ",\"constant_bias\":" + formatNumber(s.constantBias) + ",\"cull\":" + jsonQuote(s.cull) +
-        ",\"map_size\":" + std::to_string(s.mapSize) +
-        ",\"depth_format\":" + jsonQuote(s.depthFormat) + "}" +
-        ",\"trace\":" + (mTrace ? traceToJson(*mTrace) : std::string("null")) +
-        ",\"frame_size\":[" + std::to_string(mLayout.frameSize.x) + "," +
-        std::to_string(mLayout.frameSize.y) + "]" +
-        ",\"presentation\":" + (mPresentation ? "true" : "false") +
-        ",\"text_page\":" + std::to_string(mTextPage + 1) +
-        ",\"text_pages\":" + std::to_string(mTextPages) + ",\"layout\":" + layoutJson(mBoxes) + "}";
-    return out;
+    Json settings = {{"method", methodInfo(s.method).name},
+                     {"kernel", s.kernel},
+                     {"radius", settingNumber(s.radius)},
+                     {"rotate", s.rotate},
+                     {"bias", s.bias},
+                     {"constant_bias", settingNumber(s.constantBias)},
+                     {"cull", s.cull},
+                     {"map_size", s.mapSize},
+                     {"depth_format", s.depthFormat}};
+    Json j = {{"lesson", mLesson.name},
+              {"title", mLesson.title},
+              {"step", mStep + 1},
+              {"step_title", mLesson.steps.empty() ? "" : mLesson.steps[mStep].title},
+              {"text", stepText()},
+              {"pixel", jsonPair(mPixel)},
+              {"scene_size", jsonPair(glm::ivec2(mLayout.scene.size()))},
+              {"settings", settings},
+              {"trace", mTrace ? traceJson(*mTrace) : Json(nullptr)},
+              {"frame_size", jsonPair(mLayout.frameSize)},
+              {"presentation", mPresentation},
+              {"text_page", mTextPage + 1},
+              {"text_pages", mTextPages},
+              // inspector.h writes the layout's JSON itself (layoutJson); taken as it is.
+              {"layout", Json::parse(layoutJson(mBoxes))}};
+    return jsonDump(j);
 }
 
 }  // namespace pcf

@@ -69,6 +69,9 @@ class Session {
     // The state on screen, which the viewer's keys may change between steps.
     const LessonSettings& settings() const { return mSettings; }
     void setSettings(const LessonSettings& s);
+    // True while the settings differ from the current step's (apart from the pixel): the step
+    // text then says which state its words were written for.
+    bool stepEdited() const { return mStepEdited; }
     // Picked pixel in scene coordinates (top-left origin), clamped to the scene.
     glm::ivec2 pixel() const { return mPixel; }
     void setPixel(glm::ivec2 scenePixel);
@@ -131,6 +134,7 @@ class Session {
     Lesson mLesson;
     int mStep = 0;
     LessonSettings mSettings;
+    bool mStepEdited = false;
     glm::ivec2 mPixel{0, 0};
     bool mPresentation = false;
     bool mHelp = false;

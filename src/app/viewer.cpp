@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "app/cli_util.h"
 #include "app/export.h"
@@ -41,10 +43,17 @@ std::string freeStem(const std::string& dir, const std::string& base) {
     return stem;
 }
 
+// The bias mode of settings the lesson parser or a key already checked; an unknown name is a bug.
+int checkedBias(const LessonSettings& s) {
+    std::optional<int> mode = biasFromName(s.bias);
+    if (!mode) throw std::logic_error("unchecked bias '" + s.bias + "'");
+    return *mode;
+}
+
 class Viewer {
 public:
     Viewer(const ViewerOptions& o, GlfwWindowContext& window)
-        : mOptions(o), mWindow(window), mSession(window.framebufferSize(), o.presentation) {
+        : mWindow(window), mSession(window.framebufferSize(), o.presentation) {
         mLessons = builtInLessons();
         mSession.loadLesson(o.lesson);
         auto it = std::find(mLessons.begin(), mLessons.end(), o.lesson);
@@ -87,11 +96,9 @@ public:
             case GLFW_KEY_END: mSession.goToStep(mSession.stepCount() - 1); break;
             case GLFW_KEY_M: {
                 s.method = (s.method + (shift ? PCF_METHOD_COUNT - 1 : 1)) % PCF_METHOD_COUNT;
-                if (s.method == PCF_TENT && s.kernel != 3 && s.kernel != 5 && s.kernel != 7) {
-                    s.kernel = 3;
-                }
+                s.kernel = fitKernel(s.method, s.kernel);
                 // A bias the new method cannot take (soft on hardware taps) falls back.
-                if (validateBias(biasFromName(s.bias).value_or(PCF_BIAS_CONSTANT), s.method)) {
+                if (validateBias(checkedBias(s), s.method)) {
                     s.bias = "constant";
                 }
                 mSession.setSettings(s);
@@ -99,11 +106,7 @@ public:
             }
             case GLFW_KEY_LEFT_BRACKET:
             case GLFW_KEY_RIGHT_BRACKET: {
-                int step = k.key == GLFW_KEY_RIGHT_BRACKET ? 1 : -1;
-                if (s.method == PCF_TENT) step *= 2;
-                s.kernel = std::clamp(s.kernel + step, s.method == PCF_TENT ? 3 : MIN_KERNEL,
-                                      s.method == PCF_TENT ? 7 : MAX_KERNEL);
-                if (s.method == PCF_TENT && s.kernel % 2 == 0) s.kernel = 3;
+                s.kernel = stepKernel(s.method, s.kernel, k.key == GLFW_KEY_RIGHT_BRACKET ? 1 : -1);
                 mSession.setSettings(s);
                 break;
             }
@@ -120,7 +123,7 @@ public:
             case GLFW_KEY_B: {
                 // Every bias mode in turn (shift: backwards), skipping those the method cannot
                 // take (kernel/bias.h: validateBias).
-                int mode = biasFromName(s.bias).value_or(PCF_BIAS_CONSTANT);
+                int mode = checkedBias(s);
                 do {
                     mode = (mode + (shift ? PCF_BIAS_COUNT - 1 : 1)) % PCF_BIAS_COUNT;
                 } while (validateBias(mode, s.method));
@@ -207,7 +210,6 @@ private:
         glfwSetWindowMonitor(w, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
     }
 
-    const ViewerOptions& mOptions;
     GlfwWindowContext& mWindow;
     Session mSession;
     std::vector<std::string> mLessons;
@@ -216,18 +218,44 @@ private:
     glm::ivec4 mSaved{100, 100, 1600, 900};
 };
 
-Viewer* gViewer = nullptr;  // GLFW callbacks are plain functions
+Viewer* viewerOf(GLFWwindow* window) {
+    return static_cast<Viewer*>(glfwGetWindowUserPointer(window));
+}
 
-void onKey(GLFWwindow*, int key, int, int action, int mods) {
-    if (gViewer && (action == GLFW_PRESS || action == GLFW_REPEAT)) gViewer->press({key, mods});
+void onKey(GLFWwindow* window, int key, int, int action, int mods) {
+    Viewer* viewer = viewerOf(window);
+    if (viewer && (action == GLFW_PRESS || action == GLFW_REPEAT)) viewer->press({key, mods});
 }
 
 void onMouseButton(GLFWwindow* window, int button, int action, int) {
-    if (!gViewer || button != GLFW_MOUSE_BUTTON_LEFT || action != GLFW_PRESS) return;
+    Viewer* viewer = viewerOf(window);
+    if (!viewer || button != GLFW_MOUSE_BUTTON_LEFT || action != GLFW_PRESS) return;
     double x = 0, y = 0;
     glfwGetCursorPos(window, &x, &y);
-    gViewer->click({x, y});
+    viewer->click({x, y});
 }
+
+// Routes the window's keys and clicks to a viewer for as long as this lives. GLFW callbacks are
+// plain functions; the viewer rides in the window's user pointer, which the destructor clears
+// on every way out (return or exception).
+class InputBinding {
+public:
+    InputBinding(GLFWwindow* window, Viewer& viewer) : mWindow(window) {
+        glfwSetWindowUserPointer(window, &viewer);
+        glfwSetKeyCallback(window, onKey);
+        glfwSetMouseButtonCallback(window, onMouseButton);
+    }
+    ~InputBinding() {
+        glfwSetKeyCallback(mWindow, nullptr);
+        glfwSetMouseButtonCallback(mWindow, nullptr);
+        glfwSetWindowUserPointer(mWindow, nullptr);
+    }
+    InputBinding(const InputBinding&) = delete;
+    InputBinding& operator=(const InputBinding&) = delete;
+
+private:
+    GLFWwindow* mWindow;
+};
 
 void present(Session& session, GlfwWindowContext& window) {
     glm::ivec2 fb = window.framebufferSize();
@@ -283,6 +311,91 @@ KeyPress parseKeyName(const std::string& token) {
     return k;
 }
 
+namespace {
+
+// --bench-frames: frame time as the class sees it: compose (scene, trace, inspector), present,
+// finish. Once with the scene rendered again every frame (a key changed the method), once with
+// only the pixel moving (the scene is reused). Prints the medians.
+void benchFrames(Session& session, GlfwWindowContext& window, int frames) {
+    using Clock = std::chrono::steady_clock;
+    auto ms = [](Clock::time_point a, Clock::time_point b) {
+        return std::chrono::duration<double, std::milli>(b - a).count();
+    };
+    auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
+    struct Times {
+        double frame, compose, present;
+    };
+    auto timeFrames = [&](bool rerender) {
+        std::vector<double> frame, compose, shown;
+        for (int k = 0; k < frames; ++k) {
+            if (rerender) session.invalidateScene();
+            else session.setPixel(session.pixel() + glm::ivec2(k % 2 ? -1 : 1, 0));
+            auto start = Clock::now();
+            session.compose();
+            glFinish();
+            auto composed = Clock::now();
+            present(session, window);
+            glFinish();
+            auto end = Clock::now();
+            frame.push_back(ms(start, end));
+            compose.push_back(ms(start, composed));
+            shown.push_back(ms(composed, end));
+        }
+        return Times{median(frame), median(compose), median(shown)};
+    };
+    session.compose();  // warm-up: programs compiled, map rendered
+    Times full = timeFrames(true);
+    Times pick = timeFrames(false);
+    glm::ivec2 size = session.frameSize();
+    std::printf("view: %dx%d, %s, %d frames each, medians (glFinish + steady_clock):\n"
+                "  scene re-rendered: frame %.1f ms (compose %.1f + present %.1f)\n"
+                "  pixel moved:       frame %.1f ms (compose %.1f + present %.1f)\n",
+                size.x, size.y, std::string(methodInfo(session.settings().method).name).c_str(),
+                frames, full.frame, full.compose, full.present, pick.frame, pick.compose,
+                pick.present);
+}
+
+// --screenshot: the frame after the keys, written to `path` (staged in `outputs`).
+void writeScreenshot(Session& session, GlfwWindowContext& window, const std::string& path,
+                     OutputFiles& outputs) {
+    // Keys such as F change the window: let it settle, then compose at its size.
+    for (int k = 0; k < 10; ++k) {
+        glfwPollEvents();
+        if (window.framebufferSize() != session.frameSize()) break;
+        glfwWaitEventsTimeout(0.02);
+    }
+    glfwPollEvents();
+    session.setFrameSize(window.framebufferSize());
+    session.compose();
+    glm::ivec2 size = session.frameSize();
+    writePngRgba8(path, size.x, size.y, session.readFrame());
+    outputs.commit();
+    present(session, window);
+}
+
+// The class: a frame whenever something happens (or every 0.25 s), until Esc or the window
+// closes.
+void runInteractive(Viewer& viewer, GlfwWindowContext& window) {
+    Session& session = viewer.session();
+    while (!glfwWindowShouldClose(window.window()) && !viewer.quit()) {
+        session.setFrameSize(window.framebufferSize());
+        auto start = std::chrono::steady_clock::now();
+        session.compose();
+        glFinish();
+        double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                              start)
+                        .count();
+        present(session, window);
+        session.setFrameTimeMs(ms);
+        glfwWaitEventsTimeout(0.25);
+    }
+}
+
+}  // namespace
+
 int runViewer(const ViewerOptions& o) {
     std::vector<KeyPress> keys;
     std::istringstream tokens(o.keys);
@@ -294,91 +407,19 @@ int runViewer(const ViewerOptions& o) {
     }
     loadLessonChecked(o.lesson);  // bad lessons fail before a window opens
 
-    bool scripted = !o.screenshot.empty();
     std::unique_ptr<GlfwWindowContext> window =
         GlfwWindowContext::create(o.windowSize.x, o.windowSize.y, "pcfscope", true);
     Viewer viewer(o, *window);
-    gViewer = &viewer;
-    glfwSetKeyCallback(window->window(), onKey);
-    glfwSetMouseButtonCallback(window->window(), onMouseButton);
+    InputBinding input(window->window(), viewer);
     for (const KeyPress& k : keys) viewer.press(k);
 
-    Session& session = viewer.session();
     if (o.benchFrames > 0) {
-        // Frame time as the class sees it: compose (scene, trace, inspector), present, finish.
-        // Once with the scene rendered again every frame (a key changed the method), once with
-        // only the pixel moving (the scene is reused).
-        using Clock = std::chrono::steady_clock;
-        auto ms = [](Clock::time_point a, Clock::time_point b) {
-            return std::chrono::duration<double, std::milli>(b - a).count();
-        };
-        auto median = [](std::vector<double> v) {
-            std::sort(v.begin(), v.end());
-            return v[v.size() / 2];
-        };
-        struct Times {
-            double frame, compose, present;
-        };
-        auto timeFrames = [&](bool rerender) {
-            std::vector<double> frame, compose, shown;
-            for (int k = 0; k < o.benchFrames; ++k) {
-                if (rerender) session.invalidateScene();
-                else session.setPixel(session.pixel() + glm::ivec2(k % 2 ? -1 : 1, 0));
-                auto start = Clock::now();
-                session.compose();
-                glFinish();
-                auto composed = Clock::now();
-                present(session, *window);
-                glFinish();
-                auto end = Clock::now();
-                frame.push_back(ms(start, end));
-                compose.push_back(ms(start, composed));
-                shown.push_back(ms(composed, end));
-            }
-            return Times{median(frame), median(compose), median(shown)};
-        };
-        session.compose();  // warm-up: programs compiled, map rendered
-        Times full = timeFrames(true);
-        Times pick = timeFrames(false);
-        glm::ivec2 size = session.frameSize();
-        std::printf("view: %dx%d, %s, %d frames each, medians (glFinish + steady_clock):\n"
-                    "  scene re-rendered: frame %.1f ms (compose %.1f + present %.1f)\n"
-                    "  pixel moved:       frame %.1f ms (compose %.1f + present %.1f)\n",
-                    size.x, size.y, std::string(methodInfo(session.settings().method).name).c_str(),
-                    o.benchFrames, full.frame, full.compose, full.present, pick.frame,
-                    pick.compose, pick.present);
-        gViewer = nullptr;
-        return 0;
+        benchFrames(viewer.session(), *window, o.benchFrames);
+    } else if (!o.screenshot.empty()) {
+        writeScreenshot(viewer.session(), *window, o.screenshot, outputs);
+    } else {
+        runInteractive(viewer, *window);
     }
-    if (scripted) {
-        // Keys such as F change the window: let it settle, then compose at its size.
-        for (int k = 0; k < 10; ++k) {
-            glfwPollEvents();
-            if (window->framebufferSize() != session.frameSize()) break;
-            glfwWaitEventsTimeout(0.02);
-        }
-        glfwPollEvents();
-        session.setFrameSize(window->framebufferSize());
-        session.compose();
-        glm::ivec2 size = session.frameSize();
-        writePngRgba8(o.screenshot, size.x, size.y, session.readFrame());
-        outputs.commit();
-        present(session, *window);
-        gViewer = nullptr;
-        return 0;
-    }
-    while (!glfwWindowShouldClose(window->window()) && !viewer.quit()) {
-        session.setFrameSize(window->framebufferSize());
-        auto start = std::chrono::steady_clock::now();
-        session.compose();
-        glFinish();
-        double ms = std::chrono::duration<double, std::milli>(
-                        std::chrono::steady_clock::now() - start).count();
-        present(session, *window);
-        session.setFrameTimeMs(ms);
-        glfwWaitEventsTimeout(0.25);
-    }
-    gViewer = nullptr;
     return 0;
 }
 

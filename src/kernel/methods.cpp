@@ -4,13 +4,15 @@
 #include <cmath>
 #include <sstream>
 
+#include "kernel/settings.h"
+
 namespace pcf {
 
 namespace {
 
 constexpr std::array<MethodInfo, PCF_METHOD_COUNT> METHODS = {{
-    {PCF_NEAREST, "nearest", "the one texel under the lookup, floor(uv * size): hard edges",
-     false, false},
+    {PCF_NEAREST, "nearest", "the one texel under the lookup, floor(uv * size): hard edges", false,
+     false},
     {PCF_BOX2X2, "box2x2", "the 2x2 texels at base averaged: only 0, .25, .5, .75, 1", false,
      false},
     {PCF_BILINEAR2X2, "bilinear2x2",
@@ -26,8 +28,8 @@ constexpr std::array<MethodInfo, PCF_METHOD_COUNT> METHODS = {{
     {PCF_TENT, "tent", "Castano's N x N tent (N = 3, 5, 7) from 4, 9 or 16 hardware taps", true,
      false},
     {PCF_POISSON, "poisson",
-     "16 nearest-texel comparisons on a Poisson disk of radius R texels, optionally rotated",
-     false, true},
+     "16 nearest-texel comparisons on a Poisson disk of radius R texels, optionally rotated", false,
+     true},
 }};
 
 }  // namespace
@@ -55,21 +57,28 @@ std::string methodNameList() {
 FetchCounts fetchCounts(int method, int kernel) {
     int n = kernel;
     switch (method) {
-        case PCF_NEAREST: return {1, 0, 0};
-        case PCF_BOX2X2: return {4, 0, 0};
-        case PCF_BILINEAR2X2: return {4, 0, 0};
-        case PCF_HW2X2: return {4, 0, 1};
-        case PCF_NAIVE: return {4 * n * n, 0, 0};
+        case PCF_NEAREST:
+            return {1, 0, 0};
+        case PCF_BOX2X2:
+            return {4, 0, 0};
+        case PCF_BILINEAR2X2:
+            return {4, 0, 0};
+        case PCF_HW2X2:
+            return {4, 0, 1};
+        case PCF_NAIVE:
+            return {4 * n * n, 0, 0};
         case PCF_GATHER: {
             int blocks = (n + 2) / 2;  // ceil((N + 1) / 2) per axis
             return {4 * blocks * blocks, blocks * blocks, 0};
         }
-        case PCF_HW: return {4 * n * n, 0, n * n};
+        case PCF_HW:
+            return {4 * n * n, 0, n * n};
         case PCF_TENT: {
             int taps = n <= 3 ? 4 : n <= 5 ? 9 : 16;
             return {4 * taps, 0, taps};
         }
-        default: return {16, 0, 0};
+        default:
+            return {16, 0, 0};
     }
 }
 
@@ -100,46 +109,48 @@ std::string_view precisionName(int precision) {
     return precision == PCF_PRECISION_HW8 ? "hw8" : "exact";
 }
 
-std::optional<std::string> validateParams(const PcfParams& prm) {
-    std::ostringstream s;
+std::optional<ParamProblem> checkParams(const PcfParams& prm) {
+    auto problem = [](std::string setting, std::string before, const auto&... after) {
+        std::ostringstream s;
+        (s << ... << after);
+        return ParamProblem{std::move(setting), std::move(before), s.str()};
+    };
     if (prm.method < 0 || prm.method >= PCF_METHOD_COUNT) {
-        s << "unknown method id " << prm.method;
-        return s.str();
+        return problem("", "unknown method id ", prm.method);
     }
     const MethodInfo& info = methodInfo(prm.method);
     if (info.usesKernel && (prm.kernel < MIN_KERNEL || prm.kernel > MAX_KERNEL)) {
-        s << "--kernel " << prm.kernel << " is out of range (" << MIN_KERNEL << ".."
-          << MAX_KERNEL << ")";
-        return s.str();
+        return problem("kernel", "", " ", prm.kernel, " is out of range (", MIN_KERNEL, "..",
+                       MAX_KERNEL, ")");
     }
-    if (prm.method == PCF_TENT && prm.kernel != 3 && prm.kernel != 5 && prm.kernel != 7) {
-        s << "tent takes --kernel 3, 5 or 7, not " << prm.kernel;
-        return s.str();
+    if (!kernelFits(prm.method, prm.kernel)) {
+        return problem("kernel", "tent takes ", " ", kernelSizesText(prm.method), ", not ",
+                       prm.kernel);
     }
-    if (prm.method == PCF_POISSON && !(std::isfinite(prm.radius) && prm.radius > 0.0f &&
-                                       prm.radius <= MAX_POISSON_RADIUS)) {
-        s << "--radius " << prm.radius << " is out of range (0, " << MAX_POISSON_RADIUS
-          << "] texels";
-        return s.str();
+    if (prm.method == PCF_POISSON &&
+        !(std::isfinite(prm.radius) && prm.radius > 0.0f && prm.radius <= MAX_POISSON_RADIUS)) {
+        return problem("radius", "", " ", prm.radius, " is out of range (0, ", MAX_POISSON_RADIUS,
+                       "] texels");
     }
     if (prm.weights < PCF_WEIGHTS_BOX || prm.weights > PCF_WEIGHTS_GAUSSIAN) {
-        s << "unknown weights id " << prm.weights;
-        return s.str();
+        return problem("", "unknown weights id ", prm.weights);
     }
     if (prm.weights != PCF_WEIGHTS_BOX && prm.method != PCF_NAIVE && prm.method != PCF_GATHER) {
-        s << "--weights " << weightsName(prm.weights) << " applies to pcf-naive and pcf-gather, not "
-          << info.name;
-        return s.str();
+        return problem("weights", "", " ", weightsName(prm.weights),
+                       " applies to pcf-naive and pcf-gather, not ", info.name);
     }
     if (prm.weights == PCF_WEIGHTS_GAUSSIAN &&
         !(std::isfinite(prm.sigma) && prm.sigma > 0.0f && prm.sigma <= MAX_SIGMA)) {
-        s << "--sigma " << prm.sigma << " is out of range (0, " << MAX_SIGMA << "] texels";
-        return s.str();
+        return problem("sigma", "", " ", prm.sigma, " is out of range (0, ", MAX_SIGMA, "] texels");
     }
     if (prm.precision != PCF_PRECISION_EXACT && prm.precision != PCF_PRECISION_HW8) {
-        s << "unknown precision id " << prm.precision;
-        return s.str();
+        return problem("", "unknown precision id ", prm.precision);
     }
+    return std::nullopt;
+}
+
+std::optional<std::string> validateParams(const PcfParams& prm) {
+    if (auto p = checkParams(prm)) return p->text();
     return std::nullopt;
 }
 

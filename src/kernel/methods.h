@@ -12,11 +12,11 @@
 namespace pcf {
 
 struct MethodInfo {
-    int id;               // PCF_NEAREST .. PCF_POISSON
+    int id;                    // PCF_NEAREST .. PCF_POISSON
     std::string_view name;     // the command line's id, e.g. "pcf-gather"
     std::string_view summary;  // one line for `pcfscope methods`
-    bool usesKernel;      // takes --kernel N
-    bool usesRadius;      // takes --radius R
+    bool usesKernel;           // takes --kernel N
+    bool usesRadius;           // takes --radius R
 };
 
 std::span<const MethodInfo> allMethods();
@@ -50,8 +50,21 @@ std::optional<int> precisionFromName(std::string_view name);  // exact, hw8
 std::string_view precisionName(int precision);
 constexpr float MAX_SIGMA = 16.0f;  // texels
 
-// Why these parameters are not valid for their method ("tent takes --kernel 3, 5 or 7, not 4"),
-// or nullopt when they are.
+// Why parameters are not valid for their method, in the kernel's words: the setting at fault
+// ("kernel", "radius", "weights", "sigma"; empty for an unknown id) and a sentence that names it
+// once, between `before` and `after`. Each caller names the setting its own way: the command
+// line as a flag ("--kernel"), a lesson file as its key ("kernel").
+struct ParamProblem {
+    std::string setting;
+    std::string before;  // "tent takes "
+    std::string after;   // " 3, 5 or 7, not 4"
+    std::string say(std::string_view settingName) const {
+        return before + std::string(settingName) + after;
+    }
+    std::string text() const { return say(setting); }  // "tent takes kernel 3, 5 or 7, not 4"
+};
+std::optional<ParamProblem> checkParams(const PcfParams& prm);
+// checkParams's sentence in the kernel's words, or nullopt when the parameters are valid.
 std::optional<std::string> validateParams(const PcfParams& prm);
 
 }  // namespace pcf

@@ -1,6 +1,9 @@
 // trace.h: everything one PCF lookup did, in order, for the inspector, `pcfscope trace` and the
 // lessons. Built by running the shared kernel over a recording map (see pcf.h): the numbers
 // shown are the numbers computed, never a second derivation of them.
+//
+// Three files, one job each: this one records (traceLookup), trace_explain.h words the record
+// as steps in English, trace_json.h writes it as JSON or as the text `pcfscope trace` prints.
 #pragma once
 
 #include <string>
@@ -22,8 +25,33 @@ struct WeightGrid {
     float at(ivec2 texel) const;
 };
 
+// What a step explains. Consumers (the inspector, lessons, tests) switch on the kind, never on
+// the English title, which may be reworded. trace_explain.h names each kind (title, JSON id).
+enum class TraceStepKind {
+    Project,              // the pixel's uv, z and what the bias did to ref
+    PerTapRef,            // receiver-plane bias: every tap's own ref
+    TexelPosition,        // p = uv * size - 0.5, base and frac
+    ReadTexel,            // nearest: the one texel
+    CompareTexels,        // the 2x2 texels, each compared with ref
+    HardwareTap,          // hw2x2: the one hardware comparison tap
+    AverageBits,          // box2x2: the bits averaged
+    Lerp,                 // bilinear: the bits lerped by the sub-texel fraction
+    KernelLookups,        // pcf-naive: the N x N bilinear lookups
+    KernelHardwareTaps,   // pcf-hw: the N x N hardware taps
+    CountReads,           // pcf-naive / pcf-hw: reads against distinct texels
+    WeightTable,          // pcf-gather: the footprint's weight table
+    Gather,               // pcf-gather: the comparison gathers
+    TentTaps,             // tent: where its taps sit and what they weigh
+    TentHardwareTaps,     // tent: the taps taken
+    DiskPoints,           // poisson: the disk's points
+    InterpolatedCompare,  // interpolated depth: one comparison against the lerped depth
+    Precision,            // hw8: the texture unit's 1/256 texel steps
+    Result,               // the visibility: the last step (box2x2 ends with AverageBits)
+};
+
 struct TraceStep {
-    std::string title;
+    TraceStepKind kind;
+    std::string title;  // stepTitle(kind), for readers; never matched on
     std::string text;
 };
 
@@ -36,12 +64,15 @@ struct Trace {
     // The bias mode and its parameters (dzduv: the receiver plane used). Each tap's own ref
     // (TapRecord::ref) differs from `ref` under receiver-plane bias.
     BiasParams bias{};
-    PcfTexelPos pos{};  // GL bilinear position of uv: p, base, frac
-    std::vector<TapRecord> taps;        // one per texel read, in read order, duplicates kept
-    std::vector<FetchRecord> fetches;   // one per fetch instruction, in issue order
+    PcfTexelPos pos{};                 // GL bilinear position of uv: p, base, frac
+    std::vector<TapRecord> taps;       // one per texel read, in read order, duplicates kept
+    std::vector<FetchRecord> fetches;  // one per fetch instruction, in issue order
     WeightGrid weights;
     FetchCounts counts{};
     float visibility = 1.0f;  // what the kernel returned
+    // The footprint the method floors, as the kernel computed it (never derived again here):
+    // pcf-gather: pcfKernelFootprint (origin, g); tent: pcfTentBase (b, (s, t)). Zero otherwise.
+    PcfFootprint footprint{ivec2(0), vec2(0.0f)};
     std::vector<TraceStep> steps;
     // The texture unit's precision (issue 10): the lookup's sub-texel fraction as a float and
     // rounded to 1/256 texel (hw8), and the visibility the kernel gives under each model.
@@ -52,7 +83,8 @@ struct Trace {
     bool fixedPoint = false;  // the map is 16/24-bit: D_ref clamped to [0,1]
 };
 
-// Runs the kernel at (uv, ref) with recording on and explains it step by step. z is the
+// Runs the kernel at (uv, ref) with recording on and explains it step by step (explainTrace in
+// trace_explain.h fills `steps`). z is the
 // receiver's depth before bias (shown to the student; the kernel only sees ref).
 // Without a mode: bias "none" when ref == z, else "constant" with b = z - ref.
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm);
@@ -68,17 +100,5 @@ int tapsChangedByPlane(const Trace& trace);
 
 // Sum of weight * lit over the taps: equals visibility up to float rounding.
 float weightedTapSum(const Trace& trace);
-
-// DESIGN.md section 4's object, one line of JSON.
-std::string traceToJson(const Trace& trace);
-
-// The step-through as a student reads it, with the texel neighbourhood as a table.
-std::string traceToText(const Trace& trace);
-
-// s as a JSON string literal, quotes and escapes included.
-std::string jsonQuote(const std::string& s);
-
-// A number as the steps print it: up to 4 decimals, trailing zeros trimmed ("0.8", "0.0711").
-std::string formatNumber(float value);
 
 }  // namespace pcf

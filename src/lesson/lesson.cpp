@@ -327,8 +327,9 @@ class LessonParser {
         }
         if (const toml::node* n = table.get("radius")) {
             double r = number(*n, name("radius"));
-            if (!(r > 0.0 && r <= 64.0)) {
-                fail(*n, name("radius") + " must be in (0, 64] texels, got " + formatValue(r));
+            if (!(r > 0.0 && r <= MAX_POISSON_RADIUS)) {
+                fail(*n, name("radius") + " must be in (0, " + formatValue(MAX_POISSON_RADIUS) +
+                             "] texels, got " + formatValue(r));
             }
             s.radius = static_cast<float>(r);
         }
@@ -391,16 +392,17 @@ class LessonParser {
         biasParam("rpdb_max", s.rpdbMax);
         if (const toml::node* n = table.get("cull")) {
             std::string cull = string(*n, name("cull"));
-            if (cull != "back" && cull != "front" && cull != "none") {
-                fail(*n, "unknown cull mode '" + cull + "' (known: back, front, none)");
+            if (!cullModeFromName(cull)) {
+                fail(*n, "unknown cull mode '" + cull + "' (known: " +
+                             std::string(CULL_MODE_NAMES) + ")");
             }
             s.cull = cull;
         }
         if (const toml::node* n = table.get("map_size")) {
             int64_t size = integer(*n, name("map_size"));
-            if (size < LESSON_MIN_MAP_SIZE || size > LESSON_MAX_MAP_SIZE) {
-                fail(*n, name("map_size") + " must be " + std::to_string(LESSON_MIN_MAP_SIZE) +
-                             ".." + std::to_string(LESSON_MAX_MAP_SIZE) + ", got " +
+            if (size < MIN_MAP_SIZE || size > MAX_MAP_SIZE) {
+                fail(*n, name("map_size") + " must be " + std::to_string(MIN_MAP_SIZE) +
+                             ".." + std::to_string(MAX_MAP_SIZE) + ", got " +
                              std::to_string(size));
             }
             s.mapSize = static_cast<int>(size);
@@ -411,8 +413,11 @@ class LessonParser {
                              " must be a string (\"16\", \"24\" or \"32f\"), got " + typeName(*n));
             }
             std::string format = n->as_string()->get();
-            if (format != "16" && format != "24" && format != "32f") {
-                fail(*n, "unknown depth format '" + format + "' (known: 16, 24, 32f)");
+            // The lesson's canonical names only (depthFormatFromName also reads "32").
+            std::optional<DepthFormat> f = depthFormatFromName(format);
+            if (!f || depthFormatName(*f) != format) {
+                fail(*n, "unknown depth format '" + format + "' (known: " +
+                             std::string(DEPTH_FORMAT_NAMES) + ")");
             }
             s.depthFormat = format;
         }
@@ -472,13 +477,9 @@ class LessonParser {
         PcfParams prm = makeParams(s.method, s.kernel, s.radius);
         prm.weights = s.weights;
         prm.sigma = s.sigma;
-        std::optional<std::string> problem = validateParams(prm);
+        std::optional<ParamProblem> problem = checkParams(prm);
         if (!problem) return;
-        // validateParams speaks in command-line options ("--kernel 4"); a lesson has keys.
-        std::string text = *problem;
-        for (size_t at = text.find("--"); at != std::string::npos; at = text.find("--")) {
-            text.erase(at, 2);
-        }
+        std::string text = problem->text();  // the kernel's words are the lesson's keys
         int line = std::max(lines.method, lines.kernel);
         if (line <= 0) line = lineOf(step);
         throw InputError(mSource, line, what + ": " + text);

@@ -68,6 +68,7 @@
 
 #include "kernel/bias.h"
 #include "kernel/pcf.h"
+#include "kernel/settings.h"
 #include "scene/input_error.h"
 #include "scene/scene.h"
 
@@ -76,14 +77,8 @@ namespace pcf {
 // Picked pixels are given in this frame and scaled to the frame actually rendered.
 constexpr glm::ivec2 LESSON_FRAME_SIZE{1280, 720};
 
-// The lesson's own copy of the map size range (render_settings.h has the same numbers, but the
-// lesson library must not depend on the renderer).
-constexpr int LESSON_MIN_MAP_SIZE = 4;
-constexpr int LESSON_MAX_MAP_SIZE = 4096;
-
-// The renderer's state at one step, fully resolved. Bias, cull and depth format stay validated
-// strings (the names render_settings.h parses) so that this library needs nothing from the
-// renderer; the method is its kernel id (PCF_NEAREST .. PCF_POISSON).
+// The renderer's state at one step, fully resolved. Bias, cull and depth format are validated
+// names (kernel/settings.h parses them); the method is its kernel id (PCF_NEAREST ..).
 struct LessonSettings {
     int method = PCF_GATHER;
     int kernel = 3;

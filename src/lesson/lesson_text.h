@@ -65,7 +65,7 @@
 #include <string_view>
 #include <vector>
 
-#include "kernel/trace.h"
+#include "kernel/trace_explain.h"
 #include "lesson/lesson.h"
 
 namespace pcf {

@@ -54,7 +54,7 @@ std::string formulaText(const Trace& tr) {
     for (size_t k = 0; k < tr.steps.size(); ++k) {
         const TraceStep& s = tr.steps[k];
         bool last = k + 1 == tr.steps.size();
-        if (last || s.title.find("Lerp") != std::string::npos) {
+        if (last || s.kind == TraceStepKind::Lerp) {
             if (!out.empty()) out += "\n";
             out += s.text;
         }

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "overlay/inspector.h"
+#include "kernel/trace_explain.h"
 #include "overlay/text_layout.h"
 
 namespace pcf::inspector_detail {

@@ -1,4 +1,5 @@
-// render_settings.h: what one frame of the scene is rendered with.
+// render_settings.h: what one frame of the scene is rendered with. The names and ranges of its
+// settings live GL-free in kernel/settings.h.
 #pragma once
 
 #include <epoxy/gl.h>
@@ -8,19 +9,10 @@
 #include <string>
 #include <string_view>
 
-#include "kernel/bias.h"
 #include "kernel/pcf.h"
+#include "kernel/settings.h"  // the vocabulary: depth formats, bias and cull modes, ranges
 
 namespace pcf {
-
-enum class DepthFormat { D16, D24, D32F };
-// The bias modes, in the kernel's order (the value is PCF_BIAS_NONE ..: src/kernel/bias.h).
-enum class BiasMode { None, Constant, Slope, Normal, ReceiverPlane, Soft, Interpolated };
-enum class CullMode { Back, Front, None };
-
-constexpr int MIN_MAP_SIZE = 4;
-constexpr int MAX_MAP_SIZE = 4096;
-constexpr int MAX_FRAME_SIDE = 8192;
 
 struct RenderSettings {
     int method = PCF_GATHER;
@@ -55,13 +47,5 @@ struct RenderSettings {
 };
 
 GLenum glDepthFormat(DepthFormat format);
-std::string_view depthFormatName(DepthFormat format);  // "16", "24", "32f"
-int depthFormatFixedPointBits(DepthFormat format);     // 16, 24, or 0 for 32F
-std::optional<DepthFormat> depthFormatFromName(std::string_view name);
-// "none", "constant", "slope", ...: the names of kernel/bias.h, the one table of them.
-std::string_view biasModeName(BiasMode mode);
-std::optional<BiasMode> biasModeFromName(std::string_view name);
-std::string_view cullModeName(CullMode mode);  // "back", "front", "none"
-std::optional<CullMode> cullModeFromName(std::string_view name);
 
 }  // namespace pcf

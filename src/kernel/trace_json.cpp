@@ -1,0 +1,208 @@
+// trace_json.cpp: a trace written as JSON and as text (trace_json.h).
+#include "kernel/trace_json.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+#include "kernel/trace_explain.h"
+
+namespace pcf {
+
+namespace {
+
+std::string num(float v) { return formatNumber(v); }
+std::string pair(vec2 v) { return "(" + num(v.x) + ", " + num(v.y) + ")"; }
+// A comparison's result: the bit, or the soft comparison's fraction.
+std::string bit(float lit) {
+    if (lit == 0.0f || lit == 1.0f) return lit >= 0.5f ? "1" : "0";
+    return formatNumber(lit);
+}
+
+const char* fetchKindName(int kind) {
+    switch (kind) {
+        case PCF_FETCH_POINT:
+            return "texel";
+        case PCF_FETCH_LOOKUP:
+            return "bilinear";
+        case PCF_FETCH_GATHER:
+            return "gather";
+        default:
+            return "hw";
+    }
+}
+
+}  // namespace
+
+Json jsonNumber(float v) {
+    if (!std::isfinite(v)) return nullptr;
+    if (v == std::trunc(v) && std::fabs(v) < 1e9f) return static_cast<std::int64_t>(v);
+    return v;
+}
+
+Json jsonPair(vec2 v) { return Json::array({jsonNumber(v.x), jsonNumber(v.y)}); }
+Json jsonPair(ivec2 v) { return Json::array({v.x, v.y}); }
+
+std::string jsonDump(const Json& j) {
+    return j.dump(-1, ' ', false, nlohmann::detail::error_handler_t::replace);
+}
+
+namespace {
+
+// Receiver-plane bias: where each tap's own ref is taken.
+const char* perTapName(const Trace& tr) {
+    if (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE) return "none";
+    switch (tr.params.method) {
+        case PCF_GATHER:
+            return "per gather, at its centre";
+        case PCF_HW2X2:
+        case PCF_HW:
+        case PCF_TENT:
+            return "per hardware tap, at its uv";
+        default:
+            return "per texel, at its centre";
+    }
+}
+
+}  // namespace
+
+Json traceJson(const Trace& tr) {
+    Json bias = {{"mode", biasName(tr.bias.mode)},
+                 {"constant", jsonNumber(tr.bias.constant)},
+                 {"slope", jsonNumber(tr.bias.slope)},
+                 {"slope_max", jsonNumber(tr.bias.slopeMax)},
+                 {"normal_offset", jsonNumber(tr.bias.normalOffset)},
+                 {"soft_scale", jsonNumber(tr.bias.softScale)},
+                 {"dzduv", jsonPair(tr.bias.dzduv)},
+                 {"rpdb_max", jsonNumber(tr.bias.rpdbMax)},
+                 {"dzduv_used", jsonPair(tr.bias.mode == PCF_BIAS_RECEIVER_PLANE
+                                             ? pcfClampDzDuv(tr.bias.dzduv, tr.bias.rpdbMax)
+                                             : tr.bias.dzduv)},
+                 {"per_tap", perTapName(tr)}};
+    Json taps = Json::array();
+    for (const TapRecord& t : tr.taps) {
+        // A comparison bit as 0 or 1; the soft comparison's fraction as a number.
+        Json lit = t.lit == 0.0f || t.lit == 1.0f ? Json(t.lit >= 0.5f ? 1 : 0) : jsonNumber(t.lit);
+        taps.push_back({{"texel", jsonPair(t.texel)},
+                        {"depth", jsonNumber(t.depth)},
+                        {"ref", jsonNumber(t.ref)},
+                        {"ref_shift", jsonNumber(t.ref - tr.ref)},
+                        {"lit", lit},
+                        {"weight", jsonNumber(t.weight)},
+                        {"fetch", t.fetch},
+                        {"clamped", t.clamped}});
+    }
+    Json fetches = Json::array();
+    for (const FetchRecord& f : tr.fetches) {
+        fetches.push_back({{"kind", fetchKindName(f.kind)},
+                           {"uv", jsonPair(f.uv)},
+                           {"weight", jsonNumber(f.weight)}});
+    }
+    Json weights = Json::array();
+    for (float w : tr.weights.values) weights.push_back(jsonNumber(w));
+    Json steps = Json::array();
+    for (const TraceStep& s : tr.steps) {
+        steps.push_back({{"kind", stepKindName(s.kind)}, {"title", s.title}, {"text", s.text}});
+    }
+    return {{"method", methodInfo(tr.params.method).name},
+            {"kernel", tr.params.kernel},
+            {"radius", jsonNumber(tr.params.radius)},
+            {"map_size", jsonPair(tr.mapSize)},
+            {"uv", jsonPair(tr.uv)},
+            {"z", jsonNumber(tr.z)},
+            {"ref", jsonNumber(tr.ref)},
+            {"bias", bias},
+            {"texel", jsonPair(tr.pos.p)},
+            {"base", jsonPair(tr.pos.base)},
+            {"frac", jsonPair(tr.pos.frac)},
+            {"taps", taps},
+            {"fetch_list", fetches},
+            {"weights",
+             {{"origin", jsonPair(tr.weights.origin)},
+              {"size", jsonPair(tr.weights.size)},
+              {"values", weights}}},
+            {"fetches",
+             {{"texels", tr.counts.texels},
+              {"gathers", tr.counts.gathers},
+              {"hw_taps", tr.counts.hwTaps}}},
+            {"visibility", jsonNumber(tr.visibility)},
+            {"weights_kind", weightsName(tr.params.weights)},
+            {"sigma", jsonNumber(tr.params.sigma)},
+            {"precision", precisionName(tr.params.precision)},
+            {"fixed_point", tr.fixedPoint},
+            {"texture_unit",
+             {{"frac_exact", jsonPair(tr.pos.frac)},
+              {"frac_hw8", jsonPair(tr.fracHw8)},
+              {"visibility_exact", jsonNumber(tr.visibilityExact)},
+              {"visibility_hw8", jsonNumber(tr.visibilityHw8)}}},
+            {"steps", steps}};
+}
+
+std::string traceToJson(const Trace& tr) { return jsonDump(traceJson(tr)); }
+
+std::string traceToText(const Trace& tr) {
+    std::ostringstream s;
+    const MethodInfo& info = methodInfo(tr.params.method);
+    s << "pcfscope trace: " << info.name;
+    if (info.usesKernel) s << ", N = " << tr.params.kernel;
+    if (info.usesRadius) s << ", radius " << num(tr.params.radius) << " texels";
+    s << "  (" << info.summary << ")\n\n";
+    for (size_t k = 0; k < tr.steps.size(); ++k) {
+        s << k + 1 << ". " << tr.steps[k].title << "\n   ";
+        for (char c : tr.steps[k].text) {
+            s << c;
+            if (c == '\n') s << "   ";
+        }
+        s << "\n\n";
+    }
+    // The neighbourhood as a table: depth, bit and merged weight per texel, rows as stored.
+    s << "Texels read (depth / bit / weight), row j down, column i across:\n";
+    const WeightGrid& g = tr.weights;
+    bool anyClamped = false;
+    s << "        ";
+    for (int i = 0; i < g.size.x; ++i) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, " %-18s", ("i=" + std::to_string(g.origin.x + i)).c_str());
+        s << buf;
+    }
+    s << "\n";
+    for (int j = 0; j < g.size.y; ++j) {
+        char rowLabel[16];
+        std::snprintf(rowLabel, sizeof rowLabel, "  j=%-4d", g.origin.y + j);
+        s << rowLabel;
+        for (int i = 0; i < g.size.x; ++i) {
+            ivec2 texel = g.origin + ivec2(i, j);
+            const TapRecord* tap = nullptr;
+            for (const TapRecord& t : tr.taps) {
+                if (t.texel == texel) {
+                    tap = &t;
+                    break;
+                }
+            }
+            bool clamped = false;
+            for (const TapRecord& t : tr.taps) clamped = clamped || (t.texel == texel && t.clamped);
+            anyClamped = anyClamped || clamped;
+            std::string cell = tap ? num(tap->depth) + " / " + bit(tap->lit) + " / " +
+                                         num(g.at(texel)) + (clamped ? " *" : "")
+                                   : "-";
+            char buf[40];
+            std::snprintf(buf, sizeof buf, " %-18s", cell.c_str());
+            s << buf;
+        }
+        s << "\n";
+    }
+    if (anyClamped) s << "* also read for texels outside the map, clamped to the edge\n";
+    s << "\nfetches: " << tr.counts.texels << " texel reads, " << tr.counts.gathers << " gathers, "
+      << tr.counts.hwTaps << " hardware taps\n";
+    s << "visibility = " << num(tr.visibility) << "\n";
+    if (tr.usesTextureUnit) {
+        s << "texture unit: frac " << pair(tr.pos.frac) << " -> visibility "
+          << num(tr.visibilityExact) << " (exact); frac " << pair(tr.fracHw8) << " -> visibility "
+          << num(tr.visibilityHw8) << " (hw8, 1/256 texel)\n";
+    }
+    return s.str();
+}
+
+}  // namespace pcf

@@ -1,0 +1,38 @@
+// trace_json.h: a trace (trace.h) written out: DESIGN.md section 4's JSON object, and the text
+// `pcfscope trace` prints.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "kernel/trace.h"
+
+namespace pcf {
+
+// JSON values are built with nlohmann-json: keys kept in the order written, and numbers held as
+// float (the kernel's type), so they print as the shortest decimal that reads back as the same
+// float ("0.499", not the double's "0.499000013").
+using Json = nlohmann::basic_json<nlohmann::ordered_map, std::vector, std::string, bool,
+                                  std::int64_t, std::uint64_t, float>;
+
+// A float as a JSON number: shortest round-trip digits, an integral value as an integer ("1",
+// not "1.0"); NaN and infinities as null.
+Json jsonNumber(float v);
+Json jsonPair(vec2 v);
+Json jsonPair(ivec2 v);
+
+// One line, no spaces; bytes that are not UTF-8 become U+FFFD instead of throwing.
+std::string jsonDump(const Json& j);
+
+// DESIGN.md section 4's object.
+Json traceJson(const Trace& trace);
+
+// traceJson as one line of JSON.
+std::string traceToJson(const Trace& trace);
+
+// The step-through as a student reads it, with the texel neighbourhood as a table.
+std::string traceToText(const Trace& trace);
+
+}  // namespace pcf
