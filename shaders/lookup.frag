@@ -1,12 +1,13 @@
 // lookup.frag: pcfFilter on arbitrary lookups, one per pixel: the GPU half of the parity tests
 // on synthetic maps. Lookup (u, v, ref) comes from a float texture, so the CPU can run the very
-// same inputs. see: src/render/gpu_lookup.cpp
+// same inputs. The bias mode is a define, PCF_LOOKUP_BIAS, as in scene.frag and for the same
+// reason: llvmpipe runs every side of a branch on a uniform, so the kernel's per-tap bias
+// branches would cost their bodies in every mode. see: src/render/gpu_lookup.cpp
 uniform sampler2D uPcfDepth;
 uniform sampler2D uLookups;  // RGBA32F: u, v, ref, unused
 uniform sampler2D uPlanes;   // RG32F: dz/du, dz/dv of each lookup (receiver-plane bias)
 uniform float uRadius;
 uniform int uRotatePerPixel;
-uniform int uBiasMode;       // PCF_BIAS_* (the per-tap part: receiver plane, soft, interpolated)
 uniform float uSoftScale;
 uniform float uRpdbMax;      // receiver-plane: cap on dz/duv, depth per uv unit
 uniform int uWeights;  // PCF_WEIGHTS_* for pcf-naive and pcf-gather
@@ -20,7 +21,8 @@ void main() {
     vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(pixel) : vec2(1.0f, 0.0f);
     vec4 plane = texelFetch(uPlanes, pixel, 0);
     vec2 uv = vec2(lookup.x, lookup.y);
-    PcfRef ref = PcfRef(lookup.z, uv, PcfBias(uBiasMode, vec2(plane.x, plane.y), uSoftScale, uRpdbMax));
+    PcfRef ref =
+        PcfRef(lookup.z, uv, PcfBias(PCF_LOOKUP_BIAS, vec2(plane.x, plane.y), uSoftScale, uRpdbMax));
     oVisibility = pcfFilterRef(uPcfDepth, uv, ref,
                                PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights, uSigma));
 }

@@ -3,7 +3,11 @@
 // the kernel before this file). PCF_METHOD and PCF_KERNEL arrive as defines, so the driver
 // folds the method dispatch and unrolls the kernel loops. PCF_ALL_TARGETS adds outputs: 0 colour
 // only (timing), 1 + light-space, visibility and receiver (the inspector), 2 + world position
-// (tests, --raw).
+// (tests, --raw). The bias mode (PCF_SCENE_BIAS) and the light type (PCF_SCENE_SPOT) are
+// defines too, one program each: llvmpipe runs both sides of every branch under a lane mask,
+// even when the condition is a uniform, so a branch on a uniform costs its whole body on every
+// fragment. As uniforms, the bias modes' branches here and in the kernel's taps made the camera
+// pass cost about a third more than the filter alone (README, "What the camera pass costs").
 // see: src/render/scene_renderer.cpp (uniforms, targets), src/kernel/pcf.h (CPU side)
 in vec3 vPosWs;
 in vec3 vNormalWs;
@@ -12,11 +16,9 @@ uniform sampler2D uPcfDepth;          // the shadow map, texelFetch side (pcf_pr
 uniform mat4 uShadowClipFromWorld;    // light clip space from world
 uniform vec3 uAlbedoEncoded;          // pow(linear colour of this object, 1 / 2.2)
 uniform int uReceives;                // 1: look the shadow map up; 0: never shadowed
-uniform int uLightType;               // 0 directional, 1 spot
 uniform vec3 uLightDirWs;             // the direction the light travels (unit)
 uniform vec3 uLightPosWs;             // spot only
 uniform float uSpotCosCone;           // spot only: cos of the cone's half angle
-uniform int uBiasMode;                // PCF_BIAS_NONE .. (shared/pcf_kernel.h)
 uniform float uConstantBias;          // subtracted from z by every mode but none (0 for none)
 uniform float uSlopeBias;             // slope: s in min(b + s * tan(theta), max)
 uniform float uSlopeMax;              // slope: max
@@ -40,13 +42,15 @@ layout(location = 4) out vec4 oPosWs;       // world position, w = 1 where drawn
 #endif
 
 const float AMBIENT = 0.25f;
+const int BIAS_MODE = PCF_SCENE_BIAS;  // PCF_BIAS_NONE .. (shared/pcf_kernel.h)
+const bool SPOT = PCF_SCENE_SPOT != 0;  // false: directional
 
 void main() {
     // Directional: a constant direction and no cone. Only a spot pays for the normalize and
-    // the cone test (a branch every fragment of the draw takes alike).
+    // the cone test.
     vec3 toLight = -uLightDirWs;
     float cone = 1.0f;
-    if (uLightType == 1) {
+    if (SPOT) {
         toLight = normalize(uLightPosWs - vPosWs);
         cone = dot(-toLight, uLightDirWs) >= uSpotCosCone ? 1.0f : 0.0f;
     }
@@ -60,12 +64,14 @@ void main() {
     // Normal offset: the point moves along its normal before it is projected
     // (pcfNormalOffsetDistance: Holbert 2011, Castano 2013). The texel's world size grows with
     // clip.w under a spot light's perspective and is constant under a directional light's.
-    vec3 posLookupWs = vPosWs;
-    if (uBiasMode == PCF_BIAS_NORMAL) {
-        posLookupWs = vPosWs + n * pcfNormalOffsetDistance(dot(n, toLight), uNormalOffset,
-                                                           uShadowTexelWs * clip0.w);
+    // Every other mode looks up where the point is: the projection already made for z0 (the
+    // very same product), not a second one.
+    vec4 clip = clip0;
+    if (BIAS_MODE == PCF_BIAS_NORMAL) {
+        vec3 posLookupWs = vPosWs + n * pcfNormalOffsetDistance(dot(n, toLight), uNormalOffset,
+                                                                uShadowTexelWs * clip0.w);
+        clip = uShadowClipFromWorld * vec4(posLookupWs, 1.0f);
     }
-    vec4 clip = uShadowClipFromWorld * vec4(posLookupWs, 1.0f);
     vec3 ndc = clip.xyz / clip.w;
     float u = ndc.x * 0.5f + 0.5f;
     float v = ndc.y * 0.5f + 0.5f;
@@ -73,20 +79,24 @@ void main() {
     // The per-lookup bias: constant for every mode but none (uConstantBias is 0 there), slope
     // scaled by tan(theta) and capped for slope (pcfSlopeBias).
     float bias = uConstantBias;
-    if (uBiasMode == PCF_BIAS_SLOPE) {
+    if (BIAS_MODE == PCF_BIAS_SLOPE) {
         bias = pcfSlopeBias(dot(n, toLight), uConstantBias, uSlopeBias, uSlopeMax);
     }
     float ref = z - bias;
     // The receiver's plane in the map, from this pixel's screen-space derivatives (Isidoro 2006,
-    // pcfReceiverPlaneDzDuv); written out so the CPU kernel uses the very same slope. The kernel
+    // pcfReceiverPlaneDzDuv); written out so the CPU kernel uses the very same slope. Only
+    // receiver-plane bias filters with it, so a colour-only pass in another mode skips it. The kernel
     // caps it (pcfClampDzDuv, uRpdbMax): the target holds the slope as measured.
-    vec2 dzduv = pcfReceiverPlaneDzDuv(dFdx(vec3(u, v, z)), dFdy(vec3(u, v, z)));
+    vec2 dzduv = vec2(0.0f);
+    if (PCF_ALL_TARGETS != 0 || BIAS_MODE == PCF_BIAS_RECEIVER_PLANE) {
+        dzduv = pcfReceiverPlaneDzDuv(dFdx(vec3(u, v, z)), dFdy(vec3(u, v, z)));
+    }
 
     float visibility = 1.0f;
     if (uReceives != 0) {
         vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(ivec2(gl_FragCoord.xy))
                                              : vec2(1.0f, 0.0f);
-        PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(uBiasMode, dzduv, uSoftScale, uRpdbMax));
+        PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(BIAS_MODE, dzduv, uSoftScale, uRpdbMax));
         visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef,
                                   PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights,
                                             uSigma));

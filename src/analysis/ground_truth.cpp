@@ -1,6 +1,7 @@
 #include "analysis/ground_truth.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -192,11 +193,13 @@ Refined refinePixel(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel
                     const FirstPass& first, float target) {
     auto line = [&](double v) { return scanline(scene, rays, pixel, first.object, v); };
     // FIRST_PANELS panels over v in [0,1]: 2 * FIRST_PANELS + 1 scanlines.
-    std::vector<Scanline> start(2 * FIRST_PANELS + 1);
+    std::array<Scanline, 2 * FIRST_PANELS + 1> start;
     for (int r = 0; r <= 2 * FIRST_PANELS; ++r) {
         start[r] = line(static_cast<double>(r) / (2 * FIRST_PANELS));
     }
-    std::vector<Panel> panels;
+    // One list per thread, reused pixel after pixel (no allocation per refined pixel).
+    thread_local std::vector<Panel> panels;
+    panels.clear();
     for (int k = 0; k < FIRST_PANELS; ++k) {
         panels.push_back(makePanel(static_cast<double>(k) / FIRST_PANELS,
                                    static_cast<double>(k + 1) / FIRST_PANELS, start[2 * k],

@@ -1,15 +1,13 @@
 #include "render/gpu_lookup.h"
 
 #include <stdexcept>
+#include <string>
 
 #include "render/depth_readback.h"
 
 namespace pcf {
 
-GpuLookup::GpuLookup()
-    : mPrograms("fullscreen.vert", "lookup.frag"),
-      mSamplers(createPcfSamplers()),
-      mEmptyVao(createVertexArray()) {}
+GpuLookup::GpuLookup() : mSamplers(createPcfSamplers()), mEmptyVao(createVertexArray()) {}
 
 std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec4> lookups,
                                   int width, const PcfParams& prm, bool rotatePerPixel) {
@@ -65,7 +63,13 @@ void GpuLookup::setLookups(std::span<const glm::vec4> lookups, int width,
 
 void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& bias) {
     if (!mDepth || !mInput) throw std::logic_error("GpuLookup::draw before setMap and setLookups");
-    GLuint program = mPrograms.get(prm.method, prm.kernel);
+    auto programs = mPrograms.find(bias.mode);
+    if (programs == mPrograms.end()) {
+        std::string defines = "#define PCF_LOOKUP_BIAS " + std::to_string(bias.mode) + "\n";
+        programs =
+            mPrograms.try_emplace(bias.mode, "fullscreen.vert", "lookup.frag", defines).first;
+    }
+    GLuint program = programs->second.get(prm.method, prm.kernel);
     glUseProgram(program);
     bindShadowMap(program, mDepth.id(), mSamplers);
     glBindTextureUnit(2, mInput.id());
@@ -74,7 +78,6 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
     glBindTextureUnit(3, mPlanes.id());
     glBindSampler(3, mSamplers.nearest.id());
     glProgramUniform1i(program, glGetUniformLocation(program, "uPlanes"), 3);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uBiasMode"), bias.mode);
     glProgramUniform1f(program, glGetUniformLocation(program, "uSoftScale"), bias.softScale);
     glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.dzduvMax);
     glProgramUniform1f(program, glGetUniformLocation(program, "uRadius"), prm.radius);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <map>
 #include <span>
 #include <vector>
 
@@ -54,7 +55,8 @@ class GpuLookup {
   private:
     ShadowMap mStored;
     bool mFixedPoint = false;
-    PcfProgramCache mPrograms;
+    // By bias mode (lookup.frag takes it as a define, PCF_LOOKUP_BIAS), made on first use.
+    std::map<int, PcfProgramCache> mPrograms;
     PcfSamplers mSamplers;
     GlVertexArray mEmptyVao;
     GlTexture mDepth;

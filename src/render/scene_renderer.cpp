@@ -1,9 +1,10 @@
 #include "render/scene_renderer.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
+#include <string>
 
 #include "kernel/methods.h"
 #include "render/depth_readback.h"
@@ -24,9 +25,6 @@ GLint uniform(GLuint program, const char* name) { return glGetUniformLocation(pr
 SceneRenderer::SceneRenderer(const Scene& scene)
     : mScene(scene),
       mShadowClipFromWorld(pcf::shadowClipFromWorld(scene)),
-      mScenePrograms("scene.vert", "scene.frag", "#define PCF_ALL_TARGETS 1\n"),
-      mTimingPrograms("scene.vert", "scene.frag", "#define PCF_ALL_TARGETS 0\n"),
-      mPositionPrograms("scene.vert", "scene.frag", "#define PCF_ALL_TARGETS 2\n"),
       mSamplers(createPcfSamplers()) {
     mDepthProgram = buildProgram({
         ShaderStage{GL_VERTEX_SHADER, {"depth.vert"}, "", {}},
@@ -140,10 +138,23 @@ void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
 
 void SceneRenderer::renderCameraPass(const RenderSettings& settings) {
     ensureTargets(settings);
-    drawCameraPass(settings, settings.writePositions ? mPositionPrograms : mScenePrograms, mFrame);
+    drawCameraPass(settings, settings.writePositions ? 2 : 1, mFrame);
 }
 
-void SceneRenderer::drawCameraPass(const RenderSettings& settings, PcfProgramCache& programs,
+PcfProgramCache& SceneRenderer::programsFor(int targets, int biasMode) {
+    int spot = mScene.light.type == LightType::Spot ? 1 : 0;
+    auto key = std::make_tuple(targets, biasMode, spot);
+    auto it = mPrograms.find(key);
+    if (it == mPrograms.end()) {
+        std::string defines = "#define PCF_ALL_TARGETS " + std::to_string(targets) +
+                              "\n#define PCF_SCENE_BIAS " + std::to_string(biasMode) +
+                              "\n#define PCF_SCENE_SPOT " + std::to_string(spot) + "\n";
+        it = mPrograms.try_emplace(key, "scene.vert", "scene.frag", defines).first;
+    }
+    return it->second;
+}
+
+void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
                                    const OffscreenTarget& target) {
     GLuint fbo = target.framebuffer.id();
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -164,7 +175,8 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, PcfProgramCac
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
 
-    GLuint program = programs.get(settings.method, settings.kernel);
+    BiasParams bias = settings.biasParams();
+    GLuint program = programsFor(targets, bias.mode).get(settings.method, settings.kernel);
     glUseProgram(program);
     glm::mat4 clip = clipFromWorld();
     glProgramUniformMatrix4fv(program, uniform(program, "uClipFromWorld"), 1, GL_FALSE,
@@ -173,14 +185,10 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, PcfProgramCac
                               &mShadowClipFromWorld[0][0]);
     const Light& light = mScene.light;
     glm::vec3 dir = glm::normalize(light.directionWs);
-    glProgramUniform1i(program, uniform(program, "uLightType"),
-                       light.type == LightType::Spot ? 1 : 0);
     glProgramUniform3fv(program, uniform(program, "uLightDirWs"), 1, &dir.x);
     glProgramUniform3fv(program, uniform(program, "uLightPosWs"), 1, &light.positionWs.x);
     glProgramUniform1f(program, uniform(program, "uSpotCosCone"),
                        std::cos(glm::radians(light.coneDeg)));
-    BiasParams bias = settings.biasParams();
-    glProgramUniform1i(program, uniform(program, "uBiasMode"), bias.mode);
     glProgramUniform1f(program, uniform(program, "uConstantBias"), bias.baseBias());
     glProgramUniform1f(program, uniform(program, "uSlopeBias"), bias.slope);
     glProgramUniform1f(program, uniform(program, "uSlopeMax"), bias.slopeMax);
@@ -218,11 +226,10 @@ TimingResult SceneRenderer::timeCameraPass(const RenderSettings& settings, int r
                                            bool warmUp) {
     ensureTargets(settings);
     if (mTimingFrame.width != mFrame.width || mTimingFrame.height != mFrame.height) {
-        mTimingFrame = createOffscreenTarget(mFrame.width, mFrame.height, {GL_RGBA8},
-                                             GL_DEPTH_COMPONENT24);
+        mTimingFrame =
+            createOffscreenTarget(mFrame.width, mFrame.height, {GL_RGBA8}, GL_DEPTH_COMPONENT24);
     }
-    return timeGpu([&] { drawCameraPass(settings, mTimingPrograms, mTimingFrame); }, repeats,
-                   warmUp);
+    return timeGpu([&] { drawCameraPass(settings, 0, mTimingFrame); }, repeats, warmUp);
 }
 
 std::vector<uint8_t> SceneRenderer::readColour() const {

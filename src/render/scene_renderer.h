@@ -11,9 +11,10 @@
 // GL row order (ShadowMap's convention).
 #pragma once
 
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <map>
+#include <tuple>
+#include <vector>
 
 #include "kernel/shadow_map.h"
 #include "render/gl_objects.h"
@@ -25,7 +26,7 @@
 namespace pcf {
 
 class SceneRenderer {
-public:
+  public:
     // Uploads the scene's meshes. Needs a current OpenGL 4.5 context, which must outlive this.
     explicit SceneRenderer(const Scene& scene);
 
@@ -41,10 +42,10 @@ public:
     // warmUp false: no untimed draw first (the caller warmed up and samples one at a time).
     TimingResult timeCameraPass(const RenderSettings& settings, int repeats, bool warmUp = true);
 
-    std::vector<uint8_t> readColour() const;     // RGBA8, top-down
-    std::vector<float> readLightSpace() const;   // 4 floats per pixel, top-down
-    std::vector<float> readVisibility() const;   // 1 float per pixel, top-down
-    std::vector<float> readReceiver() const;     // 4 floats per pixel, top-down
+    std::vector<uint8_t> readColour() const;    // RGBA8, top-down
+    std::vector<float> readLightSpace() const;  // 4 floats per pixel, top-down
+    std::vector<float> readVisibility() const;  // 1 float per pixel, top-down
+    std::vector<float> readReceiver() const;    // 4 floats per pixel, top-down
     // 4 floats per pixel, top-down; needs a frame rendered with writePositions.
     std::vector<float> readPositions() const;
     // The light-space target's pixels x..x+w-1, y..y+h-1 (top-left origin), clipped to the
@@ -52,7 +53,7 @@ public:
     std::vector<float> readLightSpaceRegion(glm::ivec2 topLeft, glm::ivec2 size) const;
     // The receiver target's pixels, the same way.
     std::vector<float> readReceiverRegion(glm::ivec2 topLeft, glm::ivec2 size) const;
-    ShadowMap readShadowMap() const;             // GL row order
+    ShadowMap readShadowMap() const;  // GL row order
 
     glm::ivec2 frameSize() const { return {mFrame.width, mFrame.height}; }
     GLuint frameFramebuffer() const { return mFrame.framebuffer.id(); }
@@ -67,7 +68,7 @@ public:
     void setCamera(const Camera& camera);
     void setShadowClipFromWorld(const glm::mat4& shadowClipFromWorld);
 
-private:
+  private:
     struct GpuMesh {
         GlVertexArray vao;
         GlBuffer vertices;
@@ -77,17 +78,19 @@ private:
     void ensureTargets(const RenderSettings& settings);
     std::vector<float> readRegion(GLenum attachment, glm::ivec2 topLeft, glm::ivec2 size) const;
     void drawObjects(GLuint program, bool castersOnly, bool setMaterial);
-    // The camera pass into `target` with a program from `programs`.
-    void drawCameraPass(const RenderSettings& settings, PcfProgramCache& programs,
-                        const OffscreenTarget& target);
+    // The camera pass into `target`, writing `targets` (scene.frag's PCF_ALL_TARGETS: 0 colour
+    // only, 1 the four targets, 2 and the world position).
+    void drawCameraPass(const RenderSettings& settings, int targets, const OffscreenTarget& target);
+    // The programs for these targets, this bias mode and the scene's light type (scene.frag
+    // takes all three as defines), made on first use.
+    PcfProgramCache& programsFor(int targets, int biasMode);
 
     Scene mScene;
     glm::mat4 mShadowClipFromWorld{1.0f};
     std::vector<GpuMesh> mMeshes;
     GlProgram mDepthProgram;
-    PcfProgramCache mScenePrograms;   // all four targets
-    PcfProgramCache mTimingPrograms;  // colour only
-    PcfProgramCache mPositionPrograms;  // all targets and the world position
+    // By (targets, bias mode, spot light): one PcfProgramCache per combination used.
+    std::map<std::tuple<int, int, int>, PcfProgramCache> mPrograms;
     PcfSamplers mSamplers;
     OffscreenTarget mShadow;
     DepthFormat mShadowFormat = DepthFormat::D32F;

@@ -1,6 +1,8 @@
 #include "scene/primitives.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace pcf {
 
@@ -42,11 +44,21 @@ std::optional<Plane> makePlane(glm::vec3 centreWs, glm::vec3 normalWs, glm::vec2
 }
 
 BoxAxes boxAxes(const Box& box) {
-    // glm::rotate(angle, Y) maps x to (cos, 0, -sin) and z to (sin, 0, cos).
-    double a = glm::radians(static_cast<double>(box.rotateYDeg));
-    double c = std::cos(a);
-    double s = std::sin(a);
-    return {glm::dvec3(c, 0.0, -s), glm::dvec3(s, 0.0, c)};
+    // Every ray against a box asks for these (the ground truth casts millions), and a scene's
+    // boxes mostly share one angle: the last angle's cos and sin are kept per thread, so the
+    // same angle gives the very same axes without another sincos.
+    // Compared bit for bit, so -0 and NaN are angles of their own.
+    thread_local uint32_t lastBits = std::bit_cast<uint32_t>(0.0f);
+    thread_local double lastCos = 1.0;
+    thread_local double lastSin = 0.0;
+    if (std::bit_cast<uint32_t>(box.rotateYDeg) != lastBits) {
+        // glm::rotate(angle, Y) maps x to (cos, 0, -sin) and z to (sin, 0, cos).
+        double a = glm::radians(static_cast<double>(box.rotateYDeg));
+        lastCos = std::cos(a);
+        lastSin = std::sin(a);
+        lastBits = std::bit_cast<uint32_t>(box.rotateYDeg);
+    }
+    return {glm::dvec3(lastCos, 0.0, -lastSin), glm::dvec3(lastSin, 0.0, lastCos)};
 }
 
 glm::vec3 boxWorldFromLocal(const Box& box, glm::vec3 posLocal) {
