@@ -111,7 +111,7 @@ TEST(Conformance, EnvelopeUnderEveryBiasModeHoldsTheKernelsResult) {
                 for (int k = 0; k < 300; ++k) {
                     vec2 uv(u(rng), u(rng));
                     float ref = 0.25f + u(rng);
-                    PcfBias b(mode, vec2(slope(rng), slope(rng)), 40.0f);
+                    PcfBias b(mode, vec2(slope(rng), slope(rng)), 40.0f, PCF_DZDUV_UNCLAMPED);
                     VisibilityEnvelope env = visibilityEnvelope(map, uv, ref, prm, b);
                     float v = filterVisibility(map, uv, ref, prm, b);
                     EXPECT_TRUE(env.contains(v))
@@ -130,9 +130,9 @@ TEST(Conformance, EnvelopeUnderEveryBiasModeHoldsTheKernelsResult) {
     vec2 uv((3.5f + 0.5f) / 8.0f, 0.5f);
     PcfParams prm = makeParams(PCF_BILINEAR2X2);
     VisibilityEnvelope flat =
-        visibilityEnvelope(edge, uv, 0.5f, prm, PcfBias(PCF_BIAS_RECEIVER_PLANE, vec2(0.0f), 0));
+        visibilityEnvelope(edge, uv, 0.5f, prm, PcfBias(PCF_BIAS_RECEIVER_PLANE, vec2(0.0f), 0, PCF_DZDUV_UNCLAMPED));
     VisibilityEnvelope steep = visibilityEnvelope(
-        edge, uv, 0.5f, prm, PcfBias(PCF_BIAS_RECEIVER_PLANE, vec2(0.5f, 0.0f), 0));
+        edge, uv, 0.5f, prm, PcfBias(PCF_BIAS_RECEIVER_PLANE, vec2(0.5f, 0.0f), 0, PCF_DZDUV_UNCLAMPED));
     EXPECT_NEAR(flat.lo, 1.0f, 1e-6f);   // ref 0.5 < every depth
     EXPECT_NEAR(steep.hi, 0.5f, 1e-6f);  // the right column's ref 0.5 + 0.5/8 > 0.53
 }
