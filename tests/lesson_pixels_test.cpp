@@ -238,19 +238,24 @@ const std::map<std::string, Claims>& lessonClaims() {
         // The lesson's pixel is on the ground in the penumbra of the box's shadow (it once sat on
         // the box's front face): filtered steps land between 0 and 1 there, nearest ones on one
         // bit, and every step's pixel shows the ground.
+        // The nearest steps on the 256 map (as is, slid, slid and snapped) read a texel whose
+        // borders are clear of the lookup point.
         {"13-shimmer-and-snapping",
          {{penumbra(), onGround()},
           {{"0 or 1",
             [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }},
-           onGround()},
+           onGround(),
+           insideTexel()},
           {penumbra(), onGround()},
           // nearest with the grid slid, snapped, and under the heat map: one bit
           {{"0 or 1",
             [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }},
-           onGround()},
+           onGround(),
+           insideTexel()},
           {{"0 or 1",
             [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }},
-           onGround()},
+           onGround(),
+           insideTexel()},
           {{"0 or 1",
             [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }},
            onGround()}}},
