@@ -1,6 +1,7 @@
 // Text layout: UTF-8, measuring, whole-pixel placement and word wrap.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "overlay/text_layout.h"
@@ -142,6 +143,89 @@ TEST(TextLayout, WrapSplitsAWordWiderThanTheLine) {
 
 TEST(TextLayout, WrapOfEmptyTextIsOneEmptyLine) {
     EXPECT_EQ(wrapText(FontFace::Sans, 16.0f, "", 100.0f), std::vector<std::string>{""});
+}
+
+// `code spans` in prose: the backticks go, the text between them is a monospace span with its
+// spaces kept; a backtick with no partner is text.
+TEST(TextLayout, CodeSpansDropTheirBackticksAndKeepTheirSpaces) {
+    SpanLine spans = splitCodeSpans("set `origin_shift  =  0.25` now");
+    ASSERT_EQ(spans.size(), 3u);
+    EXPECT_EQ(spans[0].text, "set ");
+    EXPECT_FALSE(spans[0].mono);
+    EXPECT_EQ(spans[1].text, "origin_shift  =  0.25");
+    EXPECT_TRUE(spans[1].mono);
+    EXPECT_EQ(spans[2].text, " now");
+    EXPECT_FALSE(spans[2].mono);
+    SpanLine odd = splitCodeSpans("a `b` c ` d");
+    ASSERT_EQ(odd.size(), 3u);
+    EXPECT_EQ(odd[2].text, " c ` d");
+    EXPECT_FALSE(odd[2].mono);
+    // Wrapped, the span keeps both double spaces (prose runs of spaces still collapse).
+    std::vector<SpanLine> lines =
+        wrapSpans(FontFace::Sans, 16.0f, "set   `origin_shift  =  0.25`   now", 1000.0f);
+    ASSERT_EQ(lines.size(), 1u);
+    ASSERT_EQ(lines[0].size(), 3u);
+    EXPECT_EQ(lines[0][0].text, "set ");
+    EXPECT_EQ(lines[0][1].text, "origin_shift  =  0.25");
+    EXPECT_TRUE(lines[0][1].mono);
+    EXPECT_EQ(lines[0][2].text, " now");
+}
+
+// A span is measured in the monospace face: the line's width is the prose in Sans plus the span in
+// Mono, and a width that holds that sum (but not one pixel less) keeps it on one line.
+TEST(TextLayout, CodeSpansAreMeasuredInMonospace) {
+    const float px = 18.0f;
+    const std::string text = "Press `origin_shift = 0.25` now";
+    float sans =
+        measureText(FontFace::Sans, px, "Press ").x + measureText(FontFace::Sans, px, " now").x;
+    float mono = measureText(FontFace::Mono, px, "origin_shift = 0.25").x;
+    EXPECT_NE(mono, measureText(FontFace::Sans, px, "origin_shift = 0.25").x);
+    std::vector<SpanLine> one = wrapSpans(FontFace::Sans, px, text, sans + mono);
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_FLOAT_EQ(spanLineWidth(FontFace::Sans, px, one[0]), sans + mono);
+    std::vector<SpanLine> two = wrapSpans(FontFace::Sans, px, text, sans + mono - 1.0f);
+    ASSERT_EQ(two.size(), 2u);
+    // The break is at the space after the span, not inside it.
+    ASSERT_EQ(two[0].size(), 2u);
+    EXPECT_EQ(two[0][1].text, "origin_shift = 0.25");
+    EXPECT_EQ(two[1], (SpanLine{{"now", false}}));
+}
+
+// Whatever the width, a span is never broken across lines (while it fits a line alone), every
+// line keeps the width promise, and no backtick is left in the text.
+TEST(TextLayout, WrapNeverBreaksACodeSpan) {
+    const float px = 16.0f;
+    const std::string text =
+        "Now the grid has moved: `origin_shift = 0.25` slides it a quarter texel, and "
+        "(`snap = true`, the S key) snaps it back; `pcfscope stability` measures both.";
+    const std::vector<std::string> codes = {"origin_shift = 0.25", "snap = true",
+                                            "pcfscope stability"};
+    float widest = 0.0f;
+    for (const std::string& c : codes)
+        widest = std::max(widest, measureText(FontFace::Mono, px, c).x);
+    for (float width = widest + 12.0f; width < 900.0f; width += 7.0f) {
+        bool split = false;
+        std::vector<SpanLine> lines = wrapSpans(FontFace::Sans, px, text, width, &split);
+        EXPECT_FALSE(split) << width;
+        std::vector<std::string> seen;
+        std::string joined;
+        for (const SpanLine& line : lines) {
+            EXPECT_LE(spanLineWidth(FontFace::Sans, px, line), width);
+            for (const TextSpan& sp : line) {
+                EXPECT_EQ(sp.text.find('`'), std::string::npos) << sp.text;
+                if (sp.mono) seen.push_back(sp.text);
+                joined += sp.text;
+            }
+            joined += ' ';
+        }
+        EXPECT_EQ(seen, codes) << width;
+        EXPECT_NE(joined.find("(snap = true,"), std::string::npos) << joined;
+    }
+    // A span wider than the whole line is split (said so), and the width promise still holds.
+    bool split = false;
+    std::vector<SpanLine> narrow = wrapSpans(FontFace::Sans, px, text, 60.0f, &split);
+    EXPECT_TRUE(split);
+    for (const SpanLine& line : narrow) EXPECT_LE(spanLineWidth(FontFace::Sans, px, line), 60.0f);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -335,6 +336,32 @@ TEST_F(Layout, TableRowsKeepTheirColumnsInMonospace) {
             EXPECT_GE(b.rect.w + 0.5f, rowW);
         }
     }
+}
+
+// A `code span` in the step text is set in monospace without its backticks: the one-line block is
+// as wide as its prose in Sans plus its span in Mono.
+TEST_F(Layout, CodeSpansInStepTextAreMonospaceWithoutBackticks) {
+    InspectorModel m;
+    m.trace = syntheticTrace();
+    m.stepTitles = {"Span"};
+    m.stepText = "Set `origin_shift = 0.25` now.";
+    InspectorLayout l = inspectorLayout({1600, 900}, false);
+    m.sceneSize = glm::ivec2(l.scene.size());
+    FramePlan plan = planFrame(l, m);
+    bool found = false;
+    for (const LayoutBox& b : plan.boxes) {
+        if (b.role != "step-text") continue;
+        found = true;
+        float px = b.fontPx;
+        float expected = measureText(FontFace::Sans, px, "Set ").x +
+                         measureText(FontFace::Mono, px, "origin_shift = 0.25").x +
+                         measureText(FontFace::Sans, px, " now.").x;
+        EXPECT_NEAR(b.rect.w, expected, 1.0f);
+        EXPECT_GT(std::fabs(b.rect.w - measureText(FontFace::Sans, px, m.stepText).x), 2.0f);
+        EXPECT_FALSE(b.shortened);
+    }
+    EXPECT_TRUE(found);
+    EXPECT_TRUE(problems(plan, l).empty());
 }
 
 // A title of 200,000 characters is laid out in linear time (it once took minutes: wrapping

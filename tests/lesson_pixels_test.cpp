@@ -235,19 +235,30 @@ const std::map<std::string, Claims>& lessonClaims() {
                 return t.visibility < 1.0f && t.taps[2].depth < t.taps[2].ref &&
                        t.counts.gathers > 0;
             }}}}},
-        // Lesson 11's state: the chart steps keep the pixel in the penumbra.
+        // The lesson's pixel is on the ground in the penumbra of the box's shadow (it once sat on
+        // the box's front face): filtered steps land between 0 and 1 there, nearest ones on one
+        // bit, and every step's pixel shows the ground.
+        // The nearest steps on the 256 map (as is, slid, slid and snapped) read a texel whose
+        // borders are clear of the lookup point.
         {"13-shimmer-and-snapping",
-         {{penumbra()},
+         {{penumbra(), onGround()},
           {{"0 or 1",
-            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }}},
-          {penumbra()},
+            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }},
+           onGround(),
+           insideTexel()},
+          {penumbra(), onGround()},
           // nearest with the grid slid, snapped, and under the heat map: one bit
           {{"0 or 1",
-            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }}},
+            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }},
+           onGround(),
+           insideTexel()},
           {{"0 or 1",
-            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }}},
+            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }},
+           onGround(),
+           insideTexel()},
           {{"0 or 1",
-            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }}}}},
+            [](const Trace& t) { return t.visibility == 0.0f || t.visibility == 1.0f; }},
+           onGround()}}},
         {"14-bias-trade-off",
          {{{"faint acne", [](const Trace& t) { return t.visibility > 0.5f && t.visibility < 1.0f; }}},
           {{"faint acne", [](const Trace& t) { return t.visibility > 0.5f && t.visibility < 1.0f; }}},

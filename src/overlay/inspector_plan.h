@@ -112,6 +112,8 @@ struct Planner {
 struct FitLine {
     std::string text;
     bool mono = false;  // a preformatted line: monospace, spaces kept, never rewrapped
+    SpanLine spans;     // a prose line's pieces: prose and `code spans` (monospace); text is
+                        // their concatenation, without the backticks
 };
 
 struct FittedText {

@@ -92,8 +92,20 @@ std::vector<FitLine> wrapBlock(std::string_view text, FontFace face, float size,
     std::string prose;  // consecutive prose lines form one paragraph source ('\n' kept)
     auto flushProse = [&]() {
         if (prose.empty()) return;
-        for (std::string& l : wrapText(face, size, prose, width))
-            out.push_back({std::move(l), false});
+        if (face == FontFace::Mono) {
+            for (std::string& l : wrapText(face, size, prose, width))
+                out.push_back({std::move(l), false, {}});
+        } else {
+            // Prose with `code spans`: a span is set in monospace and kept on one line; one
+            // that had to be broken (wider than the box) asks for smaller type first.
+            bool spanSplit = false;
+            for (SpanLine& l : wrapSpans(face, size, prose, width, &spanSplit)) {
+                std::string plain;
+                for (const TextSpan& sp : l) plain += sp.text;
+                out.push_back({std::move(plain), false, std::move(l)});
+            }
+            tooWide |= spanSplit;
+        }
         prose.clear();
     };
     while (true) {
@@ -120,18 +132,18 @@ std::vector<FitLine> wrapBlock(std::string_view text, FontFace face, float size,
                     wrapText(FontFace::Mono, size, row.substr(indent),
                              std::max(8.0f * size * 0.6f, width - leadW));
                 for (size_t k = 0; k < parts.size(); ++k) {
-                    out.push_back({(k == 0 ? lead : lead + "  ") + parts[k], true});
+                    out.push_back({(k == 0 ? lead : lead + "  ") + parts[k], true, {}});
                 }
                 if (end == std::string_view::npos) break;
                 start = end + 1;
                 continue;
             }
-            out.push_back({row, true});
+            out.push_back({row, true, {}});
         } else {
             if (line.empty()) {
                 // A paragraph gap: one empty line.
                 flushProse();
-                if (!out.empty() && !out.back().text.empty()) out.push_back({"", false});
+                if (!out.empty() && !out.back().text.empty()) out.push_back({"", false, {}});
             } else {
                 if (!prose.empty()) prose += '\n';
                 prose += std::string(line);
@@ -144,7 +156,7 @@ std::vector<FitLine> wrapBlock(std::string_view text, FontFace face, float size,
     // Leading and trailing empty lines take room and say nothing.
     while (!out.empty() && out.back().text.empty()) out.pop_back();
     while (!out.empty() && out.front().text.empty()) out.erase(out.begin());
-    if (out.empty()) out.push_back({"", false});
+    if (out.empty()) out.push_back({"", false, {}});
     return out;
 }
 
@@ -191,7 +203,24 @@ float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, 
     float widest = 0.0f;
     for (size_t k = first; k < last; ++k) {
         const FitLine& line = f.lines[k];
-        if (!line.text.empty()) {
+        bool mixed = std::any_of(line.spans.begin(), line.spans.end(),
+                                 [](const TextSpan& sp) { return sp.mono; });
+        if (mixed) {
+            // Each piece in its own face, one after the other on a shared baseline: the
+            // monospace pieces are moved down by the difference of the two ascenders.
+            float ascender = fontMetrics(face, f.size).ascender;
+            float x = std::round(area.x);
+            for (const TextSpan& sp : line.spans) {
+                FontFace sf = sp.mono ? FontFace::Mono : face;
+                float dy = std::round(ascender - fontMetrics(sf, f.size).ascender);
+                TextStyle st{sf, f.size, sp.mono ? MONO_TEXT : colour};
+                glm::vec2 at{std::round(x), std::round(y) + dy};
+                std::string s = sp.text;
+                pl.op([=](Canvas& cv) { cv.text(at, s, st); });
+                x += measureText(sf, f.size, s).x;
+            }
+            widest = std::max(widest, x - std::round(area.x));
+        } else if (!line.text.empty()) {
             FontFace lf = line.mono ? FontFace::Mono : face;
             TextStyle st{lf, f.size, line.mono ? MONO_TEXT : colour};
             glm::vec2 at{std::round(area.x), std::round(y)};

@@ -270,6 +270,221 @@ std::vector<std::string> wrapText(FontFace face, float pixelSize, std::string_vi
     return wrapText(glyphAtlas(face, pixelSize), utf8, maxWidth);
 }
 
+SpanLine splitCodeSpans(std::string_view utf8) {
+    SpanLine out;
+    auto add = [&](std::string_view text, bool mono) {
+        if (!text.empty()) out.push_back({std::string(text), mono});
+    };
+    size_t prose = 0;  // start of the prose not yet added
+    size_t i = 0;
+    while (i < utf8.size()) {
+        size_t open = utf8.find('`', i);
+        if (open == std::string_view::npos) break;
+        size_t close = utf8.find('`', open + 1);
+        if (close == std::string_view::npos) break;  // no partner: the backtick is text
+        add(utf8.substr(prose, open - prose), false);
+        add(utf8.substr(open + 1, close - open - 1), true);
+        prose = i = close + 1;
+    }
+    add(utf8.substr(prose), false);
+    return out;
+}
+
+float spanLineWidth(FontFace face, float pixelSize, const SpanLine& line) {
+    float w = 0.0f;
+    for (const TextSpan& span : line) {
+        w += lineWidth(glyphAtlas(span.mono ? FontFace::Mono : face, pixelSize), span.text);
+    }
+    return w;
+}
+
+namespace {
+
+// A piece of a unit (the text between two breakable spaces) with its measured run.
+struct MeasuredSpan {
+    std::string text;
+    bool mono = false;
+    Run run;
+};
+
+// A line being filled: the width of its finished spans plus the run of its last (open) span, so
+// that appending is exact (kerning inside a face, none across faces) without re-measuring.
+struct LineState {
+    SpanLine spans;
+    float closed = 0.0f;
+    Run open;
+    bool openMono = false;
+    float width() const { return closed + open.width; }
+};
+
+struct SpanWrapper {
+    GlyphAtlas& prose;
+    GlyphAtlas& mono;
+    float maxWidth;
+    std::vector<SpanLine>& lines;
+    bool* spanSplit;
+    Run space;
+
+    GlyphAtlas& atlas(bool m) { return m ? mono : prose; }
+
+    // The state after appending a span (text added only when `commit`).
+    void append(LineState& st, const MeasuredSpan& sp) {
+        if (!st.spans.empty() && st.openMono == sp.mono) {
+            st.open = join(atlas(sp.mono), st.open, sp.run);
+            st.spans.back().text += sp.text;
+            return;
+        }
+        st.closed += st.open.width;
+        st.open = sp.run;
+        st.openMono = sp.mono;
+        st.spans.push_back({sp.text, sp.mono});
+    }
+    float widthWith(const LineState& st, const std::vector<MeasuredSpan>& unit, bool gap) {
+        float closed = st.closed;
+        Run open = st.open;
+        bool openMono = st.openMono;
+        bool empty = st.spans.empty();
+        auto add = [&](const Run& r, bool m) {
+            if (!empty && openMono == m) {
+                open = join(atlas(m), open, r);
+            } else {
+                closed += empty ? 0.0f : open.width;
+                open = r;
+                openMono = m;
+            }
+            empty = false;
+        };
+        if (gap && !empty) add(space, false);
+        for (const MeasuredSpan& sp : unit) add(sp.run, sp.mono);
+        return closed + open.width;
+    }
+    void finish(LineState& st) {
+        if (!st.spans.empty()) lines.push_back(std::move(st.spans));
+        st = {};
+    }
+    // A unit wider than the line alone: split between characters, span by span.
+    void splitUnit(LineState& st, const std::vector<MeasuredSpan>& unit) {
+        for (const MeasuredSpan& sp : unit) {
+            bool broke = false;
+            for (size_t i = 0; i < sp.text.size();) {
+                size_t start = i;
+                decodeOne(sp.text, i);
+                MeasuredSpan c{sp.text.substr(start, i - start), sp.mono, {}};
+                c.run = measureRun(atlas(sp.mono), c.text);
+                if (!st.spans.empty() && widthWith(st, {c}, false) > maxWidth) {
+                    finish(st);
+                    broke |= start > 0;
+                }
+                append(st, c);
+            }
+            if (broke && sp.mono && spanSplit) *spanSplit = true;
+        }
+    }
+    void paragraph(std::string_view text) {
+        // Units: the text between breakable spaces (spaces outside code spans); a code span
+        // belongs to the unit of the prose it touches.
+        std::vector<std::vector<MeasuredSpan>> units;
+        std::vector<bool> operators;  // a unit that is a lone operator word
+        bool unitOpen = false;
+        auto piece = [&](std::string_view s, bool m) {
+            if (s.empty()) return;
+            if (!unitOpen) {
+                units.emplace_back();
+                unitOpen = true;
+            }
+            auto& u = units.back();
+            if (!u.empty() && u.back().mono == m) {
+                u.back().text += s;
+            } else {
+                u.push_back({std::string(s), m, {}});
+            }
+        };
+        for (const TextSpan& span : splitCodeSpans(text)) {
+            if (span.mono) {
+                piece(span.text, true);
+                continue;
+            }
+            std::string_view p = span.text;
+            size_t i = 0;
+            while (i < p.size()) {
+                if (p[i] == ' ' || p[i] == '\t') {
+                    unitOpen = false;
+                    ++i;
+                    continue;
+                }
+                size_t end = i;
+                while (end < p.size() && p[end] != ' ' && p[end] != '\t') ++end;
+                piece(p.substr(i, end - i), false);
+                i = end;
+            }
+        }
+        for (auto& u : units) {
+            for (MeasuredSpan& sp : u) sp.run = measureRun(atlas(sp.mono), sp.text);
+            operators.push_back(u.size() == 1 && !u[0].mono && isOperator(u[0].text));
+        }
+        // Operators glue their neighbours as in wrapText: "1 - g" is one unit.
+        std::vector<std::vector<MeasuredSpan>> glued;
+        bool glueNext = false;
+        bool lastAlone = false;
+        for (size_t k = 0; k < units.size(); ++k) {
+            bool op = operators[k];
+            bool glue = !glued.empty() && (glueNext || (op && lastAlone));
+            lastAlone = !glue;
+            if (glue) {
+                glued.back().push_back({" ", false, space});
+                for (MeasuredSpan& sp : units[k]) glued.back().push_back(std::move(sp));
+            } else {
+                glued.push_back(std::move(units[k]));
+            }
+            glueNext = op;
+        }
+        LineState st;
+        for (const auto& unit : glued) {
+            if (widthWith(st, unit, true) <= maxWidth) {
+                if (!st.spans.empty()) append(st, {" ", false, space});
+                for (const MeasuredSpan& sp : unit) append(st, sp);
+                continue;
+            }
+            finish(st);
+            if (widthWith(st, unit, false) <= maxWidth) {
+                for (const MeasuredSpan& sp : unit) append(st, sp);
+            } else {
+                splitUnit(st, unit);
+            }
+        }
+        // An empty paragraph is an empty line (a paragraph gap), as in wrapText.
+        if (st.spans.empty()) {
+            lines.emplace_back();
+        } else {
+            finish(st);
+        }
+    }
+};
+
+}  // namespace
+
+std::vector<SpanLine> wrapSpans(FontFace face, float pixelSize, std::string_view utf8,
+                                float maxWidth, bool* spanSplit) {
+    std::vector<SpanLine> lines;
+    SpanWrapper w{glyphAtlas(face, pixelSize),
+                  glyphAtlas(FontFace::Mono, pixelSize),
+                  maxWidth,
+                  lines,
+                  spanSplit,
+                  {}};
+    w.space = measureRun(w.prose, " ");
+    size_t start = 0;
+    while (true) {
+        size_t end = utf8.find('\n', start);
+        std::string_view paragraph = utf8.substr(start, end - start);
+        if (!paragraph.empty() && paragraph.back() == '\r') paragraph.remove_suffix(1);
+        w.paragraph(paragraph);
+        if (end == std::string_view::npos) break;
+        start = end + 1;
+    }
+    return lines;
+}
+
 std::string elideText(FontFace face, float pixelSize, std::string_view utf8, float maxWidth) {
     GlyphAtlas& atlas = glyphAtlas(face, pixelSize);
     if (lineWidth(atlas, utf8) <= maxWidth) return std::string(utf8);

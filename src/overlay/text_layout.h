@@ -50,10 +50,38 @@ FontMetrics fontMetrics(FontFace face, float pixelSize);
 // it alone is wider). Lines carry no leading or trailing spaces. A lone operator word ("-", "+",
 // "=", "*", "/", "x", "<=", ...) stays on the line of the word after it, and of the word before
 // it when that word is not already part of such a group: "1 - g" never breaks, and a long sum
-// breaks before a "+". Linear in the text's length (widths of joined runs are added, not re-measured).
+// breaks before a "+". Linear in the text's length (widths of joined runs are added, not
+// re-measured).
 std::vector<std::string> wrapText(FontFace face, float pixelSize, std::string_view utf8,
                                   float maxWidth);
 std::vector<std::string> wrapText(GlyphAtlas& atlas, std::string_view utf8, float maxWidth);
+
+// A run of text in one face: prose (the block's own face) or a `code span` (monospace).
+struct TextSpan {
+    std::string text;
+    bool mono = false;
+    bool operator==(const TextSpan&) const = default;
+};
+using SpanLine = std::vector<TextSpan>;
+
+// Splits one line of prose at its `code spans`: the text between a pair of backticks becomes a
+// monospace span with every space kept and the backticks dropped; a backtick with no partner on
+// the line stays as text. Adjacent pieces alternate between prose and code; empty pieces are left
+// out ("``" is nothing).
+SpanLine splitCodeSpans(std::string_view utf8);
+
+// wrapText for prose with `code spans`: prose words are measured in `face`, each code span in the
+// monospace face and kept whole on one line, glued to the prose it touches without a space
+// ("(`snap = true`," is one unit). Lines carry no leading or trailing prose spaces; within a line
+// same-face neighbours are merged, so spanLineWidth is the width the canvas draws. A unit wider
+// than maxWidth alone is split between characters (then *spanSplit, when given, is set if that
+// broke a code span), so the width promise still holds. Linear in the text's length.
+std::vector<SpanLine> wrapSpans(FontFace face, float pixelSize, std::string_view utf8,
+                                float maxWidth, bool* spanSplit = nullptr);
+
+// The width of a wrapped line: each span measured in its face (prose in `face`), no kerning
+// across a change of face (the canvas draws each span on its own).
+float spanLineWidth(FontFace face, float pixelSize, const SpanLine& line);
 
 // One line of at most maxWidth: the text itself when it fits, else as much of it as fits
 // followed by "...".
