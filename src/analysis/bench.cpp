@@ -181,6 +181,19 @@ std::vector<glm::vec4> glRowLookups(const std::vector<float>& lightSpace, glm::i
     return lookups;
 }
 
+// The receiver target's dz/du, dz/dv (top-down), the renderer's own receiver plane per pixel, in
+// the lookup pass's GL row order: the bare pass repeats a per-tap bias exactly as the frame did.
+std::vector<glm::vec2> glRowDzDuv(const std::vector<float>& receiver, glm::ivec2 size) {
+    std::vector<glm::vec2> planes(static_cast<size_t>(size.x) * size.y);
+    for (int y = 0; y < size.y; ++y) {
+        const float* src = receiver.data() + static_cast<size_t>(size.y - 1 - y) * size.x * 4;
+        for (int x = 0; x < size.x; ++x) {
+            planes[static_cast<size_t>(y) * size.x + x] = glm::vec2(src[4 * x], src[4 * x + 1]);
+        }
+    }
+    return planes;
+}
+
 // The run order: map size outer (each map rendered and read once), then the report order.
 std::vector<size_t> runOrder(const std::vector<BenchPoint>& points, const BenchOptions& options) {
     std::vector<size_t> order(points.size());
@@ -241,7 +254,8 @@ class BenchRun {
         std::vector<float> lightSpace = mRenderer.readLightSpace();
         mRegions = errorRegions(mTruth, receiverMaskFromLightSpace(lightSpace));
         mCpuLookups = receiverLookups(lightSpace, static_cast<size_t>(mOptions.cpuLookups));
-        mLookupPass.setLookups(glRowLookups(lightSpace, mOptions.frameSize), mOptions.frameSize.x);
+        mLookupPass.setLookups(glRowLookups(lightSpace, mOptions.frameSize), mOptions.frameSize.x,
+                               glRowDzDuv(mRenderer.readReceiver(), mOptions.frameSize));
     }
 
     void measurePoint(BenchRow& row, const BenchPoint& p) {
@@ -265,7 +279,7 @@ class BenchRun {
         row.shimmer = measureShimmer(s);
         // One untimed draw of each timed pass: compiles its programs before the rounds.
         row.timer = mRenderer.timeCameraPass(s, 1).timer;
-        mLookupPass.draw(s.pcfParams(), s.rotatePerPixel);
+        mLookupPass.draw(s.pcfParams(), s.rotatePerPixel, s.biasParams().kernelBias());
         glFinish();
         row.cpuNsPerPixel = timeCpuKernel(map(mMaps, p.mapSize), mCpuLookups, s.pcfParams(),
                                           mOptions.cpuPasses, mOptions.cpuThreads)
@@ -340,8 +354,9 @@ class BenchRun {
                 }
                 sceneSamples[k].push_back(mRenderer.timeCameraPass(s, 1, false).samplesMs.front());
                 PcfParams prm = s.pcfParams();
+                PcfBias bias = s.biasParams().kernelBias();
                 lookupSamples[k].push_back(
-                    timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel); }, 1, false)
+                    timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel, bias); }, 1, false)
                         .samplesMs.front());
             }
         }
