@@ -36,10 +36,10 @@ RenderSettings renderSettings(const LessonSettings& s, glm::ivec2 frameSize) {
     r.radius = s.radius;
     r.rotatePerPixel = s.rotate;
     r.mapSize = s.mapSize;
-    r.depthFormat = depthFormatFromName(s.depthFormat).value();
-    r.bias = biasModeFromName(s.bias).value();
+    r.depthFormat = s.depthFormat;
+    r.bias = s.bias;
     r.constantBias = s.constantBias;
-    r.shadowCull = cullModeFromName(s.cull).value();
+    r.shadowCull = s.cull;
     r.frameSize = frameSize;
     return r;
 }

@@ -67,25 +67,25 @@ TEST(LessonFormat, ParsesStepsThatInheritTheStateBeforeThem) {
     EXPECT_EQ(s0.settings.kernel, 3);
     EXPECT_EQ(s0.settings.radius, 1.0f);
     EXPECT_FALSE(s0.settings.rotate);
-    EXPECT_EQ(s0.settings.bias, "constant");
+    EXPECT_EQ(s0.settings.bias, BiasMode::Constant);
     EXPECT_EQ(s0.settings.constantBias, 0.002f);
-    EXPECT_EQ(s0.settings.cull, "back");
-    EXPECT_EQ(s0.settings.depthFormat, "32f");
+    EXPECT_EQ(s0.settings.cull, CullMode::Back);
+    EXPECT_EQ(s0.settings.depthFormat, DepthFormat::D32F);
 
     const LessonStep& s1 = lesson.steps[1];
     EXPECT_EQ(s1.line, 14);
     EXPECT_EQ(s1.settings.method, PCF_HW2X2);
-    EXPECT_EQ(s1.settings.bias, "none");
+    EXPECT_EQ(s1.settings.bias, BiasMode::None);
     EXPECT_EQ(s1.settings.mapSize, 256);  // inherited from [settings]
     EXPECT_EQ(s1.settings.pixel, glm::ivec2(612, 388));
 
     const LessonStep& s2 = lesson.steps[2];
     EXPECT_EQ(s2.settings.method, PCF_HW2X2);  // inherited from step 2
-    EXPECT_EQ(s2.settings.bias, "none");
+    EXPECT_EQ(s2.settings.bias, BiasMode::None);
     EXPECT_EQ(s2.settings.mapSize, 1024);
     EXPECT_EQ(s2.settings.pixel, glm::ivec2(0, 719));
-    EXPECT_EQ(s2.settings.depthFormat, "16");
-    EXPECT_EQ(s2.settings.cull, "front");
+    EXPECT_EQ(s2.settings.depthFormat, DepthFormat::D16);
+    EXPECT_EQ(s2.settings.cull, CullMode::Front);
     EXPECT_EQ(s2.settings.constantBias, 0.01f);
     EXPECT_EQ(s2.settings.kernel, 5);
     EXPECT_EQ(s2.settings.radius, 2.5f);
@@ -96,7 +96,7 @@ TEST(LessonFormat, DepthBiasIsZeroWithoutConstantBias) {
     LessonSettings s;
     s.constantBias = 0.005f;
     EXPECT_EQ(s.depthBias(), 0.005f);
-    s.bias = "none";
+    s.bias = BiasMode::None;
     EXPECT_EQ(s.depthBias(), 0.0f);
 }
 

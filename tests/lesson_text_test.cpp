@@ -136,9 +136,9 @@ TEST(LessonText, ContextNamesThePixelAndTheState) {
 TEST(LessonText, StepContextScalesThePixel) {
     LessonStep step;
     step.settings.pixel = {612, 388};
-    step.settings.bias = "none";
-    step.settings.cull = "front";
-    step.settings.depthFormat = "16";
+    step.settings.bias = BiasMode::None;
+    step.settings.cull = CullMode::Front;
+    step.settings.depthFormat = DepthFormat::D16;
     StepContext ctx = makeStepContext(step, {640, 360});
     EXPECT_EQ(ctx.pixel, glm::ivec2(306, 194));
     EXPECT_EQ(ctx.bias, "none");

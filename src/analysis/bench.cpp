@@ -11,6 +11,7 @@
 #include "analysis/cpu_timing.h"
 #include "analysis/stability.h"
 #include "kernel/methods.h"
+#include "kernel/settings.h"
 #include "render/gpu_lookup.h"
 #include "render/gpu_timer.h"
 #include "scene/light.h"
@@ -20,8 +21,6 @@ namespace pcf {
 namespace {
 
 const ShadowMap& map(const std::map<int, ShadowMap>& maps, int size) { return maps.at(size); }
-
-bool tentTakes(int n) { return n == 3 || n == 5 || n == 7; }
 
 std::vector<int> methodsOf(const BenchOptions& options) {
     if (!options.methods.empty()) return options.methods;
@@ -35,7 +34,7 @@ std::vector<int> kernelsOf(int method, const BenchOptions& options) {
     if (!methodInfo(method).usesKernel) return {0};
     std::vector<int> kernels;
     for (int n : options.kernels) {
-        if (method != PCF_TENT || tentTakes(n)) kernels.push_back(n);
+        if (method != PCF_TENT || kernelFits(method, n)) kernels.push_back(n);
     }
     return kernels;
 }

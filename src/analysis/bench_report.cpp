@@ -7,6 +7,7 @@
 #include <optional>
 #include <set>
 
+#include "analysis/csv_lines.h"
 #include "analysis/pareto.h"
 #include "kernel/methods.h"
 #include "scene/input_error.h"
@@ -62,52 +63,6 @@ std::string benchCsv(std::span<const BenchRow> rows) {
 
 namespace {
 
-// One data line of a bench.csv, split at commas; the field readers name the line on failure.
-class CsvFields {
-  public:
-    CsvFields(const std::string& row, const std::string& source, int line)
-        : mSource(source), mLine(line) {
-        size_t start = 0;
-        for (size_t comma; (comma = row.find(',', start)) != std::string::npos; start = comma + 1) {
-            mFields.push_back(row.substr(start, comma - start));
-        }
-        mFields.push_back(row.substr(start));
-    }
-    size_t size() const { return mFields.size(); }
-    const std::string& text(size_t k) const { return mFields[k]; }
-    [[noreturn]] void fail(const std::string& problem) const {
-        throw InputError(mSource, mLine, problem);
-    }
-    double number(size_t k) const {
-        char* endPtr = nullptr;
-        double v = std::strtod(mFields[k].c_str(), &endPtr);
-        if (mFields[k].empty() || *endPtr != '\0' || !std::isfinite(v)) {
-            fail("field " + std::to_string(k + 1) + " '" + mFields[k] + "' is not a number");
-        }
-        return v;
-    }
-    // Counts and sizes: a whole number an int holds (a cast of 1e30 is undefined behaviour).
-    int integer(size_t k) const {
-        double v = number(k);
-        if (v != std::floor(v) || std::fabs(v) > 1.0e9) {
-            fail("field " + std::to_string(k + 1) + " '" + mFields[k] + "' is not a whole number");
-        }
-        return static_cast<int>(v);
-    }
-    bool flag(size_t k) const {
-        double v = number(k);
-        if (v != 0.0 && v != 1.0) {
-            fail("field " + std::to_string(k + 1) + " '" + mFields[k] + "' is not 0 or 1");
-        }
-        return v == 1.0;
-    }
-
-  private:
-    std::vector<std::string> mFields;
-    const std::string& mSource;
-    int mLine;
-};
-
 BenchRow parseBenchRow(const CsvFields& f) {
     std::optional<int> method = methodFromName(f.text(0));
     if (!method) f.fail("unknown method '" + f.text(0) + "'");
@@ -149,34 +104,27 @@ size_t fieldsOfHeader(const std::string& header) {
 
 std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& source) {
     std::vector<BenchRow> rows;
-    int line = 0;
-    size_t pos = 0;
     size_t fieldCount = 0;
-    while (pos < text.size()) {
-        size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) end = text.size();
-        std::string row(text.substr(pos, end - pos));
-        pos = end + 1;
-        ++line;
-        if (!row.empty() && row.back() == '\r') row.pop_back();
-        if (line == 1) {
-            fieldCount = fieldsOfHeader(row);
+    std::vector<CsvLine> lines = csvLines(text);
+    if (lines.empty()) throw InputError(source, 1, "empty file: expected a bench.csv header");
+    for (const CsvLine& l : lines) {
+        if (l.number == 1) {
+            fieldCount = fieldsOfHeader(l.text);
             if (fieldCount == 0) {
                 throw InputError(
-                    source, line,
+                    source, l.number,
                     "not a bench.csv header: expected '" + std::string(BENCH_CSV_HEADER) + "'");
             }
             continue;
         }
-        if (row.empty()) continue;
-        CsvFields fields(row, source, line);
+        if (l.text.empty()) continue;
+        CsvFields fields(l.text, source, l.number);
         if (fields.size() != fieldCount) {
             fields.fail("expected " + std::to_string(fieldCount) + " fields, got " +
                         std::to_string(fields.size()));
         }
         rows.push_back(parseBenchRow(fields));
     }
-    if (line == 0) throw InputError(source, 1, "empty file: expected a bench.csv header");
     return rows;
 }
 

@@ -119,16 +119,12 @@ double quantileOf(std::vector<float>& values, double q) {
     return values[k];
 }
 
-namespace {
-
 double meanOf(const std::vector<float>& values) {
     if (values.empty()) return 0.0;
     double s = 0.0;
     for (float v : values) s += v;
     return s / static_cast<double>(values.size());
 }
-
-}  // namespace
 
 ShimmerStats shimmerStats(const std::vector<std::vector<float>>& frames,
                           const std::vector<uint8_t>& compared) {

@@ -73,6 +73,9 @@ struct ShimmerStats {
 ShimmerStats shimmerStats(const std::vector<std::vector<float>>& frames,
                           const std::vector<uint8_t>& compared);
 
+// The mean of `values`; 0 when empty.
+double meanOf(const std::vector<float>& values);
+
 // The q-quantile (0..1, nearest rank) of `values` (reordered); 0 when empty.
 double quantileOf(std::vector<float>& values, double q);
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "analysis/bench_report.h"
+#include "analysis/chart_axes.h"
 #include "analysis/pareto.h"
 #include "kernel/methods.h"
 #include "overlay/canvas.h"
@@ -16,10 +17,6 @@ namespace pcf {
 
 namespace {
 
-const Colour WHITE{1.0f, 1.0f, 1.0f, 1.0f};
-const Colour INK{0.13f, 0.13f, 0.15f, 1.0f};
-const Colour SOFT_INK{0.35f, 0.35f, 0.38f, 1.0f};
-const Colour GRID{0.88f, 0.88f, 0.9f, 1.0f};
 const Colour FRONT{0.05f, 0.05f, 0.05f, 1.0f};
 
 struct Fonts {
@@ -52,19 +49,6 @@ std::string shortName(int method) {
         default:
             return "poisson";
     }
-}
-
-std::string tickText(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
-// A round step (1, 2 or 5 times a power of ten) near `rough`.
-double niceStep(double rough) {
-    double p = std::pow(10.0, std::floor(std::log10(rough)));
-    double m = rough / p;
-    return (m <= 1.0 ? 1.0 : m <= 2.0 ? 2.0 : m <= 5.0 ? 5.0 : 10.0) * p;
 }
 
 float overlapArea(const Rect& a, const Rect& b) {
@@ -113,7 +97,7 @@ std::string chartLabel(const BenchPoint& point) {
     std::string s = shortName(point.method);
     if (point.kernel > 0) s += std::to_string(point.kernel);
     if (point.weights == PCF_WEIGHTS_BINOMIAL) s += " binom";
-    if (point.weights == PCF_WEIGHTS_GAUSSIAN) s += " gauss" + tickText(point.sigma);
+    if (point.weights == PCF_WEIGHTS_GAUSSIAN) s += " gauss" + chartTickText(point.sigma);
     return s + " " + std::to_string(point.mapSize);
 }
 
@@ -130,7 +114,7 @@ glm::vec4 methodColour(int method) {
         {0.84f, 0.30f, 0.62f, 1.0f},  // tent
         {0.61f, 0.46f, 0.37f, 1.0f},  // poisson
     };
-    if (method < 0 || method >= PCF_METHOD_COUNT) return INK;
+    if (method < 0 || method >= PCF_METHOD_COUNT) return CHART_INK;
     return COLOURS[method];
 }
 
@@ -206,7 +190,7 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     double pad = std::max(0.1, 0.06 * (xMax - xMin));
     L.xLogLo = xMin - pad;
     L.xLogHi = xMax + pad;
-    double yStep = niceStep(std::max(yMax * 1.08, 1e-6) / 7.0);
+    double yStep = chartNiceStep(std::max(yMax * 1.08, 1e-6) / 7.0);
     L.yLo = 0.0;
     L.yHi = std::ceil(std::max(yMax * 1.08, 1e-6) / yStep) * yStep;
 
@@ -233,11 +217,11 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
             double v = m * std::pow(10.0, k);
             double lv = std::log10(v);
             if (lv < L.xLogLo || lv > L.xLogHi) continue;
-            L.xTicks.push_back({v, xPixel(lv), (!wide || m == 1.0) ? tickText(v) : ""});
+            L.xTicks.push_back({v, xPixel(lv), (!wide || m == 1.0) ? chartTickText(v) : ""});
         }
     }
     for (double v = 0.0; v <= L.yHi + 0.5 * yStep; v += yStep) {
-        L.yTicks.push_back({v, yPixel(v), tickText(std::round(v / yStep) * yStep)});
+        L.yTicks.push_back({v, yPixel(v), chartTickText(std::round(v / yStep) * yStep)});
     }
 
     // Dots, the front, and the labels.
@@ -305,43 +289,35 @@ std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 s
     float s = L.scale;
     Fonts f = fontsFor(s);
 
-    GLint previousDraw = 0;
-    GLint previousRead = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDraw);
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousRead);
-    OffscreenTarget target = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
-    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, &WHITE.x);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer.id());
-    {
-        Canvas c;
-        c.begin(size);
+    return drawChartOffscreen(size, [&](Canvas& c) {
         float pad = std::round(12.0f * s);
-        Rect title = c.text({pad, pad * 0.6f}, text.title, {FontFace::Sans, f.title, INK});
-        Rect sub =
-            c.text({pad, title.bottom()}, text.subtitle, {FontFace::Sans, f.subtitle, SOFT_INK});
+        Rect title = c.text({pad, pad * 0.6f}, text.title, {FontFace::Sans, f.title, CHART_INK});
+        Rect sub = c.text({pad, title.bottom()}, text.subtitle,
+                          {FontFace::Sans, f.subtitle, CHART_SOFT_INK});
         // The y axis's name above it (the canvas draws no rotated text).
-        c.text({L.plot.x, sub.bottom() + 4.0f * s}, text.yLabel, {FontFace::Sans, f.axis, INK});
+        c.text({L.plot.x, sub.bottom() + 4.0f * s}, text.yLabel,
+               {FontFace::Sans, f.axis, CHART_INK});
 
         // Grid and ticks.
         float stroke = std::max(1.0f, std::round(s));
         for (const ChartTick& t : L.xTicks) {
             float x = std::round(t.pixel) + 0.5f;
-            c.line({x, L.plot.y}, {x, L.plot.bottom()}, stroke, GRID);
+            c.line({x, L.plot.y}, {x, L.plot.bottom()}, stroke, CHART_GRID);
             if (!t.text.empty()) {
                 c.text({x, L.plot.bottom() + 5.0f * s}, t.text,
-                       {FontFace::Sans, f.tick, SOFT_INK, TextAlign::Center});
+                       {FontFace::Sans, f.tick, CHART_SOFT_INK, TextAlign::Center});
             }
         }
         float tickH = fontMetrics(FontFace::Sans, f.tick).lineHeight;
         for (const ChartTick& t : L.yTicks) {
             float y = std::round(t.pixel) + 0.5f;
-            c.line({L.plot.x, y}, {L.plot.right(), y}, stroke, GRID);
+            c.line({L.plot.x, y}, {L.plot.right(), y}, stroke, CHART_GRID);
             c.text({L.plot.x - 6.0f * s, y - tickH / 2}, t.text,
-                   {FontFace::Sans, f.tick, SOFT_INK, TextAlign::Right});
+                   {FontFace::Sans, f.tick, CHART_SOFT_INK, TextAlign::Right});
         }
-        c.strokeRect(L.plot.expanded(stroke), stroke, SOFT_INK);
+        c.strokeRect(L.plot.expanded(stroke), stroke, CHART_SOFT_INK);
         c.text({L.plot.centre().x, L.plot.bottom() + 8.0f * s + tickH}, text.xLabel,
-               {FontFace::Sans, f.axis, INK, TextAlign::Center});
+               {FontFace::Sans, f.axis, CHART_INK, TextAlign::Center});
 
         c.pushClip(L.plot.expanded(2.0f * s));
         // The front, under the dots.
@@ -379,7 +355,8 @@ std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 s
             glm::vec2 p = L.points[k];
             glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
             if (glm::length(nearest - p) > 2.5f * dotR) {
-                c.line(p, nearest, std::max(1.0f, 0.75f * s), GRID * 0.8f + SOFT_INK * 0.2f);
+                c.line(p, nearest, std::max(1.0f, 0.75f * s),
+                       CHART_GRID * 0.8f + CHART_SOFT_INK * 0.2f);
             }
             glm::vec4 ink = methodColour(rows[k].point.method) * 0.55f;
             ink.a = 1.0f;
@@ -389,26 +366,20 @@ std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 s
         // Legend.
         float lineH = fontMetrics(FontFace::Sans, f.legend).lineHeight;
         c.fillRect(L.legend, {0.97f, 0.97f, 0.98f, 1.0f});
-        c.strokeRect(L.legend, stroke, GRID);
+        c.strokeRect(L.legend, stroke, CHART_GRID);
         float y = L.legend.y + 6.0f * s;
         float swatchX = L.legend.x + 12.0f * s;
         float textX = L.legend.x + 22.0f * s + 4.0f * s;
         for (int m : L.legendMethods) {
             c.circle({swatchX, y + lineH / 2}, dotR, methodColour(m));
-            c.text({textX, y}, methodInfo(m).name, {FontFace::Sans, f.legend, INK});
+            c.text({textX, y}, methodInfo(m).name, {FontFace::Sans, f.legend, CHART_INK});
             y += lineH;
         }
         c.line({swatchX - 8.0f * s, y + lineH / 2}, {swatchX + 8.0f * s, y + lineH / 2}, 1.5f * s,
                FRONT);
         c.ring({swatchX, y + lineH / 2}, dotR + 2.5f * s, 1.5f * s, FRONT);
-        c.text({textX, y}, "Pareto front", {FontFace::Sans, f.legend, INK});
-        c.flush();
-    }
-    std::vector<uint8_t> rgba =
-        readPixelsRgba8(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, size.x, size.y);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousDraw));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previousRead));
-    return rgba;
+        c.text({textX, y}, "Pareto front", {FontFace::Sans, f.legend, CHART_INK});
+    });
 }
 
 }  // namespace pcf

@@ -1,13 +1,12 @@
 #include "analysis/stability.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
-#include <thread>
 
 #include "analysis/error_metrics.h"
+#include "analysis/failure_measures.h"
 #include "analysis/ground_truth.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
@@ -21,75 +20,7 @@ namespace pcf {
 
 namespace {
 
-constexpr float FULLY_LIT = 0.99f;   // acne: a clean lit pixel darker than this is false shadow
-constexpr float LEAK_LEVEL = 0.01f;  // leak: a clean umbra pixel brighter than this leaks
-constexpr int FOOTPRINT_GRID = 3;    // footprint test points per side
-// A change a display can show: half a step of an 8-bit channel. Smaller ones (float rounding
-// of the filter weights as the grid slides, ~1e-7) do not make a pixel "flicker".
-constexpr float VISIBLE_CHANGE = 1.0f / 512.0f;
 constexpr float MAX_ALIASING_JUMP = 32.0f;  // texels between neighbours: another surface
-
-// Rows [0, rows) split over the worker threads, a row at a time from a shared counter.
-template <class F>
-void parallelRows(int rows, int threads, F&& work) {
-    std::atomic<int> next{0};
-    auto loop = [&] {
-        for (int y; (y = next.fetch_add(1)) < rows;) work(y);
-    };
-    int n = std::max(1, std::min(resolveThreadCount(threads), rows));
-    std::vector<std::thread> pool;
-    for (int t = 1; t < n; ++t) pool.emplace_back(loop);
-    loop();
-    for (std::thread& t : pool) t.join();
-}
-
-// The camera's hit at each pixel centre, rows top-down like the truth.
-std::vector<std::optional<Hit>> centreHits(const Scene& scene, glm::ivec2 size, int threads) {
-    std::vector<std::optional<Hit>> hits(static_cast<size_t>(size.x) * size.y);
-    float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
-    parallelRows(size.y, threads, [&](int y) {
-        int rowTopDown = size.y - 1 - y;
-        for (int x = 0; x < size.x; ++x) {
-            Ray ray = cameraRay(scene.camera, pixelCentreNdc({x, y}, size), aspect);
-            hits[static_cast<size_t>(rowTopDown) * size.x + x] = intersect(scene, ray);
-        }
-    });
-    return hits;
-}
-
-// 1 where the pixel is compared (error_metrics.h) and the truth is `wantLit` (fully lit, or
-// fully shadowed) at the pixel and over its whole footprint.
-std::vector<uint8_t> cleanMask(const Scene& scene, const GroundTruth& truth,
-                               const ErrorRegions& regions,
-                               const std::vector<std::optional<Hit>>& hits,
-                               const glm::mat4& shadowClip, int mapSize, float reach, bool wantLit,
-                               int threads) {
-    std::vector<uint8_t> mask(truth.pixelCount(), 0);
-    parallelRows(truth.size.y, threads, [&](int row) {
-        for (int x = 0; x < truth.size.x; ++x) {
-            size_t k = truth.index(x, row);
-            if (!regions.compared[k] || !hits[k]) continue;
-            float v = truth.visibility[k];
-            if (wantLit ? v < 1.0f : v > 0.0f) continue;
-            const Hit& h = *hits[k];
-            std::vector<glm::vec3> points =
-                footprintPoints(scene, shadowClip, mapSize, h.posWs,
-                                h.frontFace ? h.normalWs : -h.normalWs, reach, FOOTPRINT_GRID);
-            if (points.empty()) continue;
-            bool clean = true;
-            for (glm::vec3 p : points) {
-                Hit moved = h;
-                moved.posWs = p;
-                if (litByLight(scene, moved) != wantLit) {
-                    clean = false;
-                    break;
-                }
-            }
-            mask[k] = clean ? 1 : 0;
-        }
-    });
-    return mask;
-}
 
 // The nearest point of any caster that is not a plane (the pole, the box), or nullopt.
 std::optional<glm::vec3> nearestCasterPoint(const Scene& scene, glm::vec3 p) {
@@ -115,43 +46,6 @@ std::optional<glm::vec3> nearestCasterPoint(const Scene& scene, glm::vec3 p) {
         }
     }
     return best;
-}
-
-struct Rate {
-    double rate = 0.0;  // share of the mask's pixels that fail
-    double mean = 0.0;  // acne: mean darkening 1 - v; leak: mean v
-    int count = 0;
-};
-
-Rate falseShadow(const std::vector<float>& vis, const std::vector<uint8_t>& cleanLit) {
-    Rate r;
-    double dark = 0.0;
-    int bad = 0;
-    for (size_t k = 0; k < vis.size(); ++k) {
-        if (!cleanLit[k]) continue;
-        ++r.count;
-        dark += 1.0 - vis[k];
-        if (vis[k] < FULLY_LIT) ++bad;
-    }
-    if (r.count > 0) {
-        r.rate = static_cast<double>(bad) / r.count;
-        r.mean = dark / r.count;
-    }
-    return r;
-}
-
-double percentile(std::vector<float>& values, double q) {
-    if (values.empty()) return 0.0;
-    size_t k = std::min(values.size() - 1, static_cast<size_t>(q * (values.size() - 1) + 0.5));
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-    return values[k];
-}
-
-double mean(const std::vector<float>& values) {
-    if (values.empty()) return 0.0;
-    double s = 0.0;
-    for (float v : values) s += v;
-    return s / static_cast<double>(values.size());
 }
 
 class Sweeper {
@@ -204,8 +98,8 @@ class Sweeper {
             if (it != reaches.end()) {
                 masks.push_back(masks[static_cast<size_t>(it - reaches.begin())]);
             } else {
-                masks.push_back(cleanMask(scene, truth, regions, hits, shadowClip, mOptions.mapSize,
-                                          reach, wantLit, mOptions.threads));
+                masks.push_back(cleanPixelMask(scene, truth, regions, hits, shadowClip,
+                                               mOptions.mapSize, reach, wantLit, mOptions.threads));
             }
             reaches.push_back(reach);
         }
@@ -282,8 +176,8 @@ class Sweeper {
                 for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
                     const StabilityMethod& m = mOptions.methods[mi];
                     if (!stabilityPairExists(m, bias)) continue;
-                    Rate r = falseShadow(frame(renderer, settings(m, bias)), lit[mi]);
-                    add(Sweep::Acne, m, bias, "elevation_deg", elev, "false_shadow_rate", r.rate);
+                    FailureRate r = falseShadow(frame(renderer, settings(m, bias)), lit[mi]);
+                    add(Sweep::Acne, m, bias, "elevation_deg", elev, "false_shadow_rate", r.share);
                     add(Sweep::Acne, m, bias, "elevation_deg", elev, "mean_darkening", r.mean);
                     add(Sweep::Acne, m, bias, "elevation_deg", elev, "clean_lit_pixels", r.count);
                 }
@@ -329,31 +223,28 @@ class Sweeper {
                         RenderSettings s = settings(m, bias);
                         s.constantBias = b;
                         std::vector<float> vis = frame(renderer, s);
-                        int count = 0, leaking = 0;
+                        FailureRate leaks = falseLight(vis, umbra);
                         float widthWorld = 0.0f, widthTexels = 0.0f;
                         for (size_t k = 0; k < vis.size(); ++k) {
-                            if (!umbra[k]) continue;
-                            ++count;
-                            if (vis[k] <= LEAK_LEVEL) continue;
-                            ++leaking;
+                            if (!umbra[k] || vis[k] <= LEAK_LEVEL) continue;
                             widthWorld = std::max(widthWorld, world[k]);
                             widthTexels = std::max(widthTexels, texels[k]);
                         }
-                        double rate = count > 0 ? static_cast<double>(leaking) / count : 0.0;
-                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_rate", rate);
+                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_rate",
+                            leaks.share);
                         add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_world",
                             widthWorld);
                         add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_texels",
                             widthTexels);
                         add(Sweep::Leak, m, bias, "constant_bias", b, name + ":clean_umbra_pixels",
-                            count);
+                            leaks.count);
                     }
                 }
             }
         }
     }
 
-    // |v(t) - v(t-1)| over the compared pixels of every consecutive pair.
+    // |a - b| over the mask's pixels (the camera shimmer: the error's change between frames).
     static void addChanges(const std::vector<float>& a, const std::vector<float>& b,
                            const std::vector<uint8_t>& mask, std::vector<float>& out) {
         for (size_t k = 0; k < a.size(); ++k) {
@@ -387,39 +278,18 @@ class Sweeper {
                             shiftShadowOrigin(fitted, glm::vec2(step), mOptions.mapSize, snap));
                         frames.push_back(frame(renderer, s));
                     }
-                    // The flickering pixels: compared pixels whose value changes visibly in any
-                    // frame.
-                    std::vector<uint8_t> flickers(regions.compared.size(), 0);
-                    int flickering = 0;
-                    for (size_t k = 0; k < flickers.size(); ++k) {
-                        if (!regions.compared[k]) continue;
-                        for (size_t t = 1; t < frames.size() && !flickers[k]; ++t) {
-                            flickers[k] =
-                                std::abs(frames[t][k] - frames[t - 1][k]) > VISIBLE_CHANGE ? 1 : 0;
-                        }
-                        flickering += flickers[k];
-                    }
-                    std::vector<float> changes, flickerChanges;
-                    for (size_t t = 1; t < frames.size(); ++t) {
-                        addChanges(frames[t], frames[t - 1], regions.compared, changes);
-                        addChanges(frames[t], frames[t - 1], flickers, flickerChanges);
-                    }
+                    ShimmerStats st = shimmerStats(frames, regions.compared);
                     std::string prefix = snap ? "snapped_" : "light_";
-                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
-                        prefix + "flicker_share",
-                        regions.comparedCount > 0
-                            ? static_cast<double>(flickering) / regions.comparedCount
-                            : 0.0);
-                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
-                        prefix + "flicker_mean", mean(flickerChanges));
-                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS,
-                        prefix + "flicker_p99", percentile(flickerChanges, 0.99));
-                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS, prefix + "mean",
-                        mean(changes));
-                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS, prefix + "p99",
-                        percentile(changes, 0.99));
-                    add(Sweep::Shimmer, m, bias, "texel_step", 1.0 / SHIMMER_STEPS, prefix + "max",
-                        percentile(changes, 1.0));
+                    double step = 1.0 / SHIMMER_STEPS;
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "flicker_share",
+                        st.flickerShare);
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "flicker_mean",
+                        st.flickerMean);
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "flicker_p99",
+                        st.flickerP99);
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "mean", st.mean);
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "p99", st.p99);
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "max", st.max);
                 }
             }
         }
@@ -472,9 +342,9 @@ class Sweeper {
         for (BiasMode bias : mOptions.biases) {
             for (const StabilityMethod& m : mOptions.methods) {
                 if (!stabilityPairExists(m, bias)) continue;
-                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_mean", mean(changes[c]));
+                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_mean", meanOf(changes[c]));
                 add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_p99",
-                    percentile(changes[c], 0.99));
+                    quantileOf(changes[c], 0.99));
                 ++c;
             }
         }
@@ -504,9 +374,9 @@ class Sweeper {
                         RenderSettings s = settings(m, bias);
                         s.depthFormat = format;
                         s.constantBias = mOptions.base.constantBias / ratio;
-                        Rate r = falseShadow(frame(renderer, s), lit[mi]);
+                        FailureRate r = falseShadow(frame(renderer, s), lit[mi]);
                         add(Sweep::Precision, m, bias, "depth_range", ratio,
-                            "false_shadow_rate" + suffix, r.rate);
+                            "false_shadow_rate" + suffix, r.share);
                         add(Sweep::Precision, m, bias, "depth_range", ratio,
                             "mean_darkening" + suffix, r.mean);
                     }
@@ -529,8 +399,8 @@ class Sweeper {
                 if (regions.compared[k] && ppt[k] > 0.0f) values.push_back(ppt[k]);
             }
             std::string sweep(sweepName(Sweep::Aliasing));
-            double median = percentile(values, 0.5);
-            double p99 = percentile(values, 0.99);
+            double median = quantileOf(values, 0.5);
+            double p99 = quantileOf(values, 0.99);
             result.rows.push_back(
                 {sweep, -1, 0, "-", "map_size", double(size), "pixels_per_texel_median", median});
             result.rows.push_back(

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "analysis/chart_axes.h"
 #include "analysis/speed_chart.h"
 #include "kernel/methods.h"
 #include "overlay/canvas.h"
@@ -15,60 +16,17 @@ namespace pcf {
 
 namespace {
 
-const Colour WHITE{1.0f, 1.0f, 1.0f, 1.0f};
-const Colour INK{0.13f, 0.13f, 0.15f, 1.0f};
-const Colour SOFT_INK{0.35f, 0.35f, 0.38f, 1.0f};
-const Colour GRID{0.88f, 0.88f, 0.9f, 1.0f};
-
 float scaleFor(glm::ivec2 size) {
     return std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
 }
 
 float px(float base, float s) { return std::max(8.0f, std::round(base * s)); }
 
-std::string tickText(double v, bool percent) {
-    char buf[32];
-    if (percent) {
-        std::snprintf(buf, sizeof buf, "%g%%", std::round(v * 1e4) / 1e2);
-    } else {
-        std::snprintf(buf, sizeof buf, "%g", v);
-    }
-    return buf;
-}
-
-double niceStep(double rough) {
-    double p = std::pow(10.0, std::floor(std::log10(rough)));
-    double m = rough / p;
-    return (m <= 1.0 ? 1.0 : m <= 2.0 ? 2.0 : m <= 5.0 ? 5.0 : 10.0) * p;
-}
-
-// Draws into an offscreen target of `size` and reads it back; `paint` records the commands.
-template <class Paint>
-std::vector<uint8_t> drawOffscreen(glm::ivec2 size, Paint&& paint) {
-    GLint previousDraw = 0, previousRead = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDraw);
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousRead);
-    OffscreenTarget target = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
-    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, &WHITE.x);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer.id());
-    {
-        Canvas c;
-        c.begin(size);
-        paint(c);
-        c.flush();
-    }
-    std::vector<uint8_t> rgba =
-        readPixelsRgba8(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, size.x, size.y);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousDraw));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previousRead));
-    return rgba;
-}
-
 // Title and subtitle at the top; returns the y below them.
 float drawHeader(Canvas& c, float s, const std::string& title, const std::string& subtitle) {
     float pad = std::round(12.0f * s);
-    Rect t = c.text({pad, pad * 0.6f}, title, {FontFace::Sans, px(20, s), INK});
-    Rect sub = c.text({pad, t.bottom()}, subtitle, {FontFace::Sans, px(13, s), SOFT_INK});
+    Rect t = c.text({pad, pad * 0.6f}, title, {FontFace::Sans, px(20, s), CHART_INK});
+    Rect sub = c.text({pad, t.bottom()}, subtitle, {FontFace::Sans, px(13, s), CHART_SOFT_INK});
     return sub.bottom() + 6.0f * s;
 }
 
@@ -130,7 +88,7 @@ glm::vec4 biasColour(std::string_view bias) {
     for (const auto& [name, colour] : COLOURS) {
         if (name == bias) return colour;
     }
-    return INK;
+    return CHART_INK;
 }
 
 std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
@@ -153,7 +111,7 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
     }
     if (xLo > xHi) xLo = 0.0, xHi = 1.0;
     if (xHi - xLo < 1e-9) xLo -= 0.5, xHi += 0.5;
-    double yStep = niceStep(std::max(yHi - spec.yFloor, 1e-6) * 1.05 / 5.0);
+    double yStep = chartNiceStep(std::max(yHi - spec.yFloor, 1e-6) * 1.05 / 5.0);
     double yTop =
         spec.yFloor + std::ceil((std::max(yHi - spec.yFloor, 1e-6) * 1.05) / yStep) * yStep;
     if (spec.percentY && yHi <= 1.0 && (yTop > 1.0 || yHi > 0.5)) {
@@ -170,7 +128,7 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
         }
     }
 
-    return drawOffscreen(size, [&](Canvas& c) {
+    return drawChartOffscreen(size, [&](Canvas& c) {
         float top = drawHeader(c, s, spec.title, spec.subtitle);
         float legendFont = px(13, s), tickFont = px(12, s), axisFont = px(14, s);
         float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
@@ -182,12 +140,12 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
             legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
         }
         legendW = std::round(legendW + 48.0f * s);
-        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, INK});
+        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK});
         top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
         float bottomText = fontMetrics(FontFace::Sans, axisFont).lineHeight + 6.0f * s;
         Rect area{0.0f, top, size.x - legendW - 20.0f * s, size.y - top - bottomText};
         c.text({area.centre().x, area.bottom() + 2.0f * s}, spec.xLabel,
-               {FontFace::Sans, axisFont, INK, TextAlign::Center});
+               {FontFace::Sans, axisFont, CHART_INK, TextAlign::Center});
 
         int n = static_cast<int>(spec.panels.size());
         int cols = n <= 2 ? n : (n <= 4 ? 2 : 3);
@@ -204,7 +162,7 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
                       std::round(cell.h - titleH - tickH - 18.0f * s)};
             if (plot.w < 8.0f || plot.h < 8.0f) continue;
             c.text({plot.centre().x, cell.y}, panel.title,
-                   {FontFace::Sans, px(14, s), INK, TextAlign::Center});
+                   {FontFace::Sans, px(14, s), CHART_INK, TextAlign::Center});
             auto xPixel = [&](double x) {
                 double v = spec.logX ? std::log10(std::max(x, 1e-12)) : x;
                 double t = (v - xLo) / (xHi - xLo);
@@ -217,9 +175,9 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
             };
             for (double y = spec.yFloor; y <= yTop + 0.5 * yStep; y += yStep) {
                 float py = std::round(yPixel(y)) + 0.5f;
-                c.line({plot.x, py}, {plot.right(), py}, stroke, GRID);
-                c.text({plot.x - 5.0f * s, py - tickH / 2}, tickText(y, spec.percentY),
-                       {FontFace::Sans, tickFont, SOFT_INK, TextAlign::Right});
+                c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
+                c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, spec.percentY),
+                       {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right});
             }
             // x ticks: the points' own x values (sweeps are few points), thinned to fit.
             std::vector<double> xs;
@@ -233,16 +191,16 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
             float lastRight = -1e30f;
             for (double x : xs) {
                 float pxX = std::round(xPixel(x)) + 0.5f;
-                c.line({pxX, plot.y}, {pxX, plot.bottom()}, stroke, GRID);
-                std::string t = tickText(x, false);
+                c.line({pxX, plot.y}, {pxX, plot.bottom()}, stroke, CHART_GRID);
+                std::string t = chartTickText(x, false);
                 float w = measureText(FontFace::Sans, tickFont, t).x;
                 if (pxX - w / 2 - 4.0f * s > lastRight) {
                     c.text({pxX, plot.bottom() + 3.0f * s}, t,
-                           {FontFace::Sans, tickFont, SOFT_INK, TextAlign::Center});
+                           {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Center});
                     lastRight = pxX + w / 2;
                 }
             }
-            c.strokeRect(plot.expanded(stroke), stroke, SOFT_INK);
+            c.strokeRect(plot.expanded(stroke), stroke, CHART_SOFT_INK);
             c.pushClip(plot.expanded(3.0f * s));
             for (const ChartLine& l : panel.lines) {
                 glm::vec2 prev{};
@@ -265,7 +223,7 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
         Rect box{size.x - legendW - 12.0f * s, top, legendW,
                  (legend.size() + spec.notes.size()) * lineH + 12.0f * s};
         c.fillRect(box, {0.97f, 0.97f, 0.98f, 1.0f});
-        c.strokeRect(box, stroke, GRID);
+        c.strokeRect(box, stroke, CHART_GRID);
         float y = box.y + 6.0f * s;
         for (const LegendEntry& e : legend) {
             glm::vec2 a{box.x + 8.0f * s, y + lineH / 2}, b{box.x + 32.0f * s, y + lineH / 2};
@@ -274,11 +232,11 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
             } else {
                 c.line(a, b, 2.0f * s, e.colour);
             }
-            c.text({box.x + 38.0f * s, y}, e.label, {FontFace::Sans, legendFont, INK});
+            c.text({box.x + 38.0f * s, y}, e.label, {FontFace::Sans, legendFont, CHART_INK});
             y += lineH;
         }
         for (const std::string& note : spec.notes) {
-            c.text({box.x + 8.0f * s, y}, note, {FontFace::Sans, legendFont, SOFT_INK});
+            c.text({box.x + 8.0f * s, y}, note, {FontFace::Sans, legendFont, CHART_SOFT_INK});
             y += lineH;
         }
     });
@@ -293,7 +251,7 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
     for (const BarGroup& g : spec.groups) {
         for (double v : g.values) yMax = std::max(yMax, v);
     }
-    double yStep = niceStep(std::max(yMax, 1e-6) * 1.1 / 5.0);
+    double yStep = chartNiceStep(std::max(yMax, 1e-6) * 1.1 / 5.0);
     double yTop = std::ceil(std::max(yMax, 1e-6) * 1.1 / yStep) * yStep;
     if (yMax > 0.5 && yMax <= 1.0) {
         yStep = 0.2;  // changes of visibility never pass 1
@@ -303,10 +261,10 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
                                     {0.55f, 0.55f, 0.58f, 1.0f},
                                     {0.84f, 0.37f, 0.0f, 1.0f},
                                     {0.0f, 0.62f, 0.45f, 1.0f}};
-    return drawOffscreen(size, [&](Canvas& c) {
+    return drawChartOffscreen(size, [&](Canvas& c) {
         float top = drawHeader(c, s, spec.title, spec.subtitle);
         float tickFont = px(12, s), axisFont = px(14, s), legendFont = px(13, s);
-        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, INK});
+        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK});
         top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
         float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
         float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
@@ -324,9 +282,9 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
         };
         for (double y = 0.0; y <= yTop + 0.5 * yStep; y += yStep) {
             float py = std::round(yPixel(y)) + 0.5f;
-            c.line({plot.x, py}, {plot.right(), py}, stroke, GRID);
-            c.text({plot.x - 5.0f * s, py - tickH / 2}, tickText(y, false),
-                   {FontFace::Sans, tickFont, SOFT_INK, TextAlign::Right});
+            c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
+            c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, false),
+                   {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right});
         }
         size_t groups = std::max<size_t>(spec.groups.size(), 1);
         float groupW = plot.w / groups;
@@ -349,18 +307,18 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
                 if (space != std::string::npos) label[space] = '\n';
             }
             c.text({plot.x + (g + 0.5f) * groupW, plot.bottom() + 4.0f * s}, label,
-                   {FontFace::Sans, tickFont, INK, TextAlign::Center});
+                   {FontFace::Sans, tickFont, CHART_INK, TextAlign::Center});
         }
-        c.strokeRect(plot.expanded(stroke), stroke, SOFT_INK);
+        c.strokeRect(plot.expanded(stroke), stroke, CHART_SOFT_INK);
         Rect box{size.x - legendW - 12.0f * s, plot.y, legendW,
                  spec.series.size() * lineH + 12.0f * s};
         c.fillRect(box, {0.97f, 0.97f, 0.98f, 1.0f});
-        c.strokeRect(box, stroke, GRID);
+        c.strokeRect(box, stroke, CHART_GRID);
         float y = box.y + 6.0f * s;
         for (size_t b = 0; b < spec.series.size(); ++b) {
             c.fillRect({box.x + 8.0f * s, y + 2.0f * s, 22.0f * s, lineH - 4.0f * s},
                        SERIES[b % 4]);
-            c.text({box.x + 36.0f * s, y}, spec.series[b], {FontFace::Sans, legendFont, INK});
+            c.text({box.x + 36.0f * s, y}, spec.series[b], {FontFace::Sans, legendFont, CHART_INK});
             y += lineH;
         }
     });

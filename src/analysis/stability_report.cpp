@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "analysis/csv_lines.h"
 #include "kernel/methods.h"
 #include "scene/input_error.h"
 
@@ -48,60 +49,36 @@ std::string stabilityCsv(std::span<const StabilityRow> rows) {
 
 std::vector<StabilityRow> parseStabilityCsv(std::string_view text, const std::string& source) {
     std::vector<StabilityRow> rows;
-    int line = 0;
-    size_t pos = 0;
-    while (pos < text.size()) {
-        size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) end = text.size();
-        std::string row(text.substr(pos, end - pos));
-        pos = end + 1;
-        ++line;
-        if (!row.empty() && row.back() == '\r') row.pop_back();
-        if (line == 1) {
-            if (row != STABILITY_CSV_HEADER) {
-                throw InputError(source, line,
+    std::vector<CsvLine> lines = csvLines(text);
+    if (lines.empty()) throw InputError(source, 1, "empty file: expected a stability.csv header");
+    for (const CsvLine& l : lines) {
+        if (l.number == 1) {
+            if (l.text != STABILITY_CSV_HEADER) {
+                throw InputError(source, l.number,
                                  "not a stability.csv header: expected '" +
                                      std::string(STABILITY_CSV_HEADER) + "'");
             }
             continue;
         }
-        if (row.empty()) continue;
-        std::vector<std::string> f;
-        size_t start = 0;
-        for (size_t comma; (comma = row.find(',', start)) != std::string::npos; start = comma + 1) {
-            f.push_back(row.substr(start, comma - start));
-        }
-        f.push_back(row.substr(start));
-        if (f.size() != 8) {
-            throw InputError(source, line, "expected 8 fields, got " + std::to_string(f.size()));
-        }
-        auto num = [&](size_t k) {
-            char* endPtr = nullptr;
-            double v = std::strtod(f[k].c_str(), &endPtr);
-            if (f[k].empty() || *endPtr != '\0' || !std::isfinite(v)) {
-                throw InputError(
-                    source, line,
-                    "field " + std::to_string(k + 1) + " '" + f[k] + "' is not a number");
-            }
-            return v;
-        };
-        if (!sweepFromName(f[0])) throw InputError(source, line, "unknown sweep '" + f[0] + "'");
+        if (l.text.empty()) continue;
+        CsvFields f(l.text, source, l.number);
+        if (f.size() != 8) f.fail("expected 8 fields, got " + std::to_string(f.size()));
+        if (!sweepFromName(f.text(0))) f.fail("unknown sweep '" + f.text(0) + "'");
         StabilityRow r;
-        r.sweep = f[0];
-        if (f[1] != "-") {
-            std::optional<int> method = methodFromName(f[1]);
-            if (!method) throw InputError(source, line, "unknown method '" + f[1] + "'");
+        r.sweep = f.text(0);
+        if (f.text(1) != "-") {
+            std::optional<int> method = methodFromName(f.text(1));
+            if (!method) f.fail("unknown method '" + f.text(1) + "'");
             r.method = *method;
         }
-        r.kernel = static_cast<int>(num(2));
-        r.bias = f[3];
-        r.xName = f[4];
-        r.x = num(5);
-        r.metric = f[6];
-        r.y = num(7);
+        r.kernel = f.integer(2);
+        r.bias = f.text(3);
+        r.xName = f.text(4);
+        r.x = f.number(5);
+        r.metric = f.text(6);
+        r.y = f.number(7);
         rows.push_back(r);
     }
-    if (line == 0) throw InputError(source, 1, "empty file: expected a stability.csv header");
     return rows;
 }
 

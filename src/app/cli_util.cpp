@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "kernel/methods.h"
+#include "kernel/settings.h"
 
 namespace pcf {
 
@@ -131,6 +132,11 @@ std::optional<std::string> cliParamsProblem(const PcfParams& prm) {
     std::optional<ParamProblem> p = checkParams(prm);
     if (!p) return std::nullopt;
     return p->setting.empty() ? p->text() : p->say("--" + p->setting);
+}
+
+std::string kernelOptionHelp() {
+    return "kernel size N (" + kernelSizesText(PCF_GATHER) +
+           "; tent: " + kernelSizesText(PCF_TENT) + ")";
 }
 
 }  // namespace pcf

@@ -46,4 +46,7 @@ void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, flo
 // ("tent takes --kernel 3, 5 or 7, not 4"); nullopt when the parameters are valid.
 std::optional<std::string> cliParamsProblem(const PcfParams& prm);
 
+// --kernel's help, the sizes from kernel/settings.h: "kernel size N (1..8; tent: 3, 5 or 7)".
+std::string kernelOptionHelp();
+
 }  // namespace pcf

@@ -30,6 +30,7 @@
 #include "app/render_options.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "kernel/settings.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 
@@ -378,7 +379,8 @@ Command addBenchCommand(CLI::App& app) {
                     "method ids, comma-separated (default: all that combine with --bias)");
     sub->add_option("--kernels", o->kernels,
                     "N for the methods that take one, comma-separated (default 3,5,7; tent runs "
-                    "only 3, 5, 7)");
+                    "only " +
+                        kernelSizesText(PCF_TENT) + ")");
     sub->add_option("--map-sizes", o->mapSizes,
                     "shadow map sizes, comma-separated (default 256,512,1024,2048)");
     sub->add_option("-o,--out", o->out, "output directory (default: bench)");

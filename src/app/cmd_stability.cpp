@@ -27,6 +27,7 @@
 #include "app/render_options.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "kernel/settings.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 
@@ -111,11 +112,14 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
             }
             bool any = false;
             for (int n : kernels) {
-                if (*id == PCF_TENT && n != 3 && n != 5 && n != 7) continue;
+                if (*id == PCF_TENT && !kernelFits(*id, n)) continue;
                 options.methods.push_back({*id, n});
                 any = true;
             }
-            if (!any) throw UsageError(name + " takes --kernels 3, 5 or 7 and none was given");
+            if (!any) {
+                throw UsageError(name + " takes --kernels " + kernelSizesText(*id) +
+                                 " and none was given");
+            }
         }
     }
     if (o.given("--biases")) {

@@ -9,6 +9,7 @@
 #include "app/render_options.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "kernel/settings.h"
 #include "kernel/trace.h"
 #include "kernel/trace_json.h"
 #include "render/image_io.h"
@@ -179,7 +180,7 @@ Command addTraceCommand(CLI::App& app) {
         "dzduv.exr). For --bias normal give --uv and --z of the point already moved "
         "(lightspace.exr holds them)");
     sub->add_option("--method", o->method, "method id (see `pcfscope methods`)");
-    o->kernelOption = sub->add_option("--kernel", o->kernel, "kernel size N (1..8; tent: 3, 5, 7)");
+    o->kernelOption = sub->add_option("--kernel", o->kernel, kernelOptionHelp());
     o->radiusOption = sub->add_option("--radius", o->radius, "poisson: disk radius in texels");
     sub->add_option("--rotation", o->rotationDeg, "poisson: disk rotation in degrees");
     sub->add_flag("--json", o->json, "print the trace as one JSON object");

@@ -6,6 +6,7 @@
 #include "app/session.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "kernel/settings.h"
 #include "lesson/lesson.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"
@@ -43,7 +44,7 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
                                       "grazing, stairs");
     sub->add_option("--scene-file", sceneFile, "scene file (TOML)");
     sub->add_option("--method", method, "PCF method id (see `pcfscope methods`)");
-    sub->add_option("--kernel", kernel, "kernel size N (1..8; tent: 3, 5, 7)");
+    sub->add_option("--kernel", kernel, kernelOptionHelp());
     sub->add_option("--radius", radius, "poisson: disk radius in texels");
     sub->add_flag("--rotate", rotate, "poisson: rotate the disk per pixel");
     addBiasOptions(sub, bias, constantBias, slopeBias, slopeMax, normalOffset, softScale,

@@ -36,15 +36,16 @@ std::string settingsSummary(const LessonSettings& s) {
     if (info.usesKernel) line << " N=" << s.kernel;
     if (s.weights != PCF_WEIGHTS_BOX) line << " " << weightsName(s.weights);
     if (info.usesRadius) line << " R=" << formatNumber(s.radius) << (s.rotate ? " rotated" : "");
-    line << "   bias " << s.bias;
-    if (s.bias != "none") line << " " << formatNumber(s.constantBias);
-    if (s.bias == "slope") {
+    line << "   bias " << biasModeName(s.bias);
+    if (s.bias != BiasMode::None) line << " " << formatNumber(s.constantBias);
+    if (s.bias == BiasMode::Slope) {
         line << " +" << formatNumber(s.slopeBias) << "tan<=" << formatNumber(s.slopeMax);
     }
-    if (s.bias == "normal") line << " k=" << formatNumber(s.normalOffset);
-    if (s.bias == "soft") line << " x" << formatNumber(s.softScale);
-    if (s.bias == "receiver-plane") line << " dz<=" << formatNumber(s.rpdbMax);
-    line << "   cull " << s.cull << "   map " << s.mapSize << " " << s.depthFormat;
+    if (s.bias == BiasMode::Normal) line << " k=" << formatNumber(s.normalOffset);
+    if (s.bias == BiasMode::Soft) line << " x" << formatNumber(s.softScale);
+    if (s.bias == BiasMode::ReceiverPlane) line << " dz<=" << formatNumber(s.rpdbMax);
+    line << "   cull " << cullModeName(s.cull) << "   map " << s.mapSize << " "
+         << depthFormatName(s.depthFormat);
     if (s.originShift != 0.0f || s.snap) {
         line << "   grid +" << formatNumber(s.originShift) << " texel"
              << (s.snap ? " snapped" : "");
@@ -112,18 +113,6 @@ std::string resolveLesson(const std::string& nameOrPath) {
                      "or one of: " + names + ")");
 }
 
-namespace {
-
-// A name the lesson parser or the viewer's keys already checked: an unknown one here is a bug,
-// reported as such instead of silently drawing something else.
-template <class T>
-T checked(std::optional<T> value, const char* what, const std::string& name) {
-    if (!value) throw std::logic_error("unchecked " + std::string(what) + " '" + name + "'");
-    return *value;
-}
-
-}  // namespace
-
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) {
     RenderSettings r;
     r.method = s.method;
@@ -134,15 +123,15 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) 
     r.sigma = s.sigma;
     r.precision = s.precision;
     r.mapSize = s.mapSize;
-    r.depthFormat = checked(depthFormatFromName(s.depthFormat), "depth format", s.depthFormat);
-    r.bias = checked(biasModeFromName(s.bias), "bias", s.bias);
+    r.depthFormat = s.depthFormat;
+    r.bias = s.bias;
     r.constantBias = s.constantBias;
     r.slopeBias = s.slopeBias;
     r.slopeMax = s.slopeMax;
     r.normalOffset = s.normalOffset;
     r.softScale = s.softScale;
     r.rpdbMax = s.rpdbMax;
-    r.shadowCull = checked(cullModeFromName(s.cull), "cull", s.cull);
+    r.shadowCull = s.cull;
     r.frameSize = sceneSize;
     return r;
 }
@@ -455,10 +444,10 @@ std::string Session::stepText() const {
     }
     StepContext ctx = makeStepContext(s, glm::ivec2(mLayout.scene.size()));
     ctx.pixel = mPixel;
-    ctx.bias = mSettings.bias;
+    ctx.bias = std::string(biasModeName(mSettings.bias));
     ctx.constantBias = mSettings.constantBias;
-    ctx.cull = mSettings.cull;
-    ctx.depthFormat = mSettings.depthFormat;
+    ctx.cull = std::string(cullModeName(mSettings.cull));
+    ctx.depthFormat = std::string(depthFormatName(mSettings.depthFormat));
     std::string text = fillText(s.text, *mTrace, ctx);
     // Keys may have changed the state the words were written for; the numbers follow the live
     // state, the sentences cannot. Say so rather than let them disagree in silence.
@@ -635,11 +624,11 @@ std::string Session::stepJson() const {
                      {"kernel", s.kernel},
                      {"radius", settingNumber(s.radius)},
                      {"rotate", s.rotate},
-                     {"bias", s.bias},
+                     {"bias", biasModeName(s.bias)},
                      {"constant_bias", settingNumber(s.constantBias)},
-                     {"cull", s.cull},
+                     {"cull", cullModeName(s.cull)},
                      {"map_size", s.mapSize},
-                     {"depth_format", s.depthFormat}};
+                     {"depth_format", depthFormatName(s.depthFormat)}};
     Json j = {{"lesson", mLesson.name},
               {"title", mLesson.title},
               {"step", mStep + 1},

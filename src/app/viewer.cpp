@@ -43,13 +43,6 @@ std::string freeStem(const std::string& dir, const std::string& base) {
     return stem;
 }
 
-// The bias mode of settings the lesson parser or a key already checked; an unknown name is a bug.
-int checkedBias(const LessonSettings& s) {
-    std::optional<int> mode = biasFromName(s.bias);
-    if (!mode) throw std::logic_error("unchecked bias '" + s.bias + "'");
-    return *mode;
-}
-
 class Viewer {
 public:
     Viewer(const ViewerOptions& o, GlfwWindowContext& window)
@@ -98,8 +91,8 @@ public:
                 s.method = (s.method + (shift ? PCF_METHOD_COUNT - 1 : 1)) % PCF_METHOD_COUNT;
                 s.kernel = fitKernel(s.method, s.kernel);
                 // A bias the new method cannot take (soft on hardware taps) falls back.
-                if (validateBias(checkedBias(s), s.method)) {
-                    s.bias = "constant";
+                if (validateBias(static_cast<int>(s.bias), s.method)) {
+                    s.bias = BiasMode::Constant;
                 }
                 mSession.setSettings(s);
                 break;
@@ -123,11 +116,11 @@ public:
             case GLFW_KEY_B: {
                 // Every bias mode in turn (shift: backwards), skipping those the method cannot
                 // take (kernel/bias.h: validateBias).
-                int mode = checkedBias(s);
+                int mode = static_cast<int>(s.bias);
                 do {
                     mode = (mode + (shift ? PCF_BIAS_COUNT - 1 : 1)) % PCF_BIAS_COUNT;
                 } while (validateBias(mode, s.method));
-                s.bias = std::string(biasName(mode));
+                s.bias = static_cast<BiasMode>(mode);
                 mSession.setSettings(s);
                 break;
             }

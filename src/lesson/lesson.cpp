@@ -360,10 +360,11 @@ class LessonParser {
         }
         if (const toml::node* n = table.get("bias")) {
             std::string bias = string(*n, name("bias"));
-            if (!biasFromName(bias)) {
+            std::optional<BiasMode> mode = biasModeFromName(bias);
+            if (!mode) {
                 fail(*n, "unknown bias mode '" + bias + "' (known: " + biasNameList() + ")");
             }
-            s.bias = bias;
+            s.bias = *mode;
             lines.bias = lineOf(*n);
         }
         // The bias parameters, range-checked as the command line checks them (kernel/bias.h).
@@ -392,11 +393,12 @@ class LessonParser {
         biasParam("rpdb_max", s.rpdbMax);
         if (const toml::node* n = table.get("cull")) {
             std::string cull = string(*n, name("cull"));
-            if (!cullModeFromName(cull)) {
+            std::optional<CullMode> mode = cullModeFromName(cull);
+            if (!mode) {
                 fail(*n, "unknown cull mode '" + cull + "' (known: " +
                              std::string(CULL_MODE_NAMES) + ")");
             }
-            s.cull = cull;
+            s.cull = *mode;
         }
         if (const toml::node* n = table.get("map_size")) {
             int64_t size = integer(*n, name("map_size"));
@@ -419,7 +421,7 @@ class LessonParser {
                 fail(*n, "unknown depth format '" + format + "' (known: " +
                              std::string(DEPTH_FORMAT_NAMES) + ")");
             }
-            s.depthFormat = format;
+            s.depthFormat = *f;
         }
         if (const toml::node* n = table.get("precision")) {
             std::optional<int> p = precisionFromName(string(*n, name("precision")));
@@ -470,7 +472,7 @@ class LessonParser {
     // The checks that need the whole state: the kernel a method takes.
     void checkState(const toml::table& step, const std::string& what, const LessonSettings& s,
                     const SettingLines& lines) const {
-        if (auto why = validateBias(biasFromName(s.bias).value_or(PCF_BIAS_CONSTANT), s.method)) {
+        if (auto why = validateBias(static_cast<int>(s.bias), s.method)) {
             int line = std::max(lines.bias, lines.method);
             throw InputError(mSource, line > 0 ? line : lineOf(step), what + ": " + *why);
         }
@@ -545,7 +547,7 @@ float LessonSettings::depthBias() const { return biasParams().baseBias(); }
 
 BiasParams LessonSettings::biasParams() const {
     BiasParams b;
-    b.mode = biasFromName(bias).value_or(PCF_BIAS_CONSTANT);
+    b.mode = static_cast<int>(bias);
     b.constant = constantBias;
     b.slope = slopeBias;
     b.slopeMax = slopeMax;

@@ -77,23 +77,24 @@ namespace pcf {
 // Picked pixels are given in this frame and scaled to the frame actually rendered.
 constexpr glm::ivec2 LESSON_FRAME_SIZE{1280, 720};
 
-// The renderer's state at one step, fully resolved. Bias, cull and depth format are validated
-// names (kernel/settings.h parses them); the method is its kernel id (PCF_NEAREST ..).
+// The renderer's state at one step, fully resolved. Bias, cull and depth format are the enums
+// of kernel/settings.h, parsed from their names when the file is read; the method is its kernel
+// id (PCF_NEAREST ..).
 struct LessonSettings {
     int method = PCF_GATHER;
     int kernel = 3;
     float radius = 1.0f;              // poisson, texels
     bool rotate = false;              // poisson: rotate the disk per pixel
-    std::string bias = "constant";    // a bias mode name (kernel/bias.h)
+    BiasMode bias = BiasMode::Constant;          // key `bias`, by name (kernel/settings.h)
     float constantBias = DEFAULT_CONSTANT_BIAS;  // light depth units: ref = z - constantBias
     float slopeBias = DEFAULT_SLOPE_BIAS;        // slope_bias: S of the slope mode
     float slopeMax = DEFAULT_SLOPE_MAX;          // slope_max: its cap
     float normalOffset = DEFAULT_NORMAL_OFFSET;  // normal_offset: texels
     float softScale = DEFAULT_SOFT_SCALE;        // soft_scale
     float rpdbMax = DEFAULT_RPDB_MAX;            // rpdb_max: receiver-plane's cap on dz/duv
-    std::string cull = "back";        // shadow pass culling: "back", "front" or "none"
+    CullMode cull = CullMode::Back;              // shadow pass culling: "back", "front" or "none"
     int mapSize = 1024;               // texels per side
-    std::string depthFormat = "32f";  // "16", "24" or "32f"
+    DepthFormat depthFormat = DepthFormat::D32F;  // "16", "24" or "32f"
     int precision = 0;                // PCF_PRECISION_EXACT or _HW8 (key `precision`)
     int weights = 0;                  // PCF_WEIGHTS_* (key `weights`)
     float sigma = 1.0f;               // gaussian weights, texels (key `sigma`)

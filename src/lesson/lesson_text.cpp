@@ -363,10 +363,10 @@ std::optional<PlaceholderProblem> scan(std::string_view text, OnLiteral onLitera
 StepContext makeStepContext(const LessonStep& step, glm::ivec2 frameSize) {
     StepContext ctx;
     ctx.pixel = scalePixel(step.settings.pixel, frameSize);
-    ctx.bias = step.settings.bias;
+    ctx.bias = std::string(biasModeName(step.settings.bias));
     ctx.constantBias = step.settings.constantBias;
-    ctx.cull = step.settings.cull;
-    ctx.depthFormat = step.settings.depthFormat;
+    ctx.cull = std::string(cullModeName(step.settings.cull));
+    ctx.depthFormat = std::string(depthFormatName(step.settings.depthFormat));
     return ctx;
 }
 

@@ -1,0 +1,24 @@
+#include "analysis/chart_axes.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace pcf {
+
+double chartNiceStep(double rough) {
+    double p = std::pow(10.0, std::floor(std::log10(rough)));
+    double m = rough / p;
+    return (m <= 1.0 ? 1.0 : m <= 2.0 ? 2.0 : m <= 5.0 ? 5.0 : 10.0) * p;
+}
+
+std::string chartTickText(double v, bool percent) {
+    char buf[32];
+    if (percent) {
+        std::snprintf(buf, sizeof buf, "%g%%", std::round(v * 1e4) / 1e2);
+    } else {
+        std::snprintf(buf, sizeof buf, "%g", v);
+    }
+    return buf;
+}
+
+}  // namespace pcf

@@ -1,0 +1,51 @@
+// chart_axes.h: what the stability charts (stability_chart.h) and the speed chart (speed_chart.h)
+// share: the ink and grid colours, round tick steps and their labels, and the offscreen target a
+// chart is painted into and read back from.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "overlay/canvas.h"
+#include "overlay/rect.h"
+#include "render/gl_objects.h"
+
+namespace pcf {
+
+inline const Colour CHART_WHITE{1.0f, 1.0f, 1.0f, 1.0f};        // the background
+inline const Colour CHART_INK{0.13f, 0.13f, 0.15f, 1.0f};       // titles, labels, legend
+inline const Colour CHART_SOFT_INK{0.35f, 0.35f, 0.38f, 1.0f};  // subtitles, ticks, frames
+inline const Colour CHART_GRID{0.88f, 0.88f, 0.9f, 1.0f};       // grid lines
+
+// A round step (1, 2 or 5 times a power of ten) at or above `rough` (> 0).
+double chartNiceStep(double rough);
+
+// A tick's label: %g, or with `percent` the share as a percentage ("12.5%").
+std::string chartTickText(double v, bool percent = false);
+
+// Draws into a white offscreen target of `size` and reads it back (RGBA8, rows top-down as
+// readPixelsRgba8 returns them); `paint` records the commands on a Canvas. The caller's framebuffer
+// bindings are restored.
+template <class Paint>
+std::vector<uint8_t> drawChartOffscreen(glm::ivec2 size, Paint&& paint) {
+    GLint previousDraw = 0, previousRead = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDraw);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousRead);
+    OffscreenTarget target = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, &CHART_WHITE.x);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer.id());
+    {
+        Canvas c;
+        c.begin(size);
+        paint(c);
+        c.flush();
+    }
+    std::vector<uint8_t> rgba =
+        readPixelsRgba8(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, size.x, size.y);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousDraw));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previousRead));
+    return rgba;
+}
+
+}  // namespace pcf
