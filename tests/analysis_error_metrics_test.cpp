@@ -2,7 +2,10 @@
 // layout and drawing, on small hand-made inputs whose answers are known.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <sstream>
 
@@ -267,6 +270,41 @@ TEST(SpeedChart, LayoutPutsTimeOnALogAxisAndErrorOnALinearOne) {
             EXPECT_TRUE(L.labels[a].intersect(L.labels[b]).empty()) << a << " " << b;
         }
         for (glm::vec2 p : L.points) EXPECT_FALSE(L.labels[a].contains(p)) << a;
+    }
+}
+
+// The shipped chart's 68 dots in a lesson's scene panel (617 x 347 at 1280x720 presentation):
+// only the labels that find a clean spot are drawn, so none overlaps another or covers a dot;
+// the front's and the highlighted dots' labels are drawn whatever the crowd.
+TEST(SpeedChart, ACrowdedChartDrawsOnlyLabelsThatFit) {
+    std::ifstream in(PCFSCOPE_SOURCE_DIR "/lessons/figures/bench.csv");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<BenchRow> rows = parseBenchCsv(text, "bench.csv");
+    ASSERT_GT(rows.size(), 40u);
+    std::vector<size_t> gather3 = chartRowsMatching(rows, "gather3");
+    ASSERT_FALSE(gather3.empty());
+    for (glm::ivec2 size : {glm::ivec2(617, 347), glm::ivec2(1280, 720)}) {
+        SpeedChartLayout L =
+            layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse, gather3);
+        auto needed = [&](size_t k) {
+            return std::find(L.front.begin(), L.front.end(), k) != L.front.end() ||
+                   std::find(gather3.begin(), gather3.end(), k) != gather3.end();
+        };
+        size_t shown = 0;
+        for (size_t a = 0; a < rows.size(); ++a) {
+            if (!L.labelShown[a]) continue;
+            ++shown;
+            for (size_t b = a + 1; b < rows.size(); ++b) {
+                bool clash = L.labelShown[b] && !L.labels[a].intersect(L.labels[b]).empty();
+                if (clash) {
+                    EXPECT_TRUE(needed(a) && needed(b)) << size.x << ": " << a << " " << b;
+                }
+            }
+        }
+        for (size_t k : L.front) EXPECT_TRUE(L.labelShown[k]) << size.x << ": front " << k;
+        for (size_t k : gather3) EXPECT_TRUE(L.labelShown[k]) << size.x << ": gather3 " << k;
+        // Room decides how many of the rest are named: more on the larger chart.
+        if (size.x == 617) EXPECT_LT(shown, rows.size()) << "a crowded chart drops labels";
     }
 }
 

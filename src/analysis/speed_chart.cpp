@@ -131,7 +131,8 @@ double chartAccuracy(const BenchRow& row, ChartAccuracy accuracy) {
 }
 
 SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
-                                  ChartTiming timing, ChartAccuracy accuracy) {
+                                  ChartTiming timing, ChartAccuracy accuracy,
+                                  std::span<const size_t> keepLabels) {
     if (size.x < 64 || size.y < 64) {
         throw std::invalid_argument("layoutSpeedChart: the chart needs at least 64 x 64 pixels");
     }
@@ -237,13 +238,22 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     }
     L.front = paretoFront(frontPoints, PARETO_ERROR_TOLERANCE);
     L.labels.assign(rows.size(), Rect{});
+    L.labelShown.assign(rows.size(), false);
+    std::vector<bool> needLabel(rows.size(), false);
+    for (size_t k : L.front) needLabel[k] = true;
+    for (size_t k : keepLabels) {
+        if (k < rows.size()) needLabel[k] = true;
+    }
 
     // Greedy placement: the front's labels first, then the rest; each takes the first spot
     // around its dot (right, left, above, below, the diagonals; then the same farther out) that
     // overlaps no placed label, no dot and stays in the plot, else the spot that overlaps least.
     std::vector<size_t> order = L.front;
-    for (size_t k = 0; k < rows.size(); ++k) {
-        if (std::find(L.front.begin(), L.front.end(), k) == L.front.end()) order.push_back(k);
+    for (bool needed : {true, false}) {  // then the kept rows, then the rest
+        for (size_t k = 0; k < rows.size(); ++k) {
+            bool onFront = std::find(L.front.begin(), L.front.end(), k) != L.front.end();
+            if (!onFront && needLabel[k] == needed) order.push_back(k);
+        }
     }
     float dotR = 4.5f * s;
     std::vector<Rect> dots;
@@ -254,6 +264,7 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
         glm::vec2 p = L.points[k];
         Rect best;
         float bestCost = 1e30f;
+        float bestRing = 0.0f;
         for (float ring : {1.0f, 2.2f, 3.6f}) {
             float r = (dotR + 3.0f * s) * ring;
             float d = 0.7f * r;
@@ -271,12 +282,19 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
                 cost += ring;  // prefer the nearest ring among equals
                 if (cost < bestCost) {
                     bestCost = cost;
+                    bestRing = ring;
                     best = box;
                 }
             }
             if (bestCost < 4.0f) break;  // a clean spot on this ring (cost = the ring term)
         }
+        // A label that finds no clean spot is left out, unless the front or the caller needs
+        // it: a crowd of overlapping names reads as noise on a projector; the dot keeps its
+        // method's colour, which the legend names.
+        bool needed = k < needLabel.size() && needLabel[k];
+        if (bestCost - bestRing > 0.5f && !needed) continue;
         L.labels[k] = best;
+        L.labelShown[k] = true;
         placed.push_back(best);
     }
     return L;
@@ -285,7 +303,7 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
 std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                     const SpeedChartText& text, ChartTiming timing,
                                     ChartAccuracy accuracy) {
-    SpeedChartLayout L = layoutSpeedChart(rows, size, timing, accuracy);
+    SpeedChartLayout L = layoutSpeedChart(rows, size, timing, accuracy, text.highlight);
     float s = L.scale;
     Fonts f = fontsFor(s);
 
@@ -351,6 +369,7 @@ std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 s
         c.popClip();
         // Labels, with a thin leader where a crowd pushed one away from its dot.
         for (size_t k = 0; k < rows.size(); ++k) {
+            if (!L.labelShown[k]) continue;
             const Rect& box = L.labels[k];
             glm::vec2 p = L.points[k];
             glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());

@@ -62,6 +62,9 @@ struct SpeedChartLayout {
     std::vector<glm::vec2> errorBars;
     std::vector<std::string> labelTexts;  // per row
     std::vector<Rect> labels;             // per row: where its label's box goes
+    // per row: whether its label is drawn. The front's and the kept rows' always are; any other
+    // only where it finds a spot that overlaps no other label, no dot and stays in the plot.
+    std::vector<bool> labelShown;
     std::vector<size_t> front;            // rows on the Pareto front, fastest first
     std::vector<int> legendMethods;       // methods present, in the rows' order of appearance
     Rect legend;
@@ -83,7 +86,8 @@ glm::vec4 methodColour(int method);
 // The Pareto front is of time against the chosen accuracy.
 SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                   ChartTiming timing = ChartTiming::Scene,
-                                  ChartAccuracy accuracy = ChartAccuracy::EdgeRmse);
+                                  ChartAccuracy accuracy = ChartAccuracy::EdgeRmse,
+                                  std::span<const size_t> keepLabels = {});
 
 // The chart as RGBA8, rows top-down (for writePngRgba8), size.x * size.y * 4 bytes. Needs a
 // current OpenGL 4.5 context; leaves its framebuffer bindings as it found them.
