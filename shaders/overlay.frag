@@ -35,6 +35,12 @@ float coverage(int slot, ivec2 texel) {
 }
 
 void main() {
-    float a = vSlot < 0 ? 1.0 : coverage(vSlot, ivec2(floor(vUv)));
+    // Shapes skip the atlas switch entirely: on llvmpipe a branch taken by no fragment of a
+    // block costs nothing, while the switch would otherwise run for every shape pixel.
+    if (vSlot < 0) {
+        outColour = vColour;
+        return;
+    }
+    float a = coverage(vSlot, ivec2(floor(vUv)));
     outColour = vec4(vColour.rgb, vColour.a * a);
 }
