@@ -422,6 +422,9 @@ float Canvas::textBox(const Rect& box, std::string_view utf8, const TextStyle& s
 void Canvas::createGlObjects() {
     mProgram = buildProgram({{GL_VERTEX_SHADER, {"overlay.vert"}, "", {}},
                              {GL_FRAGMENT_SHADER, {"overlay.frag"}, "", {}}});
+    mSingleAtlasProgram =
+        buildProgram({{GL_VERTEX_SHADER, {"overlay.vert"}, "", {}},
+                      {GL_FRAGMENT_SHADER, {"overlay.frag"}, "#define SINGLE_ATLAS 1\n", {}}});
     mVertexBuffer = createBuffer();
     mVertexArray = createVertexArray();
     GLuint vao = mVertexArray.id();
@@ -503,13 +506,21 @@ void Canvas::flush() {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glViewport(0, 0, mTargetSize.x, mTargetSize.y);
-    glUseProgram(mProgram.id());
-    glProgramUniform2f(mProgram.id(), 0, static_cast<float>(mTargetSize.x),
-                       static_cast<float>(mTargetSize.y));
+    for (const GlProgram* p : {&mProgram, &mSingleAtlasProgram}) {
+        glProgramUniform2f(p->id(), 0, static_cast<float>(mTargetSize.x),
+                           static_cast<float>(mTargetSize.y));
+    }
+    GLuint bound = 0;
     glBindVertexArray(mVertexArray.id());
     for (const Batch& b : mBatches) {
         if (b.count == 0) continue;
         if (b.clip.z <= b.clip.x || b.clip.w <= b.clip.y) continue;  // clipped away entirely
+        // A draw with at most one atlas reads slot 0 only: the single-fetch variant.
+        GLuint program = b.atlasCount <= 1 ? mSingleAtlasProgram.id() : mProgram.id();
+        if (program != bound) {
+            glUseProgram(program);
+            bound = program;
+        }
         for (int k = 0; k < b.atlasCount; ++k) {
             glBindTextureUnit(k, mAtlasTextures.at(b.atlases[k]).texture.id());
             // A sampler object left bound by someone else could make the texture incomplete.

@@ -160,6 +160,7 @@ class Canvas {
     int mLastFlushDrawCalls = 0;
 
     GlProgram mProgram;
+    GlProgram mSingleAtlasProgram;  // overlay.frag with SINGLE_ATLAS: draws of one atlas
     GlVertexArray mVertexArray;
     GlBuffer mVertexBuffer;
     std::unordered_map<const GlyphAtlas*, AtlasTexture> mAtlasTextures;
