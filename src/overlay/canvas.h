@@ -113,7 +113,8 @@ class Canvas {
     // framebuffer, with glViewport(0, 0, targetSize), then forgets it (the clip stack stays).
     // Restores the GL state it changed. Throws std::logic_error before begin().
     void flush();
-    // Draw calls the last flush() issued.
+    // Draw calls the last flush() issued, counting each scissored clear that replaced a large
+    // opaque rect (see tryClearRect) as one: the GL commands that wrote pixels.
     int lastFlushDrawCalls() const { return mLastFlushDrawCalls; }
     // Vertices recorded and not yet flushed (6 per rect, 6 per glyph...).
     size_t pendingVertexCount() const { return mVertices.size(); }
@@ -154,8 +155,17 @@ class Canvas {
     void uploadAtlas(const GlyphAtlas& atlas);
 
     glm::ivec2 mTargetSize{0, 0};
+    // An opaque, pixel-aligned rect that no earlier vertex of this flush touches: flush()
+    // clears it (scissored) before drawing, in record order, instead of blending its pixels.
+    struct ClearRect {
+        glm::ivec4 box;  // x0, y0, x1, y1 in pixels, top-left origin, already clipped
+        Colour colour;
+    };
+    bool tryClearRect(const Rect& r, const Colour& colour);
+
     std::vector<Vertex> mVertices;
     std::vector<Batch> mBatches;
+    std::vector<ClearRect> mClears;
     std::vector<glm::ivec4> mClipStack;
     int mLastFlushDrawCalls = 0;
 
