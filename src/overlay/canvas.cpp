@@ -222,7 +222,7 @@ void Canvas::solidQuad(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d, const
 // if nothing recorded before it in this flush overlaps it (bounding boxes, one pixel of margin).
 bool Canvas::tryClearRect(const Rect& r, const Colour& colour) {
     constexpr float MIN_CLEAR_AREA = 4096.0f;
-    if (colour.a != 1.0f || r.w * r.h < MIN_CLEAR_AREA) return false;
+    if (colour.a != 1.0f) return false;
     glm::vec4 edges(r.x, r.y, r.right(), r.bottom());
     if (edges != glm::floor(edges)) return false;
     glm::ivec4 box(edges);
@@ -231,6 +231,9 @@ bool Canvas::tryClearRect(const Rect& r, const Colour& colour) {
     box = {std::max(box.x, clip.x), std::max(box.y, clip.y), std::min(box.z, clip.z),
            std::min(box.w, clip.w)};
     if (box.z <= box.x || box.w <= box.y) return true;  // clipped away: nothing to draw
+    if (static_cast<float>(box.z - box.x) * static_cast<float>(box.w - box.y) < MIN_CLEAR_AREA) {
+        return false;
+    }
     glm::vec2 lo = glm::vec2(box.x, box.y) - 1.0f;
     glm::vec2 hi = glm::vec2(box.z, box.w) + 1.0f;
     for (size_t i = 0; i + 2 < mVertices.size(); i += 3) {
@@ -512,6 +515,7 @@ void Canvas::flush() {
         throw std::logic_error("Canvas::flush before Canvas::begin");
     }
     mLastFlushDrawCalls = 0;
+    mLastFlushClears = 0;
     if (mVertices.empty() && mClears.empty()) {
         mBatches.clear();
         return;
@@ -545,7 +549,7 @@ void Canvas::flush() {
         // Scissor boxes count rows from the bottom.
         glScissor(c.box.x, mTargetSize.y - c.box.w, c.box.z - c.box.x, c.box.w - c.box.y);
         glClearBufferfv(GL_COLOR, 0, &c.colour.x);
-        ++mLastFlushDrawCalls;
+        ++mLastFlushClears;
     }
     mClears.clear();
     for (const Batch& b : mBatches) {

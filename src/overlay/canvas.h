@@ -113,9 +113,10 @@ class Canvas {
     // framebuffer, with glViewport(0, 0, targetSize), then forgets it (the clip stack stays).
     // Restores the GL state it changed. Throws std::logic_error before begin().
     void flush();
-    // Draw calls the last flush() issued, counting each scissored clear that replaced a large
-    // opaque rect (see tryClearRect) as one: the GL commands that wrote pixels.
+    // Draw calls the last flush() issued.
     int lastFlushDrawCalls() const { return mLastFlushDrawCalls; }
+    // Scissored clears the last flush() issued in place of large opaque rects (tryClearRect).
+    int lastFlushClears() const { return mLastFlushClears; }
     // Vertices recorded and not yet flushed (6 per rect, 6 per glyph...).
     size_t pendingVertexCount() const { return mVertices.size(); }
 
@@ -168,6 +169,7 @@ class Canvas {
     std::vector<ClearRect> mClears;
     std::vector<glm::ivec4> mClipStack;
     int mLastFlushDrawCalls = 0;
+    int mLastFlushClears = 0;
 
     GlProgram mProgram;
     GlProgram mSingleAtlasProgram;  // overlay.frag with SINGLE_ATLAS: draws of one atlas
