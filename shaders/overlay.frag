@@ -12,7 +12,12 @@ layout(binding = 0) uniform sampler2D uAtlas[8];
 
 layout(location = 0) out vec4 outColour;
 
+// SINGLE_ATLAS: the variant for draws with one atlas (most of them). llvmpipe runs every case
+// of the switch below for each glyph pixel, masked, so one fetch instead of eight is far cheaper.
 float coverage(int slot, ivec2 texel) {
+#ifdef SINGLE_ATLAS
+    return texelFetch(uAtlas[0], texel, 0).r;
+#else
     switch (slot) {
         case 0:
             return texelFetch(uAtlas[0], texel, 0).r;
@@ -32,9 +37,16 @@ float coverage(int slot, ivec2 texel) {
             return texelFetch(uAtlas[7], texel, 0).r;
     }
     return 1.0;
+#endif
 }
 
 void main() {
-    float a = vSlot < 0 ? 1.0 : coverage(vSlot, ivec2(floor(vUv)));
+    // Shapes skip the atlas switch entirely: on llvmpipe a branch taken by no fragment of a
+    // block costs nothing, while the switch would otherwise run for every shape pixel.
+    if (vSlot < 0) {
+        outColour = vColour;
+        return;
+    }
+    float a = coverage(vSlot, ivec2(floor(vUv)));
     outColour = vec4(vColour.rgb, vColour.a * a);
 }

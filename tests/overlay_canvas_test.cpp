@@ -9,11 +9,11 @@
 #include <memory>
 #include <string>
 
+#include "image_read.h"
 #include "overlay/canvas.h"
 #include "render/gl_context.h"
 #include "render/gl_objects.h"
 #include "render/image_io.h"
-#include "image_read.h"
 
 namespace pcf {
 namespace {
@@ -410,6 +410,30 @@ TEST_F(OverlayCanvas, ClipLimitsDrawingToTheClipRect) {
                   },
                   {255, 0, 0, 255});
     EXPECT_EQ(drawCalls, 2);
+}
+
+// Large opaque rects become scissored clears that run before the flush's draws; they must keep
+// the painter's order: one drawn over an earlier shape still covers it, a later shape still
+// covers the rect.
+TEST_F(OverlayCanvas, LargeOpaqueRectsKeepThePaintersOrder) {
+    const Colour green{0.0f, 1.0f, 0.0f, 1.0f};
+    Image image = render(200, 100, [&](Canvas& c) {
+        c.fillRect({10, 10, 20, 20}, green);   // small: drawn
+        c.fillRect({0, 0, 100, 100}, RED);     // over the green: must hide it
+        c.fillRect({120, 0, 80, 100}, RED);    // touches nothing before it
+        c.fillRect({150, 40, 10, 10}, green);  // over that red: must show
+    });
+    int wrong = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            bool shown = x >= 150 && x < 160 && y >= 40 && y < 50;
+            Rgba want = shown                   ? Rgba(0, 255, 0, 255)
+                        : (x < 100 || x >= 120) ? Rgba(255, 0, 0, 255)
+                                                : OPAQUE_BLACK;
+            if (image.at(x, y) != want) ++wrong;
+        }
+    }
+    EXPECT_EQ(wrong, 0);
 }
 
 TEST_F(OverlayCanvas, PopClipWithoutPushThrows) {

@@ -318,6 +318,25 @@ void Session::setPresentation(bool on) {
     mThumbnailDirty = true;
 }
 
+namespace {
+
+// Uploads a top-down RGBA8 image with its rows reversed, so that texture row 0 is the image's
+// bottom row, as GL counts rows. The frame then takes it with an unflipped blit, which llvmpipe
+// copies as memory instead of running a shader over every pixel; the bytes are the same.
+void uploadBottomUp(const OffscreenTarget& target, int w, int h, const std::vector<uint8_t>& rgba) {
+    std::vector<uint8_t> flipped(rgba.size());
+    size_t row = static_cast<size_t>(w) * 4;
+    for (int y = 0; y < h; ++y) {
+        std::copy_n(
+            rgba.begin() + static_cast<std::ptrdiff_t>(row * static_cast<size_t>(h - 1 - y)), row,
+            flipped.begin() + static_cast<std::ptrdiff_t>(row * static_cast<size_t>(y)));
+    }
+    glTextureSubImage2D(target.colors[0].id(), 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE,
+                        flipped.data());
+}
+
+}  // namespace
+
 void Session::blitThumbnail() {
     Rect r = thumbnailRect(mLayout, mPresentation);
     int side = static_cast<int>(r.w);
@@ -325,17 +344,16 @@ void Session::blitThumbnail() {
     if (mThumbnailDirty || mThumbnail.width != side) {
         mThumbnail = createOffscreenTarget(side, side, {GL_RGBA8});
         std::vector<uint8_t> rgba = thumbnailImage(mMap, side);
-        glTextureSubImage2D(mThumbnail.colors[0].id(), 0, 0, 0, side, side, GL_RGBA,
-                            GL_UNSIGNED_BYTE, rgba.data());
+        uploadBottomUp(mThumbnail, side, side, rgba);
         mThumbnailDirty = false;
     }
-    // Texture row 0 holds the image's top row; swapped destination rows put it on top.
+    // Texture row 0 holds the image's bottom row (uploadBottomUp): a straight copy.
     int frameH = mLayout.frameSize.y;
     int x = static_cast<int>(r.x);
     int top = frameH - static_cast<int>(r.y);
     glNamedFramebufferReadBuffer(mThumbnail.framebuffer.id(), GL_COLOR_ATTACHMENT0);
     glBlitNamedFramebuffer(mThumbnail.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, side, side,
-                           x, top, x + side, top - side, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                           x, top - side, x + side, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 void Session::setHelp(bool on) { mHelp = on; }
@@ -375,15 +393,14 @@ void Session::blitChart(const std::string& csvPath) {
     if (key != mChartKey) {
         std::vector<uint8_t> rgba = drawStepChart(step, size);
         mChart = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
-        glTextureSubImage2D(mChart.colors[0].id(), 0, 0, 0, size.x, size.y, GL_RGBA,
-                            GL_UNSIGNED_BYTE, rgba.data());
+        uploadBottomUp(mChart, size.x, size.y, rgba);
         mChartKey = key;
     }
-    // Texture row 0 holds the chart's top row; swapped destination rows put it on top.
+    // Texture row 0 holds the chart's bottom row (uploadBottomUp): a straight copy.
     int frameH = mLayout.frameSize.y;
     glNamedFramebufferReadBuffer(mChart.framebuffer.id(), GL_COLOR_ATTACHMENT0);
     glBlitNamedFramebuffer(mChart.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, size.x, size.y,
-                           0, frameH, size.x, frameH - size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                           0, frameH - size.y, size.x, frameH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 void Session::renderScene() {
@@ -523,15 +540,14 @@ void Session::blitHeatmap() {
             }
         }
         mHeat = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
-        glTextureSubImage2D(mHeat.colors[0].id(), 0, 0, 0, size.x, size.y, GL_RGBA,
-                            GL_UNSIGNED_BYTE, rgba.data());
+        uploadBottomUp(mHeat, size.x, size.y, rgba);
         mHeatDirty = false;
     }
-    // Texture row 0 holds the image's top row; swapped destination rows put it on top.
+    // Texture row 0 holds the image's bottom row (uploadBottomUp): a straight copy.
     int frameH = mLayout.frameSize.y;
     glNamedFramebufferReadBuffer(mHeat.framebuffer.id(), GL_COLOR_ATTACHMENT0);
     glBlitNamedFramebuffer(mHeat.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, size.x, size.y,
-                           0, frameH, size.x, frameH - size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                           0, frameH - size.y, size.x, frameH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 // The legend in the scene's bottom-left corner: the colour ramp from 1/16 to 16 screen pixels

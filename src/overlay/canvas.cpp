@@ -132,6 +132,7 @@ void Canvas::begin(glm::ivec2 targetSize) {
     mVertices.clear();
     mBatches.clear();
     mClipStack.clear();
+    mClears.clear();
 }
 
 Canvas::Batch& Canvas::currentBatch() {
@@ -215,8 +216,39 @@ void Canvas::solidQuad(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d, const
     triangle(va, vc, {d, {}, cd, -1});
 }
 
+// Large opaque rects (the neighbourhood's cells) cost llvmpipe a blended fragment each. One whose
+// edges sit on whole pixels covers exactly the pixels a scissored clear does, and with alpha 1
+// the blend writes the colour itself, so the clear gives the same bytes. It may run first only
+// if nothing recorded before it in this flush overlaps it (bounding boxes, one pixel of margin).
+bool Canvas::tryClearRect(const Rect& r, const Colour& colour) {
+    constexpr float MIN_CLEAR_AREA = 4096.0f;
+    if (colour.a != 1.0f) return false;
+    glm::vec4 edges(r.x, r.y, r.right(), r.bottom());
+    if (edges != glm::floor(edges)) return false;
+    glm::ivec4 box(edges);
+    glm::ivec4 clip =
+        mClipStack.empty() ? glm::ivec4(0, 0, mTargetSize.x, mTargetSize.y) : mClipStack.back();
+    box = {std::max(box.x, clip.x), std::max(box.y, clip.y), std::min(box.z, clip.z),
+           std::min(box.w, clip.w)};
+    if (box.z <= box.x || box.w <= box.y) return true;  // clipped away: nothing to draw
+    if (static_cast<float>(box.z - box.x) * static_cast<float>(box.w - box.y) < MIN_CLEAR_AREA) {
+        return false;
+    }
+    glm::vec2 lo = glm::vec2(box.x, box.y) - 1.0f;
+    glm::vec2 hi = glm::vec2(box.z, box.w) + 1.0f;
+    for (size_t i = 0; i + 2 < mVertices.size(); i += 3) {
+        glm::vec2 a = mVertices[i].pos, b = mVertices[i + 1].pos, c = mVertices[i + 2].pos;
+        glm::vec2 tmin = glm::min(a, glm::min(b, c));
+        glm::vec2 tmax = glm::max(a, glm::max(b, c));
+        if (tmin.x < hi.x && tmax.x > lo.x && tmin.y < hi.y && tmax.y > lo.y) return false;
+    }
+    mClears.push_back({box, colour});
+    return true;
+}
+
 void Canvas::fillRect(const Rect& r, const Colour& colour) {
     if (r.empty()) return;
+    if (tryClearRect(r, colour)) return;
     glm::vec2 p0(r.x, r.y);
     glm::vec2 p1(r.right(), r.bottom());
     solidQuad(p0, {p1.x, p0.y}, p1, {p0.x, p1.y}, colour, colour, colour, colour);
@@ -422,6 +454,9 @@ float Canvas::textBox(const Rect& box, std::string_view utf8, const TextStyle& s
 void Canvas::createGlObjects() {
     mProgram = buildProgram({{GL_VERTEX_SHADER, {"overlay.vert"}, "", {}},
                              {GL_FRAGMENT_SHADER, {"overlay.frag"}, "", {}}});
+    mSingleAtlasProgram =
+        buildProgram({{GL_VERTEX_SHADER, {"overlay.vert"}, "", {}},
+                      {GL_FRAGMENT_SHADER, {"overlay.frag"}, "#define SINGLE_ATLAS 1\n", {}}});
     mVertexBuffer = createBuffer();
     mVertexArray = createVertexArray();
     GLuint vao = mVertexArray.id();
@@ -480,7 +515,8 @@ void Canvas::flush() {
         throw std::logic_error("Canvas::flush before Canvas::begin");
     }
     mLastFlushDrawCalls = 0;
-    if (mVertices.empty()) {
+    mLastFlushClears = 0;
+    if (mVertices.empty() && mClears.empty()) {
         mBatches.clear();
         return;
     }
@@ -503,13 +539,28 @@ void Canvas::flush() {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glViewport(0, 0, mTargetSize.x, mTargetSize.y);
-    glUseProgram(mProgram.id());
-    glProgramUniform2f(mProgram.id(), 0, static_cast<float>(mTargetSize.x),
-                       static_cast<float>(mTargetSize.y));
+    for (const GlProgram* p : {&mProgram, &mSingleAtlasProgram}) {
+        glProgramUniform2f(p->id(), 0, static_cast<float>(mTargetSize.x),
+                           static_cast<float>(mTargetSize.y));
+    }
+    GLuint bound = 0;
     glBindVertexArray(mVertexArray.id());
+    for (const ClearRect& c : mClears) {
+        // Scissor boxes count rows from the bottom.
+        glScissor(c.box.x, mTargetSize.y - c.box.w, c.box.z - c.box.x, c.box.w - c.box.y);
+        glClearBufferfv(GL_COLOR, 0, &c.colour.x);
+        ++mLastFlushClears;
+    }
+    mClears.clear();
     for (const Batch& b : mBatches) {
         if (b.count == 0) continue;
         if (b.clip.z <= b.clip.x || b.clip.w <= b.clip.y) continue;  // clipped away entirely
+        // A draw with at most one atlas reads slot 0 only: the single-fetch variant.
+        GLuint program = b.atlasCount <= 1 ? mSingleAtlasProgram.id() : mProgram.id();
+        if (program != bound) {
+            glUseProgram(program);
+            bound = program;
+        }
         for (int k = 0; k < b.atlasCount; ++k) {
             glBindTextureUnit(k, mAtlasTextures.at(b.atlases[k]).texture.id());
             // A sampler object left bound by someone else could make the texture incomplete.

@@ -115,6 +115,8 @@ class Canvas {
     void flush();
     // Draw calls the last flush() issued.
     int lastFlushDrawCalls() const { return mLastFlushDrawCalls; }
+    // Scissored clears the last flush() issued in place of large opaque rects (tryClearRect).
+    int lastFlushClears() const { return mLastFlushClears; }
     // Vertices recorded and not yet flushed (6 per rect, 6 per glyph...).
     size_t pendingVertexCount() const { return mVertices.size(); }
 
@@ -154,12 +156,23 @@ class Canvas {
     void uploadAtlas(const GlyphAtlas& atlas);
 
     glm::ivec2 mTargetSize{0, 0};
+    // An opaque, pixel-aligned rect that no earlier vertex of this flush touches: flush()
+    // clears it (scissored) before drawing, in record order, instead of blending its pixels.
+    struct ClearRect {
+        glm::ivec4 box;  // x0, y0, x1, y1 in pixels, top-left origin, already clipped
+        Colour colour;
+    };
+    bool tryClearRect(const Rect& r, const Colour& colour);
+
     std::vector<Vertex> mVertices;
     std::vector<Batch> mBatches;
+    std::vector<ClearRect> mClears;
     std::vector<glm::ivec4> mClipStack;
     int mLastFlushDrawCalls = 0;
+    int mLastFlushClears = 0;
 
     GlProgram mProgram;
+    GlProgram mSingleAtlasProgram;  // overlay.frag with SINGLE_ATLAS: draws of one atlas
     GlVertexArray mVertexArray;
     GlBuffer mVertexBuffer;
     std::unordered_map<const GlyphAtlas*, AtlasTexture> mAtlasTextures;
