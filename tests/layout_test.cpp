@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "app/session.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_text.h"
@@ -28,21 +29,6 @@ namespace pcf {
 namespace {
 
 constexpr glm::ivec2 SIZES[] = {{1024, 768}, {1280, 720}, {1600, 900}, {1920, 1080}};
-
-RenderSettings renderSettings(const LessonSettings& s, glm::ivec2 frameSize) {
-    RenderSettings r;
-    r.method = s.method;
-    r.kernel = s.kernel;
-    r.radius = s.radius;
-    r.rotatePerPixel = s.rotate;
-    r.mapSize = s.mapSize;
-    r.depthFormat = s.depthFormat;
-    r.bias = s.bias;
-    r.constantBias = s.constantBias;
-    r.shadowCull = s.cull;
-    r.frameSize = frameSize;
-    return r;
-}
 
 bool isTextual(BoxKind k) {
     return k == BoxKind::Text || k == BoxKind::Number || k == BoxKind::Label;
@@ -123,7 +109,7 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
         for (size_t k = 0; k < lesson.steps.size(); ++k) {
             const LessonStep& step = lesson.steps[k];
             const LessonSettings& s = step.settings;
-            renderer.render(renderSettings(s, renderScene));
+            renderer.render(renderSettingsFor(s, renderScene));
             ShadowMap map = renderer.readShadowMap();
             glm::ivec2 px = scalePixel(s.pixel, renderScene);
             std::vector<float> ls = renderer.readLightSpaceRegion(px, {1, 1});
