@@ -412,6 +412,38 @@ TEST_F(GpuParity, BiasModesOnRandomLookupsMatchTheCpuKernel) {
     }
 }
 
+// Renders `s`, then runs the CPU kernel on the GPU's own targets: each receiver pixel's
+// light-space lookup (u, v, ref after the per-lookup bias) with the receiver plane the shader
+// wrote. Counts the receivers, those with a plane, and those whose plane the cap binds on.
+struct RenderedParity {
+    float worst = 0.0f;
+    int receivers = 0;
+    int planes = 0;
+    int capped = 0;
+};
+
+RenderedParity renderAndCompare(SceneRenderer& renderer, const RenderSettings& s) {
+    renderer.render(s);
+    ShadowMap map = renderer.readShadowMap();
+    std::vector<float> ls = renderer.readLightSpace();
+    std::vector<float> rc = renderer.readReceiver();
+    std::vector<float> vis = renderer.readVisibility();
+    PcfBias bias = s.biasParams().kernelBias();
+    RenderedParity r;
+    for (size_t k = 0; k < vis.size(); ++k) {
+        if (ls[4 * k + 3] != 1.0f) continue;
+        ++r.receivers;
+        PcfBias b = bias;
+        b.dzduv = glm::vec2(rc[4 * k], rc[4 * k + 1]);
+        if (b.dzduv != glm::vec2(0.0f)) ++r.planes;
+        if (pcfClampDzDuv(b.dzduv, s.rpdbMax) != b.dzduv) ++r.capped;
+        float cpu = filterVisibility(map, glm::vec2(ls[4 * k], ls[4 * k + 1]), ls[4 * k + 2],
+                                     s.pcfParams(), b);
+        r.worst = std::max(r.worst, std::fabs(cpu - vis[k]));
+    }
+    return r;
+}
+
 // Every bias mode rendered: the CPU kernel, run on the GPU's own light-space target (u, v, ref
 // after the per-lookup bias) and receiver target (the dz/duv the shader derived), gives the
 // visibility the shader gave, for every method the mode combines with.
@@ -438,31 +470,14 @@ TEST_F(GpuParity, BiasModesRenderedMatchTheCpuKernelOnTheGpusOwnTargets) {
                 s.bias = static_cast<BiasMode>(mode);
                 s.mapSize = 256;
                 s.frameSize = {200, 112};
-                renderer.render(s);
-                ShadowMap map = renderer.readShadowMap();
-                std::vector<float> ls = renderer.readLightSpace();
-                std::vector<float> rc = renderer.readReceiver();
-                std::vector<float> vis = renderer.readVisibility();
-                PcfBias bias = s.biasParams().kernelBias();
-                int receivers = 0;
-                int planes = 0;
-                float worst = 0.0f;
-                for (size_t k = 0; k < vis.size(); ++k) {
-                    if (ls[4 * k + 3] != 1.0f) continue;
-                    ++receivers;
-                    PcfBias b = bias;
-                    b.dzduv = glm::vec2(rc[4 * k], rc[4 * k + 1]);
-                    if (b.dzduv != glm::vec2(0.0f)) ++planes;
-                    float cpu = filterVisibility(map, glm::vec2(ls[4 * k], ls[4 * k + 1]),
-                                                 ls[4 * k + 2], s.pcfParams(), b);
-                    worst = std::max(worst, std::fabs(cpu - vis[k]));
-                }
+                RenderedParity r = renderAndCompare(renderer, s);
                 std::string what = std::string(biasName(mode)) + " " + describe(prm) + " " +
                                    std::string(depthFormatName(format));
-                EXPECT_LE(worst, PARITY_TOLERANCE) << what;
-                EXPECT_GT(receivers, s.frameSize.x * s.frameSize.y / 4) << what;
-                EXPECT_GT(planes, receivers / 2) << what;  // the shader wrote its receiver planes
-                worstMode = std::max(worstMode, worst);
+                EXPECT_LE(r.worst, PARITY_TOLERANCE) << what;
+                EXPECT_GT(r.receivers, s.frameSize.x * s.frameSize.y / 4) << what;
+                // the shader wrote its receiver planes
+                EXPECT_GT(r.planes, r.receivers / 2) << what;
+                worstMode = std::max(worstMode, r.worst);
             }
         }
         std::printf("parity rendered grazing, bias %s, formats 32f/16/24: max |GPU - CPU| = %g\n",
@@ -487,32 +502,14 @@ TEST_F(GpuParity, ReceiverPlaneCapRenderedMatchesTheCpuKernel) {
             s.rpdbMax = cap;
             s.mapSize = 256;
             s.frameSize = {200, 112};
-            renderer.render(s);
-            ShadowMap map = renderer.readShadowMap();
-            std::vector<float> ls = renderer.readLightSpace();
-            std::vector<float> rc = renderer.readReceiver();
-            std::vector<float> vis = renderer.readVisibility();
-            PcfBias bias = s.biasParams().kernelBias();
-            int receivers = 0;
-            int capped = 0;
-            float worst = 0.0f;
-            for (size_t k = 0; k < vis.size(); ++k) {
-                if (ls[4 * k + 3] != 1.0f) continue;
-                ++receivers;
-                PcfBias b = bias;
-                b.dzduv = glm::vec2(rc[4 * k], rc[4 * k + 1]);
-                capped += pcfClampDzDuv(b.dzduv, cap) != b.dzduv ? 1 : 0;
-                float cpu = filterVisibility(map, glm::vec2(ls[4 * k], ls[4 * k + 1]),
-                                             ls[4 * k + 2], s.pcfParams(), b);
-                worst = std::max(worst, std::fabs(cpu - vis[k]));
-            }
+            RenderedParity r = renderAndCompare(renderer, s);
             std::string what = "cap " + std::to_string(cap) + " " + describe(prm);
-            EXPECT_LE(worst, PARITY_TOLERANCE) << what;
-            if (cap == 0.5f) EXPECT_GT(capped, receivers / 2) << what;  // the ground: 1.3
+            EXPECT_LE(r.worst, PARITY_TOLERANCE) << what;
+            if (cap == 0.5f) EXPECT_GT(r.capped, r.receivers / 2) << what;  // the ground: 1.3
             std::printf("parity rendered grazing, receiver-plane cap %g, %s: %d of %d capped, "
                         "max |GPU - CPU| = %g\n",
-                        static_cast<double>(cap), describe(prm).c_str(), capped, receivers,
-                        static_cast<double>(worst));
+                        static_cast<double>(cap), describe(prm).c_str(), r.capped, r.receivers,
+                        static_cast<double>(r.worst));
         }
     }
 }
