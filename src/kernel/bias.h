@@ -56,6 +56,21 @@ struct BiasParams {
     float lookupBias(float cosTheta) const;
 };
 
+// The bias of any settings struct that names its fields as the options do (RenderSettings,
+// LessonSettings): one place that maps them onto BiasParams.
+template <class Settings>
+BiasParams biasParamsOf(const Settings& s) {
+    BiasParams b;
+    b.mode = static_cast<int>(s.bias);
+    b.constant = s.constantBias;
+    b.slope = s.slopeBias;
+    b.slopeMax = s.slopeMax;
+    b.normalOffset = s.normalOffset;
+    b.softScale = s.softScale;
+    b.rpdbMax = s.rpdbMax;
+    return b;
+}
+
 // "none", "constant", ... by id (PCF_BIAS_NONE ..), and back.
 std::string_view biasName(int mode);
 std::optional<int> biasFromName(std::string_view name);

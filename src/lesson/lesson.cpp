@@ -546,15 +546,7 @@ class LessonParser {
 float LessonSettings::depthBias() const { return biasParams().baseBias(); }
 
 BiasParams LessonSettings::biasParams() const {
-    BiasParams b;
-    b.mode = static_cast<int>(bias);
-    b.constant = constantBias;
-    b.slope = slopeBias;
-    b.slopeMax = slopeMax;
-    b.normalOffset = normalOffset;
-    b.softScale = softScale;
-    b.rpdbMax = rpdbMax;
-    return b;
+    return biasParamsOf(*this);
 }
 
 PcfParams LessonSettings::pcfParams(glm::ivec2 framePixel, glm::ivec2 frameSize) const {

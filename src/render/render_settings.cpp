@@ -15,15 +15,7 @@ PcfParams RenderSettings::pcfParams() const {
 float RenderSettings::depthBias() const { return biasParams().baseBias(); }
 
 BiasParams RenderSettings::biasParams() const {
-    BiasParams b;
-    b.mode = static_cast<int>(bias);
-    b.constant = constantBias;
-    b.slope = slopeBias;
-    b.slopeMax = slopeMax;
-    b.normalOffset = normalOffset;
-    b.softScale = softScale;
-    b.rpdbMax = rpdbMax;
-    return b;
+    return biasParamsOf(*this);
 }
 
 GLenum glDepthFormat(DepthFormat format) {
