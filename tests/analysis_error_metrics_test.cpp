@@ -304,7 +304,9 @@ TEST(SpeedChart, ACrowdedChartDrawsOnlyLabelsThatFit) {
         for (size_t k : L.front) EXPECT_TRUE(L.labelShown[k]) << size.x << ": front " << k;
         for (size_t k : gather3) EXPECT_TRUE(L.labelShown[k]) << size.x << ": gather3 " << k;
         // Room decides how many of the rest are named: more on the larger chart.
-        if (size.x == 617) EXPECT_LT(shown, rows.size()) << "a crowded chart drops labels";
+        if (size.x == 617) {
+            EXPECT_LT(shown, rows.size()) << "a crowded chart drops labels";
+        }
     }
 }
 
