@@ -1,11 +1,11 @@
 // The command line as a user runs it: `pcfscope methods` and `pcfscope trace`.
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <random>
-
-#include <OpenImageIO/imageio.h>
-#include <gtest/gtest.h>
 
 #include "json_lite.h"
 #include "kernel/methods.h"
@@ -19,7 +19,7 @@ namespace {
 using testutil::runPcfscope;
 
 class CliTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override { mDir = testutil::makeTempDir("cli"); }
     void TearDown() override {
         if (!HasFailure()) std::filesystem::remove_all(mDir);
@@ -37,7 +37,7 @@ TEST_F(CliTest, MethodsListsTheNineIdsWithFetchCounts) {
         row += ' ';
         EXPECT_NE(r.out.find(row), std::string::npos) << m.name;
     }
-    EXPECT_NE(r.out.find("36 texels"), std::string::npos) << r.out;            // pcf-naive 3x3
+    EXPECT_NE(r.out.find("36 texels"), std::string::npos) << r.out;  // pcf-naive 3x3
     EXPECT_NE(r.out.find("16 texels in 4 gathers"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("16 texels in 4 hw taps"), std::string::npos) << r.out;  // tent 3
 }
@@ -68,8 +68,9 @@ TEST_F(CliTest, TraceJsonOfAWrittenMapMatchesTheKernel) {
                    Case{"pcf-gather", 4}, Case{"tent", 5}, Case{"poisson", 1}}) {
         vec2 uv(0.3141f, 0.7182f);
         float z = 0.55f;
-        auto r = runPcfscope("trace --map " + path("map.exr") + " --uv 0.3141,0.7182 --z 0.55 --method " +
-                             c.method + " --kernel " + std::to_string(c.kernel) + " --json");
+        auto r = runPcfscope("trace --map " + path("map.exr") +
+                             " --uv 0.3141,0.7182 --z 0.55 --method " + c.method + " --kernel " +
+                             std::to_string(c.kernel) + " --json");
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_EQ(testutil::lineCount(r.out), 1);
         jsonlite::Value j = jsonlite::parse(r.out);

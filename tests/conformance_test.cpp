@@ -129,10 +129,11 @@ TEST(Conformance, EnvelopeUnderEveryBiasModeHoldsTheKernelsResult) {
     }
     vec2 uv((3.5f + 0.5f) / 8.0f, 0.5f);
     PcfParams prm = makeParams(PCF_BILINEAR2X2);
-    VisibilityEnvelope flat =
-        visibilityEnvelope(edge, uv, 0.5f, prm, PcfBias(PCF_BIAS_RECEIVER_PLANE, vec2(0.0f), 0, PCF_DZDUV_UNCLAMPED));
+    VisibilityEnvelope flat = visibilityEnvelope(
+        edge, uv, 0.5f, prm, PcfBias(PCF_BIAS_RECEIVER_PLANE, vec2(0.0f), 0, PCF_DZDUV_UNCLAMPED));
     VisibilityEnvelope steep = visibilityEnvelope(
-        edge, uv, 0.5f, prm, PcfBias(PCF_BIAS_RECEIVER_PLANE, vec2(0.5f, 0.0f), 0, PCF_DZDUV_UNCLAMPED));
+        edge, uv, 0.5f, prm,
+        PcfBias(PCF_BIAS_RECEIVER_PLANE, vec2(0.5f, 0.0f), 0, PCF_DZDUV_UNCLAMPED));
     EXPECT_NEAR(flat.lo, 1.0f, 1e-6f);   // ref 0.5 < every depth
     EXPECT_NEAR(steep.hi, 0.5f, 1e-6f);  // the right column's ref 0.5 + 0.5/8 > 0.53
 }

@@ -398,9 +398,9 @@ TEST_F(GpuParity, BiasModesOnRandomLookupsMatchTheCpuKernel) {
                     lit += cpu > 0.5f ? 1 : 0;
                     dark += cpu < 0.5f ? 1 : 0;
                 }
-                EXPECT_LE(worst, PARITY_TOLERANCE) << biasName(mode) << " scale " << softScale
-                                                   << " cap " << bias.dzduvMax << " "
-                                                   << describe(prm);
+                EXPECT_LE(worst, PARITY_TOLERANCE)
+                    << biasName(mode) << " scale " << softScale << " cap " << bias.dzduvMax << " "
+                    << describe(prm);
                 // Neither all lit nor all dark: there are comparisons to disagree about.
                 EXPECT_GT(lit, 100) << describe(prm);
                 EXPECT_GT(dark, 100) << describe(prm);
@@ -506,10 +506,11 @@ TEST_F(GpuParity, ReceiverPlaneCapRenderedMatchesTheCpuKernel) {
             std::string what = "cap " + std::to_string(cap) + " " + describe(prm);
             EXPECT_LE(r.worst, PARITY_TOLERANCE) << what;
             if (cap == 0.5f) EXPECT_GT(r.capped, r.receivers / 2) << what;  // the ground: 1.3
-            std::printf("parity rendered grazing, receiver-plane cap %g, %s: %d of %d capped, "
-                        "max |GPU - CPU| = %g\n",
-                        static_cast<double>(cap), describe(prm).c_str(), r.capped, r.receivers,
-                        static_cast<double>(r.worst));
+            std::printf(
+                "parity rendered grazing, receiver-plane cap %g, %s: %d of %d capped, "
+                "max |GPU - CPU| = %g\n",
+                static_cast<double>(cap), describe(prm).c_str(), r.capped, r.receivers,
+                static_cast<double>(r.worst));
         }
     }
 }

@@ -30,7 +30,7 @@ struct Value {
 };
 
 class Parser {
-public:
+  public:
     explicit Parser(const std::string& text) : mText(text) {}
     Value parse() {
         Value v = value();
@@ -39,7 +39,7 @@ public:
         return v;
     }
 
-private:
+  private:
     void skip() {
         while (mPos < mText.size() && std::isspace(static_cast<unsigned char>(mText[mPos]))) ++mPos;
     }
@@ -58,12 +58,18 @@ private:
         if (c == '{') {
             v.kind = Value::OBJECT;
             ++mPos;
-            if (peek() == '}') { ++mPos; return v; }
+            if (peek() == '}') {
+                ++mPos;
+                return v;
+            }
             for (;;) {
                 std::string key = str();
                 expect(':');
                 v.object[key] = value();
-                if (peek() == ',') { ++mPos; continue; }
+                if (peek() == ',') {
+                    ++mPos;
+                    continue;
+                }
                 expect('}');
                 return v;
             }
@@ -71,10 +77,16 @@ private:
         if (c == '[') {
             v.kind = Value::ARRAY;
             ++mPos;
-            if (peek() == ']') { ++mPos; return v; }
+            if (peek() == ']') {
+                ++mPos;
+                return v;
+            }
             for (;;) {
                 v.array.push_back(value());
-                if (peek() == ',') { ++mPos; continue; }
+                if (peek() == ',') {
+                    ++mPos;
+                    continue;
+                }
                 expect(']');
                 return v;
             }
@@ -84,9 +96,21 @@ private:
             v.string = str();
             return v;
         }
-        if (mText.compare(mPos, 4, "true") == 0) { mPos += 4; v.kind = Value::BOOL; v.boolean = true; return v; }
-        if (mText.compare(mPos, 5, "false") == 0) { mPos += 5; v.kind = Value::BOOL; return v; }
-        if (mText.compare(mPos, 4, "null") == 0) { mPos += 4; return v; }
+        if (mText.compare(mPos, 4, "true") == 0) {
+            mPos += 4;
+            v.kind = Value::BOOL;
+            v.boolean = true;
+            return v;
+        }
+        if (mText.compare(mPos, 5, "false") == 0) {
+            mPos += 5;
+            v.kind = Value::BOOL;
+            return v;
+        }
+        if (mText.compare(mPos, 4, "null") == 0) {
+            mPos += 4;
+            return v;
+        }
         char* end = nullptr;
         v.number = std::strtod(mText.c_str() + mPos, &end);
         if (end == mText.c_str() + mPos) throw std::runtime_error("bad value");
@@ -101,10 +125,15 @@ private:
             char c = mText[mPos++];
             if (c == '\\') {
                 char e = mText[mPos++];
-                if (e == 'n') out += '\n';
-                else if (e == 't') out += '\t';
-                else if (e == 'u') { out += '?'; mPos += 4; }
-                else out += e;
+                if (e == 'n')
+                    out += '\n';
+                else if (e == 't')
+                    out += '\t';
+                else if (e == 'u') {
+                    out += '?';
+                    mPos += 4;
+                } else
+                    out += e;
             } else {
                 out += c;
             }

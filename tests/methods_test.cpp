@@ -6,8 +6,8 @@ namespace pcf {
 namespace {
 
 TEST(Methods, TheNineIdsOfTheDesignInOrder) {
-    const char* ids[] = {"nearest", "box2x2",  "bilinear2x2", "hw2x2",  "pcf-naive",
-                         "pcf-gather", "pcf-hw", "tent",       "poisson"};
+    const char* ids[] = {"nearest",    "box2x2", "bilinear2x2", "hw2x2",  "pcf-naive",
+                         "pcf-gather", "pcf-hw", "tent",        "poisson"};
     ASSERT_EQ(allMethods().size(), 9u);
     for (int k = 0; k < 9; ++k) {
         EXPECT_EQ(allMethods()[k].name, ids[k]);
@@ -32,11 +32,10 @@ TEST(Methods, FetchCountsOfTheDesignTable) {
 
 TEST(Methods, ValidationNamesTheProblem) {
     EXPECT_FALSE(validateParams(makeParams(PCF_NAIVE, 8)).has_value());
-    EXPECT_EQ(validateParams(makeParams(PCF_NAIVE, 9)).value(),
-              "kernel 9 is out of range (1..8)");
-    EXPECT_EQ(validateParams(makeParams(PCF_GATHER, 0)).value(),
-              "kernel 0 is out of range (1..8)");
-    EXPECT_EQ(validateParams(makeParams(PCF_TENT, 4)).value(), "tent takes kernel 3, 5 or 7, not 4");
+    EXPECT_EQ(validateParams(makeParams(PCF_NAIVE, 9)).value(), "kernel 9 is out of range (1..8)");
+    EXPECT_EQ(validateParams(makeParams(PCF_GATHER, 0)).value(), "kernel 0 is out of range (1..8)");
+    EXPECT_EQ(validateParams(makeParams(PCF_TENT, 4)).value(),
+              "tent takes kernel 3, 5 or 7, not 4");
     // The setting is named once, so each caller can name it its own way.
     ParamProblem p = checkParams(makeParams(PCF_TENT, 4)).value();
     EXPECT_EQ(p.setting, "kernel");

@@ -1,11 +1,11 @@
 // Properties of the shared PCF kernel (shaders/shared/pcf_kernel.h via src/kernel/pcf.h).
 #include "kernel/pcf.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <random>
 #include <set>
-
-#include <gtest/gtest.h>
 
 #include "kernel/methods.h"
 #include "kernel/trace.h"
@@ -196,8 +196,8 @@ TEST(Pcf, TentTapsReproduceItsMergedTexelWeights) {
                 for (int i = 0; i < static_cast<int>(wx.size()); ++i) {
                     ivec2 texel = tb.origin + ivec2(i - half, j - half);
                     ASSERT_NEAR(tr.weights.at(texel), wx[i] * wy[j], 2e-6f)
-                        << "N = " << n << " s = " << tb.frac.x << " t = " << tb.frac.y
-                        << " texel " << i << "," << j;
+                        << "N = " << n << " s = " << tb.frac.x << " t = " << tb.frac.y << " texel "
+                        << i << "," << j;
                 }
             }
             float total = 0.0f;
@@ -210,12 +210,16 @@ TEST(Pcf, TentTapsReproduceItsMergedTexelWeights) {
 TEST(Pcf, WeightsSumToOneAndVisibilityStaysInRangeEverywhere) {
     ShadowMap map = randomMap(8, 8, 12);
     std::vector<vec2> uvs = {
-        vec2(0.0f), vec2(1.0f), vec2(0.0f, 1.0f), vec2(1.0f, 0.0f),  // corners: clamp to edge
-        vec2(0.5f / 8, 0.5f / 8),                                    // a centre: frac exactly 0
-        vec2(3.5f / 8, 6.5f / 8),                                    // frac exactly 0 inside
+        vec2(0.0f),
+        vec2(1.0f),
+        vec2(0.0f, 1.0f),
+        vec2(1.0f, 0.0f),          // corners: clamp to edge
+        vec2(0.5f / 8, 0.5f / 8),  // a centre: frac exactly 0
+        vec2(3.5f / 8, 6.5f / 8),  // frac exactly 0 inside
         vec2(std::nextafter(4.5f / 8, 0.0f), std::nextafter(2.5f / 8, 0.0f)),  // frac ~ 1
         vec2(std::nextafter(8.5f / 8, 0.0f), 0.03f),
-        vec2(0.999f, 0.001f), vec2(0.5f, 0.5f),
+        vec2(0.999f, 0.001f),
+        vec2(0.5f, 0.5f),
     };
     for (const PcfParams& prm : everyMethodAndKernel()) {
         for (vec2 uv : uvs) {
@@ -223,17 +227,16 @@ TEST(Pcf, WeightsSumToOneAndVisibilityStaysInRangeEverywhere) {
                 Trace tr = traceLookup(map, uv, ref, ref, prm);
                 float total = 0.0f;
                 for (const TapRecord& t : tr.taps) total += t.weight;
-                std::string where = std::string(methodInfo(prm.method).name) + " N=" +
-                                    std::to_string(prm.kernel) + " uv=" + std::to_string(uv.x) +
-                                    "," + std::to_string(uv.y);
+                std::string where = std::string(methodInfo(prm.method).name) +
+                                    " N=" + std::to_string(prm.kernel) +
+                                    " uv=" + std::to_string(uv.x) + "," + std::to_string(uv.y);
                 EXPECT_NEAR(total, 1.0f, 1e-5f) << where;
                 EXPECT_GE(tr.visibility, 0.0f) << where;
                 EXPECT_LE(tr.visibility, 1.0f) << where;
                 EXPECT_NEAR(weightedTapSum(tr), tr.visibility, 1e-5f) << where;
                 EXPECT_EQ(filterVisibility(map, uv, ref, prm), tr.visibility) << where;
                 for (const TapRecord& t : tr.taps) {
-                    EXPECT_TRUE(t.texel.x >= 0 && t.texel.y >= 0 && t.texel.x < 8 &&
-                                t.texel.y < 8)
+                    EXPECT_TRUE(t.texel.x >= 0 && t.texel.y >= 0 && t.texel.x < 8 && t.texel.y < 8)
                         << where;
                 }
             }
@@ -246,9 +249,8 @@ TEST(Pcf, FractionExactlyZeroAndJustBelowOne) {
     PcfTexelPos at0 = pcfTexelPos(vec2(3.5f / 8, 6.5f / 8), map.size());
     EXPECT_EQ(at0.frac, vec2(0.0f));
     EXPECT_EQ(at0.base, ivec2(3, 6));
-    PcfTexelPos below1 =
-        pcfTexelPos(vec2(std::nextafter(4.5f / 8, 0.0f), std::nextafter(2.5f / 8, 0.0f)),
-                    map.size());
+    PcfTexelPos below1 = pcfTexelPos(
+        vec2(std::nextafter(4.5f / 8, 0.0f), std::nextafter(2.5f / 8, 0.0f)), map.size());
     EXPECT_EQ(below1.base, ivec2(3, 1));
     EXPECT_GT(below1.frac.x, 0.9999f);
     EXPECT_LT(below1.frac.x, 1.0f);

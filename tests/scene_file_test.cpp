@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+
 #include "glm_expect.h"
 
 namespace pcf {

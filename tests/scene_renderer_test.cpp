@@ -239,7 +239,7 @@ TEST_F(SceneRendererTest, DepthFormatsAgree) {
 }
 
 class RenderCommand : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override { mDir = testutil::makeTempDir("render"); }
     void TearDown() override {
         if (!HasFailure()) std::filesystem::remove_all(mDir);
@@ -249,14 +249,15 @@ protected:
 };
 
 TEST_F(RenderCommand, WritesThePngAndRefusesToOverwriteIt) {
-    auto r = testutil::runPcfscope("render --scene box-on-plane --method pcf-gather --size 160x90 -o " +
-                                   path("shadow.png"), "env -u DISPLAY");
+    auto r = testutil::runPcfscope(
+        "render --scene box-on-plane --method pcf-gather --size 160x90 -o " + path("shadow.png"),
+        "env -u DISPLAY");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ImageSize size = readImageSize(path("shadow.png"));
     EXPECT_EQ(size.width, 160);
     EXPECT_EQ(size.height, 90);
-    auto again = testutil::runPcfscope("render --scene box-on-plane --size 160x90 -o " +
-                                       path("shadow.png"));
+    auto again =
+        testutil::runPcfscope("render --scene box-on-plane --size 160x90 -o " + path("shadow.png"));
     EXPECT_EQ(again.exitCode, 2);
     EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
     auto forced = testutil::runPcfscope("render --scene box-on-plane --size 160x90 -f -o " +
@@ -297,8 +298,10 @@ TEST_F(RenderCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
 // --raw writes the map, the light-space target and the visibility; `trace --map` on that map at
 // a pixel's (u, v, ref) gives that pixel's visibility: the inspector and the picture agree.
 TEST_F(RenderCommand, RawFilesFeedTraceAndAgreeWithThePicture) {
-    auto r = testutil::runPcfscope("render --scene sphere-over-plane --method tent --kernel 5 "
-                                   "--map-size 256 --size 200x120 --raw " + path("raw"));
+    auto r = testutil::runPcfscope(
+        "render --scene sphere-over-plane --method tent --kernel 5 "
+        "--map-size 256 --size 200x120 --raw " +
+        path("raw"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ShadowMap map = readDepthImage(path("raw/shadowmap.exr"));
     EXPECT_EQ(map.size(), glm::ivec2(256, 256));
@@ -311,7 +314,8 @@ TEST_F(RenderCommand, RawFilesFeedTraceAndAgreeWithThePicture) {
     for (size_t k = 0; k < vis.size() && picks.size() < 9; k += 7) {
         if (ls[4 * k + 3] != 1.0f) continue;
         bool penumbra = vis[k] > 0.05f && vis[k] < 0.95f;
-        if (penumbra || picks.size() < 3 || (vis[k] == 0.0f && picks.size() < 6)) picks.push_back(k);
+        if (penumbra || picks.size() < 3 || (vis[k] == 0.0f && picks.size() < 6))
+            picks.push_back(k);
     }
     ASSERT_GE(picks.size(), 6u);
     int penumbra = 0;

@@ -1,9 +1,9 @@
 #include "kernel/shadow_map.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <limits>
-
-#include <gtest/gtest.h>
 
 namespace pcf {
 namespace {
@@ -36,9 +36,9 @@ TEST(ShadowMap, ExampleHasItsOccluderCorner) {
     ShadowMap map = exampleShadowMap();
     EXPECT_EQ(map.size(), glm::ivec2(8, 8));
     EXPECT_FALSE(map.findInvalidTexel().has_value());
-    EXPECT_LT(map.depth(4, 2), 0.5f);   // occluder
-    EXPECT_GT(map.depth(3, 2), 0.5f);   // ground
-    EXPECT_GT(map.depth(7, 1), 0.5f);   // ground, below the occluder's rows
+    EXPECT_LT(map.depth(4, 2), 0.5f);  // occluder
+    EXPECT_GT(map.depth(3, 2), 0.5f);  // ground
+    EXPECT_GT(map.depth(7, 1), 0.5f);  // ground, below the occluder's rows
 }
 
 }  // namespace

@@ -18,7 +18,7 @@
 namespace testutil {
 
 class VirtualDisplay {
-public:
+  public:
     VirtualDisplay() {
         int fds[2];
         if (pipe(fds) != 0) return;
@@ -71,7 +71,7 @@ public:
     // ":N", or empty when Xvfb did not start.
     const std::string& display() const { return mDisplay; }
 
-private:
+  private:
     void stop() {
         if (mPid > 0) {
             kill(mPid, SIGTERM);

@@ -28,6 +28,8 @@ PCF_CONST int PCF_FETCH_GATHER = 2;  // one textureGather on the comparison samp
 PCF_CONST int PCF_FETCH_HW = 3;      // one hardware comparison tap (sampler2DShadow, GL_LINEAR)
 
 // The 16-point Poisson disk of Jimmy 2010 (unit radius), scaled by the radius in texels.
+// The array macros stand for C++'s and GLSL's array syntax, which clang-format cannot read.
+// clang-format off
 PCF_CONST_ARRAY(vec2, PCF_POISSON_DISK, 16) PCF_ARRAY_BEGIN(vec2, 16)
     vec2(-0.94201624f, -0.39906216f), vec2(0.94558609f, -0.76890725f),
     vec2(-0.094184101f, -0.92938870f), vec2(0.34495938f, 0.29387760f),
@@ -38,9 +40,11 @@ PCF_CONST_ARRAY(vec2, PCF_POISSON_DISK, 16) PCF_ARRAY_BEGIN(vec2, 16)
     vec2(-0.24188840f, 0.99706507f), vec2(-0.81409955f, 0.91437590f),
     vec2(0.19984126f, 0.78641367f), vec2(0.14383161f, -0.14100790f)
 PCF_ARRAY_END;
+// clang-format on
 
 // Per-pixel rotations of the disk: (cos, sin) of k * 22.5 degrees, k = 0..15. A table of
 // literals, not cos() and sin(), so that the CPU and the GPU rotate by the very same floats.
+// clang-format off
 PCF_CONST_ARRAY(vec2, PCF_ROTATIONS, 16) PCF_ARRAY_BEGIN(vec2, 16)
     vec2(1.0f, 0.0f), vec2(0.92387953f, 0.38268343f),
     vec2(0.70710678f, 0.70710678f), vec2(0.38268343f, 0.92387953f),
@@ -51,6 +55,7 @@ PCF_CONST_ARRAY(vec2, PCF_ROTATIONS, 16) PCF_ARRAY_BEGIN(vec2, 16)
     vec2(0.0f, -1.0f), vec2(0.38268343f, -0.92387953f),
     vec2(0.70710678f, -0.70710678f), vec2(0.92387953f, -0.38268343f)
 PCF_ARRAY_END;
+// clang-format on
 
 // What a method needs besides the lookup itself.
 struct PcfParams {
@@ -589,11 +594,11 @@ PCF_MAP_FN float pcfGatherWeighted(Map map, vec2 uv, PcfRef ref, int n, int weig
             int mx = 2 * bx;
             int my = 2 * by;
             float wx0 = pcfFootprintWeightW(mx, n, fp.frac.x, weights, sigma);
-            float wx1 = mx + 1 <= n ? pcfFootprintWeightW(mx + 1, n, fp.frac.x, weights, sigma)
-                                    : 0.0f;
+            float wx1 =
+                mx + 1 <= n ? pcfFootprintWeightW(mx + 1, n, fp.frac.x, weights, sigma) : 0.0f;
             float wy0 = pcfFootprintWeightW(my, n, fp.frac.y, weights, sigma);
-            float wy1 = my + 1 <= n ? pcfFootprintWeightW(my + 1, n, fp.frac.y, weights, sigma)
-                                    : 0.0f;
+            float wy1 =
+                my + 1 <= n ? pcfFootprintWeightW(my + 1, n, fp.frac.y, weights, sigma) : 0.0f;
             // GL's gather order: x = (0,1), y = (1,1), z = (1,0), w = (0,0).
             vec4 w = vec4(wx0 * wy1, wx1 * wy1, wx1 * wy0, wx0 * wy0);
             vec2 corner = vec2(fp.origin + ivec2(mx + 1, my + 1)) / vec2(size);

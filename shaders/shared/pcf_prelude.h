@@ -25,7 +25,9 @@
 // recording map (tracing) and the plain map (batch rendering) share one source and the plain
 // one compiles the recording away.
 #define PCF_FN inline
+// clang-format off
 #define PCF_MAP_FN template <class Map> inline
+// clang-format on
 #define PCF_PRECISE
 #define PCF_CONST inline const
 #define PCF_CONST_ARRAY(T, name, n) inline const T name[n] =

@@ -83,8 +83,8 @@ VisibilityEnvelope hwTapEnvelope(const ShadowMap& map, vec2 uv, float ref,
 
 VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
                                       const PcfParams& prm, const ConformancePrecision& prec) {
-    return visibilityEnvelope(map, uv, ref, prm, PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, PCF_DZDUV_UNCLAMPED),
-                              prec);
+    return visibilityEnvelope(
+        map, uv, ref, prm, PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, PCF_DZDUV_UNCLAMPED), prec);
 }
 
 VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,

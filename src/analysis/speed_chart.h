@@ -65,8 +65,8 @@ struct SpeedChartLayout {
     // per row: whether its label is drawn. The front's and the kept rows' always are; any other
     // only where it finds a spot that overlaps no other label, no dot and stays in the plot.
     std::vector<bool> labelShown;
-    std::vector<size_t> front;            // rows on the Pareto front, fastest first
-    std::vector<int> legendMethods;       // methods present, in the rows' order of appearance
+    std::vector<size_t> front;       // rows on the Pareto front, fastest first
+    std::vector<int> legendMethods;  // methods present, in the rows' order of appearance
     Rect legend;
 };
 

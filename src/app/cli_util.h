@@ -1,12 +1,11 @@
 // cli_util.h: parsing of the command line's small values, with one-line errors.
 #pragma once
 
+#include <glm/glm.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "kernel/methods.h"
 
@@ -14,7 +13,7 @@ namespace pcf {
 
 // Bad input on the command line or in a file: the app prints what() on one line and exits 2.
 class UsageError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

@@ -75,7 +75,8 @@ int runTrace(const TraceOptions& o) {
         throw UsageError("unknown --weights '" + o.weights + "' (known: box, binomial, gaussian)");
     }
     std::optional<int> precision = precisionFromName(o.precision);
-    if (!precision) throw UsageError("unknown --precision '" + o.precision + "' (known: exact, hw8)");
+    if (!precision)
+        throw UsageError("unknown --precision '" + o.precision + "' (known: exact, hw8)");
     int fixedBits = 0;
     if (o.depthFormat == "16" || o.depthFormat == "24") {
         fixedBits = o.depthFormat == "16" ? 16 : 24;

@@ -55,7 +55,8 @@ int runView(const ViewCommandOptions& o) {
 
 int runMainJob() {
     std::vector<std::string> lessons = builtInLessons();
-    if (lessons.empty()) throw UsageError(std::string("no lessons found in ") + PCFSCOPE_LESSON_DIR);
+    if (lessons.empty())
+        throw UsageError(std::string("no lessons found in ") + PCFSCOPE_LESSON_DIR);
     const char* display = std::getenv("DISPLAY");
     if (display && *display) {
         ViewerOptions v;
@@ -85,7 +86,8 @@ int runMainJob() {
 
 Command addViewCommand(CLI::App& app) {
     auto o = std::make_shared<ViewCommandOptions>();
-    CLI::App* sub = app.add_subcommand("view", "the lesson in a window: pick a pixel, step through");
+    CLI::App* sub =
+        app.add_subcommand("view", "the lesson in a window: pick a pixel, step through");
     sub->add_option("lesson", o->lesson, "lesson: a .toml path, a number, or a built-in name");
     sub->add_option("--size", o->size, "window size WxH (default 1600x900)");
     sub->add_option("--keys", o->keys, "replay keys first: GLFW names, space-separated");

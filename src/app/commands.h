@@ -2,9 +2,8 @@
 // returns the function that runs it once the command line is parsed.
 #pragma once
 
-#include <functional>
-
 #include <CLI/CLI.hpp>
+#include <functional>
 
 namespace pcf {
 

@@ -47,8 +47,8 @@ class OutputFiles {
     // under image_io's write gate: an interrupt finds either nothing moved (and takes the set
     // back) or the set committed, never half the files in place. A failed move throws (the set
     // is then taken back as on any error).
-    void commitStaged(const std::filesystem::path& stagingDir,
-                      const std::filesystem::path& outDir, const std::vector<std::string>& names);
+    void commitStaged(const std::filesystem::path& stagingDir, const std::filesystem::path& outDir,
+                      const std::vector<std::string>& names);
 
     // Removes what this set created (files, then its folders, then scratch folders named
     // ".pcfscope-*-PID" of this process inside them). Called by the destructor unless committed,

@@ -40,15 +40,15 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
                     "a lesson (path, number or name): its scene and its step's settings; "
                     "options given here override them");
     sub->add_option("--step", lessonStep, "with --lesson: the step whose settings to use");
-    sub->add_option("--scene", scene, "built-in scene: box-on-plane, sphere-over-plane, pole, "
-                                      "grazing, stairs");
+    sub->add_option("--scene", scene,
+                    "built-in scene: box-on-plane, sphere-over-plane, pole, "
+                    "grazing, stairs");
     sub->add_option("--scene-file", sceneFile, "scene file (TOML)");
     sub->add_option("--method", method, "PCF method id (see `pcfscope methods`)");
     sub->add_option("--kernel", kernel, kernelOptionHelp());
     sub->add_option("--radius", radius, "poisson: disk radius in texels");
     sub->add_flag("--rotate", rotate, "poisson: rotate the disk per pixel");
-    addBiasOptions(sub, bias, constantBias, slopeBias, slopeMax, normalOffset, softScale,
-                   rpdbMax);
+    addBiasOptions(sub, bias, constantBias, slopeBias, slopeMax, normalOffset, softScale, rpdbMax);
     sub->add_option("--cull", cull, "faces culled in the shadow pass: back, front, none");
     sub->add_option("--polygon-offset", polygonOffset,
                     "slope-scaled bias in the shadow pass: FACTOR,UNITS for glPolygonOffset");
@@ -143,7 +143,8 @@ RenderSettings RenderOptions::settings() const {
 
 Scene RenderOptions::loadScene() const {
     if (static_cast<int>(!scene.empty()) + static_cast<int>(!sceneFile.empty()) +
-            static_cast<int>(!lesson.empty()) > 1) {
+            static_cast<int>(!lesson.empty()) >
+        1) {
         throw UsageError("give one of --scene, --scene-file or --lesson");
     }
     if (!lesson.empty()) return parseLessonFile(resolveLesson(lesson)).scene;
@@ -153,7 +154,8 @@ Scene RenderOptions::loadScene() const {
     std::optional<Scene> preset = presetScene(name);
     if (!preset) {
         std::string known;
-        for (std::string_view n : presetNames()) known += (known.empty() ? "" : ", ") + std::string(n);
+        for (std::string_view n : presetNames())
+            known += (known.empty() ? "" : ", ") + std::string(n);
         throw UsageError("unknown scene '" + name + "' (known: " + known + ")");
     }
     return *preset;

@@ -2,9 +2,8 @@
 // their checks. Nothing is rendered or written before all of them have passed.
 #pragma once
 
-#include <string>
-
 #include <CLI/CLI.hpp>
+#include <string>
 
 #include "render/render_settings.h"
 #include "scene/scene.h"
@@ -51,7 +50,7 @@ struct RenderOptions {
     // The scene, loaded; throws UsageError (unknown preset) or InputError (scene file).
     Scene loadScene() const;
 
-private:
+  private:
     // An option the user gave (not a default): it overrides the lesson's settings.
     bool given(const char* option) const;
 

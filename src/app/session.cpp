@@ -190,9 +190,9 @@ std::vector<uint8_t> drawStabilityView(const ChartRef& ref, glm::ivec2 size) {
     } else if (ref.view == "shimmer") {
         rgba = drawShimmerChart(rows, size, subtitle);
     } else {
-        throw InputError(ref.path, 0,
-                         "unknown stability chart '#" + ref.view +
-                             "' (known: #acne, #leak, #shimmer)");
+        throw InputError(
+            ref.path, 0,
+            "unknown stability chart '#" + ref.view + "' (known: #acne, #leak, #shimmer)");
     }
     if (rgba.empty()) throw InputError(ref.path, 0, "no " + ref.view + " rows to chart");
     return rgba;
@@ -202,9 +202,9 @@ std::vector<uint8_t> drawStabilityView(const ChartRef& ref, glm::ivec2 size) {
 void checkStabilityView(const ChartRef& ref) {
     std::vector<StabilityRow> rows = readStabilityRows(ref.path);
     if (ref.view != "acne" && ref.view != "leak" && ref.view != "shimmer") {
-        throw InputError(ref.path, 0,
-                         "unknown stability chart '#" + ref.view +
-                             "' (known: #acne, #leak, #shimmer)");
+        throw InputError(
+            ref.path, 0,
+            "unknown stability chart '#" + ref.view + "' (known: #acne, #leak, #shimmer)");
     }
     for (const StabilityRow& r : rows) {
         if (r.sweep == ref.view) return;
@@ -407,10 +407,10 @@ void Session::renderScene() {
     RenderSettings r = renderSettingsFor(mSettings, glm::ivec2(mLayout.scene.size()));
     // The map's texel grid slid and snapped as the lesson says (light.h: shiftShadowOrigin).
     glm::vec3 shift(mSettings.originShift, mSettings.originShift, mSettings.snap ? 1.0f : 0.0f);
-    bool mapChanged =
-        !mRendered || mRendered->mapSize != r.mapSize || mRendered->depthFormat != r.depthFormat ||
-        mRendered->shadowCull != r.shadowCull || mRendered->polygonOffset != r.polygonOffset ||
-        shift != mRenderedShift;
+    bool mapChanged = !mRendered || mRendered->mapSize != r.mapSize ||
+                      mRendered->depthFormat != r.depthFormat ||
+                      mRendered->shadowCull != r.shadowCull ||
+                      mRendered->polygonOffset != r.polygonOffset || shift != mRenderedShift;
     if (mapChanged) {
         glm::mat4 fit = shadowClipFromWorld(mLesson.scene);
         if (shift != glm::vec3(0.0f)) {
@@ -546,8 +546,8 @@ void Session::blitHeatmap() {
     // Texture row 0 holds the image's bottom row (uploadBottomUp): a straight copy.
     int frameH = mLayout.frameSize.y;
     glNamedFramebufferReadBuffer(mHeat.framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mHeat.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, size.x, size.y,
-                           0, frameH - size.y, size.x, frameH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitNamedFramebuffer(mHeat.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, size.x, size.y, 0,
+                           frameH - size.y, size.x, frameH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 // The legend in the scene's bottom-left corner: the colour ramp from 1/16 to 16 screen pixels

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cstddef>
-
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
@@ -142,7 +141,7 @@ class Session {
     bool mHeatmap = false;
     bool mHeatDirty = true;
     std::vector<float> mHeatValues;
-    OffscreenTarget mHeat;  // the heat map, rows top-down, blitted over the scene
+    OffscreenTarget mHeat;           // the heat map, rows top-down, blitted over the scene
     glm::vec3 mRenderedShift{0.0f};  // origin shift and snap (1) the map was rendered with
     int mTextPage = 0;
     int mTextPages = 1;

@@ -44,7 +44,7 @@ std::string freeStem(const std::string& dir, const std::string& base) {
 }
 
 class Viewer {
-public:
+  public:
     Viewer(const ViewerOptions& o, GlfwWindowContext& window)
         : mWindow(window), mSession(window.framebufferSize(), o.presentation) {
         mLessons = builtInLessons();
@@ -61,32 +61,54 @@ public:
         LessonSettings s = mSession.settings();
         glm::ivec2 px = mSession.pixel();
         switch (k.key) {
-            case GLFW_KEY_ESCAPE: mQuit = true; break;
-            case GLFW_KEY_SPACE: forward(); break;
+            case GLFW_KEY_ESCAPE:
+                mQuit = true;
+                break;
+            case GLFW_KEY_SPACE:
+                forward();
+                break;
             case GLFW_KEY_RIGHT:
-                if (shift) mSession.setPixel(px + glm::ivec2(1, 0));
-                else forward();
+                if (shift)
+                    mSession.setPixel(px + glm::ivec2(1, 0));
+                else
+                    forward();
                 break;
             case GLFW_KEY_LEFT:
-                if (shift) mSession.setPixel(px - glm::ivec2(1, 0));
-                else back();
+                if (shift)
+                    mSession.setPixel(px - glm::ivec2(1, 0));
+                else
+                    back();
                 break;
-            case GLFW_KEY_BACKSPACE: back(); break;
-            case GLFW_KEY_G: mSession.setGrid(!mSession.grid()); break;
-            case GLFW_KEY_A: mSession.setHeatmap(!mSession.heatmap()); break;
+            case GLFW_KEY_BACKSPACE:
+                back();
+                break;
+            case GLFW_KEY_G:
+                mSession.setGrid(!mSession.grid());
+                break;
+            case GLFW_KEY_A:
+                mSession.setHeatmap(!mSession.heatmap());
+                break;
             case GLFW_KEY_O:  // slide the map's texel grid by 1/8 texel (lesson 13)
-                s.originShift = std::clamp(s.originShift + (shift ? -0.125f : 0.125f), -64.0f,
-                                           64.0f);
+                s.originShift =
+                    std::clamp(s.originShift + (shift ? -0.125f : 0.125f), -64.0f, 64.0f);
                 mSession.setSettings(s);
                 break;
             case GLFW_KEY_S:  // snap the map's fit to whole texels
                 s.snap = !s.snap;
                 mSession.setSettings(s);
                 break;
-            case GLFW_KEY_UP: mSession.setPixel(px - glm::ivec2(0, 1)); break;
-            case GLFW_KEY_DOWN: mSession.setPixel(px + glm::ivec2(0, 1)); break;
-            case GLFW_KEY_HOME: mSession.goToStep(0); break;
-            case GLFW_KEY_END: mSession.goToStep(mSession.stepCount() - 1); break;
+            case GLFW_KEY_UP:
+                mSession.setPixel(px - glm::ivec2(0, 1));
+                break;
+            case GLFW_KEY_DOWN:
+                mSession.setPixel(px + glm::ivec2(0, 1));
+                break;
+            case GLFW_KEY_HOME:
+                mSession.goToStep(0);
+                break;
+            case GLFW_KEY_END:
+                mSession.goToStep(mSession.stepCount() - 1);
+                break;
             case GLFW_KEY_M: {
                 s.method = (s.method + (shift ? PCF_METHOD_COUNT - 1 : 1)) % PCF_METHOD_COUNT;
                 s.kernel = fitKernel(s.method, s.kernel);
@@ -125,16 +147,27 @@ public:
                 break;
             }
             case GLFW_KEY_Q:  // the texture unit's precision: exact <-> hw8 (issue 10)
-                s.precision = s.precision == PCF_PRECISION_HW8 ? PCF_PRECISION_EXACT
-                                                               : PCF_PRECISION_HW8;
+                s.precision =
+                    s.precision == PCF_PRECISION_HW8 ? PCF_PRECISION_EXACT : PCF_PRECISION_HW8;
                 mSession.setSettings(s);
                 break;
-            case GLFW_KEY_L: nextLesson(shift ? -1 : 1); break;
-            case GLFW_KEY_E: exportFrame(); break;
-            case GLFW_KEY_P: mSession.setPresentation(!mSession.presentation()); break;
-            case GLFW_KEY_H: mSession.setHelp(!mSession.help()); break;
-            case GLFW_KEY_F: toggleFullscreen(); break;
-            default: break;
+            case GLFW_KEY_L:
+                nextLesson(shift ? -1 : 1);
+                break;
+            case GLFW_KEY_E:
+                exportFrame();
+                break;
+            case GLFW_KEY_P:
+                mSession.setPresentation(!mSession.presentation());
+                break;
+            case GLFW_KEY_H:
+                mSession.setHelp(!mSession.help());
+                break;
+            case GLFW_KEY_F:
+                toggleFullscreen();
+                break;
+            default:
+                break;
         }
     }
 
@@ -171,7 +204,7 @@ public:
         }
     }
 
-private:
+  private:
     // Space/Right: the next page of a step's text that pages, then the next step.
     void forward() {
         if (!mSession.nextPage()) mSession.goToStep(mSession.step() + 1);
@@ -232,7 +265,7 @@ void onMouseButton(GLFWwindow* window, int button, int action, int) {
 // plain functions; the viewer rides in the window's user pointer, which the destructor clears
 // on every way out (return or exception).
 class InputBinding {
-public:
+  public:
     InputBinding(GLFWwindow* window, Viewer& viewer) : mWindow(window) {
         glfwSetWindowUserPointer(window, &viewer);
         glfwSetKeyCallback(window, onKey);
@@ -246,7 +279,7 @@ public:
     InputBinding(const InputBinding&) = delete;
     InputBinding& operator=(const InputBinding&) = delete;
 
-private:
+  private:
     GLFWwindow* mWindow;
 };
 
@@ -264,16 +297,26 @@ void present(Session& session, GlfwWindowContext& window) {
 
 KeyPress parseKeyName(const std::string& token) {
     static const std::map<std::string, int> NAMES = {
-        {"space", GLFW_KEY_SPACE},         {"right", GLFW_KEY_RIGHT},
-        {"left", GLFW_KEY_LEFT},           {"up", GLFW_KEY_UP},
-        {"down", GLFW_KEY_DOWN},           {"home", GLFW_KEY_HOME},
-        {"end", GLFW_KEY_END},             {"backspace", GLFW_KEY_BACKSPACE},
-        {"escape", GLFW_KEY_ESCAPE},       {"esc", GLFW_KEY_ESCAPE},
-        {"left_bracket", GLFW_KEY_LEFT_BRACKET}, {"[", GLFW_KEY_LEFT_BRACKET},
-        {"right_bracket", GLFW_KEY_RIGHT_BRACKET}, {"]", GLFW_KEY_RIGHT_BRACKET},
-        {"minus", GLFW_KEY_MINUS},         {"-", GLFW_KEY_MINUS},
-        {"equal", GLFW_KEY_EQUAL},         {"plus", GLFW_KEY_EQUAL},
-        {"+", GLFW_KEY_EQUAL},             {"=", GLFW_KEY_EQUAL},
+        {"space", GLFW_KEY_SPACE},
+        {"right", GLFW_KEY_RIGHT},
+        {"left", GLFW_KEY_LEFT},
+        {"up", GLFW_KEY_UP},
+        {"down", GLFW_KEY_DOWN},
+        {"home", GLFW_KEY_HOME},
+        {"end", GLFW_KEY_END},
+        {"backspace", GLFW_KEY_BACKSPACE},
+        {"escape", GLFW_KEY_ESCAPE},
+        {"esc", GLFW_KEY_ESCAPE},
+        {"left_bracket", GLFW_KEY_LEFT_BRACKET},
+        {"[", GLFW_KEY_LEFT_BRACKET},
+        {"right_bracket", GLFW_KEY_RIGHT_BRACKET},
+        {"]", GLFW_KEY_RIGHT_BRACKET},
+        {"minus", GLFW_KEY_MINUS},
+        {"-", GLFW_KEY_MINUS},
+        {"equal", GLFW_KEY_EQUAL},
+        {"plus", GLFW_KEY_EQUAL},
+        {"+", GLFW_KEY_EQUAL},
+        {"=", GLFW_KEY_EQUAL},
     };
     KeyPress k;
     std::string name = token;
@@ -282,10 +325,14 @@ KeyPress parseKeyName(const std::string& token) {
         if (plus == std::string::npos || plus == 0 || plus + 1 == name.size()) break;
         std::string mod = name.substr(0, plus);
         std::transform(mod.begin(), mod.end(), mod.begin(), ::tolower);
-        if (mod == "shift") k.mods |= GLFW_MOD_SHIFT;
-        else if (mod == "ctrl" || mod == "control") k.mods |= GLFW_MOD_CONTROL;
-        else if (mod == "alt") k.mods |= GLFW_MOD_ALT;
-        else throw UsageError("--keys: unknown modifier '" + mod + "' in '" + token + "'");
+        if (mod == "shift")
+            k.mods |= GLFW_MOD_SHIFT;
+        else if (mod == "ctrl" || mod == "control")
+            k.mods |= GLFW_MOD_CONTROL;
+        else if (mod == "alt")
+            k.mods |= GLFW_MOD_ALT;
+        else
+            throw UsageError("--keys: unknown modifier '" + mod + "' in '" + token + "'");
         name = name.substr(plus + 1);
     }
     std::string lower = name;
@@ -298,7 +345,8 @@ KeyPress parseKeyName(const std::string& token) {
     } else if (lower.size() == 1 && lower[0] >= '0' && lower[0] <= '9') {
         k.key = GLFW_KEY_0 + (lower[0] - '0');
     } else {
-        throw UsageError("--keys: unknown key '" + token + "' (GLFW names: space, right, m, "
+        throw UsageError("--keys: unknown key '" + token +
+                         "' (GLFW names: space, right, m, "
                          "shift+m, left_bracket ...)");
     }
     return k;
@@ -324,8 +372,10 @@ void benchFrames(Session& session, GlfwWindowContext& window, int frames) {
     auto timeFrames = [&](bool rerender) {
         std::vector<double> frame, compose, shown;
         for (int k = 0; k < frames; ++k) {
-            if (rerender) session.invalidateScene();
-            else session.setPixel(session.pixel() + glm::ivec2(k % 2 ? -1 : 1, 0));
+            if (rerender)
+                session.invalidateScene();
+            else
+                session.setPixel(session.pixel() + glm::ivec2(k % 2 ? -1 : 1, 0));
             auto start = Clock::now();
             session.compose();
             glFinish();
@@ -343,12 +393,12 @@ void benchFrames(Session& session, GlfwWindowContext& window, int frames) {
     Times full = timeFrames(true);
     Times pick = timeFrames(false);
     glm::ivec2 size = session.frameSize();
-    std::printf("view: %dx%d, %s, %d frames each, medians (glFinish + steady_clock):\n"
-                "  scene re-rendered: frame %.1f ms (compose %.1f + present %.1f)\n"
-                "  pixel moved:       frame %.1f ms (compose %.1f + present %.1f)\n",
-                size.x, size.y, std::string(methodInfo(session.settings().method).name).c_str(),
-                frames, full.frame, full.compose, full.present, pick.frame, pick.compose,
-                pick.present);
+    std::printf(
+        "view: %dx%d, %s, %d frames each, medians (glFinish + steady_clock):\n"
+        "  scene re-rendered: frame %.1f ms (compose %.1f + present %.1f)\n"
+        "  pixel moved:       frame %.1f ms (compose %.1f + present %.1f)\n",
+        size.x, size.y, std::string(methodInfo(session.settings().method).name).c_str(), frames,
+        full.frame, full.compose, full.present, pick.frame, pick.compose, pick.present);
 }
 
 // --screenshot: the frame after the keys, written to `path` (staged in `outputs`).
@@ -378,9 +428,9 @@ void runInteractive(Viewer& viewer, GlfwWindowContext& window) {
         auto start = std::chrono::steady_clock::now();
         session.compose();
         glFinish();
-        double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
-                                                              start)
-                        .count();
+        double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
         present(session, window);
         session.setFrameTimeMs(ms);
         glfwWaitEventsTimeout(0.25);

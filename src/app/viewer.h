@@ -2,20 +2,19 @@
 // replayed from the command line (--keys) and the frame written (--screenshot) for scripts.
 #pragma once
 
-#include <string>
-
 #include <glm/glm.hpp>
+#include <string>
 
 namespace pcf {
 
 struct ViewerOptions {
-    std::string lesson;      // resolved path
+    std::string lesson;  // resolved path
     glm::ivec2 windowSize{1600, 900};
     std::string keys;        // "right right m e": GLFW key names, space-separated
     std::string screenshot;  // write the frame after the keys, then quit
     bool presentation = false;
-    bool force = false;      // the screenshot may overwrite
-    int benchFrames = 0;     // > 0: time this many frames, print the medians, quit
+    bool force = false;   // the screenshot may overwrite
+    int benchFrames = 0;  // > 0: time this many frames, print the medians, quit
 };
 
 // Runs the window until Esc (or until the screenshot is written). Throws std::runtime_error

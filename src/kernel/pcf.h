@@ -3,11 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <span>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "kernel/shadow_map.h"
 
@@ -39,12 +38,12 @@ struct PlainMap {
 
 // The map as the tracer sees it: the same reads, and every tap and fetch written down.
 struct TapRecord {
-    ivec2 texel;   // the texel read (after clamping to the edge)
-    float depth;   // its stored depth
-    float ref;     // the receiver depth it was compared with
-    float lit;     // the comparison bit: 1 lit, 0 shadowed
-    float weight;  // its share of the final visibility
-    int fetch;     // index of the fetch instruction that read it
+    ivec2 texel;           // the texel read (after clamping to the edge)
+    float depth;           // its stored depth
+    float ref;             // the receiver depth it was compared with
+    float lit;             // the comparison bit: 1 lit, 0 shadowed
+    float weight;          // its share of the final visibility
+    int fetch;             // index of the fetch instruction that read it
     bool clamped = false;  // the texel asked for was outside the map (clamped to the edge)
 };
 
@@ -76,9 +75,7 @@ inline int mapFixedPoint(const RecordingMap& m) { return m.mFixedPoint; }
 inline int mapPrecision(const PlainMap& m) { return m.mPrecision; }
 inline int mapPrecision(const RecordingMap& m) { return m.mPrecision; }
 inline float fetchDepth(const PlainMap& m, ivec2 t) { return m.mDepths[t.y * m.mSize.x + t.x]; }
-inline float fetchDepth(const RecordingMap& m, ivec2 t) {
-    return m.mDepths[t.y * m.mSize.x + t.x];
-}
+inline float fetchDepth(const RecordingMap& m, ivec2 t) { return m.mDepths[t.y * m.mSize.x + t.x]; }
 inline void pcfTap(const PlainMap&, ivec2, float, float, float, float) {}
 inline void pcfTap(const RecordingMap& m, ivec2 texel, float depth, float ref, float lit,
                    float weight) {
@@ -93,8 +90,11 @@ inline void pcfFetch(const RecordingMap& m, int kind, vec2 uv, float weight) {
     m.mRecording->fetches.push_back({kind, uv, weight});
 }
 
+// The prelude must come first: it defines what the kernel is written in.
+// clang-format off
 #include "shaders/shared/pcf_prelude.h"
 #include "shaders/shared/pcf_kernel.h"
+// clang-format on
 
 // The map as the batch path sees it, with the texture unit's state the lookup needs.
 inline PlainMap plainMap(const ShadowMap& map, const PcfParams& prm) {

@@ -1,18 +1,17 @@
 // shadow_map.h: a W x H grid of depths as the light saw them, the input of every PCF lookup.
 #pragma once
 
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace pcf {
 
 // Depths in [0,1], 0 = near the light. Texel (i, j) is column i, row j of the image as stored
 // (row 0 = first scanline = GL texel row 0); its centre is at uv ((i + 0.5) / W, (j + 0.5) / H).
 class ShadowMap {
-public:
+  public:
     ShadowMap() = default;
     ShadowMap(int width, int height, float fill = 1.0f);
     ShadowMap(int width, int height, std::vector<float> depths);
@@ -35,7 +34,7 @@ public:
     // words ("texel (3, 4) is NaN"); nullopt when every texel is fine.
     std::optional<std::string> findInvalidTexel() const;
 
-private:
+  private:
     glm::ivec2 mSize{0, 0};
     std::vector<float> mDepths;
     int mFixedPointBits = 0;

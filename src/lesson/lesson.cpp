@@ -15,8 +15,8 @@
 #include "kernel/shadow_map.h"
 #include "kernel/trace.h"
 #include "lesson/lesson_text.h"
-#include "scene/presets.h"
 #include "scene/input_file.h"
+#include "scene/presets.h"
 #include "scene/scene_file.h"
 
 namespace pcf {
@@ -25,10 +25,10 @@ namespace {
 
 // The keys a [settings] table and a [[step]] may set.
 constexpr std::string_view SETTING_KEYS[] = {
-    "method",    "kernel",        "radius",     "rotate", "bias",     "constant_bias", "slope_bias",
-    "slope_max", "normal_offset", "soft_scale", "cull",   "map_size", "depth_format",  "pixel",
-    "precision", "weights",       "sigma",      "grid",   "rpdb_max", "heatmap", "origin_shift",
-    "snap"};
+    "method",       "kernel",    "radius",        "rotate",     "bias",  "constant_bias",
+    "slope_bias",   "slope_max", "normal_offset", "soft_scale", "cull",  "map_size",
+    "depth_format", "pixel",     "precision",     "weights",    "sigma", "grid",
+    "rpdb_max",     "heatmap",   "origin_shift",  "snap"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));
@@ -395,17 +395,16 @@ class LessonParser {
             std::string cull = string(*n, name("cull"));
             std::optional<CullMode> mode = cullModeFromName(cull);
             if (!mode) {
-                fail(*n, "unknown cull mode '" + cull + "' (known: " +
-                             std::string(CULL_MODE_NAMES) + ")");
+                fail(*n, "unknown cull mode '" + cull +
+                             "' (known: " + std::string(CULL_MODE_NAMES) + ")");
             }
             s.cull = *mode;
         }
         if (const toml::node* n = table.get("map_size")) {
             int64_t size = integer(*n, name("map_size"));
             if (size < MIN_MAP_SIZE || size > MAX_MAP_SIZE) {
-                fail(*n, name("map_size") + " must be " + std::to_string(MIN_MAP_SIZE) +
-                             ".." + std::to_string(MAX_MAP_SIZE) + ", got " +
-                             std::to_string(size));
+                fail(*n, name("map_size") + " must be " + std::to_string(MIN_MAP_SIZE) + ".." +
+                             std::to_string(MAX_MAP_SIZE) + ", got " + std::to_string(size));
             }
             s.mapSize = static_cast<int>(size);
         }
@@ -418,14 +417,16 @@ class LessonParser {
             // The lesson's canonical names only (depthFormatFromName also reads "32").
             std::optional<DepthFormat> f = depthFormatFromName(format);
             if (!f || depthFormatName(*f) != format) {
-                fail(*n, "unknown depth format '" + format + "' (known: " +
-                             std::string(DEPTH_FORMAT_NAMES) + ")");
+                fail(*n, "unknown depth format '" + format +
+                             "' (known: " + std::string(DEPTH_FORMAT_NAMES) + ")");
             }
             s.depthFormat = *f;
         }
         if (const toml::node* n = table.get("precision")) {
             std::optional<int> p = precisionFromName(string(*n, name("precision")));
-            if (!p) fail(*n, "unknown precision '" + n->value_or(std::string()) + "' (known: exact, hw8)");
+            if (!p)
+                fail(*n,
+                     "unknown precision '" + n->value_or(std::string()) + "' (known: exact, hw8)");
             s.precision = *p;
         }
         if (const toml::node* n = table.get("weights")) {
@@ -545,9 +546,7 @@ class LessonParser {
 
 float LessonSettings::depthBias() const { return biasParams().baseBias(); }
 
-BiasParams LessonSettings::biasParams() const {
-    return biasParamsOf(*this);
-}
+BiasParams LessonSettings::biasParams() const { return biasParamsOf(*this); }
 
 PcfParams LessonSettings::pcfParams(glm::ivec2 framePixel, glm::ivec2 frameSize) const {
     vec2 rotation(1.0f, 0.0f);

@@ -60,8 +60,8 @@
 // an unknown preset, a step without title or text, a lesson without steps.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <cstddef>
+#include <glm/glm.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -83,29 +83,29 @@ constexpr glm::ivec2 LESSON_FRAME_SIZE{1280, 720};
 struct LessonSettings {
     int method = PCF_GATHER;
     int kernel = 3;
-    float radius = 1.0f;              // poisson, texels
-    bool rotate = false;              // poisson: rotate the disk per pixel
-    BiasMode bias = BiasMode::Constant;          // key `bias`, by name (kernel/settings.h)
-    float constantBias = DEFAULT_CONSTANT_BIAS;  // light depth units: ref = z - constantBias
-    float slopeBias = DEFAULT_SLOPE_BIAS;        // slope_bias: S of the slope mode
-    float slopeMax = DEFAULT_SLOPE_MAX;          // slope_max: its cap
-    float normalOffset = DEFAULT_NORMAL_OFFSET;  // normal_offset: texels
-    float softScale = DEFAULT_SOFT_SCALE;        // soft_scale
-    float rpdbMax = DEFAULT_RPDB_MAX;            // rpdb_max: receiver-plane's cap on dz/duv
-    CullMode cull = CullMode::Back;              // shadow pass culling: "back", "front" or "none"
-    int mapSize = 1024;               // texels per side
+    float radius = 1.0f;                          // poisson, texels
+    bool rotate = false;                          // poisson: rotate the disk per pixel
+    BiasMode bias = BiasMode::Constant;           // key `bias`, by name (kernel/settings.h)
+    float constantBias = DEFAULT_CONSTANT_BIAS;   // light depth units: ref = z - constantBias
+    float slopeBias = DEFAULT_SLOPE_BIAS;         // slope_bias: S of the slope mode
+    float slopeMax = DEFAULT_SLOPE_MAX;           // slope_max: its cap
+    float normalOffset = DEFAULT_NORMAL_OFFSET;   // normal_offset: texels
+    float softScale = DEFAULT_SOFT_SCALE;         // soft_scale
+    float rpdbMax = DEFAULT_RPDB_MAX;             // rpdb_max: receiver-plane's cap on dz/duv
+    CullMode cull = CullMode::Back;               // shadow pass culling: "back", "front" or "none"
+    int mapSize = 1024;                           // texels per side
     DepthFormat depthFormat = DepthFormat::D32F;  // "16", "24" or "32f"
-    int precision = 0;                // PCF_PRECISION_EXACT or _HW8 (key `precision`)
-    int weights = 0;                  // PCF_WEIGHTS_* (key `weights`)
-    float sigma = 1.0f;               // gaussian weights, texels (key `sigma`)
-    glm::ivec2 pixel{640, 360};       // in the 1280 x 720 reference frame, origin top-left, y down
-    bool grid = true;                 // the texel grid overlay on the scene
-    bool heatmap = false;             // the aliasing heat map over the scene (viewer key A)
+    int precision = 0;                            // PCF_PRECISION_EXACT or _HW8 (key `precision`)
+    int weights = 0;                              // PCF_WEIGHTS_* (key `weights`)
+    float sigma = 1.0f;                           // gaussian weights, texels (key `sigma`)
+    glm::ivec2 pixel{640, 360};  // in the 1280 x 720 reference frame, origin top-left, y down
+    bool grid = true;            // the texel grid overlay on the scene
+    bool heatmap = false;        // the aliasing heat map over the scene (viewer key A)
     // The shadow map's texel grid slid under the world by (s, s) texels (light.h's
     // shiftShadowOrigin), then with `snap` moved to the nearest whole-texel fit (viewer keys
     // O / Shift+O step s by 1/8 texel, S toggles snap). 0 and false: the plain fit.
-    float originShift = 0.0f;         // origin_shift, texels
-    bool snap = false;                // snap
+    float originShift = 0.0f;  // origin_shift, texels
+    bool snap = false;         // snap
 
     // The constant depth every mode but none subtracts from the receiver's depth (0 for none).
     float depthBias() const;
@@ -146,7 +146,7 @@ struct LessonStep {
 // use a tenth of each (titles ~35 characters, texts ~800, 6 steps); the limits keep a file that
 // is wrong by mistake (or by malice) from costing minutes and gigabytes to lay out.
 constexpr int MAX_LESSON_STEPS = 32;
-constexpr std::size_t MAX_TITLE_CHARS = 120;      // the lesson's title and each step's, in UTF-8
+constexpr std::size_t MAX_TITLE_CHARS = 120;       // the lesson's title and each step's, in UTF-8
 constexpr std::size_t MAX_STEP_TEXT_CHARS = 4000;  // characters (code points), not bytes
 
 struct Lesson {

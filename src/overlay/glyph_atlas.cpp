@@ -1,10 +1,9 @@
 #include "overlay/glyph_atlas.h"
 
-#include <array>
-
 #include <ft2build.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <map>

@@ -18,8 +18,8 @@
 #include <string_view>
 #include <vector>
 
-#include "overlay/inspector.h"
 #include "kernel/trace_explain.h"
+#include "overlay/inspector.h"
 #include "overlay/text_layout.h"
 
 namespace pcf::inspector_detail {

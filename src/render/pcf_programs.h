@@ -14,7 +14,7 @@ namespace pcf {
 // The files of a fragment stage that filters: prelude, kernel, then the stage itself, with
 // PCF_METHOD and PCF_KERNEL defined (DESIGN.md 5: #version, defines, prelude, kernel, stage).
 class PcfProgramCache {
-public:
+  public:
     // extraDefines: more "#define NAME VALUE" lines for every program of this cache.
     PcfProgramCache(std::string vertexFile, std::string fragmentFile,
                     std::string extraDefines = "");
@@ -23,7 +23,7 @@ public:
     // std::runtime_error with the driver's log (file:line) if the GLSL does not build.
     GLuint get(int method, int kernel);
 
-private:
+  private:
     std::string mVertexFile;
     std::string mFragmentFile;
     std::string mExtraDefines;

@@ -14,15 +14,16 @@ PcfParams RenderSettings::pcfParams() const {
 
 float RenderSettings::depthBias() const { return biasParams().baseBias(); }
 
-BiasParams RenderSettings::biasParams() const {
-    return biasParamsOf(*this);
-}
+BiasParams RenderSettings::biasParams() const { return biasParamsOf(*this); }
 
 GLenum glDepthFormat(DepthFormat format) {
     switch (format) {
-        case DepthFormat::D16: return GL_DEPTH_COMPONENT16;
-        case DepthFormat::D24: return GL_DEPTH_COMPONENT24;
-        default: return GL_DEPTH_COMPONENT32F;
+        case DepthFormat::D16:
+            return GL_DEPTH_COMPONENT16;
+        case DepthFormat::D24:
+            return GL_DEPTH_COMPONENT24;
+        default:
+            return GL_DEPTH_COMPONENT32F;
     }
 }
 

@@ -101,7 +101,7 @@ glm::mat4 shiftShadowOrigin(const glm::mat4& shadowClipFromWorld, glm::vec2 offs
 glm::mat4 widenShadowDepthRange(const glm::mat4& shadowClipFromWorld, float ratio) {
     float r = std::max(ratio, 1.0f);
     glm::mat4 widen(1.0f);
-    widen[2][2] = 1.0f / r;        // z' = z / r + w / r - w
+    widen[2][2] = 1.0f / r;  // z' = z / r + w / r - w
     widen[3][2] = 1.0f / r - 1.0f;
     return widen * shadowClipFromWorld;
 }

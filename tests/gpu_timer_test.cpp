@@ -1,4 +1,6 @@
 // timeGpu: a positive median from real repetitions, with the timer that is honest here.
+#include "render/gpu_timer.h"
+
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
@@ -8,7 +10,6 @@
 
 #include "render/gl_context.h"
 #include "render/gl_objects.h"
-#include "render/gpu_timer.h"
 #include "render/shader_loader.h"
 
 namespace pcf {

@@ -1,11 +1,11 @@
 // Tessellation for the rasterizer: counts, winding (counter-clockwise from outside), normals,
 // and that the vertices lie on the analytic surface. Also the bounds the frusta are fitted to.
+#include "scene/mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
-
-#include "scene/mesh.h"
 
 namespace pcf {
 namespace {

@@ -1,13 +1,14 @@
 // The camera: GL matrices, and primary rays that land exactly where the rasterizer draws.
+#include "scene/camera.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "scene/camera.h"
+#include "glm_expect.h"
 #include "scene/raycast.h"
 #include "scene/scene.h"
-#include "glm_expect.h"
 
 namespace pcf {
 namespace {

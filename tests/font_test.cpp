@@ -1,12 +1,12 @@
 // Font discovery: fontconfig first, then the known paths, then one line naming every place.
+#include "overlay/font.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
 #include <string>
-
-#include "overlay/font.h"
 
 namespace pcf {
 namespace {

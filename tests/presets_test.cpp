@@ -1,10 +1,11 @@
 // The built-in scenes: each parses, has a caster and a receiver, and shows its shadow.
+#include "scene/presets.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <set>
 
-#include "scene/presets.h"
 #include "scene/raycast.h"
 #include "scene/scene_file.h"
 

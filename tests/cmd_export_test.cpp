@@ -1,5 +1,6 @@
 // The teaching frames as a user gets them: `pcfscope export` (headless), `pcfscope view` with
 // replayed keys under Xvfb, and the main job without a display.
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -9,8 +10,6 @@
 #include <filesystem>
 #include <fstream>
 #include <thread>
-
-#include <gtest/gtest.h>
 
 #include "image_read.h"
 #include "json_lite.h"
@@ -50,7 +49,7 @@ method = "pcf-gather"
 )";
 
 class ExportTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         mDir = testutil::makeTempDir("export");
         std::ofstream(mDir / "test.toml") << TEST_LESSON;
@@ -65,8 +64,9 @@ protected:
 std::string readFile(const std::string& p) { return testutil::readAll(p); }
 
 TEST_F(ExportTest, WritesAFrameAndATracePerStep) {
-    auto r = runPcfscope("export " + path("test.toml") + " -o " + path("frames") +
-                         " --size 1280x720", "env -u DISPLAY");
+    auto r =
+        runPcfscope("export " + path("test.toml") + " -o " + path("frames") + " --size 1280x720",
+                    "env -u DISPLAY");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (int s = 1; s <= 3; ++s) {
         std::string stem = path("frames/test-step0" + std::to_string(s));
@@ -113,15 +113,17 @@ TEST_F(ExportTest, WritesAFrameAndATracePerStep) {
 // The neighbourhood's cells are tinted by their comparison bit: look at the exported pixels of
 // each tap's cell and find the lit or the shadowed colour there.
 TEST_F(ExportTest, CellsAreTintedByTheirBits) {
-    auto r = runPcfscope("export " + path("test.toml") + " -o " + path("frames") +
-                         " --size 1600x900 --steps 2", "env -u DISPLAY");
+    auto r = runPcfscope(
+        "export " + path("test.toml") + " -o " + path("frames") + " --size 1600x900 --steps 2",
+        "env -u DISPLAY");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     jsonlite::Value j = jsonlite::parse(readFile(path("frames/test-step02.json")));
     std::vector<unsigned char> px = readImageBytes(path("frames/test-step02.png"), 4);
     // Rebuild the layout the exporter used from the trace it wrote.
     Trace tr;
     const jsonlite::Value& t = j["trace"];
-    tr.mapSize = {static_cast<int>(t["map_size"][0].number), static_cast<int>(t["map_size"][1].number)};
+    tr.mapSize = {static_cast<int>(t["map_size"][0].number),
+                  static_cast<int>(t["map_size"][1].number)};
     tr.uv = {static_cast<float>(t["uv"][0].number), static_cast<float>(t["uv"][1].number)};
     tr.pos.base = {static_cast<int>(t["base"][0].number), static_cast<int>(t["base"][1].number)};
     tr.weights.origin = {static_cast<int>(t["weights"]["origin"][0].number),
@@ -159,8 +161,10 @@ TEST_F(ExportTest, ChartStepsShowTheChartInTheScenesPlace) {
     auto r = runPcfscope("export 11-speed-and-accuracy -o " + path("chart") +
                          " --size 1600x900 --steps 3-4");
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    std::vector<unsigned char> chart = readImageBytes(path("chart/11-speed-and-accuracy-step03.png"), 4);
-    std::vector<unsigned char> scene = readImageBytes(path("chart/11-speed-and-accuracy-step04.png"), 4);
+    std::vector<unsigned char> chart =
+        readImageBytes(path("chart/11-speed-and-accuracy-step03.png"), 4);
+    std::vector<unsigned char> scene =
+        readImageBytes(path("chart/11-speed-and-accuracy-step04.png"), 4);
     // The chart's page is white at the scene's top-left corner; the scene there is sky.
     auto at = [](const std::vector<unsigned char>& px, int x, int y) {
         size_t k = (static_cast<size_t>(y) * 1600 + x) * 4;
@@ -208,8 +212,7 @@ TEST_F(ExportTest, EveryLessonExportsHeadless) {
         ++lessons;
         Lesson lesson = parseLessonFile(entry.path().string());
         std::string dir = path("all/" + lesson.name);
-        auto r = runPcfscope("export " + entry.path().string() + " -o " + dir +
-                                 " --size 1280x720",
+        auto r = runPcfscope("export " + entry.path().string() + " -o " + dir + " --size 1280x720",
                              "env -u DISPLAY -u WAYLAND_DISPLAY");
         ASSERT_EQ(r.exitCode, 0) << lesson.name << ": " << r.err;
         for (size_t s = 1; s <= lesson.steps.size(); ++s) {
@@ -238,9 +241,8 @@ TEST_F(ExportTest, SameBytesOnEveryRun) {
 }
 
 TEST_F(ExportTest, RefusesToOverwriteAndBadInputExitsTwo) {
-    ASSERT_EQ(runPcfscope("export " + path("test.toml") + " -o " + path("f") + " --steps 1")
-                  .exitCode,
-              0);
+    ASSERT_EQ(
+        runPcfscope("export " + path("test.toml") + " -o " + path("f") + " --steps 1").exitCode, 0);
     auto again = runPcfscope("export " + path("test.toml") + " -o " + path("f") + " --steps 1");
     EXPECT_EQ(again.exitCode, 2);
     EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
@@ -312,17 +314,17 @@ TEST_F(ExportTest, MainJobWithoutADisplayExportsLessonOne) {
 TEST_F(ExportTest, ViewKeysScreenshotIsTheExportedFrame) {
     testutil::VirtualDisplay x;
     ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
-    auto shot = runPcfscope("view " + path("test.toml") +
-                                " --keys \"right right\" --screenshot " + path("shot.png"),
-                            "DISPLAY=" + x.display());
+    auto shot = runPcfscope(
+        "view " + path("test.toml") + " --keys \"right right\" --screenshot " + path("shot.png"),
+        "DISPLAY=" + x.display());
     ASSERT_EQ(shot.exitCode, 0) << shot.err;
     auto r = runPcfscope("export " + path("test.toml") + " -o " + path("frames") + " --steps 3");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(readFile(path("shot.png")), readFile(path("frames/test-step03.png")));
     // Keys change the state: M moves pcf-gather to pcf-hw, and the frame changes with it.
-    auto other = runPcfscope("view " + path("test.toml") +
-                                 " --keys \"end m\" --screenshot " + path("shot-m.png"),
-                             "DISPLAY=" + x.display());
+    auto other = runPcfscope(
+        "view " + path("test.toml") + " --keys \"end m\" --screenshot " + path("shot-m.png"),
+        "DISPLAY=" + x.display());
     ASSERT_EQ(other.exitCode, 0) << other.err;
     EXPECT_NE(readFile(path("shot-m.png")), readFile(path("frames/test-step03.png")));
     // Keys that change the state the words were written for: the numbers follow the live
@@ -343,11 +345,10 @@ TEST_F(ExportTest, ViewKeysScreenshotIsTheExportedFrame) {
     ASSERT_EQ(same.exitCode, 0) << same.err;
     jsonlite::Value acne =
         jsonlite::parse(readFile(path("pcfscope-frames/08-acne-and-bias-step01.json")));
-    EXPECT_EQ(acne["text"].string.find("(Written for"), std::string::npos)
-        << acne["text"].string;
-    auto badKey = runPcfscope("view " + path("test.toml") + " --keys \"warp\" --screenshot " +
-                                  path("x.png"),
-                              "DISPLAY=" + x.display());
+    EXPECT_EQ(acne["text"].string.find("(Written for"), std::string::npos) << acne["text"].string;
+    auto badKey =
+        runPcfscope("view " + path("test.toml") + " --keys \"warp\" --screenshot " + path("x.png"),
+                    "DISPLAY=" + x.display());
     EXPECT_EQ(badKey.exitCode, 2);
     EXPECT_NE(badKey.err.find("unknown key 'warp'"), std::string::npos) << badKey.err;
 }

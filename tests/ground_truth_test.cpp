@@ -5,6 +5,8 @@
 // uniform scale), and the exact shadowed fraction of each pixel is the area of the shadow
 // polygon clipped to that rectangle over the rectangle's area, without the ray caster. Every
 // pixel's truth must lie within its own stated bound of that.
+#include "analysis/ground_truth.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +15,6 @@
 #include <memory>
 
 #include "analysis/error_metrics.h"
-#include "analysis/ground_truth.h"
 #include "render/gl_context.h"
 #include "render/scene_renderer.h"
 #include "scene/camera.h"

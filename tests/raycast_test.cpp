@@ -1,11 +1,12 @@
 // Exact ray casting: hand-computed hits and misses for each primitive, shadow rays, and the
 // analytic shadow of a sphere (an ellipse) against occluded().
+#include "scene/raycast.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "scene/raycast.h"
 #include "glm_expect.h"
 
 namespace pcf {

@@ -1,5 +1,7 @@
 // Error metrics, difference images, the Pareto front, the bench's CSV and table, and the chart's
 // layout and drawing, on small hand-made inputs whose answers are known.
+#include "analysis/error_metrics.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +13,6 @@
 
 #include "analysis/bench_report.h"
 #include "analysis/difference_image.h"
-#include "analysis/error_metrics.h"
 #include "analysis/pareto.h"
 #include "analysis/speed_chart.h"
 #include "kernel/methods.h"

@@ -1,10 +1,10 @@
 // The glyph atlas: metrics for what the inspector writes, rasterised at the exact size asked.
+#include "overlay/glyph_atlas.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <stdexcept>
-
-#include "overlay/glyph_atlas.h"
 
 namespace pcf {
 namespace {

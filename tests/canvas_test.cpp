@@ -1,5 +1,7 @@
 // The overlay canvas on llvmpipe through EGL: exact coverage, painter's order, crisp text,
 // determinism and batching. Pixels are read back with rows top-down, like the canvas counts.
+#include "overlay/canvas.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +12,6 @@
 #include <string>
 
 #include "image_read.h"
-#include "overlay/canvas.h"
 #include "render/gl_context.h"
 #include "render/gl_objects.h"
 #include "render/image_io.h"

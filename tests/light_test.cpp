@@ -1,6 +1,8 @@
 // The shadow map's matrices: the directional light's orthographic frustum fitted tightly to the
 // scene, the spot's perspective, shadow-map coordinates in GL's convention, and the direction
 // to the light for shadow rays.
+#include "scene/light.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,7 +10,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "glm_expect.h"
-#include "scene/light.h"
 #include "scene/raycast.h"
 #include "scene/scene.h"
 

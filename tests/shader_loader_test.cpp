@@ -1,5 +1,7 @@
 // The embedded shaders, the order the loader assembles them in, its error messages, and the
 // shared PCF kernel header compiled as GLSL 4.50 by the driver.
+#include "render/shader_loader.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +15,6 @@
 #include "kernel/pcf.h"
 #include "render/gl_context.h"
 #include "render/gl_objects.h"
-#include "render/shader_loader.h"
 
 namespace pcf {
 namespace {

@@ -1,10 +1,10 @@
 // Text layout: UTF-8, measuring, whole-pixel placement and word wrap.
+#include "overlay/text_layout.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <string>
-
-#include "overlay/text_layout.h"
 
 namespace pcf {
 namespace {
