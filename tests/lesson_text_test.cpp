@@ -21,10 +21,10 @@ Trace exampleTrace(int method, int kernel = 3) {
 StepContext context() {
     StepContext ctx;
     ctx.pixel = {612, 388};
-    ctx.bias = "none";
+    ctx.bias = BiasMode::None;
     ctx.constantBias = 0.0025f;
-    ctx.cull = "front";
-    ctx.depthFormat = "24";
+    ctx.cull = CullMode::Front;
+    ctx.depthFormat = DepthFormat::D24;
     return ctx;
 }
 
@@ -141,9 +141,9 @@ TEST(LessonText, StepContextScalesThePixel) {
     step.settings.depthFormat = DepthFormat::D16;
     StepContext ctx = makeStepContext(step, {640, 360});
     EXPECT_EQ(ctx.pixel, glm::ivec2(306, 194));
-    EXPECT_EQ(ctx.bias, "none");
-    EXPECT_EQ(ctx.cull, "front");
-    EXPECT_EQ(ctx.depthFormat, "16");
+    EXPECT_EQ(ctx.bias, BiasMode::None);
+    EXPECT_EQ(ctx.cull, CullMode::Front);
+    EXPECT_EQ(ctx.depthFormat, DepthFormat::D16);
     EXPECT_EQ(makeStepContext(step).pixel, glm::ivec2(612, 388));
 }
 

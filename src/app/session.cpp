@@ -461,10 +461,10 @@ std::string Session::stepText() const {
     }
     StepContext ctx = makeStepContext(s, glm::ivec2(mLayout.scene.size()));
     ctx.pixel = mPixel;
-    ctx.bias = std::string(biasModeName(mSettings.bias));
+    ctx.bias = mSettings.bias;
     ctx.constantBias = mSettings.constantBias;
-    ctx.cull = std::string(cullModeName(mSettings.cull));
-    ctx.depthFormat = std::string(depthFormatName(mSettings.depthFormat));
+    ctx.cull = mSettings.cull;
+    ctx.depthFormat = mSettings.depthFormat;
     std::string text = fillText(s.text, *mTrace, ctx);
     // Keys may have changed the state the words were written for; the numbers follow the live
     // state, the sentences cannot. Say so rather than let them disagree in silence.
@@ -632,6 +632,27 @@ namespace {
 // JSON number: 0.005 stays "0.005", not the float's "0.00499999989".
 Json settingNumber(float v) { return Json::parse(formatNumber(v)); }
 
+// The frame's layout (planFrame's boxes) as a JSON array: [{"kind", "panel", "role",
+// "rect": [x, y, w, h], "font_px", "shortened"}, ...]; font_px and shortened only for what
+// draws text.
+Json layoutJson(const std::vector<LayoutBox>& boxes) {
+    Json out = Json::array();
+    for (const LayoutBox& b : boxes) {
+        Json box = {{"kind", boxKindName(b.kind)},
+                    {"panel", b.panel},
+                    {"role", b.role},
+                    {"rect", Json::array({jsonNumber(b.rect.x), jsonNumber(b.rect.y),
+                                          jsonNumber(b.rect.w), jsonNumber(b.rect.h)})}};
+        if (b.kind == BoxKind::Text || b.kind == BoxKind::Number || b.kind == BoxKind::Label ||
+            b.fontPx > 0.0f) {
+            box["font_px"] = jsonNumber(b.fontPx);
+            box["shortened"] = b.shortened;
+        }
+        out.push_back(std::move(box));
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string Session::stepJson() const {
@@ -658,8 +679,7 @@ std::string Session::stepJson() const {
               {"presentation", mPresentation},
               {"text_page", mTextPage + 1},
               {"text_pages", mTextPages},
-              // inspector.h writes the layout's JSON itself (layoutJson); taken as it is.
-              {"layout", Json::parse(layoutJson(mBoxes))}};
+              {"layout", layoutJson(mBoxes)}};
     return jsonDump(j);
 }
 

@@ -134,7 +134,8 @@ const std::vector<Simple>& simpleNames() {
         {"weights.h", [](const Trace& t, const StepContext&) { return integer(t.weights.size.y); }},
         {"pixel.x", [](const Trace&, const StepContext& c) { return integer(c.pixel.x); }},
         {"pixel.y", [](const Trace&, const StepContext& c) { return integer(c.pixel.y); }},
-        {"bias", [](const Trace&, const StepContext& c) { return text(c.bias); }},
+        {"bias", [](const Trace&,
+                    const StepContext& c) { return text(std::string(biasModeName(c.bias))); }},
         {"constant_bias",
          [](const Trace&, const StepContext& c) { return number(c.constantBias); }},
         {"dzduv.u", [](const Trace& t, const StepContext&) { return number(t.bias.dzduv.x); }},
@@ -147,8 +148,12 @@ const std::vector<Simple>& simpleNames() {
              for (const TapRecord& tap : t.taps) n += pcfCompare(tap.depth, t.ref) < 0.5f;
              return integer(n);
          }},
-        {"cull", [](const Trace&, const StepContext& c) { return text(c.cull); }},
-        {"depth_format", [](const Trace&, const StepContext& c) { return text(c.depthFormat); }},
+        {"cull", [](const Trace&,
+                    const StepContext& c) { return text(std::string(cullModeName(c.cull))); }},
+        {"depth_format",
+         [](const Trace&, const StepContext& c) {
+             return text(std::string(depthFormatName(c.depthFormat)));
+         }},
     };
     return names;
 }
@@ -363,10 +368,10 @@ std::optional<PlaceholderProblem> scan(std::string_view text, OnLiteral onLitera
 StepContext makeStepContext(const LessonStep& step, glm::ivec2 frameSize) {
     StepContext ctx;
     ctx.pixel = scalePixel(step.settings.pixel, frameSize);
-    ctx.bias = std::string(biasModeName(step.settings.bias));
+    ctx.bias = step.settings.bias;
     ctx.constantBias = step.settings.constantBias;
-    ctx.cull = std::string(cullModeName(step.settings.cull));
-    ctx.depthFormat = std::string(depthFormatName(step.settings.depthFormat));
+    ctx.cull = step.settings.cull;
+    ctx.depthFormat = step.settings.depthFormat;
     return ctx;
 }
 

@@ -73,10 +73,10 @@ namespace pcf {
 // What the text may say besides the trace: the state the picture was rendered with.
 struct StepContext {
     glm::ivec2 pixel{0, 0};  // the pixel traced, in the frame rendered (origin top-left, y down)
-    std::string bias = "constant";
-    float constantBias = 0.002f;
-    std::string cull = "back";
-    std::string depthFormat = "32f";
+    BiasMode bias = BiasMode::Constant;  // the settings' enums (kernel/settings.h)
+    float constantBias = DEFAULT_CONSTANT_BIAS;
+    CullMode cull = CullMode::Back;
+    DepthFormat depthFormat = DepthFormat::D32F;
 };
 
 // The context of a step rendered in a frame of frameSize: its state, its pixel scaled.

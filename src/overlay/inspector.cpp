@@ -164,27 +164,6 @@ void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& o
     for (const auto& op : ops) op(canvas);
 }
 
-std::string layoutJson(const std::vector<LayoutBox>& boxes) {
-    std::string out = "[";
-    char buf[160];
-    for (size_t k = 0; k < boxes.size(); ++k) {
-        const LayoutBox& b = boxes[k];
-        std::snprintf(buf, sizeof buf, "\"rect\":[%g,%g,%g,%g]", static_cast<double>(b.rect.x),
-                      static_cast<double>(b.rect.y), static_cast<double>(b.rect.w),
-                      static_cast<double>(b.rect.h));
-        out += std::string(k ? "," : "") + "{\"kind\":\"" + boxKindName(b.kind) +
-               "\",\"panel\":\"" + b.panel + "\",\"role\":\"" + b.role + "\"," + buf;
-        if (b.kind == BoxKind::Text || b.kind == BoxKind::Number || b.kind == BoxKind::Label ||
-            b.fontPx > 0.0f) {
-            std::snprintf(buf, sizeof buf, ",\"font_px\":%g,\"shortened\":%s",
-                          static_cast<double>(b.fontPx), b.shortened ? "true" : "false");
-            out += buf;
-        }
-        out += "}";
-    }
-    return out + "]";
-}
-
 void drawInspector(Canvas& c, const InspectorLayout& l, const InspectorModel& m) {
     drawPlan(c, planFrame(l, m).base);
 }

@@ -96,9 +96,6 @@ struct FramePlan {
 };
 FramePlan planFrame(const InspectorLayout& layout, const InspectorModel& model);
 void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& ops);
-// The plan's boxes as a JSON array: [{"kind","panel","role","rect":[x,y,w,h],"font_px",
-// "shortened"}...].
-std::string layoutJson(const std::vector<LayoutBox>& boxes);
 
 // A frame is drawn in layers: the panels' backgrounds (clearInspectorPanels) and the scene's
 // pixels blitted into layout.scene; then
