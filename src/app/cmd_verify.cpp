@@ -79,11 +79,17 @@ FloatImage readImage(const std::filesystem::path& path, int channels) {
     return img;
 }
 
-int runVerify(const VerifyOptions& o) {
-    requireIntRange("--subtexel-bits", o.subTexelBits, 1, 16);
-    requireIntRange("--weight-bits", o.weightBits, 1, 16);
-    requireIntRange("--reference-bits", o.referenceBits, 0, 24);
-    std::filesystem::path dir(o.dir);
+// What `render --raw` rendered with, from its render.json.
+struct RawSettings {
+    std::string methodName;
+    PcfParams prm;
+    bool rotate = false;
+    BiasMode biasMode = BiasMode::Constant;
+    PcfBias bias = PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, DEFAULT_RPDB_MAX);
+    DepthFormat format = DepthFormat::D32F;
+};
+
+RawSettings readRawSettings(const std::filesystem::path& dir) {
     std::filesystem::path jsonPath = dir / "render.json";
     std::ifstream in(jsonPath);
     if (!in) throw UsageError("cannot read " + jsonPath.string() + " (a `render --raw` folder?)");
@@ -92,66 +98,89 @@ int runVerify(const VerifyOptions& o) {
     std::string where = jsonPath.string();
     Json json = readRenderJson(buf.str(), where);
 
-    std::string methodName = jsonField(json, "method", where);
-    std::optional<int> method = methodFromName(methodName);
+    RawSettings r;
+    r.methodName = jsonField(json, "method", where);
+    std::optional<int> method = methodFromName(r.methodName);
     if (!method)
-        throw UsageError("render.json: unknown method '" + methodName + "' (" + where + ")");
-    PcfParams prm = makeParams(*method, static_cast<int>(jsonFloat(json, "kernel", where)),
-                               jsonFloat(json, "radius", where));
+        throw UsageError("render.json: unknown method '" + r.methodName + "' (" + where + ")");
+    r.prm = makeParams(*method, static_cast<int>(jsonFloat(json, "kernel", where)),
+                       jsonFloat(json, "radius", where));
     std::optional<int> weights = weightsFromName(jsonField(json, "weights", where));
     std::optional<int> precision = precisionFromName(jsonField(json, "precision", where));
     std::optional<DepthFormat> format = depthFormatFromName(jsonField(json, "depth_format", where));
     if (!weights || !precision || !format) {
         throw UsageError("render.json: unknown weights, precision or depth_format (" + where + ")");
     }
-    prm.weights = *weights;
-    prm.sigma = jsonFloat(json, "sigma", where);
-    prm.precision = *precision;
-    bool rotate = jsonBool(json, "rotate", where);
+    r.prm.weights = *weights;
+    r.prm.sigma = jsonFloat(json, "sigma", where);
+    r.prm.precision = *precision;
+    r.format = *format;
+    r.rotate = jsonBool(json, "rotate", where);
     // The bias mode: folders written before render.json had it hold none of the per-tap modes.
-    BiasMode biasMode = BiasMode::Constant;
     float softScale = 0.0f;
     float rpdbMax = DEFAULT_RPDB_MAX;
     if (json.contains("bias")) {
         std::string name = jsonField(json, "bias", where);
         std::optional<BiasMode> mode = biasModeFromName(name);
         if (!mode) throw UsageError("render.json: unknown bias '" + name + "' (" + where + ")");
-        biasMode = *mode;
+        r.biasMode = *mode;
         softScale = jsonFloat(json, "soft_scale", where);
         if (json.contains("rpdb_max")) rpdbMax = jsonFloat(json, "rpdb_max", where);
     }
-    PcfBias bias(static_cast<int>(biasMode), vec2(0.0f), softScale, rpdbMax);
-    if (auto why = validateParams(prm))
+    r.bias = PcfBias(static_cast<int>(r.biasMode), vec2(0.0f), softScale, rpdbMax);
+    // render.json's keys are the kernel's words.
+    if (auto why = validateParams(r.prm))
         throw UsageError("render.json: " + *why + " (" + where + ")");
+    return r;
+}
 
+// The folder's images: the map compared with, each pixel's lookup and visibility, and under
+// receiver-plane bias each pixel's plane.
+struct RawImages {
     ShadowMap map;
+    FloatImage lightSpace;  // u, v, ref, receiver (1 or 0)
+    FloatImage visibility;
+    FloatImage planes;  // dz/du, dz/dv; empty unless receiver-plane bias
+};
+
+RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) {
+    RawImages img;
     try {
-        map = readDepthImage((dir / "shadowmap.exr").string());
+        img.map = readDepthImage((dir / "shadowmap.exr").string());
     } catch (const ImageError& e) {
         throw UsageError(e.what());
     }
-    map.setFixedPointBits(depthFormatFixedPointBits(*format));
-    FloatImage ls = readImage(dir / "lightspace.exr", 4);
-    FloatImage vis = readImage(dir / "visibility.exr", 1);
-    if (ls.width != vis.width || ls.height != vis.height) {
+    img.map.setFixedPointBits(depthFormatFixedPointBits(r.format));
+    img.lightSpace = readImage(dir / "lightspace.exr", 4);
+    img.visibility = readImage(dir / "visibility.exr", 1);
+    const FloatImage& ls = img.lightSpace;
+    if (ls.width != img.visibility.width || ls.height != img.visibility.height) {
         throw UsageError("lightspace.exr and visibility.exr differ in size (" + dir.string() + ")");
     }
     // Receiver-plane bias: each pixel's plane, dz/du and dz/dv, as the shader derived them.
-    FloatImage planes;
-    if (bias.mode == PCF_BIAS_RECEIVER_PLANE) {
-        planes = readImage(dir / "dzduv.exr", 4);
-        if (planes.width != ls.width || planes.height != ls.height) {
+    if (r.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
+        img.planes = readImage(dir / "dzduv.exr", 4);
+        if (img.planes.width != ls.width || img.planes.height != ls.height) {
             throw UsageError("dzduv.exr and lightspace.exr differ in size (" + dir.string() + ")");
         }
     }
+    return img;
+}
 
-    ConformancePrecision prec{o.subTexelBits, o.weightBits, o.referenceBits};
+// Every receiver pixel's visibility against the envelope of what a GPU may return there.
+struct EnvelopeTally {
     long receivers = 0;
     long inside = 0;
-    float worst = 0.0f;
-    glm::ivec2 worstPixel(-1);
+    float worst = 0.0f;  // the largest distance outside the envelope
+    glm::ivec2 worstPixel{-1};
     float worstValue = 0.0f;
     VisibilityEnvelope worstEnv;
+};
+
+EnvelopeTally checkEnvelopes(const RawImages& img, const RawSettings& r,
+                             const ConformancePrecision& prec) {
+    const FloatImage& ls = img.lightSpace;
+    EnvelopeTally t;
     for (int y = 0; y < ls.height; ++y) {
         for (int x = 0; x < ls.width; ++x) {
             size_t k = static_cast<size_t>(y) * ls.width + x;
@@ -162,29 +191,45 @@ int runVerify(const VerifyOptions& o) {
                 throw UsageError("lightspace.exr: pixel (" + std::to_string(x) + ", " +
                                  std::to_string(y) + ") is not finite");
             }
-            ++receivers;
-            PcfParams p = prm;
+            ++t.receivers;
+            PcfParams p = r.prm;
             // Rows are top-down; gl_FragCoord counts from the bottom.
-            if (rotate) p.rotation = pcfPixelRotation(glm::ivec2(x, ls.height - 1 - y));
-            PcfBias b = bias;
-            if (!planes.data.empty()) b.dzduv = vec2(planes.data[4 * k], planes.data[4 * k + 1]);
-            VisibilityEnvelope env = visibilityEnvelope(map, uv, ref, p, b, prec);
-            float v = vis.data[k];
+            if (r.rotate) p.rotation = pcfPixelRotation(glm::ivec2(x, ls.height - 1 - y));
+            PcfBias b = r.bias;
+            if (!img.planes.data.empty()) {
+                b.dzduv = vec2(img.planes.data[4 * k], img.planes.data[4 * k + 1]);
+            }
+            VisibilityEnvelope env = visibilityEnvelope(img.map, uv, ref, p, b, prec);
+            float v = img.visibility.data[k];
             if (env.contains(v)) {
-                ++inside;
+                ++t.inside;
                 continue;
             }
             float miss = v < env.lo ? env.lo - v : v - env.hi;
-            if (miss > worst) {
-                worst = miss;
-                worstPixel = {x, y};
-                worstValue = v;
-                worstEnv = env;
+            if (miss > t.worst) {
+                t.worst = miss;
+                t.worstPixel = {x, y};
+                t.worstValue = v;
+                t.worstEnv = env;
             }
         }
     }
-    if (receivers == 0) throw UsageError("no receiver pixels in " + dir.string());
-    std::string what = methodName;
+    return t;
+}
+
+int runVerify(const VerifyOptions& o) {
+    requireIntRange("--subtexel-bits", o.subTexelBits, 1, 16);
+    requireIntRange("--weight-bits", o.weightBits, 1, 16);
+    requireIntRange("--reference-bits", o.referenceBits, 0, 24);
+    std::filesystem::path dir(o.dir);
+    RawSettings r = readRawSettings(dir);
+    RawImages img = readRawImages(dir, r);
+    ConformancePrecision prec{o.subTexelBits, o.weightBits, o.referenceBits};
+    EnvelopeTally t = checkEnvelopes(img, r, prec);
+    if (t.receivers == 0) throw UsageError("no receiver pixels in " + dir.string());
+
+    const PcfParams& prm = r.prm;
+    std::string what = r.methodName;
     if (methodInfo(prm.method).usesKernel) what += " N=" + std::to_string(prm.kernel);
     if (prm.weights != PCF_WEIGHTS_BOX) what += " " + std::string(weightsName(prm.weights));
     std::string refBits =
@@ -192,19 +237,19 @@ int runVerify(const VerifyOptions& o) {
     std::printf(
         "verify %s: %s, bias %s, map %dx%d %s, precision %s; envelope: %d sub-texel bits, "
         "%d weight bits, %s reference bits\n",
-        dir.string().c_str(), what.c_str(), std::string(biasModeName(biasMode)).c_str(),
-        map.width(), map.height(), std::string(depthFormatName(*format)).c_str(),
+        dir.string().c_str(), what.c_str(), std::string(biasModeName(r.biasMode)).c_str(),
+        img.map.width(), img.map.height(), std::string(depthFormatName(r.format)).c_str(),
         std::string(precisionName(prm.precision)).c_str(), o.subTexelBits, o.weightBits,
         refBits.c_str());
-    std::printf("%ld of %ld receiver pixels inside the envelope (%.4f %%)\n", inside, receivers,
-                100.0 * static_cast<double>(inside) / static_cast<double>(receivers));
-    if (inside == receivers) return 0;
+    std::printf("%ld of %ld receiver pixels inside the envelope (%.4f %%)\n", t.inside, t.receivers,
+                100.0 * static_cast<double>(t.inside) / static_cast<double>(t.receivers));
+    if (t.inside == t.receivers) return 0;
     std::printf(
         "worst outlier: pixel (%d, %d) (top-left origin): visibility %.7g, envelope "
         "[%.7g, %.7g], outside by %.3g\n",
-        worstPixel.x, worstPixel.y, static_cast<double>(worstValue),
-        static_cast<double>(worstEnv.lo), static_cast<double>(worstEnv.hi),
-        static_cast<double>(worst));
+        t.worstPixel.x, t.worstPixel.y, static_cast<double>(t.worstValue),
+        static_cast<double>(t.worstEnv.lo), static_cast<double>(t.worstEnv.hi),
+        static_cast<double>(t.worst));
     return 1;
 }
 
