@@ -16,6 +16,9 @@
 namespace pcf {
 namespace {
 
+// The problem's sentence in the sweep's own words, or "" for none.
+std::string problemText(const std::optional<ParamProblem>& p) { return p ? p->text() : ""; }
+
 class BenchSweep : public ::testing::Test {
   protected:
     static void SetUpTestSuite() { sContext = createHeadlessContext(); }
@@ -229,14 +232,15 @@ TEST_F(BenchSweep, RowsCarryFetchCountsTimingsAndTheTimer) {
 TEST(BenchOptionsCheck, NamesTheOptionThatIsOutOfRange) {
     BenchOptions o;
     o.kernels = {3, 9};
-    EXPECT_EQ(validateBenchOptions(o).value_or(""), "--kernels 9 is out of range (1..8)");
+    EXPECT_EQ(problemText(validateBenchOptions(o)), "kernels 9 is out of range (1..8)");
+    EXPECT_EQ(validateBenchOptions(o)->setting, "kernels");
     o = BenchOptions{};
     o.mapSizes = {3};
-    EXPECT_EQ(validateBenchOptions(o).value_or(""), "--map-sizes 3 is out of range (4..4096)");
+    EXPECT_EQ(problemText(validateBenchOptions(o)), "map_sizes 3 is out of range (4..4096)");
     o = BenchOptions{};
     o.methods = {PCF_TENT};
     o.kernels = {2, 4};
-    EXPECT_NE(validateBenchOptions(o).value_or("").find("tent takes --kernels 3, 5 or 7"),
+    EXPECT_NE(problemText(validateBenchOptions(o)).find("tent takes kernels 3, 5 or 7"),
               std::string::npos);
     EXPECT_FALSE(validateBenchOptions(BenchOptions{}).has_value());
     EXPECT_FALSE(validateBenchOptions(quickBenchOptions()).has_value());
@@ -248,12 +252,17 @@ TEST(BenchOptionsCheck, NamesTheOptionThatIsOutOfRange) {
     o.weights = {PCF_WEIGHTS_BOX, PCF_WEIGHTS_BINOMIAL, PCF_WEIGHTS_GAUSSIAN};
     EXPECT_EQ(benchPoints(o).size(), 68u + 2u * 2u * 3u * 4u);
     o.weights = {PCF_WEIGHTS_GAUSSIAN};
-    EXPECT_NE(validateBenchOptions(o).value_or("").find("pcf-naive and pcf-gather only"),
+    EXPECT_NE(problemText(validateBenchOptions(o)).find("pcf-naive and pcf-gather only"),
               std::string::npos);
     o.methods = {PCF_GATHER};
     EXPECT_FALSE(validateBenchOptions(o).has_value());
     o.truthSpp = 1;
-    EXPECT_EQ(validateBenchOptions(o).value_or(""), "--spp 1 is out of range (2..64)");
+    EXPECT_EQ(problemText(validateBenchOptions(o)), "spp 1 is out of range (2..64)");
+    // The kernel's own check of the weights, passed on with its setting named.
+    o.truthSpp = DEFAULT_TRUTH_SPP;
+    o.weights = {PCF_WEIGHTS_GAUSSIAN};
+    o.sigma = 100.0f;
+    EXPECT_EQ(validateBenchOptions(o)->setting, "sigma");
 }
 
 }  // namespace

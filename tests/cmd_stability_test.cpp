@@ -87,6 +87,13 @@ TEST_F(StabilityCommand, BadSweepParametersExit2WithNothingWritten) {
         EXPECT_EQ(r.err.rfind("pcfscope: ", 0), 0u) << args << ": " << r.err;
         EXPECT_FALSE(fs::exists(out)) << args;
     }
+    // The sweep's own checks name their setting as its flag (app/cli_util.h: cliWords).
+    auto r = testutil::runPcfscope(
+        "stability --quick --methods pcf-gather --biases interpolated -o " + path("bad"));
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("no method given combines with --biases: bias interpolated"),
+              std::string::npos)
+        << r.err;
 }
 
 }  // namespace

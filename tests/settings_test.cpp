@@ -18,8 +18,11 @@ TEST(Settings, TentTakesThreeFiveOrSevenAndTheOthersTheRange) {
 
 TEST(Settings, ValidateParamsFollowsTheSameRule) {
     for (int n = MIN_KERNEL; n <= MAX_KERNEL; ++n) {
-        EXPECT_EQ(validateParams(makeParams(PCF_TENT, n)).has_value(), !kernelFits(PCF_TENT, n));
+        bool tentTakes = n == 3 || n == 5 || n == 7;
+        EXPECT_EQ(validateParams(makeParams(PCF_TENT, n)).has_value(), !tentTakes) << n;
+        EXPECT_FALSE(validateParams(makeParams(PCF_GATHER, n)).has_value()) << n;
     }
+    EXPECT_TRUE(validateParams(makeParams(PCF_GATHER, MAX_KERNEL + 1)).has_value());
 }
 
 TEST(Settings, KernelKeysStepThroughWhatTheMethodTakes) {

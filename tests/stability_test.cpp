@@ -247,10 +247,12 @@ TEST(StabilityOptionsCheck, BadSweepParametersAreNamed) {
     EXPECT_FALSE(validateStabilityOptions(o).has_value());
     o.elevations = {45, 0.5f};
     ASSERT_TRUE(validateStabilityOptions(o).has_value());
-    EXPECT_NE(validateStabilityOptions(o)->find("--elevations"), std::string::npos);
+    EXPECT_EQ(validateStabilityOptions(o)->setting, "elevations");
     o = StabilityOptions{};
     o.methods = {{PCF_GATHER, 9}};
-    EXPECT_TRUE(validateStabilityOptions(o).has_value());
+    ASSERT_TRUE(validateStabilityOptions(o).has_value());
+    // The kernel's check, its setting named as the list the kernel came from.
+    EXPECT_EQ(validateStabilityOptions(o)->text(), "kernels 9 is out of range (1..8)");
     o = StabilityOptions{};
     o.biases.clear();
     EXPECT_TRUE(validateStabilityOptions(o).has_value());

@@ -94,62 +94,68 @@ std::vector<BenchPoint> benchPoints(const BenchOptions& options) {
     return points;
 }
 
-std::optional<std::string> validateBenchOptions(const BenchOptions& options) {
+std::optional<ParamProblem> validateBenchOptions(const BenchOptions& options) {
+    // A sentence naming no option, and one naming an option list once (said as its flag by the
+    // command line: app/cli_util.h's cliWords).
+    auto plain = [](std::string sentence) { return ParamProblem{"", std::move(sentence), ""}; };
+    auto outOfRange = [](const char* setting, int v, int lo, int hi) {
+        return ParamProblem{setting, "",
+                            " " + std::to_string(v) + " is out of range (" + std::to_string(lo) +
+                                ".." + std::to_string(hi) + ")"};
+    };
     for (int method : options.methods) {
         if (method < 0 || method >= PCF_METHOD_COUNT) {
-            return "unknown method id " + std::to_string(method);
+            return plain("unknown method id " + std::to_string(method));
         }
     }
-    if (options.kernels.empty()) return std::string("--kernels is empty");
+    if (options.kernels.empty()) return ParamProblem{"kernels", "", " is empty"};
     for (int n : options.kernels) {
         if (n < MIN_KERNEL || n > MAX_KERNEL) {
-            return "--kernels " + std::to_string(n) + " is out of range (" +
-                   std::to_string(MIN_KERNEL) + ".." + std::to_string(MAX_KERNEL) + ")";
+            return outOfRange("kernels", n, MIN_KERNEL, MAX_KERNEL);
         }
     }
-    if (options.mapSizes.empty()) return std::string("--map-sizes is empty");
+    if (options.mapSizes.empty()) return ParamProblem{"map_sizes", "", " is empty"};
     for (int size : options.mapSizes) {
         if (size < MIN_MAP_SIZE || size > MAX_MAP_SIZE) {
-            return "--map-sizes " + std::to_string(size) + " is out of range (" +
-                   std::to_string(MIN_MAP_SIZE) + ".." + std::to_string(MAX_MAP_SIZE) + ")";
+            return outOfRange("map_sizes", size, MIN_MAP_SIZE, MAX_MAP_SIZE);
         }
     }
     for (int method : methodsOf(options)) {
         if (kernelsOf(method, options).empty()) {
-            return std::string(methodInfo(method).name) +
-                   " takes --kernels 3, 5 or 7 and none of those was given";
+            return ParamProblem{"kernels", std::string(methodInfo(method).name) + " takes ",
+                                " 3, 5 or 7 and none of those was given"};
         }
     }
     if (options.frameSize.x < 1 || options.frameSize.y < 1 ||
         options.frameSize.x > MAX_FRAME_SIDE || options.frameSize.y > MAX_FRAME_SIDE) {
-        return std::string("the frame size is out of range");
+        return plain("the frame size is out of range");
     }
-    if (options.weights.empty()) return std::string("--weights is empty");
+    if (options.weights.empty()) return ParamProblem{"weights", "", " is empty"};
     bool box = false;
     for (int w : options.weights) {
         if (w < PCF_WEIGHTS_BOX || w > PCF_WEIGHTS_GAUSSIAN) {
-            return "unknown weights id " + std::to_string(w);
+            return plain("unknown weights id " + std::to_string(w));
         }
         box = box || w == PCF_WEIGHTS_BOX;
         PcfParams p = makeParams(PCF_GATHER, 3);
         p.weights = w;
         p.sigma = options.sigma;
-        if (auto why = validateParams(p)) return why;
+        if (auto problem = checkParams(p)) return problem;  // weights or sigma
     }
     for (int method : methodsOf(options)) {
         if (!box && !takesWeights(method)) {
-            return std::string(methodInfo(method).name) +
-                   " weighs its taps as it must: --weights other than box apply to pcf-naive "
-                   "and pcf-gather only (give --methods)";
+            return ParamProblem{
+                "weights", std::string(methodInfo(method).name) + " weighs its taps as it must: ",
+                " other than box apply to pcf-naive and pcf-gather only (list "
+                "only those methods)"};
         }
     }
     if (options.truthSpp < 2 || options.truthSpp > MAX_TRUTH_SPP) {
         // One sample per pixel makes a truth of only 0 and 1: no edge band to measure.
-        return "--spp " + std::to_string(options.truthSpp) + " is out of range (2.." +
-               std::to_string(MAX_TRUTH_SPP) + ")";
+        return outOfRange("spp", options.truthSpp, 2, MAX_TRUTH_SPP);
     }
-    if (options.gpuRepeats < 1) return std::string("the GPU repeats must be at least 1");
-    if (options.cpuPasses < 1) return std::string("the CPU passes must be at least 1");
+    if (options.gpuRepeats < 1) return plain("the GPU repeats must be at least 1");
+    if (options.cpuPasses < 1) return plain("the CPU passes must be at least 1");
     return std::nullopt;
 }
 
@@ -376,7 +382,7 @@ class BenchRun {
 }  // namespace
 
 std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& options) {
-    if (auto why = validateBenchOptions(options)) throw std::invalid_argument(*why);
+    if (auto why = validateBenchOptions(options)) throw std::invalid_argument(why->text());
     if (context.renderer == nullptr || context.truth == nullptr) {
         throw std::invalid_argument("runBench: the context needs a renderer and a truth");
     }
@@ -389,7 +395,7 @@ std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& option
 BenchResult runBenchSweep(const BenchConfig& config, BenchContext callbacks,
                           const std::function<void(const GroundTruth&)>& truthDone) {
     const BenchOptions& options = config.options;
-    if (auto why = validateBenchOptions(options)) throw std::invalid_argument(*why);
+    if (auto why = validateBenchOptions(options)) throw std::invalid_argument(why->text());
     BenchResult result;
     GroundTruthOptions truthOptions;
     truthOptions.spp = options.truthSpp;

@@ -40,6 +40,7 @@
 #include "analysis/error_metrics.h"
 #include "analysis/failure_measures.h"
 #include "analysis/ground_truth.h"
+#include "kernel/methods.h"
 #include "render/render_settings.h"
 #include "render/scene_renderer.h"
 
@@ -98,8 +99,10 @@ struct BenchPoint {
 std::vector<BenchPoint> benchPoints(const BenchOptions& options);
 
 // Why the options cannot run (a kernel or map size out of range, a method with no kernel left,
-// no points at all), in one line naming the option; nullopt when they can.
-std::optional<std::string> validateBenchOptions(const BenchOptions& options);
+// no points at all), nullopt when they can: one sentence naming the option list at fault as
+// its field's words ("kernels", "map_sizes", "spp"; the kernel's checkParams says "weights" and
+// "sigma"), which the command line says as flags (app/cli_util.h: cliWords).
+std::optional<ParamProblem> validateBenchOptions(const BenchOptions& options);
 
 struct BenchRow {
     BenchPoint point;

@@ -497,75 +497,84 @@ StabilityOptions quickStabilityOptions() {
     return o;
 }
 
-std::optional<std::string> validateStabilityOptions(const StabilityOptions& o) {
-    if (o.methods.empty()) return std::string("--methods is empty");
+std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) {
+    // A sentence naming no option, one naming an option list once (said as its flag by the
+    // command line: app/cli_util.h's cliWords), and a value of a list out of its range.
+    auto plain = [](std::string sentence) { return ParamProblem{"", std::move(sentence), ""}; };
+    auto empty = [](const char* setting) { return ParamProblem{setting, "", " is empty"}; };
+    auto outOfRange = [](const char* setting, const std::string& v, const std::string& range) {
+        return ParamProblem{setting, "", " " + v + " is out of range (" + range + ")"};
+    };
+    if (o.methods.empty()) return empty("methods");
     for (const StabilityMethod& m : o.methods) {
         if (m.method < 0 || m.method >= PCF_METHOD_COUNT) {
-            return "unknown method id " + std::to_string(m.method);
+            return plain("unknown method id " + std::to_string(m.method));
         }
         RenderSettings s;
         s.method = m.method;
         s.kernel = m.kernel > 0 ? m.kernel : 3;
         s.radius = o.base.radius;
-        if (auto why = validateParams(s.pcfParams())) return *why;
+        if (std::optional<ParamProblem> p = checkParams(s.pcfParams())) {
+            if (p->setting == "kernel") p->setting = "kernels";  // the list it came from
+            return p;
+        }
     }
-    if (o.biases.empty()) return std::string("--biases is empty");
+    if (o.biases.empty()) return empty("biases");
     bool anyPair = false;
     for (BiasMode b : o.biases) {
         for (const StabilityMethod& m : o.methods) anyPair = anyPair || stabilityPairExists(m, b);
     }
     if (!anyPair) {
         BiasMode b = o.biases.front();
-        return std::string("no method of --methods combines with --biases: ") +
-               *validateBias(static_cast<int>(b), o.methods.front().method);
+        return ParamProblem{"biases", "no method given combines with ",
+                            ": " + *validateBias(static_cast<int>(b), o.methods.front().method)};
     }
-    if (o.sweeps.empty()) return std::string("--sweep is empty");
+    if (o.sweeps.empty()) return empty("sweep");
     if (o.frameSize.x < 16 || o.frameSize.y < 16 || o.frameSize.x > MAX_FRAME_SIDE ||
         o.frameSize.y > MAX_FRAME_SIDE) {
-        return std::string("the frame size is out of range (16.." + std::to_string(MAX_FRAME_SIDE) +
-                           " a side)");
+        return plain("the frame size is out of range (16.." + std::to_string(MAX_FRAME_SIDE) +
+                     " a side)");
     }
     if (o.mapSize < MIN_MAP_SIZE || o.mapSize > MAX_MAP_SIZE) {
-        return "--map-size " + std::to_string(o.mapSize) + " is out of range (" +
-               std::to_string(MIN_MAP_SIZE) + ".." + std::to_string(MAX_MAP_SIZE) + ")";
+        return outOfRange("map_size", std::to_string(o.mapSize),
+                          std::to_string(MIN_MAP_SIZE) + ".." + std::to_string(MAX_MAP_SIZE));
     }
     if (o.truthSpp < 1 || o.truthSpp > MAX_TRUTH_SPP) {
-        return "--spp " + std::to_string(o.truthSpp) + " is out of range (1.." +
-               std::to_string(MAX_TRUTH_SPP) + ")";
+        return outOfRange("spp", std::to_string(o.truthSpp), "1.." + std::to_string(MAX_TRUTH_SPP));
     }
     for (float e : o.elevations) {
         if (!(e >= 1.0f && e <= 90.0f)) {
-            return "--elevations " + std::to_string(e) + " is out of range (1..90 degrees)";
+            return outOfRange("elevations", std::to_string(e), "1..90 degrees");
         }
     }
-    if (o.elevations.empty()) return std::string("--elevations is empty");
+    if (o.elevations.empty()) return empty("elevations");
     for (float b : o.leakBiases) {
         if (!(b >= 0.0f && b <= 1.0f)) {
-            return "--leak-biases " + std::to_string(b) + " is out of range (0..1)";
+            return outOfRange("leak_biases", std::to_string(b), "0..1");
         }
     }
-    if (o.leakBiases.empty()) return std::string("--leak-biases is empty");
+    if (o.leakBiases.empty()) return empty("leak_biases");
     for (const std::string& name : o.leakScenes) {
-        if (!presetScene(name)) return "unknown leak scene '" + name + "'";
+        if (!presetScene(name)) return plain("unknown leak scene '" + name + "'");
     }
     if (o.shimmerFrames < 2 || o.shimmerFrames > 4 * SHIMMER_STEPS) {
-        return std::string("the shimmer frames are out of range (2..128)");
+        return plain("the shimmer frames are out of range (2..128)");
     }
     if (o.cameraFrames < 0 || o.cameraFrames > 64) {
-        return std::string("the camera frames are out of range (0..64)");
+        return plain("the camera frames are out of range (0..64)");
     }
     for (float r : o.depthRanges) {
         if (!(r >= 1.0f && r <= 1e7f)) {
-            return "--depth-ranges " + std::to_string(r) + " is out of range (1..1e7)";
+            return outOfRange("depth_ranges", std::to_string(r), "1..1e7");
         }
     }
-    if (o.depthRanges.empty()) return std::string("--depth-ranges is empty");
+    if (o.depthRanges.empty()) return empty("depth_ranges");
     if (!(o.precisionElevation >= 1.0f && o.precisionElevation <= 90.0f)) {
-        return std::string("the precision elevation is out of range (1..90 degrees)");
+        return plain("the precision elevation is out of range (1..90 degrees)");
     }
     for (int size : o.aliasingMapSizes) {
         if (size < MIN_MAP_SIZE || size > MAX_MAP_SIZE) {
-            return "aliasing map size " + std::to_string(size) + " is out of range";
+            return plain("aliasing map size " + std::to_string(size) + " is out of range");
         }
     }
     return std::nullopt;
@@ -659,7 +668,7 @@ std::vector<float> pixelsPerTexel(const std::vector<float>& lightSpace, glm::ive
 }
 
 StabilityResult runStability(const StabilityContext& context, const StabilityOptions& options) {
-    if (auto why = validateStabilityOptions(options)) throw std::invalid_argument(*why);
+    if (auto why = validateStabilityOptions(options)) throw std::invalid_argument(why->text());
     if (context.scene == nullptr) throw std::invalid_argument("runStability: no scene");
     Sweeper sweeper(context, options);
     for (Sweep s : options.sweeps) sweeper.run(s);

@@ -103,8 +103,10 @@ struct StabilityOptions {
 // 3 depth ranges; the methods nearest and pcf-gather N=3.
 StabilityOptions quickStabilityOptions();
 
-// Why the options cannot run, in one line naming the option; nullopt when they can.
-std::optional<std::string> validateStabilityOptions(const StabilityOptions& options);
+// Why the options cannot run, nullopt when they can: one sentence naming the option list at fault
+// as its field's words ("elevations", "leak_biases"), which the command line says as flags
+// (app/cli_util.h: cliWords).
+std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& options);
 
 // One measured point: the columns of stability.csv, in order.
 struct StabilityRow {

@@ -128,10 +128,21 @@ std::vector<int> parseIntList(const std::string& option, const std::string& text
     return values;
 }
 
+std::string cliWords(const ParamProblem& problem) {
+    if (problem.setting.empty()) return problem.text();
+    std::string flag = "--" + problem.setting;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    return problem.say(flag);
+}
+
 std::optional<std::string> cliParamsProblem(const PcfParams& prm) {
-    std::optional<ParamProblem> p = checkParams(prm);
-    if (!p) return std::nullopt;
-    return p->setting.empty() ? p->text() : p->say("--" + p->setting);
+    if (std::optional<ParamProblem> p = checkParams(prm)) return cliWords(*p);
+    return std::nullopt;
+}
+
+std::optional<std::string> cliBiasProblem(const BiasParams& bias) {
+    if (std::optional<ParamProblem> p = checkBiasParams(bias)) return cliWords(*p);
+    return std::nullopt;
 }
 
 std::string kernelOptionHelp() {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 
 namespace pcf {
@@ -41,9 +42,14 @@ void requireIntRange(const std::string& option, int v, int lo, int hi);
 // them: a value no method accepts is a mistake worth a word, not something to ignore silently.
 void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, float radius);
 
-// checkParams (kernel/methods.h) in the command line's words: the setting named as its flag
-// ("tent takes --kernel 3, 5 or 7, not 4"); nullopt when the parameters are valid.
+// A problem the kernel (or an analysis sweep) states in its words, said in the command line's:
+// the setting named as its flag, "slope_max" -> "--slope-max" ("tent takes --kernel 3, 5 or 7,
+// not 4"). The one place the CLI turns setting names into flags.
+std::string cliWords(const ParamProblem& problem);
+// checkParams (kernel/methods.h) and checkBiasParams (kernel/bias.h) in cliWords; nullopt when
+// the parameters are valid.
 std::optional<std::string> cliParamsProblem(const PcfParams& prm);
+std::optional<std::string> cliBiasProblem(const BiasParams& bias);
 
 // --kernel's help, the sizes from kernel/settings.h: "kernel size N (1..8; tent: 3, 5 or 7)".
 std::string kernelOptionHelp();

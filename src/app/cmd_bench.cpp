@@ -100,13 +100,7 @@ std::vector<int> parseMethods(const std::string& text) {
 
 std::vector<int> parseWeightsList(const std::string& text) {
     std::vector<int> ids;
-    for (const std::string& name : splitList("--weights", text)) {
-        std::optional<int> w = weightsFromName(name);
-        if (!w) {
-            throw UsageError("unknown --weights '" + name + "' (known: box, binomial, gaussian)");
-        }
-        ids.push_back(*w);
-    }
+    for (const std::string& name : splitList("--weights", text)) ids.push_back(weightsOption(name));
     return ids;
 }
 
@@ -163,7 +157,7 @@ BenchOptions parseSweep(const BenchCommandOptions& o) {
     requireIntRange("--shimmer-frames", options.shimmerFrames, 0, SHIMMER_STEPS);
     requireIntRange("--threads", o.threads, 0, 1024);
     options.cpuThreads = o.threads;
-    if (auto why = validateBenchOptions(options)) throw UsageError(*why);
+    if (auto why = validateBenchOptions(options)) throw UsageError(cliWords(*why));
     return options;
 }
 

@@ -60,6 +60,60 @@ bool has(const std::vector<Sweep>& sweeps, Sweep s) {
     return std::find(sweeps.begin(), sweeps.end(), s) != sweeps.end();
 }
 
+// --methods with --kernels: each method that takes a kernel once per size it can take.
+std::vector<StabilityMethod> parseMethods(const std::vector<std::string>& names,
+                                          const std::vector<int>& kernels) {
+    std::vector<StabilityMethod> methods;
+    for (const std::string& name : names) {
+        std::optional<int> id = methodFromName(name);
+        if (!id) {
+            throw UsageError("unknown method '" + name +
+                             "' in --methods (known: " + methodNameList() + ")");
+        }
+        if (!methodInfo(*id).usesKernel) {
+            methods.push_back({*id, 0});
+            continue;
+        }
+        bool any = false;
+        for (int n : kernels) {
+            if (*id == PCF_TENT && !kernelFits(*id, n)) continue;
+            methods.push_back({*id, n});
+            any = true;
+        }
+        if (!any) {
+            throw UsageError(name + " takes --kernels " + kernelSizesText(*id) +
+                             " and none was given");
+        }
+    }
+    return methods;
+}
+
+std::vector<BiasMode> parseBiases(const std::string& text) {
+    std::vector<BiasMode> biases;
+    for (const std::string& name : splitList("--biases", text)) {
+        std::optional<BiasMode> b = biasModeFromName(name);
+        if (!b) {
+            throw UsageError("unknown bias mode '" + name +
+                             "' in --biases (known: " + biasNameList() + ")");
+        }
+        biases.push_back(*b);
+    }
+    return biases;
+}
+
+std::vector<Sweep> parseSweeps(const std::string& text) {
+    std::vector<Sweep> sweeps;
+    for (const std::string& name : splitList("--sweep", text)) {
+        std::optional<Sweep> s = sweepFromName(name);
+        if (!s) {
+            throw UsageError("unknown sweep '" + name +
+                             "' in --sweep (known: acne, leak, shimmer, precision, aliasing)");
+        }
+        sweeps.push_back(*s);
+    }
+    return sweeps;
+}
+
 StabilityOptions parseOptions(const StabilityCommandOptions& o) {
     StabilityOptions options = o.quick ? quickStabilityOptions() : StabilityOptions{};
     for (const char* single : {"--method", "--kernel", "--bias", "--lesson", "--step"}) {
@@ -74,20 +128,10 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
     options.base = base;
     if (!o.quick || o.given("--size")) options.frameSize = base.frameSize;
     if (!o.quick || o.given("--map-size")) options.mapSize = base.mapSize;
-    std::vector<int> kernels = {5};
-    if (o.quick) kernels = {3};
+    std::vector<int> kernels = {o.quick ? 3 : 5};
     if (o.given("--kernels")) {
-        kernels.clear();
-        for (const std::string& item : splitList("--kernels", o.kernels)) {
-            char* end = nullptr;
-            long v = std::strtol(item.c_str(), &end, 10);
-            if (end != item.c_str() + item.size()) {
-                throw UsageError("--kernels expects integers separated by commas, got '" + item +
-                                 "'");
-            }
-            requireIntRange("--kernels", static_cast<int>(v), MIN_KERNEL, MAX_KERNEL);
-            kernels.push_back(static_cast<int>(v));
-        }
+        kernels = parseIntList("--kernels", o.kernels);
+        for (int n : kernels) requireIntRange("--kernels", n, MIN_KERNEL, MAX_KERNEL);
     }
     if (o.given("--methods") || o.given("--kernels")) {
         std::vector<std::string> names;
@@ -99,51 +143,10 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
         } else {
             names = splitList("--methods", o.methods);
         }
-        options.methods.clear();
-        for (const std::string& name : names) {
-            std::optional<int> id = methodFromName(name);
-            if (!id) {
-                throw UsageError("unknown method '" + name +
-                                 "' in --methods (known: " + methodNameList() + ")");
-            }
-            if (!methodInfo(*id).usesKernel) {
-                options.methods.push_back({*id, 0});
-                continue;
-            }
-            bool any = false;
-            for (int n : kernels) {
-                if (*id == PCF_TENT && !kernelFits(*id, n)) continue;
-                options.methods.push_back({*id, n});
-                any = true;
-            }
-            if (!any) {
-                throw UsageError(name + " takes --kernels " + kernelSizesText(*id) +
-                                 " and none was given");
-            }
-        }
+        options.methods = parseMethods(names, kernels);
     }
-    if (o.given("--biases")) {
-        options.biases.clear();
-        for (const std::string& name : splitList("--biases", o.biases)) {
-            std::optional<BiasMode> b = biasModeFromName(name);
-            if (!b) {
-                throw UsageError("unknown bias mode '" + name +
-                                 "' in --biases (known: " + biasNameList() + ")");
-            }
-            options.biases.push_back(*b);
-        }
-    }
-    if (o.given("--sweep")) {
-        options.sweeps.clear();
-        for (const std::string& name : splitList("--sweep", o.sweeps)) {
-            std::optional<Sweep> s = sweepFromName(name);
-            if (!s) {
-                throw UsageError("unknown sweep '" + name +
-                                 "' in --sweep (known: acne, leak, shimmer, precision, aliasing)");
-            }
-            options.sweeps.push_back(*s);
-        }
-    }
+    if (o.given("--biases")) options.biases = parseBiases(o.biases);
+    if (o.given("--sweep")) options.sweeps = parseSweeps(o.sweeps);
     if (o.quick && !o.given("--spp")) {
         options.truthSpp = 1;
     } else {
@@ -152,7 +155,7 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
     }
     requireIntRange("--threads", o.threads, 0, 1024);
     options.threads = o.threads;
-    if (auto why = validateStabilityOptions(options)) throw UsageError(*why);
+    if (auto why = validateStabilityOptions(options)) throw UsageError(cliWords(*why));
     return options;
 }
 

@@ -23,9 +23,6 @@ struct TraceOptions {
     bool example = false;
     std::string uv;
     float z = 0.0f;
-    CLI::Option* zOption = nullptr;  // given or not: every float, NaN included, is a value
-    CLI::Option* kernelOption = nullptr;
-    CLI::Option* radiusOption = nullptr;
     std::string bias = "none";  // a bias mode name, as render's --bias
     float constantBias = DEFAULT_CONSTANT_BIAS;
     float slopeBias = DEFAULT_SLOPE_BIAS;
@@ -33,11 +30,9 @@ struct TraceOptions {
     float normalOffset = DEFAULT_NORMAL_OFFSET;
     float softScale = DEFAULT_SOFT_SCALE;
     float rpdbMax = DEFAULT_RPDB_MAX;
-    float angleDeg = 0.0f;  // slope: the angle between the receiver's normal and the light
-    std::string dzduv;      // receiver-plane: "DU,DV"
-    CLI::Option* angleOption = nullptr;
-    CLI::Option* dzduvOption = nullptr;
-    CLI::App* sub = nullptr;  // to ask which bias options were given
+    float angleDeg = 0.0f;    // slope: the angle between the receiver's normal and the light
+    std::string dzduv;        // receiver-plane: "DU,DV"
+    CLI::App* sub = nullptr;  // to ask which options were given
     std::string method = "bilinear2x2";
     int kernel = 3;
     float radius = 1.0f;
@@ -58,49 +53,34 @@ constexpr float UV_LIMIT = 20.0f;
 constexpr const char* EXAMPLE_UV = "0.4625,0.3875";
 constexpr float EXAMPLE_Z = 0.5f;
 
-int runTrace(const TraceOptions& o) {
-    if (o.example == !o.mapPath.empty()) {
-        throw UsageError("trace needs exactly one of --map FILE or --example");
-    }
-    std::optional<int> method = methodFromName(o.method);
-    if (!method) {
-        throw UsageError("unknown method '" + o.method + "' (known: " + methodNameList() + ")");
-    }
-    checkGivenKernelOptions(o.kernelOption->count() > 0, o.kernel, o.radiusOption->count() > 0,
+// The filter's parameters: the shared options' parsing and checks (render_options.h), and
+// trace's own --rotation.
+PcfParams traceParams(const TraceOptions& o) {
+    int method = methodOption(o.method);
+    checkGivenKernelOptions(o.sub->count("--kernel") > 0, o.kernel, o.sub->count("--radius") > 0,
                             o.radius);
     float rad = o.rotationDeg * 0.0174532925f;
-    PcfParams prm = makeParams(*method, o.kernel, o.radius, vec2(std::cos(rad), std::sin(rad)));
-    std::optional<int> weights = weightsFromName(o.weights);
-    if (!weights) {
-        throw UsageError("unknown --weights '" + o.weights + "' (known: box, binomial, gaussian)");
-    }
-    std::optional<int> precision = precisionFromName(o.precision);
-    if (!precision)
-        throw UsageError("unknown --precision '" + o.precision + "' (known: exact, hw8)");
-    int fixedBits = 0;
-    if (o.depthFormat == "16" || o.depthFormat == "24") {
-        fixedBits = o.depthFormat == "16" ? 16 : 24;
-    } else if (o.depthFormat != "32f" && o.depthFormat != "32F" && o.depthFormat != "32") {
-        throw UsageError("unknown --depth-format '" + o.depthFormat + "' (known: 16, 24, 32f)");
-    }
-    prm.weights = *weights;
+    PcfParams prm = makeParams(method, o.kernel, o.radius, vec2(std::cos(rad), std::sin(rad)));
+    prm.weights = weightsOption(o.weights);
     prm.sigma = o.sigma;
-    prm.precision = *precision;
+    prm.precision = precisionOption(o.precision);
     if (auto why = cliParamsProblem(prm)) throw UsageError(*why);
     requireRange("--rotation", o.rotationDeg, -360.0f, 360.0f);
-    std::optional<int> biasMode = biasFromName(o.bias);
-    if (!biasMode) {
-        throw UsageError("unknown bias mode '" + o.bias + "' (known: " + biasNameList() + ")");
-    }
+    return prm;
+}
+
+// The bias: the shared options, and trace's --angle and --dzduv that stand in for the receiver
+// the renderer would know.
+BiasParams traceBias(const TraceOptions& o, int method) {
     BiasParams bias;
-    bias.mode = *biasMode;
+    bias.mode = static_cast<int>(biasModeOption(o.bias));
     bias.constant = o.constantBias;
     bias.slope = o.slopeBias;
     bias.slopeMax = o.slopeMax;
     bias.normalOffset = o.normalOffset;
     bias.softScale = o.softScale;
     bias.rpdbMax = o.rpdbMax;
-    if (auto why = validateBiasParams(bias, "--")) throw UsageError(*why);
+    if (auto why = cliBiasProblem(bias)) throw UsageError(*why);
     // trace's default mode is none: a parameter given without a mode would do nothing.
     if (o.sub->count("--bias") == 0) {
         for (const char* p : {"--constant-bias", "--slope-bias", "--slope-max", "--normal-offset",
@@ -110,12 +90,12 @@ int runTrace(const TraceOptions& o) {
             }
         }
     }
-    if (auto why = validateBias(bias.mode, *method)) throw UsageError(*why);
+    checkBiasOptions(bias, method);
     requireRange("--angle", o.angleDeg, 0.0f, 90.0f);
-    if (o.angleOption->count() > 0 && bias.mode != PCF_BIAS_SLOPE) {
+    if (o.sub->count("--angle") > 0 && bias.mode != PCF_BIAS_SLOPE) {
         throw UsageError("--angle is for --bias slope (the angle its tan(theta) reads)");
     }
-    if (o.dzduvOption->count() > 0) {
+    if (o.sub->count("--dzduv") > 0) {
         if (bias.mode != PCF_BIAS_RECEIVER_PLANE) {
             throw UsageError("--dzduv is for --bias receiver-plane (the receiver's plane)");
         }
@@ -123,10 +103,20 @@ int runTrace(const TraceOptions& o) {
         requireRange("--dzduv u", bias.dzduv.x, -1.0e6f, 1.0e6f);
         requireRange("--dzduv v", bias.dzduv.y, -1.0e6f, 1.0e6f);
     }
+    return bias;
+}
+
+int runTrace(const TraceOptions& o) {
+    if (o.example == !o.mapPath.empty()) {
+        throw UsageError("trace needs exactly one of --map FILE or --example");
+    }
+    PcfParams prm = traceParams(o);
+    int fixedBits = depthFormatFixedPointBits(depthFormatOption(o.depthFormat));
+    BiasParams bias = traceBias(o, prm.method);
 
     ShadowMap map;
     std::string uvText = o.uv;
-    bool zGiven = o.zOption->count() > 0;
+    bool zGiven = o.sub->count("--z") > 0;  // every float, NaN included, is a value
     float z = zGiven ? o.z : EXAMPLE_Z;
     if (o.example) {
         map = exampleShadowMap();
@@ -169,27 +159,20 @@ Command addTraceCommand(CLI::App& app) {
                     "shadow-map coordinates U,V; any finite values (outside [0,1] the taps clamp "
                     "to the edge)");
     o->sub = sub;
-    o->zOption = sub->add_option("--z", o->z, "receiver depth in [0,1] as the light sees it");
+    sub->add_option("--z", o->z, "receiver depth in [0,1] as the light sees it");
     addBiasOptions(sub, o->bias, o->constantBias, o->slopeBias, o->slopeMax, o->normalOffset,
                    o->softScale, o->rpdbMax);
-    o->angleOption = sub->add_option(
+    sub->add_option(
         "--angle", o->angleDeg,
         "slope: angle in degrees between the receiver's normal and the light (default 0)");
-    o->dzduvOption = sub->add_option(
+    sub->add_option(
         "--dzduv", o->dzduv,
         "receiver-plane: the receiver's DU,DV = d(depth)/d(u, v) (render --raw writes them in "
         "dzduv.exr). For --bias normal give --uv and --z of the point already moved "
         "(lightspace.exr holds them)");
-    sub->add_option("--method", o->method, "method id (see `pcfscope methods`)");
-    o->kernelOption = sub->add_option("--kernel", o->kernel, kernelOptionHelp());
-    o->radiusOption = sub->add_option("--radius", o->radius, "poisson: disk radius in texels");
+    addFilterOptions(sub, o->method, o->kernel, o->radius, o->weights, o->sigma, o->precision);
     sub->add_option("--rotation", o->rotationDeg, "poisson: disk rotation in degrees");
     sub->add_flag("--json", o->json, "print the trace as one JSON object");
-    sub->add_option("--weights", o->weights,
-                    "pcf-naive, pcf-gather: weights of the lookups: box, binomial, gaussian");
-    sub->add_option("--sigma", o->sigma, "gaussian weights: standard deviation in texels");
-    sub->add_option("--precision", o->precision,
-                    "texel position inside hardware taps and gathers: exact, hw8 (1/256 texel)");
     sub->add_option("--depth-format", o->depthFormat,
                     "the map's format: 16, 24 (fixed-point: ref clamped to [0,1]) or 32f");
     return {sub, [o] { return runTrace(*o); }};

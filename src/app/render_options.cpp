@@ -33,6 +33,65 @@ void addBiasOptions(CLI::App* sub, std::string& bias, float& constantBias, float
                     "(the whole map), default 100");
 }
 
+void addFilterOptions(CLI::App* sub, std::string& method, int& kernel, float& radius,
+                      std::string& weights, float& sigma, std::string& precision) {
+    sub->add_option("--method", method, "PCF method id (see `pcfscope methods`)");
+    sub->add_option("--kernel", kernel, kernelOptionHelp());
+    sub->add_option("--radius", radius, "poisson: disk radius in texels");
+    sub->add_option("--weights", weights,
+                    "pcf-naive, pcf-gather: weights of the N x N lookups: box, binomial, gaussian");
+    sub->add_option("--sigma", sigma, "gaussian weights: standard deviation in texels");
+    sub->add_option("--precision", precision,
+                    "texel position inside hardware taps and gathers: exact, hw8 (1/256 texel)");
+}
+
+int methodOption(const std::string& name) {
+    std::optional<int> id = methodFromName(name);
+    if (!id) throw UsageError("unknown method '" + name + "' (known: " + methodNameList() + ")");
+    return *id;
+}
+
+int weightsOption(const std::string& name) {
+    std::optional<int> w = weightsFromName(name);
+    if (!w) throw UsageError("unknown --weights '" + name + "' (known: box, binomial, gaussian)");
+    return *w;
+}
+
+int precisionOption(const std::string& name) {
+    std::optional<int> p = precisionFromName(name);
+    if (!p) throw UsageError("unknown --precision '" + name + "' (known: exact, hw8)");
+    return *p;
+}
+
+BiasMode biasModeOption(const std::string& name) {
+    std::optional<BiasMode> b = biasModeFromName(name);
+    if (!b) throw UsageError("unknown bias mode '" + name + "' (known: " + biasNameList() + ")");
+    return *b;
+}
+
+CullMode cullOption(const std::string& name) {
+    std::optional<CullMode> c = cullModeFromName(name);
+    if (!c) {
+        throw UsageError("unknown --cull '" + name + "' (known: " + std::string(CULL_MODE_NAMES) +
+                         ")");
+    }
+    return *c;
+}
+
+DepthFormat depthFormatOption(const std::string& name) {
+    std::optional<DepthFormat> f = depthFormatFromName(name);
+    if (!f) {
+        throw UsageError("unknown --depth-format '" + name +
+                         "' (known: " + std::string(DEPTH_FORMAT_NAMES) + ")");
+    }
+    return *f;
+}
+
+void checkBiasOptions(const BiasParams& bias, int method) {
+    if (auto why = cliBiasProblem(bias)) throw UsageError(*why);
+    if (auto why = validateBias(bias.mode, method)) throw UsageError(*why);
+}
+
 void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     mDefaultScene = defaultScene;
     mSub = sub;
@@ -44,9 +103,7 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
                     "built-in scene: box-on-plane, sphere-over-plane, pole, "
                     "grazing, stairs");
     sub->add_option("--scene-file", sceneFile, "scene file (TOML)");
-    sub->add_option("--method", method, "PCF method id (see `pcfscope methods`)");
-    sub->add_option("--kernel", kernel, kernelOptionHelp());
-    sub->add_option("--radius", radius, "poisson: disk radius in texels");
+    addFilterOptions(sub, method, kernel, radius, weights, sigma, precision);
     sub->add_flag("--rotate", rotate, "poisson: rotate the disk per pixel");
     addBiasOptions(sub, bias, constantBias, slopeBias, slopeMax, normalOffset, softScale, rpdbMax);
     sub->add_option("--cull", cull, "faces culled in the shadow pass: back, front, none");
@@ -55,11 +112,6 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     sub->add_option("--map-size", mapSize, "shadow map size in texels (4..4096)");
     sub->add_option("--depth-format", depthFormat, "shadow map depth format: 16, 24, 32f");
     sub->add_option("--size", size, "frame size WxH");
-    sub->add_option("--weights", weights,
-                    "pcf-naive, pcf-gather: weights of the N x N lookups: box, binomial, gaussian");
-    sub->add_option("--sigma", sigma, "gaussian weights: standard deviation in texels");
-    sub->add_option("--precision", precision,
-                    "texel position inside hardware taps and gathers: exact, hw8 (1/256 texel)");
 }
 
 bool RenderOptions::given(const char* option) const {
@@ -76,51 +128,24 @@ RenderSettings RenderOptions::settings() const {
         s = renderSettingsFor(l.steps[static_cast<size_t>(lessonStep - 1)].settings, frame);
     }
     auto use = [&](const char* option) { return !fromLesson || given(option); };
-    if (use("--method")) {
-        std::optional<int> id = methodFromName(method);
-        if (!id) {
-            throw UsageError("unknown method '" + method + "' (known: " + methodNameList() + ")");
-        }
-        s.method = *id;
-    }
+    if (use("--method")) s.method = methodOption(method);
     checkGivenKernelOptions(given("--kernel"), kernel, given("--radius"), radius);
     if (use("--kernel")) s.kernel = kernel;
     if (use("--radius")) s.radius = radius;
     if (use("--rotate")) s.rotatePerPixel = rotate;
-    if (use("--weights")) {
-        std::optional<int> w = weightsFromName(weights);
-        if (!w) {
-            throw UsageError("unknown --weights '" + weights +
-                             "' (known: box, binomial, gaussian)");
-        }
-        s.weights = *w;
-    }
+    if (use("--weights")) s.weights = weightsOption(weights);
     if (use("--sigma")) s.sigma = sigma;
-    if (use("--precision")) {
-        std::optional<int> p = precisionFromName(precision);
-        if (!p) throw UsageError("unknown --precision '" + precision + "' (known: exact, hw8)");
-        s.precision = *p;
-    }
+    if (use("--precision")) s.precision = precisionOption(precision);
     if (auto why = cliParamsProblem(s.pcfParams())) throw UsageError(*why);
-    if (use("--bias")) {
-        std::optional<BiasMode> b = biasModeFromName(bias);
-        if (!b)
-            throw UsageError("unknown bias mode '" + bias + "' (known: " + biasNameList() + ")");
-        s.bias = *b;
-    }
+    if (use("--bias")) s.bias = biasModeOption(bias);
     if (use("--constant-bias")) s.constantBias = constantBias;
     if (use("--slope-bias")) s.slopeBias = slopeBias;
     if (use("--slope-max")) s.slopeMax = slopeMax;
     if (use("--normal-offset")) s.normalOffset = normalOffset;
     if (use("--soft-scale")) s.softScale = softScale;
     if (use("--rpdb-max")) s.rpdbMax = rpdbMax;
-    if (auto why = validateBiasParams(s.biasParams(), "--")) throw UsageError(*why);
-    if (auto why = validateBias(static_cast<int>(s.bias), s.method)) throw UsageError(*why);
-    if (use("--cull")) {
-        std::optional<CullMode> c = cullModeFromName(cull);
-        if (!c) throw UsageError("unknown --cull '" + cull + "' (known: back, front, none)");
-        s.shadowCull = *c;
-    }
+    checkBiasOptions(s.biasParams(), s.method);
+    if (use("--cull")) s.shadowCull = cullOption(cull);
     if (use("--polygon-offset") && !polygonOffset.empty()) {
         s.polygonOffset = parseVec2("--polygon-offset", polygonOffset);
         requireRange("--polygon-offset factor", s.polygonOffset.x, -64.0f, 64.0f);
@@ -130,13 +155,7 @@ RenderSettings RenderOptions::settings() const {
         requireIntRange("--map-size", mapSize, MIN_MAP_SIZE, MAX_MAP_SIZE);
         s.mapSize = mapSize;
     }
-    if (use("--depth-format")) {
-        std::optional<DepthFormat> f = depthFormatFromName(depthFormat);
-        if (!f) {
-            throw UsageError("unknown --depth-format '" + depthFormat + "' (known: 16, 24, 32f)");
-        }
-        s.depthFormat = *f;
-    }
+    if (use("--depth-format")) s.depthFormat = depthFormatOption(depthFormat);
     s.frameSize = frame;
     return s;
 }

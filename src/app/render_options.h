@@ -12,9 +12,26 @@ namespace pcf {
 
 // --bias NAME and its parameters' options, with one text for every command that takes them
 // (render, bench, trace, ...). Values go into the given variables; checks are the caller's
-// (validateBiasParams, validateBias).
+// (checkBiasOptions).
 void addBiasOptions(CLI::App* sub, std::string& bias, float& constantBias, float& slopeBias,
                     float& slopeMax, float& normalOffset, float& softScale, float& rpdbMax);
+
+// The filter's options, --method, --kernel, --radius, --weights, --sigma and --precision, with
+// one text each for every command that takes them (render, view, trace, ...).
+void addFilterOptions(CLI::App* sub, std::string& method, int& kernel, float& radius,
+                      std::string& weights, float& sigma, std::string& precision);
+
+// The shared options' names parsed, each with one error for every command ("unknown method
+// 'blur' (known: ...)", "unknown --weights 'sharp' (known: box, binomial, gaussian)").
+int methodOption(const std::string& name);               // --method
+int weightsOption(const std::string& name);              // --weights
+int precisionOption(const std::string& name);            // --precision
+BiasMode biasModeOption(const std::string& name);        // --bias
+CullMode cullOption(const std::string& name);            // --cull
+DepthFormat depthFormatOption(const std::string& name);  // --depth-format
+// The bias parameters' ranges, then whether the mode combines with the method: UsageError in
+// the flags' words.
+void checkBiasOptions(const BiasParams& bias, int method);
 
 struct RenderOptions {
     std::string scene;      // preset name

@@ -60,22 +60,20 @@ std::optional<std::string> validateBias(int mode, int method) {
     return std::nullopt;
 }
 
-std::optional<std::string> validateBiasParams(const BiasParams& b, const std::string& prefix) {
-    auto range = [&](const char* name, float v, float lo, float hi) -> std::optional<std::string> {
+std::optional<ParamProblem> checkBiasParams(const BiasParams& b) {
+    auto range = [](const char* setting, float v, float lo,
+                    float hi) -> std::optional<ParamProblem> {
         if (std::isfinite(v) && v >= lo && v <= hi) return std::nullopt;
-        std::string key = name;
-        if (prefix.empty()) {
-            for (char& c : key) c = c == '-' ? '_' : c;  // the lesson files' key
-        }
-        return prefix + key + " must be in [" + formatValue(lo) + ", " + formatValue(hi) +
-               "], got " + formatValue(v);
+        return ParamProblem{setting, "",
+                            " must be in [" + formatValue(lo) + ", " + formatValue(hi) + "], got " +
+                                formatValue(v)};
     };
-    if (auto e = range("constant-bias", b.constant, -1.0f, 1.0f)) return e;
-    if (auto e = range("slope-bias", b.slope, 0.0f, 1.0f)) return e;
-    if (auto e = range("slope-max", b.slopeMax, 0.0f, 1.0f)) return e;
-    if (auto e = range("normal-offset", b.normalOffset, 0.0f, 64.0f)) return e;
-    if (auto e = range("soft-scale", b.softScale, 1.0f, 1.0e9f)) return e;
-    if (auto e = range("rpdb-max", b.rpdbMax, 0.0f, 1.0e9f)) return e;
+    if (auto e = range("constant_bias", b.constant, -1.0f, 1.0f)) return e;
+    if (auto e = range("slope_bias", b.slope, 0.0f, 1.0f)) return e;
+    if (auto e = range("slope_max", b.slopeMax, 0.0f, 1.0f)) return e;
+    if (auto e = range("normal_offset", b.normalOffset, 0.0f, 64.0f)) return e;
+    if (auto e = range("soft_scale", b.softScale, 1.0f, 1.0e9f)) return e;
+    if (auto e = range("rpdb_max", b.rpdbMax, 0.0f, 1.0e9f)) return e;
     return std::nullopt;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "kernel/methods.h"
 #include "kernel/pcf.h"
 
 namespace pcf {
@@ -82,9 +83,9 @@ std::string biasNameList();
 // interpolated is a hard comparison (nearest only).
 std::optional<std::string> validateBias(int mode, int method);
 
-// Why a parameter is out of range ("--slope-max must be in [0, 1], got 2"), or nullopt. The
-// names are the command line's with prefix "--" ("--slope-max"), the lesson files' keys with
-// prefix "" ("slope_max").
-std::optional<std::string> validateBiasParams(const BiasParams& b, const std::string& prefix);
+// Why a parameter is out of range, or nullopt: in the kernel's words, the setting named as the
+// lesson files' key ("slope_max must be in [0, 1], got 2"); the command line says it as its flag
+// (app/cli_util.h: cliWords, "--slope-max").
+std::optional<ParamProblem> checkBiasParams(const BiasParams& b);
 
 }  // namespace pcf

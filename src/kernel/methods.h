@@ -50,10 +50,12 @@ std::optional<int> precisionFromName(std::string_view name);  // exact, hw8
 std::string_view precisionName(int precision);
 constexpr float MAX_SIGMA = 16.0f;  // texels
 
-// Why parameters are not valid for their method, in the kernel's words: the setting at fault
-// ("kernel", "radius", "weights", "sigma"; empty for an unknown id) and a sentence that names it
-// once, between `before` and `after`. Each caller names the setting its own way: the command
-// line as a flag ("--kernel"), a lesson file as its key ("kernel").
+// Why parameters are not valid, in the kernel's words: the setting at fault ("kernel",
+// "radius", "weights", "sigma", "slope_max": the lesson files' keys; empty for an unknown id)
+// and a sentence that names it once, between `before` and `after`. A lesson file says text();
+// the command line says the setting as its flag, in one place (app/cli_util.h: cliWords,
+// "--slope-max"). The analysis sweeps' checks use it too, naming their option lists
+// ("kernels", "map_sizes").
 struct ParamProblem {
     std::string setting;
     std::string before;  // "tent takes "

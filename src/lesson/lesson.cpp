@@ -306,6 +306,15 @@ class LessonParser {
     // Sets the state from every settings key of `table` (a [settings] table or a [[step]]).
     void applySettings(const toml::table& table, const std::string& what, LessonSettings& s,
                        SettingLines& lines) const {
+        applyFilterKeys(table, what, s, lines);
+        applyBiasKeys(table, what, s, lines);
+        applyMapKeys(table, what, s);
+        applyViewKeys(table, what, s);
+    }
+
+    // The filter: method, kernel, radius, rotate, precision, weights, sigma.
+    void applyFilterKeys(const toml::table& table, const std::string& what, LessonSettings& s,
+                         SettingLines& lines) const {
         auto name = [&](std::string_view key) { return what + " " + std::string(key); };
         if (const toml::node* n = table.get("method")) {
             std::string id = string(*n, name("method"));
@@ -338,26 +347,35 @@ class LessonParser {
             if (!b) fail(*n, name("rotate") + " must be true or false, got " + typeName(*n));
             s.rotate = b->get();
         }
-        for (auto [key, field] : {std::pair<const char*, bool*>{"heatmap", &s.heatmap},
-                                  std::pair<const char*, bool*>{"snap", &s.snap}}) {
-            if (const toml::node* n = table.get(key)) {
-                const auto* b = n->as_boolean();
-                if (!b) fail(*n, name(key) + " must be true or false, got " + typeName(*n));
-                *field = b->get();
+        if (const toml::node* n = table.get("precision")) {
+            std::optional<int> p = precisionFromName(string(*n, name("precision")));
+            if (!p)
+                fail(*n,
+                     "unknown precision '" + n->value_or(std::string()) + "' (known: exact, hw8)");
+            s.precision = *p;
+        }
+        if (const toml::node* n = table.get("weights")) {
+            std::optional<int> w = weightsFromName(string(*n, name("weights")));
+            if (!w) {
+                fail(*n, "unknown weights '" + n->value_or(std::string()) +
+                             "' (known: box, binomial, gaussian)");
             }
+            s.weights = *w;
+            lines.method = std::max(lines.method, lineOf(*n));
         }
-        if (const toml::node* n = table.get("origin_shift")) {
-            double shift = number(*n, name("origin_shift"));
-            if (!(shift >= -64.0 && shift <= 64.0)) {
-                fail(*n, what + " origin_shift must be in [-64, 64] texels");
+        if (const toml::node* n = table.get("sigma")) {
+            double v = number(*n, name("sigma"));
+            if (!(v > 0.0 && v <= MAX_SIGMA)) {
+                fail(*n, name("sigma") + " must be in (0, 16] texels, got " + formatValue(v));
             }
-            s.originShift = static_cast<float>(shift);
+            s.sigma = static_cast<float>(v);
         }
-        if (const toml::node* n = table.get("grid")) {
-            const auto* b = n->as_boolean();
-            if (!b) fail(*n, name("grid") + " must be true or false, got " + typeName(*n));
-            s.grid = b->get();
-        }
+    }
+
+    // The bias mode and its parameters.
+    void applyBiasKeys(const toml::table& table, const std::string& what, LessonSettings& s,
+                       SettingLines& lines) const {
+        auto name = [&](std::string_view key) { return what + " " + std::string(key); };
         if (const toml::node* n = table.get("bias")) {
             std::string bias = string(*n, name("bias"));
             std::optional<BiasMode> mode = biasModeFromName(bias);
@@ -373,16 +391,10 @@ class LessonParser {
             if (!n) return;
             float old = field;
             field = static_cast<float>(number(*n, name(key)));
-            BiasParams probe;
-            probe.constant = s.constantBias;
-            probe.slope = s.slopeBias;
-            probe.slopeMax = s.slopeMax;
-            probe.normalOffset = s.normalOffset;
-            probe.softScale = s.softScale;
-            probe.rpdbMax = s.rpdbMax;
-            if (auto why = validateBiasParams(probe, "")) {
+            // The kernel's words are the lesson's keys.
+            if (auto why = checkBiasParams(s.biasParams())) {
                 field = old;
-                fail(*n, what + " " + *why);
+                fail(*n, what + " " + why->text());
             }
         };
         biasParam("constant_bias", s.constantBias);
@@ -391,6 +403,12 @@ class LessonParser {
         biasParam("normal_offset", s.normalOffset);
         biasParam("soft_scale", s.softScale);
         biasParam("rpdb_max", s.rpdbMax);
+    }
+
+    // The shadow map: culling in its pass, its size and format, its grid's origin (origin_shift,
+    // snap), and the heat map of its aliasing over the scene.
+    void applyMapKeys(const toml::table& table, const std::string& what, LessonSettings& s) const {
+        auto name = [&](std::string_view key) { return what + " " + std::string(key); };
         if (const toml::node* n = table.get("cull")) {
             std::string cull = string(*n, name("cull"));
             std::optional<CullMode> mode = cullModeFromName(cull);
@@ -422,28 +440,30 @@ class LessonParser {
             }
             s.depthFormat = *f;
         }
-        if (const toml::node* n = table.get("precision")) {
-            std::optional<int> p = precisionFromName(string(*n, name("precision")));
-            if (!p)
-                fail(*n,
-                     "unknown precision '" + n->value_or(std::string()) + "' (known: exact, hw8)");
-            s.precision = *p;
-        }
-        if (const toml::node* n = table.get("weights")) {
-            std::optional<int> w = weightsFromName(string(*n, name("weights")));
-            if (!w) {
-                fail(*n, "unknown weights '" + n->value_or(std::string()) +
-                             "' (known: box, binomial, gaussian)");
+        for (auto [key, field] : {std::pair<const char*, bool*>{"heatmap", &s.heatmap},
+                                  std::pair<const char*, bool*>{"snap", &s.snap}}) {
+            if (const toml::node* n = table.get(key)) {
+                const auto* b = n->as_boolean();
+                if (!b) fail(*n, name(key) + " must be true or false, got " + typeName(*n));
+                *field = b->get();
             }
-            s.weights = *w;
-            lines.method = std::max(lines.method, lineOf(*n));
         }
-        if (const toml::node* n = table.get("sigma")) {
-            double v = number(*n, name("sigma"));
-            if (!(v > 0.0 && v <= MAX_SIGMA)) {
-                fail(*n, name("sigma") + " must be in (0, 16] texels, got " + formatValue(v));
+        if (const toml::node* n = table.get("origin_shift")) {
+            double shift = number(*n, name("origin_shift"));
+            if (!(shift >= -64.0 && shift <= 64.0)) {
+                fail(*n, what + " origin_shift must be in [-64, 64] texels");
             }
-            s.sigma = static_cast<float>(v);
+            s.originShift = static_cast<float>(shift);
+        }
+    }
+
+    // What the view shows: the texel grid, the picked pixel.
+    void applyViewKeys(const toml::table& table, const std::string& what, LessonSettings& s) const {
+        auto name = [&](std::string_view key) { return what + " " + std::string(key); };
+        if (const toml::node* n = table.get("grid")) {
+            const auto* b = n->as_boolean();
+            if (!b) fail(*n, name("grid") + " must be true or false, got " + typeName(*n));
+            s.grid = b->get();
         }
         if (const toml::node* n = table.get("pixel")) s.pixel = readPixel(*n, name("pixel"));
     }
