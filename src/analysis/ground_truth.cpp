@@ -289,8 +289,9 @@ int resolveThreadCount(int threads) {
     return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
-GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
-                               const GroundTruthOptions& options) {
+namespace {
+
+void checkTruthArguments(glm::ivec2 frameSize, const GroundTruthOptions& options) {
     if (frameSize.x < 1 || frameSize.y < 1) {
         throw std::invalid_argument("computeGroundTruth: frame size must be positive");
     }
@@ -301,6 +302,31 @@ GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
     if (std::isnan(options.targetBound)) {
         throw std::invalid_argument("computeGroundTruth: the target bound is NaN");
     }
+}
+
+// Pass 2 refines a pixel whose first pass was mixed, or one of whose 8 neighbours hit the scene
+// with another answer: the edge may cross it between the first pass's samples.
+bool needsRefinement(const std::vector<FirstPass>& first, glm::ivec2 frameSize, int x, int y) {
+    const FirstPass& p = first[static_cast<size_t>(y) * frameSize.x + x];
+    if (p.cls == NO_HIT) return false;
+    if (p.cls == MIXED) return true;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            int nx = x + dx;
+            int ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= frameSize.x || ny >= frameSize.y) continue;
+            PixelClass c = first[static_cast<size_t>(ny) * frameSize.x + nx].cls;
+            if (c != NO_HIT && c != p.cls) return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
+                               const GroundTruthOptions& options) {
+    checkTruthArguments(frameSize, options);
     GroundTruth truth;
     truth.size = frameSize;
     truth.spp = options.spp;
@@ -336,21 +362,6 @@ GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
     // Pass 2: refine where the pixel or a neighbour is not plainly the same uniform answer.
     const bool refine = options.targetBound > 0.0f;
     std::atomic<int> refined{0};
-    auto needsRefinement = [&](int x, int y) {
-        const FirstPass& p = first[static_cast<size_t>(y) * frameSize.x + x];
-        if (p.cls == NO_HIT) return false;
-        if (p.cls == MIXED) return true;
-        for (int dy = -1; dy <= 1; ++dy) {
-            for (int dx = -1; dx <= 1; ++dx) {
-                int nx = x + dx;
-                int ny = y + dy;
-                if (nx < 0 || ny < 0 || nx >= frameSize.x || ny >= frameSize.y) continue;
-                PixelClass c = first[static_cast<size_t>(ny) * frameSize.x + nx].cls;
-                if (c != NO_HIT && c != p.cls) return true;
-            }
-        }
-        return false;
-    };
     parallelRows(
         rows, threads,
         [&](int y) {
@@ -364,7 +375,7 @@ GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
                 truth.facesLight[k] = p.facesLight ? 1 : 0;
                 if (!refine) {
                     truth.bound[k] = p.cls == MIXED ? 1.0f : 0.0f;
-                } else if (needsRefinement(x, y)) {
+                } else if (needsRefinement(first, frameSize, x, y)) {
                     Refined r = refinePixel(scene, rays, {x, y}, p, options.targetBound);
                     truth.visibility[k] = r.visibility;
                     truth.bound[k] = r.bound;

@@ -152,6 +152,83 @@ std::vector<StabilitySummary> summarizeStability(std::span<const StabilityRow> r
     return out;
 }
 
+namespace {
+
+// The leak columns show the largest bias swept: the run's own bias rarely leaks at all, and the
+// chart shows the whole curve.
+double largestLeakBias(std::span<const StabilityRow> rows, double constantBias) {
+    double leakBias = constantBias;
+    bool leakRows = false;
+    for (const StabilityRow& r : rows) {
+        if (r.sweep != "leak") continue;
+        leakBias = leakRows ? std::max(leakBias, r.x) : r.x;
+        leakRows = true;
+    }
+    return leakBias;
+}
+
+// The scenes any method leaked in, in the order first met: one column each.
+std::vector<std::string> leakScenesOf(const std::vector<StabilitySummary>& summary) {
+    std::vector<std::string> leakScenes;
+    for (const StabilitySummary& s : summary) {
+        for (const StabilitySummary::Leak& l : s.leaks) {
+            if (std::find(leakScenes.begin(), leakScenes.end(), l.scene) == leakScenes.end()) {
+                leakScenes.push_back(l.scene);
+            }
+        }
+    }
+    return leakScenes;
+}
+
+// One method and bias's row of the table.
+std::string summaryRow(const StabilitySummary& s, const std::vector<std::string>& leakScenes) {
+    auto opt = [](double v, int decimals) {
+        return v < 0.0 ? std::string("-") : fixed(v, decimals);
+    };
+    std::string md = "| " + stabilityMethodName(s.method) + " | " + s.bias + " | ";
+    if (!s.acneSwept) {
+        md += "- | - |";
+    } else {
+        md += (s.acneOnsetDeg ? fixed(*s.acneOnsetDeg, 0) + " deg" : std::string("never")) + " | " +
+              percent(s.acneWorstRate) + " |";
+    }
+    for (const std::string& sc : leakScenes) {
+        const StabilitySummary::Leak* leak = nullptr;
+        for (const StabilitySummary::Leak& l : s.leaks) {
+            if (l.scene == sc) leak = &l;
+        }
+        if (leak == nullptr) {
+            md += " - |";
+        } else {
+            md += ' ';
+            md += percent(leak->rate) + ", " + fixed(leak->widthWorld, 3) + " (" +
+                  fixed(leak->widthTexels, 1) + " tx) |";
+        }
+    }
+    md += ' ';
+    md += opt(s.shimmerMean, 4) + " | " + opt(s.shimmerP99, 3) + " | " + opt(s.flickerP99, 3) +
+          (s.flickerShare < 0.0 ? std::string() : " (" + percent(s.flickerShare) + ")") + " | " +
+          opt(s.snappedMax, 4) + " | " + opt(s.cameraP99, 3) + " |\n";
+    return md;
+}
+
+// "map 256: median 0.5, p99 1.2; map 1024: ...": the aliasing sweep's pixels per texel.
+std::string aliasingLine(std::span<const StabilityRow> rows) {
+    std::string aliasing;
+    for (const StabilityRow& r : rows) {
+        if (r.sweep != "aliasing") continue;
+        if (r.metric == "pixels_per_texel_median") {
+            aliasing += (aliasing.empty() ? "" : "; ") + std::string("map ") +
+                        std::to_string(static_cast<int>(r.x)) + ": median " + fixed(r.y, 2);
+        } else if (r.metric == "pixels_per_texel_p99") {
+            aliasing += ", p99 " + fixed(r.y, 2);
+        }
+    }
+    return aliasing;
+}
+
+}  // namespace
+
 std::string stabilityMarkdown(std::span<const StabilityRow> rows, const StabilitySetup& setup,
                               double constantBias) {
     std::string frame = std::to_string(setup.frameSize.x) + "x" + std::to_string(setup.frameSize.y);
@@ -160,63 +237,19 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
     md += "Rendered on `" + setup.glRenderer + "`, measured against the ray-cast ground truth (" +
           std::to_string(setup.truthSpp) + "x" + std::to_string(setup.truthSpp) +
           " samples per pixel); " + setup.settings + ".\n\n";
-    // The leak columns show the largest bias swept: the run's own bias rarely leaks at all,
-    // and the chart shows the whole curve.
-    double leakBias = constantBias;
-    bool leakRows = false;
-    for (const StabilityRow& r : rows) {
-        if (r.sweep != "leak") continue;
-        leakBias = leakRows ? std::max(leakBias, r.x) : r.x;
-        leakRows = true;
-    }
+    double leakBias = largestLeakBias(rows, constantBias);
     char leakAt[32];
     std::snprintf(leakAt, sizeof leakAt, "%g", leakBias);
     std::vector<StabilitySummary> summary = summarizeStability(rows, leakBias);
-    bool anyLeak = false;
-    std::vector<std::string> leakScenes;
-    for (const StabilitySummary& s : summary) {
-        for (const StabilitySummary::Leak& l : s.leaks) {
-            anyLeak = true;
-            if (std::find(leakScenes.begin(), leakScenes.end(), l.scene) == leakScenes.end()) {
-                leakScenes.push_back(l.scene);
-            }
-        }
-    }
+    std::vector<std::string> leakScenes = leakScenesOf(summary);
+    bool anyLeak = !leakScenes.empty();
     md += "| method | bias | acne onset | worst acne |";
     for (const std::string& sc : leakScenes) md += " leak " + sc + " @" + leakAt + " |";
     md += " shimmer mean | shimmer p99 | flicker p99 (share) | snapped max | camera p99 |\n";
     md += "|---|---|---:|---:|";
     for (size_t k = 0; k < leakScenes.size(); ++k) md += "---:|";
     md += "---:|---:|---:|---:|---:|\n";
-    auto opt = [](double v, int decimals) {
-        return v < 0.0 ? std::string("-") : fixed(v, decimals);
-    };
-    for (const StabilitySummary& s : summary) {
-        md += "| " + stabilityMethodName(s.method) + " | " + s.bias + " | ";
-        if (!s.acneSwept) {
-            md += "- | - |";
-        } else {
-            md += (s.acneOnsetDeg ? fixed(*s.acneOnsetDeg, 0) + " deg" : std::string("never")) +
-                  " | " + percent(s.acneWorstRate) + " |";
-        }
-        for (const std::string& sc : leakScenes) {
-            const StabilitySummary::Leak* leak = nullptr;
-            for (const StabilitySummary::Leak& l : s.leaks) {
-                if (l.scene == sc) leak = &l;
-            }
-            if (leak == nullptr) {
-                md += " - |";
-            } else {
-                md += ' ';
-                md += percent(leak->rate) + ", " + fixed(leak->widthWorld, 3) + " (" +
-                      fixed(leak->widthTexels, 1) + " tx) |";
-            }
-        }
-        md += ' ';
-        md += opt(s.shimmerMean, 4) + " | " + opt(s.shimmerP99, 3) + " | " + opt(s.flickerP99, 3) +
-              (s.flickerShare < 0.0 ? std::string() : " (" + percent(s.flickerShare) + ")") +
-              " | " + opt(s.snappedMax, 4) + " | " + opt(s.cameraP99, 3) + " |\n";
-    }
+    for (const StabilitySummary& s : summary) md += summaryRow(s, leakScenes);
     md +=
         "\nAcne onset: the highest light elevation (degrees above the ground, swept down from 90) "
         "where more than 1 % of the clean lit pixels (lit in the truth over the filter's whole "
@@ -234,16 +267,7 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
         "receivers); snapped max: the largest change left with the grid snapped to whole "
         "texels; camera: the change of the error v - truth "
         "while the camera slides by sub-pixel steps.\n";
-    std::string aliasing;
-    for (const StabilityRow& r : rows) {
-        if (r.sweep != "aliasing") continue;
-        if (r.metric == "pixels_per_texel_median") {
-            aliasing += (aliasing.empty() ? "" : "; ") + std::string("map ") +
-                        std::to_string(static_cast<int>(r.x)) + ": median " + fixed(r.y, 2);
-        } else if (r.metric == "pixels_per_texel_p99") {
-            aliasing += ", p99 " + fixed(r.y, 2);
-        }
-    }
+    std::string aliasing = aliasingLine(rows);
     if (!aliasing.empty()) {
         md += "\nPerspective aliasing (screen pixels per shadow-map texel, Lloyd et al.): " +
               aliasing + ".\n";

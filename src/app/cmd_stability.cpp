@@ -172,6 +172,41 @@ std::string settingsLine(const StabilityOptions& o) {
     return s;
 }
 
+// What the command writes into -o: the CSV, the Markdown, and each chart its sweeps draw.
+std::vector<std::string> outputNames(const std::vector<Sweep>& sweeps) {
+    std::vector<std::string> names = {"stability.csv", "stability.md"};
+    if (has(sweeps, Sweep::Acne)) names.push_back("stability_acne.png");
+    if (has(sweeps, Sweep::Leak)) names.push_back("stability_leak.png");
+    if (has(sweeps, Sweep::Shimmer)) names.push_back("stability_shimmer.png");
+    if (has(sweeps, Sweep::Aliasing)) names.push_back("aliasing_heatmap.png");
+    return names;
+}
+
+// The sweeps' charts and images, into dir; detail (frame, map, settings, renderer) goes under
+// each chart's title.
+void writeCharts(const fs::path& dir, const StabilityResult& result,
+                 const std::vector<Sweep>& sweeps, glm::ivec2 chartSize,
+                 const std::string& sceneName, const std::string& detail) {
+    std::string subtitle = sceneName + ", " + detail;
+    auto chart = [&](const std::string& name, const std::vector<uint8_t>& rgba) {
+        if (rgba.empty()) throw std::runtime_error("no rows for " + name);
+        writePngRgba8((dir / name).string(), chartSize.x, chartSize.y, rgba);
+    };
+    if (has(sweeps, Sweep::Acne)) {
+        chart("stability_acne.png", drawAcneChart(result.rows, chartSize, subtitle));
+    }
+    if (has(sweeps, Sweep::Leak)) {
+        chart("stability_leak.png",
+              drawLeakChart(result.rows, chartSize, "pole and box-on-plane, " + detail));
+    }
+    if (has(sweeps, Sweep::Shimmer)) {
+        chart("stability_shimmer.png", drawShimmerChart(result.rows, chartSize, subtitle));
+    }
+    for (const StabilityImage& image : result.images) {
+        writePngRgba8((dir / image.name).string(), image.size.x, image.size.y, image.rgba);
+    }
+}
+
 int runStabilityCommand(const StabilityCommandOptions& o) {
     // Every check first: nothing is computed or written unless all of it can be.
     StabilityOptions options = parseOptions(o);
@@ -182,11 +217,7 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
     if (o.out.empty()) throw UsageError("-o needs a directory");
     fs::path outDir(o.out);
     const std::string csvName = "stability.csv", mdName = "stability.md";
-    std::vector<std::string> finalNames = {csvName, mdName};
-    if (has(options.sweeps, Sweep::Acne)) finalNames.push_back("stability_acne.png");
-    if (has(options.sweeps, Sweep::Leak)) finalNames.push_back("stability_leak.png");
-    if (has(options.sweeps, Sweep::Shimmer)) finalNames.push_back("stability_shimmer.png");
-    if (has(options.sweeps, Sweep::Aliasing)) finalNames.push_back("aliasing_heatmap.png");
+    std::vector<std::string> finalNames = outputNames(options.sweeps);
     OutputFiles outputs(o.force);
     outputs.addDirectory("-o", outDir);
     for (const std::string& name : finalNames) outputs.add("-o", outDir / name);
@@ -224,25 +255,7 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
                          std::to_string(options.frameSize.y) + ", " +
                          std::to_string(options.mapSize) + "^2 map, " + settingsLine(options) +
                          "; " + context->renderer();
-    std::string subtitle = scene.name + ", " + detail;
-    auto chart = [&](const std::string& name, const std::vector<uint8_t>& rgba) {
-        if (rgba.empty()) throw std::runtime_error("no rows for " + name);
-        writePngRgba8((staging.path() / name).string(), chartSize.x, chartSize.y, rgba);
-    };
-    if (has(options.sweeps, Sweep::Acne)) {
-        chart("stability_acne.png", drawAcneChart(result.rows, chartSize, subtitle));
-    }
-    if (has(options.sweeps, Sweep::Leak)) {
-        chart("stability_leak.png",
-              drawLeakChart(result.rows, chartSize, "pole and box-on-plane, " + detail));
-    }
-    if (has(options.sweeps, Sweep::Shimmer)) {
-        chart("stability_shimmer.png", drawShimmerChart(result.rows, chartSize, subtitle));
-    }
-    for (const StabilityImage& image : result.images) {
-        writePngRgba8((staging.path() / image.name).string(), image.size.x, image.size.y,
-                      image.rgba);
-    }
+    writeCharts(staging.path(), result, options.sweeps, chartSize, scene.name, detail);
     for (const std::string& name : finalNames) fs::rename(staging.path() / name, outDir / name);
     outputs.commit();
     std::fputs(markdown.c_str(), stdout);

@@ -108,6 +108,19 @@ class LessonParser {
             applySettings(*settings, "settings", state, lines);
         }
 
+        const toml::array& steps = stepTables(root);
+        for (size_t i = 0; i < steps.size(); ++i) {
+            const toml::table& table = *steps.get(i)->as_table();
+            std::string what = "step " + std::to_string(i + 1);
+            checkKeys(table, what, {"title", "text", "chart", "chart_highlight", "highlight"});
+            applySettings(table, what, state, lines);
+            lesson.steps.push_back(readStep(table, what, state, lines));
+        }
+        return lesson;
+    }
+
+    // The [[step]] tables: at least one, at most MAX_LESSON_STEPS, each a table.
+    const toml::array& stepTables(const toml::table& root) const {
         const toml::node* stepsNode = root.get("step");
         const toml::array* steps = stepsNode ? stepsNode->as_array() : nullptr;
         if (!stepsNode || (steps && steps->empty())) {
@@ -123,55 +136,60 @@ class LessonParser {
             fail(*stepsNode, "lesson has " + std::to_string(steps->size()) +
                                  " steps; the limit is " + std::to_string(MAX_LESSON_STEPS));
         }
-        for (size_t i = 0; i < steps->size(); ++i) {
-            const toml::table& table = *steps->get(i)->as_table();
-            std::string what = "step " + std::to_string(i + 1);
-            checkKeys(table, what, {"title", "text", "chart", "chart_highlight", "highlight"});
-            applySettings(table, what, state, lines);
-            LessonStep step;
-            step.line = lineOf(table);
-            step.title = requireText(table, "title", what, table);
-            step.text = requireText(table, "text", what, table);
-            checkLength(*table.get("title"), what + " title", step.title, MAX_TITLE_CHARS);
-            checkLength(*table.get("text"), what + " text", step.text, MAX_STEP_TEXT_CHARS);
-            if (table.get("chart")) {
-                std::string chart = requireText(table, "chart", what, table);
-                // "figures/stability.csv#shimmer": which of a stability.csv's charts to show.
-                size_t hash = chart.find('#');
-                std::string view = hash == std::string::npos ? "" : chart.substr(hash);
-                std::filesystem::path p =
-                    std::filesystem::path(mSource).parent_path() / chart.substr(0, hash);
-                std::error_code ec;
-                if (!std::filesystem::is_regular_file(p, ec)) {
-                    fail(*table.get("chart"),
-                         what + " chart '" + chart + "' not found (looked at " + p.string() + ")");
-                }
-                step.chart = p.string() + view;
-                step.chartLine = lineOf(*table.get("chart"));
+        return *steps;
+    }
+
+    // One step at the state its table left: its title and text, its chart keys, checked.
+    LessonStep readStep(const toml::table& table, const std::string& what,
+                        const LessonSettings& state, const SettingLines& lines) const {
+        LessonStep step;
+        step.line = lineOf(table);
+        step.title = requireText(table, "title", what, table);
+        step.text = requireText(table, "text", what, table);
+        checkLength(*table.get("title"), what + " title", step.title, MAX_TITLE_CHARS);
+        checkLength(*table.get("text"), what + " text", step.text, MAX_STEP_TEXT_CHARS);
+        readChartKeys(table, what, step);
+        step.settings = state;
+        checkState(table, what, state, lines);
+        checkText(*table.get("text"), what, step);
+        return step;
+    }
+
+    // chart, chart_highlight and highlight: what the step shows besides (or instead of) the
+    // scene.
+    void readChartKeys(const toml::table& table, const std::string& what, LessonStep& step) const {
+        if (table.get("chart")) {
+            std::string chart = requireText(table, "chart", what, table);
+            // "figures/stability.csv#shimmer": which of a stability.csv's charts to show.
+            size_t hash = chart.find('#');
+            std::string view = hash == std::string::npos ? "" : chart.substr(hash);
+            std::filesystem::path p =
+                std::filesystem::path(mSource).parent_path() / chart.substr(0, hash);
+            std::error_code ec;
+            if (!std::filesystem::is_regular_file(p, ec)) {
+                fail(*table.get("chart"),
+                     what + " chart '" + chart + "' not found (looked at " + p.string() + ")");
             }
-            if (const toml::node* h = table.get("chart_highlight")) {
-                if (step.chart.empty() || step.chart.find('#') != std::string::npos) {
-                    fail(*h, what + " chart_highlight needs a bench chart (chart = \"....csv\")");
-                }
-                step.chartHighlight = requireText(table, "chart_highlight", what, table);
-                step.chartHighlightLine = lineOf(*h);
-            }
-            if (const toml::node* h = table.get("highlight")) {
-                const auto* v = h->as_integer();
-                if (!v || v->get() < 1 || v->get() > 64) {
-                    fail(*h, what +
-                                 " highlight must be a fetch number 1..64 (the instruction the "
-                                 "text talks about), got " +
-                                 typeName(*h));
-                }
-                step.highlightFetch = static_cast<int>(v->get());
-            }
-            step.settings = state;
-            checkState(table, what, state, lines);
-            checkText(*table.get("text"), what, step);
-            lesson.steps.push_back(std::move(step));
+            step.chart = p.string() + view;
+            step.chartLine = lineOf(*table.get("chart"));
         }
-        return lesson;
+        if (const toml::node* h = table.get("chart_highlight")) {
+            if (step.chart.empty() || step.chart.find('#') != std::string::npos) {
+                fail(*h, what + " chart_highlight needs a bench chart (chart = \"....csv\")");
+            }
+            step.chartHighlight = requireText(table, "chart_highlight", what, table);
+            step.chartHighlightLine = lineOf(*h);
+        }
+        if (const toml::node* h = table.get("highlight")) {
+            const auto* v = h->as_integer();
+            if (!v || v->get() < 1 || v->get() > 64) {
+                fail(*h, what +
+                             " highlight must be a fetch number 1..64 (the instruction the "
+                             "text talks about), got " +
+                             typeName(*h));
+            }
+            step.highlightFetch = static_cast<int>(v->get());
+        }
     }
 
   private:
