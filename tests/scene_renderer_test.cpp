@@ -227,6 +227,15 @@ TEST_F(SceneRendererTest, DepthFormatsAgree) {
     for (DepthFormat f : {DepthFormat::D32F, DepthFormat::D24, DepthFormat::D16}) {
         s.depthFormat = f;
         renderer.render(s);
+        // The format is applied: a 16-bit map holds only k / 65535, a float map other depths.
+        int offGrid = 0;
+        ShadowMap map = renderer.readShadowMap();
+        for (float d : map.depths()) {
+            float k = d * 65535.0f;
+            offGrid += std::fabs(k - std::round(k)) > 0.01f;
+        }
+        if (f == DepthFormat::D16) EXPECT_EQ(offGrid, 0);
+        if (f == DepthFormat::D32F) EXPECT_GT(offGrid, 0);
         std::vector<float> vis = renderer.readVisibility();
         if (reference.empty()) {
             reference = vis;
