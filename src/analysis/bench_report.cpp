@@ -148,24 +148,29 @@ bool benchMachineBusy(std::span<const BenchRow> rows, const BenchSetup& setup) {
     return setup.loadStart > half || setup.loadEnd > half || noisyShare(rows) > 0.0;
 }
 
-std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setup) {
-    std::string timer = rows.empty() ? std::string("none") : rows.front().timer;
-    std::string frame = std::to_string(setup.frameSize.x) + "x" + std::to_string(setup.frameSize.y);
-    std::string md = "# Speed against accuracy: " + setup.sceneName + ", " + frame + "\n\n";
-    if (benchMachineBusy(rows, setup)) {
-        size_t noisy = 0;
-        for (const BenchRow& r : rows) noisy += r.noisy ? 1 : 0;
-        md += "> **The machine was busy.** 1-minute load average " +
-              (setup.loadStart >= 0.0 ? format("%.2f", setup.loadStart) : std::string("?")) +
-              " at the start, " +
-              (setup.loadEnd >= 0.0 ? format("%.2f", setup.loadEnd) : std::string("?")) +
-              " at the end, on " + std::to_string(setup.cores) + " cores; " +
-              std::to_string(noisy) + " of " + std::to_string(rows.size()) + " points (" +
-              format("%.0f", 100.0 * noisyShare(rows)) +
-              " %) are noisy (`!`: an interquartile range above 10 % of the median). The "
-              "repeats ran round-robin over all points, so load hit every method alike; "
-              "compare points by their medians and mind the spreads.\n\n";
-    }
+namespace {
+
+// The warning above the table when the load average says the timings are noisy; "" otherwise.
+std::string busyNote(std::span<const BenchRow> rows, const BenchSetup& setup) {
+    if (!benchMachineBusy(rows, setup)) return "";
+    size_t noisy = 0;
+    for (const BenchRow& r : rows) noisy += r.noisy ? 1 : 0;
+    return "> **The machine was busy.** 1-minute load average " +
+           (setup.loadStart >= 0.0 ? format("%.2f", setup.loadStart) : std::string("?")) +
+           " at the start, " +
+           (setup.loadEnd >= 0.0 ? format("%.2f", setup.loadEnd) : std::string("?")) +
+           " at the end, on " + std::to_string(setup.cores) + " cores; " + std::to_string(noisy) +
+           " of " + std::to_string(rows.size()) + " points (" +
+           format("%.0f", 100.0 * noisyShare(rows)) +
+           " %) are noisy (`!`: an interquartile range above 10 % of the median). The "
+           "repeats ran round-robin over all points, so load hit every method alike; "
+           "compare points by their medians and mind the spreads.\n\n";
+}
+
+// How each column was measured: the renderer, the timers, the CPU batch, the ground truth.
+std::string methodsNote(const BenchSetup& setup, const std::string& timer,
+                        const std::string& frame) {
+    std::string md;
     md += "Measured on `" + setup.glRenderer + "` (OpenGL " + setup.glVersion + "). ";
     md += "Times are medians (with the interquartile range) of " +
           std::to_string(setup.gpuRepeats) +
@@ -195,6 +200,17 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
           " receiver pixels that face the light; the edge band is the " +
           std::to_string(setup.edgePixels) +
           " of them within 2 pixels of a pixel the true shadow edge crosses.\n\n";
+    return md;
+}
+
+}  // namespace
+
+std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setup) {
+    std::string timer = rows.empty() ? std::string("none") : rows.front().timer;
+    std::string frame = std::to_string(setup.frameSize.x) + "x" + std::to_string(setup.frameSize.y);
+    std::string md = "# Speed against accuracy: " + setup.sceneName + ", " + frame + "\n\n";
+    md += busyNote(rows, setup);
+    md += methodsNote(setup, timer, frame);
 
     std::vector<size_t> front = benchParetoFront(rows, setup.frontByLookup);
     std::set<size_t> onFront(front.begin(), front.end());

@@ -28,12 +28,8 @@ struct TruthCommandOptions {
     bool force = false;
 };
 
-int runTruth(const TruthCommandOptions& o) {
-    // Every check first: nothing is computed or written unless all of it can be.
-    RenderOptions sceneOptions;
-    sceneOptions.scene = o.scene;
-    sceneOptions.sceneFile = o.sceneFile;
-    glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE);
+// The options parseSize and the scene loading do not check.
+void checkTruthOptions(const TruthCommandOptions& o) {
     requireIntRange("--spp", o.spp, 1, MAX_TRUTH_SPP);
     requireIntRange("--threads", o.threads, 0, 1024);
     if (!(o.bound > 0.0f && o.bound <= 1.0f)) {
@@ -47,6 +43,29 @@ int runTruth(const TruthCommandOptions& o) {
     }
     if (o.out.empty()) throw UsageError("truth needs -o FILE.exr");
     requireExtension("-o", o.out, ".exr");
+}
+
+// The EXR's channels: visibility, bound, and with --mask the receiver mask.
+void writeTruthExr(const std::string& path, const GroundTruth& truth, bool mask) {
+    std::vector<std::string> channels{"visibility", "bound"};
+    if (mask) channels.push_back("mask");
+    size_t n = channels.size();
+    std::vector<float> data(n * truth.pixelCount());
+    for (size_t k = 0; k < truth.pixelCount(); ++k) {
+        data[n * k] = truth.visibility[k];
+        data[n * k + 1] = truth.bound[k];
+        if (mask) data[n * k + 2] = truth.receiver[k] ? 1.0f : 0.0f;
+    }
+    writeExr(path, truth.size.x, truth.size.y, static_cast<int>(n), data, channels);
+}
+
+int runTruth(const TruthCommandOptions& o) {
+    // Every check first: nothing is computed or written unless all of it can be.
+    RenderOptions sceneOptions;
+    sceneOptions.scene = o.scene;
+    sceneOptions.sceneFile = o.sceneFile;
+    glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE);
+    checkTruthOptions(o);
     Scene scene = sceneOptions.loadScene();
     OutputFiles outputs(o.force);
     outputs.addInput("--scene-file", o.sceneFile);
@@ -73,16 +92,7 @@ int runTruth(const TruthCommandOptions& o) {
     };
     GroundTruth truth = computeGroundTruth(scene, size, options);
 
-    std::vector<std::string> channels{"visibility", "bound"};
-    if (o.mask) channels.push_back("mask");
-    size_t n = channels.size();
-    std::vector<float> data(n * truth.pixelCount());
-    for (size_t k = 0; k < truth.pixelCount(); ++k) {
-        data[n * k] = truth.visibility[k];
-        data[n * k + 1] = truth.bound[k];
-        if (o.mask) data[n * k + 2] = truth.receiver[k] ? 1.0f : 0.0f;
-    }
-    writeExr(o.out, size.x, size.y, static_cast<int>(n), data, channels);
+    writeTruthExr(o.out, truth, o.mask);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "truth: %d pixels refined, largest bound %.6f (target %.6f), %.2f s\n",
