@@ -4,7 +4,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "app/cli_util.h"
 #include "app/commands.h"
@@ -41,11 +40,6 @@ std::string rawSettingsJson(const RenderSettings& s) {
     return jsonDump(j) + "\n";
 }
 
-// The CSV a chart step draws: its `chart` without the "#acne" that names a stability chart.
-std::string chartCsvPath(const LessonStep& step) {
-    return step.chart.substr(0, step.chart.rfind('#'));
-}
-
 struct RenderCommandOptions {
     RenderOptions render;
     std::string out;
@@ -54,53 +48,6 @@ struct RenderCommandOptions {
     int timeRepeats = 0;
     bool verbose = false;
 };
-
-// The files of a --raw folder.
-struct RawPaths {
-    std::string shadow, lightSpace, visibility, positions, receiver, settings;
-    std::vector<std::string> all() const {
-        return {shadow, lightSpace, visibility, positions, receiver, settings};
-    }
-};
-
-RawPaths rawPaths(const std::filesystem::path& dir) {
-    return {(dir / "shadowmap.exr").string(),  (dir / "lightspace.exr").string(),
-            (dir / "visibility.exr").string(), (dir / "positions.exr").string(),
-            (dir / "dzduv.exr").string(),      (dir / "render.json").string()};
-}
-
-void writeRaw(const RawPaths& raw, SceneRenderer& renderer, const RenderSettings& settings) {
-    glm::ivec2 size = renderer.frameSize();
-    writeDepthImage(raw.shadow, renderer.readShadowMap());
-    writeExr(raw.lightSpace, size.x, size.y, 4, renderer.readLightSpace(), {"R", "G", "B", "A"});
-    writeExr(raw.visibility, size.x, size.y, 1, renderer.readVisibility(), {"Y"});
-    writeExr(raw.positions, size.x, size.y, 4, renderer.readPositions(), {"R", "G", "B", "A"});
-    writeExr(raw.receiver, size.x, size.y, 4, renderer.readReceiver(), {"R", "G", "B", "A"});
-    writeTextFile(raw.settings, rawSettingsJson(settings));
-}
-
-// A lesson step that shows a chart: -o writes that chart, as `export` shows it in the scene's
-// place (--raw still writes the scene's buffers at the step's settings). The lesson and the
-// chart's CSV are the outputs' inputs (never overwritten).
-std::optional<LessonStep> chartStepOf(const RenderCommandOptions& o, OutputFiles& outputs) {
-    if (o.render.lesson.empty()) return std::nullopt;
-    std::string path = resolveLesson(o.render.lesson);
-    outputs.addInput("--lesson", path);
-    Lesson lesson = loadLessonChecked(path);
-    const LessonStep& step = lesson.steps[static_cast<size_t>(o.render.lessonStep - 1)];
-    if (step.chart.empty()) return std::nullopt;
-    outputs.addInput("chart", chartCsvPath(step));
-    return step;
-}
-
-void printTiming(SceneRenderer& renderer, const RenderSettings& settings, int repeats) {
-    TimingResult t = renderer.timeCameraPass(settings, repeats);
-    const MethodInfo& m = methodInfo(settings.method);
-    std::string kernel = m.usesKernel ? "N=" + std::to_string(settings.kernel) : "";
-    std::printf("camera pass (%s %s, %dx%d, map %d): median %.3f ms over %d draws (%s)\n",
-                std::string(m.name).c_str(), kernel.c_str(), settings.frameSize.x,
-                settings.frameSize.y, settings.mapSize, t.medianMs, repeats, t.timer.c_str());
-}
 
 int runRender(const RenderCommandOptions& o) {
     // Every check first: nothing is written unless all of it can be.
@@ -111,17 +58,40 @@ int runRender(const RenderCommandOptions& o) {
     requireIntRange("--time", o.timeRepeats, 0, 10000);
     OutputFiles outputs(o.force);
     outputs.addInput("--scene-file", o.render.sceneFile);
-    std::optional<LessonStep> chartStep = chartStepOf(o, outputs);
+    // A lesson step that shows a chart: -o writes that chart, as `export` shows it in the
+    // scene's place (--raw still writes the scene's buffers at the step's settings).
+    std::string chart;
+    std::optional<LessonStep> chartStep;
+    if (!o.render.lesson.empty()) {
+        std::string path = resolveLesson(o.render.lesson);
+        outputs.addInput("--lesson", path);
+        Lesson lesson = loadLessonChecked(path);
+        const LessonStep& step = lesson.steps[static_cast<size_t>(o.render.lessonStep - 1)];
+        if (!step.chart.empty()) {
+            chartStep = step;
+            chart = step.chart.substr(0, step.chart.rfind('#'));
+            outputs.addInput("chart", chart);
+        }
+    }
     if (!o.out.empty()) {
         requireExtension("-o", o.out, ".png");
         outputs.add("-o", o.out);
     }
-    RawPaths raw;
+    std::string rawShadow, rawLightSpace, rawVisibility, rawPositions, rawReceiver, rawSettings;
     if (!o.rawDir.empty()) {
-        outputs.addDirectory("--raw", o.rawDir);
-        raw = rawPaths(o.rawDir);
+        std::filesystem::path dir(o.rawDir);
+        outputs.addDirectory("--raw", dir);
+        rawShadow = (dir / "shadowmap.exr").string();
+        rawLightSpace = (dir / "lightspace.exr").string();
+        rawVisibility = (dir / "visibility.exr").string();
+        rawPositions = (dir / "positions.exr").string();
+        rawReceiver = (dir / "dzduv.exr").string();
+        rawSettings = (dir / "render.json").string();
         settings.writePositions = true;
-        for (const std::string& p : raw.all()) outputs.add("--raw", p);
+        for (const std::string& p :
+             {rawShadow, rawLightSpace, rawVisibility, rawPositions, rawReceiver, rawSettings}) {
+            outputs.add("--raw", p);
+        }
     }
 
     std::unique_ptr<GlContext> context = createHeadlessContext();
@@ -129,28 +99,47 @@ int runRender(const RenderCommandOptions& o) {
     renderer.render(settings);
     if (o.verbose)
         std::fprintf(stderr, "pcfscope: rendered on %s\n", context->description().c_str());
-    if (o.timeRepeats > 0) printTiming(renderer, settings, o.timeRepeats);
+    if (o.timeRepeats > 0) {
+        TimingResult t = renderer.timeCameraPass(settings, o.timeRepeats);
+        std::printf("camera pass (%s %s, %dx%d, map %d): median %.3f ms over %d draws (%s)\n",
+                    std::string(methodInfo(settings.method).name).c_str(),
+                    methodInfo(settings.method).usesKernel
+                        ? ("N=" + std::to_string(settings.kernel)).c_str()
+                        : "",
+                    settings.frameSize.x, settings.frameSize.y, settings.mapSize, t.medianMs,
+                    o.timeRepeats, t.timer.c_str());
+    }
     glm::ivec2 size = renderer.frameSize();
     if (!o.out.empty()) {
         std::vector<uint8_t> rgba =
             chartStep ? drawStepChart(*chartStep, size) : renderer.readColour();
         writePngRgba8(o.out, size.x, size.y, rgba);
     }
-    if (!o.rawDir.empty()) writeRaw(raw, renderer, settings);
+    if (!o.rawDir.empty()) {
+        writeDepthImage(rawShadow, renderer.readShadowMap());
+        std::vector<float> ls = renderer.readLightSpace();
+        writeExr(rawLightSpace, size.x, size.y, 4, ls, {"R", "G", "B", "A"});
+        std::vector<float> vis = renderer.readVisibility();
+        writeExr(rawVisibility, size.x, size.y, 1, vis, {"Y"});
+        std::vector<float> pos = renderer.readPositions();
+        writeExr(rawPositions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
+        std::vector<float> receiver = renderer.readReceiver();
+        writeExr(rawReceiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
+        writeTextFile(rawSettings, rawSettingsJson(settings));
+    }
     outputs.commit();
     // Say what was written, like export does (a silent success left users looking for it).
     std::string method = std::string(methodInfo(settings.method).name);
     if (!o.out.empty() && chartStep) {
         std::fprintf(stderr, "render: wrote %s (%dx%d, the chart of lesson step %d: %s)\n",
-                     o.out.c_str(), size.x, size.y, o.render.lessonStep,
-                     chartCsvPath(*chartStep).c_str());
+                     o.out.c_str(), size.x, size.y, o.render.lessonStep, chart.c_str());
     } else if (!o.out.empty()) {
         std::fprintf(stderr, "render: wrote %s (%dx%d, %s, map %d)\n", o.out.c_str(), size.x,
                      size.y, method.c_str(), settings.mapSize);
     }
     if (!o.rawDir.empty()) {
-        std::fprintf(stderr, "render: wrote %s, %s, %s and %s\n", raw.shadow.c_str(),
-                     raw.lightSpace.c_str(), raw.visibility.c_str(), raw.positions.c_str());
+        std::fprintf(stderr, "render: wrote %s, %s, %s and %s\n", rawShadow.c_str(),
+                     rawLightSpace.c_str(), rawVisibility.c_str(), rawPositions.c_str());
     }
     return 0;
 }
