@@ -162,5 +162,22 @@ TEST_F(CliTest, BadInputExitsTwoWithOneLine) {
     }
 }
 
+// trace parses the options it shares with render through the same code (app/render_options.h):
+// the same bad value gets the same line from both.
+TEST_F(CliTest, TraceAndRenderSayTheSameAboutTheSharedOptions) {
+    for (const char* bad :
+         {"--method tent --kernel 4", "--method box2x2 --weights binomial", "--precision hw9",
+          "--depth-format 8", "--bias slope --slope-max 2", "--method hw2x2 --bias soft"}) {
+        auto trace = runPcfscope(std::string("trace --example ") + bad);
+        auto render =
+            runPcfscope(std::string("render --scene pole ") + bad + " -o " + path("r.png"));
+        EXPECT_EQ(trace.exitCode, 2) << bad << "\n" << trace.err;
+        EXPECT_EQ(render.exitCode, 2) << bad << "\n" << render.err;
+        EXPECT_EQ(testutil::lineCount(trace.err), 1) << bad << "\n" << trace.err;
+        EXPECT_EQ(trace.err, render.err) << bad;
+    }
+    EXPECT_FALSE(std::filesystem::exists(path("r.png")));
+}
+
 }  // namespace
 }  // namespace pcf
