@@ -292,26 +292,49 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
         float plotW = std::round(size.x - legendW - left - 28.0f * s);
         size_t groups = std::max<size_t>(spec.groups.size(), 1);
         float groupW = plotW / groups;
-        // Labels on two lines when the group is narrow: "method" / "bias"; on one line a word
-        // when even that is too wide ("pcf-gather" / "5x5" / "none" in large type).
-        std::vector<std::string> labels;
-        int labelLines = 2;
-        for (const BarGroup& group : spec.groups) {
-            std::string label = group.label;
-            auto fits = [&](const std::string& t) {
-                return measureText(FontFace::Sans, tickFont, t).x <= groupW - 4.0f * s;
-            };
-            if (!fits(label)) {
-                size_t space = label.rfind(' ');
-                if (space != std::string::npos) label[space] = '\n';
+        // Labels on two lines when the group is narrow: "method" / "bias"; a word a line when
+        // even that is too wide ("pcf-gather" / "5x5" / "none" in large type); and when a word
+        // is wider than its group, every other label one block lower, so that each may take
+        // the width of two groups.
+        auto widest = [&](const std::string& t) {
+            float w = 0.0f;
+            size_t start = 0;
+            while (true) {
+                size_t end = t.find('\n', start);
+                w = std::max(
+                    w, measureText(FontFace::Sans, tickFont,
+                                   t.substr(start, end == std::string::npos ? std::string::npos
+                                                                            : end - start))
+                           .x);
+                if (end == std::string::npos) return w;
+                start = end + 1;
             }
-            if (!fits(label)) std::replace(label.begin(), label.end(), ' ', '\n');
-            labelLines = std::max(
-                labelLines, 1 + static_cast<int>(std::count(label.begin(), label.end(), '\n')));
-            labels.push_back(label);
+        };
+        std::vector<std::string> labels;
+        int labelLines = 1;
+        bool stagger = false;
+        for (float room : {groupW - 4.0f * s, 2.0f * groupW - 8.0f * s}) {
+            labels.clear();
+            labelLines = 1;
+            bool fitsAll = true;
+            for (const BarGroup& group : spec.groups) {
+                std::string label = group.label;
+                if (widest(label) > room) {
+                    size_t space = label.rfind(' ');
+                    if (space != std::string::npos) label[space] = '\n';
+                }
+                if (widest(label) > room) std::replace(label.begin(), label.end(), ' ', '\n');
+                fitsAll = fitsAll && widest(label) <= room;
+                labelLines = std::max(
+                    labelLines, 1 + static_cast<int>(std::count(label.begin(), label.end(), '\n')));
+                labels.push_back(label);
+            }
+            if (fitsAll) break;
+            stagger = true;
         }
+        float labelsH = (stagger ? 2 * labelLines : std::max(2, labelLines)) * tickH;
         Rect plot{std::round(left), std::round(top), plotW,
-                  std::round(size.y - top - labelLines * tickH - 20.0f * s)};
+                  std::round(size.y - top - labelsH - 20.0f * s)};
         float stroke = std::max(1.0f, std::round(s));
         auto yPixel = [&](double y) {
             return plot.bottom() - static_cast<float>(y / yTop) * plot.h;
@@ -333,7 +356,8 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
                             std::round(plot.bottom() - y)},
                            SERIES[b % 4]);
             }
-            c.text({plot.x + (g + 0.5f) * groupW, plot.bottom() + 4.0f * s}, labels[g],
+            float below = stagger && g % 2 == 1 ? labelLines * tickH : 0.0f;
+            c.text({plot.x + (g + 0.5f) * groupW, plot.bottom() + 4.0f * s + below}, labels[g],
                    {FontFace::Sans, tickFont, CHART_INK, TextAlign::Center});
         }
         c.strokeRect(plot.expanded(stroke), stroke, CHART_SOFT_INK);
