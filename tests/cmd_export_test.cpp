@@ -223,6 +223,8 @@ TEST_F(ExportTest, EveryLessonExportsHeadless) {
             jsonlite::Value j = jsonlite::parse(readFile(stem + ".json"));
             EXPECT_EQ(j["trace"].kind, jsonlite::Value::OBJECT) << stem << ": no receiver";
             EXPECT_EQ(j["text"].string.find('{'), std::string::npos) << stem << ": unfilled";
+            // The text as drawn: code spans without their backticks (lessons 11, 13-15 have them).
+            EXPECT_EQ(j["text"].string.find('`'), std::string::npos) << stem << ": backticks";
         }
     }
     EXPECT_GE(lessons, 10);

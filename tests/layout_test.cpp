@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/bench_report.h"
+#include "analysis/speed_chart.h"
 #include "app/session.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
@@ -24,11 +26,17 @@
 #include "render/gl_context.h"
 #include "render/render_settings.h"
 #include "render/scene_renderer.h"
+#include "scene/input_file.h"
 
 namespace pcf {
 namespace {
 
 constexpr glm::ivec2 SIZES[] = {{1024, 768}, {1280, 720}, {1600, 900}, {1920, 1080}};
+
+bool inside(const Rect& inner, const Rect& outer) {
+    return inner.x >= outer.x - 0.01f && inner.y >= outer.y - 0.01f &&
+           inner.right() <= outer.right() + 0.01f && inner.bottom() <= outer.bottom() + 0.01f;
+}
 
 bool isTextual(BoxKind k) {
     return k == BoxKind::Text || k == BoxKind::Number || k == BoxKind::Label;
@@ -137,7 +145,15 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                     m.presentation = presentation;
                     m.sceneSize = glm::ivec2(l.scene.size());
                     m.pixel = scalePixel(s.pixel, m.sceneSize);
-                    FramePlan plan = planFrame(l, m);
+                    // A chart step lays out as the session composes it: the chart's own texts
+                    // are boxes of the frame's layout, checked like the rest.
+                    if (!step.chart.empty()) l = chartStepLayout(l);
+                    std::vector<LayoutBox> chartBoxes = stepChartBoxes(step, l);
+                    auto withChart = [&](FramePlan p) {
+                        p.boxes.insert(p.boxes.end(), chartBoxes.begin(), chartBoxes.end());
+                        return p;
+                    };
+                    FramePlan plan = withChart(planFrame(l, m));
                     ++plans;
                     std::string where = lesson.name + " step " + std::to_string(k + 1) + " at " +
                                         std::to_string(size.x) + "x" + std::to_string(size.y) +
@@ -147,7 +163,7 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         FramePlan p = plan;
                         if (page > 0) {
                             m.textPage = page;
-                            p = planFrame(l, m);
+                            p = withChart(planFrame(l, m));
                             m.textPage = 0;
                         }
                         for (const std::string& problem : problems(p, l)) {
@@ -163,7 +179,8 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         cellNumbers += b.role.starts_with("cell-");
                     }
                     EXPECT_TRUE(stepText) << where;
-                    if (m.trace) {
+                    // (A chart step in presentation gives the chart the inspector's room.)
+                    if (m.trace && !l.inspector.empty()) {
                         EXPECT_GE(cellNumbers, 4) << where;
                     }
                 }
@@ -174,6 +191,67 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("layout: %d plans checked in %.1f s; %d presentation frames page their text\n",
                 plans, seconds, pagedPresentation);
+}
+
+// A chart step on a projector: the chart takes the inspector's room too, every one of its texts
+// (ticks, axis names, the dots' names, the legend) is at least 18 px (the presentation number
+// floor; normal mode keeps the normal floors), the dots the step rings are named, and no two
+// names lie on each other. (At 617 x 347, the scene panel's size, they were 8 px.)
+TEST_F(Layout, ChartStepsInPresentationSetTheChartAtProjectorSize) {
+    Lesson lesson = parseLessonFile(PCFSCOPE_SOURCE_DIR "/lessons/11-speed-and-accuracy.toml");
+    int chartSteps = 0;
+    for (const LessonStep& step : lesson.steps) {
+        if (step.chart.empty()) continue;
+        ++chartSteps;
+        for (glm::ivec2 size : {glm::ivec2{1280, 720}, glm::ivec2{1024, 768}}) {
+            for (bool presentation : {true, false}) {
+                std::string where = step.title + " at " + std::to_string(size.x) + "x" +
+                                    std::to_string(size.y) + (presentation ? " presentation" : "");
+                InspectorLayout l = chartStepLayout(inspectorLayout(size, presentation));
+                const float floor = presentation ? 18.0f : 12.0f;
+                if (presentation) {
+                    EXPECT_EQ(l.scene.w, static_cast<float>(size.x)) << where;
+                    EXPECT_GE(l.scene.h, 0.5f * size.y) << where;
+                    EXPECT_TRUE(l.inspector.empty()) << where;
+                }
+                std::vector<LayoutBox> boxes = stepChartBoxes(step, l);
+                std::map<std::string, int> roles;
+                std::vector<const LayoutBox*> names;
+                for (const LayoutBox& b : boxes) {
+                    ++roles[b.role];
+                    EXPECT_GE(b.fontPx, floor) << where << ": " << b.role << " '" << b.text << "'";
+                    EXPECT_TRUE(inside(b.rect, l.scene)) << where << ": " << b.text;
+                    if (b.role == "chart-label") names.push_back(&b);
+                }
+                EXPECT_GE(roles["chart-tick"], 4) << where;
+                EXPECT_EQ(roles["chart-axis"], 2) << where;
+                EXPECT_GE(roles["chart-legend"], 3) << where;
+                if (presentation) {
+                    // Every ringed dot is named (and, on a projector, only the ringed and the
+                    // front's: a label for each of the ~80 dots would bury the plot).
+                    std::vector<BenchRow> rows =
+                        parseBenchCsv(readInputFile(step.chart), step.chart);
+                    if (!step.chartHighlight.empty()) {
+                        for (size_t k : chartRowsMatching(rows, step.chartHighlight)) {
+                            std::string label = chartLabel(rows[k].point);
+                            bool named = false;
+                            for (const LayoutBox* b : names) named |= b->text.starts_with(label);
+                            EXPECT_TRUE(named) << where << ": " << label;
+                        }
+                    }
+                    EXPECT_LT(names.size(), 30u) << where;
+                }
+                for (size_t i = 0; i < names.size(); ++i) {
+                    for (size_t j = i + 1; j < names.size(); ++j) {
+                        EXPECT_TRUE(names[i]->rect.intersect(names[j]->rect).empty())
+                            << where << ": '" << names[i]->text << "' on '" << names[j]->text
+                            << "'";
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GE(chartSteps, 3);
 }
 
 // Each step shows something its neighbour does not: consecutive steps that render the same scene
@@ -200,6 +278,13 @@ TEST(LessonSteps, ConsecutiveStepsShowDifferentPictures) {
                                   "highlight what the text talks about";
         }
     }
+}
+
+// lesson_pixels_test checks the lessons' pixel claims in presentation mode's scenes at the
+// projector sizes: these.
+TEST_F(Layout, PresentationScenesAreTheCheckedSizes) {
+    EXPECT_EQ(glm::ivec2(inspectorLayout({1280, 720}, true).scene.size()), glm::ivec2(617, 347));
+    EXPECT_EQ(glm::ivec2(inspectorLayout({1024, 768}, true).scene.size()), glm::ivec2(512, 288));
 }
 
 // Presentation type is a projector's at the small sizes: 22 px step text, 18 px numbers.
@@ -348,6 +433,16 @@ TEST_F(Layout, CodeSpansInStepTextAreMonospaceWithoutBackticks) {
     }
     EXPECT_TRUE(found);
     EXPECT_TRUE(problems(plan, l).empty());
+}
+
+// The step JSON's `text` is the text as drawn: code spans lose their backticks, a lone backtick
+// stays, preformatted rows keep theirs and their columns line up as drawn.
+TEST(DrawnStepText, DropsCodeSpanBackticksAsTheFrameDraws) {
+    EXPECT_EQ(drawnStepText("Set `origin_shift = 0.25` now."), "Set origin_shift = 0.25 now.");
+    EXPECT_EQ(drawnStepText("a `b` and `c`\nit's 5` wide"), "a b and c\nit's 5` wide");
+    EXPECT_EQ(drawnStepText("Rows:\n  `x`  1\n  `yy`  0.5\nend `z`"),
+              "Rows:\n  `x`    1\n  `yy`   0.5\nend z");
+    EXPECT_EQ(drawnStepText(""), "");
 }
 
 // A title of 200,000 characters is laid out in linear time (it once took minutes: wrapping

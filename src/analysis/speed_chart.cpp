@@ -23,9 +23,15 @@ struct Fonts {
     float title, subtitle, axis, tick, label, legend;
 };
 
-Fonts fontsFor(float s) {
-    auto px = [&](float base) { return std::max(8.0f, std::round(base * s)); };
-    return {px(20.0f), px(13.0f), px(14.0f), px(12.0f), px(11.0f), px(13.0f)};
+// The type sizes at scale s, none below minPx (the title a quarter above it).
+Fonts fontsFor(float s, float minPx) {
+    auto px = [&](float base) { return std::max(minPx, std::round(base * s)); };
+    return {std::max(px(20.0f), std::round(minPx * 1.25f)),
+            px(13.0f),
+            px(14.0f),
+            px(12.0f),
+            px(11.0f),
+            px(13.0f)};
 }
 
 std::string shortName(int method) {
@@ -132,7 +138,8 @@ double chartAccuracy(const BenchRow& row, ChartAccuracy accuracy) {
 
 SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                   ChartTiming timing, ChartAccuracy accuracy,
-                                  std::span<const size_t> keepLabels) {
+                                  std::span<const size_t> keepLabels, float minFontPx,
+                                  bool keptLabelsOnly) {
     if (size.x < 64 || size.y < 64) {
         throw std::invalid_argument("layoutSpeedChart: the chart needs at least 64 x 64 pixels");
     }
@@ -140,7 +147,13 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     L.size = size;
     float s = std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
     L.scale = s;
-    Fonts f = fontsFor(s);
+    Fonts f = fontsFor(s, minFontPx);
+    L.titlePx = f.title;
+    L.subtitlePx = f.subtitle;
+    L.axisPx = f.axis;
+    L.tickPx = f.tick;
+    L.labelPx = f.label;
+    L.legendPx = f.legend;
 
     // Legend: the methods present, then the front's entry.
     for (const BenchRow& r : rows) {
@@ -163,7 +176,18 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     float titleH = fontMetrics(FontFace::Sans, f.title).lineHeight +
                    fontMetrics(FontFace::Sans, f.subtitle).lineHeight +
                    fontMetrics(FontFace::Sans, f.axis).lineHeight + 14.0f * s;
-    float left = std::round(62.0f * s);
+    // The y axis: 0 to the largest error, in round steps (its tick labels set the left margin).
+    double yMax = 0.0;
+    for (const BenchRow& r : rows) yMax = std::max(yMax, chartAccuracy(r, accuracy));
+    double yStep = chartNiceStep(std::max(yMax * 1.08, 1e-6) / 7.0);
+    L.yLo = 0.0;
+    L.yHi = std::ceil(std::max(yMax * 1.08, 1e-6) / yStep) * yStep;
+    float yTickW = 0.0f;
+    for (double v = 0.0; v <= L.yHi + 0.5 * yStep; v += yStep) {
+        std::string t = chartTickText(std::round(v / yStep) * yStep);
+        yTickW = std::max(yTickW, measureText(FontFace::Sans, f.tick, t).x);
+    }
+    float left = std::round(std::max(62.0f * s, yTickW + 12.0f * s + 4.0f));
     float right = std::round(legendW + 28.0f * s);
     float top = std::round(titleH);
     float bottom = std::round(fontMetrics(FontFace::Sans, f.tick).lineHeight +
@@ -173,7 +197,7 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     L.legend = {L.plot.right() + 16.0f * s, L.plot.y, legendW, legendH};
 
     // Axes. x: log10 of the time, padded by 6% of the span (at least 0.1 decade a side).
-    double xMin = 1e300, xMax = -1e300, yMax = 0.0;
+    double xMin = 1e300, xMax = -1e300;
     // The bar's low end stays above a tenth of the median on the log axis.
     auto barLo = [&](const BenchRow& r) {
         double ms = chartMs(r, timing);
@@ -185,15 +209,11 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     for (const BenchRow& r : rows) {
         xMin = std::min(xMin, barLo(r));
         xMax = std::max(xMax, barHi(r));
-        yMax = std::max(yMax, chartAccuracy(r, accuracy));
     }
     if (rows.empty()) xMin = xMax = 0.0;
     double pad = std::max(0.1, 0.06 * (xMax - xMin));
     L.xLogLo = xMin - pad;
     L.xLogHi = xMax + pad;
-    double yStep = chartNiceStep(std::max(yMax * 1.08, 1e-6) / 7.0);
-    L.yLo = 0.0;
-    L.yHi = std::ceil(std::max(yMax * 1.08, 1e-6) / yStep) * yStep;
 
     auto xPixel = [&](double logMs) {
         return L.plot.x + static_cast<float>((logMs - L.xLogLo) / (L.xLogHi - L.xLogLo)) * L.plot.w;
@@ -255,17 +275,23 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
             if (!onFront && needLabel[k] == needed) order.push_back(k);
         }
     }
-    float dotR = 4.5f * s;
+    float dotR = std::max(4.5f * s, std::round(f.label * 0.25f));
+    L.dotRadius = dotR;
     std::vector<Rect> dots;
     for (glm::vec2 p : L.points) dots.push_back({p.x - dotR, p.y - dotR, 2 * dotR, 2 * dotR});
     std::vector<Rect> placed;
     for (size_t k : order) {
+        if (keptLabelsOnly && !needLabel[k]) continue;
         glm::vec2 t = measureText(FontFace::Sans, f.label, L.labelTexts[k]);
         glm::vec2 p = L.points[k];
         Rect best;
         float bestCost = 1e30f;
         float bestRing = 0.0f;
-        for (float ring : {1.0f, 2.2f, 3.6f}) {
+        // A label the chart must show may look farther out (with a leader) before it settles
+        // on a spot that covers another.
+        bool mustShow = k < needLabel.size() && needLabel[k];
+        for (float ring : {1.0f, 2.2f, 3.6f, 5.2f, 7.0f}) {
+            if (ring > 4.0f && !mustShow) break;
             float r = (dotR + 3.0f * s) * ring;
             float d = 0.7f * r;
             const glm::vec2 spots[8] = {
@@ -279,20 +305,21 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
                 float cost = 4.0f * outsideArea(box, L.plot);
                 for (const Rect& o : placed) cost += overlapArea(box, o);
                 for (const Rect& o : dots) cost += 2.0f * overlapArea(box, o);
-                cost += ring;  // prefer the nearest ring among equals
+                if (mustShow) cost *= 100.0f;  // a leader farther out beats covering a name
+                cost += ring;                  // prefer the nearest ring among equals
                 if (cost < bestCost) {
                     bestCost = cost;
                     bestRing = ring;
                     best = box;
                 }
             }
-            if (bestCost < 4.0f) break;  // a clean spot on this ring (cost = the ring term)
+            if (bestCost - bestRing < 0.5f) break;  // a clean spot (cost = the ring term)
         }
         // A label that finds no clean spot is left out, unless the front or the caller needs
         // it: a crowd of overlapping names reads as noise on a projector; the dot keeps its
         // method's colour, which the legend names.
         bool needed = k < needLabel.size() && needLabel[k];
-        if (bestCost - bestRing > 0.5f && !needed) continue;
+        if ((bestCost - bestRing > 0.5f || keptLabelsOnly) && !needed) continue;
         L.labels[k] = best;
         L.labelShown[k] = true;
         placed.push_back(best);
@@ -300,49 +327,86 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     return L;
 }
 
+std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
+                                              const SpeedChartText& text) {
+    std::vector<ChartTextBox> out;
+    float s = L.scale;
+    auto add = [&](glm::vec2 pos, TextAlign align, float px, const std::string& role,
+                   const std::string& words) -> ChartTextBox& {
+        glm::vec2 size = measureText(FontFace::Sans, px, words);
+        float x = pos.x;
+        if (align == TextAlign::Center) x -= size.x * 0.5f;
+        if (align == TextAlign::Right) x -= size.x;
+        out.push_back({{std::round(x), std::round(pos.y), size.x, size.y}, px, role, words});
+        return out.back();
+    };
+    float pad = std::round(12.0f * s);
+    float titleH = fontMetrics(FontFace::Sans, L.titlePx).lineHeight;
+    float subH = fontMetrics(FontFace::Sans, L.subtitlePx).lineHeight;
+    add({pad, pad * 0.6f}, TextAlign::Left, L.titlePx, "chart-title", text.title);
+    add({pad, std::round(pad * 0.6f) + titleH}, TextAlign::Left, L.subtitlePx, "chart-subtitle",
+        text.subtitle);
+    // The y axis's name above it (the canvas draws no rotated text).
+    add({L.plot.x, std::round(pad * 0.6f) + titleH + subH + 4.0f * s}, TextAlign::Left, L.axisPx,
+        "chart-axis", text.yLabel);
+    for (const ChartTick& t : L.xTicks) {
+        if (t.text.empty()) continue;
+        add({std::round(t.pixel) + 0.5f, L.plot.bottom() + 5.0f * s}, TextAlign::Center, L.tickPx,
+            "chart-tick", t.text);
+    }
+    float tickH = fontMetrics(FontFace::Sans, L.tickPx).lineHeight;
+    for (const ChartTick& t : L.yTicks) {
+        add({L.plot.x - 6.0f * s, std::round(t.pixel) + 0.5f - tickH / 2}, TextAlign::Right,
+            L.tickPx, "chart-tick", t.text);
+    }
+    add({L.plot.centre().x, L.plot.bottom() + 8.0f * s + tickH}, TextAlign::Center, L.axisPx,
+        "chart-axis", text.xLabel);
+    for (size_t k = 0; k < L.labels.size(); ++k) {
+        if (!L.labelShown[k]) continue;
+        out.push_back({L.labels[k], L.labelPx, "chart-label", L.labelTexts[k]});
+        out.back().row = static_cast<int>(k);
+    }
+    float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
+    float y = L.legend.y + 6.0f * s;
+    float textX = L.legend.x + 22.0f * s + 4.0f * s;
+    for (int m : L.legendMethods) {
+        add({textX, y}, TextAlign::Left, L.legendPx, "chart-legend",
+            std::string(methodInfo(m).name))
+            .method = m;
+        y += lineH;
+    }
+    add({textX, y}, TextAlign::Left, L.legendPx, "chart-legend", "Pareto front");
+    return out;
+}
+
 std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                     const SpeedChartText& text, ChartTiming timing,
                                     ChartAccuracy accuracy) {
-    SpeedChartLayout L = layoutSpeedChart(rows, size, timing, accuracy, text.highlight);
+    SpeedChartLayout L = layoutSpeedChart(rows, size, timing, accuracy, text.highlight,
+                                          text.minFontPx, text.keptLabelsOnly);
+    std::vector<ChartTextBox> texts = speedChartTextBoxes(L, text);
     float s = L.scale;
-    Fonts f = fontsFor(s);
 
     return drawChartOffscreen(size, [&](Canvas& c) {
-        float pad = std::round(12.0f * s);
-        Rect title = c.text({pad, pad * 0.6f}, text.title, {FontFace::Sans, f.title, CHART_INK});
-        Rect sub = c.text({pad, title.bottom()}, text.subtitle,
-                          {FontFace::Sans, f.subtitle, CHART_SOFT_INK});
-        // The y axis's name above it (the canvas draws no rotated text).
-        c.text({L.plot.x, sub.bottom() + 4.0f * s}, text.yLabel,
-               {FontFace::Sans, f.axis, CHART_INK});
-
-        // Grid and ticks.
+        // Grid.
         float stroke = std::max(1.0f, std::round(s));
         for (const ChartTick& t : L.xTicks) {
             float x = std::round(t.pixel) + 0.5f;
             c.line({x, L.plot.y}, {x, L.plot.bottom()}, stroke, CHART_GRID);
-            if (!t.text.empty()) {
-                c.text({x, L.plot.bottom() + 5.0f * s}, t.text,
-                       {FontFace::Sans, f.tick, CHART_SOFT_INK, TextAlign::Center});
-            }
         }
-        float tickH = fontMetrics(FontFace::Sans, f.tick).lineHeight;
         for (const ChartTick& t : L.yTicks) {
             float y = std::round(t.pixel) + 0.5f;
             c.line({L.plot.x, y}, {L.plot.right(), y}, stroke, CHART_GRID);
-            c.text({L.plot.x - 6.0f * s, y - tickH / 2}, t.text,
-                   {FontFace::Sans, f.tick, CHART_SOFT_INK, TextAlign::Right});
         }
         c.strokeRect(L.plot.expanded(stroke), stroke, CHART_SOFT_INK);
-        c.text({L.plot.centre().x, L.plot.bottom() + 8.0f * s + tickH}, text.xLabel,
-               {FontFace::Sans, f.axis, CHART_INK, TextAlign::Center});
 
         c.pushClip(L.plot.expanded(2.0f * s));
         // The front, under the dots.
         for (size_t k = 1; k < L.front.size(); ++k) {
-            c.line(L.points[L.front[k - 1]], L.points[L.front[k]], 1.5f * s, FRONT);
+            c.line(L.points[L.front[k - 1]], L.points[L.front[k]], std::max(1.5f, 1.5f * s), FRONT);
         }
-        float dotR = 4.5f * s;
+        float dotR = L.dotRadius;
+        float ring = std::max(1.5f, 1.5f * s);  // the front's line and rings
         // Error bars: the IQR of the time, with end ticks, under the dots.
         for (size_t k = 0; k < rows.size(); ++k) {
             glm::vec2 bar = L.errorBars[k];
@@ -355,7 +419,7 @@ std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 s
             c.line({bar.x, y - 3.0f * s}, {bar.x, y + 3.0f * s}, w, ink);
             c.line({bar.y, y - 3.0f * s}, {bar.y, y + 3.0f * s}, w, ink);
         }
-        for (size_t k : L.front) c.ring(L.points[k], dotR + 2.5f * s, 1.5f * s, FRONT);
+        for (size_t k : L.front) c.ring(L.points[k], dotR + 2.5f * s, ring, FRONT);
         // The dots a lesson step talks about: a thick orange ring outside the front's.
         for (size_t k : text.highlight) {
             if (k < rows.size()) {
@@ -367,7 +431,7 @@ std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 s
             c.circle(L.points[k], dotR, methodColour(rows[k].point.method));
         }
         c.popClip();
-        // Labels, with a thin leader where a crowd pushed one away from its dot.
+        // Leaders, where a crowd pushed a label away from its dot.
         for (size_t k = 0; k < rows.size(); ++k) {
             if (!L.labelShown[k]) continue;
             const Rect& box = L.labels[k];
@@ -377,27 +441,32 @@ std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 s
                 c.line(p, nearest, std::max(1.0f, 0.75f * s),
                        CHART_GRID * 0.8f + CHART_SOFT_INK * 0.2f);
             }
-            glm::vec4 ink = methodColour(rows[k].point.method) * 0.55f;
-            ink.a = 1.0f;
-            c.text(box.position(), L.labelTexts[k], {FontFace::Sans, f.label, ink});
         }
 
-        // Legend.
-        float lineH = fontMetrics(FontFace::Sans, f.legend).lineHeight;
+        // Legend: its box and swatches (the names are texts below).
+        float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
         c.fillRect(L.legend, {0.97f, 0.97f, 0.98f, 1.0f});
         c.strokeRect(L.legend, stroke, CHART_GRID);
         float y = L.legend.y + 6.0f * s;
         float swatchX = L.legend.x + 12.0f * s;
-        float textX = L.legend.x + 22.0f * s + 4.0f * s;
         for (int m : L.legendMethods) {
             c.circle({swatchX, y + lineH / 2}, dotR, methodColour(m));
-            c.text({textX, y}, methodInfo(m).name, {FontFace::Sans, f.legend, CHART_INK});
             y += lineH;
         }
         c.line({swatchX - 8.0f * s, y + lineH / 2}, {swatchX + 8.0f * s, y + lineH / 2}, 1.5f * s,
                FRONT);
-        c.ring({swatchX, y + lineH / 2}, dotR + 2.5f * s, 1.5f * s, FRONT);
-        c.text({textX, y}, "Pareto front", {FontFace::Sans, f.legend, CHART_INK});
+        c.ring({swatchX, y + lineH / 2}, dotR + 2.5f * s, ring, FRONT);
+
+        // Every text where speedChartTextBoxes put it.
+        for (const ChartTextBox& b : texts) {
+            Colour ink = CHART_INK;
+            if (b.role == "chart-subtitle" || b.role == "chart-tick") ink = CHART_SOFT_INK;
+            if (b.role == "chart-label" && b.row >= 0 && static_cast<size_t>(b.row) < rows.size()) {
+                ink = methodColour(rows[static_cast<size_t>(b.row)].point.method) * 0.55f;
+                ink.a = 1.0f;
+            }
+            c.text(b.rect.position(), b.text, {FontFace::Sans, b.fontPx, ink});
+        }
     });
 }
 

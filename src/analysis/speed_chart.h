@@ -46,6 +46,22 @@ struct SpeedChartText {
     std::string yLabel = "edge-band RMSE of visibility";
     // Rows ringed in orange: the dots a lesson step talks about (chartRowsMatching).
     std::vector<size_t> highlight;
+    // No text below this many pixels (a lesson frame asks for its type floor; a projector needs
+    // 14 or more), and with keptLabelsOnly only the front's and the highlighted dots are named:
+    // large labels for every dot would bury the plot.
+    float minFontPx = 8.0f;
+    bool keptLabelsOnly = false;
+};
+
+// One text the chart draws, where it goes (pixels from the chart's top left) and its size.
+struct ChartTextBox {
+    Rect rect;
+    float fontPx = 0.0f;
+    std::string role;  // "chart-title", "chart-subtitle", "chart-axis", "chart-tick",
+                       // "chart-label" (a dot's name), "chart-legend"
+    std::string text;
+    int row = -1;     // chart-label: the row it names
+    int method = -1;  // chart-legend: the method it names (-1: the front's entry)
 };
 
 struct SpeedChartLayout {
@@ -68,6 +84,9 @@ struct SpeedChartLayout {
     std::vector<size_t> front;       // rows on the Pareto front, fastest first
     std::vector<int> legendMethods;  // methods present, in the rows' order of appearance
     Rect legend;
+    // The type sizes, pixels: scaled with the chart, none below the minimum asked for.
+    float titlePx = 0, subtitlePx = 0, axisPx = 0, tickPx = 0, labelPx = 0, legendPx = 0;
+    float dotRadius = 4.5f;  // pixels; a quarter of the label size at least, to see from afar
 };
 
 // "gather3 1024", "nearest 256", "gather3 gauss1.5 1024": the label of one run.
@@ -87,7 +106,13 @@ glm::vec4 methodColour(int method);
 SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                   ChartTiming timing = ChartTiming::Scene,
                                   ChartAccuracy accuracy = ChartAccuracy::EdgeRmse,
-                                  std::span<const size_t> keepLabels = {});
+                                  std::span<const size_t> keepLabels = {}, float minFontPx = 8.0f,
+                                  bool keptLabelsOnly = false);
+
+// Every text the chart draws (drawSpeedChart sets them where these say): the boxes a lesson
+// frame lists in its layout.
+std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& layout,
+                                              const SpeedChartText& text);
 
 // The chart as RGBA8, rows top-down (for writePngRgba8), size.x * size.y * 4 bytes. Needs a
 // current OpenGL 4.5 context; leaves its framebuffer bindings as it found them.

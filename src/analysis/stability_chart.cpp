@@ -20,13 +20,22 @@ float scaleFor(glm::ivec2 size) {
     return std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
 }
 
-float px(float base, float s) { return std::max(8.0f, std::round(base * s)); }
+// A type size at scale s, not below minPx (the chart's floor: 8, or a lesson frame's).
+float px(float base, float s, float minPx) { return std::max(minPx, std::round(base * s)); }
+
+// The width the y axis's tick labels need left of the plot ("100%" is the widest).
+float yTickRoom(float s, float tickFont) {
+    return std::round(measureText(FontFace::Sans, tickFont, "100%").x + 10.0f * s + 4.0f);
+}
 
 // Title and subtitle at the top; returns the y below them.
-float drawHeader(Canvas& c, float s, const std::string& title, const std::string& subtitle) {
+float drawHeader(Canvas& c, float s, float minPx, const std::string& title,
+                 const std::string& subtitle) {
     float pad = std::round(12.0f * s);
-    Rect t = c.text({pad, pad * 0.6f}, title, {FontFace::Sans, px(20, s), CHART_INK});
-    Rect sub = c.text({pad, t.bottom()}, subtitle, {FontFace::Sans, px(13, s), CHART_SOFT_INK});
+    float titlePx = std::max(px(20, s, minPx), std::round(minPx * 1.25f));
+    Rect t = c.text({pad, pad * 0.6f}, title, {FontFace::Sans, titlePx, CHART_INK});
+    Rect sub =
+        c.text({pad, t.bottom()}, subtitle, {FontFace::Sans, px(13, s, minPx), CHART_SOFT_INK});
     return sub.bottom() + 6.0f * s;
 }
 
@@ -97,6 +106,9 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
     }
     if (spec.panels.empty()) throw std::invalid_argument("drawLineChart: no panel");
     float s = scaleFor(size);
+    float mn = spec.minFontPx;
+    // Lines as heavy as the type asks (a projector's 18 px text wants lines over 2 px).
+    float lw = std::max(2.0f * s, mn * 0.14f);
     // Axis ranges shared by all panels.
     double xLo = 1e300, xHi = -1e300, yHi = spec.yFloor;
     for (const ChartPanel& p : spec.panels) {
@@ -129,8 +141,8 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
     }
 
     return drawChartOffscreen(size, [&](Canvas& c) {
-        float top = drawHeader(c, s, spec.title, spec.subtitle);
-        float legendFont = px(13, s), tickFont = px(12, s), axisFont = px(14, s);
+        float top = drawHeader(c, s, mn, spec.title, spec.subtitle);
+        float legendFont = px(13, s, mn), tickFont = px(12, s, mn), axisFont = px(14, s, mn);
         float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
         float legendW = 0.0f;
         for (const LegendEntry& e : legend) {
@@ -156,13 +168,14 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
         for (int k = 0; k < n; ++k) {
             const ChartPanel& panel = spec.panels[k];
             Rect cell{area.x + (k % cols) * cellW, area.y + (k / cols) * cellH, cellW, cellH};
-            float titleH = fontMetrics(FontFace::Sans, px(14, s)).lineHeight;
-            Rect plot{std::round(cell.x + 58.0f * s), std::round(cell.y + titleH + 4.0f * s),
-                      std::round(cell.w - 70.0f * s),
+            float titleH = fontMetrics(FontFace::Sans, px(14, s, mn)).lineHeight;
+            float left = std::max(58.0f * s, yTickRoom(s, tickFont));
+            Rect plot{std::round(cell.x + left), std::round(cell.y + titleH + 4.0f * s),
+                      std::round(cell.w - left - 12.0f * s),
                       std::round(cell.h - titleH - tickH - 18.0f * s)};
             if (plot.w < 8.0f || plot.h < 8.0f) continue;
             c.text({plot.centre().x, cell.y}, panel.title,
-                   {FontFace::Sans, px(14, s), CHART_INK, TextAlign::Center});
+                   {FontFace::Sans, px(14, s, mn), CHART_INK, TextAlign::Center});
             auto xPixel = [&](double x) {
                 double v = spec.logX ? std::log10(std::max(x, 1e-12)) : x;
                 double t = (v - xLo) / (xHi - xLo);
@@ -208,9 +221,9 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
                     glm::vec2 p{xPixel(l.points[i].x), yPixel(l.points[i].y)};
                     if (i > 0) {
                         if (l.dashed) {
-                            dashedLine(c, prev, p, 2.0f * s, l.colour, 5.0f * s);
+                            dashedLine(c, prev, p, lw, l.colour, 5.0f * s);
                         } else {
-                            c.line(prev, p, 2.0f * s, l.colour);
+                            c.line(prev, p, lw, l.colour);
                         }
                     }
                     c.circle(p, 3.0f * s, l.colour);
@@ -228,9 +241,9 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
         for (const LegendEntry& e : legend) {
             glm::vec2 a{box.x + 8.0f * s, y + lineH / 2}, b{box.x + 32.0f * s, y + lineH / 2};
             if (e.dashed) {
-                dashedLine(c, a, b, 2.0f * s, e.colour, 5.0f * s);
+                dashedLine(c, a, b, lw, e.colour, 5.0f * s);
             } else {
-                c.line(a, b, 2.0f * s, e.colour);
+                c.line(a, b, lw, e.colour);
             }
             c.text({box.x + 38.0f * s, y}, e.label, {FontFace::Sans, legendFont, CHART_INK});
             y += lineH;
@@ -247,6 +260,7 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
         throw std::invalid_argument("drawBarChart: the chart needs at least 64 x 64 pixels");
     }
     float s = scaleFor(size);
+    float mn = spec.minFontPx;
     double yMax = 0.0;
     for (const BarGroup& g : spec.groups) {
         for (double v : g.values) yMax = std::max(yMax, v);
@@ -262,8 +276,8 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
                                     {0.84f, 0.37f, 0.0f, 1.0f},
                                     {0.0f, 0.62f, 0.45f, 1.0f}};
     return drawChartOffscreen(size, [&](Canvas& c) {
-        float top = drawHeader(c, s, spec.title, spec.subtitle);
-        float tickFont = px(12, s), axisFont = px(14, s), legendFont = px(13, s);
+        float top = drawHeader(c, s, mn, spec.title, spec.subtitle);
+        float tickFont = px(12, s, mn), axisFont = px(14, s, mn), legendFont = px(13, s, mn);
         c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK});
         top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
         float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
@@ -274,8 +288,53 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
         }
         legendW = std::round(legendW + 40.0f * s);
         top += tickH / 2;  // room for the top tick's label
-        Rect plot{std::round(62.0f * s), std::round(top), std::round(size.x - legendW - 90.0f * s),
-                  std::round(size.y - top - 2.0f * tickH - 20.0f * s)};
+        float left = std::max(62.0f * s, yTickRoom(s, tickFont));
+        float plotW = std::round(size.x - legendW - left - 28.0f * s);
+        size_t groups = std::max<size_t>(spec.groups.size(), 1);
+        float groupW = plotW / groups;
+        // Labels on two lines when the group is narrow: "method" / "bias"; a word a line when
+        // even that is too wide ("pcf-gather" / "5x5" / "none" in large type); and when a word
+        // is wider than its group, every other label one block lower, so that each may take
+        // the width of two groups.
+        auto widest = [&](const std::string& t) {
+            float w = 0.0f;
+            size_t start = 0;
+            while (true) {
+                size_t end = t.find('\n', start);
+                w = std::max(
+                    w, measureText(FontFace::Sans, tickFont,
+                                   t.substr(start, end == std::string::npos ? std::string::npos
+                                                                            : end - start))
+                           .x);
+                if (end == std::string::npos) return w;
+                start = end + 1;
+            }
+        };
+        std::vector<std::string> labels;
+        int labelLines = 1;
+        bool stagger = false;
+        for (float room : {groupW - 4.0f * s, 2.0f * groupW - 8.0f * s}) {
+            labels.clear();
+            labelLines = 1;
+            bool fitsAll = true;
+            for (const BarGroup& group : spec.groups) {
+                std::string label = group.label;
+                if (widest(label) > room) {
+                    size_t space = label.rfind(' ');
+                    if (space != std::string::npos) label[space] = '\n';
+                }
+                if (widest(label) > room) std::replace(label.begin(), label.end(), ' ', '\n');
+                fitsAll = fitsAll && widest(label) <= room;
+                labelLines = std::max(
+                    labelLines, 1 + static_cast<int>(std::count(label.begin(), label.end(), '\n')));
+                labels.push_back(label);
+            }
+            if (fitsAll) break;
+            stagger = true;
+        }
+        float labelsH = (stagger ? 2 * labelLines : std::max(2, labelLines)) * tickH;
+        Rect plot{std::round(left), std::round(top), plotW,
+                  std::round(size.y - top - labelsH - 20.0f * s)};
         float stroke = std::max(1.0f, std::round(s));
         auto yPixel = [&](double y) {
             return plot.bottom() - static_cast<float>(y / yTop) * plot.h;
@@ -286,8 +345,6 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
             c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, false),
                    {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right});
         }
-        size_t groups = std::max<size_t>(spec.groups.size(), 1);
-        float groupW = plot.w / groups;
         size_t bars = std::max<size_t>(spec.series.size(), 1);
         float barW = std::max(2.0f, std::floor(groupW * 0.8f / bars));
         for (size_t g = 0; g < spec.groups.size(); ++g) {
@@ -299,14 +356,8 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
                             std::round(plot.bottom() - y)},
                            SERIES[b % 4]);
             }
-            // Labels on two lines when the group is narrow: "method" / "bias".
-            std::string label = group.label;
-            float w = measureText(FontFace::Sans, tickFont, label).x;
-            if (w > groupW - 4.0f * s) {
-                size_t space = label.rfind(' ');
-                if (space != std::string::npos) label[space] = '\n';
-            }
-            c.text({plot.x + (g + 0.5f) * groupW, plot.bottom() + 4.0f * s}, label,
+            float below = stagger && g % 2 == 1 ? labelLines * tickH : 0.0f;
+            c.text({plot.x + (g + 0.5f) * groupW, plot.bottom() + 4.0f * s + below}, labels[g],
                    {FontFace::Sans, tickFont, CHART_INK, TextAlign::Center});
         }
         c.strokeRect(plot.expanded(stroke), stroke, CHART_SOFT_INK);
@@ -325,7 +376,7 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
 }
 
 std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                   const std::string& subtitle) {
+                                   const std::string& subtitle, float minFontPx) {
     LineChartSpec spec;
     spec.title = "Shadow acne: false shadow on lit receivers as the light sinks";
     spec.subtitle = subtitle;
@@ -351,11 +402,12 @@ std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec
     }
     if (spec.panels.empty()) return {};
     spec.notes.push_back("1% = acne onset");
+    spec.minFontPx = minFontPx;
     return drawLineChart(spec, size);
 }
 
 std::vector<uint8_t> drawLeakChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                   const std::string& subtitle) {
+                                   const std::string& subtitle, float minFontPx) {
     LineChartSpec spec;
     spec.title = "Peter panning: how far light leaks under the caster as the bias grows";
     spec.subtitle = subtitle;
@@ -388,11 +440,12 @@ std::vector<uint8_t> drawLeakChart(std::span<const StabilityRow> rows, glm::ivec
     for (size_t k = 0; k < scenes.size(); ++k) {
         spec.notes.push_back((k == 0 ? "solid: " : "dashed: ") + scenes[k]);
     }
+    spec.minFontPx = minFontPx;
     return drawLineChart(spec, size);
 }
 
 std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                      const std::string& subtitle) {
+                                      const std::string& subtitle, float minFontPx) {
     BarChartSpec spec;
     spec.title = "Shimmer: how much the picture flickers while nothing in the world moves";
     spec.subtitle = subtitle;
@@ -415,6 +468,7 @@ std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::i
         }
     }
     if (spec.groups.empty()) return {};
+    spec.minFontPx = minFontPx;
     return drawBarChart(spec, size);
 }
 

@@ -39,6 +39,7 @@ struct LineChartSpec {
     double yFloor = 0.0;    // y axis starts here; its top is the data's maximum, rounded up
     std::vector<ChartPanel> panels;
     std::vector<std::string> notes;  // legend lines without a swatch (e.g. "dashed: pole")
+    float minFontPx = 8.0f;          // no text below this (a lesson frame asks for its floor)
 };
 
 // The chart as RGBA8, rows top-down. Needs a current OpenGL 4.5 context; leaves its framebuffer
@@ -56,6 +57,7 @@ struct BarChartSpec {
     std::string yLabel;
     std::vector<std::string> series;  // legend, one colour each
     std::vector<BarGroup> groups;
+    float minFontPx = 8.0f;  // no text below this (a lesson frame asks for its floor)
 };
 
 std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size);
@@ -64,12 +66,13 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size);
 glm::vec4 biasColour(std::string_view bias);
 
 // The charts `pcfscope stability` writes, from its rows: acne rate against elevation (empty when
-// no acne row), leak width against bias, shimmer per method. Each is RGBA8 of `size`.
+// no acne row), leak width against bias, shimmer per method. Each is RGBA8 of `size`, no text
+// below minFontPx.
 std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                   const std::string& subtitle);
+                                   const std::string& subtitle, float minFontPx = 8.0f);
 std::vector<uint8_t> drawLeakChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                   const std::string& subtitle);
+                                   const std::string& subtitle, float minFontPx = 8.0f);
 std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                      const std::string& subtitle);
+                                      const std::string& subtitle, float minFontPx = 8.0f);
 
 }  // namespace pcf

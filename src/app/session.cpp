@@ -178,17 +178,18 @@ ChartRef chartRef(const std::string& chart) {
 }
 
 // The stability chart `view` of a stability.csv, or InputError for an unknown view or no rows.
-std::vector<uint8_t> drawStabilityView(const ChartRef& ref, glm::ivec2 size) {
+std::vector<uint8_t> drawStabilityView(const ChartRef& ref, glm::ivec2 size,
+                                       float minFontPx = 8.0f) {
     std::vector<StabilityRow> rows = readStabilityRows(ref.path);
     std::string subtitle =
         "measured by pcfscope stability, " + std::filesystem::path(ref.path).filename().string();
     std::vector<uint8_t> rgba;
     if (ref.view == "acne") {
-        rgba = drawAcneChart(rows, size, subtitle);
+        rgba = drawAcneChart(rows, size, subtitle, minFontPx);
     } else if (ref.view == "leak") {
-        rgba = drawLeakChart(rows, size, subtitle);
+        rgba = drawLeakChart(rows, size, subtitle, minFontPx);
     } else if (ref.view == "shimmer") {
-        rgba = drawShimmerChart(rows, size, subtitle);
+        rgba = drawShimmerChart(rows, size, subtitle, minFontPx);
     } else {
         throw InputError(
             ref.path, 0,
@@ -372,35 +373,78 @@ bool Session::previousPage() {
 
 void Session::setFrameTimeMs(double ms) { mFrameTimeMs = ms; }
 
-std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size) {
-    ChartRef ref = chartRef(step.chart);
-    if (!ref.view.empty()) return drawStabilityView(ref, size);
-    std::vector<BenchRow> rows = readChartRows(step.chart);
+namespace {
+
+// A chart step's smallest type: the frame's floors for numbers and labels (inspector.h:
+// typeSizes), so that the chart reads as well as the text beside it.
+float chartFloor(bool presentation) {
+    InspectorLayout frame;
+    frame.presentation = presentation;
+    TypeSizes t = typeSizes(frame);
+    return std::max(t.numberFloor, t.labelFloor);
+}
+
+// The chart's text and type for a speed-chart step.
+SpeedChartText stepChartText(const LessonStep& step, const std::vector<BenchRow>& rows,
+                             bool presentation) {
     SpeedChartText labels;
     labels.title = "Speed against accuracy";
     labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
                       std::filesystem::path(step.chart).filename().string();
     if (!step.chartHighlight.empty())
         labels.highlight = chartRowsMatching(rows, step.chartHighlight);
-    return drawSpeedChart(rows, size, labels);
+    labels.minFontPx = chartFloor(presentation);
+    // A projector's chart names only what the step talks about.
+    labels.keptLabelsOnly = presentation;
+    return labels;
 }
 
-void Session::blitChart(const std::string& csvPath) {
-    glm::ivec2 size(mLayout.scene.size());
+}  // namespace
+
+std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size, bool presentation) {
+    ChartRef ref = chartRef(step.chart);
+    if (!ref.view.empty()) return drawStabilityView(ref, size, chartFloor(presentation));
+    std::vector<BenchRow> rows = readChartRows(step.chart);
+    return drawSpeedChart(rows, size, stepChartText(step, rows, presentation));
+}
+
+std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLayout& layout) {
+    std::vector<LayoutBox> out;
+    ChartRef ref = chartRef(step.chart);
+    if (step.chart.empty() || !ref.view.empty()) return out;
+    std::vector<BenchRow> rows = readChartRows(step.chart);
+    SpeedChartText text = stepChartText(step, rows, layout.presentation);
+    glm::ivec2 size(layout.scene.size());
+    SpeedChartLayout L = layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
+                                          text.highlight, text.minFontPx, text.keptLabelsOnly);
+    for (const ChartTextBox& b : speedChartTextBoxes(L, text)) {
+        BoxKind kind = b.role == "chart-tick"                                ? BoxKind::Number
+                       : b.role == "chart-label" || b.role == "chart-legend" ? BoxKind::Label
+                                                                             : BoxKind::Text;
+        Rect r{b.rect.x + layout.scene.x, b.rect.y + layout.scene.y, b.rect.w, b.rect.h};
+        out.push_back({kind, r, "scene", b.role, b.fontPx, false, b.text});
+    }
+    return out;
+}
+
+void Session::blitChart(const InspectorLayout& layout) {
+    glm::ivec2 size(layout.scene.size());
     const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
-    std::string key = csvPath + "@" + std::to_string(size.x) + "x" + std::to_string(size.y) + "#" +
-                      step.chartHighlight;
+    std::string key = step.chart + "@" + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                      "#" + step.chartHighlight + (layout.presentation ? "P" : "");
     if (key != mChartKey) {
-        std::vector<uint8_t> rgba = drawStepChart(step, size);
+        std::vector<uint8_t> rgba = drawStepChart(step, size, layout.presentation);
         mChart = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
         uploadBottomUp(mChart, size.x, size.y, rgba);
         mChartKey = key;
     }
     // Texture row 0 holds the chart's bottom row (uploadBottomUp): a straight copy.
     int frameH = mLayout.frameSize.y;
+    int x = static_cast<int>(layout.scene.x);
+    int top = frameH - static_cast<int>(layout.scene.y);
     glNamedFramebufferReadBuffer(mChart.framebuffer.id(), GL_COLOR_ATTACHMENT0);
     glBlitNamedFramebuffer(mChart.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, size.x, size.y,
-                           0, frameH - size.y, size.x, frameH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                           x, top - size.y, x + size.x, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 void Session::renderScene() {
@@ -486,11 +530,14 @@ void Session::compose() {
     traceAtPixel();
 
     GLuint fbo = mFrame.framebuffer.id();
-    clearInspectorPanels(fbo, mLayout);
+    const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
+    const std::string& chart = step.chart;
+    // A chart step in presentation mode gives the chart the inspector's room too.
+    InspectorLayout layout = chart.empty() ? mLayout : chartStepLayout(mLayout);
+    clearInspectorPanels(fbo, layout);
     // The scene goes top-left. GL rows count from the bottom, so its top edge is frame height.
     glm::ivec2 frame = mLayout.frameSize;
     glm::ivec2 scene(mLayout.scene.size());
-    const std::string& chart = mLesson.steps[static_cast<size_t>(mStep)].chart;
     if (chart.empty()) {
         glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
         glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, 0,
@@ -498,19 +545,23 @@ void Session::compose() {
                                GL_NEAREST);
         if (mHeatmap) blitHeatmap();
     } else {
-        blitChart(chart);
+        blitChart(layout);
     }
 
     InspectorModel m = model();
-    FramePlan plan = planFrame(mLayout, m);
+    FramePlan plan = planFrame(layout, m);
     mTextPages = plan.textPages;
     if (mTextPage >= mTextPages) {
         // A smaller type or frame may leave fewer pages: show the last.
         mTextPage = mTextPages - 1;
         m.textPage = mTextPage;
-        plan = planFrame(mLayout, m);
+        plan = planFrame(layout, m);
     }
     mBoxes = plan.boxes;
+    if (!chart.empty()) {
+        std::vector<LayoutBox> texts = stepChartBoxes(step, layout);
+        mBoxes.insert(mBoxes.end(), texts.begin(), texts.end());
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     mCanvas.begin(frame);
     drawPlan(mCanvas, plan.base);
@@ -670,7 +721,7 @@ std::string Session::stepJson() const {
               {"title", mLesson.title},
               {"step", mStep + 1},
               {"step_title", mLesson.steps.empty() ? "" : mLesson.steps[mStep].title},
-              {"text", stepText()},
+              {"text", drawnStepText(stepText())},
               {"pixel", jsonPair(mPixel)},
               {"scene_size", jsonPair(glm::ivec2(mLayout.scene.size()))},
               {"settings", settings},

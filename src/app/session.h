@@ -44,7 +44,14 @@ constexpr std::size_t MAX_CHART_ROWS = 2000;
 // A chart step's chart (LessonStep::chart, with its chart_highlight) as RGBA8 of `size`, rows
 // top-down, as the frame shows it in the scene's place; `render --lesson L --step S` writes it.
 // Needs a current OpenGL 4.5 context. Throws InputError for a bad chart file.
-std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size);
+// `presentation`: text at the projector's floors and only the dots the step names (and the
+// Pareto front) labelled; otherwise at the normal frame's floors.
+std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size,
+                                   bool presentation = false);
+// The texts a speed-chart step's chart draws in `layout`'s scene panel (as chartStepLayout places
+// it), as layout boxes: ticks are numbers, dot names and the legend labels, the rest text. The
+// frame's layout lists them. Stability charts list none. Throws InputError for a bad chart file.
+std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLayout& layout);
 
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
 
@@ -126,7 +133,7 @@ class Session {
     void traceAtPixel();
     void blitThumbnail();
     // A step with a chart shows it where the scene goes (lesson.h: LessonStep::chart).
-    void blitChart(const std::string& csvPath);
+    void blitChart(const InspectorLayout& layout);
     void blitHeatmap();
     void drawHeatLegend();
 

@@ -136,23 +136,39 @@ InspectorLayout inspectorLayout(glm::ivec2 frameSize, bool presentation) {
     return l;
 }
 
+InspectorLayout chartStepLayout(const InspectorLayout& l) {
+    if (!l.presentation || l.status.y <= 0.0f) return l;
+    InspectorLayout c = l;
+    float w = static_cast<float>(l.frameSize.x);
+    float bodyH = l.status.y;
+    // The chart: the full width, 58% of the height over the status line; the step text under it.
+    float chartH = std::round(bodyH * 0.58f);
+    c.scene = {0.0f, 0.0f, w, chartH};
+    c.steps = {0.0f, chartH, w, bodyH - chartH};
+    c.inspector = {};
+    c.thumbnail = {};
+    return c;
+}
+
 FramePlan planFrame(const InspectorLayout& l, const InspectorModel& m) {
     FramePlan plan;
     Planner pl{plan};
     TypeSizes t = typeSizes(l);
     pl.box(BoxKind::Panel, l.scene, "scene", "scene");
     pl.box(BoxKind::Panel, l.steps, "steps", "steps");
-    pl.box(BoxKind::Panel, l.inspector, "inspector", "inspector");
+    if (!l.inspector.empty()) pl.box(BoxKind::Panel, l.inspector, "inspector", "inspector");
     pl.box(BoxKind::Panel, l.status, "status", "status");
     if (m.showScene) planScene(pl, l, m, t);
     Rect steps = l.steps;
     pl.op([=](Canvas& c) { c.pushClip(steps); });
     planSteps(pl, l, m, t);
     pl.op([](Canvas& c) { c.popClip(); });
-    Rect insp = l.inspector;
-    pl.op([=](Canvas& c) { c.pushClip(insp); });
-    planInspector(pl, l, m, t);
-    pl.op([](Canvas& c) { c.popClip(); });
+    if (!l.inspector.empty()) {
+        Rect insp = l.inspector;
+        pl.op([=](Canvas& c) { c.pushClip(insp); });
+        planInspector(pl, l, m, t);
+        pl.op([](Canvas& c) { c.popClip(); });
+    }
     planStatus(pl, l, m, t);
     pl.onTop = true;
     planThumbnail(pl, l, m, t);
@@ -179,7 +195,7 @@ void clearInspectorPanels(GLuint framebuffer, const InspectorLayout& l) {
     };
     GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
     glEnable(GL_SCISSOR_TEST);
-    clearRect(l.inspector, PANEL);
+    if (!l.inspector.empty()) clearRect(l.inspector, PANEL);
     clearRect(l.steps, PANEL_LIGHT);
     clearRect(l.status, STATUS);
     if (!scissor) glDisable(GL_SCISSOR_TEST);

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kernel/shadow_map.h"
@@ -36,6 +37,11 @@ struct InspectorLayout {
     bool presentation = false;
 };
 InspectorLayout inspectorLayout(glm::ivec2 frameSize, bool presentation);
+// The layout of a lesson step that shows a chart instead of the scene. Presentation mode gives
+// the chart the scene's and the inspector's width (the inspector's cells would trace a pixel of a
+// scene not shown) and the step panel the full width under it, so that the chart's labels can be
+// set at projector size; normal mode keeps `l`.
+InspectorLayout chartStepLayout(const InspectorLayout& l);
 
 // The type sizes of a frame, in pixels. Every text is drawn at its size or stepped down towards
 // its floor, never below; presentation floors are the projector's (step text 22 px, numbers
@@ -96,6 +102,10 @@ struct FramePlan {
 };
 FramePlan planFrame(const InspectorLayout& layout, const InspectorModel& model);
 void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& ops);
+// A step text as the frame draws it: `code spans` without their backticks (a backtick with no
+// partner on its line stays), preformatted rows (two leading spaces) as they are, table columns
+// padded to line up. What the step JSON sidecar's `text` reports.
+std::string drawnStepText(std::string_view text);
 
 // A frame is drawn in layers: the panels' backgrounds (clearInspectorPanels) and the scene's
 // pixels blitted into layout.scene; then

@@ -253,3 +253,27 @@ float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, 
 }
 
 }  // namespace pcf::inspector_detail
+
+namespace pcf {
+
+std::string drawnStepText(std::string_view text) {
+    std::string aligned = inspector_detail::alignTables(text);
+    std::string out;
+    size_t start = 0;
+    while (true) {
+        size_t end = aligned.find('\n', start);
+        std::string_view line = std::string_view(aligned).substr(
+            start, end == std::string::npos ? std::string::npos : end - start);
+        if (inspector_detail::preformatted(line)) {
+            out += line;
+        } else {
+            for (const TextSpan& span : splitCodeSpans(line)) out += span.text;
+        }
+        if (end == std::string::npos) break;
+        out += '\n';
+        start = end + 1;
+    }
+    return out;
+}
+
+}  // namespace pcf
