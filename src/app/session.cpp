@@ -352,8 +352,8 @@ void Session::blitThumbnail() {
     int x = static_cast<int>(r.x);
     int top = frameH - static_cast<int>(r.y);
     glNamedFramebufferReadBuffer(mThumbnail.framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mThumbnail.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, side, side,
-                           x, top - side, x + side, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitNamedFramebuffer(mThumbnail.framebuffer.id(), mTarget, 0, 0, side, side, x, top - side,
+                           x + side, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 void Session::setHelp(bool on) { mHelp = on; }
@@ -399,8 +399,8 @@ void Session::blitChart(const std::string& csvPath) {
     // Texture row 0 holds the chart's bottom row (uploadBottomUp): a straight copy.
     int frameH = mLayout.frameSize.y;
     glNamedFramebufferReadBuffer(mChart.framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mChart.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, size.x, size.y,
-                           0, frameH - size.y, size.x, frameH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitNamedFramebuffer(mChart.framebuffer.id(), mTarget, 0, 0, size.x, size.y, 0,
+                           frameH - size.y, size.x, frameH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 void Session::renderScene() {
@@ -480,12 +480,14 @@ std::string Session::stepText() const {
     return text;
 }
 
-void Session::compose() {
+void Session::compose() { composeInto(mFrame.framebuffer.id()); }
+
+void Session::composeInto(GLuint fbo) {
     if (!mRenderer) throw std::logic_error("Session::compose before loadLesson");
     if (mSceneDirty) renderScene();
     traceAtPixel();
 
-    GLuint fbo = mFrame.framebuffer.id();
+    mTarget = fbo;
     clearInspectorPanels(fbo, mLayout);
     // The scene goes top-left. GL rows count from the bottom, so its top edge is frame height.
     glm::ivec2 frame = mLayout.frameSize;
@@ -546,7 +548,7 @@ void Session::blitHeatmap() {
     // Texture row 0 holds the image's bottom row (uploadBottomUp): a straight copy.
     int frameH = mLayout.frameSize.y;
     glNamedFramebufferReadBuffer(mHeat.framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mHeat.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, size.x, size.y, 0,
+    glBlitNamedFramebuffer(mHeat.framebuffer.id(), mTarget, 0, 0, size.x, size.y, 0,
                            frameH - size.y, size.x, frameH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
