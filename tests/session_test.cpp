@@ -1,13 +1,13 @@
 // Session::composeInto: the viewer draws its window's back buffer directly (no copy of the
 // offscreen frame). That buffer holds whatever the last frame left there, so the composed frame
 // must cover every pixel and equal, byte for byte, the offscreen frame export writes.
-#include <gtest/gtest.h>
+#include "app/session.h"
 
 #include <epoxy/gl.h>
+#include <gtest/gtest.h>
 
 #include <memory>
 
-#include "app/session.h"
 #include "render/gl_context.h"
 #include "render/gl_objects.h"
 

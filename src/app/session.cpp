@@ -136,6 +136,12 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) 
     return r;
 }
 
+glm::mat4 lessonShadowFit(const Scene& scene, const LessonSettings& s, int mapSize) {
+    glm::mat4 fit = shadowClipFromWorld(scene);
+    if (s.originShift == 0.0f && !s.snap) return fit;
+    return shiftShadowOrigin(fit, glm::vec2(s.originShift), mapSize, s.snap);
+}
+
 Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presentation) {
     setFrameSize(frameSize);
 }
@@ -412,11 +418,7 @@ void Session::renderScene() {
                       mRendered->shadowCull != r.shadowCull ||
                       mRendered->polygonOffset != r.polygonOffset || shift != mRenderedShift;
     if (mapChanged) {
-        glm::mat4 fit = shadowClipFromWorld(mLesson.scene);
-        if (shift != glm::vec3(0.0f)) {
-            fit = shiftShadowOrigin(fit, glm::vec2(shift.x, shift.y), r.mapSize, shift.z != 0.0f);
-        }
-        mRenderer->setShadowClipFromWorld(fit);
+        mRenderer->setShadowClipFromWorld(lessonShadowFit(mLesson.scene, mSettings, r.mapSize));
         mRenderedShift = shift;
     }
     mHeatDirty = true;

@@ -47,6 +47,11 @@ constexpr std::size_t MAX_CHART_ROWS = 2000;
 std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size);
 
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
+// The shadow map's fit (light clip from world) for a lesson's settings: the scene's own fit with
+// its texel grid slid by `origin_shift` and snapped with `snap` (scene/light.h:
+// shiftShadowOrigin), for a map of `mapSize` texels. The viewer, export and `render --lesson`
+// all render with it (SceneRenderer::setShadowClipFromWorld).
+glm::mat4 lessonShadowFit(const Scene& scene, const LessonSettings& s, int mapSize);
 
 // The smallest frame the scene view and the inspector fit into side by side.
 constexpr glm::ivec2 MIN_SESSION_SIZE{320, 180};
