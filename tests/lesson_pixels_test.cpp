@@ -56,6 +56,8 @@ std::vector<RenderedStep> renderLesson(const std::string& name, glm::ivec2 frame
     std::vector<RenderedStep> out;
     for (const LessonStep& step : lesson.steps) {
         const LessonSettings& s = step.settings;
+        // The step's texel grid (origin_shift, snap), as the viewer and export fit the map.
+        renderer.setShadowClipFromWorld(lessonShadowFit(lesson.scene, s, s.mapSize));
         renderer.render(renderSettingsFor(s, frameSize));
         std::vector<float> lightSpace = renderer.readLightSpace();
         std::vector<float> visibility = renderer.readVisibility();

@@ -62,11 +62,14 @@ int runRender(const RenderCommandOptions& o) {
     // scene's place (--raw still writes the scene's buffers at the step's settings).
     std::string chart;
     std::optional<LessonStep> chartStep;
+    std::optional<glm::mat4> lessonFit;
     if (!o.render.lesson.empty()) {
         std::string path = resolveLesson(o.render.lesson);
         outputs.addInput("--lesson", path);
         Lesson lesson = loadLessonChecked(path);
         const LessonStep& step = lesson.steps[static_cast<size_t>(o.render.lessonStep - 1)];
+        // The step's texel grid (origin_shift, snap), as the viewer and export render it.
+        lessonFit = lessonShadowFit(lesson.scene, step.settings, settings.mapSize);
         if (!step.chart.empty()) {
             chartStep = step;
             chart = step.chart.substr(0, step.chart.rfind('#'));
@@ -96,6 +99,7 @@ int runRender(const RenderCommandOptions& o) {
 
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(scene);
+    if (lessonFit) renderer.setShadowClipFromWorld(*lessonFit);
     renderer.render(settings);
     if (o.verbose)
         std::fprintf(stderr, "pcfscope: rendered on %s\n", context->description().c_str());

@@ -136,6 +136,12 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) 
     return r;
 }
 
+glm::mat4 lessonShadowFit(const Scene& scene, const LessonSettings& s, int mapSize) {
+    glm::mat4 fit = shadowClipFromWorld(scene);
+    if (s.originShift == 0.0f && !s.snap) return fit;
+    return shiftShadowOrigin(fit, glm::vec2(s.originShift), mapSize, s.snap);
+}
+
 Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presentation) {
     setFrameSize(frameSize);
 }
@@ -353,8 +359,8 @@ void Session::blitThumbnail() {
     int x = static_cast<int>(r.x);
     int top = frameH - static_cast<int>(r.y);
     glNamedFramebufferReadBuffer(mThumbnail.framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mThumbnail.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, side, side,
-                           x, top - side, x + side, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitNamedFramebuffer(mThumbnail.framebuffer.id(), mTarget, 0, 0, side, side, x, top - side,
+                           x + side, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 void Session::setHelp(bool on) { mHelp = on; }
@@ -443,8 +449,8 @@ void Session::blitChart(const InspectorLayout& layout) {
     int x = static_cast<int>(layout.scene.x);
     int top = frameH - static_cast<int>(layout.scene.y);
     glNamedFramebufferReadBuffer(mChart.framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mChart.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, size.x, size.y,
-                           x, top - size.y, x + size.x, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitNamedFramebuffer(mChart.framebuffer.id(), mTarget, 0, 0, size.x, size.y, x, top - size.y,
+                           x + size.x, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 void Session::renderScene() {
@@ -456,11 +462,7 @@ void Session::renderScene() {
                       mRendered->shadowCull != r.shadowCull ||
                       mRendered->polygonOffset != r.polygonOffset || shift != mRenderedShift;
     if (mapChanged) {
-        glm::mat4 fit = shadowClipFromWorld(mLesson.scene);
-        if (shift != glm::vec3(0.0f)) {
-            fit = shiftShadowOrigin(fit, glm::vec2(shift.x, shift.y), r.mapSize, shift.z != 0.0f);
-        }
-        mRenderer->setShadowClipFromWorld(fit);
+        mRenderer->setShadowClipFromWorld(lessonShadowFit(mLesson.scene, mSettings, r.mapSize));
         mRenderedShift = shift;
     }
     mHeatDirty = true;
@@ -524,12 +526,14 @@ std::string Session::stepText() const {
     return text;
 }
 
-void Session::compose() {
+void Session::compose() { composeInto(mFrame.framebuffer.id()); }
+
+void Session::composeInto(GLuint fbo) {
     if (!mRenderer) throw std::logic_error("Session::compose before loadLesson");
     if (mSceneDirty) renderScene();
     traceAtPixel();
 
-    GLuint fbo = mFrame.framebuffer.id();
+    mTarget = fbo;
     const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
     const std::string& chart = step.chart;
     // A chart step in presentation mode gives the chart the inspector's room too.
@@ -597,7 +601,7 @@ void Session::blitHeatmap() {
     // Texture row 0 holds the image's bottom row (uploadBottomUp): a straight copy.
     int frameH = mLayout.frameSize.y;
     glNamedFramebufferReadBuffer(mHeat.framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mHeat.framebuffer.id(), mFrame.framebuffer.id(), 0, 0, size.x, size.y, 0,
+    glBlitNamedFramebuffer(mHeat.framebuffer.id(), mTarget, 0, 0, size.x, size.y, 0,
                            frameH - size.y, size.x, frameH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 

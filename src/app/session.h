@@ -54,6 +54,11 @@ std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size,
 std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLayout& layout);
 
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
+// The shadow map's fit (light clip from world) for a lesson's settings: the scene's own fit with
+// its texel grid slid by `origin_shift` and snapped with `snap` (scene/light.h:
+// shiftShadowOrigin), for a map of `mapSize` texels. The viewer, export and `render --lesson`
+// all render with it (SceneRenderer::setShadowClipFromWorld).
+glm::mat4 lessonShadowFit(const Scene& scene, const LessonSettings& s, int mapSize);
 
 // The smallest frame the scene view and the inspector fit into side by side.
 constexpr glm::ivec2 MIN_SESSION_SIZE{320, 180};
@@ -112,6 +117,11 @@ class Session {
 
     // Renders what changed, traces the pixel and composes the frame offscreen.
     void compose();
+    // The same frame composed into another framebuffer of the frame's size (0: the window's back
+    // buffer). Every pixel is drawn, whatever the target held. The viewer draws its window so:
+    // a copy of the offscreen frame into the window's rows-top-down buffer is a shader pass over
+    // every pixel on llvmpipe (about 7 ms at 1600 x 900), a third of a moved pixel's frame.
+    void composeInto(GLuint framebuffer);
     // Makes the next compose() render the scene again (frame-time measurements).
     void invalidateScene() { mSceneDirty = true; }
     GLuint frameFramebuffer() const { return mFrame.framebuffer.id(); }
@@ -167,6 +177,7 @@ class Session {
 
     Canvas mCanvas;
     OffscreenTarget mFrame;
+    GLuint mTarget = 0;          // what the current compose draws into (mFrame's, or the window's)
     OffscreenTarget mThumbnail;  // the map's thumbnail, rows top-down, blitted into the frame
     OffscreenTarget mChart;      // the step's chart, rows top-down
     std::string mChartKey;       // path and size the chart was drawn for
