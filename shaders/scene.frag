@@ -102,12 +102,13 @@ void main() {
                                             uSigma));
     }
     // Gamma 2.2 of albedo * light, light = ambient + diffuse * visibility (a scalar):
-    //   pow(albedo * light, 1/2.2) = pow(albedo, 1/2.2) * pow(light, 1/2.2)
+    //   (albedo * light)^(1/2.2) = albedo^(1/2.2) * light^(1/2.2)
     // The albedo's factor is per object, done once on the CPU (uAlbedoEncoded), so a fragment
-    // pays one pow, not three: on llvmpipe the three were about half of what the camera pass
-    // cost beyond the filter (README, "What the camera pass costs").
+    // pays for one power, and that one is pcfGammaEncode (shared/pcf_shading.h): a sqrt and a
+    // polynomial within 6e-6 of the pow it replaces. On llvmpipe the pow was most of what the
+    // camera pass cost beyond the filter (README, "What the camera pass costs").
     float light = AMBIENT + (1.0f - AMBIENT) * nDotL * visibility * cone;
-    oColour = vec4(uAlbedoEncoded * pow(light, 1.0f / 2.2f), 1.0f);
+    oColour = vec4(uAlbedoEncoded * pcfGammaEncode(light), 1.0f);
 #if PCF_ALL_TARGETS
     oLightSpace = uReceives != 0 ? vec4(u, v, ref, 1.0f) : vec4(0.0f);
     oVisibility = visibility;

@@ -18,10 +18,11 @@ GLuint PcfProgramCache::get(int method, int kernel) {
                           std::to_string(kernel) + "\n" + mExtraDefines;
     GlProgram program = buildProgram({
         ShaderStage{GL_VERTEX_SHADER, {mVertexFile}, "", {}},
-        ShaderStage{GL_FRAGMENT_SHADER,
-                    {"shared/pcf_prelude.h", "shared/pcf_kernel.h", mFragmentFile},
-                    defines,
-                    {}},
+        ShaderStage{
+            GL_FRAGMENT_SHADER,
+            {"shared/pcf_prelude.h", "shared/pcf_kernel.h", "shared/pcf_shading.h", mFragmentFile},
+            defines,
+            {}},
     });
     GLuint id = program.id();
     mPrograms.emplace(key, std::move(program));
