@@ -25,6 +25,8 @@ std::vector<BenchRow> sampleRows() {
     a.shimmer.flickerP99 = 0.375;
     a.shimmer.flickerShare = 0.02;
     a.shimmer.mean = 0.000246913578;
+    a.gpuCpuMs = 21.25;
+    a.lookupCpuMs = 9.5;
     BenchRow b = a;
     b.point = {PCF_NEAREST, 0, 256};
     b.acne = {};
@@ -58,11 +60,13 @@ TEST(BenchReport, CsvReadsBackWhatWasWritten) {
         EXPECT_EQ(back[k].shimmer.flickerP99, rows[k].shimmer.flickerP99);
         EXPECT_NEAR(back[k].shimmer.flickerShare, rows[k].shimmer.flickerShare, 1e-12);
         EXPECT_NEAR(back[k].shimmer.mean, rows[k].shimmer.mean, 1e-15);
+        EXPECT_NEAR(back[k].gpuCpuMs, rows[k].gpuCpuMs, 1e-4);
+        EXPECT_NEAR(back[k].lookupCpuMs, rows[k].lookupCpuMs, 1e-4);
     }
     // The columns by name: the weighting's name, and the gaussian's sigma.
     std::string csv = benchCsv(rows);
     EXPECT_NE(csv.find(",gaussian,1.25,0.125,0.03125,4096,0.0625,0.015625,512,0.0123456789,0.375,"
-                       "0.02,0.000246913578\n"),
+                       "0.02,0.000246913578,21.2500,9.5000\n"),
               std::string::npos)
         << csv;
 }
@@ -77,8 +81,10 @@ TEST(BenchReport, TheShippedCsvParses) {
     std::fclose(f);
     std::vector<BenchRow> rows = parseBenchCsv(text, path);
     EXPECT_GE(rows.size(), 60u);  // every method, N = 3, 5, 7, four map sizes
-    // The current columns: the error split and the shimmer are there, and say what they must.
-    EXPECT_EQ(text.rfind(std::string(BENCH_CSV_HEADER) + "\n", 0), 0u);
+    // The error split and the shimmer are there (the current header or the one before the
+    // passes' CPU time), and say what they must.
+    EXPECT_TRUE(text.starts_with(std::string(BENCH_CSV_HEADER) + "\n") ||
+                text.starts_with(std::string(BENCH_CSV_HEADER_V3) + "\n"));
     for (const BenchRow& r : rows) {
         std::string name = pointName(r.point) + " map " + std::to_string(r.point.mapSize);
         EXPECT_GT(r.acne.count, 0) << name;
@@ -111,8 +117,8 @@ TEST(BenchReport, BadCsvNamesTheLine) {
               "b.csv:2: field 4 'nan' is not a number");
     EXPECT_EQ(message(header + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,2\n"),
               "b.csv:2: field 15 '2' is not 0 or 1");
-    // The current header: its 27 fields, a weighting it knows.
-    std::string v3 = std::string(BENCH_CSV_HEADER) + "\n";
+    // The header before the CPU times: its 27 fields, a weighting it knows.
+    std::string v3 = std::string(BENCH_CSV_HEADER_V3) + "\n";
     const std::string head = "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0,";
     EXPECT_EQ(message(v3 + head + "box,0,0,0,10,0,0,10,0,0,0,0\n").substr(0, 8), "no error");
     EXPECT_EQ(message(v3 + head + "sharp,0,0,0,10,0,0,10,0,0,0,0\n"),
@@ -121,6 +127,15 @@ TEST(BenchReport, BadCsvNamesTheLine) {
               "b.csv:2: field 20 '1.5' is not a whole number");
     EXPECT_EQ(message(v3 + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0\n"),
               "b.csv:2: expected 27 fields, got 15");
+    // The current header: 29 fields, the last two the passes' CPU time.
+    std::string v4 = std::string(BENCH_CSV_HEADER) + "\n";
+    const std::string row27 = head + "box,0,0,0,10,0,0,10,0,0,0,0";
+    EXPECT_EQ(message(v4 + row27 + "\n"), "b.csv:2: expected 29 fields, got 27");
+    std::vector<BenchRow> cpu = parseBenchCsv(v4 + row27 + ",12.5,4.25\n", "b.csv");
+    ASSERT_EQ(cpu.size(), 1u);
+    EXPECT_EQ(cpu[0].gpuCpuMs, 12.5);
+    EXPECT_EQ(cpu[0].lookupCpuMs, 4.25);
+    EXPECT_EQ(parseBenchCsv(v3 + row27 + "\n", "b.csv")[0].gpuCpuMs, 0.0);
     // The eleven columns from before the timing spreads still read, with no spread.
     std::string v1 = std::string(BENCH_CSV_HEADER_V1) + "\n";
     EXPECT_EQ(message(v1 + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0\n"),

@@ -221,6 +221,10 @@ TEST_F(BenchSweep, RowsCarryFetchCountsTimingsAndTheTimer) {
             << k;
         EXPECT_GT(r.cpuNsPerPixel, 0.0) << k;
         EXPECT_EQ(r.cpuPixels, 2048) << k;
+        // The passes' CPU time where the CPU renders, and none where a GPU's timer measured.
+        bool software = isSoftwareRenderer(sContext->renderer());
+        EXPECT_EQ(r.gpuCpuMs > 0.0, software) << k;
+        EXPECT_EQ(r.lookupCpuMs > 0.0, software) << k;
         EXPECT_EQ(r.timer,
                   isSoftwareRenderer(sContext->renderer()) ? TIMER_WALL_CLOCK : TIMER_GPU_QUERY);
     }

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "render/gl_context.h"
@@ -57,11 +59,44 @@ TEST(GpuTimer, TimesRealWorkWithTheRightTimer) {
     const std::string& name = context->renderer();
     bool software = name.starts_with("llvmpipe") || name.starts_with("softpipe");
     EXPECT_EQ(r.timer, software ? "glFinish+steady_clock" : "GL_TIME_ELAPSED") << name;
+    // The process's CPU time per repetition comes with the wall clock where the CPU does the
+    // work, and only there.
+    EXPECT_EQ(r.cpuSamplesMs.size(), software ? 5u : 0u) << name;
+    for (double s : r.cpuSamplesMs) EXPECT_GT(s, 0.0);
     std::printf("%s: median %.3f ms over %zu (%s)\n", context->renderer().c_str(), r.medianMs,
                 r.samplesMs.size(), r.timer.c_str());
     glBindVertexArray(0);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST(GpuTimer, CpuTimeCountsTheWorkNotTheWait) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    if (!isSoftwareRenderer(context->renderer())) {
+        // A GPU's timer query measures there; there is no CPU side to count.
+        EXPECT_TRUE(timeGpu([] {}, 2).cpuSamplesMs.empty());
+        return;
+    }
+    // A repetition that sleeps 30 ms: the wall clock sees the 30 ms, the CPU clock does not.
+    TimingResult idle =
+        timeGpu([] { std::this_thread::sleep_for(std::chrono::milliseconds(30)); }, 3, false);
+    ASSERT_EQ(idle.cpuSamplesMs.size(), 3u);
+    for (size_t k = 0; k < 3; ++k) {
+        EXPECT_GE(idle.samplesMs[k], 29.0) << k;
+        EXPECT_LT(idle.cpuSamplesMs[k], 10.0) << k;
+    }
+    // A repetition that computes for 30 ms of wall clock on this thread: its CPU time is there.
+    TimingResult busy = timeGpu(
+        [] {
+            auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(30);
+            volatile double sink = 0.0;
+            while (std::chrono::steady_clock::now() < until) sink = sink + 1.0;
+        },
+        3, false);
+    ASSERT_EQ(busy.cpuSamplesMs.size(), 3u);
+    double cpu = medianOf(busy.cpuSamplesMs);
+    EXPECT_GT(cpu, 3.0);  // a share of the 30 ms even on a machine shared with others
+    EXPECT_LE(cpu, medianOf(busy.samplesMs) + 1.0);  // one thread: never more than the wall clock
 }
 
 TEST(GpuTimer, RecognisesSoftwareRenderers) {

@@ -345,6 +345,8 @@ class BenchRun {
     void timeRounds() {
         std::vector<std::vector<double>> sceneSamples(mPoints.size());
         std::vector<std::vector<double>> lookupSamples(mPoints.size());
+        std::vector<std::vector<double>> sceneCpu(mPoints.size());
+        std::vector<std::vector<double>> lookupCpu(mPoints.size());
         for (int round = 0; round < mOptions.gpuRepeats; ++round) {
             if (mContext.roundProgress) mContext.roundProgress(round, mOptions.gpuRepeats);
             mCurrentMap = -1;
@@ -357,12 +359,17 @@ class BenchRun {
                     glFinish();
                     mCurrentMap = p.mapSize;
                 }
-                sceneSamples[k].push_back(mRenderer.timeCameraPass(s, 1, false).samplesMs.front());
+                TimingResult scene = mRenderer.timeCameraPass(s, 1, false);
                 PcfParams prm = s.pcfParams();
                 PcfBias bias = s.biasParams().kernelBias();
-                lookupSamples[k].push_back(
-                    timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel, bias); }, 1, false)
-                        .samplesMs.front());
+                TimingResult lookup =
+                    timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel, bias); }, 1, false);
+                sceneSamples[k].push_back(scene.samplesMs.front());
+                lookupSamples[k].push_back(lookup.samplesMs.front());
+                sceneCpu[k].insert(sceneCpu[k].end(), scene.cpuSamplesMs.begin(),
+                                   scene.cpuSamplesMs.end());
+                lookupCpu[k].insert(lookupCpu[k].end(), lookup.cpuSamplesMs.begin(),
+                                    lookup.cpuSamplesMs.end());
             }
         }
         for (size_t k = 0; k < mPoints.size(); ++k) {
@@ -373,6 +380,8 @@ class BenchRun {
             row.gpuMsIqr = scene.iqr();
             row.lookupMs = lookup.median;
             row.lookupMsIqr = lookup.iqr();
+            row.gpuCpuMs = medianOf(sceneCpu[k]);
+            row.lookupCpuMs = medianOf(lookupCpu[k]);
             row.noisy = row.gpuMsIqr > NOISY_IQR_SHARE * row.gpuMs ||
                         row.lookupMsIqr > NOISY_IQR_SHARE * row.lookupMs;
         }

@@ -113,6 +113,11 @@ struct BenchRow {
     double lookupMs = 0.0;
     double lookupMsIqr = 0.0;
     bool noisy = false;  // either IQR > NOISY_IQR_SHARE of its median
+    // On software renderers, the medians of the process CPU time of the same samples
+    // (render/gpu_timer.h: cpuSamplesMs): the passes' cost as work, steadier than the wall
+    // clock on a busy machine. 0 when the GPU's own timer measured.
+    double gpuCpuMs = 0.0;
+    double lookupCpuMs = 0.0;
     double cpuNsPerPixel = 0.0;
     int cpuPixels = 0;   // receiver pixels the CPU kernel was timed on
     int texelReads = 0;  // fetchCounts(method, N).texels

@@ -56,7 +56,8 @@ std::string benchCsv(std::span<const BenchRow> rows) {
                std::string(weightsName(r.point.weights)) + g(r.point.sigma) + g(r.acne.share) +
                g(r.acne.mean) + ',' + std::to_string(r.acne.count) + g(r.leak.share) +
                g(r.leak.mean) + ',' + std::to_string(r.leak.count) + g(r.shimmer.flickerMean) +
-               g(r.shimmer.flickerP99) + g(r.shimmer.flickerShare) + g(r.shimmer.mean) + '\n';
+               g(r.shimmer.flickerP99) + g(r.shimmer.flickerShare) + g(r.shimmer.mean) + ',' +
+               format("%.4f", r.gpuCpuMs) + ',' + format("%.4f", r.lookupCpuMs) + '\n';
     }
     return out;
 }
@@ -89,12 +90,16 @@ BenchRow parseBenchRow(const CsvFields& f) {
     r.shimmer.flickerP99 = f.number(24);
     r.shimmer.flickerShare = f.number(25);
     r.shimmer.mean = f.number(26);
+    if (f.size() == 27) return r;
+    r.gpuCpuMs = f.number(27);
+    r.lookupCpuMs = f.number(28);
     return r;
 }
 
 // The field count a header line promises, or 0 when it is not a bench.csv header.
 size_t fieldsOfHeader(const std::string& header) {
-    for (std::string_view h : {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
+    for (std::string_view h :
+         {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V3, BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
         if (header == h) return static_cast<size_t>(std::count(h.begin(), h.end(), ',')) + 1;
     }
     return 0;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <stdexcept>
 
 #include "render/gl_objects.h"
@@ -39,6 +40,17 @@ Quartiles quartilesOf(std::vector<double> samples) {
     return q;
 }
 
+namespace {
+
+// CPU time of the whole process (every thread), ms.
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
+}  // namespace
+
 TimingResult timeGpu(const std::function<void()>& draw, int repeats, bool warmUp) {
     if (repeats < 1) {
         throw std::invalid_argument("timeGpu: repeats must be at least 1, got " +
@@ -54,11 +66,14 @@ TimingResult timeGpu(const std::function<void()>& draw, int repeats, bool warmUp
         result.timer = TIMER_WALL_CLOCK;
         for (int k = 0; k < repeats; ++k) {
             auto start = std::chrono::steady_clock::now();
+            double cpuStart = processCpuMs();
             draw();
             glFinish();
+            double cpuEnd = processCpuMs();
             auto end = std::chrono::steady_clock::now();
             result.samplesMs.push_back(
                 std::chrono::duration<double, std::milli>(end - start).count());
+            result.cpuSamplesMs.push_back(cpuEnd - cpuStart);
         }
     } else {
         result.timer = TIMER_GPU_QUERY;

@@ -17,7 +17,11 @@ namespace pcf {
 struct TimingResult {
     double medianMs = 0.0;          // the median of samplesMs
     std::vector<double> samplesMs;  // one per repetition, in the order they ran
-    std::string timer;              // "glFinish+steady_clock" or "GL_TIME_ELAPSED"
+    // On software renderers, the CPU time the process spent on each repetition, all threads
+    // (llvmpipe's rasteriser threads are the process's own): the work a pass costs, which other
+    // processes on a busy machine do not inflate as they do the wall clock. Empty on real GPUs.
+    std::vector<double> cpuSamplesMs;
+    std::string timer;  // "glFinish+steady_clock" or "GL_TIME_ELAPSED"
 };
 
 inline constexpr std::string_view TIMER_WALL_CLOCK = "glFinish+steady_clock";
