@@ -51,16 +51,17 @@ void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
         enum Kind { NONE, FOOTPRINT_EDGE, EDGE, FOOTPRINT };
         const Colour colours[] = {Colour{0.0f}, Colour{0.1f, 0.9f, 1.0f, 0.95f},
                                   Colour{0.05f, 0.05f, 0.1f, 0.35f}, FOOTPRINT_TINT};
-        // One picture over the box of pixels around the picked one (in the scene), each pixel
-        // the colour of its kind, drawn as one quad: as thousands of 1-pixel-high runs of rects
-        // it cost llvmpipe more per frame than the rest of the overlay (Canvas::image blends
-        // each texel exactly as fillRect of that pixel did, so the frame's bytes are the same).
+        // One picture over the box of pixels around the picked one that have a colour, each
+        // pixel the colour of its kind, drawn as one quad: as thousands of 1-pixel-high runs of
+        // rects it cost llvmpipe more per frame than the rest of the overlay (Canvas::image
+        // blends each texel exactly as fillRect of that pixel did, so the frame's bytes are the
+        // same). Without the grid only the footprint's few texels are tinted: a small picture.
         glm::ivec2 lo = glm::max(m.pixel - radius, glm::ivec2(0));
         glm::ivec2 hi = glm::min(m.pixel + radius, m.sceneSize - 1);
         if (hi.x >= lo.x && hi.y >= lo.y) {
             glm::ivec2 size = hi - lo + 1;
-            std::vector<glm::vec4> pixels(static_cast<size_t>(size.x) * size.y, glm::vec4(0.0f));
-            bool any = false;
+            std::vector<uint8_t> kinds(static_cast<size_t>(size.x) * size.y, NONE);
+            glm::ivec2 used0 = hi + 1, used1 = lo - 1;  // the box of coloured pixels
             for (int y = lo.y; y <= hi.y; ++y) {
                 for (int x = lo.x; x <= hi.x; ++x) {
                     glm::ivec2 tx, left, up;
@@ -72,13 +73,24 @@ void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
                     Kind kind = edge ? (inFootprint ? FOOTPRINT_EDGE : EDGE)
                                      : (inFootprint ? FOOTPRINT : NONE);
                     if (kind == NONE) continue;
-                    pixels[static_cast<size_t>(y - lo.y) * size.x + (x - lo.x)] = colours[kind];
-                    any = true;
+                    kinds[static_cast<size_t>(y - lo.y) * size.x + (x - lo.x)] =
+                        static_cast<uint8_t>(kind);
+                    used0 = glm::min(used0, glm::ivec2(x, y));
+                    used1 = glm::max(used1, glm::ivec2(x, y));
                 }
             }
-            if (any) {
-                auto image = std::make_shared<const CanvasImage>(size, std::move(pixels));
-                glm::ivec2 at = glm::ivec2(glm::round(origin)) + lo;
+            if (used1.x >= used0.x && used1.y >= used0.y) {
+                glm::ivec2 box = used1 - used0 + 1;
+                std::vector<glm::vec4> pixels(static_cast<size_t>(box.x) * box.y);
+                for (int y = 0; y < box.y; ++y) {
+                    for (int x = 0; x < box.x; ++x) {
+                        glm::ivec2 q = used0 - lo + glm::ivec2(x, y);
+                        pixels[static_cast<size_t>(y) * box.x + x] =
+                            colours[kinds[static_cast<size_t>(q.y) * size.x + q.x]];
+                    }
+                }
+                auto image = std::make_shared<const CanvasImage>(box, std::move(pixels));
+                glm::ivec2 at = glm::ivec2(glm::round(origin)) + used0;
                 pl.op([image, at](Canvas& c) { c.image(at, image); });
             }
         }
