@@ -435,6 +435,41 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const C
                     placed = true;
                     break;
                 }
+                if (placed) break;
+                // No spot for the block in one piece: its lines in order, top to bottom, each at
+                // the first height below the last where it clears every mark (the lookup point
+                // in the middle of a cell then sits between the bit and the depth, not on them).
+                std::vector<Rect> lines;
+                float y = inner.y, below = bh;
+                for (const Item& it : items) {
+                    float w = measureText(FontFace::Mono, it.size, it.text).x;
+                    float h = lineHeightOf(it.size);
+                    below -= h;
+                    const float xs[] = {inner.x + (inner.w - w) * 0.5f, inner.x, inner.right() - w};
+                    bool found = false;
+                    for (; y + h + below <= inner.bottom() + 0.01f && !found; y += 1.0f) {
+                        for (float x : xs) {
+                            Rect ln{std::round(x), std::round(y), w, h};
+                            if (std::none_of(cellMarks.begin(), cellMarks.end(),
+                                             [&](const Rect& mk) { return overlaps(mk, ln); })) {
+                                lines.push_back(ln);
+                                found = true;
+                                break;
+                            }
+                        }
+                        if (found) break;
+                    }
+                    if (!found) break;
+                    y += h;
+                }
+                if (lines.size() != items.size()) continue;
+                for (size_t k = 0; k < items.size(); ++k) {
+                    const Item& it = items[k];
+                    pl.text({lines[k].x + lines[k].w * 0.5f, lines[k].y}, it.text,
+                            {FontFace::Mono, it.size, ink, TextAlign::Center}, BoxKind::Number,
+                            panel, it.role);
+                }
+                placed = true;
             }
         }
     }
