@@ -205,8 +205,8 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         if (where == "13-shimmer-and-snapping step 1 at 1600x900") {
                             EXPECT_TRUE(pointShown && depthThere) << where;
                         }
-                        // Marks (the point with lookup dots or rings in one small cell) may
-                        // still crowd a depth out: counted, and held to today's count below.
+                        // Marks (the point with lookup dots or rings in one small cell) never
+                        // crowd a depth out: counted, and none allowed below.
                         int inMap = 0;
                         for (int j = 0; j < view.size.y; ++j) {
                             for (int i = 0; i < view.size.x; ++i) {
@@ -227,11 +227,10 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
         "layout: %d plans checked in %.1f s; %d presentation frames page their text; "
         "%d frames drop a cell's depth for other marks\n",
         plans, seconds, pagedPresentation, depthLost);
-    // A ratchet, lower it as cells get room: frames where the lookup point's cell shows no depth
-    // (17 of 576 today, each with a lookup dot or ring in the same cell, or the point low in a
-    // presentation-size cell) and frames where any cell lost its depth to marks (30).
-    EXPECT_LE(pointDepthLost, 17);
-    EXPECT_LE(depthLost, 30);
+    // No cell loses a number to a mark: the lookup point's cell shows its depth, and so does
+    // every cell in the map (a point mark that crowds a cell moves into a lane at its edge).
+    EXPECT_EQ(pointDepthLost, 0);
+    EXPECT_EQ(depthLost, 0);
 }
 
 // A chart step on a projector: the chart takes the inspector's room too, every one of its texts

@@ -191,14 +191,37 @@ namespace {
 // Marks go first: they sit where the math puts them, and the numbers then find room beside them.
 // Their rects (clipped to the cells) are what the numbers avoid; their draw calls run after the
 // numbers', so that a mark is never hidden under a number's cell.
+// A point mark (a lookup dot, a hardware tap's ring, the lookup point) whose cell cannot hold its
+// numbers around it moves into a lane at that cell's edge (see planCellNumbers); it keeps its
+// true position in one axis and a tick in the cell's border band gives the other.
+struct PointMark {
+    glm::vec2 at;       // where it is drawn
+    glm::vec2 trueAt;   // where the math puts it
+    float half = 0.0f;  // its box: a square of this half side round `at`
+    std::string role;
+    Colour tickColour;
+    std::function<void(Canvas&, glm::vec2)> draw;
+    Rect rect() const { return {at.x - half, at.y - half, 2 * half, 2 * half}; }
+};
+
 struct CellMarks {
-    std::vector<Rect> rects;
+    std::vector<Rect> rects;  // fixed marks: weight bars, gather outlines, ticks
+    std::vector<PointMark> points;
     std::vector<std::function<void(Canvas&)>> ops;
     void add(Planner& pl, const Rect& area, const Rect& r, const std::string& role) {
         Rect clipped = r.intersect(area);
         if (clipped.empty()) return;
         rects.push_back(clipped);
         pl.box(BoxKind::Mark, clipped, "inspector", role);
+    }
+    // Every mark's rect, the point marks where they are now, clipped to the cells.
+    std::vector<Rect> all(const Rect& area) const {
+        std::vector<Rect> out = rects;
+        for (const PointMark& p : points) {
+            Rect c = p.rect().intersect(area);
+            if (!c.empty()) out.push_back(c);
+        }
+        return out;
     }
 };
 
@@ -313,45 +336,43 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
         } else if (fr.kind == PCF_FETCH_HW) {
             float rr = std::max(RING_MIN_PX, std::round(g.cell * RING_PER_CELL));
             if (!area.contains(at)) continue;
-            markOps.push_back([=](Canvas& c) {
-                c.ring(at, rr, highlit ? line + HIGHLIGHT_EXTRA_PX : line,
-                       highlit ? HIGHLIGHT : HW_RING);
-                c.circle(at, std::max(RING_CORE_MIN_PX, rr * RING_CORE), ACCENT);
-            });
-            mark({at.x - rr - line, at.y - rr - line, 2 * (rr + line), 2 * (rr + line)}, "hw-tap");
+            marks.points.push_back(
+                {at, at, rr + line, "hw-tap", HW_RING, [=](Canvas& c, glm::vec2 p) {
+                     c.ring(p, rr, highlit ? line + HIGHLIGHT_EXTRA_PX : line,
+                            highlit ? HIGHLIGHT : HW_RING);
+                     c.circle(p, std::max(RING_CORE_MIN_PX, rr * RING_CORE), ACCENT);
+                 }});
             legend.rings = true;
         } else if (tr.params.method == PCF_POISSON || tr.params.method == PCF_NAIVE ||
                    tr.params.method == PCF_HW) {
             if (!area.contains(at)) continue;
-            markOps.push_back([=](Canvas& c) {
-                if (highlit) c.circle(at, dotR * 2.0f + 1.0f, HIGHLIGHT);
-                c.circle(at, dotR, ACCENT);
-            });
             float mr = highlit ? dotR * 2.0f + 2.0f : dotR + 1.0f;  // the highlight's halo too
-            mark({at.x - mr, at.y - mr, 2 * mr, 2 * mr}, "lookup");
+            marks.points.push_back({at, at, mr, "lookup", ACCENT, [=](Canvas& c, glm::vec2 p) {
+                                        if (highlit) c.circle(p, dotR * 2.0f + 1.0f, HIGHLIGHT);
+                                        c.circle(p, dotR, ACCENT);
+                                    }});
             legend.dots = true;
         }
     }
     glm::vec2 point = viewPoint(g, tr.uv * size);
     float pr = std::max(POINT_MIN_PX, std::round(g.cell * POINT_PER_CELL));
     if (area.contains(point)) {
-        markOps.push_back([=](Canvas& c) {
-            c.circle(point, pr + POINT_OUTLINE_PX, Colour{0, 0, 0, 0.9f});
-            c.circle(point, pr, POINT);
-        });
-        mark({point.x - pr - 2, point.y - pr - 2, 2 * pr + 4, 2 * pr + 4}, "lookup-point");
+        marks.points.push_back(
+            {point, point, pr + 2, "lookup-point", POINT, [=](Canvas& c, glm::vec2 p) {
+                 c.circle(p, pr + POINT_OUTLINE_PX, Colour{0, 0, 0, 0.9f});
+                 c.circle(p, pr, POINT);
+             }});
     }
 }
 
 // Numbers: each cell's block (bit, own ref, depth, weight) goes where no mark is; a smaller
 // block, or none, where the whole does not fit (smaller type first, not below numberFloor).
 // Returns the cells left without numbers.
-int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const CellMarks& cm,
+int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm,
                     float numberFloor) {
     const Trace& tr = *m.trace;
     const std::string panel = "inspector";
     Rect area = g.area;
-    const std::vector<Rect>& marks = cm.rects;
     int hiddenCells = 0;
     Colour inkLit = DARK_TEXT;
     for (int j = 0; j < g.view.size.y; ++j) {
@@ -399,10 +420,6 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const C
             variants.push_back({});
             Rect inner = r.expanded(-g.pad);
             inner.h -= g.bar + 1.0f;
-            std::vector<Rect> cellMarks;
-            for (const Rect& mk : marks) {
-                if (overlaps(mk, r)) cellMarks.push_back(mk.expanded(MARK_CLEARANCE_PX));
-            }
             // Each variant at the cell's number size, then a few steps smaller down to the
             // floor: a cell crowded by marks keeps its depth in smaller type before it drops it.
             std::vector<std::vector<Item>> candidates;
@@ -423,20 +440,23 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const C
                     candidates.push_back(flat);
                 }
             }
-            bool placed = false;
-            for (size_t v = 0; v < candidates.size() && !placed; ++v) {
-                const std::vector<Item>& items = candidates[v];
-                if (items.empty()) {
-                    if (!all.empty()) ++hiddenCells;
-                    placed = true;
-                    break;
-                }
+            // The lines of a candidate, placed clear of `cellMarks`: the block in one piece at the
+            // first free spot, else its lines in order, top to bottom, each at the first height
+            // below the last where it clears every mark (the lookup point in the middle of a
+            // cell then sits between the bit and the depth, not on them). Empty: no room.
+            using Placed = std::vector<std::pair<Rect, const Item*>>;
+            auto fit = [&](const std::vector<Item>& items, const std::vector<Rect>& cellMarks) {
+                Placed out;
+                auto clear = [&](const Rect& b) {
+                    return std::none_of(cellMarks.begin(), cellMarks.end(),
+                                        [&](const Rect& mk) { return overlaps(mk, b); });
+                };
                 float bw = 0, bh = 0;
                 for (const Item& it : items) {
                     bw = std::max(bw, measureText(FontFace::Mono, it.size, it.text).x);
                     bh += lineHeightOf(it.size);
                 }
-                if (bw > inner.w || bh > inner.h) continue;
+                if (bw > inner.w || bh > inner.h) return out;
                 float cx = inner.x + (inner.w - bw) * 0.5f, cy = inner.y + (inner.h - bh) * 0.5f;
                 float rx = inner.right() - bw, by = inner.bottom() - bh;
                 const glm::vec2 spots[] = {{cx, cy},      {cx, inner.y}, {cx, by},
@@ -444,24 +464,14 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const C
                                            {rx, inner.y}, {inner.x, by}, {rx, by}};
                 for (glm::vec2 s : spots) {
                     Rect blk{std::round(s.x), std::round(s.y), bw, bh};
-                    bool free = std::none_of(cellMarks.begin(), cellMarks.end(),
-                                             [&](const Rect& mk) { return overlaps(mk, blk); });
-                    if (!free) continue;
+                    if (!clear(blk)) continue;
                     float y = blk.y;
                     for (const Item& it : items) {
-                        pl.text({blk.x + bw * 0.5f, y}, it.text,
-                                {FontFace::Mono, it.size, ink, TextAlign::Center}, BoxKind::Number,
-                                panel, it.role);
+                        out.push_back({{blk.x, y, bw, lineHeightOf(it.size)}, &it});
                         y += lineHeightOf(it.size);
                     }
-                    placed = true;
-                    break;
+                    return out;
                 }
-                if (placed) break;
-                // No spot for the block in one piece: its lines in order, top to bottom, each at
-                // the first height below the last where it clears every mark (the lookup point
-                // in the middle of a cell then sits between the bit and the depth, not on them).
-                std::vector<Rect> lines;
                 float y = inner.y, below = bh;
                 for (const Item& it : items) {
                     float w = measureText(FontFace::Mono, it.size, it.text).x;
@@ -472,30 +482,118 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const C
                     for (; y + h + below <= inner.bottom() + 0.01f && !found; y += 1.0f) {
                         for (float x : xs) {
                             Rect ln{std::round(x), std::round(y), w, h};
-                            if (std::none_of(cellMarks.begin(), cellMarks.end(),
-                                             [&](const Rect& mk) { return overlaps(mk, ln); })) {
-                                lines.push_back(ln);
+                            if (clear(ln)) {
+                                out.push_back({ln, &it});
                                 found = true;
                                 break;
                             }
                         }
                         if (found) break;
                     }
-                    if (!found) break;
+                    if (!found) return Placed{};
                     y += h;
                 }
-                if (lines.size() != items.size()) continue;
-                for (size_t k = 0; k < items.size(); ++k) {
-                    const Item& it = items[k];
-                    pl.text({lines[k].x + lines[k].w * 0.5f, lines[k].y}, it.text,
-                            {FontFace::Mono, it.size, ink, TextAlign::Center}, BoxKind::Number,
-                            panel, it.role);
+                return out;
+            };
+            auto marksNear = [&]() {
+                std::vector<Rect> near;
+                for (const Rect& mk : cm.all(area)) {
+                    if (overlaps(mk, r)) near.push_back(mk.expanded(MARK_CLEARANCE_PX));
                 }
-                placed = true;
+                return near;
+            };
+            // The candidates that keep the depth, largest type first; each around the marks
+            // where the math puts them, then with this cell's point marks moved into a lane at
+            // the cell's edge (top, left, right, the top corners, bottom; each keeps its true
+            // position along that edge), so that one cell's numbers keep the size of the
+            // others' rather than shrink for a mark. Only then the candidates without the depth.
+            auto keepsDepth = [&](const std::vector<Item>& items) {
+                return !hasDepth || std::any_of(items.begin(), items.end(), [](const Item& it) {
+                    return it.role == "cell-depth";
+                });
+            };
+            std::vector<size_t> owned;
+            for (size_t k = 0; k < cm.points.size(); ++k) {
+                glm::ivec2 at(
+                    glm::floor((cm.points[k].trueAt - glm::vec2(area.x, area.y)) / g.cell));
+                if (g.view.origin + at == texel) owned.push_back(k);
+            }
+            // Lanes: which edges a moved mark hugs (x: -1 left, 1 right, 0 kept; y likewise).
+            const glm::ivec2 lanes[] = {{0, -1}, {-1, 0}, {1, 0}, {-1, -1}, {1, -1}, {0, 1}};
+            auto moveTo = [&](int li) {
+                for (size_t k : owned) {
+                    PointMark& pm = cm.points[k];
+                    glm::vec2 at = pm.trueAt;
+                    for (int ax = 0; ax < 2 && li >= 0; ++ax) {
+                        float lo = (ax == 0 ? r.x : r.y) + pm.half;
+                        float hi = (ax == 0 ? r.right() : r.bottom()) - pm.half;
+                        if (lanes[li][ax] < 0) at[ax] = lo;
+                        if (lanes[li][ax] > 0) at[ax] = hi;
+                        at[ax] = std::clamp(at[ax], lo, hi);
+                    }
+                    pm.at = li >= 0 ? at : pm.trueAt;
+                }
+            };
+            Placed done;
+            bool placed = false;
+            int laneCount = owned.empty() ? 0 : static_cast<int>(std::size(lanes));
+            for (const std::vector<Item>& items : candidates) {
+                if (items.empty() || !keepsDepth(items) || placed) break;
+                for (int li = -1; li < laneCount && !placed; ++li) {
+                    moveTo(li);
+                    done = fit(items, marksNear());
+                    placed = !done.empty();
+                }
+            }
+            if (!placed) {
+                moveTo(-1);
+                std::vector<Rect> cellMarks = marksNear();
+                for (const std::vector<Item>& items : candidates) {
+                    if (items.empty()) {
+                        if (!all.empty()) ++hiddenCells;
+                        break;
+                    }
+                    done = fit(items, cellMarks);
+                    if (!done.empty()) break;
+                }
+            }
+            for (const auto& [box, it] : done) {
+                pl.text({box.x + box.w * 0.5f, box.y}, it->text,
+                        {FontFace::Mono, it->size, ink, TextAlign::Center}, BoxKind::Number, panel,
+                        it->role);
             }
         }
     }
     return hiddenCells;
+}
+
+// The point marks where planCellNumbers left them. One moved into a lane keeps its true
+// position along that lane; a tick of its colour across the cell's border band (where no number
+// goes) marks its true position in the other axis: on the left or right edge, whichever is
+// nearer, for its height; on the top edge for its column.
+void planPointMarks(Planner& pl, const InspectorLayout& l, const Grid& g, CellMarks& cm) {
+    float line = lineOf(l);
+    float tw = std::max(BRACKET_MIN_PX, line);
+    for (const PointMark& p : cm.points) {
+        glm::ivec2 at(glm::floor((p.trueAt - glm::vec2(g.area.x, g.area.y)) / g.cell));
+        Rect r = texelCellRect(g.view, g.area, g.view.origin + at);
+        float band = g.pad - 1.0f;
+        std::vector<Rect> ticks;
+        if (p.at.y != p.trueAt.y) {
+            bool left = p.trueAt.x - r.x < r.right() - p.trueAt.x;
+            ticks.push_back({left ? r.x : r.right() - band, p.trueAt.y - tw * 0.5f, band, tw});
+        }
+        if (p.at.x != p.trueAt.x) ticks.push_back({p.trueAt.x - tw * 0.5f, r.y, tw, band});
+        for (const Rect& t : ticks) {
+            Colour c = p.tickColour;
+            cm.ops.push_back([t, c](Canvas& cv) { cv.fillRect(t, c); });
+            cm.add(pl, g.area, t, p.role + "-tick");
+        }
+        auto draw = p.draw;
+        glm::vec2 where = p.at;
+        cm.ops.push_back([draw, where](Canvas& c) { draw(c, where); });
+        cm.add(pl, g.area, p.rect(), p.role);
+    }
 }
 
 // fx and fy in the lanes under and beside the cells: a bracket from the base texel's centre
@@ -561,6 +659,7 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     planGridLines(pl, l, g, t);
     planFetchMarks(pl, l, m, g, marks, legend);
     hiddenCells += planCellNumbers(pl, m, g, marks, t.numberFloor);
+    planPointMarks(pl, l, g, marks);
     for (auto& f : marks.ops) pl.op(std::move(f));
     if (tr.params.method != PCF_NEAREST && tr.params.method != PCF_POISSON) {
         legend.fraction = true;
