@@ -504,8 +504,8 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, CellMar
             };
             // The candidates that keep the depth, largest type first; each around the marks
             // where the math puts them, then with this cell's point marks moved into a lane at
-            // the cell's edge (top, left, right, the top corners, bottom; each keeps its true
-            // position along that edge), so that one cell's numbers keep the size of the
+            // the cell's edge (the nearest first; along an edge a mark keeps its true
+            // position), so that one cell's numbers keep the size of the
             // others' rather than shrink for a mark. Only then the candidates without the depth.
             auto keepsDepth = [&](const std::vector<Item>& items) {
                 return !hasDepth || std::any_of(items.begin(), items.end(), [](const Item& it) {
@@ -518,35 +518,75 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, CellMar
                     glm::floor((cm.points[k].trueAt - glm::vec2(area.x, area.y)) / g.cell));
                 if (g.view.origin + at == texel) owned.push_back(k);
             }
-            // Lanes: which edges a moved mark hugs (x: -1 left, 1 right, 0 kept; y likewise).
-            const glm::ivec2 lanes[] = {{0, -1}, {-1, 0}, {1, 0}, {-1, -1}, {1, -1}, {0, 1}};
-            auto moveTo = [&](int li) {
-                for (size_t k : owned) {
-                    PointMark& pm = cm.points[k];
-                    glm::vec2 at = pm.trueAt;
-                    for (int ax = 0; ax < 2 && li >= 0; ++ax) {
-                        float lo = (ax == 0 ? r.x : r.y) + pm.half;
-                        float hi = (ax == 0 ? r.right() : r.bottom()) - pm.half;
-                        if (lanes[li][ax] < 0) at[ax] = lo;
-                        if (lanes[li][ax] > 0) at[ax] = hi;
-                        at[ax] = std::clamp(at[ax], lo, hi);
+            // Lanes: which edges a moved mark hugs (x: -1 left, 1 right, 0 kept; y likewise);
+            // the bottom one just above the weight bar. {0, 0}: where the math puts it.
+            const glm::ivec2 lanes[] = {{0, 0},   {0, -1}, {-1, 0}, {1, 0}, {0, 1},
+                                        {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
+            float barTop = r.bottom() - (g.bar + g.pad);
+            auto laneAt = [&](const PointMark& pm, glm::ivec2 lane) {
+                glm::vec2 at = pm.trueAt;
+                if (lane == glm::ivec2(0)) return at;
+                for (int ax = 0; ax < 2; ++ax) {
+                    float lo = (ax == 0 ? r.x : r.y) + pm.half;
+                    float hi = (ax == 0 ? r.right() : barTop) - pm.half;
+                    if (lane[ax] < 0) at[ax] = lo;
+                    if (lane[ax] > 0) at[ax] = hi;
+                    at[ax] = std::clamp(at[ax], lo, std::max(lo, hi));
+                }
+                return at;
+            };
+            // The ways to place this cell's point marks: each its own lane (two marks or
+            // fewer), else all in one; nearest first, so that the marks move as little as they
+            // can (the first: none moves).
+            std::vector<std::vector<glm::ivec2>> ways{{}};
+            if (owned.size() <= 2) {
+                for (size_t k = 0; k < owned.size(); ++k) {
+                    std::vector<std::vector<glm::ivec2>> next;
+                    for (const auto& w : ways) {
+                        for (glm::ivec2 lane : lanes) {
+                            next.push_back(w);
+                            next.back().push_back(lane);
+                        }
                     }
-                    pm.at = li >= 0 ? at : pm.trueAt;
+                    ways = std::move(next);
+                }
+            } else {
+                ways.clear();
+                for (glm::ivec2 lane : lanes) ways.emplace_back(owned.size(), lane);
+            }
+            auto travel = [&](const std::vector<glm::ivec2>& w) {
+                float d = 0.0f;
+                for (size_t k = 0; k < owned.size(); ++k) {
+                    const PointMark& pm = cm.points[owned[k]];
+                    d += glm::length(laneAt(pm, w[k]) - pm.trueAt);
+                }
+                return d;
+            };
+            std::vector<float> travels;
+            for (const auto& w : ways) travels.push_back(travel(w));
+            std::vector<size_t> order(ways.size());
+            for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+            std::stable_sort(order.begin(), order.end(),
+                             [&](size_t x, size_t y) { return travels[x] < travels[y]; });
+            auto moveTo = [&](const std::vector<glm::ivec2>& w) {
+                for (size_t k = 0; k < owned.size(); ++k) {
+                    PointMark& pm = cm.points[owned[k]];
+                    pm.at = laneAt(pm, w[k]);
                 }
             };
+            const std::vector<glm::ivec2> stay(owned.size(), glm::ivec2(0));
             Placed done;
             bool placed = false;
-            int laneCount = owned.empty() ? 0 : static_cast<int>(std::size(lanes));
             for (const std::vector<Item>& items : candidates) {
                 if (items.empty() || !keepsDepth(items) || placed) break;
-                for (int li = -1; li < laneCount && !placed; ++li) {
-                    moveTo(li);
+                for (size_t wi = 0; wi < order.size() && !placed; ++wi) {
+                    moveTo(ways[order[wi]]);
                     done = fit(items, marksNear());
                     placed = !done.empty();
                 }
             }
             if (!placed) {
-                moveTo(-1);
+                moveTo(stay);
                 std::vector<Rect> cellMarks = marksNear();
                 for (const std::vector<Item>& items : candidates) {
                     if (items.empty()) {
@@ -569,25 +609,32 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, CellMar
 
 // The point marks where planCellNumbers left them. One moved into a lane keeps its true
 // position along that lane; a tick of its colour across the cell's border band (where no number
-// goes) marks its true position in the other axis: on the left or right edge, whichever is
-// nearer, for its height; on the top edge for its column.
+// goes, and the neighbour's) marks its true position in the other axis: on the left or right
+// edge, whichever is nearer the mark, for its height; on the top or bottom edge for its column.
 void planPointMarks(Planner& pl, const InspectorLayout& l, const Grid& g, CellMarks& cm) {
     float line = lineOf(l);
-    float tw = std::max(BRACKET_MIN_PX, line);
+    float tw = std::max(BRACKET_MIN_PX, line) + 1.0f;
     for (const PointMark& p : cm.points) {
         glm::ivec2 at(glm::floor((p.trueAt - glm::vec2(g.area.x, g.area.y)) / g.cell));
         Rect r = texelCellRect(g.view, g.area, g.view.origin + at);
-        float band = g.pad - 1.0f;
+        // Across the cell's border line, one band deep on either side.
+        float band = g.pad;
         std::vector<Rect> ticks;
-        if (p.at.y != p.trueAt.y) {
-            bool left = p.trueAt.x - r.x < r.right() - p.trueAt.x;
-            ticks.push_back({left ? r.x : r.right() - band, p.trueAt.y - tw * 0.5f, band, tw});
+        // (A mark moved by no more than the numbers' clearance needs no tick.)
+        if (std::abs(p.at.y - p.trueAt.y) > MARK_CLEARANCE_PX) {
+            float ex = p.at.x - r.x < r.right() - p.at.x ? r.x : r.right();
+            ticks.push_back({ex - band, p.trueAt.y - tw * 0.5f, 2 * band, tw});
         }
-        if (p.at.x != p.trueAt.x) ticks.push_back({p.trueAt.x - tw * 0.5f, r.y, tw, band});
+        if (std::abs(p.at.x - p.trueAt.x) > MARK_CLEARANCE_PX) {
+            float ey = p.at.y - r.y < r.bottom() - p.at.y ? r.y : r.bottom();
+            ticks.push_back({p.trueAt.x - tw * 0.5f, ey - band, tw, 2 * band});
+        }
         for (const Rect& t : ticks) {
+            Rect ct = t.intersect(g.area);
+            if (ct.empty()) continue;
             Colour c = p.tickColour;
-            cm.ops.push_back([t, c](Canvas& cv) { cv.fillRect(t, c); });
-            cm.add(pl, g.area, t, p.role + "-tick");
+            cm.ops.push_back([ct, c](Canvas& cv) { cv.fillRect(ct, c); });
+            cm.add(pl, g.area, ct, p.role + "-tick");
         }
         auto draw = p.draw;
         glm::vec2 where = p.at;
