@@ -611,7 +611,8 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, CellMar
 // position along that lane; a tick of its colour across the cell's border band (where no number
 // goes, and the neighbour's) marks its true position in the other axis: on the left or right
 // edge, whichever is nearer the mark, for its height; on the top or bottom edge for its column.
-void planPointMarks(Planner& pl, const InspectorLayout& l, const Grid& g, CellMarks& cm) {
+void planPointMarks(Planner& pl, const InspectorLayout& l, const Grid& g, CellMarks& cm,
+                    LegendNeeds& legend) {
     float line = lineOf(l);
     float tw = std::max(BRACKET_MIN_PX, line) + 1.0f;
     for (const PointMark& p : cm.points) {
@@ -635,6 +636,7 @@ void planPointMarks(Planner& pl, const InspectorLayout& l, const Grid& g, CellMa
             Colour c = p.tickColour;
             cm.ops.push_back([ct, c](Canvas& cv) { cv.fillRect(ct, c); });
             cm.add(pl, g.area, ct, p.role + "-tick");
+            legend.movedMark = true;
         }
         auto draw = p.draw;
         glm::vec2 where = p.at;
@@ -706,7 +708,7 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     planGridLines(pl, l, g, t);
     planFetchMarks(pl, l, m, g, marks, legend);
     hiddenCells += planCellNumbers(pl, m, g, marks, t.numberFloor);
-    planPointMarks(pl, l, g, marks);
+    planPointMarks(pl, l, g, marks, legend);
     for (auto& f : marks.ops) pl.op(std::move(f));
     if (tr.params.method != PCF_NEAREST && tr.params.method != PCF_POISSON) {
         legend.fraction = true;
