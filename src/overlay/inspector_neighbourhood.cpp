@@ -722,12 +722,12 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
 
 using namespace inspector_detail;
 
-Neighbourhood neighbourhoodView(const InspectorLayout& l, const Trace& tr) {
-    return panelLayout(l, tr, typeSizes(l)).grid.view;
+Neighbourhood neighbourhoodView(const InspectorLayout& l, const Trace& tr, int highlight) {
+    return panelLayout(l, tr, typeSizes(l), highlight).grid.view;
 }
 
-Rect neighbourhoodArea(const InspectorLayout& l, const Trace& tr, bool) {
-    return panelLayout(l, tr, typeSizes(l)).grid.area;
+Rect neighbourhoodArea(const InspectorLayout& l, const Trace& tr, bool, int highlight) {
+    return panelLayout(l, tr, typeSizes(l), highlight).grid.area;
 }
 
 Neighbourhood neighbourhoodOf(const Trace& tr) {
