@@ -137,8 +137,11 @@ std::vector<uint8_t> thumbnailImage(const ShadowMap& map, int side);  // RGBA8, 
 
 // The texels the view shows (a window of neighbourhoodOf around the lookup point when the whole
 // would make cells too small for numbers of the frame's size), and where it sits in the panel.
-Neighbourhood neighbourhoodView(const InspectorLayout& layout, const Trace& trace);
-Rect neighbourhoodArea(const InspectorLayout& layout, const Trace& trace, bool presentation);
+// highlight: the model's highlightFetch (a window keeps that fetch's texels in view).
+Neighbourhood neighbourhoodView(const InspectorLayout& layout, const Trace& trace,
+                                int highlight = -1);
+Rect neighbourhoodArea(const InspectorLayout& layout, const Trace& trace, bool presentation,
+                       int highlight = -1);
 
 // The rect of texel (i, j) in the view of `n` inside `area` (rows j down, as stored).
 Rect texelCellRect(const Neighbourhood& n, const Rect& area, glm::ivec2 texel);

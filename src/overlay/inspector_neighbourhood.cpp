@@ -191,14 +191,37 @@ namespace {
 // Marks go first: they sit where the math puts them, and the numbers then find room beside them.
 // Their rects (clipped to the cells) are what the numbers avoid; their draw calls run after the
 // numbers', so that a mark is never hidden under a number's cell.
+// A point mark (a lookup dot, a hardware tap's ring, the lookup point) whose cell cannot hold its
+// numbers around it moves into a lane at that cell's edge (see planCellNumbers); it keeps its
+// true position in one axis and a tick in the cell's border band gives the other.
+struct PointMark {
+    glm::vec2 at;       // where it is drawn
+    glm::vec2 trueAt;   // where the math puts it
+    float half = 0.0f;  // its box: a square of this half side round `at`
+    std::string role;
+    Colour tickColour;
+    std::function<void(Canvas&, glm::vec2)> draw;
+    Rect rect() const { return {at.x - half, at.y - half, 2 * half, 2 * half}; }
+};
+
 struct CellMarks {
-    std::vector<Rect> rects;
+    std::vector<Rect> rects;  // fixed marks: weight bars, gather outlines, ticks
+    std::vector<PointMark> points;
     std::vector<std::function<void(Canvas&)>> ops;
     void add(Planner& pl, const Rect& area, const Rect& r, const std::string& role) {
         Rect clipped = r.intersect(area);
         if (clipped.empty()) return;
         rects.push_back(clipped);
         pl.box(BoxKind::Mark, clipped, "inspector", role);
+    }
+    // Every mark's rect, the point marks where they are now, clipped to the cells.
+    std::vector<Rect> all(const Rect& area) const {
+        std::vector<Rect> out = rects;
+        for (const PointMark& p : points) {
+            Rect c = p.rect().intersect(area);
+            if (!c.empty()) out.push_back(c);
+        }
+        return out;
     }
 };
 
@@ -313,43 +336,43 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
         } else if (fr.kind == PCF_FETCH_HW) {
             float rr = std::max(RING_MIN_PX, std::round(g.cell * RING_PER_CELL));
             if (!area.contains(at)) continue;
-            markOps.push_back([=](Canvas& c) {
-                c.ring(at, rr, highlit ? line + HIGHLIGHT_EXTRA_PX : line,
-                       highlit ? HIGHLIGHT : HW_RING);
-                c.circle(at, std::max(RING_CORE_MIN_PX, rr * RING_CORE), ACCENT);
-            });
-            mark({at.x - rr - line, at.y - rr - line, 2 * (rr + line), 2 * (rr + line)}, "hw-tap");
+            marks.points.push_back(
+                {at, at, rr + line, "hw-tap", HW_RING, [=](Canvas& c, glm::vec2 p) {
+                     c.ring(p, rr, highlit ? line + HIGHLIGHT_EXTRA_PX : line,
+                            highlit ? HIGHLIGHT : HW_RING);
+                     c.circle(p, std::max(RING_CORE_MIN_PX, rr * RING_CORE), ACCENT);
+                 }});
             legend.rings = true;
         } else if (tr.params.method == PCF_POISSON || tr.params.method == PCF_NAIVE ||
                    tr.params.method == PCF_HW) {
             if (!area.contains(at)) continue;
-            markOps.push_back([=](Canvas& c) {
-                if (highlit) c.circle(at, dotR * 2.0f + 1.0f, HIGHLIGHT);
-                c.circle(at, dotR, ACCENT);
-            });
             float mr = highlit ? dotR * 2.0f + 2.0f : dotR + 1.0f;  // the highlight's halo too
-            mark({at.x - mr, at.y - mr, 2 * mr, 2 * mr}, "lookup");
+            marks.points.push_back({at, at, mr, "lookup", ACCENT, [=](Canvas& c, glm::vec2 p) {
+                                        if (highlit) c.circle(p, dotR * 2.0f + 1.0f, HIGHLIGHT);
+                                        c.circle(p, dotR, ACCENT);
+                                    }});
             legend.dots = true;
         }
     }
     glm::vec2 point = viewPoint(g, tr.uv * size);
     float pr = std::max(POINT_MIN_PX, std::round(g.cell * POINT_PER_CELL));
     if (area.contains(point)) {
-        markOps.push_back([=](Canvas& c) {
-            c.circle(point, pr + POINT_OUTLINE_PX, Colour{0, 0, 0, 0.9f});
-            c.circle(point, pr, POINT);
-        });
-        mark({point.x - pr - 2, point.y - pr - 2, 2 * pr + 4, 2 * pr + 4}, "lookup-point");
+        marks.points.push_back(
+            {point, point, pr + 2, "lookup-point", POINT, [=](Canvas& c, glm::vec2 p) {
+                 c.circle(p, pr + POINT_OUTLINE_PX, Colour{0, 0, 0, 0.9f});
+                 c.circle(p, pr, POINT);
+             }});
     }
 }
 
 // Numbers: each cell's block (bit, own ref, depth, weight) goes where no mark is; a smaller
-// block, or none, where the whole does not fit. Returns the cells left without numbers.
-int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const CellMarks& cm) {
+// block, or none, where the whole does not fit (smaller type first, not below numberFloor).
+// Returns the cells left without numbers.
+int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm,
+                    float numberFloor) {
     const Trace& tr = *m.trace;
     const std::string panel = "inspector";
     Rect area = g.area;
-    const std::vector<Rect>& marks = cm.rects;
     int hiddenCells = 0;
     Colour inkLit = DARK_TEXT;
     for (int j = 0; j < g.view.size.y; ++j) {
@@ -397,24 +420,43 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const C
             variants.push_back({});
             Rect inner = r.expanded(-g.pad);
             inner.h -= g.bar + 1.0f;
-            std::vector<Rect> cellMarks;
-            for (const Rect& mk : marks) {
-                if (overlaps(mk, r)) cellMarks.push_back(mk.expanded(MARK_CLEARANCE_PX));
-            }
-            bool placed = false;
-            for (size_t v = 0; v < variants.size() && !placed; ++v) {
-                const std::vector<Item>& items = variants[v];
-                if (items.empty()) {
-                    if (!all.empty()) ++hiddenCells;
-                    placed = true;
-                    break;
+            // Each variant at the cell's number size, then a few steps smaller down to the
+            // floor: a cell crowded by marks keeps its depth in smaller type before it drops it.
+            std::vector<std::vector<Item>> candidates;
+            for (const std::vector<Item>& items : variants) {
+                float size = g.number;
+                for (int step = 0; step < 4; ++step) {
+                    std::vector<Item> scaled = items;
+                    for (Item& it : scaled) it.size = it.size == g.bit ? bitFor(size) : size;
+                    candidates.push_back(scaled);
+                    float next = stepDown(size, numberFloor);
+                    if (items.empty() || next >= size) break;
+                    size = next;
                 }
+                // Last, the bit at the numbers' size (half a line less to find room for).
+                if (!items.empty() && items.front().role == "cell-bit") {
+                    std::vector<Item> flat = candidates.back();
+                    flat.front().size = flat.back().size;
+                    candidates.push_back(flat);
+                }
+            }
+            // The lines of a candidate, placed clear of `cellMarks`: the block in one piece at the
+            // first free spot, else its lines in order, top to bottom, each at the first height
+            // below the last where it clears every mark (the lookup point in the middle of a
+            // cell then sits between the bit and the depth, not on them). Empty: no room.
+            using Placed = std::vector<std::pair<Rect, const Item*>>;
+            auto fit = [&](const std::vector<Item>& items, const std::vector<Rect>& cellMarks) {
+                Placed out;
+                auto clear = [&](const Rect& b) {
+                    return std::none_of(cellMarks.begin(), cellMarks.end(),
+                                        [&](const Rect& mk) { return overlaps(mk, b); });
+                };
                 float bw = 0, bh = 0;
                 for (const Item& it : items) {
                     bw = std::max(bw, measureText(FontFace::Mono, it.size, it.text).x);
                     bh += lineHeightOf(it.size);
                 }
-                if (bw > inner.w || bh > inner.h) continue;
+                if (bw > inner.w || bh > inner.h) return out;
                 float cx = inner.x + (inner.w - bw) * 0.5f, cy = inner.y + (inner.h - bh) * 0.5f;
                 float rx = inner.right() - bw, by = inner.bottom() - bh;
                 const glm::vec2 spots[] = {{cx, cy},      {cx, inner.y}, {cx, by},
@@ -422,23 +464,185 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const C
                                            {rx, inner.y}, {inner.x, by}, {rx, by}};
                 for (glm::vec2 s : spots) {
                     Rect blk{std::round(s.x), std::round(s.y), bw, bh};
-                    bool free = std::none_of(cellMarks.begin(), cellMarks.end(),
-                                             [&](const Rect& mk) { return overlaps(mk, blk); });
-                    if (!free) continue;
+                    if (!clear(blk)) continue;
                     float y = blk.y;
                     for (const Item& it : items) {
-                        pl.text({blk.x + bw * 0.5f, y}, it.text,
-                                {FontFace::Mono, it.size, ink, TextAlign::Center}, BoxKind::Number,
-                                panel, it.role);
+                        out.push_back({{blk.x, y, bw, lineHeightOf(it.size)}, &it});
                         y += lineHeightOf(it.size);
                     }
-                    placed = true;
-                    break;
+                    return out;
                 }
+                float y = inner.y, below = bh;
+                for (const Item& it : items) {
+                    float w = measureText(FontFace::Mono, it.size, it.text).x;
+                    float h = lineHeightOf(it.size);
+                    below -= h;
+                    const float xs[] = {inner.x + (inner.w - w) * 0.5f, inner.x, inner.right() - w};
+                    bool found = false;
+                    for (; y + h + below <= inner.bottom() + 0.01f && !found; y += 1.0f) {
+                        for (float x : xs) {
+                            Rect ln{std::round(x), std::round(y), w, h};
+                            if (clear(ln)) {
+                                out.push_back({ln, &it});
+                                found = true;
+                                break;
+                            }
+                        }
+                        if (found) break;
+                    }
+                    if (!found) return Placed{};
+                    y += h;
+                }
+                return out;
+            };
+            auto marksNear = [&]() {
+                std::vector<Rect> near;
+                for (const Rect& mk : cm.all(area)) {
+                    if (overlaps(mk, r)) near.push_back(mk.expanded(MARK_CLEARANCE_PX));
+                }
+                return near;
+            };
+            // The candidates that keep the depth, largest type first; each around the marks
+            // where the math puts them, then with this cell's point marks moved into a lane at
+            // the cell's edge (the nearest first; along an edge a mark keeps its true
+            // position), so that one cell's numbers keep the size of the
+            // others' rather than shrink for a mark. Only then the candidates without the depth.
+            auto keepsDepth = [&](const std::vector<Item>& items) {
+                return !hasDepth || std::any_of(items.begin(), items.end(), [](const Item& it) {
+                    return it.role == "cell-depth";
+                });
+            };
+            std::vector<size_t> owned;
+            for (size_t k = 0; k < cm.points.size(); ++k) {
+                glm::ivec2 at(
+                    glm::floor((cm.points[k].trueAt - glm::vec2(area.x, area.y)) / g.cell));
+                if (g.view.origin + at == texel) owned.push_back(k);
+            }
+            // Lanes: which edges a moved mark hugs (x: -1 left, 1 right, 0 kept; y likewise);
+            // the bottom one just above the weight bar. {0, 0}: where the math puts it.
+            const glm::ivec2 lanes[] = {{0, 0},   {0, -1}, {-1, 0}, {1, 0}, {0, 1},
+                                        {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
+            float barTop = r.bottom() - (g.bar + g.pad);
+            auto laneAt = [&](const PointMark& pm, glm::ivec2 lane) {
+                glm::vec2 at = pm.trueAt;
+                if (lane == glm::ivec2(0)) return at;
+                for (int ax = 0; ax < 2; ++ax) {
+                    float lo = (ax == 0 ? r.x : r.y) + pm.half;
+                    float hi = (ax == 0 ? r.right() : barTop) - pm.half;
+                    if (lane[ax] < 0) at[ax] = lo;
+                    if (lane[ax] > 0) at[ax] = hi;
+                    at[ax] = std::clamp(at[ax], lo, std::max(lo, hi));
+                }
+                return at;
+            };
+            // The ways to place this cell's point marks: each its own lane (two marks or
+            // fewer), else all in one; nearest first, so that the marks move as little as they
+            // can (the first: none moves).
+            std::vector<std::vector<glm::ivec2>> ways{{}};
+            if (owned.size() <= 2) {
+                for (size_t k = 0; k < owned.size(); ++k) {
+                    std::vector<std::vector<glm::ivec2>> next;
+                    for (const auto& w : ways) {
+                        for (glm::ivec2 lane : lanes) {
+                            next.push_back(w);
+                            next.back().push_back(lane);
+                        }
+                    }
+                    ways = std::move(next);
+                }
+            } else {
+                ways.clear();
+                for (glm::ivec2 lane : lanes) ways.emplace_back(owned.size(), lane);
+            }
+            auto travel = [&](const std::vector<glm::ivec2>& w) {
+                float d = 0.0f;
+                for (size_t k = 0; k < owned.size(); ++k) {
+                    const PointMark& pm = cm.points[owned[k]];
+                    d += glm::length(laneAt(pm, w[k]) - pm.trueAt);
+                }
+                return d;
+            };
+            std::vector<float> travels;
+            for (const auto& w : ways) travels.push_back(travel(w));
+            std::vector<size_t> order(ways.size());
+            for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+            std::stable_sort(order.begin(), order.end(),
+                             [&](size_t x, size_t y) { return travels[x] < travels[y]; });
+            auto moveTo = [&](const std::vector<glm::ivec2>& w) {
+                for (size_t k = 0; k < owned.size(); ++k) {
+                    PointMark& pm = cm.points[owned[k]];
+                    pm.at = laneAt(pm, w[k]);
+                }
+            };
+            const std::vector<glm::ivec2> stay(owned.size(), glm::ivec2(0));
+            Placed done;
+            bool placed = false;
+            for (const std::vector<Item>& items : candidates) {
+                if (items.empty() || !keepsDepth(items) || placed) break;
+                for (size_t wi = 0; wi < order.size() && !placed; ++wi) {
+                    moveTo(ways[order[wi]]);
+                    done = fit(items, marksNear());
+                    placed = !done.empty();
+                }
+            }
+            if (!placed) {
+                moveTo(stay);
+                std::vector<Rect> cellMarks = marksNear();
+                for (const std::vector<Item>& items : candidates) {
+                    if (items.empty()) {
+                        if (!all.empty()) ++hiddenCells;
+                        break;
+                    }
+                    done = fit(items, cellMarks);
+                    if (!done.empty()) break;
+                }
+            }
+            for (const auto& [box, it] : done) {
+                pl.text({box.x + box.w * 0.5f, box.y}, it->text,
+                        {FontFace::Mono, it->size, ink, TextAlign::Center}, BoxKind::Number, panel,
+                        it->role);
             }
         }
     }
     return hiddenCells;
+}
+
+// The point marks where planCellNumbers left them. One moved into a lane keeps its true
+// position along that lane; a tick of its colour across the cell's border band (where no number
+// goes, and the neighbour's) marks its true position in the other axis: on the left or right
+// edge, whichever is nearer the mark, for its height; on the top or bottom edge for its column.
+void planPointMarks(Planner& pl, const InspectorLayout& l, const Grid& g, CellMarks& cm,
+                    LegendNeeds& legend) {
+    float line = lineOf(l);
+    float tw = std::max(BRACKET_MIN_PX, line) + 1.0f;
+    for (const PointMark& p : cm.points) {
+        glm::ivec2 at(glm::floor((p.trueAt - glm::vec2(g.area.x, g.area.y)) / g.cell));
+        Rect r = texelCellRect(g.view, g.area, g.view.origin + at);
+        // Across the cell's border line, one band deep on either side.
+        float band = g.pad;
+        std::vector<Rect> ticks;
+        // (A mark moved by no more than the numbers' clearance needs no tick.)
+        if (std::abs(p.at.y - p.trueAt.y) > MARK_CLEARANCE_PX) {
+            float ex = p.at.x - r.x < r.right() - p.at.x ? r.x : r.right();
+            ticks.push_back({ex - band, p.trueAt.y - tw * 0.5f, 2 * band, tw});
+        }
+        if (std::abs(p.at.x - p.trueAt.x) > MARK_CLEARANCE_PX) {
+            float ey = p.at.y - r.y < r.bottom() - p.at.y ? r.y : r.bottom();
+            ticks.push_back({p.trueAt.x - tw * 0.5f, ey - band, tw, 2 * band});
+        }
+        for (const Rect& t : ticks) {
+            Rect ct = t.intersect(g.area);
+            if (ct.empty()) continue;
+            Colour c = p.tickColour;
+            cm.ops.push_back([ct, c](Canvas& cv) { cv.fillRect(ct, c); });
+            cm.add(pl, g.area, ct, p.role + "-tick");
+            legend.movedMark = true;
+        }
+        auto draw = p.draw;
+        glm::vec2 where = p.at;
+        cm.ops.push_back([draw, where](Canvas& c) { draw(c, where); });
+        cm.add(pl, g.area, p.rect(), p.role);
+    }
 }
 
 // fx and fy in the lanes under and beside the cells: a bracket from the base texel's centre
@@ -503,7 +707,8 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     planCellFills(pl, l, tr, g, marks, legend);
     planGridLines(pl, l, g, t);
     planFetchMarks(pl, l, m, g, marks, legend);
-    hiddenCells += planCellNumbers(pl, m, g, marks);
+    hiddenCells += planCellNumbers(pl, m, g, marks, t.numberFloor);
+    planPointMarks(pl, l, g, marks, legend);
     for (auto& f : marks.ops) pl.op(std::move(f));
     if (tr.params.method != PCF_NEAREST && tr.params.method != PCF_POISSON) {
         legend.fraction = true;
@@ -517,12 +722,12 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
 
 using namespace inspector_detail;
 
-Neighbourhood neighbourhoodView(const InspectorLayout& l, const Trace& tr) {
-    return panelLayout(l, tr, typeSizes(l)).grid.view;
+Neighbourhood neighbourhoodView(const InspectorLayout& l, const Trace& tr, int highlight) {
+    return panelLayout(l, tr, typeSizes(l), highlight).grid.view;
 }
 
-Rect neighbourhoodArea(const InspectorLayout& l, const Trace& tr, bool) {
-    return panelLayout(l, tr, typeSizes(l)).grid.area;
+Rect neighbourhoodArea(const InspectorLayout& l, const Trace& tr, bool, int highlight) {
+    return panelLayout(l, tr, typeSizes(l), highlight).grid.area;
 }
 
 Neighbourhood neighbourhoodOf(const Trace& tr) {

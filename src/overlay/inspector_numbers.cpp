@@ -117,7 +117,7 @@ float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
                  const LegendNeeds& need, const TypeSizes& t, float margin, float y) {
     const Rect& p = l.inspector;
     const std::string panel = "inspector";
-    enum Shape { SQUARE, DOT, RING, OUTLINE, BAR };
+    enum Shape { SQUARE, DOT, RING, OUTLINE, BAR, TICK };
     struct Entry {
         Colour colour;
         std::string text;
@@ -135,6 +135,7 @@ float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
     if (need.rings) entries.push_back({ACCENT, "hardware tap", RING});
     if (need.gathers) entries.push_back({GATHER, "one gather (2 x 2)", OUTLINE});
     if (need.highlight) entries.push_back({HIGHLIGHT, "the fetch the text talks about", OUTLINE});
+    if (need.movedMark) entries.push_back({POINT, "tick: a moved mark's true place", TICK});
     if (m.showScene)
         entries.push_back({Colour{0.2f, 0.85f, 1.0f, 1.0f}, "texels read, on the scene", SQUARE});
     float lg = t.label;
@@ -170,6 +171,10 @@ float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
                     break;
                 case SQUARE:
                     c.fillRect(sw, col);
+                    break;
+                case TICK:  // a tick across a cell border, as in the cells
+                    c.fillRect({sw.x, sw.y + sw.h * 0.5f - 0.5f, sw.w, 1.0f}, TEXT_DIM);
+                    c.fillRect({cc.x - 1.5f, sw.y, 3.0f, sw.h}, col);
                     break;
             }
         });

@@ -195,8 +195,9 @@ inline float lineOf(const InspectorLayout& l) {
 struct LegendNeeds {
     bool highlight = false, weightBar = false, dots = false, rings = false, gathers = false,
          fraction = false, baseCentre = false, padding = false, footprint = false;
-    bool clamped = false;  // a texel read clamped to the edge (any finite uv)
-    bool hw8 = false;      // the 8-bit position (the sub-texel inset)
+    bool clamped = false;    // a texel read clamped to the edge (any finite uv)
+    bool hw8 = false;        // the 8-bit position (the sub-texel inset)
+    bool movedMark = false;  // a point mark moved beside its cell's numbers, with a tick
 };
 
 // The cells, their numbers, the fetch marks and the fx/fy brackets; counts the cells whose
