@@ -10,57 +10,11 @@
 #include <string_view>
 #include <vector>
 
-// Sanitizer builds (scripts/test --sanitize): gcc defines __SANITIZE_ADDRESS__, clang has the
-// feature test.
-#if defined(__SANITIZE_ADDRESS__)
-#define PCFSCOPE_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define PCFSCOPE_ASAN 1
-#endif
-#endif
-#ifdef PCFSCOPE_ASAN
-#include <dlfcn.h>
-#include <link.h>
-
-#include <set>
-#include <string>
-#endif
+#include "render/driver_pin.h"
 
 namespace pcf {
 
 namespace {
-
-#ifdef PCFSCOPE_ASAN
-// The shared objects mapped into the process now, by path.
-std::set<std::string> loadedObjects() {
-    std::set<std::string> out;
-    dl_iterate_phdr(
-        [](dl_phdr_info* info, size_t, void* data) {
-            if (info->dlpi_name != nullptr && info->dlpi_name[0] != '\0') {
-                static_cast<std::set<std::string>*>(data)->insert(info->dlpi_name);
-            }
-            return 0;
-        },
-        &out);
-    return out;
-}
-
-// LeakSanitizer reports what is still allocated at exit, after the EGL vendor library has
-// unloaded Mesa's driver (dlclose at eglTerminate / library teardown). A block the driver
-// allocated then has a stack of bare addresses in no mapped module, which no suppression can
-// name. So, in sanitizer builds only, every library that making the context loaded (the EGL
-// vendor library, the DRI driver, LLVM) is marked RTLD_NODELETE: it stays mapped until exit,
-// its frames symbolise, and tests/sanitize/lsan.supp can name the driver's own leaks.
-void pinLibrariesLoadedSince(const std::set<std::string>& before) {
-    for (const std::string& path : loadedObjects()) {
-        if (before.count(path) != 0) continue;
-        // RTLD_NOLOAD: only a library already mapped; the handle's extra reference is kept on
-        // purpose (NODELETE makes the library outlive every dlclose anyway).
-        dlopen(path.c_str(), RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
-    }
-}
-#endif
 
 // EGL displays are per-process singletons: two contexts on the surfaceless platform share one
 // EGLDisplay, and eglTerminate would pull it from under the other. So the display is
@@ -205,17 +159,14 @@ void EglContext::makeCurrent() {
 }
 
 std::unique_ptr<GlContext> createHeadlessContext() {
-#ifdef PCFSCOPE_ASAN
-    std::set<std::string> before = loadedObjects();
-#endif
+    // Sanitizer builds keep the driver mapped until exit (render/driver_pin.h).
+    std::set<std::string> before = mappedLibraries();
     std::string tried;
     for (const Candidate& c : candidateDisplays()) {
         tried += (tried.empty() ? "" : ", ") + std::string(c.platform);
         std::optional<EGLContext> context = tryCreateContext(c.display);
         if (!context) continue;
-#ifdef PCFSCOPE_ASAN
         pinLibrariesLoadedSince(before);
-#endif
         return std::make_unique<EglContext>(c.display, *context, c.platform);
     }
     if (tried.empty()) tried = "none found";

@@ -5,6 +5,8 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "render/driver_pin.h"
+
 // After epoxy: GLFW must not pull in a GL header of its own.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -49,6 +51,8 @@ void releaseGlfw() {
 std::unique_ptr<GlfwWindowContext> GlfwWindowContext::create(int width, int height,
                                                              const std::string& title,
                                                              bool visible) {
+    // Sanitizer builds keep libGL and the driver mapped past glfwTerminate (render/driver_pin.h).
+    std::set<std::string> before = mappedLibraries();
     acquireGlfw();
     glfwDefaultWindowHints();
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_API);
@@ -74,6 +78,7 @@ std::unique_ptr<GlfwWindowContext> GlfwWindowContext::create(int width, int heig
             reason + ")");
     }
     glfwMakeContextCurrent(window);
+    pinLibrariesLoadedSince(before);
     // The constructor owns the window (and the GLFW reference) from here on.
     std::unique_ptr<GlfwWindowContext> out(new GlfwWindowContext(window));
     out->initializeCurrent("GLFW");
