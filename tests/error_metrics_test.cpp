@@ -311,6 +311,45 @@ TEST(SpeedChart, ACrowdedChartDrawsOnlyLabelsThatFit) {
     }
 }
 
+// A label ending in " !" (a noisy row) comes with the legend's line saying what "!" means,
+// inside the legend's box; a chart that draws no such label has no such line.
+TEST(SpeedChart, LegendExplainsTheNoisyMarkWhenALabelCarriesIt) {
+    std::vector<BenchRow> rows = sampleRows();  // poisson 1024 is noisy, and on no front
+    EXPECT_EQ(noisyNote(), "! noisy: IQR > 10% of median");
+    auto legendLines = [](const SpeedChartLayout& L, const SpeedChartText& text) {
+        std::vector<ChartTextBox> out;
+        for (const ChartTextBox& b : speedChartTextBoxes(L, text)) {
+            if (b.role != "chart-legend") continue;
+            EXPECT_TRUE(b.rect.intersect(L.legend).w >= b.rect.w - 0.5f) << b.text;
+            EXPECT_LE(b.rect.bottom(), L.legend.bottom()) << b.text;
+            out.push_back(b);
+        }
+        return out;
+    };
+    SpeedChartText text;
+    // Every label drawn (room to spare): poisson's " !" is among them.
+    SpeedChartLayout all = layoutSpeedChart(rows, {1280, 720});
+    ASSERT_TRUE(all.labelShown[4]);
+    EXPECT_EQ(all.labelTexts[4], "poisson 1024 !");
+    std::vector<ChartTextBox> lines = legendLines(all, text);
+    // The note's lines (wrapped to the legend's width) end the legend and read as the note.
+    ASSERT_FALSE(all.noisyLines.empty());
+    ASSERT_GE(lines.size(), all.noisyLines.size());
+    std::string note;
+    for (size_t k = lines.size() - all.noisyLines.size(); k < lines.size(); ++k) {
+        note += (note.empty() ? "" : " ") + lines[k].text;
+    }
+    EXPECT_EQ(note, noisyNote());
+    // Only the front's labels (no highlight asked for): no "!" drawn, no line for it.
+    SpeedChartLayout kept = layoutSpeedChart(rows, {1280, 720}, ChartTiming::Scene,
+                                             ChartAccuracy::EdgeRmse, {}, 8.0f, true);
+    ASSERT_FALSE(kept.labelShown[4]);
+    for (const ChartTextBox& b : legendLines(kept, text)) {
+        EXPECT_FALSE(b.text.starts_with("!")) << b.text;
+    }
+    EXPECT_LT(kept.legend.h, all.legend.h);
+}
+
 TEST(SpeedChart, DrawsTheRequestedSizeWithEachMethodsColour) {
     std::unique_ptr<GlContext> context = createHeadlessContext();
     std::vector<BenchRow> rows = sampleRows();

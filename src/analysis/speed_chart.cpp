@@ -69,6 +69,12 @@ double safeLog(double ms) { return std::log10(std::max(ms, 1e-6)); }
 
 }  // namespace
 
+std::string noisyNote() {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "! noisy: IQR > %g%% of median", NOISY_IQR_SHARE * 100.0);
+    return buf;
+}
+
 std::vector<size_t> chartRowsMatching(std::span<const BenchRow> rows,
                                       const std::string& selectors) {
     std::vector<bool> on(rows.size(), false);
@@ -166,6 +172,11 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     for (int m : L.legendMethods) {
         legendText =
             std::max(legendText, measureText(FontFace::Sans, f.legend, methodInfo(m).name).x);
+    }
+    // The note on "!" wraps to the names' width (a wider legend would crowd the plot's labels).
+    L.noisyLines = wrapText(FontFace::Sans, f.legend, noisyNote(), legendText);
+    for (const std::string& line : L.noisyLines) {
+        legendText = std::max(legendText, measureText(FontFace::Sans, f.legend, line).x);
     }
     float lineH = fontMetrics(FontFace::Sans, f.legend).lineHeight;
     float swatch = 22.0f * s;
@@ -323,6 +334,11 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
         L.labels[k] = best;
         L.labelShown[k] = true;
         placed.push_back(best);
+        // A drawn " !" gets the legend's line that says what it means.
+        if (rows[k].noisy && !L.noisyNote) {
+            L.noisyNote = true;
+            L.legend.h += static_cast<float>(L.noisyLines.size()) * lineH;
+        }
     }
     return L;
 }
@@ -376,6 +392,10 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
         y += lineH;
     }
     add({textX, y}, TextAlign::Left, L.legendPx, "chart-legend", "Pareto front");
+    for (size_t k = 0; L.noisyNote && k < L.noisyLines.size(); ++k) {
+        y += lineH;
+        add({textX, y}, TextAlign::Left, L.legendPx, "chart-legend", L.noisyLines[k]);
+    }
     return out;
 }
 

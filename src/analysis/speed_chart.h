@@ -84,10 +84,18 @@ struct SpeedChartLayout {
     std::vector<size_t> front;       // rows on the Pareto front, fastest first
     std::vector<int> legendMethods;  // methods present, in the rows' order of appearance
     Rect legend;
+    // Whether a drawn label ends in " !" (a noisy row): the legend then says what "!" means
+    // (noisyNote, wrapped to the legend's width: noisyLines), below the front's entry.
+    bool noisyNote = false;
+    std::vector<std::string> noisyLines;
     // The type sizes, pixels: scaled with the chart, none below the minimum asked for.
     float titlePx = 0, subtitlePx = 0, axisPx = 0, tickPx = 0, labelPx = 0, legendPx = 0;
     float dotRadius = 4.5f;  // pixels; a quarter of the label size at least, to see from afar
 };
+
+// The legend's line for the " !" that ends a noisy row's label: "! noisy: IQR > 10% of median"
+// (bench.h NOISY_IQR_SHARE).
+std::string noisyNote();
 
 // "gather3 1024", "nearest 256", "gather3 gauss1.5 1024": the label of one run.
 std::string chartLabel(const BenchPoint& point);

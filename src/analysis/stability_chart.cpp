@@ -28,14 +28,55 @@ float yTickRoom(float s, float tickFont) {
     return std::round(measureText(FontFace::Sans, tickFont, "100%").x + 10.0f * s + 4.0f);
 }
 
+// Draws on a Canvas, or (no canvas) only records where each text goes: one code path lays out
+// and draws a chart, so the boxes a lesson frame lists are where the texts are drawn.
+class Painter {
+  public:
+    Painter(Canvas* canvas, std::vector<ChartTextBox>* texts) : mCanvas(canvas), mTexts(texts) {}
+    // The rect Canvas::text covers (its rounding and alignment), recorded under `role`.
+    Rect text(glm::vec2 pos, const std::string& words, const TextStyle& style,
+              const std::string& role) {
+        glm::vec2 size = measureText(style.face, style.pixelSize, words);
+        float x = static_cast<float>(std::lround(pos.x));
+        if (style.align == TextAlign::Center) x -= static_cast<float>(std::lround(0.5f * size.x));
+        if (style.align == TextAlign::Right) x -= static_cast<float>(std::lround(size.x));
+        Rect r{x, static_cast<float>(std::lround(pos.y)), size.x, size.y};
+        if (mTexts) mTexts->push_back({r, style.pixelSize, role, words});
+        if (mCanvas) mCanvas->text(pos, words, style);
+        return r;
+    }
+    void line(glm::vec2 a, glm::vec2 b, float w, const Colour& c) {
+        if (mCanvas) mCanvas->line(a, b, w, c);
+    }
+    void circle(glm::vec2 p, float r, const Colour& c) {
+        if (mCanvas) mCanvas->circle(p, r, c);
+    }
+    void fillRect(const Rect& r, const Colour& c) {
+        if (mCanvas) mCanvas->fillRect(r, c);
+    }
+    void strokeRect(const Rect& r, float w, const Colour& c) {
+        if (mCanvas) mCanvas->strokeRect(r, w, c);
+    }
+    void pushClip(const Rect& r) {
+        if (mCanvas) mCanvas->pushClip(r);
+    }
+    void popClip() {
+        if (mCanvas) mCanvas->popClip();
+    }
+
+  private:
+    Canvas* mCanvas;
+    std::vector<ChartTextBox>* mTexts;
+};
+
 // Title and subtitle at the top; returns the y below them.
-float drawHeader(Canvas& c, float s, float minPx, const std::string& title,
+float drawHeader(Painter& c, float s, float minPx, const std::string& title,
                  const std::string& subtitle) {
     float pad = std::round(12.0f * s);
     float titlePx = std::max(px(20, s, minPx), std::round(minPx * 1.25f));
-    Rect t = c.text({pad, pad * 0.6f}, title, {FontFace::Sans, titlePx, CHART_INK});
-    Rect sub =
-        c.text({pad, t.bottom()}, subtitle, {FontFace::Sans, px(13, s, minPx), CHART_SOFT_INK});
+    Rect t = c.text({pad, pad * 0.6f}, title, {FontFace::Sans, titlePx, CHART_INK}, "chart-title");
+    Rect sub = c.text({pad, t.bottom()}, subtitle,
+                      {FontFace::Sans, px(13, s, minPx), CHART_SOFT_INK}, "chart-subtitle");
     return sub.bottom() + 6.0f * s;
 }
 
@@ -45,7 +86,7 @@ struct LegendEntry {
     bool dashed;
 };
 
-void dashedLine(Canvas& c, glm::vec2 a, glm::vec2 b, float width, const Colour& colour,
+void dashedLine(Painter& c, glm::vec2 a, glm::vec2 b, float width, const Colour& colour,
                 float dash) {
     float len = glm::length(b - a);
     if (len <= 0.0f) return;
@@ -100,7 +141,7 @@ glm::vec4 biasColour(std::string_view bias) {
     return CHART_INK;
 }
 
-std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
+static void paintLineChart(const LineChartSpec& spec, glm::ivec2 size, Painter& c) {
     if (size.x < 64 || size.y < 64) {
         throw std::invalid_argument("drawLineChart: the chart needs at least 64 x 64 pixels");
     }
@@ -140,7 +181,7 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
         }
     }
 
-    return drawChartOffscreen(size, [&](Canvas& c) {
+    {
         float top = drawHeader(c, s, mn, spec.title, spec.subtitle);
         float legendFont = px(13, s, mn), tickFont = px(12, s, mn), axisFont = px(14, s, mn);
         float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
@@ -152,12 +193,12 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
             legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
         }
         legendW = std::round(legendW + 48.0f * s);
-        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK});
+        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
         top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
         float bottomText = fontMetrics(FontFace::Sans, axisFont).lineHeight + 6.0f * s;
         Rect area{0.0f, top, size.x - legendW - 20.0f * s, size.y - top - bottomText};
         c.text({area.centre().x, area.bottom() + 2.0f * s}, spec.xLabel,
-               {FontFace::Sans, axisFont, CHART_INK, TextAlign::Center});
+               {FontFace::Sans, axisFont, CHART_INK, TextAlign::Center}, "chart-axis");
 
         int n = static_cast<int>(spec.panels.size());
         int cols = n <= 2 ? n : (n <= 4 ? 2 : 3);
@@ -172,10 +213,10 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
             float left = std::max(58.0f * s, yTickRoom(s, tickFont));
             Rect plot{std::round(cell.x + left), std::round(cell.y + titleH + 4.0f * s),
                       std::round(cell.w - left - 12.0f * s),
-                      std::round(cell.h - titleH - tickH - 18.0f * s)};
+                      std::round(cell.h - titleH - 1.5f * tickH - 18.0f * s)};
             if (plot.w < 8.0f || plot.h < 8.0f) continue;
             c.text({plot.centre().x, cell.y}, panel.title,
-                   {FontFace::Sans, px(14, s, mn), CHART_INK, TextAlign::Center});
+                   {FontFace::Sans, px(14, s, mn), CHART_INK, TextAlign::Center}, "chart-title");
             auto xPixel = [&](double x) {
                 double v = spec.logX ? std::log10(std::max(x, 1e-12)) : x;
                 double t = (v - xLo) / (xHi - xLo);
@@ -190,7 +231,7 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
                 float py = std::round(yPixel(y)) + 0.5f;
                 c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
                 c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, spec.percentY),
-                       {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right});
+                       {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right}, "chart-tick");
             }
             // x ticks: the points' own x values (sweeps are few points), thinned to fit.
             std::vector<double> xs;
@@ -208,8 +249,10 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
                 std::string t = chartTickText(x, false);
                 float w = measureText(FontFace::Sans, tickFont, t).x;
                 if (pxX - w / 2 - 4.0f * s > lastRight) {
-                    c.text({pxX, plot.bottom() + 3.0f * s}, t,
-                           {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Center});
+                    // Half a line lower than the plot: the lowest y tick's label reaches there.
+                    c.text({pxX, plot.bottom() + 0.5f * tickH + 3.0f * s}, t,
+                           {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Center},
+                           "chart-tick");
                     lastRight = pxX + w / 2;
                 }
             }
@@ -245,17 +288,34 @@ std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
             } else {
                 c.line(a, b, lw, e.colour);
             }
-            c.text({box.x + 38.0f * s, y}, e.label, {FontFace::Sans, legendFont, CHART_INK});
+            c.text({box.x + 38.0f * s, y}, e.label, {FontFace::Sans, legendFont, CHART_INK},
+                   "chart-legend");
             y += lineH;
         }
         for (const std::string& note : spec.notes) {
-            c.text({box.x + 8.0f * s, y}, note, {FontFace::Sans, legendFont, CHART_SOFT_INK});
+            c.text({box.x + 8.0f * s, y}, note, {FontFace::Sans, legendFont, CHART_SOFT_INK},
+                   "chart-legend");
             y += lineH;
         }
+    }
+}
+
+std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
+    lineChartTextBoxes(spec, size);  // throws for a bad size or spec before any GL work
+    return drawChartOffscreen(size, [&](Canvas& canvas) {
+        Painter painter(&canvas, nullptr);
+        paintLineChart(spec, size, painter);
     });
 }
 
-std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
+std::vector<ChartTextBox> lineChartTextBoxes(const LineChartSpec& spec, glm::ivec2 size) {
+    std::vector<ChartTextBox> out;
+    Painter painter(nullptr, &out);
+    paintLineChart(spec, size, painter);
+    return out;
+}
+
+static void paintBarChart(const BarChartSpec& spec, glm::ivec2 size, Painter& c) {
     if (size.x < 64 || size.y < 64) {
         throw std::invalid_argument("drawBarChart: the chart needs at least 64 x 64 pixels");
     }
@@ -275,10 +335,10 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
                                     {0.55f, 0.55f, 0.58f, 1.0f},
                                     {0.84f, 0.37f, 0.0f, 1.0f},
                                     {0.0f, 0.62f, 0.45f, 1.0f}};
-    return drawChartOffscreen(size, [&](Canvas& c) {
+    {
         float top = drawHeader(c, s, mn, spec.title, spec.subtitle);
         float tickFont = px(12, s, mn), axisFont = px(14, s, mn), legendFont = px(13, s, mn);
-        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK});
+        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
         top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
         float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
         float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
@@ -332,9 +392,24 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
             if (fitsAll) break;
             stagger = true;
         }
-        float labelsH = (stagger ? 2 * labelLines : std::max(2, labelLines)) * tickH;
+        // Rows of labels: group g's in row g % rows, the fewest rows in which no label reaches
+        // the next one of its row (a word wider than two groups needs a third row).
+        int rows = 1;
+        for (; rows < 4; ++rows) {
+            bool clear = true;
+            for (size_t g = 0; g + rows < labels.size(); ++g) {
+                float gap = groupW * static_cast<float>(rows);
+                clear = clear &&
+                        (widest(labels[g]) + widest(labels[g + rows])) * 0.5f + 4.0f * s <= gap;
+            }
+            if (clear) break;
+        }
+        if (stagger) rows = std::max(rows, 2);
+        // The labels start half a tick line below the plot: the "0" tick's label reaches there.
+        float labelsTop = tickH * 0.5f + 4.0f * s;
+        float labelsH = labelsTop + std::max(2, rows * labelLines) * tickH;
         Rect plot{std::round(left), std::round(top), plotW,
-                  std::round(size.y - top - labelsH - 20.0f * s)};
+                  std::round(size.y - top - labelsH - 16.0f * s)};
         float stroke = std::max(1.0f, std::round(s));
         auto yPixel = [&](double y) {
             return plot.bottom() - static_cast<float>(y / yTop) * plot.h;
@@ -343,7 +418,7 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
             float py = std::round(yPixel(y)) + 0.5f;
             c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
             c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, false),
-                   {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right});
+                   {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right}, "chart-tick");
         }
         size_t bars = std::max<size_t>(spec.series.size(), 1);
         float barW = std::max(2.0f, std::floor(groupW * 0.8f / bars));
@@ -356,9 +431,9 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
                             std::round(plot.bottom() - y)},
                            SERIES[b % 4]);
             }
-            float below = stagger && g % 2 == 1 ? labelLines * tickH : 0.0f;
-            c.text({plot.x + (g + 0.5f) * groupW, plot.bottom() + 4.0f * s + below}, labels[g],
-                   {FontFace::Sans, tickFont, CHART_INK, TextAlign::Center});
+            float below = static_cast<float>(static_cast<int>(g) % rows * labelLines) * tickH;
+            c.text({plot.x + (g + 0.5f) * groupW, plot.bottom() + labelsTop + below}, labels[g],
+                   {FontFace::Sans, tickFont, CHART_INK, TextAlign::Center}, "chart-label");
         }
         c.strokeRect(plot.expanded(stroke), stroke, CHART_SOFT_INK);
         Rect box{size.x - legendW - 12.0f * s, plot.y, legendW,
@@ -369,14 +444,30 @@ std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
         for (size_t b = 0; b < spec.series.size(); ++b) {
             c.fillRect({box.x + 8.0f * s, y + 2.0f * s, 22.0f * s, lineH - 4.0f * s},
                        SERIES[b % 4]);
-            c.text({box.x + 36.0f * s, y}, spec.series[b], {FontFace::Sans, legendFont, CHART_INK});
+            c.text({box.x + 36.0f * s, y}, spec.series[b], {FontFace::Sans, legendFont, CHART_INK},
+                   "chart-legend");
             y += lineH;
         }
+    }
+}
+
+std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
+    barChartTextBoxes(spec, size);  // throws for a bad size or spec before any GL work
+    return drawChartOffscreen(size, [&](Canvas& canvas) {
+        Painter painter(&canvas, nullptr);
+        paintBarChart(spec, size, painter);
     });
 }
 
-std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                   const std::string& subtitle, float minFontPx) {
+std::vector<ChartTextBox> barChartTextBoxes(const BarChartSpec& spec, glm::ivec2 size) {
+    std::vector<ChartTextBox> out;
+    Painter painter(nullptr, &out);
+    paintBarChart(spec, size, painter);
+    return out;
+}
+
+LineChartSpec acneChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                            float minFontPx) {
     LineChartSpec spec;
     spec.title = "Shadow acne: false shadow on lit receivers as the light sinks";
     spec.subtitle = subtitle;
@@ -400,14 +491,21 @@ std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec
         }
         spec.panels.push_back(panel);
     }
-    if (spec.panels.empty()) return {};
+    if (spec.panels.empty()) return spec;
     spec.notes.push_back("1% = acne onset");
     spec.minFontPx = minFontPx;
+    return spec;
+}
+
+std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                   const std::string& subtitle, float minFontPx) {
+    LineChartSpec spec = acneChartSpec(rows, subtitle, minFontPx);
+    if (spec.panels.empty()) return {};
     return drawLineChart(spec, size);
 }
 
-std::vector<uint8_t> drawLeakChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                   const std::string& subtitle, float minFontPx) {
+LineChartSpec leakChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                            float minFontPx) {
     LineChartSpec spec;
     spec.title = "Peter panning: how far light leaks under the caster as the bias grows";
     spec.subtitle = subtitle;
@@ -436,16 +534,23 @@ std::vector<uint8_t> drawLeakChart(std::span<const StabilityRow> rows, glm::ivec
         }
         spec.panels.push_back(panel);
     }
-    if (spec.panels.empty()) return {};
+    if (spec.panels.empty()) return spec;
     for (size_t k = 0; k < scenes.size(); ++k) {
         spec.notes.push_back((k == 0 ? "solid: " : "dashed: ") + scenes[k]);
     }
     spec.minFontPx = minFontPx;
+    return spec;
+}
+
+std::vector<uint8_t> drawLeakChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                   const std::string& subtitle, float minFontPx) {
+    LineChartSpec spec = leakChartSpec(rows, subtitle, minFontPx);
+    if (spec.panels.empty()) return {};
     return drawLineChart(spec, size);
 }
 
-std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                      const std::string& subtitle, float minFontPx) {
+BarChartSpec shimmerChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                              float minFontPx) {
     BarChartSpec spec;
     spec.title = "Shimmer: how much the picture flickers while nothing in the world moves";
     spec.subtitle = subtitle;
@@ -467,8 +572,15 @@ std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::i
             spec.groups.push_back(g);
         }
     }
-    if (spec.groups.empty()) return {};
+    if (spec.groups.empty()) return spec;
     spec.minFontPx = minFontPx;
+    return spec;
+}
+
+std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                      const std::string& subtitle, float minFontPx) {
+    BarChartSpec spec = shimmerChartSpec(rows, subtitle, minFontPx);
+    if (spec.groups.empty()) return {};
     return drawBarChart(spec, size);
 }
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/speed_chart.h"
 #include "analysis/stability.h"
 
 namespace pcf {
@@ -62,8 +63,23 @@ struct BarChartSpec {
 
 std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size);
 
+// Every text the chart draws, where it is drawn (pixels from the chart's top left; one code path
+// lays out and draws), with its role: "chart-title" (the chart's and each small multiple's),
+// "chart-subtitle", "chart-axis", "chart-tick", "chart-label" (a bar group's name),
+// "chart-legend". Needs the fonts, not GL; throws as the draw functions do.
+std::vector<ChartTextBox> lineChartTextBoxes(const LineChartSpec& spec, glm::ivec2 size);
+std::vector<ChartTextBox> barChartTextBoxes(const BarChartSpec& spec, glm::ivec2 size);
+
 // The colour of a bias mode's lines and bars (by its name; an unknown name gets ink).
 glm::vec4 biasColour(std::string_view bias);
+
+// The specs of the charts below (no panel or group when the rows have none of that sweep).
+LineChartSpec acneChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                            float minFontPx = 8.0f);
+LineChartSpec leakChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                            float minFontPx = 8.0f);
+BarChartSpec shimmerChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                              float minFontPx = 8.0f);
 
 // The charts `pcfscope stability` writes, from its rows: acne rate against elevation (empty when
 // no acne row), leak width against bias, shimmer per method. Each is RGBA8 of `size`, no text

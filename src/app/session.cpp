@@ -183,12 +183,15 @@ ChartRef chartRef(const std::string& chart) {
     return {chart.substr(0, hash), chart.substr(hash + 1)};
 }
 
+std::string stabilitySubtitle(const ChartRef& ref) {
+    return "measured by pcfscope stability, " + std::filesystem::path(ref.path).filename().string();
+}
+
 // The stability chart `view` of a stability.csv, or InputError for an unknown view or no rows.
 std::vector<uint8_t> drawStabilityView(const ChartRef& ref, glm::ivec2 size,
                                        float minFontPx = 8.0f) {
     std::vector<StabilityRow> rows = readStabilityRows(ref.path);
-    std::string subtitle =
-        "measured by pcfscope stability, " + std::filesystem::path(ref.path).filename().string();
+    std::string subtitle = stabilitySubtitle(ref);
     std::vector<uint8_t> rgba;
     if (ref.view == "acne") {
         rgba = drawAcneChart(rows, size, subtitle, minFontPx);
@@ -203,6 +206,21 @@ std::vector<uint8_t> drawStabilityView(const ChartRef& ref, glm::ivec2 size,
     }
     if (rgba.empty()) throw InputError(ref.path, 0, "no " + ref.view + " rows to chart");
     return rgba;
+}
+
+// The texts of the stability chart `view` (where drawStabilityView draws them).
+std::vector<ChartTextBox> stabilityViewTextBoxes(const ChartRef& ref, glm::ivec2 size,
+                                                 float minFontPx) {
+    std::vector<StabilityRow> rows = readStabilityRows(ref.path);
+    std::string subtitle = stabilitySubtitle(ref);
+    if (ref.view == "acne")
+        return lineChartTextBoxes(acneChartSpec(rows, subtitle, minFontPx), size);
+    if (ref.view == "leak")
+        return lineChartTextBoxes(leakChartSpec(rows, subtitle, minFontPx), size);
+    if (ref.view == "shimmer") {
+        return barChartTextBoxes(shimmerChartSpec(rows, subtitle, minFontPx), size);
+    }
+    return {};
 }
 
 // Throws InputError unless the stability.csv has rows for the view.
@@ -304,6 +322,17 @@ void Session::setSettings(const LessonSettings& s) {
 void Session::setPixel(glm::ivec2 scenePixel) {
     glm::ivec2 size(mLayout.scene.size());
     mPixel = glm::clamp(scenePixel, glm::ivec2(0), size - glm::ivec2(1));
+}
+
+bool Session::sceneShown() const {
+    return mLesson.steps.empty() || mLesson.steps[static_cast<size_t>(mStep)].chart.empty();
+}
+
+bool Session::clickFrame(glm::vec2 framePoint) {
+    const Rect& scene = mLayout.scene;
+    if (!sceneShown() || !scene.contains(framePoint)) return false;
+    setPixel(glm::ivec2(framePoint - scene.position()));
+    return true;
 }
 
 void Session::setFrameSize(glm::ivec2 frameSize) {
@@ -417,13 +446,20 @@ std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size, bool
 std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLayout& layout) {
     std::vector<LayoutBox> out;
     ChartRef ref = chartRef(step.chart);
-    if (step.chart.empty() || !ref.view.empty()) return out;
-    std::vector<BenchRow> rows = readChartRows(step.chart);
-    SpeedChartText text = stepChartText(step, rows, layout.presentation);
+    if (step.chart.empty()) return out;
     glm::ivec2 size(layout.scene.size());
-    SpeedChartLayout L = layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
-                                          text.highlight, text.minFontPx, text.keptLabelsOnly);
-    for (const ChartTextBox& b : speedChartTextBoxes(L, text)) {
+    std::vector<ChartTextBox> texts;
+    if (!ref.view.empty()) {
+        texts = stabilityViewTextBoxes(ref, size, chartFloor(layout.presentation));
+    } else {
+        std::vector<BenchRow> rows = readChartRows(step.chart);
+        SpeedChartText text = stepChartText(step, rows, layout.presentation);
+        SpeedChartLayout L =
+            layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
+                             text.highlight, text.minFontPx, text.keptLabelsOnly);
+        texts = speedChartTextBoxes(L, text);
+    }
+    for (const ChartTextBox& b : texts) {
         BoxKind kind = b.role == "chart-tick"                                ? BoxKind::Number
                        : b.role == "chart-label" || b.role == "chart-legend" ? BoxKind::Label
                                                                              : BoxKind::Text;

@@ -48,9 +48,10 @@ constexpr std::size_t MAX_CHART_ROWS = 2000;
 // Pareto front) labelled; otherwise at the normal frame's floors.
 std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size,
                                    bool presentation = false);
-// The texts a speed-chart step's chart draws in `layout`'s scene panel (as chartStepLayout places
-// it), as layout boxes: ticks are numbers, dot names and the legend labels, the rest text. The
-// frame's layout lists them. Stability charts list none. Throws InputError for a bad chart file.
+// The texts a chart step's chart (a speed chart or a stability chart) draws in `layout`'s scene
+// panel (as chartStepLayout places it), as layout boxes: ticks are numbers, dot and bar-group
+// names and the legend labels, the rest text. The frame's layout lists them. Throws InputError
+// for a bad chart file.
 std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLayout& layout);
 
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
@@ -86,6 +87,12 @@ class Session {
     // Picked pixel in scene coordinates (top-left origin), clamped to the scene.
     glm::ivec2 pixel() const { return mPixel; }
     void setPixel(glm::ivec2 scenePixel);
+    // Whether the frame shows the scene: a chart step shows its chart there instead (and in
+    // presentation mode over the inspector's room too).
+    bool sceneShown() const;
+    // A click at a frame pixel (top-left origin): picks the scene pixel under it when the scene
+    // is shown and the click is on it; returns whether it did. A click on a chart picks nothing.
+    bool clickFrame(glm::vec2 framePoint);
 
     void setFrameSize(glm::ivec2 frameSize);
     glm::ivec2 frameSize() const { return mLayout.frameSize; }

@@ -178,8 +178,8 @@ class Viewer {
         glm::ivec2 fb = mWindow.framebufferSize();
         if (ww <= 0 || wh <= 0) return;
         glm::vec2 p(cursor.x * fb.x / ww, cursor.y * fb.y / wh);
-        const Rect& scene = mSession.layout().scene;
-        if (scene.contains(p)) mSession.setPixel(glm::ivec2(p - scene.position()));
+        // A chart step's chart covers the scene: a click on it picks nothing.
+        mSession.clickFrame(p);
     }
 
     // E: the frame as PNG + JSON into pcfscope-frames/. A failure is reported and the class

@@ -344,8 +344,10 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
 }
 
 // Numbers: each cell's block (bit, own ref, depth, weight) goes where no mark is; a smaller
-// block, or none, where the whole does not fit. Returns the cells left without numbers.
-int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const CellMarks& cm) {
+// block, or none, where the whole does not fit (smaller type first, not below numberFloor).
+// Returns the cells left without numbers.
+int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const CellMarks& cm,
+                    float numberFloor) {
     const Trace& tr = *m.trace;
     const std::string panel = "inspector";
     Rect area = g.area;
@@ -401,9 +403,29 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const C
             for (const Rect& mk : marks) {
                 if (overlaps(mk, r)) cellMarks.push_back(mk.expanded(MARK_CLEARANCE_PX));
             }
+            // Each variant at the cell's number size, then a few steps smaller down to the
+            // floor: a cell crowded by marks keeps its depth in smaller type before it drops it.
+            std::vector<std::vector<Item>> candidates;
+            for (const std::vector<Item>& items : variants) {
+                float size = g.number;
+                for (int step = 0; step < 4; ++step) {
+                    std::vector<Item> scaled = items;
+                    for (Item& it : scaled) it.size = it.size == g.bit ? bitFor(size) : size;
+                    candidates.push_back(scaled);
+                    float next = stepDown(size, numberFloor);
+                    if (items.empty() || next >= size) break;
+                    size = next;
+                }
+                // Last, the bit at the numbers' size (half a line less to find room for).
+                if (!items.empty() && items.front().role == "cell-bit") {
+                    std::vector<Item> flat = candidates.back();
+                    flat.front().size = flat.back().size;
+                    candidates.push_back(flat);
+                }
+            }
             bool placed = false;
-            for (size_t v = 0; v < variants.size() && !placed; ++v) {
-                const std::vector<Item>& items = variants[v];
+            for (size_t v = 0; v < candidates.size() && !placed; ++v) {
+                const std::vector<Item>& items = candidates[v];
                 if (items.empty()) {
                     if (!all.empty()) ++hiddenCells;
                     placed = true;
@@ -435,6 +457,41 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, const C
                     placed = true;
                     break;
                 }
+                if (placed) break;
+                // No spot for the block in one piece: its lines in order, top to bottom, each at
+                // the first height below the last where it clears every mark (the lookup point
+                // in the middle of a cell then sits between the bit and the depth, not on them).
+                std::vector<Rect> lines;
+                float y = inner.y, below = bh;
+                for (const Item& it : items) {
+                    float w = measureText(FontFace::Mono, it.size, it.text).x;
+                    float h = lineHeightOf(it.size);
+                    below -= h;
+                    const float xs[] = {inner.x + (inner.w - w) * 0.5f, inner.x, inner.right() - w};
+                    bool found = false;
+                    for (; y + h + below <= inner.bottom() + 0.01f && !found; y += 1.0f) {
+                        for (float x : xs) {
+                            Rect ln{std::round(x), std::round(y), w, h};
+                            if (std::none_of(cellMarks.begin(), cellMarks.end(),
+                                             [&](const Rect& mk) { return overlaps(mk, ln); })) {
+                                lines.push_back(ln);
+                                found = true;
+                                break;
+                            }
+                        }
+                        if (found) break;
+                    }
+                    if (!found) break;
+                    y += h;
+                }
+                if (lines.size() != items.size()) continue;
+                for (size_t k = 0; k < items.size(); ++k) {
+                    const Item& it = items[k];
+                    pl.text({lines[k].x + lines[k].w * 0.5f, lines[k].y}, it.text,
+                            {FontFace::Mono, it.size, ink, TextAlign::Center}, BoxKind::Number,
+                            panel, it.role);
+                }
+                placed = true;
             }
         }
     }
@@ -503,7 +560,7 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     planCellFills(pl, l, tr, g, marks, legend);
     planGridLines(pl, l, g, t);
     planFetchMarks(pl, l, m, g, marks, legend);
-    hiddenCells += planCellNumbers(pl, m, g, marks);
+    hiddenCells += planCellNumbers(pl, m, g, marks, t.numberFloor);
     for (auto& f : marks.ops) pl.op(std::move(f));
     if (tr.params.method != PCF_NEAREST && tr.params.method != PCF_POISSON) {
         legend.fraction = true;
