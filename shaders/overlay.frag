@@ -9,6 +9,8 @@ in vec4 vColour;
 flat in int vSlot;
 
 layout(binding = 0) uniform sampler2D uAtlas[8];
+// Canvas::image's picture (RGBA32F, straight alpha): texel floor(vUv) is the pixel's colour.
+layout(binding = 8) uniform sampler2D uImage;
 
 layout(location = 0) out vec4 outColour;
 
@@ -43,8 +45,15 @@ float coverage(int slot, ivec2 texel) {
 void main() {
     // Shapes skip the atlas switch entirely: on llvmpipe a branch taken by no fragment of a
     // block costs nothing, while the switch would otherwise run for every shape pixel.
-    if (vSlot < 0) {
+    if (vSlot == -1) {
         outColour = vColour;
+        return;
+    }
+    if (vSlot == -2) {
+        // The texel's colour as a fillRect of it would give it; transparent texels draw nothing.
+        vec4 c = texelFetch(uImage, ivec2(floor(vUv)), 0);
+        if (c.a == 0.0) discard;
+        outColour = c;
         return;
     }
     float a = coverage(vSlot, ivec2(floor(vUv)));

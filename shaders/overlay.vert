@@ -6,7 +6,7 @@
 layout(location = 0) in vec2 aPos;     // pixels, top-left origin
 layout(location = 1) in vec2 aUv;      // glyph atlas texel coordinates
 layout(location = 2) in vec4 aColour;  // straight alpha
-layout(location = 3) in int aSlot;     // -1 = solid, 0..7 = atlas texture unit
+layout(location = 3) in int aSlot;     // -1 = solid, -2 = image, 0..7 = atlas unit
 
 layout(location = 0) uniform vec2 uTargetSize;  // pixels
 

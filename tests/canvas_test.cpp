@@ -478,6 +478,105 @@ TEST_F(OverlayCanvas, BatchesAFrameIntoFewDrawCalls) {
     EXPECT_NE(image.at(5, 5), OPAQUE_BLACK);
 }
 
+// A background whose every pixel differs, so that a blend over it shows any change of colour.
+void drawGradient(Canvas& c, int width, int height) {
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; x += 8) {
+            c.fillRect({static_cast<float>(x), static_cast<float>(y), 8, 1},
+                       {x / float(width), y / float(height), 0.5f, 1.0f});
+        }
+    }
+}
+
+// A texel-grid-like picture: translucent edges every 5 pixels, a tinted footprint, holes.
+std::shared_ptr<const CanvasImage> gridPicture(glm::ivec2 size) {
+    const Colour edge{0.05f, 0.05f, 0.1f, 0.35f};
+    const Colour footprintEdge{0.1f, 0.9f, 1.0f, 0.95f};
+    const Colour tint{1.0f, 0.85f, 0.2f, 0.18f};
+    std::vector<glm::vec4> pixels(static_cast<size_t>(size.x) * size.y, glm::vec4(0.0f));
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            bool inFootprint = x >= 10 && x < 25 && y >= 5 && y < 20;
+            bool onEdge = x % 5 == 0 || y % 5 == 0;
+            if ((x + y) % 17 == 0) continue;  // a hole: left alone
+            Colour c =
+                onEdge ? (inFootprint ? footprintEdge : edge) : (inFootprint ? tint : Colour{0});
+            pixels[static_cast<size_t>(y) * size.x + x] = c;
+        }
+    }
+    return std::make_shared<const CanvasImage>(size, std::move(pixels));
+}
+
+// The scene's texel grid is drawn as one image instead of 1-pixel runs of rects: every pixel
+// must come out as the fillRect of its texel's colour gave it, byte for byte, in one quad.
+TEST_F(OverlayCanvas, ImageBlendsEachTexelExactlyAsFillRectOfItsColour) {
+    const glm::ivec2 at{7, 3};
+    std::shared_ptr<const CanvasImage> picture = gridPicture({40, 30});
+    size_t imageVertices = 0;
+    int imageCalls = -1;
+    Image viaImage = render(
+        64, 48,
+        [&](Canvas& c) {
+            drawGradient(c, 64, 48);
+            size_t before = c.pendingVertexCount();
+            c.image(at, picture);
+            imageVertices = c.pendingVertexCount() - before;
+        },
+        &imageCalls);
+    Image viaRects = render(64, 48, [&](Canvas& c) {
+        drawGradient(c, 64, 48);
+        for (int y = 0; y < picture->size.y; ++y) {
+            for (int x = 0; x < picture->size.x; ++x) {
+                glm::vec4 col = picture->pixels[static_cast<size_t>(y) * picture->size.x + x];
+                if (col.a > 0.0f) {
+                    c.fillRect({static_cast<float>(at.x + x), static_cast<float>(at.y + y), 1, 1},
+                               col);
+                }
+            }
+        }
+    });
+    EXPECT_EQ(imageVertices, 6u);
+    EXPECT_EQ(imageCalls, 1);  // the image shares the shapes' draw call
+    int differ = 0;
+    for (int y = 0; y < 48; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            if (viaImage.at(x, y) != viaRects.at(x, y) && ++differ <= 5) {
+                ADD_FAILURE() << "pixel (" << x << ", " << y << "): image "
+                              << str(viaImage.at(x, y)) << ", rects " << str(viaRects.at(x, y));
+            }
+        }
+    }
+    EXPECT_EQ(differ, 0);
+    // The picture did draw (its edge colour over the background), and not outside its box.
+    Image background = render(64, 48, [](Canvas& c) { drawGradient(c, 64, 48); });
+    EXPECT_NE(viaImage.at(at.x + 1, at.y), background.at(at.x + 1, at.y));  // an edge texel
+    EXPECT_EQ(viaImage.at(at.x + 40, at.y), background.at(at.x + 40, at.y));
+    EXPECT_EQ(viaImage.at(at.x, at.y + 30), background.at(at.x, at.y + 30));
+    EXPECT_EQ(viaImage.at(at.x - 1, at.y), background.at(at.x - 1, at.y));
+}
+
+// Two different images in one frame, the second partly clipped: each draws its own texels.
+TEST_F(OverlayCanvas, TwoImagesInOneFrameEachDrawTheirOwnAndHonourTheClip) {
+    auto red = std::make_shared<const CanvasImage>(glm::ivec2(4, 4),
+                                                   std::vector<glm::vec4>(16, glm::vec4(RED)));
+    auto blue = std::make_shared<const CanvasImage>(glm::ivec2(4, 4),
+                                                    std::vector<glm::vec4>(16, glm::vec4(BLUE)));
+    Image image = render(16, 8, [&](Canvas& c) {
+        c.image({0, 0}, red);
+        c.pushClip({8, 0, 2, 8});
+        c.image({8, 0}, blue);
+        c.popClip();
+    });
+    for (int y = 0; y < 8; ++y) {
+        for (int x = 0; x < 16; ++x) {
+            Rgba want = OPAQUE_BLACK;
+            if (x < 4 && y < 4) want = Rgba{255, 0, 0, 255};
+            if (x >= 8 && x < 10 && y < 4) want = Rgba{0, 0, 255, 255};
+            EXPECT_EQ(image.at(x, y), want) << "pixel (" << x << ", " << y << ")";
+        }
+    }
+}
+
 // More atlases than texture units in one draw: the batch splits and every glyph still shows.
 TEST_F(OverlayCanvas, ManyFontSizesSplitIntoBatchesAndStillDraw) {
     int drawCalls = -1;

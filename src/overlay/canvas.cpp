@@ -1,6 +1,7 @@
 #include "overlay/canvas.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
@@ -54,7 +55,7 @@ class GlStateGuard {
         glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &mBlendEquationAlpha);
         glGetBooleanv(GL_COLOR_WRITEMASK, mColourMask);
         glGetIntegerv(GL_POLYGON_MODE, mPolygonMode);
-        for (int unit = 0; unit < Canvas::MAX_ATLASES_PER_DRAW; ++unit) {
+        for (int unit = 0; unit < UNITS; ++unit) {
             glActiveTexture(GL_TEXTURE0 + unit);
             glGetIntegerv(GL_TEXTURE_BINDING_2D, &mTextures[unit]);
             glGetIntegerv(GL_SAMPLER_BINDING, &mSamplers[unit]);
@@ -66,7 +67,7 @@ class GlStateGuard {
         glScissor(mScissorBox[0], mScissorBox[1], mScissorBox[2], mScissorBox[3]);
         glUseProgram(static_cast<GLuint>(mProgram));
         glBindVertexArray(static_cast<GLuint>(mVertexArray));
-        for (int unit = 0; unit < Canvas::MAX_ATLASES_PER_DRAW; ++unit) {
+        for (int unit = 0; unit < UNITS; ++unit) {
             // glBindTexture, not glBindTextureUnit: binding 0 with the latter would also unbind
             // the unit's other targets (a cube map, an array) that flush() never touched.
             glActiveTexture(GL_TEXTURE0 + unit);
@@ -112,12 +113,58 @@ class GlStateGuard {
     GLint mBlendEquationAlpha = GL_FUNC_ADD;
     GLboolean mColourMask[4]{GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
     GLint mPolygonMode[2]{GL_FILL, GL_FILL};
-    GLint mTextures[Canvas::MAX_ATLASES_PER_DRAW]{};
-    GLint mSamplers[Canvas::MAX_ATLASES_PER_DRAW]{};
+    // The atlases' units and the image's.
+    static constexpr int UNITS = Canvas::IMAGE_UNIT + 1;
+    GLint mTextures[UNITS]{};
+    GLint mSamplers[UNITS]{};
     GLboolean mEnabled[std::size(CAPS)]{};
 };
 
+// Unpack state set for tightly packed rows read from client memory, and put back afterwards.
+class UnpackGuard {
+  public:
+    UnpackGuard() {
+        glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &mUnpackBuffer);
+        glGetIntegerv(GL_UNPACK_ALIGNMENT, &mAlignment);
+        glGetIntegerv(GL_UNPACK_ROW_LENGTH, &mRowLength);
+        glGetIntegerv(GL_UNPACK_SKIP_ROWS, &mSkipRows);
+        glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &mSkipPixels);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+        glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+        glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    }
+    ~UnpackGuard() {
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(mUnpackBuffer));
+        glPixelStorei(GL_UNPACK_ALIGNMENT, mAlignment);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, mRowLength);
+        glPixelStorei(GL_UNPACK_SKIP_ROWS, mSkipRows);
+        glPixelStorei(GL_UNPACK_SKIP_PIXELS, mSkipPixels);
+    }
+    UnpackGuard(const UnpackGuard&) = delete;
+    UnpackGuard& operator=(const UnpackGuard&) = delete;
+
+  private:
+    GLint mUnpackBuffer = 0;
+    GLint mAlignment = 4;
+    GLint mRowLength = 0;
+    GLint mSkipRows = 0;
+    GLint mSkipPixels = 0;
+};
+
 }  // namespace
+
+CanvasImage::CanvasImage(glm::ivec2 size_, std::vector<glm::vec4> pixels_)
+    : size(size_), pixels(std::move(pixels_)) {
+    static std::atomic<uint64_t> next{1};
+    if (size.x < 0 || size.y < 0 || pixels.size() != static_cast<size_t>(size.x) * size.y) {
+        throw std::invalid_argument("CanvasImage: " + std::to_string(pixels.size()) +
+                                    " pixels for " + std::to_string(size.x) + " x " +
+                                    std::to_string(size.y));
+    }
+    id = next++;
+}
 
 Canvas::Canvas() = default;
 Canvas::~Canvas() = default;
@@ -146,18 +193,20 @@ Canvas::Batch& Canvas::currentBatch() {
     return mBatches.back();
 }
 
+Canvas::Batch& Canvas::newBatch() {
+    Batch next;
+    next.first = mVertices.size();
+    next.clip = currentBatch().clip;
+    mBatches.push_back(next);
+    return mBatches.back();
+}
+
 int Canvas::atlasSlot(const GlyphAtlas& atlas) {
     Batch* b = &currentBatch();
     for (int k = 0; k < b->atlasCount; ++k) {
         if (b->atlases[k] == &atlas) return k;
     }
-    if (b->atlasCount == MAX_ATLASES_PER_DRAW) {
-        Batch next;
-        next.first = mVertices.size();
-        next.clip = b->clip;
-        mBatches.push_back(next);
-        b = &mBatches.back();
-    }
+    if (b->atlasCount == MAX_ATLASES_PER_DRAW) b = &newBatch();
     b->atlases[b->atlasCount] = &atlas;
     return b->atlasCount++;
 }
@@ -398,6 +447,23 @@ void Canvas::arrow(glm::vec2 from, glm::vec2 to, float width, const Colour& colo
     convexPolygon(head, colour);
 }
 
+void Canvas::image(glm::ivec2 topLeft, std::shared_ptr<const CanvasImage> img) {
+    if (!img || img->size.x <= 0 || img->size.y <= 0) return;
+    Batch* b = &currentBatch();
+    if (b->image && b->image->id != img->id) b = &newBatch();
+    b->image = img;
+    // Texel coordinates advance one texel per pixel from the top-left corner, as glyphs do:
+    // floor(uv) at a pixel centre is that pixel's texel (row 0 = the image's top row).
+    glm::vec2 p0(topLeft);
+    glm::vec2 p1 = p0 + glm::vec2(img->size);
+    glm::vec2 t1(img->size);
+    Colour none{0.0f};
+    Vertex v00{p0, {0.0f, 0.0f}, none, -2};
+    Vertex v11{p1, t1, none, -2};
+    triangle(v00, {{p1.x, p0.y}, {t1.x, 0.0f}, none, -2}, v11);
+    triangle(v00, v11, {{p0.x, p1.y}, {0.0f, t1.y}, none, -2});
+}
+
 Rect Canvas::drawLayout(GlyphAtlas& atlas, const TextLayout& layout, glm::vec2 pos,
                         const TextStyle& style) {
     glm::ivec2 origin(static_cast<int>(std::lround(pos.x)), static_cast<int>(std::lround(pos.y)));
@@ -484,30 +550,21 @@ void Canvas::uploadAtlas(const GlyphAtlas& atlas) {
         t.size = image.size;
     }
     // Rows of one byte each: alignment 1, and no unpack buffer or row length of someone else's.
-    GLint unpackBuffer = 0;
-    GLint alignment = 4;
-    GLint rowLength = 0;
-    GLint skipRows = 0;
-    GLint skipPixels = 0;
-    glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpackBuffer);
-    glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
-    glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
-    glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skipRows);
-    glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skipPixels);
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
-    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    UnpackGuard unpack;
     // Image row r becomes texel row r: the shader fetches with the image's own coordinates.
     glTextureSubImage2D(t.texture.id(), 0, 0, 0, image.size.x, image.size.y, GL_RED,
                         GL_UNSIGNED_BYTE, image.pixels.data());
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer));
-    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
-    glPixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
-    glPixelStorei(GL_UNPACK_SKIP_ROWS, skipRows);
-    glPixelStorei(GL_UNPACK_SKIP_PIXELS, skipPixels);
     t.version = image.version;
+}
+
+void Canvas::uploadImage(const CanvasImage& img) {
+    if (mImageTextures.count(img.id)) return;
+    GlTexture t = createTexture2d(GL_RGBA32F, img.size.x, img.size.y);
+    UnpackGuard unpack;
+    // Row r of the image becomes texel row r (as the atlases): fetched by the quad's own uv.
+    glTextureSubImage2D(t.id(), 0, 0, 0, img.size.x, img.size.y, GL_RGBA, GL_FLOAT,
+                        img.pixels.data());
+    mImageTextures.emplace(img.id, std::move(t));
 }
 
 void Canvas::flush() {
@@ -521,9 +578,18 @@ void Canvas::flush() {
         return;
     }
     if (!mProgram) createGlObjects();
+    std::vector<uint64_t> drawnImages;
     for (const Batch& b : mBatches) {
         for (int k = 0; k < b.atlasCount; ++k) uploadAtlas(*b.atlases[k]);
+        if (b.image) {
+            uploadImage(*b.image);
+            drawnImages.push_back(b.image->id);
+        }
     }
+    // Textures of images this flush does not draw are dropped (a new grid is a new image).
+    std::erase_if(mImageTextures, [&](const auto& kv) {
+        return std::find(drawnImages.begin(), drawnImages.end(), kv.first) == drawnImages.end();
+    });
     glNamedBufferData(mVertexBuffer.id(),
                       static_cast<GLsizeiptr>(mVertices.size() * sizeof(Vertex)), mVertices.data(),
                       GL_STREAM_DRAW);
@@ -565,6 +631,10 @@ void Canvas::flush() {
             glBindTextureUnit(k, mAtlasTextures.at(b.atlases[k]).texture.id());
             // A sampler object left bound by someone else could make the texture incomplete.
             glBindSampler(k, 0);
+        }
+        if (b.image) {
+            glBindTextureUnit(IMAGE_UNIT, mImageTextures.at(b.image->id).id());
+            glBindSampler(IMAGE_UNIT, 0);
         }
         // Scissor boxes count rows from the bottom.
         glScissor(b.clip.x, mTargetSize.y - b.clip.w, b.clip.z - b.clip.x, b.clip.w - b.clip.y);

@@ -35,6 +35,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <memory>
 #include <span>
 #include <string_view>
 #include <unordered_map>
@@ -50,6 +51,16 @@ namespace pcf {
 
 enum class TextAlign { Left, Center, Right };
 
+// A picture for Canvas::image: RGBA, straight alpha, floats in [0,1], rows top-down. Floats, so a
+// texel holds exactly the colour a fillRect would have drawn (an 8-bit texel would round it).
+// Each CanvasImage gets its own id; the canvas keeps its texture while frames draw the same one.
+struct CanvasImage {
+    CanvasImage(glm::ivec2 size, std::vector<glm::vec4> pixels);
+    glm::ivec2 size{0, 0};
+    std::vector<glm::vec4> pixels;  // size.x * size.y, row 0 = the top row
+    uint64_t id = 0;
+};
+
 struct TextStyle {
     FontFace face = FontFace::Sans;
     float pixelSize = 16.0f;  // em size in pixels (the atlas is rasterised at exactly this size)
@@ -62,6 +73,8 @@ class Canvas {
   public:
     // Glyph atlases one draw call can read (texture units 0..7).
     static constexpr int MAX_ATLASES_PER_DRAW = 8;
+    // The texture unit of a batch's image (Canvas::image), after the atlases'.
+    static constexpr int IMAGE_UNIT = MAX_ATLASES_PER_DRAW;
 
     Canvas();
     ~Canvas();
@@ -91,6 +104,11 @@ class Canvas {
     void arrow(glm::vec2 from, glm::vec2 to, float width, const Colour& colour);
     // A filled convex polygon, either winding, antialiased edges.
     void convexPolygon(std::span<const glm::vec2> points, const Colour& colour);
+    // The image 1:1 with its top-left corner at the whole pixel `topLeft`: each pixel blended
+    // "over" with its texel's colour exactly as fillRect of that pixel and colour would, and
+    // texels of alpha 0 left alone. One quad however busy the picture (the scene's texel grid:
+    // thousands of 1-pixel runs as rects). One image per batch: a different one ends the batch.
+    void image(glm::ivec2 topLeft, std::shared_ptr<const CanvasImage> img);
 
     // One line of text per '\n'; pos is the top-left corner of the first line box (rounded to
     // whole pixels), or its top-middle / top-right for TextAlign::Center / Right (per line).
@@ -125,14 +143,15 @@ class Canvas {
         glm::vec2 pos;     // pixels, top-left origin
         glm::vec2 uv;      // atlas texel coordinates (glyphs only)
         glm::vec4 colour;  // straight alpha
-        int32_t slot;      // -1 = solid colour, 0..7 = glyph atlas on that texture unit
+        int32_t slot;      // -1 = solid colour, -2 = the batch's image, 0..7 = glyph atlas
     };
     struct Batch {
         size_t first = 0;
         size_t count = 0;
         std::array<const GlyphAtlas*, MAX_ATLASES_PER_DRAW> atlases{};
         int atlasCount = 0;
-        glm::ivec4 clip{0, 0, 0, 0};  // x0, y0, x1, y1 in pixels, top-left origin
+        std::shared_ptr<const CanvasImage> image;  // read on IMAGE_UNIT by slot -2
+        glm::ivec4 clip{0, 0, 0, 0};               // x0, y0, x1, y1 in pixels, top-left origin
     };
     struct AtlasTexture {
         GlTexture texture;
@@ -141,6 +160,8 @@ class Canvas {
     };
 
     Batch& currentBatch();
+    // A batch with the clip of the current one, starting at the next vertex.
+    Batch& newBatch();
     int atlasSlot(const GlyphAtlas& atlas);
     void setClip(glm::ivec4 clip);
     void triangle(const Vertex& a, const Vertex& b, const Vertex& c);
@@ -154,6 +175,7 @@ class Canvas {
                     const TextStyle& style);
     void createGlObjects();
     void uploadAtlas(const GlyphAtlas& atlas);
+    void uploadImage(const CanvasImage& img);
 
     glm::ivec2 mTargetSize{0, 0};
     // An opaque, pixel-aligned rect that no earlier vertex of this flush touches: flush()
@@ -176,6 +198,8 @@ class Canvas {
     GlVertexArray mVertexArray;
     GlBuffer mVertexBuffer;
     std::unordered_map<const GlyphAtlas*, AtlasTexture> mAtlasTextures;
+    // Images' textures by CanvasImage::id; those the last flush did not draw are dropped.
+    std::unordered_map<uint64_t, GlTexture> mImageTextures;
 };
 
 }  // namespace pcf

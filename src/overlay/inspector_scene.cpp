@@ -51,36 +51,49 @@ void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
         enum Kind { NONE, FOOTPRINT_EDGE, EDGE, FOOTPRINT };
         const Colour colours[] = {Colour{0.0f}, Colour{0.1f, 0.9f, 1.0f, 0.95f},
                                   Colour{0.05f, 0.05f, 0.1f, 0.35f}, FOOTPRINT_TINT};
-        // Per row, runs of pixels of one kind become one rect.
-        std::vector<std::pair<Rect, Colour>> runs;
-        for (int y = m.pixel.y - radius; y <= m.pixel.y + radius; ++y) {
-            Kind runKind = NONE;
-            int runStart = 0;
-            for (int x = m.pixel.x - radius; x <= m.pixel.x + radius + 1; ++x) {
-                Kind kind = NONE;
-                glm::ivec2 tx, left, up;
-                if (x <= m.pixel.x + radius && texelAt(x, y, tx)) {
+        // One picture over the box of pixels around the picked one that have a colour, each
+        // pixel the colour of its kind, drawn as one quad: as thousands of 1-pixel-high runs of
+        // rects it cost llvmpipe more per frame than the rest of the overlay (Canvas::image
+        // blends each texel exactly as fillRect of that pixel did, so the frame's bytes are the
+        // same). Without the grid only the footprint's few texels are tinted: a small picture.
+        glm::ivec2 lo = glm::max(m.pixel - radius, glm::ivec2(0));
+        glm::ivec2 hi = glm::min(m.pixel + radius, m.sceneSize - 1);
+        if (hi.x >= lo.x && hi.y >= lo.y) {
+            glm::ivec2 size = hi - lo + 1;
+            std::vector<uint8_t> kinds(static_cast<size_t>(size.x) * size.y, NONE);
+            glm::ivec2 used0 = hi + 1, used1 = lo - 1;  // the box of coloured pixels
+            for (int y = lo.y; y <= hi.y; ++y) {
+                for (int x = lo.x; x <= hi.x; ++x) {
+                    glm::ivec2 tx, left, up;
+                    if (!texelAt(x, y, tx)) continue;
                     bool inFootprint = tx.x >= n.origin.x && tx.y >= n.origin.y &&
                                        tx.x < n.origin.x + n.size.x && tx.y < n.origin.y + n.size.y;
                     bool edge = drawEdges && ((texelAt(x - 1, y, left) && left != tx) ||
                                               (texelAt(x, y - 1, up) && up != tx));
-                    kind = edge ? (inFootprint ? FOOTPRINT_EDGE : EDGE)
-                                : (inFootprint ? FOOTPRINT : NONE);
-                }
-                if (kind != runKind) {
-                    if (runKind != NONE) {
-                        runs.push_back({{origin.x + runStart, origin.y + y,
-                                         static_cast<float>(x - runStart), 1.0f},
-                                        colours[runKind]});
-                    }
-                    runKind = kind;
-                    runStart = x;
+                    Kind kind = edge ? (inFootprint ? FOOTPRINT_EDGE : EDGE)
+                                     : (inFootprint ? FOOTPRINT : NONE);
+                    if (kind == NONE) continue;
+                    kinds[static_cast<size_t>(y - lo.y) * size.x + (x - lo.x)] =
+                        static_cast<uint8_t>(kind);
+                    used0 = glm::min(used0, glm::ivec2(x, y));
+                    used1 = glm::max(used1, glm::ivec2(x, y));
                 }
             }
+            if (used1.x >= used0.x && used1.y >= used0.y) {
+                glm::ivec2 box = used1 - used0 + 1;
+                std::vector<glm::vec4> pixels(static_cast<size_t>(box.x) * box.y);
+                for (int y = 0; y < box.y; ++y) {
+                    for (int x = 0; x < box.x; ++x) {
+                        glm::ivec2 q = used0 - lo + glm::ivec2(x, y);
+                        pixels[static_cast<size_t>(y) * box.x + x] =
+                            colours[kinds[static_cast<size_t>(q.y) * size.x + q.x]];
+                    }
+                }
+                auto image = std::make_shared<const CanvasImage>(box, std::move(pixels));
+                glm::ivec2 at = glm::ivec2(glm::round(origin)) + used0;
+                pl.op([image, at](Canvas& c) { c.image(at, image); });
+            }
         }
-        pl.op([runs = std::move(runs)](Canvas& c) {
-            for (const auto& [r, col] : runs) c.fillRect(r, col);
-        });
     }
     float ringR = std::max(7.0f, 9.0f * l.scale);
     pl.op([=](Canvas& c) {
