@@ -48,13 +48,13 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
               "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,"
               "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,"
               "acne_share,acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,"
-              "shimmer_mean,shimmer_p99,flicker_share,change_mean");
+              "shimmer_mean,shimmer_p99,flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms");
     std::set<std::string> methods;
     int rows = 0;
     while (std::getline(csv, line)) {
         ++rows;
         std::vector<std::string> f = splitCsvLine(line);
-        ASSERT_EQ(f.size(), 27u) << line;
+        ASSERT_EQ(f.size(), 29u) << line;
         methods.insert(f[0]);
         bool kernelMethod =
             f[0] == "pcf-naive" || f[0] == "pcf-gather" || f[0] == "pcf-hw" || f[0] == "tent";
@@ -73,6 +73,10 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
         EXPECT_GE(std::stod(f[11]), 0.0) << line;  // gpu_ms_iqr
         EXPECT_GT(std::stod(f[12]), 0.0) << line;  // lookup_ms
         EXPECT_GE(std::stod(f[13]), 0.0) << line;  // lookup_ms_iqr
+        // gpu_cpu_ms, lookup_cpu_ms: the passes' CPU time where the CPU renders, else 0
+        bool cpuRenders = f[10] == "glFinish+steady_clock";
+        EXPECT_EQ(std::stod(f[27]) > 0.0, cpuRenders) << line;
+        EXPECT_EQ(std::stod(f[28]) > 0.0, cpuRenders) << line;
         // noisy exactly when an IQR is above 10 % of its median (to the CSV's 4 decimals)
         EXPECT_TRUE(f[14] == "0" || f[14] == "1") << line;
         bool noisy = std::stod(f[11]) > 0.1 * std::stod(f[3]) + 1e-4 ||

@@ -1,10 +1,10 @@
 // shaders/shared/pcf_shading.h: the camera pass's gamma encoding, the same source the fragment
 // shader runs, bounded against the pow it stands for over the whole range scene.frag feeds it.
+#include "kernel/shading.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "kernel/shading.h"
 
 namespace {
 

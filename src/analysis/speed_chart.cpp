@@ -142,26 +142,12 @@ double chartAccuracy(const BenchRow& row, ChartAccuracy accuracy) {
     return accuracy == ChartAccuracy::Shimmer ? row.shimmer.flickerP99 : row.error.edgeRmse;
 }
 
-SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
-                                  ChartTiming timing, ChartAccuracy accuracy,
-                                  std::span<const size_t> keepLabels, float minFontPx,
-                                  bool keptLabelsOnly) {
-    if (size.x < 64 || size.y < 64) {
-        throw std::invalid_argument("layoutSpeedChart: the chart needs at least 64 x 64 pixels");
-    }
-    SpeedChartLayout L;
-    L.size = size;
-    float s = std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
-    L.scale = s;
-    Fonts f = fontsFor(s, minFontPx);
-    L.titlePx = f.title;
-    L.subtitlePx = f.subtitle;
-    L.axisPx = f.axis;
-    L.tickPx = f.tick;
-    L.labelPx = f.label;
-    L.legendPx = f.legend;
+namespace {
 
-    // Legend: the methods present, then the front's entry.
+// The legend: the methods present (in the rows' order), then the front's entry, and the note
+// on "!" wrapped to the names' width. Returns the legend's width and height.
+glm::vec2 layoutLegend(SpeedChartLayout& L, std::span<const BenchRow> rows, const Fonts& f,
+                       float s) {
     for (const BenchRow& r : rows) {
         if (std::find(L.legendMethods.begin(), L.legendMethods.end(), r.point.method) ==
             L.legendMethods.end()) {
@@ -183,57 +169,74 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     float legendW = std::round(swatch + legendText + 16.0f * s);
     float legendH =
         std::round((static_cast<float>(L.legendMethods.size()) + 1.0f) * lineH + 12.0f * s);
+    return {legendW, legendH};
+}
 
-    float titleH = fontMetrics(FontFace::Sans, f.title).lineHeight +
-                   fontMetrics(FontFace::Sans, f.subtitle).lineHeight +
-                   fontMetrics(FontFace::Sans, f.axis).lineHeight + 14.0f * s;
-    // The y axis: 0 to the largest error, in round steps (its tick labels set the left margin).
+// The y axis: 0 to the largest error, in round steps. Returns the step.
+double layoutYRange(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartAccuracy accuracy) {
     double yMax = 0.0;
     for (const BenchRow& r : rows) yMax = std::max(yMax, chartAccuracy(r, accuracy));
     double yStep = chartNiceStep(std::max(yMax * 1.08, 1e-6) / 7.0);
     L.yLo = 0.0;
     L.yHi = std::ceil(std::max(yMax * 1.08, 1e-6) / yStep) * yStep;
+    return yStep;
+}
+
+// The plot's and the legend's rectangles: the title above, the y tick labels on the left, the
+// legend on the right and the x ticks and name below.
+void layoutFrame(SpeedChartLayout& L, const Fonts& f, float s, double yStep, glm::vec2 legendSize) {
+    float titleH = fontMetrics(FontFace::Sans, f.title).lineHeight +
+                   fontMetrics(FontFace::Sans, f.subtitle).lineHeight +
+                   fontMetrics(FontFace::Sans, f.axis).lineHeight + 14.0f * s;
     float yTickW = 0.0f;
     for (double v = 0.0; v <= L.yHi + 0.5 * yStep; v += yStep) {
         std::string t = chartTickText(std::round(v / yStep) * yStep);
         yTickW = std::max(yTickW, measureText(FontFace::Sans, f.tick, t).x);
     }
     float left = std::round(std::max(62.0f * s, yTickW + 12.0f * s + 4.0f));
-    float right = std::round(legendW + 28.0f * s);
+    float right = std::round(legendSize.x + 28.0f * s);
     float top = std::round(titleH);
     float bottom = std::round(fontMetrics(FontFace::Sans, f.tick).lineHeight +
                               fontMetrics(FontFace::Sans, f.axis).lineHeight + 20.0f * s);
-    L.plot = {left, top, std::max(16.0f, size.x - left - right),
-              std::max(16.0f, size.y - top - bottom)};
-    L.legend = {L.plot.right() + 16.0f * s, L.plot.y, legendW, legendH};
+    L.plot = {left, top, std::max(16.0f, L.size.x - left - right),
+              std::max(16.0f, L.size.y - top - bottom)};
+    L.legend = {L.plot.right() + 16.0f * s, L.plot.y, legendSize.x, legendSize.y};
+}
 
-    // Axes. x: log10 of the time, padded by 6% of the span (at least 0.1 decade a side).
+// A row's error bar ends on the log axis. The bar's low end stays above a tenth of the median.
+double barLogLo(const BenchRow& r, ChartTiming timing) {
+    double ms = chartMs(r, timing);
+    return safeLog(std::max(ms - 0.5 * chartIqr(r, timing), 0.1 * ms));
+}
+
+double barLogHi(const BenchRow& r, ChartTiming timing) {
+    return safeLog(chartMs(r, timing) + 0.5 * chartIqr(r, timing));
+}
+
+// The x axis: log10 of the time, padded by 6% of the span (at least 0.1 decade a side).
+void layoutXRange(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTiming timing) {
     double xMin = 1e300, xMax = -1e300;
-    // The bar's low end stays above a tenth of the median on the log axis.
-    auto barLo = [&](const BenchRow& r) {
-        double ms = chartMs(r, timing);
-        return safeLog(std::max(ms - 0.5 * chartIqr(r, timing), 0.1 * ms));
-    };
-    auto barHi = [&](const BenchRow& r) {
-        return safeLog(chartMs(r, timing) + 0.5 * chartIqr(r, timing));
-    };
     for (const BenchRow& r : rows) {
-        xMin = std::min(xMin, barLo(r));
-        xMax = std::max(xMax, barHi(r));
+        xMin = std::min(xMin, barLogLo(r, timing));
+        xMax = std::max(xMax, barLogHi(r, timing));
     }
     if (rows.empty()) xMin = xMax = 0.0;
     double pad = std::max(0.1, 0.06 * (xMax - xMin));
     L.xLogLo = xMin - pad;
     L.xLogHi = xMax + pad;
+}
 
-    auto xPixel = [&](double logMs) {
-        return L.plot.x + static_cast<float>((logMs - L.xLogLo) / (L.xLogHi - L.xLogLo)) * L.plot.w;
-    };
-    auto yPixel = [&](double e) {
-        return L.plot.bottom() - static_cast<float>((e - L.yLo) / (L.yHi - L.yLo)) * L.plot.h;
-    };
-    // x ticks at m x 10^k: m = 1, 2, 5 (denser on a narrow axis, only the 1s labelled on a
-    // wide one), so that a few labels always show.
+float xPixelOf(const SpeedChartLayout& L, double logMs) {
+    return L.plot.x + static_cast<float>((logMs - L.xLogLo) / (L.xLogHi - L.xLogLo)) * L.plot.w;
+}
+
+float yPixelOf(const SpeedChartLayout& L, double e) {
+    return L.plot.bottom() - static_cast<float>((e - L.yLo) / (L.yHi - L.yLo)) * L.plot.h;
+}
+
+// The ticks of both axes. x ticks at m x 10^k: m = 1, 2, 5 (denser on a narrow axis, only the
+// 1s labelled on a wide one), so that a few labels always show.
+void layoutTicks(SpeedChartLayout& L, double yStep) {
     double span = L.xLogHi - L.xLogLo;
     // Narrow ranges label every integer mantissa 1..9, wider ones fewer.
     std::vector<double> mantissas{1, 2, 5};
@@ -249,18 +252,22 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
             double v = m * std::pow(10.0, k);
             double lv = std::log10(v);
             if (lv < L.xLogLo || lv > L.xLogHi) continue;
-            L.xTicks.push_back({v, xPixel(lv), (!wide || m == 1.0) ? chartTickText(v) : ""});
+            L.xTicks.push_back({v, xPixelOf(L, lv), (!wide || m == 1.0) ? chartTickText(v) : ""});
         }
     }
     for (double v = 0.0; v <= L.yHi + 0.5 * yStep; v += yStep) {
-        L.yTicks.push_back({v, yPixel(v), chartTickText(std::round(v / yStep) * yStep)});
+        L.yTicks.push_back({v, yPixelOf(L, v), chartTickText(std::round(v / yStep) * yStep)});
     }
+}
 
-    // Dots, the front, and the labels.
+// The dots, their error bars, their label texts and the Pareto front.
+void layoutDots(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTiming timing,
+                ChartAccuracy accuracy) {
     for (const BenchRow& r : rows) {
-        L.points.emplace_back(xPixel(safeLog(chartMs(r, timing))),
-                              yPixel(chartAccuracy(r, accuracy)));
-        L.errorBars.emplace_back(xPixel(barLo(r)), xPixel(barHi(r)));
+        L.points.emplace_back(xPixelOf(L, safeLog(chartMs(r, timing))),
+                              yPixelOf(L, chartAccuracy(r, accuracy)));
+        L.errorBars.emplace_back(xPixelOf(L, barLogLo(r, timing)),
+                                 xPixelOf(L, barLogHi(r, timing)));
         L.labelTexts.push_back(chartLabel(r.point) + (r.noisy ? " !" : ""));
     }
     std::vector<glm::dvec2> frontPoints;
@@ -268,6 +275,121 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
         frontPoints.emplace_back(chartMs(r, timing), chartAccuracy(r, accuracy));
     }
     L.front = paretoFront(frontPoints, PARETO_ERROR_TOLERANCE);
+}
+
+// The order labels are placed in: the front's first, then the kept rows', then the rest.
+std::vector<size_t> labelOrder(const std::vector<size_t>& front,
+                               const std::vector<bool>& needLabel) {
+    std::vector<size_t> order = front;
+    for (bool needed : {true, false}) {
+        for (size_t k = 0; k < needLabel.size(); ++k) {
+            bool onFront = std::find(front.begin(), front.end(), k) != front.end();
+            if (!onFront && needLabel[k] == needed) order.push_back(k);
+        }
+    }
+    return order;
+}
+
+struct LabelSpot {
+    Rect box;
+    float overlap = 1e30f;  // the spot's cost less its ring term: < 0.5 for a clean spot
+};
+
+// The first spot around dot p for a label of size t (right, left, above, below, the diagonals;
+// then the same farther out) that overlaps no placed label, no dot and stays in the plot, else
+// the spot that overlaps least.
+LabelSpot bestLabelSpot(const SpeedChartLayout& L, glm::vec2 p, glm::vec2 t, bool mustShow,
+                        const std::vector<Rect>& placed, const std::vector<Rect>& dots, float s) {
+    Rect best;
+    float bestCost = 1e30f;
+    float bestRing = 0.0f;
+    // A label the chart must show may look farther out (with a leader) before it settles
+    // on a spot that covers another.
+    for (float ring : {1.0f, 2.2f, 3.6f, 5.2f, 7.0f}) {
+        if (ring > 4.0f && !mustShow) break;
+        float r = (L.dotRadius + 3.0f * s) * ring;
+        float d = 0.7f * r;
+        const glm::vec2 spots[8] = {
+            {p.x + r, p.y - t.y / 2},       {p.x - r - t.x, p.y - t.y / 2},
+            {p.x - t.x / 2, p.y - r - t.y}, {p.x - t.x / 2, p.y + r},
+            {p.x + d, p.y - d - t.y},       {p.x + d, p.y + d},
+            {p.x - d - t.x, p.y - d - t.y}, {p.x - d - t.x, p.y + d},
+        };
+        for (glm::vec2 spot : spots) {
+            Rect box{std::round(spot.x), std::round(spot.y), t.x, t.y};
+            float cost = 4.0f * outsideArea(box, L.plot);
+            for (const Rect& o : placed) cost += overlapArea(box, o);
+            for (const Rect& o : dots) cost += 2.0f * overlapArea(box, o);
+            if (mustShow) cost *= 100.0f;  // a leader farther out beats covering a name
+            cost += ring;                  // prefer the nearest ring among equals
+            if (cost < bestCost) {
+                bestCost = cost;
+                bestRing = ring;
+                best = box;
+            }
+        }
+        if (bestCost - bestRing < 0.5f) break;  // a clean spot (cost = the ring term)
+    }
+    return {best, bestCost - bestRing};
+}
+
+// Greedy label placement: the front's labels first, then the rest; each at bestLabelSpot.
+void placeLabels(SpeedChartLayout& L, std::span<const BenchRow> rows,
+                 const std::vector<bool>& needLabel, bool keptLabelsOnly) {
+    float s = L.scale;
+    float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
+    std::vector<Rect> dots;
+    float dotR = L.dotRadius;
+    for (glm::vec2 p : L.points) dots.push_back({p.x - dotR, p.y - dotR, 2 * dotR, 2 * dotR});
+    std::vector<Rect> placed;
+    for (size_t k : labelOrder(L.front, needLabel)) {
+        if (keptLabelsOnly && !needLabel[k]) continue;
+        glm::vec2 t = measureText(FontFace::Sans, L.labelPx, L.labelTexts[k]);
+        bool needed = k < needLabel.size() && needLabel[k];
+        LabelSpot spot = bestLabelSpot(L, L.points[k], t, needed, placed, dots, s);
+        // A label that finds no clean spot is left out, unless the front or the caller needs
+        // it: a crowd of overlapping names reads as noise on a projector; the dot keeps its
+        // method's colour, which the legend names.
+        if ((spot.overlap > 0.5f || keptLabelsOnly) && !needed) continue;
+        L.labels[k] = spot.box;
+        L.labelShown[k] = true;
+        placed.push_back(spot.box);
+        // A drawn " !" gets the legend's line that says what it means.
+        if (rows[k].noisy && !L.noisyNote) {
+            L.noisyNote = true;
+            L.legend.h += static_cast<float>(L.noisyLines.size()) * lineH;
+        }
+    }
+}
+
+}  // namespace
+
+SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
+                                  ChartTiming timing, ChartAccuracy accuracy,
+                                  std::span<const size_t> keepLabels, float minFontPx,
+                                  bool keptLabelsOnly) {
+    if (size.x < 64 || size.y < 64) {
+        throw std::invalid_argument("layoutSpeedChart: the chart needs at least 64 x 64 pixels");
+    }
+    SpeedChartLayout L;
+    L.size = size;
+    float s = std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
+    L.scale = s;
+    Fonts f = fontsFor(s, minFontPx);
+    L.titlePx = f.title;
+    L.subtitlePx = f.subtitle;
+    L.axisPx = f.axis;
+    L.tickPx = f.tick;
+    L.labelPx = f.label;
+    L.legendPx = f.legend;
+
+    glm::vec2 legendSize = layoutLegend(L, rows, f, s);
+    double yStep = layoutYRange(L, rows, accuracy);
+    layoutFrame(L, f, s, yStep, legendSize);
+    layoutXRange(L, rows, timing);
+    layoutTicks(L, yStep);
+    layoutDots(L, rows, timing, accuracy);
+
     L.labels.assign(rows.size(), Rect{});
     L.labelShown.assign(rows.size(), false);
     std::vector<bool> needLabel(rows.size(), false);
@@ -275,71 +397,8 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     for (size_t k : keepLabels) {
         if (k < rows.size()) needLabel[k] = true;
     }
-
-    // Greedy placement: the front's labels first, then the rest; each takes the first spot
-    // around its dot (right, left, above, below, the diagonals; then the same farther out) that
-    // overlaps no placed label, no dot and stays in the plot, else the spot that overlaps least.
-    std::vector<size_t> order = L.front;
-    for (bool needed : {true, false}) {  // then the kept rows, then the rest
-        for (size_t k = 0; k < rows.size(); ++k) {
-            bool onFront = std::find(L.front.begin(), L.front.end(), k) != L.front.end();
-            if (!onFront && needLabel[k] == needed) order.push_back(k);
-        }
-    }
-    float dotR = std::max(4.5f * s, std::round(f.label * 0.25f));
-    L.dotRadius = dotR;
-    std::vector<Rect> dots;
-    for (glm::vec2 p : L.points) dots.push_back({p.x - dotR, p.y - dotR, 2 * dotR, 2 * dotR});
-    std::vector<Rect> placed;
-    for (size_t k : order) {
-        if (keptLabelsOnly && !needLabel[k]) continue;
-        glm::vec2 t = measureText(FontFace::Sans, f.label, L.labelTexts[k]);
-        glm::vec2 p = L.points[k];
-        Rect best;
-        float bestCost = 1e30f;
-        float bestRing = 0.0f;
-        // A label the chart must show may look farther out (with a leader) before it settles
-        // on a spot that covers another.
-        bool mustShow = k < needLabel.size() && needLabel[k];
-        for (float ring : {1.0f, 2.2f, 3.6f, 5.2f, 7.0f}) {
-            if (ring > 4.0f && !mustShow) break;
-            float r = (dotR + 3.0f * s) * ring;
-            float d = 0.7f * r;
-            const glm::vec2 spots[8] = {
-                {p.x + r, p.y - t.y / 2},       {p.x - r - t.x, p.y - t.y / 2},
-                {p.x - t.x / 2, p.y - r - t.y}, {p.x - t.x / 2, p.y + r},
-                {p.x + d, p.y - d - t.y},       {p.x + d, p.y + d},
-                {p.x - d - t.x, p.y - d - t.y}, {p.x - d - t.x, p.y + d},
-            };
-            for (glm::vec2 spot : spots) {
-                Rect box{std::round(spot.x), std::round(spot.y), t.x, t.y};
-                float cost = 4.0f * outsideArea(box, L.plot);
-                for (const Rect& o : placed) cost += overlapArea(box, o);
-                for (const Rect& o : dots) cost += 2.0f * overlapArea(box, o);
-                if (mustShow) cost *= 100.0f;  // a leader farther out beats covering a name
-                cost += ring;                  // prefer the nearest ring among equals
-                if (cost < bestCost) {
-                    bestCost = cost;
-                    bestRing = ring;
-                    best = box;
-                }
-            }
-            if (bestCost - bestRing < 0.5f) break;  // a clean spot (cost = the ring term)
-        }
-        // A label that finds no clean spot is left out, unless the front or the caller needs
-        // it: a crowd of overlapping names reads as noise on a projector; the dot keeps its
-        // method's colour, which the legend names.
-        bool needed = k < needLabel.size() && needLabel[k];
-        if ((bestCost - bestRing > 0.5f || keptLabelsOnly) && !needed) continue;
-        L.labels[k] = best;
-        L.labelShown[k] = true;
-        placed.push_back(best);
-        // A drawn " !" gets the legend's line that says what it means.
-        if (rows[k].noisy && !L.noisyNote) {
-            L.noisyNote = true;
-            L.legend.h += static_cast<float>(L.noisyLines.size()) * lineH;
-        }
-    }
+    L.dotRadius = std::max(4.5f * s, std::round(f.label * 0.25f));
+    placeLabels(L, rows, needLabel, keptLabelsOnly);
     return L;
 }
 
@@ -399,94 +458,126 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
     return out;
 }
 
+namespace {
+
+// The grid lines at the ticks and the plot's frame.
+void drawGrid(Canvas& c, const SpeedChartLayout& L) {
+    float stroke = std::max(1.0f, std::round(L.scale));
+    for (const ChartTick& t : L.xTicks) {
+        float x = std::round(t.pixel) + 0.5f;
+        c.line({x, L.plot.y}, {x, L.plot.bottom()}, stroke, CHART_GRID);
+    }
+    for (const ChartTick& t : L.yTicks) {
+        float y = std::round(t.pixel) + 0.5f;
+        c.line({L.plot.x, y}, {L.plot.right(), y}, stroke, CHART_GRID);
+    }
+    c.strokeRect(L.plot.expanded(stroke), stroke, CHART_SOFT_INK);
+}
+
+// Error bars: the IQR of the time, with end ticks.
+void drawErrorBars(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRow> rows) {
+    float s = L.scale;
+    for (size_t k = 0; k < rows.size(); ++k) {
+        glm::vec2 bar = L.errorBars[k];
+        if (bar.y - bar.x < 1.0f) continue;
+        float y = L.points[k].y;
+        glm::vec4 ink = methodColour(rows[k].point.method) * 0.7f;
+        ink.a = 1.0f;
+        float w = std::max(1.0f, 1.25f * s);
+        c.line({bar.x, y}, {bar.y, y}, w, ink);
+        c.line({bar.x, y - 3.0f * s}, {bar.x, y + 3.0f * s}, w, ink);
+        c.line({bar.y, y - 3.0f * s}, {bar.y, y + 3.0f * s}, w, ink);
+    }
+}
+
+// Inside the plot, bottom to top: the front's line, the error bars, the front's rings, the
+// highlighted dots' rings and the dots.
+void drawPlotMarks(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRow> rows,
+                   std::span<const size_t> highlight) {
+    float s = L.scale;
+    c.pushClip(L.plot.expanded(2.0f * s));
+    for (size_t k = 1; k < L.front.size(); ++k) {
+        c.line(L.points[L.front[k - 1]], L.points[L.front[k]], std::max(1.5f, 1.5f * s), FRONT);
+    }
+    float dotR = L.dotRadius;
+    float ring = std::max(1.5f, 1.5f * s);  // the front's line and rings
+    drawErrorBars(c, L, rows);
+    for (size_t k : L.front) c.ring(L.points[k], dotR + 2.5f * s, ring, FRONT);
+    // The dots a lesson step talks about: a thick orange ring outside the front's.
+    for (size_t k : highlight) {
+        if (k < rows.size()) {
+            c.ring(L.points[k], dotR + 5.5f * s, std::max(2.5f, 3.0f * s),
+                   glm::vec4(1.0f, 0.55f, 0.0f, 1.0f));
+        }
+    }
+    for (size_t k = 0; k < rows.size(); ++k) {
+        c.circle(L.points[k], dotR, methodColour(rows[k].point.method));
+    }
+    c.popClip();
+}
+
+// Leaders, where a crowd pushed a label away from its dot.
+void drawLeaders(Canvas& c, const SpeedChartLayout& L, size_t rowCount) {
+    for (size_t k = 0; k < rowCount; ++k) {
+        if (!L.labelShown[k]) continue;
+        const Rect& box = L.labels[k];
+        glm::vec2 p = L.points[k];
+        glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
+        if (glm::length(nearest - p) > 2.5f * L.dotRadius) {
+            c.line(p, nearest, std::max(1.0f, 0.75f * L.scale),
+                   CHART_GRID * 0.8f + CHART_SOFT_INK * 0.2f);
+        }
+    }
+}
+
+// The legend's box and swatches (the names are texts of speedChartTextBoxes).
+void drawLegendMarks(Canvas& c, const SpeedChartLayout& L) {
+    float s = L.scale;
+    float stroke = std::max(1.0f, std::round(s));
+    float dotR = L.dotRadius;
+    float ring = std::max(1.5f, 1.5f * s);
+    float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
+    c.fillRect(L.legend, {0.97f, 0.97f, 0.98f, 1.0f});
+    c.strokeRect(L.legend, stroke, CHART_GRID);
+    float y = L.legend.y + 6.0f * s;
+    float swatchX = L.legend.x + 12.0f * s;
+    for (int m : L.legendMethods) {
+        c.circle({swatchX, y + lineH / 2}, dotR, methodColour(m));
+        y += lineH;
+    }
+    c.line({swatchX - 8.0f * s, y + lineH / 2}, {swatchX + 8.0f * s, y + lineH / 2}, 1.5f * s,
+           FRONT);
+    c.ring({swatchX, y + lineH / 2}, dotR + 2.5f * s, ring, FRONT);
+}
+
+// Every text where speedChartTextBoxes put it; a dot's label in a darker shade of its colour.
+void drawTexts(Canvas& c, std::span<const ChartTextBox> texts, std::span<const BenchRow> rows) {
+    for (const ChartTextBox& b : texts) {
+        Colour ink = CHART_INK;
+        if (b.role == "chart-subtitle" || b.role == "chart-tick") ink = CHART_SOFT_INK;
+        if (b.role == "chart-label" && b.row >= 0 && static_cast<size_t>(b.row) < rows.size()) {
+            ink = methodColour(rows[static_cast<size_t>(b.row)].point.method) * 0.55f;
+            ink.a = 1.0f;
+        }
+        c.text(b.rect.position(), b.text, {FontFace::Sans, b.fontPx, ink});
+    }
+}
+
+}  // namespace
+
 std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                     const SpeedChartText& text, ChartTiming timing,
                                     ChartAccuracy accuracy) {
     SpeedChartLayout L = layoutSpeedChart(rows, size, timing, accuracy, text.highlight,
                                           text.minFontPx, text.keptLabelsOnly);
     std::vector<ChartTextBox> texts = speedChartTextBoxes(L, text);
-    float s = L.scale;
 
     return drawChartOffscreen(size, [&](Canvas& c) {
-        // Grid.
-        float stroke = std::max(1.0f, std::round(s));
-        for (const ChartTick& t : L.xTicks) {
-            float x = std::round(t.pixel) + 0.5f;
-            c.line({x, L.plot.y}, {x, L.plot.bottom()}, stroke, CHART_GRID);
-        }
-        for (const ChartTick& t : L.yTicks) {
-            float y = std::round(t.pixel) + 0.5f;
-            c.line({L.plot.x, y}, {L.plot.right(), y}, stroke, CHART_GRID);
-        }
-        c.strokeRect(L.plot.expanded(stroke), stroke, CHART_SOFT_INK);
-
-        c.pushClip(L.plot.expanded(2.0f * s));
-        // The front, under the dots.
-        for (size_t k = 1; k < L.front.size(); ++k) {
-            c.line(L.points[L.front[k - 1]], L.points[L.front[k]], std::max(1.5f, 1.5f * s), FRONT);
-        }
-        float dotR = L.dotRadius;
-        float ring = std::max(1.5f, 1.5f * s);  // the front's line and rings
-        // Error bars: the IQR of the time, with end ticks, under the dots.
-        for (size_t k = 0; k < rows.size(); ++k) {
-            glm::vec2 bar = L.errorBars[k];
-            if (bar.y - bar.x < 1.0f) continue;
-            float y = L.points[k].y;
-            glm::vec4 ink = methodColour(rows[k].point.method) * 0.7f;
-            ink.a = 1.0f;
-            float w = std::max(1.0f, 1.25f * s);
-            c.line({bar.x, y}, {bar.y, y}, w, ink);
-            c.line({bar.x, y - 3.0f * s}, {bar.x, y + 3.0f * s}, w, ink);
-            c.line({bar.y, y - 3.0f * s}, {bar.y, y + 3.0f * s}, w, ink);
-        }
-        for (size_t k : L.front) c.ring(L.points[k], dotR + 2.5f * s, ring, FRONT);
-        // The dots a lesson step talks about: a thick orange ring outside the front's.
-        for (size_t k : text.highlight) {
-            if (k < rows.size()) {
-                c.ring(L.points[k], dotR + 5.5f * s, std::max(2.5f, 3.0f * s),
-                       glm::vec4(1.0f, 0.55f, 0.0f, 1.0f));
-            }
-        }
-        for (size_t k = 0; k < rows.size(); ++k) {
-            c.circle(L.points[k], dotR, methodColour(rows[k].point.method));
-        }
-        c.popClip();
-        // Leaders, where a crowd pushed a label away from its dot.
-        for (size_t k = 0; k < rows.size(); ++k) {
-            if (!L.labelShown[k]) continue;
-            const Rect& box = L.labels[k];
-            glm::vec2 p = L.points[k];
-            glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
-            if (glm::length(nearest - p) > 2.5f * dotR) {
-                c.line(p, nearest, std::max(1.0f, 0.75f * s),
-                       CHART_GRID * 0.8f + CHART_SOFT_INK * 0.2f);
-            }
-        }
-
-        // Legend: its box and swatches (the names are texts below).
-        float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
-        c.fillRect(L.legend, {0.97f, 0.97f, 0.98f, 1.0f});
-        c.strokeRect(L.legend, stroke, CHART_GRID);
-        float y = L.legend.y + 6.0f * s;
-        float swatchX = L.legend.x + 12.0f * s;
-        for (int m : L.legendMethods) {
-            c.circle({swatchX, y + lineH / 2}, dotR, methodColour(m));
-            y += lineH;
-        }
-        c.line({swatchX - 8.0f * s, y + lineH / 2}, {swatchX + 8.0f * s, y + lineH / 2}, 1.5f * s,
-               FRONT);
-        c.ring({swatchX, y + lineH / 2}, dotR + 2.5f * s, ring, FRONT);
-
-        // Every text where speedChartTextBoxes put it.
-        for (const ChartTextBox& b : texts) {
-            Colour ink = CHART_INK;
-            if (b.role == "chart-subtitle" || b.role == "chart-tick") ink = CHART_SOFT_INK;
-            if (b.role == "chart-label" && b.row >= 0 && static_cast<size_t>(b.row) < rows.size()) {
-                ink = methodColour(rows[static_cast<size_t>(b.row)].point.method) * 0.55f;
-                ink.a = 1.0f;
-            }
-            c.text(b.rect.position(), b.text, {FontFace::Sans, b.fontPx, ink});
-        }
+        drawGrid(c, L);
+        drawPlotMarks(c, L, rows, text.highlight);
+        drawLeaders(c, L, rows.size());
+        drawLegendMarks(c, L);
+        drawTexts(c, texts, rows);
     });
 }
 

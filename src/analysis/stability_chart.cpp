@@ -141,16 +141,16 @@ glm::vec4 biasColour(std::string_view bias) {
     return CHART_INK;
 }
 
-static void paintLineChart(const LineChartSpec& spec, glm::ivec2 size, Painter& c) {
-    if (size.x < 64 || size.y < 64) {
-        throw std::invalid_argument("drawLineChart: the chart needs at least 64 x 64 pixels");
-    }
-    if (spec.panels.empty()) throw std::invalid_argument("drawLineChart: no panel");
-    float s = scaleFor(size);
-    float mn = spec.minFontPx;
-    // Lines as heavy as the type asks (a projector's 18 px text wants lines over 2 px).
-    float lw = std::max(2.0f * s, mn * 0.14f);
-    // Axis ranges shared by all panels.
+namespace {
+
+struct LineAxes {
+    double xLo, xHi;     // the x range (log10 with logX) shared by all panels
+    double yStep, yTop;  // the y tick step and the axis's top (its bottom: spec.yFloor)
+};
+
+// Axis ranges shared by all panels: x over every point, y from the floor up past the largest
+// value in round steps (a share ends at exactly 100 %).
+LineAxes lineAxesOf(const LineChartSpec& spec) {
     double xLo = 1e300, xHi = -1e300, yHi = spec.yFloor;
     for (const ChartPanel& p : spec.panels) {
         for (const ChartLine& l : p.lines) {
@@ -171,7 +171,11 @@ static void paintLineChart(const LineChartSpec& spec, glm::ivec2 size, Painter& 
         yStep = 0.2;  // a share never passes 100 %: ticks of 20 % up to exactly 100 %
         yTop = 1.0;
     }
+    return {xLo, xHi, yStep, yTop};
+}
 
+// One legend entry per line label, in order of first appearance over the panels.
+std::vector<LegendEntry> lineLegendOf(const LineChartSpec& spec) {
     std::vector<LegendEntry> legend;
     for (const ChartPanel& p : spec.panels) {
         for (const ChartLine& l : p.lines) {
@@ -180,125 +184,176 @@ static void paintLineChart(const LineChartSpec& spec, glm::ivec2 size, Painter& 
             if (!seen) legend.push_back({l.label, l.colour, l.dashed});
         }
     }
+    return legend;
+}
 
-    {
-        float top = drawHeader(c, s, mn, spec.title, spec.subtitle);
-        float legendFont = px(13, s, mn), tickFont = px(12, s, mn), axisFont = px(14, s, mn);
-        float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
-        float legendW = 0.0f;
-        for (const LegendEntry& e : legend) {
-            legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, e.label).x);
-        }
-        for (const std::string& n : spec.notes) {
-            legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
-        }
-        legendW = std::round(legendW + 48.0f * s);
-        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
-        top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
-        float bottomText = fontMetrics(FontFace::Sans, axisFont).lineHeight + 6.0f * s;
-        Rect area{0.0f, top, size.x - legendW - 20.0f * s, size.y - top - bottomText};
-        c.text({area.centre().x, area.bottom() + 2.0f * s}, spec.xLabel,
-               {FontFace::Sans, axisFont, CHART_INK, TextAlign::Center}, "chart-axis");
+// One panel's plot and the maps from its data to pixels.
+struct PanelPlot {
+    const LineChartSpec& spec;
+    const LineAxes& axes;
+    Rect plot;
+    float xPixel(double x) const {
+        double v = spec.logX ? std::log10(std::max(x, 1e-12)) : x;
+        double t = (v - axes.xLo) / (axes.xHi - axes.xLo);
+        if (spec.reverseX) t = 1.0 - t;
+        return plot.x + static_cast<float>(t) * plot.w;
+    }
+    float yPixel(double y) const {
+        return plot.bottom() -
+               static_cast<float>((y - spec.yFloor) / (axes.yTop - spec.yFloor)) * plot.h;
+    }
+};
 
-        int n = static_cast<int>(spec.panels.size());
-        int cols = n <= 2 ? n : (n <= 4 ? 2 : 3);
-        int rowsN = (n + cols - 1) / cols;
-        float cellW = area.w / cols, cellH = area.h / rowsN;
-        float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
-        float stroke = std::max(1.0f, std::round(s));
-        for (int k = 0; k < n; ++k) {
-            const ChartPanel& panel = spec.panels[k];
-            Rect cell{area.x + (k % cols) * cellW, area.y + (k / cols) * cellH, cellW, cellH};
-            float titleH = fontMetrics(FontFace::Sans, px(14, s, mn)).lineHeight;
-            float left = std::max(58.0f * s, yTickRoom(s, tickFont));
-            Rect plot{std::round(cell.x + left), std::round(cell.y + titleH + 4.0f * s),
-                      std::round(cell.w - left - 12.0f * s),
-                      std::round(cell.h - titleH - 1.5f * tickH - 18.0f * s)};
-            if (plot.w < 8.0f || plot.h < 8.0f) continue;
-            c.text({plot.centre().x, cell.y}, panel.title,
-                   {FontFace::Sans, px(14, s, mn), CHART_INK, TextAlign::Center}, "chart-title");
-            auto xPixel = [&](double x) {
-                double v = spec.logX ? std::log10(std::max(x, 1e-12)) : x;
-                double t = (v - xLo) / (xHi - xLo);
-                if (spec.reverseX) t = 1.0 - t;
-                return plot.x + static_cast<float>(t) * plot.w;
-            };
-            auto yPixel = [&](double y) {
-                return plot.bottom() -
-                       static_cast<float>((y - spec.yFloor) / (yTop - spec.yFloor)) * plot.h;
-            };
-            for (double y = spec.yFloor; y <= yTop + 0.5 * yStep; y += yStep) {
-                float py = std::round(yPixel(y)) + 0.5f;
-                c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
-                c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, spec.percentY),
-                       {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right}, "chart-tick");
-            }
-            // x ticks: the points' own x values (sweeps are few points), thinned to fit.
-            std::vector<double> xs;
-            for (const ChartLine& l : panel.lines) {
-                for (glm::dvec2 q : l.points) {
-                    if (std::find(xs.begin(), xs.end(), q.x) == xs.end()) xs.push_back(q.x);
-                }
-            }
-            std::sort(xs.begin(), xs.end(),
-                      [&](double a, double b) { return xPixel(a) < xPixel(b); });
-            float lastRight = -1e30f;
-            for (double x : xs) {
-                float pxX = std::round(xPixel(x)) + 0.5f;
-                c.line({pxX, plot.y}, {pxX, plot.bottom()}, stroke, CHART_GRID);
-                std::string t = chartTickText(x, false);
-                float w = measureText(FontFace::Sans, tickFont, t).x;
-                if (pxX - w / 2 - 4.0f * s > lastRight) {
-                    // Half a line lower than the plot: the lowest y tick's label reaches there.
-                    c.text({pxX, plot.bottom() + 0.5f * tickH + 3.0f * s}, t,
-                           {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Center},
-                           "chart-tick");
-                    lastRight = pxX + w / 2;
-                }
-            }
-            c.strokeRect(plot.expanded(stroke), stroke, CHART_SOFT_INK);
-            c.pushClip(plot.expanded(3.0f * s));
-            for (const ChartLine& l : panel.lines) {
-                glm::vec2 prev{};
-                for (size_t i = 0; i < l.points.size(); ++i) {
-                    glm::vec2 p{xPixel(l.points[i].x), yPixel(l.points[i].y)};
-                    if (i > 0) {
-                        if (l.dashed) {
-                            dashedLine(c, prev, p, lw, l.colour, 5.0f * s);
-                        } else {
-                            c.line(prev, p, lw, l.colour);
-                        }
-                    }
-                    c.circle(p, 3.0f * s, l.colour);
-                    prev = p;
-                }
-            }
-            c.popClip();
-        }
-
-        Rect box{size.x - legendW - 12.0f * s, top, legendW,
-                 (legend.size() + spec.notes.size()) * lineH + 12.0f * s};
-        c.fillRect(box, {0.97f, 0.97f, 0.98f, 1.0f});
-        c.strokeRect(box, stroke, CHART_GRID);
-        float y = box.y + 6.0f * s;
-        for (const LegendEntry& e : legend) {
-            glm::vec2 a{box.x + 8.0f * s, y + lineH / 2}, b{box.x + 32.0f * s, y + lineH / 2};
-            if (e.dashed) {
-                dashedLine(c, a, b, lw, e.colour, 5.0f * s);
-            } else {
-                c.line(a, b, lw, e.colour);
-            }
-            c.text({box.x + 38.0f * s, y}, e.label, {FontFace::Sans, legendFont, CHART_INK},
-                   "chart-legend");
-            y += lineH;
-        }
-        for (const std::string& note : spec.notes) {
-            c.text({box.x + 8.0f * s, y}, note, {FontFace::Sans, legendFont, CHART_SOFT_INK},
-                   "chart-legend");
-            y += lineH;
+// A panel's grid lines and tick labels: y at the round steps, x at the points' own x values
+// (sweeps are few points), thinned to fit.
+void paintPanelGrid(Painter& c, const PanelPlot& pp, const ChartPanel& panel, float s,
+                    float tickFont) {
+    const Rect& plot = pp.plot;
+    const LineChartSpec& spec = pp.spec;
+    float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
+    float stroke = std::max(1.0f, std::round(s));
+    for (double y = spec.yFloor; y <= pp.axes.yTop + 0.5 * pp.axes.yStep; y += pp.axes.yStep) {
+        float py = std::round(pp.yPixel(y)) + 0.5f;
+        c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
+        c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, spec.percentY),
+               {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right}, "chart-tick");
+    }
+    std::vector<double> xs;
+    for (const ChartLine& l : panel.lines) {
+        for (glm::dvec2 q : l.points) {
+            if (std::find(xs.begin(), xs.end(), q.x) == xs.end()) xs.push_back(q.x);
         }
     }
+    std::sort(xs.begin(), xs.end(),
+              [&](double a, double b) { return pp.xPixel(a) < pp.xPixel(b); });
+    float lastRight = -1e30f;
+    for (double x : xs) {
+        float pxX = std::round(pp.xPixel(x)) + 0.5f;
+        c.line({pxX, plot.y}, {pxX, plot.bottom()}, stroke, CHART_GRID);
+        std::string t = chartTickText(x, false);
+        float w = measureText(FontFace::Sans, tickFont, t).x;
+        if (pxX - w / 2 - 4.0f * s > lastRight) {
+            // Half a line lower than the plot: the lowest y tick's label reaches there.
+            c.text({pxX, plot.bottom() + 0.5f * tickH + 3.0f * s}, t,
+                   {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Center}, "chart-tick");
+            lastRight = pxX + w / 2;
+        }
+    }
+    c.strokeRect(plot.expanded(stroke), stroke, CHART_SOFT_INK);
 }
+
+// A panel's lines (solid or dashed) with a dot at each point, clipped near the plot.
+void paintPanelLines(Painter& c, const PanelPlot& pp, const ChartPanel& panel, float s, float lw) {
+    c.pushClip(pp.plot.expanded(3.0f * s));
+    for (const ChartLine& l : panel.lines) {
+        glm::vec2 prev{};
+        for (size_t i = 0; i < l.points.size(); ++i) {
+            glm::vec2 p{pp.xPixel(l.points[i].x), pp.yPixel(l.points[i].y)};
+            if (i > 0) {
+                if (l.dashed) {
+                    dashedLine(c, prev, p, lw, l.colour, 5.0f * s);
+                } else {
+                    c.line(prev, p, lw, l.colour);
+                }
+            }
+            c.circle(p, 3.0f * s, l.colour);
+            prev = p;
+        }
+    }
+    c.popClip();
+}
+
+// One panel in its cell: its title, grid, ticks and lines (nothing where the cell is too small).
+void paintPanel(Painter& c, const LineChartSpec& spec, const LineAxes& axes,
+                const ChartPanel& panel, Rect cell, float s, float lw) {
+    float mn = spec.minFontPx;
+    float tickFont = px(12, s, mn);
+    float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
+    float titleH = fontMetrics(FontFace::Sans, px(14, s, mn)).lineHeight;
+    float left = std::max(58.0f * s, yTickRoom(s, tickFont));
+    Rect plot{std::round(cell.x + left), std::round(cell.y + titleH + 4.0f * s),
+              std::round(cell.w - left - 12.0f * s),
+              std::round(cell.h - titleH - 1.5f * tickH - 18.0f * s)};
+    if (plot.w < 8.0f || plot.h < 8.0f) return;
+    c.text({plot.centre().x, cell.y}, panel.title,
+           {FontFace::Sans, px(14, s, mn), CHART_INK, TextAlign::Center}, "chart-title");
+    PanelPlot pp{spec, axes, plot};
+    paintPanelGrid(c, pp, panel, s, tickFont);
+    paintPanelLines(c, pp, panel, s, lw);
+}
+
+// The legend box at the chart's right: a line sample and the label per entry, then the notes.
+void paintLineLegend(Painter& c, const LineChartSpec& spec, const std::vector<LegendEntry>& legend,
+                     Rect box, float s, float lw, float legendFont) {
+    float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
+    float stroke = std::max(1.0f, std::round(s));
+    c.fillRect(box, {0.97f, 0.97f, 0.98f, 1.0f});
+    c.strokeRect(box, stroke, CHART_GRID);
+    float y = box.y + 6.0f * s;
+    for (const LegendEntry& e : legend) {
+        glm::vec2 a{box.x + 8.0f * s, y + lineH / 2}, b{box.x + 32.0f * s, y + lineH / 2};
+        if (e.dashed) {
+            dashedLine(c, a, b, lw, e.colour, 5.0f * s);
+        } else {
+            c.line(a, b, lw, e.colour);
+        }
+        c.text({box.x + 38.0f * s, y}, e.label, {FontFace::Sans, legendFont, CHART_INK},
+               "chart-legend");
+        y += lineH;
+    }
+    for (const std::string& note : spec.notes) {
+        c.text({box.x + 8.0f * s, y}, note, {FontFace::Sans, legendFont, CHART_SOFT_INK},
+               "chart-legend");
+        y += lineH;
+    }
+}
+
+void paintLineChart(const LineChartSpec& spec, glm::ivec2 size, Painter& c) {
+    if (size.x < 64 || size.y < 64) {
+        throw std::invalid_argument("drawLineChart: the chart needs at least 64 x 64 pixels");
+    }
+    if (spec.panels.empty()) throw std::invalid_argument("drawLineChart: no panel");
+    float s = scaleFor(size);
+    float mn = spec.minFontPx;
+    // Lines as heavy as the type asks (a projector's 18 px text wants lines over 2 px).
+    float lw = std::max(2.0f * s, mn * 0.14f);
+    LineAxes axes = lineAxesOf(spec);
+    std::vector<LegendEntry> legend = lineLegendOf(spec);
+
+    float top = drawHeader(c, s, mn, spec.title, spec.subtitle);
+    float legendFont = px(13, s, mn), axisFont = px(14, s, mn);
+    float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
+    float legendW = 0.0f;
+    for (const LegendEntry& e : legend) {
+        legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, e.label).x);
+    }
+    for (const std::string& n : spec.notes) {
+        legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
+    }
+    legendW = std::round(legendW + 48.0f * s);
+    c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
+    top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
+    float bottomText = fontMetrics(FontFace::Sans, axisFont).lineHeight + 6.0f * s;
+    Rect area{0.0f, top, size.x - legendW - 20.0f * s, size.y - top - bottomText};
+    c.text({area.centre().x, area.bottom() + 2.0f * s}, spec.xLabel,
+           {FontFace::Sans, axisFont, CHART_INK, TextAlign::Center}, "chart-axis");
+
+    // The panels in a grid of cells: one row of up to two, then two or three columns.
+    int n = static_cast<int>(spec.panels.size());
+    int cols = n <= 2 ? n : (n <= 4 ? 2 : 3);
+    int rowsN = (n + cols - 1) / cols;
+    float cellW = area.w / cols, cellH = area.h / rowsN;
+    for (int k = 0; k < n; ++k) {
+        Rect cell{area.x + (k % cols) * cellW, area.y + (k / cols) * cellH, cellW, cellH};
+        paintPanel(c, spec, axes, spec.panels[k], cell, s, lw);
+    }
+
+    Rect box{size.x - legendW - 12.0f * s, top, legendW,
+             (legend.size() + spec.notes.size()) * lineH + 12.0f * s};
+    paintLineLegend(c, spec, legend, box, s, lw, legendFont);
+}
+
+}  // namespace
 
 std::vector<uint8_t> drawLineChart(const LineChartSpec& spec, glm::ivec2 size) {
     lineChartTextBoxes(spec, size);  // throws for a bad size or spec before any GL work
@@ -315,12 +370,20 @@ std::vector<ChartTextBox> lineChartTextBoxes(const LineChartSpec& spec, glm::ive
     return out;
 }
 
-static void paintBarChart(const BarChartSpec& spec, glm::ivec2 size, Painter& c) {
-    if (size.x < 64 || size.y < 64) {
-        throw std::invalid_argument("drawBarChart: the chart needs at least 64 x 64 pixels");
-    }
-    float s = scaleFor(size);
-    float mn = spec.minFontPx;
+namespace {
+
+const Colour BAR_SERIES[] = {{0.0f, 0.45f, 0.70f, 1.0f},
+                             {0.55f, 0.55f, 0.58f, 1.0f},
+                             {0.84f, 0.37f, 0.0f, 1.0f},
+                             {0.0f, 0.62f, 0.45f, 1.0f}};
+
+struct BarAxis {
+    double yStep, yTop;
+};
+
+// The y axis: 0 up past the largest value in round steps (ending at exactly 1 for changes of
+// visibility, which never pass it).
+BarAxis barAxisOf(const BarChartSpec& spec) {
     double yMax = 0.0;
     for (const BarGroup& g : spec.groups) {
         for (double v : g.values) yMax = std::max(yMax, v);
@@ -331,125 +394,162 @@ static void paintBarChart(const BarChartSpec& spec, glm::ivec2 size, Painter& c)
         yStep = 0.2;  // changes of visibility never pass 1
         yTop = 1.0;
     }
-    static const Colour SERIES[] = {{0.0f, 0.45f, 0.70f, 1.0f},
-                                    {0.55f, 0.55f, 0.58f, 1.0f},
-                                    {0.84f, 0.37f, 0.0f, 1.0f},
-                                    {0.0f, 0.62f, 0.45f, 1.0f}};
-    {
-        float top = drawHeader(c, s, mn, spec.title, spec.subtitle);
-        float tickFont = px(12, s, mn), axisFont = px(14, s, mn), legendFont = px(13, s, mn);
-        c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
-        top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
-        float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
-        float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
-        float legendW = 0.0f;
-        for (const std::string& n : spec.series) {
-            legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
-        }
-        legendW = std::round(legendW + 40.0f * s);
-        top += tickH / 2;  // room for the top tick's label
-        float left = std::max(62.0f * s, yTickRoom(s, tickFont));
-        float plotW = std::round(size.x - legendW - left - 28.0f * s);
-        size_t groups = std::max<size_t>(spec.groups.size(), 1);
-        float groupW = plotW / groups;
-        // Labels on two lines when the group is narrow: "method" / "bias"; a word a line when
-        // even that is too wide ("pcf-gather" / "5x5" / "none" in large type); and when a word
-        // is wider than its group, every other label one block lower, so that each may take
-        // the width of two groups.
-        auto widest = [&](const std::string& t) {
-            float w = 0.0f;
-            size_t start = 0;
-            while (true) {
-                size_t end = t.find('\n', start);
-                w = std::max(
-                    w, measureText(FontFace::Sans, tickFont,
-                                   t.substr(start, end == std::string::npos ? std::string::npos
-                                                                            : end - start))
-                           .x);
-                if (end == std::string::npos) return w;
-                start = end + 1;
-            }
-        };
-        std::vector<std::string> labels;
-        int labelLines = 1;
-        bool stagger = false;
-        for (float room : {groupW - 4.0f * s, 2.0f * groupW - 8.0f * s}) {
-            labels.clear();
-            labelLines = 1;
-            bool fitsAll = true;
-            for (const BarGroup& group : spec.groups) {
-                std::string label = group.label;
-                if (widest(label) > room) {
-                    size_t space = label.rfind(' ');
-                    if (space != std::string::npos) label[space] = '\n';
-                }
-                if (widest(label) > room) std::replace(label.begin(), label.end(), ' ', '\n');
-                fitsAll = fitsAll && widest(label) <= room;
-                labelLines = std::max(
-                    labelLines, 1 + static_cast<int>(std::count(label.begin(), label.end(), '\n')));
-                labels.push_back(label);
-            }
-            if (fitsAll) break;
-            stagger = true;
-        }
-        // Rows of labels: group g's in row g % rows, the fewest rows in which no label reaches
-        // the next one of its row (a word wider than two groups needs a third row).
-        int rows = 1;
-        for (; rows < 4; ++rows) {
-            bool clear = true;
-            for (size_t g = 0; g + rows < labels.size(); ++g) {
-                float gap = groupW * static_cast<float>(rows);
-                clear = clear &&
-                        (widest(labels[g]) + widest(labels[g + rows])) * 0.5f + 4.0f * s <= gap;
-            }
-            if (clear) break;
-        }
-        if (stagger) rows = std::max(rows, 2);
-        // The labels start half a tick line below the plot: the "0" tick's label reaches there.
-        float labelsTop = tickH * 0.5f + 4.0f * s;
-        float labelsH = labelsTop + std::max(2, rows * labelLines) * tickH;
-        Rect plot{std::round(left), std::round(top), plotW,
-                  std::round(size.y - top - labelsH - 16.0f * s)};
-        float stroke = std::max(1.0f, std::round(s));
-        auto yPixel = [&](double y) {
-            return plot.bottom() - static_cast<float>(y / yTop) * plot.h;
-        };
-        for (double y = 0.0; y <= yTop + 0.5 * yStep; y += yStep) {
-            float py = std::round(yPixel(y)) + 0.5f;
-            c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
-            c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, false),
-                   {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right}, "chart-tick");
-        }
-        size_t bars = std::max<size_t>(spec.series.size(), 1);
-        float barW = std::max(2.0f, std::floor(groupW * 0.8f / bars));
-        for (size_t g = 0; g < spec.groups.size(); ++g) {
-            const BarGroup& group = spec.groups[g];
-            float x0 = plot.x + g * groupW + (groupW - barW * bars) / 2;
-            for (size_t b = 0; b < group.values.size() && b < bars; ++b) {
-                float y = yPixel(group.values[b]);
-                c.fillRect({std::round(x0 + b * barW), std::round(y), barW - stroke,
-                            std::round(plot.bottom() - y)},
-                           SERIES[b % 4]);
-            }
-            float below = static_cast<float>(static_cast<int>(g) % rows * labelLines) * tickH;
-            c.text({plot.x + (g + 0.5f) * groupW, plot.bottom() + labelsTop + below}, labels[g],
-                   {FontFace::Sans, tickFont, CHART_INK, TextAlign::Center}, "chart-label");
-        }
-        c.strokeRect(plot.expanded(stroke), stroke, CHART_SOFT_INK);
-        Rect box{size.x - legendW - 12.0f * s, plot.y, legendW,
-                 spec.series.size() * lineH + 12.0f * s};
-        c.fillRect(box, {0.97f, 0.97f, 0.98f, 1.0f});
-        c.strokeRect(box, stroke, CHART_GRID);
-        float y = box.y + 6.0f * s;
-        for (size_t b = 0; b < spec.series.size(); ++b) {
-            c.fillRect({box.x + 8.0f * s, y + 2.0f * s, 22.0f * s, lineH - 4.0f * s},
-                       SERIES[b % 4]);
-            c.text({box.x + 36.0f * s, y}, spec.series[b], {FontFace::Sans, legendFont, CHART_INK},
-                   "chart-legend");
-            y += lineH;
-        }
+    return {yStep, yTop};
+}
+
+// The width of the widest line of t.
+float widestLine(const std::string& t, float font) {
+    float w = 0.0f;
+    size_t start = 0;
+    while (true) {
+        size_t end = t.find('\n', start);
+        w = std::max(w, measureText(FontFace::Sans, font,
+                                    t.substr(start, end == std::string::npos ? std::string::npos
+                                                                             : end - start))
+                            .x);
+        if (end == std::string::npos) return w;
+        start = end + 1;
     }
 }
+
+struct BarLabels {
+    std::vector<std::string> texts;  // per group, with '\n' between its lines
+    int lines = 1;                   // the most lines a label has
+    int rows = 1;                    // group g's label goes in row g % rows
+};
+
+// The groups' labels for groups groupW wide. On two lines when the group is narrow: "method" /
+// "bias"; a word a line when even that is too wide ("pcf-gather" / "5x5" / "none" in large
+// type); and when a word is wider than its group, every other label one block lower, so that
+// each may take the width of two groups.
+BarLabels barLabelsFor(const BarChartSpec& spec, float groupW, float s, float tickFont) {
+    BarLabels out;
+    bool stagger = false;
+    for (float room : {groupW - 4.0f * s, 2.0f * groupW - 8.0f * s}) {
+        out.texts.clear();
+        out.lines = 1;
+        bool fitsAll = true;
+        for (const BarGroup& group : spec.groups) {
+            std::string label = group.label;
+            if (widestLine(label, tickFont) > room) {
+                size_t space = label.rfind(' ');
+                if (space != std::string::npos) label[space] = '\n';
+            }
+            if (widestLine(label, tickFont) > room) {
+                std::replace(label.begin(), label.end(), ' ', '\n');
+            }
+            fitsAll = fitsAll && widestLine(label, tickFont) <= room;
+            out.lines = std::max(
+                out.lines, 1 + static_cast<int>(std::count(label.begin(), label.end(), '\n')));
+            out.texts.push_back(label);
+        }
+        if (fitsAll) break;
+        stagger = true;
+    }
+    // Rows of labels: the fewest in which no label reaches the next one of its row (a word
+    // wider than two groups needs a third row).
+    const std::vector<std::string>& labels = out.texts;
+    int rows = 1;
+    for (; rows < 4; ++rows) {
+        bool clear = true;
+        for (size_t g = 0; g + rows < labels.size(); ++g) {
+            float gap = groupW * static_cast<float>(rows);
+            clear =
+                clear &&
+                (widestLine(labels[g], tickFont) + widestLine(labels[g + rows], tickFont)) * 0.5f +
+                        4.0f * s <=
+                    gap;
+        }
+        if (clear) break;
+    }
+    if (stagger) rows = std::max(rows, 2);
+    out.rows = rows;
+    return out;
+}
+
+// The bars of each group, the series side by side, with the group's label below the plot.
+void paintBars(Painter& c, const BarChartSpec& spec, const Rect& plot, double yTop,
+               const BarLabels& labels, float labelsTop, float s, float tickFont) {
+    float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
+    float stroke = std::max(1.0f, std::round(s));
+    size_t groups = std::max<size_t>(spec.groups.size(), 1);
+    float groupW = plot.w / groups;
+    size_t bars = std::max<size_t>(spec.series.size(), 1);
+    float barW = std::max(2.0f, std::floor(groupW * 0.8f / bars));
+    for (size_t g = 0; g < spec.groups.size(); ++g) {
+        const BarGroup& group = spec.groups[g];
+        float x0 = plot.x + g * groupW + (groupW - barW * bars) / 2;
+        for (size_t b = 0; b < group.values.size() && b < bars; ++b) {
+            float y = plot.bottom() - static_cast<float>(group.values[b] / yTop) * plot.h;
+            c.fillRect({std::round(x0 + b * barW), std::round(y), barW - stroke,
+                        std::round(plot.bottom() - y)},
+                       BAR_SERIES[b % 4]);
+        }
+        float below = static_cast<float>(static_cast<int>(g) % labels.rows * labels.lines) * tickH;
+        c.text({plot.x + (g + 0.5f) * groupW, plot.bottom() + labelsTop + below}, labels.texts[g],
+               {FontFace::Sans, tickFont, CHART_INK, TextAlign::Center}, "chart-label");
+    }
+}
+
+// The legend box: a swatch and the name per series.
+void paintBarLegend(Painter& c, const BarChartSpec& spec, const Rect& box, float s,
+                    float legendFont) {
+    float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
+    float stroke = std::max(1.0f, std::round(s));
+    c.fillRect(box, {0.97f, 0.97f, 0.98f, 1.0f});
+    c.strokeRect(box, stroke, CHART_GRID);
+    float y = box.y + 6.0f * s;
+    for (size_t b = 0; b < spec.series.size(); ++b) {
+        c.fillRect({box.x + 8.0f * s, y + 2.0f * s, 22.0f * s, lineH - 4.0f * s},
+                   BAR_SERIES[b % 4]);
+        c.text({box.x + 36.0f * s, y}, spec.series[b], {FontFace::Sans, legendFont, CHART_INK},
+               "chart-legend");
+        y += lineH;
+    }
+}
+
+void paintBarChart(const BarChartSpec& spec, glm::ivec2 size, Painter& c) {
+    if (size.x < 64 || size.y < 64) {
+        throw std::invalid_argument("drawBarChart: the chart needs at least 64 x 64 pixels");
+    }
+    float s = scaleFor(size);
+    float mn = spec.minFontPx;
+    BarAxis axis = barAxisOf(spec);
+    float top = drawHeader(c, s, mn, spec.title, spec.subtitle);
+    float tickFont = px(12, s, mn), axisFont = px(14, s, mn), legendFont = px(13, s, mn);
+    c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
+    top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
+    float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
+    float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
+    float legendW = 0.0f;
+    for (const std::string& n : spec.series) {
+        legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
+    }
+    legendW = std::round(legendW + 40.0f * s);
+    top += tickH / 2;  // room for the top tick's label
+    float left = std::max(62.0f * s, yTickRoom(s, tickFont));
+    float plotW = std::round(size.x - legendW - left - 28.0f * s);
+    size_t groups = std::max<size_t>(spec.groups.size(), 1);
+    BarLabels labels = barLabelsFor(spec, plotW / groups, s, tickFont);
+    // The labels start half a tick line below the plot: the "0" tick's label reaches there.
+    float labelsTop = tickH * 0.5f + 4.0f * s;
+    float labelsH = labelsTop + std::max(2, labels.rows * labels.lines) * tickH;
+    Rect plot{std::round(left), std::round(top), plotW,
+              std::round(size.y - top - labelsH - 16.0f * s)};
+    float stroke = std::max(1.0f, std::round(s));
+    for (double y = 0.0; y <= axis.yTop + 0.5 * axis.yStep; y += axis.yStep) {
+        float py = std::round(plot.bottom() - static_cast<float>(y / axis.yTop) * plot.h) + 0.5f;
+        c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
+        c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, false),
+               {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right}, "chart-tick");
+    }
+    paintBars(c, spec, plot, axis.yTop, labels, labelsTop, s, tickFont);
+    c.strokeRect(plot.expanded(stroke), stroke, CHART_SOFT_INK);
+    Rect box{size.x - legendW - 12.0f * s, plot.y, legendW, spec.series.size() * lineH + 12.0f * s};
+    paintBarLegend(c, spec, box, s, legendFont);
+}
+
+}  // namespace
 
 std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size) {
     barChartTextBoxes(spec, size);  // throws for a bad size or spec before any GL work

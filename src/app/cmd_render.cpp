@@ -49,6 +49,79 @@ struct RenderCommandOptions {
     bool verbose = false;
 };
 
+// The chart a lesson step shows in the scene's place, and the step's texel grid.
+struct LessonRender {
+    std::string chart;  // the chart's name, without its '#' fragment
+    std::optional<LessonStep> chartStep;
+    std::optional<glm::mat4> fit;
+};
+
+// The lesson's step (-o writes its chart, as `export` shows it in the scene's place; --raw
+// still writes the scene's buffers at the step's settings); its files join `outputs`' inputs.
+LessonRender lessonRenderOf(const RenderCommandOptions& o, const RenderSettings& settings,
+                            OutputFiles& outputs) {
+    LessonRender out;
+    if (o.render.lesson.empty()) return out;
+    std::string path = resolveLesson(o.render.lesson);
+    outputs.addInput("--lesson", path);
+    Lesson lesson = loadLessonChecked(path);
+    const LessonStep& step = lesson.steps[static_cast<size_t>(o.render.lessonStep - 1)];
+    // The step's texel grid (origin_shift, snap), as the viewer and export render it.
+    out.fit = lessonShadowFit(lesson.scene, step.settings, settings.mapSize);
+    if (!step.chart.empty()) {
+        out.chartStep = step;
+        out.chart = step.chart.substr(0, step.chart.rfind('#'));
+        outputs.addInput("chart", out.chart);
+    }
+    return out;
+}
+
+// The files of a --raw folder.
+struct RawFiles {
+    std::string shadow, lightSpace, visibility, positions, receiver, settings;
+};
+
+// The --raw folder's files, each added to `outputs`.
+RawFiles rawFilesIn(const std::string& rawDir, OutputFiles& outputs) {
+    std::filesystem::path dir(rawDir);
+    outputs.addDirectory("--raw", dir);
+    RawFiles raw{(dir / "shadowmap.exr").string(),  (dir / "lightspace.exr").string(),
+                 (dir / "visibility.exr").string(), (dir / "positions.exr").string(),
+                 (dir / "dzduv.exr").string(),      (dir / "render.json").string()};
+    for (const std::string& p :
+         {raw.shadow, raw.lightSpace, raw.visibility, raw.positions, raw.receiver, raw.settings}) {
+        outputs.add("--raw", p);
+    }
+    return raw;
+}
+
+// --time: the camera pass's median over `repeats` draws, on stdout.
+void printCameraTiming(SceneRenderer& renderer, const RenderSettings& settings, int repeats) {
+    TimingResult t = renderer.timeCameraPass(settings, repeats);
+    std::printf("camera pass (%s %s, %dx%d, map %d): median %.3f ms over %d draws (%s)\n",
+                std::string(methodInfo(settings.method).name).c_str(),
+                methodInfo(settings.method).usesKernel
+                    ? ("N=" + std::to_string(settings.kernel)).c_str()
+                    : "",
+                settings.frameSize.x, settings.frameSize.y, settings.mapSize, t.medianMs, repeats,
+                t.timer.c_str());
+}
+
+// The intermediate buffers of the rendered frame, as EXR, and its settings as JSON.
+void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderSettings& settings,
+                     glm::ivec2 size) {
+    writeDepthImage(raw.shadow, renderer.readShadowMap());
+    std::vector<float> ls = renderer.readLightSpace();
+    writeExr(raw.lightSpace, size.x, size.y, 4, ls, {"R", "G", "B", "A"});
+    std::vector<float> vis = renderer.readVisibility();
+    writeExr(raw.visibility, size.x, size.y, 1, vis, {"Y"});
+    std::vector<float> pos = renderer.readPositions();
+    writeExr(raw.positions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
+    std::vector<float> receiver = renderer.readReceiver();
+    writeExr(raw.receiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
+    writeTextFile(raw.settings, rawSettingsJson(settings));
+}
+
 int runRender(const RenderCommandOptions& o) {
     // Every check first: nothing is written unless all of it can be.
     RenderSettings settings = o.render.settings();
@@ -58,92 +131,44 @@ int runRender(const RenderCommandOptions& o) {
     requireIntRange("--time", o.timeRepeats, 0, 10000);
     OutputFiles outputs(o.force);
     outputs.addInput("--scene-file", o.render.sceneFile);
-    // A lesson step that shows a chart: -o writes that chart, as `export` shows it in the
-    // scene's place (--raw still writes the scene's buffers at the step's settings).
-    std::string chart;
-    std::optional<LessonStep> chartStep;
-    std::optional<glm::mat4> lessonFit;
-    if (!o.render.lesson.empty()) {
-        std::string path = resolveLesson(o.render.lesson);
-        outputs.addInput("--lesson", path);
-        Lesson lesson = loadLessonChecked(path);
-        const LessonStep& step = lesson.steps[static_cast<size_t>(o.render.lessonStep - 1)];
-        // The step's texel grid (origin_shift, snap), as the viewer and export render it.
-        lessonFit = lessonShadowFit(lesson.scene, step.settings, settings.mapSize);
-        if (!step.chart.empty()) {
-            chartStep = step;
-            chart = step.chart.substr(0, step.chart.rfind('#'));
-            outputs.addInput("chart", chart);
-        }
-    }
+    LessonRender lesson = lessonRenderOf(o, settings, outputs);
     if (!o.out.empty()) {
         requireExtension("-o", o.out, ".png");
         outputs.add("-o", o.out);
     }
-    std::string rawShadow, rawLightSpace, rawVisibility, rawPositions, rawReceiver, rawSettings;
+    RawFiles raw;
     if (!o.rawDir.empty()) {
-        std::filesystem::path dir(o.rawDir);
-        outputs.addDirectory("--raw", dir);
-        rawShadow = (dir / "shadowmap.exr").string();
-        rawLightSpace = (dir / "lightspace.exr").string();
-        rawVisibility = (dir / "visibility.exr").string();
-        rawPositions = (dir / "positions.exr").string();
-        rawReceiver = (dir / "dzduv.exr").string();
-        rawSettings = (dir / "render.json").string();
+        raw = rawFilesIn(o.rawDir, outputs);
         settings.writePositions = true;
-        for (const std::string& p :
-             {rawShadow, rawLightSpace, rawVisibility, rawPositions, rawReceiver, rawSettings}) {
-            outputs.add("--raw", p);
-        }
     }
 
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(scene);
-    if (lessonFit) renderer.setShadowClipFromWorld(*lessonFit);
+    if (lesson.fit) renderer.setShadowClipFromWorld(*lesson.fit);
     renderer.render(settings);
     if (o.verbose)
         std::fprintf(stderr, "pcfscope: rendered on %s\n", context->description().c_str());
-    if (o.timeRepeats > 0) {
-        TimingResult t = renderer.timeCameraPass(settings, o.timeRepeats);
-        std::printf("camera pass (%s %s, %dx%d, map %d): median %.3f ms over %d draws (%s)\n",
-                    std::string(methodInfo(settings.method).name).c_str(),
-                    methodInfo(settings.method).usesKernel
-                        ? ("N=" + std::to_string(settings.kernel)).c_str()
-                        : "",
-                    settings.frameSize.x, settings.frameSize.y, settings.mapSize, t.medianMs,
-                    o.timeRepeats, t.timer.c_str());
-    }
+    if (o.timeRepeats > 0) printCameraTiming(renderer, settings, o.timeRepeats);
     glm::ivec2 size = renderer.frameSize();
     if (!o.out.empty()) {
         std::vector<uint8_t> rgba =
-            chartStep ? drawStepChart(*chartStep, size) : renderer.readColour();
+            lesson.chartStep ? drawStepChart(*lesson.chartStep, size) : renderer.readColour();
         writePngRgba8(o.out, size.x, size.y, rgba);
     }
-    if (!o.rawDir.empty()) {
-        writeDepthImage(rawShadow, renderer.readShadowMap());
-        std::vector<float> ls = renderer.readLightSpace();
-        writeExr(rawLightSpace, size.x, size.y, 4, ls, {"R", "G", "B", "A"});
-        std::vector<float> vis = renderer.readVisibility();
-        writeExr(rawVisibility, size.x, size.y, 1, vis, {"Y"});
-        std::vector<float> pos = renderer.readPositions();
-        writeExr(rawPositions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
-        std::vector<float> receiver = renderer.readReceiver();
-        writeExr(rawReceiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
-        writeTextFile(rawSettings, rawSettingsJson(settings));
-    }
+    if (!o.rawDir.empty()) writeRawBuffers(renderer, raw, settings, size);
     outputs.commit();
     // Say what was written, like export does (a silent success left users looking for it).
     std::string method = std::string(methodInfo(settings.method).name);
-    if (!o.out.empty() && chartStep) {
+    if (!o.out.empty() && lesson.chartStep) {
         std::fprintf(stderr, "render: wrote %s (%dx%d, the chart of lesson step %d: %s)\n",
-                     o.out.c_str(), size.x, size.y, o.render.lessonStep, chart.c_str());
+                     o.out.c_str(), size.x, size.y, o.render.lessonStep, lesson.chart.c_str());
     } else if (!o.out.empty()) {
         std::fprintf(stderr, "render: wrote %s (%dx%d, %s, map %d)\n", o.out.c_str(), size.x,
                      size.y, method.c_str(), settings.mapSize);
     }
     if (!o.rawDir.empty()) {
-        std::fprintf(stderr, "render: wrote %s, %s, %s and %s\n", rawShadow.c_str(),
-                     rawLightSpace.c_str(), rawVisibility.c_str(), rawPositions.c_str());
+        std::fprintf(stderr, "render: wrote %s, %s, %s and %s\n", raw.shadow.c_str(),
+                     raw.lightSpace.c_str(), raw.visibility.c_str(), raw.positions.c_str());
     }
     return 0;
 }

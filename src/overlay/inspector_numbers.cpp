@@ -111,20 +111,20 @@ float planNotes(Planner& pl, const InspectorLayout& l, const Grid& g, int hidden
     return y;
 }
 
-// The legend: a swatch and a word for every kind of mark this frame draws, flowing onto more
-// lines when the panel is narrow. From `y` down; returns the new y.
-float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                 const LegendNeeds& need, const TypeSizes& t, float margin, float y) {
-    const Rect& p = l.inspector;
-    const std::string panel = "inspector";
-    enum Shape { SQUARE, DOT, RING, OUTLINE, BAR, TICK };
-    struct Entry {
-        Colour colour;
-        std::string text;
-        Shape shape;
-    };
-    std::vector<Entry> entries{{LIT_COLOUR, "lit: ref <= depth", SQUARE},
-                               {SHADOWED_COLOUR, "shadowed", SQUARE}};
+namespace {
+
+enum SwatchShape { SQUARE, DOT, RING, OUTLINE, BAR, TICK };
+
+struct LegendEntry {
+    Colour colour;
+    std::string text;
+    SwatchShape shape;
+};
+
+// One entry for every kind of mark this frame draws.
+std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeeds& need) {
+    std::vector<LegendEntry> entries{{LIT_COLOUR, "lit: ref <= depth", SQUARE},
+                                     {SHADOWED_COLOUR, "shadowed", SQUARE}};
     if (need.padding) entries.push_back({PADDING, "not read", SQUARE});
     if (need.clamped) entries.push_back({CLAMPED, "read clamped to the edge", OUTLINE});
     if (need.weightBar) entries.push_back({WEIGHT_BAR, "weight bar", BAR});
@@ -138,11 +138,52 @@ float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
     if (need.movedMark) entries.push_back({POINT, "tick: a moved mark's true place", TICK});
     if (m.showScene)
         entries.push_back({Colour{0.2f, 0.85f, 1.0f, 1.0f}, "texels read, on the scene", SQUARE});
+    return entries;
+}
+
+// An entry's swatch in the square sw, its mark drawn as the frame draws it (lg: the type size).
+void planSwatch(Planner& pl, Rect sw, SwatchShape shape, Colour col, float lg) {
+    pl.op([=](Canvas& c) {
+        glm::vec2 cc = sw.centre();
+        switch (shape) {
+            case DOT:
+                c.circle(cc, lg * 0.35f + 1.5f, Colour{1, 1, 1, 0.9f});
+                c.circle(cc, lg * 0.35f, col);
+                break;
+            case RING:
+                c.ring(cc, lg * 0.38f, 2.0f, HW_RING);
+                c.circle(cc, lg * 0.16f, col);
+                break;
+            case OUTLINE:
+                c.strokeRect(sw, 3.0f, col);
+                break;
+            case BAR:
+                c.fillRect({sw.x, sw.y + sw.h * 0.6f, sw.w, sw.h * 0.3f}, col);
+                break;
+            case SQUARE:
+                c.fillRect(sw, col);
+                break;
+            case TICK:  // a tick across a cell border, as in the cells
+                c.fillRect({sw.x, sw.y + sw.h * 0.5f - 0.5f, sw.w, 1.0f}, TEXT_DIM);
+                c.fillRect({cc.x - 1.5f, sw.y, 3.0f, sw.h}, col);
+                break;
+        }
+    });
+}
+
+}  // namespace
+
+// The legend: a swatch and a word for every kind of mark this frame draws, flowing onto more
+// lines when the panel is narrow. From `y` down; returns the new y.
+float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                 const LegendNeeds& need, const TypeSizes& t, float margin, float y) {
+    const Rect& p = l.inspector;
+    const std::string panel = "inspector";
     float lg = t.label;
     float lh = lineHeightOf(lg);
     float swatchW = lg * 1.4f;  // a swatch and the gap after it
     float x = p.x + margin;
-    for (const Entry& e : entries) {
+    for (const LegendEntry& e : legendEntries(m, need)) {
         float tw = measureText(FontFace::Sans, lg, e.text).x;
         float w = swatchW + tw;
         if (x > p.x + margin && x + w > p.right() - margin) {
@@ -150,34 +191,7 @@ float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
             y += lh;
         }
         Rect sw{x, y + (lh - lg) * 0.5f, lg, lg};
-        Colour col = e.colour;
-        Shape shape = e.shape;
-        pl.op([=](Canvas& c) {
-            glm::vec2 cc = sw.centre();
-            switch (shape) {
-                case DOT:
-                    c.circle(cc, lg * 0.35f + 1.5f, Colour{1, 1, 1, 0.9f});
-                    c.circle(cc, lg * 0.35f, col);
-                    break;
-                case RING:
-                    c.ring(cc, lg * 0.38f, 2.0f, HW_RING);
-                    c.circle(cc, lg * 0.16f, col);
-                    break;
-                case OUTLINE:
-                    c.strokeRect(sw, 3.0f, col);
-                    break;
-                case BAR:
-                    c.fillRect({sw.x, sw.y + sw.h * 0.6f, sw.w, sw.h * 0.3f}, col);
-                    break;
-                case SQUARE:
-                    c.fillRect(sw, col);
-                    break;
-                case TICK:  // a tick across a cell border, as in the cells
-                    c.fillRect({sw.x, sw.y + sw.h * 0.5f - 0.5f, sw.w, 1.0f}, TEXT_DIM);
-                    c.fillRect({cc.x - 1.5f, sw.y, 3.0f, sw.h}, col);
-                    break;
-            }
-        });
+        planSwatch(pl, sw, e.shape, e.colour, lg);
         pl.box(BoxKind::Mark, sw, panel, "legend-swatch");
         std::string text = e.text;
         if (tw > p.right() - margin - (x + swatchW)) {

@@ -4,113 +4,131 @@
 
 namespace pcf::inspector_detail {
 
-void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t) {
-    glm::vec2 origin = l.scene.position();
-    glm::vec2 centre = origin + glm::vec2(m.pixel) + 0.5f;
-    float lineWidth = l.presentation ? 3.0f : 2.0f;
-    Rect scene = l.scene;
-    pl.op([=](Canvas& c) { c.pushClip(scene); });
-    glm::ivec2 region = m.lightSpaceSize;
-    if (m.trace && m.lightSpace && region.x > 0 &&
-        m.lightSpace->size() == static_cast<size_t>(region.x) * region.y * 4) {
+namespace {
+
+// The shadow-map texel each scene pixel looks up, from the model's light-space buffer.
+struct TexelLookup {
+    const InspectorModel& m;
+    glm::ivec2 region;
+    glm::vec2 mapSize;
+
+    // Whether pixel (x, y) has a texel (a receiver inside the buffer's region), and which.
+    bool texelAt(int x, int y, glm::ivec2& out) const {
+        if (x < 0 || y < 0 || x >= m.sceneSize.x || y >= m.sceneSize.y) return false;
+        glm::ivec2 r = glm::ivec2(x, y) - m.lightSpaceOrigin;
+        if (r.x < 0 || r.y < 0 || r.x >= region.x || r.y >= region.y) return false;
         const std::vector<float>& ls = *m.lightSpace;
-        glm::vec2 mapSize(m.trace->mapSize);
-        int radius = gridRadius(m.sceneSize);
-        auto texelAt = [&](int x, int y, glm::ivec2& out) {
-            if (x < 0 || y < 0 || x >= m.sceneSize.x || y >= m.sceneSize.y) return false;
-            glm::ivec2 r = glm::ivec2(x, y) - m.lightSpaceOrigin;
-            if (r.x < 0 || r.y < 0 || r.x >= region.x || r.y >= region.y) return false;
-            size_t k = (static_cast<size_t>(r.y) * region.x + r.x) * 4;
-            if (ls[k + 3] != 1.0f) return false;
-            out = glm::ivec2(glm::floor(glm::vec2(ls[k], ls[k + 1]) * mapSize));
-            return true;
-        };
-        // How many screen pixels a texel spans here: pixels per texel change along the row and
-        // the column through the picked pixel (the smaller of the two).
-        auto spanAlong = [&](glm::ivec2 dir) {
-            int valid = 0, changes = 0;
-            glm::ivec2 prev{0}, cur{0};
-            bool havePrev = false;
-            for (int k = -radius; k <= radius; ++k) {
-                glm::ivec2 q = m.pixel + dir * k;
-                if (!texelAt(q.x, q.y, cur)) {
-                    havePrev = false;
-                    continue;
-                }
-                ++valid;
-                if (havePrev && cur != prev) ++changes;
-                prev = cur;
-                havePrev = true;
+        size_t k = (static_cast<size_t>(r.y) * region.x + r.x) * 4;
+        if (ls[k + 3] != 1.0f) return false;
+        out = glm::ivec2(glm::floor(glm::vec2(ls[k], ls[k + 1]) * mapSize));
+        return true;
+    }
+
+    // How many screen pixels a texel spans along dir through the picked pixel: pixels per
+    // texel change within `radius` of it.
+    float spanAlong(glm::ivec2 dir, int radius) const {
+        int valid = 0, changes = 0;
+        glm::ivec2 prev{0}, cur{0};
+        bool havePrev = false;
+        for (int k = -radius; k <= radius; ++k) {
+            glm::ivec2 q = m.pixel + dir * k;
+            if (!texelAt(q.x, q.y, cur)) {
+                havePrev = false;
+                continue;
             }
-            return valid == 0 ? 0.0f : static_cast<float>(valid) / static_cast<float>(changes + 1);
-        };
-        float texelPx = std::min(spanAlong({1, 0}), spanAlong({0, 1}));
-        bool drawEdges = m.grid && texelPx >= GRID_MIN_TEXEL_PX;
-        pl.plan.gridShown = drawEdges;
-        Neighbourhood n = neighbourhoodOf(*m.trace);
-        enum Kind { NONE, FOOTPRINT_EDGE, EDGE, FOOTPRINT };
-        const Colour colours[] = {Colour{0.0f}, Colour{0.1f, 0.9f, 1.0f, 0.95f},
-                                  Colour{0.05f, 0.05f, 0.1f, 0.35f}, FOOTPRINT_TINT};
-        // One picture over the box of pixels around the picked one that have a colour, each
-        // pixel the colour of its kind, drawn as one quad: as thousands of 1-pixel-high runs of
-        // rects it cost llvmpipe more per frame than the rest of the overlay (Canvas::image
-        // blends each texel exactly as fillRect of that pixel did, so the frame's bytes are the
-        // same). Without the grid only the footprint's few texels are tinted: a small picture.
-        glm::ivec2 lo = glm::max(m.pixel - radius, glm::ivec2(0));
-        glm::ivec2 hi = glm::min(m.pixel + radius, m.sceneSize - 1);
-        if (hi.x >= lo.x && hi.y >= lo.y) {
-            glm::ivec2 size = hi - lo + 1;
-            std::vector<uint8_t> kinds(static_cast<size_t>(size.x) * size.y, NONE);
-            glm::ivec2 used0 = hi + 1, used1 = lo - 1;  // the box of coloured pixels
-            for (int y = lo.y; y <= hi.y; ++y) {
-                for (int x = lo.x; x <= hi.x; ++x) {
-                    glm::ivec2 tx, left, up;
-                    if (!texelAt(x, y, tx)) continue;
-                    bool inFootprint = tx.x >= n.origin.x && tx.y >= n.origin.y &&
-                                       tx.x < n.origin.x + n.size.x && tx.y < n.origin.y + n.size.y;
-                    bool edge = drawEdges && ((texelAt(x - 1, y, left) && left != tx) ||
-                                              (texelAt(x, y - 1, up) && up != tx));
-                    Kind kind = edge ? (inFootprint ? FOOTPRINT_EDGE : EDGE)
-                                     : (inFootprint ? FOOTPRINT : NONE);
-                    if (kind == NONE) continue;
-                    kinds[static_cast<size_t>(y - lo.y) * size.x + (x - lo.x)] =
-                        static_cast<uint8_t>(kind);
-                    used0 = glm::min(used0, glm::ivec2(x, y));
-                    used1 = glm::max(used1, glm::ivec2(x, y));
-                }
-            }
-            if (used1.x >= used0.x && used1.y >= used0.y) {
-                glm::ivec2 box = used1 - used0 + 1;
-                std::vector<glm::vec4> pixels(static_cast<size_t>(box.x) * box.y);
-                for (int y = 0; y < box.y; ++y) {
-                    for (int x = 0; x < box.x; ++x) {
-                        glm::ivec2 q = used0 - lo + glm::ivec2(x, y);
-                        pixels[static_cast<size_t>(y) * box.x + x] =
-                            colours[kinds[static_cast<size_t>(q.y) * size.x + q.x]];
-                    }
-                }
-                auto image = std::make_shared<const CanvasImage>(box, std::move(pixels));
-                glm::ivec2 at = glm::ivec2(glm::round(origin)) + used0;
-                pl.op([image, at](Canvas& c) { c.image(at, image); });
-            }
+            ++valid;
+            if (havePrev && cur != prev) ++changes;
+            prev = cur;
+            havePrev = true;
+        }
+        return valid == 0 ? 0.0f : static_cast<float>(valid) / static_cast<float>(changes + 1);
+    }
+};
+
+// Colour indices: colours[] in planTexelGrid.
+enum PixelKind { PIXEL_NONE, PIXEL_FOOTPRINT_EDGE, PIXEL_EDGE, PIXEL_FOOTPRINT };
+
+// The kind of each pixel of the box lo..hi (row-major), and the box of those with a kind.
+struct KindGrid {
+    std::vector<uint8_t> kinds;
+    glm::ivec2 used0, used1;
+};
+
+KindGrid kindsAround(const TexelLookup& look, const Neighbourhood& n, glm::ivec2 lo, glm::ivec2 hi,
+                     bool drawEdges) {
+    glm::ivec2 size = hi - lo + 1;
+    KindGrid g{std::vector<uint8_t>(static_cast<size_t>(size.x) * size.y, PIXEL_NONE), hi + 1,
+               lo - 1};
+    for (int y = lo.y; y <= hi.y; ++y) {
+        for (int x = lo.x; x <= hi.x; ++x) {
+            glm::ivec2 tx, left, up;
+            if (!look.texelAt(x, y, tx)) continue;
+            bool inFootprint = tx.x >= n.origin.x && tx.y >= n.origin.y &&
+                               tx.x < n.origin.x + n.size.x && tx.y < n.origin.y + n.size.y;
+            bool edge = drawEdges && ((look.texelAt(x - 1, y, left) && left != tx) ||
+                                      (look.texelAt(x, y - 1, up) && up != tx));
+            PixelKind kind = edge ? (inFootprint ? PIXEL_FOOTPRINT_EDGE : PIXEL_EDGE)
+                                  : (inFootprint ? PIXEL_FOOTPRINT : PIXEL_NONE);
+            if (kind == PIXEL_NONE) continue;
+            g.kinds[static_cast<size_t>(y - lo.y) * size.x + (x - lo.x)] =
+                static_cast<uint8_t>(kind);
+            g.used0 = glm::min(g.used0, glm::ivec2(x, y));
+            g.used1 = glm::max(g.used1, glm::ivec2(x, y));
         }
     }
-    float ringR = std::max(7.0f, 9.0f * l.scale);
-    pl.op([=](Canvas& c) {
-        c.ring(centre, ringR, lineWidth, Colour{0, 0, 0, 0.8f});
-        c.ring(centre, ringR, lineWidth * 0.5f, POINT);
-        c.fillRect({centre.x - 0.5f, centre.y - 0.5f, 1.0f, 1.0f}, POINT);
-        c.popClip();
-    });
-    Rect ring{centre.x - ringR - lineWidth, centre.y - ringR - lineWidth, 2 * (ringR + lineWidth),
-              2 * (ringR + lineWidth)};
-    pl.box(BoxKind::Mark, ring.intersect(l.scene), "scene", "picked-pixel");
+    return g;
+}
+
+// The texel grid's edges (where texels are large enough to see) and the footprint's tint
+// around the picked pixel.
+void planTexelGrid(Planner& pl, const InspectorLayout& l, const InspectorModel& m) {
+    glm::ivec2 region = m.lightSpaceSize;
+    if (!(m.trace && m.lightSpace && region.x > 0 &&
+          m.lightSpace->size() == static_cast<size_t>(region.x) * region.y * 4)) {
+        return;
+    }
+    TexelLookup look{m, region, glm::vec2(m.trace->mapSize)};
+    int radius = gridRadius(m.sceneSize);
+    // How many screen pixels a texel spans here: the smaller of the row's and the column's.
+    float texelPx = std::min(look.spanAlong({1, 0}, radius), look.spanAlong({0, 1}, radius));
+    bool drawEdges = m.grid && texelPx >= GRID_MIN_TEXEL_PX;
+    pl.plan.gridShown = drawEdges;
+    Neighbourhood n = neighbourhoodOf(*m.trace);
+    const Colour colours[] = {Colour{0.0f}, Colour{0.1f, 0.9f, 1.0f, 0.95f},
+                              Colour{0.05f, 0.05f, 0.1f, 0.35f}, FOOTPRINT_TINT};
+    // One picture over the box of pixels around the picked one that have a colour, each
+    // pixel the colour of its kind, drawn as one quad: as thousands of 1-pixel-high runs of
+    // rects it cost llvmpipe more per frame than the rest of the overlay (Canvas::image
+    // blends each texel exactly as fillRect of that pixel did, so the frame's bytes are the
+    // same). Without the grid only the footprint's few texels are tinted: a small picture.
+    glm::ivec2 lo = glm::max(m.pixel - radius, glm::ivec2(0));
+    glm::ivec2 hi = glm::min(m.pixel + radius, m.sceneSize - 1);
+    if (hi.x < lo.x || hi.y < lo.y) return;
+    glm::ivec2 size = hi - lo + 1;
+    KindGrid g = kindsAround(look, n, lo, hi, drawEdges);
+    if (g.used1.x < g.used0.x || g.used1.y < g.used0.y) return;
+    glm::ivec2 box = g.used1 - g.used0 + 1;
+    std::vector<glm::vec4> pixels(static_cast<size_t>(box.x) * box.y);
+    for (int y = 0; y < box.y; ++y) {
+        for (int x = 0; x < box.x; ++x) {
+            glm::ivec2 q = g.used0 - lo + glm::ivec2(x, y);
+            pixels[static_cast<size_t>(y) * box.x + x] =
+                colours[g.kinds[static_cast<size_t>(q.y) * size.x + q.x]];
+        }
+    }
+    auto image = std::make_shared<const CanvasImage>(box, std::move(pixels));
+    glm::ivec2 at = glm::ivec2(glm::round(l.scene.position())) + g.used0;
+    pl.op([image, at](Canvas& c) { c.image(at, image); });
+}
+
+// The label "pixel (x, y)" beside the ring of radius `gap` less 4, in the first corner where
+// the whole label stays in the scene (elided where it is wider than the scene).
+void planPixelLabel(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                    const TypeSizes& t, glm::vec2 centre, float gap) {
     std::string label = "pixel (" + std::to_string(m.pixel.x) + ", " + std::to_string(m.pixel.y) +
                         ")" + (m.trace ? "" : ": no shadow receiver here");
     TextStyle st{FontFace::Sans, t.label, TEXT};
-    // Beside the ring, in the first corner where the whole label stays in the scene.
     Rect size = pl.measure({0, 0}, label, st);
-    float gap = ringR + lineWidth + 4.0f;
     const glm::vec2 candidates[] = {{centre.x + gap, centre.y + gap * 0.3f},
                                     {centre.x - gap - size.w, centre.y + gap * 0.3f},
                                     {centre.x + gap, centre.y - gap * 0.3f - size.h},
@@ -135,6 +153,28 @@ void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     Rect r = pl.measure(at, shown, st);
     pl.fill(r.expanded(3).intersect(l.scene), Colour{0, 0, 0, 0.6f});
     pl.text(at, shown, st, BoxKind::Label, "scene", "pixel-label", !fits);
+}
+
+}  // namespace
+
+void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t) {
+    glm::vec2 origin = l.scene.position();
+    glm::vec2 centre = origin + glm::vec2(m.pixel) + 0.5f;
+    float lineWidth = l.presentation ? 3.0f : 2.0f;
+    Rect scene = l.scene;
+    pl.op([=](Canvas& c) { c.pushClip(scene); });
+    planTexelGrid(pl, l, m);
+    float ringR = std::max(7.0f, 9.0f * l.scale);
+    pl.op([=](Canvas& c) {
+        c.ring(centre, ringR, lineWidth, Colour{0, 0, 0, 0.8f});
+        c.ring(centre, ringR, lineWidth * 0.5f, POINT);
+        c.fillRect({centre.x - 0.5f, centre.y - 0.5f, 1.0f, 1.0f}, POINT);
+        c.popClip();
+    });
+    Rect ring{centre.x - ringR - lineWidth, centre.y - ringR - lineWidth, 2 * (ringR + lineWidth),
+              2 * (ringR + lineWidth)};
+    pl.box(BoxKind::Mark, ring.intersect(l.scene), "scene", "picked-pixel");
+    planPixelLabel(pl, l, m, t, centre, ringR + lineWidth + 4.0f);
 }
 
 }  // namespace pcf::inspector_detail

@@ -85,6 +85,51 @@ std::string alignTables(std::string_view text) {
     return out;
 }
 
+// Prose lines (one paragraph source, '\n' kept) wrapped to width onto out. Prose with `code
+// spans`: a span is set in monospace and kept on one line; one that had to be broken (wider
+// than the box) sets tooWide, asking for smaller type first.
+void wrapProse(const std::string& prose, FontFace face, float size, float width,
+               std::vector<FitLine>& out, bool& tooWide) {
+    if (face == FontFace::Mono) {
+        for (std::string& l : wrapText(face, size, prose, width))
+            out.push_back({std::move(l), false, {}});
+        return;
+    }
+    bool spanSplit = false;
+    for (SpanLine& l : wrapSpans(face, size, prose, width, &spanSplit)) {
+        std::string plain;
+        for (const TextSpan& sp : l) plain += sp.text;
+        out.push_back({std::move(plain), false, std::move(l)});
+    }
+    tooWide |= spanSplit;
+}
+
+// A preformatted line (tabs as spaces) onto out, kept whole where it fits; else (tooWide) wrapped
+// at its spaces, continuation lines indented further (a table row this wide has no columns to
+// keep at this size).
+void wrapPreformatted(std::string_view line, float size, float width, std::vector<FitLine>& out,
+                      bool& tooWide) {
+    std::string row(line);
+    for (char& ch : row) {
+        if (ch == '\t') ch = ' ';
+    }
+    float w = measureText(FontFace::Mono, size, row).x;
+    if (w <= width) {
+        out.push_back({row, true, {}});
+        return;
+    }
+    tooWide = true;
+    size_t indent = row.find_first_not_of(' ');
+    if (indent == std::string::npos) indent = 0;
+    std::string lead(indent, ' ');
+    float leadW = measureText(FontFace::Mono, size, lead + "  ").x;
+    std::vector<std::string> parts = wrapText(FontFace::Mono, size, row.substr(indent),
+                                              std::max(8.0f * size * 0.6f, width - leadW));
+    for (size_t k = 0; k < parts.size(); ++k) {
+        out.push_back({(k == 0 ? lead : lead + "  ") + parts[k], true, {}});
+    }
+}
+
 std::vector<FitLine> wrapBlock(std::string_view text, FontFace face, float size, float width,
                                bool& tooWide) {
     std::vector<FitLine> out;
@@ -92,20 +137,7 @@ std::vector<FitLine> wrapBlock(std::string_view text, FontFace face, float size,
     std::string prose;  // consecutive prose lines form one paragraph source ('\n' kept)
     auto flushProse = [&]() {
         if (prose.empty()) return;
-        if (face == FontFace::Mono) {
-            for (std::string& l : wrapText(face, size, prose, width))
-                out.push_back({std::move(l), false, {}});
-        } else {
-            // Prose with `code spans`: a span is set in monospace and kept on one line; one
-            // that had to be broken (wider than the box) asks for smaller type first.
-            bool spanSplit = false;
-            for (SpanLine& l : wrapSpans(face, size, prose, width, &spanSplit)) {
-                std::string plain;
-                for (const TextSpan& sp : l) plain += sp.text;
-                out.push_back({std::move(plain), false, std::move(l)});
-            }
-            tooWide |= spanSplit;
-        }
+        wrapProse(prose, face, size, width, out, tooWide);
         prose.clear();
     };
     while (true) {
@@ -115,39 +147,14 @@ std::vector<FitLine> wrapBlock(std::string_view text, FontFace face, float size,
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
         if (preformatted(line)) {
             flushProse();
-            std::string row(line);
-            for (char& ch : row) {
-                if (ch == '\t') ch = ' ';
-            }
-            float w = measureText(FontFace::Mono, size, row).x;
-            if (w > width) {
-                // Too wide for the box: wrapped at its spaces, continuation lines indented
-                // further (a table row this wide has no columns to keep at this size).
-                tooWide = true;
-                size_t indent = row.find_first_not_of(' ');
-                if (indent == std::string::npos) indent = 0;
-                std::string lead(indent, ' ');
-                float leadW = measureText(FontFace::Mono, size, lead + "  ").x;
-                std::vector<std::string> parts =
-                    wrapText(FontFace::Mono, size, row.substr(indent),
-                             std::max(8.0f * size * 0.6f, width - leadW));
-                for (size_t k = 0; k < parts.size(); ++k) {
-                    out.push_back({(k == 0 ? lead : lead + "  ") + parts[k], true, {}});
-                }
-                if (end == std::string_view::npos) break;
-                start = end + 1;
-                continue;
-            }
-            out.push_back({row, true, {}});
+            wrapPreformatted(line, size, width, out, tooWide);
+        } else if (line.empty()) {
+            // A paragraph gap: one empty line.
+            flushProse();
+            if (!out.empty() && !out.back().text.empty()) out.push_back({"", false, {}});
         } else {
-            if (line.empty()) {
-                // A paragraph gap: one empty line.
-                flushProse();
-                if (!out.empty() && !out.back().text.empty()) out.push_back({"", false, {}});
-            } else {
-                if (!prose.empty()) prose += '\n';
-                prose += std::string(line);
-            }
+            if (!prose.empty()) prose += '\n';
+            prose += std::string(line);
         }
         if (end == std::string_view::npos) break;
         start = end + 1;

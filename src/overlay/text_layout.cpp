@@ -380,11 +380,12 @@ struct SpanWrapper {
             if (broke && sp.mono && spanSplit) *spanSplit = true;
         }
     }
-    void paragraph(std::string_view text) {
-        // Units: the text between breakable spaces (spaces outside code spans); a code span
-        // belongs to the unit of the prose it touches.
-        std::vector<std::vector<MeasuredSpan>> units;
-        std::vector<bool> operators;  // a unit that is a lone operator word
+    using Unit = std::vector<MeasuredSpan>;
+
+    // Units: the text between breakable spaces (spaces outside code spans); a code span
+    // belongs to the unit of the prose it touches. Measured.
+    std::vector<Unit> unitsOf(std::string_view text) {
+        std::vector<Unit> units;
         bool unitOpen = false;
         auto piece = [&](std::string_view s, bool m) {
             if (s.empty()) return;
@@ -420,10 +421,17 @@ struct SpanWrapper {
         }
         for (auto& u : units) {
             for (MeasuredSpan& sp : u) sp.run = measureRun(atlas(sp.mono), sp.text);
+        }
+        return units;
+    }
+
+    // Operators glue their neighbours as in wrapText: "1 - g" is one unit.
+    std::vector<Unit> glueOperators(std::vector<Unit> units) {
+        std::vector<bool> operators;  // a unit that is a lone operator word
+        for (const Unit& u : units) {
             operators.push_back(u.size() == 1 && !u[0].mono && isOperator(u[0].text));
         }
-        // Operators glue their neighbours as in wrapText: "1 - g" is one unit.
-        std::vector<std::vector<MeasuredSpan>> glued;
+        std::vector<Unit> glued;
         bool glueNext = false;
         bool lastAlone = false;
         for (size_t k = 0; k < units.size(); ++k) {
@@ -438,6 +446,12 @@ struct SpanWrapper {
             }
             glueNext = op;
         }
+        return glued;
+    }
+
+    // One paragraph's lines: its units filled greedily, a unit wider than a line split.
+    void paragraph(std::string_view text) {
+        std::vector<Unit> glued = glueOperators(unitsOf(text));
         LineState st;
         for (const auto& unit : glued) {
             if (widthWith(st, unit, true) <= maxWidth) {
