@@ -47,6 +47,95 @@ constexpr float INSET_GAP_PX = 6.0f;        // between the fy lane and the inset
 float bitFor(float number) { return std::round(number * BIT_PER_NUMBER); }
 float barFor(float number) { return std::max(BAR_MIN_PX, number * BAR_PER_NUMBER); }
 
+// The side of a cell for a number size: room for the block and, beside it, for the marks a cell
+// may hold. `pad`: the cell's border band.
+float cellFor(float number, float pad) {
+    float bit = bitFor(number);
+    float blockW = measureText(FontFace::Mono, number, "d 0.000").x;
+    float blockH = lineHeightOf(bit) + 2.0f * lineHeightOf(number);
+    float bar = barFor(number);
+    return std::max(blockW + 2.0f * pad, blockH + bar + 2.0f * pad) * MARK_ROOM;
+}
+
+// The lanes around the cells: the "j=" labels' width, the "i=" lane's height, the fy lane's
+// width, the bottom lane's height, the inset column's width (0 without hw8).
+struct Lanes {
+    float labelW, laneH, fyW, laneBottomH, insetW;
+};
+
+Lanes lanesOf(const Grid& g, const TypeSizes& t, float width) {
+    Lanes ln;
+    int lastRow = std::max(std::abs(g.full.origin.y), std::abs(g.full.origin.y + g.full.size.y));
+    ln.labelW =
+        measureText(FontFace::Mono, t.label, "j=-" + std::to_string(lastRow)).x + INDEX_GAP_PX;
+    ln.laneH = lineHeightOf(t.label) + INDEX_LANE_PAD_PX;
+    ln.fyW = measureText(FontFace::Mono, t.label, "fy 0.00").x + FRACTION_LANE_PAD_PX;
+    // hw8: the fractions get four decimals and their 8-bit step on a second line (the bottom
+    // lane one line taller), and a column right of the fy lane holds the sub-texel inset.
+    ln.laneBottomH = ln.laneH;
+    ln.insetW = 0.0f;
+    if (g.hw8) {
+        ln.fyW = std::max(measureText(FontFace::Mono, t.label, "fy 0.0000").x,
+                          measureText(FontFace::Mono, t.label, "255/256").x) +
+                 FRACTION_LANE_PAD_PX;
+        ln.laneBottomH += lineHeightOf(t.label);
+        ln.insetW = std::round((width - ln.labelW - ln.fyW) * INSET_SHARE) + INSET_GAP_PX;
+    }
+    return ln;
+}
+
+// The window of `cells` texels a side that the view shows of the full neighbourhood: around the
+// lookup point, keeping the base 2 x 2 and the highlighted fetch's texels in view.
+Neighbourhood windowOf(const Grid& g, const Trace& tr, int cells, int highlight) {
+    Neighbourhood view = g.full;
+    glm::vec2 pt = tr.uv * glm::vec2(tr.mapSize);
+    for (int a = 0; a < 2; ++a) {
+        int k = std::min(cells, g.full.size[a]);
+        int lo = g.full.origin[a];
+        int hi = g.full.origin[a] + g.full.size[a] - k;
+        int want = static_cast<int>(std::floor(pt[a])) - (k - 1) / 2;
+        // Keep the base 2 x 2 in view.
+        want = std::min(want, tr.pos.base[a]);
+        want = std::max(want, tr.pos.base[a] + 2 - k);
+        if (highlight >= 0 && highlight < static_cast<int>(tr.fetches.size())) {
+            // The 2 x 2 the highlighted fetch reads (one texel for a point read).
+            const FetchRecord& f = tr.fetches[static_cast<size_t>(highlight)];
+            float q = f.uv[a] * static_cast<float>(tr.mapSize[a]);
+            bool point = f.kind == PCF_FETCH_POINT;
+            int first = static_cast<int>(std::floor(point ? q : q - 0.5f));
+            int last = point ? first : first + 1;
+            want = std::min(want, first);
+            want = std::max(want, last + 1 - k);
+        }
+        view.origin[a] = std::clamp(want, lo, std::max(lo, hi));
+        view.size[a] = k;
+    }
+    return view;
+}
+
+// The cells', the lanes' and the inset's rectangles, once the view and the cell size are known.
+void placeGrid(Grid& g, const Rect& p, const Lanes& ln, float margin, float top, float side) {
+    float gridW = g.cell * g.view.size.x;
+    float gridH = g.cell * g.view.size.y;
+    float x0 = std::round(p.x + margin + ln.labelW);
+    float y0 = std::round(top + ln.laneH);
+    g.area = {x0, y0, gridW, gridH};
+    g.laneTop = {x0, y0 - ln.laneH, gridW, ln.laneH};
+    g.laneLeft = {p.x + margin, y0, ln.labelW, gridH};
+    g.laneRight = {x0 + gridW, y0, ln.fyW, gridH};
+    g.laneBottom = {x0, y0 + gridH, gridW, ln.laneBottomH};
+    g.bottom = y0 + gridH + ln.laneBottomH;
+    if (g.hw8) {
+        // Square, level with the cells, within the height the cells may take; the caption in
+        // the lane above it.
+        float insetSide = std::floor(std::min(ln.insetW - INSET_GAP_PX, side));
+        float ix = std::round(g.laneRight.right() + INSET_GAP_PX);
+        g.inset = {ix, y0, insetSide, insetSide};
+        g.insetCaption = {ix, g.laneTop.y, insetSide, ln.laneH};
+        g.bottom = std::max(g.bottom, g.inset.bottom() + INSET_GAP_PX);
+    }
+}
+
 // The cells under the header: their size, the window of the neighbourhood they show, the lanes
 // around them. `top`: the header's bottom.
 Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float margin,
@@ -57,106 +146,41 @@ Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float
     float line = lineOf(l);
     // The cell's border band: the gather outline (inset `line`, `line + 1` wide), then 2 px.
     g.pad = 2.0f * line + (OUTLINE_EXTRA_PX + PAD_GAP_PX);
-    auto cellFor = [&](float number) {
-        float bit = bitFor(number);
-        float blockW = measureText(FontFace::Mono, number, "d 0.000").x;
-        float blockH = lineHeightOf(bit) + 2.0f * lineHeightOf(number);
-        float bar = barFor(number);
-        // Room for the block and, beside it, for the marks a cell may hold.
-        return std::max(blockW + 2.0f * g.pad, blockH + bar + 2.0f * g.pad) * MARK_ROOM;
-    };
-    int lastRow = std::max(std::abs(g.full.origin.y), std::abs(g.full.origin.y + g.full.size.y));
-    float labelW =
-        measureText(FontFace::Mono, t.label, "j=-" + std::to_string(lastRow)).x + INDEX_GAP_PX;
-    float laneH = lineHeightOf(t.label) + INDEX_LANE_PAD_PX;
-    float fyW = measureText(FontFace::Mono, t.label, "fy 0.00").x + FRACTION_LANE_PAD_PX;
-    // hw8: the fractions get four decimals and their 8-bit step on a second line (the bottom
-    // lane one line taller), and a column right of the fy lane holds the sub-texel inset.
     g.hw8 = hw8Lookup(tr);
-    float laneBottomH = laneH;
-    float insetW = 0.0f;
-    if (g.hw8) {
-        fyW = std::max(measureText(FontFace::Mono, t.label, "fy 0.0000").x,
-                       measureText(FontFace::Mono, t.label, "255/256").x) +
-              FRACTION_LANE_PAD_PX;
-        laneBottomH += lineHeightOf(t.label);
-        insetW = std::round((width - labelW - fyW) * INSET_SHARE) + INSET_GAP_PX;
-    }
+    Lanes ln = lanesOf(g, t, width);
     // The grid takes at most this share of the panel's height: the legend and the formula need
     // the rest.
-    float maxH = p.bottom() - margin - top - laneH - laneBottomH -
+    float maxH = p.bottom() - margin - top - ln.laneH - ln.laneBottomH -
                  std::max(BELOW_MIN_LINES * lineHeightOf(t.number), BELOW_MIN_SHARE * p.h);
-    float side = std::max(MIN_GRID_SIDE_PX, std::min(width - labelW - fyW - insetW, maxH));
+    float side = std::max(MIN_GRID_SIDE_PX, std::min(width - ln.labelW - ln.fyW - ln.insetW, maxH));
     int cellsFull = std::max(g.full.size.x, g.full.size.y);
     // Whole neighbourhood at the largest number size that fits, down to the floor; else a window
     // of it at the starting size.
     float number = t.number;
-    while (cellFor(number) * cellsFull > side && number > t.numberFloor) {
+    while (cellFor(number, g.pad) * cellsFull > side && number > t.numberFloor) {
         number = stepDown(number, t.numberFloor);
     }
     int cells = cellsFull;
-    if (cellFor(number) * cellsFull > side) {
+    if (cellFor(number, g.pad) * cellsFull > side) {
         number = t.number;
-        cells = std::clamp(static_cast<int>(side / cellFor(number)), 2, cellsFull);
+        cells = std::clamp(static_cast<int>(side / cellFor(number, g.pad)), 2, cellsFull);
     }
     g.number = number;
     g.bit = bitFor(number);
     g.bar = barFor(number);
-    g.view = g.full;
-    if (cells < cellsFull) {
-        glm::vec2 pt = tr.uv * glm::vec2(tr.mapSize);
-        for (int a = 0; a < 2; ++a) {
-            int k = std::min(cells, g.full.size[a]);
-            int lo = g.full.origin[a];
-            int hi = g.full.origin[a] + g.full.size[a] - k;
-            int want = static_cast<int>(std::floor(pt[a])) - (k - 1) / 2;
-            // Keep the base 2 x 2 in view.
-            want = std::min(want, tr.pos.base[a]);
-            want = std::max(want, tr.pos.base[a] + 2 - k);
-            if (highlight >= 0 && highlight < static_cast<int>(tr.fetches.size())) {
-                // The 2 x 2 the highlighted fetch reads (one texel for a point read).
-                const FetchRecord& f = tr.fetches[static_cast<size_t>(highlight)];
-                float q = f.uv[a] * static_cast<float>(tr.mapSize[a]);
-                bool point = f.kind == PCF_FETCH_POINT;
-                int first = static_cast<int>(std::floor(point ? q : q - 0.5f));
-                int last = point ? first : first + 1;
-                want = std::min(want, first);
-                want = std::max(want, last + 1 - k);
-            }
-            g.view.origin[a] = std::clamp(want, lo, std::max(lo, hi));
-            g.view.size[a] = k;
-        }
-    }
+    g.view = cells < cellsFull ? windowOf(g, tr, cells, highlight) : g.full;
     int viewCells = std::max(g.view.size.x, g.view.size.y);
     g.cell = std::floor(side / static_cast<float>(viewCells));
     // Big cells (few texels) get bigger numbers, as long as the block still fits beside marks.
     float grown =
         std::min(std::round(g.cell * GROWN_PER_CELL), std::round(t.number * GROWN_MAX_PER_NUMBER));
-    while (grown > g.number && cellFor(grown) > g.cell) grown -= 1.0f;
+    while (grown > g.number && cellFor(grown, g.pad) > g.cell) grown -= 1.0f;
     if (grown > g.number) {
         g.number = grown;
         g.bit = bitFor(grown);
         g.bar = barFor(grown);
     }
-    float gridW = g.cell * g.view.size.x;
-    float gridH = g.cell * g.view.size.y;
-    float x0 = std::round(p.x + margin + labelW);
-    float y0 = std::round(top + laneH);
-    g.area = {x0, y0, gridW, gridH};
-    g.laneTop = {x0, y0 - laneH, gridW, laneH};
-    g.laneLeft = {p.x + margin, y0, labelW, gridH};
-    g.laneRight = {x0 + gridW, y0, fyW, gridH};
-    g.laneBottom = {x0, y0 + gridH, gridW, laneBottomH};
-    g.bottom = y0 + gridH + laneBottomH;
-    if (g.hw8) {
-        // Square, level with the cells, within the height the cells may take; the caption in
-        // the lane above it.
-        float insetSide = std::floor(std::min(insetW - INSET_GAP_PX, side));
-        float ix = std::round(g.laneRight.right() + INSET_GAP_PX);
-        g.inset = {ix, y0, insetSide, insetSide};
-        g.insetCaption = {ix, g.laneTop.y, insetSide, laneH};
-        g.bottom = std::max(g.bottom, g.inset.bottom() + INSET_GAP_PX);
-    }
+    placeGrid(g, p, ln, margin, top, side);
     return g;
 }
 
