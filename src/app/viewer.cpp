@@ -58,117 +58,9 @@ class Viewer {
 
     void press(KeyPress k) {
         bool shift = (k.mods & GLFW_MOD_SHIFT) != 0;
-        LessonSettings s = mSession.settings();
-        glm::ivec2 px = mSession.pixel();
-        switch (k.key) {
-            case GLFW_KEY_ESCAPE:
-                mQuit = true;
-                break;
-            case GLFW_KEY_SPACE:
-                forward();
-                break;
-            case GLFW_KEY_RIGHT:
-                if (shift)
-                    mSession.setPixel(px + glm::ivec2(1, 0));
-                else
-                    forward();
-                break;
-            case GLFW_KEY_LEFT:
-                if (shift)
-                    mSession.setPixel(px - glm::ivec2(1, 0));
-                else
-                    back();
-                break;
-            case GLFW_KEY_BACKSPACE:
-                back();
-                break;
-            case GLFW_KEY_G:
-                mSession.setGrid(!mSession.grid());
-                break;
-            case GLFW_KEY_A:
-                mSession.setHeatmap(!mSession.heatmap());
-                break;
-            case GLFW_KEY_O:  // slide the map's texel grid by 1/8 texel (lesson 13)
-                s.originShift =
-                    std::clamp(s.originShift + (shift ? -0.125f : 0.125f), -64.0f, 64.0f);
-                mSession.setSettings(s);
-                break;
-            case GLFW_KEY_S:  // snap the map's fit to whole texels
-                s.snap = !s.snap;
-                mSession.setSettings(s);
-                break;
-            case GLFW_KEY_UP:
-                mSession.setPixel(px - glm::ivec2(0, 1));
-                break;
-            case GLFW_KEY_DOWN:
-                mSession.setPixel(px + glm::ivec2(0, 1));
-                break;
-            case GLFW_KEY_HOME:
-                mSession.goToStep(0);
-                break;
-            case GLFW_KEY_END:
-                mSession.goToStep(mSession.stepCount() - 1);
-                break;
-            case GLFW_KEY_M: {
-                s.method = (s.method + (shift ? PCF_METHOD_COUNT - 1 : 1)) % PCF_METHOD_COUNT;
-                s.kernel = fitKernel(s.method, s.kernel);
-                // A bias the new method cannot take (soft on hardware taps) falls back.
-                if (validateBias(static_cast<int>(s.bias), s.method)) {
-                    s.bias = BiasMode::Constant;
-                }
-                mSession.setSettings(s);
-                break;
-            }
-            case GLFW_KEY_LEFT_BRACKET:
-            case GLFW_KEY_RIGHT_BRACKET: {
-                s.kernel = stepKernel(s.method, s.kernel, k.key == GLFW_KEY_RIGHT_BRACKET ? 1 : -1);
-                mSession.setSettings(s);
-                break;
-            }
-            case GLFW_KEY_MINUS:
-            case GLFW_KEY_KP_SUBTRACT:
-                s.mapSize = std::max(MIN_MAP_SIZE, s.mapSize / 2);
-                mSession.setSettings(s);
-                break;
-            case GLFW_KEY_EQUAL:
-            case GLFW_KEY_KP_ADD:
-                s.mapSize = std::min(MAX_MAP_SIZE, s.mapSize * 2);
-                mSession.setSettings(s);
-                break;
-            case GLFW_KEY_B: {
-                // Every bias mode in turn (shift: backwards), skipping those the method cannot
-                // take (kernel/bias.h: validateBias).
-                int mode = static_cast<int>(s.bias);
-                do {
-                    mode = (mode + (shift ? PCF_BIAS_COUNT - 1 : 1)) % PCF_BIAS_COUNT;
-                } while (validateBias(mode, s.method));
-                s.bias = static_cast<BiasMode>(mode);
-                mSession.setSettings(s);
-                break;
-            }
-            case GLFW_KEY_Q:  // the texture unit's precision: exact <-> hw8 (issue 10)
-                s.precision =
-                    s.precision == PCF_PRECISION_HW8 ? PCF_PRECISION_EXACT : PCF_PRECISION_HW8;
-                mSession.setSettings(s);
-                break;
-            case GLFW_KEY_L:
-                nextLesson(shift ? -1 : 1);
-                break;
-            case GLFW_KEY_E:
-                exportFrame();
-                break;
-            case GLFW_KEY_P:
-                mSession.setPresentation(!mSession.presentation());
-                break;
-            case GLFW_KEY_H:
-                mSession.setHelp(!mSession.help());
-                break;
-            case GLFW_KEY_F:
-                toggleFullscreen();
-                break;
-            default:
-                break;
-        }
+        if (pressNavigation(k.key, shift)) return;
+        if (pressSetting(k.key, shift)) return;
+        pressView(k.key);
     }
 
     void click(glm::dvec2 cursor) {
@@ -205,6 +97,139 @@ class Viewer {
     }
 
   private:
+    // The keys that move through the steps, the pixels and the lessons, and Esc. Returns
+    // whether `key` is one of them.
+    bool pressNavigation(int key, bool shift) {
+        glm::ivec2 px = mSession.pixel();
+        switch (key) {
+            case GLFW_KEY_ESCAPE:
+                mQuit = true;
+                return true;
+            case GLFW_KEY_SPACE:
+                forward();
+                return true;
+            case GLFW_KEY_RIGHT:
+                if (shift)
+                    mSession.setPixel(px + glm::ivec2(1, 0));
+                else
+                    forward();
+                return true;
+            case GLFW_KEY_LEFT:
+                if (shift)
+                    mSession.setPixel(px - glm::ivec2(1, 0));
+                else
+                    back();
+                return true;
+            case GLFW_KEY_BACKSPACE:
+                back();
+                return true;
+            case GLFW_KEY_UP:
+                mSession.setPixel(px - glm::ivec2(0, 1));
+                return true;
+            case GLFW_KEY_DOWN:
+                mSession.setPixel(px + glm::ivec2(0, 1));
+                return true;
+            case GLFW_KEY_HOME:
+                mSession.goToStep(0);
+                return true;
+            case GLFW_KEY_END:
+                mSession.goToStep(mSession.stepCount() - 1);
+                return true;
+            case GLFW_KEY_L:
+                nextLesson(shift ? -1 : 1);
+                return true;
+            default:
+                return false;
+        }
+    }
+
+    // The keys that change the lesson's settings (method, kernel, map, bias, precision, the
+    // map's fit). Returns whether `key` is one of them.
+    bool pressSetting(int key, bool shift) {
+        LessonSettings s = mSession.settings();
+        switch (key) {
+            case GLFW_KEY_O:  // slide the map's texel grid by 1/8 texel (lesson 13)
+                s.originShift =
+                    std::clamp(s.originShift + (shift ? -0.125f : 0.125f), -64.0f, 64.0f);
+                break;
+            case GLFW_KEY_S:  // snap the map's fit to whole texels
+                s.snap = !s.snap;
+                break;
+            case GLFW_KEY_M:
+                nextMethod(s, shift);
+                break;
+            case GLFW_KEY_LEFT_BRACKET:
+            case GLFW_KEY_RIGHT_BRACKET:
+                s.kernel = stepKernel(s.method, s.kernel, key == GLFW_KEY_RIGHT_BRACKET ? 1 : -1);
+                break;
+            case GLFW_KEY_MINUS:
+            case GLFW_KEY_KP_SUBTRACT:
+                s.mapSize = std::max(MIN_MAP_SIZE, s.mapSize / 2);
+                break;
+            case GLFW_KEY_EQUAL:
+            case GLFW_KEY_KP_ADD:
+                s.mapSize = std::min(MAX_MAP_SIZE, s.mapSize * 2);
+                break;
+            case GLFW_KEY_B:
+                nextBias(s, shift);
+                break;
+            case GLFW_KEY_Q:  // the texture unit's precision: exact <-> hw8 (issue 10)
+                s.precision =
+                    s.precision == PCF_PRECISION_HW8 ? PCF_PRECISION_EXACT : PCF_PRECISION_HW8;
+                break;
+            default:
+                return false;
+        }
+        mSession.setSettings(s);
+        return true;
+    }
+
+    // The next method (shift: the previous), its kernel fitted to it.
+    static void nextMethod(LessonSettings& s, bool shift) {
+        s.method = (s.method + (shift ? PCF_METHOD_COUNT - 1 : 1)) % PCF_METHOD_COUNT;
+        s.kernel = fitKernel(s.method, s.kernel);
+        // A bias the new method cannot take (soft on hardware taps) falls back.
+        if (validateBias(static_cast<int>(s.bias), s.method)) {
+            s.bias = BiasMode::Constant;
+        }
+    }
+
+    // Every bias mode in turn (shift: backwards), skipping those the method cannot take
+    // (kernel/bias.h: validateBias).
+    static void nextBias(LessonSettings& s, bool shift) {
+        int mode = static_cast<int>(s.bias);
+        do {
+            mode = (mode + (shift ? PCF_BIAS_COUNT - 1 : 1)) % PCF_BIAS_COUNT;
+        } while (validateBias(mode, s.method));
+        s.bias = static_cast<BiasMode>(mode);
+    }
+
+    // The keys that toggle what the frame shows, export it, or go full screen.
+    void pressView(int key) {
+        switch (key) {
+            case GLFW_KEY_G:
+                mSession.setGrid(!mSession.grid());
+                break;
+            case GLFW_KEY_A:
+                mSession.setHeatmap(!mSession.heatmap());
+                break;
+            case GLFW_KEY_E:
+                exportFrame();
+                break;
+            case GLFW_KEY_P:
+                mSession.setPresentation(!mSession.presentation());
+                break;
+            case GLFW_KEY_H:
+                mSession.setHelp(!mSession.help());
+                break;
+            case GLFW_KEY_F:
+                toggleFullscreen();
+                break;
+            default:
+                break;
+        }
+    }
+
     // Space/Right: the next page of a step's text that pages, then the next step.
     void forward() {
         if (!mSession.nextPage()) mSession.goToStep(mSession.step() + 1);
