@@ -584,6 +584,15 @@ std::vector<size_t> ownedMarks(const CellMarks& cm, const Grid& g, glm::ivec2 te
     return owned;
 }
 
+// The marks that overlap cell `r`, grown by the clearance numbers keep from them.
+std::vector<Rect> marksOver(const CellMarks& cm, const Grid& g, const Rect& r) {
+    std::vector<Rect> near;
+    for (const Rect& mk : cm.all(g.area)) {
+        if (overlaps(mk, r)) near.push_back(mk.expanded(MARK_CLEARANCE_PX));
+    }
+    return near;
+}
+
 // One cell's numbers. The candidates that keep the depth, largest type first; each around the
 // marks where the math puts them, then with this cell's point marks moved into a lane at the
 // cell's edge (the nearest first; along an edge a mark keeps its true position), so that one
@@ -603,13 +612,7 @@ bool planCell(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm
         numberCandidates(all, tap != nullptr, hasDepth, g, numberFloor);
     Rect inner = r.expanded(-g.pad);
     inner.h -= g.bar + 1.0f;
-    auto marksNear = [&]() {
-        std::vector<Rect> near;
-        for (const Rect& mk : cm.all(g.area)) {
-            if (overlaps(mk, r)) near.push_back(mk.expanded(MARK_CLEARANCE_PX));
-        }
-        return near;
-    };
+    auto marksNear = [&]() { return marksOver(cm, g, r); };
     auto keepsDepth = [&](const std::vector<Item>& items) {
         return !hasDepth || std::any_of(items.begin(), items.end(),
                                         [](const Item& it) { return it.role == "cell-depth"; });
