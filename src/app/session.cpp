@@ -472,12 +472,15 @@ std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLay
 void Session::blitChart(const InspectorLayout& layout) {
     glm::ivec2 size(layout.scene.size());
     const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
+    // The chart's texts are placed with the scene rect's origin, so the key has it too.
     std::string key = step.chart + "@" + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                      "+" + std::to_string(layout.scene.x) + "," + std::to_string(layout.scene.y) +
                       "#" + step.chartHighlight + (layout.presentation ? "P" : "");
     if (key != mChartKey) {
         std::vector<uint8_t> rgba = drawStepChart(step, size, layout.presentation);
         mChart = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
         uploadBottomUp(mChart, size.x, size.y, rgba);
+        mChartBoxes = stepChartBoxes(step, layout);
         mChartKey = key;
     }
     // Texture row 0 holds the chart's bottom row (uploadBottomUp): a straight copy.
@@ -598,10 +601,8 @@ void Session::composeInto(GLuint fbo) {
         plan = planFrame(layout, m);
     }
     mBoxes = plan.boxes;
-    if (!chart.empty()) {
-        std::vector<LayoutBox> texts = stepChartBoxes(step, layout);
-        mBoxes.insert(mBoxes.end(), texts.begin(), texts.end());
-    }
+    // blitChart above placed them with the chart it drew or kept.
+    if (!chart.empty()) mBoxes.insert(mBoxes.end(), mChartBoxes.begin(), mChartBoxes.end());
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     mCanvas.begin(frame);
     drawPlan(mCanvas, plan.base);

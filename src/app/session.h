@@ -187,7 +187,8 @@ class Session {
     GLuint mTarget = 0;          // what the current compose draws into (mFrame's, or the window's)
     OffscreenTarget mThumbnail;  // the map's thumbnail, rows top-down, blitted into the frame
     OffscreenTarget mChart;      // the step's chart, rows top-down
-    std::string mChartKey;       // path and size the chart was drawn for
+    std::string mChartKey;       // path, rect and highlight the chart was drawn for
+    std::vector<LayoutBox> mChartBoxes;  // its texts as the layout lists them, for mChartKey
     bool mThumbnailDirty = true;
 };
 
