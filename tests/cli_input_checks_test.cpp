@@ -14,6 +14,7 @@
 #include "exr_header.h"
 #include "kernel/shadow_map.h"
 #include "render/image_io.h"
+#include "render/sanitizer_build.h"
 #include "run_command.h"
 
 namespace pcf {
@@ -110,7 +111,7 @@ TEST_F(CliInputChecks, ABrokenPngMapIsOneLineToo) {
                                         "/tests/fuzz/corpus/depth_image/png-truncated-text.png");
     std::ofstream(mDir / "cut.png", std::ios::binary) << png.substr(1);
     mKeep = {"cut.png"};
-#if defined(__SANITIZE_ADDRESS__)
+#if PCFSCOPE_ASAN
     // Sanitizer builds let libpng's line through (image_io.cpp QuietStderr): ours is the last.
     auto r = runPcfscope("trace --map cut.png --uv 0.5,0.5 --z 0.5", "cd " + mDir.string() + " &&");
     EXPECT_EQ(r.exitCode, 2) << r.err;

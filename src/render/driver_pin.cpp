@@ -1,22 +1,15 @@
 #include "render/driver_pin.h"
 
-// Sanitizer builds (scripts/test --sanitize): gcc defines __SANITIZE_ADDRESS__, clang has the
-// feature test.
-#if defined(__SANITIZE_ADDRESS__)
-#define PCFSCOPE_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define PCFSCOPE_ASAN 1
-#endif
-#endif
-#ifdef PCFSCOPE_ASAN
+#include "render/sanitizer_build.h"
+
+#if PCFSCOPE_ASAN
 #include <dlfcn.h>
 #include <link.h>
 #endif
 
 namespace pcf {
 
-#ifdef PCFSCOPE_ASAN
+#if PCFSCOPE_ASAN
 
 std::set<std::string> mappedLibraries() {
     std::set<std::string> out;

@@ -12,6 +12,7 @@
 #include <random>
 #include <system_error>
 
+#include "render/sanitizer_build.h"
 #include "scene/input_error.h"
 
 namespace pcf {
@@ -170,18 +171,6 @@ void writeExr(const std::string& path, int width, int height, int channels,
 void writeDepthImage(const std::string& path, const ShadowMap& map) {
     writeExr(path, map.width(), map.height(), 1, map.depths(), {"Z"});
 }
-
-// gcc says __SANITIZE_ADDRESS__, clang __has_feature(address_sanitizer).
-#if defined(__SANITIZE_ADDRESS__)
-#define PCFSCOPE_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define PCFSCOPE_ASAN 1
-#endif
-#endif
-#ifndef PCFSCOPE_ASAN
-#define PCFSCOPE_ASAN 0
-#endif
 
 namespace {
 
