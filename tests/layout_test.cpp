@@ -222,10 +222,12 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                             // (A box clipped to the cells is not square: its centre is not the
                             // point's; the cell check above still holds.)
                             if (b.rect.w == b.rect.h) {
-                                if (std::abs(drawn.x - truePt.x) > 2.5f)
+                                if (std::abs(drawn.x - truePt.x) > 2.5f) {
                                     EXPECT_TRUE(tickX) << where;
-                                if (std::abs(drawn.y - truePt.y) > 2.5f)
+                                }
+                                if (std::abs(drawn.y - truePt.y) > 2.5f) {
                                     EXPECT_TRUE(tickY) << where;
+                                }
                             }
                             if (tickX || tickY) ++pointMoved;
                         }
@@ -511,7 +513,9 @@ TEST_F(Layout, PresentationShowsTheNeighbouringStepsAtReadableSize) {
                 EXPECT_GE(b.fontPx, 18.0f);
                 EXPECT_FALSE(b.shortened);
             }
-            if (current == 1) EXPECT_LT(items[0].rect.x, items[1].rect.x);  // previous, next
+            if (current == 1) {
+                EXPECT_LT(items[0].rect.x, items[1].rect.x);  // previous, next
+            }
             EXPECT_TRUE(problems(plan, l).empty());
         }
     }
