@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "kernel/methods.h"
-#include "scene/input_error.h"
+#include "base/input_error.h"
 
 namespace pcf {
 namespace {

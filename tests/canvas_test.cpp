@@ -1,6 +1,6 @@
 // The overlay canvas on llvmpipe through EGL: exact coverage, painter's order, crisp text,
 // determinism and batching. Pixels are read back with rows top-down, like the canvas counts.
-#include "overlay/canvas.h"
+#include "draw/canvas.h"
 
 #include <gtest/gtest.h>
 

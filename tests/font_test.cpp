@@ -1,5 +1,5 @@
 // Font discovery: fontconfig first, then the known paths, then one line naming every place.
-#include "overlay/font.h"
+#include "draw/font.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The glyph atlas: metrics for what the inspector writes, rasterised at the exact size asked.
-#include "overlay/glyph_atlas.h"
+#include "draw/glyph_atlas.h"
 
 #include <gtest/gtest.h>
 

@@ -15,8 +15,8 @@
 #include "lesson/lesson.h"
 #include "render/image_io.h"
 #include "run_command.h"
-#include "scene/input_error.h"
-#include "scene/input_file.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
 #include "scene/scene_file.h"
 
 namespace pcf {

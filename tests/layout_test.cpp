@@ -22,11 +22,11 @@
 #include "lesson/lesson.h"
 #include "lesson/lesson_text.h"
 #include "overlay/inspector.h"
-#include "overlay/text_layout.h"
+#include "draw/text_layout.h"
 #include "render/gl_context.h"
 #include "render/render_settings.h"
 #include "render/scene_renderer.h"
-#include "scene/input_file.h"
+#include "base/input_file.h"
 
 namespace pcf {
 namespace {

@@ -10,7 +10,7 @@
 #include "analysis/speed_chart.h"
 #include "kernel/pcf.h"
 #include "lesson/lesson.h"
-#include "scene/input_error.h"
+#include "base/input_error.h"
 
 namespace pcf {
 namespace {

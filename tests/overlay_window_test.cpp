@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "overlay/canvas.h"
+#include "draw/canvas.h"
 #include "render/gl_context.h"
 #include "render/gl_objects.h"
 #include "virtual_display.h"

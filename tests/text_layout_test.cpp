@@ -1,5 +1,5 @@
 // Text layout: UTF-8, measuring, whole-pixel placement and word wrap.
-#include "overlay/text_layout.h"
+#include "draw/text_layout.h"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 #include "analysis/csv_lines.h"
 #include "analysis/pareto.h"
 #include "kernel/methods.h"
-#include "scene/input_error.h"
+#include "base/input_error.h"
 
 namespace pcf {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "overlay/canvas.h"
-#include "overlay/rect.h"
+#include "draw/canvas.h"
+#include "draw/rect.h"
 #include "render/gl_objects.h"
 
 namespace pcf {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "scene/input_error.h"
+#include "base/input_error.h"
 
 namespace pcf {
 

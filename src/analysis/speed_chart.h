@@ -3,7 +3,7 @@
 // (each run's cost spans 1 to ~200 texel reads), edge-band RMSE on a linear y axis from 0, one
 // dot per run coloured by method and labelled "gather3 1024" (method, N, map size), and the
 // Pareto front (runs no other run beats on both time and error) joined by a line, its dots
-// ringed. Drawn with the overlay's Canvas (src/overlay/canvas.h) into an offscreen target.
+// ringed. Drawn with the overlay's Canvas (src/draw/canvas.h) into an offscreen target.
 //
 // The layout is computed apart from the drawing (no GL), so where things go can be tested
 // without reading pixels. Coordinates are the canvas's: pixels, origin top-left, y down.
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "analysis/bench.h"
-#include "overlay/rect.h"
+#include "draw/rect.h"
 
 namespace pcf {
 

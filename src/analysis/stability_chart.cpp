@@ -8,8 +8,8 @@
 #include "analysis/chart_axes.h"
 #include "analysis/speed_chart.h"
 #include "kernel/methods.h"
-#include "overlay/canvas.h"
-#include "overlay/text_layout.h"
+#include "draw/canvas.h"
+#include "draw/text_layout.h"
 #include "render/gl_objects.h"
 
 namespace pcf {

@@ -7,7 +7,7 @@
 
 #include "analysis/csv_lines.h"
 #include "kernel/methods.h"
-#include "scene/input_error.h"
+#include "base/input_error.h"
 
 namespace pcf {
 

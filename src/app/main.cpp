@@ -9,12 +9,12 @@
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "render/image_io.h"
-#include "scene/input_error.h"
+#include "base/input_error.h"
 
 namespace {
 
 // One line whatever the message holds: a newline in an option value or a file name is written
-// as \n (scene/input_error.h oneLine).
+// as \n (base/input_error.h oneLine).
 int fail(const std::string& message) {
     std::fprintf(stderr, "pcfscope: %s\n", pcf::oneLine(message).c_str());
     return 2;

@@ -18,8 +18,8 @@
 #include "kernel/trace_explain.h"
 #include "kernel/trace_json.h"
 #include "lesson/lesson_text.h"
-#include "scene/input_error.h"
-#include "scene/input_file.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
 #include "scene/light.h"
 
 namespace pcf {
@@ -148,7 +148,7 @@ Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presen
 
 namespace {
 
-// A chart's CSV, read with the checks every input file gets (scene/input_file.h).
+// A chart's CSV, read with the checks every input file gets (base/input_file.h).
 std::string readChartText(const std::string& csvPath) { return readInputFile(csvPath); }
 
 // Refuses a chart of more rows than one frame can show.

@@ -14,7 +14,7 @@
 
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
-#include "overlay/canvas.h"
+#include "draw/canvas.h"
 #include "overlay/inspector.h"
 #include "render/gl_objects.h"
 #include "render/render_settings.h"

@@ -15,7 +15,7 @@
 #include "kernel/shadow_map.h"
 #include "kernel/trace.h"
 #include "lesson/lesson_text.h"
-#include "scene/input_file.h"
+#include "base/input_file.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"
 

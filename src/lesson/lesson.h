@@ -69,7 +69,7 @@
 #include "kernel/bias.h"
 #include "kernel/pcf.h"
 #include "kernel/settings.h"
-#include "scene/input_error.h"
+#include "base/input_error.h"
 #include "scene/scene.h"
 
 namespace pcf {

@@ -15,8 +15,8 @@
 
 #include "kernel/shadow_map.h"
 #include "kernel/trace.h"
-#include "overlay/canvas.h"
-#include "overlay/rect.h"
+#include "draw/canvas.h"
+#include "draw/rect.h"
 #include "render/gl_objects.h"
 
 namespace pcf {

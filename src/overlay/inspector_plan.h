@@ -20,7 +20,7 @@
 
 #include "kernel/trace_explain.h"
 #include "overlay/inspector.h"
-#include "overlay/text_layout.h"
+#include "draw/text_layout.h"
 
 namespace pcf::inspector_detail {
 

@@ -13,7 +13,7 @@
 #include <system_error>
 
 #include "render/sanitizer_build.h"
-#include "scene/input_error.h"
+#include "base/input_error.h"
 
 namespace pcf {
 

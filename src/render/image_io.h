@@ -21,7 +21,7 @@
 namespace pcf {
 
 // Bad image input or a failed write: one line, "PATH: what is wrong".
-// (src/scene/input_error.h is to take this role; until then this is what image_io throws.)
+// (src/base/input_error.h is to take this role; until then this is what image_io throws.)
 class ImageError : public std::runtime_error {
   public:
     using std::runtime_error::runtime_error;

@@ -10,7 +10,7 @@
 #include <optional>
 #include <sstream>
 
-#include "scene/input_file.h"
+#include "base/input_file.h"
 
 namespace pcf {
 

@@ -43,7 +43,7 @@
 #include <string>
 #include <string_view>
 
-#include "scene/input_error.h"
+#include "base/input_error.h"
 #include "scene/scene.h"
 
 namespace pcf {

@@ -4,7 +4,7 @@
 #include <string_view>
 
 #include "analysis/bench_report.h"
-#include "scene/input_error.h"
+#include "base/input_error.h"
 #include "tests/fuzz/fuzz_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

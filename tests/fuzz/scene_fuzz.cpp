@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "scene/input_error.h"
+#include "base/input_error.h"
 #include "scene/scene_file.h"
 #include "tests/fuzz/fuzz_check.h"
 

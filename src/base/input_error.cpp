@@ -1,4 +1,4 @@
-#include "scene/input_error.h"
+#include "base/input_error.h"
 
 #include <sstream>
 #include <string_view>

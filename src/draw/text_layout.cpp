@@ -1,4 +1,4 @@
-#include "overlay/text_layout.h"
+#include "draw/text_layout.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "overlay/glyph_atlas.h"
+#include "draw/glyph_atlas.h"
 
 #include <ft2build.h>
 

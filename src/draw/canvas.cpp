@@ -1,4 +1,4 @@
-#include "overlay/canvas.h"
+#include "draw/canvas.h"
 
 #include <algorithm>
 #include <atomic>

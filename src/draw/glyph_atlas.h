@@ -21,7 +21,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "overlay/font.h"
+#include "draw/font.h"
 
 namespace pcf {
 

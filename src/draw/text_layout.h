@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "overlay/glyph_atlas.h"
+#include "draw/glyph_atlas.h"
 
 namespace pcf {
 

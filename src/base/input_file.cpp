@@ -1,11 +1,11 @@
-#include "scene/input_file.h"
+#include "base/input_file.h"
 
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <system_error>
 
-#include "scene/input_error.h"
+#include "base/input_error.h"
 
 namespace pcf {
 

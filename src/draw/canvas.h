@@ -41,10 +41,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "overlay/font.h"
-#include "overlay/glyph_atlas.h"
-#include "overlay/rect.h"
-#include "overlay/text_layout.h"
+#include "draw/font.h"
+#include "draw/glyph_atlas.h"
+#include "draw/rect.h"
+#include "draw/text_layout.h"
 #include "render/gl_objects.h"
 
 namespace pcf {

@@ -1,4 +1,4 @@
-#include "overlay/font.h"
+#include "draw/font.h"
 
 #include <fontconfig/fontconfig.h>
 #include <ft2build.h>
