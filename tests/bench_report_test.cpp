@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "kernel/methods.h"
 #include "base/input_error.h"
+#include "kernel/methods.h"
 
 namespace pcf {
 namespace {

@@ -12,11 +12,11 @@
 
 #include "app/cli_util.h"
 #include "app/session.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
 #include "lesson/lesson.h"
 #include "render/image_io.h"
 #include "run_command.h"
-#include "base/input_error.h"
-#include "base/input_file.h"
 #include "scene/scene_file.h"
 
 namespace pcf {

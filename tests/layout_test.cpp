@@ -18,15 +18,15 @@
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
 #include "app/session.h"
+#include "base/input_file.h"
+#include "draw/text_layout.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_text.h"
 #include "overlay/inspector.h"
-#include "draw/text_layout.h"
 #include "render/gl_context.h"
 #include "render/render_settings.h"
 #include "render/scene_renderer.h"
-#include "base/input_file.h"
 
 namespace pcf {
 namespace {

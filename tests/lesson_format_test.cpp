@@ -8,9 +8,9 @@
 
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
+#include "base/input_error.h"
 #include "kernel/pcf.h"
 #include "lesson/lesson.h"
-#include "base/input_error.h"
 
 namespace pcf {
 namespace {

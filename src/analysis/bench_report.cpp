@@ -9,8 +9,8 @@
 
 #include "analysis/csv_lines.h"
 #include "analysis/pareto.h"
-#include "kernel/methods.h"
 #include "base/input_error.h"
+#include "kernel/methods.h"
 
 namespace pcf {
 

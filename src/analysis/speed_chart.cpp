@@ -8,9 +8,9 @@
 #include "analysis/bench_report.h"
 #include "analysis/chart_axes.h"
 #include "analysis/pareto.h"
-#include "kernel/methods.h"
 #include "draw/canvas.h"
 #include "draw/text_layout.h"
+#include "kernel/methods.h"
 #include "render/gl_objects.h"
 
 namespace pcf {

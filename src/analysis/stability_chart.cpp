@@ -7,9 +7,9 @@
 
 #include "analysis/chart_axes.h"
 #include "analysis/speed_chart.h"
-#include "kernel/methods.h"
 #include "draw/canvas.h"
 #include "draw/text_layout.h"
+#include "kernel/methods.h"
 #include "render/gl_objects.h"
 
 namespace pcf {

@@ -6,8 +6,8 @@
 #include <cstdlib>
 
 #include "analysis/csv_lines.h"
-#include "kernel/methods.h"
 #include "base/input_error.h"
+#include "kernel/methods.h"
 
 namespace pcf {
 

@@ -8,8 +8,8 @@
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/output_files.h"
-#include "render/image_io.h"
 #include "base/input_error.h"
+#include "render/image_io.h"
 
 namespace {
 

@@ -14,12 +14,12 @@
 #include "analysis/stability_chart.h"
 #include "analysis/stability_report.h"
 #include "app/cli_util.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
 #include "kernel/methods.h"
 #include "kernel/trace_explain.h"
 #include "kernel/trace_json.h"
 #include "lesson/lesson_text.h"
-#include "base/input_error.h"
-#include "base/input_file.h"
 #include "scene/light.h"
 
 namespace pcf {

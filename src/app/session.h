@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "draw/canvas.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
-#include "draw/canvas.h"
 #include "overlay/inspector.h"
 #include "render/gl_objects.h"
 #include "render/render_settings.h"

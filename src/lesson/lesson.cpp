@@ -10,12 +10,12 @@
 #include <optional>
 #include <sstream>
 
+#include "base/input_file.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/shadow_map.h"
 #include "kernel/trace.h"
 #include "lesson/lesson_text.h"
-#include "base/input_file.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"
 

@@ -66,10 +66,10 @@
 #include <string_view>
 #include <vector>
 
+#include "base/input_error.h"
 #include "kernel/bias.h"
 #include "kernel/pcf.h"
 #include "kernel/settings.h"
-#include "base/input_error.h"
 #include "scene/scene.h"
 
 namespace pcf {

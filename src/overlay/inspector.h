@@ -13,10 +13,10 @@
 #include <string_view>
 #include <vector>
 
-#include "kernel/shadow_map.h"
-#include "kernel/trace.h"
 #include "draw/canvas.h"
 #include "draw/rect.h"
+#include "kernel/shadow_map.h"
+#include "kernel/trace.h"
 #include "render/gl_objects.h"
 
 namespace pcf {

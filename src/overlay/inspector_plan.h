@@ -18,9 +18,9 @@
 #include <string_view>
 #include <vector>
 
+#include "draw/text_layout.h"
 #include "kernel/trace_explain.h"
 #include "overlay/inspector.h"
-#include "draw/text_layout.h"
 
 namespace pcf::inspector_detail {
 

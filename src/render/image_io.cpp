@@ -12,8 +12,8 @@
 #include <random>
 #include <system_error>
 
-#include "render/sanitizer_build.h"
 #include "base/input_error.h"
+#include "render/sanitizer_build.h"
 
 namespace pcf {
 

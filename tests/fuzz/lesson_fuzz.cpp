@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "lesson/lesson.h"
 #include "base/input_error.h"
+#include "lesson/lesson.h"
 #include "tests/fuzz/fuzz_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
