@@ -18,9 +18,11 @@ layout(location = 0) out float oVisibility;
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 lookup = texelFetch(uLookups, pixel, 0);
-    vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(pixel) : vec2(1.0f, 0.0f);
     vec4 plane = texelFetch(uPlanes, pixel, 0);
     vec2 uv = vec2(lookup.x, lookup.y);
+    // As scene.frag: the disk turns with the texel looked up.
+    vec2 rotation =
+        uRotatePerPixel != 0 ? pcfTexelRotation(uv, textureSize(uPcfDepth, 0)) : vec2(1.0f, 0.0f);
     PcfRef ref =
         PcfRef(lookup.z, uv, PcfBias(PCF_LOOKUP_BIAS, vec2(plane.x, plane.y), uSoftScale, uRpdbMax));
     oVisibility = pcfFilterRef(uPcfDepth, uv, ref,

@@ -30,6 +30,9 @@ uniform float uRadius;                // poisson radius in texels
 uniform int uRotatePerPixel;          // poisson: rotate the disk per pixel
 uniform int uWeights;                 // pcf-naive, pcf-gather: PCF_WEIGHTS_*
 uniform float uSigma;                 // gaussian weights, texels
+uniform ivec2 uPickPixel;             // a lesson's pinned point's pixel (window coords); -1: none
+uniform vec4 uPickLookup;             // its u, v, ref, z0, computed on the CPU
+uniform vec2 uPickDzDuv;              // its receiver plane, dz/du, dz/dv
 
 layout(location = 0) out vec4 oColour;
 #if PCF_ALL_TARGETS
@@ -58,31 +61,17 @@ void main() {
     if (!gl_FrontFacing) n = -n;  // a plane seen from behind
     float nDotL = max(dot(n, toLight), 0.0f);
 
-    // GL convention: ndc = clip / w, uv = ndc.xy * 0.5 + 0.5, depth = ndc.z * 0.5 + 0.5.
-    vec4 clip0 = uShadowClipFromWorld * vec4(vPosWs, 1.0f);
-    float z0 = (clip0.z / clip0.w) * 0.5f + 0.5f;  // the receiver's own depth, before any bias
-    // Normal offset: the point moves along its normal before it is projected
-    // (pcfNormalOffsetDistance: Holbert 2011, Castano 2013). The texel's world size grows with
-    // clip.w under a spot light's perspective and is constant under a directional light's.
-    // Every other mode looks up where the point is: the projection already made for z0 (the
-    // very same product), not a second one.
-    vec4 clip = clip0;
-    if (BIAS_MODE == PCF_BIAS_NORMAL) {
-        vec3 posLookupWs = vPosWs + n * pcfNormalOffsetDistance(dot(n, toLight), uNormalOffset,
-                                                                uShadowTexelWs * clip0.w);
-        clip = uShadowClipFromWorld * vec4(posLookupWs, 1.0f);
-    }
-    vec3 ndc = clip.xyz / clip.w;
-    float u = ndc.x * 0.5f + 0.5f;
-    float v = ndc.y * 0.5f + 0.5f;
-    float z = ndc.z * 0.5f + 0.5f;
-    // The per-lookup bias: constant for every mode but none (uConstantBias is 0 there), slope
-    // scaled by tan(theta) and capped for slope (pcfSlopeBias).
-    float bias = uConstantBias;
-    if (BIAS_MODE == PCF_BIAS_SLOPE) {
-        bias = pcfSlopeBias(dot(n, toLight), uConstantBias, uSlopeBias, uSlopeMax);
-    }
-    float ref = z - bias;
+    // Where this receiver point is looked up, and its ref (shared/pcf_shading.h, the same
+    // function the CPU runs for a lesson's pinned point). BIAS_MODE is a constant: the driver
+    // folds the modes this program does not use.
+    PcfReceiverLookup at = pcfReceiverLookup(uShadowClipFromWorld, vPosWs, n, dot(n, toLight),
+                                             BIAS_MODE, uConstantBias, uSlopeBias, uSlopeMax,
+                                             uNormalOffset, uShadowTexelWs);
+    float u = at.u;
+    float v = at.v;
+    float z = at.z;
+    float z0 = at.z0;
+    float ref = at.ref;
     // The receiver's plane in the map, from this pixel's screen-space derivatives (Isidoro 2006,
     // pcfReceiverPlaneDzDuv); written out so the CPU kernel uses the very same slope. Only
     // receiver-plane bias filters with it, so a colour-only pass in another mode skips it. The kernel
@@ -92,9 +81,23 @@ void main() {
         dzduv = pcfReceiverPlaneDzDuv(dFdx(vec3(u, v, z)), dFdy(vec3(u, v, z)));
     }
 
+    // A lesson's pinned scene point (src/lesson/lesson_pick.h): the camera is jittered so that
+    // the point projects to this pixel's centre, and its lookup, computed once on the CPU from
+    // the point itself, replaces the interpolated one (they differ by rounding only). So the
+    // pixel shows exactly the lookup the inspector traces, the same at every frame size. After
+    // the derivatives: every lane of the quad measured the plane from its own position.
+    if (ivec2(gl_FragCoord.xy) == uPickPixel) {
+        u = uPickLookup.x;
+        v = uPickLookup.y;
+        ref = uPickLookup.z;
+        z0 = uPickLookup.w;
+        dzduv = uPickDzDuv;
+    }
+
     float visibility = 1.0f;
     if (uReceives != 0) {
-        vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(ivec2(gl_FragCoord.xy))
+        // The disk turns with the texel looked up, not the screen pixel (pcfTexelRotation).
+        vec2 rotation = uRotatePerPixel != 0 ? pcfTexelRotation(vec2(u, v), textureSize(uPcfDepth, 0))
                                              : vec2(1.0f, 0.0f);
         PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(BIAS_MODE, dzduv, uSoftScale, uRpdbMax));
         visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef,

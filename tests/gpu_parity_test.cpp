@@ -107,7 +107,7 @@ TEST_F(GpuParity, RandomLookupsOnRandomMapsMatchTheCpuKernel) {
                 for (size_t k = 0; k < lookups.size(); ++k) {
                     PcfParams p = prm;
                     if (rotate) {
-                        p.rotation = pcfPixelRotation(glm::ivec2(k % width, k / width));
+                        p.rotation = pcfTexelRotation(glm::vec2(lookups[k]), size);
                     }
                     a.add(map, glm::vec2(lookups[k]), lookups[k].z, p, got[k], sSoftware);
                 }
@@ -319,9 +319,10 @@ TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
                         if (ls[4 * k + 3] != 1.0f) continue;
                         ++receivers;
                         PcfParams p = s.pcfParams();
-                        // Rows are top-down; gl_FragCoord counts from the bottom.
+                        // The disk turns with the texel looked up (pcfTexelRotation).
                         if (s.rotatePerPixel) {
-                            p.rotation = pcfPixelRotation(glm::ivec2(x, s.frameSize.y - 1 - y));
+                            p.rotation = pcfTexelRotation(glm::vec2(ls[4 * k], ls[4 * k + 1]),
+                                                          glm::ivec2(map.width(), map.height()));
                         }
                         a.add(map, glm::vec2(ls[4 * k], ls[4 * k + 1]), ls[4 * k + 2], p, vis[k],
                               sSoftware);

@@ -22,6 +22,7 @@
 #include "draw/text_layout.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
+#include "lesson/lesson_pick.h"
 #include "lesson/lesson_text.h"
 #include "overlay/inspector.h"
 #include "render/gl_context.h"
@@ -119,7 +120,7 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
             const LessonSettings& s = step.settings;
             renderer.render(renderSettingsFor(s, renderScene));
             ShadowMap map = renderer.readShadowMap();
-            glm::ivec2 px = scalePixel(s.pixel, renderScene);
+            glm::ivec2 px = stepPick(lesson.scene, s, renderScene).pixel;
             std::vector<float> ls = renderer.readLightSpaceRegion(px, {1, 1});
             InspectorModel m;
             m.title = lesson.title;
@@ -133,8 +134,8 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                 "1152x648";
             if (ls[3] == 1.0f) {
                 m.trace = traceLookup(map, vec2(ls[0], ls[1]), ls[2] + s.depthBias(), ls[2],
-                                      s.pcfParams(px, renderScene));
-                StepContext ctx = makeStepContext(step, renderScene);
+                                      s.pcfParams(vec2(ls[0], ls[1]), map.width()));
+                StepContext ctx = makeStepContext(step, px);
                 m.stepText = fillText(step.text, *m.trace, ctx);
             } else {
                 m.stepText = step.text;
@@ -144,7 +145,7 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                     InspectorLayout l = inspectorLayout(size, presentation);
                     m.presentation = presentation;
                     m.sceneSize = glm::ivec2(l.scene.size());
-                    m.pixel = scalePixel(s.pixel, m.sceneSize);
+                    m.pixel = stepPick(lesson.scene, s, m.sceneSize).pixel;
                     // A chart step lays out as the session composes it: the chart's own texts
                     // are boxes of the frame's layout, checked like the rest.
                     if (!step.chart.empty()) l = chartStepLayout(l);

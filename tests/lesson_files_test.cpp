@@ -96,8 +96,9 @@ TEST(LessonFiles, EveryPlaceholderIsKnownAndFillsFromATrace) {
         for (const LessonStep& step : lesson.steps) {
             SCOPED_TRACE(file + ": " + step.title);
             const LessonSettings& s = step.settings;
-            Trace trace = traceLookup(map, vec2(0.4625f, 0.3875f), 0.5f, 0.5f - s.depthBias(),
-                                      s.pcfParams(s.pixel, LESSON_FRAME_SIZE), s.biasParams());
+            Trace trace =
+                traceLookup(map, vec2(0.4625f, 0.3875f), 0.5f, 0.5f - s.depthBias(),
+                            s.pcfParams(vec2(0.4625f, 0.3875f), map.width()), s.biasParams());
             int taps = static_cast<int>(trace.taps.size());
             int fetches = static_cast<int>(trace.fetches.size());
             EXPECT_FALSE(checkPlaceholders(step.text, taps, fetches));

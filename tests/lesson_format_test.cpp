@@ -21,7 +21,7 @@ scene = "box-on-plane"
 [settings]
 method = "bilinear2x2"
 map_size = 256
-pixel = [612, 388]
+point = [0.9794, 0, -0.4338]
 
 [[step]]
 title = "Four bits"
@@ -38,7 +38,7 @@ bias = "none"
 title = "Bigger map"
 text = "Map {map_size}."
 map_size = 1024
-pixel = [0, 719]
+point = [1.5, 0, 0.25]
 depth_format = "16"
 cull = "front"
 constant_bias = 0.01
@@ -62,7 +62,7 @@ TEST(LessonFormat, ParsesStepsThatInheritTheStateBeforeThem) {
     EXPECT_EQ(s0.line, 9);
     EXPECT_EQ(s0.settings.method, PCF_BILINEAR2X2);
     EXPECT_EQ(s0.settings.mapSize, 256);
-    EXPECT_EQ(s0.settings.pixel, glm::ivec2(612, 388));
+    EXPECT_EQ(s0.settings.point, glm::vec3(0.9794f, 0.0f, -0.4338f));
     // Everything [settings] leaves out keeps RenderSettings' defaults.
     EXPECT_EQ(s0.settings.kernel, 3);
     EXPECT_EQ(s0.settings.radius, 1.0f);
@@ -77,13 +77,13 @@ TEST(LessonFormat, ParsesStepsThatInheritTheStateBeforeThem) {
     EXPECT_EQ(s1.settings.method, PCF_HW2X2);
     EXPECT_EQ(s1.settings.bias, BiasMode::None);
     EXPECT_EQ(s1.settings.mapSize, 256);  // inherited from [settings]
-    EXPECT_EQ(s1.settings.pixel, glm::ivec2(612, 388));
+    EXPECT_EQ(s1.settings.point, glm::vec3(0.9794f, 0.0f, -0.4338f));
 
     const LessonStep& s2 = lesson.steps[2];
     EXPECT_EQ(s2.settings.method, PCF_HW2X2);  // inherited from step 2
     EXPECT_EQ(s2.settings.bias, BiasMode::None);
     EXPECT_EQ(s2.settings.mapSize, 1024);
-    EXPECT_EQ(s2.settings.pixel, glm::ivec2(0, 719));
+    EXPECT_EQ(s2.settings.point, glm::vec3(1.5f, 0.0f, 0.25f));
     EXPECT_EQ(s2.settings.depthFormat, DepthFormat::D16);
     EXPECT_EQ(s2.settings.cull, CullMode::Front);
     EXPECT_EQ(s2.settings.constantBias, 0.01f);
@@ -100,26 +100,19 @@ TEST(LessonFormat, DepthBiasIsZeroWithoutConstantBias) {
     EXPECT_EQ(s.depthBias(), 0.0f);
 }
 
-TEST(LessonFormat, PcfParamsRotateTheDiskAsTheShaderDoesForThatPixel) {
+TEST(LessonFormat, PcfParamsRotateTheDiskWithTheTexelLookedUp) {
     LessonSettings s;
     s.method = PCF_POISSON;
     s.radius = 2.0f;
-    PcfParams plain = s.pcfParams({10, 20}, {1280, 720});
+    PcfParams plain = s.pcfParams({0.3f, 0.7f}, 256);
     EXPECT_EQ(plain.method, PCF_POISSON);
     EXPECT_EQ(plain.radius, 2.0f);
     EXPECT_EQ(plain.rotation, vec2(1.0f, 0.0f));
     s.rotate = true;
-    // gl_FragCoord counts rows from the bottom: top-left row 20 of 720 is GL row 699.
-    EXPECT_EQ(s.pcfParams({10, 20}, {1280, 720}).rotation, pcfPixelRotation(ivec2(10, 699)));
-}
-
-TEST(LessonFormat, ScalePixelKeepsTheSpotOfThePicture) {
-    EXPECT_EQ(scalePixel({612, 388}, {1280, 720}), glm::ivec2(612, 388));
-    EXPECT_EQ(scalePixel({612, 388}, {640, 360}), glm::ivec2(306, 194));
-    EXPECT_EQ(scalePixel({612, 388}, {2560, 1440}), glm::ivec2(1225, 777));
-    EXPECT_EQ(scalePixel({0, 0}, {1920, 1080}), glm::ivec2(0, 0));
-    EXPECT_EQ(scalePixel({1279, 719}, {1920, 1080}), glm::ivec2(1919, 1079));
-    EXPECT_EQ(scalePixel({1279, 719}, {1, 1}), glm::ivec2(0, 0));
+    // uv (0.3, 0.7) of a 256 map falls in texel (76, 179); every uv in that texel turns alike.
+    EXPECT_EQ(s.pcfParams({0.3f, 0.7f}, 256).rotation, pcfPixelRotation(ivec2(76, 179)));
+    EXPECT_EQ(s.pcfParams({76.9f / 256.0f, 179.1f / 256.0f}, 256).rotation,
+              pcfPixelRotation(ivec2(76, 179)));
 }
 
 TEST(LessonFormat, EmbeddedSceneTables) {
@@ -228,10 +221,10 @@ TEST(LessonFormat, WrongTypesAreRefused) {
               "bad.toml:6: step 1 radius must be a number, got string");
     std::string e = errorOf(withStep("depth_format = 16\n"));
     EXPECT_EQ(e.rfind("bad.toml:6: step 1 depth_format must be a string", 0), 0u) << e;
-    e = errorOf(withStep("pixel = [1.5, 2]\n"));
-    EXPECT_EQ(e, "bad.toml:6: step 1 pixel.x must be an integer, got floating-point");
-    e = errorOf(withStep("pixel = [1, 2, 3]\n"));
-    EXPECT_EQ(e.rfind("bad.toml:6: step 1 pixel must be [x, y]", 0), 0u) << e;
+    e = errorOf(withStep("point = [1.1, \"0\", 0.3]\n"));
+    EXPECT_EQ(e, "bad.toml:6: step 1 point[1] must be a number, got string");
+    e = errorOf(withStep("point = [1, 2]\n"));
+    EXPECT_EQ(e.rfind("bad.toml:6: step 1 point must be [x, y, z]", 0), 0u) << e;
     e = errorOf("title = 3\nscene = \"pole\"\n[[step]]\ntitle = \"S\"\ntext = \"x\"\n");
     EXPECT_EQ(e, "bad.toml:1: lesson title must be a string, got integer");
     e = errorOf(
@@ -275,14 +268,17 @@ TEST(LessonFormat, ValuesOutOfRangeAreRefused) {
               "bad.toml:6: step 1 constant_bias must be in [-1, 1], got 2");
     EXPECT_EQ(errorOf(withStep("constant_bias = nan\n")),
               "bad.toml:6: step 1 constant_bias must be finite, got nan");
-    std::string e = errorOf(withStep("pixel = [1280, 10]\n"));
+    // A point must lie on a surface the camera sees: the pole scene's ground does, the air
+    // above it does not.
+    EXPECT_NO_THROW(parseLessonString(withStep("point = [1.1, 0, 0.3]\n"), "ok.toml"));
+    std::string e = errorOf(withStep("point = [1.1,\n  3, 0.3]\n"));
     EXPECT_EQ(
-        e.rfind("bad.toml:6: step 1 pixel.x 1280 is outside the 1280 x 720 reference frame", 0), 0u)
+        e.rfind("bad.toml:6: step 1 point [1.1, 3, 0.3] is not on a surface the camera sees", 0),
+        0u)
         << e;
-    e = errorOf(withStep("pixel = [10,\n  720]\n"));
-    EXPECT_EQ(e.rfind("bad.toml:7: step 1 pixel.y 720 is outside", 0), 0u) << e;
-    e = errorOf(withStep("pixel = [-1, 0]\n"));
-    EXPECT_EQ(e.rfind("bad.toml:6: step 1 pixel.x -1 is outside", 0), 0u) << e;
+    // A screen pixel is refused with what to write instead.
+    e = errorOf(withStep("pixel = [10, 20]\n"));
+    EXPECT_EQ(e.rfind("bad.toml:6: step 1 pixel: a lesson pins a scene point", 0), 0u) << e;
 }
 
 TEST(LessonFormat, TentKernelIsBlamedOnTheKeySetLast) {

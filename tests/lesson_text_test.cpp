@@ -25,6 +25,8 @@ StepContext context() {
     ctx.constantBias = 0.0025f;
     ctx.cull = CullMode::Front;
     ctx.depthFormat = DepthFormat::D24;
+    ctx.lightAngleDeg = 51.25f;
+    ctx.originShift = 0.375f;
     return ctx;
 }
 
@@ -131,20 +133,19 @@ TEST(LessonText, ContextNamesThePixelAndTheState) {
     EXPECT_EQ(fill("({pixel.x}, {pixel.y}) {bias} {constant_bias} {cull} {depth_format}", tr),
               "(612, 388) none 0.0025 front 24");
     EXPECT_EQ(fill("{tap[0].i},{tap[0].j} {taps}", tr), "3,3 1");
+    EXPECT_EQ(fill("{light_angle} {origin_shift}", tr), "51.25 0.375");
 }
 
-TEST(LessonText, StepContextScalesThePixel) {
+TEST(LessonText, StepContextNamesThePixelAndTheState) {
     LessonStep step;
-    step.settings.pixel = {612, 388};
     step.settings.bias = BiasMode::None;
     step.settings.cull = CullMode::Front;
     step.settings.depthFormat = DepthFormat::D16;
-    StepContext ctx = makeStepContext(step, {640, 360});
+    StepContext ctx = makeStepContext(step, {306, 194});
     EXPECT_EQ(ctx.pixel, glm::ivec2(306, 194));
     EXPECT_EQ(ctx.bias, BiasMode::None);
     EXPECT_EQ(ctx.cull, CullMode::Front);
     EXPECT_EQ(ctx.depthFormat, DepthFormat::D16);
-    EXPECT_EQ(makeStepContext(step).pixel, glm::ivec2(612, 388));
 }
 
 TEST(LessonText, AnIndexPastTheTraceIsNotAvailable) {

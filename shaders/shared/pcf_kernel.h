@@ -699,12 +699,21 @@ PCF_MAP_FN float pcfPoisson(Map map, vec2 uv, PcfRef ref, float radius, vec2 rot
     return sum * (1.0f / 16.0f);
 }
 
-// A per-pixel rotation for the Poisson disk, from an integer hash of the pixel: the same on
-// every driver because it is integer math and a table lookup.
+// A rotation for the Poisson disk from an integer hash of a cell (a pixel, a texel): the same
+// on every driver because it is integer math and a table lookup.
 PCF_FN vec2 pcfPixelRotation(ivec2 pixel) {
     uint h = uint(pixel.x) * 73856093u ^ uint(pixel.y) * 19349663u;
     h = (h ^ (h >> 13u)) * 1274126177u;
     return PCF_ROTATIONS[int((h >> 16u) & 15u)];
+}
+
+// The disk's rotation for a lookup: the hash of the map texel it falls in, floor(uv * size).
+// It belongs to the lookup, not to the screen: a scene point keeps its rotation at every frame
+// size and while the camera moves (hashed from the screen pixel, lesson 7's disk turned by -45
+// degrees on a 617 x 347 slide and by -157.5 in the 960 x 540 handout).
+PCF_FN vec2 pcfTexelRotation(vec2 uv, ivec2 size) {
+    PCF_PRECISE vec2 p = uv * vec2(size);
+    return pcfPixelRotation(ivec2(floor(p)));
 }
 
 // The entry point with a bias mode: visibility of a receiver seen at uv, compared per tap as

@@ -1,7 +1,45 @@
-// pcf_shading.h: the camera pass's display encoding, in the subset of C++ and GLSL that
-// pcf_kernel.h is written in (after pcf_prelude.h). Not PCF: the picture's gamma, shared so that
-// a C++ test can bound the very function the fragment shader runs.
-// see: shaders/scene.frag (the caller), src/kernel/shading.h (C++), tests/shading_test.cpp
+// pcf_shading.h: the camera pass's own math around the filter, in the subset of C++ and GLSL
+// that pcf_kernel.h is written in (after pcf_prelude.h): where a receiver point is looked up,
+// and the picture's gamma. Shared so that the CPU looks up a lesson's pinned scene point with the
+// very formulas the fragment shader runs, and a C++ test can bound the gamma the shader applies.
+// see: shaders/scene.frag (the caller), src/kernel/shading.h (C++), src/lesson/lesson_pick.h,
+// tests/shading_test.cpp
+
+// Where the camera pass looks a receiver point up: (u, v) in the map, its depth z, the depth z0
+// before any bias and ref = z - bias. GL convention: ndc = clip / w, uv = ndc.xy * 0.5 + 0.5,
+// depth = ndc.z * 0.5 + 0.5. cosTheta = dot(n, toLight) of the unit normal n facing the camera.
+// Normal offset moves the point along n before it is projected (pcfNormalOffsetDistance: Holbert
+// 2011, Castano 2013); a texel's world size grows with clip.w under a spot light's perspective and
+// is constant under a directional light's (w = 1). Every other mode looks up where the point is.
+// Slope bias scales with tan(theta) and is capped (pcfSlopeBias); every mode but none subtracts
+// constantBias (0 for none).
+struct PcfReceiverLookup {
+    float u;
+    float v;
+    float z;    // the looked-up point's depth in [0,1], 0 = near the light
+    float z0;   // the receiver point's own depth, before any bias or offset
+    float ref;  // z - bias: the depth compared with the map
+};
+
+PCF_FN PcfReceiverLookup pcfReceiverLookup(mat4 shadowClipFromWorld, vec3 posWs, vec3 n,
+                                           float cosTheta, int biasMode, float constantBias,
+                                           float slopeBias, float slopeMax, float normalOffset,
+                                           float shadowTexelWs) {
+    vec4 clip0 = shadowClipFromWorld * vec4(posWs, 1.0f);
+    float z0 = (clip0.z / clip0.w) * 0.5f + 0.5f;
+    vec4 clip = clip0;
+    if (biasMode == PCF_BIAS_NORMAL) {
+        float d = pcfNormalOffsetDistance(cosTheta, normalOffset, shadowTexelWs * clip0.w);
+        clip = shadowClipFromWorld * vec4(posWs + n * d, 1.0f);
+    }
+    float u = (clip.x / clip.w) * 0.5f + 0.5f;
+    float v = (clip.y / clip.w) * 0.5f + 0.5f;
+    float z = (clip.z / clip.w) * 0.5f + 0.5f;
+    float bias = constantBias;
+    if (biasMode == PCF_BIAS_SLOPE)
+        bias = pcfSlopeBias(cosTheta, constantBias, slopeBias, slopeMax);
+    return PcfReceiverLookup(u, v, z, z0, z - bias);
+}
 
 // Gamma 2.2, encode: g(x) = x^(1/2.2) for the scene's light factor x in [0.25, 1] (ambient 0.25
 // to full sun; scene.frag). The exponent is the conventional display gamma of "GPU Gems 3,

@@ -193,8 +193,9 @@ EnvelopeTally checkEnvelopes(const RawImages& img, const RawSettings& r,
             }
             ++t.receivers;
             PcfParams p = r.prm;
-            // Rows are top-down; gl_FragCoord counts from the bottom.
-            if (r.rotate) p.rotation = pcfPixelRotation(glm::ivec2(x, ls.height - 1 - y));
+            // The disk turns with the texel looked up, as scene.frag turns it.
+            if (r.rotate)
+                p.rotation = pcfTexelRotation(uv, ivec2(img.map.width(), img.map.height()));
             PcfBias b = r.bias;
             if (!img.planes.data.empty()) {
                 b.dzduv = vec2(img.planes.data[4 * k], img.planes.data[4 * k + 1]);

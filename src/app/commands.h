@@ -21,6 +21,7 @@ Command addStabilityCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 Command addVerifyCommand(CLI::App& app);
+Command addLessonCommand(CLI::App& app);  // `lesson check FILE`
 
 // `pcfscope` with no arguments: lesson 1 in the window when there is a display, otherwise its
 // frames exported into a new folder under pcfscope-frames/ (printed on stdout).

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
         pcf::addMethodsCommand(app), pcf::addTraceCommand(app),  pcf::addRenderCommand(app),
         pcf::addTruthCommand(app),   pcf::addBenchCommand(app),  pcf::addStabilityCommand(app),
         pcf::addViewCommand(app),    pcf::addExportCommand(app), pcf::addVerifyCommand(app),
+        pcf::addLessonCommand(app),
     };
 
     try {

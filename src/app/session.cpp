@@ -14,45 +14,20 @@
 #include "analysis/stability_chart.h"
 #include "analysis/stability_report.h"
 #include "app/cli_util.h"
+#include "app/step_words.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "kernel/methods.h"
 #include "kernel/trace_explain.h"
 #include "kernel/trace_json.h"
+#include "lesson/lesson_claims.h"
+#include "lesson/lesson_pick.h"
 #include "lesson/lesson_text.h"
 #include "scene/light.h"
 
 namespace pcf {
 
 namespace {
-
-// "pcf-gather N=3   bias constant 0.02   cull back   map 256 32f": the state, in the status line's
-// words.
-std::string settingsSummary(const LessonSettings& s) {
-    const MethodInfo& info = methodInfo(s.method);
-    // A stream: GCC 12 warns falsely (-Wrestrict) on chains of string operator+.
-    std::ostringstream line;
-    line << info.name;
-    if (info.usesKernel) line << " N=" << s.kernel;
-    if (s.weights != PCF_WEIGHTS_BOX) line << " " << weightsName(s.weights);
-    if (info.usesRadius) line << " R=" << formatNumber(s.radius) << (s.rotate ? " rotated" : "");
-    line << "   bias " << biasModeName(s.bias);
-    if (s.bias != BiasMode::None) line << " " << formatNumber(s.constantBias);
-    if (s.bias == BiasMode::Slope) {
-        line << " +" << formatNumber(s.slopeBias) << "tan<=" << formatNumber(s.slopeMax);
-    }
-    if (s.bias == BiasMode::Normal) line << " k=" << formatNumber(s.normalOffset);
-    if (s.bias == BiasMode::Soft) line << " x" << formatNumber(s.softScale);
-    if (s.bias == BiasMode::ReceiverPlane) line << " dz<=" << formatNumber(s.rpdbMax);
-    line << "   cull " << cullModeName(s.cull) << "   map " << s.mapSize << " "
-         << depthFormatName(s.depthFormat);
-    if (s.originShift != 0.0f || s.snap) {
-        line << "   grid +" << formatNumber(s.originShift) << " texel"
-             << (s.snap ? " snapped" : "");
-    }
-    if (s.precision == PCF_PRECISION_HW8) line << "   hw8";
-    return line.str();
-}
 
 std::string statusLine(const LessonSettings& s, glm::ivec2 sceneSize, double frameTimeMs) {
     std::ostringstream line;
@@ -287,15 +262,31 @@ void Session::goToStep(int step) {
     mGrid = s.settings.grid;
     mHeatmap = s.settings.heatmap;
     setSettings(s.settings);
-    setPixel(scalePixel(s.settings.pixel, glm::ivec2(mLayout.scene.size())));
+    // The step's scene point, shown at whichever pixel holds it in this frame (lesson_pick.h).
+    mPoint = stepPoint(mLesson.scene, s.settings);
+    repick();
     mStepEdited = false;
+}
+
+void Session::repick() {
+    glm::ivec2 size(mLayout.scene.size());
+    mPickInFrame = false;
+    mJitter = glm::vec2(0.0f);
+    // Moving the pick re-renders the camera pass: the camera's jitter and the pixel the pinned
+    // lookup is shown at change with it.
+    mSceneDirty = true;
+    if (!mPoint || size.x <= 0 || size.y <= 0) return;
+    FramePick pick = framePick(mLesson.scene.camera, mPoint->posWs, size);
+    mPixel = pick.pixel;
+    mPickInFrame = pick.inFrame;
+    mJitter = pick.jitterNdc;
 }
 
 namespace {
 
-// Equal apart from the picked pixel, which is part of the settings but not of the picture.
+// Equal apart from the picked point, which is part of the settings but not of the picture.
 bool samePicture(LessonSettings a, const LessonSettings& b) {
-    a.pixel = b.pixel;
+    a.point = b.point;
     return a == b;
 }
 
@@ -322,6 +313,18 @@ void Session::setSettings(const LessonSettings& s) {
 void Session::setPixel(glm::ivec2 scenePixel) {
     glm::ivec2 size(mLayout.scene.size());
     mPixel = glm::clamp(scenePixel, glm::ivec2(0), size - glm::ivec2(1));
+    if (!mRenderer || size.x <= 0 || size.y <= 0) return;
+    // A pick on screen pins the scene point under the pixel's centre (as the frame shows it,
+    // jitter and all), so that it stays the same lookup when the frame is resized.
+    glm::ivec2 gl(mPixel.x, size.y - 1 - mPixel.y);
+    float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+    mPoint = pointAtNdc(mLesson.scene, pixelCentreNdc(gl, size), aspect, mJitter);
+    if (mPoint) {
+        repick();
+    } else {
+        mPickInFrame = false;  // no surface there: the pixel as it is, nothing pinned
+        mSceneDirty = true;
+    }
 }
 
 bool Session::sceneShown() const {
@@ -344,7 +347,9 @@ void Session::setFrameSize(glm::ivec2 frameSize) {
     if (oldScene.x > 0 && oldScene != newScene) {
         mPixel = mPixel * newScene / oldScene;
     }
-    setPixel(mPixel);
+    mPixel = glm::clamp(mPixel, glm::ivec2(0), newScene - glm::ivec2(1));
+    // The pinned point stays: its pixel and the camera's jitter are derived for the new size.
+    repick();
     mSceneDirty = true;
 }
 
@@ -494,6 +499,15 @@ void Session::blitChart(const InspectorLayout& layout) {
 
 void Session::renderScene() {
     RenderSettings r = renderSettingsFor(mSettings, glm::ivec2(mLayout.scene.size()));
+    glm::mat4 fit = lessonShadowFit(mLesson.scene, mSettings, r.mapSize);
+    // The pinned point's pixel shows the point's own lookup (lesson_pick.h).
+    std::optional<CameraPick> pick;
+    if (mPoint && mPickInFrame) {
+        PinnedLookup at = pinnedLookup(mLesson.scene, fit, mSettings, *mPoint);
+        glm::ivec2 gl(mPixel.x, r.frameSize.y - 1 - mPixel.y);
+        pick = CameraPick{gl, mJitter, glm::vec4(at.uv, at.ref, at.z0), at.dzduv};
+    }
+    mRenderer->setPick(pick);
     // The map's texel grid slid and snapped as the lesson says (light.h: shiftShadowOrigin).
     glm::vec3 shift(mSettings.originShift, mSettings.originShift, mSettings.snap ? 1.0f : 0.0f);
     bool mapChanged = !mRendered || mRendered->mapSize != r.mapSize ||
@@ -501,7 +515,7 @@ void Session::renderScene() {
                       mRendered->shadowCull != r.shadowCull ||
                       mRendered->polygonOffset != r.polygonOffset || shift != mRenderedShift;
     if (mapChanged) {
-        mRenderer->setShadowClipFromWorld(lessonShadowFit(mLesson.scene, mSettings, r.mapSize));
+        mRenderer->setShadowClipFromWorld(fit);
         mRenderedShift = shift;
     }
     mHeatDirty = true;
@@ -532,7 +546,7 @@ void Session::traceAtPixel() {
     BiasParams bias = mSettings.biasParams();
     bias.dzduv = glm::vec2(receiver[0], receiver[1]);
     float z = receiver[3] == 1.0f ? receiver[2] : ref + mSettings.depthBias();
-    mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(mPixel, size), bias);
+    mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(uv, mMap.width()), bias);
 }
 
 std::string Session::stepText() const {
@@ -544,25 +558,19 @@ std::string Session::stepText() const {
                    : "(The picked pixel is not on a shadow receiver, so this step's numbers "
                      "cannot be shown. Pick a point on the ground.)";
     }
-    StepContext ctx = makeStepContext(s, glm::ivec2(mLayout.scene.size()));
-    ctx.pixel = mPixel;
+    StepContext ctx = makeStepContext(s, mPixel);
     ctx.bias = mSettings.bias;
     ctx.constantBias = mSettings.constantBias;
     ctx.cull = mSettings.cull;
     ctx.depthFormat = mSettings.depthFormat;
+    ctx.originShift = mSettings.originShift;
+    if (mPoint) ctx.lightAngleDeg = lightAngleDeg(mLesson.scene, *mPoint);
     std::string text = fillText(s.text, *mTrace, ctx);
-    // Keys may have changed the state the words were written for; the numbers follow the live
-    // state, the sentences cannot. Say so rather than let them disagree in silence.
-    if (mStepEdited) {
-        auto compact = [](std::string t) {
-            for (size_t at; (at = t.find("   ")) != std::string::npos;) t.replace(at, 3, ", ");
-            return t;
-        };
-        text = "(Written for " + compact(settingsSummary(s.settings)) + "; now " +
-               compact(settingsSummary(mSettings)) +
-               ". The numbers are live; step away and back to restore the step.)\n\n" + text;
-    }
-    return text;
+    if (!mStepEdited) return text;
+    ClaimWorld world;
+    world.onPlane = mPoint && std::holds_alternative<Plane>(
+                                  mLesson.scene.objects[static_cast<size_t>(mPoint->object)].shape);
+    return wordsForLiveState(s, mSettings, text, *mTrace, ctx, world);
 }
 
 void Session::compose() { composeInto(mFrame.framebuffer.id()); }
@@ -758,20 +766,24 @@ std::string Session::stepJson() const {
                      {"cull", cullModeName(s.cull)},
                      {"map_size", s.mapSize},
                      {"depth_format", depthFormatName(s.depthFormat)}};
-    Json j = {{"lesson", mLesson.name},
-              {"title", mLesson.title},
-              {"step", mStep + 1},
-              {"step_title", mLesson.steps.empty() ? "" : mLesson.steps[mStep].title},
-              {"text", drawnStepText(stepText())},
-              {"pixel", jsonPair(mPixel)},
-              {"scene_size", jsonPair(glm::ivec2(mLayout.scene.size()))},
-              {"settings", settings},
-              {"trace", mTrace ? traceJson(*mTrace) : Json(nullptr)},
-              {"frame_size", jsonPair(mLayout.frameSize)},
-              {"presentation", mPresentation},
-              {"text_page", mTextPage + 1},
-              {"text_pages", mTextPages},
-              {"layout", layoutJson(mBoxes)}};
+    Json j = {
+        {"lesson", mLesson.name},
+        {"title", mLesson.title},
+        {"step", mStep + 1},
+        {"step_title", mLesson.steps.empty() ? "" : mLesson.steps[mStep].title},
+        {"text", drawnStepText(stepText())},
+        {"pixel", jsonPair(mPixel)},
+        {"point", mPoint ? Json::array({jsonNumber(mPoint->posWs.x), jsonNumber(mPoint->posWs.y),
+                                        jsonNumber(mPoint->posWs.z)})
+                         : Json(nullptr)},
+        {"scene_size", jsonPair(glm::ivec2(mLayout.scene.size()))},
+        {"settings", settings},
+        {"trace", mTrace ? traceJson(*mTrace) : Json(nullptr)},
+        {"frame_size", jsonPair(mLayout.frameSize)},
+        {"presentation", mPresentation},
+        {"text_page", mTextPage + 1},
+        {"text_pages", mTextPages},
+        {"layout", layoutJson(mBoxes)}};
     return jsonDump(j);
 }
 

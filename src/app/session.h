@@ -15,6 +15,7 @@
 #include "draw/canvas.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
+#include "lesson/lesson_pick.h"
 #include "overlay/inspector.h"
 #include "render/gl_objects.h"
 #include "render/render_settings.h"
@@ -84,9 +85,13 @@ class Session {
     // True while the settings differ from the current step's (apart from the pixel): the step
     // text then says which state its words were written for.
     bool stepEdited() const { return mStepEdited; }
-    // Picked pixel in scene coordinates (top-left origin), clamped to the scene.
+    // Picked pixel in scene coordinates (top-left origin), clamped to the scene: the pixel that
+    // shows the pinned scene point (lesson_pick.h). setPixel pins the point under a pixel (a
+    // click, the arrow keys); the point, not the pixel, stays when the frame is resized.
     glm::ivec2 pixel() const { return mPixel; }
     void setPixel(glm::ivec2 scenePixel);
+    // The pinned scene point; nullopt when the pick is on no surface.
+    const std::optional<ScenePoint>& point() const { return mPoint; }
     // Whether the frame shows the scene: a chart step shows its chart there instead (and in
     // presentation mode over the inspector's room too).
     bool sceneShown() const;
@@ -147,6 +152,8 @@ class Session {
 
   private:
     void renderScene();
+    // Derives the pixel and the camera's jitter that show mPoint in this frame.
+    void repick();
     void traceAtPixel();
     void blitThumbnail();
     // A step with a chart shows it where the scene goes (lesson.h: LessonStep::chart).
@@ -159,6 +166,9 @@ class Session {
     LessonSettings mSettings;
     bool mStepEdited = false;
     glm::ivec2 mPixel{0, 0};
+    std::optional<ScenePoint> mPoint;  // the pinned scene point
+    glm::vec2 mJitter{0.0f};           // the camera's sub-pixel shift that centres it on mPixel
+    bool mPickInFrame = false;         // mPoint shows in the frame (at mPixel)
     bool mPresentation = false;
     bool mHelp = false;
     bool mGrid = true;

@@ -21,6 +21,7 @@
 #include "app/session.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "lesson/lesson_keys.h"
 #include "render/glfw_window_context.h"
 #include "render/image_io.h"
 
@@ -71,7 +72,14 @@ class Viewer {
         if (ww <= 0 || wh <= 0) return;
         glm::vec2 p(cursor.x * fb.x / ww, cursor.y * fb.y / wh);
         // A chart step's chart covers the scene: a click on it picks nothing.
-        mSession.clickFrame(p);
+        if (!mSession.clickFrame(p)) return;
+        // The scene point the click pinned, as a lesson's `point` key takes it (lesson.h).
+        if (const std::optional<ScenePoint>& q = mSession.point()) {
+            std::printf("pixel (%d, %d): point = [%.4f, %.4f, %.4f]\n", mSession.pixel().x,
+                        mSession.pixel().y, static_cast<double>(q->posWs.x),
+                        static_cast<double>(q->posWs.y), static_cast<double>(q->posWs.z));
+            std::fflush(stdout);
+        }
     }
 
     // E: the frame as PNG + JSON into pcfscope-frames/. A failure is reported and the class
@@ -146,62 +154,39 @@ class Viewer {
     // The keys that change the lesson's settings (method, kernel, map, bias, precision, the
     // map's fit). Returns whether `key` is one of them.
     bool pressSetting(int key, bool shift) {
-        LessonSettings s = mSession.settings();
+        std::string name;
         switch (key) {
-            case GLFW_KEY_O:  // slide the map's texel grid by 1/8 texel (lesson 13)
-                s.originShift =
-                    std::clamp(s.originShift + (shift ? -0.125f : 0.125f), -64.0f, 64.0f);
-                break;
-            case GLFW_KEY_S:  // snap the map's fit to whole texels
-                s.snap = !s.snap;
-                break;
+            case GLFW_KEY_O:
             case GLFW_KEY_M:
-                nextMethod(s, shift);
+            case GLFW_KEY_B:
+                name = std::string(shift ? "Shift+" : "") + static_cast<char>(key);
+                break;
+            case GLFW_KEY_S:
+            case GLFW_KEY_Q:
+                name = std::string(1, static_cast<char>(key));
                 break;
             case GLFW_KEY_LEFT_BRACKET:
+                name = "[";
+                break;
             case GLFW_KEY_RIGHT_BRACKET:
-                s.kernel = stepKernel(s.method, s.kernel, key == GLFW_KEY_RIGHT_BRACKET ? 1 : -1);
+                name = "]";
                 break;
             case GLFW_KEY_MINUS:
             case GLFW_KEY_KP_SUBTRACT:
-                s.mapSize = std::max(MIN_MAP_SIZE, s.mapSize / 2);
+                name = "-";
                 break;
             case GLFW_KEY_EQUAL:
             case GLFW_KEY_KP_ADD:
-                s.mapSize = std::min(MAX_MAP_SIZE, s.mapSize * 2);
-                break;
-            case GLFW_KEY_B:
-                nextBias(s, shift);
-                break;
-            case GLFW_KEY_Q:  // the texture unit's precision: exact <-> hw8 (issue 10)
-                s.precision =
-                    s.precision == PCF_PRECISION_HW8 ? PCF_PRECISION_EXACT : PCF_PRECISION_HW8;
+                name = "+";
                 break;
             default:
                 return false;
         }
-        mSession.setSettings(s);
+        // One table of what each key does (lesson/lesson_keys.h), shared with `lesson check`.
+        std::optional<LessonSettings> s = settingsAfterKey(mSession.settings(), name);
+        if (!s) return false;
+        mSession.setSettings(*s);
         return true;
-    }
-
-    // The next method (shift: the previous), its kernel fitted to it.
-    static void nextMethod(LessonSettings& s, bool shift) {
-        s.method = (s.method + (shift ? PCF_METHOD_COUNT - 1 : 1)) % PCF_METHOD_COUNT;
-        s.kernel = fitKernel(s.method, s.kernel);
-        // A bias the new method cannot take (soft on hardware taps) falls back.
-        if (validateBias(static_cast<int>(s.bias), s.method)) {
-            s.bias = BiasMode::Constant;
-        }
-    }
-
-    // Every bias mode in turn (shift: backwards), skipping those the method cannot take
-    // (kernel/bias.h: validateBias).
-    static void nextBias(LessonSettings& s, bool shift) {
-        int mode = static_cast<int>(s.bias);
-        do {
-            mode = (mode + (shift ? PCF_BIAS_COUNT - 1 : 1)) % PCF_BIAS_COUNT;
-        } while (validateBias(mode, s.method));
-        s.bias = static_cast<BiasMode>(mode);
     }
 
     // The keys that toggle what the frame shows, export it, or go full screen.
@@ -487,7 +472,12 @@ int runViewer(const ViewerOptions& o) {
         GlfwWindowContext::create(o.windowSize.x, o.windowSize.y, "pcfscope", true);
     Viewer viewer(o, *window);
     InputBinding input(window->window(), viewer);
-    for (const KeyPress& k : keys) viewer.press(k);
+    for (const KeyPress& k : keys) {
+        // As on screen, where every key lands on a composed frame: the step's pages are known,
+        // so Right turns to a step's page 2 before it moves on.
+        viewer.session().compose();
+        viewer.press(k);
+    }
 
     if (o.benchFrames > 0) {
         benchFrames(viewer.session(), *window, o.benchFrames);

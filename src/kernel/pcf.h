@@ -18,6 +18,7 @@ using glm::dot;
 using glm::exp;
 using glm::floor;
 using glm::ivec2;
+using glm::mat4;
 using glm::max;
 using glm::min;
 using glm::mix;

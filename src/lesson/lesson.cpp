@@ -15,6 +15,9 @@
 #include "kernel/methods.h"
 #include "kernel/shadow_map.h"
 #include "kernel/trace.h"
+#include "lesson/lesson_claims.h"
+#include "lesson/lesson_keys.h"
+#include "lesson/lesson_pick.h"
 #include "lesson/lesson_text.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"
@@ -25,10 +28,10 @@ namespace {
 
 // The keys a [settings] table and a [[step]] may set.
 constexpr std::string_view SETTING_KEYS[] = {
-    "method",       "kernel",    "radius",        "rotate",     "bias",  "constant_bias",
-    "slope_bias",   "slope_max", "normal_offset", "soft_scale", "cull",  "map_size",
-    "depth_format", "pixel",     "precision",     "weights",    "sigma", "grid",
-    "rpdb_max",     "heatmap",   "origin_shift",  "snap"};
+    "method",       "kernel",    "radius",        "rotate",       "bias",    "constant_bias",
+    "slope_bias",   "slope_max", "normal_offset", "soft_scale",   "cull",    "map_size",
+    "depth_format", "point",     "pixel",         "precision",    "weights", "sigma",
+    "grid",         "rpdb_max",  "heatmap",       "origin_shift", "snap"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));
@@ -96,6 +99,7 @@ class LessonParser {
         lesson.title = requireText(root, "title", "lesson", root);
         checkLength(*root.get("title"), "lesson title", lesson.title, MAX_TITLE_CHARS);
         lesson.scene = readScene(root);
+        mScene = &lesson.scene;
 
         LessonSettings state;
         SettingLines lines;
@@ -112,7 +116,8 @@ class LessonParser {
         for (size_t i = 0; i < steps.size(); ++i) {
             const toml::table& table = *steps.get(i)->as_table();
             std::string what = "step " + std::to_string(i + 1);
-            checkKeys(table, what, {"title", "text", "chart", "chart_highlight", "highlight"});
+            checkKeys(table, what,
+                      {"title", "text", "chart", "chart_highlight", "highlight", "claims", "keys"});
             applySettings(table, what, state, lines);
             lesson.steps.push_back(readStep(table, what, state, lines));
         }
@@ -149,6 +154,7 @@ class LessonParser {
         checkLength(*table.get("title"), what + " title", step.title, MAX_TITLE_CHARS);
         checkLength(*table.get("text"), what + " text", step.text, MAX_STEP_TEXT_CHARS);
         readChartKeys(table, what, step);
+        readClaims(table, what, step);
         step.settings = state;
         checkState(table, what, state, lines);
         checkText(*table.get("text"), what, step);
@@ -189,6 +195,44 @@ class LessonParser {
                              typeName(*h));
             }
             step.highlightFetch = static_cast<int>(v->get());
+        }
+    }
+
+    // claims = [...] and keys = [...]: strings, each claim parsed (lesson_claims.h), each key
+    // one lesson_keys.h names.
+    void readClaims(const toml::table& table, const std::string& what, LessonStep& step) const {
+        auto strings = [&](const char* key) {
+            std::vector<std::pair<std::string, const toml::node*>> out;
+            const toml::node* node = table.get(key);
+            if (!node) return out;
+            const toml::array* array = node->as_array();
+            if (!array) fail(*node, what + " " + key + " must be an array of strings");
+            for (const toml::node& e : *array) {
+                const auto* s = e.as_string();
+                if (!s)
+                    fail(e, what + " " + key + " must be an array of strings, got " + typeName(e));
+                out.emplace_back(s->get(), &e);
+            }
+            return out;
+        };
+        for (const auto& [text, node] : strings("claims")) {
+            StepClaim claim{text, lineOf(*node), nullptr};
+            try {
+                claim.parsed = parseClaim(text);
+            } catch (const std::invalid_argument& e) {
+                fail(*node, what + " claim \"" + text + "\": " + e.what());
+            }
+            step.claims.push_back(std::move(claim));
+        }
+        for (const auto& [key, node] : strings("keys")) {
+            const std::vector<std::string>& known = settingKeyNames();
+            if (std::find(known.begin(), known.end(), key) == known.end()) {
+                std::string names;
+                for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;
+                fail(*node, what + " keys: unknown key '" + key + "' (known: " + names + ")");
+            }
+            step.keys.push_back(key);
+            step.keysLine = lineOf(*node);
         }
     }
 
@@ -483,27 +527,34 @@ class LessonParser {
             if (!b) fail(*n, name("grid") + " must be true or false, got " + typeName(*n));
             s.grid = b->get();
         }
-        if (const toml::node* n = table.get("pixel")) s.pixel = readPixel(*n, name("pixel"));
+        if (const toml::node* n = table.get("pixel")) {
+            fail(*n, name("pixel") +
+                         ": a lesson pins a scene point, not a screen pixel: write point = [x, y, "
+                         "z] in world units (a click in `pcfscope view` prints the point)");
+        }
+        if (const toml::node* n = table.get("point")) s.point = readPoint(*n, name("point"));
     }
 
-    glm::ivec2 readPixel(const toml::node& node, const std::string& name) const {
+    // `point = [x, y, z]`: world units, on a surface the camera sees (lesson_pick.h).
+    glm::vec3 readPoint(const toml::node& node, const std::string& name) const {
         const toml::array* array = node.as_array();
-        if (!array || array->size() != 2) {
+        if (!array || array->size() != 3) {
             fail(node,
-                 name + " must be [x, y], two integers, got " +
+                 name + " must be [x, y, z], three numbers (world units), got " +
                      (array ? "an array of " + std::to_string(array->size()) : typeName(node)));
         }
-        glm::ivec2 p;
-        for (int k = 0; k < 2; ++k) {
+        glm::vec3 p;
+        for (int k = 0; k < 3; ++k) {
             const toml::node& c = *array->get(static_cast<size_t>(k));
-            int64_t v = integer(c, name + (k == 0 ? ".x" : ".y"));
-            int limit = LESSON_FRAME_SIZE[k];
-            if (v < 0 || v >= limit) {
-                fail(c, name + (k == 0 ? ".x " : ".y ") + std::to_string(v) +
-                            " is outside the 1280 x 720 reference "
-                            "frame (x 0..1279, y 0..719, origin top-left)");
-            }
-            p[k] = static_cast<int>(v);
+            double v = number(c, name + "[" + std::to_string(k) + "]");
+            if (!(std::fabs(v) <= 1e6)) fail(c, name + " coordinates must be within +-1e6");
+            p[k] = static_cast<float>(v);
+        }
+        if (!seenPoint(*mScene, p)) {
+            fail(node, name + " [" + formatValue(p.x) + ", " + formatValue(p.y) + ", " +
+                           formatValue(p.z) +
+                           "] is not on a surface the camera sees (nothing there, or another "
+                           "surface in front of it)");
         }
         return p;
     }
@@ -577,6 +628,7 @@ class LessonParser {
 
     std::string_view mText;
     std::string mSource;
+    const Scene* mScene = nullptr;  // the lesson's, once read: points are checked against it
     std::vector<std::string_view> mLines;
 };
 
@@ -586,12 +638,9 @@ float LessonSettings::depthBias() const { return biasParams().baseBias(); }
 
 BiasParams LessonSettings::biasParams() const { return biasParamsOf(*this); }
 
-PcfParams LessonSettings::pcfParams(glm::ivec2 framePixel, glm::ivec2 frameSize) const {
+PcfParams LessonSettings::pcfParams(glm::vec2 uv, int mapSizeTexels) const {
     vec2 rotation(1.0f, 0.0f);
-    if (rotate) {
-        // gl_FragCoord counts rows from the bottom.
-        rotation = pcfPixelRotation(ivec2(framePixel.x, frameSize.y - 1 - framePixel.y));
-    }
+    if (rotate) rotation = pcfTexelRotation(uv, ivec2(mapSizeTexels));
     PcfParams p = makeParams(method, kernel, radius, rotation);
     p.weights = weights;
     p.sigma = sigma;
@@ -605,16 +654,6 @@ Lesson parseLessonFile(const std::string& path) {
 
 Lesson parseLessonString(std::string_view text, const std::string& sourceName) {
     return LessonParser(text, sourceName).parse();
-}
-
-glm::ivec2 scalePixel(glm::ivec2 pixel, glm::ivec2 frameSize) {
-    glm::ivec2 out;
-    for (int k = 0; k < 2; ++k) {
-        // The reference pixel's centre, carried to the new frame, then the pixel holding it.
-        double centre = (pixel[k] + 0.5) * frameSize[k] / LESSON_FRAME_SIZE[k];
-        out[k] = std::clamp(static_cast<int>(std::floor(centre)), 0, std::max(0, frameSize[k] - 1));
-    }
-    return out;
 }
 
 }  // namespace pcf

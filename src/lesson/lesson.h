@@ -26,9 +26,13 @@
 //   grid          = true              the shadow map's texel grid drawn on the receiver around
 //                                     the picked pixel (G toggles it), default true; off for
 //                                     steps where its lines would hide what they show
-//   pixel         = [612, 388]        the picked pixel in the 1280 x 720 reference frame,
-//                                     origin top-left, y down (see scalePixel), default the
-//                                     centre [640, 360]
+//   point         = [1.4486, 0, -0.0163]  the scene point whose lookup the step traces, world
+//                                     units, on a surface the camera sees (within 0.001); default
+//                                     the point seen in the middle of the view. The pick belongs
+//                                     to the scene: each frame shows the point at the pixel that
+//                                     holds it, so every size and mode traces the same lookup
+//                                     (lesson_pick.h). `pcfscope view` prints the point of a click
+//                                     (the step's JSON "point" too)
 //
 //   [[step]]                          one table per step, at least one, shown in file order
 //   title = "..."                     required, not empty
@@ -45,13 +49,20 @@
 //   chart = "figures/bench.csv"       the step shows that chart instead of the scene
 //   chart_highlight = "gather3"       the chart's dots the text talks about (see LessonStep)
 //   highlight = 1                     the fetch the text talks about (see LessonStep)
+//   claims = ["{shadowed_count} = 0", "penumbra"]
+//                                     what the step's words state about its numbers, checked
+//                                     by `pcfscope lesson check` at its settings (the syntax:
+//                                     lesson_claims.h); not inherited
+//   keys = ["O"]                      viewer keys the words invite: the claims must hold after
+//                                     each too (lesson_keys.h names them); after any other key
+//                                     a failing claim withholds the words in the viewer
 //   method = "hw2x2"                  any [settings] key: it changes the state from this step
 //                                     on; the steps after it inherit it
 //
 // Every number a step's text states about its pixel is a placeholder, so the words follow the
-// kernel. What the words claim in prose (in shadow, half lit, near 0.8) depends on the pixel
-// picked: tests/lesson_pixels_test.cpp renders every step in the reference frame and in the
-// viewer's default 960 x 540 scene view and checks those claims on the traced pixel.
+// kernel. What the words claim in prose (in shadow, half lit, near 0.8) depends on the point
+// picked: tests/lesson_pixels_test.cpp renders every step at the scene sizes of every frame size
+// and mode and checks those claims on the traced lookup.
 //
 // Every problem throws InputError `file:line: what is wrong`, with the line of the offending
 // value (or of its table when a key is missing): TOML syntax, unknown keys, wrong types, unknown
@@ -62,6 +73,8 @@
 
 #include <cstddef>
 #include <glm/glm.hpp>
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -73,9 +86,6 @@
 #include "scene/scene.h"
 
 namespace pcf {
-
-// Picked pixels are given in this frame and scaled to the frame actually rendered.
-constexpr glm::ivec2 LESSON_FRAME_SIZE{1280, 720};
 
 // The renderer's state at one step, fully resolved. Bias, cull and depth format are the enums
 // of kernel/settings.h, parsed from their names when the file is read; the method is its kernel
@@ -98,9 +108,10 @@ struct LessonSettings {
     int precision = 0;                            // PCF_PRECISION_EXACT or _HW8 (key `precision`)
     int weights = 0;                              // PCF_WEIGHTS_* (key `weights`)
     float sigma = 1.0f;                           // gaussian weights, texels (key `sigma`)
-    glm::ivec2 pixel{640, 360};  // in the 1280 x 720 reference frame, origin top-left, y down
-    bool grid = true;            // the texel grid overlay on the scene
-    bool heatmap = false;        // the aliasing heat map over the scene (viewer key A)
+    // The scene point traced (key `point`), world units; nullopt: the middle of the view.
+    std::optional<glm::vec3> point;
+    bool grid = true;      // the texel grid overlay on the scene
+    bool heatmap = false;  // the aliasing heat map over the scene (viewer key A)
     // The shadow map's texel grid slid under the world by (s, s) texels (light.h's
     // shiftShadowOrigin), then with `snap` moved to the nearest whole-texel fit (viewer keys
     // O / Shift+O step s by 1/8 texel, S toggles snap). 0 and false: the plain fit.
@@ -112,13 +123,21 @@ struct LessonSettings {
     // The mode and its parameters as the kernel and the trace take them.
     BiasParams biasParams() const;
 
-    // The kernel's parameters for the pixel traced. framePixel is in the frame actually rendered
-    // (origin top-left, y down, as scalePixel returns it); the per-pixel Poisson rotation is
-    // hashed from GL's window coordinates (origin bottom-left), as the shaders do, so the trace
-    // rotates the disk exactly as the rendered pixel did.
-    PcfParams pcfParams(glm::ivec2 framePixel, glm::ivec2 frameSize) const;
+    // The kernel's parameters for a lookup at uv in a map of mapSize texels: the Poisson disk
+    // turns with the texel looked up (pcfTexelRotation), as the shaders turn it.
+    PcfParams pcfParams(glm::vec2 uv, int mapSize) const;
 
     bool operator==(const LessonSettings&) const = default;
+};
+
+class ParsedClaim;  // lesson_claims.h
+
+// A claim of a step's words about its numbers (lesson_claims.h), as written and parsed. Copies
+// share the parse.
+struct StepClaim {
+    std::string text;
+    int line = 0;  // its line in the lesson file
+    std::shared_ptr<const ParsedClaim> parsed;
 };
 
 struct LessonStep {
@@ -140,6 +159,13 @@ struct LessonStep {
     // `highlight = 1`: the fetch instruction (1-based, in issue order) this step's text talks
     // about, drawn in the highlight colour in the inspector; 0: none. Not inherited.
     int highlightFetch = 0;
+    // `claims = ["...", ...]`: what the words state about the numbers, checked (lesson_claims.h).
+    // Not inherited.
+    std::vector<StepClaim> claims;
+    // `keys = ["O"]`: the viewer keys (lesson_keys.h) the words are written to survive: the
+    // claims must hold after each of them too. Not inherited.
+    std::vector<std::string> keys;
+    int keysLine = 0;
 };
 
 // What a lesson may hold; more is refused with one line naming the limit. The lessons that ship
@@ -163,11 +189,5 @@ Lesson parseLessonFile(const std::string& path);
 // Parses lesson text; sourceName names it in error messages and gives the lesson's name (its
 // stem) and sourcePath.
 Lesson parseLessonString(std::string_view text, const std::string& sourceName);
-
-// A lesson's pixel (given in the 1280 x 720 reference frame, origin top-left, y down) in a frame
-// of frameSize: the pixel whose area holds the reference pixel's centre, clamped to the frame.
-// Each axis scales on its own, so the same spot of the picture is traced only when the frame
-// keeps the reference's 16:9 shape (the camera's field of view is vertical).
-glm::ivec2 scalePixel(glm::ivec2 pixel, glm::ivec2 frameSize);
 
 }  // namespace pcf

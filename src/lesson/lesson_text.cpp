@@ -69,6 +69,15 @@ const std::vector<Simple>& simpleNames() {
         {"base.y", [](const Trace& t, const StepContext&) { return integer(t.pos.base.y); }},
         {"frac.x", [](const Trace& t, const StepContext&) { return number(t.pos.frac.x); }},
         {"frac.y", [](const Trace& t, const StepContext&) { return number(t.pos.frac.y); }},
+        // Where the point lies inside the texel floor(uv * size) (nearest's): fract(p + 0.5).
+        {"in_texel.x",
+         [](const Trace& t, const StepContext&) {
+             return number(t.pos.frac.x + 0.5f - std::floor(t.pos.frac.x + 0.5f));
+         }},
+        {"in_texel.y",
+         [](const Trace& t, const StepContext&) {
+             return number(t.pos.frac.y + 0.5f - std::floor(t.pos.frac.y + 0.5f));
+         }},
         {"1-frac.x",
          [](const Trace& t, const StepContext&) { return number(1.0f - t.pos.frac.x); }},
         {"1-frac.y",
@@ -140,6 +149,20 @@ const std::vector<Simple>& simpleNames() {
          [](const Trace&, const StepContext& c) { return number(c.constantBias); }},
         {"dzduv.u", [](const Trace& t, const StepContext&) { return number(t.bias.dzduv.x); }},
         {"dzduv.v", [](const Trace& t, const StepContext&) { return number(t.bias.dzduv.y); }},
+        // The plane's depth change over half a texel of this map: dz/du * 0.5 / size.
+        {"half_texel_dz.u",
+         [](const Trace& t, const StepContext&) {
+             return number(t.bias.dzduv.x * 0.5 / t.mapSize.x);
+         }},
+        {"half_texel_dz.v",
+         [](const Trace& t, const StepContext&) {
+             return number(t.bias.dzduv.y * 0.5 / t.mapSize.y);
+         }},
+        {"origin_shift", [](const Trace&, const StepContext& c) { return number(c.originShift); }},
+        {"light_angle",
+         [](const Trace&, const StepContext& c) {
+             return c.lightAngleDeg >= 0.0f ? number(c.lightAngleDeg) : Value{};
+         }},
         {"plane_changed",
          [](const Trace& t, const StepContext&) { return integer(tapsChangedByPlane(t)); }},
         {"lookup_shadowed_count",
@@ -365,9 +388,10 @@ std::optional<PlaceholderProblem> scan(std::string_view text, OnLiteral onLitera
 
 }  // namespace
 
-StepContext makeStepContext(const LessonStep& step, glm::ivec2 frameSize) {
+StepContext makeStepContext(const LessonStep& step, glm::ivec2 pixel) {
     StepContext ctx;
-    ctx.pixel = scalePixel(step.settings.pixel, frameSize);
+    ctx.pixel = pixel;
+    ctx.originShift = step.settings.originShift;
     ctx.bias = step.settings.bias;
     ctx.constantBias = step.settings.constantBias;
     ctx.cull = step.settings.cull;
@@ -416,6 +440,32 @@ std::string fillText(std::string_view text, const Trace& trace, const StepContex
         });
     if (problem) throw std::invalid_argument(problem->problem);
     return singularAfterOne(out);
+}
+
+std::optional<std::string> numberPlaceholderProblem(std::string_view inside) {
+    auto parsed = parsePlaceholder(inside);
+    if (auto* problem = std::get_if<std::string>(&parsed)) return *problem;
+    const Name& n = std::get<Placeholder>(parsed).name;
+    if (n.simple && (n.simple->name == "method" || n.simple->name == "bias" ||
+                     n.simple->name == "cull" || n.simple->name == "depth_format")) {
+        // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on chains of +.
+        std::string problem = "{";
+        problem.append(inside);
+        problem.append("} is a word, not a number");
+        return problem;
+    }
+    return std::nullopt;
+}
+
+std::optional<double> placeholderNumber(std::string_view inside, const Trace& trace,
+                                        const StepContext& ctx) {
+    if (std::optional<std::string> problem = numberPlaceholderProblem(inside)) {
+        throw std::invalid_argument(*problem);
+    }
+    const Placeholder ph = std::get<Placeholder>(parsePlaceholder(inside));
+    Value v = valueOf(ph.name, trace, ctx);
+    if (v.kind != Value::Number && v.kind != Value::Integer) return std::nullopt;
+    return v.number * ph.factor.value_or(1.0);
 }
 
 std::string singularAfterOne(std::string text) {

@@ -17,6 +17,8 @@
 //   base.x base.y         floor(p): the lower corner of the bilinear 2x2
 //   frac.x frac.y         p - base: the sub-texel position that weights the lerp
 //   1-frac.x 1-frac.y     1 - frac: the weight of the lower texel of each axis
+//   in_texel.x in_texel.y where the point lies inside the texel floor(uv * size) that nearest
+//                         reads, 0..1 from its lower edge: fract(frac + 0.5)
 //   g.x g.y               the fraction shared by every lookup of an N x N kernel (pcf-naive,
 //                         pcf-gather, pcf-hw): q = p - (N-1)/2, g = q - floor(q); equals frac
 //                         for odd N
@@ -44,6 +46,10 @@
 //                         ref - ref; nonzero under receiver-plane bias), and depth - ref with the
 //                         lookup's one ref (what the read would have said without its own ref)
 //   dzduv.u dzduv.v       receiver-plane bias: the receiver's d(depth)/d(u, v) the renderer used
+//   half_texel_dz.u half_texel_dz.v  the receiver's depth change over half a texel of this map
+//                         along u / v: dzduv * 0.5 / map_size
+//   light_angle           the angle between the picked point's normal and the direction to the
+//                         light, degrees (0: light from straight above, 90: grazing)
 //   plane_changed         reads whose bit differs from the one-ref-for-all comparison
 //   lookup_shadowed_count reads that would fail against the lookup's one ref
 //   fetch[K].value fetch[K].weight fetch[K].u fetch[K].v
@@ -54,6 +60,7 @@
 //   weights.origin.x weights.origin.y weights.w weights.h   the merged weight grid's box
 //   pixel.x pixel.y       the pixel traced, in the frame rendered (origin top-left)
 //   bias cull depth_format  the state's names (text); constant_bias its number
+//   origin_shift          how far the map's texel grid is slid, texels (viewer keys O / Shift+O)
 // An index past the trace's reads or fetches (possible only when the state was changed from the
 // one the lesson checked) is written "n/a".
 #pragma once
@@ -77,10 +84,15 @@ struct StepContext {
     float constantBias = DEFAULT_CONSTANT_BIAS;
     CullMode cull = CullMode::Back;
     DepthFormat depthFormat = DepthFormat::D32F;
+    // The angle between the receiver's normal at the picked point and the direction to the
+    // light, degrees: 0 the light straight above it, 90 grazing; negative: not known.
+    float lightAngleDeg = -1.0f;
+    float originShift = 0.0f;  // the map's texel grid slid by this many texels (origin_shift)
 };
 
-// The context of a step rendered in a frame of frameSize: its state, its pixel scaled.
-StepContext makeStepContext(const LessonStep& step, glm::ivec2 frameSize = LESSON_FRAME_SIZE);
+// The context of a step: its state, and the pixel that shows its point in the frame rendered
+// (lesson_pick.h: framePick).
+StepContext makeStepContext(const LessonStep& step, glm::ivec2 pixel = glm::ivec2(0));
 
 // Every placeholder name, indexed ones written with K, I and J ("tap[K].depth", "weight[I,J]").
 std::vector<std::string> placeholderNames();
@@ -101,6 +113,15 @@ std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int t
 // std::invalid_argument on text that checkPlaceholders refuses (lesson files are checked when
 // parsed, so that never happens to them).
 std::string fillText(std::string_view text, const Trace& trace, const StepContext& ctx);
+
+// The number the placeholder `inside` (what its braces hold: "frac.x", "tap[2].margin",
+// "weight[1,1]*9") stands for in this trace; nullopt for a text ({method}) or an index past the
+// trace's reads. Throws std::invalid_argument for a placeholder checkPlaceholders refuses, or a
+// text one. Claims (lesson_claims.h) compute with it.
+std::optional<double> placeholderNumber(std::string_view inside, const Trace& trace,
+                                        const StepContext& ctx);
+// Whether `inside` names a number placeholder; the reason when not.
+std::optional<std::string> numberPlaceholderProblem(std::string_view inside);
 
 // "1 lookups" -> "1 lookup" (and taps, hardware taps, gathers, reads, texels, texel reads,
 // fetches, points, samples): the words after a count were written for many. fillText applies it.

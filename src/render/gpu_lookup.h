@@ -20,7 +20,7 @@ class GpuLookup {
     GpuLookup();
 
     // Visibility of each lookup (u, v, ref; w unused), filtered by the GPU with `prm`
-    // (its rotation is ignored: rotatePerPixel picks pcfPixelRotation of each lookup's pixel).
+    // (its rotation is ignored: rotatePerPixel picks pcfTexelRotation of each lookup's uv).
     // The map is uploaded in its own format: 32F, or 16/24-bit when map.fixedPointBits() says
     // so (GL rounds the floats to integers); storedMap() then holds what the GPU compared with.
     // Lookups fill a grid `width` wide, row by row from GL row 0; the result has the same order.

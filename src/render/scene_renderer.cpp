@@ -56,8 +56,20 @@ SceneRenderer::SceneRenderer(const Scene& scene)
 
 glm::mat4 SceneRenderer::clipFromWorld() const {
     float aspect = mFrame.height > 0 ? static_cast<float>(mFrame.width) / mFrame.height : 1.0f;
-    return pcf::clipFromWorld(mScene.camera, aspect);
+    glm::mat4 clip = pcf::clipFromWorld(mScene.camera, aspect);
+    if (!mPick) return clip;
+    // The sub-pixel jitter moves ndc by a constant: x' = x + jitter.x * w (clip space).
+    return jitterClip(clip, mPick->jitterNdc);
 }
+
+glm::mat4 jitterClip(const glm::mat4& clipFromWorld, glm::vec2 jitterNdc) {
+    glm::mat4 shift(1.0f);
+    shift[3][0] = jitterNdc.x;
+    shift[3][1] = jitterNdc.y;
+    return shift * clipFromWorld;
+}
+
+void SceneRenderer::setPick(const std::optional<CameraPick>& pick) { mPick = pick; }
 
 void SceneRenderer::setLight(const Light& light) {
     mScene.light = light;
@@ -195,12 +207,15 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform1f(program, uniform(program, "uNormalOffset"), bias.normalOffset);
     glProgramUniform1f(program, uniform(program, "uSoftScale"), bias.softScale);
     glProgramUniform1f(program, uniform(program, "uRpdbMax"), bias.rpdbMax);
-    // One texel's world size at clip.w = 1: 2 / (P00 * size) across x, likewise y (ortho: w = 1;
-    // perspective: scaled by w in the shader); the larger of the two sides.
-    glm::mat4 proj = pcf::clipFromLight(mScene);
-    float texelWs = 2.0f / (std::min(std::fabs(proj[0][0]), std::fabs(proj[1][1])) *
-                            static_cast<float>(settings.mapSize));
-    glProgramUniform1f(program, uniform(program, "uShadowTexelWs"), texelWs);
+    glProgramUniform1f(program, uniform(program, "uShadowTexelWs"),
+                       pcf::shadowTexelWs(mScene, settings.mapSize));
+    // A lesson's pinned point (setPick); pixel -1, -1 matches no fragment.
+    glm::ivec2 pickPixel = mPick ? mPick->pixelGl : glm::ivec2(-1);
+    glm::vec4 pickLookup = mPick ? mPick->lookup : glm::vec4(0.0f);
+    glm::vec2 pickDzDuv = mPick ? mPick->dzduv : glm::vec2(0.0f);
+    glProgramUniform2iv(program, uniform(program, "uPickPixel"), 1, &pickPixel.x);
+    glProgramUniform4fv(program, uniform(program, "uPickLookup"), 1, &pickLookup.x);
+    glProgramUniform2fv(program, uniform(program, "uPickDzDuv"), 1, &pickDzDuv.x);
     glProgramUniform1f(program, uniform(program, "uRadius"), settings.radius);
     glProgramUniform1i(program, uniform(program, "uRotatePerPixel"),
                        settings.rotatePerPixel ? 1 : 0);

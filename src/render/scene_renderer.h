@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 #include <map>
+#include <optional>
 #include <tuple>
 #include <vector>
 
@@ -24,6 +25,17 @@
 #include "scene/scene.h"
 
 namespace pcf {
+
+// What the camera pass needs to show a pinned scene point at one pixel (SceneRenderer::setPick).
+struct CameraPick {
+    glm::ivec2 pixelGl{-1, -1};  // window coordinates, row 0 at the bottom
+    glm::vec2 jitterNdc{0.0f};   // added to every ndc position: the point lands on the centre
+    glm::vec4 lookup{0.0f};      // u, v, ref, z0 (shared/pcf_shading.h: pcfReceiverLookup)
+    glm::vec2 dzduv{0.0f};       // the receiver plane, dz/du and dz/dv
+};
+
+// clipFromWorld followed by a shift of every ndc position by jitterNdc.
+glm::mat4 jitterClip(const glm::mat4& clipFromWorld, glm::vec2 jitterNdc);
 
 class SceneRenderer {
   public:
@@ -67,6 +79,10 @@ class SceneRenderer {
     void setLight(const Light& light);
     void setCamera(const Camera& camera);
     void setShadowClipFromWorld(const glm::mat4& shadowClipFromWorld);
+    // A lesson's pinned scene point (lesson/lesson_pick.h) for the camera passes that follow:
+    // the camera is jittered by jitterNdc and the fragment at pixelGl (GL window coordinates)
+    // takes the CPU's lookup of the point instead of its interpolated one. nullopt: none.
+    void setPick(const std::optional<CameraPick>& pick);
 
   private:
     struct GpuMesh {
@@ -87,6 +103,7 @@ class SceneRenderer {
 
     Scene mScene;
     glm::mat4 mShadowClipFromWorld{1.0f};
+    std::optional<CameraPick> mPick;
     std::vector<GpuMesh> mMeshes;
     GlProgram mDepthProgram;
     // By (targets, bias mode, spot light): one PcfProgramCache per combination used.

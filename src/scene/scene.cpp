@@ -1,5 +1,8 @@
 #include "scene/scene.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace pcf {
 
 Aabb sceneBounds(const Scene& scene) {
@@ -14,6 +17,12 @@ glm::mat4 lightFromWorld(const Scene& scene) {
 
 glm::mat4 clipFromLight(const Scene& scene) {
     return clipFromLight(scene.light, sceneBounds(scene));
+}
+
+float shadowTexelWs(const Scene& scene, int mapSize) {
+    glm::mat4 proj = clipFromLight(scene);
+    return 2.0f /
+           (std::min(std::fabs(proj[0][0]), std::fabs(proj[1][1])) * static_cast<float>(mapSize));
 }
 
 glm::mat4 shadowClipFromWorld(const Scene& scene) {

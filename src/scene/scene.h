@@ -39,6 +39,10 @@ Aabb sceneBounds(const Scene& scene);
 glm::mat4 lightFromWorld(const Scene& scene);
 glm::mat4 clipFromLight(const Scene& scene);
 glm::mat4 shadowClipFromWorld(const Scene& scene);
+// One shadow-map texel's world size at clip.w = 1 for a map of mapSize texels: 2 / (P00 * size)
+// across x, likewise y, the larger of the two (ortho: w = 1; perspective: the shader scales it by
+// w). What normal offset's distance is measured in (pcfNormalOffsetDistance).
+float shadowTexelWs(const Scene& scene, int mapSize);
 
 int casterCount(const Scene& scene);
 int receiverCount(const Scene& scene);

@@ -1,0 +1,154 @@
+// cmd_lesson.cpp: `pcfscope lesson check FILE`: verifies every claim of a lesson's steps
+// (lesson/lesson_claims.h) on the step's own lookup, and after each key the step's words invite
+// (`keys`). The lookup belongs to a scene point (lesson/lesson_pick.h), so it is the same at every
+// frame size and mode: the claims are checked once per state, and the point is checked to show in
+// the scene view of every frame size a class is likely to see, normal and presentation.
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/bench_report.h"
+#include "analysis/speed_chart.h"
+#include "app/commands.h"
+#include "app/session.h"
+#include "base/input_file.h"
+#include "lesson/lesson_claims.h"
+#include "lesson/lesson_keys.h"
+#include "lesson/lesson_pick.h"
+#include "render/gl_context.h"
+#include "render/scene_renderer.h"
+
+namespace pcf {
+
+namespace {
+
+// The frame sizes a lesson is checked at (lessons are shown at each, normal and presentation).
+constexpr glm::ivec2 CHECKED_FRAMES[] = {{1024, 768}, {1280, 720}, {1600, 900}, {1920, 1080}};
+
+// A bench chart's order: whether a's metric is less than b's (time: the median scene pass, as
+// the chart's x axis; rmse: the edge RMSE, its y axis). Each label must pick one row.
+ClaimWorld chartWorld(const LessonStep& step) {
+    ClaimWorld world;
+    world.chartLess = [&step](const std::string& a, const std::string& b,
+                              const std::string& metric) -> std::variant<bool, std::string> {
+        if (step.chart.empty() || step.chart.find('#') != std::string::npos) {
+            return std::string("the step shows no bench chart");
+        }
+        std::vector<BenchRow> rows = parseBenchCsv(readInputFile(step.chart), step.chart);
+        double value[2] = {0.0, 0.0};
+        const std::string* labels[2] = {&a, &b};
+        for (int k = 0; k < 2; ++k) {
+            std::vector<size_t> picked;
+            try {
+                picked = chartRowsMatching(rows, *labels[k]);
+            } catch (const std::invalid_argument& e) {
+                return std::string(e.what());
+            }
+            if (picked.size() != 1) {
+                return "'" + *labels[k] + "' names " + std::to_string(picked.size()) +
+                       " dots of the chart, not one";
+            }
+            const BenchRow& r = rows[picked[0]];
+            value[k] = metric == "time" ? chartMs(r, ChartTiming::Scene)
+                                        : chartAccuracy(r, ChartAccuracy::EdgeRmse);
+        }
+        return value[0] < value[1];
+    };
+    return world;
+}
+
+struct Checker {
+    const Lesson& lesson;
+    SceneRenderer& renderer;
+    int failures = 0;
+    int checked = 0;
+
+    void failure(int line, const std::string& what) {
+        std::printf("%s:%d: %s\n", lesson.sourcePath.c_str(), line, what.c_str());
+        ++failures;
+    }
+
+    // The step's claims on its lookup under settings s (after `key`, when not empty).
+    void checkState(size_t index, const LessonStep& step, const LessonSettings& s,
+                    const std::string& key, const ScenePoint& point) {
+        glm::mat4 fit = lessonShadowFit(lesson.scene, s, s.mapSize);
+        renderer.setShadowClipFromWorld(fit);
+        renderer.renderShadowPass(renderSettingsFor(s, {64, 64}));
+        ShadowMap map = renderer.readShadowMap();
+        Trace trace = tracePinned(map, lesson.scene, fit, s, point);
+        StepContext ctx = makeStepContext(step);
+        ctx.bias = s.bias;
+        ctx.constantBias = s.constantBias;
+        ctx.cull = s.cull;
+        ctx.depthFormat = s.depthFormat;
+        ctx.originShift = s.originShift;
+        ctx.lightAngleDeg = lightAngleDeg(lesson.scene, point);
+        ClaimWorld world = chartWorld(step);
+        world.onPlane = std::holds_alternative<Plane>(
+            lesson.scene.objects[static_cast<size_t>(point.object)].shape);
+        for (const StepClaim& claim : step.claims) {
+            ++checked;
+            std::string why;
+            if (claimHolds(claim, trace, ctx, world, &why)) continue;
+            failure(claim.line, "step " + std::to_string(index + 1) + " claim \"" + claim.text +
+                                    "\" fails" + (key.empty() ? "" : " after key " + key) + ": " +
+                                    why);
+        }
+    }
+
+    void checkStep(size_t index, const LessonStep& step) {
+        std::optional<ScenePoint> point = stepPoint(lesson.scene, step.settings);
+        if (!point) {
+            failure(step.line,
+                    "step " + std::to_string(index + 1) + ": its point is on no surface");
+            return;
+        }
+        // The point shows in every frame: the pixel that holds it is in the scene view.
+        for (glm::ivec2 frame : CHECKED_FRAMES) {
+            for (bool presentation : {false, true}) {
+                glm::ivec2 scene(inspectorLayout(frame, presentation).scene.size());
+                if (framePick(lesson.scene.camera, point->posWs, scene).inFrame) continue;
+                failure(step.line, "step " + std::to_string(index + 1) +
+                                       ": its point is outside the scene view at " +
+                                       std::to_string(frame.x) + "x" + std::to_string(frame.y) +
+                                       (presentation ? " presentation" : ""));
+            }
+        }
+        checkState(index, step, step.settings, "", *point);
+        for (const std::string& key : step.keys) {
+            if (std::optional<LessonSettings> s = settingsAfterKey(step.settings, key)) {
+                checkState(index, step, *s, key, *point);
+            }
+        }
+    }
+};
+
+int runLessonCheck(const std::string& file) {
+    Lesson lesson = loadLessonChecked(resolveLesson(file));
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    SceneRenderer renderer(lesson.scene);
+    Checker checker{lesson, renderer};
+    for (size_t i = 0; i < lesson.steps.size(); ++i) checker.checkStep(i, lesson.steps[i]);
+    if (checker.failures > 0) return 1;
+    std::printf("%s: %d claims hold over %zu steps\n", lesson.sourcePath.c_str(), checker.checked,
+                lesson.steps.size());
+    return 0;
+}
+
+}  // namespace
+
+Command addLessonCommand(CLI::App& app) {
+    auto file = std::make_shared<std::string>();
+    CLI::App* lessonCmd = app.add_subcommand("lesson", "tools for lesson authors");
+    lessonCmd->require_subcommand(1);
+    CLI::App* check = lessonCmd->add_subcommand(
+        "check",
+        "verify every claim of a lesson's steps (exit 0: all hold; 1: one line per failure, "
+        "file:line; 2: a bad file)");
+    check->add_option("file", *file, "a lesson: a .toml path, or a built-in lesson's number")
+        ->required();
+    return {lessonCmd, [file] { return runLessonCheck(*file); }};
+}
+
+}  // namespace pcf

@@ -1,0 +1,322 @@
+#include "lesson/lesson_claims.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace pcf {
+
+namespace {
+
+struct Token {
+    enum Kind { Number, Name, Op } kind = Number;
+    double number = 0.0;
+    std::string name;  // the inside of a {placeholder}
+    char op = 0;       // + - * / ( )
+};
+
+std::string trim(std::string_view s) {
+    size_t a = s.find_first_not_of(" \t");
+    if (a == std::string_view::npos) return "";
+    size_t b = s.find_last_not_of(" \t");
+    return std::string(s.substr(a, b - a + 1));
+}
+
+std::vector<Token> tokenize(std::string_view s) {
+    std::vector<Token> out;
+    for (size_t i = 0; i < s.size();) {
+        char c = s[i];
+        if (c == ' ' || c == '\t') {
+            ++i;
+        } else if (c == '{') {
+            size_t close = s.find('}', i);
+            if (close == std::string_view::npos) throw std::invalid_argument("a { with no }");
+            std::string name(s.substr(i + 1, close - i - 1));
+            if (std::optional<std::string> problem = numberPlaceholderProblem(name)) {
+                throw std::invalid_argument(*problem);
+            }
+            out.push_back({Token::Name, 0.0, name, 0});
+            i = close + 1;
+        } else if (std::string_view("+-*/()").find(c) != std::string_view::npos) {
+            out.push_back({Token::Op, 0.0, {}, c});
+            ++i;
+        } else {
+            double v = 0.0;
+            auto [end, ec] = std::from_chars(s.data() + i, s.data() + s.size(), v);
+            if (ec != std::errc() || end == s.data() + i) {
+                throw std::invalid_argument("unexpected '" + std::string(s.substr(i)) +
+                                            "' (write placeholders in braces: {visibility})");
+            }
+            out.push_back({Token::Number, v, {}, 0});
+            i = static_cast<size_t>(end - s.data());
+        }
+    }
+    if (out.empty()) throw std::invalid_argument("an empty side");
+    return out;
+}
+
+using Lookup = std::function<std::optional<double>(const std::string&)>;
+
+// Recursive descent: expr = term (+|- term)*, term = factor (*|/ factor)*,
+// factor = number | {name} | ( expr ) | - factor. A value nullopt (an index past the trace's
+// reads) makes the whole nullopt.
+class Evaluator {
+  public:
+    Evaluator(const std::vector<Token>& t, Lookup lookup) : mT(t), mLookup(std::move(lookup)) {}
+    std::optional<double> run() {
+        std::optional<double> v = expr();
+        if (mAt != mT.size()) throw std::invalid_argument("unexpected tokens after an expression");
+        return v;
+    }
+
+  private:
+    bool isOp(char op) const {
+        return mAt < mT.size() && mT[mAt].kind == Token::Op && mT[mAt].op == op;
+    }
+    std::optional<double> expr() {
+        std::optional<double> v = term();
+        while (isOp('+') || isOp('-')) {
+            char op = mT[mAt++].op;
+            std::optional<double> r = term();
+            if (v && r) v = op == '+' ? *v + *r : *v - *r;
+            if (!r) v.reset();
+        }
+        return v;
+    }
+    std::optional<double> term() {
+        std::optional<double> v = factor();
+        while (isOp('*') || isOp('/')) {
+            char op = mT[mAt++].op;
+            std::optional<double> r = factor();
+            if (v && r) v = op == '*' ? *v * *r : *v / *r;
+            if (!r) v.reset();
+        }
+        return v;
+    }
+    std::optional<double> factor() {
+        if (mAt >= mT.size()) throw std::invalid_argument("an expression ends too early");
+        const Token& t = mT[mAt++];
+        if (t.kind == Token::Number) return t.number;
+        if (t.kind == Token::Name) return mLookup(t.name);
+        if (t.op == '-') {
+            std::optional<double> v = factor();
+            return v ? std::optional<double>(-*v) : std::nullopt;
+        }
+        if (t.op == '(') {
+            std::optional<double> v = expr();
+            if (!isOp(')')) throw std::invalid_argument("a ( with no )");
+            ++mAt;
+            return v;
+        }
+        throw std::invalid_argument(std::string("unexpected '") + t.op + "'");
+    }
+
+    const std::vector<Token>& mT;
+    Lookup mLookup;
+    size_t mAt = 0;
+};
+
+// The first comparison operator outside braces: its position and spelling.
+std::pair<size_t, std::string> findComparison(std::string_view s) {
+    int depth = 0;
+    for (size_t i = 0; i < s.size(); ++i) {
+        char c = s[i];
+        if (c == '{') ++depth;
+        if (c == '}') --depth;
+        if (depth > 0) continue;
+        if (c == '<' || c == '>' || c == '!') {
+            bool eq = i + 1 < s.size() && s[i + 1] == '=';
+            if (c == '!' && !eq) continue;
+            return {i, std::string(s.substr(i, eq ? 2 : 1))};
+        }
+        if (c == '=' || c == '~') return {i, std::string(1, c)};
+    }
+    return {std::string_view::npos, ""};
+}
+
+std::string number(double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+}  // namespace
+
+class ParsedClaim {
+  public:
+    enum Kind { Lit, Shadowed, Penumbra, FailingNearer, OnGround, Bits, Compare, Chart };
+    Kind kind = Compare;
+    std::vector<Token> lhs, rhs;
+    std::string op;
+    double tolerance = 0.0;
+    std::string chartA, chartB, metric;  // chart: a's metric < b's
+    std::string bits;                    // bits: every read's bit, in read order
+};
+
+std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
+    auto c = std::make_shared<ParsedClaim>();
+    std::string t = trim(text);
+    if (t == "lit") c->kind = ParsedClaim::Lit;
+    if (t == "shadowed") c->kind = ParsedClaim::Shadowed;
+    if (t == "penumbra") c->kind = ParsedClaim::Penumbra;
+    if (t == "failing taps nearer") c->kind = ParsedClaim::FailingNearer;
+    if (t == "on the ground") c->kind = ParsedClaim::OnGround;
+    if (t.rfind("bits ", 0) == 0) {
+        c->kind = ParsedClaim::Bits;
+        c->bits = trim(std::string_view(t).substr(5));
+        if (c->bits.empty() || c->bits.find_first_not_of("01") != std::string::npos) {
+            throw std::invalid_argument("bits takes the reads' bits in read order: bits 1010");
+        }
+    }
+    if (c->kind != ParsedClaim::Compare) return c;
+    if (t.rfind("chart:", 0) == 0) {
+        std::string rest = trim(std::string_view(t).substr(6));
+        // "A faster than B": A's time is less; "slower": B's is; accuracy reads the RMSE.
+        static const std::tuple<std::string_view, std::string_view, bool> ORDERS[] = {
+            {" faster than ", "time", false},
+            {" slower than ", "time", true},
+            {" more accurate than ", "rmse", false},
+            {" less accurate than ", "rmse", true}};
+        for (const auto& [words, metric, swap] : ORDERS) {
+            size_t at = rest.find(words);
+            if (at == std::string::npos) continue;
+            std::string a = trim(std::string_view(rest).substr(0, at));
+            std::string b = trim(std::string_view(rest).substr(at + words.size()));
+            if (a.empty() || b.empty()) break;
+            c->kind = ParsedClaim::Chart;
+            c->chartA = swap ? b : a;
+            c->chartB = swap ? a : b;
+            c->metric = metric;
+            return c;
+        }
+        throw std::invalid_argument(
+            "a chart claim reads 'chart: A faster than B' (or slower than, more accurate than, "
+            "less accurate than)");
+    }
+    auto [at, op] = findComparison(t);
+    if (at == std::string_view::npos) {
+        throw std::invalid_argument(
+            "no comparison (=, !=, <, <=, >, >=, ~) and not a keyword (lit, shadowed, penumbra, "
+            "failing taps nearer, on the ground, chart: ...)");
+    }
+    c->op = op;
+    std::string_view rhs = std::string_view(t).substr(at + op.size());
+    if (op == "~") {
+        size_t pm = rhs.find("+-");
+        if (pm == std::string_view::npos) {
+            throw std::invalid_argument("a near (~) needs its tolerance: a ~ b +- 0.001");
+        }
+        std::string tol = trim(rhs.substr(pm + 2));
+        double v = 0.0;
+        auto [end, ec] = std::from_chars(tol.data(), tol.data() + tol.size(), v);
+        if (ec != std::errc() || end != tol.data() + tol.size() || !(v >= 0.0)) {
+            throw std::invalid_argument("the tolerance after +- must be a number >= 0");
+        }
+        c->tolerance = v;
+        rhs = rhs.substr(0, pm);
+    }
+    c->lhs = tokenize(std::string_view(t).substr(0, at));
+    c->rhs = tokenize(rhs);
+    // Both sides must parse as expressions: evaluate them once with every value 1.
+    Lookup ones = [](const std::string&) { return std::optional<double>(1.0); };
+    Evaluator(c->lhs, ones).run();
+    Evaluator(c->rhs, ones).run();
+    return c;
+}
+
+bool isChartClaim(const StepClaim& claim) {
+    return claim.parsed && claim.parsed->kind == ParsedClaim::Chart;
+}
+
+namespace {
+
+bool litHolds(const Trace& t) {
+    // Every read that counts passes (the weights' float sum may round to 0.99999994).
+    for (const TapRecord& tap : t.taps) {
+        if (tap.weight > 0.0f && tap.lit < 0.5f) return false;
+    }
+    return t.visibility > 0.99999f;
+}
+
+bool failingNearer(const Trace& t, std::string* why) {
+    for (size_t k = 0; k < t.taps.size(); ++k) {
+        const TapRecord& tap = t.taps[k];
+        if (tap.lit < 0.5f && !(tap.depth < tap.ref)) {
+            if (why)
+                *why = "read " + std::to_string(k) +
+                       " fails with depth - ref = " + number(tap.depth - tap.ref);
+            return false;
+        }
+    }
+    return true;
+}
+
+bool compare(double a, const std::string& op, double b, double tolerance) {
+    if (op == "=") return a == b;
+    if (op == "!=") return a != b;
+    if (op == "<") return a < b;
+    if (op == "<=") return a <= b;
+    if (op == ">") return a > b;
+    if (op == ">=") return a >= b;
+    return std::fabs(a - b) <= tolerance;
+}
+
+}  // namespace
+
+bool claimHolds(const StepClaim& claim, const Trace& trace, const StepContext& ctx,
+                const ClaimWorld& world, std::string* why) {
+    const ParsedClaim& c = *claim.parsed;
+    auto say = [&](std::string s) {
+        if (why) *why = std::move(s);
+    };
+    switch (c.kind) {
+        case ParsedClaim::Lit:
+            say("visibility " + number(trace.visibility));
+            return litHolds(trace);
+        case ParsedClaim::Shadowed:
+            say("visibility " + number(trace.visibility));
+            return trace.visibility == 0.0f;
+        case ParsedClaim::Penumbra:
+            say("visibility " + number(trace.visibility));
+            return trace.visibility > 0.0f && trace.visibility < 1.0f;
+        case ParsedClaim::FailingNearer:
+            return failingNearer(trace, why);
+        case ParsedClaim::Bits: {
+            std::string got;
+            for (const TapRecord& tap : trace.taps) got += tap.lit >= 0.5f ? '1' : '0';
+            say("bits " + got);
+            return got == c.bits;
+        }
+        case ParsedClaim::OnGround:
+            say("the point is not on a plane");
+            return world.onPlane;
+        case ParsedClaim::Chart: {
+            if (!world.chartLess) return true;
+            std::variant<bool, std::string> r = world.chartLess(c.chartA, c.chartB, c.metric);
+            if (auto* problem = std::get_if<std::string>(&r)) {
+                say(*problem);
+                return false;
+            }
+            say(c.chartA + "'s " + c.metric + " is not less than " + c.chartB + "'s");
+            return std::get<bool>(r);
+        }
+        case ParsedClaim::Compare:
+            break;
+    }
+    Lookup values = [&](const std::string& name) { return placeholderNumber(name, trace, ctx); };
+    std::optional<double> a = Evaluator(c.lhs, values).run();
+    std::optional<double> b = Evaluator(c.rhs, values).run();
+    if (!a || !b) {
+        say("a placeholder has no value here (an index past the trace's reads)");
+        return false;
+    }
+    bool holds = compare(*a, c.op, *b, c.tolerance);
+    std::string got = number(*a) + " " + c.op + " " + number(*b);
+    if (c.op == "~") got += " +- " + number(c.tolerance);
+    say((holds ? "" : "not ") + got);
+    return holds;
+}
+
+}  // namespace pcf

@@ -1,0 +1,67 @@
+// lesson_claims.h: what a step's words state about its numbers, written beside the words so that
+// a checker can verify them (`pcfscope lesson check FILE`) and the viewer can withhold words that
+// a key press has made false. A step lists its claims in its TOML table:
+//
+//   claims = [
+//     "shadowed",                       the picked point: visibility 0
+//     "{shadowed_count} = 0",           an expression compared with another
+//     "{frac.x} ~ 0.2 +- 0.0005",       near: within the tolerance after +-
+//     "{visibility} ~ 1 - {frac.x} +- 1e-4",
+//     "failing taps nearer",            every failing read stores a depth nearer the light than
+//                                       its ref (depth < ref)
+//     "bits 1010",                      every read's bit, in read order
+//     "chart: pcf-gather3 faster than pcf-hw3",   an order on the step's chart (bench.csv)
+//   ]
+//
+// Keywords: `lit` (every read that counts passes, visibility 1), `shadowed` (visibility 0),
+// `penumbra` (0 < visibility < 1), `failing taps nearer`, `on the ground` (the picked point lies
+// on a plane), `bits B...` (the reads' bits). Expressions: numbers, {placeholders} (any number
+// placeholder of lesson_text.h, with *F factors), + - * / and parentheses, compared with = != < <=
+// > >= or ~ (near, with a tolerance: `a ~ b +- t` holds when |a - b| <= t). `=` is exact: use it
+// for counts and bits. Chart claims read the CSV the step's chart draws: `chart: A faster than B` /
+// `slower than` (the median scene-pass time), `more accurate than` / `less accurate than` (edge
+// RMSE against the ray-cast truth); A and B are dot labels or their first word, as chart_highlight
+// takes them.
+//
+// A step's `keys = ["O", "+"]` names the viewer keys its words are written to survive (a step that
+// tells the class to press O): the checker verifies the claims after each of those keys too.
+// After any other key the viewer checks the claims on the live trace and, when one fails, shows
+// the settings the words were written for instead of the words.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "kernel/trace.h"
+#include "lesson/lesson_text.h"
+
+namespace pcf {
+
+// What a claim may read besides the trace and the step's context.
+struct ClaimWorld {
+    bool onPlane = false;  // the picked point lies on a plane
+    // A chart claim: whether A's `metric` ("time" or "rmse") is less than B's on the step's
+    // chart, or the reason it cannot be told. Unset: chart claims are not checked (held).
+    std::function<std::variant<bool, std::string>(const std::string& a, const std::string& b,
+                                                  const std::string& metric)>
+        chartLess;
+};
+
+// Parses a claim; std::invalid_argument naming what is wrong (an unknown placeholder, a missing
+// operator, a near without +-).
+std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text);
+
+// Whether the claim holds for this trace; `why` gets the values that decided it ("{frac.x} =
+// 0.2022, not within 0.0005 of 0.2"). Charts claims are held when world.chartLess is unset.
+bool claimHolds(const StepClaim& claim, const Trace& trace, const StepContext& ctx,
+                const ClaimWorld& world, std::string* why = nullptr);
+
+// Whether the claim reads the step's chart (and nothing of the trace).
+bool isChartClaim(const StepClaim& claim);
+
+}  // namespace pcf

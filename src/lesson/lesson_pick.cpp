@@ -1,0 +1,128 @@
+#include "lesson/lesson_pick.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernel/shading.h"
+#include "scene/raycast.h"
+
+namespace pcf {
+
+namespace {
+
+std::optional<ScenePoint> pointOfHit(const std::optional<Hit>& hit) {
+    if (!hit) return std::nullopt;
+    // scene.frag turns the normal of a surface seen from behind (gl_FrontFacing).
+    return ScenePoint{hit->posWs, hit->frontFace ? hit->normalWs : -hit->normalWs, hit->object};
+}
+
+// The camera pass's (u, v, depth) of a world point, in double: ndc = clip / w, * 0.5 + 0.5.
+glm::dvec3 lightSpace(const glm::mat4& shadowClipFromWorld, glm::dvec3 posWs) {
+    glm::dvec4 clip = glm::dmat4(shadowClipFromWorld) * glm::dvec4(posWs, 1.0);
+    return glm::dvec3(clip) / clip.w * 0.5 + 0.5;
+}
+
+}  // namespace
+
+std::optional<ScenePoint> seenPoint(const Scene& scene, glm::vec3 pointWs) {
+    glm::vec3 toPoint = pointWs - scene.camera.eyeWs;
+    float distance = glm::length(toPoint);
+    if (!(distance > 0.0f)) return std::nullopt;
+    std::optional<Hit> hit = intersect(scene, Ray{scene.camera.eyeWs, toPoint / distance});
+    if (!hit || std::fabs(hit->t - distance) > POINT_TOLERANCE) return std::nullopt;
+    return pointOfHit(hit);
+}
+
+std::optional<ScenePoint> pointAtNdc(const Scene& scene, glm::vec2 ndc, float aspect,
+                                     glm::vec2 jitterNdc) {
+    return pointOfHit(intersect(scene, cameraRay(scene.camera, ndc - jitterNdc, aspect)));
+}
+
+std::optional<ScenePoint> stepPoint(const Scene& scene, const LessonSettings& s) {
+    if (s.point) return seenPoint(scene, *s.point);
+    // The middle of the view is the same point at every aspect (the field of view is vertical).
+    return pointAtNdc(scene, glm::vec2(0.0f), 1.0f, glm::vec2(0.0f));
+}
+
+FramePick framePick(const Camera& camera, glm::vec3 posWs, glm::ivec2 frameSize) {
+    glm::dvec2 size(frameSize);
+    glm::dmat4 clipFromWorldD(clipFromWorld(camera, static_cast<float>(size.x / size.y)));
+    glm::dvec4 clip = clipFromWorldD * glm::dvec4(glm::dvec3(posWs), 1.0);
+    glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+    // GL window coordinates (row 0 at the bottom), then the pixel holding them.
+    glm::dvec2 window = (ndc * 0.5 + 0.5) * size;
+    glm::ivec2 gl(std::floor(window.x), std::floor(window.y));
+    FramePick pick;
+    pick.inFrame =
+        clip.w > 0.0 && gl.x >= 0 && gl.y >= 0 && gl.x < frameSize.x && gl.y < frameSize.y;
+    gl = glm::clamp(gl, glm::ivec2(0), frameSize - 1);
+    pick.pixel = glm::ivec2(gl.x, frameSize.y - 1 - gl.y);
+    if (pick.inFrame) {
+        glm::dvec2 centre = (glm::dvec2(gl) + 0.5) / size * 2.0 - 1.0;
+        pick.jitterNdc = glm::vec2(centre - ndc);
+    }
+    return pick;
+}
+
+FramePick stepPick(const Scene& scene, const LessonSettings& s, glm::ivec2 frameSize) {
+    if (std::optional<ScenePoint> p = stepPoint(scene, s)) {
+        return framePick(scene.camera, p->posWs, frameSize);
+    }
+    FramePick pick;
+    pick.pixel = frameSize / 2;
+    return pick;
+}
+
+namespace {
+
+glm::vec3 toLightWs(const Light& light, glm::vec3 posWs) {
+    // scene.frag: toLight is -direction, or towards a spot light's position.
+    return light.type == LightType::Spot ? glm::normalize(light.positionWs - posWs)
+                                         : -glm::normalize(light.directionWs);
+}
+
+}  // namespace
+
+float lightAngleDeg(const Scene& scene, const ScenePoint& point) {
+    float c = glm::dot(point.normalWs, toLightWs(scene.light, point.posWs));
+    return glm::degrees(std::acos(std::clamp(c, -1.0f, 1.0f)));
+}
+
+Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
+                  const LessonSettings& s, const ScenePoint& point) {
+    PinnedLookup at = pinnedLookup(scene, shadowClipFromWorld, s, point);
+    BiasParams bias = s.biasParams();
+    bias.dzduv = at.dzduv;
+    return traceLookup(map, at.uv, at.z0, at.ref, s.pcfParams(at.uv, map.width()), bias);
+}
+
+PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
+                          const LessonSettings& s, const ScenePoint& point) {
+    glm::vec3 n = point.normalWs;
+    glm::vec3 toLight = toLightWs(scene.light, point.posWs);
+    BiasParams bias = s.biasParams();
+    PcfReceiverLookup at = pcfReceiverLookup(
+        shadowClipFromWorld, point.posWs, n, glm::dot(n, toLight), bias.mode, bias.baseBias(),
+        bias.slope, bias.slopeMax, bias.normalOffset, shadowTexelWs(scene, s.mapSize));
+    // The receiver's plane, from two steps along the surface instead of two screen pixels: any
+    // two independent directions give the same dz/duv of a plane (pcfReceiverPlaneDzDuv). In
+    // double, so the steps' differences keep their digits.
+    glm::dvec3 nd(n);
+    glm::dvec3 t1 = glm::normalize(
+        glm::cross(nd, std::fabs(nd.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    glm::dvec3 t2 = glm::cross(nd, t1);
+    const double step = 1e-3;
+    glm::dvec3 p(point.posWs);
+    glm::dvec3 d1 = lightSpace(shadowClipFromWorld, p + step * t1) -
+                    lightSpace(shadowClipFromWorld, p - step * t1);
+    glm::dvec3 d2 = lightSpace(shadowClipFromWorld, p + step * t2) -
+                    lightSpace(shadowClipFromWorld, p - step * t2);
+    PinnedLookup out;
+    out.uv = glm::vec2(at.u, at.v);
+    out.z0 = at.z0;
+    out.ref = at.ref;
+    out.dzduv = pcfReceiverPlaneDzDuv(glm::vec3(d1), glm::vec3(d2));
+    return out;
+}
+
+}  // namespace pcf

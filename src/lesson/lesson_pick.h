@@ -1,0 +1,75 @@
+// lesson_pick.h: the pick belongs to the scene. A lesson pins its lookup to a point of the scene
+// (`point = [x, y, z]`, world units, on a surface the camera sees); every frame derives the pixel
+// that shows the point, jitters the camera by less than half a pixel so that the point lands on
+// that pixel's centre, and looks the point up on the CPU with the camera pass's own formulas
+// (shared/pcf_shading.h: pcfReceiverLookup). So the lookup (uv, ref, frac) is the same at every
+// frame size and mode, and the renderer shows exactly that lookup at the pixel
+// (SceneRenderer::setPick): the picture, the trace and the words agree on every slide.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <optional>
+
+#include "kernel/trace.h"
+#include "lesson/lesson.h"
+#include "scene/camera.h"
+#include "scene/scene.h"
+
+namespace pcf {
+
+// A point given in a lesson lies on the surface the camera sees in its direction when it is
+// within this distance of it (scene units): four decimals, as lessons write points, are closer.
+constexpr float POINT_TOLERANCE = 1e-3f;
+
+struct ScenePoint {
+    glm::vec3 posWs{0.0f};                 // on the surface
+    glm::vec3 normalWs{0.0f, 1.0f, 0.0f};  // unit, on the side the camera sees
+    int object = -1;                       // index into Scene::objects
+};
+
+// The surface point the camera sees towards pointWs when that is pointWs itself (within
+// POINT_TOLERANCE), snapped onto the surface; nullopt when the camera sees no surface there or
+// sees another one in front of it.
+std::optional<ScenePoint> seenPoint(const Scene& scene, glm::vec3 pointWs);
+
+// The surface point seen through `ndc` (x right, y up, in [-1, 1]) of the camera at this aspect,
+// rendered with jitterNdc added to every position (a click on a jittered frame); nullopt: none.
+std::optional<ScenePoint> pointAtNdc(const Scene& scene, glm::vec2 ndc, float aspect,
+                                     glm::vec2 jitterNdc);
+
+// The point a step pins: its settings' `point`, or the one seen through the middle of the view;
+// nullopt when that is on no surface.
+std::optional<ScenePoint> stepPoint(const Scene& scene, const LessonSettings& s);
+
+// Where a scene point shows in a frame.
+struct FramePick {
+    glm::ivec2 pixel{0, 0};     // the pixel holding it, origin top-left, y down
+    glm::vec2 jitterNdc{0.0f};  // added to every ndc position: the point lands on that centre
+    bool inFrame = false;       // false: it projects outside (pixel clamped, no jitter)
+};
+FramePick framePick(const Camera& camera, glm::vec3 posWs, glm::ivec2 frameSize);
+// The pick of a step's point in a frame; a frame-centred pick when it is on no surface.
+FramePick stepPick(const Scene& scene, const LessonSettings& s, glm::ivec2 frameSize);
+
+// What the camera pass looks up for the point (scene.frag's formulas) with the step's bias and
+// map, in the map fitted by shadowClipFromWorld.
+struct PinnedLookup {
+    glm::vec2 uv{0.0f};
+    float z0 = 0.0f;        // the depth before bias
+    float ref = 0.0f;       // the depth compared
+    glm::vec2 dzduv{0.0f};  // the receiver's plane in the map (Isidoro 2006), unclamped
+};
+PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
+                          const LessonSettings& s, const ScenePoint& point);
+
+// The angle between the point's normal and the direction to the light, degrees: 0 the light
+// straight above, 90 grazing, more: the point faces away from the light.
+float lightAngleDeg(const Scene& scene, const ScenePoint& point);
+
+// The trace of the point's lookup on `map` (the shadow map rendered with the step's settings and
+// shadowClipFromWorld): what the session traces at the point's pixel, without rendering the
+// camera pass (the pixel shows this very lookup: SceneRenderer::setPick).
+Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
+                  const LessonSettings& s, const ScenePoint& point);
+
+}  // namespace pcf

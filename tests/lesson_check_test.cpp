@@ -1,0 +1,84 @@
+// `pcfscope lesson check FILE`: every claim of every shipped lesson holds (exit 0); a false claim
+// is reported at its line (exit 1), also when it is false only after a key the step invites; a
+// bad claim is a bad file (exit 2). The claims' own meaning is lesson_claims_test.cpp's.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "run_command.h"
+
+namespace {
+
+class LessonCheck : public ::testing::Test {
+  protected:
+    void SetUp() override { mDir = testutil::makeTempDir("lesson-check"); }
+    void TearDown() override {
+        if (!HasFailure()) std::filesystem::remove_all(mDir);
+    }
+    // A one-step lesson on the pole scene, its point the ground in the middle of the view.
+    std::string write(const std::string& stepKeys) {
+        std::string path = (mDir / "claims.toml").string();
+        std::ofstream f(path);
+        f << "title = \"Claims\"\n"                  // 1
+             "scene = \"pole\"\n"                    // 2
+             "[settings]\n"                          // 3
+             "method = \"nearest\"\n"                // 4
+             "map_size = 256\n"                      // 5
+             "[[step]]\n"                            // 6
+             "title = \"One read\"\n"                // 7
+             "text = \"visibility {visibility}\"\n"  // 8
+          << stepKeys;                               // 9..
+        return path;
+    }
+    std::filesystem::path mDir;
+};
+
+TEST_F(LessonCheck, EveryShippedLessonHolds) {
+    for (const auto& e : std::filesystem::directory_iterator(PCFSCOPE_SOURCE_DIR "/lessons")) {
+        if (e.path().extension() != ".toml") continue;
+        testutil::CommandResult r = testutil::runPcfscope("lesson check " + e.path().string());
+        EXPECT_EQ(r.exitCode, 0) << e.path() << "\n" << r.out << r.err;
+        EXPECT_NE(r.out.find("claims hold over"), std::string::npos) << r.out;
+    }
+}
+
+TEST_F(LessonCheck, AFalseClaimFailsAtItsLine) {
+    std::string path = write(
+        "claims = [\"{taps} = 1\",\n"       // 9: holds
+        "  \"{taps} = 2\",\n"               // 10: false
+        "  \"{visibility} ~ 7 +- 0.5\"]\n"  // 11: false
+    );
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_EQ(testutil::lineCount(r.out), 2) << r.out;
+    EXPECT_NE(r.out.find(path + ":10: step 1 claim \"{taps} = 2\" fails: not 1 = 2"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find(path + ":11: step 1 claim"), std::string::npos) << r.out;
+}
+
+TEST_F(LessonCheck, AClaimAKeyInvitedByTheStepBreaksFails) {
+    // nearest reads 1 texel; the map doubled by "+" still 1, M moves to box2x2: 4 reads.
+    std::string path = write("claims = [\"{taps} = 1\"]\nkeys = [\"+\", \"M\"]\n");
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_EQ(testutil::lineCount(r.out), 1) << r.out;
+    EXPECT_NE(r.out.find(":9: step 1 claim \"{taps} = 1\" fails after key M"), std::string::npos)
+        << r.out;
+}
+
+TEST_F(LessonCheck, ABadClaimIsABadFile) {
+    std::string path = write("claims = [\"{taps} is 1\"]\n");
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find(path + ":9: step 1 claim \"{taps} is 1\""), std::string::npos) << r.err;
+    EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
+    path = write("keys = [\"X\"]\n");
+    r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find(":9: step 1 keys: unknown key 'X'"), std::string::npos) << r.err;
+}
+
+}  // namespace

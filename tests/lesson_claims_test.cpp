@@ -1,0 +1,117 @@
+// lesson_claims.h: claims parse, compute with placeholders and hold or fail on a trace, saying
+// why; bad claims are refused with the reason.
+#include "lesson/lesson_claims.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "kernel/methods.h"
+#include "kernel/shadow_map.h"
+
+namespace pcf {
+namespace {
+
+Trace bilinearTrace() {
+    return traceLookup(exampleShadowMap(), vec2(0.4625f, 0.3875f), 0.5f, 0.5f,
+                       makeParams(PCF_BILINEAR2X2, 1));
+}
+
+bool holds(const std::string& text, const Trace& t, std::string* why = nullptr,
+           bool onPlane = false) {
+    StepClaim c{text, 1, parseClaim(text)};
+    ClaimWorld world;
+    world.onPlane = onPlane;
+    return claimHolds(c, t, StepContext{}, world, why);
+}
+
+std::string bitsOf(const Trace& t) {
+    std::string bits;
+    for (const TapRecord& tap : t.taps) bits += tap.lit >= 0.5f ? '1' : '0';
+    return bits;
+}
+
+TEST(LessonClaims, ComparisonsComputeWithPlaceholders) {
+    Trace t = bilinearTrace();
+    ASSERT_EQ(t.taps.size(), 4u);
+    EXPECT_TRUE(holds("{taps} = 4", t));
+    std::string why;
+    EXPECT_FALSE(holds("{taps} = 5", t, &why));
+    EXPECT_EQ(why, "not 4 = 5");
+    // * before +, parentheses first, unary minus.
+    EXPECT_TRUE(holds("2 + 3 * {taps} = 14", t));
+    EXPECT_TRUE(holds("(2 + 3) * {taps} = 20", t));
+    EXPECT_TRUE(holds("-{taps} < 0", t));
+    EXPECT_TRUE(holds("{taps*0.5} = 2", t));
+    EXPECT_TRUE(holds("{lit_count} + {shadowed_count} = {taps}", t));
+    EXPECT_TRUE(holds("{taps} != 3", t));
+    EXPECT_TRUE(holds("{taps} >= 4", t));
+    EXPECT_FALSE(holds("{taps} > 4", t));
+    EXPECT_TRUE(holds("{taps} <= 4", t));
+    // Near: within the tolerance, and not beyond it.
+    float fx = t.pos.frac.x;
+    EXPECT_TRUE(holds("{frac.x} ~ " + std::to_string(fx + 0.0004f) + " +- 0.0005", t));
+    EXPECT_FALSE(holds("{frac.x} ~ " + std::to_string(fx + 0.001f) + " +- 0.0005", t));
+    // An index past the trace's reads has no value: the claim fails.
+    EXPECT_FALSE(holds("{tap[9].depth} < 2", t, &why));
+    EXPECT_NE(why.find("no value"), std::string::npos);
+}
+
+TEST(LessonClaims, KeywordsReadTheTrace) {
+    Trace t = bilinearTrace();
+    EXPECT_EQ(holds("lit", t), t.visibility == 1.0f);
+    EXPECT_EQ(holds("shadowed", t), t.visibility == 0.0f);
+    EXPECT_EQ(holds("penumbra", t), t.visibility > 0.0f && t.visibility < 1.0f);
+    EXPECT_TRUE(holds("bits " + bitsOf(t), t));
+    std::string flipped = bitsOf(t);
+    flipped[0] = flipped[0] == '1' ? '0' : '1';
+    EXPECT_FALSE(holds("bits " + flipped, t));
+    EXPECT_TRUE(holds("on the ground", t, nullptr, true));
+    EXPECT_FALSE(holds("on the ground", t, nullptr, false));
+    // Failing reads are those whose depth is below their ref; a made-up one that is not fails.
+    EXPECT_TRUE(holds("failing taps nearer", t));
+    Trace odd = t;
+    odd.taps[0].lit = 0.0f;
+    odd.taps[0].depth = odd.taps[0].ref + 0.5f;
+    EXPECT_FALSE(holds("failing taps nearer", odd));
+}
+
+TEST(LessonClaims, ChartClaimsAskTheChart) {
+    Trace t = bilinearTrace();
+    StepClaim c{"chart: gather3 faster than hw3", 1, parseClaim("chart: gather3 faster than hw3")};
+    EXPECT_TRUE(isChartClaim(c));
+    ClaimWorld world;
+    std::string asked;
+    world.chartLess = [&](const std::string& a, const std::string& b, const std::string& metric) {
+        asked = a + "<" + b + " " + metric;
+        return std::variant<bool, std::string>(false);
+    };
+    EXPECT_FALSE(claimHolds(c, t, StepContext{}, world));
+    EXPECT_EQ(asked, "gather3<hw3 time");
+    // "slower than" asks the other way round; accuracy reads the RMSE.
+    StepClaim s{"", 1, parseClaim("chart: tent3 less accurate than naive3")};
+    claimHolds(s, t, StepContext{}, world);
+    EXPECT_EQ(asked, "naive3<tent3 rmse");
+}
+
+TEST(LessonClaims, BadClaimsAreRefusedWithTheReason) {
+    auto problem = [](const std::string& text) {
+        try {
+            parseClaim(text);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(problem("{taps} is 4").find("no comparison"), std::string::npos);
+    EXPECT_NE(problem("{frac.z} = 1").find("unknown placeholder {frac.z}"), std::string::npos);
+    EXPECT_NE(problem("{method} = 1").find("a word, not a number"), std::string::npos);
+    EXPECT_NE(problem("{frac.x} ~ 0.2").find("+-"), std::string::npos);
+    EXPECT_NE(problem("({taps} = 4").find("no )"), std::string::npos);
+    EXPECT_NE(problem("taps = 4").find("braces"), std::string::npos);
+    EXPECT_NE(problem("bits 10a1").find("bits"), std::string::npos);
+    EXPECT_NE(problem("chart: gather3 beats hw3").find("chart claim"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pcf
