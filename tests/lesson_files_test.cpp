@@ -14,6 +14,7 @@
 #include "kernel/shadow_map.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
+#include "lesson/lesson_pick.h"
 #include "lesson/lesson_text.h"
 
 namespace pcf {
@@ -113,7 +114,12 @@ TEST(LessonFiles, EveryPlaceholderIsKnownAndFillsFromATrace) {
             int taps = static_cast<int>(trace.taps.size());
             int fetches = static_cast<int>(trace.fetches.size());
             EXPECT_FALSE(checkPlaceholders(step.text, taps, fetches));
-            std::string text = fillText(step.text, trace, makeStepContext(step));
+            // The context the viewer gives: the step's point's light angle too.
+            StepContext ctx = makeStepContext(step);
+            std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
+            ASSERT_TRUE(point);
+            ctx.lightAngleDeg = lightAngleDeg(lesson.scene, *point);
+            std::string text = fillText(step.text, trace, ctx);
             EXPECT_EQ(text.find("n/a"), std::string::npos) << text;
         }
     }
