@@ -67,8 +67,8 @@ TEST_F(ReferencePass, EveryMethodGivesTheKernelsVisibility) {
     gpu.setMap(map);
     gpu.setLookups(lookups, width);
     for (const PcfParams& prm : referenceCases()) {
-        std::string what = std::string(methodInfo(prm.method).name) + " N=" +
-                           std::to_string(prm.kernel) + " R=" + std::to_string(prm.radius);
+        std::string what = std::string(methodInfo(prm.method).name) +
+                           " N=" + std::to_string(prm.kernel) + " R=" + std::to_string(prm.radius);
         gpu.draw(prm, false);
         std::vector<float> kernel = gpu.read();
         gpu.drawReference(prm);

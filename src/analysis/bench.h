@@ -64,12 +64,12 @@ struct BenchOptions {
     // that leaves about CLEAN_SAMPLE_TARGET compared pixels.
     int cleanStride = 0;
     int gpuRepeats = 9;      // timing rounds: samples per point of each pass (median, IQR)
-    // Also time each point's reference pass (GpuLookup::drawReference: the method written the
-    // textbook way, no shared kernel) in the same rounds, right after its lookup pass.
-    bool reference = false;
     int cpuLookups = 32768;  // receiver pixels the CPU kernel is timed on, at most
     int cpuPasses = 3;       // passes over them (median)
     int cpuThreads = 0;      // threads sharing each pass (0 = all cores)
+    // Also time each point's reference pass (GpuLookup::drawReference: the method written the
+    // textbook way, no shared kernel) in the same rounds, right after its lookup pass.
+    bool reference = false;
     // Bias, depth format, culling (method, kernel, map size and frame size are the sweep's).
     // The renderer's defaults but for culling: the map holds BACK faces (front faces culled),
     // which keeps shadow acne, a bias problem, off the single-sided ground and the lit faces

@@ -111,15 +111,24 @@ struct ReferencePass {
 
 ReferencePass referencePass(const PcfParams& prm) {
     switch (prm.method) {
-        case PCF_NEAREST: return {"reference/nearest.frag", 1};
-        case PCF_BOX2X2: return {"reference/box.frag", 1};
-        case PCF_BILINEAR2X2: return {"reference/naive.frag", 1};
-        case PCF_HW2X2: return {"reference/hw.frag", 1};
-        case PCF_NAIVE: return {"reference/naive.frag", prm.kernel};
-        case PCF_GATHER: return {"reference/gather.frag", prm.kernel};
-        case PCF_HW: return {"reference/hw.frag", prm.kernel};
-        case PCF_TENT: return {"reference/tent.frag", prm.kernel};
-        case PCF_POISSON: return {"reference/poisson.frag", 1};
+        case PCF_NEAREST:
+            return {"reference/nearest.frag", 1};
+        case PCF_BOX2X2:
+            return {"reference/box.frag", 1};
+        case PCF_BILINEAR2X2:
+            return {"reference/naive.frag", 1};
+        case PCF_HW2X2:
+            return {"reference/hw.frag", 1};
+        case PCF_NAIVE:
+            return {"reference/naive.frag", prm.kernel};
+        case PCF_GATHER:
+            return {"reference/gather.frag", prm.kernel};
+        case PCF_HW:
+            return {"reference/hw.frag", prm.kernel};
+        case PCF_TENT:
+            return {"reference/tent.frag", prm.kernel};
+        case PCF_POISSON:
+            return {"reference/poisson.frag", 1};
     }
     throw std::invalid_argument("no reference pass for method id " + std::to_string(prm.method));
 }
