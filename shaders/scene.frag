@@ -7,7 +7,8 @@
 // defines too, one program each: llvmpipe runs both sides of every branch under a lane mask,
 // even when the condition is a uniform, so a branch on a uniform costs its whole body on every
 // fragment. As uniforms, the bias modes' branches here and in the kernel's taps made the camera
-// pass cost about a third more than the filter alone (README, "What the camera pass costs").
+// pass cost about a third more than the filter alone (docs/measurement.md, "What the passes
+// cost").
 // The kernel's own choices (weights, precision, fixed point, per-pixel rotation) are defines for
 // the same reason: render/pcf_programs.h, PcfVariant.
 // see: src/render/scene_renderer.cpp (uniforms, targets), src/kernel/pcf.h (CPU side)
@@ -106,7 +107,7 @@ void main() {
     // The albedo's factor is per object, done once on the CPU (uAlbedoEncoded), so a fragment
     // pays for one power, and that one is pcfGammaEncode (shared/pcf_shading.h): a sqrt and a
     // polynomial within 6e-6 of the pow it replaces. On llvmpipe the pow was most of what the
-    // camera pass cost beyond the filter (README, "What the camera pass costs").
+    // camera pass cost beyond the filter (docs/measurement.md, "What the passes cost").
     float light = AMBIENT + (1.0f - AMBIENT) * nDotL * visibility * cone;
     oColour = vec4(uAlbedoEncoded * pcfGammaEncode(light), 1.0f);
 #if PCF_ALL_TARGETS
