@@ -239,11 +239,23 @@ void checkStabilityView(const ChartRef& ref) {
 
 }  // namespace
 
+Focus stepFocus(const LessonStep& step) {
+    if (!step.chart.empty()) return Focus{.chart = true};
+    if (std::optional<Focus> f = parseFocus(step.focus)) return *f;
+    if (step.settings.method == PCF_NEAREST) return Focus{.scene = true, .neighbourhood = true};
+    return Focus{.neighbourhood = true, .formula = true};
+}
+
 Lesson loadLessonChecked(const std::string& path) {
     Lesson lesson = parseLessonFile(path);
     if (lesson.steps.empty()) throw UsageError(path + ": the lesson has no steps");
     for (size_t i = 0; i < lesson.steps.size(); ++i) {
         const LessonStep& step = lesson.steps[i];
+        if (!step.focus.empty() && !parseFocus(step.focus)) {
+            throw InputError(path, step.focusLine,
+                             "step " + std::to_string(i + 1) + " focus '" + step.focus +
+                                 "' is not one of: " + focusNames());
+        }
         if (step.chart.empty()) continue;
         try {
             ChartRef ref = chartRef(step.chart);
@@ -329,10 +341,17 @@ bool Session::sceneShown() const {
 }
 
 bool Session::clickFrame(glm::vec2 framePoint) {
-    const Rect& scene = mLayout.scene;
+    // The scene where this step's frame draws it: an inset maps back to the scene's pixels.
+    Rect scene = stepLayout().scene;
     if (!sceneShown() || !scene.contains(framePoint)) return false;
-    setPixel(glm::ivec2(framePoint - scene.position()));
+    float scale = mLayout.scene.w / std::max(1.0f, scene.w);
+    setPixel(glm::ivec2(glm::floor((framePoint - scene.position()) * scale)));
     return true;
+}
+
+InspectorLayout Session::stepLayout() const {
+    if (mLesson.steps.empty()) return mLayout;
+    return focusLayout(mLayout, stepFocus(mLesson.steps[static_cast<size_t>(mStep)]));
 }
 
 void Session::setFrameSize(glm::ivec2 frameSize) {
@@ -373,8 +392,8 @@ void uploadBottomUp(const OffscreenTarget& target, int w, int h, const std::vect
 
 }  // namespace
 
-void Session::blitThumbnail() {
-    Rect r = thumbnailRect(mLayout, mPresentation);
+void Session::blitThumbnail(const InspectorLayout& layout) {
+    Rect r = thumbnailRect(layout, mPresentation);
     int side = static_cast<int>(r.w);
     if (side <= 0 || mMap.width() <= 0) return;
     if (mThumbnailDirty || mThumbnail.width != side) {
@@ -575,13 +594,23 @@ void Session::composeInto(GLuint fbo) {
     mTarget = fbo;
     const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
     const std::string& chart = step.chart;
-    // A chart step in presentation mode gives the chart the inspector's room too.
-    InspectorLayout layout = chart.empty() ? mLayout : chartStepLayout(mLayout);
+    // The step's focus composes the frame (a chart step in presentation mode gives the chart the
+    // inspector's room too; a neighbourhood step gives it the inspector).
+    InspectorLayout layout = stepLayout();
     clearInspectorPanels(fbo, layout);
     // The scene goes top-left. GL rows count from the bottom, so its top edge is frame height.
     glm::ivec2 frame = mLayout.frameSize;
     glm::ivec2 scene(mLayout.scene.size());
-    if (chart.empty()) {
+    if (chart.empty() && layout.sceneInset) {
+        // Rendered at the full scene size, drawn scaled into the inset (filtered: a nearest
+        // downscale would alias the very edges the step is about).
+        const Rect& r = layout.scene;
+        int x0 = static_cast<int>(r.x), x1 = static_cast<int>(r.right());
+        int top = frame.y - static_cast<int>(r.y), bottom = frame.y - static_cast<int>(r.bottom());
+        glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
+        glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, x0,
+                               bottom, x1, top, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    } else if (chart.empty()) {
         glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
         glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, 0,
                                frame.y - scene.y, scene.x, frame.y, GL_COLOR_BUFFER_BIT,
@@ -601,20 +630,25 @@ void Session::composeInto(GLuint fbo) {
         plan = planFrame(layout, m);
     }
     mBoxes = plan.boxes;
+    mDrawnTexels = plan.drawnTexels;
+    mDrawnFetches = plan.drawnFetches;
+    mFormulaWhole = plan.formulaWhole;
     // blitChart above placed them with the chart it drew or kept.
     if (!chart.empty()) mBoxes.insert(mBoxes.end(), mChartBoxes.begin(), mChartBoxes.end());
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     mCanvas.begin(frame);
     drawPlan(mCanvas, plan.base);
     mCanvas.flush();
-    blitThumbnail();
+    blitThumbnail(layout);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     mCanvas.begin(frame);
     drawPlan(mCanvas, plan.top);
-    if (mHeatmap && chart.empty()) drawHeatLegend();
+    // (The heat map is drawn over a full-size scene only, not an inset.)
+    bool heat = mHeatmap && chart.empty() && !layout.sceneInset;
+    if (heat) drawHeatLegend();
     mCanvas.flush();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (!mHeatmap || !chart.empty()) mHeatValues.clear();
+    if (!heat) mHeatValues.clear();
 }
 
 // The heat map replaces the scene on its receivers (each pixel the colour of its pixels per
@@ -710,6 +744,7 @@ InspectorModel Session::model() const {
     m.grid = mGrid;
     m.textPage = mTextPage;
     m.highlightFetch = mLesson.steps[static_cast<size_t>(mStep)].highlightFetch - 1;
+    m.focus = stepFocus(mLesson.steps[static_cast<size_t>(mStep)]);
     return m;
 }
 
@@ -745,6 +780,28 @@ Json layoutJson(const std::vector<LayoutBox>& boxes) {
     return out;
 }
 
+// What this page of the frame drew against what the trace read: {"drawn": {"texels": [[i, j],
+// ...], "fetches": [k, ...], "formula_whole": bool}, "read": {"texels": [...], "fetches": [...]}}.
+// Texels: the distinct texels of the taps, in read order; fetches: indices into the trace's
+// fetches (its instructions: gathers, hardware taps, lookups, point reads).
+Json drawnAndReadJson(const Trace& tr, const std::vector<glm::ivec2>& texels,
+                      const std::vector<int>& fetches, bool formulaWhole) {
+    Json readTexels = Json::array();
+    std::vector<glm::ivec2> seen;
+    for (const TapRecord& t : tr.taps) {
+        if (std::find(seen.begin(), seen.end(), t.texel) != seen.end()) continue;
+        seen.push_back(t.texel);
+        readTexels.push_back(jsonPair(t.texel));
+    }
+    Json readFetches = Json::array();
+    for (size_t k = 0; k < tr.fetches.size(); ++k) readFetches.push_back(k);
+    Json drawnTexels = Json::array();
+    for (glm::ivec2 t : texels) drawnTexels.push_back(jsonPair(t));
+    return {
+        {"drawn", {{"texels", drawnTexels}, {"fetches", fetches}, {"formula_whole", formulaWhole}}},
+        {"read", {{"texels", readTexels}, {"fetches", readFetches}}}};
+}
+
 }  // namespace
 
 std::string Session::stepJson() const {
@@ -772,6 +829,10 @@ std::string Session::stepJson() const {
               {"text_page", mTextPage + 1},
               {"text_pages", mTextPages},
               {"layout", layoutJson(mBoxes)}};
+    if (!mLesson.steps.empty()) {
+        j["focus"] = focusName(stepFocus(mLesson.steps[static_cast<size_t>(mStep)]));
+    }
+    if (mTrace) j.update(drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole));
     return jsonDump(j);
 }
 

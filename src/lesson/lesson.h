@@ -140,6 +140,12 @@ struct LessonStep {
     // `highlight = 1`: the fetch instruction (1-based, in issue order) this step's text talks
     // about, drawn in the highlight colour in the inspector; 0: none. Not inherited.
     int highlightFetch = 0;
+    // `focus = "neighbourhood"` (in the step, or at the lesson's top for every step): what the
+    // step's words are about, which decides the frame's composition (overlay/inspector.h: Focus,
+    // whose names the app checks at focusLine). Empty: derived from the method and the step
+    // (app/session.h: stepFocus).
+    std::string focus;
+    int focusLine = 0;
 };
 
 // What a lesson may hold; more is refused with one line naming the limit. The lessons that ship
