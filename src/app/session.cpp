@@ -242,7 +242,10 @@ void checkStabilityView(const ChartRef& ref) {
 Focus stepFocus(const LessonStep& step) {
     if (!step.chart.empty()) return Focus{.chart = true};
     if (std::optional<Focus> f = parseFocus(step.focus)) return *f;
-    if (step.settings.method == PCF_NEAREST) return Focus{.scene = true, .neighbourhood = true};
+    // A heat map is drawn over the scene, and a nearest lookup's hard edge is seen there.
+    if (step.settings.heatmap || step.settings.method == PCF_NEAREST) {
+        return Focus{.scene = true, .neighbourhood = true};
+    }
     return Focus{.neighbourhood = true, .formula = true};
 }
 
@@ -832,7 +835,21 @@ std::string Session::stepJson() const {
     if (!mLesson.steps.empty()) {
         j["focus"] = focusName(stepFocus(mLesson.steps[static_cast<size_t>(mStep)]));
     }
-    if (mTrace) j.update(drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole));
+    if (mTrace) {
+        j.update(drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole));
+        // Where the cells are on the frame (the page with the cells): texel (i, j)'s cell is
+        // texelCellRect of this view and rect.
+        InspectorLayout layout = stepLayout();
+        if (!layout.inspector.empty() && !mDrawnTexels.empty()) {
+            InspectorModel m = model();
+            Neighbourhood view = neighbourhoodView(layout, m);
+            Rect r = neighbourhoodArea(layout, m);
+            j["drawn"]["cells"] = {{"origin", jsonPair(view.origin)},
+                                   {"size", jsonPair(view.size)},
+                                   {"rect", Json::array({jsonNumber(r.x), jsonNumber(r.y),
+                                                         jsonNumber(r.w), jsonNumber(r.h)})}};
+        }
+    }
     return jsonDump(j);
 }
 

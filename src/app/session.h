@@ -55,7 +55,8 @@ std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size,
 std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLayout& layout);
 
 // What a step is about (inspector.h: Focus): its `focus` key, else derived: a chart step's chart;
-// a nearest step's scene and texel (hard shadows are seen on the scene); any filter's
+// a nearest or heat-map step's scene and texel (hard shadows and the heat map are seen on the
+// scene); any other filter's
 // neighbourhood and formula (its words walk through the texels it reads). A chart step's focus is
 // its chart whatever the key says. The key's names are checked by loadLessonChecked.
 Focus stepFocus(const LessonStep& step);

@@ -22,9 +22,8 @@ constexpr float INDEX_LANE_PAD_PX = 12.0f;     // the "i=" lane: a label line pl
 constexpr float FRACTION_LANE_PAD_PX = 16.0f;  // the fy lane: "fy 0.00" plus this
 constexpr float MIN_GRID_SIDE_PX = 40.0f;      // the cells' square, however small the panel
 constexpr float BELOW_MIN_LINES = 4.0f;        // room kept under the cells for the legend and the
-constexpr float BELOW_MIN_SHARE = 0.22f;   // formula: these many lines, or this share of the panel
-constexpr float BELOW_APART_LINES = 7.0f;  // the notes and the legend, the formula apart: lines
-constexpr float GROWN_PER_CELL = 0.12f;    // big cells: numbers up to this share of the cell,
+constexpr float BELOW_MIN_SHARE = 0.22f;  // formula: these many lines, or this share of the panel
+constexpr float GROWN_PER_CELL = 0.12f;   // big cells: numbers up to this share of the cell,
 constexpr float GROWN_MAX_PER_NUMBER = 1.8f;  // and at most this times the frame's number size
 constexpr float INDEX_TOP_GAP_PX = 4.0f;      // "i=" labels below the lane's top
 constexpr float INDEX_RIGHT_GAP_PX = 6.0f;    // "j=" labels left of the cells
@@ -111,7 +110,7 @@ void placeGrid(Grid& g, const Rect& p, const Lanes& ln, float margin, float top,
 // The cells under the header: their size, the window of the neighbourhood they show, the lanes
 // around them. `top`: the header's bottom.
 Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float margin,
-            float width, float top, bool formulaApart) {
+            float width, float top, float reserve) {
     Grid g;
     const Rect& p = l.inspector;
     g.full = neighbourhoodOf(tr);
@@ -122,9 +121,8 @@ Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float
     Lanes ln = lanesOf(g, t, width);
     // The grid takes at most this share of the panel's height: the legend and the formula need
     // the rest.
-    // With the formula on a page of its own, only the notes and the legend.
-    float below = formulaApart
-                      ? BELOW_APART_LINES * lineHeightOf(t.label)
+    float below = reserve >= 0.0f
+                      ? reserve
                       : std::max(BELOW_MIN_LINES * lineHeightOf(t.number), BELOW_MIN_SHARE * p.h);
     float maxH = p.bottom() - margin - top - ln.laneH - ln.laneBottomH - below;
     float side = std::max(MIN_GRID_SIDE_PX, std::min(width - ln.labelW - ln.fyW - ln.insetW, maxH));
@@ -171,14 +169,14 @@ glm::vec2 viewPoint(const Grid& g, glm::vec2 texelPos) {
 }  // namespace
 
 PanelLayout panelLayout(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, int,
-                        bool formulaApart) {
+                        float reserve) {
     PanelLayout pl;
     const Rect& p = l.inspector;
     pl.margin = inspectorMargin(l);
     pl.width = p.w - 2 * pl.margin;
     pl.header = headerOf(tr, t, pl.width);
     float top = p.y + pl.margin + pl.header.height + t.label * 0.5f;
-    pl.grid = gridOf(l, tr, t, pl.margin, pl.width, top, formulaApart);
+    pl.grid = gridOf(l, tr, t, pl.margin, pl.width, top, reserve);
     return pl;
 }
 
@@ -277,9 +275,16 @@ void planGridLines(Planner& pl, const InspectorLayout& l, const Grid& g, const T
     pl.op([lines, line](Canvas& c) {
         for (const auto& [a, b] : lines) c.line(a, b, line, Colour{0, 0, 0, 0.9f});
     });
-    for (int i = 0; i < g.view.size.x; ++i) {
+    // Column labels as wide as the cells allow: "i=117", else "117", else every other one.
+    int last = g.view.origin.x + g.view.size.x - 1;
+    auto fitsCell = [&](const std::string& s) {
+        return measureText(FontFace::Mono, t.label, s).x + INDEX_GAP_PX <= g.cell;
+    };
+    bool prefix = fitsCell("i=" + std::to_string(last));
+    int every = prefix || fitsCell(std::to_string(last)) ? 1 : 2;
+    for (int i = 0; i < g.view.size.x; i += every) {
         pl.text({area.x + (i + 0.5f) * g.cell, g.laneTop.y + INDEX_TOP_GAP_PX},
-                "i=" + std::to_string(g.view.origin.x + i),
+                (prefix ? "i=" : "") + std::to_string(g.view.origin.x + i),
                 {FontFace::Mono, t.label, TEXT_DIM, TextAlign::Center}, BoxKind::Label, panel,
                 "texel-index");
     }

@@ -107,7 +107,7 @@ float planNotes(Planner& pl, const InspectorLayout& l, int hidden, const TypeSiz
 
 namespace {
 
-enum SwatchShape { SQUARE, DOT, RING, OUTLINE, BAR, TICK };
+enum SwatchShape { SQUARE, DOT, RING, OUTLINE, BAR, TICK, CIRCLE };
 
 struct LegendEntry {
     Colour colour;
@@ -126,7 +126,7 @@ std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeed
     if (need.fraction) entries.push_back({POINT, "fx, fy: lookup point - base texel centre", BAR});
     if (need.hw8) entries.push_back({HW8_POINT, "8-bit position (1/256 texel)", OUTLINE});
     if (need.dots) entries.push_back({ACCENT, "each lookup", DOT});
-    if (need.disk) entries.push_back({ACCENT, "the disk, radius R", RING});
+    if (need.disk) entries.push_back({ACCENT, "the disk, radius R", CIRCLE});
     if (need.rings) entries.push_back({ACCENT, "hardware tap", RING});
     if (need.gathers) entries.push_back({GATHER, "one gather (2 x 2)", OUTLINE});
     if (need.highlight) entries.push_back({HIGHLIGHT, "the fetch the text talks about", OUTLINE});
@@ -151,6 +151,9 @@ void planSwatch(Planner& pl, Rect sw, SwatchShape shape, Colour col, float lg) {
                 break;
             case OUTLINE:
                 c.strokeRect(sw, 3.0f, col);
+                break;
+            case CIRCLE:  // a thin circle, as the Poisson disk's
+                c.ring(cc, lg * 0.45f, 1.5f, col);
                 break;
             case BAR:
                 c.fillRect({sw.x, sw.y + sw.h * 0.6f, sw.w, sw.h * 0.3f}, col);
@@ -283,21 +286,33 @@ InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m,
     // The cells' page in a scratch plan: where the legend ends says whether the formula fits
     // under it whole. When it does not, the cells are planned again with the formula's room
     // (it goes on a page of its own).
+    int hidden = 0;
     auto planCellsPage = [&](const PanelLayout& pan) {
         out.layout = pan;
         out.cells = FramePlan{};
         Planner cp{out.cells, onTop};
         LegendNeeds need;
-        int hidden = 0;
+        hidden = 0;
         planCells(cp, l, m, pan.grid, t, need, hidden);
         float y = planNotes(cp, l, hidden, t, margin, pan.grid.bottom + 2.0f);
         out.cellsBottom = planLegend(cp, l, m, need, t, margin, y + 4.0f);
     };
+    float width = p.w - 2 * margin;
+    auto formulaFits = [&]() {
+        Rect under{p.x + margin, out.cellsBottom, width, p.bottom() - margin - out.cellsBottom};
+        return under.h >= lineHeightOf(t.numberFloor) && fitFormula(tr, t, under).pages == 1;
+    };
     planCellsPage(panelLayout(l, tr, t, m.highlightFetch));
-    Rect under{p.x + margin, out.cellsBottom, p.w - 2 * margin,
-               p.bottom() - margin - out.cellsBottom};
-    out.together = under.h >= lineHeightOf(t.numberFloor) && fitFormula(tr, t, under).pages == 1;
-    if (!out.together) planCellsPage(panelLayout(l, tr, t, m.highlightFetch, true));
+    out.together = formulaFits();
+    if (out.together) return out;
+    // Cells a little smaller, the formula's own height kept under them, as long as every cell
+    // keeps its numbers (a 2 x 2 has room to spare).
+    FittedText whole = fitFormula(tr, t, {0, 0, width, 1e6f});
+    float formulaH = static_cast<float>(whole.lines.size()) * whole.lineHeight;
+    float legendH = BELOW_APART_LINES * lineHeightOf(t.label);
+    planCellsPage(panelLayout(l, tr, t, m.highlightFetch, formulaH + legendH));
+    out.together = hidden == 0 && formulaFits();
+    if (!out.together) planCellsPage(panelLayout(l, tr, t, m.highlightFetch, legendH));
     return out;
 }
 

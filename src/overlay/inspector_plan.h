@@ -183,10 +183,13 @@ struct PanelLayout {
     Grid grid;
 };
 float inspectorMargin(const InspectorLayout& l);
-// formulaApart: the formula goes on a page of its own (planInspector), so the cells may take
-// the room it would have had.
+// reserve: the height kept under the cells for the notes, the legend and the formula; < 0: a
+// share of the panel (inspectorPanel picks it: the formula's own height, or none of it when the
+// formula goes on a page of its own).
 PanelLayout panelLayout(const InspectorLayout& l, const Trace& tr, const TypeSizes& t,
-                        int highlight = -1, bool formulaApart = false);
+                        int highlight = -1, float reserve = -1.0f);
+// The notes and the legend under the cells, in label lines, when the formula is not there.
+constexpr float BELOW_APART_LINES = 7.0f;
 
 // The inspector panel's cells as the frame draws them: planned (into `cells`, a scratch plan)
 // with the formula under them when it fits there whole (`together`), else with the formula's

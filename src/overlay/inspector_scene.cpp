@@ -155,7 +155,8 @@ void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     Rect scene = l.scene;
     pl.op([=](Canvas& c) { c.pushClip(scene); });
     if (!l.sceneInset) planTexelGrid(pl, l, m);
-    float ringR = std::max(7.0f, 9.0f * l.scale);
+    // Wide enough that what lies at the pixel (9.3's light gap at the pole's foot) shows inside.
+    float ringR = std::max(11.0f, 14.0f * l.scale);
     pl.op([=](Canvas& c) {
         c.ring(centre, ringR, lineWidth, Colour{0, 0, 0, 0.8f});
         c.ring(centre, ringR, lineWidth * 0.5f, POINT);
