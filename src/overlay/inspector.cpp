@@ -291,4 +291,54 @@ void drawInspectorTop(Canvas& c, const InspectorLayout& l, const InspectorModel&
     drawPlan(c, planFrame(l, m).top);
 }
 
+// The neighbourhood the cells show, and where (inspectorPanel decides it, as planFrame does).
+namespace {
+
+InspectorModel modelOf(const Trace& tr, bool presentation, int highlight) {
+    InspectorModel m;
+    m.trace = tr;
+    m.presentation = presentation;
+    m.highlightFetch = highlight;
+    return m;
+}
+
+}  // namespace
+
+Neighbourhood neighbourhoodView(const InspectorLayout& l, const InspectorModel& m) {
+    return inspectorPanel(l, m, typeSizes(l)).layout.grid.view;
+}
+
+Rect neighbourhoodArea(const InspectorLayout& l, const InspectorModel& m) {
+    return inspectorPanel(l, m, typeSizes(l)).layout.grid.area;
+}
+
+Neighbourhood neighbourhoodView(const InspectorLayout& l, const Trace& tr, int highlight) {
+    return neighbourhoodView(l, modelOf(tr, l.presentation, highlight));
+}
+
+Rect neighbourhoodArea(const InspectorLayout& l, const Trace& tr, bool presentation,
+                       int highlight) {
+    return neighbourhoodArea(l, modelOf(tr, presentation, highlight));
+}
+
+Neighbourhood neighbourhoodOf(const Trace& tr) {
+    glm::ivec2 lo = tr.pos.base;
+    glm::ivec2 hi = tr.pos.base + glm::ivec2(1);
+    if (!tr.weights.values.empty()) {
+        lo = glm::min(lo, tr.weights.origin);
+        hi = glm::max(hi, tr.weights.origin + tr.weights.size - glm::ivec2(1));
+    }
+    glm::ivec2 point(glm::floor(tr.uv * glm::vec2(tr.mapSize)));
+    lo = glm::min(lo, point);
+    hi = glm::max(hi, point);
+    return {lo, hi - lo + glm::ivec2(1)};
+}
+
+Rect texelCellRect(const Neighbourhood& n, const Rect& area, glm::ivec2 texel) {
+    // The area is exactly as wide as the view's columns.
+    float cell = area.w / static_cast<float>(std::max(1, n.size.x));
+    return {area.x + static_cast<float>(texel.x - n.origin.x) * cell,
+            area.y + static_cast<float>(texel.y - n.origin.y) * cell, cell, cell};
+}
+
 }  // namespace pcf
