@@ -56,8 +56,8 @@ Json drawnAndReadJson(const Trace& tr, const std::vector<glm::ivec2>& texels,
 Json cellsJson(const Neighbourhood& view, const Rect& r) {
     return {{"origin", jsonPair(view.origin)},
             {"size", jsonPair(view.size)},
-            {"rect", Json::array({jsonNumber(r.x), jsonNumber(r.y), jsonNumber(r.w),
-                                  jsonNumber(r.h)})}};
+            {"rect",
+             Json::array({jsonNumber(r.x), jsonNumber(r.y), jsonNumber(r.w), jsonNumber(r.h)})}};
 }
 
 }  // namespace pcf
