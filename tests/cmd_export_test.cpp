@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <thread>
 
 #include "image_read.h"
@@ -103,6 +104,19 @@ TEST_F(ExportTest, WritesAFrameAndATracePerStep) {
         EXPECT_EQ(panels, 4);
         EXPECT_GT(numbers, 4);  // at least a bit per cell and the visibility
         EXPECT_EQ(stepText, 1);
+        // Its focus (nearest: the scene and the texel; a filter: the neighbourhood and the
+        // formula), and every texel and fetch the trace read among those drawn.
+        EXPECT_EQ(j["focus"].string, s == 1 ? "scene+neighbourhood" : "neighbourhood+formula");
+        std::set<std::pair<double, double>> drawn;
+        for (const jsonlite::Value& d : j["drawn"]["texels"].array) {
+            drawn.insert({d[0].number, d[1].number});
+        }
+        ASSERT_FALSE(j["read"]["texels"].array.empty());
+        for (const jsonlite::Value& rt : j["read"]["texels"].array) {
+            EXPECT_TRUE(drawn.count({rt[0].number, rt[1].number})) << "step " << s;
+        }
+        EXPECT_EQ(j["drawn"]["fetches"].array.size(), j["read"]["fetches"].array.size());
+        EXPECT_EQ(j["read"]["fetches"].array.size(), tr["fetch_list"].array.size());
     }
     jsonlite::Value gather = jsonlite::parse(readFile(path("frames/test-step03.json")));
     EXPECT_EQ(gather["trace"]["method"].string, "pcf-gather");
@@ -119,22 +133,18 @@ TEST_F(ExportTest, CellsAreTintedByTheirBits) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     jsonlite::Value j = jsonlite::parse(readFile(path("frames/test-step02.json")));
     std::vector<unsigned char> px = readImageBytes(path("frames/test-step02.png"), 4);
-    // Rebuild the layout the exporter used from the trace it wrote.
-    Trace tr;
+    // The cells where the sidecar says the frame drew them.
     const jsonlite::Value& t = j["trace"];
-    tr.mapSize = {static_cast<int>(t["map_size"][0].number),
-                  static_cast<int>(t["map_size"][1].number)};
-    tr.uv = {static_cast<float>(t["uv"][0].number), static_cast<float>(t["uv"][1].number)};
-    tr.pos.base = {static_cast<int>(t["base"][0].number), static_cast<int>(t["base"][1].number)};
-    tr.weights.origin = {static_cast<int>(t["weights"]["origin"][0].number),
-                         static_cast<int>(t["weights"]["origin"][1].number)};
-    tr.weights.size = {static_cast<int>(t["weights"]["size"][0].number),
-                       static_cast<int>(t["weights"]["size"][1].number)};
-    tr.weights.values.assign(static_cast<size_t>(tr.weights.size.x * tr.weights.size.y), 0.25f);
-    Neighbourhood n = neighbourhoodOf(tr);
+    const jsonlite::Value& cells = j["drawn"]["cells"];
+    ASSERT_EQ(cells.kind, jsonlite::Value::OBJECT);
+    Neighbourhood n{
+        {static_cast<int>(cells["origin"][0].number), static_cast<int>(cells["origin"][1].number)},
+        {static_cast<int>(cells["size"][0].number), static_cast<int>(cells["size"][1].number)}};
     EXPECT_EQ(n.size, glm::ivec2(2, 2));
-    InspectorLayout layout = inspectorLayout({1600, 900}, false);
-    Rect area = neighbourhoodArea(layout, tr, false);
+    EXPECT_EQ(j["focus"].string, "neighbourhood+formula");
+    Rect area{
+        static_cast<float>(cells["rect"][0].number), static_cast<float>(cells["rect"][1].number),
+        static_cast<float>(cells["rect"][2].number), static_cast<float>(cells["rect"][3].number)};
     int litCells = 0;
     int shadowedCells = 0;
     for (const jsonlite::Value& tap : t["taps"].array) {

@@ -10,14 +10,17 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
 #include "app/session.h"
+#include "base/input_error.h"
 #include "base/input_file.h"
 #include "draw/text_layout.h"
 #include "kernel/trace.h"
@@ -92,6 +95,33 @@ std::vector<std::string> problems(const FramePlan& plan, const InspectorLayout& 
     return out;
 }
 
+// What a step's pages left out of what its trace read (empty: nothing): a texel without its
+// cell, a fetch (gather, hardware tap, lookup, point read) without its mark, a formula that
+// is never drawn whole. The pages' `drawn` lists (inspector.h: FramePlan) are what the export's
+// JSON sidecar reports.
+std::vector<std::string> cropped(const std::vector<FramePlan>& pages, const Trace& tr) {
+    std::vector<std::string> out;
+    std::set<std::pair<int, int>> texels;
+    std::set<int> fetches;
+    bool formula = false;
+    for (const FramePlan& p : pages) {
+        for (glm::ivec2 t : p.drawnTexels) texels.insert({t.x, t.y});
+        fetches.insert(p.drawnFetches.begin(), p.drawnFetches.end());
+        formula |= p.formulaWhole;
+    }
+    for (const TapRecord& t : tr.taps) {
+        if (!texels.count({t.texel.x, t.texel.y})) {
+            out.push_back("texel (" + std::to_string(t.texel.x) + ", " + std::to_string(t.texel.y) +
+                          ") read but not drawn");
+        }
+    }
+    for (int k = 0; k < static_cast<int>(tr.fetches.size()); ++k) {
+        if (!fetches.count(k)) out.push_back("fetch " + std::to_string(k + 1) + " not drawn");
+    }
+    if (!formula) out.push_back("the formula is never drawn whole");
+    return out;
+}
+
 class Layout : public ::testing::Test {
   protected:
     static void SetUpTestSuite() { sContext = createHeadlessContext(); }
@@ -103,7 +133,7 @@ std::unique_ptr<GlContext> Layout::sContext;
 TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveFloors) {
     auto start = std::chrono::steady_clock::now();
     int plans = 0;
-    int pagedPresentation = 0, depthLost = 0, pointDepthLost = 0, pointMoved = 0;
+    int pagedPresentation = 0, depthLost = 0, pointDepthLost = 0, pointMoved = 0, split = 0;
     // Rendered once per step in the scene of a 1280x720 frame, the size a projector gets.
     glm::ivec2 renderScene(inspectorLayout({1280, 720}, false).scene.size());
     std::vector<std::string> lessons;
@@ -118,6 +148,9 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
         for (size_t k = 0; k < lesson.steps.size(); ++k) {
             const LessonStep& step = lesson.steps[k];
             const LessonSettings& s = step.settings;
+            // The step's own state: its map fit (grid shift, snap) and its bias, as the
+            // session renders and traces it.
+            renderer.setShadowClipFromWorld(lessonShadowFit(lesson.scene, s, s.mapSize));
             renderer.render(renderSettingsFor(s, renderScene));
             ShadowMap map = renderer.readShadowMap();
             glm::ivec2 px = stepPick(lesson.scene, s, renderScene).pixel;
@@ -129,12 +162,19 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
             m.map = &map;
             m.showScene = step.chart.empty();
             m.highlightFetch = step.highlightFetch - 1;
+            m.focus = stepFocus(step);
             m.status =
                 "pcf-gather N=3   bias constant 0.002   cull back   map 1024 32f   scene "
                 "1152x648";
             if (ls[3] == 1.0f) {
-                m.trace = traceLookup(map, vec2(ls[0], ls[1]), ls[2] + s.depthBias(), ls[2],
-                                      s.pcfParams(vec2(ls[0], ls[1]), map.width()));
+                // The pinned point's own lookup, as the session traces it (its pixel shows
+                // this very lookup: SceneRenderer::setPick), with the step's bias and fit.
+                std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
+                m.trace = point ? tracePinned(map, lesson.scene,
+                                              lessonShadowFit(lesson.scene, s, s.mapSize), s,
+                                              *point)
+                                : traceLookup(map, vec2(ls[0], ls[1]), ls[2] + s.depthBias(),
+                                              ls[2], s.pcfParams(vec2(ls[0], ls[1]), map.width()));
                 StepContext ctx = makeStepContext(step, px);
                 m.stepText = fillText(step.text, *m.trace, ctx);
             } else {
@@ -146,9 +186,9 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                     m.presentation = presentation;
                     m.sceneSize = glm::ivec2(l.scene.size());
                     m.pixel = stepPick(lesson.scene, s, m.sceneSize).pixel;
-                    // A chart step lays out as the session composes it: the chart's own texts
-                    // are boxes of the frame's layout, checked like the rest.
-                    if (!step.chart.empty()) l = chartStepLayout(l);
+                    // A step lays out as the session composes it, for its focus; a chart
+                    // step's chart texts are boxes of the frame's layout, checked like the rest.
+                    l = focusLayout(l, m.focus);
                     std::vector<LayoutBox> chartBoxes = stepChartBoxes(step, l);
                     auto withChart = [&](FramePlan p) {
                         p.boxes.insert(p.boxes.end(), chartBoxes.begin(), chartBoxes.end());
@@ -159,7 +199,9 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                     std::string where = lesson.name + " step " + std::to_string(k + 1) + " at " +
                                         std::to_string(size.x) + "x" + std::to_string(size.y) +
                                         (presentation ? " presentation" : "");
-                    // Every page of the text, not only the first.
+                    // Every page of the step, not only the first; over its pages, everything
+                    // the trace read is drawn and the formula once whole.
+                    std::vector<FramePlan> pages;
                     for (int page = 0; page < plan.textPages; ++page) {
                         FramePlan p = plan;
                         if (page > 0) {
@@ -170,6 +212,13 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         for (const std::string& problem : problems(p, l)) {
                             ADD_FAILURE() << where << " page " << page + 1 << ": " << problem;
                         }
+                        pages.push_back(std::move(p));
+                    }
+                    if (m.trace && !l.inspector.empty()) {
+                        for (const std::string& problem : cropped(pages, *m.trace)) {
+                            ADD_FAILURE() << where << ": " << problem;
+                        }
+                        split += plan.textPages > 1;
                     }
                     if (presentation && plan.textPages > 1) ++pagedPresentation;
                     // The cells and the step text are there at every size.
@@ -187,8 +236,8 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         // The lookup point sits beside its cell's numbers, never in place of
                         // one: that cell keeps its depth (1600x900 13.1 lost it).
                         const Trace& tr = *m.trace;
-                        Neighbourhood view = neighbourhoodView(l, tr, m.highlightFetch);
-                        Rect area = neighbourhoodArea(l, tr, presentation, m.highlightFetch);
+                        Neighbourhood view = neighbourhoodView(l, m);
+                        Rect area = neighbourhoodArea(l, m);
                         glm::ivec2 point(glm::floor(tr.uv * glm::vec2(tr.mapSize)));
                         Rect cell = texelCellRect(view, area, point);
                         bool pointShown = point.x >= view.origin.x && point.y >= view.origin.y &&
@@ -198,7 +247,7 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         for (const LayoutBox& b : plan.boxes) {
                             depthThere |= b.role == "cell-depth" && inside(b.rect, cell);
                         }
-                        if (pointShown && !depthThere) {
+                        if (pointShown && !depthThere && cellDepths > 0) {
                             ++pointDepthLost;
                             std::printf("  %s: the lookup point's cell shows no depth\n",
                                         where.c_str());
@@ -245,7 +294,12 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                                          t.y < tr.mapSize.y;
                             }
                         }
-                        if (cellDepths < inMap) ++depthLost;
+                        // (Cells too small for any depth at this size show their bits.)
+                        if (cellDepths > 0 && cellDepths < inMap) {
+                            ++depthLost;
+                            std::printf("  %s: %d of %d cells show their depth\n", where.c_str(),
+                                        cellDepths, inMap);
+                        }
                     }
                 }
             }
@@ -255,8 +309,8 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(
         "layout: %d plans checked in %.1f s; %d presentation frames page their text; "
-        "%d frames drop a cell's depth for other marks\n",
-        plans, seconds, pagedPresentation, depthLost);
+        "%d frames drop a cell's depth for other marks; %d steps' frames split into pages\n",
+        plans, seconds, pagedPresentation, depthLost, split);
     // No cell loses a number to a mark: the lookup point's cell shows its depth, and so does
     // every cell in the map (a point mark that crowds a cell moves into a lane at its edge).
     EXPECT_EQ(pointDepthLost, 0);
@@ -393,21 +447,25 @@ TEST_F(Layout, ClicksOnAChartPickNoScenePixel) {
         }
         ASSERT_GE(chartStep, 0);
         ASSERT_GE(sceneStep, 0);
-        const Rect& scene = session.layout().scene;
+        session.goToStep(sceneStep);
+        // Where the scene step draws its scene (an inset when its focus is the neighbourhood:
+        // a click there picks the scene pixel under it, scaled back).
+        Rect scene = session.stepLayout().scene;
         glm::vec2 at = scene.position() + glm::vec2(7.0f, 5.0f);
+        glm::ivec2 picked(glm::floor(glm::vec2(7.0f, 5.0f) * session.layout().scene.w / scene.w));
         session.goToStep(chartStep);
         EXPECT_FALSE(session.sceneShown());
         glm::ivec2 before = session.pixel();
-        ASSERT_NE(before, glm::ivec2(7, 5));
+        ASSERT_NE(before, picked);
         EXPECT_FALSE(session.clickFrame(at));
         EXPECT_EQ(session.pixel(), before) << presentation;
         session.goToStep(sceneStep);
         EXPECT_TRUE(session.sceneShown());
         EXPECT_TRUE(session.clickFrame(at));
-        EXPECT_EQ(session.pixel(), glm::ivec2(7, 5)) << presentation;
+        EXPECT_EQ(session.pixel(), picked) << presentation;
         // Off the scene (the inspector's side): nothing.
         EXPECT_FALSE(session.clickFrame({scene.right() + 5.0f, scene.y + 5.0f}));
-        EXPECT_EQ(session.pixel(), glm::ivec2(7, 5));
+        EXPECT_EQ(session.pixel(), picked);
     }
 }
 
@@ -638,6 +696,65 @@ TEST_F(Layout, GridHiddenWhenTexelsAreSmallOrTurnedOff) {
     m.lightSpace = &big;
     m.grid = false;
     EXPECT_FALSE(planFrame(l, m).gridShown);
+}
+
+// A focus names one or two parts; anything else is refused (loadLessonChecked turns that into
+// one line at the key's file:line).
+TEST(Focus, ParsesOneOrTwoKnownParts) {
+    ASSERT_TRUE(parseFocus("neighbourhood"));
+    EXPECT_EQ(*parseFocus("neighbourhood"), Focus{.neighbourhood = true});
+    EXPECT_EQ(*parseFocus("scene+formula"), (Focus{.scene = true, .formula = true}));
+    EXPECT_EQ(focusName(*parseFocus("formula+neighbourhood")), "neighbourhood+formula");
+    EXPECT_FALSE(parseFocus(""));
+    EXPECT_FALSE(parseFocus("neighborhood"));
+    EXPECT_FALSE(parseFocus("scene+scene"));
+    EXPECT_FALSE(parseFocus("scene+formula+chart"));
+    EXPECT_FALSE(parseFocus("scene+"));
+}
+
+TEST(Focus, UnknownFocusInALessonNamesItsLine) {
+    std::string dir = testing::TempDir() + "/focus_lesson";
+    std::filesystem::create_directories(dir);
+    std::string path = dir + "/bad.toml";
+    std::ofstream(path) << "title = \"T\"\nscene = \"box-on-plane\"\n[[step]]\ntitle = \"S\"\n"
+                           "text = \"x\"\nfocus = \"texels\"\n";
+    try {
+        loadLessonChecked(path);
+        ADD_FAILURE() << "accepted focus = \"texels\"";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.toml:6"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("texels"), std::string::npos) << e.what();
+    }
+    // Derived where the lesson says nothing: a filter's step is about its neighbourhood.
+    Lesson lesson = parseLessonFile(PCFSCOPE_SOURCE_DIR "/lessons/05-gather-weights.toml");
+    EXPECT_EQ(stepFocus(lesson.steps[0]), (Focus{.neighbourhood = true, .formula = true}));
+    Lesson acne = parseLessonFile(PCFSCOPE_SOURCE_DIR "/lessons/08-acne-and-bias.toml");
+    EXPECT_TRUE(stepFocus(acne.steps[3]).scene);
+}
+
+// A neighbourhood focus gives the inspector the room and the scene an inset of the same 16:9,
+// inside the frame and clear of the other panels; a scene focus keeps the frame as it was.
+TEST(Focus, NeighbourhoodFocusGivesTheInspectorTheRoom) {
+    for (glm::ivec2 size : SIZES) {
+        for (bool presentation : {false, true}) {
+            InspectorLayout base = inspectorLayout(size, presentation);
+            InspectorLayout n = focusLayout(base, Focus{.neighbourhood = true});
+            // (Presentation's inspector already has half the width; normal mode's 40%.)
+            float gain = presentation ? 1.15f : 1.3f;
+            EXPECT_GT(n.inspector.w * n.inspector.h, gain * base.inspector.w * base.inspector.h);
+            EXPECT_TRUE(n.sceneInset);
+            EXPECT_LT(n.scene.w, base.scene.w);
+            EXPECT_NEAR(n.scene.w / n.scene.h, 16.0f / 9.0f, 0.02f);
+            Rect frame{0, 0, static_cast<float>(size.x), n.status.y};
+            EXPECT_TRUE(inside(n.scene, frame) && inside(n.steps, frame));
+            EXPECT_TRUE(n.scene.intersect(n.inspector).empty());
+            EXPECT_TRUE(n.steps.intersect(n.inspector).empty());
+            EXPECT_TRUE(n.scene.intersect(n.steps).empty());
+            InspectorLayout s = focusLayout(base, Focus{.scene = true, .neighbourhood = true});
+            EXPECT_EQ(s.inspector.w, base.inspector.w);
+            EXPECT_FALSE(s.sceneInset);
+        }
+    }
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "analysis/stability_chart.h"
 #include "analysis/stability_report.h"
 #include "app/cli_util.h"
+#include "app/frame_json.h"
 #include "app/step_words.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
@@ -214,11 +215,26 @@ void checkStabilityView(const ChartRef& ref) {
 
 }  // namespace
 
+Focus stepFocus(const LessonStep& step) {
+    if (!step.chart.empty()) return Focus{.chart = true};
+    if (std::optional<Focus> f = parseFocus(step.focus)) return *f;
+    // A heat map is drawn over the scene, and a nearest lookup's hard edge is seen there.
+    if (step.settings.heatmap || step.settings.method == PCF_NEAREST) {
+        return Focus{.scene = true, .neighbourhood = true};
+    }
+    return Focus{.neighbourhood = true, .formula = true};
+}
+
 Lesson loadLessonChecked(const std::string& path) {
     Lesson lesson = parseLessonFile(path);
     if (lesson.steps.empty()) throw UsageError(path + ": the lesson has no steps");
     for (size_t i = 0; i < lesson.steps.size(); ++i) {
         const LessonStep& step = lesson.steps[i];
+        if (!step.focus.empty() && !parseFocus(step.focus)) {
+            throw InputError(path, step.focusLine,
+                             "step " + std::to_string(i + 1) + " focus '" + step.focus +
+                                 "' is not one of: " + focusNames());
+        }
         if (step.chart.empty()) continue;
         try {
             ChartRef ref = chartRef(step.chart);
@@ -332,10 +348,17 @@ bool Session::sceneShown() const {
 }
 
 bool Session::clickFrame(glm::vec2 framePoint) {
-    const Rect& scene = mLayout.scene;
+    // The scene where this step's frame draws it: an inset maps back to the scene's pixels.
+    Rect scene = stepLayout().scene;
     if (!sceneShown() || !scene.contains(framePoint)) return false;
-    setPixel(glm::ivec2(framePoint - scene.position()));
+    float scale = mLayout.scene.w / std::max(1.0f, scene.w);
+    setPixel(glm::ivec2(glm::floor((framePoint - scene.position()) * scale)));
     return true;
+}
+
+InspectorLayout Session::stepLayout() const {
+    if (mLesson.steps.empty()) return mLayout;
+    return focusLayout(mLayout, stepFocus(mLesson.steps[static_cast<size_t>(mStep)]));
 }
 
 void Session::setFrameSize(glm::ivec2 frameSize) {
@@ -378,8 +401,8 @@ void uploadBottomUp(const OffscreenTarget& target, int w, int h, const std::vect
 
 }  // namespace
 
-void Session::blitThumbnail() {
-    Rect r = thumbnailRect(mLayout, mPresentation);
+void Session::blitThumbnail(const InspectorLayout& layout) {
+    Rect r = thumbnailRect(layout, mPresentation);
     int side = static_cast<int>(r.w);
     if (side <= 0 || mMap.width() <= 0) return;
     if (mThumbnailDirty || mThumbnail.width != side) {
@@ -583,13 +606,23 @@ void Session::composeInto(GLuint fbo) {
     mTarget = fbo;
     const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
     const std::string& chart = step.chart;
-    // A chart step in presentation mode gives the chart the inspector's room too.
-    InspectorLayout layout = chart.empty() ? mLayout : chartStepLayout(mLayout);
+    // The step's focus composes the frame (a chart step in presentation mode gives the chart the
+    // inspector's room too; a neighbourhood step gives it the inspector).
+    InspectorLayout layout = stepLayout();
     clearInspectorPanels(fbo, layout);
     // The scene goes top-left. GL rows count from the bottom, so its top edge is frame height.
     glm::ivec2 frame = mLayout.frameSize;
     glm::ivec2 scene(mLayout.scene.size());
-    if (chart.empty()) {
+    if (chart.empty() && layout.sceneInset) {
+        // Rendered at the full scene size, drawn scaled into the inset (filtered: a nearest
+        // downscale would alias the very edges the step is about).
+        const Rect& r = layout.scene;
+        int x0 = static_cast<int>(r.x), x1 = static_cast<int>(r.right());
+        int top = frame.y - static_cast<int>(r.y), bottom = frame.y - static_cast<int>(r.bottom());
+        glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
+        glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, x0,
+                               bottom, x1, top, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    } else if (chart.empty()) {
         glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
         glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, 0,
                                frame.y - scene.y, scene.x, frame.y, GL_COLOR_BUFFER_BIT,
@@ -609,20 +642,25 @@ void Session::composeInto(GLuint fbo) {
         plan = planFrame(layout, m);
     }
     mBoxes = plan.boxes;
+    mDrawnTexels = plan.drawnTexels;
+    mDrawnFetches = plan.drawnFetches;
+    mFormulaWhole = plan.formulaWhole;
     // blitChart above placed them with the chart it drew or kept.
     if (!chart.empty()) mBoxes.insert(mBoxes.end(), mChartBoxes.begin(), mChartBoxes.end());
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     mCanvas.begin(frame);
     drawPlan(mCanvas, plan.base);
     mCanvas.flush();
-    blitThumbnail();
+    blitThumbnail(layout);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     mCanvas.begin(frame);
     drawPlan(mCanvas, plan.top);
-    if (mHeatmap && chart.empty()) drawHeatLegend();
+    // (The heat map is drawn over a full-size scene only, not an inset.)
+    bool heat = mHeatmap && chart.empty() && !layout.sceneInset;
+    if (heat) drawHeatLegend();
     mCanvas.flush();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (!mHeatmap || !chart.empty()) mHeatValues.clear();
+    if (!heat) mHeatValues.clear();
 }
 
 // The heat map replaces the scene on its receivers (each pixel the colour of its pixels per
@@ -718,6 +756,7 @@ InspectorModel Session::model() const {
     m.grid = mGrid;
     m.textPage = mTextPage;
     m.highlightFetch = mLesson.steps[static_cast<size_t>(mStep)].highlightFetch - 1;
+    m.focus = stepFocus(mLesson.steps[static_cast<size_t>(mStep)]);
     return m;
 }
 
@@ -725,35 +764,6 @@ std::vector<uint8_t> Session::readFrame() const {
     return readPixelsRgba8(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT0, mFrame.width,
                            mFrame.height);
 }
-
-namespace {
-
-// A setting as the status line and the step text print it (formatNumber: up to 4 decimals), as a
-// JSON number: 0.005 stays "0.005", not the float's "0.00499999989".
-Json settingNumber(float v) { return Json::parse(formatNumber(v)); }
-
-// The frame's layout (planFrame's boxes) as a JSON array: [{"kind", "panel", "role",
-// "rect": [x, y, w, h], "font_px", "shortened"}, ...]; font_px and shortened only for what
-// draws text.
-Json layoutJson(const std::vector<LayoutBox>& boxes) {
-    Json out = Json::array();
-    for (const LayoutBox& b : boxes) {
-        Json box = {{"kind", boxKindName(b.kind)},
-                    {"panel", b.panel},
-                    {"role", b.role},
-                    {"rect", Json::array({jsonNumber(b.rect.x), jsonNumber(b.rect.y),
-                                          jsonNumber(b.rect.w), jsonNumber(b.rect.h)})}};
-        if (b.kind == BoxKind::Text || b.kind == BoxKind::Number || b.kind == BoxKind::Label ||
-            b.fontPx > 0.0f) {
-            box["font_px"] = jsonNumber(b.fontPx);
-            box["shortened"] = b.shortened;
-        }
-        out.push_back(std::move(box));
-    }
-    return out;
-}
-
-}  // namespace
 
 std::string Session::stepJson() const {
     const LessonSettings& s = mSettings;
@@ -784,6 +794,17 @@ std::string Session::stepJson() const {
         {"text_page", mTextPage + 1},
         {"text_pages", mTextPages},
         {"layout", layoutJson(mBoxes)}};
+    if (!mLesson.steps.empty()) j["focus"] = focusName(stepFocus(mLesson.steps[mStep]));
+    if (mTrace) {
+        j.update(drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole));
+        // Where the cells are on the frame (texelCellRect of this view and rect gives a cell).
+        InspectorLayout layout = stepLayout();
+        if (!layout.inspector.empty() && !mDrawnTexels.empty()) {
+            InspectorModel m = model();
+            j["drawn"]["cells"] =
+                cellsJson(neighbourhoodView(layout, m), neighbourhoodArea(layout, m));
+        }
+    }
     return jsonDump(j);
 }
 

@@ -55,6 +55,13 @@ std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size,
 // for a bad chart file.
 std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLayout& layout);
 
+// What a step is about (inspector.h: Focus): its `focus` key, else derived: a chart step's chart;
+// a nearest or heat-map step's scene and texel (hard shadows and the heat map are seen on the
+// scene); any other filter's
+// neighbourhood and formula (its words walk through the texels it reads). A chart step's focus is
+// its chart whatever the key says. The key's names are checked by loadLessonChecked.
+Focus stepFocus(const LessonStep& step);
+
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
 // The shadow map's fit (light clip from world) for a lesson's settings: the scene's own fit with
 // its texel grid slid by `origin_shift` and snapped with `snap` (scene/light.h:
@@ -102,6 +109,8 @@ class Session {
     void setFrameSize(glm::ivec2 frameSize);
     glm::ivec2 frameSize() const { return mLayout.frameSize; }
     const InspectorLayout& layout() const { return mLayout; }
+    // The layout the current step's frame is composed in (focusLayout of layout()).
+    InspectorLayout stepLayout() const;
     bool presentation() const { return mPresentation; }
     void setPresentation(bool on);
     bool help() const { return mHelp; }
@@ -155,7 +164,7 @@ class Session {
     // Derives the pixel and the camera's jitter that show mPoint in this frame.
     void repick();
     void traceAtPixel();
-    void blitThumbnail();
+    void blitThumbnail(const InspectorLayout& layout);
     // A step with a chart shows it where the scene goes (lesson.h: LessonStep::chart).
     void blitChart(const InspectorLayout& layout);
     void blitHeatmap();
@@ -180,6 +189,9 @@ class Session {
     int mTextPage = 0;
     int mTextPages = 1;
     std::vector<LayoutBox> mBoxes;
+    std::vector<glm::ivec2> mDrawnTexels;  // what the last composed frame drew (FramePlan)
+    std::vector<int> mDrawnFetches;
+    bool mFormulaWhole = false;
     double mFrameTimeMs = -1.0;
     InspectorLayout mLayout;
 

@@ -117,9 +117,16 @@ class LessonParser {
             const toml::table& table = *steps.get(i)->as_table();
             std::string what = "step " + std::to_string(i + 1);
             checkKeys(table, what,
-                      {"title", "text", "chart", "chart_highlight", "highlight", "claims", "keys"});
+                      {"title", "text", "chart", "chart_highlight", "highlight", "claims", "keys",
+                       "focus"});
             applySettings(table, what, state, lines);
             lesson.steps.push_back(readStep(table, what, state, lines));
+            // The step's own focus, else the lesson's (checked by the app: overlay/inspector.h).
+            const toml::table& owner = table.get("focus") ? table : root;
+            if (const toml::node* f = owner.get("focus")) {
+                lesson.steps.back().focus = requireText(owner, "focus", what, owner);
+                lesson.steps.back().focusLine = lineOf(*f);
+            }
         }
         return lesson;
     }
@@ -256,7 +263,7 @@ class LessonParser {
         for (auto&& [key, value] : root) {
             std::string_view k = key.str();
             if (k == "title" || k == "scene" || k == "settings" || k == "step" || k == "camera" ||
-                k == "light" || k == "object") {
+                k == "light" || k == "object" || k == "focus") {
                 continue;
             }
             std::string problem = "lesson has unknown key '" + std::string(k) + "'";

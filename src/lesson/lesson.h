@@ -166,6 +166,12 @@ struct LessonStep {
     // claims must hold after each of them too. Not inherited.
     std::vector<std::string> keys;
     int keysLine = 0;
+    // `focus = "neighbourhood"` (in the step, or at the lesson's top for every step): what the
+    // step's words are about, which decides the frame's composition (overlay/inspector.h: Focus,
+    // whose names the app checks at focusLine). Empty: derived from the method and the step
+    // (app/session.h: stepFocus).
+    std::string focus;
+    int focusLine = 0;
 };
 
 // What a lesson may hold; more is refused with one line naming the limit. The lessons that ship

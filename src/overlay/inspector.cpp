@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <optional>
 
 #include "overlay/inspector_plan.h"
 
@@ -139,6 +140,74 @@ InspectorLayout inspectorLayout(glm::ivec2 frameSize, bool presentation) {
     return l;
 }
 
+namespace {
+
+// The parts of a focus, in the order names list them.
+struct FocusPart {
+    const char* name;
+    bool Focus::*flag;
+};
+constexpr FocusPart FOCUS_PARTS[] = {{"scene", &Focus::scene},
+                                     {"neighbourhood", &Focus::neighbourhood},
+                                     {"formula", &Focus::formula},
+                                     {"chart", &Focus::chart}};
+
+}  // namespace
+
+std::optional<Focus> parseFocus(std::string_view name) {
+    Focus f;
+    int parts = 0;
+    while (true) {
+        size_t plus = name.find('+');
+        std::string_view part = name.substr(0, plus);
+        bool known = false;
+        for (const FocusPart& p : FOCUS_PARTS) {
+            if (part == p.name && !(f.*p.flag)) {
+                f.*p.flag = true;
+                known = true;
+            }
+        }
+        if (!known || ++parts > 2) return std::nullopt;
+        if (plus == std::string_view::npos) break;
+        name = name.substr(plus + 1);
+    }
+    return f;
+}
+
+std::string focusName(const Focus& focus) {
+    std::string out;
+    for (const FocusPart& p : FOCUS_PARTS) {
+        if (!(focus.*p.flag)) continue;
+        if (!out.empty()) out.push_back('+');
+        out.append(p.name);
+    }
+    return out;
+}
+
+const char* focusNames() {
+    return "scene, neighbourhood, formula, chart, or two joined by '+' "
+           "(\"neighbourhood+formula\")";
+}
+
+InspectorLayout focusLayout(const InspectorLayout& l, const Focus& focus) {
+    if (focus.chart) return chartStepLayout(l);
+    if (focus.scene || !(focus.neighbourhood || focus.formula) || l.status.y <= 0.0f) return l;
+    InspectorLayout c = l;
+    float w = static_cast<float>(l.frameSize.x);
+    float bodyH = l.status.y;
+    // The inspector: the right of the frame, full height. The left column: the scene as an
+    // inset (16:9, its width, at most a third of the height), the step text under it.
+    float leftW = std::round(w * (l.presentation ? 0.38f : 0.42f));
+    float insetH = std::round(std::min(leftW * 9.0f / 16.0f, bodyH / 3.0f));
+    float insetW = std::round(insetH * 16.0f / 9.0f);
+    c.inspector = {leftW, 0.0f, w - leftW, bodyH};
+    c.scene = {std::round((leftW - insetW) * 0.5f), 0.0f, insetW, insetH};
+    c.steps = {0.0f, insetH, leftW, bodyH - insetH};
+    c.sceneInset = true;
+    c.thumbnail = {};
+    return c;
+}
+
 InspectorLayout chartStepLayout(const InspectorLayout& l) {
     if (!l.presentation || l.status.y <= 0.0f) return l;
     InspectorLayout c = l;
@@ -220,6 +289,56 @@ void clearInspectorPanels(GLuint framebuffer, const InspectorLayout& l) {
 
 void drawInspectorTop(Canvas& c, const InspectorLayout& l, const InspectorModel& m) {
     drawPlan(c, planFrame(l, m).top);
+}
+
+// The neighbourhood the cells show, and where (inspectorPanel decides it, as planFrame does).
+namespace {
+
+InspectorModel modelOf(const Trace& tr, bool presentation, int highlight) {
+    InspectorModel m;
+    m.trace = tr;
+    m.presentation = presentation;
+    m.highlightFetch = highlight;
+    return m;
+}
+
+}  // namespace
+
+Neighbourhood neighbourhoodView(const InspectorLayout& l, const InspectorModel& m) {
+    return inspectorPanel(l, m, typeSizes(l)).layout.grid.view;
+}
+
+Rect neighbourhoodArea(const InspectorLayout& l, const InspectorModel& m) {
+    return inspectorPanel(l, m, typeSizes(l)).layout.grid.area;
+}
+
+Neighbourhood neighbourhoodView(const InspectorLayout& l, const Trace& tr, int highlight) {
+    return neighbourhoodView(l, modelOf(tr, l.presentation, highlight));
+}
+
+Rect neighbourhoodArea(const InspectorLayout& l, const Trace& tr, bool presentation,
+                       int highlight) {
+    return neighbourhoodArea(l, modelOf(tr, presentation, highlight));
+}
+
+Neighbourhood neighbourhoodOf(const Trace& tr) {
+    glm::ivec2 lo = tr.pos.base;
+    glm::ivec2 hi = tr.pos.base + glm::ivec2(1);
+    if (!tr.weights.values.empty()) {
+        lo = glm::min(lo, tr.weights.origin);
+        hi = glm::max(hi, tr.weights.origin + tr.weights.size - glm::ivec2(1));
+    }
+    glm::ivec2 point(glm::floor(tr.uv * glm::vec2(tr.mapSize)));
+    lo = glm::min(lo, point);
+    hi = glm::max(hi, point);
+    return {lo, hi - lo + glm::ivec2(1)};
+}
+
+Rect texelCellRect(const Neighbourhood& n, const Rect& area, glm::ivec2 texel) {
+    // The area is exactly as wide as the view's columns.
+    float cell = area.w / static_cast<float>(std::max(1, n.size.x));
+    return {area.x + static_cast<float>(texel.x - n.origin.x) * cell,
+            area.y + static_cast<float>(texel.y - n.origin.y) * cell, cell, cell};
 }
 
 }  // namespace pcf

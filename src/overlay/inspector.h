@@ -21,6 +21,19 @@
 
 namespace pcf {
 
+// What a step is about (DESIGN.md 8, lesson key `focus`): the parts of the frame its words refer
+// to. The frame gives them the room and shows them whole; the rest shrinks (focusLayout). Names:
+// "scene", "neighbourhood", "formula", "chart", or two joined by '+' ("neighbourhood+formula").
+struct Focus {
+    bool scene = false, neighbourhood = false, formula = false, chart = false;
+    bool operator==(const Focus&) const = default;
+};
+// A focus from its name; nullopt for an unknown part, more than two, or none.
+std::optional<Focus> parseFocus(std::string_view name);
+std::string focusName(const Focus& focus);
+// The names parseFocus knows, for an error message.
+const char* focusNames();
+
 // Where things go in a frame of a given size. The scene keeps 16:9 (the frame lessons pick their
 // pixels in), top-left; the step text sits under it; the inspector fills the right. Presentation
 // mode gives the scene less of the width so that the step text and the cells can be large.
@@ -35,8 +48,16 @@ struct InspectorLayout {
     Rect thumbnail;      // the map's thumbnail (inside steps); empty: none (presentation)
     float scale = 1.0f;  // 1 at 1600 x 900; fonts and lines scale with it
     bool presentation = false;
+    bool sceneInset = false;  // the scene is drawn scaled into `scene` (focusLayout)
 };
 InspectorLayout inspectorLayout(glm::ivec2 frameSize, bool presentation);
+// The frame composed for a step's focus. A scene focus (or none) keeps `l`. A focus on the
+// neighbourhood or the formula without the scene gives the inspector the room: it takes the
+// frame's right 62% (presentation) or 58% over the status line, and the scene shrinks to an inset
+// at the top of the left column, above the step text. The scene is still rendered at l.scene's
+// size (the pick and its trace do not depend on the focus) and drawn scaled into the inset.
+// A chart focus: chartStepLayout.
+InspectorLayout focusLayout(const InspectorLayout& l, const Focus& focus);
 // The layout of a lesson step that shows a chart instead of the scene. Presentation mode gives
 // the chart the scene's and the inspector's width (the inspector's cells would trace a pixel of a
 // scene not shown) and the step panel the full width under it, so that the chart's labels can be
@@ -78,16 +99,17 @@ struct InspectorModel {
     // A region of the scene's light-space target (u, v, ref, mask per pixel, rows top-down)
     // around the pixel, for the texel grid drawn on the receiver. May be null.
     const std::vector<float>* lightSpace = nullptr;
-    glm::ivec2 lightSpaceOrigin{0, 0};  // the region's top-left pixel in the scene
-    glm::ivec2 lightSpaceSize{0, 0};    // the region's size
-    glm::ivec2 sceneSize{0, 0};         // size of the rendered scene (== layout.scene size)
-    std::string status;                 // method, kernel, bias, map, frame time
-    bool presentation = false;          // large type, thick lines, high contrast
-    bool help = false;                  // the key list over everything
-    bool showScene = true;              // false: a chart fills the scene's place (no overlay)
-    bool grid = true;                   // the texel grid on the receiver (G, lesson `grid`)
-    int textPage = 0;                   // the page of the step text shown (when it pages)
-    int highlightFetch = -1;            // the fetch (0-based) the step talks about; -1: none
+    glm::ivec2 lightSpaceOrigin{0, 0};      // the region's top-left pixel in the scene
+    glm::ivec2 lightSpaceSize{0, 0};        // the region's size
+    glm::ivec2 sceneSize{0, 0};             // size of the rendered scene (== layout.scene size)
+    std::string status;                     // method, kernel, bias, map, frame time
+    bool presentation = false;              // large type, thick lines, high contrast
+    bool help = false;                      // the key list over everything
+    bool showScene = true;                  // false: a chart fills the scene's place (no overlay)
+    bool grid = true;                       // the texel grid on the receiver (G, lesson `grid`)
+    int textPage = 0;                       // the page of the step text shown (when it pages)
+    int highlightFetch = -1;                // the fetch (0-based) the step talks about; -1: none
+    Focus focus{true, true, false, false};  // what the step is about (inspector.h: Focus)
 };
 
 // The frame measured and placed, nothing drawn yet: a pure function of the layout and the model
@@ -97,8 +119,18 @@ struct FramePlan {
     std::vector<LayoutBox> boxes;
     std::vector<std::function<void(Canvas&)>> base;
     std::vector<std::function<void(Canvas&)>> top;
-    int textPages = 1;       // pages of the current step's text at this size
+    // Pages of the step at this size: its frames. The step text pages when it does not fit;
+    // the inspector splits into the cells with their fetches (page 1) and the formula with every
+    // term (page 2) when both do not fit one panel at the floors. Page k shows the text's page
+    // min(k, last) and the inspector's part min(k, last).
+    int textPages = 1;
     bool gridShown = false;  // the texel grid was drawn on the scene (not hidden or off)
+    // What this page drew of what the trace read (the JSON sidecar's `drawn`): the texels whose
+    // cells are drawn, the fetches (indices into Trace::fetches) whose marks are drawn, and
+    // whether the formula is drawn whole, every term (not the short form).
+    std::vector<glm::ivec2> drawnTexels;
+    std::vector<int> drawnFetches;
+    bool formulaWhole = false;
 };
 FramePlan planFrame(const InspectorLayout& layout, const InspectorModel& model);
 void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& ops);
@@ -135,13 +167,16 @@ constexpr int gridRadius(glm::ivec2 sceneSize) {
 Rect thumbnailRect(const InspectorLayout& layout, bool presentation);
 std::vector<uint8_t> thumbnailImage(const ShadowMap& map, int side);  // RGBA8, rows top-down
 
-// The texels the view shows (a window of neighbourhoodOf around the lookup point when the whole
-// would make cells too small for numbers of the frame's size), and where it sits in the panel.
-// highlight: the model's highlightFetch (a window keeps that fetch's texels in view).
+// The texels the view shows (all of neighbourhoodOf: never a window of it, so that every texel
+// and fetch the trace read is drawn), and where it sits in the panel.
 Neighbourhood neighbourhoodView(const InspectorLayout& layout, const Trace& trace,
                                 int highlight = -1);
 Rect neighbourhoodArea(const InspectorLayout& layout, const Trace& trace, bool presentation,
                        int highlight = -1);
+// The same for a whole model (its legend decides whether the formula fits under the cells, and
+// so the cells' size): what planFrame draws for `m`.
+Neighbourhood neighbourhoodView(const InspectorLayout& layout, const InspectorModel& m);
+Rect neighbourhoodArea(const InspectorLayout& layout, const InspectorModel& m);
 
 // The rect of texel (i, j) in the view of `n` inside `area` (rows j down, as stored).
 Rect texelCellRect(const Neighbourhood& n, const Rect& area, glm::ivec2 texel);

@@ -3,9 +3,7 @@
 // the fetches' marks, the lookup point, the fx and fy brackets).
 #include "overlay/inspector_plan.h"
 
-namespace pcf {
-
-namespace inspector_detail {
+namespace pcf::inspector_detail {
 
 namespace {
 
@@ -84,35 +82,6 @@ Lanes lanesOf(const Grid& g, const TypeSizes& t, float width) {
     return ln;
 }
 
-// The window of `cells` texels a side that the view shows of the full neighbourhood: around the
-// lookup point, keeping the base 2 x 2 and the highlighted fetch's texels in view.
-Neighbourhood windowOf(const Grid& g, const Trace& tr, int cells, int highlight) {
-    Neighbourhood view = g.full;
-    glm::vec2 pt = tr.uv * glm::vec2(tr.mapSize);
-    for (int a = 0; a < 2; ++a) {
-        int k = std::min(cells, g.full.size[a]);
-        int lo = g.full.origin[a];
-        int hi = g.full.origin[a] + g.full.size[a] - k;
-        int want = static_cast<int>(std::floor(pt[a])) - (k - 1) / 2;
-        // Keep the base 2 x 2 in view.
-        want = std::min(want, tr.pos.base[a]);
-        want = std::max(want, tr.pos.base[a] + 2 - k);
-        if (highlight >= 0 && highlight < static_cast<int>(tr.fetches.size())) {
-            // The 2 x 2 the highlighted fetch reads (one texel for a point read).
-            const FetchRecord& f = tr.fetches[static_cast<size_t>(highlight)];
-            float q = f.uv[a] * static_cast<float>(tr.mapSize[a]);
-            bool point = f.kind == PCF_FETCH_POINT;
-            int first = static_cast<int>(std::floor(point ? q : q - 0.5f));
-            int last = point ? first : first + 1;
-            want = std::min(want, first);
-            want = std::max(want, last + 1 - k);
-        }
-        view.origin[a] = std::clamp(want, lo, std::max(lo, hi));
-        view.size[a] = k;
-    }
-    return view;
-}
-
 // The cells', the lanes' and the inset's rectangles, once the view and the cell size are known.
 void placeGrid(Grid& g, const Rect& p, const Lanes& ln, float margin, float top, float side) {
     float gridW = g.cell * g.view.size.x;
@@ -139,7 +108,7 @@ void placeGrid(Grid& g, const Rect& p, const Lanes& ln, float margin, float top,
 // The cells under the header: their size, the window of the neighbourhood they show, the lanes
 // around them. `top`: the header's bottom.
 Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float margin,
-            float width, float top, int highlight) {
+            float width, float top, float reserve) {
     Grid g;
     const Rect& p = l.inspector;
     g.full = neighbourhoodOf(tr);
@@ -150,25 +119,24 @@ Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float
     Lanes ln = lanesOf(g, t, width);
     // The grid takes at most this share of the panel's height: the legend and the formula need
     // the rest.
-    float maxH = p.bottom() - margin - top - ln.laneH - ln.laneBottomH -
-                 std::max(BELOW_MIN_LINES * lineHeightOf(t.number), BELOW_MIN_SHARE * p.h);
+    float below = reserve >= 0.0f
+                      ? reserve
+                      : std::max(BELOW_MIN_LINES * lineHeightOf(t.number), BELOW_MIN_SHARE * p.h);
+    float maxH = p.bottom() - margin - top - ln.laneH - ln.laneBottomH - below;
     float side = std::max(MIN_GRID_SIDE_PX, std::min(width - ln.labelW - ln.fyW - ln.insetW, maxH));
     int cellsFull = std::max(g.full.size.x, g.full.size.y);
-    // Whole neighbourhood at the largest number size that fits, down to the floor; else a window
-    // of it at the starting size.
+    // The whole neighbourhood, always (a step's words talk about every texel it reads), at the
+    // largest number size that fits, down to the floor. Smaller cells than that keep their bit
+    // and fill and drop the numbers they have no room for (planCell); the formula, on its own
+    // page when need be, lists every term.
     float number = t.number;
     while (cellFor(number, g.pad) * cellsFull > side && number > t.numberFloor) {
         number = stepDown(number, t.numberFloor);
     }
-    int cells = cellsFull;
-    if (cellFor(number, g.pad) * cellsFull > side) {
-        number = t.number;
-        cells = std::clamp(static_cast<int>(side / cellFor(number, g.pad)), 2, cellsFull);
-    }
     g.number = number;
     g.bit = bitFor(number);
     g.bar = barFor(number);
-    g.view = cells < cellsFull ? windowOf(g, tr, cells, highlight) : g.full;
+    g.view = g.full;
     int viewCells = std::max(g.view.size.x, g.view.size.y);
     g.cell = std::floor(side / static_cast<float>(viewCells));
     // Big cells (few texels) get bigger numbers, as long as the block still fits beside marks.
@@ -198,15 +166,15 @@ glm::vec2 viewPoint(const Grid& g, glm::vec2 texelPos) {
 
 }  // namespace
 
-PanelLayout panelLayout(const InspectorLayout& l, const Trace& tr, const TypeSizes& t,
-                        int highlight) {
+PanelLayout panelLayout(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, int,
+                        float reserve) {
     PanelLayout pl;
     const Rect& p = l.inspector;
     pl.margin = inspectorMargin(l);
     pl.width = p.w - 2 * pl.margin;
     pl.header = headerOf(tr, t, pl.width);
     float top = p.y + pl.margin + pl.header.height + t.label * 0.5f;
-    pl.grid = gridOf(l, tr, t, pl.margin, pl.width, top, highlight);
+    pl.grid = gridOf(l, tr, t, pl.margin, pl.width, top, reserve);
     return pl;
 }
 
@@ -305,9 +273,16 @@ void planGridLines(Planner& pl, const InspectorLayout& l, const Grid& g, const T
     pl.op([lines, line](Canvas& c) {
         for (const auto& [a, b] : lines) c.line(a, b, line, Colour{0, 0, 0, 0.9f});
     });
-    for (int i = 0; i < g.view.size.x; ++i) {
+    // Column labels as wide as the cells allow: "i=117", else "117", else every other one.
+    int last = g.view.origin.x + g.view.size.x - 1;
+    auto fitsCell = [&](const std::string& s) {
+        return measureText(FontFace::Mono, t.label, s).x + INDEX_GAP_PX <= g.cell;
+    };
+    bool prefix = fitsCell("i=" + std::to_string(last));
+    int every = prefix || fitsCell(std::to_string(last)) ? 1 : 2;
+    for (int i = 0; i < g.view.size.x; i += every) {
         pl.text({area.x + (i + 0.5f) * g.cell, g.laneTop.y + INDEX_TOP_GAP_PX},
-                "i=" + std::to_string(g.view.origin.x + i),
+                (prefix ? "i=" : "") + std::to_string(g.view.origin.x + i),
                 {FontFace::Mono, t.label, TEXT_DIM, TextAlign::Center}, BoxKind::Label, panel,
                 "texel-index");
     }
@@ -343,7 +318,9 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
             Rect a = texelCellRect(g.view, area, corner);
             Rect b = texelCellRect(g.view, area, corner + glm::ivec2(1));
             Rect block = Rect{a.x, a.y, b.right() - a.x, b.bottom() - a.y}.expanded(-line);
-            float w = line + OUTLINE_EXTRA_PX + (highlit ? HIGHLIGHT_EXTRA_PX : 0.0f);
+            // The highlight is its colour, not a wider outline: the cells' numbers keep the
+            // band inside the outline (g.pad) that every gather leaves them.
+            float w = line + OUTLINE_EXTRA_PX;
             Colour gatherColour = highlit ? HIGHLIGHT : GATHER;
             // Four edges, each inside the border band of its cells, clipped to the view.
             Rect edges[] = {{block.x, block.y, block.w, w},
@@ -356,10 +333,13 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
                 markOps.push_back([=](Canvas& c) { c.fillRect(ce, gatherColour); });
                 mark(ce, "gather-outline");
             }
+            // Drawn when its whole 2 x 2 is in the cells.
+            if (inside(block, area)) pl.plan.drawnFetches.push_back(static_cast<int>(fi));
             legend.gathers = true;
         } else if (fr.kind == PCF_FETCH_HW) {
             float rr = std::max(RING_MIN_PX, std::round(g.cell * RING_PER_CELL));
             if (!area.contains(at)) continue;
+            pl.plan.drawnFetches.push_back(static_cast<int>(fi));
             marks.points.push_back(
                 {at, at, rr + line, "hw-tap", HW_RING, [=](Canvas& c, glm::vec2 p) {
                      c.ring(p, rr, highlit ? line + HIGHLIGHT_EXTRA_PX : line,
@@ -370,15 +350,39 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
         } else if (tr.params.method == PCF_POISSON || tr.params.method == PCF_NAIVE ||
                    tr.params.method == PCF_HW) {
             if (!area.contains(at)) continue;
+            pl.plan.drawnFetches.push_back(static_cast<int>(fi));
             float mr = highlit ? dotR * 2.0f + 2.0f : dotR + 1.0f;  // the highlight's halo too
             marks.points.push_back({at, at, mr, "lookup", ACCENT, [=](Canvas& c, glm::vec2 p) {
                                         if (highlit) c.circle(p, dotR * 2.0f + 1.0f, HIGHLIGHT);
                                         c.circle(p, dotR, ACCENT);
                                     }});
             legend.dots = true;
+        } else {
+            // Point reads and lookups without a mark of their own (nearest, box2x2,
+            // bilinear2x2): drawn when the cells of the texels they read are.
+            glm::vec2 q = fr.uv * size - (fr.kind == PCF_FETCH_POINT ? 0.0f : 0.5f);
+            glm::ivec2 lo(glm::floor(q));
+            glm::ivec2 hi = lo + (fr.kind == PCF_FETCH_POINT ? 0 : 1);
+            glm::ivec2 end = g.view.origin + g.view.size;
+            if (glm::all(glm::greaterThanEqual(lo, g.view.origin)) &&
+                glm::all(glm::lessThan(hi, end))) {
+                pl.plan.drawnFetches.push_back(static_cast<int>(fi));
+            }
         }
     }
     glm::vec2 point = viewPoint(g, tr.uv * size);
+    if (tr.params.method == PCF_POISSON) {
+        // The disk the 16 points lie on, radius R texels round the lookup point (Jimmy,
+        // "Percentage Closer Filtering", 2010: a Poisson disk scaled by R), under the numbers.
+        legend.disk = true;
+        float radius = tr.params.radius * g.cell;
+        float w = std::max(1.0f, line - 1.0f);
+        pl.op([=](Canvas& c) {
+            c.pushClip(area);
+            c.ring(point, radius, w, ACCENT);
+            c.popClip();
+        });
+    }
     float pr = std::max(POINT_MIN_PX, std::round(g.cell * POINT_PER_CELL));
     if (area.contains(point)) {
         marks.points.push_back(
@@ -437,6 +441,8 @@ std::vector<std::vector<Item>> numberCandidates(const std::vector<Item>& all, bo
         variants.push_back(noDepth);
     }
     if (tap) variants.push_back({all.back()});
+    // The bit alone, where no number fits beside it: the comparison is what the cell is for.
+    if (tap) variants.push_back({all.front()});
     variants.push_back({});
     std::vector<std::vector<Item>> candidates;
     for (const std::vector<Item>& items : variants) {
@@ -452,7 +458,7 @@ std::vector<std::vector<Item>> numberCandidates(const std::vector<Item>& all, bo
         // Last, the bit at the numbers' size (half a line less to find room for).
         if (!items.empty() && items.front().role == "cell-bit") {
             std::vector<Item> flat = candidates.back();
-            flat.front().size = flat.back().size;
+            flat.front().size = flat.size() > 1 ? flat.back().size : numberFloor;
             candidates.push_back(flat);
         }
     }
@@ -771,6 +777,11 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     const Trace& tr = *m.trace;
     CellMarks marks;
     planCellFills(pl, l, tr, g, marks, legend);
+    for (int j = 0; j < g.view.size.y; ++j) {
+        for (int i = 0; i < g.view.size.x; ++i) {
+            pl.plan.drawnTexels.push_back(g.view.origin + glm::ivec2(i, j));
+        }
+    }
     planGridLines(pl, l, g, t);
     planFetchMarks(pl, l, m, g, marks, legend);
     hiddenCells += planCellNumbers(pl, m, g, marks, t.numberFloor);
@@ -784,36 +795,4 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     legend.hw8 = g.hw8;
 }
 
-}  // namespace inspector_detail
-
-using namespace inspector_detail;
-
-Neighbourhood neighbourhoodView(const InspectorLayout& l, const Trace& tr, int highlight) {
-    return panelLayout(l, tr, typeSizes(l), highlight).grid.view;
-}
-
-Rect neighbourhoodArea(const InspectorLayout& l, const Trace& tr, bool, int highlight) {
-    return panelLayout(l, tr, typeSizes(l), highlight).grid.area;
-}
-
-Neighbourhood neighbourhoodOf(const Trace& tr) {
-    glm::ivec2 lo = tr.pos.base;
-    glm::ivec2 hi = tr.pos.base + glm::ivec2(1);
-    if (!tr.weights.values.empty()) {
-        lo = glm::min(lo, tr.weights.origin);
-        hi = glm::max(hi, tr.weights.origin + tr.weights.size - glm::ivec2(1));
-    }
-    glm::ivec2 point(glm::floor(tr.uv * glm::vec2(tr.mapSize)));
-    lo = glm::min(lo, point);
-    hi = glm::max(hi, point);
-    return {lo, hi - lo + glm::ivec2(1)};
-}
-
-Rect texelCellRect(const Neighbourhood& n, const Rect& area, glm::ivec2 texel) {
-    // The area is exactly as wide as the view's columns.
-    float cell = area.w / static_cast<float>(std::max(1, n.size.x));
-    return {area.x + static_cast<float>(texel.x - n.origin.x) * cell,
-            area.y + static_cast<float>(texel.y - n.origin.y) * cell, cell, cell};
-}
-
-}  // namespace pcf
+}  // namespace pcf::inspector_detail

@@ -86,21 +86,15 @@ void planHeader(Planner& pl, const InspectorLayout& l, const Header& h, const Ty
 }
 
 // What the cells leave out, said in words, from `y` down; returns the new y.
-float planNotes(Planner& pl, const InspectorLayout& l, const Grid& g, int hidden,
-                const TypeSizes& t, float margin, float y) {
+float planNotes(Planner& pl, const InspectorLayout& l, int hidden, const TypeSizes& t, float margin,
+                float y) {
     const Rect& p = l.inspector;
     float width = p.w - 2 * margin;
     std::vector<std::string> notes;
-    if (g.view.size != g.full.size) {
-        notes.push_back("showing " + std::to_string(g.view.size.x) + " x " +
-                        std::to_string(g.view.size.y) + " of the " + std::to_string(g.full.size.x) +
-                        " x " + std::to_string(g.full.size.y) +
-                        " texels, around the lookup (pcfscope trace lists all)");
-    }
     if (hidden > 0) {
         notes.push_back("numbers of " + std::to_string(hidden) +
                         (hidden == 1 ? " cell" : " cells") +
-                        " left out where marks fill the cell: see pcfscope trace");
+                        " left out: no room at this size (pcfscope trace lists every texel)");
     }
     for (const std::string& note : notes) {
         FittedText f =
@@ -113,7 +107,7 @@ float planNotes(Planner& pl, const InspectorLayout& l, const Grid& g, int hidden
 
 namespace {
 
-enum SwatchShape { SQUARE, DOT, RING, OUTLINE, BAR, TICK };
+enum SwatchShape { SQUARE, DOT, RING, OUTLINE, BAR, TICK, CIRCLE };
 
 struct LegendEntry {
     Colour colour;
@@ -132,6 +126,7 @@ std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeed
     if (need.fraction) entries.push_back({POINT, "fx, fy: lookup point - base texel centre", BAR});
     if (need.hw8) entries.push_back({HW8_POINT, "8-bit position (1/256 texel)", OUTLINE});
     if (need.dots) entries.push_back({ACCENT, "each lookup", DOT});
+    if (need.disk) entries.push_back({ACCENT, "the disk, radius R", CIRCLE});
     if (need.rings) entries.push_back({ACCENT, "hardware tap", RING});
     if (need.gathers) entries.push_back({GATHER, "one gather (2 x 2)", OUTLINE});
     if (need.highlight) entries.push_back({HIGHLIGHT, "the fetch the text talks about", OUTLINE});
@@ -156,6 +151,9 @@ void planSwatch(Planner& pl, Rect sw, SwatchShape shape, Colour col, float lg) {
                 break;
             case OUTLINE:
                 c.strokeRect(sw, 3.0f, col);
+                break;
+            case CIRCLE:  // a thin circle, as the Poisson disk's
+                c.ring(cc, lg * 0.45f, 1.5f, col);
                 break;
             case BAR:
                 c.fillRect({sw.x, sw.y + sw.h * 0.6f, sw.w, sw.h * 0.3f}, col);
@@ -204,26 +202,27 @@ float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
     return y + lh + lg * 0.6f;
 }
 
-// The formula with its numbers, from the kernel's own explanation, from `y` to the panel's
-// bottom; the short form when the whole would not fit.
-void planFormula(Planner& pl, const InspectorLayout& l, const Trace& tr, const TypeSizes& t,
-                 float margin, float y) {
+// The formula with its numbers, from the kernel's own explanation, fitted into `box` at the
+// numbers' size down to their floor; `page` of it when it pages.
+FittedText fitFormula(const Trace& tr, const TypeSizes& t, const Rect& box) {
+    return fitText(formulaText(tr), FontFace::Mono, t.number, t.numberFloor, box.w, box.h);
+}
+
+void placeFormula(Planner& pl, const FittedText& f, const Rect& box, int page) {
+    placeFitted(pl, f, box, page, FontFace::Mono, TEXT, "inspector", "formula", "");
+    pl.plan.formulaWhole = f.pages == 1;
+}
+
+// A line at the panel's bottom saying where the rest of the inspector is (the next page).
+// `y`: the top of the room left under the rest.
+void planNextPageNote(Planner& pl, const InspectorLayout& l, const TypeSizes& t, float margin,
+                      float y, const std::string& what) {
     const Rect& p = l.inspector;
-    float width = p.w - 2 * margin;
-    Rect formula{p.x + margin, y, width, p.bottom() - margin - y};
-    if (formula.h < lineHeightOf(t.labelFloor)) return;
-    FittedText f =
-        fitText(formulaText(tr), FontFace::Mono, t.number, t.numberFloor, width, formula.h);
-    bool shortened = false;
-    if (f.pages > 1) {
-        std::string shortForm =
-            "visibility = sum(weight * bit) over the " + std::to_string(tr.taps.size()) +
-            " taps = " + formatNumber(tr.visibility) + "\n(every term: pcfscope trace)";
-        f = fitText(shortForm, FontFace::Mono, t.number, t.numberFloor, width, formula.h);
-        shortened = true;
-    }
-    placeFitted(pl, f, formula, 0, FontFace::Mono, TEXT, "inspector", "formula", "");
-    if (shortened) pl.plan.boxes.back().shortened = true;
+    float lh = lineHeightOf(t.label);
+    std::string note = what + ": next page (Space/Right)";
+    std::string shown = elideText(FontFace::Sans, t.label, note, p.w - 2 * margin);
+    pl.text({p.x + margin, std::min(y, p.bottom() - margin - lh)}, shown,
+            {FontFace::Sans, t.label, ACCENT}, BoxKind::Text, "inspector", "more", shown != note);
 }
 
 }  // namespace
@@ -247,14 +246,74 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
         return;
     }
     const Trace& tr = *m.trace;
-    PanelLayout layout = panelLayout(l, tr, t, m.highlightFetch);
+    InspectorPanel panel = inspectorPanel(l, m, t, pl.onTop);
+    const PanelLayout& layout = panel.layout;
     planHeader(pl, l, layout.header, t, margin);
-    LegendNeeds need;
+    float width = p.w - 2 * margin;
+    float formulaTop = p.y + margin + layout.header.height + t.label * 0.5f;
+    Rect alone{p.x + margin, formulaTop, width, p.bottom() - margin - formulaTop};
+    FittedText formulaAlone = fitFormula(tr, t, alone);
+    int parts = panel.together ? 1 : 1 + formulaAlone.pages;
+    pl.plan.textPages = std::max(pl.plan.textPages, parts);
+    int part = std::min(std::max(0, m.textPage), parts - 1);
+    if (part == 0) {
+        FramePlan& cells = panel.cells;
+        for (auto& op : cells.base) pl.op(std::move(op));
+        pl.plan.boxes.insert(pl.plan.boxes.end(), cells.boxes.begin(), cells.boxes.end());
+        pl.plan.drawnTexels = cells.drawnTexels;
+        pl.plan.drawnFetches = cells.drawnFetches;
+        Rect under{p.x + margin, panel.cellsBottom, width, p.bottom() - margin - panel.cellsBottom};
+        if (panel.together) {
+            placeFormula(pl, fitFormula(tr, t, under), under, 0);
+        } else {
+            planNextPageNote(pl, l, t, margin, panel.cellsBottom, "the formula, every term");
+        }
+        return;
+    }
+    placeFormula(pl, formulaAlone, alone, part - 1);
+    if (part < parts - 1) {
+        float end = pl.plan.boxes.back().rect.bottom() + t.label * 0.5f;
+        planNextPageNote(pl, l, t, margin, end, "the rest of the formula");
+    }
+}
+
+InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
+                              bool onTop) {
+    const Rect& p = l.inspector;
+    const Trace& tr = *m.trace;
+    float margin = inspectorMargin(l);
+    InspectorPanel out;
+    // The cells' page in a scratch plan: where the legend ends says whether the formula fits
+    // under it whole. When it does not, the cells are planned again with the formula's room
+    // (it goes on a page of its own).
     int hidden = 0;
-    planCells(pl, l, m, layout.grid, t, need, hidden);
-    float y = planNotes(pl, l, layout.grid, hidden, t, margin, layout.grid.bottom + 2.0f);
-    y = planLegend(pl, l, m, need, t, margin, y + 4.0f);
-    planFormula(pl, l, tr, t, margin, y);
+    auto planCellsPage = [&](const PanelLayout& pan) {
+        out.layout = pan;
+        out.cells = FramePlan{};
+        Planner cp{out.cells, onTop};
+        LegendNeeds need;
+        hidden = 0;
+        planCells(cp, l, m, pan.grid, t, need, hidden);
+        float y = planNotes(cp, l, hidden, t, margin, pan.grid.bottom + 2.0f);
+        out.cellsBottom = planLegend(cp, l, m, need, t, margin, y + 4.0f);
+    };
+    float width = p.w - 2 * margin;
+    auto formulaFits = [&]() {
+        Rect under{p.x + margin, out.cellsBottom, width, p.bottom() - margin - out.cellsBottom};
+        return under.h >= lineHeightOf(t.numberFloor) && fitFormula(tr, t, under).pages == 1;
+    };
+    planCellsPage(panelLayout(l, tr, t, m.highlightFetch));
+    out.together = formulaFits();
+    if (out.together) return out;
+    // Cells a little smaller, the formula's own height kept under them, as long as every cell
+    // keeps its numbers (a 2 x 2 has room to spare).
+    FittedText whole = fitFormula(tr, t, {0, 0, width, 1e6f});
+    float formulaH = static_cast<float>(whole.lines.size()) * whole.lineHeight;
+    float legendH = BELOW_APART_LINES * lineHeightOf(t.label);
+    planCellsPage(panelLayout(l, tr, t, m.highlightFetch, formulaH + legendH));
+    out.together = hidden == 0 && formulaFits();
+    if (!out.together) planCellsPage(panelLayout(l, tr, t, m.highlightFetch, legendH));
+    return out;
 }
 
 }  // namespace pcf::inspector_detail

@@ -174,8 +174,8 @@ inline bool hw8Lookup(const Trace& tr) {
 std::string hw8Steps(float fracHw8);
 
 // Everything the inspector panel places for a trace, computed once: the plan, neighbourhoodView
-// and neighbourhoodArea all read it. highlight: the fetch (0-based) the step talks about; a
-// windowed view keeps its texels in view.
+// and neighbourhoodArea all read it. The view is always the whole neighbourhood (the highlight
+// argument is kept for callers; it no longer moves a window).
 struct PanelLayout {
     float margin = 0.0f;  // inside the panel, all round
     float width = 0.0f;   // the panel's width less the margins
@@ -183,8 +183,25 @@ struct PanelLayout {
     Grid grid;
 };
 float inspectorMargin(const InspectorLayout& l);
+// reserve: the height kept under the cells for the notes, the legend and the formula; < 0: a
+// share of the panel (inspectorPanel picks it: the formula's own height, or none of it when the
+// formula goes on a page of its own).
 PanelLayout panelLayout(const InspectorLayout& l, const Trace& tr, const TypeSizes& t,
-                        int highlight = -1);
+                        int highlight = -1, float reserve = -1.0f);
+// The notes and the legend under the cells, in label lines, when the formula is not there.
+constexpr float BELOW_APART_LINES = 7.0f;
+
+// The inspector panel's cells as the frame draws them: planned (into `cells`, a scratch plan)
+// with the formula under them when it fits there whole (`together`), else with the formula's
+// room, the formula then on a page of its own. cellsBottom: under the notes and the legend.
+struct InspectorPanel {
+    PanelLayout layout;
+    FramePlan cells;
+    float cellsBottom = 0.0f;
+    bool together = true;
+};
+InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
+                              bool onTop = false);
 
 // The line width of the inspector's strokes.
 inline float lineOf(const InspectorLayout& l) {
@@ -198,6 +215,7 @@ struct LegendNeeds {
     bool clamped = false;    // a texel read clamped to the edge (any finite uv)
     bool hw8 = false;        // the 8-bit position (the sub-texel inset)
     bool movedMark = false;  // a point mark moved beside its cell's numbers, with a tick
+    bool disk = false;       // the Poisson disk's circle
 };
 
 // The cells, their numbers, the fetch marks and the fx/fy brackets; counts the cells whose

@@ -121,35 +121,22 @@ void planTexelGrid(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     pl.op([image, at](Canvas& c) { c.image(at, image); });
 }
 
-// The label "pixel (x, y)" beside the ring of radius `gap` less 4, in the first corner where
-// the whole label stays in the scene (elided where it is wider than the scene).
+// The label "pixel (x, y)" in the scene's corner farthest from the picked pixel, so that it
+// never lies on what the step shows around the pixel (9.3's light gap hid under it when it sat
+// beside the ring); the ring marks the pixel. Elided where it is wider than the scene.
 void planPixelLabel(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                    const TypeSizes& t, glm::vec2 centre, float gap) {
+                    const TypeSizes& t, glm::vec2 centre) {
     std::string label = "pixel (" + std::to_string(m.pixel.x) + ", " + std::to_string(m.pixel.y) +
                         ")" + (m.trace ? "" : ": no shadow receiver here");
     TextStyle st{FontFace::Sans, t.label, TEXT};
-    Rect size = pl.measure({0, 0}, label, st);
-    const glm::vec2 candidates[] = {{centre.x + gap, centre.y + gap * 0.3f},
-                                    {centre.x - gap - size.w, centre.y + gap * 0.3f},
-                                    {centre.x + gap, centre.y - gap * 0.3f - size.h},
-                                    {centre.x - gap - size.w, centre.y - gap * 0.3f - size.h}};
-    Rect scenePad = l.scene.expanded(-4.0f);
-    glm::vec2 at = candidates[0];
-    bool placed = false;
-    for (glm::vec2 c : candidates) {
-        Rect r{std::round(c.x), std::round(c.y), size.w, size.h};
-        if (inside(r, scenePad)) {
-            at = r.position();
-            placed = true;
-            break;
-        }
-    }
-    if (!placed) {
-        at.x = std::clamp(at.x, scenePad.x, std::max(scenePad.x, scenePad.right() - size.w));
-        at.y = std::clamp(at.y, scenePad.y, std::max(scenePad.y, scenePad.bottom() - size.h));
-    }
-    bool fits = size.w <= scenePad.w;
+    Rect scenePad = l.scene.expanded(-6.0f);
+    bool fits = pl.measure({0, 0}, label, st).w <= scenePad.w;
     std::string shown = fits ? label : elideText(FontFace::Sans, t.label, label, scenePad.w);
+    Rect size = pl.measure({0, 0}, shown, st);
+    bool right = centre.x < l.scene.centre().x;
+    bool bottom = centre.y < l.scene.centre().y;
+    glm::vec2 at{right ? scenePad.right() - size.w : scenePad.x,
+                 bottom ? scenePad.bottom() - size.h : scenePad.y};
     Rect r = pl.measure(at, shown, st);
     pl.fill(r.expanded(3).intersect(l.scene), Colour{0, 0, 0, 0.6f});
     pl.text(at, shown, st, BoxKind::Label, "scene", "pixel-label", !fits);
@@ -159,12 +146,17 @@ void planPixelLabel(Planner& pl, const InspectorLayout& l, const InspectorModel&
 
 void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t) {
     glm::vec2 origin = l.scene.position();
-    glm::vec2 centre = origin + glm::vec2(m.pixel) + 0.5f;
+    // An inset (focusLayout) draws the scene scaled: the pixel's place scales with it, and the
+    // texel grid (one overlay pixel per scene pixel) is left to the full-size scene.
+    float scale =
+        l.sceneInset && m.sceneSize.x > 0 ? l.scene.w / static_cast<float>(m.sceneSize.x) : 1.0f;
+    glm::vec2 centre = origin + (glm::vec2(m.pixel) + 0.5f) * scale;
     float lineWidth = l.presentation ? 3.0f : 2.0f;
     Rect scene = l.scene;
     pl.op([=](Canvas& c) { c.pushClip(scene); });
-    planTexelGrid(pl, l, m);
-    float ringR = std::max(7.0f, 9.0f * l.scale);
+    if (!l.sceneInset) planTexelGrid(pl, l, m);
+    // Wide enough that what lies at the pixel (9.3's light gap at the pole's foot) shows inside.
+    float ringR = std::max(11.0f, 14.0f * l.scale);
     pl.op([=](Canvas& c) {
         c.ring(centre, ringR, lineWidth, Colour{0, 0, 0, 0.8f});
         c.ring(centre, ringR, lineWidth * 0.5f, POINT);
@@ -174,7 +166,7 @@ void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     Rect ring{centre.x - ringR - lineWidth, centre.y - ringR - lineWidth, 2 * (ringR + lineWidth),
               2 * (ringR + lineWidth)};
     pl.box(BoxKind::Mark, ring.intersect(l.scene), "scene", "picked-pixel");
-    planPixelLabel(pl, l, m, t, centre, ringR + lineWidth + 4.0f);
+    planPixelLabel(pl, l, m, t, centre);
 }
 
 }  // namespace pcf::inspector_detail

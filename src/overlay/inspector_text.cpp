@@ -241,11 +241,11 @@ float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, 
     pl.box(BoxKind::Text, {std::round(area.x), std::round(area.y), std::min(widest, area.w), used},
            panel, role, f.size, f.pages > 1);
     if (f.pages > 1) {
-        std::string more =
-            page + 1 < f.pages
-                ? "more " + moreHint + " (" + std::to_string(page + 1) + "/" +
-                      std::to_string(f.pages) + ")"
-                : "(" + std::to_string(page + 1) + "/" + std::to_string(f.pages) + ")";
+        // Appended, not a chain of operator+ (GCC 12 warns falsely, -Wrestrict).
+        std::string more;
+        if (page + 1 < f.pages) more.append("more ").append(moreHint).append(" ");
+        more.append("(").append(std::to_string(page + 1)).append("/");
+        more.append(std::to_string(f.pages)).append(")");
         float ms = std::max(10.0f, std::round(f.size * 0.85f));
         Rect r = pl.measure({area.right(), area.bottom() - lineHeightOf(ms)}, more,
                             {FontFace::Sans, ms, ACCENT, TextAlign::Right});

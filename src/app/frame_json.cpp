@@ -1,0 +1,63 @@
+#include "app/frame_json.h"
+
+#include <algorithm>
+
+#include "kernel/trace_explain.h"
+
+namespace pcf {
+
+// A setting as the status line and the step text print it (formatNumber: up to 4 decimals), as a
+// JSON number: 0.005 stays "0.005", not the float's "0.00499999989".
+Json settingNumber(float v) { return Json::parse(formatNumber(v)); }
+
+// The frame's layout (planFrame's boxes) as a JSON array: [{"kind", "panel", "role",
+// "rect": [x, y, w, h], "font_px", "shortened"}, ...]; font_px and shortened only for what
+// draws text.
+Json layoutJson(const std::vector<LayoutBox>& boxes) {
+    Json out = Json::array();
+    for (const LayoutBox& b : boxes) {
+        Json box = {{"kind", boxKindName(b.kind)},
+                    {"panel", b.panel},
+                    {"role", b.role},
+                    {"rect", Json::array({jsonNumber(b.rect.x), jsonNumber(b.rect.y),
+                                          jsonNumber(b.rect.w), jsonNumber(b.rect.h)})}};
+        if (b.kind == BoxKind::Text || b.kind == BoxKind::Number || b.kind == BoxKind::Label ||
+            b.fontPx > 0.0f) {
+            box["font_px"] = jsonNumber(b.fontPx);
+            box["shortened"] = b.shortened;
+        }
+        out.push_back(std::move(box));
+    }
+    return out;
+}
+
+// What this page of the frame drew against what the trace read: {"drawn": {"texels": [[i, j],
+// ...], "fetches": [k, ...], "formula_whole": bool}, "read": {"texels": [...], "fetches": [...]}}.
+// Texels: the distinct texels of the taps, in read order; fetches: indices into the trace's
+// fetches (its instructions: gathers, hardware taps, lookups, point reads).
+Json drawnAndReadJson(const Trace& tr, const std::vector<glm::ivec2>& texels,
+                      const std::vector<int>& fetches, bool formulaWhole) {
+    Json readTexels = Json::array();
+    std::vector<glm::ivec2> seen;
+    for (const TapRecord& t : tr.taps) {
+        if (std::find(seen.begin(), seen.end(), t.texel) != seen.end()) continue;
+        seen.push_back(t.texel);
+        readTexels.push_back(jsonPair(t.texel));
+    }
+    Json readFetches = Json::array();
+    for (size_t k = 0; k < tr.fetches.size(); ++k) readFetches.push_back(k);
+    Json drawnTexels = Json::array();
+    for (glm::ivec2 t : texels) drawnTexels.push_back(jsonPair(t));
+    return {
+        {"drawn", {{"texels", drawnTexels}, {"fetches", fetches}, {"formula_whole", formulaWhole}}},
+        {"read", {{"texels", readTexels}, {"fetches", readFetches}}}};
+}
+
+Json cellsJson(const Neighbourhood& view, const Rect& r) {
+    return {{"origin", jsonPair(view.origin)},
+            {"size", jsonPair(view.size)},
+            {"rect",
+             Json::array({jsonNumber(r.x), jsonNumber(r.y), jsonNumber(r.w), jsonNumber(r.h)})}};
+}
+
+}  // namespace pcf
