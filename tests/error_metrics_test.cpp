@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "analysis/bench_report.h"
+#include "analysis/chart_axes.h"
 #include "analysis/difference_image.h"
 #include "analysis/pareto.h"
 #include "analysis/speed_chart.h"
@@ -134,6 +135,23 @@ TEST(Pareto, KeepsExactlyThePointsNothingBeatsOnBothCounts) {
     std::vector<glm::dvec2> hair = {{1.0, 0.5}, {2.0, 0.5 - 1e-9}, {3.0, 0.4}, {3.0, 0.4 + 1e-9}};
     EXPECT_EQ(paretoFront(hair), (std::vector<size_t>{0, 1, 2}));
     EXPECT_EQ(paretoFront(hair, 1e-6), (std::vector<size_t>{0, 2, 3}));
+}
+
+TEST(Pareto, TimesWhoseSpreadsOverlapTieSoANoisyPointCannotLeadTheFront) {
+    // The case: the fastest median (1 ms) has a spread of 0.6 - 20 ms.
+    std::vector<glm::dvec2> pts = {{1.0, 0.5}, {2.0, 0.3}, {5.0, 0.1}, {4.0, 0.35}};
+    std::vector<glm::dvec2> spread = {{0.6, 20.0}, {1.9, 2.1}, {4.9, 5.1}, {3.9, 4.1}};
+    // On medians alone the wild point leads the front.
+    EXPECT_EQ(paretoFront(pts), (std::vector<size_t>{0, 1, 2}));
+    // With its spread it ties with every point up to 20 ms, and they are more accurate.
+    EXPECT_EQ(paretoFrontWithSpread(pts, spread), (std::vector<size_t>{1, 2}));
+    // Separated spreads: the faster point stays even though the slower is more accurate.
+    std::vector<glm::dvec2> tight = {{0.9, 1.1}, {1.9, 2.1}, {4.9, 5.1}, {3.9, 4.1}};
+    EXPECT_EQ(paretoFrontWithSpread(pts, tight), (std::vector<size_t>{0, 1, 2}));
+    // Zero spreads: the plain front.
+    std::vector<glm::dvec2> none;
+    for (glm::dvec2 p : pts) none.emplace_back(p.x, p.x);
+    EXPECT_EQ(paretoFrontWithSpread(pts, none), paretoFront(pts));
 }
 
 std::vector<BenchRow> sampleRows() {
@@ -374,6 +392,41 @@ TEST(SpeedChart, DrawsTheRequestedSizeWithEachMethodsColour) {
     size_t dark = 0;
     for (size_t k = 0; k < rgba.size(); k += 4) dark += rgba[k] < 100 && rgba[k + 1] < 100;
     EXPECT_GT(dark, 500u);  // text, axes, the front
+}
+
+// The chart `bench` writes, from the repository's own default run (lessons/figures/bench.csv):
+// at the default 1280x720 every text is at least 14 px, inside the chart, and none overlaps
+// another; the subtitle says the renderer and, for llvmpipe, what carries over.
+TEST(SpeedChart, StandAloneTextIsAtLeast14PxWithoutOverlap) {
+    std::ifstream in(std::string(PCFSCOPE_SOURCE_DIR) + "/lessons/figures/bench.csv");
+    std::string csv((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<BenchRow> rows = parseBenchCsv(csv, "bench.csv");
+    ASSERT_GT(rows.size(), 10u);
+    SpeedChartText text;
+    text.title = "Speed against accuracy: box-on-plane, 1280x720";
+    text.subtitle = chartRendererLine("llvmpipe (LLVM 15.0.6, 256 bits)") +
+                    "\nmedian of 9 round-robin samples, glFinish+steady_clock; bars: IQR; ! noisy "
+                    "(IQR > 10 % of median)";
+    text.minFontPx = STANDALONE_CHART_MIN_PX;
+    const glm::ivec2 size{1280, 720};
+    SpeedChartLayout L = layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
+                                          {}, text.minFontPx);
+    std::vector<ChartTextBox> boxes = speedChartTextBoxes(L, text);
+    std::string subtitle;
+    for (const ChartTextBox& b : boxes) {
+        EXPECT_GE(b.fontPx, STANDALONE_CHART_MIN_PX) << b.role << " '" << b.text << "'";
+        EXPECT_GE(b.rect.x, 0.0f) << b.text;
+        EXPECT_LE(b.rect.right(), size.x) << b.text;
+        EXPECT_LE(b.rect.bottom(), size.y) << b.text;
+        if (b.role == "chart-subtitle") subtitle = b.text;
+    }
+    EXPECT_NE(subtitle.find(LLVMPIPE_NOTE), std::string::npos) << subtitle;
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        for (size_t j = i + 1; j < boxes.size(); ++j) {
+            EXPECT_TRUE(boxes[i].rect.intersect(boxes[j].rect).empty())
+                << "'" << boxes[i].text << "' overlaps '" << boxes[j].text << "'";
+        }
+    }
 }
 
 }  // namespace

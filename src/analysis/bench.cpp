@@ -341,49 +341,70 @@ class BenchRun {
         return shimmerStats(frames, mRegions.compared);
     }
 
-    // The timing rounds (see bench.h): every point once per round, in run order.
+    struct TimingSamples {
+        std::vector<std::vector<double>> scene, lookup, sceneCpu, lookupCpu;
+        explicit TimingSamples(size_t n) : scene(n), lookup(n), sceneCpu(n), lookupCpu(n) {}
+    };
+
+    // One timing round: each point of `order` once, in that order.
+    void timeRound(const std::vector<size_t>& order, TimingSamples& t) {
+        mCurrentMap = -1;
+        for (size_t k : order) {
+            const BenchPoint& p = mPoints[k];
+            RenderSettings s = settingsFor(mOptions, p);
+            if (p.mapSize != mCurrentMap) {
+                mRenderer.renderShadowPass(s);
+                mLookupPass.setMap(mMaps[p.mapSize]);
+                glFinish();
+                mCurrentMap = p.mapSize;
+            }
+            TimingResult scene = mRenderer.timeCameraPass(s, 1, false);
+            PcfParams prm = s.pcfParams();
+            PcfBias bias = s.biasParams().kernelBias();
+            TimingResult lookup =
+                timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel, bias); }, 1, false);
+            t.scene[k].push_back(scene.samplesMs.front());
+            t.lookup[k].push_back(lookup.samplesMs.front());
+            t.sceneCpu[k].insert(t.sceneCpu[k].end(), scene.cpuSamplesMs.begin(),
+                                 scene.cpuSamplesMs.end());
+            t.lookupCpu[k].insert(t.lookupCpu[k].end(), lookup.cpuSamplesMs.begin(),
+                                  lookup.cpuSamplesMs.end());
+        }
+    }
+
+    static bool noisyTimes(const TimingSamples& t, size_t k) {
+        Quartiles scene = quartilesOf(t.scene[k]), lookup = quartilesOf(t.lookup[k]);
+        return scene.iqr() > NOISY_IQR_SHARE * scene.median ||
+               lookup.iqr() > NOISY_IQR_SHARE * lookup.median;
+    }
+
+    // The timing rounds (see bench.h): every point once per round, in run order; then the
+    // points that came out noisy as many rounds again, round-robin among themselves, before
+    // they are flagged: a busy spell of the machine during the first rounds is not the point's.
     void timeRounds() {
-        std::vector<std::vector<double>> sceneSamples(mPoints.size());
-        std::vector<std::vector<double>> lookupSamples(mPoints.size());
-        std::vector<std::vector<double>> sceneCpu(mPoints.size());
-        std::vector<std::vector<double>> lookupCpu(mPoints.size());
+        TimingSamples t(mPoints.size());
         for (int round = 0; round < mOptions.gpuRepeats; ++round) {
             if (mContext.roundProgress) mContext.roundProgress(round, mOptions.gpuRepeats);
-            mCurrentMap = -1;
-            for (size_t k : mOrder) {
-                const BenchPoint& p = mPoints[k];
-                RenderSettings s = settingsFor(mOptions, p);
-                if (p.mapSize != mCurrentMap) {
-                    mRenderer.renderShadowPass(s);
-                    mLookupPass.setMap(mMaps[p.mapSize]);
-                    glFinish();
-                    mCurrentMap = p.mapSize;
-                }
-                TimingResult scene = mRenderer.timeCameraPass(s, 1, false);
-                PcfParams prm = s.pcfParams();
-                PcfBias bias = s.biasParams().kernelBias();
-                TimingResult lookup =
-                    timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel, bias); }, 1, false);
-                sceneSamples[k].push_back(scene.samplesMs.front());
-                lookupSamples[k].push_back(lookup.samplesMs.front());
-                sceneCpu[k].insert(sceneCpu[k].end(), scene.cpuSamplesMs.begin(),
-                                   scene.cpuSamplesMs.end());
-                lookupCpu[k].insert(lookupCpu[k].end(), lookup.cpuSamplesMs.begin(),
-                                    lookup.cpuSamplesMs.end());
-            }
+            timeRound(mOrder, t);
+        }
+        std::vector<size_t> again;
+        for (size_t k : mOrder) {
+            if (noisyTimes(t, k)) again.push_back(k);
+        }
+        for (int round = 0; round < mOptions.gpuRepeats && !again.empty(); ++round) {
+            timeRound(again, t);
         }
         for (size_t k = 0; k < mPoints.size(); ++k) {
             BenchRow& row = mRows[k];
-            Quartiles scene = quartilesOf(sceneSamples[k]);
-            Quartiles lookup = quartilesOf(lookupSamples[k]);
+            Quartiles scene = quartilesOf(t.scene[k]);
+            Quartiles lookup = quartilesOf(t.lookup[k]);
             row.gpuMs = scene.median;
             row.gpuMsIqr = scene.iqr();
             row.lookupMs = lookup.median;
             row.lookupMsIqr = lookup.iqr();
-            row.gpuCpuMs = medianOf(sceneCpu[k]);
-            row.lookupCpuMs = medianOf(lookupCpu[k]);
-            row.noisy = row.gpuMsIqr > NOISY_IQR_SHARE * row.gpuMs ||
-                        row.lookupMsIqr > NOISY_IQR_SHARE * row.lookupMs;
+            row.gpuCpuMs = medianOf(t.sceneCpu[k]);
+            row.lookupCpuMs = medianOf(t.lookupCpu[k]);
+            row.noisy = noisyTimes(t, k);
         }
     }
 };

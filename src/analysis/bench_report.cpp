@@ -133,12 +133,19 @@ std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& so
     return rows;
 }
 
+glm::dvec2 benchTimeSpread(const BenchRow& row, bool byLookup) {
+    double ms = byLookup ? row.lookupMs : row.gpuMs;
+    double iqr = byLookup ? row.lookupMsIqr : row.gpuMsIqr;
+    return {ms - 0.5 * iqr, ms + 0.5 * iqr};
+}
+
 std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows, bool byLookup) {
-    std::vector<glm::dvec2> points;
+    std::vector<glm::dvec2> points, spreads;
     for (const BenchRow& r : rows) {
         points.emplace_back(byLookup ? r.lookupMs : r.gpuMs, r.error.edgeRmse);
+        spreads.push_back(benchTimeSpread(r, byLookup));
     }
-    return paretoFront(points, PARETO_ERROR_TOLERANCE);
+    return paretoFrontWithSpread(points, spreads, PARETO_ERROR_TOLERANCE);
 }
 
 double noisyShare(std::span<const BenchRow> rows) {
@@ -179,7 +186,8 @@ std::string methodsNote(const BenchSetup& setup, const std::string& timer,
     md += "Measured on `" + setup.glRenderer + "` (OpenGL " + setup.glVersion + "). ";
     md += "Times are medians (with the interquartile range) of " +
           std::to_string(setup.gpuRepeats) +
-          " samples per point, taken round-robin: each round times every point once. Scene ms "
+          " samples per point, taken round-robin: each round times every point once; a point "
+          "noisy after them gets as many rounds again before it is marked noisy. Scene ms "
           "is a colour-only camera pass at " +
           frame +
           "; lookup ms is the filter alone, the kernel as a bare full-screen pass over the "

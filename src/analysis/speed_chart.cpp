@@ -17,6 +17,9 @@ namespace pcf {
 
 namespace {
 
+// The front's legend entry: it says the rule (times whose IQR bars overlap tie).
+constexpr const char* FRONT_LEGEND = "Pareto front (overlapping IQR bars tie)";
+
 const Colour FRONT{0.05f, 0.05f, 0.05f, 1.0f};
 
 struct Fonts {
@@ -154,7 +157,7 @@ glm::vec2 layoutLegend(SpeedChartLayout& L, std::span<const BenchRow> rows, cons
             L.legendMethods.push_back(r.point.method);
         }
     }
-    float legendText = measureText(FontFace::Sans, f.legend, "Pareto front").x;
+    float legendText = measureText(FontFace::Sans, f.legend, FRONT_LEGEND).x;
     for (int m : L.legendMethods) {
         legendText =
             std::max(legendText, measureText(FontFace::Sans, f.legend, methodInfo(m).name).x);
@@ -185,8 +188,10 @@ double layoutYRange(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartAc
 // The plot's and the legend's rectangles: the title above, the y tick labels on the left, the
 // legend on the right and the x ticks and name below.
 void layoutFrame(SpeedChartLayout& L, const Fonts& f, float s, double yStep, glm::vec2 legendSize) {
+    // The subtitle has room for two lines: the renderer (and what carries over from it), then
+    // how the times were taken.
     float titleH = fontMetrics(FontFace::Sans, f.title).lineHeight +
-                   fontMetrics(FontFace::Sans, f.subtitle).lineHeight +
+                   2.0f * fontMetrics(FontFace::Sans, f.subtitle).lineHeight +
                    fontMetrics(FontFace::Sans, f.axis).lineHeight + 14.0f * s;
     float yTickW = 0.0f;
     for (double v = 0.0; v <= L.yHi + 0.5 * yStep; v += yStep) {
@@ -270,11 +275,14 @@ void layoutDots(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTiming
                                  xPixelOf(L, barLogHi(r, timing)));
         L.labelTexts.push_back(chartLabel(r.point) + (r.noisy ? " !" : ""));
     }
-    std::vector<glm::dvec2> frontPoints;
+    // The front over the medians, each time known only within its IQR bar: points whose bars
+    // overlap are equally fast (bench_report.h: benchParetoFront, here of the chart's accuracy).
+    std::vector<glm::dvec2> frontPoints, spreads;
     for (const BenchRow& r : rows) {
         frontPoints.emplace_back(chartMs(r, timing), chartAccuracy(r, accuracy));
+        spreads.push_back(benchTimeSpread(r, timing == ChartTiming::Lookup));
     }
-    L.front = paretoFront(frontPoints, PARETO_ERROR_TOLERANCE);
+    L.front = paretoFrontWithSpread(frontPoints, spreads, PARETO_ERROR_TOLERANCE);
 }
 
 // The order labels are placed in: the front's first, then the kept rows', then the rest.
@@ -422,8 +430,8 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
     add({pad, std::round(pad * 0.6f) + titleH}, TextAlign::Left, L.subtitlePx, "chart-subtitle",
         text.subtitle);
     // The y axis's name above it (the canvas draws no rotated text).
-    add({L.plot.x, std::round(pad * 0.6f) + titleH + subH + 4.0f * s}, TextAlign::Left, L.axisPx,
-        "chart-axis", text.yLabel);
+    add({L.plot.x, std::round(pad * 0.6f) + titleH + 2.0f * subH + 4.0f * s}, TextAlign::Left,
+        L.axisPx, "chart-axis", text.yLabel);
     for (const ChartTick& t : L.xTicks) {
         if (t.text.empty()) continue;
         add({std::round(t.pixel) + 0.5f, L.plot.bottom() + 5.0f * s}, TextAlign::Center, L.tickPx,
@@ -450,7 +458,7 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
             .method = m;
         y += lineH;
     }
-    add({textX, y}, TextAlign::Left, L.legendPx, "chart-legend", "Pareto front");
+    add({textX, y}, TextAlign::Left, L.legendPx, "chart-legend", FRONT_LEGEND);
     for (size_t k = 0; L.noisyNote && k < L.noisyLines.size(); ++k) {
         y += lineH;
         add({textX, y}, TextAlign::Left, L.legendPx, "chart-legend", L.noisyLines[k]);
