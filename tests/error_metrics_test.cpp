@@ -137,23 +137,6 @@ TEST(Pareto, KeepsExactlyThePointsNothingBeatsOnBothCounts) {
     EXPECT_EQ(paretoFront(hair, 1e-6), (std::vector<size_t>{0, 2, 3}));
 }
 
-TEST(Pareto, TimesWhoseSpreadsOverlapTieSoANoisyPointCannotLeadTheFront) {
-    // The case: the fastest median (1 ms) has a spread of 0.6 - 20 ms.
-    std::vector<glm::dvec2> pts = {{1.0, 0.5}, {2.0, 0.3}, {5.0, 0.1}, {4.0, 0.35}};
-    std::vector<glm::dvec2> spread = {{0.6, 20.0}, {1.9, 2.1}, {4.9, 5.1}, {3.9, 4.1}};
-    // On medians alone the wild point leads the front.
-    EXPECT_EQ(paretoFront(pts), (std::vector<size_t>{0, 1, 2}));
-    // With its spread it ties with every point up to 20 ms, and they are more accurate.
-    EXPECT_EQ(paretoFrontWithSpread(pts, spread), (std::vector<size_t>{1, 2}));
-    // Separated spreads: the faster point stays even though the slower is more accurate.
-    std::vector<glm::dvec2> tight = {{0.9, 1.1}, {1.9, 2.1}, {4.9, 5.1}, {3.9, 4.1}};
-    EXPECT_EQ(paretoFrontWithSpread(pts, tight), (std::vector<size_t>{0, 1, 2}));
-    // Zero spreads: the plain front.
-    std::vector<glm::dvec2> none;
-    for (glm::dvec2 p : pts) none.emplace_back(p.x, p.x);
-    EXPECT_EQ(paretoFrontWithSpread(pts, none), paretoFront(pts));
-}
-
 std::vector<BenchRow> sampleRows() {
     std::vector<BenchRow> rows;
     auto add = [&](int method, int kernel, int map, double ms, double edge) {
@@ -410,7 +393,7 @@ TEST(SpeedChart, StandAloneTextIsAtLeast14PxWithoutOverlap) {
     text.minFontPx = STANDALONE_CHART_MIN_PX;
     const glm::ivec2 size{1280, 720};
     SpeedChartLayout L = layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
-                                          {}, text.minFontPx);
+                                          {}, text.minFontPx, false, 2);
     std::vector<ChartTextBox> boxes = speedChartTextBoxes(L, text);
     std::string subtitle;
     for (const ChartTextBox& b : boxes) {

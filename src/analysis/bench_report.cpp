@@ -133,19 +133,12 @@ std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& so
     return rows;
 }
 
-glm::dvec2 benchTimeSpread(const BenchRow& row, bool byLookup) {
-    double ms = byLookup ? row.lookupMs : row.gpuMs;
-    double iqr = byLookup ? row.lookupMsIqr : row.gpuMsIqr;
-    return {ms - 0.5 * iqr, ms + 0.5 * iqr};
-}
-
 std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows, bool byLookup) {
-    std::vector<glm::dvec2> points, spreads;
+    std::vector<glm::dvec2> points;
     for (const BenchRow& r : rows) {
         points.emplace_back(byLookup ? r.lookupMs : r.gpuMs, r.error.edgeRmse);
-        spreads.push_back(benchTimeSpread(r, byLookup));
     }
-    return paretoFrontWithSpread(points, spreads, PARETO_ERROR_TOLERANCE);
+    return paretoFront(points, PARETO_ERROR_TOLERANCE);
 }
 
 double noisyShare(std::span<const BenchRow> rows) {

@@ -86,13 +86,8 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
 // (and bilinear2x2 and hw2x2) compute one filter, and their errors differ by float rounding.
 constexpr double PARETO_ERROR_TOLERANCE = 1e-6;
 
-// A row's time as the measurement knows it: median -+ half the IQR (the chart's bar), in ms, of
-// the camera pass or (byLookup) the bare lookup pass.
-glm::dvec2 benchTimeSpread(const BenchRow& row, bool byLookup);
-
-// Indices of the rows on the Pareto front of (gpu_ms, edge_rmse), cheapest first; of
-// (lookup_ms, edge_rmse) when byLookup. Times whose spreads (benchTimeSpread) overlap tie
-// (pareto.h: paretoFrontWithSpread), so a noisy time cannot put a row on the front.
+// Indices of the rows on the Pareto front of (gpu_ms, edge_rmse), cheapest first (pareto.h);
+// of (lookup_ms, edge_rmse) when byLookup.
 std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows, bool byLookup = false);
 
 }  // namespace pcf

@@ -34,26 +34,4 @@ std::vector<size_t> paretoFront(std::span<const glm::dvec2> points, double yTole
     return front;
 }
 
-std::vector<size_t> paretoFrontWithSpread(std::span<const glm::dvec2> points,
-                                          std::span<const glm::dvec2> xSpread, double yTolerance) {
-    auto beats = [&](size_t q, size_t p) {
-        bool left = xSpread[q].y < xSpread[p].x;
-        bool overlap = !left && !(xSpread[p].y < xSpread[q].x);
-        if (left) return points[q].y <= points[p].y + yTolerance;
-        return overlap && points[q].y < points[p].y - yTolerance;
-    };
-    std::vector<size_t> front;
-    for (size_t p = 0; p < points.size(); ++p) {
-        bool beaten = false;
-        for (size_t q = 0; q < points.size() && !beaten; ++q) beaten = q != p && beats(q, p);
-        if (!beaten) front.push_back(p);
-    }
-    std::sort(front.begin(), front.end(), [&](size_t a, size_t b) {
-        if (points[a].x != points[b].x) return points[a].x < points[b].x;
-        if (points[a].y != points[b].y) return points[a].y < points[b].y;
-        return a < b;
-    });
-    return front;
-}
-
 }  // namespace pcf

@@ -15,14 +15,4 @@ namespace pcf {
 // Sorted by x ascending (then y): the order the front is drawn in, x rising and y falling.
 std::vector<size_t> paretoFront(std::span<const glm::dvec2> points, double yTolerance = 0.0);
 
-// The front when each x is known only within a spread xSpread[i] = (lo, hi) around it (a timing's
-// IQR bar). Two points whose spreads overlap are equally fast as far as the measurement can tell:
-// of those, the one with the lower y (by more than yTolerance) beats the other. q beats p on x
-// only when q's whole spread lies left of p's (q.hi < p.lo), and then when q.y <= p.y +
-// yTolerance. So a point whose spread runs over a decade is on the front only when nothing that
-// fast is more accurate. The front's y falls (within the tolerance) as x rises. Sorted by x.
-std::vector<size_t> paretoFrontWithSpread(std::span<const glm::dvec2> points,
-                                          std::span<const glm::dvec2> xSpread,
-                                          double yTolerance = 0.0);
-
 }  // namespace pcf

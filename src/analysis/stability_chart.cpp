@@ -21,6 +21,13 @@ float scaleFor(glm::ivec2 size) {
     return std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
 }
 
+// The next tick step up from `step` (0.2 -> 0.25 -> 0.5 -> 1, or the next round one): where the
+// plot is too short for labels a line apart.
+double widerTickStep(double step) {
+    if (std::abs(step - 0.2) < 1e-9) return 0.25;
+    return chartNiceStep(step * 1.5);
+}
+
 // A type size at scale s, not below minPx (the chart's floor: 8, or a lesson frame's).
 float px(float base, float s, float minPx) { return std::max(minPx, std::round(base * s)); }
 
@@ -208,7 +215,12 @@ void paintPanelGrid(Painter& c, const PanelPlot& pp, const ChartPanel& panel, fl
     const LineChartSpec& spec = pp.spec;
     float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
     float stroke = std::max(1.0f, std::round(s));
-    for (double y = spec.yFloor; y <= pp.axes.yTop + 0.5 * pp.axes.yStep; y += pp.axes.yStep) {
+    // Fewer ticks where the panel is short: no two labels closer than a line.
+    double yStep = pp.axes.yStep, range = pp.axes.yTop - spec.yFloor;
+    while (plot.h * yStep / range < tickH + 1.0f && yStep < range) {
+        yStep = widerTickStep(yStep);
+    }
+    for (double y = spec.yFloor; y <= pp.axes.yTop + 0.5 * yStep; y += yStep) {
         float py = std::round(pp.yPixel(y)) + 0.5f;
         c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
         c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, spec.percentY),
@@ -267,9 +279,11 @@ void paintPanel(Painter& c, const LineChartSpec& spec, const LineAxes& axes,
     float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
     float titleH = fontMetrics(FontFace::Sans, px(14, s, mn)).lineHeight;
     float left = std::max(58.0f * s, yTickRoom(s, tickFont));
-    Rect plot{std::round(cell.x + left), std::round(cell.y + titleH + 4.0f * s),
+    // The top tick's label reaches half a line above the plot: the panel's title stays clear.
+    float titleRoom = titleH + std::max(4.0f * s, 0.5f * tickH + 2.0f);
+    Rect plot{std::round(cell.x + left), std::round(cell.y + titleRoom),
               std::round(cell.w - left - 12.0f * s),
-              std::round(cell.h - titleH - 1.5f * tickH - 18.0f * s)};
+              std::round(cell.h - titleRoom - 1.5f * tickH - 14.0f * s)};
     if (plot.w < 8.0f || plot.h < 8.0f) return;
     c.text({plot.centre().x, cell.y}, panel.title,
            {FontFace::Sans, px(14, s, mn), CHART_INK, TextAlign::Center}, "chart-title");
@@ -327,11 +341,14 @@ void paintLineChart(const LineChartSpec& spec, glm::ivec2 size, Painter& c) {
         legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
     }
     legendW = std::round(legendW + 48.0f * s);
-    c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
-    top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
-    float bottomText = fontMetrics(FontFace::Sans, axisFont).lineHeight + 6.0f * s;
-    Rect area{0.0f, top, size.x - legendW - 20.0f * s, size.y - top - bottomText};
-    c.text({area.centre().x, area.bottom() + 2.0f * s}, spec.xLabel,
+    Rect yName = c.text({12.0f * s, top}, wrapLines(spec.yLabel, axisFont, size.x - 24.0f * s),
+                        {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
+    top = yName.bottom() + 4.0f * s;
+    float areaW = size.x - legendW - 20.0f * s;
+    std::string xName = wrapLines(spec.xLabel, axisFont, areaW - 8.0f * s);
+    float bottomText = measureText(FontFace::Sans, axisFont, xName).y + 6.0f * s;
+    Rect area{0.0f, top, areaW, size.y - top - bottomText};
+    c.text({area.centre().x, area.bottom() + 2.0f * s}, xName,
            {FontFace::Sans, axisFont, CHART_INK, TextAlign::Center}, "chart-axis");
 
     // The panels in a grid of cells: one row of up to two, then two or three columns.
@@ -513,8 +530,9 @@ void paintBarChart(const BarChartSpec& spec, glm::ivec2 size, Painter& c) {
     BarAxis axis = barAxisOf(spec);
     float top = drawHeader(c, s, mn, static_cast<float>(size.x), spec.title, spec.subtitle);
     float tickFont = px(12, s, mn), axisFont = px(14, s, mn), legendFont = px(13, s, mn);
-    c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
-    top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
+    Rect yName = c.text({12.0f * s, top}, wrapLines(spec.yLabel, axisFont, size.x - 24.0f * s),
+                        {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
+    top = yName.bottom() + 4.0f * s;
     float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
     float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
     float legendW = 0.0f;
@@ -533,6 +551,10 @@ void paintBarChart(const BarChartSpec& spec, glm::ivec2 size, Painter& c) {
     Rect plot{std::round(left), std::round(top), plotW,
               std::round(size.y - top - labelsH - 16.0f * s)};
     float stroke = std::max(1.0f, std::round(s));
+    // Fewer ticks where the plot is short: no two labels closer than a line.
+    while (plot.h * axis.yStep / axis.yTop < tickH + 1.0f && axis.yStep < axis.yTop) {
+        axis.yStep = widerTickStep(axis.yStep);
+    }
     for (double y = 0.0; y <= axis.yTop + 0.5 * axis.yStep; y += axis.yStep) {
         float py = std::round(plot.bottom() - static_cast<float>(y / axis.yTop) * plot.h) + 0.5f;
         c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);

@@ -105,17 +105,17 @@ std::string stabilityChartSubtitle(std::span<const StabilityRow> rows, Sweep swe
     std::string frame = std::to_string(s.frameSize.x) + "x" + std::to_string(s.frameSize.y) +
                         " frame, map " + std::to_string(s.mapSize) + "^2";
     // Every mode but none subtracts the constant bias (kernel/bias.h: baseBias).
-    std::string bias =
-        sweep == Sweep::Leak ? "the constant bias is the x axis (every mode but none subtracts it)"
-        : sweep == Sweep::Precision
-            ? "constant bias " + gText(s.constantBias) +
-                  " at depth range 1, divided by the range (fixed in world units)"
-            : "constant bias " + gText(s.constantBias) + " (every mode but none subtracts it)";
+    std::string bias = sweep == Sweep::Leak
+                           ? "the constant bias is the x axis (every mode but none subtracts it)"
+                       : sweep == Sweep::Precision
+                           ? "constant bias " + gText(s.constantBias) +
+                                 " at depth range 1, divided by the range (fixed in world units)"
+                           : "constant bias " + gText(s.constantBias);
     // The heat map depends on the camera and the light's fit alone, no bias or depth format.
     std::string line1 = sweep == Sweep::Aliasing ? where + ", " + frame
                                                  : where + ", " + frame + "; " + bias + "; cull " +
                                                        s.cull + ", depth " + s.depthFormat;
-    return line1 + "\n" + chartRendererLine(s.glRenderer) + "; " + source;
+    return line1 + "\n" + chartRendererLine(s.glRenderer);
 }
 
 LineChartSpec acneChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
@@ -270,8 +270,8 @@ BarChartSpec shimmerChartSpec(std::span<const StabilityRow> rows, const std::str
                  gText(edgePixels) + " pixels for every bar";
     spec.subtitle = stabilityChartSubtitle(rows, Sweep::Shimmer, subtitle);
     spec.yLabel =
-        "99th percentile over the edge pixels of each one's largest change between "
-        "frames (edge: not clean lit, so acne on the lit ground is left out)";
+        "an edge pixel's largest jump between frames, 99th percentile over the edge pixels "
+        "(acne on the lit ground left out)";
     spec.series = {"texel grid slid 1/32 texel a frame", "the same, snapped to whole texels",
                    "camera slid by sub-pixel steps (error change)"};
     for (const StabilityMethod& m : methods) {

@@ -32,8 +32,9 @@ void markCoincidentLines(LineChartSpec& spec);
 
 // The lines under a stability chart's title: the scene, frame, map and bias settings the rows
 // were measured with and the renderer (from the rows' setup, stability_report.h), and for
-// llvmpipe what carries over to a GPU (chart_axes.h: chartRendererLine); then `source` (e.g.
-// "pcfscope stability"). Only `source` when the rows carry no setup.
+// llvmpipe what carries over to a GPU (chart_axes.h: chartRendererLine). `source` (e.g.
+// "measured by pcfscope stability, stability.csv") only when the rows carry no setup: the setup
+// says it all, and a lesson's smaller chart keeps the room for its plot.
 std::string stabilityChartSubtitle(std::span<const StabilityRow> rows, Sweep sweep,
                                    const std::string& source);
 
