@@ -285,6 +285,7 @@ class BenchRun {
         // One untimed draw of each timed pass: compiles its programs before the rounds.
         row.timer = mRenderer.timeCameraPass(s, 1).timer;
         mLookupPass.draw(s.pcfParams(), s.rotatePerPixel, s.biasParams().kernelBias());
+        if (mOptions.reference) mLookupPass.drawReference(s.pcfParams());
         glFinish();
         row.cpuNsPerPixel = timeCpuKernel(map(mMaps, p.mapSize), mCpuLookups, s.pcfParams(),
                                           mOptions.cpuPasses, mOptions.cpuThreads)
@@ -341,13 +342,33 @@ class BenchRun {
         return shimmerStats(frames, mRegions.compared);
     }
 
-    struct TimingSamples {
-        std::vector<std::vector<double>> scene, lookup, sceneCpu, lookupCpu;
-        explicit TimingSamples(size_t n) : scene(n), lookup(n), sceneCpu(n), lookupCpu(n) {}
+    // One pass's samples of one point: wall clock, and process CPU time on software GL.
+    struct PassSamples {
+        std::vector<double> wall;
+        std::vector<double> cpu;
+        void add(const TimingResult& t) {
+            wall.push_back(t.samplesMs.front());
+            cpu.insert(cpu.end(), t.cpuSamplesMs.begin(), t.cpuSamplesMs.end());
+        }
+    };
+    struct PointSamples {
+        PassSamples scene, lookup, reference;
     };
 
+    // One sample of each of the point's passes, back to back.
+    void timePoint(const RenderSettings& s, PointSamples& samples) {
+        samples.scene.add(mRenderer.timeCameraPass(s, 1, false));
+        PcfParams prm = s.pcfParams();
+        PcfBias bias = s.biasParams().kernelBias();
+        samples.lookup.add(
+            timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel, bias); }, 1, false));
+        if (mOptions.reference) {
+            samples.reference.add(timeGpu([&] { mLookupPass.drawReference(prm); }, 1, false));
+        }
+    }
+
     // One timing round: each point of `order` once, in that order.
-    void timeRound(const std::vector<size_t>& order, TimingSamples& t) {
+    void timeRound(const std::vector<size_t>& order, std::vector<PointSamples>& samples) {
         mCurrentMap = -1;
         for (size_t k : order) {
             const BenchPoint& p = mPoints[k];
@@ -358,22 +379,12 @@ class BenchRun {
                 glFinish();
                 mCurrentMap = p.mapSize;
             }
-            TimingResult scene = mRenderer.timeCameraPass(s, 1, false);
-            PcfParams prm = s.pcfParams();
-            PcfBias bias = s.biasParams().kernelBias();
-            TimingResult lookup =
-                timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel, bias); }, 1, false);
-            t.scene[k].push_back(scene.samplesMs.front());
-            t.lookup[k].push_back(lookup.samplesMs.front());
-            t.sceneCpu[k].insert(t.sceneCpu[k].end(), scene.cpuSamplesMs.begin(),
-                                 scene.cpuSamplesMs.end());
-            t.lookupCpu[k].insert(t.lookupCpu[k].end(), lookup.cpuSamplesMs.begin(),
-                                  lookup.cpuSamplesMs.end());
+            timePoint(s, samples[k]);
         }
     }
 
-    static bool noisyTimes(const TimingSamples& t, size_t k) {
-        Quartiles scene = quartilesOf(t.scene[k]), lookup = quartilesOf(t.lookup[k]);
+    static bool noisyTimes(const PointSamples& s) {
+        Quartiles scene = quartilesOf(s.scene.wall), lookup = quartilesOf(s.lookup.wall);
         return scene.iqr() > NOISY_IQR_SHARE * scene.median ||
                lookup.iqr() > NOISY_IQR_SHARE * lookup.median;
     }
@@ -382,29 +393,35 @@ class BenchRun {
     // points that came out noisy as many rounds again, round-robin among themselves, before
     // they are flagged: a busy spell of the machine during the first rounds is not the point's.
     void timeRounds() {
-        TimingSamples t(mPoints.size());
+        std::vector<PointSamples> samples(mPoints.size());
         for (int round = 0; round < mOptions.gpuRepeats; ++round) {
             if (mContext.roundProgress) mContext.roundProgress(round, mOptions.gpuRepeats);
-            timeRound(mOrder, t);
+            timeRound(mOrder, samples);
         }
         std::vector<size_t> again;
         for (size_t k : mOrder) {
-            if (noisyTimes(t, k)) again.push_back(k);
+            if (noisyTimes(samples[k])) again.push_back(k);
         }
         for (int round = 0; round < mOptions.gpuRepeats && !again.empty(); ++round) {
-            timeRound(again, t);
+            timeRound(again, samples);
         }
         for (size_t k = 0; k < mPoints.size(); ++k) {
             BenchRow& row = mRows[k];
-            Quartiles scene = quartilesOf(t.scene[k]);
-            Quartiles lookup = quartilesOf(t.lookup[k]);
+            Quartiles scene = quartilesOf(samples[k].scene.wall);
+            Quartiles lookup = quartilesOf(samples[k].lookup.wall);
             row.gpuMs = scene.median;
             row.gpuMsIqr = scene.iqr();
             row.lookupMs = lookup.median;
             row.lookupMsIqr = lookup.iqr();
-            row.gpuCpuMs = medianOf(t.sceneCpu[k]);
-            row.lookupCpuMs = medianOf(t.lookupCpu[k]);
-            row.noisy = noisyTimes(t, k);
+            row.gpuCpuMs = medianOf(samples[k].scene.cpu);
+            row.lookupCpuMs = medianOf(samples[k].lookup.cpu);
+            row.noisy = noisyTimes(samples[k]);
+            if (mOptions.reference) {
+                Quartiles reference = quartilesOf(samples[k].reference.wall);
+                row.referenceMs = reference.median;
+                row.referenceMsIqr = reference.iqr();
+                row.referenceCpuMs = medianOf(samples[k].reference.cpu);
+            }
         }
     }
 };
