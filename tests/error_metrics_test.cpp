@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "analysis/bench_report.h"
+#include "analysis/chart_axes.h"
 #include "analysis/difference_image.h"
 #include "analysis/pareto.h"
 #include "analysis/speed_chart.h"
@@ -374,6 +375,41 @@ TEST(SpeedChart, DrawsTheRequestedSizeWithEachMethodsColour) {
     size_t dark = 0;
     for (size_t k = 0; k < rgba.size(); k += 4) dark += rgba[k] < 100 && rgba[k + 1] < 100;
     EXPECT_GT(dark, 500u);  // text, axes, the front
+}
+
+// The chart `bench` writes, from the repository's own default run (lessons/figures/bench.csv):
+// at the default 1280x720 every text is at least 14 px, inside the chart, and none overlaps
+// another; the subtitle says the renderer and, for llvmpipe, what carries over.
+TEST(SpeedChart, StandAloneTextIsAtLeast14PxWithoutOverlap) {
+    std::ifstream in(std::string(PCFSCOPE_SOURCE_DIR) + "/lessons/figures/bench.csv");
+    std::string csv((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<BenchRow> rows = parseBenchCsv(csv, "bench.csv");
+    ASSERT_GT(rows.size(), 10u);
+    SpeedChartText text;
+    text.title = "Speed against accuracy: box-on-plane, 1280x720";
+    text.subtitle = chartRendererLine("llvmpipe (LLVM 15.0.6, 256 bits)") +
+                    "\nmedian of 9 round-robin samples, glFinish+steady_clock; bars: IQR; ! noisy "
+                    "(IQR > 10 % of median)";
+    text.minFontPx = STANDALONE_CHART_MIN_PX;
+    const glm::ivec2 size{1280, 720};
+    SpeedChartLayout L = layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
+                                          {}, text.minFontPx, false, 2);
+    std::vector<ChartTextBox> boxes = speedChartTextBoxes(L, text);
+    std::string subtitle;
+    for (const ChartTextBox& b : boxes) {
+        EXPECT_GE(b.fontPx, STANDALONE_CHART_MIN_PX) << b.role << " '" << b.text << "'";
+        EXPECT_GE(b.rect.x, 0.0f) << b.text;
+        EXPECT_LE(b.rect.right(), size.x) << b.text;
+        EXPECT_LE(b.rect.bottom(), size.y) << b.text;
+        if (b.role == "chart-subtitle") subtitle = b.text;
+    }
+    EXPECT_NE(subtitle.find(LLVMPIPE_NOTE), std::string::npos) << subtitle;
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        for (size_t j = i + 1; j < boxes.size(); ++j) {
+            EXPECT_TRUE(boxes[i].rect.intersect(boxes[j].rect).empty())
+                << "'" << boxes[i].text << "' overlaps '" << boxes[j].text << "'";
+        }
+    }
 }
 
 }  // namespace

@@ -64,6 +64,27 @@ TEST_F(Stability, NearestShimmersMoreThanGather5x5AndSnappingStillsBoth) {
     EXPECT_LT(gather, 0.5 * nearest);
     EXPECT_GT(gather, 0.0);
     EXPECT_GT(value(rows, "shimmer", GATHER5, "constant", "light_mean", step), 0.0);
+    // The chart's statistic stands on one population for every bar: the same edge pixels (and
+    // the same lit ground) for both methods, the lit ground never empty, and with back faces in
+    // the map nothing on it flickers (no acne): the change there is nil.
+    double edge = value(rows, "shimmer", NEAREST, "constant", "light_edge_pixels", step);
+    double lit = value(rows, "shimmer", NEAREST, "constant", "light_lit_pixels", step);
+    EXPECT_GT(edge, 100.0);
+    EXPECT_GT(lit, 100.0);
+    for (const char* prefix : {"light_", "snapped_"}) {
+        EXPECT_EQ(
+            value(rows, "shimmer", GATHER5, "constant", std::string(prefix) + "edge_pixels", step),
+            edge);
+        EXPECT_EQ(
+            value(rows, "shimmer", GATHER5, "constant", std::string(prefix) + "lit_pixels", step),
+            lit);
+    }
+    EXPECT_LT(value(rows, "shimmer", NEAREST, "constant", "light_lit_mean", step), 1e-4);
+    // On that one population a hard edge's pixels jump by 1, the 5x5 ramp's by far less.
+    double nearestPeak = value(rows, "shimmer", NEAREST, "constant", "light_edge_peak_p99", step);
+    EXPECT_GT(nearestPeak, 0.9);
+    EXPECT_LT(value(rows, "shimmer", GATHER5, "constant", "light_edge_peak_p99", step),
+              0.5 * nearestPeak);
     // Snapped: every frame's map is the same map moved by whole texels. What is left is the
     // rasteriser's rounding, far below what 8 bits of colour can show.
     for (const StabilityMethod& m : {NEAREST, GATHER5}) {

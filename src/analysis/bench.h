@@ -26,7 +26,9 @@
 // gpuRepeats rounds, each taking one sample of every point's camera pass and lookup pass, so a
 // burst of load from elsewhere lands on every method alike instead of on whichever ran during
 // it. Per point the median and the interquartile range of its samples (gpu_timer.h
-// quartilesOf); a point is `noisy` when either IQR exceeds NOISY_IQR_SHARE of its median.
+// quartilesOf). A point whose IQR exceeds NOISY_IQR_SHARE of its median after those rounds is
+// timed gpuRepeats rounds more (round-robin among such points), and is `noisy` only when either
+// IQR over all its samples still does: a busy spell of the machine is not the point's noise.
 #pragma once
 
 #include <functional>

@@ -179,7 +179,8 @@ std::string methodsNote(const BenchSetup& setup, const std::string& timer,
     md += "Measured on `" + setup.glRenderer + "` (OpenGL " + setup.glVersion + "). ";
     md += "Times are medians (with the interquartile range) of " +
           std::to_string(setup.gpuRepeats) +
-          " samples per point, taken round-robin: each round times every point once. Scene ms "
+          " samples per point, taken round-robin: each round times every point once; a point "
+          "noisy after them gets as many rounds again before it is marked noisy. Scene ms "
           "is a colour-only camera pass at " +
           frame +
           "; lookup ms is the filter alone, the kernel as a bare full-screen pass over the "

@@ -21,4 +21,12 @@ std::string chartTickText(double v, bool percent) {
     return buf;
 }
 
+std::string chartRendererLine(const std::string& glRenderer) {
+    std::string line = "rendered on " + glRenderer;
+    if (glRenderer.find("llvmpipe") != std::string::npos) {
+        line += " (" + std::string(LLVMPIPE_NOTE) + ")";
+    }
+    return line;
+}
+
 }  // namespace pcf

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "draw/canvas.h"
@@ -17,6 +18,16 @@ inline const Colour CHART_WHITE{1.0f, 1.0f, 1.0f, 1.0f};        // the backgroun
 inline const Colour CHART_INK{0.13f, 0.13f, 0.15f, 1.0f};       // titles, labels, legend
 inline const Colour CHART_SOFT_INK{0.35f, 0.35f, 0.38f, 1.0f};  // subtitles, ticks, frames
 inline const Colour CHART_GRID{0.88f, 0.88f, 0.9f, 1.0f};       // grid lines
+
+// The stand-alone charts (the PNGs `stability` and `bench` write) draw no text smaller than this:
+// readable when the PNG is projected or printed at its own size (issue 19: 11 px was not).
+constexpr float STANDALONE_CHART_MIN_PX = 14.0f;
+
+// What a chart says of the renderer it was measured on: "rendered on NAME" (GL_RENDERER), and for
+// Mesa's llvmpipe, a CPU rasteriser, " (LLVMPIPE_NOTE)".
+inline constexpr std::string_view LLVMPIPE_NOTE =
+    "llvmpipe: a CPU rasteriser, ratios carry over, milliseconds do not";
+std::string chartRendererLine(const std::string& glRenderer);
 
 // A round step (1, 2 or 5 times a power of ten) at or above `rough` (> 0).
 double chartNiceStep(double rough);

@@ -126,6 +126,50 @@ double meanOf(const std::vector<float>& values) {
     return s / static_cast<double>(values.size());
 }
 
+LeakWidth leakWidth(const std::vector<float>& visibility, const std::vector<uint8_t>& cleanUmbra,
+                    const std::vector<float>& texels, const std::vector<float>& world,
+                    glm::ivec2 size, int minRun) {
+    size_t n = static_cast<size_t>(size.x) * static_cast<size_t>(size.y);
+    std::vector<uint8_t> seen(n, 0);
+    auto leaking = [&](size_t k) { return cleanUmbra[k] && visibility[k] > LEAK_LEVEL; };
+    LeakWidth out;
+    std::vector<size_t> run, stack;
+    for (size_t start = 0; start < n; ++start) {
+        if (seen[start] || !leaking(start)) continue;
+        // One connected run, flood-filled over the 8 neighbours.
+        run.clear();
+        stack.assign(1, start);
+        seen[start] = 1;
+        while (!stack.empty()) {
+            size_t k = stack.back();
+            stack.pop_back();
+            run.push_back(k);
+            int x = static_cast<int>(k % size.x), y = static_cast<int>(k / size.x);
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= size.x || ny >= size.y) continue;
+                    size_t q = static_cast<size_t>(ny) * size.x + static_cast<size_t>(nx);
+                    if (seen[q] || !leaking(q)) continue;
+                    seen[q] = 1;
+                    stack.push_back(q);
+                }
+            }
+        }
+        int count = static_cast<int>(run.size());
+        if (count < minRun) {
+            out.stray += count;
+            continue;
+        }
+        out.support += count;
+        for (size_t k : run) {
+            out.texels = std::max(out.texels, static_cast<double>(texels[k]));
+            out.world = std::max(out.world, static_cast<double>(world[k]));
+        }
+    }
+    return out;
+}
+
 ShimmerStats shimmerStats(const std::vector<std::vector<float>>& frames,
                           const std::vector<uint8_t>& compared) {
     ShimmerStats s;
@@ -140,15 +184,21 @@ ShimmerStats shimmerStats(const std::vector<std::vector<float>>& frames,
         }
         flickering += flickers[k];
     }
-    std::vector<float> changes, flickerChanges;
+    std::vector<float> changes, flickerChanges, peak(compared.size(), 0.0f);
     for (size_t t = 1; t < frames.size(); ++t) {
         for (size_t k = 0; k < compared.size(); ++k) {
             if (!compared[k]) continue;
             float d = std::abs(frames[t][k] - frames[t - 1][k]);
             changes.push_back(d);
+            peak[k] = std::max(peak[k], d);
             if (flickers[k]) flickerChanges.push_back(d);
         }
     }
+    std::vector<float> peaks;
+    for (size_t k = 0; k < compared.size(); ++k) {
+        if (compared[k]) peaks.push_back(peak[k]);
+    }
+    s.peakP99 = quantileOf(peaks, 0.99);
     s.flickerShare = comparedCount > 0 ? static_cast<double>(flickering) / comparedCount : 0.0;
     s.mean = meanOf(changes);
     s.flickerMean = meanOf(flickerChanges);

@@ -185,8 +185,9 @@ double layoutYRange(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartAc
 // The plot's and the legend's rectangles: the title above, the y tick labels on the left, the
 // legend on the right and the x ticks and name below.
 void layoutFrame(SpeedChartLayout& L, const Fonts& f, float s, double yStep, glm::vec2 legendSize) {
+    // The subtitle's lines (the stand-alone chart's: the renderer, then how it was timed).
     float titleH = fontMetrics(FontFace::Sans, f.title).lineHeight +
-                   fontMetrics(FontFace::Sans, f.subtitle).lineHeight +
+                   L.subtitleLines * fontMetrics(FontFace::Sans, f.subtitle).lineHeight +
                    fontMetrics(FontFace::Sans, f.axis).lineHeight + 14.0f * s;
     float yTickW = 0.0f;
     for (double v = 0.0; v <= L.yHi + 0.5 * yStep; v += yStep) {
@@ -367,12 +368,13 @@ void placeLabels(SpeedChartLayout& L, std::span<const BenchRow> rows,
 SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                   ChartTiming timing, ChartAccuracy accuracy,
                                   std::span<const size_t> keepLabels, float minFontPx,
-                                  bool keptLabelsOnly) {
+                                  bool keptLabelsOnly, int subtitleLines) {
     if (size.x < 64 || size.y < 64) {
         throw std::invalid_argument("layoutSpeedChart: the chart needs at least 64 x 64 pixels");
     }
     SpeedChartLayout L;
     L.size = size;
+    L.subtitleLines = std::max(1, subtitleLines);
     float s = std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
     L.scale = s;
     Fonts f = fontsFor(s, minFontPx);
@@ -422,8 +424,8 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
     add({pad, std::round(pad * 0.6f) + titleH}, TextAlign::Left, L.subtitlePx, "chart-subtitle",
         text.subtitle);
     // The y axis's name above it (the canvas draws no rotated text).
-    add({L.plot.x, std::round(pad * 0.6f) + titleH + subH + 4.0f * s}, TextAlign::Left, L.axisPx,
-        "chart-axis", text.yLabel);
+    add({L.plot.x, std::round(pad * 0.6f) + titleH + L.subtitleLines * subH + 4.0f * s},
+        TextAlign::Left, L.axisPx, "chart-axis", text.yLabel);
     for (const ChartTick& t : L.xTicks) {
         if (t.text.empty()) continue;
         add({std::round(t.pixel) + 0.5f, L.plot.bottom() + 5.0f * s}, TextAlign::Center, L.tickPx,
@@ -568,8 +570,10 @@ void drawTexts(Canvas& c, std::span<const ChartTextBox> texts, std::span<const B
 std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                     const SpeedChartText& text, ChartTiming timing,
                                     ChartAccuracy accuracy) {
+    int subtitleLines =
+        1 + static_cast<int>(std::count(text.subtitle.begin(), text.subtitle.end(), '\n'));
     SpeedChartLayout L = layoutSpeedChart(rows, size, timing, accuracy, text.highlight,
-                                          text.minFontPx, text.keptLabelsOnly);
+                                          text.minFontPx, text.keptLabelsOnly, subtitleLines);
     std::vector<ChartTextBox> texts = speedChartTextBoxes(L, text);
 
     return drawChartOffscreen(size, [&](Canvas& c) {

@@ -67,6 +67,7 @@ struct ChartTextBox {
 struct SpeedChartLayout {
     glm::ivec2 size{0, 0};
     float scale = 1.0f;                 // 1 at 1280x720; fonts and strokes grow with it
+    int subtitleLines = 1;              // the room the title leaves under it for the subtitle
     Rect plot;                          // the plotting area
     double xLogLo = 0.0, xLogHi = 1.0;  // log10(ms) at the plot's left and right edges
     double yLo = 0.0, yHi = 1.0;        // RMSE at the plot's bottom and top edges
@@ -115,7 +116,7 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
                                   ChartTiming timing = ChartTiming::Scene,
                                   ChartAccuracy accuracy = ChartAccuracy::EdgeRmse,
                                   std::span<const size_t> keepLabels = {}, float minFontPx = 8.0f,
-                                  bool keptLabelsOnly = false);
+                                  bool keptLabelsOnly = false, int subtitleLines = 1);
 
 // Every text the chart draws (drawSpeedChart sets them where these say): the boxes a lesson
 // frame lists in its layout.

@@ -224,18 +224,17 @@ class Sweeper {
                         s.constantBias = b;
                         std::vector<float> vis = frame(renderer, s);
                         FailureRate leaks = falseLight(vis, umbra);
-                        float widthWorld = 0.0f, widthTexels = 0.0f;
-                        for (size_t k = 0; k < vis.size(); ++k) {
-                            if (!umbra[k] || vis[k] <= LEAK_LEVEL) continue;
-                            widthWorld = std::max(widthWorld, world[k]);
-                            widthTexels = std::max(widthTexels, texels[k]);
-                        }
+                        LeakWidth width = leakWidth(vis, umbra, texels, world, mOptions.frameSize);
                         add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_rate",
                             leaks.share);
                         add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_world",
-                            widthWorld);
+                            width.world);
                         add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_texels",
-                            widthTexels);
+                            width.texels);
+                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_support",
+                            width.support);
+                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_stray_pixels",
+                            width.stray);
                         add(Sweep::Leak, m, bias, "constant_bias", b, name + ":clean_umbra_pixels",
                             leaks.count);
                     }
@@ -258,6 +257,7 @@ class Sweeper {
         say("shimmer: ground truth");
         GroundTruth truth = truthOf(scene);
         ErrorRegions regions = regionsOf(renderer, truth);
+        ShimmerPopulations pop = shimmerPopulations(scene, renderer, truth, regions);
         // The fitted map, shrunk by 2 texels a side so that a shift of up to a texel and a half
         // never pushes the scene past the map's edge.
         float n = static_cast<float>(mOptions.mapSize);
@@ -281,6 +281,18 @@ class Sweeper {
                     ShimmerStats st = shimmerStats(frames, regions.compared);
                     std::string prefix = snap ? "snapped_" : "light_";
                     double step = 1.0 / SHIMMER_STEPS;
+                    ShimmerStats edge = shimmerStats(frames, pop.edge);
+                    ShimmerStats lit = shimmerStats(frames, pop.lit);
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "edge_mean",
+                        edge.mean);
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "edge_p99", edge.p99);
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "edge_peak_p99",
+                        edge.peakP99);
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "lit_mean", lit.mean);
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "edge_pixels",
+                        pop.edgeCount);
+                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "lit_pixels",
+                        pop.litCount);
                     add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "flicker_share",
                         st.flickerShare);
                     add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "flicker_mean",
@@ -293,12 +305,38 @@ class Sweeper {
                 }
             }
         }
-        cameraShimmer(scene);
+        cameraShimmer(scene, pop.edge);
+    }
+
+    // The two fixed populations of the shimmer sweep, the same pixels for every method and bias:
+    // the lit ground (clean lit at the widest footprint of the run: any change there is acne
+    // flickering) and the edges (every other compared pixel: in or near a real shadow).
+    struct ShimmerPopulations {
+        std::vector<uint8_t> edge, lit;
+        int edgeCount = 0, litCount = 0;
+    };
+    ShimmerPopulations shimmerPopulations(const Scene& scene, SceneRenderer& renderer,
+                                          const GroundTruth& truth,
+                                          const ErrorRegions& regions) const {
+        float reach = 0.0f;
+        for (const StabilityMethod& m : mOptions.methods) reach = std::max(reach, reachOf(m));
+        std::vector<std::optional<Hit>> hits =
+            centreHits(scene, mOptions.frameSize, mOptions.threads);
+        ShimmerPopulations p;
+        p.lit = cleanPixelMask(scene, truth, regions, hits, renderer.shadowClipFromWorld(),
+                               mOptions.mapSize, reach, true, mOptions.threads);
+        p.edge.assign(p.lit.size(), 0);
+        for (size_t k = 0; k < p.lit.size(); ++k) {
+            p.edge[k] = regions.compared[k] && !p.lit[k] ? 1 : 0;
+            p.edgeCount += p.edge[k];
+            p.litCount += p.lit[k];
+        }
+        return p;
     }
 
     // The camera slid right and up by 1/F pixel a frame (at the distance of its target); the
     // truth moves with it, so what counts is the change of the error e = v - truth.
-    void cameraShimmer(const Scene& scene) {
+    void cameraShimmer(const Scene& scene, const std::vector<uint8_t>& edge) {
         int frames = mOptions.cameraFrames;
         if (frames < 2) return;
         glm::ivec2 size = mOptions.frameSize;
@@ -310,7 +348,10 @@ class Sweeper {
                       std::tan(glm::radians(c0.fovYDeg) * 0.5f) / static_cast<float>(size.y);
         SceneRenderer renderer(scene);
         size_t combos = mOptions.biases.size() * mOptions.methods.size();
-        std::vector<std::vector<float>> changes(combos), previous(combos);
+        std::vector<std::vector<float>> changes(combos), previous(combos), edgeChanges(combos);
+        // Per pair and pixel, the largest change of the error (-1: never compared).
+        std::vector<std::vector<float>> edgePeak(
+            combos, std::vector<float>(static_cast<size_t>(size.x) * size.y, -1.0f));
         std::vector<uint8_t> previousMask;
         for (int t = 0; t < frames; ++t) {
             say("shimmer: camera frame " + std::to_string(t + 1) + "/" + std::to_string(frames));
@@ -325,6 +366,8 @@ class Sweeper {
             if (!previousMask.empty()) {
                 for (size_t k = 0; k < both.size(); ++k) both[k] &= previousMask[k];
             }
+            std::vector<uint8_t> bothEdge = both;
+            for (size_t k = 0; k < both.size(); ++k) bothEdge[k] &= edge[k];
             size_t c = 0;
             for (BiasMode bias : mOptions.biases) {
                 for (const StabilityMethod& m : mOptions.methods) {
@@ -332,6 +375,12 @@ class Sweeper {
                     std::vector<float> err = frame(renderer, settings(m, bias));
                     for (size_t k = 0; k < err.size(); ++k) err[k] -= truth.visibility[k];
                     if (t > 0) addChanges(err, previous[c], both, changes[c]);
+                    if (t > 0) addChanges(err, previous[c], bothEdge, edgeChanges[c]);
+                    for (size_t k = 0; t > 0 && k < err.size(); ++k) {
+                        if (!bothEdge[k]) continue;
+                        float d = std::abs(err[k] - previous[c][k]);
+                        edgePeak[c][k] = std::max(edgePeak[c][k], d);
+                    }
                     previous[c++] = std::move(err);
                 }
             }
@@ -345,6 +394,16 @@ class Sweeper {
                 add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_mean", meanOf(changes[c]));
                 add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_p99",
                     quantileOf(changes[c], 0.99));
+                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_edge_mean",
+                    meanOf(edgeChanges[c]));
+                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_edge_p99",
+                    quantileOf(edgeChanges[c], 0.99));
+                std::vector<float> peaks;
+                for (float p : edgePeak[c]) {
+                    if (p >= 0.0f) peaks.push_back(p);
+                }
+                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_edge_peak_p99",
+                    quantileOf(peaks, 0.99));
                 ++c;
             }
         }

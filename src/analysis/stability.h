@@ -12,8 +12,11 @@
 //              constant bias swept: the leak rate = share of the CLEAN UMBRA pixels (the truth
 //              says fully shadowed there and over the whole footprint, as above) where the
 //              method returns > 0.01, and the leak's width: the largest distance from the caster
-//              (its nearest point; on the ground that is the contact line) of a leaking pixel,
-//              in world units and in shadow-map texels (the two points' map positions apart).
+//              (its nearest point; on the ground that is the contact line) of a leaking pixel
+//              that lies in a connected run of at least LEAK_MIN_RUN leaking pixels (so one
+//              stray pixel cannot set it; failure_measures.h says why 8), in world units and in
+//              shadow-map texels (the two points' map positions apart), with its support (the
+//              pixels counted) and the stray pixels left out.
 //   shimmer    the map's texel grid slid under the world by (k/32, k/32) texel for k = 0..31
 //              (light.h's shiftShadowOrigin; the world's shadow stays where it is), mean and 99th
 //              percentile of |v(t) - v(t-1)| over the compared pixels of all frame pairs; the
@@ -23,6 +26,12 @@
 //              but for the shadow's edges, most receivers never change and the p99 over all of
 //              them says little; so the same statistics also over the FLICKERING pixels only
 //              (those whose value changes by more than 1/512 in any frame), and their share.
+//              Those populations differ from one method and bias to the next, so for charts two
+//              FIXED ones, the same pixels for every pair: the lit ground (clean lit at the
+//              run's widest footprint: any change there is acne flickering, "lit_") and the
+//              edges (every other compared pixel: in or next to a real shadow, "edge_"); on
+//              the edges also how far single pixels jump ("edge_peak_p99", failure_measures.h
+//              says why the mean cannot tell a hard edge from a soft one), which the chart shows.
 //   precision  depth formats 16, 24, 32F with the light's depth range made 1..1e5 times deeper
 //              than the scene (light.h's widenShadowDepthRange) at one elevation; the bias is
 //              held fixed in WORLD terms (constant bias / ratio), so only the format's precision
@@ -88,7 +97,9 @@ struct StabilityOptions {
     int mapSize = 512;
     int truthSpp = 2;  // K x K ground-truth samples per pixel
     int threads = 0;   // for the truth and the masks; 0 = all cores
-    std::vector<float> elevations{90, 75, 60, 45, 35, 25, 18, 12, 8, 5, 3, 2};  // degrees
+    // Degrees; every 3 degrees from 90 to 75, where the default methods' acne sets in (pcf-gather
+    // 5x5 with a constant bias passes 1 % between 90 and 75), then coarser as the light sinks.
+    std::vector<float> elevations{90, 87, 84, 81, 78, 75, 60, 45, 35, 25, 18, 12, 8, 5, 3, 2};
     std::vector<std::string> leakScenes{"pole", "box-on-plane"};
     std::vector<float> leakBiases{0.0005f, 0.001f, 0.002f, 0.004f, 0.008f, 0.016f, 0.032f, 0.064f};
     int shimmerFrames = SHIMMER_STEPS;  // light-grid frames, 1/32 texel apart

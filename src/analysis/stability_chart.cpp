@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 
 #include "analysis/chart_axes.h"
@@ -18,6 +19,13 @@ namespace {
 
 float scaleFor(glm::ivec2 size) {
     return std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
+}
+
+// The next tick step up from `step` (0.2 -> 0.25 -> 0.5 -> 1, or the next round one): where the
+// plot is too short for labels a line apart.
+double widerTickStep(double step) {
+    if (std::abs(step - 0.2) < 1e-9) return 0.25;
+    return chartNiceStep(step * 1.5);
 }
 
 // A type size at scale s, not below minPx (the chart's floor: 8, or a lesson frame's).
@@ -57,6 +65,9 @@ class Painter {
     void strokeRect(const Rect& r, float w, const Colour& c) {
         if (mCanvas) mCanvas->strokeRect(r, w, c);
     }
+    void image(glm::ivec2 topLeft, std::shared_ptr<const CanvasImage> img) {
+        if (mCanvas) mCanvas->image(topLeft, std::move(img));
+    }
     void pushClip(const Rect& r) {
         if (mCanvas) mCanvas->pushClip(r);
     }
@@ -69,14 +80,32 @@ class Painter {
     std::vector<ChartTextBox>* mTexts;
 };
 
-// Title and subtitle at the top; returns the y below them.
-float drawHeader(Painter& c, float s, float minPx, const std::string& title,
+// `text`'s lines each wrapped to maxWidth, joined by '\n'.
+std::string wrapLines(const std::string& text, float font, float maxWidth) {
+    std::string out;
+    size_t start = 0;
+    while (start <= text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        for (const std::string& line :
+             wrapText(FontFace::Sans, font, text.substr(start, end - start), maxWidth)) {
+            out += (out.empty() ? "" : "\n") + line;
+        }
+        start = end + 1;
+    }
+    return out;
+}
+
+// Title and subtitle at the top, each wrapped to the chart's width; returns the y below them.
+float drawHeader(Painter& c, float s, float minPx, float width, const std::string& title,
                  const std::string& subtitle) {
     float pad = std::round(12.0f * s);
     float titlePx = std::max(px(20, s, minPx), std::round(minPx * 1.25f));
-    Rect t = c.text({pad, pad * 0.6f}, title, {FontFace::Sans, titlePx, CHART_INK}, "chart-title");
-    Rect sub = c.text({pad, t.bottom()}, subtitle,
-                      {FontFace::Sans, px(13, s, minPx), CHART_SOFT_INK}, "chart-subtitle");
+    float subPx = px(13, s, minPx);
+    Rect t = c.text({pad, pad * 0.6f}, wrapLines(title, titlePx, width - 2.0f * pad),
+                    {FontFace::Sans, titlePx, CHART_INK}, "chart-title");
+    Rect sub = c.text({pad, t.bottom()}, wrapLines(subtitle, subPx, width - 2.0f * pad),
+                      {FontFace::Sans, subPx, CHART_SOFT_INK}, "chart-subtitle");
     return sub.bottom() + 6.0f * s;
 }
 
@@ -94,32 +123,6 @@ void dashedLine(Painter& c, glm::vec2 a, glm::vec2 b, float width, const Colour&
     for (float t = 0.0f; t < len; t += 2.0f * dash) {
         c.line(a + d * t, a + d * std::min(t + dash, len), width, colour);
     }
-}
-
-std::string shortMethod(const StabilityMethod& m) {
-    std::string s(methodInfo(m.method).name);
-    if (m.kernel > 0) s += " " + std::to_string(m.kernel) + "x" + std::to_string(m.kernel);
-    return s;
-}
-
-// The (method, kernel) pairs of the rows of one sweep, in order of appearance.
-std::vector<StabilityMethod> methodsOf(std::span<const StabilityRow> rows, std::string_view sweep) {
-    std::vector<StabilityMethod> out;
-    for (const StabilityRow& r : rows) {
-        if (r.sweep != sweep || r.method < 0) continue;
-        StabilityMethod m{r.method, r.kernel};
-        if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
-    }
-    return out;
-}
-
-std::vector<std::string> biasesOf(std::span<const StabilityRow> rows, std::string_view sweep) {
-    std::vector<std::string> out;
-    for (const StabilityRow& r : rows) {
-        if (r.sweep != sweep || r.method < 0) continue;
-        if (std::find(out.begin(), out.end(), r.bias) == out.end()) out.push_back(r.bias);
-    }
-    return out;
 }
 
 }  // namespace
@@ -212,7 +215,12 @@ void paintPanelGrid(Painter& c, const PanelPlot& pp, const ChartPanel& panel, fl
     const LineChartSpec& spec = pp.spec;
     float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
     float stroke = std::max(1.0f, std::round(s));
-    for (double y = spec.yFloor; y <= pp.axes.yTop + 0.5 * pp.axes.yStep; y += pp.axes.yStep) {
+    // Fewer ticks where the panel is short: no two labels closer than a line.
+    double yStep = pp.axes.yStep, range = pp.axes.yTop - spec.yFloor;
+    while (plot.h * yStep / range < tickH + 1.0f && yStep < range) {
+        yStep = widerTickStep(yStep);
+    }
+    for (double y = spec.yFloor; y <= pp.axes.yTop + 0.5 * yStep; y += yStep) {
         float py = std::round(pp.yPixel(y)) + 0.5f;
         c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
         c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, spec.percentY),
@@ -248,7 +256,7 @@ void paintPanelLines(Painter& c, const PanelPlot& pp, const ChartPanel& panel, f
     for (const ChartLine& l : panel.lines) {
         glm::vec2 prev{};
         for (size_t i = 0; i < l.points.size(); ++i) {
-            glm::vec2 p{pp.xPixel(l.points[i].x), pp.yPixel(l.points[i].y)};
+            glm::vec2 p{pp.xPixel(l.points[i].x), pp.yPixel(l.points[i].y) + l.offsetPx * s};
             if (i > 0) {
                 if (l.dashed) {
                     dashedLine(c, prev, p, lw, l.colour, 5.0f * s);
@@ -271,9 +279,11 @@ void paintPanel(Painter& c, const LineChartSpec& spec, const LineAxes& axes,
     float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
     float titleH = fontMetrics(FontFace::Sans, px(14, s, mn)).lineHeight;
     float left = std::max(58.0f * s, yTickRoom(s, tickFont));
-    Rect plot{std::round(cell.x + left), std::round(cell.y + titleH + 4.0f * s),
+    // The top tick's label reaches half a line above the plot: the panel's title stays clear.
+    float titleRoom = titleH + std::max(4.0f * s, 0.5f * tickH + 2.0f);
+    Rect plot{std::round(cell.x + left), std::round(cell.y + titleRoom),
               std::round(cell.w - left - 12.0f * s),
-              std::round(cell.h - titleH - 1.5f * tickH - 18.0f * s)};
+              std::round(cell.h - titleRoom - 1.5f * tickH - 14.0f * s)};
     if (plot.w < 8.0f || plot.h < 8.0f) return;
     c.text({plot.centre().x, cell.y}, panel.title,
            {FontFace::Sans, px(14, s, mn), CHART_INK, TextAlign::Center}, "chart-title");
@@ -320,7 +330,7 @@ void paintLineChart(const LineChartSpec& spec, glm::ivec2 size, Painter& c) {
     LineAxes axes = lineAxesOf(spec);
     std::vector<LegendEntry> legend = lineLegendOf(spec);
 
-    float top = drawHeader(c, s, mn, spec.title, spec.subtitle);
+    float top = drawHeader(c, s, mn, static_cast<float>(size.x), spec.title, spec.subtitle);
     float legendFont = px(13, s, mn), axisFont = px(14, s, mn);
     float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
     float legendW = 0.0f;
@@ -331,11 +341,14 @@ void paintLineChart(const LineChartSpec& spec, glm::ivec2 size, Painter& c) {
         legendW = std::max(legendW, measureText(FontFace::Sans, legendFont, n).x);
     }
     legendW = std::round(legendW + 48.0f * s);
-    c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
-    top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
-    float bottomText = fontMetrics(FontFace::Sans, axisFont).lineHeight + 6.0f * s;
-    Rect area{0.0f, top, size.x - legendW - 20.0f * s, size.y - top - bottomText};
-    c.text({area.centre().x, area.bottom() + 2.0f * s}, spec.xLabel,
+    Rect yName = c.text({12.0f * s, top}, wrapLines(spec.yLabel, axisFont, size.x - 24.0f * s),
+                        {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
+    top = yName.bottom() + 4.0f * s;
+    float areaW = size.x - legendW - 20.0f * s;
+    std::string xName = wrapLines(spec.xLabel, axisFont, areaW - 8.0f * s);
+    float bottomText = measureText(FontFace::Sans, axisFont, xName).y + 6.0f * s;
+    Rect area{0.0f, top, areaW, size.y - top - bottomText};
+    c.text({area.centre().x, area.bottom() + 2.0f * s}, xName,
            {FontFace::Sans, axisFont, CHART_INK, TextAlign::Center}, "chart-axis");
 
     // The panels in a grid of cells: one row of up to two, then two or three columns.
@@ -515,10 +528,11 @@ void paintBarChart(const BarChartSpec& spec, glm::ivec2 size, Painter& c) {
     float s = scaleFor(size);
     float mn = spec.minFontPx;
     BarAxis axis = barAxisOf(spec);
-    float top = drawHeader(c, s, mn, spec.title, spec.subtitle);
+    float top = drawHeader(c, s, mn, static_cast<float>(size.x), spec.title, spec.subtitle);
     float tickFont = px(12, s, mn), axisFont = px(14, s, mn), legendFont = px(13, s, mn);
-    c.text({12.0f * s, top}, spec.yLabel, {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
-    top += fontMetrics(FontFace::Sans, axisFont).lineHeight + 4.0f * s;
+    Rect yName = c.text({12.0f * s, top}, wrapLines(spec.yLabel, axisFont, size.x - 24.0f * s),
+                        {FontFace::Sans, axisFont, CHART_INK}, "chart-axis");
+    top = yName.bottom() + 4.0f * s;
     float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
     float lineH = fontMetrics(FontFace::Sans, legendFont).lineHeight;
     float legendW = 0.0f;
@@ -537,6 +551,10 @@ void paintBarChart(const BarChartSpec& spec, glm::ivec2 size, Painter& c) {
     Rect plot{std::round(left), std::round(top), plotW,
               std::round(size.y - top - labelsH - 16.0f * s)};
     float stroke = std::max(1.0f, std::round(s));
+    // Fewer ticks where the plot is short: no two labels closer than a line.
+    while (plot.h * axis.yStep / axis.yTop < tickH + 1.0f && axis.yStep < axis.yTop) {
+        axis.yStep = widerTickStep(axis.yStep);
+    }
     for (double y = 0.0; y <= axis.yTop + 0.5 * axis.yStep; y += axis.yStep) {
         float py = std::round(plot.bottom() - static_cast<float>(y / axis.yTop) * plot.h) + 0.5f;
         c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
@@ -566,122 +584,99 @@ std::vector<ChartTextBox> barChartTextBoxes(const BarChartSpec& spec, glm::ivec2
     return out;
 }
 
-LineChartSpec acneChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
-                            float minFontPx) {
-    LineChartSpec spec;
-    spec.title = "Shadow acne: false shadow on lit receivers as the light sinks";
-    spec.subtitle = subtitle;
-    spec.xLabel =
-        "light elevation above the ground, degrees (log scale; the sun sets to the right)";
-    spec.yLabel = "false-shadow rate (lit pixels darker than 0.99)";
-    spec.logX = true;
-    spec.reverseX = true;
-    spec.percentY = true;
-    for (const StabilityMethod& m : methodsOf(rows, "acne")) {
-        ChartPanel panel{shortMethod(m), {}};
-        for (const std::string& bias : biasesOf(rows, "acne")) {
-            ChartLine line{bias, biasColour(bias), false, {}};
-            for (const StabilityRow& r : rows) {
-                if (r.sweep == "acne" && r.metric == "false_shadow_rate" && r.method == m.method &&
-                    r.kernel == m.kernel && r.bias == bias) {
-                    line.points.emplace_back(r.x, r.y);
-                }
-            }
-            panel.lines.push_back(line);
-        }
-        spec.panels.push_back(panel);
-    }
-    if (spec.panels.empty()) return spec;
-    spec.notes.push_back("1% = acne onset");
-    spec.minFontPx = minFontPx;
-    return spec;
-}
+namespace {
 
-std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                   const std::string& subtitle, float minFontPx) {
-    LineChartSpec spec = acneChartSpec(rows, subtitle, minFontPx);
-    if (spec.panels.empty()) return {};
-    return drawLineChart(spec, size);
-}
-
-LineChartSpec leakChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
-                            float minFontPx) {
-    LineChartSpec spec;
-    spec.title = "Peter panning: how far light leaks under the caster as the bias grows";
-    spec.subtitle = subtitle;
-    spec.xLabel = "constant bias, light depth units (log scale)";
-    spec.yLabel = "leak width from the contact, shadow-map texels";
-    spec.logX = true;
-    std::vector<std::string> scenes;
-    for (const StabilityRow& r : rows) {
-        if (r.sweep != "leak") continue;
-        std::string scene = r.metric.substr(0, r.metric.find(':'));
-        if (std::find(scenes.begin(), scenes.end(), scene) == scenes.end()) scenes.push_back(scene);
-    }
-    for (const StabilityMethod& m : methodsOf(rows, "leak")) {
-        ChartPanel panel{shortMethod(m), {}};
-        for (const std::string& bias : biasesOf(rows, "leak")) {
-            for (size_t k = 0; k < scenes.size(); ++k) {
-                ChartLine line{bias, biasColour(bias), k > 0, {}};
-                for (const StabilityRow& r : rows) {
-                    if (r.sweep == "leak" && r.metric == scenes[k] + ":leak_width_texels" &&
-                        r.method == m.method && r.kernel == m.kernel && r.bias == bias) {
-                        line.points.emplace_back(r.x, r.y);
-                    }
-                }
-                panel.lines.push_back(line);
-            }
-        }
-        spec.panels.push_back(panel);
-    }
-    if (spec.panels.empty()) return spec;
-    for (size_t k = 0; k < scenes.size(); ++k) {
-        spec.notes.push_back((k == 0 ? "solid: " : "dashed: ") + scenes[k]);
-    }
-    spec.minFontPx = minFontPx;
-    return spec;
-}
-
-std::vector<uint8_t> drawLeakChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                   const std::string& subtitle, float minFontPx) {
-    LineChartSpec spec = leakChartSpec(rows, subtitle, minFontPx);
-    if (spec.panels.empty()) return {};
-    return drawLineChart(spec, size);
-}
-
-BarChartSpec shimmerChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
-                              float minFontPx) {
-    BarChartSpec spec;
-    spec.title = "Shimmer: how much the picture flickers while nothing in the world moves";
-    spec.subtitle = subtitle;
-    spec.yLabel = "99th percentile of |v(t) - v(t-1)| over the pixels that flicker at all";
-    spec.series = {"texel grid slid 1/32 texel a frame", "the same, snapped to whole texels",
-                   "camera slid by sub-pixel steps (error change)"};
-    for (const StabilityMethod& m : methodsOf(rows, "shimmer")) {
-        for (const std::string& bias : biasesOf(rows, "shimmer")) {
-            BarGroup g{shortMethod(m) + " " + bias, {0.0, 0.0, 0.0}};
-            for (const StabilityRow& r : rows) {
-                if (r.sweep != "shimmer" || r.method != m.method || r.kernel != m.kernel ||
-                    r.bias != bias) {
-                    continue;
-                }
-                if (r.metric == "light_flicker_p99") g.values[0] = r.y;
-                if (r.metric == "snapped_flicker_p99") g.values[1] = r.y;
-                if (r.metric == "camera_p99") g.values[2] = r.y;
-            }
-            spec.groups.push_back(g);
+// The image resampled (nearest pixel) to `size`, as the canvas takes it.
+std::shared_ptr<const CanvasImage> scaledImage(const ImageChartSpec& spec, glm::ivec2 size) {
+    std::vector<glm::vec4> pixels(static_cast<size_t>(size.x) * size.y);
+    for (int y = 0; y < size.y; ++y) {
+        int sy = std::min(spec.imageSize.y - 1, y * spec.imageSize.y / size.y);
+        for (int x = 0; x < size.x; ++x) {
+            int sx = std::min(spec.imageSize.x - 1, x * spec.imageSize.x / size.x);
+            const uint8_t* p = &spec.rgba[(static_cast<size_t>(sy) * spec.imageSize.x + sx) * 4];
+            pixels[static_cast<size_t>(y) * size.x + x] =
+                glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
         }
     }
-    if (spec.groups.empty()) return spec;
-    spec.minFontPx = minFontPx;
-    return spec;
+    return std::make_shared<const CanvasImage>(size, std::move(pixels));
 }
 
-std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                      const std::string& subtitle, float minFontPx) {
-    BarChartSpec spec = shimmerChartSpec(rows, subtitle, minFontPx);
-    if (spec.groups.empty()) return {};
-    return drawBarChart(spec, size);
+// The colour bar, its ticks and label in `box` (label on top, swatches at the bottom).
+void paintColourScale(Painter& c, const ColourScale& scale, Rect box, float s, float font) {
+    float lineH = fontMetrics(FontFace::Sans, font).lineHeight;
+    Rect label =
+        c.text({box.x, box.y}, scale.label, {FontFace::Sans, font, CHART_INK}, "chart-legend");
+    float barTop = label.bottom() + lineH * 0.5f + 4.0f * s;
+    float barBottom = box.bottom() - (scale.swatches.size() + 0.5f) * lineH - 8.0f * s;
+    Rect bar{box.x, std::round(barTop), std::round(24.0f * s), std::round(barBottom - barTop)};
+    size_t n = scale.colours.size();
+    for (size_t i = 0; i < n; ++i) {
+        float y0 = bar.bottom() - bar.h * static_cast<float>(i + 1) / n;
+        float y1 = bar.bottom() - bar.h * static_cast<float>(i) / n;
+        c.fillRect({bar.x, std::floor(y0), bar.w, std::ceil(y1) - std::floor(y0)},
+                   scale.colours[i]);
+    }
+    float stroke = std::max(1.0f, std::round(s));
+    c.strokeRect(bar.expanded(stroke), stroke, CHART_SOFT_INK);
+    for (const auto& [t, words] : scale.ticks) {
+        float y = std::round(bar.bottom() - static_cast<float>(t) * bar.h) + 0.5f;
+        c.line({bar.right(), y}, {bar.right() + 6.0f * s, y}, stroke, CHART_SOFT_INK);
+        c.text({bar.right() + 9.0f * s, y - lineH / 2}, words, {FontFace::Sans, font, CHART_INK},
+               "chart-legend");
+    }
+    float y = bar.bottom() + lineH * 0.5f + 8.0f * s;
+    for (const auto& [colour, words] : scale.swatches) {
+        c.fillRect({bar.x, y + 2.0f * s, bar.w, lineH - 4.0f * s}, colour);
+        c.text({bar.right() + 9.0f * s, y}, words, {FontFace::Sans, font, CHART_INK},
+               "chart-legend");
+        y += lineH;
+    }
+}
+
+void paintImageChart(const ImageChartSpec& spec, glm::ivec2 size, Painter& c) {
+    if (size.x < 64 || size.y < 64) {
+        throw std::invalid_argument("drawImageChart: the chart needs at least 64 x 64 pixels");
+    }
+    if (spec.imageSize.x < 1 || spec.imageSize.y < 1 ||
+        spec.rgba.size() != static_cast<size_t>(spec.imageSize.x) * spec.imageSize.y * 4) {
+        throw std::invalid_argument("drawImageChart: the image's pixels do not match its size");
+    }
+    float s = scaleFor(size);
+    float mn = spec.minFontPx;
+    float top = drawHeader(c, s, mn, static_cast<float>(size.x), spec.title, spec.subtitle);
+    float font = px(13, s, mn), pad = std::round(12.0f * s);
+    float scaleW = 0.0f;
+    for (const auto& [t, words] : spec.scale.ticks) {
+        scaleW = std::max(scaleW, measureText(FontFace::Sans, font, words).x);
+    }
+    for (const auto& [colour, words] : spec.scale.swatches) {
+        scaleW = std::max(scaleW, measureText(FontFace::Sans, font, words).x);
+    }
+    scaleW = std::max(scaleW + 33.0f * s, measureText(FontFace::Sans, font, spec.scale.label).x);
+    Rect area{pad, top + 4.0f * s, size.x - scaleW - 3.0f * pad, size.y - top - 4.0f * s - pad};
+    float f = std::min(area.w / spec.imageSize.x, area.h / spec.imageSize.y);
+    glm::ivec2 shown = glm::max(glm::ivec2(1), glm::ivec2(glm::vec2(spec.imageSize) * f));
+    c.image(glm::ivec2(area.x, area.y), scaledImage(spec, shown));
+    Rect box{std::round(area.x + shown.x + pad * 2.0f), area.y, scaleW,
+             std::min(area.h, static_cast<float>(shown.y))};
+    paintColourScale(c, spec.scale, box, s, font);
+}
+
+}  // namespace
+
+std::vector<uint8_t> drawImageChart(const ImageChartSpec& spec, glm::ivec2 size) {
+    imageChartTextBoxes(spec, size);  // throws for a bad size or spec before any GL work
+    return drawChartOffscreen(size, [&](Canvas& canvas) {
+        Painter painter(&canvas, nullptr);
+        paintImageChart(spec, size, painter);
+    });
+}
+
+std::vector<ChartTextBox> imageChartTextBoxes(const ImageChartSpec& spec, glm::ivec2 size) {
+    std::vector<ChartTextBox> out;
+    Painter painter(nullptr, &out);
+    paintImageChart(spec, size, painter);
+    return out;
 }
 
 }  // namespace pcf

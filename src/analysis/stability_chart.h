@@ -1,8 +1,7 @@
 // stability_chart.h: the stability command's pictures, drawn with the overlay's Canvas into an
 // offscreen target (as speed_chart.h does for the bench):
-//   line charts in small multiples: one panel per method, one line per bias (its colour), a
-//   second scene dashed: acne rate against elevation, leak width against the constant bias;
-//   a bar chart: shimmer per method and bias.
+//   line charts in small multiples (panels of lines) and bar charts (groups of bars, one colour
+//   per series); which charts the stability command draws is stability_figures.h's.
 // Coordinates are the canvas's: pixels, origin top-left, y down.
 #pragma once
 
@@ -10,10 +9,10 @@
 #include <glm/glm.hpp>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "analysis/speed_chart.h"
-#include "analysis/stability.h"
 
 namespace pcf {
 
@@ -22,6 +21,9 @@ struct ChartLine {
     glm::vec4 colour{0.0f, 0.0f, 0.0f, 1.0f};
     bool dashed = false;
     std::vector<glm::dvec2> points;  // (x, y), drawn in this order
+    // Drawn this many pixels (at 1280x720; scaled with the chart) below its place: a line that
+    // coincides with an earlier one of its panel stays visible (markCoincidentLines).
+    float offsetPx = 0.0f;
 };
 
 struct ChartPanel {
@@ -63,32 +65,36 @@ struct BarChartSpec {
 
 std::vector<uint8_t> drawBarChart(const BarChartSpec& spec, glm::ivec2 size);
 
+// A picture with a colour scale: the image scaled to fit (nearest pixel, the same factor on both
+// axes), at its right a vertical colour bar with its ticks and label, and swatches below it.
+struct ColourScale {
+    std::string label;                                        // above the bar
+    std::vector<glm::vec4> colours;                           // bottom to top, evenly spaced
+    std::vector<std::pair<double, std::string>> ticks;        // position in [0,1] from the bottom
+    std::vector<std::pair<glm::vec4, std::string>> swatches;  // e.g. grey: "not measured"
+};
+
+struct ImageChartSpec {
+    std::string title;
+    std::string subtitle;
+    glm::ivec2 imageSize{0, 0};
+    std::vector<uint8_t> rgba;  // imageSize, rows top-down
+    ColourScale scale;
+    float minFontPx = 8.0f;
+};
+
+std::vector<uint8_t> drawImageChart(const ImageChartSpec& spec, glm::ivec2 size);
+
 // Every text the chart draws, where it is drawn (pixels from the chart's top left; one code path
 // lays out and draws), with its role: "chart-title" (the chart's and each small multiple's),
 // "chart-subtitle", "chart-axis", "chart-tick", "chart-label" (a bar group's name),
-// "chart-legend". Needs the fonts, not GL; throws as the draw functions do.
+// "chart-legend" (also a colour scale's label, ticks and swatches). Needs the fonts, not GL;
+// throws as the draw functions do.
 std::vector<ChartTextBox> lineChartTextBoxes(const LineChartSpec& spec, glm::ivec2 size);
 std::vector<ChartTextBox> barChartTextBoxes(const BarChartSpec& spec, glm::ivec2 size);
+std::vector<ChartTextBox> imageChartTextBoxes(const ImageChartSpec& spec, glm::ivec2 size);
 
 // The colour of a bias mode's lines and bars (by its name; an unknown name gets ink).
 glm::vec4 biasColour(std::string_view bias);
-
-// The specs of the charts below (no panel or group when the rows have none of that sweep).
-LineChartSpec acneChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
-                            float minFontPx = 8.0f);
-LineChartSpec leakChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
-                            float minFontPx = 8.0f);
-BarChartSpec shimmerChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
-                              float minFontPx = 8.0f);
-
-// The charts `pcfscope stability` writes, from its rows: acne rate against elevation (empty when
-// no acne row), leak width against bias, shimmer per method. Each is RGBA8 of `size`, no text
-// below minFontPx.
-std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                   const std::string& subtitle, float minFontPx = 8.0f);
-std::vector<uint8_t> drawLeakChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                   const std::string& subtitle, float minFontPx = 8.0f);
-std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::ivec2 size,
-                                      const std::string& subtitle, float minFontPx = 8.0f);
 
 }  // namespace pcf

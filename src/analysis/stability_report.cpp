@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "analysis/csv_lines.h"
+#include "analysis/failure_measures.h"
 #include "base/input_error.h"
 #include "kernel/methods.h"
 
@@ -63,7 +64,8 @@ std::vector<StabilityRow> parseStabilityCsv(std::string_view text, const std::st
         if (l.text.empty()) continue;
         CsvFields f(l.text, source, l.number);
         if (f.size() != 8) f.fail("expected 8 fields, got " + std::to_string(f.size()));
-        if (!sweepFromName(f.text(0))) f.fail("unknown sweep '" + f.text(0) + "'");
+        if (!sweepFromName(f.text(0)) && f.text(0) != STABILITY_SETUP_SWEEP)
+            f.fail("unknown sweep '" + f.text(0) + "'");
         StabilityRow r;
         r.sweep = f.text(0);
         if (f.text(1) != "-") {
@@ -80,6 +82,56 @@ std::vector<StabilityRow> parseStabilityCsv(std::string_view text, const std::st
         rows.push_back(r);
     }
     return rows;
+}
+
+std::vector<StabilityRow> stabilitySetupRows(const StabilitySetup& setup) {
+    std::string sweep(STABILITY_SETUP_SWEEP);
+    auto value = [&](const std::string& name, double y) {
+        return StabilityRow{sweep, -1, 0, "-", "-", 0.0, name, y};
+    };
+    auto words = [&](const std::string& name, std::string text) {
+        std::replace(text.begin(), text.end(), ',', ';');
+        std::replace(text.begin(), text.end(), '\n', ' ');
+        return StabilityRow{sweep, -1, 0, "-", "-", 0.0, name + ":" + text, 0.0};
+    };
+    return {words("scene", setup.sceneName),
+            words("gl_renderer", setup.glRenderer),
+            value("frame_width", setup.frameSize.x),
+            value("frame_height", setup.frameSize.y),
+            value("map_size", setup.mapSize),
+            value("truth_spp", setup.truthSpp),
+            value("constant_bias", setup.constantBias),
+            words("cull", setup.cull),
+            words("depth", setup.depthFormat),
+            value("precision_elevation_deg", setup.precisionElevation)};
+}
+
+std::optional<StabilitySetup> stabilitySetupOf(std::span<const StabilityRow> rows) {
+    StabilitySetup s;
+    bool any = false;
+    for (const StabilityRow& r : rows) {
+        if (r.sweep != STABILITY_SETUP_SWEEP) continue;
+        any = true;
+        size_t colon = r.metric.find(':');
+        std::string key = r.metric.substr(0, colon);
+        std::string text = colon == std::string::npos ? "" : r.metric.substr(colon + 1);
+        if (key == "scene") s.sceneName = text;
+        if (key == "gl_renderer") s.glRenderer = text;
+        if (key == "cull") s.cull = text;
+        if (key == "depth") s.depthFormat = text;
+        if (key == "frame_width") s.frameSize.x = static_cast<int>(r.y);
+        if (key == "frame_height") s.frameSize.y = static_cast<int>(r.y);
+        if (key == "map_size") s.mapSize = static_cast<int>(r.y);
+        if (key == "truth_spp") s.truthSpp = static_cast<int>(r.y);
+        if (key == "constant_bias") s.constantBias = r.y;
+        if (key == "precision_elevation_deg") s.precisionElevation = r.y;
+    }
+    if (!any) return std::nullopt;
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", s.constantBias);
+    s.settings = std::string("constant bias ") + buf + ", cull " + s.cull +
+                 " faces in the shadow pass, depth " + s.depthFormat;
+    return s;
 }
 
 std::optional<double> stabilityValue(std::span<const StabilityRow> rows, std::string_view sweep,
@@ -258,7 +310,10 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
         md += std::string("Leak @") + leakAt +
               " (the largest constant bias swept; stability.csv and the leak chart have every "
               "bias): the share of clean umbra pixels brighter than 0.01, and how far from the "
-              "caster the light reaches, world units (shadow-map texels). ";
+              "caster the light reaches in connected runs of at least " +
+              std::to_string(LEAK_MIN_RUN) +
+              " leaking pixels (a stray pixel does not count), world units (shadow-map "
+              "texels). ";
     }
     md +=
         "Shimmer: |v(t) - v(t-1)| over the receivers while the map's texel grid slides 1/32 "

@@ -21,8 +21,9 @@ inline constexpr std::string_view STABILITY_CSV_HEADER =
 // not per method), kernel 0 for methods that take none, x and y with 9 significant digits.
 std::string stabilityCsv(std::span<const StabilityRow> rows);
 
-// Reads what stabilityCsv wrote. Throws pcf::InputError "SOURCE:LINE: problem" on a wrong
-// header, a wrong field count, an unknown method or sweep, or a number that is not finite.
+// Reads what stabilityCsv wrote (the setup rows too). Throws pcf::InputError "SOURCE:LINE:
+// problem" on a wrong header, a wrong field count, an unknown method or sweep, or a number that is
+// not finite.
 std::vector<StabilityRow> parseStabilityCsv(std::string_view text, const std::string& source);
 
 // One line of the summary: a method with a bias.
@@ -68,8 +69,24 @@ struct StabilitySetup {
     glm::ivec2 frameSize{0, 0};
     int mapSize = 0;
     int truthSpp = 0;
-    std::string settings;  // e.g. "constant bias 0.002, cull back, depth 32f"
+    double constantBias = 0.0;      // what every bias mode but none subtracts
+    std::string cull;               // cullModeName of the shadow pass
+    std::string depthFormat;        // depthFormatName
+    double precisionElevation = 0;  // degrees: the precision sweep's light
+    std::string settings;           // e.g. "constant bias 0.002, cull back, depth 32f"
 };
+
+// The run's settings travel in stability.csv as rows of the pseudo-sweep "setup" (method "-",
+// bias "-", x_name "-", x 0), first: numbers in y ("frame_width", "frame_height", "map_size",
+// "truth_spp", "constant_bias", "precision_elevation_deg"), words after a colon in the metric
+// ("scene:box-on-plane", "gl_renderer:llvmpipe (LLVM 15.0.6; 256 bits)", "cull:back",
+// "depth:32f"; a comma in them is written ';'), so that a chart drawn later from the CSV (a
+// lesson's) states the settings it was measured with.
+inline constexpr std::string_view STABILITY_SETUP_SWEEP = "setup";
+std::vector<StabilityRow> stabilitySetupRows(const StabilitySetup& setup);
+// The setup the rows carry (settings: "constant bias B, cull C faces in the shadow pass,
+// depth D"), or nullopt when they carry none (a CSV written before the setup rows).
+std::optional<StabilitySetup> stabilitySetupOf(std::span<const StabilityRow> rows);
 
 // Title, setup paragraph, the summary table and the aliasing line.
 std::string stabilityMarkdown(std::span<const StabilityRow> rows, const StabilitySetup& setup,

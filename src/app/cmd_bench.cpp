@@ -24,6 +24,7 @@
 
 #include "analysis/bench.h"
 #include "analysis/bench_report.h"
+#include "analysis/chart_axes.h"
 #include "analysis/difference_image.h"
 #include "analysis/speed_chart.h"
 #include "analysis/stability.h"
@@ -328,8 +329,10 @@ void writeCharts(const BenchPlan& plan, const BenchResult& result, const GlConte
     std::string indicative = quick ? " (--quick: timings indicative only)" : "";
     std::string timer = result.rows.empty() ? std::string() : result.rows.front().timer;
     SpeedChartText text;
-    text.subtitle = gl.renderer() + "; median of " + std::to_string(o.gpuRepeats) +
-                    " round-robin samples, " + timer +
+    text.minFontPx = STANDALONE_CHART_MIN_PX;
+    text.subtitle = chartRendererLine(gl.renderer()) + "\nmedian of " +
+                    std::to_string(o.gpuRepeats) + " round-robin samples (" +
+                    std::to_string(2 * o.gpuRepeats) + " where the first were noisy), " + timer +
                     "; bars: IQR; ! noisy (IQR > 10 % of median)";
     text.xLabel = plan.timing == ChartTiming::Lookup
                       ? "filter time: bare lookup pass, ms (log scale)"

@@ -4,8 +4,9 @@
 //   stability.md           per method and bias: acne onset, leak width, shimmer
 //   stability_acne.png     false-shadow rate against the light's elevation, a line per bias
 //   stability_leak.png     leak width against the constant bias, a line per bias
-//   stability_shimmer.png  shimmer per method and bias
-//   aliasing_heatmap.png   screen pixels per shadow-map texel over the frame
+//   stability_shimmer.png  shimmer at the shadow edges per method and bias
+//   stability_precision.png false-shadow rate against the light's depth range, per format
+//   aliasing_heatmap.png   screen pixels per shadow-map texel over the frame, with its scale
 // (a chart only when its sweep ran). As `bench` does, everything is written into a staging
 // folder inside DIR and moved into place once the whole run has succeeded.
 #include <unistd.h>
@@ -17,9 +18,10 @@
 #include <string>
 #include <vector>
 
+#include "analysis/chart_axes.h"
 #include "analysis/ground_truth.h"
 #include "analysis/stability.h"
-#include "analysis/stability_chart.h"
+#include "analysis/stability_figures.h"
 #include "analysis/stability_report.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
@@ -178,32 +180,38 @@ std::vector<std::string> outputNames(const std::vector<Sweep>& sweeps) {
     if (has(sweeps, Sweep::Acne)) names.push_back("stability_acne.png");
     if (has(sweeps, Sweep::Leak)) names.push_back("stability_leak.png");
     if (has(sweeps, Sweep::Shimmer)) names.push_back("stability_shimmer.png");
+    if (has(sweeps, Sweep::Precision)) names.push_back("stability_precision.png");
     if (has(sweeps, Sweep::Aliasing)) names.push_back("aliasing_heatmap.png");
     return names;
 }
 
-// The sweeps' charts and images, into dir; detail (frame, map, settings, renderer) goes under
-// each chart's title.
-void writeCharts(const fs::path& dir, const StabilityResult& result,
-                 const std::vector<Sweep>& sweeps, glm::ivec2 chartSize,
-                 const std::string& sceneName, const std::string& detail) {
-    std::string subtitle = sceneName + ", " + detail;
+// The sweeps' charts and images, into dir. Each chart's subtitle states the settings the rows
+// carry (their setup rows); stand-alone charts keep every text at STANDALONE_CHART_MIN_PX or more.
+void writeCharts(const fs::path& dir, const std::vector<StabilityRow>& rows,
+                 const StabilityResult& result, const std::vector<Sweep>& sweeps,
+                 glm::ivec2 chartSize) {
+    const std::string source = "pcfscope stability";
+    const float minPx = STANDALONE_CHART_MIN_PX;
     auto chart = [&](const std::string& name, const std::vector<uint8_t>& rgba) {
         if (rgba.empty()) throw std::runtime_error("no rows for " + name);
         writePngRgba8((dir / name).string(), chartSize.x, chartSize.y, rgba);
     };
     if (has(sweeps, Sweep::Acne)) {
-        chart("stability_acne.png", drawAcneChart(result.rows, chartSize, subtitle));
+        chart("stability_acne.png", drawAcneChart(rows, chartSize, source, minPx));
     }
     if (has(sweeps, Sweep::Leak)) {
-        chart("stability_leak.png",
-              drawLeakChart(result.rows, chartSize, "pole and box-on-plane, " + detail));
+        chart("stability_leak.png", drawLeakChart(rows, chartSize, source, minPx));
     }
     if (has(sweeps, Sweep::Shimmer)) {
-        chart("stability_shimmer.png", drawShimmerChart(result.rows, chartSize, subtitle));
+        chart("stability_shimmer.png", drawShimmerChart(rows, chartSize, source, minPx));
     }
+    if (has(sweeps, Sweep::Precision)) {
+        chart("stability_precision.png", drawPrecisionChart(rows, chartSize, source, minPx));
+    }
+    // The heat map with its colour scale and map size, at the charts' size.
     for (const StabilityImage& image : result.images) {
-        writePngRgba8((dir / image.name).string(), image.size.x, image.size.y, image.rgba);
+        chart(image.name,
+              drawImageChart(aliasingHeatmapSpec(image, rows, source, minPx), chartSize));
     }
 }
 
@@ -247,15 +255,18 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
     setup.frameSize = options.frameSize;
     setup.mapSize = options.mapSize;
     setup.truthSpp = options.truthSpp;
+    setup.constantBias = options.base.constantBias;
+    setup.cull = std::string(cullModeName(options.base.shadowCull));
+    setup.depthFormat = std::string(depthFormatName(options.base.depthFormat));
+    setup.precisionElevation = options.precisionElevation;
     setup.settings = settingsLine(options);
-    std::string markdown = stabilityMarkdown(result.rows, setup, options.base.constantBias);
-    writeTextFile((staging.path() / csvName).string(), stabilityCsv(result.rows));
+    // The setup first, then the measured rows: the CSV says what it was measured with.
+    std::vector<StabilityRow> rows = stabilitySetupRows(setup);
+    rows.insert(rows.end(), result.rows.begin(), result.rows.end());
+    std::string markdown = stabilityMarkdown(rows, setup, options.base.constantBias);
+    writeTextFile((staging.path() / csvName).string(), stabilityCsv(rows));
     writeTextFile((staging.path() / mdName).string(), markdown);
-    std::string detail = std::to_string(options.frameSize.x) + "x" +
-                         std::to_string(options.frameSize.y) + ", " +
-                         std::to_string(options.mapSize) + "^2 map, " + settingsLine(options) +
-                         "; " + context->renderer();
-    writeCharts(staging.path(), result, options.sweeps, chartSize, scene.name, detail);
+    writeCharts(staging.path(), rows, result, options.sweeps, chartSize);
     for (const std::string& name : finalNames) fs::rename(staging.path() / name, outDir / name);
     outputs.commit();
     std::fputs(markdown.c_str(), stdout);

@@ -11,7 +11,7 @@
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
 #include "analysis/stability.h"
-#include "analysis/stability_chart.h"
+#include "analysis/stability_figures.h"
 #include "analysis/stability_report.h"
 #include "app/cli_util.h"
 #include "app/frame_json.h"

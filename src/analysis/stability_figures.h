@@ -1,0 +1,73 @@
+// stability_figures.h: the charts `pcfscope stability` writes and lessons 13 and 14 show, built
+// from stability.csv's rows (stability.h, stability_report.h) and drawn by stability_chart.h:
+//   acne       false-shadow rate against the light's elevation: one panel per method, a line per
+//              bias;
+//   leak       leak width against the constant bias: a panel per method, a line per bias, the
+//              second contact scene dashed;
+//   precision  false-shadow rate against the light's depth range: a panel per bias, a line per
+//              depth format, the second method dashed;
+//   shimmer    mean change per frame over the same edge pixels, per method and bias;
+//   aliasing   the heat map of screen pixels per shadow-map texel, with its colour scale.
+// Each states its one population and metric in its title and the settings it was measured with
+// in its subtitle.
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "analysis/stability.h"
+#include "analysis/stability_chart.h"
+
+namespace pcf {
+
+// Lines of one panel whose points all equal an earlier line's (same style) would hide under it:
+// each such line is drawn COINCIDENT_OFFSET_PX lower per earlier twin, and a note names them
+// ("pcf-gather 5x5: constant = none, drawn 4 px lower").
+constexpr float COINCIDENT_OFFSET_PX = 4.0f;
+void markCoincidentLines(LineChartSpec& spec);
+
+// The lines under a stability chart's title: the scene, frame, map and bias settings the rows
+// were measured with and the renderer (from the rows' setup, stability_report.h), and for
+// llvmpipe what carries over to a GPU (chart_axes.h: chartRendererLine). `source` (e.g.
+// "measured by pcfscope stability, stability.csv") only when the rows carry no setup: the setup
+// says it all, and a lesson's smaller chart keeps the room for its plot.
+std::string stabilityChartSubtitle(std::span<const StabilityRow> rows, Sweep sweep,
+                                   const std::string& source);
+
+// The specs of the charts below (no panel or group when the rows have none of that sweep). Each
+// states its one population and metric in its title, and its settings in its subtitle
+// (stabilityChartSubtitle with `subtitle` as the source).
+LineChartSpec acneChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                            float minFontPx = 8.0f);
+LineChartSpec leakChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                            float minFontPx = 8.0f);
+LineChartSpec precisionChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                                 float minFontPx = 8.0f);
+BarChartSpec shimmerChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                              float minFontPx = 8.0f);
+
+// The charts `pcfscope stability` writes, from its rows: acne rate against elevation (empty when
+// no acne row), leak width against bias, false-shadow rate against the depth range per depth
+// format, shimmer per method. Each is RGBA8 of `size`, no text
+// below minFontPx.
+std::vector<uint8_t> drawAcneChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                   const std::string& subtitle, float minFontPx = 8.0f);
+std::vector<uint8_t> drawLeakChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                   const std::string& subtitle, float minFontPx = 8.0f);
+std::vector<uint8_t> drawPrecisionChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                        const std::string& subtitle, float minFontPx = 8.0f);
+std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                      const std::string& subtitle, float minFontPx = 8.0f);
+
+// aliasing_heatmap.png as a chart: the sweep's heat map (stability.h: aliasingHeatColour per
+// pixel, at the run's map size) with its colour scale, the map size and the median and 99th
+// percentile from the rows in the title and subtitle.
+ImageChartSpec aliasingHeatmapSpec(const StabilityImage& heatmap,
+                                   std::span<const StabilityRow> rows, const std::string& source,
+                                   float minFontPx = 8.0f);
+
+}  // namespace pcf
