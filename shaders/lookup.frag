@@ -7,7 +7,7 @@ uniform sampler2D uPcfDepth;
 uniform sampler2D uLookups;  // RGBA32F: u, v, ref, unused
 uniform sampler2D uPlanes;   // RG32F: dz/du, dz/dv of each lookup (receiver-plane bias)
 uniform float uRadius;
-uniform int uRotatePerPixel;
+uniform int uRotate;
 uniform float uSoftScale;
 uniform float uRpdbMax;      // receiver-plane: cap on dz/duv, depth per uv unit
 uniform int uWeights;  // PCF_WEIGHTS_* for pcf-naive and pcf-gather
@@ -18,7 +18,7 @@ layout(location = 0) out float oVisibility;
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 lookup = texelFetch(uLookups, pixel, 0);
-    vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(pixel) : vec2(1.0f, 0.0f);
+    vec2 rotation = uRotate != 0 ? pcfPixelRotation(pixel) : vec2(1.0f, 0.0f);
     vec4 plane = texelFetch(uPlanes, pixel, 0);
     vec2 uv = vec2(lookup.x, lookup.y);
     PcfRef ref =

@@ -19,7 +19,7 @@ uniform int uReceives;                // 1: look the shadow map up; 0: never sha
 uniform vec3 uLightDirWs;             // the direction the light travels (unit)
 uniform vec3 uLightPosWs;             // spot only
 uniform float uSpotCosCone;           // spot only: cos of the cone's half angle
-uniform float uConstantBias;          // subtracted from z by every mode but none (0 for none)
+uniform float uConstantBias;          // subtracted from z by every mode but none
 uniform float uSlopeBias;             // slope: s in min(b + s * tan(theta), max)
 uniform float uSlopeMax;              // slope: max
 uniform float uNormalOffset;          // normal: k, texels
@@ -27,7 +27,7 @@ uniform float uShadowTexelWs;         // world size of one map texel at clip.w =
 uniform float uSoftScale;             // soft: the correction scale of "PCF Shadow Acne 2"
 uniform float uRpdbMax;               // receiver-plane: cap on dz/duv, depth per uv unit
 uniform float uRadius;                // poisson radius in texels
-uniform int uRotatePerPixel;          // poisson: rotate the disk per pixel
+uniform int uRotate;                  // poisson: rotate the disk per pixel
 uniform int uWeights;                 // pcf-naive, pcf-gather: PCF_WEIGHTS_*
 uniform float uSigma;                 // gaussian weights, texels
 
@@ -76,9 +76,9 @@ void main() {
     float u = ndc.x * 0.5f + 0.5f;
     float v = ndc.y * 0.5f + 0.5f;
     float z = ndc.z * 0.5f + 0.5f;
-    // The per-lookup bias: constant for every mode but none (uConstantBias is 0 there), slope
-    // scaled by tan(theta) and capped for slope (pcfSlopeBias).
-    float bias = uConstantBias;
+    // The per-lookup bias: constant for every mode but none, slope scaled by tan(theta) and
+    // capped for slope (pcfSlopeBias).
+    float bias = BIAS_MODE == PCF_BIAS_NONE ? 0.0f : uConstantBias;
     if (BIAS_MODE == PCF_BIAS_SLOPE) {
         bias = pcfSlopeBias(dot(n, toLight), uConstantBias, uSlopeBias, uSlopeMax);
     }
@@ -94,8 +94,7 @@ void main() {
 
     float visibility = 1.0f;
     if (uReceives != 0) {
-        vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(ivec2(gl_FragCoord.xy))
-                                             : vec2(1.0f, 0.0f);
+        vec2 rotation = uRotate != 0 ? pcfPixelRotation(ivec2(gl_FragCoord.xy)) : vec2(1.0f, 0.0f);
         PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(BIAS_MODE, dzduv, uSoftScale, uRpdbMax));
         visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef,
                                   PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights,

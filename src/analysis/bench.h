@@ -46,7 +46,7 @@
 
 namespace pcf {
 
-// RenderSettings{} with shadowCull = CullMode::Front (see BenchOptions::base).
+// RenderSettings{} with cull = CullMode::Front (see BenchOptions::base).
 RenderSettings benchBaseSettings();
 
 struct BenchOptions {

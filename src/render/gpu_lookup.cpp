@@ -10,17 +10,17 @@ namespace pcf {
 GpuLookup::GpuLookup() : mSamplers(createPcfSamplers()), mEmptyVao(createVertexArray()) {}
 
 std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec4> lookups,
-                                  int width, const PcfParams& prm, bool rotatePerPixel) {
-    return run(map, lookups, width, prm, rotatePerPixel,
+                                  int width, const PcfParams& prm, bool rotate) {
+    return run(map, lookups, width, prm, rotate,
                PcfBias(PCF_BIAS_CONSTANT, glm::vec2(0.0f), 0.0f, PCF_DZDUV_UNCLAMPED), {});
 }
 
 std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec4> lookups,
-                                  int width, const PcfParams& prm, bool rotatePerPixel,
+                                  int width, const PcfParams& prm, bool rotate,
                                   const PcfBias& bias, std::span<const glm::vec2> dzduv) {
     setMap(map);
     setLookups(lookups, width, dzduv, bias.dzduv);
-    draw(prm, rotatePerPixel, bias);
+    draw(prm, rotate, bias);
     return read();
 }
 
@@ -61,7 +61,7 @@ void GpuLookup::setLookups(std::span<const glm::vec4> lookups, int width,
     }
 }
 
-void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& bias) {
+void GpuLookup::draw(const PcfParams& prm, bool rotate, const PcfBias& bias) {
     if (!mDepth || !mInput) throw std::logic_error("GpuLookup::draw before setMap and setLookups");
     auto programs = mPrograms.find(bias.mode);
     if (programs == mPrograms.end()) {
@@ -79,10 +79,9 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
     glBindSampler(3, mSamplers.nearest.id());
     glProgramUniform1i(program, glGetUniformLocation(program, "uPlanes"), 3);
     glProgramUniform1f(program, glGetUniformLocation(program, "uSoftScale"), bias.softScale);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.dzduvMax);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.rpdbMax);
     glProgramUniform1f(program, glGetUniformLocation(program, "uRadius"), prm.radius);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uRotatePerPixel"),
-                       rotatePerPixel ? 1 : 0);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uRotate"), rotate ? 1 : 0);
     glProgramUniform1i(program, glGetUniformLocation(program, "uWeights"), prm.weights);
     glProgramUniform1f(program, glGetUniformLocation(program, "uSigma"), prm.sigma);
     glProgramUniform1i(program, glGetUniformLocation(program, "uPcfPrecision"), prm.precision);
