@@ -16,8 +16,8 @@ std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec
 }
 
 std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec4> lookups,
-                                  int width, const PcfParams& prm, bool rotate,
-                                  const PcfBias& bias, std::span<const glm::vec2> dzduv) {
+                                  int width, const PcfParams& prm, bool rotate, const PcfBias& bias,
+                                  std::span<const glm::vec2> dzduv) {
     setMap(map);
     setLookups(lookups, width, dzduv, bias.dzduv);
     draw(prm, rotate, bias);
