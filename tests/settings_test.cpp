@@ -153,7 +153,7 @@ TEST(ParameterTable, EveryUniformIsDeclaredInTheSceneShaderWithItsType) {
             std::string("uniform ") + (isFloat ? "float " : "int ") + std::string(p.uniform) + ";";
         EXPECT_NE(text.str().find(decl), std::string::npos) << decl;
     }
-    EXPECT_GE(uniforms, 10);
+    EXPECT_GE(uniforms, 8);
 }
 
 TEST(ParameterTable, EveryParameterRoundTripsThroughALessonFile) {

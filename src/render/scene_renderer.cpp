@@ -201,7 +201,9 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glDisable(GL_BLEND);
 
     BiasParams bias = settings.biasParams();
-    GLuint program = programsFor(targets, bias.mode).get(settings.method, settings.kernel);
+    bool fixedPoint = depthFormatFixedPointBits(mShadowFormat) != 0;
+    GLuint program = programsFor(targets, bias.mode)
+                         .get(pcfVariant(settings.pcfParams(), settings.rotate, fixedPoint));
     glUseProgram(program);
     glm::mat4 clip = clipFromWorld();
     glProgramUniformMatrix4fv(program, uniform(program, "uClipFromWorld"), 1, GL_FALSE,
@@ -221,8 +223,6 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     float texelWs = 2.0f / (std::min(std::fabs(proj[0][0]), std::fabs(proj[1][1])) *
                             static_cast<float>(settings.mapSize));
     glProgramUniform1f(program, uniform(program, "uShadowTexelWs"), texelWs);
-    glProgramUniform1i(program, uniform(program, "uPcfFixedPoint"),
-                       depthFormatFixedPointBits(mShadowFormat) != 0 ? 1 : 0);
     bindShadowMap(program, mShadow.depth.id(), mSamplers);
     drawObjects(program, false, true);
     glBindSampler(0, 0);
