@@ -22,7 +22,7 @@ uniform int uReceives;                // 1: look the shadow map up; 0: never sha
 uniform vec3 uLightDirWs;             // the direction the light travels (unit)
 uniform vec3 uLightPosWs;             // spot only
 uniform float uSpotCosCone;           // spot only: cos of the cone's half angle
-uniform float uConstantBias;          // subtracted from z by every mode but none (0 for none)
+uniform float uConstantBias;          // subtracted from z by every mode but none
 uniform float uSlopeBias;             // slope: s in min(b + s * tan(theta), max)
 uniform float uSlopeMax;              // slope: max
 uniform float uNormalOffset;          // normal: k, texels

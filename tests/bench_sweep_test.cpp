@@ -89,7 +89,7 @@ TEST_F(BenchSweep, AcneIsFalseShadowOnAFullyLitGroundAndABiasClearsIt) {
     o.methods = {PCF_NEAREST, PCF_GATHER};
     o.kernels = {3};
     o.mapSizes = {256};
-    o.base.shadowCull = CullMode::Back;  // the ground is in the map
+    o.base.cull = CullMode::Back;  // the ground is in the map
     o.base.bias = BiasMode::None;
     Scene ground = bareGround();
     std::vector<BenchRow> none = sweep(ground, o, 2);

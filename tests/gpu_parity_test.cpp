@@ -307,7 +307,7 @@ TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
                 s.method = prm.method;
                 s.kernel = prm.kernel;
                 s.radius = prm.radius;
-                s.rotatePerPixel = prm.method == PCF_POISSON && prm.radius > 2.0f;
+                s.rotate = prm.method == PCF_POISSON && prm.radius > 2.0f;
                 s.mapSize = mapSize;
                 s.frameSize = {240, 136};
                 renderer.render(s);
@@ -324,7 +324,7 @@ TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
                         ++receivers;
                         PcfParams p = s.pcfParams();
                         // The disk turns with the texel looked up (pcfTexelRotation).
-                        if (s.rotatePerPixel) {
+                        if (s.rotate) {
                             p.rotation = pcfTexelRotation(glm::vec2(ls[4 * k], ls[4 * k + 1]),
                                                           glm::ivec2(map.width(), map.height()));
                         }
@@ -404,7 +404,7 @@ TEST_F(GpuParity, BiasModesOnRandomLookupsMatchTheCpuKernel) {
                     dark += cpu < 0.5f ? 1 : 0;
                 }
                 EXPECT_LE(worst, PARITY_TOLERANCE)
-                    << biasName(mode) << " scale " << softScale << " cap " << bias.dzduvMax << " "
+                    << biasName(mode) << " scale " << softScale << " cap " << bias.rpdbMax << " "
                     << describe(prm);
                 // Neither all lit nor all dark: there are comparisons to disagree about.
                 EXPECT_GT(lit, 100) << describe(prm);

@@ -2,6 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+#include <stdexcept>
+
+#include "kernel/settings.h"
+#include "kernel/trace.h"
+
 namespace pcf {
 namespace {
 
@@ -16,6 +22,58 @@ TEST(Methods, TheNineIdsOfTheDesignInOrder) {
     }
     EXPECT_FALSE(methodFromName("pcf").has_value());
     EXPECT_FALSE(methodFromName("").has_value());
+}
+
+TEST(Methods, EachEntryIsItsTypedIdWithItsOwnLabelAndColour) {
+    std::set<std::string_view> labels;
+    std::set<std::tuple<float, float, float>> colours;
+    for (const MethodInfo& m : allMethods()) {
+        EXPECT_EQ(static_cast<int>(methodOf(m.id)), m.id) << m.name;
+        EXPECT_EQ(&methodInfo(m.id), &m) << m.name;
+        EXPECT_TRUE(labels.insert(m.shortName).second) << m.shortName;
+        EXPECT_TRUE(colours.insert({m.chartColour.r, m.chartColour.g, m.chartColour.b}).second)
+            << m.name;
+        EXPECT_EQ(m.usesKernel || m.kernelSizes.empty(), true) << m.name;
+    }
+    // No method stands in for an unknown one.
+    EXPECT_THROW(methodInfo(PCF_METHOD_COUNT), std::out_of_range);
+    EXPECT_THROW(fetchCounts(-1, 3), std::out_of_range);
+}
+
+// The table's `reads` is what the kernel issues: gathers, hardware taps or plain texel reads.
+TEST(Methods, ReadsAreTheFetchesTheKernelIssues) {
+    ShadowMap map(16, 16, 0.5f);
+    for (const MethodInfo& m : allMethods()) {
+        int n = fitKernel(m.id, 3);
+        Trace tr = traceLookup(map, vec2(0.43f, 0.57f), 0.5f, 0.5f, makeParams(m.id, n));
+        std::set<int> kinds;
+        for (const FetchRecord& f : tr.fetches) kinds.insert(f.kind);
+        MethodReads reads = kinds.count(PCF_FETCH_GATHER) ? MethodReads::Gathers
+                            : kinds.count(PCF_FETCH_HW)   ? MethodReads::HwTaps
+                                                          : MethodReads::Texels;
+        EXPECT_EQ(m.reads, reads) << m.name;
+        EXPECT_EQ(tr.usesTextureUnit, m.reads != MethodReads::Texels) << m.name;
+    }
+}
+
+// takesWeights: binomial weights change what the method returns, and only those methods
+// accept them.
+TEST(Methods, WeightsChangeTheResultOfTheMethodsThatTakeThem) {
+    ShadowMap map(16, 16, 0.5f);
+    for (int y = 0; y < 16; ++y) {
+        for (int x = 0; x < 16; ++x)
+            map.setDepth(x, y, static_cast<float>((x * 7 + y * 3) % 5) * 0.25f);
+    }
+    for (const MethodInfo& m : allMethods()) {
+        PcfParams box = makeParams(m.id, fitKernel(m.id, 3));
+        PcfParams binomial = box;
+        binomial.weights = PCF_WEIGHTS_BINOMIAL;
+        EXPECT_EQ(checkParams(binomial).has_value(), !m.takesWeights) << m.name;
+        if (!m.takesWeights) continue;
+        vec2 uv(0.43f, 0.57f);
+        EXPECT_NE(filterVisibility(map, uv, 0.5f, box), filterVisibility(map, uv, 0.5f, binomial))
+            << m.name;
+    }
 }
 
 TEST(Methods, FetchCountsOfTheDesignTable) {

@@ -1,7 +1,19 @@
-// kernel/settings.h: the settings vocabulary the CLI, lesson files and renderer share.
+// kernel/settings.h: the settings vocabulary the CLI, lesson files and renderer share, and the
+// one parameter table each of them is generated from.
 #include "kernel/settings.h"
 
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <type_traits>
+#include <variant>
+
+#include "app/cli_util.h"
+#include "app/render_options.h"
+#include "json_lite.h"
+#include "lesson/lesson.h"
 
 namespace pcf {
 namespace {
@@ -60,6 +72,181 @@ TEST(Settings, NamesRoundTrip) {
         EXPECT_EQ(biasModeName(mode), biasName(m));  // one table of names: kernel/bias.h
     }
     EXPECT_FALSE(biasModeFromName("lots").has_value());
+}
+
+// The value of parameter p as a lesson file writes it: names quoted, numbers and flags bare.
+std::string tomlValue(const ParamInfo& p, const ShadowSettings& s) {
+    std::string text = settingText(p, s);
+    bool named = p.field.index() >= 3;  // the NamedField alternatives follow the member pointers
+    return named ? "\"" + text + "\"" : text;
+}
+
+// A lesson whose [settings] sets `key = value`, parsed: its first step's settings.
+LessonSettings lessonWith(std::string_view key, const std::string& value) {
+    std::string text = "title = \"t\"\nscene = \"box-on-plane\"\n[settings]\n" + std::string(key) +
+                       " = " + value + "\n[[step]]\ntitle = \"s\"\ntext = \"x\"\n";
+    return parseLessonString(text, "table.toml").steps.at(0).settings;
+}
+
+// Each numeric parameter at the top of its range (a value no default has).
+ShadowSettings atMax(const ParamInfo& p) {
+    ShadowSettings s;
+    if (auto f = std::get_if<int ShadowSettings::*>(&p.field)) s.*(*f) = static_cast<int>(p.max);
+    if (auto f = std::get_if<float ShadowSettings::*>(&p.field))
+        s.*(*f) = static_cast<float>(p.max);
+    if (auto f = std::get_if<bool ShadowSettings::*>(&p.field)) s.*(*f) = !(s.*(*f));
+    return s;
+}
+
+// The address of p's field in s: two rows must not name the same field.
+const void* fieldIn(const ParamInfo& p, const ShadowSettings& s) {
+    return std::visit(
+        [&](const auto& field) -> const void* {
+            if constexpr (std::is_member_object_pointer_v<std::decay_t<decltype(field)>>) {
+                return &(s.*field);
+            } else {
+                return &(s.*field.field);
+            }
+        },
+        p.field);
+}
+
+TEST(ParameterTable, EveryParameterOnceWithItsKeyFlagAndRange) {
+    std::set<std::string_view> keys;
+    std::set<std::string> flags;
+    ShadowSettings defaults;
+    for (const ParamInfo& p : allParams()) {
+        EXPECT_TRUE(keys.insert(p.key).second) << p.key;
+        EXPECT_TRUE(flags.insert(settingFlag(p.key)).second) << p.key;
+        EXPECT_EQ(findParam(p.key), &p) << p.key;
+        EXPECT_FALSE(p.help.empty()) << p.key;
+        for (const ParamInfo& q : allParams()) {
+            if (&p != &q) {
+                EXPECT_NE(fieldIn(p, defaults), fieldIn(q, defaults)) << p.key << q.key;
+            }
+        }
+        if (std::holds_alternative<int ShadowSettings::*>(p.field) ||
+            std::holds_alternative<float ShadowSettings::*>(p.field)) {
+            double v = std::stod(settingText(p, defaults));
+            EXPECT_LT(p.min, p.max) << p.key;
+            EXPECT_TRUE((p.minOpen ? v > p.min : v >= p.min) && v <= p.max) << p.key << " " << v;
+        }
+    }
+    EXPECT_EQ(settingFlag("constant_bias"), "--constant-bias");
+    EXPECT_EQ(findParam("rpdbMax"), nullptr);
+    EXPECT_EQ(settingText(*findParam("method"), defaults), "pcf-gather");
+    EXPECT_EQ(settingText(*findParam("rpdb_max"), defaults), "100");
+}
+
+TEST(ParameterTable, EveryUniformIsDeclaredInTheSceneShaderWithItsType) {
+    std::ifstream in(std::string(PCFSCOPE_SOURCE_DIR) + "/shaders/scene.frag");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::ifstream prelude(std::string(PCFSCOPE_SOURCE_DIR) + "/shaders/shared/pcf_prelude.h");
+    text << prelude.rdbuf();
+    int uniforms = 0;
+    for (const ParamInfo& p : allParams()) {
+        if (p.uniform.empty()) continue;
+        ++uniforms;
+        bool isFloat = std::holds_alternative<float ShadowSettings::*>(p.field);
+        std::string decl =
+            std::string("uniform ") + (isFloat ? "float " : "int ") + std::string(p.uniform) + ";";
+        EXPECT_NE(text.str().find(decl), std::string::npos) << decl;
+    }
+    EXPECT_GE(uniforms, 8);
+}
+
+TEST(ParameterTable, EveryParameterRoundTripsThroughALessonFile) {
+    for (const ParamInfo& p : allParams()) {
+        ShadowSettings defaults;
+        EXPECT_EQ(settingText(p, lessonWith(p.key, tomlValue(p, defaults))),
+                  settingText(p, defaults))
+            << p.key;
+        if (const auto* named = std::get_if<NamedField<int>>(&p.field)) {
+            // Every name of the method, weights and precision tables reads back as itself, or is
+            // refused for the default method (weights) but never as unknown.
+            int read = 0;
+            std::stringstream known(named->known());
+            for (std::string name; std::getline(known >> std::ws, name, ',');) {
+                try {
+                    EXPECT_EQ(settingText(p, lessonWith(p.key, "\"" + name + "\"")), name);
+                    ++read;
+                } catch (const InputError& e) {
+                    EXPECT_EQ(std::string(e.what()).find("unknown"), std::string::npos) << e.what();
+                }
+            }
+            EXPECT_GE(read, 2) << p.key;
+            continue;
+        }
+        if (p.field.index() >= 3) continue;  // the enums' names: NamesRoundTrip
+        ShadowSettings top = atMax(p);
+        EXPECT_EQ(settingText(p, lessonWith(p.key, tomlValue(p, top))), settingText(p, top))
+            << p.key;
+    }
+}
+
+// A command's parse of `args` with the shared options, as `render` registers them.
+RenderSettings parseRenderOptions(std::vector<std::string> args) {
+    CLI::App app;
+    RenderOptions options;
+    options.addTo(&app, "box-on-plane");
+    std::reverse(args.begin(), args.end());
+    app.parse(args);
+    return options.settings();
+}
+
+TEST(ParameterTable, EveryParameterHasAFlagThatParsesItsDefaultAndItsMax) {
+    RenderSettings none = parseRenderOptions({});
+    for (const ParamInfo& p : allParams()) {
+        ShadowSettings defaults;
+        std::string flag = settingFlag(p.key);
+        EXPECT_EQ(settingText(p, none), settingText(p, defaults)) << p.key;
+        if (std::holds_alternative<bool ShadowSettings::*>(p.field)) {
+            EXPECT_EQ(settingText(p, parseRenderOptions({flag})), "true") << flag;
+            continue;
+        }
+        EXPECT_EQ(settingText(p, parseRenderOptions({flag, settingText(p, defaults)})),
+                  settingText(p, defaults))
+            << flag;
+        if (p.field.index() >= 3) continue;
+        ShadowSettings top = atMax(p);
+        EXPECT_EQ(settingText(p, parseRenderOptions({flag, settingText(p, top)})),
+                  settingText(p, top))
+            << flag;
+    }
+    EXPECT_THROW(parseRenderOptions({"--cull", "both"}), UsageError);
+    EXPECT_THROW(parseRenderOptions({"--slope-max", "2"}), UsageError);
+}
+
+TEST(ParameterTable, TheRawJsonHoldsTheMarkedParametersWithTheirValues) {
+    ShadowSettings s;
+    s.method = PCF_POISSON;
+    s.radius = 2.5f;
+    s.bias = BiasMode::Soft;
+    s.softScale = 1000.0f;
+    jsonlite::Value j = jsonlite::parse(settingsJson(s));
+    size_t marked = 0;
+    for (const ParamInfo& p : allParams()) {
+        if (!p.rawJson) {
+            EXPECT_FALSE(j.has(std::string(p.key))) << p.key;
+            continue;
+        }
+        ++marked;
+        const jsonlite::Value& v = j[std::string(p.key)];
+        switch (v.kind) {
+            case jsonlite::Value::STRING:
+                EXPECT_EQ(v.string, settingText(p, s)) << p.key;
+                break;
+            case jsonlite::Value::BOOL:
+                EXPECT_EQ(v.boolean ? "true" : "false", settingText(p, s)) << p.key;
+                break;
+            default:
+                EXPECT_EQ(v.number, std::stod(settingText(p, s))) << p.key;
+        }
+    }
+    EXPECT_EQ(j.size(), marked);
+    EXPECT_EQ(j["method"].string, "poisson");
+    EXPECT_EQ(j["soft_scale"].number, 1000.0);
 }
 
 }  // namespace

@@ -50,7 +50,7 @@ TEST_F(Stability, NearestShimmersMoreThanGather5x5AndSnappingStillsBoth) {
     o.methods = {NEAREST, GATHER5};
     o.biases = {BiasMode::Constant};
     // Back faces in the map: no acne on the lit ground, so only the shadow's edges can move.
-    o.base.shadowCull = CullMode::Front;
+    o.base.cull = CullMode::Front;
     o.frameSize = {320, 180};
     o.mapSize = 256;
     o.truthSpp = 1;

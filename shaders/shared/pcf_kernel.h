@@ -158,7 +158,7 @@ struct PcfBias {
     int mode;         // PCF_BIAS_NONE .. PCF_BIAS_INTERPOLATED
     vec2 dzduv;       // receiver-plane: d(depth)/d(u, v) of the receiver, light depth per uv unit
     float softScale;  // soft: "PCF Shadow Acne 2"'s Z_CMP_CORRECTION_SCALE, 1/depth
-    float dzduvMax;   // receiver-plane: cap on |dz/du|, |dz/dv|, light depth per uv unit
+    float rpdbMax;    // receiver-plane: cap on |dz/du|, |dz/dv|, light depth per uv unit
 };
 
 // A cap so large no receiver reaches it: the receiver plane as measured (tests, old callers).
@@ -720,7 +720,7 @@ PCF_FN vec2 pcfTexelRotation(vec2 uv, ivec2 size) {
 // ref (PcfRef) says. Weighted sums can land an ulp above 1; the result is clamped to [0,1].
 PCF_MAP_FN float pcfFilterRef(Map map, vec2 uv, PcfRef ref, PcfParams prm) {
     if (ref.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
-        ref.bias.dzduv = pcfClampDzDuv(ref.bias.dzduv, ref.bias.dzduvMax);
+        ref.bias.dzduv = pcfClampDzDuv(ref.bias.dzduv, ref.bias.rpdbMax);
     }
     float v;
     if (prm.method == PCF_NEAREST) {

@@ -35,7 +35,7 @@ PCF_FN PcfReceiverLookup pcfReceiverLookup(mat4 shadowClipFromWorld, vec3 posWs,
     float u = (clip.x / clip.w) * 0.5f + 0.5f;
     float v = (clip.y / clip.w) * 0.5f + 0.5f;
     float z = (clip.z / clip.w) * 0.5f + 0.5f;
-    float bias = constantBias;
+    float bias = biasMode == PCF_BIAS_NONE ? 0.0f : constantBias;  // none subtracts nothing
     if (biasMode == PCF_BIAS_SLOPE)
         bias = pcfSlopeBias(cosTheta, constantBias, slopeBias, slopeMax);
     return PcfReceiverLookup(u, v, z, z0, z - bias);

@@ -34,7 +34,7 @@ std::vector<int> kernelsOf(int method, const BenchOptions& options) {
     if (!methodInfo(method).usesKernel) return {0};
     std::vector<int> kernels;
     for (int n : options.kernels) {
-        if (method != PCF_TENT || kernelFits(method, n)) kernels.push_back(n);
+        if (methodInfo(method).kernelSizes.empty() || kernelFits(method, n)) kernels.push_back(n);
     }
     return kernels;
 }
@@ -51,11 +51,9 @@ RenderSettings settingsFor(const BenchOptions& options, const BenchPoint& p) {
     return s;
 }
 
-bool takesWeights(int method) { return method == PCF_NAIVE || method == PCF_GATHER; }
-
 // The weightings a method runs with: the options' for pcf-naive and pcf-gather, else the box.
 std::vector<int> weightsOf(int method, const BenchOptions& options) {
-    if (takesWeights(method)) return options.weights;
+    if (methodInfo(method).takesWeights) return options.weights;
     return {PCF_WEIGHTS_BOX};
 }
 
@@ -63,7 +61,7 @@ std::vector<int> weightsOf(int method, const BenchOptions& options) {
 
 RenderSettings benchBaseSettings() {
     RenderSettings s;
-    s.shadowCull = CullMode::Front;
+    s.cull = CullMode::Front;
     return s;
 }
 
@@ -123,7 +121,7 @@ std::optional<ParamProblem> validateBenchOptions(const BenchOptions& options) {
     for (int method : methodsOf(options)) {
         if (kernelsOf(method, options).empty()) {
             return ParamProblem{"kernels", std::string(methodInfo(method).name) + " takes ",
-                                " 3, 5 or 7 and none of those was given"};
+                                " " + kernelSizesText(method) + " and none of those was given"};
         }
     }
     if (options.frameSize.x < 1 || options.frameSize.y < 1 ||
@@ -143,7 +141,7 @@ std::optional<ParamProblem> validateBenchOptions(const BenchOptions& options) {
         if (auto problem = checkParams(p)) return problem;  // weights or sigma
     }
     for (int method : methodsOf(options)) {
-        if (!box && !takesWeights(method)) {
+        if (!box && !methodInfo(method).takesWeights) {
             return ParamProblem{
                 "weights", std::string(methodInfo(method).name) + " weighs its taps as it must: ",
                 " other than box apply to pcf-naive and pcf-gather only (list "
@@ -284,7 +282,7 @@ class BenchRun {
         row.shimmer = measureShimmer(s);
         // One untimed draw of each timed pass: compiles its programs before the rounds.
         row.timer = mRenderer.timeCameraPass(s, 1).timer;
-        mLookupPass.draw(s.pcfParams(), s.rotatePerPixel, s.biasParams().kernelBias());
+        mLookupPass.draw(s.pcfParams(), s.rotate, s.biasParams().kernelBias());
         if (mOptions.reference) mLookupPass.drawReference(s.pcfParams());
         glFinish();
         row.cpuNsPerPixel = timeCpuKernel(map(mMaps, p.mapSize), mCpuLookups, s.pcfParams(),
@@ -360,8 +358,7 @@ class BenchRun {
         samples.scene.add(mRenderer.timeCameraPass(s, 1, false));
         PcfParams prm = s.pcfParams();
         PcfBias bias = s.biasParams().kernelBias();
-        samples.lookup.add(
-            timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel, bias); }, 1, false));
+        samples.lookup.add(timeGpu([&] { mLookupPass.draw(prm, s.rotate, bias); }, 1, false));
         if (mOptions.reference) {
             samples.reference.add(timeGpu([&] { mLookupPass.drawReference(prm); }, 1, false));
         }

@@ -48,7 +48,7 @@
 
 namespace pcf {
 
-// RenderSettings{} with shadowCull = CullMode::Front (see BenchOptions::base).
+// RenderSettings{} with cull = CullMode::Front (see BenchOptions::base).
 RenderSettings benchBaseSettings();
 
 struct BenchOptions {

@@ -34,29 +34,6 @@ Fonts fontsFor(float s, float minPx) {
             px(13.0f)};
 }
 
-std::string shortName(int method) {
-    switch (method) {
-        case PCF_NEAREST:
-            return "nearest";
-        case PCF_BOX2X2:
-            return "box";
-        case PCF_BILINEAR2X2:
-            return "bilin";
-        case PCF_HW2X2:
-            return "hw2x2";
-        case PCF_NAIVE:
-            return "naive";
-        case PCF_GATHER:
-            return "gather";
-        case PCF_HW:
-            return "hw";
-        case PCF_TENT:
-            return "tent";
-        default:
-            return "poisson";
-    }
-}
-
 float overlapArea(const Rect& a, const Rect& b) {
     Rect o = a.intersect(b);
     return o.w * o.h;
@@ -106,7 +83,7 @@ std::vector<size_t> chartRowsMatching(std::span<const BenchRow> rows,
 }
 
 std::string chartLabel(const BenchPoint& point) {
-    std::string s = shortName(point.method);
+    std::string s(methodInfo(point.method).shortName);
     if (point.kernel > 0) s += std::to_string(point.kernel);
     if (point.weights == PCF_WEIGHTS_BINOMIAL) s += " binom";
     if (point.weights == PCF_WEIGHTS_GAUSSIAN) s += " gauss" + chartTickText(point.sigma);
@@ -114,20 +91,8 @@ std::string chartLabel(const BenchPoint& point) {
 }
 
 glm::vec4 methodColour(int method) {
-    // Tableau 10, with the yellow and pink darkened to read on white.
-    static const glm::vec4 COLOURS[PCF_METHOD_COUNT] = {
-        {0.31f, 0.47f, 0.65f, 1.0f},  // nearest
-        {0.95f, 0.56f, 0.17f, 1.0f},  // box2x2
-        {0.88f, 0.34f, 0.35f, 1.0f},  // bilinear2x2
-        {0.36f, 0.66f, 0.64f, 1.0f},  // hw2x2
-        {0.35f, 0.63f, 0.31f, 1.0f},  // pcf-naive
-        {0.80f, 0.62f, 0.05f, 1.0f},  // pcf-gather
-        {0.69f, 0.48f, 0.63f, 1.0f},  // pcf-hw
-        {0.84f, 0.30f, 0.62f, 1.0f},  // tent
-        {0.61f, 0.46f, 0.37f, 1.0f},  // poisson
-    };
     if (method < 0 || method >= PCF_METHOD_COUNT) return CHART_INK;
-    return COLOURS[method];
+    return methodInfo(method).chartColour;
 }
 
 double chartMs(const BenchRow& row, ChartTiming timing) {

@@ -640,18 +640,22 @@ std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) 
 }
 
 float footprintReachTexels(const StabilityMethod& m, float poissonRadius) {
-    switch (m.method) {
-        case PCF_NEAREST:
+    switch (methodOf(m.method)) {
+        case Method::Nearest:
             return 0.5f;
-        case PCF_BOX2X2:
-        case PCF_BILINEAR2X2:
-        case PCF_HW2X2:
+        case Method::Box2x2:
+        case Method::Bilinear2x2:
+        case Method::Hw2x2:
             return 1.0f;
-        case PCF_POISSON:
+        case Method::Poisson:
             return poissonRadius + 0.5f;
-        default:
+        case Method::Naive:
+        case Method::Gather:
+        case Method::Hw:
+        case Method::Tent:
             return 0.5f * static_cast<float>(std::max(m.kernel, 1) + 1);
     }
+    return 0.0f;
 }
 
 std::vector<glm::vec3> footprintPoints(const Scene& scene, const glm::mat4& shadowClipFromWorld,

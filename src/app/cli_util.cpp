@@ -45,16 +45,6 @@ glm::vec2 parseVec2(const std::string& option, const std::string& text) {
     return v;
 }
 
-glm::ivec2 parseIvec2(const std::string& option, const std::string& text) {
-    size_t comma = text.find(',');
-    glm::ivec2 v;
-    if (comma == std::string::npos || !parseInt(text.substr(0, comma), v.x) ||
-        !parseInt(text.substr(comma + 1), v.y)) {
-        throw UsageError(option + " expects two integers as X,Y, got '" + text + "'");
-    }
-    return v;
-}
-
 glm::ivec2 parseSize(const std::string& option, const std::string& text, int maxSide,
                      glm::ivec2 minSize) {
     size_t x = text.find('x');
@@ -130,9 +120,7 @@ std::vector<int> parseIntList(const std::string& option, const std::string& text
 
 std::string cliWords(const ParamProblem& problem) {
     if (problem.setting.empty()) return problem.text();
-    std::string flag = "--" + problem.setting;
-    std::replace(flag.begin(), flag.end(), '_', '-');
-    return problem.say(flag);
+    return problem.say(settingFlag(problem.setting));
 }
 
 std::optional<std::string> cliParamsProblem(const PcfParams& prm) {
@@ -140,14 +128,9 @@ std::optional<std::string> cliParamsProblem(const PcfParams& prm) {
     return std::nullopt;
 }
 
-std::optional<std::string> cliBiasProblem(const BiasParams& bias) {
-    if (std::optional<ParamProblem> p = checkBiasParams(bias)) return cliWords(*p);
+std::optional<std::string> cliBiasProblem(const ShadowSettings& s) {
+    if (std::optional<ParamProblem> p = checkBiasSettings(s)) return cliWords(*p);
     return std::nullopt;
-}
-
-std::string kernelOptionHelp() {
-    return "kernel size N (" + kernelSizesText(PCF_GATHER) +
-           "; tent: " + kernelSizesText(PCF_TENT) + ")";
 }
 
 }  // namespace pcf

@@ -9,6 +9,7 @@
 
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "kernel/settings.h"
 
 namespace pcf {
 
@@ -31,8 +32,6 @@ glm::vec2 parseVec2(const std::string& option, const std::string& text);
 // "1280x720" -> (1280, 720); each side minSize..maxSide.
 glm::ivec2 parseSize(const std::string& option, const std::string& text, int maxSide,
                      glm::ivec2 minSize = glm::ivec2(1));
-// "12,34" -> (12, 34).
-glm::ivec2 parseIvec2(const std::string& option, const std::string& text);
 // Throws UsageError unless lo <= v <= hi and v is finite.
 void requireRange(const std::string& option, float v, float lo, float hi);
 // Throws UsageError ("--spp 0 is out of range (1..64)") unless lo <= v <= hi.
@@ -46,12 +45,9 @@ void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, flo
 // the setting named as its flag, "slope_max" -> "--slope-max" ("tent takes --kernel 3, 5 or 7,
 // not 4"). The one place the CLI turns setting names into flags.
 std::string cliWords(const ParamProblem& problem);
-// checkParams (kernel/methods.h) and checkBiasParams (kernel/bias.h) in cliWords; nullopt when
-// the parameters are valid.
+// checkParams (kernel/methods.h) and checkBiasSettings (kernel/settings.h) in cliWords; nullopt
+// when the parameters are valid.
 std::optional<std::string> cliParamsProblem(const PcfParams& prm);
-std::optional<std::string> cliBiasProblem(const BiasParams& bias);
-
-// --kernel's help, the sizes from kernel/settings.h: "kernel size N (1..8; tent: 3, 5 or 7)".
-std::string kernelOptionHelp();
+std::optional<std::string> cliBiasProblem(const ShadowSettings& s);
 
 }  // namespace pcf

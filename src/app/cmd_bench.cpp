@@ -139,8 +139,8 @@ RenderSettings baseSettings(const BenchCommandOptions& o) {
         }
     }
     RenderOptions stand = o.render;
-    stand.method = "nearest";
-    stand.weights = "box";
+    stand.shadow.name("method") = "nearest";
+    stand.shadow.name("weights") = "box";
     return stand.settings();
 }
 
@@ -179,7 +179,7 @@ BenchOptions parseSweep(const BenchCommandOptions& o) {
     if (o.given("--methods")) options.methods = parseMethods(o.methods);
     if (o.given("--kernels")) options.kernels = parseIntList("--kernels", o.kernels);
     if (o.given("--map-sizes")) options.mapSizes = parseIntList("--map-sizes", o.mapSizes);
-    if (o.given("--weights")) options.weights = parseWeightsList(o.render.weights);
+    if (o.given("--weights")) options.weights = parseWeightsList(o.render.shadow.name("weights"));
     options.sigma = base.sigma;
     bool weightedOnly = std::find(options.weights.begin(), options.weights.end(),
                                   PCF_WEIGHTS_BOX) == options.weights.end();
@@ -403,7 +403,7 @@ Command addBenchCommand(CLI::App& app) {
     o->sub = sub;
     // The map holds back faces by default (front faces culled): shadow acne, a bias problem,
     // stays off the lit faces, so the edge error measures the filter (analysis/bench.h).
-    o->render.cull = "front";
+    o->render.defaults.cull = CullMode::Front;
     o->render.addTo(sub, DEFAULT_SCENE);
     // The single-run options bench refuses (baseSettings) stay out of its help.
     for (const char* single : SINGLE_RUN_OPTIONS) sub->get_option(single)->group("");

@@ -25,7 +25,7 @@ Command addMethodsCommand(CLI::App& app) {
                     std::string fetches = count(c.texels, "texel");
                     if (c.gathers) fetches += " in " + count(c.gathers, "gather");
                     if (c.hwTaps) fetches += " in " + count(c.hwTaps, "hw tap");
-                    if (m.id == PCF_TENT && n != *kernel) fetches += " (N=3)";
+                    if (n != *kernel) fetches += " (N=" + std::to_string(n) + ")";
                     std::printf("%-12s %-26s %s\n", std::string(m.name).c_str(), fetches.c_str(),
                                 std::string(m.summary).c_str());
                 }

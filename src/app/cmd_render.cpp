@@ -20,26 +20,6 @@ namespace pcf {
 
 namespace {
 
-// What `pcfscope verify` needs to repeat the lookups of a --raw folder: the method and its
-// parameters, the map's format (fixed-point clamps D_ref), the precision model, and the bias
-// mode (receiver-plane, soft and interpolated change each tap's comparison; dzduv.exr holds the
-// receiver planes).
-std::string rawSettingsJson(const RenderSettings& s) {
-    Json j = {{"method", methodInfo(s.method).name},
-              {"kernel", s.kernel},
-              {"radius", jsonNumber(s.radius)},
-              {"rotate", s.rotatePerPixel},
-              {"weights", weightsName(s.weights)},
-              {"sigma", jsonNumber(s.sigma)},
-              {"precision", precisionName(s.precision)},
-              {"depth_format", depthFormatName(s.depthFormat)},
-              {"map_size", s.mapSize},
-              {"bias", biasModeName(s.bias)},
-              {"soft_scale", jsonNumber(s.softScale)},
-              {"rpdb_max", jsonNumber(s.rpdbMax)}};
-    return jsonDump(j) + "\n";
-}
-
 struct RenderCommandOptions {
     RenderOptions render;
     std::string out;
@@ -119,7 +99,7 @@ void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderS
     writeExr(raw.positions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
     std::vector<float> receiver = renderer.readReceiver();
     writeExr(raw.receiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
-    writeTextFile(raw.settings, rawSettingsJson(settings));
+    writeTextFile(raw.settings, settingsJson(settings));
 }
 
 int runRender(const RenderCommandOptions& o) {

@@ -78,7 +78,7 @@ std::vector<StabilityMethod> parseMethods(const std::vector<std::string>& names,
         }
         bool any = false;
         for (int n : kernels) {
-            if (*id == PCF_TENT && !kernelFits(*id, n)) continue;
+            if (!methodInfo(*id).kernelSizes.empty() && !kernelFits(*id, n)) continue;
             methods.push_back({*id, n});
             any = true;
         }
@@ -165,7 +165,7 @@ std::string settingsLine(const StabilityOptions& o) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%g", o.base.constantBias);
     std::string s = std::string("constant bias ") + buf + ", cull " +
-                    std::string(cullModeName(o.base.shadowCull)) + " faces in the shadow pass";
+                    std::string(cullModeName(o.base.cull)) + " faces in the shadow pass";
     if (o.base.polygonOffset != glm::vec2(0.0f)) {
         std::snprintf(buf, sizeof buf, "%g, %g", o.base.polygonOffset.x, o.base.polygonOffset.y);
         s += std::string(", polygon offset ") + buf;
@@ -285,7 +285,7 @@ Command addStabilityCommand(CLI::App& app) {
         "charts");
     o->sub = sub;
     o->render.size = "480x270";
-    o->render.mapSize = 512;
+    o->render.defaults.mapSize = 512;
     o->render.addTo(sub, DEFAULT_SCENE);
     sub->add_option("--methods", o->methods,
                     "method ids, comma-separated (default nearest,pcf-gather)");

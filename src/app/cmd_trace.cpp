@@ -23,24 +23,14 @@ struct TraceOptions {
     bool example = false;
     std::string uv;
     float z = 0.0f;
-    std::string bias = "none";  // a bias mode name, as render's --bias
-    float constantBias = DEFAULT_CONSTANT_BIAS;
-    float slopeBias = DEFAULT_SLOPE_BIAS;
-    float slopeMax = DEFAULT_SLOPE_MAX;
-    float normalOffset = DEFAULT_NORMAL_OFFSET;
-    float softScale = DEFAULT_SOFT_SCALE;
-    float rpdbMax = DEFAULT_RPDB_MAX;
+    // The filter's and the bias's options, the parameter table's (trace's defaults: bilinear2x2,
+    // no bias).
+    SettingOptions shadow;
     float angleDeg = 0.0f;    // slope: the angle between the receiver's normal and the light
     std::string dzduv;        // receiver-plane: "DU,DV"
     CLI::App* sub = nullptr;  // to ask which options were given
-    std::string method = "bilinear2x2";
-    int kernel = 3;
-    float radius = 1.0f;
     float rotationDeg = 0.0f;
     bool json = false;
-    std::string weights = "box";
-    float sigma = 1.0f;
-    std::string precision = "exact";
     std::string depthFormat = "32f";
 };
 
@@ -53,44 +43,40 @@ constexpr float UV_LIMIT = 20.0f;
 constexpr const char* EXAMPLE_UV = "0.4625,0.3875";
 constexpr float EXAMPLE_Z = 0.5f;
 
-// The filter's parameters: the shared options' parsing and checks (render_options.h), and
-// trace's own --rotation.
-PcfParams traceParams(const TraceOptions& o) {
-    int method = methodOption(o.method);
-    checkGivenKernelOptions(o.sub->count("--kernel") > 0, o.kernel, o.sub->count("--radius") > 0,
-                            o.radius);
+// The settings given: the shared options' parsing (render_options.h), the kernel and radius
+// checked whether or not the method uses them.
+ShadowSettings traceSettings(const TraceOptions& o) {
+    checkGivenKernelOptions(o.shadow.given("kernel"), o.shadow.values().kernel,
+                            o.shadow.given("radius"), o.shadow.values().radius);
+    ShadowSettings s;
+    o.shadow.applyTo(s, false);
+    return s;
+}
+
+// The filter's parameters: the settings', and trace's own --rotation.
+PcfParams traceParams(const TraceOptions& o, const ShadowSettings& s) {
     float rad = o.rotationDeg * 0.0174532925f;
-    PcfParams prm = makeParams(method, o.kernel, o.radius, vec2(std::cos(rad), std::sin(rad)));
-    prm.weights = weightsOption(o.weights);
-    prm.sigma = o.sigma;
-    prm.precision = precisionOption(o.precision);
+    PcfParams prm = s.pcfParams(vec2(std::cos(rad), std::sin(rad)));
     if (auto why = cliParamsProblem(prm)) throw UsageError(*why);
     requireRange("--rotation", o.rotationDeg, -360.0f, 360.0f);
     return prm;
 }
 
-// The bias: the shared options, and trace's --angle and --dzduv that stand in for the receiver
-// the renderer would know.
-BiasParams traceBias(const TraceOptions& o, int method) {
-    BiasParams bias;
-    bias.mode = static_cast<int>(biasModeOption(o.bias));
-    bias.constant = o.constantBias;
-    bias.slope = o.slopeBias;
-    bias.slopeMax = o.slopeMax;
-    bias.normalOffset = o.normalOffset;
-    bias.softScale = o.softScale;
-    bias.rpdbMax = o.rpdbMax;
-    if (auto why = cliBiasProblem(bias)) throw UsageError(*why);
+// The bias: the settings', and trace's --angle and --dzduv that stand in for the receiver the
+// renderer would know.
+BiasParams traceBias(const TraceOptions& o, const ShadowSettings& s) {
+    BiasParams bias = s.biasParams();
+    if (auto why = cliBiasProblem(s)) throw UsageError(*why);
     // trace's default mode is none: a parameter given without a mode would do nothing.
-    if (o.sub->count("--bias") == 0) {
-        for (const char* p : {"--constant-bias", "--slope-bias", "--slope-max", "--normal-offset",
-                              "--soft-scale", "--rpdb-max"}) {
-            if (o.sub->count(p) > 0) {
-                throw UsageError(std::string(p) + " needs --bias NAME (trace's default is none)");
+    if (!o.shadow.given("bias")) {
+        for (const ParamInfo& p : allParams()) {
+            if (p.group == ParamGroup::Bias && o.shadow.given(p.key)) {
+                throw UsageError(settingFlag(p.key) +
+                                 " needs --bias NAME (trace's default is none)");
             }
         }
     }
-    checkBiasOptions(bias, method);
+    checkBiasOptions(s);
     requireRange("--angle", o.angleDeg, 0.0f, 90.0f);
     if (o.sub->count("--angle") > 0 && bias.mode != PCF_BIAS_SLOPE) {
         throw UsageError("--angle is for --bias slope (the angle its tan(theta) reads)");
@@ -110,9 +96,10 @@ int runTrace(const TraceOptions& o) {
     if (o.example == !o.mapPath.empty()) {
         throw UsageError("trace needs exactly one of --map FILE or --example");
     }
-    PcfParams prm = traceParams(o);
+    ShadowSettings settings = traceSettings(o);
+    PcfParams prm = traceParams(o, settings);
     int fixedBits = depthFormatFixedPointBits(depthFormatOption(o.depthFormat));
-    BiasParams bias = traceBias(o, prm.method);
+    BiasParams bias = traceBias(o, settings);
 
     ShadowMap map;
     std::string uvText = o.uv;
@@ -160,8 +147,11 @@ Command addTraceCommand(CLI::App& app) {
                     "to the edge)");
     o->sub = sub;
     sub->add_option("--z", o->z, "receiver depth in [0,1] as the light sees it");
-    addBiasOptions(sub, o->bias, o->constantBias, o->slopeBias, o->slopeMax, o->normalOffset,
-                   o->softScale, o->rpdbMax);
+    ShadowSettings defaults;
+    defaults.method = PCF_BILINEAR2X2;
+    defaults.bias = BiasMode::None;
+    // trace has --rotation (degrees) in the place of --rotate.
+    o->shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias}, defaults, {"rotate"});
     sub->add_option(
         "--angle", o->angleDeg,
         "slope: angle in degrees between the receiver's normal and the light (default 0)");
@@ -170,7 +160,6 @@ Command addTraceCommand(CLI::App& app) {
         "receiver-plane: the receiver's DU,DV = d(depth)/d(u, v) (render --raw writes them in "
         "dzduv.exr). For --bias normal give --uv and --z of the point already moved "
         "(lightspace.exr holds them)");
-    addFilterOptions(sub, o->method, o->kernel, o->radius, o->weights, o->sigma, o->precision);
     sub->add_option("--rotation", o->rotationDeg, "poisson: disk rotation in degrees");
     sub->add_flag("--json", o->json, "print the trace as one JSON object");
     sub->add_option("--depth-format", o->depthFormat,

@@ -1,48 +1,101 @@
 #include "app/render_options.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 #include "app/cli_util.h"
 #include "app/session.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
+#include "kernel/trace_json.h"
 #include "lesson/lesson.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"
 
 namespace pcf {
 
-void addBiasOptions(CLI::App* sub, std::string& bias, float& constantBias, float& slopeBias,
-                    float& slopeMax, float& normalOffset, float& softScale, float& rpdbMax) {
-    sub->add_option("--bias", bias,
-                    "bias mode: " + biasNameList() +
-                        " (README \"Bias modes\"; every mode but none subtracts --constant-bias)");
-    sub->add_option("--constant-bias", constantBias,
-                    "depth subtracted from z in light depth units (ref = z - B), default 0.002");
-    sub->add_option("--slope-bias", slopeBias,
-                    "slope: S in ref = z - min(B + S * tan(theta), M), default 0.001");
-    sub->add_option("--slope-max", slopeMax, "slope: the cap M, light depth units, default 0.01");
-    sub->add_option("--normal-offset", normalOffset,
-                    "normal: K, texels the receiver moves along its normal (times sin(theta)), "
-                    "default 1.5");
-    sub->add_option("--soft-scale", softScale,
-                    "soft: lit = (depth > ref) * saturate((depth - ref) * SCALE), default 2048");
-    sub->add_option("--rpdb-max", rpdbMax,
-                    "receiver-plane: cap M on each component of dz/duv, light depth per uv unit "
-                    "(the whole map), default 100");
+namespace {
+
+// A named parameter's name parsed. method and bias keep the words their errors have always had
+// ("unknown method 'x'", "unknown bias mode 'x'"); the others name their flag.
+template <class T>
+T parseNamed(const ParamInfo& p, const NamedField<T>& named, const std::string& text) {
+    if (p.key == "method") return static_cast<T>(methodOption(text));
+    if (p.key == "bias") return static_cast<T>(biasModeOption(text));
+    std::optional<T> v = named.fromName(text);
+    if (!v) {
+        throw UsageError("unknown " + settingFlag(p.key) + " '" + text +
+                         "' (known: " + named.known() + ")");
+    }
+    return *v;
 }
 
-void addFilterOptions(CLI::App* sub, std::string& method, int& kernel, float& radius,
-                      std::string& weights, float& sigma, std::string& precision) {
-    sub->add_option("--method", method, "PCF method id (see `pcfscope methods`)");
-    sub->add_option("--kernel", kernel, kernelOptionHelp());
-    sub->add_option("--radius", radius, "poisson: disk radius in texels");
-    sub->add_option("--weights", weights,
-                    "pcf-naive, pcf-gather: weights of the N x N lookups: box, binomial, gaussian");
-    sub->add_option("--sigma", sigma, "gaussian weights: standard deviation in texels");
-    sub->add_option("--precision", precision,
-                    "texel position inside hardware taps and gathers: exact, hw8 (1/256 texel)");
+}  // namespace
+
+void SettingOptions::addTo(CLI::App* sub, std::initializer_list<ParamGroup> groups,
+                           const ShadowSettings& defaults,
+                           std::initializer_list<std::string_view> except) {
+    mSub = sub;
+    mValues = defaults;
+    for (const ParamInfo& p : allParams()) {
+        if (std::find(groups.begin(), groups.end(), p.group) == groups.end() ||
+            std::find(except.begin(), except.end(), p.key) != except.end()) {
+            continue;
+        }
+        mParams.push_back(&p);
+        std::string flag = settingFlag(p.key);
+        std::string help = std::string(p.help);
+        std::visit(
+            [&](const auto& field) {
+                using F = std::decay_t<decltype(field)>;
+                if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
+                    sub->add_flag(flag, mValues.*field, help);
+                } else if constexpr (std::is_same_v<F, int ShadowSettings::*> ||
+                                     std::is_same_v<F, float ShadowSettings::*>) {
+                    sub->add_option(flag, mValues.*field,
+                                    help + ", default " + settingText(p, defaults));
+                } else {
+                    std::string& text = mNames[std::string(p.key)];
+                    text = settingText(p, defaults);
+                    sub->add_option(flag, text, help + ": " + field.known() + ", default " + text);
+                }
+            },
+            p.field);
+    }
+}
+
+bool SettingOptions::given(std::string_view key) const {
+    return mSub != nullptr && mSub->count(settingFlag(key)) > 0;
+}
+
+std::string& SettingOptions::name(std::string_view key) {
+    auto at = mNames.find(key);
+    if (at == mNames.end()) throw std::logic_error("no named option " + std::string(key));
+    return at->second;
+}
+
+const std::string& SettingOptions::name(std::string_view key) const {
+    return const_cast<SettingOptions*>(this)->name(key);
+}
+
+void SettingOptions::applyTo(ShadowSettings& s, bool onlyGiven) const {
+    for (const ParamInfo* p : mParams) {
+        if (onlyGiven && !given(p->key)) continue;
+        std::visit(
+            [&](const auto& field) {
+                using F = std::decay_t<decltype(field)>;
+                if constexpr (std::is_member_object_pointer_v<F>) {
+                    s.*field = mValues.*field;
+                } else {
+                    s.*field.field = parseNamed(*p, field, mNames.find(p->key)->second);
+                }
+            },
+            p->field);
+    }
 }
 
 int methodOption(const std::string& name) {
@@ -57,25 +110,10 @@ int weightsOption(const std::string& name) {
     return *w;
 }
 
-int precisionOption(const std::string& name) {
-    std::optional<int> p = precisionFromName(name);
-    if (!p) throw UsageError("unknown --precision '" + name + "' (known: exact, hw8)");
-    return *p;
-}
-
 BiasMode biasModeOption(const std::string& name) {
     std::optional<BiasMode> b = biasModeFromName(name);
     if (!b) throw UsageError("unknown bias mode '" + name + "' (known: " + biasNameList() + ")");
     return *b;
-}
-
-CullMode cullOption(const std::string& name) {
-    std::optional<CullMode> c = cullModeFromName(name);
-    if (!c) {
-        throw UsageError("unknown --cull '" + name + "' (known: " + std::string(CULL_MODE_NAMES) +
-                         ")");
-    }
-    return *c;
 }
 
 DepthFormat depthFormatOption(const std::string& name) {
@@ -87,9 +125,29 @@ DepthFormat depthFormatOption(const std::string& name) {
     return *f;
 }
 
-void checkBiasOptions(const BiasParams& bias, int method) {
-    if (auto why = cliBiasProblem(bias)) throw UsageError(*why);
-    if (auto why = validateBias(bias.mode, method)) throw UsageError(*why);
+std::string settingsJson(const ShadowSettings& s) {
+    Json j = Json::object();
+    for (const ParamInfo& p : allParams()) {
+        if (!p.rawJson) continue;
+        std::visit(
+            [&](const auto& field) {
+                using F = std::decay_t<decltype(field)>;
+                if constexpr (std::is_same_v<F, float ShadowSettings::*>) {
+                    j[std::string(p.key)] = jsonNumber(s.*field);
+                } else if constexpr (std::is_member_object_pointer_v<F>) {
+                    j[std::string(p.key)] = s.*field;
+                } else {
+                    j[std::string(p.key)] = field.name(s.*field.field);
+                }
+            },
+            p.field);
+    }
+    return jsonDump(j) + "\n";
+}
+
+void checkBiasOptions(const ShadowSettings& s) {
+    if (auto why = cliBiasProblem(s)) throw UsageError(*why);
+    if (auto why = validateBias(static_cast<int>(s.bias), s.method)) throw UsageError(*why);
 }
 
 void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
@@ -99,18 +157,14 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
                     "a lesson (path, number or name): its scene and its step's settings; "
                     "options given here override them");
     sub->add_option("--step", lessonStep, "with --lesson: the step whose settings to use");
-    sub->add_option("--scene", scene,
-                    "built-in scene: box-on-plane, sphere-over-plane, pole, "
-                    "grazing, stairs");
+    std::string presets;
+    for (std::string_view n : presetNames())
+        presets += (presets.empty() ? "" : ", ") + std::string(n);
+    sub->add_option("--scene", scene, "built-in scene: " + presets);
     sub->add_option("--scene-file", sceneFile, "scene file (TOML)");
-    addFilterOptions(sub, method, kernel, radius, weights, sigma, precision);
-    sub->add_flag("--rotate", rotate, "poisson: rotate the disk per pixel");
-    addBiasOptions(sub, bias, constantBias, slopeBias, slopeMax, normalOffset, softScale, rpdbMax);
-    sub->add_option("--cull", cull, "faces culled in the shadow pass: back, front, none");
+    shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map}, defaults);
     sub->add_option("--polygon-offset", polygonOffset,
                     "slope-scaled bias in the shadow pass: FACTOR,UNITS for glPolygonOffset");
-    sub->add_option("--map-size", mapSize, "shadow map size in texels (4..4096)");
-    sub->add_option("--depth-format", depthFormat, "shadow map depth format: 16, 24, 32f");
     sub->add_option("--size", size, "frame size WxH");
 }
 
@@ -120,6 +174,7 @@ bool RenderOptions::given(const char* option) const {
 
 RenderSettings RenderOptions::settings() const {
     RenderSettings s;
+    static_cast<ShadowSettings&>(s) = defaults;
     glm::ivec2 frame = parseSize("--size", size, MAX_FRAME_SIDE);
     bool fromLesson = !lesson.empty();
     if (fromLesson) {
@@ -127,35 +182,21 @@ RenderSettings RenderOptions::settings() const {
         requireIntRange("--step", lessonStep, 1, static_cast<int>(l.steps.size()));
         s = renderSettingsFor(l.steps[static_cast<size_t>(lessonStep - 1)].settings, frame);
     }
-    auto use = [&](const char* option) { return !fromLesson || given(option); };
-    if (use("--method")) s.method = methodOption(method);
-    checkGivenKernelOptions(given("--kernel"), kernel, given("--radius"), radius);
-    if (use("--kernel")) s.kernel = kernel;
-    if (use("--radius")) s.radius = radius;
-    if (use("--rotate")) s.rotatePerPixel = rotate;
-    if (use("--weights")) s.weights = weightsOption(weights);
-    if (use("--sigma")) s.sigma = sigma;
-    if (use("--precision")) s.precision = precisionOption(precision);
+    checkGivenKernelOptions(shadow.given("kernel"), shadow.values().kernel, shadow.given("radius"),
+                            shadow.values().radius);
+    shadow.applyTo(s, fromLesson);
     if (auto why = cliParamsProblem(s.pcfParams())) throw UsageError(*why);
-    if (use("--bias")) s.bias = biasModeOption(bias);
-    if (use("--constant-bias")) s.constantBias = constantBias;
-    if (use("--slope-bias")) s.slopeBias = slopeBias;
-    if (use("--slope-max")) s.slopeMax = slopeMax;
-    if (use("--normal-offset")) s.normalOffset = normalOffset;
-    if (use("--soft-scale")) s.softScale = softScale;
-    if (use("--rpdb-max")) s.rpdbMax = rpdbMax;
-    checkBiasOptions(s.biasParams(), s.method);
-    if (use("--cull")) s.shadowCull = cullOption(cull);
-    if (use("--polygon-offset") && !polygonOffset.empty()) {
-        s.polygonOffset = parseVec2("--polygon-offset", polygonOffset);
-        requireRange("--polygon-offset factor", s.polygonOffset.x, -64.0f, 64.0f);
-        requireRange("--polygon-offset units", s.polygonOffset.y, -1.0e6f, 1.0e6f);
+    checkBiasOptions(s);
+    if (!fromLesson || given("--polygon-offset")) {
+        if (!polygonOffset.empty()) {
+            s.polygonOffset = parseVec2("--polygon-offset", polygonOffset);
+            requireRange("--polygon-offset factor", s.polygonOffset.x, -64.0f, 64.0f);
+            requireRange("--polygon-offset units", s.polygonOffset.y, -1.0e6f, 1.0e6f);
+        }
     }
-    if (use("--map-size")) {
-        requireIntRange("--map-size", mapSize, MIN_MAP_SIZE, MAX_MAP_SIZE);
-        s.mapSize = mapSize;
+    if (!fromLesson || shadow.given("map_size")) {
+        requireIntRange("--map-size", s.mapSize, MIN_MAP_SIZE, MAX_MAP_SIZE);
     }
-    if (use("--depth-format")) s.depthFormat = depthFormatOption(depthFormat);
     s.frameSize = frame;
     return s;
 }

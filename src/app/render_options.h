@@ -3,60 +3,71 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <functional>
+#include <initializer_list>
+#include <map>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "render/render_settings.h"
 #include "scene/scene.h"
 
 namespace pcf {
 
-// --bias NAME and its parameters' options, with one text for every command that takes them
-// (render, bench, trace, ...). Values go into the given variables; checks are the caller's
-// (checkBiasOptions).
-void addBiasOptions(CLI::App* sub, std::string& bias, float& constantBias, float& slopeBias,
-                    float& slopeMax, float& normalOffset, float& softScale, float& rpdbMax);
+// The shadow settings' options, generated from the parameter table (kernel/settings.h): each
+// parameter of the chosen groups as its flag (settingFlag) with its help and this command's
+// default. Numbers and flags are bound as they are, names as text parsed by applyTo.
+class SettingOptions {
+  public:
+    // Registers the parameters of `groups` on `sub` but those in `except`, `defaults` being this
+    // command's.
+    void addTo(CLI::App* sub, std::initializer_list<ParamGroup> groups,
+               const ShadowSettings& defaults, std::initializer_list<std::string_view> except = {});
+    // Whether the user gave the parameter's option.
+    bool given(std::string_view key) const;
+    // The name given for a named parameter (or its default): "pcf-gather"; set it to override.
+    std::string& name(std::string_view key);
+    const std::string& name(std::string_view key) const;
+    // The number given for a numeric parameter (or its default), e.g. to check it before use.
+    const ShadowSettings& values() const { return mValues; }
+    // Sets each registered parameter in `s` (only those given when onlyGiven): numbers and flags
+    // as given, names parsed, an unknown one a UsageError naming its option. Ranges are checked
+    // by the caller (cliParamsProblem, checkBiasOptions, ...).
+    void applyTo(ShadowSettings& s, bool onlyGiven) const;
 
-// The filter's options, --method, --kernel, --radius, --weights, --sigma and --precision, with
-// one text each for every command that takes them (render, view, trace, ...).
-void addFilterOptions(CLI::App* sub, std::string& method, int& kernel, float& radius,
-                      std::string& weights, float& sigma, std::string& precision);
+  private:
+    CLI::App* mSub = nullptr;
+    std::vector<const ParamInfo*> mParams;
+    ShadowSettings mValues;
+    std::map<std::string, std::string, std::less<>> mNames;
+};
+
+// What `pcfscope verify` needs to repeat the lookups of a --raw folder, as its render.json: the
+// parameters the table marks rawJson (the method and its parameters, the map's format, the
+// precision model, the bias mode and what changes each tap's comparison), one JSON object.
+std::string settingsJson(const ShadowSettings& s);
 
 // The shared options' names parsed, each with one error for every command ("unknown method
 // 'blur' (known: ...)", "unknown --weights 'sharp' (known: box, binomial, gaussian)").
 int methodOption(const std::string& name);               // --method
 int weightsOption(const std::string& name);              // --weights
-int precisionOption(const std::string& name);            // --precision
 BiasMode biasModeOption(const std::string& name);        // --bias
-CullMode cullOption(const std::string& name);            // --cull
 DepthFormat depthFormatOption(const std::string& name);  // --depth-format
 // The bias parameters' ranges, then whether the mode combines with the method: UsageError in
 // the flags' words.
-void checkBiasOptions(const BiasParams& bias, int method);
+void checkBiasOptions(const ShadowSettings& s);
 
 struct RenderOptions {
     std::string scene;      // preset name
     std::string sceneFile;  // TOML scene file
     std::string lesson;     // a lesson: its scene, and the settings of step `lessonStep`
     int lessonStep = 1;
-    std::string method = "pcf-gather";
-    int kernel = 3;
-    float radius = 1.0f;
-    bool rotate = false;
-    std::string bias = "constant";  // a bias mode name (kernel/bias.h)
-    float constantBias = DEFAULT_CONSTANT_BIAS;
-    float slopeBias = DEFAULT_SLOPE_BIAS;
-    float slopeMax = DEFAULT_SLOPE_MAX;
-    float normalOffset = DEFAULT_NORMAL_OFFSET;
-    float softScale = DEFAULT_SOFT_SCALE;
-    float rpdbMax = DEFAULT_RPDB_MAX;
-    std::string cull = "back";
+    // The shadow settings' options; `defaults` are this command's, set before addTo.
+    ShadowSettings defaults;
+    SettingOptions shadow;
     std::string polygonOffset;  // "F,U": glPolygonOffset in the shadow pass
-    int mapSize = 1024;
-    std::string depthFormat = "32f";
     std::string size = "1280x720";
-    std::string weights = "box";      // pcf-naive, pcf-gather: box, binomial, gaussian
-    float sigma = 1.0f;               // gaussian weights, texels
-    std::string precision = "exact";  // hardware taps and gathers: exact, hw8
 
     // Registers the options on `sub`; `defaultScene` is used when neither --scene nor
     // --scene-file is given (empty: one of them is required).

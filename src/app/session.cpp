@@ -91,23 +91,7 @@ std::string resolveLesson(const std::string& nameOrPath) {
 
 RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) {
     RenderSettings r;
-    r.method = s.method;
-    r.kernel = s.kernel;
-    r.radius = s.radius;
-    r.rotatePerPixel = s.rotate;
-    r.weights = s.weights;
-    r.sigma = s.sigma;
-    r.precision = s.precision;
-    r.mapSize = s.mapSize;
-    r.depthFormat = s.depthFormat;
-    r.bias = s.bias;
-    r.constantBias = s.constantBias;
-    r.slopeBias = s.slopeBias;
-    r.slopeMax = s.slopeMax;
-    r.normalOffset = s.normalOffset;
-    r.softScale = s.softScale;
-    r.rpdbMax = s.rpdbMax;
-    r.shadowCull = s.cull;
+    static_cast<ShadowSettings&>(r) = s;
     r.frameSize = sceneSize;
     return r;
 }
@@ -534,8 +518,7 @@ void Session::renderScene() {
     // The map's texel grid slid and snapped as the lesson says (light.h: shiftShadowOrigin).
     glm::vec3 shift(mSettings.originShift, mSettings.originShift, mSettings.snap ? 1.0f : 0.0f);
     bool mapChanged = !mRendered || mRendered->mapSize != r.mapSize ||
-                      mRendered->depthFormat != r.depthFormat ||
-                      mRendered->shadowCull != r.shadowCull ||
+                      mRendered->depthFormat != r.depthFormat || mRendered->cull != r.cull ||
                       mRendered->polygonOffset != r.polygonOffset || shift != mRenderedShift;
     if (mapChanged) {
         mRenderer->setShadowClipFromWorld(fit);

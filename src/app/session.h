@@ -89,9 +89,6 @@ class Session {
     // The state on screen, which the viewer's keys may change between steps.
     const LessonSettings& settings() const { return mSettings; }
     void setSettings(const LessonSettings& s);
-    // True while the settings differ from the current step's (apart from the pixel): the step
-    // text then says which state its words were written for.
-    bool stepEdited() const { return mStepEdited; }
     // Picked pixel in scene coordinates (top-left origin), clamped to the scene: the pixel that
     // shows the pinned scene point (lesson_pick.h). setPixel pins the point under a pixel (a
     // click, the arrow keys); the point, not the pixel, stays when the frame is resized.
@@ -154,8 +151,6 @@ class Session {
     // The step as JSON: lesson, step, title, text, pixel, settings, the trace object, and the
     // layout of the last composed frame (every box drawn: inspector.h LayoutBox).
     std::string stepJson() const;
-    // The boxes of the last composed frame.
-    const std::vector<LayoutBox>& layoutBoxes() const { return mBoxes; }
     // The model the last compose() drew (for layout checks at other sizes without rendering).
     InspectorModel model() const;
 
@@ -173,6 +168,8 @@ class Session {
     Lesson mLesson;
     int mStep = 0;
     LessonSettings mSettings;
+    // True while the settings differ from the current step's (apart from the pixel): the step
+    // text then says which state its words were written for.
     bool mStepEdited = false;
     glm::ivec2 mPixel{0, 0};
     std::optional<ScenePoint> mPoint;  // the pinned scene point

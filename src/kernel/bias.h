@@ -57,21 +57,6 @@ struct BiasParams {
     float lookupBias(float cosTheta) const;
 };
 
-// The bias of any settings struct that names its fields as the options do (RenderSettings,
-// LessonSettings): one place that maps them onto BiasParams.
-template <class Settings>
-BiasParams biasParamsOf(const Settings& s) {
-    BiasParams b;
-    b.mode = static_cast<int>(s.bias);
-    b.constant = s.constantBias;
-    b.slope = s.slopeBias;
-    b.slopeMax = s.slopeMax;
-    b.normalOffset = s.normalOffset;
-    b.softScale = s.softScale;
-    b.rpdbMax = s.rpdbMax;
-    return b;
-}
-
 // "none", "constant", ... by id (PCF_BIAS_NONE ..), and back.
 std::string_view biasName(int mode);
 std::optional<int> biasFromName(std::string_view name);
@@ -83,9 +68,6 @@ std::string biasNameList();
 // interpolated is a hard comparison (nearest only).
 std::optional<std::string> validateBias(int mode, int method);
 
-// Why a parameter is out of range, or nullopt: in the kernel's words, the setting named as the
-// lesson files' key ("slope_max must be in [0, 1], got 2"); the command line says it as its flag
-// (app/cli_util.h: cliWords, "--slope-max").
-std::optional<ParamProblem> checkBiasParams(const BiasParams& b);
+// Their ranges are the parameter table's: checkBiasSettings (kernel/settings.h).
 
 }  // namespace pcf

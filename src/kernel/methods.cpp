@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "kernel/settings.h"
 
@@ -10,33 +11,121 @@ namespace pcf {
 
 namespace {
 
+// Tent builds its N x N tent from 2, 3 or 4 hardware taps per axis (Castano, 2013, "Shadow
+// Mapping Summary Part 1"): N = 3, 5 or 7.
+constexpr int TENT_SIZES[] = {3, 5, 7};
+
+// The charts' colours: Tableau 10, with the yellow and pink darkened to read on white.
 constexpr std::array<MethodInfo, PCF_METHOD_COUNT> METHODS = {{
-    {PCF_NEAREST, "nearest", "the one texel under the lookup, floor(uv * size): hard edges", false,
-     false},
-    {PCF_BOX2X2, "box2x2", "the 2x2 texels at base averaged: only 0, .25, .5, .75, 1", false,
-     false},
-    {PCF_BILINEAR2X2, "bilinear2x2",
-     "the same 4 bits lerped by the sub-texel fraction (NVIDIA's hardware PCF, emulated)", false,
-     false},
-    {PCF_HW2X2, "hw2x2", "one tap of the hardware comparison sampler (sampler2DShadow, linear)",
-     false, false},
-    {PCF_NAIVE, "pcf-naive", "N x N bilinear lookups one texel apart, averaged", true, false},
-    {PCF_GATHER, "pcf-gather",
-     "pcf-naive's result from the (N+1)^2 distinct texels, read by comparison gathers", true,
-     false},
-    {PCF_HW, "pcf-hw", "N x N hardware comparison taps one texel apart, averaged", true, false},
-    {PCF_TENT, "tent", "Castano's N x N tent (N = 3, 5, 7) from 4, 9 or 16 hardware taps", true,
-     false},
-    {PCF_POISSON, "poisson",
-     "16 nearest-texel comparisons on a Poisson disk of radius R texels, optionally rotated", false,
-     true},
+    {PCF_NEAREST,
+     "nearest",
+     "nearest",
+     "the one texel under the lookup, floor(uv * size): hard edges",
+     false,
+     false,
+     false,
+     MethodReads::Texels,
+     {},
+     {0.31f, 0.47f, 0.65f, 1.0f}},
+    {PCF_BOX2X2,
+     "box2x2",
+     "box",
+     "the 2x2 texels at base averaged: only 0, .25, .5, .75, 1",
+     false,
+     false,
+     false,
+     MethodReads::Texels,
+     {},
+     {0.95f, 0.56f, 0.17f, 1.0f}},
+    {PCF_BILINEAR2X2,
+     "bilinear2x2",
+     "bilin",
+     "the same 4 bits lerped by the sub-texel fraction (NVIDIA's hardware PCF, emulated)",
+     false,
+     false,
+     false,
+     MethodReads::Texels,
+     {},
+     {0.88f, 0.34f, 0.35f, 1.0f}},
+    {PCF_HW2X2,
+     "hw2x2",
+     "hw2x2",
+     "one tap of the hardware comparison sampler (sampler2DShadow, linear)",
+     false,
+     false,
+     false,
+     MethodReads::HwTaps,
+     {},
+     {0.36f, 0.66f, 0.64f, 1.0f}},
+    {PCF_NAIVE,
+     "pcf-naive",
+     "naive",
+     "N x N bilinear lookups one texel apart, averaged",
+     true,
+     false,
+     true,
+     MethodReads::Texels,
+     {},
+     {0.35f, 0.63f, 0.31f, 1.0f}},
+    {PCF_GATHER,
+     "pcf-gather",
+     "gather",
+     "pcf-naive's result from the (N+1)^2 distinct texels, read by comparison gathers",
+     true,
+     false,
+     true,
+     MethodReads::Gathers,
+     {},
+     {0.80f, 0.62f, 0.05f, 1.0f}},
+    {PCF_HW,
+     "pcf-hw",
+     "hw",
+     "N x N hardware comparison taps one texel apart, averaged",
+     true,
+     false,
+     false,
+     MethodReads::HwTaps,
+     {},
+     {0.69f, 0.48f, 0.63f, 1.0f}},
+    {PCF_TENT,
+     "tent",
+     "tent",
+     "Castano's N x N tent (N = 3, 5, 7) from 4, 9 or 16 hardware taps",
+     true,
+     false,
+     false,
+     MethodReads::HwTaps,
+     TENT_SIZES,
+     {0.84f, 0.30f, 0.62f, 1.0f}},
+    {PCF_POISSON,
+     "poisson",
+     "poisson",
+     "16 nearest-texel comparisons on a Poisson disk of radius R texels, optionally rotated",
+     false,
+     true,
+     false,
+     MethodReads::Texels,
+     {},
+     {0.61f, 0.46f, 0.37f, 1.0f}},
 }};
+
+// The table is in id order: methodInfo indexes it by id.
+constexpr bool inIdOrder() {
+    for (size_t k = 0; k < METHODS.size(); ++k) {
+        if (METHODS[k].id != static_cast<int>(k)) return false;
+    }
+    return true;
+}
+static_assert(inIdOrder());
+static_assert(static_cast<int>(Method::Poisson) == PCF_POISSON && PCF_METHOD_COUNT == 9);
 
 }  // namespace
 
 std::span<const MethodInfo> allMethods() { return METHODS; }
 
 const MethodInfo& methodInfo(int method) { return METHODS.at(static_cast<size_t>(method)); }
+
+Method methodOf(int method) { return methodInfo(method).method(); }
 
 std::optional<int> methodFromName(std::string_view name) {
     for (const MethodInfo& m : METHODS) {
@@ -56,30 +145,31 @@ std::string methodNameList() {
 
 FetchCounts fetchCounts(int method, int kernel) {
     int n = kernel;
-    switch (method) {
-        case PCF_NEAREST:
+    switch (methodOf(method)) {
+        case Method::Nearest:
             return {1, 0, 0};
-        case PCF_BOX2X2:
+        case Method::Box2x2:
             return {4, 0, 0};
-        case PCF_BILINEAR2X2:
+        case Method::Bilinear2x2:
             return {4, 0, 0};
-        case PCF_HW2X2:
+        case Method::Hw2x2:
             return {4, 0, 1};
-        case PCF_NAIVE:
+        case Method::Naive:
             return {4 * n * n, 0, 0};
-        case PCF_GATHER: {
+        case Method::Gather: {
             int blocks = (n + 2) / 2;  // ceil((N + 1) / 2) per axis
             return {4 * blocks * blocks, blocks * blocks, 0};
         }
-        case PCF_HW:
+        case Method::Hw:
             return {4 * n * n, 0, n * n};
-        case PCF_TENT: {
+        case Method::Tent: {
             int taps = n <= 3 ? 4 : n <= 5 ? 9 : 16;
             return {4 * taps, 0, taps};
         }
-        default:
+        case Method::Poisson:
             return {16, 0, 0};
     }
+    throw std::out_of_range("fetchCounts: unknown method");
 }
 
 PcfParams makeParams(int method, int kernel, float radius, vec2 rotation) {
@@ -127,7 +217,7 @@ std::optional<ParamProblem> checkParams(const PcfParams& prm) {
         return problem("kernel", "tent takes ", " ", kernelSizesText(prm.method), ", not ",
                        prm.kernel);
     }
-    if (prm.method == PCF_POISSON &&
+    if (info.usesRadius &&
         !(std::isfinite(prm.radius) && prm.radius > 0.0f && prm.radius <= MAX_POISSON_RADIUS)) {
         return problem("radius", "", " ", prm.radius, " is out of range (0, ", MAX_POISSON_RADIUS,
                        "] texels");
@@ -135,7 +225,7 @@ std::optional<ParamProblem> checkParams(const PcfParams& prm) {
     if (prm.weights < PCF_WEIGHTS_BOX || prm.weights > PCF_WEIGHTS_GAUSSIAN) {
         return problem("", "unknown weights id ", prm.weights);
     }
-    if (prm.weights != PCF_WEIGHTS_BOX && prm.method != PCF_NAIVE && prm.method != PCF_GATHER) {
+    if (prm.weights != PCF_WEIGHTS_BOX && !info.takesWeights) {
         return problem("weights", "", " ", weightsName(prm.weights),
                        " applies to pcf-naive and pcf-gather, not ", info.name);
     }

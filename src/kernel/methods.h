@@ -11,16 +11,38 @@
 
 namespace pcf {
 
+// The methods, typed: the kernel's PCF_* ids (shaders/shared/pcf_kernel.h, where GLSL selects
+// by define) as C++ switches on them. Switches over Method have no `default:`, so the compiler
+// names every place a new method must be handled.
+enum class Method { Nearest, Box2x2, Bilinear2x2, Hw2x2, Naive, Gather, Hw, Tent, Poisson };
+
+// How a method reads the map: where receiver-plane bias takes each tap's ref (per texel, per
+// gather, per hardware tap), whether soft bias can see the depths (not through the texture
+// unit's comparison), and whether --precision applies (gathers and hardware taps).
+enum class MethodReads { Texels, Gathers, HwTaps };
+
+// Everything pcfscope says about a method, in its one table entry (methods.cpp).
 struct MethodInfo {
-    int id;                    // PCF_NEAREST .. PCF_POISSON
-    std::string_view name;     // the command line's id, e.g. "pcf-gather"
-    std::string_view summary;  // one line for `pcfscope methods`
-    bool usesKernel;           // takes --kernel N
-    bool usesRadius;           // takes --radius R
+    int id;                      // PCF_NEAREST .. PCF_POISSON, the kernel's id
+    std::string_view name;       // the command line's id, e.g. "pcf-gather"
+    std::string_view shortName;  // the charts' label, e.g. "gather"
+    std::string_view summary;    // one line for `pcfscope methods`
+    bool usesKernel;             // takes --kernel N
+    bool usesRadius;             // takes --radius R
+    bool takesWeights;           // takes --weights (binomial, gaussian)
+    MethodReads reads;
+    // The kernel sizes it takes when not every one of MIN_KERNEL..MAX_KERNEL (tent); empty: all.
+    std::span<const int> kernelSizes;
+    vec4 chartColour;  // its dots and swatches in the charts (RGBA, 0..1)
+
+    Method method() const { return static_cast<Method>(id); }
 };
 
 std::span<const MethodInfo> allMethods();
+// The entry of kernel id `method`; an id outside the table throws std::out_of_range.
 const MethodInfo& methodInfo(int method);
+// The typed id of kernel id `method` (checked as methodInfo checks it).
+Method methodOf(int method);
 std::optional<int> methodFromName(std::string_view name);
 // "nearest, box2x2, ..." for error messages.
 std::string methodNameList();

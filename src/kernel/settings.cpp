@@ -1,6 +1,10 @@
 #include "kernel/settings.h"
 
 #include <algorithm>
+#include <cmath>
+#include <span>
+#include <sstream>
+#include <type_traits>
 
 namespace pcf {
 
@@ -10,37 +14,179 @@ static_assert(static_cast<int>(BiasMode::None) == PCF_BIAS_NONE &&
 
 namespace {
 
-// Tent builds its N x N tent from 2, 3 or 4 hardware taps per axis (Castano, 2013, "Shadow
-// Mapping Summary Part 1"): N = 3, 5 or 7.
-constexpr int TENT_SIZES[] = {3, 5, 7};
+constexpr std::string_view TEXELS = "texels";
+constexpr std::string_view DEPTH_UNITS = "light depth units";
+
+// The one parameter table (settings.h ParamInfo). Ranges are the named limits of methods.h and
+// this header; checkBiasSettings checks the bias parameters' here, checkParams the filter's.
+// clang-format off
+const ParamInfo PARAMS[] = {
+    {"method", NamedField<int>{&ShadowSettings::method, [](int m) { return methodInfo(m).name; },
+        methodFromName, methodNameList, "method"}, ParamGroup::Filter, "", "", 0, 0, false,
+     "PCF method id (see `pcfscope methods`)", true},
+    {"kernel", &ShadowSettings::kernel, ParamGroup::Filter, "", "", MIN_KERNEL, MAX_KERNEL, false,
+     "kernel size N (tent: 3, 5 or 7)", true},
+    {"radius", &ShadowSettings::radius, ParamGroup::Filter, "uRadius", TEXELS, 0.0,
+     MAX_POISSON_RADIUS, true, "poisson: disk radius in texels", true},
+    {"rotate", &ShadowSettings::rotate, ParamGroup::Filter, "", "", 0, 0, false,
+     "poisson: rotate the disk per pixel", true},
+    {"weights", NamedField<int>{&ShadowSettings::weights, weightsName, weightsFromName,
+        [] { return std::string("box, binomial, gaussian"); }, "weights"}, ParamGroup::Filter,
+     "", "", 0, 0, false,
+     "pcf-naive, pcf-gather: weights of the N x N lookups: box, binomial, gaussian", true},
+    {"sigma", &ShadowSettings::sigma, ParamGroup::Filter, "uSigma", TEXELS, 0.0, MAX_SIGMA, true,
+     "gaussian weights: standard deviation in texels", true},
+    {"precision", NamedField<int>{&ShadowSettings::precision, precisionName, precisionFromName,
+        [] { return std::string("exact, hw8"); }, "precision"}, ParamGroup::Filter,
+     "", "", 0, 0, false,
+     "texel position inside hardware taps and gathers: exact, hw8 (1/256 texel)", true},
+    {"depth_format", NamedField<DepthFormat>{&ShadowSettings::depthFormat, depthFormatName,
+        depthFormatFromName, [] { return std::string(DEPTH_FORMAT_NAMES); }, "depth format"},
+     ParamGroup::Map, "", "", 0, 0, false, "shadow map depth format: 16, 24, 32f", true},
+    {"map_size", &ShadowSettings::mapSize, ParamGroup::Map, "", TEXELS, MIN_MAP_SIZE,
+     MAX_MAP_SIZE, false, "shadow map size in texels (4..4096)", true},
+    {"bias", NamedField<BiasMode>{&ShadowSettings::bias, biasModeName, biasModeFromName,
+        biasNameList, "bias mode"}, ParamGroup::Bias, "", "", 0, 0, false,
+     "bias mode (README \"Bias modes\"; every mode but none subtracts --constant-bias)", true},
+    {"constant_bias", &ShadowSettings::constantBias, ParamGroup::Bias, "uConstantBias",
+     DEPTH_UNITS, -1.0, 1.0, false,
+     "depth subtracted from z in light depth units (ref = z - B)", false},
+    {"slope_bias", &ShadowSettings::slopeBias, ParamGroup::Bias, "uSlopeBias",
+     "light depth units per unit of tan(theta)", 0.0, 1.0, false,
+     "slope: S in ref = z - min(B + S * tan(theta), M)", false},
+    {"slope_max", &ShadowSettings::slopeMax, ParamGroup::Bias, "uSlopeMax", DEPTH_UNITS, 0.0, 1.0,
+     false, "slope: the cap M, light depth units", false},
+    {"normal_offset", &ShadowSettings::normalOffset, ParamGroup::Bias, "uNormalOffset", TEXELS,
+     0.0, 64.0, false,
+     "normal: K, texels the receiver moves along its normal (times sin(theta))", false},
+    {"soft_scale", &ShadowSettings::softScale, ParamGroup::Bias, "uSoftScale",
+     "1 / light depth units", 1.0, 1.0e9, false,
+     "soft: lit = (depth > ref) * saturate((depth - ref) * SCALE)", true},
+    {"rpdb_max", &ShadowSettings::rpdbMax, ParamGroup::Bias, "uRpdbMax",
+     "light depth per uv unit", 0.0, 1.0e9, false,
+     "receiver-plane: cap M on each component of dz/duv, light depth per uv unit (the whole map)",
+     true},
+    {"cull", NamedField<CullMode>{&ShadowSettings::cull, cullModeName, cullModeFromName,
+        [] { return std::string(CULL_MODE_NAMES); }, "cull mode"}, ParamGroup::Map, "", "", 0, 0,
+     false, "faces culled in the shadow pass: back, front, none", false},
+};
+// clang-format on
+
+std::string numberText(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+// The sizes `method` takes when they are not all of MIN_KERNEL..MAX_KERNEL (tent's), or empty.
+std::span<const int> listedSizes(int method) {
+    if (method < 0 || method >= PCF_METHOD_COUNT) return {};
+    return methodInfo(method).kernelSizes;
+}
 
 }  // namespace
 
 bool kernelFits(int method, int n) {
-    if (method == PCF_TENT) return std::ranges::find(TENT_SIZES, n) != std::end(TENT_SIZES);
+    std::span<const int> sizes = listedSizes(method);
+    if (!sizes.empty()) return std::ranges::find(sizes, n) != sizes.end();
     if (method < 0 || method >= PCF_METHOD_COUNT || !methodInfo(method).usesKernel) return true;
     return n >= MIN_KERNEL && n <= MAX_KERNEL;
 }
 
 std::string kernelSizesText(int method) {
-    if (method == PCF_TENT) return "3, 5 or 7";
-    return std::to_string(MIN_KERNEL) + ".." + std::to_string(MAX_KERNEL);
+    std::span<const int> sizes = listedSizes(method);
+    if (sizes.empty()) return std::to_string(MIN_KERNEL) + ".." + std::to_string(MAX_KERNEL);
+    std::string text;
+    for (size_t k = 0; k < sizes.size(); ++k) {
+        if (k > 0) text += k + 1 == sizes.size() ? " or " : ", ";
+        text += std::to_string(sizes[k]);
+    }
+    return text;
 }
 
 int fitKernel(int method, int n) {
     if (kernelFits(method, n)) return n;
-    return method == PCF_TENT ? TENT_SIZES[0] : std::clamp(n, MIN_KERNEL, MAX_KERNEL);
+    std::span<const int> sizes = listedSizes(method);
+    return sizes.empty() ? std::clamp(n, MIN_KERNEL, MAX_KERNEL) : sizes.front();
 }
 
 int stepKernel(int method, int n, int direction) {
     if (!kernelFits(method, n)) return fitKernel(method, n);
-    if (method == PCF_TENT) {
-        const int* at = std::ranges::find(TENT_SIZES, n);
+    std::span<const int> sizes = listedSizes(method);
+    if (!sizes.empty()) {
+        auto at = std::ranges::find(sizes, n);
         std::ptrdiff_t k =
-            std::clamp<std::ptrdiff_t>((at - TENT_SIZES) + direction, 0, std::size(TENT_SIZES) - 1);
-        return TENT_SIZES[k];
+            std::clamp<std::ptrdiff_t>((at - sizes.begin()) + direction, 0, std::ssize(sizes) - 1);
+        return sizes[static_cast<size_t>(k)];
     }
     return std::clamp(n + direction, MIN_KERNEL, MAX_KERNEL);
+}
+
+PcfParams ShadowSettings::pcfParams(vec2 rotation) const {
+    PcfParams p = makeParams(method, kernel, radius, rotation);
+    p.weights = weights;
+    p.sigma = sigma;
+    p.precision = precision;
+    return p;
+}
+
+BiasParams ShadowSettings::biasParams() const {
+    BiasParams b;
+    b.mode = static_cast<int>(bias);
+    b.constant = constantBias;
+    b.slope = slopeBias;
+    b.slopeMax = slopeMax;
+    b.normalOffset = normalOffset;
+    b.softScale = softScale;
+    b.rpdbMax = rpdbMax;
+    return b;
+}
+
+float ShadowSettings::depthBias() const { return biasParams().baseBias(); }
+
+std::span<const ParamInfo> allParams() { return PARAMS; }
+
+const ParamInfo* findParam(std::string_view key) {
+    for (const ParamInfo& p : PARAMS) {
+        if (p.key == key) return &p;
+    }
+    return nullptr;
+}
+
+std::string settingFlag(std::string_view key) {
+    std::string flag = "--" + std::string(key);
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    return flag;
+}
+
+std::string settingText(const ParamInfo& p, const ShadowSettings& s) {
+    return std::visit(
+        [&](const auto& field) -> std::string {
+            using F = std::decay_t<decltype(field)>;
+            if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
+                return s.*field ? "true" : "false";
+            } else if constexpr (std::is_same_v<F, int ShadowSettings::*> ||
+                                 std::is_same_v<F, float ShadowSettings::*>) {
+                return numberText(static_cast<double>(s.*field));
+            } else {
+                return std::string(field.name(s.*field.field));
+            }
+        },
+        p.field);
+}
+
+std::optional<ParamProblem> checkBiasSettings(const ShadowSettings& s) {
+    for (const ParamInfo& p : PARAMS) {
+        const auto* field = std::get_if<float ShadowSettings::*>(&p.field);
+        if (p.group != ParamGroup::Bias || !field) continue;
+        double v = static_cast<double>(s.*(*field));
+        if (std::isfinite(v) && (p.minOpen ? v > p.min : v >= p.min) && v <= p.max) continue;
+        return ParamProblem{std::string(p.key), "",
+                            " must be in " + std::string(p.minOpen ? "(" : "[") +
+                                numberText(p.min) + ", " + numberText(p.max) + "], got " +
+                                numberText(v)};
+    }
+    return std::nullopt;
 }
 
 std::string_view depthFormatName(DepthFormat format) {
@@ -49,9 +195,10 @@ std::string_view depthFormatName(DepthFormat format) {
             return "16";
         case DepthFormat::D24:
             return "24";
-        default:
+        case DepthFormat::D32F:
             return "32f";
     }
+    return "?";
 }
 
 std::optional<DepthFormat> depthFormatFromName(std::string_view name) {
@@ -67,9 +214,10 @@ int depthFormatFixedPointBits(DepthFormat format) {
             return 16;
         case DepthFormat::D24:
             return 24;
-        default:
+        case DepthFormat::D32F:
             return 0;
     }
+    return 0;
 }
 
 std::string_view biasModeName(BiasMode mode) { return biasName(static_cast<int>(mode)); }
@@ -86,9 +234,10 @@ std::string_view cullModeName(CullMode mode) {
             return "back";
         case CullMode::Front:
             return "front";
-        default:
+        case CullMode::None:
             return "none";
     }
+    return "?";
 }
 
 std::optional<CullMode> cullModeFromName(std::string_view name) {

@@ -1,13 +1,17 @@
-// settings.h: the vocabulary of pcfscope's settings in one place with no GL: what the command
-// line, lesson files, scene files and the renderer all parse and check through. Methods, their
-// kernel sizes, weights and precision are in methods.h, bias modes in bias.h; both come with
-// this header. Here: the depth formats, culling, the bias modes as an enum, the map-size range
-// and the kernel-size rule (tent's 3, 5 or 7), with names <-> enums.
+// settings.h: pcfscope's settings in one place with no GL: the one settings struct every frame,
+// trace and lesson step is made with (ShadowSettings), the table of its parameters (PARAMS:
+// key, flag, uniform, unit, range, help), and the vocabulary the command line, lesson files and
+// renderer parse and check through. Methods, their kernel sizes, weights and precision are in
+// methods.h, bias modes in bias.h; both come with this header. Here: the depth formats,
+// culling, the bias modes as an enum, the map-size range and the kernel-size rule, with
+// names <-> enums.
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 
 #include "kernel/bias.h"
 #include "kernel/methods.h"
@@ -48,5 +52,89 @@ std::optional<BiasMode> biasModeFromName(std::string_view name);
 std::string_view cullModeName(CullMode mode);  // "back", "front", "none"
 std::optional<CullMode> cullModeFromName(std::string_view name);
 constexpr std::string_view CULL_MODE_NAMES = "back, front, none";
+
+// The settings one frame, one trace or one lesson step is made with: the filter, the bias and
+// the shadow map. Declared once here; the renderer (RenderSettings) and the lessons
+// (LessonSettings) add what only they need. Each field's key, flag, uniform, unit, range and
+// help are its row of PARAMS (allParams()).
+struct ShadowSettings {
+    int method = PCF_GATHER;              // a kernel id, PCF_NEAREST .. (methods.h)
+    int kernel = 3;                       // N
+    float radius = 1.0f;                  // poisson, texels
+    bool rotate = false;                  // poisson: rotate the disk per pixel
+    int weights = PCF_WEIGHTS_BOX;        // pcf-naive, pcf-gather: PCF_WEIGHTS_*
+    float sigma = 1.0f;                   // gaussian weights, texels
+    int precision = PCF_PRECISION_EXACT;  // hardware taps and gathers: PCF_PRECISION_*
+    DepthFormat depthFormat = DepthFormat::D32F;
+    int mapSize = 1024;  // the shadow map is mapSize x mapSize texels
+    BiasMode bias = BiasMode::Constant;
+    float constantBias = DEFAULT_CONSTANT_BIAS;  // every mode but none: ref = z - constantBias
+    // The other modes' parameters (kernel/bias.h says which mode reads which).
+    float slopeBias = DEFAULT_SLOPE_BIAS;
+    float slopeMax = DEFAULT_SLOPE_MAX;
+    float normalOffset = DEFAULT_NORMAL_OFFSET;
+    float softScale = DEFAULT_SOFT_SCALE;
+    float rpdbMax = DEFAULT_RPDB_MAX;
+    CullMode cull = CullMode::Back;  // faces culled in the shadow pass
+
+    // The kernel's parameters; `rotation` is the Poisson disk's (cos, sin), when rotate says so
+    // the caller's per-pixel one.
+    PcfParams pcfParams(vec2 rotation = vec2(1.0f, 0.0f)) const;
+    // The mode and its parameters, as the kernel and the trace take them.
+    BiasParams biasParams() const;
+    // The constant depth subtracted from z first: 0 for BiasMode::None (kernel/bias.h).
+    float depthBias() const;
+
+    bool operator==(const ShadowSettings&) const = default;
+};
+
+// A named setting's field and its names: a method, a bias mode, ... `noun` is what an unknown
+// name is called in errors ("unknown bias mode 'x' (known: none, constant, ...)").
+template <class T>
+struct NamedField {
+    T ShadowSettings::*field;
+    std::string_view (*name)(T value);
+    std::optional<T> (*fromName)(std::string_view name);
+    std::string (*known)();  // "none, constant, ...": every name, for errors and help
+    std::string_view noun;
+};
+
+// A parameter's field, by how it is written: a number, a flag (true/false) or a name.
+using ParamField = std::variant<int ShadowSettings::*, float ShadowSettings::*,
+                                bool ShadowSettings::*, NamedField<int>, NamedField<BiasMode>,
+                                NamedField<CullMode>, NamedField<DepthFormat>>;
+
+// Which of the command line's option groups a parameter is in (render_options.h).
+enum class ParamGroup { Filter, Bias, Map };
+
+// One user-visible parameter: its row of the one parameter table. The default is the
+// ShadowSettings member's; the lesson files' key is also the JSON sidecars' key, and the
+// command line's flag is the key spelt with '-' (settingFlag).
+struct ParamInfo {
+    std::string_view key;  // "constant_bias"
+    ParamField field;      // &ShadowSettings::constantBias
+    ParamGroup group;
+    std::string_view uniform;  // the shaders' uniform ("uConstantBias"), "" when none
+    std::string_view unit;     // "texels", "light depth units", "" for counts and names
+    double min = 0.0;          // numbers: the range, [min, max] (or (min, max] when minOpen)
+    double max = 0.0;
+    bool minOpen = false;
+    std::string_view help;  // one line, the command line's help
+    bool rawJson = false;   // in render --raw's render.json (what `verify` repeats)
+};
+
+// Every parameter, in the order the JSON sidecars write them.
+std::span<const ParamInfo> allParams();
+// The row of `key`, or nullptr.
+const ParamInfo* findParam(std::string_view key);
+// "--constant-bias" for "constant_bias": the command line says each setting so (cliWords).
+std::string settingFlag(std::string_view key);
+// The parameter's value in `s` as text: "pcf-gather", "3", "0.002", "true".
+std::string settingText(const ParamInfo& p, const ShadowSettings& s);
+
+// Why a bias parameter is out of its range, or nullopt: in the kernel's words, the setting named
+// as the lesson files' key ("slope_max must be in [0, 1], got 2"); the command line says it as
+// its flag (app/cli_util.h: cliWords, "--slope-max").
+std::optional<ParamProblem> checkBiasSettings(const ShadowSettings& s);
 
 }  // namespace pcf

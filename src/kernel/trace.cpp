@@ -90,10 +90,22 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
     tr.visibilityExact = filterVisibility(map, uv, ref, exact, bias.kernelBias());
     tr.visibilityHw8 = filterVisibility(map, uv, ref, hw8, bias.kernelBias());
 
-    if (prm.method == PCF_GATHER) {
-        tr.footprint = pcfKernelFootprint(uv, map.size(), prm.kernel);
-    } else if (prm.method == PCF_TENT) {
-        tr.footprint = pcfTentBase(uv, map.size());
+    // The footprint the method floors: a gather kernel's (N+1)^2 block, tent's base.
+    switch (methodOf(prm.method)) {
+        case Method::Gather:
+            tr.footprint = pcfKernelFootprint(uv, map.size(), prm.kernel);
+            break;
+        case Method::Tent:
+            tr.footprint = pcfTentBase(uv, map.size());
+            break;
+        case Method::Nearest:
+        case Method::Box2x2:
+        case Method::Bilinear2x2:
+        case Method::Hw2x2:
+        case Method::Naive:
+        case Method::Hw:
+        case Method::Poisson:
+            break;
     }
     tr.steps = explainTrace(tr);
     return tr;

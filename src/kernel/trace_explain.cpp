@@ -6,6 +6,8 @@
 #include <map>
 #include <sstream>
 
+#include "kernel/settings.h"
+
 namespace pcf {
 
 const char* stepTitle(TraceStepKind kind) {
@@ -171,23 +173,23 @@ std::string biasSentence(const Trace& tr) {
     std::ostringstream s;
     std::string moved =
         "(z " + std::string(tr.ref < tr.z ? "- " : "+ ") + num(std::fabs(tr.z - tr.ref)) + ")";
-    switch (b.mode) {
-        case PCF_BIAS_NONE:
+    switch (static_cast<BiasMode>(b.mode)) {
+        case BiasMode::None:
             s << "No bias: the comparison depth is ref = z = " << num(tr.ref) << ".";
             break;
-        case PCF_BIAS_SLOPE:
+        case BiasMode::Slope:
             s << "Slope-scaled bias: ref = z - min(" << num(b.constant) << " + " << num(b.slope)
               << " * tan(theta), " << num(b.slopeMax) << ") = " << num(tr.ref) << " " << moved
               << "; theta is the angle between the surface normal and the light.";
             break;
-        case PCF_BIAS_NORMAL:
+        case BiasMode::Normal:
             s << "Normal offset: before projection the receiver point moved along its normal by "
               << num(b.normalOffset)
               << " texels times sin(theta), so uv above is the moved point's; the moved point's "
                  "depth less "
               << num(b.constant) << " gives ref = " << num(tr.ref) << " " << moved << ".";
             break;
-        case PCF_BIAS_RECEIVER_PLANE: {
+        case BiasMode::ReceiverPlane: {
             s << "Receiver-plane bias: ref = z - " << num(b.constant) << " = " << num(tr.ref)
               << " holds at uv only. The receiver's depth changes across the map by dz/duv = "
               << pair(b.dzduv)
@@ -202,18 +204,18 @@ std::string biasSentence(const Trace& tr) {
             }
             break;
         }
-        case PCF_BIAS_SOFT:
+        case BiasMode::Soft:
             s << "ref = z - " << num(b.constant) << " = " << num(tr.ref)
               << ". Soft comparison (\"PCF Shadow Acne\" part 2): a tap is lit by "
                  "(depth > ref) * saturate((depth - ref) * "
               << num(b.softScale) << "), so a texel just beyond ref counts only in part.";
             break;
-        case PCF_BIAS_INTERPOLATED:
+        case BiasMode::Interpolated:
             s << "ref = z - " << num(b.constant) << " = " << num(tr.ref)
               << ". Interpolated depth (\"PCF Shadow Acne\", Solution 2): the map's depth is "
                  "lerped at uv and compared once.";
             break;
-        default:
+        case BiasMode::Constant:
             if (tr.ref == tr.z) {
                 s << "No bias: the comparison depth is ref = z = " << num(tr.ref) << ".";
             } else {
@@ -239,14 +241,18 @@ void stepPerTapRef(const Trace& tr, Steps& out) {
     if (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE) return;
     int m = tr.params.method;
     std::ostringstream s;
-    if (m == PCF_GATHER) {
-        s << "A comparison gather compares its four texels against one ref, so the plane is "
-             "applied per gather, at the centre of its 2x2 block:";
-    } else if (m == PCF_HW2X2 || m == PCF_HW || m == PCF_TENT) {
-        s << "The texture unit compares a hardware tap's four texels against one ref, so the "
-             "plane is applied per tap, at the tap's own uv:";
-    } else {
-        s << "Each texel is compared against the plane's depth at its own centre:";
+    switch (methodInfo(m).reads) {
+        case MethodReads::Gathers:
+            s << "A comparison gather compares its four texels against one ref, so the plane is "
+                 "applied per gather, at the centre of its 2x2 block:";
+            break;
+        case MethodReads::HwTaps:
+            s << "The texture unit compares a hardware tap's four texels against one ref, so the "
+                 "plane is applied per tap, at the tap's own uv:";
+            break;
+        case MethodReads::Texels:
+            s << "Each texel is compared against the plane's depth at its own centre:";
+            break;
     }
     std::map<std::pair<int, int>, bool> shown;
     for (const TapRecord& t : tr.taps) {
@@ -563,31 +569,31 @@ std::vector<TraceStep> explainTrace(const Trace& tr) {
         explainInterpolated(tr, out);
         return out;
     }
-    switch (tr.params.method) {
-        case PCF_NEAREST:
+    switch (methodOf(tr.params.method)) {
+        case Method::Nearest:
             explainNearest(tr, out);
             break;
-        case PCF_BOX2X2:
+        case Method::Box2x2:
             stepTexelPosition(tr, out);
             explainBox(tr, out);
             break;
-        case PCF_BILINEAR2X2:
-        case PCF_HW2X2:
+        case Method::Bilinear2x2:
+        case Method::Hw2x2:
             stepTexelPosition(tr, out);
             explainBilinear(tr, out, tr.params.method == PCF_HW2X2);
             break;
-        case PCF_NAIVE:
-        case PCF_HW:
+        case Method::Naive:
+        case Method::Hw:
             stepTexelPosition(tr, out);
             explainKernelLoop(tr, out, tr.params.method == PCF_HW);
             break;
-        case PCF_GATHER:
+        case Method::Gather:
             explainGather(tr, out);
             break;
-        case PCF_TENT:
+        case Method::Tent:
             explainTent(tr, out);
             break;
-        default:
+        case Method::Poisson:
             explainPoisson(tr, out);
             break;
     }

@@ -54,16 +54,15 @@ namespace {
 // Receiver-plane bias: where each tap's own ref is taken.
 const char* perTapName(const Trace& tr) {
     if (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE) return "none";
-    switch (tr.params.method) {
-        case PCF_GATHER:
+    switch (methodInfo(tr.params.method).reads) {
+        case MethodReads::Gathers:
             return "per gather, at its centre";
-        case PCF_HW2X2:
-        case PCF_HW:
-        case PCF_TENT:
+        case MethodReads::HwTaps:
             return "per hardware tap, at its uv";
-        default:
+        case MethodReads::Texels:
             return "per texel, at its centre";
     }
+    return "?";
 }
 
 }  // namespace

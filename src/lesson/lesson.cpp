@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <optional>
 #include <sstream>
+#include <variant>
 
 #include "base/input_file.h"
 #include "kernel/bias.h"
@@ -26,12 +27,10 @@ namespace pcf {
 
 namespace {
 
-// The keys a [settings] table and a [[step]] may set.
-constexpr std::string_view SETTING_KEYS[] = {
-    "method",       "kernel",    "radius",        "rotate",       "bias",    "constant_bias",
-    "slope_bias",   "slope_max", "normal_offset", "soft_scale",   "cull",    "map_size",
-    "depth_format", "point",     "pixel",         "precision",    "weights", "sigma",
-    "grid",         "rpdb_max",  "heatmap",       "origin_shift", "snap"};
+// The keys a [settings] table and a [[step]] may set besides the parameter table's: the view's
+// (`pixel` only to be refused with what to write instead).
+constexpr std::string_view VIEW_KEYS[] = {"point", "pixel", "grid", "heatmap", "origin_shift",
+                                          "snap"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));
@@ -50,8 +49,8 @@ std::string formatValue(double v) {
 }
 
 bool isSettingKey(std::string_view key) {
-    return std::find(std::begin(SETTING_KEYS), std::end(SETTING_KEYS), key) !=
-           std::end(SETTING_KEYS);
+    return findParam(key) != nullptr ||
+           std::find(std::begin(VIEW_KEYS), std::end(VIEW_KEYS), key) != std::end(VIEW_KEYS);
 }
 
 std::string joinNames(const std::vector<std::string_view>& names) {
@@ -375,140 +374,80 @@ class LessonParser {
     // Sets the state from every settings key of `table` (a [settings] table or a [[step]]).
     void applySettings(const toml::table& table, const std::string& what, LessonSettings& s,
                        SettingLines& lines) const {
-        applyFilterKeys(table, what, s, lines);
-        applyBiasKeys(table, what, s, lines);
+        for (const ParamInfo& p : allParams()) {
+            const toml::node* n = table.get(p.key);
+            if (!n) continue;
+            std::visit([&](const auto& field) { readParam(*n, what, p, field, s); }, p.field);
+            if (p.key == "method") lines.method = lineOf(*n);
+            // A weighting the method cannot take is blamed on the later of the two.
+            if (p.key == "weights") lines.method = std::max(lines.method, lineOf(*n));
+            if (p.key == "kernel") lines.kernel = lineOf(*n);
+            if (p.key == "bias") lines.bias = lineOf(*n);
+        }
         applyMapKeys(table, what, s);
         applyViewKeys(table, what, s);
     }
 
-    // The filter: method, kernel, radius, rotate, precision, weights, sigma.
-    void applyFilterKeys(const toml::table& table, const std::string& what, LessonSettings& s,
-                         SettingLines& lines) const {
-        auto name = [&](std::string_view key) { return what + " " + std::string(key); };
-        if (const toml::node* n = table.get("method")) {
-            std::string id = string(*n, name("method"));
-            std::optional<int> method = methodFromName(id);
-            if (!method) {
-                fail(*n, "unknown method '" + id + "' (known: " + methodNameList() + ")");
-            }
-            s.method = *method;
-            lines.method = lineOf(*n);
+    // One parameter of the table, by its type: an integer in its range.
+    void readParam(const toml::node& n, const std::string& what, const ParamInfo& p,
+                   int ShadowSettings::*field, LessonSettings& s) const {
+        std::string name = what + " " + std::string(p.key);
+        int64_t v = integer(n, name);
+        if (v < static_cast<int64_t>(p.min) || v > static_cast<int64_t>(p.max)) {
+            fail(n, name + " must be " + formatValue(p.min) + ".." + formatValue(p.max) + ", got " +
+                        std::to_string(v));
         }
-        if (const toml::node* n = table.get("kernel")) {
-            int64_t k = integer(*n, name("kernel"));
-            if (k < MIN_KERNEL || k > MAX_KERNEL) {
-                fail(*n, name("kernel") + " must be " + std::to_string(MIN_KERNEL) + ".." +
-                             std::to_string(MAX_KERNEL) + ", got " + std::to_string(k));
-            }
-            s.kernel = static_cast<int>(k);
-            lines.kernel = lineOf(*n);
-        }
-        if (const toml::node* n = table.get("radius")) {
-            double r = number(*n, name("radius"));
-            if (!(r > 0.0 && r <= MAX_POISSON_RADIUS)) {
-                fail(*n, name("radius") + " must be in (0, " + formatValue(MAX_POISSON_RADIUS) +
-                             "] texels, got " + formatValue(r));
-            }
-            s.radius = static_cast<float>(r);
-        }
-        if (const toml::node* n = table.get("rotate")) {
-            const auto* b = n->as_boolean();
-            if (!b) fail(*n, name("rotate") + " must be true or false, got " + typeName(*n));
-            s.rotate = b->get();
-        }
-        if (const toml::node* n = table.get("precision")) {
-            std::optional<int> p = precisionFromName(string(*n, name("precision")));
-            if (!p)
-                fail(*n,
-                     "unknown precision '" + n->value_or(std::string()) + "' (known: exact, hw8)");
-            s.precision = *p;
-        }
-        if (const toml::node* n = table.get("weights")) {
-            std::optional<int> w = weightsFromName(string(*n, name("weights")));
-            if (!w) {
-                fail(*n, "unknown weights '" + n->value_or(std::string()) +
-                             "' (known: box, binomial, gaussian)");
-            }
-            s.weights = *w;
-            lines.method = std::max(lines.method, lineOf(*n));
-        }
-        if (const toml::node* n = table.get("sigma")) {
-            double v = number(*n, name("sigma"));
-            if (!(v > 0.0 && v <= MAX_SIGMA)) {
-                fail(*n, name("sigma") + " must be in (0, 16] texels, got " + formatValue(v));
-            }
-            s.sigma = static_cast<float>(v);
-        }
+        s.*field = static_cast<int>(v);
     }
 
-    // The bias mode and its parameters.
-    void applyBiasKeys(const toml::table& table, const std::string& what, LessonSettings& s,
-                       SettingLines& lines) const {
-        auto name = [&](std::string_view key) { return what + " " + std::string(key); };
-        if (const toml::node* n = table.get("bias")) {
-            std::string bias = string(*n, name("bias"));
-            std::optional<BiasMode> mode = biasModeFromName(bias);
-            if (!mode) {
-                fail(*n, "unknown bias mode '" + bias + "' (known: " + biasNameList() + ")");
+    // A number: the bias parameters checked as the command line checks them (the kernel's
+    // words are the lesson's keys), the others in their range, stating texels.
+    void readParam(const toml::node& n, const std::string& what, const ParamInfo& p,
+                   float ShadowSettings::*field, LessonSettings& s) const {
+        std::string name = what + " " + std::string(p.key);
+        double v = number(n, name);
+        if (p.group == ParamGroup::Bias) {
+            float old = s.*field;
+            s.*field = static_cast<float>(v);
+            if (auto why = checkBiasSettings(s)) {
+                s.*field = old;
+                fail(n, what + " " + why->text());
             }
-            s.bias = *mode;
-            lines.bias = lineOf(*n);
+            return;
         }
-        // The bias parameters, range-checked as the command line checks them (kernel/bias.h).
-        auto biasParam = [&](const char* key, float& field) {
-            const toml::node* n = table.get(key);
-            if (!n) return;
-            float old = field;
-            field = static_cast<float>(number(*n, name(key)));
-            // The kernel's words are the lesson's keys.
-            if (auto why = checkBiasParams(s.biasParams())) {
-                field = old;
-                fail(*n, what + " " + why->text());
-            }
-        };
-        biasParam("constant_bias", s.constantBias);
-        biasParam("slope_bias", s.slopeBias);
-        biasParam("slope_max", s.slopeMax);
-        biasParam("normal_offset", s.normalOffset);
-        biasParam("soft_scale", s.softScale);
-        biasParam("rpdb_max", s.rpdbMax);
+        if (!((p.minOpen ? v > p.min : v >= p.min) && v <= p.max)) {
+            fail(n, name + " must be in " + (p.minOpen ? "(" : "[") + formatValue(p.min) + ", " +
+                        formatValue(p.max) + "]" + (p.unit.empty() ? "" : " ") +
+                        std::string(p.unit) + ", got " + formatValue(v));
+        }
+        s.*field = static_cast<float>(v);
     }
 
-    // The shadow map: culling in its pass, its size and format, its grid's origin (origin_shift,
-    // snap), and the heat map of its aliasing over the scene.
+    void readParam(const toml::node& n, const std::string& what, const ParamInfo& p,
+                   bool ShadowSettings::*field, LessonSettings& s) const {
+        const auto* b = n.as_boolean();
+        if (!b)
+            fail(n, what + " " + std::string(p.key) + " must be true or false, got " + typeName(n));
+        s.*field = b->get();
+    }
+
+    // A name, in its canonical spelling only (the command line also reads "32" for "32f").
+    template <class T>
+    void readParam(const toml::node& n, const std::string& what, const ParamInfo& p,
+                   const NamedField<T>& named, LessonSettings& s) const {
+        std::string text = string(n, what + " " + std::string(p.key));
+        std::optional<T> v = named.fromName(text);
+        if (!v || named.name(*v) != text) {
+            fail(n, "unknown " + std::string(named.noun) + " '" + text +
+                        "' (known: " + named.known() + ")");
+        }
+        s.*named.field = *v;
+    }
+
+    // The view's keys of the shadow map: its grid's origin (origin_shift, snap), and the heat
+    // map of its aliasing over the scene.
     void applyMapKeys(const toml::table& table, const std::string& what, LessonSettings& s) const {
         auto name = [&](std::string_view key) { return what + " " + std::string(key); };
-        if (const toml::node* n = table.get("cull")) {
-            std::string cull = string(*n, name("cull"));
-            std::optional<CullMode> mode = cullModeFromName(cull);
-            if (!mode) {
-                fail(*n, "unknown cull mode '" + cull +
-                             "' (known: " + std::string(CULL_MODE_NAMES) + ")");
-            }
-            s.cull = *mode;
-        }
-        if (const toml::node* n = table.get("map_size")) {
-            int64_t size = integer(*n, name("map_size"));
-            if (size < MIN_MAP_SIZE || size > MAX_MAP_SIZE) {
-                fail(*n, name("map_size") + " must be " + std::to_string(MIN_MAP_SIZE) + ".." +
-                             std::to_string(MAX_MAP_SIZE) + ", got " + std::to_string(size));
-            }
-            s.mapSize = static_cast<int>(size);
-        }
-        if (const toml::node* n = table.get("depth_format")) {
-            if (!n->is_string()) {
-                fail(*n, name("depth_format") +
-                             " must be a string (\"16\", \"24\" or \"32f\"), got " + typeName(*n));
-            }
-            std::string format = n->as_string()->get();
-            // The lesson's canonical names only (depthFormatFromName also reads "32").
-            std::optional<DepthFormat> f = depthFormatFromName(format);
-            if (!f || depthFormatName(*f) != format) {
-                fail(*n, "unknown depth format '" + format +
-                             "' (known: " + std::string(DEPTH_FORMAT_NAMES) + ")");
-            }
-            s.depthFormat = *f;
-        }
         for (auto [key, field] : {std::pair<const char*, bool*>{"heatmap", &s.heatmap},
                                   std::pair<const char*, bool*>{"snap", &s.snap}}) {
             if (const toml::node* n = table.get(key)) {
@@ -573,10 +512,7 @@ class LessonParser {
             int line = std::max(lines.bias, lines.method);
             throw InputError(mSource, line > 0 ? line : lineOf(step), what + ": " + *why);
         }
-        PcfParams prm = makeParams(s.method, s.kernel, s.radius);
-        prm.weights = s.weights;
-        prm.sigma = s.sigma;
-        std::optional<ParamProblem> problem = checkParams(prm);
+        std::optional<ParamProblem> problem = checkParams(s.ShadowSettings::pcfParams());
         if (!problem) return;
         std::string text = problem->text();  // the kernel's words are the lesson's keys
         int line = std::max(lines.method, lines.kernel);
@@ -641,18 +577,10 @@ class LessonParser {
 
 }  // namespace
 
-float LessonSettings::depthBias() const { return biasParams().baseBias(); }
-
-BiasParams LessonSettings::biasParams() const { return biasParamsOf(*this); }
-
 PcfParams LessonSettings::pcfParams(glm::vec2 uv, int mapSizeTexels) const {
     vec2 rotation(1.0f, 0.0f);
     if (rotate) rotation = pcfTexelRotation(uv, ivec2(mapSizeTexels));
-    PcfParams p = makeParams(method, kernel, radius, rotation);
-    p.weights = weights;
-    p.sigma = sigma;
-    p.precision = precision;
-    return p;
+    return ShadowSettings::pcfParams(rotation);
 }
 
 Lesson parseLessonFile(const std::string& path) {

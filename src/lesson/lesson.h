@@ -12,17 +12,13 @@
 //                                     (scene/scene_file.h), never both
 //
 //   [settings]                        optional: the state before the first step. Every key is
-//                                     optional; the defaults are RenderSettings' (render/):
-//   method        = "bilinear2x2"     a method id (kernel/methods.h), default "pcf-gather"
-//   kernel        = 3                 N, 1..8 (tent: 3, 5 or 7), default 3
-//   radius        = 1.0               poisson disk radius in texels, (0, 64], default 1
-//   rotate        = false             poisson: rotate the disk per pixel, default false
-//   bias          = "constant"        "none" or "constant", default "constant"
-//   constant_bias = 0.002             light depth units, ref = z - constant_bias, in [-1, 1],
-//                                     default 0.002 (used only when bias = "constant")
-//   cull          = "back"            faces culled in the shadow pass: "back", "front", "none"
-//   map_size      = 256               the shadow map is map_size^2 texels, 4..4096, default 1024
-//   depth_format  = "32f"             the shadow map's depth format: "16", "24" or "32f"
+//                                     optional. The shadow settings' keys, their types, ranges
+//                                     and defaults are the parameter table's (kernel/settings.h
+//                                     PARAMS: method, kernel, radius, rotate, weights, sigma,
+//                                     precision, depth_format, map_size, bias and its
+//                                     parameters, cull); names are their canonical spelling
+//   method        = "bilinear2x2"     e.g. a method id (kernel/methods.h)
+//   constant_bias = 0.002             e.g. light depth units: every bias mode but none subtracts it
 //   grid          = true              the shadow map's texel grid drawn on the receiver around
 //                                     the picked pixel (G toggles it), default true; off for
 //                                     steps where its lines would hide what they show
@@ -33,6 +29,7 @@
 //                                     holds it, so every size and mode traces the same lookup
 //                                     (lesson_pick.h). `pcfscope view` prints the point of a click
 //                                     (the step's JSON "point" too)
+//   heatmap, origin_shift, snap       the view's: see LessonSettings
 //
 //   [[step]]                          one table per step, at least one, shown in file order
 //   title = "..."                     required, not empty
@@ -44,7 +41,7 @@
 //                                     spaces is preformatted: drawn in monospace with its
 //                                     spaces kept; consecutive such lines whose cells are
 //                                     separated by two or more spaces are aligned as a table
-//                                     (overlay/inspector.cpp alignTables). A lone operator
+//                                     (overlay/inspector_text.cpp alignTables). A lone operator
 //                                     ("1 - g") never breaks across lines
 //   chart = "figures/bench.csv"       the step shows that chart instead of the scene
 //   chart_highlight = "gather3"       the chart's dots the text talks about (see LessonStep)
@@ -87,27 +84,9 @@
 
 namespace pcf {
 
-// The renderer's state at one step, fully resolved. Bias, cull and depth format are the enums
-// of kernel/settings.h, parsed from their names when the file is read; the method is its kernel
-// id (PCF_NEAREST ..).
-struct LessonSettings {
-    int method = PCF_GATHER;
-    int kernel = 3;
-    float radius = 1.0f;                          // poisson, texels
-    bool rotate = false;                          // poisson: rotate the disk per pixel
-    BiasMode bias = BiasMode::Constant;           // key `bias`, by name (kernel/settings.h)
-    float constantBias = DEFAULT_CONSTANT_BIAS;   // light depth units: ref = z - constantBias
-    float slopeBias = DEFAULT_SLOPE_BIAS;         // slope_bias: S of the slope mode
-    float slopeMax = DEFAULT_SLOPE_MAX;           // slope_max: its cap
-    float normalOffset = DEFAULT_NORMAL_OFFSET;   // normal_offset: texels
-    float softScale = DEFAULT_SOFT_SCALE;         // soft_scale
-    float rpdbMax = DEFAULT_RPDB_MAX;             // rpdb_max: receiver-plane's cap on dz/duv
-    CullMode cull = CullMode::Back;               // shadow pass culling: "back", "front" or "none"
-    int mapSize = 1024;                           // texels per side
-    DepthFormat depthFormat = DepthFormat::D32F;  // "16", "24" or "32f"
-    int precision = 0;                            // PCF_PRECISION_EXACT or _HW8 (key `precision`)
-    int weights = 0;                              // PCF_WEIGHTS_* (key `weights`)
-    float sigma = 1.0f;                           // gaussian weights, texels (key `sigma`)
+// The renderer's state at one step, fully resolved: the shadow settings (kernel/settings.h,
+// every key of its parameter table) and what the view shows besides.
+struct LessonSettings : ShadowSettings {
     // The scene point traced (key `point`), world units; nullopt: the middle of the view.
     std::optional<glm::vec3> point;
     bool grid = true;      // the texel grid overlay on the scene
@@ -117,11 +96,6 @@ struct LessonSettings {
     // O / Shift+O step s by 1/8 texel, S toggles snap). 0 and false: the plain fit.
     float originShift = 0.0f;  // origin_shift, texels
     bool snap = false;         // snap
-
-    // The constant depth every mode but none subtracts from the receiver's depth (0 for none).
-    float depthBias() const;
-    // The mode and its parameters as the kernel and the trace take them.
-    BiasParams biasParams() const;
 
     // The kernel's parameters for a lookup at uv in a map of mapSize texels: the Poisson disk
     // turns with the texel looked up (pcfTexelRotation), as the shaders turn it.

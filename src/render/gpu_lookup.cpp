@@ -73,7 +73,7 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
     GLuint program = programs->second.get(pcfVariant(prm, rotatePerPixel, mFixedPoint));
     glUseProgram(program);
     glProgramUniform1f(program, glGetUniformLocation(program, "uSoftScale"), bias.softScale);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.dzduvMax);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.rpdbMax);
     glProgramUniform1f(program, glGetUniformLocation(program, "uSigma"), prm.sigma);
     drawOver(program, prm.radius);
 }

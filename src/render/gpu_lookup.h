@@ -22,17 +22,17 @@ class GpuLookup {
     GpuLookup();
 
     // Visibility of each lookup (u, v, ref; w unused), filtered by the GPU with `prm`
-    // (its rotation is ignored: rotatePerPixel picks pcfTexelRotation of each lookup's uv).
+    // (its rotation is ignored: rotate picks pcfTexelRotation of each lookup's uv).
     // The map is uploaded in its own format: 32F, or 16/24-bit when map.fixedPointBits() says
     // so (GL rounds the floats to integers); storedMap() then holds what the GPU compared with.
     // Lookups fill a grid `width` wide, row by row from GL row 0; the result has the same order.
     // run() is these four in a row: setMap, setLookups, draw, read.
     std::vector<float> run(const ShadowMap& map, std::span<const glm::vec4> lookups, int width,
-                           const PcfParams& prm, bool rotatePerPixel);
+                           const PcfParams& prm, bool rotate);
     // The same under a bias mode: lookup k compares per tap as PcfRef(lookup.z, uv, bias) says,
     // with dz/duv = dzduv[k] (empty: bias.dzduv for every lookup).
     std::vector<float> run(const ShadowMap& map, std::span<const glm::vec4> lookups, int width,
-                           const PcfParams& prm, bool rotatePerPixel, const PcfBias& bias,
+                           const PcfParams& prm, bool rotate, const PcfBias& bias,
                            std::span<const glm::vec2> dzduv);
 
     // The parts of run(), for timing the bare lookup pass (bench.h): upload once, then draw as
@@ -45,7 +45,7 @@ class GpuLookup {
     // One full-screen pass of the kernel over the lookups into an R32F target, each lookup
     // compared per tap as PcfRef(lookup.z, uv, bias with its own dz/duv) says. Throws
     // std::logic_error before setMap and setLookups.
-    void draw(const PcfParams& prm, bool rotatePerPixel,
+    void draw(const PcfParams& prm, bool rotate,
               const PcfBias& bias = PcfBias(PCF_BIAS_CONSTANT, glm::vec2(0.0f), 0.0f,
                                             PCF_DZDUV_UNCLAMPED));
     // The hand-written textbook pass of prm's method (shaders/reference/, no shared kernel)

@@ -1,20 +1,6 @@
 #include "render/render_settings.h"
 
-#include "kernel/methods.h"
-
 namespace pcf {
-
-PcfParams RenderSettings::pcfParams() const {
-    PcfParams p = makeParams(method, kernel, radius);
-    p.weights = weights;
-    p.sigma = sigma;
-    p.precision = precision;
-    return p;
-}
-
-float RenderSettings::depthBias() const { return biasParams().baseBias(); }
-
-BiasParams RenderSettings::biasParams() const { return biasParamsOf(*this); }
 
 GLenum glDepthFormat(DepthFormat format) {
     switch (format) {
@@ -22,9 +8,10 @@ GLenum glDepthFormat(DepthFormat format) {
             return GL_DEPTH_COMPONENT16;
         case DepthFormat::D24:
             return GL_DEPTH_COMPONENT24;
-        default:
+        case DepthFormat::D32F:
             return GL_DEPTH_COMPONENT32F;
     }
+    return GL_DEPTH_COMPONENT32F;
 }
 
 }  // namespace pcf

@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <variant>
 
 #include "kernel/methods.h"
 #include "render/depth_readback.h"
@@ -19,6 +21,29 @@ namespace {
 constexpr glm::vec4 BACKGROUND{0.72f, 0.78f, 0.86f, 1.0f};
 
 GLint uniform(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+
+// The settings the scene shader reads as uniforms: the parameter table's uniform column
+// (kernel/settings.h), each as its type (floats as float, flags and ids as int).
+void setSettingUniforms(GLuint program, const ShadowSettings& s) {
+    for (const ParamInfo& p : allParams()) {
+        if (p.uniform.empty()) continue;
+        GLint at = uniform(program, std::string(p.uniform).c_str());
+        std::visit(
+            [&](const auto& field) {
+                using F = std::decay_t<decltype(field)>;
+                if constexpr (std::is_same_v<F, float ShadowSettings::*>) {
+                    glProgramUniform1f(program, at, s.*field);
+                } else if constexpr (std::is_same_v<F, int ShadowSettings::*>) {
+                    glProgramUniform1i(program, at, s.*field);
+                } else if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
+                    glProgramUniform1i(program, at, s.*field ? 1 : 0);
+                } else {
+                    glProgramUniform1i(program, at, static_cast<int>(s.*field.field));
+                }
+            },
+            p.field);
+    }
+}
 
 }  // namespace
 
@@ -125,11 +150,11 @@ void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
     glDepthMask(GL_TRUE);
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
-    if (settings.shadowCull == CullMode::None) {
+    if (settings.cull == CullMode::None) {
         glDisable(GL_CULL_FACE);
     } else {
         glEnable(GL_CULL_FACE);
-        glCullFace(settings.shadowCull == CullMode::Front ? GL_FRONT : GL_BACK);
+        glCullFace(settings.cull == CullMode::Front ? GL_FRONT : GL_BACK);
     }
     // Slope-scaled bias: the rasterizer pushes each depth back by factor * its slope plus units
     // of the format's smallest step (glPolygonOffset), before the depth is stored.
@@ -189,9 +214,8 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
 
     BiasParams bias = settings.biasParams();
     bool fixedPoint = depthFormatFixedPointBits(mShadowFormat) != 0;
-    GLuint program =
-        programsFor(targets, bias.mode)
-            .get(pcfVariant(settings.pcfParams(), settings.rotatePerPixel, fixedPoint));
+    GLuint program = programsFor(targets, bias.mode)
+                         .get(pcfVariant(settings.pcfParams(), settings.rotate, fixedPoint));
     glUseProgram(program);
     glm::mat4 clip = clipFromWorld();
     glProgramUniformMatrix4fv(program, uniform(program, "uClipFromWorld"), 1, GL_FALSE,
@@ -204,12 +228,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform3fv(program, uniform(program, "uLightPosWs"), 1, &light.positionWs.x);
     glProgramUniform1f(program, uniform(program, "uSpotCosCone"),
                        std::cos(glm::radians(light.coneDeg)));
-    glProgramUniform1f(program, uniform(program, "uConstantBias"), bias.baseBias());
-    glProgramUniform1f(program, uniform(program, "uSlopeBias"), bias.slope);
-    glProgramUniform1f(program, uniform(program, "uSlopeMax"), bias.slopeMax);
-    glProgramUniform1f(program, uniform(program, "uNormalOffset"), bias.normalOffset);
-    glProgramUniform1f(program, uniform(program, "uSoftScale"), bias.softScale);
-    glProgramUniform1f(program, uniform(program, "uRpdbMax"), bias.rpdbMax);
+    setSettingUniforms(program, settings);
     glProgramUniform1f(program, uniform(program, "uShadowTexelWs"),
                        pcf::shadowTexelWs(mScene, settings.mapSize));
     // A lesson's pinned point (setPick); pixel -1, -1 matches no fragment.
@@ -219,8 +238,6 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform2iv(program, uniform(program, "uPickPixel"), 1, &pickPixel.x);
     glProgramUniform4fv(program, uniform(program, "uPickLookup"), 1, &pickLookup.x);
     glProgramUniform2fv(program, uniform(program, "uPickDzDuv"), 1, &pickDzDuv.x);
-    glProgramUniform1f(program, uniform(program, "uRadius"), settings.radius);
-    glProgramUniform1f(program, uniform(program, "uSigma"), settings.sigma);
     bindShadowMap(program, mShadow.depth.id(), mSamplers);
     drawObjects(program, false, true);
     glBindSampler(0, 0);

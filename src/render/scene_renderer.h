@@ -69,7 +69,6 @@ class SceneRenderer {
 
     glm::ivec2 frameSize() const { return {mFrame.width, mFrame.height}; }
     GLuint frameFramebuffer() const { return mFrame.framebuffer.id(); }
-    GLuint shadowTexture() const { return mShadow.depth.id(); }
     const Scene& scene() const { return mScene; }
     glm::mat4 shadowClipFromWorld() const { return mShadowClipFromWorld; }
     glm::mat4 clipFromWorld() const;
