@@ -14,6 +14,7 @@
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/shadow_map.h"
+#include "kernel/sigma_limits.h"
 #include "kernel/trace.h"
 #include "lesson/lesson_text.h"
 #include "scene/presets.h"
@@ -383,8 +384,9 @@ class LessonParser {
         }
         if (const toml::node* n = table.get("sigma")) {
             double v = number(*n, name("sigma"));
-            if (!(v > 0.0 && v <= MAX_SIGMA)) {
-                fail(*n, name("sigma") + " must be in (0, 16] texels, got " + formatValue(v));
+            if (!(v >= MIN_SIGMA && v <= MAX_SIGMA)) {
+                fail(*n, name("sigma") + " must be in [" + formatValue(MIN_SIGMA) + ", " +
+                             formatValue(MAX_SIGMA) + "] texels, got " + formatValue(v));
             }
             s.sigma = static_cast<float>(v);
         }
