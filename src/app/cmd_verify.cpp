@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -53,7 +54,9 @@ std::string jsonField(const Json& json, const std::string& key, const std::strin
 float jsonFloat(const Json& json, const std::string& key, const std::string& path) {
     auto it = json.find(key);
     if (it == json.end()) throw UsageError("render.json has no \"" + key + "\" (" + path + ")");
-    if (!it->is_number() || !std::isfinite(it->get<float>())) {
+    // Asked as a double: 1e300 is a JSON number, but no float (the cast would be undefined).
+    if (!it->is_number() || !std::isfinite(it->get<double>()) ||
+        std::abs(it->get<double>()) > static_cast<double>(std::numeric_limits<float>::max())) {
         throw UsageError("render.json: \"" + key + "\" is not a number (" + path + ")");
     }
     return it->get<float>();
@@ -107,8 +110,12 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
     std::optional<int> method = methodFromName(r.methodName);
     if (!method)
         throw UsageError("render.json: unknown method '" + r.methodName + "' (" + where + ")");
-    r.prm = makeParams(*method, static_cast<int>(jsonFloat(json, "kernel", where)),
-                       jsonFloat(json, "radius", where));
+    // Checked before the cast: a float outside int's range (1e30) is undefined behaviour there.
+    float kernel = jsonFloat(json, "kernel", where);
+    if (!(kernel >= 0.0f && kernel <= 64.0f) || kernel != std::floor(kernel)) {
+        throw UsageError("render.json: \"kernel\" is not a kernel size (" + where + ")");
+    }
+    r.prm = makeParams(*method, static_cast<int>(kernel), jsonFloat(json, "radius", where));
     std::optional<int> weights = weightsFromName(jsonField(json, "weights", where));
     std::optional<int> precision = precisionFromName(jsonField(json, "precision", where));
     std::optional<DepthFormat> format = depthFormatFromName(jsonField(json, "depth_format", where));
