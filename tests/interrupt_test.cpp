@@ -100,6 +100,22 @@ TEST_F(Interrupt, SigintAfterTheFirstExportFrameLeavesNothing) {
         << err;
 }
 
+// Issue 24, finding 11: SIGINT right after export's success line took back every frame the
+// line had just announced. The frames are kept before the line is printed.
+TEST_F(Interrupt, SigintAfterTheExportSummaryKeepsTheFrames) {
+    fs::path out = mDir / "frames";
+    pid_t pid = start({"export", "5", "--steps", "1-2", "-o", out.string(), "--size", "640x360"});
+    ASSERT_TRUE(waitForStderr(" frames of 640x360 in ", pid, 120s)) << stderrText();
+    kill(pid, SIGINT);  // it may have ended already: that is fine too
+    int code = exitCodeOf(pid);
+    EXPECT_TRUE(code == 0 || code == 130) << code << stderrText();
+    for (const char* step : {"01", "02"}) {
+        EXPECT_TRUE(fs::exists(out / ("05-gather-weights-step" + std::string(step) + ".png")))
+            << step << ": " << stderrText();
+        EXPECT_TRUE(fs::exists(out / ("05-gather-weights-step" + std::string(step) + ".json")));
+    }
+}
+
 // SIGTERM during the ground truth, before anything was written: the folder made for -o goes,
 // a folder that was there stays.
 TEST_F(Interrupt, SigtermDuringTruthRemovesTheFoldersItMade) {

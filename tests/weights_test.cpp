@@ -94,7 +94,7 @@ TEST(Weights, ValidationNamesTheOption) {
     EXPECT_EQ(validateParams(weighted(PCF_TENT, 3, PCF_WEIGHTS_BINOMIAL)).value(),
               "weights binomial applies to pcf-naive and pcf-gather, not tent");
     EXPECT_EQ(validateParams(weighted(PCF_NAIVE, 3, PCF_WEIGHTS_GAUSSIAN, 0.0f)).value(),
-              "sigma 0 is out of range (0, 16] texels");
+              "sigma 0 is out of range [0.05, 16] texels");
     EXPECT_EQ(weightsFromName("gaussian"), PCF_WEIGHTS_GAUSSIAN);
     EXPECT_FALSE(weightsFromName("tent").has_value());
 }

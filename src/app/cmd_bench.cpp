@@ -32,6 +32,7 @@
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
+#include "base/memory_budget.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
@@ -199,6 +200,10 @@ BenchOptions parseSweep(const BenchCommandOptions& o) {
     return options;
 }
 
+// Measured peaks of `bench --quick`: 306 MB at 320x180, 353 MB at 960x540, so 105 bytes a
+// frame pixel; issue 24's run at 8192x8192 had reached 9.8 GiB (157 a pixel) and not finished.
+constexpr std::uint64_t BENCH_BYTES_PER_PIXEL = 160;
+
 BenchPlan parsePlan(const BenchCommandOptions& o) {
     BenchPlan plan;
     plan.config.options = parseSweep(o);
@@ -354,6 +359,9 @@ void writeCharts(const BenchPlan& plan, const BenchResult& result, const GlConte
 int runBenchCommand(const BenchCommandOptions& o) {
     // Every check first: nothing is computed or written unless all of it can be.
     BenchPlan plan = parsePlan(o);
+    glm::ivec2 frame = plan.config.options.frameSize;
+    requireMemory("--size " + std::to_string(frame.x) + "x" + std::to_string(frame.y),
+                  memoryEstimate(256 * MIB, BENCH_BYTES_PER_PIXEL, frame.x, frame.y));
     OutputFiles outputs(o.force);
     std::vector<std::string> names = checkOutputs(o, plan, outputs);
     StagingDir staging(o.out, "bench", "diff");

@@ -1,10 +1,12 @@
 // pcfscope export: one annotated PNG per lesson step, plus the step's trace as JSON beside it,
 // headless (EGL). The frames are the viewer's frames: the same Session composes both.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/cli_util.h"
 #include "app/commands.h"
@@ -87,6 +89,19 @@ ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::s
         outputs.add("-o", stem + ".json");
         plan.stems.push_back(stem);
     }
+    // A step's extra pages are only known once it is rendered, but page files already in the
+    // folder (STEM-pageN.png/.json from an earlier export) are known now: refused here, before
+    // any frame is rendered, as the step files are (with --force they are overwritten as well).
+    std::error_code ec;
+    std::vector<std::filesystem::path> stale;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+        std::string name = entry.path().filename().string();
+        for (int s = steps.x; s <= steps.y; ++s) {
+            if (name.starts_with(frameStem(lessonName, s) + "-page")) stale.push_back(entry.path());
+        }
+    }
+    std::sort(stale.begin(), stale.end());
+    for (const std::filesystem::path& page : stale) outputs.add("-o", page);
     return plan;
 }
 
@@ -124,6 +139,9 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     int frames = plan.steps.y - plan.steps.x + 1 + extraFrames;
+    // Kept before announced: an interrupt after the line below must not take back the frames
+    // it names.
+    if (outputs) outputs->commit();
     if (progress) {
         std::fprintf(stderr, "export: %d frames of %dx%d in %.2f s (%.1f frames/s) into %s\n",
                      frames, size.x, size.y, seconds, frames / seconds, plan.dir.c_str());

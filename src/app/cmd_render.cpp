@@ -1,4 +1,5 @@
 // pcfscope render: one frame, headless (EGL); --raw writes the intermediate buffers as EXR.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "app/output_files.h"
 #include "app/render_options.h"
 #include "app/session.h"
+#include "base/memory_budget.h"
 #include "kernel/methods.h"
 #include "kernel/trace_json.h"
 #include "render/gl_context.h"
@@ -112,6 +114,13 @@ int runRender(const RenderCommandOptions& o) {
     OutputFiles outputs(o.force);
     outputs.addInput("--scene-file", o.render.sceneFile);
     LessonRender lesson = lessonRenderOf(o, settings, outputs);
+    if (lesson.chartStep && !o.out.empty() &&
+        std::min(settings.frameSize.x, settings.frameSize.y) < MIN_CHART_SIDE) {
+        throw UsageError("--size " + o.render.size + ": lesson step " +
+                         std::to_string(o.render.lessonStep) + " shows a chart, which needs at " +
+                         "least " + std::to_string(MIN_CHART_SIDE) + " x " +
+                         std::to_string(MIN_CHART_SIDE) + " pixels");
+    }
     if (!o.out.empty()) {
         requireExtension("-o", o.out, ".png");
         outputs.add("-o", o.out);
@@ -122,6 +131,13 @@ int runRender(const RenderCommandOptions& o) {
         settings.writePositions = true;
     }
 
+    // Measured peaks of `render --raw -o` (box-on-plane, map 1024): 339 MB at 1024x1024, 686 MB
+    // at 2048x2048, so 113 bytes a pixel over about 220 MB; the encoded EXR held in memory
+    // while it is written adds up to 16 more. The map: depth, its read-back, its EXR.
+    requireMemory("--size " + std::to_string(settings.frameSize.x) + "x" +
+                      std::to_string(settings.frameSize.y),
+                  memoryEstimate(256 * MIB, 130, settings.frameSize.x, settings.frameSize.y) +
+                      memoryEstimate(0, 12, settings.mapSize, settings.mapSize));
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(scene);
     if (lesson.fit) renderer.setShadowClipFromWorld(*lesson.fit);

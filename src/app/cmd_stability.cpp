@@ -11,6 +11,7 @@
 // folder inside DIR and moved into place once the whole run has succeeded.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -27,6 +28,7 @@
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
+#include "base/memory_budget.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
@@ -116,9 +118,13 @@ std::vector<Sweep> parseSweeps(const std::string& text) {
     return sweeps;
 }
 
+// The shared render options that name one lookup; stability sweeps lists of them instead.
+constexpr const char* SINGLE_LOOKUP_OPTIONS[] = {"--method", "--kernel", "--bias", "--lesson",
+                                                 "--step"};
+
 StabilityOptions parseOptions(const StabilityCommandOptions& o) {
     StabilityOptions options = o.quick ? quickStabilityOptions() : StabilityOptions{};
-    for (const char* single : {"--method", "--kernel", "--bias", "--lesson", "--step"}) {
+    for (const char* single : SINGLE_LOOKUP_OPTIONS) {
         if (o.given(single)) {
             throw UsageError(std::string(single) +
                              " does not apply to stability (use --methods, --kernels, --biases, "
@@ -146,6 +152,13 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
             names = splitList("--methods", o.methods);
         }
         options.methods = parseMethods(names, kernels);
+    }
+    // The aliasing sweep draws its heat map at the map size the other sweeps use, so that size
+    // is always among the sizes it measures (else the heat map promised in -o never came).
+    std::vector<int>& sizes = options.aliasingMapSizes;
+    if (std::find(sizes.begin(), sizes.end(), options.mapSize) == sizes.end()) {
+        sizes.insert(std::upper_bound(sizes.begin(), sizes.end(), options.mapSize),
+                     options.mapSize);
     }
     if (o.given("--biases")) options.biases = parseBiases(o.biases);
     if (o.given("--sweep")) options.sweeps = parseSweeps(o.sweeps);
@@ -215,14 +228,34 @@ void writeCharts(const fs::path& dir, const std::vector<StabilityRow>& rows,
     }
 }
 
-int runStabilityCommand(const StabilityCommandOptions& o) {
-    // Every check first: nothing is computed or written unless all of it can be.
-    StabilityOptions options = parseOptions(o);
+// The command's checks, in order: its options, the chart size, the scene, -o.
+struct CheckedStability {
+    StabilityOptions options;
+    glm::ivec2 chartSize;
+    Scene scene;
+};
+
+CheckedStability checkStabilityCommand(const StabilityCommandOptions& o) {
+    CheckedStability c{parseOptions(o), {}, {}};
     // --quick draws its charts at half size unless told otherwise.
     std::string chartText = o.quick && !o.given("--chart-size") ? "640x360" : o.chartSize;
-    glm::ivec2 chartSize = parseSize("--chart-size", chartText, MAX_FRAME_SIDE, glm::ivec2(64));
-    Scene scene = o.render.loadScene();
+    c.chartSize = parseSize("--chart-size", chartText, MAX_FRAME_SIDE, glm::ivec2(64));
+    c.scene = o.render.loadScene();
     if (o.out.empty()) throw UsageError("-o needs a directory");
+    // Measured peaks of `stability --quick`: 245 MB at 320x180, 432 MB at 960x540, so 414 bytes
+    // a frame pixel (truth, error regions and a frame's targets for each sweep point at once).
+    glm::ivec2 frame = c.options.frameSize;
+    requireMemory("--size " + std::to_string(frame.x) + "x" + std::to_string(frame.y),
+                  memoryEstimate(256 * MIB, 420, frame.x, frame.y));
+    return c;
+}
+
+int runStabilityCommand(const StabilityCommandOptions& o) {
+    // Every check first: nothing is computed or written unless all of it can be.
+    CheckedStability checked = checkStabilityCommand(o);
+    const StabilityOptions& options = checked.options;
+    glm::ivec2 chartSize = checked.chartSize;
+    const Scene& scene = checked.scene;
     fs::path outDir(o.out);
     const std::string csvName = "stability.csv", mdName = "stability.md";
     std::vector<std::string> finalNames = outputNames(options.sweeps);
@@ -267,8 +300,7 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
     writeTextFile((staging.path() / csvName).string(), stabilityCsv(rows));
     writeTextFile((staging.path() / mdName).string(), markdown);
     writeCharts(staging.path(), rows, result, options.sweeps, chartSize);
-    for (const std::string& name : finalNames) fs::rename(staging.path() / name, outDir / name);
-    outputs.commit();
+    outputs.commitStaged(staging.path(), outDir, finalNames);
     std::fputs(markdown.c_str(), stdout);
     std::fprintf(stderr, "stability: %zu rows in %.1f s; wrote %zu files in %s\n",
                  result.rows.size(), seconds(), finalNames.size(), o.out.c_str());
@@ -287,6 +319,11 @@ Command addStabilityCommand(CLI::App& app) {
     o->render.size = "480x270";
     o->render.defaults.mapSize = 512;
     o->render.addTo(sub, DEFAULT_SCENE);
+    // The single-lookup options of the shared set do not apply here (parseOptions says so when
+    // given): out of --help, which listed them as if they did.
+    for (const char* single : SINGLE_LOOKUP_OPTIONS) {
+        if (CLI::Option* option = sub->get_option_no_throw(single)) option->group("");
+    }
     sub->add_option("--methods", o->methods,
                     "method ids, comma-separated (default nearest,pcf-gather)");
     sub->add_option("--kernels", o->kernels,
@@ -306,7 +343,7 @@ Command addStabilityCommand(CLI::App& app) {
                   "a few seconds, for CI: 160x90 frame, 128^2 map, 1 truth sample, nearest and "
                   "pcf-gather 3x3, fewer points per sweep (explicit options still win)");
     sub->add_flag("-f,--force", o->force, "overwrite existing output files");
-    return {sub, [o] { return runStabilityCommand(*o); }};
+    return {sub, [o] { return runStabilityCommand(*o); }, [o] { checkStabilityCommand(*o); }};
 }
 
 }  // namespace pcf

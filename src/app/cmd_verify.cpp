@@ -1,17 +1,21 @@
 // pcfscope verify DIR: is every receiver pixel of a `render --raw` folder inside the visibility
 // envelope a conformant texture unit may produce (analysis/conformance.h)? Exit 0: all inside;
 // 1: some outside (the worst is printed with its pixel); 2: bad input.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <limits>
 #include <memory>
-#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "analysis/conformance.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "base/input_file.h"
+#include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/trace_json.h"
 #include "render/image_io.h"
@@ -50,7 +54,9 @@ std::string jsonField(const Json& json, const std::string& key, const std::strin
 float jsonFloat(const Json& json, const std::string& key, const std::string& path) {
     auto it = json.find(key);
     if (it == json.end()) throw UsageError("render.json has no \"" + key + "\" (" + path + ")");
-    if (!it->is_number() || !std::isfinite(it->get<float>())) {
+    // Asked as a double: 1e300 is a JSON number, but no float (the cast would be undefined).
+    if (!it->is_number() || !std::isfinite(it->get<double>()) ||
+        std::abs(it->get<double>()) > static_cast<double>(std::numeric_limits<float>::max())) {
         throw UsageError("render.json: \"" + key + "\" is not a number (" + path + ")");
     }
     return it->get<float>();
@@ -87,24 +93,29 @@ struct RawSettings {
     BiasMode biasMode = BiasMode::Constant;
     PcfBias bias = PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, DEFAULT_RPDB_MAX);
     DepthFormat format = DepthFormat::D32F;
+    float constantBias = 0.0f;  // what every mode but none subtracted from z (0 for none)
+    float slopeBias = 0.0f;
+    float slopeMax = 0.0f;
 };
 
 RawSettings readRawSettings(const std::filesystem::path& dir) {
     std::filesystem::path jsonPath = dir / "render.json";
-    std::ifstream in(jsonPath);
-    if (!in) throw UsageError("cannot read " + jsonPath.string() + " (a `render --raw` folder?)");
-    std::stringstream buf;
-    buf << in.rdbuf();
     std::string where = jsonPath.string();
-    Json json = readRenderJson(buf.str(), where);
+    // The input path every text input takes (base/input_file.h): a FIFO or a device is
+    // refused before it is opened, a file over the size limit before it is read.
+    Json json = readRenderJson(readInputFile(where), where);
 
     RawSettings r;
     r.methodName = jsonField(json, "method", where);
     std::optional<int> method = methodFromName(r.methodName);
     if (!method)
         throw UsageError("render.json: unknown method '" + r.methodName + "' (" + where + ")");
-    r.prm = makeParams(*method, static_cast<int>(jsonFloat(json, "kernel", where)),
-                       jsonFloat(json, "radius", where));
+    // Checked before the cast: a float outside int's range (1e30) is undefined behaviour there.
+    float kernel = jsonFloat(json, "kernel", where);
+    if (!(kernel >= 0.0f && kernel <= 64.0f) || kernel != std::floor(kernel)) {
+        throw UsageError("render.json: \"kernel\" is not a kernel size (" + where + ")");
+    }
+    r.prm = makeParams(*method, static_cast<int>(kernel), jsonFloat(json, "radius", where));
     std::optional<int> weights = weightsFromName(jsonField(json, "weights", where));
     std::optional<int> precision = precisionFromName(jsonField(json, "precision", where));
     std::optional<DepthFormat> format = depthFormatFromName(jsonField(json, "depth_format", where));
@@ -128,6 +139,12 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
         if (json.contains("rpdb_max")) rpdbMax = jsonFloat(json, "rpdb_max", where);
     }
     r.bias = PcfBias(static_cast<int>(r.biasMode), vec2(0.0f), softScale, rpdbMax);
+    // The per-lookup bias amounts, from which checkRefs recomputes ref.
+    // constant_bias is the setting as given; mode none subtracts nothing.
+    r.constantBias = jsonFloat(json, "constant_bias", where);
+    if (r.biasMode == BiasMode::None) r.constantBias = 0.0f;
+    r.slopeBias = jsonFloat(json, "slope_bias", where);
+    r.slopeMax = jsonFloat(json, "slope_max", where);
     // render.json's keys are the kernel's words.
     if (auto why = validateParams(r.prm))
         throw UsageError("render.json: " + *why + " (" + where + ")");
@@ -140,7 +157,7 @@ struct RawImages {
     ShadowMap map;
     FloatImage lightSpace;  // u, v, ref, receiver (1 or 0)
     FloatImage visibility;
-    FloatImage planes;  // dz/du, dz/dv; empty unless receiver-plane bias
+    FloatImage planes;  // dz/du, dz/dv, z before bias, 1 on receivers (dzduv.exr)
 };
 
 RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) {
@@ -157,14 +174,80 @@ RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) 
     if (ls.width != img.visibility.width || ls.height != img.visibility.height) {
         throw UsageError("lightspace.exr and visibility.exr differ in size (" + dir.string() + ")");
     }
-    // Receiver-plane bias: each pixel's plane, dz/du and dz/dv, as the shader derived them.
-    if (r.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
-        img.planes = readImage(dir / "dzduv.exr", 4);
-        if (img.planes.width != ls.width || img.planes.height != ls.height) {
-            throw UsageError("dzduv.exr and lightspace.exr differ in size (" + dir.string() + ")");
-        }
+    // Each pixel's plane (dz/du, dz/dv, as the shader derived them) and depth before bias.
+    img.planes = readImage(dir / "dzduv.exr", 4);
+    if (img.planes.width != ls.width || img.planes.height != ls.height) {
+        throw UsageError("dzduv.exr and lightspace.exr differ in size (" + dir.string() + ")");
     }
     return img;
+}
+
+// The ref each receiver pixel filtered with, recomputed from its depth before bias (dzduv.exr's
+// third channel) and render.json's bias amounts as scene.frag computes it: ref = z - b, b the
+// constant bias (0 for none); under slope bias b = pcfSlopeBias's min(b + s tan(theta), max),
+// a range, since the folder holds no normals (theta from 0 to the 1e-4 cosine it clamps to).
+// Normal offset projects a moved point, so its z is not dzduv's and it is not checked. A label
+// that does not fit the pixels (a wrong bias amount, a relabelled mode) is bad input. Returns
+// the number of pixels checked.
+long checkRefs(const RawImages& img, const RawSettings& r, const std::string& dir) {
+    if (r.biasMode == BiasMode::Normal) return 0;
+    // GLSL rounds a float subtraction correctly; the slack is for z computed by a division
+    // the compiler may turn into a multiply by 1 / w (an ulp or two of z <= 1).
+    constexpr float REF_SLACK = 1.0e-6f;
+    float lo = r.constantBias, hi = r.constantBias;
+    if (r.biasMode == BiasMode::Slope) {
+        lo = pcfSlopeBias(1.0f, r.constantBias, r.slopeBias, r.slopeMax);
+        hi = pcfSlopeBias(1.0e-4f, r.constantBias, r.slopeBias, r.slopeMax);
+        if (lo > hi) std::swap(lo, hi);
+    }
+    const FloatImage& ls = img.lightSpace;
+    long checked = 0;
+    for (int y = 0; y < ls.height; ++y) {
+        for (int x = 0; x < ls.width; ++x) {
+            size_t k = static_cast<size_t>(y) * ls.width + x;
+            if (ls.data[4 * k + 3] != 1.0f) continue;
+            float z = img.planes.data[4 * k + 2];
+            float ref = ls.data[4 * k + 2];
+            bool fits = img.planes.data[4 * k + 3] == 1.0f && ref >= (z - hi) - REF_SLACK &&
+                        ref <= (z - lo) + REF_SLACK;
+            if (!fits) {
+                char buf[200];
+                std::snprintf(buf, sizeof buf,
+                              "pixel (%d, %d) has ref %.9g, but its depth %.9g less the bias "
+                              "render.json gives (%s, %.9g) is %.9g",
+                              x, y, static_cast<double>(ref), static_cast<double>(z),
+                              std::string(biasModeName(r.biasMode)).c_str(),
+                              static_cast<double>(lo), static_cast<double>(z - lo));
+                throw UsageError(dir + ": render.json does not describe these images: " + buf);
+            }
+            ++checked;
+        }
+    }
+    return checked;
+}
+
+// A fixed-point map (16 or 24 bits) holds only the values k / (2^n - 1): the depth buffer keeps
+// the integer k (OpenGL 4.5 core, 2.3.5 "Fixed-Point Data Conversions"). A texel off that grid
+// means the map is not the format render.json names (a 32F map labelled 16). Near 1 a float
+// cannot tell 24-bit levels apart; the slack (two float ulps of the texel, in levels) says so.
+void checkDepthFormat(const ShadowMap& map, DepthFormat format, const std::string& path) {
+    int bits = depthFormatFixedPointBits(format);
+    if (bits == 0) return;
+    double levels = std::ldexp(1.0, bits) - 1.0;
+    const std::vector<float>& depths = map.depths();
+    for (size_t k = 0; k < depths.size(); ++k) {
+        float d = depths[k];
+        double scaled = static_cast<double>(d) * levels;
+        double ulp = static_cast<double>(std::nextafter(d, 2.0f) - d);
+        if (std::abs(scaled - std::round(scaled)) <= std::max(1.0e-3, 2.0 * ulp * levels)) continue;
+        char buf[160];
+        std::snprintf(buf, sizeof buf,
+                      "texel (%zu, %zu) is %.9g, not a %d-bit depth value (render.json says "
+                      "depth_format \"%s\")",
+                      k % static_cast<size_t>(map.width()), k / static_cast<size_t>(map.width()),
+                      static_cast<double>(d), bits, std::string(depthFormatName(format)).c_str());
+        throw UsageError(path + ": " + buf);
+    }
 }
 
 // Every receiver pixel's visibility against the envelope of what a GPU may return there.
@@ -197,7 +280,7 @@ EnvelopeTally checkEnvelopes(const RawImages& img, const RawSettings& r,
             if (r.rotate)
                 p.rotation = pcfTexelRotation(uv, ivec2(img.map.width(), img.map.height()));
             PcfBias b = r.bias;
-            if (!img.planes.data.empty()) {
+            if (r.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
                 b.dzduv = vec2(img.planes.data[4 * k], img.planes.data[4 * k + 1]);
             }
             VisibilityEnvelope env = visibilityEnvelope(img.map, uv, ref, p, b, prec);
@@ -225,6 +308,8 @@ int runVerify(const VerifyOptions& o) {
     std::filesystem::path dir(o.dir);
     RawSettings r = readRawSettings(dir);
     RawImages img = readRawImages(dir, r);
+    checkDepthFormat(img.map, r.format, (dir / "shadowmap.exr").string());
+    long refsChecked = checkRefs(img, r, dir.string());
     ConformancePrecision prec{o.subTexelBits, o.weightBits, o.referenceBits};
     EnvelopeTally t = checkEnvelopes(img, r, prec);
     if (t.receivers == 0) throw UsageError("no receiver pixels in " + dir.string());
@@ -242,6 +327,14 @@ int runVerify(const VerifyOptions& o) {
         img.map.width(), img.map.height(), std::string(depthFormatName(r.format)).c_str(),
         std::string(precisionName(prm.precision)).c_str(), o.subTexelBits, o.weightBits,
         refBits.c_str());
+    if (refsChecked > 0) {
+        std::printf("ref of all %ld receiver pixels recomputed from depth and bias: as rendered\n",
+                    refsChecked);
+    } else {
+        std::printf(
+            "ref not recomputed: normal offset moves the point, and the folder holds no "
+            "normals\n");
+    }
     std::printf("%ld of %ld receiver pixels inside the envelope (%.4f %%)\n", t.inside, t.receivers,
                 100.0 * static_cast<double>(t.inside) / static_cast<double>(t.receivers));
     if (t.inside == t.receivers) return 0;
@@ -255,6 +348,12 @@ int runVerify(const VerifyOptions& o) {
 }
 
 }  // namespace
+
+int verifyFolder(const std::string& dir) {
+    VerifyOptions o;
+    o.dir = dir;
+    return runVerify(o);
+}
 
 Command addVerifyCommand(CLI::App& app) {
     auto o = std::make_shared<VerifyOptions>();

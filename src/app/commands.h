@@ -4,12 +4,16 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 
 namespace pcf {
 
 struct Command {
     CLI::App* sub;
     std::function<int()> run;
+    // Every check `run` makes before it starts work, and nothing else (no GL, no output): what
+    // the fuzz targets drive with random command lines. Empty for commands without one.
+    std::function<void()> check = nullptr;
 };
 
 Command addMethodsCommand(CLI::App& app);
@@ -22,6 +26,10 @@ Command addViewCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 Command addVerifyCommand(CLI::App& app);
 Command addLessonCommand(CLI::App& app);  // `lesson check FILE`
+
+// `pcfscope verify DIR` with the default envelope precision: 0 all inside, 1 some outside;
+// throws UsageError, InputError or ImageError for bad input (the fuzz targets' entry).
+int verifyFolder(const std::string& dir);
 
 // `pcfscope` with no arguments: lesson 1 in the window when there is a display, otherwise its
 // frames exported into a new folder under pcfscope-frames/ (printed on stdout).

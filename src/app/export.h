@@ -22,13 +22,15 @@ struct ExportPlan {
 
 // Checks every output before anything is written and adds it to `outputs` (which creates the
 // folder and takes the frames back if the export fails): throws UsageError if a file exists
-// (unless the outputs were made with force) or the folder cannot be written.
+// (unless the outputs were made with force) or the folder cannot be written. Page files of these
+// steps already in the folder (STEM-pageN.*) count as outputs too, so they are refused here.
 ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::string& lessonName,
                       glm::ivec2 steps);
 
 // Renders and writes each planned step headless; progress and frames/s on stderr. A step whose
 // text pages at this size (inspector.h) also gets one frame per further page, STEM-page2.png
 // (+ .json), added to `outputs` (checked like the rest; taken back on failure) when given.
+// `outputs` is committed when every frame is written, before the summary line says so.
 void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
                   bool presentation, bool progress, OutputFiles* outputs = nullptr);
 

@@ -1,6 +1,8 @@
 // pcfscope: the command line (DESIGN.md section 6).
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <string>
@@ -62,10 +64,18 @@ int main(int argc, char** argv) {
 
     try {
         refuseEmptyValues(app);
+        int code = -1;
         for (const pcf::Command& c : commands) {
-            if (c.sub->parsed()) return c.run();
+            if (c.sub->parsed()) code = c.run();
         }
-        return pcf::runMainJob();
+        if (code < 0) code = pcf::runMainJob();
+        // Standard output is a write like any other (redirected to a file on a full disk):
+        // what could not be written is an error, not a success.
+        if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+            return fail(std::string("cannot write to standard output (") + std::strerror(errno) +
+                        ")");
+        }
+        return code;
     } catch (const pcf::UsageError& e) {
         return fail(e.what());
     } catch (const pcf::InputError& e) {

@@ -3,13 +3,17 @@
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <mutex>
 #include <shared_mutex>
 #include <thread>
@@ -48,7 +52,71 @@ bool isOurScratch(const fs::path& p) {
     return name.starts_with(".pcfscope-") && name.ends_with(suffix);
 }
 
+// The output folders this process holds locked: one flock per folder (by device and inode, so
+// "out", "./out" and a link to it are one), counted, since one command may write several files
+// into a folder and nested OutputFiles (the viewer's) may share it.
+struct FolderLock {
+    int fd = -1;
+    int users = 0;
+};
+
+std::map<std::pair<dev_t, ino_t>, FolderLock>& folderLocks() {
+    static std::map<std::pair<dev_t, ino_t>, FolderLock> locks;
+    return locks;
+}
+
 }  // namespace
+
+// One writer per output folder: an advisory flock on the folder itself (no lock file left in
+// the user's folder; the kernel drops it when the process ends, however it ends). Taken before
+// any name is checked, so a second pcfscope writing into the same folder is refused up front,
+// before it has claimed, rendered or removed anything. Called under registryMutex.
+void OutputFiles::lockFolder(const std::string& option, const fs::path& target,
+                             const fs::path& dir) {
+    fs::path at = dir.empty() ? fs::path(".") : dir;
+    int fd = ::open(at.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    struct stat st {};
+    if (fd < 0 || ::fstat(fd, &st) != 0) {
+        int err = errno;
+        if (fd >= 0) ::close(fd);
+        throw UsageError(quoted(option, target) + ": cannot open folder " + at.string() + " (" +
+                         std::strerror(err) + ")");
+    }
+    auto key = std::make_pair(st.st_dev, st.st_ino);
+    FolderLock& lock = folderLocks()[key];
+    if (lock.users == 0) {
+        if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+            int err = errno;
+            ::close(fd);
+            folderLocks().erase(key);
+            if (err == EWOULDBLOCK) {
+                throw UsageError(quoted(option, target) + ": another pcfscope is writing into " +
+                                 at.string() + "; wait for it to finish or choose another folder");
+            }
+            throw UsageError(quoted(option, target) + ": cannot lock folder " + at.string() + " (" +
+                             std::strerror(err) + ")");
+        }
+        lock.fd = fd;
+    } else {
+        ::close(fd);
+    }
+    if (std::find(mLocks.begin(), mLocks.end(), key) == mLocks.end()) {
+        ++lock.users;
+        mLocks.push_back(key);
+    }
+}
+
+void OutputFiles::unlockFolders() {
+    for (const auto& key : mLocks) {
+        auto it = folderLocks().find(key);
+        if (it == folderLocks().end()) continue;
+        if (--it->second.users == 0) {
+            ::close(it->second.fd);  // closing the only descriptor releases the flock
+            folderLocks().erase(it);
+        }
+    }
+    mLocks.clear();
+}
 
 OutputFiles::OutputFiles(bool force) : mForce(force) {
     std::lock_guard lock(registryMutex());
@@ -61,6 +129,8 @@ OutputFiles::~OutputFiles() {
         std::erase(registry(), this);
     }
     if (!mCommitted) takeBack();
+    std::lock_guard lock(registryMutex());
+    unlockFolders();
 }
 
 void OutputFiles::commit() {
@@ -158,10 +228,14 @@ void OutputFiles::add(const std::string& option, const fs::path& path) {
     for (const auto& [inputOption, input] : mInputs) {
         requireNotInput(option, path, inputOption, input);
     }
+    // The folder first (made if missing, then locked), then the name: whether it exists is
+    // only settled once no other pcfscope can be writing there.
+    prepareDirectory(option, path, path.parent_path());
+    lockFolder(option, path, path.parent_path());
+    exists = fs::symlink_status(path, ec).type() != fs::file_type::not_found;
     if (exists && !mForce) {
         throw UsageError(quoted(option, path) + " already exists; pass --force to overwrite it");
     }
-    prepareDirectory(option, path, path.parent_path());
     if (!exists) mNewFiles.push_back(path);
 }
 
@@ -173,6 +247,7 @@ void OutputFiles::addDirectory(const std::string& option, const fs::path& dir) {
         throw UsageError(quoted(option, dir) + " is not a directory");
     }
     prepareDirectory(option, dir, dir);
+    lockFolder(option, dir, dir);
     mDirs.push_back(dir);
 }
 
@@ -187,6 +262,10 @@ void requireExtension(const std::string& option, const fs::path& path,
 }
 
 void installInterruptCleanup() {
+    // Past `ulimit -f` the kernel sends SIGXFSZ, whose default ends the process on the spot
+    // (exit 153, temporary files and scratch folders left). Ignored, the write fails with EFBIG
+    // instead, which every writer checks: one line, exit 2, outputs taken back.
+    std::signal(SIGXFSZ, SIG_IGN);
     sigset_t set;
     sigemptyset(&set);
     sigaddset(&set, SIGINT);

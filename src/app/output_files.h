@@ -2,6 +2,8 @@
 // taken back if the command fails half way, so that the user never finds half an output.
 #pragma once
 
+#include <sys/types.h>
+
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -23,8 +25,10 @@ class OutputFiles {
 
     // Checks that `path` (given by `option`) can be written: it must not exist unless force, it
     // must not be a directory, and its folder must be (or become) a writable directory. Missing
-    // folders are created now and a probe file is written there and removed. Throws UsageError
-    // naming the option, the path and the reason; nothing is left behind on failure.
+    // folders are created now and a probe file is written there and removed. The folder is
+    // locked until this set is destroyed: a second pcfscope adding an output in the same folder
+    // meanwhile is refused ("another pcfscope is writing into DIR"). Throws UsageError naming
+    // the option, the path and the reason; nothing is left behind on failure.
     void add(const std::string& option, const std::filesystem::path& path);
     // The same for a directory the command writes into (created now if missing).
     void addDirectory(const std::string& option, const std::filesystem::path& dir);
@@ -60,13 +64,17 @@ class OutputFiles {
 
     void prepareDirectory(const std::string& option, const std::filesystem::path& target,
                           const std::filesystem::path& dir);
+    void lockFolder(const std::string& option, const std::filesystem::path& target,
+                    const std::filesystem::path& dir);
+    void unlockFolders();
 
     bool mForce;
     bool mCommitted = false;
     std::vector<std::filesystem::path> mNewFiles;     // did not exist when added
     std::vector<std::filesystem::path> mCreatedDirs;  // made by us, parents first
     std::vector<std::pair<std::string, std::filesystem::path>> mInputs;
-    std::vector<std::filesystem::path> mDirs;  // folders written into (scratch may be there)
+    std::vector<std::filesystem::path> mDirs;     // folders written into (scratch may be there)
+    std::vector<std::pair<dev_t, ino_t>> mLocks;  // output folders locked (lockFolder)
 };
 
 // A scratch folder ".pcfscope-<what>-<pid>" inside DIR that a command stages its outputs in (and

@@ -42,6 +42,10 @@ Lesson loadLessonChecked(const std::string& path);
 // has a few hundred. More is refused with one line (a 50,000-row chart took 80 s and 2.3 GB).
 constexpr std::size_t MAX_CHART_ROWS = 2000;
 
+// The smallest chart the chart drawers lay out (analysis/speed_chart.cpp, stability_chart.cpp
+// refuse less): a command that draws a step's chart checks its size against this first.
+constexpr int MIN_CHART_SIDE = 64;
+
 // A chart step's chart (LessonStep::chart, with its chart_highlight) as RGBA8 of `size`, rows
 // top-down, as the frame shows it in the scene's place; `render --lesson L --step S` writes it.
 // Needs a current OpenGL 4.5 context. Throws InputError for a bad chart file.

@@ -462,11 +462,15 @@ int runViewer(const ViewerOptions& o) {
     std::istringstream tokens(o.keys);
     for (std::string t; tokens >> t;) keys.push_back(parseKeyName(t));
     OutputFiles outputs(o.force);
+    Lesson lesson = loadLessonChecked(o.lesson);  // bad lessons fail before a window opens
+    // The screenshot may not be what the view reads (a link to the lesson or a chart), --force
+    // or not: every other writer refuses that too.
+    outputs.addInput("LESSON", o.lesson);
+    for (const LessonStep& step : lesson.steps) outputs.addInput("chart", step.chart);
     if (!o.screenshot.empty()) {
         requireExtension("--screenshot", o.screenshot, ".png");
         outputs.add("--screenshot", o.screenshot);
     }
-    loadLessonChecked(o.lesson);  // bad lessons fail before a window opens
 
     std::unique_ptr<GlfwWindowContext> window =
         GlfwWindowContext::create(o.windowSize.x, o.windowSize.y, "pcfscope", true);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "kernel/settings.h"
+#include "kernel/sigma_limits.h"
 
 namespace pcf {
 
@@ -230,8 +231,9 @@ std::optional<ParamProblem> checkParams(const PcfParams& prm) {
                        " applies to pcf-naive and pcf-gather, not ", info.name);
     }
     if (prm.weights == PCF_WEIGHTS_GAUSSIAN &&
-        !(std::isfinite(prm.sigma) && prm.sigma > 0.0f && prm.sigma <= MAX_SIGMA)) {
-        return problem("sigma", "", " ", prm.sigma, " is out of range (0, ", MAX_SIGMA, "] texels");
+        !(std::isfinite(prm.sigma) && prm.sigma >= MIN_SIGMA && prm.sigma <= MAX_SIGMA)) {
+        return problem("sigma", "", " ", prm.sigma, " is out of range [", MIN_SIGMA, ", ",
+                       MAX_SIGMA, "] texels");
     }
     if (prm.precision != PCF_PRECISION_EXACT && prm.precision != PCF_PRECISION_HW8) {
         return problem("", "unknown precision id ", prm.precision);

@@ -1,5 +1,7 @@
 #include "kernel/settings.h"
 
+#include "kernel/sigma_limits.h"
+
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -34,7 +36,7 @@ const ParamInfo PARAMS[] = {
         [] { return std::string("box, binomial, gaussian"); }, "weights"}, ParamGroup::Filter,
      "", "", 0, 0, false,
      "pcf-naive, pcf-gather: weights of the N x N lookups: box, binomial, gaussian", true},
-    {"sigma", &ShadowSettings::sigma, ParamGroup::Filter, "uSigma", TEXELS, 0.0, MAX_SIGMA, true,
+    {"sigma", &ShadowSettings::sigma, ParamGroup::Filter, "uSigma", TEXELS, MIN_SIGMA, MAX_SIGMA, false,
      "gaussian weights: standard deviation in texels", true},
     {"precision", NamedField<int>{&ShadowSettings::precision, precisionName, precisionFromName,
         [] { return std::string("exact, hw8"); }, "precision"}, ParamGroup::Filter,
@@ -50,15 +52,15 @@ const ParamInfo PARAMS[] = {
      "bias mode (README \"Bias modes\"; every mode but none subtracts --constant-bias)", true},
     {"constant_bias", &ShadowSettings::constantBias, ParamGroup::Bias, "uConstantBias",
      DEPTH_UNITS, -1.0, 1.0, false,
-     "depth subtracted from z in light depth units (ref = z - B)", false},
+     "depth subtracted from z in light depth units (ref = z - B)", true},
     {"slope_bias", &ShadowSettings::slopeBias, ParamGroup::Bias, "uSlopeBias",
      "light depth units per unit of tan(theta)", 0.0, 1.0, false,
-     "slope: S in ref = z - min(B + S * tan(theta), M)", false},
+     "slope: S in ref = z - min(B + S * tan(theta), M)", true},
     {"slope_max", &ShadowSettings::slopeMax, ParamGroup::Bias, "uSlopeMax", DEPTH_UNITS, 0.0, 1.0,
-     false, "slope: the cap M, light depth units", false},
+     false, "slope: the cap M, light depth units", true},
     {"normal_offset", &ShadowSettings::normalOffset, ParamGroup::Bias, "uNormalOffset", TEXELS,
      0.0, 64.0, false,
-     "normal: K, texels the receiver moves along its normal (times sin(theta))", false},
+     "normal: K, texels the receiver moves along its normal (times sin(theta))", true},
     {"soft_scale", &ShadowSettings::softScale, ParamGroup::Bias, "uSoftScale",
      "1 / light depth units", 1.0, 1.0e9, false,
      "soft: lit = (depth > ref) * saturate((depth - ref) * SCALE)", true},

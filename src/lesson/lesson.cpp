@@ -15,6 +15,7 @@
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/shadow_map.h"
+#include "kernel/sigma_limits.h"
 #include "kernel/trace.h"
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_keys.h"

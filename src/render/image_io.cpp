@@ -1,10 +1,13 @@
 #include "render/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -60,34 +63,55 @@ std::string resolveLinks(const std::string& path) {
     return at.string();
 }
 
-// Writes through a temporary file and renames it over `path`. The plugin is chosen from the
-// final path's extension: the temporary name has none OIIO knows.
+// Writes `bytes` to a new temporary file next to `target` and renames it over `target`. Every
+// write, the close and the rename are checked: a full disk (ENOSPC) or the file size limit
+// (EFBIG, SIGXFSZ being ignored, see app/output_files.h) throws with the system's reason, and
+// the temporary file is removed, so nothing half written ever carries a final name.
+void writeBytesAtomically(const std::string& path, const std::string& target,
+                          std::span<const unsigned char> bytes, const char* what) {
+    std::string temp = tempPathFor(target);
+    auto fail = [&](int err) {
+        ::unlink(temp.c_str());
+        throw ImageError(path + ": cannot write " + what + " (" + std::strerror(err) + ")");
+    };
+    // 0666 less the umask, as any new file: the rename gives the target these permissions.
+    int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        int err = errno;
+        throw ImageError(path + ": cannot write " + what + " (" + std::strerror(err) + ")");
+    }
+    size_t done = 0;
+    while (done < bytes.size()) {
+        ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            int err = n < 0 ? errno : ENOSPC;
+            ::close(fd);
+            fail(err);
+        }
+        done += static_cast<size_t>(n);
+    }
+    if (::close(fd) != 0) fail(errno);
+    std::error_code ec;
+    std::filesystem::rename(temp, target, ec);
+    if (ec) fail(ec.value());
+}
+
+// Encodes the image into memory (OIIO's writers do not all report a failed fwrite: a PNG on a
+// full disk came out as 0 bytes with success), then writes the bytes with writeBytesAtomically.
+// The plugin is chosen from the final path's extension.
 void writeImageAtomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
                           const void* data) {
     std::shared_lock gate(outputWriteGate());
     std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
     if (!out) throw ImageError(path + ": cannot write image (" + firstLine(OIIO::geterror()) + ")");
-    const std::string target = resolveLinks(path);
-    std::string temp = tempPathFor(target);
-    std::string reason;
-    if (!out->open(temp, spec) || !out->write_image(type, data) || !out->close()) {
-        reason = out->geterror();
-        // The temporary name is ours, not the user's: report the path they asked for.
-        for (size_t at; (at = reason.find(temp)) != std::string::npos;) {
-            reason.replace(at, temp.size(), path);
-        }
-        reason = firstLine(reason);
+    OIIO::Filesystem::IOVecOutput memory;
+    if (!out->supports("ioproxy") || !out->set_ioproxy(&memory) || !out->open(path, spec) ||
+        !out->write_image(type, data) || !out->close()) {
+        throw ImageError(path + ": cannot write image (" + firstLine(out->geterror()) + ")");
     }
     out.reset();
-    std::error_code ec;
-    if (reason.empty()) {
-        std::filesystem::rename(temp, target, ec);
-        if (ec) reason = ec.message();
-    }
-    if (!reason.empty()) {
-        std::filesystem::remove(temp, ec);
-        throw ImageError(path + ": cannot write image (" + reason + ")");
-    }
+    writeBytesAtomically(path, resolveLinks(path), memory.buffer(), "image");
 }
 
 }  // namespace
@@ -99,24 +123,10 @@ std::shared_mutex& outputWriteGate() {
 
 void writeTextFile(const std::string& path, const std::string& text) {
     std::shared_lock gate(outputWriteGate());
-    const std::string target = resolveLinks(path);
-    std::string temp = tempPathFor(target);
-    std::error_code ec;
-    {
-        std::ofstream f(temp, std::ios::binary | std::ios::trunc);
-        f << text;
-        f.close();
-        if (!f) {
-            std::filesystem::remove(temp, ec);
-            throw ImageError(path + ": cannot write file");
-        }
-    }
-    std::filesystem::rename(temp, target, ec);
-    if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        throw ImageError(path + ": cannot write file (" + ec.message() + ")");
-    }
+    auto bytes = std::as_bytes(std::span(text));
+    writeBytesAtomically(path, resolveLinks(path),
+                         {reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()},
+                         "file");
 }
 
 namespace {
@@ -204,12 +214,103 @@ class QuietStderr {
 
 }  // namespace
 
-FloatImage readFloatImage(const std::string& path) {
+namespace {
+
+// An OpenEXR file starts with these four bytes (OpenEXR's "File Layout": magic number 20000630).
+constexpr unsigned char EXR_MAGIC[4] = {0x76, 0x2f, 0x31, 0x01};
+
+// OpenEXR sizes each header attribute with an int32 and allocates that much before reading it:
+// a 584-byte file claiming a 1.77 GB attribute cost 1.8 GiB and seconds. Walks the header(s)
+// (name, type, int32 size, value; an empty name ends a header; a multi-part file, version flag
+// 0x1000, has headers until an empty one) and refuses an attribute larger than what follows it
+// in the file. Layout from OpenEXR's "File Layout" document (Kainz, Bogart, 2004-2013).
+void checkExrHeader(const std::string& path, std::ifstream& in, std::uintmax_t fileSize) {
+    auto bad = [&](const std::string& why) {
+        throw ImageError(path + ": cannot read image (" + why + ")");
+    };
+    auto readName = [&](std::string& name) {
+        name.clear();
+        for (char c; in.get(c);) {
+            if (c == '\0') return;
+            if (name.size() >= 255) bad("a header name is longer than 255 bytes");
+            name += c;
+        }
+        bad("the header is cut short");
+    };
+    unsigned char version[4] = {};
+    in.read(reinterpret_cast<char*>(version), 4);
+    bool multiPart = (version[1] & 0x10) != 0;
+    std::string name, type;
+    for (bool headerStart = true;;) {
+        readName(name);
+        if (name.empty()) {
+            if (!multiPart || headerStart) return;
+            headerStart = true;
+            continue;
+        }
+        headerStart = false;
+        readName(type);
+        int32_t size = 0;
+        in.read(reinterpret_cast<char*>(&size), 4);
+        if (!in) bad("the header is cut short");
+        auto at = static_cast<std::uintmax_t>(in.tellg());
+        if (size < 0 || static_cast<std::uintmax_t>(size) > fileSize - at) {
+            bad("header attribute '" + name + "' claims " + std::to_string(size) +
+                " bytes; the file has " + std::to_string(fileSize - at) + " after it");
+        }
+        in.seekg(size, std::ios::cur);
+    }
+}
+
+// The one way an image input is opened (`trace --map`, `verify`'s folder): a regular file (a
+// FIFO or a device would block OIIO or never end), at most MAX_IMAGE_FILE_BYTES, an EXR's
+// header attribute sizes within the file, a flat 2D image of at most MAX_IMAGE_SIDE per side.
+// All of it is asked before a pixel is allocated. `what` names the thing in the side message.
+std::unique_ptr<OIIO::ImageInput> openImageInput(const std::string& path, const char* unit,
+                                                 const char* what) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::file_status status = fs::status(path, ec);
+    if (!ec && fs::exists(status) && !fs::is_regular_file(status)) {
+        throw ImageError(path + ": cannot read image (" +
+                         (fs::is_directory(status) ? "it is a directory" : "not a regular file") +
+                         ")");
+    }
+    if (!ec && fs::exists(status)) {
+        std::uintmax_t size = fs::file_size(path, ec);
+        if (!ec && size > MAX_IMAGE_FILE_BYTES) {
+            throw ImageError(path + ": is " + std::to_string(size) +
+                             " bytes; the limit for an image input is " +
+                             std::to_string(MAX_IMAGE_FILE_BYTES));
+        }
+        std::ifstream in(path, std::ios::binary);
+        unsigned char magic[4] = {};
+        in.read(reinterpret_cast<char*>(magic), 4);
+        if (!ec && in && std::memcmp(magic, EXR_MAGIC, 4) == 0) checkExrHeader(path, in, size);
+    }
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
     if (!in) throw ImageError(path + ": cannot read image (" + firstLine(OIIO::geterror()) + ")");
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.deep || spec.width <= 0 || spec.height <= 0 || spec.depth > 1) {
         throw ImageError(path + ": cannot read image (not a flat 2D image)");
+    }
+    if (spec.width > MAX_IMAGE_SIDE || spec.height > MAX_IMAGE_SIDE) {
+        throw ImageError(path + ": is " + std::to_string(spec.width) + " x " +
+                         std::to_string(spec.height) + " " + unit + "; " + what + " is at most " +
+                         std::to_string(MAX_IMAGE_SIDE) + " on a side");
+    }
+    return in;
+}
+
+}  // namespace
+
+FloatImage readFloatImage(const std::string& path) {
+    QuietStderr quiet;
+    std::unique_ptr<OIIO::ImageInput> in = openImageInput(path, "pixels", "an image");
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.nchannels < 1 || spec.nchannels > 4) {
+        throw ImageError(path + ": has " + std::to_string(spec.nchannels) +
+                         " channels; an image has 1 to 4");
     }
     FloatImage img{spec.width, spec.height, spec.nchannels, {}};
     img.data.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
@@ -220,19 +321,8 @@ FloatImage readFloatImage(const std::string& path) {
 }
 
 ShadowMap readDepthImage(const std::string& path) {
-    // A FIFO or device would block OIIO forever (or never end): only regular files, which is
-    // what a depth map written by pcfscope or a paint program is.
-    std::error_code ec;
-    std::filesystem::file_status status = std::filesystem::status(path, ec);
-    if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
-        throw ImageError(
-            path + ": cannot read image (" +
-            (std::filesystem::is_directory(status) ? "it is a directory" : "not a regular file") +
-            ")");
-    }
     QuietStderr quiet;
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
-    if (!in) throw ImageError(path + ": cannot read image (" + firstLine(OIIO::geterror()) + ")");
+    std::unique_ptr<OIIO::ImageInput> in = openImageInput(path, "texels", "a depth map");
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels != 1) {
         throw ImageError(path + ": has " + std::to_string(spec.nchannels) +
@@ -243,14 +333,6 @@ ShadowMap readDepthImage(const std::string& path) {
         base != OIIO::TypeDesc::DOUBLE) {
         throw ImageError(path + ": holds " + std::string(spec.format.c_str()) +
                          " integers; a depth map holds floats (half or float)");
-    }
-    if (spec.deep || spec.width <= 0 || spec.height <= 0 || spec.depth > 1) {
-        throw ImageError(path + ": cannot read image (not a flat 2D image)");
-    }
-    if (spec.width > MAX_DEPTH_IMAGE_SIDE || spec.height > MAX_DEPTH_IMAGE_SIDE) {
-        throw ImageError(path + ": is " + std::to_string(spec.width) + " x " +
-                         std::to_string(spec.height) + " texels; a depth map is at most " +
-                         std::to_string(MAX_DEPTH_IMAGE_SIDE) + " on a side");
     }
     std::vector<float> depths(static_cast<size_t>(spec.width) * spec.height);
     // OIIO hands scanlines in file order, first scanline first: that is ShadowMap's row 0.

@@ -9,6 +9,7 @@
 // over PATH only when complete, so a failed write never leaves a half-written PATH behind.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <shared_mutex>
 #include <span>
@@ -42,21 +43,29 @@ void writeExr(const std::string& path, int width, int height, int channels,
 // readDepthImage reads back unchanged.
 void writeDepthImage(const std::string& path, const ShadowMap& map);
 
-// The largest side of a depth map readDepthImage accepts: GL's common GL_MAX_TEXTURE_SIZE (what
-// llvmpipe and most GPUs report), 1 GiB of floats at most. Checked on the file's header, before
-// a texel is allocated, so a small file claiming a huge image costs nothing.
-constexpr int MAX_DEPTH_IMAGE_SIDE = 16384;
+// The largest side of an image readDepthImage and readFloatImage accept: GL's common
+// GL_MAX_TEXTURE_SIZE (what llvmpipe and most GPUs report), 1 GiB of floats per channel at most.
+// Checked on the file's header, before a pixel is allocated, so a small file claiming a huge
+// image costs nothing.
+constexpr int MAX_IMAGE_SIDE = 16384;
+constexpr int MAX_DEPTH_IMAGE_SIDE = MAX_IMAGE_SIDE;
+// The largest image file read: a 16384^2 depth map of uncompressed floats is 1 GiB; four such
+// channels (a `render --raw` lightspace.exr at the largest frame is less) fit in 4 GiB.
+constexpr std::uintmax_t MAX_IMAGE_FILE_BYTES = std::uintmax_t{4} << 30;
 
 // A depth map: one channel of half or float, every texel in [0,1]. Row 0 = first scanline.
-// Only regular files are read (a FIFO or device would block or never end).
+// Only regular files are read (a FIFO or device would block or never end); an EXR header
+// attribute larger than the file is refused before OpenEXR allocates it.
 // Throws ImageError: "PATH: is 20000 x 20000 texels; a depth map is at most 16384 on a side",
 // "PATH: cannot read image (REASON)", "PATH: has 3 channels; a depth map has 1", "PATH: holds uint8
 // integers; a depth map holds floats (half or float)", "PATH: texel (i, j) is NaN" (and the other
 // ShadowMap::findInvalidTexel findings).
 ShadowMap readDepthImage(const std::string& path);
 
-// Any float image: width, height, channel count and the floats (rows as stored, first scanline
-// first, channels interleaved). Throws ImageError "PATH: cannot read image (REASON)".
+// Any float image of 1 to 4 channels: width, height, channel count and the floats (rows as
+// stored, first scanline first, channels interleaved). The same input checks as readDepthImage
+// (regular file, size caps, EXR header attribute sizes). Throws ImageError "PATH: cannot read
+// image (REASON)", "PATH: is 20000 x 20000 pixels; an image is at most 16384 on a side".
 struct FloatImage {
     int width = 0;
     int height = 0;

@@ -85,6 +85,12 @@ class TableReader {
         if (!std::isfinite(v)) {
             fail(&node, mWhat + " " + name + " must be finite, got " + formatNumber(v));
         }
+        // Scenes are computed in float: a radius of 1e301 became infinity and no camera planes
+        // could be fitted. Scenes are metres across; 1e6 leaves squares (1e12) well inside float.
+        if (std::abs(v) > MAX_SCENE_NUMBER) {
+            fail(&node, mWhat + " " + name + " must be within +-" + formatNumber(MAX_SCENE_NUMBER) +
+                            ", got " + formatNumber(v));
+        }
         return v;
     }
 

@@ -52,6 +52,8 @@ namespace pcf {
 // Every object is drawn in both passes and ray cast for the ground truth: 10,000 took 10 s and
 // 1 GB, while a teaching scene has a handful.
 constexpr std::size_t MAX_SCENE_OBJECTS = 256;
+// The largest magnitude of any number in a scene file (positions, sizes, radii, camera planes).
+constexpr double MAX_SCENE_NUMBER = 1.0e6;
 
 // Reads and parses a scene file. A missing file: InputError `path: cannot open file`.
 Scene parseSceneFile(const std::string& path);
