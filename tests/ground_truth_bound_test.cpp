@@ -58,8 +58,8 @@ void addRoots(double a, double b, double c, double lo, double hi, std::vector<do
 }
 
 // |P + Q x|^2 - k2 (s + t x)^2 = 0 for x in (lo, hi).
-void addNormRoots(glm::dvec3 p, glm::dvec3 q, double k2, double s, double t, double lo,
-                  double hi, std::vector<double>& out) {
+void addNormRoots(glm::dvec3 p, glm::dvec3 q, double k2, double s, double t, double lo, double hi,
+                  std::vector<double>& out) {
     addRoots(glm::dot(q, q) - k2 * t * t, 2.0 * (glm::dot(p, q) - k2 * s * t),
              glm::dot(p, p) - k2 * s * s, lo, hi, out);
 }
@@ -221,8 +221,8 @@ void expectWithinBound(const Scene& scene, glm::ivec2 size, glm::ivec2 pixel) {
     Exact e = exact.at(pixel);
     GroundTruthPixel t = groundTruthAt(scene, size, pixel);
     EXPECT_LE(std::abs(t.visibility - e.visibility), t.bound + REF_ERROR)
-        << size.x << "x" << size.y << " pixel (" << pixel.x << ", " << pixel.y
-        << "): truth " << t.visibility << " bound " << t.bound << " exact " << e.visibility;
+        << size.x << "x" << size.y << " pixel (" << pixel.x << ", " << pixel.y << "): truth "
+        << t.visibility << " bound " << t.bound << " exact " << e.visibility;
 }
 
 // Finding 15 of issue 24: at the sphere's terminator, pixels read truth 1 with bound 0 where the
@@ -315,4 +315,3 @@ TEST(GroundTruthBound, NoPixelOutsideItsBoundNearEdges) {
 
 }  // namespace
 }  // namespace pcf
-

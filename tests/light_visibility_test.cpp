@@ -72,8 +72,8 @@ TEST(LightVisibility, ASunCutByAStraightEdgeIsACircularSegment) {
     for (double t : {-0.95, -0.6, -0.2, 0.0, 0.1, 0.45, 0.8, 0.99}) {
         for (double side : {-1.0, 1.0}) {
             double x = side * t * (side > 0 ? (H + 1.0) : H) * r;
-            LightFraction f = lightVisibleFraction(scene, {x, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0,
-                                                   1.0 / 2048.0);
+            LightFraction f =
+                lightVisibleFraction(scene, {x, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
             double exact = edgeExact(x, r);
             EXPECT_LE(std::abs(f.visible - exact), f.bound + 1e-9) << "x " << x;
             EXPECT_LE(f.bound, 1.0 / 2048.0) << "x " << x;
@@ -82,20 +82,20 @@ TEST(LightVisibility, ASunCutByAStraightEdgeIsACircularSegment) {
     }
     EXPECT_EQ(checked, 16);
     // Half the sun at the edge's foot, by symmetry of the chord through the centre.
-    EXPECT_NEAR(lightVisibleFraction(scene, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1e-4).visible,
-                0.5, 1e-4);
+    EXPECT_NEAR(lightVisibleFraction(scene, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1e-4).visible, 0.5,
+                1e-4);
 }
 
 Scene sphereScene(double diameter, double radius, double height) {
-    std::string toml = "[camera]\neye = [3.0, 3.0, 3.0]\ntarget = [0.0, 0.0, 0.0]\n"
-                       "[light]\ntype = \"directional\"\ndirection = [0.0, -1.0, 0.0]\n"
-                       "angular_diameter = " +
-                       std::to_string(diameter) +
-                       "\n[[object]]\ntype = \"plane\"\ncentre = [0.0, 0.0, 0.0]\n"
-                       "normal = [0.0, 1.0, 0.0]\nsize = [20.0, 20.0]\n"
-                       "[[object]]\ntype = \"sphere\"\ncentre = [0.0, " +
-                       std::to_string(height) + ", 0.0]\nradius = " + std::to_string(radius) +
-                       "\n";
+    std::string toml =
+        "[camera]\neye = [3.0, 3.0, 3.0]\ntarget = [0.0, 0.0, 0.0]\n"
+        "[light]\ntype = \"directional\"\ndirection = [0.0, -1.0, 0.0]\n"
+        "angular_diameter = " +
+        std::to_string(diameter) +
+        "\n[[object]]\ntype = \"plane\"\ncentre = [0.0, 0.0, 0.0]\n"
+        "normal = [0.0, 1.0, 0.0]\nsize = [20.0, 20.0]\n"
+        "[[object]]\ntype = \"sphere\"\ncentre = [0.0, " +
+        std::to_string(height) + ", 0.0]\nradius = " + std::to_string(radius) + "\n";
     return parseSceneString(toml, "sphere-test");
 }
 
@@ -123,12 +123,10 @@ TEST(LightVisibility, UmbraSeesNothingAndFarPointsSeeAll) {
     EXPECT_EQ(far.visible, 1.0);
     // The sphere's own top faces the whole sun, its side sees half of it (the horizon through
     // the disk's centre), its underside none.
-    EXPECT_EQ(lightVisibleFraction(scene, {0.0, 2.0, 0.0}, {0.0, 1.0, 0.0}, 1, 1e-4).visible,
-              1.0);
-    EXPECT_NEAR(lightVisibleFraction(scene, {0.5, 1.5, 0.0}, {1.0, 0.0, 0.0}, 1, 1e-4).visible,
-                0.5, 1e-4);
-    EXPECT_EQ(lightVisibleFraction(scene, {0.0, 1.0, 0.0}, {0.0, -1.0, 0.0}, 1, 1e-4).visible,
-              0.0);
+    EXPECT_EQ(lightVisibleFraction(scene, {0.0, 2.0, 0.0}, {0.0, 1.0, 0.0}, 1, 1e-4).visible, 1.0);
+    EXPECT_NEAR(lightVisibleFraction(scene, {0.5, 1.5, 0.0}, {1.0, 0.0, 0.0}, 1, 1e-4).visible, 0.5,
+                1e-4);
+    EXPECT_EQ(lightVisibleFraction(scene, {0.0, 1.0, 0.0}, {0.0, -1.0, 0.0}, 1, 1e-4).visible, 0.0);
 }
 
 // The whole area truth on a frame: the camera looks straight down, so a ground pixel covers
@@ -151,8 +149,9 @@ TEST(AreaGroundTruth, PixelsAcrossAStraightEdgesPenumbraMatchTheClosedForm) {
             double xa = worldX(x), xb = worldX(x + 1);
             if (xa <= 1e-3) continue;  // the slab and its side face, not the ground
             double scale = (H + 1.0) * r;
-            double exact = 1.0 - scale * (segmentIntegral(xb / scale) -
-                                          segmentIntegral(xa / scale)) / (xb - xa);
+            double exact = 1.0 - scale *
+                                     (segmentIntegral(xb / scale) - segmentIntegral(xa / scale)) /
+                                     (xb - xa);
             size_t k = truth.index(x, y);
             EXPECT_LE(std::abs(truth.visibility[k] - exact), truth.bound[k] + 1e-6)
                 << "pixel " << x << ", " << y << " exact " << exact;

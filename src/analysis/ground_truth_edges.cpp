@@ -40,8 +40,8 @@ Corners cornersOf(const Primitive& shape) {
         for (int k = 0; k < 4; ++k) {
             double su = (k & 1) ? 1.0 : -1.0;
             double sv = (k & 2) ? 1.0 : -1.0;
-            c.p[k] = glm::dvec3(q->centreWs) + glm::dvec3(q->halfUWs) * su +
-                     glm::dvec3(q->halfVWs) * sv;
+            c.p[k] =
+                glm::dvec3(q->centreWs) + glm::dvec3(q->halfUWs) * su + glm::dvec3(q->halfVWs) * sv;
         }
         c.count = 4;
     } else {
@@ -134,8 +134,9 @@ double cross2(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
 }  // namespace
 
 std::vector<glm::dvec2> convexHull2d(std::vector<glm::dvec2> pts) {
-    std::sort(pts.begin(), pts.end(),
-              [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    std::sort(pts.begin(), pts.end(), [](const glm::dvec2& a, const glm::dvec2& b) {
+        return a.x < b.x || (a.x == b.x && a.y < b.y);
+    });
     if (pts.size() < 3) return pts;
     std::vector<glm::dvec2> hull(2 * pts.size());
     size_t k = 0;
@@ -391,8 +392,8 @@ bool EdgeFinder::litMayChange(const RayCone& cone, int object) const {
     const Light& light = mScene.light;
     const Sphere* sphere = std::get_if<Sphere>(&obj.shape);
     if (light.type == LightType::Directional) {
-        if (sphere && std::abs(glm::dot(f.centre - glm::dvec3(sphere->centreWs), mTravel)) <=
-                          f.radius) {
+        if (sphere &&
+            std::abs(glm::dot(f.centre - glm::dvec3(sphere->centreWs), mTravel)) <= f.radius) {
             return true;  // the terminator
         }
         if (!obj.receivesShadow) return false;

@@ -10,8 +10,8 @@
 // with tc = (t0 + t1) / 2, largest at t0 or t1. Every edge of the lit state is the zero set of
 // a function g with a known Lipschitz constant K (|g(p) - g(q)| <= K |p - q|):
 //   terminator of a sphere, directional:  (p - c) . toLight                              K = 1
-//   terminator of a sphere, spot:         (p - c) . (l - c) - r^2 (facing times r on it) K = |l - c|
-//   shadow of a sphere, directional:      distance(p, the line c + s L) - r             K = 1
+//   terminator of a sphere, spot:         (p - c) . (l - c) - r^2 (facing times r on it) K = |l -
+//   c| shadow of a sphere, directional:      distance(p, the line c + s L) - r             K = 1
 //                                         and |p - c| - r (the lit cap upstream)          K = 1
 //   shadow of a box or rectangle, directional: signed distance of p's projection along L to
 //     the convex hull of the projected corners (K = 1) and the distance to its surface (K = 1)
@@ -84,7 +84,7 @@ class EdgeFinder {
         std::vector<glm::dvec2> hull;  // directional light: the projection along L, convex hull
     };
     const Scene& mScene;
-    glm::dvec3 mTravel;  // unit, the way the light travels
+    glm::dvec3 mTravel;           // unit, the way the light travels
     glm::dvec3 mBasisU, mBasisV;  // the plane across L that casters are projected onto
     std::vector<Caster> mCasters;
 

@@ -185,7 +185,15 @@ DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 faci
         auto coarse = [&](double Value::*m) { return 0.5 * h * (ga.*m + gb.*m); };
         double v = fine(&Value::v), bl = fine(&Value::b);
         double dv = v - coarse(&Value::v), db = bl - coarse(&Value::b);
-        return Panel{a, b, ga, gm, gb, v, bl, 2.0 * std::abs(dv), 2.0 * std::abs(db),
+        return Panel{a,
+                     b,
+                     ga,
+                     gm,
+                     gb,
+                     v,
+                     bl,
+                     2.0 * std::abs(dv),
+                     2.0 * std::abs(db),
                      2.0 * std::abs(dv + db)};
     };
     std::vector<Panel> panels;
@@ -213,8 +221,8 @@ DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 faci
         }
         double total = v + bl;
         double f = total > 0.0 ? v / total : 1.0;
-        double bound = total > 0.0 ? (std::min(errV + f * errT, errB + (1.0 - f) * errT)) / total
-                                   : 1.0;
+        double bound =
+            total > 0.0 ? (std::min(errV + f * errT, errB + (1.0 - f) * errT)) / total : 1.0;
         if (bound <= target || chords + 2 > std::max(MAX_CHORDS, 4 * firstPanels + 1)) {
             return {std::clamp(f, 0.0, 1.0), bound};
         }
