@@ -130,6 +130,8 @@ TEST(SceneFile, FormatRoundTrips) {
                          glm::vec3(0.1f, 0.2f, 0.3f), false, false});
     for (LightType type : {LightType::Spot, LightType::Directional}) {
         s.light.type = type;
+        s.light.radius = 0.125f;
+        s.light.angularDiameterDeg = 0.53f;
         Scene back = parseSceneString(formatSceneToml(s), "formatted.toml");
         EXPECT_EQ(back.camera.eyeWs, s.camera.eyeWs);
         EXPECT_EQ(back.camera.targetWs, s.camera.targetWs);
@@ -142,6 +144,11 @@ TEST(SceneFile, FormatRoundTrips) {
         if (type == LightType::Spot) {
             EXPECT_EQ(back.light.positionWs, s.light.positionWs);
             EXPECT_EQ(back.light.coneDeg, s.light.coneDeg);
+            EXPECT_EQ(back.light.radius, 0.125f);  // a spot's size is its radius
+            EXPECT_EQ(back.light.angularDiameterDeg, 0.0f);
+        } else {
+            EXPECT_EQ(back.light.angularDiameterDeg, 0.53f);  // a sun's, its angular diameter
+            EXPECT_EQ(back.light.radius, 0.0f);
         }
         ASSERT_EQ(back.objects.size(), s.objects.size());
         for (size_t i = 0; i < s.objects.size(); ++i) {
@@ -331,6 +338,18 @@ std::vector<BadCase> badCases() {
          "spot light is missing required key 'position'"},
         {"cone on directional", CAMERA + SUN + "cone = 30\n" + BALL, 7,
          "directional light has unknown key 'cone'"},
+        {"sun too wide", CAMERA + SUN + "angular_diameter = 12\n" + BALL, 7,
+         "directional light angular_diameter must be in [0, 10] degrees, got 12"},
+        {"negative sun", CAMERA + SUN + "angular_diameter = -0.5\n" + BALL, 7,
+         "directional light angular_diameter must be in [0, 10] degrees, got -0.5"},
+        {"radius on directional", CAMERA + SUN + "radius = 0.1\n" + BALL, 7,
+         "directional light has unknown key 'radius'"},
+        {"negative spot radius",
+         CAMERA +
+             "[light]\ntype = \"spot\"\ndirection = [0, -1, 0]\n"
+             "position = [0, 5, 0]\ncone = 30\nradius = -1\n" +
+             BALL,
+         9, "spot light radius must be in [0, 100] scene units, got -1"},
         {"misspelt key",
          withObject("[[object]]\ntype = \"sphere\"\ncentre = [0, 1, 0]\n"
                     "raduis = 1\n"),

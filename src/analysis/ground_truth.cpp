@@ -12,6 +12,8 @@
 #include <thread>
 #include <utility>
 
+#include "analysis/ground_truth_edges.h"
+#include "analysis/light_visibility.h"
 #include "scene/camera.h"
 #include "scene/light.h"
 #include "scene/raycast.h"
@@ -40,10 +42,12 @@ float unitFloat(uint32_t h) { return static_cast<float>(h >> 8) * (1.0f / 167772
 struct CameraRays {
     glm::dvec3 f, s, u;
     glm::vec3 eye;
+    glm::dvec3 eyeD;
     double tanHalfFov, aspect;
     glm::dvec2 size;
     CameraRays(const Camera& camera, glm::ivec2 frameSize)
         : eye(camera.eyeWs),
+          eyeD(camera.eyeWs),
           tanHalfFov(std::tan(0.5 * glm::radians(static_cast<double>(camera.fovYDeg)))),
           aspect(static_cast<double>(frameSize.x) / static_cast<double>(frameSize.y)),
           size(frameSize) {
@@ -52,11 +56,11 @@ struct CameraRays {
         u = glm::cross(s, f);
     }
     // window: GL window coordinates in pixels (y up), e.g. (x + 0.5, y + 0.5) for a centre.
-    Ray at(glm::dvec2 window) const {
+    glm::dvec3 dirAt(glm::dvec2 window) const {
         glm::dvec2 ndc = window / size * 2.0 - 1.0;
-        glm::dvec3 dir = f + s * (ndc.x * aspect * tanHalfFov) + u * (ndc.y * tanHalfFov);
-        return Ray{eye, glm::vec3(glm::normalize(dir))};
+        return glm::normalize(f + s * (ndc.x * aspect * tanHalfFov) + u * (ndc.y * tanHalfFov));
     }
+    Ray at(glm::dvec2 window) const { return Ray{eye, glm::vec3(dirAt(window))}; }
 };
 
 enum SampleState : uint8_t { UNLIT = 0, LIT = 1, OFF = 2 };  // OFF: not on the centre's object
@@ -115,52 +119,182 @@ FirstPass firstPass(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel
 
 // The refinement (see ground_truth.h): walk points per scanline, bisection steps per crossing.
 constexpr int WALK_POINTS = 16;
-constexpr int BISECTION_STEPS = 8;  // 1/16 px halved 8 times: 1/4096 px
-constexpr double CROSSING_ERROR_PX = 1.0 / 4096.0;
+constexpr double MIN_PIECE_PX = 1.0 / 4096.0;  // 1/16 px halved 8 times
 constexpr int FIRST_PANELS = 4;
+// Light-fraction evaluations per piece of an area light's scanline, at most.
+constexpr int MAX_AREA_EVALUATIONS = 33;
 
 struct Scanline {
-    double lit = 0.0;  // lit length on the centre's object, pixels
-    double on = 0.0;   // length on the centre's object, pixels
-    int crossings = 0;
+    double lit = 0.0;     // lit length on the centre's object, pixels
+    double on = 0.0;      // length on the centre's object, pixels
+    double litErr = 0.0;  // what lit may be off by: the crossings' pieces of 1/4096 px
+    double onErr = 0.0;   // likewise for on: those where the object seen changes
 };
 
-Scanline scanline(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel, int object,
-                  double v) {
-    double y = static_cast<double>(pixel.y) + v;
-    auto state = [&](double x) {
-        return sampleState(scene, rays.at({static_cast<double>(pixel.x) + x, y}), object);
-    };
+struct ScanlineWalk {
+    const Scene& scene;
+    const CameraRays& rays;
+    const EdgeFinder& edges;
+    glm::ivec2 pixel;
+    int object;
+    double y;  // window coordinate of the scanline
+    // true: only which object is seen matters (the area light's walk): states OFF and LIT.
+    bool hitOnly = false;
     Scanline line;
-    auto add = [&](SampleState st, double length) {
+    // With hitOnly: the pieces on the object, [x0, x1] with both ends seen on it (merged), and
+    // the half pieces of the crossings as (the end on it, length).
+    std::vector<glm::dvec2> segments;
+    std::vector<glm::dvec2> halves;
+
+    SampleState state(double x) const {
+        SampleState st = sampleState(scene, rays.at({static_cast<double>(pixel.x) + x, y}), object);
+        return hitOnly && st == UNLIT ? LIT : st;
+    }
+    void addPiece(double x0, double x1, SampleState st) {
+        if (!(x1 > x0)) return;
+        add(st, x1 - x0);
+        if (!hitOnly || st == OFF) return;
+        if (!segments.empty() && segments.back().y == x0) {
+            segments.back().y = x1;
+        } else {
+            segments.push_back({x0, x1});
+        }
+    }
+    void add(SampleState st, double length) {
         if (st == OFF) return;
         line.on += length;
         if (st == LIT) line.lit += length;
-    };
-    SampleState prev = state(0.0);
-    for (int i = 1; i <= WALK_POINTS; ++i) {
-        double x0 = static_cast<double>(i - 1) / WALK_POINTS;
-        double x1 = static_cast<double>(i) / WALK_POINTS;
-        SampleState next = state(x1);
-        if (next == prev) {
-            add(prev, x1 - x0);
-        } else {
-            // The crossing lies in (lo, hi): lo has prev's state, hi does not.
-            double lo = x0;
-            double hi = x1;
-            for (int step = 0; step < BISECTION_STEPS; ++step) {
-                double mid = 0.5 * (lo + hi);
-                (state(mid) == prev ? lo : hi) = mid;
-            }
-            double cross = 0.5 * (lo + hi);
-            add(prev, cross - x0);
-            add(next, x1 - cross);
-            ++line.crossings;
-        }
-        prev = next;
     }
-    return line;
+    // The piece [lo, hi] holding a crossing, placed to within its length: half to each end's
+    // state, its whole length to the error.
+    void crossing(double lo, SampleState s0, double hi, SampleState s1) {
+        double length = hi - lo;
+        add(s0, 0.5 * length);
+        add(s1, 0.5 * length);
+        if (hitOnly && s0 != OFF) halves.push_back({lo, 0.5 * length});
+        if (hitOnly && s1 != OFF) halves.push_back({hi, 0.5 * length});
+        line.litErr += length;
+        if (s0 == OFF || s1 == OFF) line.onErr += length;
+    }
+    // [x0, x1] whose ends differ: the crossing by bisection to 1/4096 px.
+    void differentEnds(double x0, SampleState s0, double x1, SampleState s1) {
+        double lo = x0;
+        double hi = x1;
+        while (hi - lo > MIN_PIECE_PX * (1.0 + 1e-9)) {
+            double mid = 0.5 * (lo + hi);
+            (state(mid) == s0 ? lo : hi) = mid;
+        }
+        addPiece(x0, lo, s0);
+        crossing(lo, s0, hi, s1);
+        addPiece(hi, x1, s1);
+    }
+    // WALK_POINTS + 1 points across the pixel; between two whose states differ the crossing is
+    // found by bisection against the exact ray cast, to 1/4096 px.
+    void walk() {
+        double x0 = 0.0;
+        SampleState s0 = state(0.0);
+        for (int i = 1; i <= WALK_POINTS; ++i) {
+            double x1 = static_cast<double>(i) / WALK_POINTS;
+            SampleState s1 = state(x1);
+            if (s0 == s1) {
+                addPiece(x0, x1, s0);
+            } else {
+                differentEnds(x0, s0, x1, s1);
+            }
+            x0 = x1;
+            s0 = s1;
+        }
+    }
+};
+
+Scanline scanline(const Scene& scene, const CameraRays& rays, const EdgeFinder& edges,
+                  glm::ivec2 pixel, int object, double v) {
+    ScanlineWalk w{scene, rays, edges, pixel, object, static_cast<double>(pixel.y) + v,
+                   false, {},   {},    {}};
+    w.walk();
+    return w.line;
 }
+
+// The area light's scanline: where the object is seen (the walk with hitOnly), then the light's
+// visible fraction f (light_visibility.h) integrated along each piece on it by an adaptive
+// trapezoid rule in x (panels split where coarse and fine differ most, as over v); lit is that
+// integral, its error the pieces' 2 |fine - coarse| plus f's own bound times the length.
+struct AreaLine {
+    const Scene& scene;
+    const CameraRays& rays;
+    const EdgeFinder& edges;
+    glm::ivec2 pixel;
+    int object;
+    double fTarget;  // the bound each f aims for
+    double xTarget;  // the x-integral's error aimed for, per pixel of length
+
+    LightFraction f(double x, double y) const {
+        Ray ray = rays.at({static_cast<double>(pixel.x) + x, y});
+        // The object alone: within a piece it is what the ray sees (rounding aside).
+        std::optional<Hit> hit = intersect(scene.objects[static_cast<size_t>(object)].shape, ray);
+        if (!hit) return {0.5, 0.5};
+        glm::vec3 facing = hit->frontFace ? hit->normalWs : -hit->normalWs;
+        return lightVisibleFraction(scene, glm::dvec3(hit->posWs), glm::dvec3(facing), object,
+                                    fTarget);
+    }
+
+    // The integral of f over [x0, x1] on scanline y, into lit and litErr.
+    void integrate(double x0, double x1, double y, Scanline& line) const {
+        struct Piece {
+            double a, b, fa, fm, fb, fine, err;
+        };
+        double worstF = 0.0;
+        auto at = [&](double x) {
+            LightFraction here = f(x, y);
+            worstF = std::max(worstF, here.bound);
+            return here.visible;
+        };
+        auto make = [](double a, double b, double fa, double fm, double fb) {
+            double h = b - a;
+            double fine = 0.25 * h * (fa + 2.0 * fm + fb);
+            return Piece{a, b, fa, fm, fb, fine, 2.0 * std::abs(fine - 0.5 * h * (fa + fb))};
+        };
+        double xm = 0.5 * (x0 + x1);
+        double f0 = at(x0), fm = at(xm), f1 = at(x1);
+        std::vector<Piece> pieces{make(x0, xm, f0, at(0.5 * (x0 + xm)), fm),
+                                  make(xm, x1, fm, at(0.5 * (xm + x1)), f1)};
+        for (int evaluations = 5;; evaluations += 2) {
+            double sum = 0.0, err = 0.0;
+            size_t worst = 0;
+            for (size_t k = 0; k < pieces.size(); ++k) {
+                sum += pieces[k].fine;
+                err += pieces[k].err;
+                if (pieces[k].err > pieces[worst].err) worst = k;
+            }
+            if (err <= xTarget * (x1 - x0) || evaluations + 2 > MAX_AREA_EVALUATIONS) {
+                line.lit += sum;
+                line.litErr += err + worstF * (x1 - x0);
+                return;
+            }
+            Piece p = pieces[worst];
+            double m = 0.5 * (p.a + p.b);
+            pieces[worst] = make(p.a, m, p.fa, at(0.5 * (p.a + m)), p.fm);
+            pieces.push_back(make(m, p.b, p.fm, at(0.5 * (m + p.b)), p.fb));
+        }
+    }
+
+    Scanline operator()(double v) const {
+        double y = static_cast<double>(pixel.y) + v;
+        ScanlineWalk w{scene, rays, edges, pixel, object, y, true, {}, {}, {}};
+        w.walk();
+        Scanline line;
+        line.on = w.line.on;
+        line.onErr = w.line.onErr;
+        line.litErr = w.line.litErr;
+        for (const glm::dvec2& h : w.halves) {
+            LightFraction half = f(h.x, y);
+            line.lit += half.visible * h.y;
+            line.litErr += half.bound * h.y;
+        }
+        for (const glm::dvec2& seg : w.segments) integrate(seg.x, seg.y, y, line);
+        return line;
+    }
+};
 
 struct Refined {
     float visibility;
@@ -172,8 +306,9 @@ struct Panel {
     double a, b;
     Scanline fa, fm, fb;
     // The panel's share of the integrals (coarse: trapezoid on a, b; fine: on a, m, b), and
-    // the error bound of the fine one: 2 |fine - coarse| for lit plus the same for on.
-    double lit, on, crossings, err;
+    // the error bound of the fine one: 2 |fine - coarse| for lit plus the same for on; placed:
+    // the share of the scanlines' own errors (their crossings' pieces).
+    double lit, on, placed, err;
 };
 
 Panel makePanel(double a, double b, const Scanline& fa, const Scanline& fm, const Scanline& fb) {
@@ -183,15 +318,17 @@ Panel makePanel(double a, double b, const Scanline& fa, const Scanline& fm, cons
     auto fine = [&](double Scanline::*f) { return 0.25 * h * (fa.*f + 2.0 * fm.*f + fb.*f); };
     p.lit = fine(&Scanline::lit);
     p.on = fine(&Scanline::on);
-    p.crossings = 0.25 * h * (fa.crossings + 2.0 * fm.crossings + fb.crossings);
+    p.placed =
+        0.25 * h * (fa.litErr + fa.onErr + 2.0 * (fm.litErr + fm.onErr) + fb.litErr + fb.onErr);
     p.err = 2.0 * std::fabs(p.lit - coarse(&Scanline::lit)) +
             2.0 * std::fabs(p.on - coarse(&Scanline::on));
     return p;
 }
 
-Refined refinePixel(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel,
-                    const FirstPass& first, float target) {
-    auto line = [&](double v) { return scanline(scene, rays, pixel, first.object, v); };
+// The pixel's integral over v of line(v) (a Scanline), the adaptive rule of ground_truth.h.
+// `fallback`: the answer when no scanline meets the object.
+template <typename LineFn>
+Refined integrateRows(const LineFn& line, float fallback, float target) {
     // FIRST_PANELS panels over v in [0,1]: 2 * FIRST_PANELS + 1 scanlines.
     std::array<Scanline, 2 * FIRST_PANELS + 1> start;
     for (int r = 0; r <= 2 * FIRST_PANELS; ++r) {
@@ -207,22 +344,22 @@ Refined refinePixel(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel
     }
     int scanlines = 2 * FIRST_PANELS + 1;
     for (;;) {
-        double lit = 0.0, on = 0.0, crossings = 0.0, err = 0.0;
+        double lit = 0.0, on = 0.0, placed = 0.0, err = 0.0;
         size_t worst = 0;
         for (size_t k = 0; k < panels.size(); ++k) {
             lit += panels[k].lit;
             on += panels[k].on;
-            crossings += panels[k].crossings;
+            placed += panels[k].placed;
             err += panels[k].err;
             if (panels[k].err > panels[worst].err) worst = k;
         }
         if (on <= 0.0) {
             // No scanline met the centre's object (a sliver of it around the centre): the
             // centre's own answer, with no claim.
-            return {first.visibility, 1.0f};
+            return {fallback, 1.0f};
         }
-        // See ground_truth.h: |V - V*| <= (err_lit + err_on) / on, plus the crossings' share.
-        double bound = (err + 2.0 * crossings * CROSSING_ERROR_PX) / on;
+        // See ground_truth.h: |V - V*| <= (err_lit + err_on) / on, plus the placed pieces' share.
+        double bound = (err + placed) / on;
         if (bound <= target || scanlines + 2 > MAX_TRUTH_SCANLINES) {
             return {static_cast<float>(lit / on), static_cast<float>(bound)};
         }
@@ -235,6 +372,20 @@ Refined refinePixel(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel
         panels[worst] = makePanel(p.a, m, p.fa, q1, p.fm);
         panels.push_back(makePanel(m, p.b, p.fm, q3, p.fb));
     }
+}
+
+Refined refinePixel(const Scene& scene, const CameraRays& rays, const EdgeFinder& edges,
+                    glm::ivec2 pixel, const FirstPass& first, float target) {
+    auto line = [&](double v) { return scanline(scene, rays, edges, pixel, first.object, v); };
+    return integrateRows(line, first.visibility, target);
+}
+
+// The area light's pixel: a quarter of the target to each f and to each x-integral, the rest
+// to the integral over v.
+Refined refineAreaPixel(const Scene& scene, const CameraRays& rays, const EdgeFinder& edges,
+                        glm::ivec2 pixel, const FirstPass& first, float target) {
+    AreaLine line{scene, rays, edges, pixel, first.object, 0.25 * target, 0.25 * target};
+    return integrateRows(line, first.visibility, target);
 }
 
 // Runs rowWork(y) for y in [0, rows) on `threads` workers, rows handed out one at a time from a
@@ -291,7 +442,8 @@ int resolveThreadCount(int threads) {
 
 namespace {
 
-void checkTruthArguments(glm::ivec2 frameSize, const GroundTruthOptions& options) {
+void checkTruthArguments(const Scene& scene, glm::ivec2 frameSize,
+                         const GroundTruthOptions& options) {
     if (frameSize.x < 1 || frameSize.y < 1) {
         throw std::invalid_argument("computeGroundTruth: frame size must be positive");
     }
@@ -302,31 +454,79 @@ void checkTruthArguments(glm::ivec2 frameSize, const GroundTruthOptions& options
     if (std::isnan(options.targetBound)) {
         throw std::invalid_argument("computeGroundTruth: the target bound is NaN");
     }
+    if (options.area) {
+        if (scene.light.type != LightType::Directional || !hasSize(scene.light)) {
+            throw std::invalid_argument(
+                "computeGroundTruth: the area-light truth needs a directional light with an "
+                "angular diameter");
+        }
+        if (!(options.targetBound > 0.0f)) {
+            throw std::invalid_argument("computeGroundTruth: the area-light truth needs a bound");
+        }
+    }
 }
 
-// Pass 2 refines a pixel whose first pass was mixed, or one of whose 8 neighbours hit the scene
-// with another answer: the edge may cross it between the first pass's samples.
-bool needsRefinement(const std::vector<FirstPass>& first, glm::ivec2 frameSize, int x, int y) {
-    const FirstPass& p = first[static_cast<size_t>(y) * frameSize.x + x];
+// Pass 2 refines a pixel whose first pass was mixed, one of whose 8 neighbours hit the scene
+// with another answer, or one the geometry cannot clear of edges (ground_truth_edges.h): an edge
+// may cross it between the first pass's samples.
+RayCone pixelCone(const CameraRays& rays, int x, int y) {
+    glm::dvec2 corners[4] = {{x, y}, {x + 1, y}, {x, y + 1}, {x + 1, y + 1}};
+    return coneThrough(
+        rays.eyeD, [&](glm::dvec2 w) { return rays.dirAt(w); }, corners, 4);
+}
+
+// firstAt(x, y): the first pass of pixel (x, y), GL order, or nullptr outside the frame.
+template <typename FirstAt>
+bool needsRefinement(const FirstAt& firstAt, int x, int y, const CameraRays& rays,
+                     const EdgeFinder& edges) {
+    const FirstPass& p = *firstAt(x, y);
     if (p.cls == NO_HIT) return false;
     if (p.cls == MIXED) return true;
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
-            int nx = x + dx;
-            int ny = y + dy;
-            if (nx < 0 || ny < 0 || nx >= frameSize.x || ny >= frameSize.y) continue;
-            PixelClass c = first[static_cast<size_t>(ny) * frameSize.x + nx].cls;
-            if (c != NO_HIT && c != p.cls) return true;
+            const FirstPass* n = firstAt(x + dx, y + dy);
+            if (n && n->cls != NO_HIT && n->cls != p.cls) return true;
         }
     }
-    return false;
+    return edges.litMayChange(pixelCone(rays, x, y), p.object);
+}
+
+struct PassTwo {
+    float visibility;
+    float bound;
+    bool refined;
+};
+
+// Pass 2 on pixel (x, y) (GL order): the first pass's answer, refined where it may not hold.
+// The area light's pixels skip the first pass's classes: its penumbra is not an edge the hard
+// samples see.
+template <typename FirstAt>
+PassTwo passTwo(const Scene& scene, const CameraRays& rays, const EdgeFinder& edges,
+                const FirstAt& firstAt, int x, int y, const GroundTruthOptions& options) {
+    const FirstPass& p = *firstAt(x, y);
+    float target = options.targetBound;
+    if (!(target > 0.0f)) return {p.visibility, p.cls == MIXED ? 1.0f : 0.0f, false};
+    if (options.area) {
+        if (p.cls == NO_HIT) return {1.0f, 0.0f, false};
+        double tanHalf =
+            std::tan(0.5 * glm::radians(static_cast<double>(scene.light.angularDiameterDeg)));
+        int state = edges.areaState(pixelCone(rays, x, y), p.object, tanHalf);
+        if (state >= 0) return {static_cast<float>(state), 0.0f, false};
+        Refined r = refineAreaPixel(scene, rays, edges, {x, y}, p, target);
+        return {r.visibility, r.bound, true};
+    }
+    if (needsRefinement(firstAt, x, y, rays, edges)) {
+        Refined r = refinePixel(scene, rays, edges, {x, y}, p, target);
+        return {r.visibility, r.bound, true};
+    }
+    return {p.visibility, 0.0f, false};
 }
 
 }  // namespace
 
 GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
                                const GroundTruthOptions& options) {
-    checkTruthArguments(frameSize, options);
+    checkTruthArguments(scene, frameSize, options);
     GroundTruth truth;
     truth.size = frameSize;
     truth.spp = options.spp;
@@ -337,6 +537,7 @@ GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
     truth.bound.assign(truth.pixelCount(), 0.0f);
     float aspect = static_cast<float>(frameSize.x) / static_cast<float>(frameSize.y);
     CameraRays rays(scene.camera, frameSize);
+    EdgeFinder edges(scene);
     int threads = resolveThreadCount(options.threads);
     const int rows = frameSize.y;
     // The first pass counts as half the work, the refinement as the other half.
@@ -359,8 +560,11 @@ GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
         },
         tickFirst);
 
+    auto firstAt = [&](int x, int y) -> const FirstPass* {
+        if (x < 0 || y < 0 || x >= frameSize.x || y >= frameSize.y) return nullptr;
+        return &first[static_cast<size_t>(y) * frameSize.x + x];
+    };
     // Pass 2: refine where the pixel or a neighbour is not plainly the same uniform answer.
-    const bool refine = options.targetBound > 0.0f;
     std::atomic<int> refined{0};
     parallelRows(
         rows, threads,
@@ -370,17 +574,12 @@ GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
             for (int x = 0; x < frameSize.x; ++x) {
                 const FirstPass& p = first[static_cast<size_t>(y) * frameSize.x + x];
                 size_t k = truth.index(x, rowTopDown);
-                truth.visibility[k] = p.visibility;
                 truth.receiver[k] = p.receiver ? 1 : 0;
                 truth.facesLight[k] = p.facesLight ? 1 : 0;
-                if (!refine) {
-                    truth.bound[k] = p.cls == MIXED ? 1.0f : 0.0f;
-                } else if (needsRefinement(first, frameSize, x, y)) {
-                    Refined r = refinePixel(scene, rays, {x, y}, p, options.targetBound);
-                    truth.visibility[k] = r.visibility;
-                    truth.bound[k] = r.bound;
-                    ++refinedHere;
-                }
+                PassTwo r = passTwo(scene, rays, edges, firstAt, x, y, options);
+                truth.visibility[k] = r.visibility;
+                truth.bound[k] = r.bound;
+                refinedHere += r.refined ? 1 : 0;
             }
             refined.fetch_add(refinedHere);
         },
@@ -390,6 +589,37 @@ GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
         truth.bound.empty() ? 0.0f : *std::max_element(truth.bound.begin(), truth.bound.end());
     if (options.progress) options.progress(rows, rows);
     return truth;
+}
+
+GroundTruthPixel groundTruthAt(const Scene& scene, glm::ivec2 frameSize, glm::ivec2 pixelTopDown,
+                               const GroundTruthOptions& options) {
+    checkTruthArguments(scene, frameSize, options);
+    if (pixelTopDown.x < 0 || pixelTopDown.y < 0 || pixelTopDown.x >= frameSize.x ||
+        pixelTopDown.y >= frameSize.y) {
+        throw std::invalid_argument("groundTruthAt: the pixel is outside the frame");
+    }
+    float aspect = static_cast<float>(frameSize.x) / static_cast<float>(frameSize.y);
+    CameraRays rays(scene.camera, frameSize);
+    EdgeFinder edges(scene);
+    glm::ivec2 pixel(pixelTopDown.x, frameSize.y - 1 - pixelTopDown.y);  // GL order
+    // The first pass of the pixel and its 8 neighbours, as computeGroundTruth has them.
+    std::array<FirstPass, 9> block;
+    std::array<bool, 9> inside{};
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            glm::ivec2 q = pixel + glm::ivec2(dx, dy);
+            int k = (dy + 1) * 3 + dx + 1;
+            inside[k] = q.x >= 0 && q.y >= 0 && q.x < frameSize.x && q.y < frameSize.y;
+            if (inside[k]) block[k] = firstPass(scene, rays, q, frameSize, aspect, options.spp);
+        }
+    }
+    auto firstAt = [&](int x, int y) -> const FirstPass* {
+        int k = (y - pixel.y + 1) * 3 + x - pixel.x + 1;
+        return inside[k] ? &block[k] : nullptr;
+    };
+    const FirstPass& p = block[4];
+    PassTwo r = passTwo(scene, rays, edges, firstAt, pixel.x, pixel.y, options);
+    return {r.visibility, r.bound, p.receiver, p.facesLight, r.refined};
 }
 
 }  // namespace pcf

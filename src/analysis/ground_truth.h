@@ -13,13 +13,18 @@
 // Computed in two passes (threaded by rows):
 // 1. First pass: K x K stratified jittered samples per pixel (K = spp, from a fixed hash: the same
 //    truth on every run); each is lit, unlit, or off the centre's object.
-// 2. Refinement of every pixel where the answer is not plainly uniform: its own lit samples and
-//    unlit samples both occur, or any of its 8 neighbours is mixed or has a different uniform
-//    answer (so an edge that slips between the first pass's samples, along the pixel's border or
-//    across a corner, is still caught by the neighbour it continues into). On such a pixel:
+// 2. Refinement of every pixel where the answer may not be uniform: its own lit samples and
+//    unlit samples both occur, any of its 8 neighbours is mixed or has a different uniform
+//    answer, or the analytic geometry cannot rule an edge out of the pixel's cone of rays (a
+//    shadow edge, a terminator, a spot's rim within reach of the ball that holds every point
+//    the pixel sees on its object: ground_truth_edges.h). The last test is conservative, so a
+//    sliver too thin for any sample (a terminator grazing a silhouette) is still refined. On
+//    such a pixel:
 //    - a scanline at height v in [0,1] is walked at x = i / 16 (i = 0..16); between two walk
 //      points whose states differ the crossing is found by bisection against the exact ray cast
-//      to 1/4096 of a pixel; lit(v) and on(v) are the lit and on-object lengths of the scanline.
+//      to 1/4096 of a pixel; lit(v) and on(v) are the lit and on-object lengths of the scanline,
+//      the crossing's piece split half and half, its length the scanline's error (of lit, and
+//      of on where the object seen changes).
 //    - the pixel's integral over v in [0,1] is an adaptive trapezoid rule (the step-halving error
 //      estimate of Press et al., "Numerical Recipes", 3rd ed. 2007, 4.2 qtrap, applied per panel
 //      as in McKeeman, "Adaptive numerical integration by Simpson's rule", CACM 1962): panels [a,
@@ -27,12 +32,10 @@
 //      and a fine one (on a, m, b), for lit and for on. Start with 4 panels (9 scanlines), then
 //      split the panel whose estimates differ most (two more scanlines, at its quarters) until
 //        bound = (sum over panels of 2 |fine - coarse| for lit and for on
-//                 + 2 c / 4096) / on_total
+//                 + e) / on_total
 //      is <= the target (default 1/512), or the pixel has used 513 scanlines. The value kept is
 //        V = sum of fine lit / sum of fine on
-//      c is the integral of the crossings per scanline: each crossing is placed to within
-//      1/4096 px (bisection half-interval plus float rounding of the ray), which moves lit and
-//      on by that much.
+//      e is the integral over v of the scanlines' errors (their crossings' 1/4096 px pieces).
 //    Why: V - V* = (L - L*) / O + V* (O* - O) / O with V* <= 1, so |V - V*| is at most the lit
 //    and on errors over O. Per panel, lit(v) and on(v) are continuous and piecewise smooth (a
 //    kink where an edge crosses a pixel corner, a steep ramp where an edge runs along the
@@ -44,8 +47,9 @@
 //    the panels that hold an edge's trouble are split, so a silhouette's jump costs a few
 //    scanlines per halving of the bound, not a doubling of all of them.
 //    Assumed, and not checked: no lit or unlit sliver narrower than 1/16 px across a whole
-//    scanline's walk, and no shadow feature that fits between the first pass's samples of a
-//    pixel AND of all its neighbours (a speck smaller than a pixel, far from any other edge).
+//    scanline's walk of a refined pixel. (Which pixels are refined is not assumed: the
+//    geometric test above finds a sliver in a pixel however thin; the walk inside it still
+//    samples at 1/16 px.)
 //    Uniform pixels keep the first pass's 0 or 1 with bound 0.
 //
 // Rows are TOP-DOWN, like every image pcfscope writes (element (H - 1 - y) * W + x is GL row y).
@@ -102,14 +106,34 @@ struct GroundTruthOptions {
     // Refine until the bound is at most this (or a pixel used MAX_TRUTH_SCANLINES); <= 0 turns
     // the refinement off (the first pass's mean; bound 1 where its samples disagree: no claim).
     float targetBound = DEFAULT_TRUTH_TARGET_BOUND;
+    // The area-light truth: each point's visibility is the fraction of the light's disk it sees
+    // (light_visibility.h), integrated over the pixel with the same bound convention. Needs a
+    // directional light with an angular diameter (hasSize). Pixels the geometry proves wholly
+    // lit or wholly in the umbra (ground_truth_edges.h, areaState) keep 1 or 0 with bound 0.
+    bool area = false;
     // Called on the calling thread, about ten times a second and once at the end, with the
     // number of rows done out of the frame's height.
     std::function<void(int rowsDone, int rows)> progress;
 };
 
-// Throws std::invalid_argument for a frame side < 1, spp out of range or a NaN target. The scene's
+// Throws std::invalid_argument for a frame side < 1, spp out of range or a NaN target, and for
+// `area` without a directional light with a size or without a positive target. The scene's
 // camera must have its clip planes set (presets and scene files do).
 GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
+                               const GroundTruthOptions& options = {});
+
+// One pixel of computeGroundTruth's frame, computed alone (the same numbers, bit for bit): for a
+// pixel's truth without the frame's cost, e.g. a lesson's or a sweep's one pixel.
+struct GroundTruthPixel {
+    float visibility;
+    float bound;
+    bool receiver;
+    bool facesLight;
+    bool refined;
+};
+// pixelTopDown: column x, row y counted from the top (as GroundTruth::index). Throws
+// std::invalid_argument as computeGroundTruth, and for a pixel outside the frame.
+GroundTruthPixel groundTruthAt(const Scene& scene, glm::ivec2 frameSize, glm::ivec2 pixelTopDown,
                                const GroundTruthOptions& options = {});
 
 // Where sample (i, j) of K x K falls inside pixel `pixel`: ((i + jx) / K, (j + jy) / K), the

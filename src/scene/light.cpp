@@ -112,6 +112,11 @@ ShadowCoord shadowCoord(const glm::mat4& shadowClipFromWorld, glm::vec3 posWs) {
     return {glm::vec2(ndc) * 0.5f + 0.5f, ndc.z * 0.5f + 0.5f};
 }
 
+bool hasSize(const Light& light) {
+    return light.type == LightType::Directional ? light.angularDiameterDeg > 0.0f
+                                                : light.radius > 0.0f;
+}
+
 LightSample towardLight(const Light& light, glm::vec3 posWs) {
     glm::vec3 dir = glm::normalize(light.directionWs);
     if (light.type == LightType::Directional) {

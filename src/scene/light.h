@@ -17,7 +17,25 @@ struct Light {
     // Spot only: where the light is, and the half-angle of its cone in degrees, in (0, 89].
     glm::vec3 positionWs{0.0f, 5.0f, 0.0f};
     float coneDeg = 30.0f;
+    // The light's size, 0 for an ideal point or direction (the default). It shapes only the
+    // area-light truth (analysis/ground_truth.h) and penumbra estimates: the shadow map is
+    // always rendered from the light's centre (the direction, or positionWs).
+    // Directional: the angular diameter of the light's disk in degrees, in [0,
+    // MAX_ANGULAR_DIAMETER_DEG] (the sun's is about 0.53).
+    float angularDiameterDeg = 0.0f;
+    // Spot: the radius of a disk centred on positionWs and facing along directionWs, scene
+    // units, >= 0.
+    float radius = 0.0f;
 };
+
+// A sun disk wider than this would no longer be a small light (the truth's disk is flat in
+// angle, tan(r) ~ r, see ground_truth.h); 10 degrees is 19 suns.
+constexpr float MAX_ANGULAR_DIAMETER_DEG = 10.0f;
+// A spot disk this wide (scene units) is larger than any teaching scene (the presets span 12).
+constexpr float MAX_SPOT_RADIUS = 100.0f;
+
+// Whether the light has an area (a size above 0): the area-light truth applies.
+bool hasSize(const Light& light);
 
 // The shadow pass's view: right-handed, looking down -z along the light direction, y up as far
 // as the direction allows (world Y, or world Z when the light is within ~8 degrees of vertical).

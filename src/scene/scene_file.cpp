@@ -260,12 +260,21 @@ Light readLight(const std::string& source, const toml::table& table) {
     Light light;
     if (type == "directional") {
         TableReader r(source, table, "directional light");
-        r.checkKeys({"type", "direction"});
+        r.checkKeys({"type", "direction", "angular_diameter"});
         light.type = LightType::Directional;
         light.directionWs = glm::vec3(r.direction("direction"));
+        if (const toml::node* sizeNode = r.find("angular_diameter")) {
+            double size = r.number(*sizeNode, "angular_diameter");
+            if (!(size >= 0.0 && size <= MAX_ANGULAR_DIAMETER_DEG)) {
+                r.fail(sizeNode, "directional light angular_diameter must be in [0, " +
+                                     formatNumber(MAX_ANGULAR_DIAMETER_DEG) + "] degrees, got " +
+                                     formatNumber(size));
+            }
+            light.angularDiameterDeg = static_cast<float>(size);
+        }
     } else if (type == "spot") {
         TableReader r(source, table, "spot light");
-        r.checkKeys({"type", "direction", "position", "cone"});
+        r.checkKeys({"type", "direction", "position", "cone", "radius"});
         light.type = LightType::Spot;
         light.directionWs = glm::vec3(r.direction("direction"));
         light.positionWs = glm::vec3(r.vector<3>("position"));
@@ -276,6 +285,15 @@ Light readLight(const std::string& source, const toml::table& table) {
                    "spot light cone must be in (0, 89] degrees, got " + formatNumber(cone));
         }
         light.coneDeg = static_cast<float>(cone);
+        if (const toml::node* radiusNode = r.find("radius")) {
+            double radius = r.number(*radiusNode, "radius");
+            if (!(radius >= 0.0 && radius <= MAX_SPOT_RADIUS)) {
+                r.fail(radiusNode, "spot light radius must be in [0, " +
+                                       formatNumber(MAX_SPOT_RADIUS) + "] scene units, got " +
+                                       formatNumber(radius));
+            }
+            light.radius = static_cast<float>(radius);
+        }
     } else {
         typeReader.fail(&typeNode,
                         "unknown light type '" + type + "' (expected directional or spot)");
@@ -458,6 +476,9 @@ std::string formatSceneToml(const Scene& scene) {
     if (l.type == LightType::Spot) {
         s << "position = " << tomlVec(l.positionWs) << "\n";
         s << "cone = " << tomlFloat(l.coneDeg) << "\n";
+        if (l.radius > 0.0f) s << "radius = " << tomlFloat(l.radius) << "\n";
+    } else if (l.angularDiameterDeg > 0.0f) {
+        s << "angular_diameter = " << tomlFloat(l.angularDiameterDeg) << "\n";
     }
     for (const SceneObject& object : scene.objects) {
         s << "\n[[object]]\n";

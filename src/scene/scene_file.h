@@ -16,6 +16,12 @@
 //                                  unit
 //   position  = [0.0, 6.0, 0.0]    spot only, required
 //   cone      = 30.0               spot only, required: half-angle in degrees, in (0, 89]
+//   angular_diameter = 0.53        directional only, optional (default 0, an ideal direction):
+//                                  the light disk's angular diameter in degrees, in [0, 10]
+//   radius    = 0.1                spot only, optional (default 0, a point): the radius of the
+//                                  light's disk, facing along direction, in [0, 100]
+//                                  The size is for the area-light truth only; the shadow map is
+//                                  rendered from the light's centre.
 //
 //   [[object]]                     one table per object, at least one
 //   type     = "plane"             required: "plane", "box" or "sphere"

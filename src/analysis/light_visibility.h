@@ -1,0 +1,44 @@
+// light_visibility.h: how much of a light with a size (light.h: a sun's disk of directions) a
+// surface point sees, the fraction that a soft shadow's penumbra is made of.
+//
+// The light is a disk: for a directional light the directions toward -L tilted by up to half
+// the angular diameter, taken as the points of a flat disk of radius tan(diameter / 2) one unit
+// from the point, across L, with uniform measure over that disk (the light's gnomonic image: a
+// straight occluder edge cuts it along a straight chord, so a half-covered sun is exactly a
+// circular segment). The visible fraction at p is
+//   f(p) = (1 / (pi R^2)) * integral over the disk of [the light point is above p's horizon and
+//          the segment from p toward it meets no caster]
+// Per chord of the disk (height b, a in [-w, w], w = sqrt(R^2 - b^2)) the blocked part is found
+// exactly: each caster cut by the plane through p and the chord is a convex slice (a box: a
+// polygon, a rectangle: a segment, a sphere: a disk), and the rays from p through it meet the
+// chord in one interval; the horizon n . (light point - p) <= 0 is a half-line. The chords'
+// blocked lengths are merged and the integral over b = R sin(theta) (which takes the square
+// root out of the chord ends) is an adaptive trapezoid rule with the step-halving error
+// estimate of ground_truth.h, so f comes with a bound. It is done twice, with chords one way
+// and across: a sliver of the disk parallel to the chords and thinner than their spacing
+// escapes one but not the other; the mean is kept, with half their difference added to the
+// bound. Assumed, and not checked: no blocker's image (or visible part) smaller than the
+// chords' spacing both ways.
+// The spot light's cone is the centre's (a point outside it sees nothing of the light).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace pcf {
+
+struct LightFraction {
+    double visible;  // f(p) in [0,1]
+    double bound;    // |visible - exact| <= bound (the integration's estimate, see above)
+};
+
+// The visible fraction of the scene's light (with its size) at surface point posWs of object
+// `object` (-1: none; it is then shadowed by every caster), whose normal toward the side the
+// camera sees is facingWs (unit). Every caster but `object` itself counts, as in litByLight; a
+// non-receiver sees the whole light above its horizon. `target`: the bound aimed for.
+// A directional light only: throws std::invalid_argument for a spot light.
+LightFraction lightVisibleFraction(const Scene& scene, glm::dvec3 posWs, glm::dvec3 facingWs,
+                                   int object, double target);
+
+}  // namespace pcf

@@ -1,0 +1,193 @@
+// The area-light truth against closed forms. The sun is a disk (light_visibility.h: radius
+// R = tan(diameter / 2) in the plane one unit toward the light, uniform over it), so:
+// - a straight occluder edge seen from a point cuts the disk along a straight chord: the part
+//   beyond a chord at distance d from the centre is the circular segment
+//     s(u) = (acos(u) - u sqrt(1 - u^2)) / pi,  u = d / R  (s = 0 for u >= 1, 1 for u <= -1)
+//   and over a band of ground points the integral of s is closed too:
+//     integral of s(u) du = (u acos(u) - sqrt(1 - u^2) + (1 - u^2)^(3/2) / 3) / pi
+// - a sphere straight toward the light's centre from the point is a disk of radius tan(beta)
+//   (beta = asin(r / distance)) centred on the sun's: an annular eclipse, visible
+//   1 - tan^2(beta) / R^2, or nothing when tan(beta) >= R.
+#include "analysis/light_visibility.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <thread>
+
+#include "analysis/ground_truth.h"
+#include "scene/raycast.h"
+#include "scene/scene_file.h"
+
+namespace pcf {
+namespace {
+
+constexpr double PI = std::numbers::pi;
+
+double segment(double u) {
+    if (u >= 1.0) return 0.0;
+    if (u <= -1.0) return 1.0;
+    return (std::acos(u) - u * std::sqrt(1.0 - u * u)) / PI;
+}
+
+double segmentIntegral(double u) {
+    u = std::clamp(u, -1.0, 1.0);
+    double w = std::sqrt(1.0 - u * u);
+    return (u * std::acos(u) - w + w * w * w / 3.0) / PI;
+}
+
+// The light straight down with angular diameter `diameter`; a ground plane; a slab covering
+// x < 0 between heights H and H + 1 (its edge along z at x = 0); a camera straight down at
+// (cx, 20, 0) with a 2 degree field of view.
+constexpr double H = 2.0;
+Scene edgeScene(double diameter, double cx) {
+    std::string toml = "[camera]\neye = [" + std::to_string(cx) + ", 20.0, 0.0]\ntarget = [" +
+                       std::to_string(cx) +
+                       ", 0.0, 0.0]\nup = [0.0, 0.0, -1.0]\nfov = 2.0\n"
+                       "[light]\ntype = \"directional\"\ndirection = [0.0, -1.0, 0.0]\n"
+                       "angular_diameter = " +
+                       std::to_string(diameter) +
+                       "\n[[object]]\ntype = \"plane\"\nname = \"ground\"\ncentre = [0.0, 0.0, "
+                       "0.0]\nnormal = [0.0, 1.0, 0.0]\nsize = [200.0, 200.0]\n"
+                       "[[object]]\ntype = \"box\"\nname = \"slab\"\ncentre = [-50.0, " +
+                       std::to_string(H + 0.5) + ", 0.0]\nhalf = [50.0, 0.5, 50.0]\n";
+    return parseSceneString(toml, "edge-test");
+}
+
+double radiusOf(double diameterDeg) { return std::tan(0.5 * diameterDeg * PI / 180.0); }
+
+// Seen from ground point (x, 0, 0), x > 0, the slab's top edge (height H + 1) cuts the disk at
+// d = x / (H + 1); from x < 0 (under the slab) the bottom edge at d = -x / H leaves a segment.
+double edgeExact(double x, double r) {
+    return x >= 0.0 ? 1.0 - segment(x / ((H + 1.0) * r)) : segment(-x / (H * r));
+}
+
+TEST(LightVisibility, ASunCutByAStraightEdgeIsACircularSegment) {
+    const double diameter = 4.0;
+    Scene scene = edgeScene(diameter, 0.0);
+    double r = radiusOf(diameter);
+    int checked = 0;
+    for (double t : {-0.95, -0.6, -0.2, 0.0, 0.1, 0.45, 0.8, 0.99}) {
+        for (double side : {-1.0, 1.0}) {
+            double x = side * t * (side > 0 ? (H + 1.0) : H) * r;
+            LightFraction f =
+                lightVisibleFraction(scene, {x, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
+            double exact = edgeExact(x, r);
+            EXPECT_LE(std::abs(f.visible - exact), f.bound + 1e-9) << "x " << x;
+            EXPECT_LE(f.bound, 1.0 / 2048.0) << "x " << x;
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 16);
+    // Half the sun at the edge's foot, by symmetry of the chord through the centre.
+    EXPECT_NEAR(lightVisibleFraction(scene, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1e-4).visible, 0.5,
+                1e-4);
+}
+
+Scene sphereScene(double diameter, double radius, double height) {
+    std::string toml =
+        "[camera]\neye = [3.0, 3.0, 3.0]\ntarget = [0.0, 0.0, 0.0]\n"
+        "[light]\ntype = \"directional\"\ndirection = [0.0, -1.0, 0.0]\n"
+        "angular_diameter = " +
+        std::to_string(diameter) +
+        "\n[[object]]\ntype = \"plane\"\ncentre = [0.0, 0.0, 0.0]\n"
+        "normal = [0.0, 1.0, 0.0]\nsize = [20.0, 20.0]\n"
+        "[[object]]\ntype = \"sphere\"\ncentre = [0.0, " +
+        std::to_string(height) + ", 0.0]\nradius = " + std::to_string(radius) + "\n";
+    return parseSceneString(toml, "sphere-test");
+}
+
+TEST(LightVisibility, ASphereBeforeTheSunIsAnAnnularEclipse) {
+    const double diameter = 4.0;
+    const double height = 2.0;
+    double r = radiusOf(diameter);
+    for (double sphereRadius : {0.01, 0.03, 0.05}) {
+        Scene scene = sphereScene(diameter, sphereRadius, height);
+        double tb = std::tan(std::asin(sphereRadius / height));
+        double exact = tb >= r ? 0.0 : 1.0 - tb * tb / (r * r);
+        LightFraction f =
+            lightVisibleFraction(scene, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
+        EXPECT_LE(std::abs(f.visible - exact), f.bound + 1e-9) << sphereRadius;
+    }
+}
+
+TEST(LightVisibility, UmbraSeesNothingAndFarPointsSeeAll) {
+    Scene scene = sphereScene(0.53, 0.5, 1.5);
+    LightFraction deep =
+        lightVisibleFraction(scene, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
+    EXPECT_EQ(deep.visible, 0.0);
+    LightFraction far =
+        lightVisibleFraction(scene, {2.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
+    EXPECT_EQ(far.visible, 1.0);
+    // The sphere's own top faces the whole sun, its side sees half of it (the horizon through
+    // the disk's centre), its underside none.
+    EXPECT_EQ(lightVisibleFraction(scene, {0.0, 2.0, 0.0}, {0.0, 1.0, 0.0}, 1, 1e-4).visible, 1.0);
+    EXPECT_NEAR(lightVisibleFraction(scene, {0.5, 1.5, 0.0}, {1.0, 0.0, 0.0}, 1, 1e-4).visible, 0.5,
+                1e-4);
+    EXPECT_EQ(lightVisibleFraction(scene, {0.0, 1.0, 0.0}, {0.0, -1.0, 0.0}, 1, 1e-4).visible, 0.0);
+}
+
+// The whole area truth on a frame: the camera looks straight down, so a ground pixel covers
+// world x in [xa, xb] exactly (x linear in the window x), and its exact value is the mean of the
+// closed form over that band (the integral of s above).
+TEST(AreaGroundTruth, PixelsAcrossAStraightEdgesPenumbraMatchTheClosedForm) {
+    const double diameter = 4.0;
+    const double cx = 0.12;
+    Scene scene = edgeScene(diameter, cx);
+    double r = radiusOf(diameter);
+    glm::ivec2 size(32, 18);
+    GroundTruthOptions options;
+    options.area = true;
+    GroundTruth truth = computeGroundTruth(scene, size, options);
+    double halfWidth = 20.0 * std::tan(1.0 * PI / 180.0) * size.x / size.y;
+    auto worldX = [&](double windowX) { return cx + halfWidth * (2.0 * windowX / size.x - 1.0); };
+    int penumbra = 0, checked = 0;
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            double xa = worldX(x), xb = worldX(x + 1);
+            if (xa <= 1e-3) continue;  // the slab and its side face, not the ground
+            double scale = (H + 1.0) * r;
+            double exact = 1.0 - scale *
+                                     (segmentIntegral(xb / scale) - segmentIntegral(xa / scale)) /
+                                     (xb - xa);
+            size_t k = truth.index(x, y);
+            EXPECT_LE(std::abs(truth.visibility[k] - exact), truth.bound[k] + 1e-6)
+                << "pixel " << x << ", " << y << " exact " << exact;
+            EXPECT_LE(truth.bound[k], options.targetBound);
+            penumbra += exact < 0.999 ? 1 : 0;
+            ++checked;
+        }
+    }
+    EXPECT_GE(penumbra, 2 * size.y);  // the penumbra is pixels wide
+    EXPECT_GE(checked, 18 * size.y);
+}
+
+TEST(AreaGroundTruth, IsTheSameForAnyThreadCount) {
+    Scene scene = sphereScene(2.0, 0.4, 1.0);
+    GroundTruthOptions options;
+    options.area = true;
+    glm::ivec2 size(32, 18);
+    options.threads = 1;
+    GroundTruth one = computeGroundTruth(scene, size, options);
+    options.threads = 2;
+    GroundTruth two = computeGroundTruth(scene, size, options);
+    options.threads = 0;
+    GroundTruth all = computeGroundTruth(scene, size, options);
+    EXPECT_GT(one.refinedPixels, 10);
+    EXPECT_EQ(one.visibility, two.visibility);
+    EXPECT_EQ(one.bound, two.bound);
+    EXPECT_EQ(one.visibility, all.visibility);
+    EXPECT_EQ(one.bound, all.bound);
+}
+
+TEST(AreaGroundTruth, RefusesALightWithoutASize) {
+    Scene scene = sphereScene(0.0, 0.4, 1.0);
+    GroundTruthOptions options;
+    options.area = true;
+    EXPECT_THROW(computeGroundTruth(scene, {16, 9}, options), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace pcf
