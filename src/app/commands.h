@@ -20,6 +20,7 @@ Command addBenchCommand(CLI::App& app);
 Command addStabilityCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
+Command addAnimateCommand(CLI::App& app);
 Command addVerifyCommand(CLI::App& app);
 
 // `pcfscope` with no arguments: lesson 1 in the window when there is a display, otherwise its

@@ -10,6 +10,7 @@
 #include "app/output_files.h"
 #include "base/input_error.h"
 #include "render/image_io.h"
+#include "video/video_writer.h"
 
 namespace {
 
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
         pcf::addMethodsCommand(app), pcf::addTraceCommand(app),  pcf::addRenderCommand(app),
         pcf::addTruthCommand(app),   pcf::addBenchCommand(app),  pcf::addStabilityCommand(app),
         pcf::addViewCommand(app),    pcf::addExportCommand(app), pcf::addVerifyCommand(app),
+        pcf::addAnimateCommand(app),
     };
 
     try {
@@ -70,6 +72,8 @@ int main(int argc, char** argv) {
     } catch (const pcf::InputError& e) {
         return fail(e.what());
     } catch (const pcf::ImageError& e) {
+        return fail(e.what());
+    } catch (const pcf::VideoError& e) {
         return fail(e.what());
     } catch (const std::filesystem::filesystem_error& e) {
         // The disk said no (full, read-only, removed under us): the outputs were taken back.

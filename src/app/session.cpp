@@ -339,6 +339,7 @@ void Session::setFrameSize(glm::ivec2 frameSize) {
     if (frameSize == mLayout.frameSize && mFrame.framebuffer) return;
     glm::ivec2 oldScene(mLayout.scene.size());
     mLayout = inspectorLayout(frameSize, mPresentation);
+    if (mSceneOnly) mLayout.scene = Rect{0.0f, 0.0f, float(frameSize.x), float(frameSize.y)};
     mFrame = createOffscreenTarget(frameSize.x, frameSize.y, {GL_RGBA8});
     glm::ivec2 newScene(mLayout.scene.size());
     if (oldScene.x > 0 && oldScene != newScene) {
@@ -501,7 +502,8 @@ void Session::renderScene() {
                       mRendered->shadowCull != r.shadowCull ||
                       mRendered->polygonOffset != r.polygonOffset || shift != mRenderedShift;
     if (mapChanged) {
-        mRenderer->setShadowClipFromWorld(lessonShadowFit(mLesson.scene, mSettings, r.mapSize));
+        mRenderer->setShadowClipFromWorld(
+            mShadowFit ? *mShadowFit : lessonShadowFit(mLesson.scene, mSettings, r.mapSize));
         mRenderedShift = shift;
     }
     mHeatDirty = true;
@@ -533,6 +535,9 @@ void Session::traceAtPixel() {
     bias.dzduv = glm::vec2(receiver[0], receiver[1]);
     float z = receiver[3] == 1.0f ? receiver[2] : ref + mSettings.depthBias();
     mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(mPixel, size), bias);
+    mLookup = glm::vec3(uv, z);
+    mLookupRef = ref;
+    mLookupBias = bias;
 }
 
 std::string Session::stepText() const {
@@ -571,6 +576,7 @@ void Session::composeInto(GLuint fbo) {
     if (!mRenderer) throw std::logic_error("Session::compose before loadLesson");
     if (mSceneDirty) renderScene();
     traceAtPixel();
+    if (mSceneOnly) return composeSceneOnly(fbo);
 
     mTarget = fbo;
     const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
@@ -612,6 +618,7 @@ void Session::composeInto(GLuint fbo) {
     mCanvas.begin(frame);
     drawPlan(mCanvas, plan.top);
     if (mHeatmap && chart.empty()) drawHeatLegend();
+    if (mFlicker && chart.empty()) drawFlicker();
     mCanvas.flush();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (!mHeatmap || !chart.empty()) mHeatValues.clear();
