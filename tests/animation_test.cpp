@@ -21,7 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string LESSON = std::string(PCFSCOPE_SOURCE_DIR) + "/lessons/13-shimmer-and-snapping.toml";
+const std::string LESSON =
+    std::string(PCFSCOPE_SOURCE_DIR) + "/lessons/13-shimmer-and-snapping.toml";
 
 // The stability row of `metric` for one method, or -1.
 double rowValue(const StabilityResult& r, int method, const std::string& metric) {
@@ -76,6 +77,20 @@ TEST(Animation, FlickerTraceIsTheStabilityCurveOfThePinnedPoint) {
         ASSERT_GE(nearest, 0.0) << metric;
         EXPECT_NEAR(curveFlicker(animation.curve()), nearest, 1e-4) << metric;
         EXPECT_NEAR(curveFlicker(animation.compareCurve()), gather, 1e-4) << metric;
+        // And the curves themselves, frame by frame.
+        std::string curveMetric = snap ? "snapped_pinned_visibility" : "light_pinned_visibility";
+        int compared = 0;
+        for (const StabilityRow& row : stability.rows) {
+            if (row.metric != curveMetric) continue;
+            ++compared;
+            const std::vector<float>& curve =
+                row.method == PCF_NEAREST ? animation.curve() : animation.compareCurve();
+            size_t t = static_cast<size_t>(row.x);
+            ASSERT_LT(t, curve.size());
+            EXPECT_NEAR(curve[t], row.y, 1e-4)
+                << curveMetric << " " << row.method << " frame " << t;
+        }
+        EXPECT_EQ(compared, 2 * ao.frames) << "both methods' curves, every frame";
         if (!snap) {
             // The point does flicker under the creeping grid: the comparison is not of zeros.
             EXPECT_GT(nearest, 0.01);
@@ -89,17 +104,16 @@ TEST(AnimateCommand, FramesAreTheSameBytesRunToRunAndVideosReadBack) {
     std::string common = "animate 13 --step 2 --sweep light --frames 3 --size 320x180 ";
     for (const char* run : {"a", "b"}) {
         std::string d = (dir / run).string();
-        testutil::CommandResult r = testutil::runPcfscope(
-            common + "--png " + d + "/png -o " + d + "/clip.mp4 -o " + d + "/clip.gif");
+        testutil::CommandResult r = testutil::runPcfscope(common + "--png " + d + "/png -o " + d +
+                                                          "/clip.mp4 -o " + d + "/clip.gif");
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_NE(r.err.find("3/3"), std::string::npos) << "a progress bar: " << r.err;
     }
     for (int k = 1; k <= 3; ++k) {
-        std::string name = "png/13-shimmer-and-snapping-step02-light-000" + std::to_string(k) +
-                           ".png";
+        std::string name =
+            "png/13-shimmer-and-snapping-step02-light-000" + std::to_string(k) + ".png";
         ASSERT_TRUE(fs::exists(dir / "a" / name)) << name;
-        EXPECT_EQ(testutil::readAll(dir / "a" / name), testutil::readAll(dir / "b" / name))
-            << name;
+        EXPECT_EQ(testutil::readAll(dir / "a" / name), testutil::readAll(dir / "b" / name)) << name;
     }
     EXPECT_NE(testutil::readAll(dir / "a/png/13-shimmer-and-snapping-step02-light-0001.png"),
               testutil::readAll(dir / "a/png/13-shimmer-and-snapping-step02-light-0003.png"))
@@ -122,8 +136,8 @@ TEST(AnimateCommand, FramesAreTheSameBytesRunToRunAndVideosReadBack) {
 TEST(AnimateCommand, BadInputIsOneLineAndLeavesNothing) {
     fs::path dir = testutil::makeTempDir("animate");
     std::string out = (dir / "new").string();
-    for (std::string args : {"--sweep wobble", "--size 321x180", "--compare tent --compare-kernel 4",
-                             "--frames 1"}) {
+    for (std::string args :
+         {"--sweep wobble", "--size 321x180", "--compare tent --compare-kernel 4", "--frames 1"}) {
         testutil::CommandResult r =
             testutil::runPcfscope("animate 13 " + args + " -o " + out + "/x.mp4");
         EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;

@@ -287,8 +287,13 @@ class Sweeper {
                     std::string prefix = snap ? "snapped_" : "light_";
                     double step = 1.0 / SHIMMER_STEPS;
                     if (mOptions.pinnedPixel) {
+                        std::vector<float> curve = pinnedCurve(frames);
                         add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "pinned_flicker",
-                            curveFlicker(pinnedCurve(frames)));
+                            curveFlicker(curve));
+                        for (size_t t = 0; t < curve.size(); ++t) {
+                            add(Sweep::Shimmer, m, bias, "frame", static_cast<double>(t),
+                                prefix + "pinned_visibility", curve[t]);
+                        }
                     }
                     add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "flicker_share",
                         st.flickerShare);

@@ -99,7 +99,9 @@ struct StabilityOptions {
     std::vector<int> aliasingMapSizes{256, 512, 1024, 2048};
     // A pinned pixel (frame coordinates, top-left origin): the shimmer sweep also writes the
     // flicker of its visibility curve (failure_measures.h: curveFlicker) as light_pinned_flicker
-    // and snapped_pinned_flicker, the number `animate`'s flicker trace shows for that point.
+    // and snapped_pinned_flicker, the number `animate`'s flicker trace shows for that point, and
+    // the curve itself, one row per frame (x = frame): light_pinned_visibility and
+    // snapped_pinned_visibility.
     std::optional<glm::ivec2> pinnedPixel;
 };
 

@@ -173,7 +173,8 @@ FlickerTrace Animation::flickerTrace() const {
     const LessonSettings& s = mSession.settings();
     t.curves.push_back(curve(mCurve, methodLabel(s.method, s.kernel), FLICKER_MAIN_COLOUR));
     if (mOptions.compareMethod >= 0) {
-        t.curves.push_back(curve(mCompare, methodLabel(mOptions.compareMethod, mOptions.compareKernel),
+        t.curves.push_back(curve(mCompare,
+                                 methodLabel(mOptions.compareMethod, mOptions.compareKernel),
                                  FLICKER_COMPARE_COLOUR));
     }
     return t;

@@ -32,9 +32,9 @@ constexpr std::string_view ANIMATION_SWEEP_NAMES = "light, camera, sun, bias, ma
 struct AnimationOptions {
     AnimationSweep sweep = AnimationSweep::Light;
     int frames = 120;
-    bool snap = false;        // light: snap the creeping grid to whole texels
-    bool flicker = true;      // draw the flicker trace
-    int compareMethod = -1;   // the trace's second curve; -1: none
+    bool snap = false;       // light: snap the creeping grid to whole texels
+    bool flicker = true;     // draw the flicker trace
+    int compareMethod = -1;  // the trace's second curve; -1: none
     int compareKernel = 3;
 };
 

@@ -118,8 +118,8 @@ int runAnimate(AnimateOptions o) {
     glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE, MIN_SESSION_SIZE);
     std::optional<AnimationSweep> sweep = animationSweepFromName(o.sweep);
     if (!sweep) {
-        throw UsageError("--sweep: unknown sweep '" + o.sweep + "' (known: " +
-                         std::string(ANIMATION_SWEEP_NAMES) + ")");
+        throw UsageError("--sweep: unknown sweep '" + o.sweep +
+                         "' (known: " + std::string(ANIMATION_SWEEP_NAMES) + ")");
     }
     requireIntRange("--frames", o.frames, 2, 3600);
     requireIntRange("--fps", o.fps, 1, 60);
@@ -128,7 +128,8 @@ int runAnimate(AnimateOptions o) {
     requireIntRange("--step", o.step, 1, static_cast<int>(lesson.steps.size()));
     int compare = compareMethodOf(o, lesson.steps[static_cast<size_t>(o.step - 1)].settings);
     std::string stem = frameStem(lesson.name, o.step) + "-" + o.sweep;
-    if (o.videos.empty() && o.pngDir.empty()) o.videos.push_back("pcfscope-frames/" + stem + ".mp4");
+    if (o.videos.empty() && o.pngDir.empty())
+        o.videos.push_back("pcfscope-frames/" + stem + ".mp4");
 
     OutputFiles outputs(o.force);
     outputs.addInput("LESSON", path);
@@ -155,9 +156,9 @@ int runAnimate(AnimateOptions o) {
         std::vector<uint8_t> rgba = session.readFrame();
         for (VideoOut& v : videos) v.writer->addFrame(rgba);
         if (!pngs.empty()) writePngRgba8(pngs[static_cast<size_t>(k)], size.x, size.y, rgba);
-        progressBar(k + 1, o.frames, std::chrono::duration<double>(
-                                         std::chrono::steady_clock::now() - start)
-                                         .count());
+        progressBar(
+            k + 1, o.frames,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     std::vector<std::pair<fs::path, fs::path>> moves;
     double encode = 0.0;
@@ -169,10 +170,9 @@ int runAnimate(AnimateOptions o) {
     outputs.commitMoves(moves);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr,
-                 "animate: %d frames of %dx%d in %.2f s (%.1f frames/s; encoding %.2f s, %.0f %%)\n",
-                 o.frames, size.x, size.y, seconds, o.frames / seconds, encode,
-                 100.0 * encode / seconds);
+    std::fprintf(
+        stderr, "animate: %d frames of %dx%d in %.2f s (%.1f frames/s; encoding %.2f s, %.0f %%)\n",
+        o.frames, size.x, size.y, seconds, o.frames / seconds, encode, 100.0 * encode / seconds);
     for (const VideoOut& v : videos) std::printf("%s\n", v.final.string().c_str());
     if (!o.pngDir.empty()) std::printf("%s\n", o.pngDir.c_str());
     return 0;
@@ -197,12 +197,14 @@ Command addAnimateCommand(CLI::App& app) {
     sub->add_flag("--presentation", o->presentation, "presentation mode's type and lines");
     sub->add_flag("--scene-only", o->sceneOnly, "the scene alone, without the inspector");
     sub->add_flag("--no-trace", o->noTrace, "no flicker trace");
-    sub->add_option("--compare", o->compare,
-                    "the flicker trace's second method (default auto: nearest, or pcf-gather 3 when the step's "
-                    "method is nearest; none: no second curve)");
+    sub->add_option(
+        "--compare", o->compare,
+        "the flicker trace's second method (default auto: nearest, or pcf-gather 3 when the step's "
+        "method is nearest; none: no second curve)");
     sub->add_option("--compare-kernel", o->compareKernel, "its kernel size (default 3)");
-    sub->add_option("-o,--out", o->videos,
-                    "video files, .mp4 and/or .gif (default pcfscope-frames/LESSON-stepNN-SWEEP.mp4)");
+    sub->add_option(
+        "-o,--out", o->videos,
+        "video files, .mp4 and/or .gif (default pcfscope-frames/LESSON-stepNN-SWEEP.mp4)");
     sub->add_option("--png", o->pngDir, "also write the frames as numbered PNGs into this folder");
     sub->add_flag("-f,--force", o->force, "overwrite existing files");
     return {sub, [o] { return runAnimate(*o); }};

@@ -54,8 +54,8 @@ void drawFlickerTrace(Canvas& canvas, const Rect& box, const FlickerTrace& trace
         for (size_t i = trace.curves.size(); i-- > 0;) {
             const std::vector<float>& v = trace.curves[i].values;
             for (size_t k = 1; k < v.size(); ++k) {
-                glm::vec2 a = flickerTracePoint(plot, trace.frameCount, static_cast<int>(k - 1),
-                                                v[k - 1]);
+                glm::vec2 a =
+                    flickerTracePoint(plot, trace.frameCount, static_cast<int>(k - 1), v[k - 1]);
                 glm::vec2 b = flickerTracePoint(plot, trace.frameCount, static_cast<int>(k), v[k]);
                 canvas.line(a, b, 2.0f, trace.curves[i].colour);
             }

@@ -19,8 +19,8 @@ struct FlickerCurve {
 };
 
 struct FlickerTrace {
-    std::string title;                // "visibility at the pinned point, light grid creeping"
-    int frameCount = 0;               // the whole sweep: the x axis is this long from the start
+    std::string title;                 // "visibility at the pinned point, light grid creeping"
+    int frameCount = 0;                // the whole sweep: the x axis is this long from the start
     std::vector<FlickerCurve> curves;  // the first is the method on screen
 };
 

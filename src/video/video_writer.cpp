@@ -135,8 +135,8 @@ struct VideoWriter::Impl {
         if (output->oformat->flags & AVFMT_GLOBALHEADER) {
             codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
         }
-        check(avcodec_open2(codec, c, nullptr), std::string("cannot open the ") + name +
-                                                    " encoder");
+        check(avcodec_open2(codec, c, nullptr),
+              std::string("cannot open the ") + name + " encoder");
         stream = avformat_new_stream(output, nullptr);
         if (!stream) throw VideoError(path.string() + ": cannot add a video stream");
         stream->time_base = codec->time_base;
@@ -206,8 +206,8 @@ struct VideoWriter::Impl {
         std::vector<uint32_t> palette = gifPalette();
         std::copy(palette.begin(), palette.end(), reinterpret_cast<uint32_t*>(frame->data[1]));
         // Frame k at round(k * 100 / fps) hundredths: the delays add up to the clip's length.
-        frame->pts = (next * 100 * codec->time_base.num + codec->framerate.num / 2) /
-                     codec->framerate.num;
+        frame->pts =
+            (next * 100 * codec->time_base.num + codec->framerate.num / 2) / codec->framerate.num;
         ++next;
     }
 
