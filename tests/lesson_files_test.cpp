@@ -1,6 +1,6 @@
 // Every lesson in lessons/, however many: it parses, teaches in 3 to 6 steps, all its
-// placeholders fill, the files are numbered in teaching order, and the README lists no lesson
-// that is not there.
+// placeholders fill, the files are numbered in teaching order, and the README lists every lesson
+// and no other.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,33 +42,44 @@ TEST(LessonFiles, NumberedContiguouslyFromOneInTeachingOrder) {
     }
 }
 
-// The README's numbered list of lessons (under "The viewer and the lessons") names lessons that
-// exist: item N is lesson NN-*.toml.
-TEST(LessonFiles, EveryLessonTheReadmeListsExists) {
+// The README's table of lessons (under "## The lessons", rows "| N | title | M | title |") names
+// exactly the lessons that exist: number N is lesson NN-*.toml, and every lesson is listed.
+TEST(LessonFiles, TheReadmeListsEveryLessonAndNoOther) {
     std::ifstream readme(PCFSCOPE_SOURCE_DIR "/README.md");
     ASSERT_TRUE(readme);
     std::vector<std::string> files = lessonFiles();
     bool inSection = false;
-    int listed = 0;
+    std::vector<int> listed;
     for (std::string line; std::getline(readme, line);) {
-        if (line.starts_with("### ")) inSection = line == "### The viewer and the lessons";
-        if (!inSection || line.empty() || !std::isdigit(static_cast<unsigned char>(line[0]))) {
-            continue;
+        if (line.starts_with("#")) inSection = line == "## The lessons";
+        if (!inSection || !line.starts_with("|")) continue;
+        // Cells 0 and 2 of a row hold lesson numbers (the header and the rule hold none).
+        std::vector<std::string> cells;
+        for (size_t at = 1, bar; (bar = line.find('|', at)) != std::string::npos; at = bar + 1) {
+            std::string cell = line.substr(at, bar - at);
+            cell.erase(0, cell.find_first_not_of(' '));
+            cell.erase(cell.find_last_not_of(' ') + 1);
+            cells.push_back(cell);
         }
-        size_t dot = line.find(". ");
-        if (dot == std::string::npos || dot > 3) continue;
-        int number = std::stoi(line.substr(0, dot));
-        char prefix[32];
-        std::snprintf(prefix, sizeof prefix, "%02d-", number);
-        bool found = std::any_of(files.begin(), files.end(), [&](const std::string& f) {
-            return std::filesystem::path(f).stem().string().starts_with(prefix);
-        });
-        EXPECT_TRUE(found) << "README lists lesson " << number << " (" << line << "), no " << prefix
-                           << "*.toml in lessons/";
-        ++listed;
+        for (size_t c = 0; c < cells.size(); c += 2) {
+            const std::string& cell = cells[c];
+            if (cell.empty() || !std::all_of(cell.begin(), cell.end(), ::isdigit)) continue;
+            int number = std::stoi(cell);
+            char prefix[32];
+            std::snprintf(prefix, sizeof prefix, "%02d-", number);
+            bool found = std::any_of(files.begin(), files.end(), [&](const std::string& f) {
+                return std::filesystem::path(f).stem().string().starts_with(prefix);
+            });
+            EXPECT_TRUE(found) << "README lists lesson " << number << ", no " << prefix
+                               << "*.toml in lessons/";
+            listed.push_back(number);
+        }
     }
-    EXPECT_GT(listed, 0)
-        << "no numbered lesson list found under \"### The viewer and the lessons\"";
+    for (const std::string& f : files) {
+        int number = std::stoi(std::filesystem::path(f).stem().string().substr(0, 2));
+        EXPECT_NE(std::find(listed.begin(), listed.end(), number), listed.end())
+            << f << " is not in the README's table of lessons";
+    }
 }
 
 TEST(LessonFiles, EveryLessonParsesWithThreeToSixSteps) {
