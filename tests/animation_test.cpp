@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 
@@ -130,6 +132,21 @@ TEST(AnimateCommand, FramesAreTheSameBytesRunToRunAndVideosReadBack) {
         EXPECT_EQ(e.path().filename().string().rfind(".pcfscope-", 0), std::string::npos)
             << e.path();
     }
+    fs::remove_all(dir);
+}
+
+TEST(AnimateCommand, CtrlCLeavesNoHalfVideoNorScratchFolder) {
+    fs::path dir = testutil::makeTempDir("animate");
+    fs::path out = dir / "out";
+    // Interrupted once the first PNG is written: the videos are then half encoded.
+    std::string script = "cd " + dir.string() + " && (" + PCFSCOPE_EXE +
+                         " animate 13 --frames 400 --size 320x180 -o out/v.mp4 -o out/v.gif "
+                         "--png out/png 2>err.txt >/dev/null & pid=$!; "
+                         "for i in $(seq 600); do ls out/png/*.png >/dev/null 2>&1 && break; "
+                         "sleep 0.05; done; kill -INT $pid; wait $pid; echo $? >rc.txt)";
+    ASSERT_EQ(std::system(script.c_str()), 0);
+    EXPECT_EQ(testutil::readAll(dir / "rc.txt"), "130\n") << testutil::readAll(dir / "err.txt");
+    EXPECT_FALSE(fs::exists(out)) << "the folder it made, with everything in it, is taken back";
     fs::remove_all(dir);
 }
 

@@ -93,6 +93,8 @@ std::vector<VideoOut> planVideos(OutputFiles& outputs, const AnimateOptions& o, 
     }
     for (VideoOut& v : videos) {
         fs::path dir = v.final.parent_path().empty() ? fs::path(".") : v.final.parent_path();
+        // Known to the interrupt cleanup, which removes the scratch folder made in it below.
+        outputs.addDirectory("-o", dir);
         v.staging = std::make_unique<StagingDir>(dir, "animate");
         v.writer = std::make_unique<VideoWriter>(v.staging->path() / v.final.filename(), v.format,
                                                  size.x, size.y, o.fps);

@@ -196,19 +196,41 @@ struct VideoWriter::Impl {
             frame->pts = next++;
             return;
         }
+        if (gifLut.empty()) buildGifTables();
         for (int y = 0; y < height; ++y) {
             uint8_t* row = frame->data[0] + static_cast<ptrdiff_t>(y) * frame->linesize[0];
             const uint8_t* in = rgba.data() + static_cast<size_t>(y) * width * 4;
             for (int x = 0; x < width; ++x, in += 4) {
-                row[x] = gifPaletteIndex(in[0], in[1], in[2], x, y);
+                // gifPaletteIndex through its tables: one per dither position and channel.
+                const uint8_t* lut = &gifLut[static_cast<size_t>((y & 3) * 4 + (x & 3)) * 768];
+                row[x] = static_cast<uint8_t>(lut[in[0]] + lut[256 + in[1]] + lut[512 + in[2]]);
             }
         }
-        std::vector<uint32_t> palette = gifPalette();
-        std::copy(palette.begin(), palette.end(), reinterpret_cast<uint32_t*>(frame->data[1]));
+        std::copy(gifColours.begin(), gifColours.end(),
+                  reinterpret_cast<uint32_t*>(frame->data[1]));
         // Frame k at round(k * 100 / fps) hundredths: the delays add up to the clip's length.
         frame->pts =
             (next * 100 * codec->time_base.num + codec->framerate.num / 2) / codec->framerate.num;
         ++next;
+    }
+
+    // gifPaletteIndex split by channel: for each of the 16 dither positions, each channel's
+    // value -> its share of the index (r * 42, g * 6, b), which add up to the index.
+    std::vector<uint8_t> gifLut;
+    std::vector<uint32_t> gifColours;
+    void buildGifTables() {
+        gifColours = gifPalette();
+        gifLut.resize(16 * 768);
+        for (int pos = 0; pos < 16; ++pos) {
+            int x = pos & 3, y = pos >> 2;
+            for (int v = 0; v < 256; ++v) {
+                uint8_t c = static_cast<uint8_t>(v);
+                uint8_t* lut = &gifLut[static_cast<size_t>(pos) * 768];
+                lut[v] = gifPaletteIndex(c, 0, 0, x, y);
+                lut[256 + v] = gifPaletteIndex(0, c, 0, x, y);
+                lut[512 + v] = gifPaletteIndex(0, 0, c, x, y);
+            }
+        }
     }
 
     void close() {
