@@ -136,8 +136,8 @@ TEST(Docs, EveryPlaceholderIsDocumented) {
     // The backquoted names of the first column, e.g. `tap[K].depth`.
     std::set<std::string> documented;
     std::regex code("`([^`]+)`");
-    for (const auto& row : tableRows(readFile(SOURCE_DIR / "docs/lesson-authoring.md"),
-                                     "placeholders")) {
+    for (const auto& row :
+         tableRows(readFile(SOURCE_DIR / "docs/lesson-authoring.md"), "placeholders")) {
         ASSERT_FALSE(row.empty());
         for (std::sregex_iterator it(row[0].begin(), row[0].end(), code), end; it != end; ++it) {
             documented.insert((*it)[1]);
