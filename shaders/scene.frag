@@ -7,7 +7,10 @@
 // defines too, one program each: llvmpipe runs both sides of every branch under a lane mask,
 // even when the condition is a uniform, so a branch on a uniform costs its whole body on every
 // fragment. As uniforms, the bias modes' branches here and in the kernel's taps made the camera
-// pass cost about a third more than the filter alone (README, "What the camera pass costs").
+// pass cost about a third more than the filter alone (docs/measurement.md, "What the passes
+// cost").
+// The kernel's own choices (weights, precision, fixed point, per-pixel rotation) are defines for
+// the same reason: render/pcf_programs.h, PcfVariant.
 // see: src/render/scene_renderer.cpp (uniforms, targets), src/kernel/pcf.h (CPU side)
 in vec3 vPosWs;
 in vec3 vNormalWs;
@@ -27,8 +30,6 @@ uniform float uShadowTexelWs;         // world size of one map texel at clip.w =
 uniform float uSoftScale;             // soft: the correction scale of "PCF Shadow Acne 2"
 uniform float uRpdbMax;               // receiver-plane: cap on dz/duv, depth per uv unit
 uniform float uRadius;                // poisson radius in texels
-uniform int uRotatePerPixel;          // poisson: rotate the disk per pixel
-uniform int uWeights;                 // pcf-naive, pcf-gather: PCF_WEIGHTS_*
 uniform float uSigma;                 // gaussian weights, texels
 
 layout(location = 0) out vec4 oColour;
@@ -94,19 +95,19 @@ void main() {
 
     float visibility = 1.0f;
     if (uReceives != 0) {
-        vec2 rotation = uRotatePerPixel != 0 ? pcfPixelRotation(ivec2(gl_FragCoord.xy))
-                                             : vec2(1.0f, 0.0f);
+        vec2 rotation = PCF_ROTATE_PER_PIXEL != 0 ? pcfPixelRotation(ivec2(gl_FragCoord.xy))
+                                                  : vec2(1.0f, 0.0f);
         PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(BIAS_MODE, dzduv, uSoftScale, uRpdbMax));
         visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef,
-                                  PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, uWeights,
-                                            uSigma));
+                                  PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation,
+                                            PCF_WEIGHTS, uSigma));
     }
     // Gamma 2.2 of albedo * light, light = ambient + diffuse * visibility (a scalar):
     //   (albedo * light)^(1/2.2) = albedo^(1/2.2) * light^(1/2.2)
     // The albedo's factor is per object, done once on the CPU (uAlbedoEncoded), so a fragment
     // pays for one power, and that one is pcfGammaEncode (shared/pcf_shading.h): a sqrt and a
     // polynomial within 6e-6 of the pow it replaces. On llvmpipe the pow was most of what the
-    // camera pass cost beyond the filter (README, "What the camera pass costs").
+    // camera pass cost beyond the filter (docs/measurement.md, "What the passes cost").
     float light = AMBIENT + (1.0f - AMBIENT) * nDotL * visibility * cone;
     oColour = vec4(uAlbedoEncoded * pcfGammaEncode(light), 1.0f);
 #if PCF_ALL_TARGETS

@@ -184,6 +184,46 @@ TEST_F(BenchCommand, WeightsListSweepsTheWeightedMethods) {
     EXPECT_EQ(rows[0].shimmer.flickerP99, 0.0);
 }
 
+// --reference times each run's textbook pass in the same rounds and writes reference.csv: one
+// row per run, in bench.csv's order, with both passes' medians and their ratio.
+TEST_F(BenchCommand, ReferenceWritesBothPassesPerRun) {
+    std::string out = path("reference");
+    auto r = testutil::runPcfscope(
+        "bench --quick --methods nearest,pcf-gather --map-sizes 128 --repeats 3 "
+        "--shimmer-frames 0 --reference -o " +
+        out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::string csv = testutil::readAll(out + "/reference.csv");
+    std::stringstream lines(csv);
+    std::string header, nearest, gather, extra;
+    std::getline(lines, header);
+    std::getline(lines, nearest);
+    std::getline(lines, gather);
+    EXPECT_FALSE(std::getline(lines, extra)) << csv;
+    EXPECT_EQ(header,
+              "method,kernel,map_size,lookup_ms,lookup_iqr_ms,reference_ms,reference_iqr_ms,"
+              "ratio,lookup_cpu_ms,reference_cpu_ms");
+    for (const std::string& line : {nearest, gather}) {
+        std::vector<std::string> f = splitCsvLine(line);
+        ASSERT_EQ(f.size(), 10u) << line;
+        double lookup = std::stod(f[3]);
+        double reference = std::stod(f[5]);
+        EXPECT_GT(lookup, 0.0) << line;
+        EXPECT_GT(reference, 0.0) << line;
+        EXPECT_NEAR(std::stod(f[7]), lookup / reference, 0.002 + 1e-3 * lookup / reference) << line;
+    }
+    EXPECT_EQ(splitCsvLine(nearest)[0], "nearest");
+    EXPECT_EQ(splitCsvLine(gather)[0], "pcf-gather");
+    EXPECT_EQ(splitCsvLine(gather)[1], "3");
+    // Without the flag, no reference.csv.
+    std::string plain = path("plain");
+    auto p = testutil::runPcfscope(
+        "bench --quick --methods nearest --map-sizes 128 --repeats 1 --shimmer-frames 0 -o " +
+        plain);
+    ASSERT_EQ(p.exitCode, 0) << p.err;
+    EXPECT_FALSE(fs::exists(plain + "/reference.csv"));
+}
+
 TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
     struct Case {
         std::string args;
@@ -211,6 +251,8 @@ TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
         {"--repeats 0", "--repeats"},
         {"--timing wall", "--timing"},
         {"--cull sideways", "--cull"},
+        {"--reference --bias receiver-plane", "--reference times the methods' plain"},
+        {"--reference --depth-format 24", "--depth-format 32f"},
     };
     for (const Case& c : cases) {
         auto r = testutil::runPcfscope("bench --quick " + c.args + " -o " + path("out"));

@@ -187,7 +187,9 @@ TEST_F(GpuParity, FixedPointReadbackIsTheSamplersFloat) {
                         found = k2;
                     }
                 }
-                if (sSoftware) EXPECT_GE(found, 0) << bits << "-bit texel " << i << "," << j;
+                if (sSoftware) {
+                    EXPECT_GE(found, 0) << bits << "-bit texel " << i << "," << j;
+                }
                 if (found >= 0 && d != static_cast<float>(static_cast<double>(found) / scale)) {
                     ++convertedDifferently;
                 }
@@ -202,7 +204,9 @@ TEST_F(GpuParity, FixedPointReadbackIsTheSamplersFloat) {
         }
         // The experiment behind issue 10: for 24 bits the sampler's float is not the correctly
         // rounded k / (2^24 - 1) in a good share of texels (16 bits: the two agree).
-        if (sSoftware && bits == 24) EXPECT_GT(convertedDifferently, 64) << "of 2048";
+        if (sSoftware && bits == 24) {
+            EXPECT_GT(convertedDifferently, 64) << "of 2048";
+        }
     }
 }
 
@@ -505,7 +509,9 @@ TEST_F(GpuParity, ReceiverPlaneCapRenderedMatchesTheCpuKernel) {
             RenderedParity r = renderAndCompare(renderer, s);
             std::string what = "cap " + std::to_string(cap) + " " + describe(prm);
             EXPECT_LE(r.worst, PARITY_TOLERANCE) << what;
-            if (cap == 0.5f) EXPECT_GT(r.capped, r.receivers / 2) << what;  // the ground: 1.3
+            if (cap == 0.5f) {  // the ground: 1.3
+                EXPECT_GT(r.capped, r.receivers / 2) << what;
+            }
             std::printf(
                 "parity rendered grazing, receiver-plane cap %g, %s: %d of %d capped, "
                 "max |GPU - CPU| = %g\n",

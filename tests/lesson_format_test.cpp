@@ -467,7 +467,9 @@ TEST(LessonFormatLayoutKeys, ChartHighlightNeedsABenchChart) {
     ASSERT_GE(lesson.steps.size(), 3u);
     EXPECT_EQ(lesson.steps[1].chartHighlight, "front");
     for (const LessonStep& step : lesson.steps) {
-        if (step.chart.empty()) EXPECT_TRUE(step.chartHighlight.empty());
+        if (step.chart.empty()) {
+            EXPECT_TRUE(step.chartHighlight.empty());
+        }
     }
 }
 

@@ -234,8 +234,12 @@ TEST_F(SceneRendererTest, DepthFormatsAgree) {
             float k = d * 65535.0f;
             offGrid += std::fabs(k - std::round(k)) > 0.01f;
         }
-        if (f == DepthFormat::D16) EXPECT_EQ(offGrid, 0);
-        if (f == DepthFormat::D32F) EXPECT_GT(offGrid, 0);
+        if (f == DepthFormat::D16) {
+            EXPECT_EQ(offGrid, 0);
+        }
+        if (f == DepthFormat::D32F) {
+            EXPECT_GT(offGrid, 0);
+        }
         std::vector<float> vis = renderer.readVisibility();
         if (reference.empty()) {
             reference = vis;

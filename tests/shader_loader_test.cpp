@@ -273,7 +273,8 @@ TEST_F(ShaderLoader, SharedPcfKernelMatchesTheCpuKernel) {
                 // The shader's uv, exactly: pixel centre / 32 - 1/8 (powers of two only).
                 vec2 fragCoord(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
                 vec2 uv = fragCoord * (1.0f / 32.0f) - vec2(0.125f);
-                PcfParams prm{c.method, c.kernel, 1.0f, pcfPixelRotation(ivec2(x, y))};
+                PcfParams prm{c.method,        c.kernel, 1.0f, pcfPixelRotation(ivec2(x, y)),
+                              PCF_WEIGHTS_BOX, 0.0f};
                 float cpu = filterVisibility(map, uv, ref, prm);
                 // readPixelsFloat is top-down: GL row y is readback row size - 1 - y.
                 float v = gpu[static_cast<size_t>(size - 1 - y) * size + x];

@@ -81,8 +81,12 @@ TEST(TextureUnit, Hw8MovesEveryMethodByLessThanOneStep) {
         }
         EXPECT_LE(worst, 1.0f / 256.0f + 1e-6f) << m.name;
         bool unit = m.id == PCF_HW2X2 || m.id == PCF_HW || m.id == PCF_TENT;
-        if (unit) EXPECT_GT(worst, 1e-4f) << m.name << ": hw8 should show";
-        if (!unit) EXPECT_EQ(worst, 0.0f) << m.name << ": no texture-unit arithmetic";
+        if (unit) {
+            EXPECT_GT(worst, 1e-4f) << m.name << ": hw8 should show";
+        }
+        if (!unit) {
+            EXPECT_EQ(worst, 0.0f) << m.name << ": no texture-unit arithmetic";
+        }
     }
 }
 

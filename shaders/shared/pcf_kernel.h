@@ -67,7 +67,7 @@ struct PcfParams {
     float sigma;    // gaussian weights: standard deviation in texels
 #ifdef __cplusplus
     // The CPU's model of the texture unit (PCF_PRECISION_EXACT or _HW8). In GLSL the same
-    // choice is the uniform uPcfPrecision, read through mapPrecision(map) (pcf_prelude.h).
+    // choice is the define PCF_PRECISION, read through mapPrecision(map) (pcf_prelude.h).
     int precision = 0;
 #endif
 };
@@ -95,7 +95,7 @@ PCF_FN ivec2 pcfClampTexel(ivec2 texel, ivec2 size) {
 // a fixed-point depth format (16, 24 bit) both D_ref and D_t are clamped to [0,1] before the
 // comparison; for 32F neither is. The stored D_t of a fixed-point map is already in [0,1], so
 // only D_ref needs the clamp. mapFixedPoint(map) is 1 for a 16/24-bit map (CPU: ShadowMap's
-// format; GLSL: the uniform uPcfFixedPoint). Every method clamps, texelFetch ones included, so
+// format; GLSL: the define PCF_FIXED_POINT). Every method clamps, texelFetch ones included, so
 // that bilinear2x2 stays equal to the hardware tap it emulates.
 PCF_MAP_FN float pcfDepthRef(Map map, float ref) {
     return mapFixedPoint(map) != 0 ? clamp(ref, 0.0f, 1.0f) : ref;

@@ -52,13 +52,20 @@ uniform sampler2DShadow uPcfCompare;
 
 ivec2 mapSize(Map map) { return textureSize(map, 0); }
 
-// The texture unit's state the kernel needs (issue 10; uniforms left unset are 0): 1 when the
-// depth texture is fixed-point (16, 24 bit: D_ref clamped to [0,1]); the precision model of
-// hardware taps and gathers (0 exact, 1 hw8: positions snapped to 1/256 texel before the tap).
-uniform int uPcfFixedPoint;
-uniform int uPcfPrecision;
-int mapFixedPoint(Map map) { return uPcfFixedPoint; }
-int mapPrecision(Map map) { return uPcfPrecision; }
+// The texture unit's state the kernel needs (issue 10): PCF_FIXED_POINT is 1 when the depth
+// texture is fixed-point (16, 24 bit: D_ref clamped to [0,1]); PCF_PRECISION is the precision
+// model of hardware taps and gathers (0 exact, 1 hw8: positions snapped to 1/256 texel before
+// the tap). Defines of the program, not uniforms (issue 23): llvmpipe runs both sides of a
+// branch on a uniform, so a uniform here made every tap pay for the clamp and the snapping.
+// see: src/render/pcf_programs.cpp (PcfVariant, one program per set of defines)
+#ifndef PCF_FIXED_POINT
+#define PCF_FIXED_POINT 0
+#endif
+#ifndef PCF_PRECISION
+#define PCF_PRECISION 0
+#endif
+int mapFixedPoint(Map map) { return PCF_FIXED_POINT; }
+int mapPrecision(Map map) { return PCF_PRECISION; }
 float fetchDepth(Map map, ivec2 texel) { return texelFetch(map, texel, 0).r; }
 void pcfTap(Map map, ivec2 texel, float depth, float ref, float lit, float weight) {}
 void pcfFetch(Map map, int kind, vec2 uv, float weight) {}

@@ -285,6 +285,7 @@ class BenchRun {
         // One untimed draw of each timed pass: compiles its programs before the rounds.
         row.timer = mRenderer.timeCameraPass(s, 1).timer;
         mLookupPass.draw(s.pcfParams(), s.rotatePerPixel, s.biasParams().kernelBias());
+        if (mOptions.reference) mLookupPass.drawReference(s.pcfParams());
         glFinish();
         row.cpuNsPerPixel = timeCpuKernel(map(mMaps, p.mapSize), mCpuLookups, s.pcfParams(),
                                           mOptions.cpuPasses, mOptions.cpuThreads)
@@ -341,12 +342,34 @@ class BenchRun {
         return shimmerStats(frames, mRegions.compared);
     }
 
+    // One pass's samples of one point: wall clock, and process CPU time on software GL.
+    struct PassSamples {
+        std::vector<double> wall;
+        std::vector<double> cpu;
+        void add(const TimingResult& t) {
+            wall.push_back(t.samplesMs.front());
+            cpu.insert(cpu.end(), t.cpuSamplesMs.begin(), t.cpuSamplesMs.end());
+        }
+    };
+    struct PointSamples {
+        PassSamples scene, lookup, reference;
+    };
+
+    // One sample of each of the point's passes, back to back.
+    void timePoint(const RenderSettings& s, PointSamples& samples) {
+        samples.scene.add(mRenderer.timeCameraPass(s, 1, false));
+        PcfParams prm = s.pcfParams();
+        PcfBias bias = s.biasParams().kernelBias();
+        samples.lookup.add(
+            timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel, bias); }, 1, false));
+        if (mOptions.reference) {
+            samples.reference.add(timeGpu([&] { mLookupPass.drawReference(prm); }, 1, false));
+        }
+    }
+
     // The timing rounds (see bench.h): every point once per round, in run order.
     void timeRounds() {
-        std::vector<std::vector<double>> sceneSamples(mPoints.size());
-        std::vector<std::vector<double>> lookupSamples(mPoints.size());
-        std::vector<std::vector<double>> sceneCpu(mPoints.size());
-        std::vector<std::vector<double>> lookupCpu(mPoints.size());
+        std::vector<PointSamples> samples(mPoints.size());
         for (int round = 0; round < mOptions.gpuRepeats; ++round) {
             if (mContext.roundProgress) mContext.roundProgress(round, mOptions.gpuRepeats);
             mCurrentMap = -1;
@@ -359,31 +382,27 @@ class BenchRun {
                     glFinish();
                     mCurrentMap = p.mapSize;
                 }
-                TimingResult scene = mRenderer.timeCameraPass(s, 1, false);
-                PcfParams prm = s.pcfParams();
-                PcfBias bias = s.biasParams().kernelBias();
-                TimingResult lookup =
-                    timeGpu([&] { mLookupPass.draw(prm, s.rotatePerPixel, bias); }, 1, false);
-                sceneSamples[k].push_back(scene.samplesMs.front());
-                lookupSamples[k].push_back(lookup.samplesMs.front());
-                sceneCpu[k].insert(sceneCpu[k].end(), scene.cpuSamplesMs.begin(),
-                                   scene.cpuSamplesMs.end());
-                lookupCpu[k].insert(lookupCpu[k].end(), lookup.cpuSamplesMs.begin(),
-                                    lookup.cpuSamplesMs.end());
+                timePoint(s, samples[k]);
             }
         }
         for (size_t k = 0; k < mPoints.size(); ++k) {
             BenchRow& row = mRows[k];
-            Quartiles scene = quartilesOf(sceneSamples[k]);
-            Quartiles lookup = quartilesOf(lookupSamples[k]);
+            Quartiles scene = quartilesOf(samples[k].scene.wall);
+            Quartiles lookup = quartilesOf(samples[k].lookup.wall);
             row.gpuMs = scene.median;
             row.gpuMsIqr = scene.iqr();
             row.lookupMs = lookup.median;
             row.lookupMsIqr = lookup.iqr();
-            row.gpuCpuMs = medianOf(sceneCpu[k]);
-            row.lookupCpuMs = medianOf(lookupCpu[k]);
+            row.gpuCpuMs = medianOf(samples[k].scene.cpu);
+            row.lookupCpuMs = medianOf(samples[k].lookup.cpu);
             row.noisy = row.gpuMsIqr > NOISY_IQR_SHARE * row.gpuMs ||
                         row.lookupMsIqr > NOISY_IQR_SHARE * row.lookupMs;
+            if (mOptions.reference) {
+                Quartiles reference = quartilesOf(samples[k].reference.wall);
+                row.referenceMs = reference.median;
+                row.referenceMsIqr = reference.iqr();
+                row.referenceCpuMs = medianOf(samples[k].reference.cpu);
+            }
         }
     }
 };

@@ -67,6 +67,9 @@ struct BenchOptions {
     int cpuLookups = 32768;  // receiver pixels the CPU kernel is timed on, at most
     int cpuPasses = 3;       // passes over them (median)
     int cpuThreads = 0;      // threads sharing each pass (0 = all cores)
+    // Also time each point's reference pass (GpuLookup::drawReference: the method written the
+    // textbook way, no shared kernel) in the same rounds, right after its lookup pass.
+    bool reference = false;
     // Bias, depth format, culling (method, kernel, map size and frame size are the sweep's).
     // The renderer's defaults but for culling: the map holds BACK faces (front faces culled),
     // which keeps shadow acne, a bias problem, off the single-sided ground and the lit faces
@@ -112,6 +115,11 @@ struct BenchRow {
     // light-space target (render/gpu_lookup.h, as the parity tests run it), median and IQR.
     double lookupMs = 0.0;
     double lookupMsIqr = 0.0;
+    // The reference pass over the same lookups (BenchOptions::reference; else 0), median and
+    // IQR, and its process CPU time as lookupCpuMs.
+    double referenceMs = 0.0;
+    double referenceMsIqr = 0.0;
+    double referenceCpuMs = 0.0;
     bool noisy = false;  // either IQR > NOISY_IQR_SHARE of its median
     // On software renderers, the medians of the process CPU time of the same samples
     // (render/gpu_timer.h: cpuSamplesMs): the passes' cost as work, steadier than the wall

@@ -7,6 +7,9 @@
 //                            edge-band RMSE, the Pareto front drawn
 //   speed_vs_stability.png   the same against shimmer
 //   diff/NAME.png            each run's signed error against the ground truth
+//   reference.csv            with --reference: per run the lookup pass against the method's
+//                            hand-written reference pass (shaders/reference/), timed in the
+//                            same rounds, and their ratio (scripts/pass-overhead prints it)
 // Everything is written into a staging folder inside DIR and moved into place only once the
 // whole sweep has succeeded, so a failure or an interrupt leaves no partial output behind.
 #include <unistd.h>
@@ -45,6 +48,7 @@ constexpr const char* CSV_NAME = "bench.csv";
 constexpr const char* MD_NAME = "bench.md";
 constexpr const char* ACCURACY_CHART = "speed_vs_accuracy.png";
 constexpr const char* STABILITY_CHART = "speed_vs_stability.png";
+constexpr const char* REFERENCE_CSV_NAME = "reference.csv";
 // RenderOptions' options for one run, which the sweep's lists replace.
 constexpr const char* SINGLE_RUN_OPTIONS[] = {"--method", "--kernel", "--map-size", "--radius",
                                               "--rotate", "--lesson", "--step"};
@@ -63,6 +67,7 @@ struct BenchCommandOptions {
     int repeats = 9;  // timing rounds; 5 with --quick unless given
     int shimmerFrames = 8;
     std::string timing = "lookup";
+    bool reference = false;
     int threads = 0;
     bool force = false;
     CLI::App* sub = nullptr;  // to tell options the user gave from defaults
@@ -83,6 +88,23 @@ std::string diffFileName(const BenchPoint& p) {
     if (p.kernel > 0) name += "-n" + std::to_string(p.kernel);
     if (p.weights != PCF_WEIGHTS_BOX) name += "-" + std::string(weightsName(p.weights));
     return name + "-map" + std::to_string(p.mapSize) + ".png";
+}
+
+// reference.csv: per run the lookup pass and the reference pass, medians and IQRs in ms, the
+// ratio lookup / reference, and the process CPU times (0 when the GPU's own timer measured).
+std::string referenceCsv(const std::vector<BenchRow>& rows) {
+    std::string csv =
+        "method,kernel,map_size,lookup_ms,lookup_iqr_ms,reference_ms,reference_iqr_ms,ratio,"
+        "lookup_cpu_ms,reference_cpu_ms\n";
+    char line[256];
+    for (const BenchRow& r : rows) {
+        std::snprintf(line, sizeof line, "%s,%d,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.4f,%.4f\n",
+                      std::string(methodInfo(r.point.method).name).c_str(), r.point.kernel,
+                      r.point.mapSize, r.lookupMs, r.lookupMsIqr, r.referenceMs, r.referenceMsIqr,
+                      r.lookupMs / r.referenceMs, r.lookupCpuMs, r.referenceCpuMs);
+        csv += line;
+    }
+    return csv;
 }
 
 std::vector<int> parseMethods(const std::string& text) {
@@ -135,6 +157,19 @@ void applyBias(BenchOptions& options, const RenderSettings& base, bool methodsGi
     }
 }
 
+// The reference passes compare plainly (one ref for every tap) on a float map with box weights
+// (shaders/reference/README.md): against anything else they would time less work.
+void checkReference(const RenderSettings& base, const BenchOptions& options) {
+    bool perTapBias = base.bias == BiasMode::ReceiverPlane || base.bias == BiasMode::Soft ||
+                      base.bias == BiasMode::Interpolated;
+    bool weighted = options.weights != std::vector<int>{PCF_WEIGHTS_BOX};
+    if (perTapBias || weighted || base.depthFormat != DepthFormat::D32F) {
+        throw UsageError(
+            "--reference times the methods' plain textbook passes: it needs a bias without "
+            "per-tap work (none, constant, slope, normal), --weights box and --depth-format 32f");
+    }
+}
+
 BenchOptions parseSweep(const BenchCommandOptions& o) {
     BenchOptions options = o.quick ? quickBenchOptions() : BenchOptions{};
     RenderSettings base = baseSettings(o);
@@ -157,6 +192,8 @@ BenchOptions parseSweep(const BenchCommandOptions& o) {
     requireIntRange("--shimmer-frames", options.shimmerFrames, 0, SHIMMER_STEPS);
     requireIntRange("--threads", o.threads, 0, 1024);
     options.cpuThreads = o.threads;
+    options.reference = o.reference;
+    if (o.reference) checkReference(base, options);
     if (auto why = validateBenchOptions(options)) throw UsageError(cliWords(*why));
     return options;
 }
@@ -183,6 +220,7 @@ std::vector<std::string> checkOutputs(const BenchCommandOptions& o, const BenchP
                                       OutputFiles& outputs) {
     if (o.out.empty()) throw UsageError("-o needs a directory");
     std::vector<std::string> names = {CSV_NAME, MD_NAME, ACCURACY_CHART, STABILITY_CHART};
+    if (o.reference) names.push_back(REFERENCE_CSV_NAME);
     for (const BenchPoint& p : benchPoints(plan.config.options)) {
         names.push_back("diff/" + diffFileName(p));
     }
@@ -333,6 +371,9 @@ int runBenchCommand(const BenchCommandOptions& o) {
     writeTextFile((staging.path() / CSV_NAME).string(), benchCsv(result.rows));
     writeTextFile((staging.path() / MD_NAME).string(), markdown);
     writeCharts(plan, result, *gl, o.quick, staging.path());
+    if (o.reference) {
+        writeTextFile((staging.path() / REFERENCE_CSV_NAME).string(), referenceCsv(result.rows));
+    }
     if (benchMachineBusy(result.rows, setup)) {
         std::fprintf(stderr,
                      "bench: the machine was busy (load average %.2f -> %.2f on %d cores); %.0f %% "
@@ -396,6 +437,9 @@ Command addBenchCommand(CLI::App& app) {
     sub->add_option("--timing", o->timing,
                     "the charts' time axis: lookup (default: the filter alone, a bare lookup "
                     "pass) or scene (the camera pass)");
+    sub->add_flag("--reference", o->reference,
+                  "also time each run's hand-written reference pass (shaders/reference/) in the "
+                  "same rounds, right after its lookup pass; writes reference.csv");
     sub->add_option("--threads", o->threads,
                     "CPU threads for the ground truth, the clean masks and the CPU kernel "
                     "timing (0 = all cores, the default)");

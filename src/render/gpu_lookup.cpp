@@ -4,6 +4,7 @@
 #include <string>
 
 #include "render/depth_readback.h"
+#include "render/shader_loader.h"
 
 namespace pcf {
 
@@ -69,8 +70,17 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
         programs =
             mPrograms.try_emplace(bias.mode, "fullscreen.vert", "lookup.frag", defines).first;
     }
-    GLuint program = programs->second.get(prm.method, prm.kernel);
+    GLuint program = programs->second.get(pcfVariant(prm, rotatePerPixel, mFixedPoint));
     glUseProgram(program);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uSoftScale"), bias.softScale);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.dzduvMax);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uSigma"), prm.sigma);
+    drawOver(program, prm.radius);
+}
+
+// The shadow map, the lookups and the planes bound, uRadius set, one full-screen triangle into
+// the target: what the kernel's pass and the reference passes share.
+void GpuLookup::drawOver(GLuint program, float radius) {
     bindShadowMap(program, mDepth.id(), mSamplers);
     glBindTextureUnit(2, mInput.id());
     glBindSampler(2, mSamplers.nearest.id());
@@ -78,17 +88,7 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
     glBindTextureUnit(3, mPlanes.id());
     glBindSampler(3, mSamplers.nearest.id());
     glProgramUniform1i(program, glGetUniformLocation(program, "uPlanes"), 3);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uSoftScale"), bias.softScale);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.dzduvMax);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uRadius"), prm.radius);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uRotatePerPixel"),
-                       rotatePerPixel ? 1 : 0);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uWeights"), prm.weights);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uSigma"), prm.sigma);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uPcfPrecision"), prm.precision);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uPcfFixedPoint"),
-                       mFixedPoint ? 1 : 0);
-
+    glProgramUniform1f(program, glGetUniformLocation(program, "uRadius"), radius);
     glBindFramebuffer(GL_FRAMEBUFFER, mTarget.framebuffer.id());
     glViewport(0, 0, mWidth, mHeight);
     glDisable(GL_DEPTH_TEST);
@@ -98,6 +98,61 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     for (GLuint unit : {0u, 1u, 2u, 3u}) glBindSampler(unit, 0);
+}
+
+namespace {
+
+// The reference pass of a method and the N it folds in: bilinear2x2 is pcf-naive's lookup once,
+// hw2x2 pcf-hw's tap once.
+struct ReferencePass {
+    const char* file;  // under shaders/
+    int n;
+};
+
+ReferencePass referencePass(const PcfParams& prm) {
+    switch (prm.method) {
+        case PCF_NEAREST:
+            return {"reference/nearest.frag", 1};
+        case PCF_BOX2X2:
+            return {"reference/box.frag", 1};
+        case PCF_BILINEAR2X2:
+            return {"reference/naive.frag", 1};
+        case PCF_HW2X2:
+            return {"reference/hw.frag", 1};
+        case PCF_NAIVE:
+            return {"reference/naive.frag", prm.kernel};
+        case PCF_GATHER:
+            return {"reference/gather.frag", prm.kernel};
+        case PCF_HW:
+            return {"reference/hw.frag", prm.kernel};
+        case PCF_TENT:
+            return {"reference/tent.frag", prm.kernel};
+        case PCF_POISSON:
+            return {"reference/poisson.frag", 1};
+    }
+    throw std::invalid_argument("no reference pass for method id " + std::to_string(prm.method));
+}
+
+}  // namespace
+
+void GpuLookup::drawReference(const PcfParams& prm) {
+    if (!mDepth || !mInput) {
+        throw std::logic_error("GpuLookup::drawReference before setMap and setLookups");
+    }
+    ReferencePass pass = referencePass(prm);
+    auto key = std::make_pair(std::string(pass.file), pass.n);
+    auto it = mReferencePrograms.find(key);
+    if (it == mReferencePrograms.end()) {
+        std::string defines = "#define N " + std::to_string(pass.n) + "\n";
+        GlProgram program = buildProgram({
+            ShaderStage{GL_VERTEX_SHADER, {"fullscreen.vert"}, "", {}},
+            ShaderStage{GL_FRAGMENT_SHADER, {pass.file}, defines, {}},
+        });
+        it = mReferencePrograms.emplace(key, std::move(program)).first;
+    }
+    GLuint program = it->second.id();
+    glUseProgram(program);
+    drawOver(program, prm.radius);
 }
 
 std::vector<float> GpuLookup::read() const {

@@ -6,6 +6,8 @@
 #include <glm/glm.hpp>
 #include <map>
 #include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "kernel/pcf.h"
@@ -46,6 +48,14 @@ class GpuLookup {
     void draw(const PcfParams& prm, bool rotatePerPixel,
               const PcfBias& bias = PcfBias(PCF_BIAS_CONSTANT, glm::vec2(0.0f), 0.0f,
                                             PCF_DZDUV_UNCLAMPED));
+    // The hand-written textbook pass of prm's method (shaders/reference/, no shared kernel)
+    // over the same lookups into the same target: what the method itself costs, for timing the
+    // kernel's pass against (bench.h, --reference) and checked against the kernel by
+    // tests/reference_pass_test.cpp. The plain comparison only (one ref for every tap, a 32F
+    // map, no rotation). Throws std::invalid_argument for an unknown method, and
+    // std::logic_error before setMap and setLookups.
+    void drawReference(const PcfParams& prm);
+
     // The last draw's visibilities, in the lookups' order.
     std::vector<float> read() const;
 
@@ -53,10 +63,14 @@ class GpuLookup {
     const ShadowMap& storedMap() const { return mStored; }
 
   private:
+    void drawOver(GLuint program, float radius);
+
     ShadowMap mStored;
     bool mFixedPoint = false;
     // By bias mode (lookup.frag takes it as a define, PCF_LOOKUP_BIAS), made on first use.
     std::map<int, PcfProgramCache> mPrograms;
+    // The reference passes by (file, N), made on first use.
+    std::map<std::pair<std::string, int>, GlProgram> mReferencePrograms;
     PcfSamplers mSamplers;
     GlVertexArray mEmptyVao;
     GlTexture mDepth;

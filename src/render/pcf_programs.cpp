@@ -10,12 +10,25 @@ PcfProgramCache::PcfProgramCache(std::string vertexFile, std::string fragmentFil
       mFragmentFile(std::move(fragmentFile)),
       mExtraDefines(std::move(extraDefines)) {}
 
-GLuint PcfProgramCache::get(int method, int kernel) {
-    auto key = std::make_pair(method, kernel);
-    auto it = mPrograms.find(key);
+PcfVariant pcfVariant(const PcfParams& prm, bool rotatePerPixel, bool fixedPoint) {
+    return PcfVariant{prm.method,    prm.kernel,         prm.weights,
+                      prm.precision, fixedPoint ? 1 : 0, rotatePerPixel ? 1 : 0};
+}
+
+std::string pcfVariantDefines(const PcfVariant& variant) {
+    auto line = [](const char* name, int value) {
+        return std::string("#define ") + name + " " + std::to_string(value) + "\n";
+    };
+    return line("PCF_METHOD", variant.method) + line("PCF_KERNEL", variant.kernel) +
+           line("PCF_WEIGHTS", variant.weights) + line("PCF_PRECISION", variant.precision) +
+           line("PCF_FIXED_POINT", variant.fixedPoint) +
+           line("PCF_ROTATE_PER_PIXEL", variant.rotatePerPixel);
+}
+
+GLuint PcfProgramCache::get(const PcfVariant& variant) {
+    auto it = mPrograms.find(variant);
     if (it != mPrograms.end()) return it->second.id();
-    std::string defines = "#define PCF_METHOD " + std::to_string(method) + "\n#define PCF_KERNEL " +
-                          std::to_string(kernel) + "\n" + mExtraDefines;
+    std::string defines = pcfVariantDefines(variant) + mExtraDefines;
     GlProgram program = buildProgram({
         ShaderStage{GL_VERTEX_SHADER, {mVertexFile}, "", {}},
         ShaderStage{
@@ -25,7 +38,7 @@ GLuint PcfProgramCache::get(int method, int kernel) {
             {}},
     });
     GLuint id = program.id();
-    mPrograms.emplace(key, std::move(program));
+    mPrograms.emplace(variant, std::move(program));
     return id;
 }
 

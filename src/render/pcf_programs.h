@@ -1,33 +1,62 @@
-// pcf_programs.h: GL programs that run the shared PCF kernel, one per (method, kernel size),
-// compiled on first use and kept.
+// pcf_programs.h: GL programs that run the shared PCF kernel, one per set of the defines that
+// select its code (PcfVariant), compiled on first use and kept.
 #pragma once
 
 #include <map>
 #include <string>
-#include <utility>
+#include <tuple>
 
 #include "kernel/pcf.h"
 #include "render/gl_objects.h"
 
 namespace pcf {
 
-// The files of a fragment stage that filters: prelude, kernel, then the stage itself, with
-// PCF_METHOD and PCF_KERNEL defined (DESIGN.md 5: #version, defines, prelude, kernel, stage).
+// Everything that picks which code of the kernel a fragment runs. Each is a define of the
+// program, not a uniform (issue 23): llvmpipe runs every side of a branch on a uniform under a
+// lane mask, so a uniform choice costs the bodies of all its choices on every fragment; as a
+// define the driver folds the choice and keeps one body. One program per variant used.
+//   PCF_METHOD, PCF_KERNEL      the method and N (pcf_kernel.h's pcfFilterRef dispatch)
+//   PCF_WEIGHTS                 PCF_WEIGHTS_*: pcf-naive's and pcf-gather's box or weighted path
+//   PCF_PRECISION               PCF_PRECISION_*: the texture unit's model (mapPrecision)
+//   PCF_FIXED_POINT             1 for a 16/24-bit depth map: D_ref clamped (mapFixedPoint)
+//   PCF_ROTATE_PER_PIXEL        1: poisson's disk turned per pixel (pcfPixelRotation)
+struct PcfVariant {
+    int method = 0;
+    int kernel = 3;
+    int weights = 0;
+    int precision = 0;
+    int fixedPoint = 0;
+    int rotatePerPixel = 0;
+
+    auto key() const {
+        return std::make_tuple(method, kernel, weights, precision, fixedPoint, rotatePerPixel);
+    }
+    bool operator<(const PcfVariant& o) const { return key() < o.key(); }
+};
+
+// The variant that runs these parameters on a map of this kind.
+PcfVariant pcfVariant(const PcfParams& prm, bool rotatePerPixel, bool fixedPoint);
+
+// The "#define NAME VALUE" lines of a variant, in PcfVariant's order.
+std::string pcfVariantDefines(const PcfVariant& variant);
+
+// The files of a fragment stage that filters: prelude, kernel, then the stage itself, with the
+// variant's defines (DESIGN.md 5: #version, defines, prelude, kernel, stage).
 class PcfProgramCache {
   public:
     // extraDefines: more "#define NAME VALUE" lines for every program of this cache.
     PcfProgramCache(std::string vertexFile, std::string fragmentFile,
                     std::string extraDefines = "");
 
-    // The program for this method and kernel size; compiles it the first time. Throws
-    // std::runtime_error with the driver's log (file:line) if the GLSL does not build.
-    GLuint get(int method, int kernel);
+    // The program for this variant; compiles it the first time. Throws std::runtime_error with
+    // the driver's log (file:line) if the GLSL does not build.
+    GLuint get(const PcfVariant& variant);
 
   private:
     std::string mVertexFile;
     std::string mFragmentFile;
     std::string mExtraDefines;
-    std::map<std::pair<int, int>, GlProgram> mPrograms;
+    std::map<PcfVariant, GlProgram> mPrograms;
 };
 
 // Binds the shadow map the way pcf_prelude.h expects it: unit 0 = uPcfDepth (nearest, no

@@ -176,7 +176,10 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glDisable(GL_BLEND);
 
     BiasParams bias = settings.biasParams();
-    GLuint program = programsFor(targets, bias.mode).get(settings.method, settings.kernel);
+    bool fixedPoint = depthFormatFixedPointBits(mShadowFormat) != 0;
+    GLuint program =
+        programsFor(targets, bias.mode)
+            .get(pcfVariant(settings.pcfParams(), settings.rotatePerPixel, fixedPoint));
     glUseProgram(program);
     glm::mat4 clip = clipFromWorld();
     glProgramUniformMatrix4fv(program, uniform(program, "uClipFromWorld"), 1, GL_FALSE,
@@ -202,13 +205,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
                             static_cast<float>(settings.mapSize));
     glProgramUniform1f(program, uniform(program, "uShadowTexelWs"), texelWs);
     glProgramUniform1f(program, uniform(program, "uRadius"), settings.radius);
-    glProgramUniform1i(program, uniform(program, "uRotatePerPixel"),
-                       settings.rotatePerPixel ? 1 : 0);
-    glProgramUniform1i(program, uniform(program, "uWeights"), settings.weights);
     glProgramUniform1f(program, uniform(program, "uSigma"), settings.sigma);
-    glProgramUniform1i(program, uniform(program, "uPcfPrecision"), settings.precision);
-    glProgramUniform1i(program, uniform(program, "uPcfFixedPoint"),
-                       depthFormatFixedPointBits(mShadowFormat) != 0 ? 1 : 0);
     bindShadowMap(program, mShadow.depth.id(), mSamplers);
     drawObjects(program, false, true);
     glBindSampler(0, 0);

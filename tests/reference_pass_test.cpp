@@ -1,0 +1,93 @@
+// The reference passes (shaders/reference/, GpuLookup::drawReference) are real implementations
+// of their methods: over the same random lookups on the same random map, each gives what the
+// shared kernel's lookup pass gives, to float rounding. They are what bench --reference times
+// the kernel against, so a reference that did less work than its method would flatter nothing
+// and hide the kernel's overhead; this test is what keeps them honest.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "kernel/methods.h"
+#include "kernel/pcf.h"
+#include "render/gl_context.h"
+#include "render/gpu_lookup.h"
+
+namespace pcf {
+namespace {
+
+// Both passes run on the same GL; they differ only in the order of float operations (a sum
+// divided at the end against weights scaled first), so 1e-5, the parity tests' tolerance.
+constexpr float REFERENCE_TOLERANCE = 1e-5f;
+
+class ReferencePass : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() { sContext = createHeadlessContext(); }
+    static void TearDownTestSuite() { sContext.reset(); }
+    static std::unique_ptr<GlContext> sContext;
+};
+std::unique_ptr<GlContext> ReferencePass::sContext;
+
+std::vector<PcfParams> referenceCases() {
+    std::vector<PcfParams> cases;
+    for (const MethodInfo& m : allMethods()) {
+        if (m.id == PCF_TENT) {
+            for (int n : {3, 5, 7}) cases.push_back(makeParams(m.id, n));
+        } else if (m.usesKernel) {
+            for (int n : {1, 2, 3, 4, 5, 8}) cases.push_back(makeParams(m.id, n));
+        } else if (m.id == PCF_POISSON) {
+            cases.push_back(makeParams(m.id, 1, 1.0f));
+            cases.push_back(makeParams(m.id, 1, 2.5f));
+        } else {
+            cases.push_back(makeParams(m.id, 1));
+        }
+    }
+    return cases;
+}
+
+TEST_F(ReferencePass, EveryMethodGivesTheKernelsVisibility) {
+    GpuLookup gpu;
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::uniform_real_distribution<float> around(-0.03f, 1.03f);
+    const glm::ivec2 size(61, 47);
+    ShadowMap map(size.x, size.y);
+    for (int j = 0; j < size.y; ++j) {
+        for (int i = 0; i < size.x; ++i) map.setDepth(i, j, unit(rng));
+    }
+    const int width = 64;
+    std::vector<glm::vec4> lookups(width * 48);
+    for (glm::vec4& l : lookups) l = glm::vec4(around(rng), around(rng), unit(rng), 0.0f);
+    // Lookups on texel centres and edges, where floor() decides.
+    for (int k = 0; k < 64; ++k) {
+        lookups[k].x = (k % size.x + 0.5f * (k % 3)) / size.x;
+        lookups[k].y = (k % size.y + 0.5f * (k % 2)) / size.y;
+    }
+    gpu.setMap(map);
+    gpu.setLookups(lookups, width);
+    for (const PcfParams& prm : referenceCases()) {
+        std::string what = std::string(methodInfo(prm.method).name) +
+                           " N=" + std::to_string(prm.kernel) + " R=" + std::to_string(prm.radius);
+        gpu.draw(prm, false);
+        std::vector<float> kernel = gpu.read();
+        gpu.drawReference(prm);
+        std::vector<float> reference = gpu.read();
+        ASSERT_EQ(reference.size(), kernel.size());
+        float worst = 0.0f;
+        int partial = 0;  // strictly between 0 and 1: the filter's weights at work
+        for (size_t k = 0; k < kernel.size(); ++k) {
+            worst = std::max(worst, std::fabs(reference[k] - kernel[k]));
+            partial += reference[k] > 0.0f && reference[k] < 1.0f;
+        }
+        EXPECT_LE(worst, REFERENCE_TOLERANCE) << what;
+        // Random depths against random refs: every method but nearest mixes bits in most
+        // lookups, so a pass that wrote one constant or only hard bits fails here.
+        if (prm.method != PCF_NEAREST) {
+            EXPECT_GT(partial, static_cast<int>(kernel.size()) / 2) << what;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace pcf
