@@ -119,6 +119,13 @@ double quantileOf(std::vector<float>& values, double q) {
     return values[k];
 }
 
+double curveFlicker(const std::vector<float>& curve) {
+    if (curve.size() < 2) return 0.0;
+    double s = 0.0;
+    for (size_t t = 1; t < curve.size(); ++t) s += std::abs(curve[t] - curve[t - 1]);
+    return s / static_cast<double>(curve.size() - 1);
+}
+
 double meanOf(const std::vector<float>& values) {
     if (values.empty()) return 0.0;
     double s = 0.0;

@@ -101,6 +101,12 @@ struct ShimmerStats {
 ShimmerStats shimmerStats(const std::vector<std::vector<float>>& frames,
                           const std::vector<uint8_t>& compared);
 
+// One point's flicker: the mean of |v(t) - v(t-1)| along its visibility curve across a sweep's
+// frames (0 for fewer than two). Over every compared pixel's curve, the mean of these is
+// shimmerStats' `mean` (each curve has the same number of frame pairs). The flicker trace of
+// `animate` prints it for its pinned point; `stability --pixel` writes it as *_pinned_flicker.
+double curveFlicker(const std::vector<float>& curve);
+
 // The mean of `values`; 0 when empty.
 double meanOf(const std::vector<float>& values);
 

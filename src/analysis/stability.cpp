@@ -243,6 +243,17 @@ class Sweeper {
         }
     }
 
+    // The pinned pixel's visibility in each frame.
+    std::vector<float> pinnedCurve(const std::vector<std::vector<float>>& frames) const {
+        glm::ivec2 p =
+            glm::clamp(*mOptions.pinnedPixel, glm::ivec2(0), mOptions.frameSize - glm::ivec2(1));
+        size_t k = static_cast<size_t>(p.y) * static_cast<size_t>(mOptions.frameSize.x) +
+                   static_cast<size_t>(p.x);
+        std::vector<float> curve;
+        for (const std::vector<float>& f : frames) curve.push_back(f[k]);
+        return curve;
+    }
+
     // |a - b| over the mask's pixels (the camera shimmer: the error's change between frames).
     static void addChanges(const std::vector<float>& a, const std::vector<float>& b,
                            const std::vector<uint8_t>& mask, std::vector<float>& out) {
@@ -258,12 +269,7 @@ class Sweeper {
         GroundTruth truth = truthOf(scene);
         ErrorRegions regions = regionsOf(renderer, truth);
         ShimmerPopulations pop = shimmerPopulations(scene, renderer, truth, regions);
-        // The fitted map, shrunk by 2 texels a side so that a shift of up to a texel and a half
-        // never pushes the scene past the map's edge.
-        float n = static_cast<float>(mOptions.mapSize);
-        glm::mat4 shrink(1.0f);
-        shrink[0][0] = shrink[1][1] = (n - 4.0f) / n;
-        glm::mat4 fitted = shrink * renderer.shadowClipFromWorld();
+        glm::mat4 fitted = renderer.shadowClipFromWorld();
         for (bool snap : {false, true}) {
             say(std::string("shimmer: the light's texel grid slid in 1/32 texel steps") +
                 (snap ? ", snapped to whole texels" : ""));
@@ -273,9 +279,8 @@ class Sweeper {
                     RenderSettings s = settings(m, bias);
                     std::vector<std::vector<float>> frames;
                     for (int t = 0; t < mOptions.shimmerFrames; ++t) {
-                        float step = static_cast<float>(t) / SHIMMER_STEPS;
                         renderer.setShadowClipFromWorld(
-                            shiftShadowOrigin(fitted, glm::vec2(step), mOptions.mapSize, snap));
+                            shimmerShadowFit(fitted, mOptions.mapSize, t, snap));
                         frames.push_back(frame(renderer, s));
                     }
                     ShimmerStats st = shimmerStats(frames, regions.compared);
@@ -293,6 +298,15 @@ class Sweeper {
                         pop.edgeCount);
                     add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "lit_pixels",
                         pop.litCount);
+                    if (mOptions.pinnedPixel) {
+                        std::vector<float> curve = pinnedCurve(frames);
+                        add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "pinned_flicker",
+                            curveFlicker(curve));
+                        for (size_t t = 0; t < curve.size(); ++t) {
+                            add(Sweep::Shimmer, m, bias, "frame", static_cast<double>(t),
+                                prefix + "pinned_visibility", curve[t]);
+                        }
+                    }
                     add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "flicker_share",
                         st.flickerShare);
                     add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "flicker_mean",
@@ -340,12 +354,6 @@ class Sweeper {
         int frames = mOptions.cameraFrames;
         if (frames < 2) return;
         glm::ivec2 size = mOptions.frameSize;
-        const Camera& c0 = scene.camera;
-        glm::vec3 forward = glm::normalize(c0.targetWs - c0.eyeWs);
-        glm::vec3 right = glm::normalize(glm::cross(forward, c0.upWs));
-        glm::vec3 up = glm::cross(right, forward);
-        float pixel = 2.0f * glm::length(c0.targetWs - c0.eyeWs) *
-                      std::tan(glm::radians(c0.fovYDeg) * 0.5f) / static_cast<float>(size.y);
         SceneRenderer renderer(scene);
         size_t combos = mOptions.biases.size() * mOptions.methods.size();
         std::vector<std::vector<float>> changes(combos), previous(combos), edgeChanges(combos);
@@ -356,9 +364,8 @@ class Sweeper {
         for (int t = 0; t < frames; ++t) {
             say("shimmer: camera frame " + std::to_string(t + 1) + "/" + std::to_string(frames));
             Scene moved = scene;
-            glm::vec3 shift = (right + up) * (pixel * static_cast<float>(t) / frames);
-            moved.camera.eyeWs += shift;
-            moved.camera.targetWs += shift;
+            moved.camera = cameraSlidByPixels(scene.camera, mOptions.frameSize.y,
+                                              static_cast<float>(t) / static_cast<float>(frames));
             renderer.setCamera(moved.camera);
             GroundTruth truth = truthOf(moved);
             ErrorRegions regions = regionsOf(renderer, truth);
@@ -637,6 +644,27 @@ std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) 
         }
     }
     return std::nullopt;
+}
+
+glm::mat4 shimmerShadowFit(const glm::mat4& fitted, int mapSize, int frame, bool snap) {
+    float n = static_cast<float>(mapSize);
+    glm::mat4 shrink(1.0f);
+    shrink[0][0] = shrink[1][1] = (n - 4.0f) / n;
+    float step = static_cast<float>(frame) / SHIMMER_STEPS;
+    return shiftShadowOrigin(shrink * fitted, glm::vec2(step), mapSize, snap);
+}
+
+Camera cameraSlidByPixels(const Camera& camera, int frameHeight, float pixels) {
+    glm::vec3 forward = glm::normalize(camera.targetWs - camera.eyeWs);
+    glm::vec3 right = glm::normalize(glm::cross(forward, camera.upWs));
+    glm::vec3 up = glm::cross(right, forward);
+    float pixel = 2.0f * glm::length(camera.targetWs - camera.eyeWs) *
+                  std::tan(glm::radians(camera.fovYDeg) * 0.5f) / static_cast<float>(frameHeight);
+    glm::vec3 shift = (right + up) * (pixel * pixels);
+    Camera moved = camera;
+    moved.eyeWs += shift;
+    moved.targetWs += shift;
+    return moved;
 }
 
 float footprintReachTexels(const StabilityMethod& m, float poissonRadius) {

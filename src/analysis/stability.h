@@ -108,7 +108,24 @@ struct StabilityOptions {
     std::vector<DepthFormat> depthFormats{DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F};
     float precisionElevation = 30.0f;  // degrees
     std::vector<int> aliasingMapSizes{256, 512, 1024, 2048};
+    // A pinned pixel (frame coordinates, top-left origin): the shimmer sweep also writes the
+    // flicker of its visibility curve (failure_measures.h: curveFlicker) as light_pinned_flicker
+    // and snapped_pinned_flicker, the number `animate`'s flicker trace shows for that point, and
+    // the curve itself, one row per frame (x = frame): light_pinned_visibility and
+    // snapped_pinned_visibility.
+    std::optional<glm::ivec2> pinnedPixel;
 };
+
+// The shimmer sweep's shadow fit for frame t: the scene's fit (`fitted`) shrunk by 2 texels a
+// side, so that a slide of up to a texel and a half never pushes the scene past the map's edge,
+// then slid by (t, t) / SHIMMER_STEPS texels and snapped with `snap` (light.h: shiftShadowOrigin).
+// `animate --sweep light` renders with the very same fits.
+glm::mat4 shimmerShadowFit(const glm::mat4& fitted, int mapSize, int frame, bool snap);
+
+// The camera slid right and up by `pixels` (a pixel measured at the distance of its target in a
+// frame `frameHeight` pixels tall): the camera shimmer sweep's frames, and `animate --sweep
+// camera`'s.
+Camera cameraSlidByPixels(const Camera& camera, int frameHeight, float pixels);
 
 // --quick: 160x90 frame, 128 map, 1x1 truth sample, 6 elevations, 3 leak biases, 3 camera frames,
 // 3 depth ranges; the methods nearest and pcf-gather N=3.

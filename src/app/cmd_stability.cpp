@@ -54,6 +54,7 @@ struct StabilityCommandOptions {
     bool quick = false;
     int spp = 2;
     int threads = 0;
+    std::string pixel;
     bool force = false;
     CLI::App* sub = nullptr;
 
@@ -170,6 +171,12 @@ StabilityOptions parseOptions(const StabilityCommandOptions& o) {
     }
     requireIntRange("--threads", o.threads, 0, 1024);
     options.threads = o.threads;
+    if (o.given("--pixel")) {
+        glm::ivec2 p = parseIvec2("--pixel", o.pixel);
+        requireIntRange("--pixel x", p.x, 0, options.frameSize.x - 1);
+        requireIntRange("--pixel y", p.y, 0, options.frameSize.y - 1);
+        options.pinnedPixel = p;
+    }
     if (auto why = validateStabilityOptions(options)) throw UsageError(cliWords(*why));
     return options;
 }
@@ -339,6 +346,9 @@ Command addStabilityCommand(CLI::App& app) {
                     "chart size WxH (default 1280x720; --quick 640x360)");
     sub->add_option("--spp", o->spp, "ground truth: K x K samples per pixel (default 2)");
     sub->add_option("--threads", o->threads, "ground truth threads (0 = all cores, the default)");
+    sub->add_option("--pixel", o->pixel,
+                    "X,Y: a pinned pixel; shimmer also writes its curve's flicker "
+                    "(light_pinned_flicker, snapped_pinned_flicker), as animate's trace shows it");
     sub->add_flag("--quick", o->quick,
                   "a few seconds, for CI: 160x90 frame, 128^2 map, 1 truth sample, nearest and "
                   "pcf-gather 3x3, fewer points per sweep (explicit options still win)");

@@ -24,6 +24,7 @@ Command addBenchCommand(CLI::App& app);
 Command addStabilityCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
+Command addAnimateCommand(CLI::App& app);
 Command addVerifyCommand(CLI::App& app);
 Command addLessonCommand(CLI::App& app);  // `lesson check FILE`
 

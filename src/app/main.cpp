@@ -12,6 +12,7 @@
 #include "app/output_files.h"
 #include "base/input_error.h"
 #include "render/image_io.h"
+#include "video/video_writer.h"
 
 namespace {
 
@@ -49,7 +50,7 @@ int main(int argc, char** argv) {
         pcf::addMethodsCommand(app), pcf::addTraceCommand(app),  pcf::addRenderCommand(app),
         pcf::addTruthCommand(app),   pcf::addBenchCommand(app),  pcf::addStabilityCommand(app),
         pcf::addViewCommand(app),    pcf::addExportCommand(app), pcf::addVerifyCommand(app),
-        pcf::addLessonCommand(app),
+        pcf::addLessonCommand(app),  pcf::addAnimateCommand(app),
     };
 
     try {
@@ -81,6 +82,8 @@ int main(int argc, char** argv) {
     } catch (const pcf::InputError& e) {
         return fail(e.what());
     } catch (const pcf::ImageError& e) {
+        return fail(e.what());
+    } catch (const pcf::VideoError& e) {
         return fail(e.what());
     } catch (const std::filesystem::filesystem_error& e) {
         // The disk said no (full, read-only, removed under us): the outputs were taken back.

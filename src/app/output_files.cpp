@@ -145,6 +145,12 @@ void OutputFiles::commitStaged(const fs::path& stagingDir, const fs::path& outDi
     commit();
 }
 
+void OutputFiles::commitMoves(const std::vector<std::pair<fs::path, fs::path>>& moves) {
+    std::shared_lock gate(outputWriteGate());
+    for (const auto& [staged, final] : moves) fs::rename(staged, final);
+    commit();
+}
+
 void OutputFiles::takeBack() {
     std::error_code ec;
     for (const fs::path& p : mNewFiles) fs::remove(p, ec);

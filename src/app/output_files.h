@@ -54,6 +54,11 @@ class OutputFiles {
     void commitStaged(const std::filesystem::path& stagingDir, const std::filesystem::path& outDir,
                       const std::vector<std::string>& names);
 
+    // The same for files staged in several folders: each (staged, final) pair renamed, then the
+    // set committed, under the one gate (a video staged beside each of its final names).
+    void commitMoves(
+        const std::vector<std::pair<std::filesystem::path, std::filesystem::path>>& moves);
+
     // Removes what this set created (files, then its folders, then scratch folders named
     // ".pcfscope-*-PID" of this process inside them). Called by the destructor unless committed,
     // and by the interrupt cleanup.

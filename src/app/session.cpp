@@ -349,6 +349,7 @@ void Session::setFrameSize(glm::ivec2 frameSize) {
     if (frameSize == mLayout.frameSize && mFrame.framebuffer) return;
     glm::ivec2 oldScene(mLayout.scene.size());
     mLayout = inspectorLayout(frameSize, mPresentation);
+    if (mSceneOnly) mLayout.scene = Rect{0.0f, 0.0f, float(frameSize.x), float(frameSize.y)};
     mFrame = createOffscreenTarget(frameSize.x, frameSize.y, {GL_RGBA8});
     glm::ivec2 newScene(mLayout.scene.size());
     if (oldScene.x > 0 && oldScene != newScene) {
@@ -506,7 +507,8 @@ void Session::blitChart(const InspectorLayout& layout) {
 
 void Session::renderScene() {
     RenderSettings r = renderSettingsFor(mSettings, glm::ivec2(mLayout.scene.size()));
-    glm::mat4 fit = lessonShadowFit(mLesson.scene, mSettings, r.mapSize);
+    // An animation's fit (setShadowFit), else the lesson's.
+    glm::mat4 fit = mShadowFit ? *mShadowFit : lessonShadowFit(mLesson.scene, mSettings, r.mapSize);
     // The pinned point's pixel shows the point's own lookup (lesson_pick.h).
     std::optional<CameraPick> pick;
     if (mPoint && mPickInFrame) {
@@ -553,6 +555,9 @@ void Session::traceAtPixel() {
     bias.dzduv = glm::vec2(receiver[0], receiver[1]);
     float z = receiver[3] == 1.0f ? receiver[2] : ref + mSettings.depthBias();
     mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(uv, mMap.width()), bias);
+    mLookup = glm::vec3(uv, z);
+    mLookupRef = ref;
+    mLookupBias = bias;
 }
 
 std::string Session::stepText() const {
@@ -585,6 +590,7 @@ void Session::composeInto(GLuint fbo) {
     if (!mRenderer) throw std::logic_error("Session::compose before loadLesson");
     if (mSceneDirty) renderScene();
     traceAtPixel();
+    if (mSceneOnly) return composeSceneOnly(fbo);
 
     mTarget = fbo;
     const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
@@ -641,6 +647,7 @@ void Session::composeInto(GLuint fbo) {
     // (The heat map is drawn over a full-size scene only, not an inset.)
     bool heat = mHeatmap && chart.empty() && !layout.sceneInset;
     if (heat) drawHeatLegend();
+    if (mFlicker && chart.empty()) drawFlicker();
     mCanvas.flush();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (!heat) mHeatValues.clear();

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_pick.h"
+#include "overlay/flicker_trace.h"
 #include "overlay/inspector.h"
 #include "render/gl_objects.h"
 #include "render/render_settings.h"
@@ -158,7 +160,28 @@ class Session {
     // The model the last compose() drew (for layout checks at other sizes without rendering).
     InspectorModel model() const;
 
+    // Motion (app/animation.h drives these between frames; session_motion.cpp). The lesson's
+    // scene with its light or camera moved: the next compose() renders it.
+    const Scene& scene() const { return mLesson.scene; }
+    void setLight(const Light& light);
+    void setCamera(const Camera& camera);
+    // The shadow map's fit (light clip from world) instead of lessonShadowFit's, or nullopt for
+    // the lesson's own: an animation creeps the light's texel grid exactly as `stability` does.
+    void setShadowFit(const std::optional<glm::mat4>& shadowClipFromWorld);
+    // The scene alone over the whole frame (no inspector, steps or status): `animate --scene-only`.
+    void setSceneOnly(bool on);
+    bool sceneOnly() const { return mSceneOnly; }
+    // The flicker trace drawn in the scene's bottom-left corner (overlay/flicker_trace.h): the
+    // source is called by each compose() after the frame's lookup is traced (so the trace can
+    // hold this frame's value: trace(), visibilityWith()); empty: none.
+    void setFlickerTrace(std::function<FlickerTrace()> source) { mFlicker = std::move(source); }
+    // What another method (and kernel) returns for the very lookup the last compose() traced: the
+    // same map, uv, depth and bias; nullopt when the pixel is not on a receiver.
+    std::optional<float> visibilityWith(int method, int kernel) const;
+
   private:
+    void composeSceneOnly(GLuint fbo);
+    void drawFlicker();
     void renderScene();
     // Derives the pixel and the camera's jitter that show mPoint in this frame.
     void repick();
@@ -204,6 +227,13 @@ class Session {
     glm::ivec2 mLightSpaceOrigin{0, 0};
     glm::ivec2 mLightSpaceSize{0, 0};
     std::optional<Trace> mTrace;
+    // The last traced lookup's inputs (visibilityWith): uv, receiver depth, ref, bias.
+    glm::vec3 mLookup{0.0f};
+    float mLookupRef = 0.0f;
+    BiasParams mLookupBias{};
+    bool mSceneOnly = false;
+    std::optional<glm::mat4> mShadowFit;
+    std::function<FlickerTrace()> mFlicker;
 
     Canvas mCanvas;
     OffscreenTarget mFrame;

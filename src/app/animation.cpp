@@ -1,0 +1,183 @@
+#include "app/animation.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "analysis/failure_measures.h"
+#include "analysis/stability.h"
+#include "kernel/methods.h"
+#include "scene/light.h"
+
+namespace pcf {
+
+namespace {
+
+// The ends of the sweeps: the elevations and constant biases of `stability`'s acne and leak
+// sweeps (analysis/stability.h, StabilityOptions), map sizes from coarse to fine.
+constexpr double SUN_FROM_DEG = 90.0, SUN_TO_DEG = 2.0;
+constexpr double BIAS_FROM = 0.0005, BIAS_TO = 0.064;
+constexpr double MAP_FROM = 32.0, MAP_TO = 2048.0;
+
+// t in [0,1] across the frames.
+double progress(int k, int frames) {
+    return frames > 1 ? static_cast<double>(k) / static_cast<double>(frames - 1) : 0.0;
+}
+
+double logLerp(double a, double b, double t) { return a * std::pow(b / a, t); }
+
+std::string methodLabel(int method, int kernel) {
+    std::string name(methodInfo(method).name);
+    return methodInfo(method).usesKernel ? name + " " + std::to_string(kernel) : name;
+}
+
+}  // namespace
+
+std::string_view animationSweepName(AnimationSweep sweep) {
+    switch (sweep) {
+        case AnimationSweep::Light:
+            return "light";
+        case AnimationSweep::Camera:
+            return "camera";
+        case AnimationSweep::Sun:
+            return "sun";
+        case AnimationSweep::Bias:
+            return "bias";
+        case AnimationSweep::MapSize:
+            return "map-size";
+    }
+    return "?";
+}
+
+std::optional<AnimationSweep> animationSweepFromName(std::string_view name) {
+    for (AnimationSweep s : {AnimationSweep::Light, AnimationSweep::Camera, AnimationSweep::Sun,
+                             AnimationSweep::Bias, AnimationSweep::MapSize}) {
+        if (animationSweepName(s) == name) return s;
+    }
+    return std::nullopt;
+}
+
+std::string_view animationSweepUnit(AnimationSweep sweep) {
+    switch (sweep) {
+        case AnimationSweep::Light:
+            return "texel slide";
+        case AnimationSweep::Camera:
+            return "pixel slide";
+        case AnimationSweep::Sun:
+            return "deg elevation";
+        case AnimationSweep::Bias:
+            return "constant bias";
+        case AnimationSweep::MapSize:
+            return "texels a side";
+    }
+    return "";
+}
+
+double animationSweepValue(const AnimationOptions& o, int k) {
+    double t = progress(k, o.frames);
+    switch (o.sweep) {
+        case AnimationSweep::Light:
+            return static_cast<double>(k % SHIMMER_STEPS) / SHIMMER_STEPS;
+        case AnimationSweep::Camera:
+            return static_cast<double>(k) / StabilityOptions{}.cameraFrames;
+        case AnimationSweep::Sun:
+            return SUN_FROM_DEG + (SUN_TO_DEG - SUN_FROM_DEG) * t;
+        case AnimationSweep::Bias:
+            return logLerp(BIAS_FROM, BIAS_TO, t);
+        case AnimationSweep::MapSize:
+            return std::round(logLerp(MAP_FROM, MAP_TO, t));
+    }
+    return 0.0;
+}
+
+Animation::Animation(Session& session, const AnimationOptions& options)
+    : mSession(session), mOptions(options), mBase(session.settings()), mScene(session.scene()) {}
+
+void Animation::apply(int k) {
+    double v = animationSweepValue(mOptions, k);
+    LessonSettings s = mBase;
+    switch (mOptions.sweep) {
+        case AnimationSweep::Light:
+            mSession.setShadowFit(shimmerShadowFit(shadowClipFromWorld(mScene), s.mapSize,
+                                                   k % SHIMMER_STEPS, mOptions.snap));
+            break;
+        case AnimationSweep::Camera:
+            mSession.setCamera(cameraSlidByPixels(
+                mScene.camera, static_cast<int>(mSession.layout().scene.h), static_cast<float>(v)));
+            break;
+        case AnimationSweep::Sun: {
+            Light light = mScene.light;
+            light.directionWs = directionAtElevation(light.directionWs, static_cast<float>(v));
+            mSession.setLight(light);
+            break;
+        }
+        case AnimationSweep::Bias:
+            if (s.bias == BiasMode::None) s.bias = BiasMode::Constant;
+            s.constantBias = static_cast<float>(v);
+            break;
+        case AnimationSweep::MapSize:
+            s.mapSize = static_cast<int>(v);
+            break;
+    }
+    s.pixel = mSession.settings().pixel;
+    mSession.setSettings(s);
+}
+
+void Animation::composeFrame(int k) {
+    apply(k);
+    bool recorded = false;
+    // Called by compose() once the frame's lookup is traced: the point's value joins the curve
+    // before the trace is drawn.
+    auto record = [this, &recorded] {
+        if (recorded) return;
+        recorded = true;
+        const std::optional<Trace>& trace = mSession.trace();
+        mCurve.push_back(trace ? trace->visibility : -1.0f);
+        if (mOptions.compareMethod >= 0) {
+            std::optional<float> v =
+                mSession.visibilityWith(mOptions.compareMethod, mOptions.compareKernel);
+            mCompare.push_back(v ? *v : -1.0f);
+        }
+    };
+    if (mOptions.flicker) {
+        mSession.setFlickerTrace([this, record] {
+            record();
+            return flickerTrace();
+        });
+        mSession.compose();
+        mSession.setFlickerTrace({});
+    } else {
+        mSession.compose();
+    }
+    record();  // a chart step draws no trace; the curve still grows
+}
+
+FlickerTrace Animation::flickerTrace() const {
+    FlickerTrace t;
+    char title[96];
+    std::snprintf(title, sizeof title, "visibility at the ring   %s %.4g %s",
+                  std::string(animationSweepName(mOptions.sweep)).c_str(),
+                  animationSweepValue(mOptions, static_cast<int>(mCurve.size()) - 1),
+                  std::string(animationSweepUnit(mOptions.sweep)).c_str());
+    t.title = title;
+    t.frameCount = mOptions.frames;
+    auto curve = [](const std::vector<float>& values, const std::string& name, Colour colour) {
+        FlickerCurve c;
+        for (float v : values) c.values.push_back(std::max(v, 0.0f));
+        char label[96];
+        std::snprintf(label, sizeof label, "%-12s mean |dv| %.3f", name.c_str(),
+                      curveFlicker(c.values));
+        c.label = label;
+        c.colour = colour;
+        return c;
+    };
+    const LessonSettings& s = mSession.settings();
+    t.curves.push_back(curve(mCurve, methodLabel(s.method, s.kernel), FLICKER_MAIN_COLOUR));
+    if (mOptions.compareMethod >= 0) {
+        t.curves.push_back(curve(mCompare,
+                                 methodLabel(mOptions.compareMethod, mOptions.compareKernel),
+                                 FLICKER_COMPARE_COLOUR));
+    }
+    return t;
+}
+
+}  // namespace pcf

@@ -1,0 +1,72 @@
+// animation.h: a sweep played as a sequence of ordinary frames (DESIGN.md 8, "Motion"): the
+// lesson step's frame (or the scene alone) with one quantity swept from frame to frame, and a
+// flicker trace of the pinned point's visibility. `pcfscope animate` encodes the frames to MP4
+// and GIF (video/video_writer.h) and numbered PNGs. Every frame is an ordinary Session frame, so
+// the same settings give the same bytes run to run.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/session.h"
+
+namespace pcf {
+
+// What moves:
+//   light     the light's texel grid slid under the world 1/32 texel a frame (looping each
+//             texel), exactly as `stability`'s shimmer sweep (analysis/stability.h:
+//             shimmerShadowFit); with `snap`, snapped to whole texels (Valient's stable fit)
+//   camera    the camera slid right and up by 1/6 pixel a frame (stability's camera shimmer)
+//   sun       the light's elevation from 90 down to 2 degrees (acne arriving, per bias mode)
+//   bias      the constant bias from 0.0005 to 0.064, log steps (acne giving way to peter
+//             panning); a step with bias `none` gets `constant`
+//   map-size  the shadow map from 32 to 2048 texels a side, log steps (aliasing)
+enum class AnimationSweep { Light, Camera, Sun, Bias, MapSize };
+
+std::string_view animationSweepName(AnimationSweep sweep);
+std::optional<AnimationSweep> animationSweepFromName(std::string_view name);
+constexpr std::string_view ANIMATION_SWEEP_NAMES = "light, camera, sun, bias, map-size";
+
+struct AnimationOptions {
+    AnimationSweep sweep = AnimationSweep::Light;
+    int frames = 120;
+    bool snap = false;       // light: snap the creeping grid to whole texels
+    bool flicker = true;     // draw the flicker trace
+    int compareMethod = -1;  // the trace's second curve; -1: none
+    int compareKernel = 3;
+};
+
+// The swept quantity at frame k of `frames`: texels of slide, pixels of slide, degrees of
+// elevation, constant bias or map texels. Its unit in words: animationSweepUnit.
+double animationSweepValue(const AnimationOptions& o, int k);
+std::string_view animationSweepUnit(AnimationSweep sweep);
+
+// Drives a Session through a sweep. Construct after the session has its lesson, step and frame
+// size: the step's settings, light, camera and fit are the sweep's starting point.
+class Animation {
+  public:
+    Animation(Session& session, const AnimationOptions& options);
+    // Puts frame k's state on the session, composes it and records the pinned point's
+    // visibility (and the comparison's) for the flicker trace drawn in this and later frames.
+    void composeFrame(int k);
+    // The pinned point's visibility per composed frame (the curve of the flicker trace): the
+    // method on screen, and the comparison (empty without one). -1 where the point is not on a
+    // receiver in that frame.
+    const std::vector<float>& curve() const { return mCurve; }
+    const std::vector<float>& compareCurve() const { return mCompare; }
+
+  private:
+    void apply(int k);
+    FlickerTrace flickerTrace() const;
+
+    Session& mSession;
+    AnimationOptions mOptions;
+    LessonSettings mBase;
+    Scene mScene;
+    std::vector<float> mCurve;
+    std::vector<float> mCompare;
+};
+
+}  // namespace pcf

@@ -1,0 +1,215 @@
+// pcfscope animate: a lesson step with one quantity swept across the frames (app/animation.h),
+// as MP4 (H.264), animated GIF and numbered PNGs, headless. Videos are encoded into a scratch
+// folder beside their final names and moved there only when complete, so an error, a full disk
+// or Ctrl-C leaves no half video; PNGs are taken back like `export`'s.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/animation.h"
+#include "app/cli_util.h"
+#include "app/commands.h"
+#include "app/export.h"
+#include "app/output_files.h"
+#include "app/session.h"
+#include "kernel/methods.h"
+#include "kernel/settings.h"
+#include "render/gl_context.h"
+#include "render/image_io.h"
+#include "video/video_writer.h"
+
+namespace pcf {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct AnimateOptions {
+    std::string lesson;
+    int step = 1;
+    std::string sweep = "light";
+    bool snap = false;
+    int frames = 120;
+    int fps = 12;
+    std::string size = "1280x720";
+    bool presentation = false;
+    bool sceneOnly = false;
+    bool noTrace = false;
+    std::string compare = "auto";
+    int compareKernel = 3;
+    std::vector<std::string> videos;
+    std::string pngDir;
+    bool force = false;
+};
+
+// The comparison curve's method: a method id, or -1 for none. auto: nearest (the hard edge every
+// filter is measured against), or pcf-gather 3 when the step's method is nearest.
+int compareMethodOf(const AnimateOptions& o, const LessonSettings& step) {
+    if (o.compare == "none") return -1;
+    if (o.compare == "auto") return step.method == PCF_NEAREST ? PCF_GATHER : PCF_NEAREST;
+    std::optional<int> m = methodFromName(o.compare);
+    if (!m) {
+        throw UsageError("--compare: unknown method '" + o.compare + "' (known: auto, none, " +
+                         methodNameList() + ")");
+    }
+    if (!kernelFits(*m, o.compareKernel)) {
+        throw UsageError("--compare-kernel " + std::to_string(o.compareKernel) + ": " + o.compare +
+                         " takes " + kernelSizesText(*m));
+    }
+    return *m;
+}
+
+struct VideoOut {
+    fs::path final;
+    VideoFormat format;
+    std::unique_ptr<StagingDir> staging;
+    std::unique_ptr<VideoWriter> writer;
+};
+
+void progressBar(int done, int total, double seconds) {
+    constexpr int WIDTH = 30;
+    int filled = done * WIDTH / total;
+    std::string bar(static_cast<size_t>(filled), '#');
+    bar.append(static_cast<size_t>(WIDTH - filled), '.');
+    std::fprintf(stderr, "\ranimate [%s] %d/%d  %.1f frames/s", bar.c_str(), done, total,
+                 seconds > 0.0 ? done / seconds : 0.0);
+    if (done == total) std::fprintf(stderr, "\n");
+}
+
+// Checks every output before any work and opens the videos under their scratch names.
+std::vector<VideoOut> planVideos(OutputFiles& outputs, const AnimateOptions& o, glm::ivec2 size) {
+    std::vector<VideoOut> videos;
+    for (const std::string& v : o.videos) {
+        std::optional<VideoFormat> format = videoFormatFromPath(v);
+        if (!format) throw UsageError("-o " + v + ": a video ends in .mp4 or .gif");
+        if (auto problem = videoSizeProblem(*format, size.x, size.y)) {
+            throw UsageError("--size " + o.size + ": " + *problem);
+        }
+        outputs.add("-o", v);
+        videos.push_back({fs::path(v), *format, nullptr, nullptr});
+    }
+    for (VideoOut& v : videos) {
+        fs::path dir = v.final.parent_path().empty() ? fs::path(".") : v.final.parent_path();
+        // Known to the interrupt cleanup, which removes the scratch folder made in it below.
+        outputs.addDirectory("-o", dir);
+        v.staging = std::make_unique<StagingDir>(dir, "animate");
+        v.writer = std::make_unique<VideoWriter>(v.staging->path() / v.final.filename(), v.format,
+                                                 size.x, size.y, o.fps);
+    }
+    return videos;
+}
+
+std::vector<std::string> planPngs(OutputFiles& outputs, const AnimateOptions& o,
+                                  const std::string& stem) {
+    std::vector<std::string> pngs;
+    if (o.pngDir.empty()) return pngs;
+    outputs.addDirectory("--png", o.pngDir);
+    for (int k = 0; k < o.frames; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "-%04d.png", k + 1);
+        pngs.push_back((fs::path(o.pngDir) / (stem + name)).string());
+        outputs.add("--png", pngs.back());
+    }
+    return pngs;
+}
+
+int runAnimate(AnimateOptions o) {
+    glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE, MIN_SESSION_SIZE);
+    std::optional<AnimationSweep> sweep = animationSweepFromName(o.sweep);
+    if (!sweep) {
+        throw UsageError("--sweep: unknown sweep '" + o.sweep +
+                         "' (known: " + std::string(ANIMATION_SWEEP_NAMES) + ")");
+    }
+    requireIntRange("--frames", o.frames, 2, 3600);
+    requireIntRange("--fps", o.fps, 1, 60);
+    std::string path = resolveLesson(o.lesson);
+    Lesson lesson = loadLessonChecked(path);
+    requireIntRange("--step", o.step, 1, static_cast<int>(lesson.steps.size()));
+    int compare = compareMethodOf(o, lesson.steps[static_cast<size_t>(o.step - 1)].settings);
+    std::string stem = frameStem(lesson.name, o.step) + "-" + o.sweep;
+    if (o.videos.empty() && o.pngDir.empty())
+        o.videos.push_back("pcfscope-frames/" + stem + ".mp4");
+
+    OutputFiles outputs(o.force);
+    outputs.addInput("LESSON", path);
+    std::vector<std::string> pngs = planPngs(outputs, o, stem);
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    std::vector<VideoOut> videos = planVideos(outputs, o, size);
+
+    Session session(size, o.presentation);
+    session.loadLesson(path);
+    session.goToStep(o.step - 1);
+    session.setSceneOnly(o.sceneOnly);
+    AnimationOptions ao;
+    ao.sweep = *sweep;
+    ao.frames = o.frames;
+    ao.snap = o.snap;
+    ao.flicker = !o.noTrace;
+    ao.compareMethod = compare;
+    ao.compareKernel = o.compareKernel;
+    Animation animation(session, ao);
+
+    auto start = std::chrono::steady_clock::now();
+    for (int k = 0; k < o.frames; ++k) {
+        animation.composeFrame(k);
+        std::vector<uint8_t> rgba = session.readFrame();
+        for (VideoOut& v : videos) v.writer->addFrame(rgba);
+        if (!pngs.empty()) writePngRgba8(pngs[static_cast<size_t>(k)], size.x, size.y, rgba);
+        progressBar(
+            k + 1, o.frames,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::vector<std::pair<fs::path, fs::path>> moves;
+    double encode = 0.0;
+    for (VideoOut& v : videos) {
+        v.writer->finish();
+        encode += v.writer->encodeSeconds();
+        moves.emplace_back(v.staging->path() / v.final.filename(), v.final);
+    }
+    outputs.commitMoves(moves);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(
+        stderr, "animate: %d frames of %dx%d in %.2f s (%.1f frames/s; encoding %.2f s, %.0f %%)\n",
+        o.frames, size.x, size.y, seconds, o.frames / seconds, encode, 100.0 * encode / seconds);
+    for (const VideoOut& v : videos) std::printf("%s\n", v.final.string().c_str());
+    if (!o.pngDir.empty()) std::printf("%s\n", o.pngDir.c_str());
+    return 0;
+}
+
+}  // namespace
+
+Command addAnimateCommand(CLI::App& app) {
+    auto o = std::make_shared<AnimateOptions>();
+    CLI::App* sub = app.add_subcommand(
+        "animate", "a lesson step with one quantity swept: MP4, GIF and numbered PNGs, no display");
+    sub->add_option("lesson", o->lesson, "lesson: a .toml path, a number, or a built-in name")
+        ->required();
+    sub->add_option("--step", o->step, "the lesson step animated (default 1)");
+    sub->add_option("--sweep", o->sweep,
+                    "what moves: light (texel grid creeping 1/32 texel a frame), camera (1/6 pixel "
+                    "a frame), sun (90 -> 2 deg), bias (0.0005 -> 0.064), map-size (32 -> 2048)");
+    sub->add_flag("--snap", o->snap, "light: the creeping grid snapped to whole texels");
+    sub->add_option("--frames", o->frames, "frames (default 120)");
+    sub->add_option("--fps", o->fps, "frames per second of the videos (default 12)");
+    sub->add_option("--size", o->size, "frame size WxH (default 1280x720; even for MP4)");
+    sub->add_flag("--presentation", o->presentation, "presentation mode's type and lines");
+    sub->add_flag("--scene-only", o->sceneOnly, "the scene alone, without the inspector");
+    sub->add_flag("--no-trace", o->noTrace, "no flicker trace");
+    sub->add_option(
+        "--compare", o->compare,
+        "the flicker trace's second method (default auto: nearest, or pcf-gather 3 when the step's "
+        "method is nearest; none: no second curve)");
+    sub->add_option("--compare-kernel", o->compareKernel, "its kernel size (default 3)");
+    sub->add_option(
+        "-o,--out", o->videos,
+        "video files, .mp4 and/or .gif (default pcfscope-frames/LESSON-stepNN-SWEEP.mp4)");
+    sub->add_option("--png", o->pngDir, "also write the frames as numbered PNGs into this folder");
+    sub->add_flag("-f,--force", o->force, "overwrite existing files");
+    return {sub, [o] { return runAnimate(*o); }};
+}
+
+}  // namespace pcf

@@ -1,0 +1,78 @@
+// session_motion.cpp: the parts of Session that animations use (session.h, "Motion"): the scene's
+// light and camera moved between frames, the shadow fit given from outside, the scene-only
+// frame and the flicker trace.
+#include <algorithm>
+#include <cmath>
+
+#include "app/session.h"
+
+namespace pcf {
+
+void Session::setLight(const Light& light) {
+    mLesson.scene.light = light;
+    if (mRenderer) mRenderer->setLight(light);
+    mRendered.reset();  // a new light is a new map
+    mSceneDirty = true;
+}
+
+void Session::setCamera(const Camera& camera) {
+    mLesson.scene.camera = camera;
+    if (mRenderer) mRenderer->setCamera(camera);
+    mSceneDirty = true;
+    // A moving camera keeps its pixel, not its scene point: the pick becomes the point under the
+    // same pixel of the moved view (what a student watching that pixel sees change).
+    if (mPoint) setPixel(mPixel);
+}
+
+void Session::setShadowFit(const std::optional<glm::mat4>& shadowClipFromWorld) {
+    if (shadowClipFromWorld == mShadowFit) return;
+    mShadowFit = shadowClipFromWorld;
+    mRendered.reset();
+    mSceneDirty = true;
+}
+
+void Session::setSceneOnly(bool on) {
+    if (on == mSceneOnly) return;
+    mSceneOnly = on;
+    glm::ivec2 size = mLayout.frameSize;
+    mLayout.frameSize = glm::ivec2(0);  // setFrameSize lays the frame out again
+    setFrameSize(size);
+}
+
+std::optional<float> Session::visibilityWith(int method, int kernel) const {
+    if (!mTrace) return std::nullopt;
+    LessonSettings s = mSettings;
+    s.method = method;
+    s.kernel = kernel;
+    PcfParams prm = s.pcfParams(glm::vec2(mLookup.x, mLookup.y), mMap.width());
+    glm::vec2 uv(mLookup.x, mLookup.y);
+    return traceLookup(mMap, uv, mLookup.z, mLookupRef, prm, mLookupBias).visibility;
+}
+
+// The scene over the whole frame, the pinned point ringed, and the flicker trace when set.
+void Session::composeSceneOnly(GLuint fbo) {
+    mTarget = fbo;
+    glm::ivec2 frame = mLayout.frameSize;
+    glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
+    glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, frame.x, frame.y, 0, 0,
+                           frame.x, frame.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    mBoxes.clear();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    mCanvas.begin(frame);
+    float r = std::max(6.0f, std::round(frame.y / 90.0f));
+    glm::vec2 centre = glm::vec2(mPixel) + 0.5f;
+    mCanvas.ring(centre, r + 1.0f, 3.0f, {0.0f, 0.0f, 0.0f, 0.8f});
+    mCanvas.ring(centre, r, 1.5f, FLICKER_MAIN_COLOUR);
+    if (mFlicker) drawFlicker();
+    mCanvas.flush();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Session::drawFlicker() {
+    // The numbers' floor in presentation mode (18 px), scaled type otherwise.
+    float textPx = mPresentation ? 18.0f : std::max(12.0f, std::round(14.0f * mLayout.scale));
+    if (mSceneOnly) textPx = std::max(12.0f, std::round(mLayout.frameSize.y / 48.0f));
+    drawFlickerTrace(mCanvas, flickerTraceRect(mLayout.scene, textPx), mFlicker(), textPx);
+}
+
+}  // namespace pcf

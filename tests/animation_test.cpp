@@ -1,0 +1,178 @@
+// Animation and `pcfscope animate`: frames that are the same bytes run to run, videos FFmpeg
+// reads back with the right size and frame count, and the flicker trace's curve being exactly
+// what `stability` measures: the flicker of the pinned point's curve, computed through the
+// animation's path (Session frames), equals the stability sweep's light_pinned_flicker.
+#include "app/animation.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "analysis/failure_measures.h"
+#include "analysis/stability.h"
+#include "render/gl_context.h"
+#include "run_command.h"
+#include "video_read.h"
+
+namespace pcf {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string LESSON =
+    std::string(PCFSCOPE_SOURCE_DIR) + "/lessons/13-shimmer-and-snapping.toml";
+
+// The stability row of `metric` for one method, or -1.
+double rowValue(const StabilityResult& r, int method, const std::string& metric) {
+    for (const StabilityRow& row : r.rows) {
+        if (row.method == method && row.metric == metric) return row.y;
+    }
+    return -1.0;
+}
+
+TEST(Animation, FlickerTraceIsTheStabilityCurveOfThePinnedPoint) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    const glm::ivec2 size{320, 180};
+    Session session(size, false);
+    session.loadLesson(LESSON);
+    session.goToStep(1);  // nearest
+    session.setSceneOnly(true);
+    // A ground pixel by the box's shadow edge that the creeping grid flips.
+    session.setPixel({181, 90});
+    const LessonSettings base = session.settings();
+    ASSERT_EQ(base.method, PCF_NEAREST);
+
+    StabilityOptions o;
+    o.sweeps = {Sweep::Shimmer};
+    o.methods = {{PCF_NEAREST, 0}, {PCF_GATHER, 3}};
+    o.biases = {base.bias};
+    o.base = renderSettingsFor(base, size);
+    o.frameSize = size;
+    o.mapSize = base.mapSize;
+    o.truthSpp = 1;
+    o.cameraFrames = 1;
+    o.pinnedPixel = session.pixel();
+    StabilityContext sc;
+    sc.scene = &session.scene();
+    StabilityResult stability = runStability(sc, o);
+
+    for (bool snap : {false, true}) {
+        session.goToStep(1);
+        session.setPixel(*o.pinnedPixel);
+        AnimationOptions ao;
+        ao.sweep = AnimationSweep::Light;
+        ao.frames = o.shimmerFrames;
+        ao.snap = snap;
+        ao.compareMethod = PCF_GATHER;
+        ao.compareKernel = 3;
+        Animation animation(session, ao);
+        for (int k = 0; k < ao.frames; ++k) animation.composeFrame(k);
+        ASSERT_EQ(animation.curve().size(), static_cast<size_t>(ao.frames));
+        for (float v : animation.curve()) ASSERT_GE(v, 0.0f) << "the point is on a receiver";
+        std::string metric = snap ? "snapped_pinned_flicker" : "light_pinned_flicker";
+        double nearest = rowValue(stability, PCF_NEAREST, metric);
+        double gather = rowValue(stability, PCF_GATHER, metric);
+        ASSERT_GE(nearest, 0.0) << metric;
+        EXPECT_NEAR(curveFlicker(animation.curve()), nearest, 1e-4) << metric;
+        EXPECT_NEAR(curveFlicker(animation.compareCurve()), gather, 1e-4) << metric;
+        // And the curves themselves, frame by frame.
+        std::string curveMetric = snap ? "snapped_pinned_visibility" : "light_pinned_visibility";
+        int compared = 0;
+        for (const StabilityRow& row : stability.rows) {
+            if (row.metric != curveMetric) continue;
+            ++compared;
+            const std::vector<float>& curve =
+                row.method == PCF_NEAREST ? animation.curve() : animation.compareCurve();
+            size_t t = static_cast<size_t>(row.x);
+            ASSERT_LT(t, curve.size());
+            EXPECT_NEAR(curve[t], row.y, 1e-4)
+                << curveMetric << " " << row.method << " frame " << t;
+        }
+        EXPECT_EQ(compared, 2 * ao.frames) << "both methods' curves, every frame";
+        if (!snap) {
+            // The point does flicker under the creeping grid: the comparison is not of zeros.
+            EXPECT_GT(nearest, 0.01);
+            EXPECT_GT(gather, 0.0);
+        }
+    }
+}
+
+TEST(AnimateCommand, FramesAreTheSameBytesRunToRunAndVideosReadBack) {
+    fs::path dir = testutil::makeTempDir("animate");
+    std::string common = "animate 13 --step 2 --sweep light --frames 3 --size 320x180 ";
+    for (const char* run : {"a", "b"}) {
+        std::string d = (dir / run).string();
+        testutil::CommandResult r = testutil::runPcfscope(common + "--png " + d + "/png -o " + d +
+                                                          "/clip.mp4 -o " + d + "/clip.gif");
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_NE(r.err.find("3/3"), std::string::npos) << "a progress bar: " << r.err;
+    }
+    for (int k = 1; k <= 3; ++k) {
+        std::string name =
+            "png/13-shimmer-and-snapping-step02-light-000" + std::to_string(k) + ".png";
+        ASSERT_TRUE(fs::exists(dir / "a" / name)) << name;
+        EXPECT_EQ(testutil::readAll(dir / "a" / name), testutil::readAll(dir / "b" / name)) << name;
+    }
+    EXPECT_NE(testutil::readAll(dir / "a/png/13-shimmer-and-snapping-step02-light-0001.png"),
+              testutil::readAll(dir / "a/png/13-shimmer-and-snapping-step02-light-0003.png"))
+        << "the frames move";
+    for (const char* clip : {"clip.mp4", "clip.gif"}) {
+        testutil::VideoInfo v = testutil::readVideo((dir / "a" / clip).string());
+        ASSERT_TRUE(v.opened) << clip;
+        EXPECT_EQ(v.width, 320) << clip;
+        EXPECT_EQ(v.height, 180) << clip;
+        EXPECT_EQ(v.frames, 3) << clip;
+    }
+    // No scratch folder is left beside the videos.
+    for (const auto& e : fs::directory_iterator(dir / "a")) {
+        EXPECT_EQ(e.path().filename().string().rfind(".pcfscope-", 0), std::string::npos)
+            << e.path();
+    }
+    fs::remove_all(dir);
+}
+
+TEST(AnimateCommand, CtrlCLeavesNoHalfVideoNorScratchFolder) {
+    fs::path dir = testutil::makeTempDir("animate");
+    fs::path out = dir / "out";
+    // Interrupted once the first PNG is written: the videos are then half encoded.
+    std::string script = "cd " + dir.string() + " && (" + PCFSCOPE_EXE +
+                         " animate 13 --frames 400 --size 320x180 -o out/v.mp4 -o out/v.gif "
+                         "--png out/png 2>err.txt >/dev/null & pid=$!; "
+                         "for i in $(seq 600); do ls out/png/*.png >/dev/null 2>&1 && break; "
+                         "sleep 0.05; done; kill -INT $pid; wait $pid; echo $? >rc.txt)";
+    ASSERT_EQ(std::system(script.c_str()), 0);
+    EXPECT_EQ(testutil::readAll(dir / "rc.txt"), "130\n") << testutil::readAll(dir / "err.txt");
+    EXPECT_FALSE(fs::exists(out)) << "the folder it made, with everything in it, is taken back";
+    fs::remove_all(dir);
+}
+
+TEST(AnimateCommand, BadInputIsOneLineAndLeavesNothing) {
+    fs::path dir = testutil::makeTempDir("animate");
+    std::string out = (dir / "new").string();
+    for (std::string args :
+         {"--sweep wobble", "--size 321x180", "--compare tent --compare-kernel 4", "--frames 1"}) {
+        testutil::CommandResult r =
+            testutil::runPcfscope("animate 13 " + args + " -o " + out + "/x.mp4");
+        EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
+        EXPECT_EQ(testutil::lineCount(r.err), 1) << args << ": " << r.err;
+        EXPECT_FALSE(fs::exists(out)) << args;
+    }
+    // An existing file is not overwritten unasked.
+    fs::create_directories(out);
+    {
+        std::ofstream keep(out + "/x.gif");
+        keep << "mine";
+    }
+    testutil::CommandResult r =
+        testutil::runPcfscope("animate 13 --frames 2 --size 320x180 -o " + out + "/x.gif");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(testutil::readAll(out + "/x.gif"), "mine");
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace pcf
