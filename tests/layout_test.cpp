@@ -170,11 +170,11 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                 // The pinned point's own lookup, as the session traces it (its pixel shows
                 // this very lookup: SceneRenderer::setPick), with the step's bias and fit.
                 std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
-                m.trace = point ? tracePinned(map, lesson.scene,
-                                              lessonShadowFit(lesson.scene, s, s.mapSize), s,
-                                              *point)
-                                : traceLookup(map, vec2(ls[0], ls[1]), ls[2] + s.depthBias(),
-                                              ls[2], s.pcfParams(vec2(ls[0], ls[1]), map.width()));
+                m.trace = point
+                              ? tracePinned(map, lesson.scene,
+                                            lessonShadowFit(lesson.scene, s, s.mapSize), s, *point)
+                              : traceLookup(map, vec2(ls[0], ls[1]), ls[2] + s.depthBias(), ls[2],
+                                            s.pcfParams(vec2(ls[0], ls[1]), map.width()));
                 StepContext ctx = makeStepContext(step, px);
                 m.stepText = fillText(step.text, *m.trace, ctx);
             } else {

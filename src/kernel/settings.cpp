@@ -1,12 +1,12 @@
 #include "kernel/settings.h"
 
-#include "kernel/sigma_limits.h"
-
 #include <algorithm>
 #include <cmath>
 #include <span>
 #include <sstream>
 #include <type_traits>
+
+#include "kernel/sigma_limits.h"
 
 namespace pcf {
 

@@ -30,8 +30,8 @@ namespace {
 
 // The keys a [settings] table and a [[step]] may set besides the parameter table's: the view's
 // (`pixel` only to be refused with what to write instead).
-constexpr std::string_view VIEW_KEYS[] = {"point", "pixel", "grid", "heatmap", "origin_shift",
-                                          "snap"};
+constexpr std::string_view VIEW_KEYS[] = {"point",   "pixel",        "grid",
+                                          "heatmap", "origin_shift", "snap"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));

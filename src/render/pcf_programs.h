@@ -19,7 +19,8 @@ namespace pcf {
 //   PCF_WEIGHTS                 PCF_WEIGHTS_*: pcf-naive's and pcf-gather's box or weighted path
 //   PCF_PRECISION               PCF_PRECISION_*: the texture unit's model (mapPrecision)
 //   PCF_FIXED_POINT             1 for a 16/24-bit depth map: D_ref clamped (mapFixedPoint)
-//   PCF_ROTATE_PER_PIXEL        1: poisson's disk turned per lookup, by its texel (pcfTexelRotation)
+//   PCF_ROTATE_PER_PIXEL        1: poisson's disk turned per lookup, by its texel
+//   (pcfTexelRotation)
 struct PcfVariant {
     int method = 0;
     int kernel = 3;
