@@ -45,6 +45,16 @@ glm::vec2 parseVec2(const std::string& option, const std::string& text) {
     return v;
 }
 
+glm::ivec2 parseIvec2(const std::string& option, const std::string& text) {
+    size_t comma = text.find(',');
+    glm::ivec2 v;
+    if (comma == std::string::npos || !parseInt(text.substr(0, comma), v.x) ||
+        !parseInt(text.substr(comma + 1), v.y)) {
+        throw UsageError(option + " expects two integers as X,Y, got '" + text + "'");
+    }
+    return v;
+}
+
 glm::ivec2 parseSize(const std::string& option, const std::string& text, int maxSide,
                      glm::ivec2 minSize) {
     size_t x = text.find('x');

@@ -32,6 +32,8 @@ glm::vec2 parseVec2(const std::string& option, const std::string& text);
 // "1280x720" -> (1280, 720); each side minSize..maxSide.
 glm::ivec2 parseSize(const std::string& option, const std::string& text, int maxSide,
                      glm::ivec2 minSize = glm::ivec2(1));
+// "12,34" -> (12, 34).
+glm::ivec2 parseIvec2(const std::string& option, const std::string& text);
 // Throws UsageError unless lo <= v <= hi and v is finite.
 void requireRange(const std::string& option, float v, float lo, float hi);
 // Throws UsageError ("--spp 0 is out of range (1..64)") unless lo <= v <= hi.

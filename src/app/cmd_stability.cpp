@@ -296,7 +296,7 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
     setup.mapSize = options.mapSize;
     setup.truthSpp = options.truthSpp;
     setup.constantBias = options.base.constantBias;
-    setup.cull = std::string(cullModeName(options.base.shadowCull));
+    setup.cull = std::string(cullModeName(options.base.cull));
     setup.depthFormat = std::string(depthFormatName(options.base.depthFormat));
     setup.precisionElevation = options.precisionElevation;
     setup.settings = settingsLine(options);
