@@ -216,15 +216,6 @@ radius = 0.5
                             "crescent");
 }
 
-void expectWithinBound(const Scene& scene, glm::ivec2 size, glm::ivec2 pixel) {
-    ExactCoverage exact(scene, size);
-    Exact e = exact.at(pixel);
-    GroundTruthPixel t = groundTruthAt(scene, size, pixel);
-    EXPECT_LE(std::abs(t.visibility - e.visibility), t.bound + REF_ERROR)
-        << size.x << "x" << size.y << " pixel (" << pixel.x << ", " << pixel.y << "): truth "
-        << t.visibility << " bound " << t.bound << " exact " << e.visibility;
-}
-
 // Finding 15 of issue 24: at the sphere's terminator, pixels read truth 1 with bound 0 where the
 // exact coverage was 0.9166: a sliver of the sphere's dark side along its silhouette that the
 // first pass's samples missed, in the pixel and in all 8 neighbours (so no rule on samples

@@ -118,7 +118,6 @@ void Animation::apply(int k) {
             s.mapSize = static_cast<int>(v);
             break;
     }
-    s.pixel = mSession.settings().pixel;
     mSession.setSettings(s);
 }
 
