@@ -56,6 +56,7 @@ TEST(Animation, FlickerTraceIsTheStabilityCurveOfThePinnedPoint) {
     o.truthSpp = 1;
     o.cameraFrames = 1;
     o.pinnedPixel = session.pixel();
+    o.pinnedJitter = session.jitter();  // the camera that shows the pinned point at that pixel
     StabilityContext sc;
     sc.scene = &session.scene();
     StabilityResult stability = runStability(sc, o);

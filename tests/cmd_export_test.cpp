@@ -33,7 +33,7 @@ scene = "box-on-plane"
 [settings]
 map_size = 128
 cull = "front"
-pixel = [700, 420]
+point = [0.9398, 0.0, 0.3514]
 [[step]]
 title = "Nearest"
 text = "texel {base.x},{base.y}: visibility = {visibility}"
@@ -42,7 +42,7 @@ method = "nearest"
 title = "Bilinear"
 text = "fx = {frac.x}, fy = {frac.y}, visibility = {visibility}"
 method = "bilinear2x2"
-pixel = [608, 300]  # on the box shadow's edge: lit and shadowed texels
+point = [0.4370, 0.7305, 0.3479]  # on the box shadow's edge: lit and shadowed texels
 [[step]]
 title = "Gather"
 text = "{texels} texels, {gathers} gathers, visibility = {visibility}"

@@ -92,6 +92,11 @@ TEST_F(Heatmap, ItsValuesAreTheAliasingMeasureAndFollowTheMapSize) {
     // The same measure the stability sweep takes from the same light-space target.
     SceneRenderer renderer(session.lesson().scene);
     RenderSettings r = renderSettingsFor(s, scene);
+    // The camera as the session set it for its pinned point (a sub-pixel jitter).
+    ASSERT_TRUE(session.point());
+    renderer.setPick(cameraPickOf(session.lesson().scene,
+                                  lessonShadowFit(session.lesson().scene, s, s.mapSize), s,
+                                  *session.point(), scene));
     renderer.render(r);
     std::vector<float> direct = pixelsPerTexel(renderer.readLightSpace(), scene, 256);
     EXPECT_EQ(direct, at256);

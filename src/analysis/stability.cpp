@@ -270,6 +270,11 @@ class Sweeper {
         ErrorRegions regions = regionsOf(renderer, truth);
         ShimmerPopulations pop = shimmerPopulations(scene, renderer, truth, regions);
         glm::mat4 fitted = renderer.shadowClipFromWorld();
+        // The frames with the pinned point's jitter (no pixel's lookup replaced: pixel -1).
+        if (mOptions.pinnedPixel && mOptions.pinnedJitter != glm::vec2(0.0f)) {
+            renderer.setPick(CameraPick{glm::ivec2(-1), mOptions.pinnedJitter, glm::vec4(0.0f),
+                                        glm::vec2(0.0f)});
+        }
         for (bool snap : {false, true}) {
             say(std::string("shimmer: the light's texel grid slid in 1/32 texel steps") +
                 (snap ? ", snapped to whole texels" : ""));

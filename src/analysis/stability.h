@@ -114,6 +114,10 @@ struct StabilityOptions {
     // the curve itself, one row per frame (x = frame): light_pinned_visibility and
     // snapped_pinned_visibility.
     std::optional<glm::ivec2> pinnedPixel;
+    // The camera's sub-pixel jitter for the shimmer frames when pinnedPixel is set: a viewer's
+    // pinned point sits on its pixel's centre under that jitter (app/session.h: Session::jitter),
+    // so the pixel's curve is the point's. 0: the plain camera (`--pixel` on the command line).
+    glm::vec2 pinnedJitter{0.0f};
 };
 
 // The shimmer sweep's shadow fit for frame t: the scene's fit (`fitted`) shrunk by 2 texels a

@@ -14,6 +14,7 @@
 #include "base/memory_budget.h"
 #include "kernel/methods.h"
 #include "kernel/trace_json.h"
+#include "lesson/lesson_pick.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "render/scene_renderer.h"
@@ -36,6 +37,9 @@ struct LessonRender {
     std::string chart;  // the chart's name, without its '#' fragment
     std::optional<LessonStep> chartStep;
     std::optional<glm::mat4> fit;
+    // The step's pinned point where the frame shows it, as the viewer and export render it: the
+    // camera's sub-pixel jitter and the point's own lookup at its pixel (lesson_pick.h).
+    std::optional<CameraPick> pick;
 };
 
 // The lesson's step (-o writes its chart, as `export` shows it in the scene's place; --raw
@@ -50,6 +54,9 @@ LessonRender lessonRenderOf(const RenderCommandOptions& o, const RenderSettings&
     const LessonStep& step = lesson.steps[static_cast<size_t>(o.render.lessonStep - 1)];
     // The step's texel grid (origin_shift, snap), as the viewer and export render it.
     out.fit = lessonShadowFit(lesson.scene, step.settings, settings.mapSize);
+    if (std::optional<ScenePoint> point = stepPoint(lesson.scene, step.settings)) {
+        out.pick = cameraPickOf(lesson.scene, *out.fit, step.settings, *point, settings.frameSize);
+    }
     if (!step.chart.empty()) {
         out.chartStep = step;
         out.chart = step.chart.substr(0, step.chart.rfind('#'));
@@ -141,6 +148,7 @@ int runRender(const RenderCommandOptions& o) {
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(scene);
     if (lesson.fit) renderer.setShadowClipFromWorld(*lesson.fit);
+    renderer.setPick(lesson.pick);
     renderer.render(settings);
     if (o.verbose)
         std::fprintf(stderr, "pcfscope: rendered on %s\n", context->description().c_str());

@@ -505,6 +505,16 @@ void Session::blitChart(const InspectorLayout& layout) {
                            x + size.x, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
+std::optional<CameraPick> cameraPickOf(const Scene& scene, const glm::mat4& shadowFit,
+                                       const LessonSettings& s, const ScenePoint& point,
+                                       glm::ivec2 frameSize) {
+    FramePick at = framePick(scene.camera, point.posWs, frameSize);
+    if (!at.inFrame) return std::nullopt;
+    PinnedLookup lookup = pinnedLookup(scene, shadowFit, s, point);
+    glm::ivec2 gl(at.pixel.x, frameSize.y - 1 - at.pixel.y);
+    return CameraPick{gl, at.jitterNdc, glm::vec4(lookup.uv, lookup.ref, lookup.z0), lookup.dzduv};
+}
+
 void Session::renderScene() {
     RenderSettings r = renderSettingsFor(mSettings, glm::ivec2(mLayout.scene.size()));
     // An animation's fit (setShadowFit), else the lesson's.

@@ -73,6 +73,13 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
 // its texel grid slid by `origin_shift` and snapped with `snap` (scene/light.h:
 // shiftShadowOrigin), for a map of `mapSize` texels. The viewer, export and `render --lesson`
 // all render with it (SceneRenderer::setShadowClipFromWorld).
+// How the camera pass shows a scene point in a frame of frameSize, as the session renders a
+// step: the camera's sub-pixel jitter that centres the point on its pixel and the point's own
+// lookup there (lesson_pick.h, SceneRenderer::setPick); nullopt when the frame does not show it.
+std::optional<CameraPick> cameraPickOf(const Scene& scene, const glm::mat4& shadowFit,
+                                       const LessonSettings& s, const ScenePoint& point,
+                                       glm::ivec2 frameSize);
+
 glm::mat4 lessonShadowFit(const Scene& scene, const LessonSettings& s, int mapSize);
 
 // The smallest frame the scene view and the inspector fit into side by side.
@@ -102,6 +109,8 @@ class Session {
     void setPixel(glm::ivec2 scenePixel);
     // The pinned scene point; nullopt when the pick is on no surface.
     const std::optional<ScenePoint>& point() const { return mPoint; }
+    // The camera's sub-pixel shift (ndc) that centres the pinned point on pixel().
+    glm::vec2 jitter() const { return mJitter; }
     // Whether the frame shows the scene: a chart step shows its chart there instead (and in
     // presentation mode over the inspector's room too).
     bool sceneShown() const;
