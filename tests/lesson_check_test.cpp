@@ -44,6 +44,29 @@ TEST_F(LessonCheck, EveryShippedLessonHolds) {
     }
 }
 
+// The worked example of docs/lesson-authoring.md (its first ```toml block) is a lesson whose
+// claims hold: an author who copies it starts from something that passes.
+TEST_F(LessonCheck, TheAuthoringGuidesWorkedExampleHolds) {
+    std::ifstream doc(PCFSCOPE_SOURCE_DIR "/docs/lesson-authoring.md");
+    ASSERT_TRUE(doc);
+    std::string example;
+    bool inside = false;
+    for (std::string line; std::getline(doc, line);) {
+        if (!inside && line == "```toml") {
+            inside = true;
+        } else if (inside && line == "```") {
+            break;
+        } else if (inside) {
+            example += line + "\n";
+        }
+    }
+    ASSERT_NE(example.find("claims"), std::string::npos) << "the example states claims";
+    std::string path = (mDir / "example.toml").string();
+    std::ofstream(path) << example;
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+}
+
 TEST_F(LessonCheck, AFalseClaimFailsAtItsLine) {
     std::string path = write(
         "claims = [\"{taps} = 1\",\n"       // 9: holds
