@@ -72,18 +72,22 @@ struct Checker {
     // The step's claims on its lookup under settings s (after `key`, when not empty).
     void checkState(size_t index, const LessonStep& step, const LessonSettings& s,
                     const std::string& key, const ScenePoint& point) {
-        glm::mat4 fit = lessonShadowFit(lesson.scene, s, s.mapSize);
+        // The sun as the keys (U, T) moved it (lesson_pick.h: lessonLight), as the viewer shows it.
+        Scene scene = lesson.scene;
+        scene.light = lessonLight(lesson.scene.light, s);
+        renderer.setLight(scene.light);
+        glm::mat4 fit = lessonShadowFit(scene, s, s.mapSize);
         renderer.setShadowClipFromWorld(fit);
         renderer.renderShadowPass(renderSettingsFor(s, {64, 64}));
         ShadowMap map = renderer.readShadowMap();
-        Trace trace = tracePinned(map, lesson.scene, fit, s, point);
+        Trace trace = tracePinned(map, scene, fit, s, point);
         StepContext ctx = makeStepContext(step);
         ctx.bias = s.bias;
         ctx.constantBias = s.constantBias;
         ctx.cull = s.cull;
         ctx.depthFormat = s.depthFormat;
         ctx.originShift = s.originShift;
-        ctx.lightAngleDeg = lightAngleDeg(lesson.scene, point);
+        ctx.lightAngleDeg = lightAngleDeg(scene, point);
         ClaimWorld world = chartWorld(step);
         world.onPlane = std::holds_alternative<Plane>(
             lesson.scene.objects[static_cast<size_t>(point.object)].shape);

@@ -13,6 +13,7 @@
 #include "analysis/stability.h"
 #include "analysis/stability_figures.h"
 #include "analysis/stability_report.h"
+#include "app/animation.h"
 #include "app/cli_util.h"
 #include "app/frame_json.h"
 #include "app/step_words.h"
@@ -30,9 +31,14 @@ namespace pcf {
 
 namespace {
 
-std::string statusLine(const LessonSettings& s, glm::ivec2 sceneSize, double frameTimeMs) {
+// The state, what the keys changed from the step's (`changed`: changedSettings), the scene's
+// size and the frame time.
+std::string statusLine(const LessonSettings& s, const std::vector<std::string>& changed,
+                       glm::ivec2 sceneSize, double frameTimeMs) {
     std::ostringstream line;
-    line << settingsSummary(s) << "   scene " << sceneSize.x << "x" << sceneSize.y;
+    line << settingsSummary(s);
+    for (size_t k = 0; k < changed.size(); ++k) line << (k == 0 ? "   keys: " : ", ") << changed[k];
+    line << "   scene " << sceneSize.x << "x" << sceneSize.y;
     if (frameTimeMs >= 0.0) {
         char buf[32];
         std::snprintf(buf, sizeof buf, "   %.1f ms", frameTimeMs);
@@ -219,6 +225,7 @@ Lesson loadLessonChecked(const std::string& path) {
                              "step " + std::to_string(i + 1) + " focus '" + step.focus +
                                  "' is not one of: " + focusNames());
         }
+        if (step.animate) stepAnimationOptions(step, path, static_cast<int>(i) + 1);  // checks
         if (step.chart.empty()) continue;
         try {
             ChartRef ref = chartRef(step.chart);
@@ -249,6 +256,8 @@ void Session::loadLesson(const std::string& path) {
     Lesson lesson = loadLessonChecked(path);
     mLesson = std::move(lesson);
     mRenderer = std::make_unique<SceneRenderer>(mLesson.scene);
+    mBaseLight = mLesson.scene.light;
+    mLitSun = glm::vec2(0.0f);
     mRendered.reset();
     mSceneDirty = true;
     goToStep(0);
@@ -305,6 +314,11 @@ void Session::setSettings(const LessonSettings& s) {
     // Moving the pixel re-traces without re-rendering.
     if (!samePicture(s, mSettings) || !mRendered) mSceneDirty = true;
     mSettings = s;
+    // The sun the keys moved (lesson_pick.h: lessonLight): a new light is a new map.
+    if (glm::vec2(s.sunTilt, s.sunTurn) != mLitSun) {
+        mLitSun = glm::vec2(s.sunTilt, s.sunTurn);
+        setLight(lessonLight(mBaseLight, s));
+    }
     // Keys changed what the step's words were written for (goToStep clears it).
     mStepEdited = !mLesson.steps.empty() &&
                   !sameForTheWords(s, mLesson.steps[static_cast<size_t>(mStep)].settings);
@@ -749,7 +763,10 @@ InspectorModel Session::model() const {
     m.lightSpaceOrigin = mLightSpaceOrigin;
     m.lightSpaceSize = mLightSpaceSize;
     m.sceneSize = scene;
-    m.status = statusLine(mSettings, scene, mFrameTimeMs);
+    m.status =
+        statusLine(mSettings, changedSettings(mLesson.steps[mStep].settings, mSettings, mBaseLight),
+                   scene, mFrameTimeMs);
+    m.markers = mMarkers;
     m.presentation = mPresentation;
     m.help = mHelp;
     m.showScene = chart.empty();

@@ -136,6 +136,10 @@ class Session {
     // scene pixels top-down, -1 where not measured; empty when the heat map is off.
     bool heatmap() const { return mHeatmap; }
     void setHeatmap(bool on) { mHeatmap = on; }
+    // The marks drawn over the scene (X): the pick's ring and label and the texel grid; off, the
+    // scene is seen as rendered (acne, stairs) with nothing on it. Stays as set across steps.
+    bool markers() const { return mMarkers; }
+    void setMarkers(bool on) { mMarkers = on; }
     const std::vector<float>& heatValues() const { return mHeatValues; }
     // Pages of the current step's text at this frame size (the last compose()'s count) and the
     // page shown. nextPage()/previousPage() move within the step's pages and return false at
@@ -215,6 +219,11 @@ class Session {
     bool mHelp = false;
     bool mGrid = true;
     bool mHeatmap = false;
+    bool mMarkers = true;
+    // The lesson scene's own light, and the sun (sunTilt, sunTurn) the light now has: the keys
+    // move the sun from the lesson's light (setSettings).
+    Light mBaseLight;
+    glm::vec2 mLitSun{0.0f};
     bool mHeatDirty = true;
     std::vector<float> mHeatValues;
     OffscreenTarget mHeat;           // the heat map, rows top-down, blitted over the scene

@@ -1,11 +1,13 @@
 #include "app/step_words.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "app/cli_util.h"
 #include "kernel/methods.h"
 #include "kernel/trace_explain.h"
 #include "lesson/lesson_keys.h"
+#include "lesson/lesson_pick.h"
 
 namespace pcf {
 
@@ -32,7 +34,32 @@ std::string settingsSummary(const LessonSettings& s) {
              << (s.snap ? " snapped" : "");
     }
     if (s.precision == PCF_PRECISION_HW8) line << "   hw8";
+    // The sun as the keys moved it from the scene's (U, T), in degrees.
+    if (s.sunTilt != 0.0f)
+        line << "   sun " << (s.sunTilt > 0.0f ? "+" : "") << formatNumber(s.sunTilt) << " deg";
+    if (s.sunTurn != 0.0f) line << "   sun turned " << formatNumber(s.sunTurn) << " deg";
     return line.str();
+}
+
+std::vector<std::string> changedSettings(const LessonSettings& step, const LessonSettings& live,
+                                         const Light& sceneLight) {
+    std::vector<std::string> changed;
+    for (const ParamInfo& p : allParams()) {
+        std::string now = settingText(p, live);
+        if (now != settingText(p, step)) changed.push_back(std::string(p.key) + " " + now);
+    }
+    if (live.originShift != step.originShift) {
+        changed.push_back("origin_shift " + formatNumber(live.originShift));
+    }
+    if (live.snap != step.snap) changed.push_back(live.snap ? "snap true" : "snap false");
+    if (live.sunTilt != step.sunTilt) {
+        float up = lightElevationDeg(lessonLight(sceneLight, live));
+        changed.push_back("sun " + formatNumber(std::round(up * 10.0f) / 10.0f) + " deg up");
+    }
+    if (live.sunTurn != step.sunTurn) {
+        changed.push_back("sun turned " + formatNumber(live.sunTurn - step.sunTurn) + " deg");
+    }
+    return changed;
 }
 
 std::string wordsForLiveState(const LessonStep& step, const LessonSettings& live,

@@ -5,17 +5,26 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_text.h"
+#include "scene/light.h"
 
 namespace pcf {
 
 // "pcf-gather N=3   bias constant 0.02   cull back   map 256 32f": the state, in the status
-// line's words.
+// line's words (with "sun -5 deg" when the keys moved the sun from the scene's).
 std::string settingsSummary(const LessonSettings& s);
+
+// Every setting of `live` that differs from the step's (`step`), as "key value" in the lesson
+// files' words ("constant_bias 0.005", "cull front"), in the parameter table's order, then the
+// map's grid (origin_shift, snap) and the sun ("sun 35 deg up", "sun turned 15 deg", from the
+// scene's light `sceneLight`). Empty when none does. The status line lists them.
+std::vector<std::string> changedSettings(const LessonSettings& step, const LessonSettings& live,
+                                         const Light& sceneLight);
 
 // The step's filled text (`text`) for the live settings: unchanged when they are the step's own
 // or a state its `keys` invite and every claim holds; withheld, with the live lookup instead,

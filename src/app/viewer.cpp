@@ -9,9 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 #include "app/cli_util.h"
@@ -19,9 +17,9 @@
 #include "app/output_files.h"
 #include "app/render_options.h"
 #include "app/session.h"
+#include "app/step_player.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
-#include "lesson/lesson_keys.h"
 #include "render/glfw_window_context.h"
 #include "render/image_io.h"
 
@@ -52,6 +50,7 @@ class Viewer {
         mSession.loadLesson(o.lesson);
         auto it = std::find(mLessons.begin(), mLessons.end(), o.lesson);
         mLessonIndex = it == mLessons.end() ? -1 : static_cast<int>(it - mLessons.begin());
+        mPlayer.afterChange();
     }
 
     Session& session() { return mSession; }
@@ -59,9 +58,19 @@ class Viewer {
 
     void press(KeyPress k) {
         bool shift = (k.mods & GLFW_MOD_SHIFT) != 0;
-        if (pressNavigation(k.key, shift)) return;
-        if (pressSetting(k.key, shift)) return;
-        pressView(k.key);
+        // An animation step's own keys (step_player.h) first; around the others the player
+        // puts the step's state back and shows its frame on the new one.
+        if (mPlayer.press(k)) return;
+        mPlayer.beforeChange();
+        bool handled = pressNavigation(k.key, shift) || pressLiveKey(mSession, k);
+        mPlayer.afterChange();
+        if (!handled) pressView(k.key);
+    }
+
+    // An animation step playing: its next frame when due; the seconds until the one after.
+    std::optional<double> tick() {
+        using namespace std::chrono;
+        return mPlayer.tick(duration<double>(steady_clock::now().time_since_epoch()).count());
     }
 
     void click(glm::dvec2 cursor) {
@@ -70,7 +79,11 @@ class Viewer {
         glfwGetWindowSize(mWindow.window(), &ww, &wh);
         glm::ivec2 fb = mWindow.framebufferSize();
         if (ww <= 0 || wh <= 0) return;
-        glm::vec2 p(cursor.x * fb.x / ww, cursor.y * fb.y / wh);
+        clickFrame(glm::vec2(cursor.x * fb.x / ww, cursor.y * fb.y / wh));
+    }
+
+    // A click at a frame pixel (a scripted `click:X,Y` too).
+    void clickFrame(glm::vec2 p) {
         // A chart step's chart covers the scene: a click on it picks nothing.
         if (!mSession.clickFrame(p)) return;
         // The scene point the click pinned, as a lesson's `point` key takes it (lesson.h).
@@ -151,44 +164,6 @@ class Viewer {
         }
     }
 
-    // The keys that change the lesson's settings (method, kernel, map, bias, precision, the
-    // map's fit). Returns whether `key` is one of them.
-    bool pressSetting(int key, bool shift) {
-        std::string name;
-        switch (key) {
-            case GLFW_KEY_O:
-            case GLFW_KEY_M:
-            case GLFW_KEY_B:
-                name = std::string(shift ? "Shift+" : "") + static_cast<char>(key);
-                break;
-            case GLFW_KEY_S:
-            case GLFW_KEY_Q:
-                name = std::string(1, static_cast<char>(key));
-                break;
-            case GLFW_KEY_LEFT_BRACKET:
-                name = "[";
-                break;
-            case GLFW_KEY_RIGHT_BRACKET:
-                name = "]";
-                break;
-            case GLFW_KEY_MINUS:
-            case GLFW_KEY_KP_SUBTRACT:
-                name = "-";
-                break;
-            case GLFW_KEY_EQUAL:
-            case GLFW_KEY_KP_ADD:
-                name = "+";
-                break;
-            default:
-                return false;
-        }
-        // One table of what each key does (lesson/lesson_keys.h), shared with `lesson check`.
-        std::optional<LessonSettings> s = settingsAfterKey(mSession.settings(), name);
-        if (!s) return false;
-        mSession.setSettings(*s);
-        return true;
-    }
-
     // The keys that toggle what the frame shows, export it, or go full screen.
     void pressView(int key) {
         switch (key) {
@@ -248,6 +223,7 @@ class Viewer {
 
     GlfwWindowContext& mWindow;
     Session mSession;
+    StepPlayer mPlayer{mSession};
     std::vector<std::string> mLessons;
     int mLessonIndex = -1;
     bool mQuit = false;
@@ -312,63 +288,6 @@ void composeToWindow(Session& session, GlfwWindowContext& window) {
 }
 
 }  // namespace
-
-KeyPress parseKeyName(const std::string& token) {
-    static const std::map<std::string, int> NAMES = {
-        {"space", GLFW_KEY_SPACE},
-        {"right", GLFW_KEY_RIGHT},
-        {"left", GLFW_KEY_LEFT},
-        {"up", GLFW_KEY_UP},
-        {"down", GLFW_KEY_DOWN},
-        {"home", GLFW_KEY_HOME},
-        {"end", GLFW_KEY_END},
-        {"backspace", GLFW_KEY_BACKSPACE},
-        {"escape", GLFW_KEY_ESCAPE},
-        {"esc", GLFW_KEY_ESCAPE},
-        {"left_bracket", GLFW_KEY_LEFT_BRACKET},
-        {"[", GLFW_KEY_LEFT_BRACKET},
-        {"right_bracket", GLFW_KEY_RIGHT_BRACKET},
-        {"]", GLFW_KEY_RIGHT_BRACKET},
-        {"minus", GLFW_KEY_MINUS},
-        {"-", GLFW_KEY_MINUS},
-        {"equal", GLFW_KEY_EQUAL},
-        {"plus", GLFW_KEY_EQUAL},
-        {"+", GLFW_KEY_EQUAL},
-        {"=", GLFW_KEY_EQUAL},
-    };
-    KeyPress k;
-    std::string name = token;
-    for (;;) {
-        size_t plus = name.find('+');
-        if (plus == std::string::npos || plus == 0 || plus + 1 == name.size()) break;
-        std::string mod = name.substr(0, plus);
-        std::transform(mod.begin(), mod.end(), mod.begin(), ::tolower);
-        if (mod == "shift")
-            k.mods |= GLFW_MOD_SHIFT;
-        else if (mod == "ctrl" || mod == "control")
-            k.mods |= GLFW_MOD_CONTROL;
-        else if (mod == "alt")
-            k.mods |= GLFW_MOD_ALT;
-        else
-            throw UsageError("--keys: unknown modifier '" + mod + "' in '" + token + "'");
-        name = name.substr(plus + 1);
-    }
-    std::string lower = name;
-    std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
-    if (auto it = NAMES.find(lower); it != NAMES.end()) {
-        k.key = it->second;
-    } else if (lower.size() == 1 && lower[0] >= 'a' && lower[0] <= 'z') {
-        k.key = GLFW_KEY_A + (lower[0] - 'a');
-        if (name[0] >= 'A' && name[0] <= 'Z') k.mods |= GLFW_MOD_SHIFT;
-    } else if (lower.size() == 1 && lower[0] >= '0' && lower[0] <= '9') {
-        k.key = GLFW_KEY_0 + (lower[0] - '0');
-    } else {
-        throw UsageError("--keys: unknown key '" + token +
-                         "' (GLFW names: space, right, m, "
-                         "shift+m, left_bracket ...)");
-    }
-    return k;
-}
 
 namespace {
 
@@ -451,16 +370,16 @@ void runInteractive(Viewer& viewer, GlfwWindowContext& window) {
                 .count();
         window.swapBuffers();
         session.setFrameTimeMs(ms);
-        glfwWaitEventsTimeout(0.25);
+        std::optional<double> due = viewer.tick();
+        glfwWaitEventsTimeout(due ? std::min(*due, 0.25) : 0.25);
+        if (due) viewer.tick();
     }
 }
 
 }  // namespace
 
 int runViewer(const ViewerOptions& o) {
-    std::vector<KeyPress> keys;
-    std::istringstream tokens(o.keys);
-    for (std::string t; tokens >> t;) keys.push_back(parseKeyName(t));
+    std::vector<ScriptedInput> keys = parseScriptedInput(o.keys);
     OutputFiles outputs(o.force);
     Lesson lesson = loadLessonChecked(o.lesson);  // bad lessons fail before a window opens
     // The screenshot may not be what the view reads (a link to the lesson or a chart), --force
@@ -476,11 +395,14 @@ int runViewer(const ViewerOptions& o) {
         GlfwWindowContext::create(o.windowSize.x, o.windowSize.y, "pcfscope", true);
     Viewer viewer(o, *window);
     InputBinding input(window->window(), viewer);
-    for (const KeyPress& k : keys) {
+    for (const ScriptedInput& k : keys) {
         // As on screen, where every key lands on a composed frame: the step's pages are known,
         // so Right turns to a step's page 2 before it moves on.
         viewer.session().compose();
-        viewer.press(k);
+        if (k.click)
+            viewer.clickFrame(*k.click);
+        else
+            viewer.press(k.key);
     }
 
     if (o.benchFrames > 0) {

@@ -5,12 +5,14 @@
 #include <glm/glm.hpp>
 #include <string>
 
+#include "app/live_keys.h"  // KeyPress, parseKeyName: the --keys names
+
 namespace pcf {
 
 struct ViewerOptions {
     std::string lesson;  // resolved path
     glm::ivec2 windowSize{1600, 900};
-    std::string keys;        // "right right m e": GLFW key names, space-separated
+    std::string keys;        // "right right m e click:400,300": key names and clicks (live_keys.h)
     std::string screenshot;  // write the frame after the keys, then quit
     bool presentation = false;
     bool force = false;   // the screenshot may overwrite
@@ -20,13 +22,5 @@ struct ViewerOptions {
 // Runs the window until Esc (or until the screenshot is written). Throws std::runtime_error
 // "no display: ..." when no window can be opened.
 int runViewer(const ViewerOptions& options);
-
-// One key as the viewer understands it, from a --keys token ("m", "shift+m", "space", "right",
-// "left_bracket" or "[", "minus" or "-", "equal" or "+"...); throws UsageError on unknown names.
-struct KeyPress {
-    int key = 0;   // GLFW_KEY_*
-    int mods = 0;  // GLFW_MOD_*
-};
-KeyPress parseKeyName(const std::string& token);
 
 }  // namespace pcf

@@ -118,7 +118,7 @@ class LessonParser {
             std::string what = "step " + std::to_string(i + 1);
             checkKeys(table, what,
                       {"title", "text", "chart", "chart_highlight", "highlight", "claims", "keys",
-                       "focus"});
+                       "focus", "animate"});
             applySettings(table, what, state, lines);
             lesson.steps.push_back(readStep(table, what, state, lines));
             // The step's own focus, else the lesson's (checked by the app: overlay/inspector.h).
@@ -162,6 +162,7 @@ class LessonParser {
         checkLength(*table.get("text"), what + " text", step.text, MAX_STEP_TEXT_CHARS);
         readChartKeys(table, what, step);
         readClaims(table, what, step);
+        readAnimation(table, what, step);
         step.settings = state;
         checkState(table, what, state, lines);
         checkText(*table.get("text"), what, step);
@@ -241,6 +242,50 @@ class LessonParser {
             step.keys.push_back(key);
             step.keysLine = lineOf(*node);
         }
+    }
+
+    // animate = { sweep = "sun", from = 90, to = 2, frames = 60, fps = 12, snap = false }.
+    void readAnimation(const toml::table& table, const std::string& what, LessonStep& step) const {
+        const toml::node* node = table.get("animate");
+        if (!node) return;
+        const toml::table* a = node->as_table();
+        if (!a) fail(*node, what + " animate must be a table ({ sweep = \"sun\", ... })");
+        std::string where = what + " animate";
+        for (auto&& [key, value] : *a) {
+            std::string_view k = key.str();
+            if (k == "sweep" || k == "from" || k == "to" || k == "frames" || k == "fps" ||
+                k == "snap") {
+                continue;
+            }
+            fail(value, where + " has unknown key '" + std::string(k) +
+                            "' (known: sweep, from, to, frames, fps, snap)");
+        }
+        StepAnimation anim;
+        anim.line = lineOf(*node);
+        anim.sweep = requireText(*a, "sweep", where, *a);
+        auto integer = [&](const char* key, int lo, int hi, int& out) {
+            const toml::node* n = a->get(key);
+            if (!n) return;
+            const auto* v = n->as_integer();
+            if (!v || v->get() < lo || v->get() > hi) {
+                fail(*n, where + " " + key + " must be a whole number in " + std::to_string(lo) +
+                             ".." + std::to_string(hi));
+            }
+            out = static_cast<int>(v->get());
+        };
+        integer("frames", 2, MAX_ANIMATION_FRAMES, anim.frames);
+        integer("fps", 1, 60, anim.fps);
+        for (const char* key : {"from", "to"}) {
+            if (const toml::node* n = a->get(key)) {
+                (key[0] == 'f' ? anim.from : anim.to) = number(*n, where + " " + key);
+            }
+        }
+        if (const toml::node* n = a->get("snap")) {
+            const auto* b = n->as_boolean();
+            if (!b) fail(*n, where + " snap must be true or false, got " + typeName(*n));
+            anim.snap = b->get();
+        }
+        step.animate = anim;
     }
 
   private:

@@ -96,6 +96,12 @@ struct LessonSettings : ShadowSettings {
     // O / Shift+O step s by 1/8 texel, S toggles snap). 0 and false: the plain fit.
     float originShift = 0.0f;  // origin_shift, texels
     bool snap = false;         // snap
+    // The sun moved from the scene's light by the viewer's keys (lesson_keys.h: U / Shift+U,
+    // T / Shift+T): degrees added to its elevation (kept within 1..90 degrees when applied) and
+    // to its compass heading (turned about the vertical). 0: the scene's light (lessonLight in
+    // lesson_pick.h applies them).
+    float sunTilt = 0.0f;
+    float sunTurn = 0.0f;
 
     // The kernel's parameters for a lookup at uv in a map of mapSize texels: the Poisson disk
     // turns with the texel looked up (pcfTexelRotation), as the shaders turn it.
@@ -113,6 +119,21 @@ struct StepClaim {
     int line = 0;  // its line in the lesson file
     std::shared_ptr<const ParsedClaim> parsed;
 };
+
+// `animate = { sweep = "sun", from = 90, to = 2, frames = 60 }`: the step plays as an animation
+// of its frame with one quantity swept (app/animation.h: the sweeps of `pcfscope animate`): the
+// viewer plays it, `export` writes it as LESSON-stepNN.mp4 beside the still. The sweep's name and
+// its from/to range are checked by the app (loadLessonChecked) at `line`.
+struct StepAnimation {
+    std::string sweep;           // light, camera, sun, bias, map-size
+    std::optional<double> from;  // the swept quantity's first value (sun, bias, map-size); nullopt:
+    std::optional<double> to;    // the sweep's own ends
+    int frames = 60;             // 2..MAX_ANIMATION_FRAMES
+    int fps = 12;                // 1..60, the video's and the viewer's playback rate
+    bool snap = false;           // light: the creeping grid snapped to whole texels
+    int line = 0;
+};
+constexpr int MAX_ANIMATION_FRAMES = 600;
 
 struct LessonStep {
     std::string title;
@@ -146,6 +167,8 @@ struct LessonStep {
     // (app/session.h: stepFocus).
     std::string focus;
     int focusLine = 0;
+    // `animate = {...}`: the step is an animation (StepAnimation). Not inherited.
+    std::optional<StepAnimation> animate;
 };
 
 // What a lesson may hold; more is refused with one line naming the limit. The lessons that ship

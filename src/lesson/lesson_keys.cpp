@@ -11,11 +11,63 @@ namespace pcf {
 namespace {
 
 // The next method (back: the previous), its kernel fitted to it; a bias the new method cannot
-// take (soft on hardware taps) falls back to constant.
+// take (soft on hardware taps) falls back to constant, weights it cannot take to box.
 void nextMethod(LessonSettings& s, bool back) {
     s.method = (s.method + (back ? PCF_METHOD_COUNT - 1 : 1)) % PCF_METHOD_COUNT;
     s.kernel = fitKernel(s.method, s.kernel);
     if (validateBias(static_cast<int>(s.bias), s.method)) s.bias = BiasMode::Constant;
+    if (!methodInfo(s.method).takesWeights) s.weights = PCF_WEIGHTS_BOX;
+}
+
+// The next step of `steps` above v (up) or below it (down), staying at the ends: a value between
+// two steps goes to the nearer one that way, so V then Shift+V returns to a step exactly.
+template <size_t N>
+float nextStep(const float (&steps)[N], float v, bool up) {
+    if (up) {
+        for (float step : steps) {
+            if (step > v) return step;
+        }
+        return steps[N - 1];
+    }
+    for (size_t k = N; k-- > 0;) {
+        if (steps[k] < v) return steps[k];
+    }
+    return steps[0];
+}
+
+// The settings keys that came with the live controls: the bias amount, the sun, the weights,
+// culling and the depth format. nullopt for another name.
+std::optional<LessonSettings> afterLiveKey(LessonSettings s, std::string_view key) {
+    bool back = key.starts_with("Shift+");
+    std::string_view letter = back ? key.substr(6) : key;
+    if (letter == "V") {
+        // An amount is what every mode but none subtracts: none becomes constant, as the bias
+        // sweep of `animate` does.
+        if (s.bias == BiasMode::None) s.bias = BiasMode::Constant;
+        s.constantBias = nextStep(BIAS_AMOUNT_STEPS, s.constantBias, !back);
+    } else if (letter == "U") {
+        s.sunTilt =
+            std::clamp(s.sunTilt + (back ? -SUN_TILT_STEP_DEG : SUN_TILT_STEP_DEG), -90.0f, 90.0f);
+    } else if (letter == "T") {
+        s.sunTurn += back ? -SUN_TURN_STEP_DEG : SUN_TURN_STEP_DEG;
+        if (s.sunTurn > 180.0f) s.sunTurn -= 360.0f;
+        if (s.sunTurn <= -180.0f) s.sunTurn += 360.0f;
+    } else if (letter == "W") {
+        // Only the methods that take weights have any (methods.h: takesWeights).
+        if (methodInfo(s.method).takesWeights) {
+            constexpr int count = PCF_WEIGHTS_GAUSSIAN + 1;  // box, binomial, gaussian
+            s.weights = (s.weights + (back ? count - 1 : 1)) % count;
+        }
+    } else if (letter == "I") {
+        if (s.weights == PCF_WEIGHTS_GAUSSIAN) s.sigma = nextStep(SIGMA_STEPS, s.sigma, !back);
+    } else if (key == "K") {
+        s.cull = static_cast<CullMode>((static_cast<int>(s.cull) + 1) % 3);
+    } else if (key == "D") {
+        s.depthFormat = static_cast<DepthFormat>((static_cast<int>(s.depthFormat) + 1) % 3);
+    } else {
+        return std::nullopt;
+    }
+    return s;
 }
 
 // Every bias mode in turn (back: backwards), skipping those the method cannot take.
@@ -30,8 +82,10 @@ void nextBias(LessonSettings& s, bool back) {
 }  // namespace
 
 const std::vector<std::string>& settingKeyNames() {
-    static const std::vector<std::string> names = {"M", "Shift+M", "[", "]", "-",       "+",
-                                                   "B", "Shift+B", "Q", "O", "Shift+O", "S"};
+    static const std::vector<std::string> names = {
+        "M", "Shift+M", "[",       "]",       "-", "+",       "B", "Shift+B",
+        "Q", "O",       "Shift+O", "S",       "V", "Shift+V", "U", "Shift+U",
+        "T", "Shift+T", "W",       "Shift+W", "I", "Shift+I", "K", "D"};
     return names;
 }
 
@@ -56,7 +110,7 @@ std::optional<LessonSettings> settingsAfterKey(const LessonSettings& settings,
     } else if (key == "S") {
         s.snap = !s.snap;
     } else {
-        return std::nullopt;
+        return afterLiveKey(s, key);
     }
     return s;
 }

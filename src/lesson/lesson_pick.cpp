@@ -88,6 +88,26 @@ float lightAngleDeg(const Scene& scene, const ScenePoint& point) {
     return glm::degrees(std::acos(std::clamp(c, -1.0f, 1.0f)));
 }
 
+Light lessonLight(const Light& sceneLight, const LessonSettings& s) {
+    if (s.sunTilt == 0.0f && s.sunTurn == 0.0f) return sceneLight;
+    Light light = sceneLight;
+    glm::vec3 d = glm::normalize(light.directionWs);
+    // Turned about world Y (right-handed: positive degrees turn +X towards -Z).
+    float a = glm::radians(s.sunTurn);
+    d = glm::vec3(std::cos(a) * d.x + std::sin(a) * d.z, d.y,
+                  -std::sin(a) * d.x + std::cos(a) * d.z);
+    light.directionWs = d;
+    float elevation =
+        std::clamp(lightElevationDeg(light) + s.sunTilt, MIN_SUN_ELEVATION_DEG, 90.0f);
+    light.directionWs = directionAtElevation(d, elevation);
+    return light;
+}
+
+float lightElevationDeg(const Light& light) {
+    glm::vec3 d = glm::normalize(light.directionWs);
+    return glm::degrees(std::asin(std::clamp(-d.y, -1.0f, 1.0f)));
+}
+
 Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
                   const LessonSettings& s, const ScenePoint& point) {
     PinnedLookup at = pinnedLookup(scene, shadowClipFromWorld, s, point);

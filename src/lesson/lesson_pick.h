@@ -66,6 +66,17 @@ PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWor
 // straight above, 90 grazing, more: the point faces away from the light.
 float lightAngleDeg(const Scene& scene, const ScenePoint& point);
 
+// The scene's light with the sun moved as the settings say (LessonSettings::sunTilt, sunTurn):
+// its heading turned about the vertical by sunTurn degrees, then its elevation above the ground
+// raised by sunTilt degrees (scene/light.h: directionAtElevation), kept within
+// [MIN_SUN_ELEVATION_DEG, 90]. A spot light turns its direction the same way and stays where it
+// is. Unchanged when both are 0. The session, export and `lesson check` render with it.
+Light lessonLight(const Light& sceneLight, const LessonSettings& s);
+// The light's elevation above the ground (the XZ plane) in degrees: 90 straight down.
+float lightElevationDeg(const Light& light);
+// The lowest sun the keys make: the `animate --sweep sun` sweep ends at 2 degrees.
+constexpr float MIN_SUN_ELEVATION_DEG = 1.0f;
+
 // The trace of the point's lookup on `map` (the shadow map rendered with the step's settings and
 // shadowClipFromWorld): what the session traces at the point's pixel, without rendering the
 // camera pass (the pixel shows this very lookup: SceneRenderer::setPick).

@@ -107,6 +107,7 @@ struct InspectorModel {
     bool help = false;                      // the key list over everything
     bool showScene = true;                  // false: a chart fills the scene's place (no overlay)
     bool grid = true;                       // the texel grid on the receiver (G, lesson `grid`)
+    bool markers = true;                    // the pick's ring, label and grid on the scene (X)
     int textPage = 0;                       // the page of the step text shown (when it pages)
     int highlightFetch = -1;                // the fetch (0-based) the step talks about; -1: none
     Focus focus{true, true, false, false};  // what the step is about (inspector.h: Focus)

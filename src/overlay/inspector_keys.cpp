@@ -12,6 +12,8 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"Space, Right", "next page of the text, then next step"},
         {"Left, Backspace", "previous step"},
         {"Home / End", "first / last step"},
+        {"Space (animation)", "an animation step: play / pause"},
+        {". / ,", "an animation step: next / previous frame"},
         {"M / Shift+M", "next / previous method"},
         {"[ / ]", "smaller / larger kernel"},
         {"- / +", "smaller / larger shadow map"},
@@ -20,6 +22,14 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"G", "texel grid on the scene on / off"},
         {"A", "aliasing heat map (pixels per texel)"},
         {"O / Shift+O, S", "slide the map's grid 1/8 texel; snap"},
+        {"V / Shift+V", "bias amount up / down (1, 2, 5 a decade)"},
+        {"U / Shift+U", "the sun 5 degrees higher / lower"},
+        {"T / Shift+T", "turn the sun 15 degrees one way / the other"},
+        {"W / Shift+W", "next / previous kernel weights"},
+        {"I / Shift+I", "gaussian weights' sigma larger / smaller"},
+        {"K", "cull mode of the shadow pass"},
+        {"D", "depth format: 16, 24, 32f"},
+        {"X", "marks on the scene on / off"},
         {"L / Shift+L", "next / previous lesson"},
         {"E", "export this frame (PNG + JSON)"},
         {"P", "presentation mode"},
@@ -41,24 +51,31 @@ void planHelp(Planner& pl, const InspectorLayout& l, const TypeSizes& t) {
         whatW = std::max(whatW, measureText(FontFace::Sans, fs, what).x);
     }
     float lh = lineHeightOf(fs);
-    float w = std::min(static_cast<float>(l.frameSize.x) - 8.0f, keyW + whatW + fs * 4.0f);
+    // One column when the list fits the frame's height, else two side by side.
+    float room = static_cast<float>(l.frameSize.y) - 8.0f - fs - 2.5f * lh;
+    int n = static_cast<int>(keys.size());
+    int columns = n * lh <= room ? 1 : 2;
+    int rows = (n + columns - 1) / columns;
+    float columnW = keyW + whatW + fs * 3.0f;
+    float w = std::min(static_cast<float>(l.frameSize.x) - 8.0f, columnW * columns + fs);
     float h = std::min(static_cast<float>(l.frameSize.y) - 8.0f,
-                       (static_cast<float>(keys.size()) + 2.5f) * lh + fs);
+                       (static_cast<float>(rows) + 2.5f) * lh + fs);
     Rect box{std::round((l.frameSize.x - w) * 0.5f), std::round((l.frameSize.y - h) * 0.5f), w, h};
     pl.fill(box, Colour{0.02f, 0.03f, 0.05f, 0.94f});
     pl.op([=](Canvas& c) { c.strokeRect(box, 2.0f, ACCENT); });
-    float y = box.y + fs * 0.6f;
-    pl.op([=](Canvas& c) { c.text({box.x + fs, y}, "Keys", {FontFace::Sans, fs, ACCENT}); });
-    y += lh * 1.4f;
-    for (const auto& [key, what] : keys) {
-        if (y + lh > box.bottom()) break;
-        std::string k = key, wt = what;
-        float yy = y;
+    float top = box.y + fs * 0.6f;
+    pl.op([=](Canvas& c) { c.text({box.x + fs, top}, "Keys", {FontFace::Sans, fs, ACCENT}); });
+    top += lh * 1.4f;
+    for (int k = 0; k < n; ++k) {
+        float x = box.x + fs + static_cast<float>(k / rows) * columnW;
+        float y = top + static_cast<float>(k % rows) * lh;
+        if (y + lh > box.bottom()) continue;
+        std::string key = keys[static_cast<size_t>(k)].first;
+        std::string what = keys[static_cast<size_t>(k)].second;
         pl.op([=](Canvas& c) {
-            c.text({box.x + fs, yy}, k, {FontFace::Mono, fs, TEXT});
-            c.text({box.x + fs * 2.0f + keyW, yy}, wt, {FontFace::Sans, fs, TEXT_DIM});
+            c.text({x, y}, key, {FontFace::Mono, fs, TEXT});
+            c.text({x + fs + keyW, y}, what, {FontFace::Sans, fs, TEXT_DIM});
         });
-        y += lh;
     }
 }
 

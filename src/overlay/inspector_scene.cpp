@@ -145,6 +145,7 @@ void planPixelLabel(Planner& pl, const InspectorLayout& l, const InspectorModel&
 }  // namespace
 
 void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t) {
+    if (!m.markers) return;  // X: the scene as rendered, nothing drawn over it
     glm::vec2 origin = l.scene.position();
     // An inset (focusLayout) draws the scene scaled: the pixel's place scales with it, and the
     // texel grid (one overlay pixel per scene pixel) is left to the full-size scene.
