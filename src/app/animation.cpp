@@ -1,11 +1,15 @@
 #include "app/animation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 #include "analysis/failure_measures.h"
 #include "analysis/stability.h"
+#include "base/input_error.h"
 #include "kernel/methods.h"
+#include "kernel/trace_explain.h"
 #include "scene/light.h"
 
 namespace pcf {
@@ -79,14 +83,63 @@ double animationSweepValue(const AnimationOptions& o, int k) {
             return static_cast<double>(k % SHIMMER_STEPS) / SHIMMER_STEPS;
         case AnimationSweep::Camera:
             return static_cast<double>(k) / StabilityOptions{}.cameraFrames;
-        case AnimationSweep::Sun:
-            return SUN_FROM_DEG + (SUN_TO_DEG - SUN_FROM_DEG) * t;
+        case AnimationSweep::Sun: {
+            double from = o.from.value_or(SUN_FROM_DEG), to = o.to.value_or(SUN_TO_DEG);
+            return from + (to - from) * t;
+        }
         case AnimationSweep::Bias:
-            return logLerp(BIAS_FROM, BIAS_TO, t);
+            return logLerp(o.from.value_or(BIAS_FROM), o.to.value_or(BIAS_TO), t);
         case AnimationSweep::MapSize:
-            return std::round(logLerp(MAP_FROM, MAP_TO, t));
+            return std::round(logLerp(o.from.value_or(MAP_FROM), o.to.value_or(MAP_TO), t));
     }
     return 0.0;
+}
+
+int defaultCompareMethod(int stepMethod) {
+    return stepMethod == PCF_NEAREST ? PCF_GATHER : PCF_NEAREST;
+}
+
+AnimationOptions stepAnimationOptions(const LessonStep& step, const std::string& path,
+                                      int stepNumber) {
+    const StepAnimation& a = *step.animate;
+    std::string what = "step " + std::to_string(stepNumber) + " animate";
+    std::optional<AnimationSweep> sweep = animationSweepFromName(a.sweep);
+    if (!sweep) {
+        throw InputError(
+            path, a.line,
+            what + " sweep '" + a.sweep + "' is not one of: " + std::string(ANIMATION_SWEEP_NAMES));
+    }
+    if (!step.chart.empty()) throw InputError(path, a.line, what + ": a chart step cannot move");
+    // The ranges the sweeps can show: a sun above the ground, a bias a mode can subtract, a map
+    // the renderer makes.
+    double lo = 0.0, hi = 0.0;
+    bool openLo = false;
+    if (*sweep == AnimationSweep::Sun) lo = 1.0, hi = 90.0;
+    if (*sweep == AnimationSweep::Bias) lo = 0.0, hi = 1.0, openLo = true;
+    if (*sweep == AnimationSweep::MapSize) lo = MIN_MAP_SIZE, hi = MAX_MAP_SIZE;
+    for (const std::optional<double>& v : {a.from, a.to}) {
+        if (!v) continue;
+        if (hi == 0.0) {
+            throw InputError(path, a.line,
+                             what + ": the " + a.sweep + " sweep has no from / to (it moves by " +
+                                 std::string(animationSweepUnit(*sweep)) + " a frame)");
+        }
+        if (*v > hi || *v < lo || (openLo && *v == lo)) {
+            throw InputError(path, a.line,
+                             what + " from / to must be in " + (openLo ? "(" : "[") +
+                                 formatNumber(static_cast<float>(lo)) + ", " +
+                                 formatNumber(static_cast<float>(hi)) + "] for the " + a.sweep +
+                                 " sweep");
+        }
+    }
+    AnimationOptions o;
+    o.sweep = *sweep;
+    o.frames = a.frames;
+    o.snap = a.snap;
+    o.from = a.from;
+    o.to = a.to;
+    o.compareMethod = defaultCompareMethod(step.settings.method);
+    return o;
 }
 
 Animation::Animation(Session& session, const AnimationOptions& options)
@@ -121,25 +174,52 @@ void Animation::apply(int k) {
     mSession.setSettings(s);
 }
 
+void Animation::restore() {
+    mSession.setFlickerTrace({});
+    mSession.setShadowFit(std::nullopt);
+    mSession.setLight(mScene.light);
+    mSession.setCamera(mScene.camera);
+    mSession.setSettings(mBase);
+}
+
+void Animation::showFrame(int k) {
+    apply(k);
+    // The curve up to this frame: a frame shown again (stepping back) replaces what it recorded.
+    mCurve.resize(std::min(mCurve.size(), static_cast<size_t>(k)));
+    mCompare.resize(std::min(mCompare.size(), static_cast<size_t>(k)));
+    auto recorded = std::make_shared<bool>(false);
+    mSession.setFlickerTrace([this, recorded] {
+        if (!*recorded) {
+            *recorded = true;
+            record();
+        }
+        return flickerTrace();
+    });
+}
+
+void Animation::record() {
+    const std::optional<Trace>& trace = mSession.trace();
+    mCurve.push_back(trace ? trace->visibility : -1.0f);
+    if (mOptions.compareMethod >= 0) {
+        std::optional<float> v =
+            mSession.visibilityWith(mOptions.compareMethod, mOptions.compareKernel);
+        mCompare.push_back(v ? *v : -1.0f);
+    }
+}
+
 void Animation::composeFrame(int k) {
     apply(k);
     bool recorded = false;
     // Called by compose() once the frame's lookup is traced: the point's value joins the curve
     // before the trace is drawn.
-    auto record = [this, &recorded] {
+    auto once = [this, &recorded] {
         if (recorded) return;
         recorded = true;
-        const std::optional<Trace>& trace = mSession.trace();
-        mCurve.push_back(trace ? trace->visibility : -1.0f);
-        if (mOptions.compareMethod >= 0) {
-            std::optional<float> v =
-                mSession.visibilityWith(mOptions.compareMethod, mOptions.compareKernel);
-            mCompare.push_back(v ? *v : -1.0f);
-        }
+        record();
     };
     if (mOptions.flicker) {
-        mSession.setFlickerTrace([this, record] {
-            record();
+        mSession.setFlickerTrace([this, once] {
+            once();
             return flickerTrace();
         });
         mSession.compose();
@@ -147,7 +227,7 @@ void Animation::composeFrame(int k) {
     } else {
         mSession.compose();
     }
-    record();  // a chart step draws no trace; the curve still grows
+    once();  // a chart step draws no trace; the curve still grows
 }
 
 FlickerTrace Animation::flickerTrace() const {

@@ -36,7 +36,22 @@ struct AnimationOptions {
     bool flicker = true;     // draw the flicker trace
     int compareMethod = -1;  // the trace's second curve; -1: none
     int compareKernel = 3;
+    // sun, bias, map-size: the swept quantity's first and last values instead of the sweep's own
+    // (a lesson step's `animate = { from = 90, to = 20 }`).
+    std::optional<double> from;
+    std::optional<double> to;
 };
+
+// The flicker trace's second method when none is named: nearest (the hard edge every filter is
+// measured against), or pcf-gather when the step's method is nearest.
+int defaultCompareMethod(int stepMethod);
+
+// A lesson step's `animate` (lesson/lesson.h: StepAnimation) as options, its trace comparing with
+// defaultCompareMethod. Throws InputError at the key's line (`path`, step `stepNumber`) for an
+// unknown sweep, from / to on a sweep that has none (light, camera) or outside its range (sun
+// 1..90 degrees, bias (0, 1], map-size 4..4096), or a chart step.
+AnimationOptions stepAnimationOptions(const LessonStep& step, const std::string& path,
+                                      int stepNumber);
 
 // The swept quantity at frame k of `frames`: texels of slide, pixels of slide, degrees of
 // elevation, constant bias or map texels. Its unit in words: animationSweepUnit.
@@ -56,9 +71,17 @@ class Animation {
     // receiver in that frame.
     const std::vector<float>& curve() const { return mCurve; }
     const std::vector<float>& compareCurve() const { return mCompare; }
+    // Puts frame k's state on the session without composing (the viewer composes into its
+    // window): the flicker trace then records this frame's value at the session's next compose.
+    void showFrame(int k);
+    // Puts the session back as it was before the first frame: the step's settings, the light,
+    // the camera and the lesson's own fit; no flicker trace.
+    void restore();
 
   private:
     void apply(int k);
+    // The pinned point's visibility (and the comparison's) from the session's last trace.
+    void record();
     FlickerTrace flickerTrace() const;
 
     Session& mSession;

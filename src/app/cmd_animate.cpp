@@ -45,11 +45,10 @@ struct AnimateOptions {
     bool force = false;
 };
 
-// The comparison curve's method: a method id, or -1 for none. auto: nearest (the hard edge every
-// filter is measured against), or pcf-gather 3 when the step's method is nearest.
+// The comparison curve's method: a method id, or -1 for none. auto: defaultCompareMethod.
 int compareMethodOf(const AnimateOptions& o, const LessonSettings& step) {
     if (o.compare == "none") return -1;
-    if (o.compare == "auto") return step.method == PCF_NEAREST ? PCF_GATHER : PCF_NEAREST;
+    if (o.compare == "auto") return defaultCompareMethod(step.method);
     std::optional<int> m = methodFromName(o.compare);
     if (!m) {
         throw UsageError("--compare: unknown method '" + o.compare + "' (known: auto, none, " +

@@ -5,16 +5,20 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "app/animation.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/export.h"
+#include "app/live_keys.h"
 #include "app/render_options.h"
 #include "app/session.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
+#include "video/video_writer.h"
 
 namespace pcf {
 
@@ -25,6 +29,7 @@ struct ExportOptions {
     std::string outDir;
     std::string size = "1600x900";
     std::string steps;
+    std::string keys;
     bool presentation = false;
     bool force = false;
 };
@@ -54,16 +59,35 @@ glm::ivec2 parseSteps(const std::string& text, int count) {
     return r;
 }
 
+// --keys: what changes every step the same way (settings keys, X, clicks); the keys that move
+// between steps or pages are refused, since export writes every step and page (--steps chooses).
+std::vector<ScriptedInput> exportKeys(const std::string& text) {
+    std::vector<ScriptedInput> keys = parseScriptedInput(text);
+    std::istringstream tokens(text);
+    for (const ScriptedInput& k : keys) {
+        std::string token;
+        tokens >> token;
+        if (k.click || isLiveKey(k.key)) continue;
+        throw UsageError("export --keys: '" + token +
+                         "' does not change a setting or the marks (export writes every step "
+                         "and page; --steps chooses them)");
+    }
+    return keys;
+}
+
 int runExport(const ExportOptions& o) {
     glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE, MIN_SESSION_SIZE);
     std::string path = resolveLesson(o.lesson);
     Lesson lesson = loadLessonChecked(path);  // checked before anything is made
     glm::ivec2 steps = parseSteps(o.steps, static_cast<int>(lesson.steps.size()));
+    std::vector<ScriptedInput> keys = exportKeys(o.keys);
     std::string dir = o.outDir.empty() ? "pcfscope-frames/" + lesson.name : o.outDir;
     OutputFiles outputs(o.force);
     outputs.addInput("LESSON", path);
     for (const LessonStep& step : lesson.steps) outputs.addInput("chart", step.chart);
     ExportPlan plan = planExport(outputs, dir, lesson.name, steps);
+    plan.keys = keys;
+    planVideos(outputs, plan, lesson, size);
     exportFrames(path, plan, size, o.presentation, true, &outputs);
     outputs.commit();
     return 0;
@@ -105,6 +129,52 @@ ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::s
     return plan;
 }
 
+void planVideos(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson, glm::ivec2 size) {
+    plan.videos = true;
+    for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
+        if (!lesson.steps[static_cast<size_t>(s - 1)].animate) continue;
+        if (auto problem = videoSizeProblem(VideoFormat::Mp4, size.x, size.y)) {
+            throw UsageError("--size: step " + std::to_string(s) +
+                             " is an animation, written as MP4: " + *problem);
+        }
+        outputs.add("-o", plan.stems[static_cast<size_t>(s - plan.steps.x)] + ".mp4");
+    }
+}
+
+namespace {
+
+// A step that is an animation (`animate = {...}`) as an MP4 at `path`: its frames as the viewer
+// plays them (app/animation.h), with the flicker trace; the session is put back afterwards.
+void writeStepVideo(Session& session, const std::string& lessonPath, const std::string& path) {
+    const LessonStep& step = session.lesson().steps[static_cast<size_t>(session.step())];
+    AnimationOptions ao = stepAnimationOptions(step, lessonPath, session.step() + 1);
+    glm::ivec2 size = session.frameSize();
+    VideoWriter writer(path, VideoFormat::Mp4, size.x, size.y, step.animate->fps);
+    session.setTextPage(0);
+    Animation animation(session, ao);
+    for (int k = 0; k < ao.frames; ++k) {
+        animation.composeFrame(k);
+        writer.addFrame(session.readFrame());
+    }
+    animation.restore();
+    writer.finish();
+}
+
+// The keys on a step just gone to, each on a composed frame as in the viewer (a click lands where
+// the frame drew the scene). The marks start shown on every step, so X hides them on each.
+void applyKeys(Session& session, const std::vector<ScriptedInput>& keys) {
+    session.setMarkers(true);
+    for (const ScriptedInput& k : keys) {
+        session.compose();
+        if (k.click)
+            session.clickFrame(*k.click);
+        else
+            pressLiveKey(session, k.key);
+    }
+}
+
+}  // namespace
+
 void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
                   bool presentation, bool progress, OutputFiles* outputs) {
     std::unique_ptr<GlContext> context = createHeadlessContext();
@@ -114,6 +184,7 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
     int extraFrames = 0;
     for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
         session.goToStep(s - 1);
+        applyKeys(session, plan.keys);
         session.compose();
         const std::string& stem = plan.stems[static_cast<size_t>(s - plan.steps.x)];
         writePngRgba8(stem + ".png", size.x, size.y, session.readFrame());
@@ -134,6 +205,10 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
             if (progress)
                 std::fprintf(stderr, "export: %s (page %d)\n", (more + ".png").c_str(), page + 1);
             ++extraFrames;
+        }
+        if (plan.videos && session.lesson().steps[static_cast<size_t>(s - 1)].animate) {
+            writeStepVideo(session, lessonPath, stem + ".mp4");
+            if (progress) std::fprintf(stderr, "export: %s\n", (stem + ".mp4").c_str());
         }
     }
     double seconds =
@@ -157,6 +232,8 @@ Command addExportCommand(CLI::App& app) {
     sub->add_option("-o,--out", o->outDir, "output directory (default pcfscope-frames/LESSON)");
     sub->add_option("--size", o->size, "frame size WxH (default 1600x900, the viewer's)");
     sub->add_option("--steps", o->steps, "steps to write, A-B or A (default all)");
+    sub->add_option("--keys", o->keys,
+                    "on every step: the viewer's settings keys, x and click:X,Y (\"v v t\")");
     sub->add_flag("--presentation", o->presentation,
                   "what presentation mode (P) shows: 22 px step text, 18 px numbers, thick lines");
     sub->add_flag("-f,--force", o->force, "overwrite existing frames");

@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "app/live_keys.h"
 #include "app/output_files.h"
+#include "lesson/lesson.h"
 
 namespace pcf {
 
@@ -18,7 +20,18 @@ struct ExportPlan {
     std::string dir;
     glm::ivec2 steps{1, 1};          // 1-based, inclusive
     std::vector<std::string> stems;  // DIR/LESSON-stepNN, one per step, without extension
+    // `export --keys`: settings keys, X and clicks (app/live_keys.h) applied to every step
+    // before it is written, as the viewer's keys change the step on screen.
+    std::vector<ScriptedInput> keys;
+    // Steps that are animations (`animate = {...}`) are also written as STEM.mp4 (planVideos
+    // lists them); false: stills only (the main job).
+    bool videos = false;
 };
+
+// The MP4s of the planned steps that are animations, checked and added to `outputs` like the
+// stills (before anything is written); sets plan.videos. Throws UsageError when the frame size
+// cannot be an MP4 (odd sides).
+void planVideos(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson, glm::ivec2 size);
 
 // Checks every output before anything is written and adds it to `outputs` (which creates the
 // folder and takes the frames back if the export fails): throws UsageError if a file exists

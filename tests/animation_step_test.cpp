@@ -1,0 +1,126 @@
+// A lesson step that is an animation (`animate = {...}`, lesson.h: StepAnimation): export writes
+// it as an MP4 beside the still with the step's frames and the frame size, the same bytes run to
+// run; a bad `animate` is one line at its line; the viewer's frame keys show the sweep's frames.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "app/animation.h"
+#include "json_lite.h"
+#include "run_command.h"
+#include "video_read.h"
+#include "virtual_display.h"
+
+namespace pcf {
+namespace {
+
+namespace fs = std::filesystem;
+
+class AnimationStep : public ::testing::Test {
+  protected:
+    void SetUp() override { mDir = testutil::makeTempDir("animation-step"); }
+    void TearDown() override {
+        if (!HasFailure()) fs::remove_all(mDir);
+    }
+    // A still step, then a step whose constant bias grows over the frames (`animate` is the
+    // step's table's last line, line 12).
+    std::string write(const std::string& animate, const std::string& name = "anim.toml") {
+        std::string path = (mDir / name).string();
+        std::ofstream(path) << "title = \"Anim\"\n"                 // 1
+                               "scene = \"box-on-plane\"\n"         // 2
+                               "[settings]\n"                       // 3
+                               "method = \"nearest\"\n"             // 4
+                               "map_size = 128\n"                   // 5
+                               "[[step]]\n"                         // 6
+                               "title = \"Still\"\n"                // 7
+                               "text = \"v {visibility}\"\n"        // 8
+                               "[[step]]\n"                         // 9
+                               "title = \"Moving\"\n"               // 10
+                               "text = \"bias {constant_bias}\"\n"  // 11
+                            << "animate = " << animate << "\n";     // 12
+        return path;
+    }
+    fs::path mDir;
+};
+
+constexpr const char* BIAS_SWEEP =
+    "{ sweep = \"bias\", from = 0.001, to = 0.1, frames = 5, fps = 10 }";
+
+TEST_F(AnimationStep, ExportWritesAnMp4OfTheStepsFramesTheSameBytesRunToRun) {
+    std::string lesson = write(BIAS_SWEEP);
+    for (const char* out : {"a", "b"}) {
+        testutil::CommandResult r = testutil::runPcfscope(
+            "export " + lesson + " -o " + (mDir / out).string() + " --size 320x180");
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(mDir / "a/anim-step01.mp4")) << "a still step has no video";
+    EXPECT_TRUE(fs::exists(mDir / "a/anim-step02.png"));
+    testutil::VideoInfo v = testutil::readVideo((mDir / "a/anim-step02.mp4").string());
+    ASSERT_TRUE(v.opened);
+    EXPECT_EQ(v.codec, "h264");
+    EXPECT_EQ(v.pixelFormat, "yuv420p");
+    EXPECT_EQ(v.width, 320);
+    EXPECT_EQ(v.height, 180);
+    EXPECT_EQ(v.frames, 5);
+    EXPECT_EQ(testutil::readAll(mDir / "a/anim-step02.mp4"),
+              testutil::readAll(mDir / "b/anim-step02.mp4"));
+    // An odd size cannot be an MP4: refused before anything is written.
+    testutil::CommandResult odd = testutil::runPcfscope(
+        "export " + lesson + " -o " + (mDir / "odd").string() + " --size 321x180");
+    EXPECT_EQ(odd.exitCode, 2);
+    EXPECT_EQ(testutil::lineCount(odd.err), 1) << odd.err;
+    EXPECT_FALSE(fs::exists(mDir / "odd"));
+}
+
+TEST_F(AnimationStep, BadAnimateIsOneLineAtItsLine) {
+    struct Bad {
+        std::string animate, says;
+    };
+    for (const Bad& bad : {Bad{"{ sweep = \"moon\" }", "sweep 'moon' is not one of"},
+                           Bad{"{ sweep = \"light\", from = 2 }", "has no from / to"},
+                           Bad{"{ sweep = \"sun\", to = 0 }", "must be in [1, 90]"},
+                           Bad{"{ sweep = \"sun\", frames = 1 }", "frames must be"},
+                           Bad{"{ sweep = \"sun\", speed = 2 }", "unknown key 'speed'"},
+                           Bad{"\"sun\"", "animate must be a table"}}) {
+        std::string lesson = write(bad.animate);
+        testutil::CommandResult r = testutil::runPcfscope("lesson check " + lesson);
+        EXPECT_EQ(r.exitCode, 2) << bad.animate;
+        EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
+        EXPECT_NE(r.err.find("anim.toml:12:"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(bad.says), std::string::npos) << r.err;
+    }
+}
+
+// The viewer shows frame k after k presses of `.` (and `,` goes back, from frame 0 to the last):
+// the bias sweep's frame is its constant bias, which the E key's JSON holds.
+TEST_F(AnimationStep, TheViewersFrameKeysShowTheSweepsFrames) {
+    std::string lesson = write(BIAS_SWEEP);
+    testutil::VirtualDisplay x;
+    ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
+    AnimationOptions o;
+    o.sweep = AnimationSweep::Bias;
+    o.frames = 5;
+    o.from = 0.001;
+    o.to = 0.1;
+    struct Case {
+        std::string keys;
+        int frame;
+    };
+    for (const Case& c : {Case{"right period period e", 2}, Case{"right comma e", 4}}) {
+        fs::remove_all(mDir / "pcfscope-frames");
+        testutil::CommandResult r =
+            testutil::runPcfscope("view " + lesson + " --keys \"" + c.keys + "\" --screenshot " +
+                                      (mDir / "shot.png").string() + " -f",
+                                  "cd " + mDir.string() + " && DISPLAY=" + x.display());
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        jsonlite::Value step =
+            jsonlite::parse(testutil::readAll(mDir / "pcfscope-frames/anim-step02.json"));
+        EXPECT_NEAR(step["settings"]["constant_bias"].number, animationSweepValue(o, c.frame), 1e-6)
+            << c.keys;
+    }
+}
+
+}  // namespace
+}  // namespace pcf
