@@ -145,7 +145,8 @@ namespace {
 
 // A step that is an animation (`animate = {...}`) as an MP4 at `path`: its frames as the viewer
 // plays them (app/animation.h), with the flicker trace; the session is put back afterwards.
-void writeStepVideo(Session& session, const std::string& lessonPath, const std::string& path) {
+// Returns the frames written.
+int writeStepVideo(Session& session, const std::string& lessonPath, const std::string& path) {
     const LessonStep& step = session.lesson().steps[static_cast<size_t>(session.step())];
     AnimationOptions ao = stepAnimationOptions(step, lessonPath, session.step() + 1);
     glm::ivec2 size = session.frameSize();
@@ -158,6 +159,7 @@ void writeStepVideo(Session& session, const std::string& lessonPath, const std::
     }
     animation.restore();
     writer.finish();
+    return ao.frames;
 }
 
 // The keys on a step just gone to, each on a composed frame as in the viewer (a click lands where
@@ -182,6 +184,7 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
     session.loadLesson(lessonPath);
     auto start = std::chrono::steady_clock::now();
     int extraFrames = 0;
+    int videoFrames = 0;  // the frames of the steps' MP4s
     for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
         session.goToStep(s - 1);
         applyKeys(session, plan.keys);
@@ -207,19 +210,22 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
             ++extraFrames;
         }
         if (plan.videos && session.lesson().steps[static_cast<size_t>(s - 1)].animate) {
-            writeStepVideo(session, lessonPath, stem + ".mp4");
+            videoFrames += writeStepVideo(session, lessonPath, stem + ".mp4");
             if (progress) std::fprintf(stderr, "export: %s\n", (stem + ".mp4").c_str());
         }
     }
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    int frames = plan.steps.y - plan.steps.x + 1 + extraFrames;
+    int frames = plan.steps.y - plan.steps.x + 1 + extraFrames + videoFrames;
     // Kept before announced: an interrupt after the line below must not take back the frames
     // it names.
     if (outputs) outputs->commit();
     if (progress) {
-        std::fprintf(stderr, "export: %d frames of %dx%d in %.2f s (%.1f frames/s) into %s\n",
-                     frames, size.x, size.y, seconds, frames / seconds, plan.dir.c_str());
+        std::fprintf(stderr,
+                     "export: %d frames of %dx%d (%d of them in videos) in %.2f s (%.1f frames/s) "
+                     "into %s\n",
+                     frames, size.x, size.y, videoFrames, seconds, frames / seconds,
+                     plan.dir.c_str());
     }
 }
 

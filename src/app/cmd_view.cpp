@@ -90,7 +90,8 @@ Command addViewCommand(CLI::App& app) {
         app.add_subcommand("view", "the lesson in a window: pick a pixel, step through");
     sub->add_option("lesson", o->lesson, "lesson: a .toml path, a number, or a built-in name");
     sub->add_option("--size", o->size, "window size WxH (default 1600x900)");
-    sub->add_option("--keys", o->keys, "replay keys first: GLFW names, space-separated");
+    sub->add_option("--keys", o->keys,
+                    "replay keys first: GLFW names and click:X,Y (frame pixels), space-separated");
     sub->add_option("--screenshot", o->screenshot, "write the frame after --keys to PNG, quit");
     sub->add_flag("--presentation", o->presentation, "large type and thick lines");
     sub->add_flag("-f,--force", o->force, "let --screenshot overwrite an existing file");

@@ -16,12 +16,15 @@ bool StepPlayer::press(KeyPress k) {
             mNextDue = 0.0;  // the first tick sets the clock
             return true;
         case GLFW_KEY_PERIOD:
-        case GLFW_KEY_COMMA: {
+            // Past the last frame it starts over; the trace's curve with it.
             mPlaying = false;
-            int n = mOptions.frames;
-            show((mFrame + (k.key == GLFW_KEY_PERIOD ? 1 : n - 1)) % n);
+            show((mFrame + 1) % mOptions.frames);
             return true;
-        }
+        case GLFW_KEY_COMMA:
+            // Frames are shown in order, so the trace's curve is the frames so far: no wrap.
+            mPlaying = false;
+            show(std::max(0, mFrame - 1));
+            return true;
         default:
             return false;
     }
@@ -43,11 +46,11 @@ void StepPlayer::afterChange() {
         return;
     }
     const LessonStep& s = lesson.steps[static_cast<size_t>(step)];
-    if (step != mStep) {
-        mStep = step;
-        mFrame = 0;
-        mPlaying = false;
-    }
+    // A new step starts paused; a key on this one starts it again from the first frame (the
+    // flicker trace's curve holds the frames in order from there), playing on if it played.
+    if (step != mStep) mPlaying = false;
+    mStep = step;
+    mFrame = 0;
     // Checked when the lesson was loaded (loadLessonChecked), so this does not throw.
     mOptions = stepAnimationOptions(s, lesson.sourcePath, step + 1);
     mFps = s.animate->fps;

@@ -1,6 +1,6 @@
 // step_player.h: a lesson step that is an animation (lesson.h: `animate = {...}`) played in the
 // viewer. On such a step Space plays and pauses (elsewhere it turns the page), `.` and `,` show
-// the next and the previous frame; Left and Right still move between steps, as a slide clicker
+// the next and the previous frame (`.` past the last starts over); Left and Right still move between steps, as a slide clicker
 // sends them. The frames are app/animation.h's, as `export` writes them to MP4; leaving the step
 // puts the session's light, camera and fit back.
 #pragma once
@@ -24,9 +24,9 @@ class StepPlayer {
 
     // Space, `.` and `,` on an animation step; returns whether `k` was one of them.
     bool press(KeyPress k);
-    // Around anything that may change the step or its settings (a key): before, the session is
-    // put back as the step left it; after, an animation step shows its frame again on the new
-    // state (a new step starts paused at frame 0).
+    // Around a key that may change the step or its settings: before, the session is put back
+    // as the step left it; after, an animation step starts again from its first frame on the
+    // new state (a new step paused, the same one playing on if it played).
     void beforeChange();
     void afterChange();
     // While playing: moves to the frame due at `seconds` (a steady clock), looping at the end.

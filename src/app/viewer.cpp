@@ -61,10 +61,28 @@ class Viewer {
         // An animation step's own keys (step_player.h) first; around the others the player
         // puts the step's state back and shows its frame on the new one.
         if (mPlayer.press(k)) return;
-        mPlayer.beforeChange();
+        bool change = isLiveKey(k) || changesStep(k.key, shift);
+        if (change) mPlayer.beforeChange();
         bool handled = pressNavigation(k.key, shift) || pressLiveKey(mSession, k);
-        mPlayer.afterChange();
+        if (change) mPlayer.afterChange();
         if (!handled) pressView(k.key);
+    }
+
+    // The keys of pressNavigation that go to another step or lesson.
+    static bool changesStep(int key, bool shift) {
+        switch (key) {
+            case GLFW_KEY_SPACE:
+            case GLFW_KEY_BACKSPACE:
+            case GLFW_KEY_HOME:
+            case GLFW_KEY_END:
+            case GLFW_KEY_L:
+                return true;
+            case GLFW_KEY_RIGHT:
+            case GLFW_KEY_LEFT:
+                return !shift;
+            default:
+                return false;
+        }
     }
 
     // An animation step playing: its next frame when due; the seconds until the one after.
