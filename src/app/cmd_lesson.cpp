@@ -81,13 +81,7 @@ struct Checker {
         renderer.renderShadowPass(renderSettingsFor(s, {64, 64}));
         ShadowMap map = renderer.readShadowMap();
         Trace trace = tracePinned(map, scene, fit, s, point);
-        StepContext ctx = makeStepContext(step);
-        ctx.bias = s.bias;
-        ctx.constantBias = s.constantBias;
-        ctx.cull = s.cull;
-        ctx.depthFormat = s.depthFormat;
-        ctx.originShift = s.originShift;
-        ctx.lightAngleDeg = lightAngleDeg(scene, point);
+        StepContext ctx = makeStepContext(s, glm::ivec2(0), lightAngleDeg(scene, point));
         ClaimWorld world = chartWorld(step);
         world.onPlane = std::holds_alternative<Plane>(
             lesson.scene.objects[static_cast<size_t>(point.object)].shape);
