@@ -177,8 +177,9 @@ void Animation::apply(int k) {
 void Animation::restore() {
     mSession.setFlickerTrace({});
     mSession.setShadowFit(std::nullopt);
-    mSession.setLight(mScene.light);
-    mSession.setCamera(mScene.camera);
+    // Only what the sweep moved: setting the camera again would re-pin the point under its pixel.
+    if (mOptions.sweep == AnimationSweep::Sun) mSession.setLight(mScene.light);
+    if (mOptions.sweep == AnimationSweep::Camera) mSession.setCamera(mScene.camera);
     mSession.setSettings(mBase);
 }
 

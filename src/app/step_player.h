@@ -1,8 +1,8 @@
 // step_player.h: a lesson step that is an animation (lesson.h: `animate = {...}`) played in the
 // viewer. On such a step Space plays and pauses (elsewhere it turns the page), `.` and `,` show
-// the next and the previous frame (`.` past the last starts over); Left and Right still move between steps, as a slide clicker
-// sends them. The frames are app/animation.h's, as `export` writes them to MP4; leaving the step
-// puts the session's light, camera and fit back.
+// the next and the previous frame (`.` past the last starts over); Left and Right still move
+// between steps, as a slide clicker sends them. The frames are app/animation.h's, as `export`
+// writes them to MP4; leaving the step puts the session's light, camera and fit back.
 #pragma once
 
 #include <memory>
