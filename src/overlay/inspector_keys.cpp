@@ -46,17 +46,29 @@ void planHelp(Planner& pl, const InspectorLayout& l, const TypeSizes& t) {
     float fs = t.body;
     const auto& keys = viewerKeys();
     float keyW = 0.0f, whatW = 0.0f;
-    for (const auto& [key, what] : keys) {
-        keyW = std::max(keyW, measureText(FontFace::Mono, fs, key).x);
-        whatW = std::max(whatW, measureText(FontFace::Sans, fs, what).x);
-    }
+    auto measure = [&] {
+        keyW = whatW = 0.0f;
+        for (const auto& [key, what] : keys) {
+            keyW = std::max(keyW, measureText(FontFace::Mono, fs, key).x);
+            whatW = std::max(whatW, measureText(FontFace::Sans, fs, what).x);
+        }
+    };
+    measure();
     float lh = lineHeightOf(fs);
-    // One column when the list fits the frame's height, else two side by side.
+    // One column when the list fits the frame's height, else two side by side, the type made
+    // smaller when two do not fit the frame's width.
     float room = static_cast<float>(l.frameSize.y) - 8.0f - fs - 2.5f * lh;
     int n = static_cast<int>(keys.size());
     int columns = n * lh <= room ? 1 : 2;
     int rows = (n + columns - 1) / columns;
     float columnW = keyW + whatW + fs * 3.0f;
+    float across = static_cast<float>(l.frameSize.x) - 8.0f;
+    if (columnW * columns + fs > across) {
+        fs = std::floor(fs * across / (columnW * columns + fs));
+        measure();
+        lh = lineHeightOf(fs);
+        columnW = keyW + whatW + fs * 3.0f;
+    }
     float w = std::min(static_cast<float>(l.frameSize.x) - 8.0f, columnW * columns + fs);
     float h = std::min(static_cast<float>(l.frameSize.y) - 8.0f,
                        (static_cast<float>(rows) + 2.5f) * lh + fs);
