@@ -283,7 +283,11 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
         return;
     }
     if (part <= tableParts) {
-        planTexelTable(pl, l, m, t, table, formulaTop, part - 1);
+        float end = planTexelTable(pl, l, m, t, table, formulaTop, part - 1);
+        if (part < parts - 1) {
+            planNextPageNote(pl, l, t, margin, end + t.label * 0.5f,
+                             part < tableParts ? "more texels" : "the formula, every term");
+        }
         return;
     }
     int formulaPage = part - tableParts - 1;

@@ -228,15 +228,16 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
 
 // ---- inspector_table.cpp: the texel table. ----
 
-// The read texels (each once, in read order) whose numbers `cells` did not draw whole.
+// The read texels (each once, row by row) whose numbers `cells` did not draw whole.
 std::vector<glm::ivec2> texelsWithoutNumbers(const Trace& tr, const FramePlan& cells);
 // The texel table: one row per texel of `texels` with the numbers its cell shows at a size
 // where they fit (bit, own ref, depth, weight) and depth - ref, under a column header, in the
 // inspector panel from `top` down. texelTablePages: the pages it takes; planTexelTable: page
-// `page` of it (it lists the rows it draws in numberedTexels).
+// `page` of it (it lists the rows it draws in numberedTexels); returns the y under its last row.
 int texelTablePages(const InspectorLayout& l, const TypeSizes& t, size_t rows, float top);
-void planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                    const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top, int page);
+float planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top,
+                     int page);
 
 // ---- inspector_subtexel.cpp: the hw8 inset. ----
 

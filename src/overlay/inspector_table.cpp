@@ -18,11 +18,12 @@ const TapRecord* firstTapOf(const Trace& tr, glm::ivec2 texel) {
 }
 
 // Rows on one page: the line pitch is the numbers' own size (a row set smaller to fit the width
-// keeps it, so the count does not depend on the rows' text).
+// keeps it, so the count does not depend on the rows' text). Under the title and the header;
+// above the line that says where the rest is.
 int rowsPerPage(const InspectorLayout& l, const TypeSizes& t, float top) {
     float margin = inspectorMargin(l);
     float lh = lineHeightOf(t.number);
-    float room = l.inspector.bottom() - margin - top - lineHeightOf(t.label) * 1.5f - lh;
+    float room = l.inspector.bottom() - margin - top - lineHeightOf(t.label) * 3.0f - lh;
     return std::max(1, static_cast<int>(room / lh));
 }
 
@@ -75,11 +76,14 @@ std::vector<std::string> tableRows(const InspectorModel& m, const std::vector<gl
 std::vector<glm::ivec2> texelsWithoutNumbers(const Trace& tr, const FramePlan& cells) {
     std::vector<glm::ivec2> out;
     for (const TapRecord& t : tr.taps) {
-        bool shown = std::find(cells.numberedTexels.begin(), cells.numberedTexels.end(),
-                               t.texel) != cells.numberedTexels.end();
+        bool shown = std::find(cells.numberedTexels.begin(), cells.numberedTexels.end(), t.texel) !=
+                     cells.numberedTexels.end();
         if (!shown && std::find(out.begin(), out.end(), t.texel) == out.end())
             out.push_back(t.texel);
     }
+    // Row by row, as the cells sit: a texel the words name is found where the grid has it.
+    std::sort(out.begin(), out.end(),
+              [](glm::ivec2 a, glm::ivec2 b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
     return out;
 }
 
@@ -88,9 +92,9 @@ int texelTablePages(const InspectorLayout& l, const TypeSizes& t, size_t rows, f
     return static_cast<int>((rows + static_cast<size_t>(per) - 1) / static_cast<size_t>(per));
 }
 
-void planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                    const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top,
-                    int page) {
+float planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top,
+                     int page) {
     const Rect& p = l.inspector;
     const std::string panel = "inspector";
     float margin = inspectorMargin(l);
@@ -109,7 +113,7 @@ void planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel&
     std::string title = texels.size() == 1 ? "The texel whose cell has no room for its numbers:"
                                            : "The " + std::to_string(texels.size()) +
                                                  " texels whose cells have no room for their "
-                                                 "numbers, in read order:";
+                                                 "numbers, row by row:";
     title = elideText(FontFace::Sans, t.label, title, width);
     float y = top;
     pl.text({p.x + margin, y}, title, {FontFace::Sans, t.label, TEXT_DIM}, BoxKind::Text, panel,
@@ -127,6 +131,7 @@ void planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel&
         pl.plan.numberedTexels.push_back(texels[k]);
         y += lh;
     }
+    return y;
 }
 
 }  // namespace pcf::inspector_detail
