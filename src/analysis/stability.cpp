@@ -691,39 +691,6 @@ float footprintReachTexels(const StabilityMethod& m, float poissonRadius) {
     return 0.0f;
 }
 
-std::vector<glm::vec3> footprintPoints(const Scene& scene, const glm::mat4& shadowClipFromWorld,
-                                       int mapSize, glm::vec3 posWs, glm::vec3 normalWs,
-                                       float reachTexels, int gridSide) {
-    // One texel across the map at p's depth, as world vectors: the inverse of the shadow
-    // matrix applied to clip + (2 w / mapSize) along x (and y), minus p.
-    glm::mat4 worldFromClip = glm::inverse(shadowClipFromWorld);
-    glm::vec4 clip = shadowClipFromWorld * glm::vec4(posWs, 1.0f);
-    float step = 2.0f * clip.w / static_cast<float>(mapSize);
-    auto unproject = [&](glm::vec4 c) {
-        glm::vec4 w = worldFromClip * c;
-        return glm::vec3(w) / w.w;
-    };
-    glm::vec3 texelU = unproject(clip + glm::vec4(step, 0, 0, 0)) - posWs;
-    glm::vec3 texelV = unproject(clip + glm::vec4(0, step, 0, 0)) - posWs;
-    glm::vec3 toLight = towardLight(scene.light, posWs).dirWs;
-    float nDotL = glm::dot(normalWs, toLight);
-    std::vector<glm::vec3> points;
-    if (std::abs(nDotL) < 1e-4f) return points;
-    int side = std::max(gridSide, 2);
-    for (int j = 0; j < side; ++j) {
-        for (int i = 0; i < side; ++i) {
-            float a = reachTexels * (2.0f * i / (side - 1) - 1.0f);
-            float b = reachTexels * (2.0f * j / (side - 1) - 1.0f);
-            glm::vec3 o = a * texelU + b * texelV;
-            // Along the light (which keeps the map position) back onto the surface's plane:
-            // dot(n, o + t * toLight) = 0.
-            float t = -glm::dot(normalWs, o) / nDotL;
-            points.push_back(posWs + o + t * toLight);
-        }
-    }
-    return points;
-}
-
 std::vector<float> pixelsPerTexel(const std::vector<float>& lightSpace, glm::ivec2 size,
                                   int mapSize) {
     std::vector<float> out(static_cast<size_t>(size.x) * size.y, -1.0f);
