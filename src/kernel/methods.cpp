@@ -174,7 +174,16 @@ FetchCounts fetchCounts(int method, int kernel) {
 }
 
 PcfParams makeParams(int method, int kernel, float radius, vec2 rotation) {
-    return PcfParams{method, kernel, radius, rotation, PCF_WEIGHTS_BOX, 1.0f};
+    // Member by member: a parameter added to PcfParams starts at zero here without an edit, and
+    // ShadowSettings::pcfParams sets it from the settings (kernel/settings.cpp).
+    PcfParams p{};
+    p.method = method;
+    p.kernel = kernel;
+    p.radius = radius;
+    p.rotation = rotation;
+    p.weights = PCF_WEIGHTS_BOX;
+    p.sigma = 1.0f;
+    return p;
 }
 
 std::optional<int> weightsFromName(std::string_view name) {
