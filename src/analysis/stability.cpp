@@ -568,14 +568,22 @@ StabilityOptions quickStabilityOptions() {
     return o;
 }
 
-std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) {
-    // A sentence naming no option, one naming an option list once (said as its flag by the
-    // command line: app/cli_util.h's cliWords), and a value of a list out of its range.
-    auto plain = [](std::string sentence) { return ParamProblem{"", std::move(sentence), ""}; };
-    auto empty = [](const char* setting) { return ParamProblem{setting, "", " is empty"}; };
-    auto outOfRange = [](const char* setting, const std::string& v, const std::string& range) {
-        return ParamProblem{setting, "", " " + v + " is out of range (" + range + ")"};
-    };
+namespace {
+
+// A sentence naming no option, one naming an option list once (said as its flag by the command
+// line: app/cli_util.h's cliWords), and a value of a list out of its range.
+ParamProblem plainProblem(std::string sentence) {
+    return ParamProblem{"", std::move(sentence), ""};
+}
+ParamProblem emptyList(const char* setting) { return ParamProblem{setting, "", " is empty"}; }
+ParamProblem outOfRange(const char* setting, const std::string& v, const std::string& range) {
+    return ParamProblem{setting, "", " " + v + " is out of range (" + range + ")"};
+}
+
+// The methods and biases: each method's kernel fits it, and some pair of them exists.
+std::optional<ParamProblem> validateStabilityPairs(const StabilityOptions& o) {
+    auto plain = plainProblem;
+    auto empty = emptyList;
     if (o.methods.empty()) return empty("methods");
     for (const StabilityMethod& m : o.methods) {
         if (m.method < 0 || m.method >= PCF_METHOD_COUNT) {
@@ -600,6 +608,15 @@ std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) 
         return ParamProblem{"biases", "no method given combines with ",
                             ": " + *validateBias(static_cast<int>(b), o.methods.front().method)};
     }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) {
+    auto plain = plainProblem;
+    auto empty = emptyList;
+    if (std::optional<ParamProblem> p = validateStabilityPairs(o)) return p;
     if (o.sweeps.empty()) return empty("sweep");
     if (o.frameSize.x < MIN_STABILITY_FRAME_SIDE || o.frameSize.y < MIN_STABILITY_FRAME_SIDE ||
         o.frameSize.x > MAX_FRAME_SIDE || o.frameSize.y > MAX_FRAME_SIDE) {
