@@ -18,6 +18,7 @@
 #include "render/gl_context.h"
 #include "run_command.h"
 #include "video_read.h"
+#include "virtual_display.h"
 
 namespace pcf {
 namespace {
@@ -66,19 +67,21 @@ TEST(CompareSpec, ReadsKeysWithOneValuePerPartAndRefusesTheRest) {
 }
 
 TEST(CompareSpec, ALessonStepSaysItAsATableOfArraysCheckedAtItsLine) {
-    const std::string head = "title = \"t\"\nscene = \"box-on-plane\"\n[[step]]\ntitle = \"s\"\n"
-                             "text = \"x\"\nmethod = \"nearest\"\n";
+    const std::string head =
+        "title = \"t\"\nscene = \"box-on-plane\"\n[[step]]\ntitle = \"s\"\n"
+        "text = \"x\"\nmethod = \"nearest\"\n";
     Lesson lesson =
-        parseLessonString(head + "compare = { bias = [\"none\", \"constant\"], constant_bias = "
-                                 "[0.002, 0.004] }\n",
+        parseLessonString(head +
+                              "compare = { bias = [\"none\", \"constant\"], constant_bias = "
+                              "[0.002, 0.004] }\n",
                           "ok.toml");
     const CompareSpec& spec = lesson.steps[0].compare;
     ASSERT_EQ(spec.parts(), 2);
     EXPECT_EQ(compareSpecText(spec), "bias=none,constant constant_bias=0.002,0.004");
     EXPECT_EQ(lesson.steps[0].compareLine, 7);
-    for (const char* bad : {"compare = { bias = [\"none\"] }", "compare = { bias = \"none\" }",
-                            "compare = { method = [\"nearest\", \"tent\"], kernel = [4, 4] }",
-                            "compare = 3"}) {
+    for (const char* bad :
+         {"compare = { bias = [\"none\"] }", "compare = { bias = \"none\" }",
+          "compare = { method = [\"nearest\", \"tent\"], kernel = [4, 4] }", "compare = 3"}) {
         try {
             parseLessonString(head + bad + "\n", "bad.toml");
             ADD_FAILURE() << bad;
@@ -202,10 +205,10 @@ TEST(AnimateCommand, ThreeBiasSunSetIsTheSameBytesRunToRunWithEveryFrame) {
     // Bad splits: one line, exit 2, nothing made.
     std::string out = (dir / "new").string();
     for (std::string args : {"--compare bias=none", "--compare blur=1,2",
-                             "--compare bias=none,constant --size 320x180",
-                             "--point 0,5,0", "--compare bias=none,wobbly"}) {
-        testutil::CommandResult r = testutil::runPcfscope("animate 1 --frames 2 " + args + " -o " +
-                                                          out + "/x.mp4");
+                             "--compare bias=none,constant --size 320x180", "--point 0,5,0",
+                             "--compare bias=none,wobbly"}) {
+        testutil::CommandResult r =
+            testutil::runPcfscope("animate 1 --frames 2 " + args + " -o " + out + "/x.mp4");
         EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
         EXPECT_EQ(testutil::lineCount(r.err), 1) << args << ": " << r.err;
         EXPECT_FALSE(fs::exists(out)) << args;
@@ -256,6 +259,39 @@ TEST(Magnifier, KeepsThePointsLookupAndATexelIsManyPixelsWide) {
     glm::vec2 px = measuredTexelPixels(s, 2);
     EXPECT_GE(std::min(px.x, px.y), 0.95f * k) << px.x << " x " << px.y;
     EXPECT_LE(std::min(px.x, px.y), 1.5f * k) << "the close-up still shows a neighbourhood";
+}
+
+// The viewer's C and Z, replayed by --keys: the window shows exactly the frames `export
+// --compare` and `export --magnify` write (the same code composes them), and Z again is the
+// lesson's own frame.
+TEST(ViewKeys, CIsTheSplitViewAndZTheMagnifierAsExportWritesThem) {
+    testutil::VirtualDisplay x;
+    ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
+    fs::path dir = testutil::makeTempDir("viewsplit");
+    std::string d = dir.string();
+    auto view = [&](const std::string& keys, const std::string& shot) {
+        testutil::CommandResult r =
+            testutil::runPcfscope("view 1 --keys \"" + keys + "\" --screenshot " + d + "/" + shot,
+                                  "DISPLAY=" + x.display());
+        EXPECT_EQ(r.exitCode, 0) << keys << ": " << r.err;
+    };
+    view("c", "c.png");
+    view("z", "z.png");
+    view("z z", "zz.png");
+    auto split = testutil::runPcfscope(
+        "export 1 --steps 1 --compare method=nearest,pcf-gather -o " + d + "/split");
+    ASSERT_EQ(split.exitCode, 0) << split.err;
+    auto magnified = testutil::runPcfscope("export 1 --steps 1 --magnify -o " + d + "/magnified");
+    ASSERT_EQ(magnified.exitCode, 0) << magnified.err;
+    auto plain = testutil::runPcfscope("export 1 --steps 1 -o " + d + "/plain");
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    const std::string stem = "/01-hard-shadows-step01";
+    EXPECT_EQ(testutil::readAll(d + "/c.png"),
+              testutil::readAll(d + "/split" + stem + "-compare.png"));
+    EXPECT_EQ(testutil::readAll(d + "/z.png"), testutil::readAll(d + "/magnified" + stem + ".png"));
+    EXPECT_NE(testutil::readAll(d + "/z.png"), testutil::readAll(d + "/plain" + stem + ".png"));
+    EXPECT_EQ(testutil::readAll(d + "/zz.png"), testutil::readAll(d + "/plain" + stem + ".png"));
+    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -49,7 +49,8 @@ float panelHeightOf(glm::ivec2 frame, bool presentation) {
 
 glm::ivec2 partSceneSizeOf(glm::ivec2 frame, int parts, bool presentation, bool traceBand) {
     int n = std::max(1, parts);
-    float band = panelHeightOf(frame, presentation) + (traceBand ? std::round(frame.y * 0.24f) : 0.0f);
+    float band =
+        panelHeightOf(frame, presentation) + (traceBand ? std::round(frame.y * 0.24f) : 0.0f);
     int w = (frame.x - (n - 1) * static_cast<int>(GAP)) / n;
     return {w, frame.y - static_cast<int>(band)};
 }
@@ -66,8 +67,8 @@ std::optional<std::string> compareFrameProblem(glm::ivec2 frame, int parts, bool
     }
     if (scene.y < MIN_COMPARE_PART_HEIGHT) {
         return "a split view needs a frame at least " +
-               std::to_string(frame.y - scene.y + MIN_COMPARE_PART_HEIGHT) +
-               " pixels high, got " + std::to_string(frame.y);
+               std::to_string(frame.y - scene.y + MIN_COMPARE_PART_HEIGHT) + " pixels high, got " +
+               std::to_string(frame.y);
     }
     return std::nullopt;
 }
@@ -123,7 +124,8 @@ void CompareView::follow(const Session& main) {
     const std::optional<ScenePoint>& point = main.point();
     for (int i = 0; i < parts(); ++i) {
         Session& p = *mParts[static_cast<size_t>(i)];
-        if (p.lesson().sourcePath != main.lesson().sourcePath) p.loadLesson(main.lesson().sourcePath);
+        if (p.lesson().sourcePath != main.lesson().sourcePath)
+            p.loadLesson(main.lesson().sourcePath);
         if (p.step() != main.step()) p.goToStep(main.step());
         if (!sameLight(p.scene().light, main.scene().light)) p.setLight(main.scene().light);
         if (!sameCamera(p.scene().camera, main.scene().camera)) p.setCamera(main.scene().camera);

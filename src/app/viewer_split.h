@@ -36,8 +36,8 @@ class ViewerSplit {
 
     std::unique_ptr<CompareView> mSplit;
     bool mMagnified = false;
-    Camera mWide;              // the view the magnifier magnifies
-    std::string mWideLesson;   // the lesson it belongs to
+    Camera mWide;             // the view the magnifier magnifies
+    std::string mWideLesson;  // the lesson it belongs to
 };
 
 // The split view C shows: the step's `compare`, else the method on screen against nearest.

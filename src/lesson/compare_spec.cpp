@@ -39,8 +39,8 @@ std::string setFromText(LessonSettings& s, const ParamInfo& p, const std::string
             } else if constexpr (std::is_same_v<F, float ShadowSettings::*>) {
                 char* end = nullptr;
                 double v = std::strtod(text.c_str(), &end);
-                bool number = !text.empty() && end == text.c_str() + text.size() &&
-                              std::isfinite(v);
+                bool number =
+                    !text.empty() && end == text.c_str() + text.size() && std::isfinite(v);
                 bool inRange = (p.minOpen ? v > p.min : v >= p.min) && v <= p.max;
                 if (!number || (p.group != ParamGroup::Bias && !inRange)) {
                     return key + " must be a number in " + rangeText(p) + ", got '" + text + "'";
@@ -70,16 +70,18 @@ std::string setFromText(LessonSettings& s, const ParamInfo& p, const std::string
 void addCompareKey(CompareSpec& spec, const std::string& key, std::vector<std::string> values) {
     if (!findParam(key)) {
         std::string known;
-        for (const ParamInfo& p : allParams()) known += (known.empty() ? "" : ", ") + std::string(p.key);
-        throw std::invalid_argument("compare: unknown setting '" + key + "' (known: " + known + ")");
+        for (const ParamInfo& p : allParams())
+            known += (known.empty() ? "" : ", ") + std::string(p.key);
+        throw std::invalid_argument("compare: unknown setting '" + key + "' (known: " + known +
+                                    ")");
     }
     if (std::find(spec.keys.begin(), spec.keys.end(), key) != spec.keys.end()) {
         throw std::invalid_argument("compare: " + key + " is given twice");
     }
     int n = static_cast<int>(values.size());
     if (n < MIN_COMPARE_PARTS || n > MAX_COMPARE_PARTS) {
-        throw std::invalid_argument("compare: " + key + " needs 2 or 3 values (one per part), got " +
-                                    std::to_string(n));
+        throw std::invalid_argument(
+            "compare: " + key + " needs 2 or 3 values (one per part), got " + std::to_string(n));
     }
     if (!spec.empty() && n != spec.parts()) {
         throw std::invalid_argument("compare: " + key + " has " + std::to_string(n) +
@@ -120,7 +122,8 @@ std::string compareSpecText(const CompareSpec& spec) {
     std::string out;
     for (size_t k = 0; k < spec.keys.size(); ++k) {
         out += (k ? " " : "") + spec.keys[k] + "=";
-        for (size_t i = 0; i < spec.values[k].size(); ++i) out += (i ? "," : "") + spec.values[k][i];
+        for (size_t i = 0; i < spec.values[k].size(); ++i)
+            out += (i ? "," : "") + spec.values[k][i];
     }
     return out;
 }
