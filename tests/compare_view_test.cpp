@@ -10,11 +10,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 
 #include "app/animation.h"
 #include "app/magnifier.h"
+#include "json_lite.h"
 #include "render/gl_context.h"
 #include "run_command.h"
 #include "video_read.h"
@@ -259,6 +261,47 @@ TEST(Magnifier, KeepsThePointsLookupAndATexelIsManyPixelsWide) {
     glm::vec2 px = measuredTexelPixels(s, 2);
     EXPECT_GE(std::min(px.x, px.y), 0.95f * k) << px.x << " x " << px.y;
     EXPECT_LE(std::min(px.x, px.y), 1.5f * k) << "the close-up still shows a neighbourhood";
+}
+
+// A lesson step's own `compare` is exported beside its frame; a step without one is not; the
+// JSON's differences are its parts' visibilities' differences. A bad --compare is one line,
+// exit 2, and nothing is written.
+TEST(ExportCompare, AStepsOwnCompareIsWrittenBesideItsFrame) {
+    fs::path dir = testutil::makeTempDir("exportsplit");
+    std::string lesson = (dir / "split.toml").string();
+    {
+        std::ofstream f(lesson);
+        f << "title = \"Split\"\nscene = \"box-on-plane\"\n[settings]\nmethod = \"nearest\"\n"
+             "map_size = 256\npoint = [1.3287, 0, 0.8441]\n"
+             "[[step]]\ntitle = \"One\"\ntext = \"x\"\n"
+             "[[step]]\ntitle = \"Two\"\ntext = \"y\"\n"
+             "compare = { method = [\"nearest\", \"pcf-gather\", \"tent\"] }\n";
+    }
+    auto r =
+        testutil::runPcfscope("export " + lesson + " --size 1024x768 -o " + (dir / "out").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out/split-step01-compare.png"));
+    ASSERT_TRUE(fs::exists(dir / "out/split-step02-compare.png"));
+    jsonlite::Value j = jsonlite::parse(testutil::readAll(dir / "out/split-step02-compare.json"));
+    EXPECT_EQ(j["compare"].string, "method=nearest,pcf-gather,tent");
+    const auto& parts = j["parts"].array;
+    ASSERT_EQ(parts.size(), 3u);
+    EXPECT_EQ(parts[2]["label"].string, "method tent");
+    for (size_t i = 1; i < parts.size(); ++i) {
+        EXPECT_NEAR(parts[i]["difference"].number,
+                    parts[i]["visibility"].number - parts[0]["visibility"].number, 1e-6);
+        EXPECT_EQ(parts[i]["visibility"].number, parts[i]["trace"]["visibility"].number);
+    }
+    std::string out = (dir / "bad").string();
+    for (std::string args :
+         {"--compare bias=none", "--compare \"method=nearest,tent kernel=3,4\" --steps 2",
+          "--compare bias=none,slope --size 320x180"}) {
+        auto bad = testutil::runPcfscope("export " + lesson + " " + args + " -o " + out);
+        EXPECT_EQ(bad.exitCode, 2) << args << ": " << bad.err;
+        EXPECT_EQ(testutil::lineCount(bad.err), 1) << args << ": " << bad.err;
+        EXPECT_FALSE(fs::exists(out)) << args;
+    }
+    fs::remove_all(dir);
 }
 
 // The viewer's C and Z, replayed by --keys: the window shows exactly the frames `export
