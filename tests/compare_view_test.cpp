@@ -321,10 +321,11 @@ TEST(ViewKeys, CIsTheSplitViewAndZTheMagnifierAsExportWritesThem) {
     view("c", "c.png");
     view("z", "z.png");
     view("z z", "zz.png");
+    view("z right", "zr.png");  // the next step's point, found in the lesson's view, magnified
     auto split = testutil::runPcfscope(
         "export 1 --steps 1 --compare method=nearest,pcf-gather -o " + d + "/split");
     ASSERT_EQ(split.exitCode, 0) << split.err;
-    auto magnified = testutil::runPcfscope("export 1 --steps 1 --magnify -o " + d + "/magnified");
+    auto magnified = testutil::runPcfscope("export 1 --steps 1-2 --magnify -o " + d + "/magnified");
     ASSERT_EQ(magnified.exitCode, 0) << magnified.err;
     auto plain = testutil::runPcfscope("export 1 --steps 1 -o " + d + "/plain");
     ASSERT_EQ(plain.exitCode, 0) << plain.err;
@@ -333,6 +334,8 @@ TEST(ViewKeys, CIsTheSplitViewAndZTheMagnifierAsExportWritesThem) {
               testutil::readAll(d + "/split" + stem + "-compare.png"));
     EXPECT_EQ(testutil::readAll(d + "/z.png"), testutil::readAll(d + "/magnified" + stem + ".png"));
     EXPECT_NE(testutil::readAll(d + "/z.png"), testutil::readAll(d + "/plain" + stem + ".png"));
+    EXPECT_EQ(testutil::readAll(d + "/zr.png"),
+              testutil::readAll(d + "/magnified/01-hard-shadows-step02.png"));
     EXPECT_EQ(testutil::readAll(d + "/zz.png"), testutil::readAll(d + "/plain" + stem + ".png"));
     fs::remove_all(dir);
 }

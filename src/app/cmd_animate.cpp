@@ -155,6 +155,44 @@ std::vector<std::string> planPngs(OutputFiles& outputs, const AnimateOptions& o,
     return pngs;
 }
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void checkSplitSize(const AnimateOptions& o, glm::ivec2 size, int parts) {
+    if (auto problem = compareFrameProblem(size, parts, o.presentation, !o.noTrace)) {
+        throw UsageError("--size " + o.size + ": " + *problem);
+    }
+}
+
+// The session at the step, watching `point`, magnified when asked; with a split view (returned)
+// it is the scene alone at a part's size: the sweep moves it as the parts see it.
+std::unique_ptr<CompareView> setUpView(Session& session, const AnimateOptions& o,
+                                       const std::optional<CompareSpec>& split,
+                                       const std::optional<ScenePoint>& point) {
+    std::unique_ptr<CompareView> view;
+    if (split) {
+        view = std::make_unique<CompareView>(session.frameSize(), o.presentation, *split);
+        view->setTraceBand(!o.noTrace);
+        session.setSceneOnly(true);
+        session.setFrameSize(view->partSceneSize());
+    }
+    if (point) session.pinPoint(*point);
+    if (o.magnify) magnifySession(session, session.scene().camera);
+    return view;
+}
+
+AnimationOptions animationOptions(const AnimateOptions& o, AnimationSweep sweep, int compare) {
+    AnimationOptions ao;
+    ao.sweep = sweep;
+    ao.frames = o.frames;
+    ao.snap = o.snap;
+    ao.flicker = !o.noTrace;
+    ao.compareMethod = compare;
+    ao.compareKernel = o.compareKernel;
+    return ao;
+}
+
 int runAnimate(AnimateOptions o) {
     glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE, MIN_SESSION_SIZE);
     std::optional<AnimationSweep> sweep = animationSweepFromName(o.sweep);
@@ -171,11 +209,7 @@ int runAnimate(AnimateOptions o) {
     int compare = compareMethodOf(o, stepSettings);
     std::optional<CompareSpec> split = splitSpecOf(o, stepSettings);
     std::optional<ScenePoint> point = pointOption(lesson.scene, o.point);
-    if (split) {
-        if (auto problem = compareFrameProblem(size, split->parts(), o.presentation, !o.noTrace)) {
-            throw UsageError("--size " + o.size + ": " + *problem);
-        }
-    }
+    if (split) checkSplitSize(o, size, split->parts());
     std::string stem = frameStem(lesson.name, o.step) + "-" + o.sweep;
     if (o.videos.empty() && o.pngDir.empty())
         o.videos.push_back("pcfscope-frames/" + stem + ".mp4");
@@ -190,23 +224,8 @@ int runAnimate(AnimateOptions o) {
     session.loadLesson(path);
     session.goToStep(o.step - 1);
     session.setSceneOnly(o.sceneOnly);
-    std::unique_ptr<CompareView> splitView;
-    if (split) {
-        splitView = std::make_unique<CompareView>(size, o.presentation, *split);
-        splitView->setTraceBand(!o.noTrace);
-        // The sweep moves this session as the parts see it: the scene alone at a part's size.
-        session.setSceneOnly(true);
-        session.setFrameSize(splitView->partSceneSize());
-    }
-    if (point) session.pinPoint(*point);
-    if (o.magnify) magnifySession(session, session.scene().camera);
-    AnimationOptions ao;
-    ao.sweep = *sweep;
-    ao.frames = o.frames;
-    ao.snap = o.snap;
-    ao.flicker = !o.noTrace;
-    ao.compareMethod = compare;
-    ao.compareKernel = o.compareKernel;
+    std::unique_ptr<CompareView> splitView = setUpView(session, o, split, point);
+    AnimationOptions ao = animationOptions(o, *sweep, compare);
     Animation animation = splitView ? Animation(session, ao, *splitView) : Animation(session, ao);
 
     auto start = std::chrono::steady_clock::now();
@@ -215,9 +234,7 @@ int runAnimate(AnimateOptions o) {
         std::vector<uint8_t> rgba = splitView ? splitView->readFrame() : session.readFrame();
         for (VideoOut& v : videos) v.writer->addFrame(rgba);
         if (!pngs.empty()) writePngRgba8(pngs[static_cast<size_t>(k)], size.x, size.y, rgba);
-        progressBar(
-            k + 1, o.frames,
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        progressBar(k + 1, o.frames, secondsSince(start));
     }
     std::vector<std::pair<fs::path, fs::path>> moves;
     double encode = 0.0;
@@ -227,8 +244,7 @@ int runAnimate(AnimateOptions o) {
         moves.emplace_back(v.staging->path() / v.final.filename(), v.final);
     }
     outputs.commitMoves(moves);
-    double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double seconds = secondsSince(start);
     std::fprintf(
         stderr, "animate: %d frames of %dx%d in %.2f s (%.1f frames/s; encoding %.2f s, %.0f %%)\n",
         o.frames, size.x, size.y, seconds, o.frames / seconds, encode, 100.0 * encode / seconds);

@@ -57,6 +57,7 @@ void ViewerSplit::toggleMagnifier(Session& session) {
     if (mMagnified) {
         mWide = session.scene().camera;
         mWideLesson = session.lesson().sourcePath;
+        mStep = session.step();
         magnifySession(session, mWide);
         return;
     }
@@ -70,6 +71,13 @@ void ViewerSplit::follow(Session& session) {
     if (session.lesson().sourcePath != mWideLesson) {
         mMagnified = false;  // a new lesson came with its own camera
         return;
+    }
+    if (session.step() != mStep) {
+        // A new step's point is found as the lesson finds it, in the lesson's own view (the
+        // close-up may not see it), then magnified.
+        mStep = session.step();
+        session.setCamera(mWide);
+        session.goToStep(mStep);
     }
     magnifySession(session, mWide);
 }

@@ -38,6 +38,7 @@ class ViewerSplit {
     bool mMagnified = false;
     Camera mWide;             // the view the magnifier magnifies
     std::string mWideLesson;  // the lesson it belongs to
+    int mStep = 0;            // the step whose point it magnifies
 };
 
 // The split view C shows: the step's `compare`, else the method on screen against nearest.
