@@ -246,7 +246,7 @@ CheckedStability checkStabilityCommand(const StabilityCommandOptions& o) {
     CheckedStability c{parseOptions(o), {}, {}};
     // --quick draws its charts at half size unless told otherwise.
     std::string chartText = o.quick && !o.given("--chart-size") ? "640x360" : o.chartSize;
-    c.chartSize = parseSize("--chart-size", chartText, MAX_FRAME_SIDE, glm::ivec2(64));
+    c.chartSize = parseSize("--chart-size", chartText, CHART_SIZE_RANGE);
     c.scene = o.render.loadScene();
     if (o.out.empty()) throw UsageError("-o needs a directory");
     // Measured peaks of `stability --quick`: 245 MB at 320x180, 432 MB at 960x540, so 414 bytes
@@ -325,6 +325,7 @@ Command addStabilityCommand(CLI::App& app) {
     o->sub = sub;
     o->render.size = "480x270";
     o->render.defaults.mapSize = 512;
+    o->render.frameRange.min = glm::ivec2(MIN_STABILITY_FRAME_SIDE);
     o->render.addTo(sub, DEFAULT_SCENE);
     // The single-lookup options of the shared set do not apply here (parseOptions says so when
     // given): out of --help, which listed them as if they did.
@@ -343,7 +344,7 @@ Command addStabilityCommand(CLI::App& app) {
                     "all)");
     sub->add_option("-o,--out", o->out, "output directory (default: stability)");
     sub->add_option("--chart-size", o->chartSize,
-                    "chart size WxH (default 1280x720; --quick 640x360)");
+                    sizeHelp("chart size", CHART_SIZE_RANGE, "default 1280x720; --quick 640x360"));
     sub->add_option("--spp", o->spp, "ground truth: K x K samples per pixel (default 2)");
     sub->add_option("--threads", o->threads, "ground truth threads (0 = all cores, the default)");
     sub->add_option("--pixel", o->pixel,
