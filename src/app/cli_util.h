@@ -3,21 +3,15 @@
 
 #include <glm/glm.hpp>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "base/usage_error.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
 
 namespace pcf {
-
-// Bad input on the command line or in a file: the app prints what() on one line and exits 2.
-class UsageError : public std::runtime_error {
-  public:
-    using std::runtime_error::runtime_error;
-};
 
 // "a,b,a" -> {"a", "b"}: the comma-separated items, each once, in order; throws UsageError naming
 // the option on an empty item.

@@ -197,10 +197,9 @@ std::string settingsLine(const StabilityOptions& o) {
 // What the command writes into -o: the CSV, the Markdown, and each chart its sweeps draw.
 std::vector<std::string> outputNames(const std::vector<Sweep>& sweeps) {
     std::vector<std::string> names = {"stability.csv", "stability.md"};
-    if (has(sweeps, Sweep::Acne)) names.push_back("stability_acne.png");
-    if (has(sweeps, Sweep::Leak)) names.push_back("stability_leak.png");
-    if (has(sweeps, Sweep::Shimmer)) names.push_back("stability_shimmer.png");
-    if (has(sweeps, Sweep::Precision)) names.push_back("stability_precision.png");
+    for (const SweepChart& c : sweepCharts()) {
+        if (has(sweeps, c.sweep)) names.emplace_back(c.file);
+    }
     if (has(sweeps, Sweep::Aliasing)) names.push_back("aliasing_heatmap.png");
     return names;
 }
@@ -216,17 +215,9 @@ void writeCharts(const fs::path& dir, const std::vector<StabilityRow>& rows,
         if (rgba.empty()) throw std::runtime_error("no rows for " + name);
         writePngRgba8((dir / name).string(), chartSize.x, chartSize.y, rgba);
     };
-    if (has(sweeps, Sweep::Acne)) {
-        chart("stability_acne.png", drawAcneChart(rows, chartSize, source, minPx));
-    }
-    if (has(sweeps, Sweep::Leak)) {
-        chart("stability_leak.png", drawLeakChart(rows, chartSize, source, minPx));
-    }
-    if (has(sweeps, Sweep::Shimmer)) {
-        chart("stability_shimmer.png", drawShimmerChart(rows, chartSize, source, minPx));
-    }
-    if (has(sweeps, Sweep::Precision)) {
-        chart("stability_precision.png", drawPrecisionChart(rows, chartSize, source, minPx));
+    for (const SweepChart& c : sweepCharts()) {
+        if (has(sweeps, c.sweep))
+            chart(std::string(c.file), c.draw(rows, chartSize, source, minPx));
     }
     // The heat map with its colour scale and map size, at the charts' size.
     for (const StabilityImage& image : result.images) {

@@ -55,8 +55,7 @@ int runView(const ViewCommandOptions& o) {
 
 int runMainJob() {
     std::vector<std::string> lessons = builtInLessons();
-    if (lessons.empty())
-        throw UsageError(std::string("no lessons found in ") + PCFSCOPE_LESSON_DIR);
+    if (lessons.empty()) throw UsageError(std::string("no lessons found in ") + lessonDirectory());
     const char* display = std::getenv("DISPLAY");
     if (display && *display) {
         ViewerOptions v;
