@@ -372,15 +372,21 @@ class LessonParser {
                                      "; a lesson's own scene is given by top-level [camera], "
                                      "[light] and [[object]] tables");
             }
-            if (hasTables) {
-                fail(*sceneNode,
-                     "lesson gives both scene = \"" + name->get() +
-                         "\" and scene tables ([camera], [light], [[object]]): keep one");
+            // A [camera] alone beside a preset views the preset from there (lesson 8 looks
+            // closer, so that its acne stripes are texels several pixels wide, not a moire).
+            if (root.contains("light") || root.contains("object")) {
+                fail(*sceneNode, "lesson gives both scene = \"" + name->get() +
+                                     "\" and scene tables ([light], [[object]]): keep one");
             }
             std::optional<Scene> scene = presetScene(name->get());
             if (!scene) {
                 fail(*sceneNode, "unknown scene preset '" + name->get() +
                                      "' (known: " + joinNames(presetNames()) + ")");
+            }
+            if (const toml::node* camera = root.get("camera")) {
+                const toml::table* table = camera->as_table();
+                if (!table) fail(*camera, "camera must be a table, got " + typeName(*camera));
+                scene->camera = parseCameraToml(*table, mSource, *scene);
             }
             return *scene;
         }

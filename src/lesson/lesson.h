@@ -9,7 +9,8 @@
 //   title = "The bilinear lerp"       required, the lesson's title
 //   scene = "box-on-plane"            a preset name (scene/presets.h), OR the scene's own
 //                                     [camera], [light] and [[object]] tables at the top level
-//                                     (scene/scene_file.h), never both
+//                                     (scene/scene_file.h), never both; a preset with a
+//                                     [camera] table alone: the preset seen from that camera
 //
 //   [settings]                        optional: the state before the first step. Every key is
 //                                     optional. The shadow settings' keys, their types, ranges

@@ -6,9 +6,9 @@ namespace pcf {
 
 const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
     static const std::vector<std::pair<std::string, std::string>> keys = {
-        {"click", "pick a pixel"},
-        {"Up / Down", "move the pixel one row"},
-        {"Shift+arrows", "move the pixel one pixel"},
+        {"click", "pin the scene point under the cursor"},
+        {"Up / Down", "pin the point one pixel row up / down"},
+        {"Shift+arrows", "pin the point one pixel over"},
         {"Space, Right", "next page of the text, then next step"},
         {"Left, Backspace", "previous step"},
         {"Home / End", "first / last step"},
