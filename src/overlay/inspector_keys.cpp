@@ -20,6 +20,8 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"G", "texel grid on the scene on / off"},
         {"A", "aliasing heat map (pixels per texel)"},
         {"O / Shift+O, S", "slide the map's grid 1/8 texel; snap"},
+        {"C", "split view: the step's compare, or this method and nearest"},
+        {"Z", "magnifier: a close-up on the point, a texel many pixels wide"},
         {"L / Shift+L", "next / previous lesson"},
         {"E", "export this frame (PNG + JSON)"},
         {"P", "presentation mode"},
