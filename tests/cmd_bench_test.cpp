@@ -158,6 +158,33 @@ TEST_F(BenchCommand, ChosenMethodsKernelsMapsAndChartSize) {
     EXPECT_EQ(chart.height, 400);
 }
 
+// Without --quick the defaults are N = 3, 5 on a 1024 map (a minute on 2 cores); --full sweeps
+// N = 3, 5, 7 over maps 256..2048, and options given explicitly still win over either.
+TEST_F(BenchCommand, DefaultsAreNThreeAndFiveOnA1024MapAndFullSweepsEverything) {
+    const std::string tiny = " --size 64x36 --repeats 1 --shimmer-frames 0 -o ";
+    auto plain = testutil::runPcfscope("bench --methods tent,nearest" + tiny + path("plain"));
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    std::string csv = testutil::readAll(path("plain") + "/bench.csv");
+    EXPECT_EQ(testutil::lineCount(csv), 1 + 3) << csv;
+    EXPECT_NE(csv.find("\ntent,3,1024,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\ntent,5,1024,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\nnearest,0,1024,"), std::string::npos) << csv;
+
+    auto maps = testutil::runPcfscope("bench --full --methods nearest" + tiny + path("maps"));
+    ASSERT_EQ(maps.exitCode, 0) << maps.err;
+    csv = testutil::readAll(path("maps") + "/bench.csv");
+    EXPECT_EQ(testutil::lineCount(csv), 1 + 4) << csv;
+    for (const char* size : {"256", "512", "1024", "2048"}) {
+        EXPECT_NE(csv.find("\nnearest,0," + std::string(size) + ","), std::string::npos) << csv;
+    }
+    auto kernels =
+        testutil::runPcfscope("bench --full --methods tent --map-sizes 64" + tiny + path("n"));
+    ASSERT_EQ(kernels.exitCode, 0) << kernels.err;
+    csv = testutil::readAll(path("n") + "/bench.csv");
+    EXPECT_EQ(testutil::lineCount(csv), 1 + 3) << csv;
+    EXPECT_NE(csv.find("\ntent,7,64,"), std::string::npos) << csv;
+}
+
 // --weights takes a list: pcf-naive and pcf-gather run once per weighting, every other method
 // with the box; the CSV names the weighting and the gaussian's sigma.
 TEST_F(BenchCommand, WeightsListSweepsTheWeightedMethods) {
@@ -253,6 +280,7 @@ TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
         {"--cull sideways", "--cull"},
         {"--reference --bias receiver-plane", "--reference times the methods' plain"},
         {"--reference --depth-format 24", "--depth-format 32f"},
+        {"--full", "--quick and --full exclude each other"},
     };
     for (const Case& c : cases) {
         auto r = testutil::runPcfscope("bench --quick " + c.args + " -o " + path("out"));

@@ -154,14 +154,14 @@ TEST_F(ShaderLoader, CompileErrorNamesTheFileAndLine) {
 }
 
 TEST_F(ShaderLoader, ErrorInsideAnEmbeddedFileNamesThatFile) {
-    // A define that breaks the first line of the prelude using `texelFetch`: the error lands in
+    // A define that breaks the first line of the prelude using `textureLod`: the error lands in
     // shaders/shared/pcf_prelude.h, on that line.
     std::string prelude(embeddedShader("shared/pcf_prelude.h"));
-    int line = lineOf(prelude, "texelFetch(map");
+    int line = lineOf(prelude, "textureLod(map");
     ASSERT_GT(line, 0);
     std::string message = buildError({{GL_FRAGMENT_SHADER,
                                        {"shared/pcf_prelude.h"},
-                                       "#define texelFetch no_such_function",
+                                       "#define textureLod no_such_function",
                                        {{"main.frag", "void main() {}"}}}});
     std::string where = "shaders/shared/pcf_prelude.h:" + std::to_string(line) + ": ";
     EXPECT_NE(message.find(where), std::string::npos) << "want " << where << " in\n" << message;

@@ -22,8 +22,8 @@ PCF_CONST int PCF_POISSON = 8;
 PCF_CONST int PCF_METHOD_COUNT = 9;
 
 // What one fetch instruction is, for the trace and the fetch counts.
-PCF_CONST int PCF_FETCH_POINT = 0;   // one texelFetch
-PCF_CONST int PCF_FETCH_LOOKUP = 1;  // a software bilinear lookup: four texelFetch
+PCF_CONST int PCF_FETCH_POINT = 0;   // one texel read (nearest sampler, texel's centre)
+PCF_CONST int PCF_FETCH_LOOKUP = 1;  // a software bilinear lookup: four texel reads
 PCF_CONST int PCF_FETCH_GATHER = 2;  // one textureGather on the comparison sampler
 PCF_CONST int PCF_FETCH_HW = 3;      // one hardware comparison tap (sampler2DShadow, GL_LINEAR)
 
@@ -266,16 +266,15 @@ PCF_FN vec2 pcfReceiverPlaneDzDuv(vec3 dx, vec3 dy) {
     return vec2(a, b);
 }
 
-// Reads one texel (clamped to the edge), compares it, and reports the tap with its weight in
-// the final result.
+// Compares the depth read for texel `texel` (clamped to the edge) and reports the tap with its
+// weight in the final result.
 // The tap's own ref is the receiver plane's at the (unclamped) texel's centre under
 // receiver-plane bias, and the lookup's ref otherwise; on fixed-point maps it is then clamped to
 // [0,1] (pcfDepthRef); the soft mode compares softly.
-PCF_MAP_FN float pcfFetchCompare(Map map, ivec2 texel, PcfRef ref, float weight) {
+PCF_MAP_FN float pcfCompareTexel(Map map, ivec2 texel, float depth, PcfRef ref, float weight) {
     pcfTapWanted(map, texel);  // the trace marks taps that clamp to the edge
     ivec2 size = mapSize(map);
-    ivec2 t = pcfClampTexel(texel, size);
-    float depth = fetchDepth(map, t);
+    ivec2 t = pcfClampTexel(texel, size);  // in GLSL only the (empty) pcfTap reads it
     // The texel's centre only where the plane needs it: the other modes pay nothing per tap.
     float tapRef = ref.ref;
     if (ref.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
@@ -285,6 +284,12 @@ PCF_MAP_FN float pcfFetchCompare(Map map, ivec2 texel, PcfRef ref, float weight)
     float lit = pcfCompareBiased(depth, r, ref.bias);
     pcfTap(map, t, depth, r, lit, weight);
     return lit;
+}
+
+// Reads one texel (clamped to the edge) and compares it (pcfCompareTexel).
+PCF_MAP_FN float pcfFetchCompare(Map map, ivec2 texel, PcfRef ref, float weight) {
+    float depth = fetchDepth(map, pcfClampTexel(texel, mapSize(map)));
+    return pcfCompareTexel(map, texel, depth, ref, weight);
 }
 
 // The bilinear weights of the four texels of a 2x2, row-major: (0,0), (1,0), (0,1), (1,1).
@@ -347,6 +352,12 @@ inline vec4 gatherDepth(Map map, vec2 uv) {
                 fetchDepth(map, pcfClampTexel(tp.base + ivec2(1, 0), size)),
                 fetchDepth(map, pcfClampTexel(tp.base + ivec2(0, 0), size)));
 }
+
+// On the CPU the point read at texel position p is the texel floor(p), clamped to the edge.
+template <class Map>
+inline float pointDepth(Map map, vec2 p) {
+    return fetchDepth(map, pcfClampTexel(ivec2(floor(p)), mapSize(map)));
+}
 #endif
 
 // A hardware tap compares its four texels against one ref: under receiver-plane bias that is
@@ -408,7 +419,8 @@ PCF_MAP_FN float pcfNearest(Map map, vec2 uv, PcfRef ref, float weight) {
         return pcfInterpolatedCompare(map, uv, ref.ref, weight);
     }
     pcfFetch(map, PCF_FETCH_POINT, uv, weight);
-    return pcfFetchCompare(map, ivec2(floor(p)), ref, weight);
+    // pointDepth, not fetchDepth of the int texel: in GLSL the sampler clamps, in float.
+    return pcfCompareTexel(map, ivec2(floor(p)), pointDepth(map, p), ref, weight);
 }
 
 // box2x2: the bilinear 2x2 texels, averaged without weights: only 0, .25, .5, .75 or 1.

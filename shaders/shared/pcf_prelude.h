@@ -9,8 +9,8 @@
 //   - single components only (v.x), no swizzles (v.xy) and no bool vectors in interfaces;
 //   - no out-parameters: return a struct, built with Type(a, b, ...) (C++20 aggregate init);
 //   - every function is marked PCF_FN, or PCF_MAP_FN when it reads the shadow map;
-//   - the map is read only through fetchDepth(map, ivec2), hwTap(...), gatherCompare(...) and
-//     gatherDepth(...);
+//   - the map is read only through fetchDepth(map, ivec2), pointDepth(map, vec2), hwTap(...),
+//     gatherCompare(...) and gatherDepth(...);
 //     each texel read is reported through pcfTap(...), which records on the CPU and is
 //     nothing in GLSL;
 //   - values that feed floor() are PCF_PRECISE, so the GLSL compiler cannot fuse a multiply
@@ -44,7 +44,7 @@
 #define PCF_ARRAY_BEGIN(T, n) T[n](
 #define PCF_ARRAY_END )
 
-// In GLSL the map is the depth texture behind a non-comparison sampler (texelFetch), and the
+// In GLSL the map is the depth texture behind a non-comparison sampler (nearest), and the
 // same texture is bound a second time behind a comparison sampler (GL_LINEAR,
 // GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL, clamp to edge) for hardware taps and gathers.
 #define Map sampler2D
@@ -66,7 +66,21 @@ ivec2 mapSize(Map map) { return textureSize(map, 0); }
 #endif
 int mapFixedPoint(Map map) { return PCF_FIXED_POINT; }
 int mapPrecision(Map map) { return PCF_PRECISION; }
-float fetchDepth(Map map, ivec2 texel) { return texelFetch(map, texel, 0).r; }
+// A texel's depth (the kernel clamps texel to the edge first), read through the nearest sampler at
+// the texel's centre, not with texelFetch: llvmpipe bounds-checks every texelFetch again after
+// the kernel's own clamp, which made the point-sampling methods cost 1.2-1.7x their textbook
+// passes (scripts/pass-overhead, issue 23). A centre is half a texel from either edge, so every
+// GPU's nearest rounding lands on that texel (GL 4.5 core, 8.14.2: floor(u * size)), whether it
+// keeps 8 sub-texel bits (NVIDIA, AMD) or a float (llvmpipe): exactly texelFetch's value.
+float fetchDepth(Map map, ivec2 texel) {
+    return textureLod(map, (vec2(texel) + 0.5f) * (1.0f / vec2(textureSize(map, 0))), 0.0f).r;
+}
+// The depth of the texel that texel position p (uv * size) falls in, floor(p), clamped to the
+// edge: fetchDepth(map, clamp(ivec2(floor(p)))). The same centre read, in float: the sampler's
+// clamp to edge is the clamp, and no int conversions (Poisson's 16 taps: 1.24x -> 1.12x).
+float pointDepth(Map map, vec2 p) {
+    return textureLod(map, (floor(p) + 0.5f) * (1.0f / vec2(textureSize(map, 0))), 0.0f).r;
+}
 void pcfTap(Map map, ivec2 texel, float depth, float ref, float lit, float weight) {}
 void pcfFetch(Map map, int kind, vec2 uv, float weight) {}
 void pcfTapWanted(Map map, ivec2 texel) {}
@@ -82,7 +96,7 @@ vec4 gatherCompare(Map map, vec2 uv, float ref, vec4 weights) {
     return textureGather(uPcfCompare, uv, ref);
 }
 
-// One gather of raw depths (no comparison), same component order: through the texelFetch side's
+// One gather of raw depths (no comparison), same component order: through the nearest side's
 // non-comparison sampler (clamp to edge), for comparisons made in the shader (soft bias).
 vec4 gatherDepth(Map map, vec2 uv) { return textureGather(map, uv, 0); }
 

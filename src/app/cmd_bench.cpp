@@ -64,6 +64,7 @@ struct BenchCommandOptions {
     std::string mapSizes;
     std::string out = "bench";
     bool quick = false;
+    bool full = false;
     std::string chartSize;
     int spp = DEFAULT_TRUTH_SPP;
     int repeats = 9;  // timing rounds; 5 with --quick unless given
@@ -172,8 +173,19 @@ void checkReference(const RenderSettings& base, const BenchOptions& options) {
     }
 }
 
+// The command's own defaults: every method at N = 3, 5 on a 1024 map, a run per method and N,
+// so that `pcfscope bench` answers in about a minute on 2 cores (issue 23); --full (the
+// library's BenchOptions) sweeps N = 3, 5, 7 over maps 256..2048, five times the runs.
+constexpr int DEFAULT_KERNELS[] = {3, 5};
+constexpr int DEFAULT_MAP_SIZE = 1024;
+
 BenchOptions parseSweep(const BenchCommandOptions& o) {
+    if (o.quick && o.full) throw UsageError("--quick and --full exclude each other");
     BenchOptions options = o.quick ? quickBenchOptions() : BenchOptions{};
+    if (!o.quick && !o.full) {
+        options.kernels.assign(std::begin(DEFAULT_KERNELS), std::end(DEFAULT_KERNELS));
+        options.mapSizes = {DEFAULT_MAP_SIZE};
+    }
     RenderSettings base = baseSettings(o);
     options.base = base;
     if (!o.quick || o.given("--size")) options.frameSize = base.frameSize;
@@ -424,16 +436,19 @@ Command addBenchCommand(CLI::App& app) {
     sub->add_option("--methods", o->methods,
                     "method ids, comma-separated (default: all that combine with --bias)");
     sub->add_option("--kernels", o->kernels,
-                    "N for the methods that take one, comma-separated (default 3,5,7; tent runs "
-                    "only " +
+                    "N for the methods that take one, comma-separated (default 3,5; --full "
+                    "3,5,7; tent runs only " +
                         kernelSizesText(PCF_TENT) + ")");
     sub->add_option("--map-sizes", o->mapSizes,
-                    "shadow map sizes, comma-separated (default 256,512,1024,2048)");
+                    "shadow map sizes, comma-separated (default 1024; --full 256,512,1024,2048)");
     sub->add_option("-o,--out", o->out, "output directory (default: bench)");
     sub->add_flag("--quick", o->quick,
                   "a few seconds, for CI: 320x180 frame, maps 128,256, N = 3, 5 timing rounds, "
                   "4 shimmer frames (explicit options still win); its timings are indicative "
                   "only");
+    sub->add_flag("--full", o->full,
+                  "the whole sweep: N = 3,5,7 and maps 256,512,1024,2048, five times the default's "
+                  "runs (explicit options still win)");
     sub->add_option("--chart-size", o->chartSize,
                     sizeHelp("size of the two charts", CHART_SIZE_RANGE,
                              "default: the frame size, at least 960x540"));

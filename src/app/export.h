@@ -8,6 +8,7 @@
 
 #include "app/live_keys.h"
 #include "app/output_files.h"
+#include "lesson/compare_spec.h"
 #include "lesson/lesson.h"
 
 namespace pcf {
@@ -26,6 +27,10 @@ struct ExportPlan {
     // Steps that are animations (`animate = {...}`) are also written as STEM.mp4 (planVideos
     // lists them); false: stills only (the main job).
     bool videos = false;
+    // Per step: the split view written beside its frame as STEM-compare.png (+ .json), from the
+    // step's `compare` or `export --compare`; empty: none (planCompares fills it).
+    std::vector<CompareSpec> compares;
+    bool magnify = false;  // every frame through the magnifier (magnifier.h)
 };
 
 // The MP4s of the planned steps that are animations, checked and added to `outputs` like the
@@ -39,6 +44,12 @@ void planVideos(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson, gl
 // steps already in the folder (STEM-pageN.*) count as outputs too, so they are refused here.
 ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::string& lessonName,
                       glm::ivec2 steps);
+
+// Fills plan.compares: `all` (export --compare) for every step, else each step's own `compare`;
+// adds their files to `outputs`. Throws UsageError when a step's settings cannot take `all`.
+struct Lesson;
+void planCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
+                  const CompareSpec& all);
 
 // Renders and writes each planned step headless; progress and frames/s on stderr. A step whose
 // text pages at this size (inspector.h) also gets one frame per further page, STEM-page2.png

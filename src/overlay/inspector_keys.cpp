@@ -30,6 +30,8 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"K", "cull mode of the shadow pass"},
         {"D", "depth format: 16, 24, 32f"},
         {"X", "marks on the scene on / off"},
+        {"C", "split view: the step's compare, or this method and nearest"},
+        {"Z", "magnifier: a close-up on the point, a texel many pixels wide"},
         {"L / Shift+L", "next / previous lesson"},
         {"E", "export this frame (PNG + JSON)"},
         {"P", "presentation mode"},

@@ -2,6 +2,7 @@
 // visibility, fetch counts, uv, ref, bias), the notes on what the cells leave out, the legend of
 // the marks drawn, and the formula with its numbers from the kernel's own explanation.
 #include "kernel/methods.h"
+#include "kernel/trace_explain.h"
 #include "overlay/inspector_plan.h"
 
 namespace pcf::inspector_detail {
@@ -51,9 +52,10 @@ namespace {
 
 std::string formulaText(const Trace& tr) {
     std::string out;
-    for (size_t k = 0; k < tr.steps.size(); ++k) {
-        const TraceStep& s = tr.steps[k];
-        bool last = k + 1 == tr.steps.size();
+    std::vector<TraceStep> steps = explainTrace(tr);
+    for (size_t k = 0; k < steps.size(); ++k) {
+        const TraceStep& s = steps[k];
+        bool last = k + 1 == steps.size();
         if (last || s.kind == TraceStepKind::Lerp) {
             if (!out.empty()) out += "\n";
             out += s.text;

@@ -107,7 +107,7 @@ GlTexture createDepthTexture(const ShadowMap& map);
 // The sampler behind pcf_prelude.h's uPcfCompare: hardware depth comparison (GL_LEQUAL),
 // GL_LINEAR (so one tap is the bilinear 2x2 of DESIGN.md 2), clamped to the edge.
 GlSampler createCompareSampler();
-// Plain nearest-texel reads, clamped to the edge (texelFetch ignores it; textures need one).
+// Plain nearest-texel reads, clamped to the edge: the kernel reads the map through it.
 GlSampler createNearestSampler();
 
 // A framebuffer with its own textures: colour attachment k is colors[k] (GL_COLOR_ATTACHMENT0

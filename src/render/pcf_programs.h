@@ -61,7 +61,7 @@ class PcfProgramCache {
 };
 
 // Binds the shadow map the way pcf_prelude.h expects it: unit 0 = uPcfDepth (nearest, no
-// comparison: texelFetch), unit 1 = uPcfCompare (GL_LINEAR, GL_LEQUAL comparison), the same
+// comparison: texel reads), unit 1 = uPcfCompare (GL_LINEAR, GL_LEQUAL comparison), the same
 // texture on both. Sets the two sampler uniforms of `program` (which must be in use).
 struct PcfSamplers {
     GlSampler nearest;
