@@ -564,7 +564,8 @@ void Session::traceAtPixel() {
     BiasParams bias = mSettings.biasParams();
     bias.dzduv = glm::vec2(receiver[0], receiver[1]);
     float z = receiver[3] == 1.0f ? receiver[2] : ref + mSettings.depthBias();
-    mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(uv, mMap.width()), bias);
+    float scale = mRenderer->pcfParams(mSettings).penumbraScale;  // pcss's (scene/pcss.h)
+    mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(uv, mMap.width(), scale), bias);
     mLookup = glm::vec3(uv, z);
     mLookupRef = ref;
     mLookupBias = bias;

@@ -44,7 +44,8 @@ std::optional<float> Session::visibilityWith(int method, int kernel) const {
     LessonSettings s = mSettings;
     s.method = method;
     s.kernel = kernel;
-    PcfParams prm = s.pcfParams(glm::vec2(mLookup.x, mLookup.y), mMap.width());
+    PcfParams prm = s.pcfParams(glm::vec2(mLookup.x, mLookup.y), mMap.width(),
+                                mRenderer->pcfParams(s).penumbraScale);
     glm::vec2 uv(mLookup.x, mLookup.y);
     return traceLookup(mMap, uv, mLookup.z, mLookupRef, prm, mLookupBias).visibility;
 }
