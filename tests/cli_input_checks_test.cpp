@@ -6,8 +6,11 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <glm/glm.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -130,6 +133,46 @@ TEST_F(CliInputChecks, HugeDepthImageHeadersAreRefusedBeforeAllocating) {
     mKeep = {"huge.exr"};
     expectRefused("trace --map huge.exr --uv 0.5,0.5 --z 0.5",
                   "huge.exr: is 20000 x 20000 texels; a depth map is at most 16384 on a side");
+}
+
+// Every size option states its range in --help as its error does: "A up to B" (issue 24.13 found
+// "16..8192 a side" in one command and "1x1 up to 8192x8192" in the others).
+TEST_F(CliInputChecks, SizeRangesAreStatedOneWayInTheHelpAndTheError) {
+    struct Case {
+        std::string command, option, range;
+    };
+    const std::vector<Case> cases = {
+        {"render --scene box-on-plane", "--size", "1x1 up to 8192x8192"},
+        {"truth --scene box-on-plane", "--size", "1x1 up to 8192x8192"},
+        {"bench --quick", "--size", "1x1 up to 8192x8192"},
+        {"bench --quick", "--chart-size", "64x64 up to 8192x8192"},
+        {"stability --quick", "--size", "16x16 up to 8192x8192"},
+        {"stability --quick", "--chart-size", "64x64 up to 8192x8192"},
+        {"export 3", "--size", "320x180 up to 8192x8192"},
+        {"animate 13", "--size", "320x180 up to 8192x8192"},
+        {"view 3", "--size", "320x180 up to 8192x8192"},
+    };
+    std::map<std::string, std::string> helps;  // per command, run once
+    for (const Case& c : cases) {
+        std::string sub = c.command.substr(0, c.command.find(' '));
+        if (helps.count(sub) == 0) {
+            auto help = runPcfscope(sub + " --help");
+            ASSERT_EQ(help.exitCode, 0) << sub;
+            helps[sub] = help.out;
+        }
+        const std::string& help = helps[sub];
+        size_t at = help.find("  " + c.option + " ");
+        ASSERT_NE(at, std::string::npos) << sub << " " << c.option;
+        std::string line = help.substr(at, help.find('\n', at) - at);
+        EXPECT_NE(line.find("WxH, " + c.range), std::string::npos) << sub << ": " << line;
+        // One below the smallest side: refused, with the range the help gave.
+        glm::ivec2 lo{0};
+        ASSERT_EQ(std::sscanf(c.range.c_str(), "%dx%d", &lo.x, &lo.y), 2);
+        std::string bad = std::to_string(lo.x - 1) + "x" + std::to_string(lo.y);
+        std::string out = sub == "view" ? "" : " -o out";
+        expectRefused(c.command + " " + c.option + " " + bad + out,
+                      c.option + " " + bad + " is out of range (" + c.range + ")");
+    }
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
 #include "app/session.h"
+#include "app/step_view.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "draw/text_layout.h"
@@ -148,13 +149,13 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
         for (size_t k = 0; k < lesson.steps.size(); ++k) {
             const LessonStep& step = lesson.steps[k];
             const LessonSettings& s = step.settings;
-            // The step's own state: its map fit (grid shift, snap) and its bias, as the
-            // session renders and traces it.
-            renderer.setShadowClipFromWorld(lessonShadowFit(lesson.scene, s, s.mapSize));
-            renderer.render(renderSettingsFor(s, renderScene));
+            // The step rendered and its point traced as the session does it (step_view.h): its
+            // map fit (grid shift, snap), its pinned point, its bias.
+            std::optional<ScenePoint> pinned = stepPoint(lesson.scene, s);
+            renderStepView(renderer, stepView(lesson.scene, s, pinned, renderScene));
             ShadowMap map = renderer.readShadowMap();
             glm::ivec2 px = stepPick(lesson.scene, s, renderScene).pixel;
-            std::vector<float> ls = renderer.readLightSpaceRegion(px, {1, 1});
+            std::optional<PixelLookup> lookup = tracePixel(renderer, map, s, px);
             InspectorModel m;
             m.title = lesson.title;
             for (const LessonStep& st : lesson.steps) m.stepTitles.push_back(st.title);
@@ -166,16 +167,10 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
             m.status =
                 "pcf-gather N=3   bias constant 0.002   cull back   map 1024 32f   scene "
                 "1152x648";
-            if (ls[3] == 1.0f) {
-                // The pinned point's own lookup, as the session traces it (its pixel shows
-                // this very lookup: SceneRenderer::setPick), with the step's bias and fit.
-                std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
-                m.trace = point
-                              ? tracePinned(map, lesson.scene,
-                                            lessonShadowFit(lesson.scene, s, s.mapSize), s, *point)
-                              : traceLookup(map, vec2(ls[0], ls[1]), ls[2] + s.depthBias(), ls[2],
-                                            s.pcfParams(vec2(ls[0], ls[1]), map.width()));
-                StepContext ctx = makeStepContext(step, px);
+            if (lookup) {
+                m.trace = lookup->trace;
+                StepContext ctx =
+                    makeStepContext(s, px, pinned ? lightAngleDeg(lesson.scene, *pinned) : -1.0f);
                 m.stepText = fillText(step.text, *m.trace, ctx);
             } else {
                 m.stepText = step.text;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "app/session.h"
+#include "app/step_view.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_claims.h"
@@ -44,7 +45,6 @@ std::vector<glm::ivec2> sceneSizes() {
 struct RenderedStep {
     Trace trace;
     float gpuVisibility;
-    bool receiver;
     bool onGround;    // the pinned point lies on a plane
     bool inFrame;     // the point shows in the frame
     float pointMiss;  // how far the world point the GPU drew at the pixel is from it
@@ -61,38 +61,29 @@ std::vector<RenderedStep> renderLesson(const std::string& name, glm::ivec2 frame
     std::vector<RenderedStep> out;
     for (const LessonStep& step : lesson.steps) {
         const LessonSettings& s = step.settings;
-        // The step's texel grid (origin_shift, snap), as the viewer and export fit the map.
-        glm::mat4 fit = lessonShadowFit(lesson.scene, s, s.mapSize);
-        renderer.setShadowClipFromWorld(fit);
+        // The step rendered and traced as the viewer and export do it (step_view.h): its texel
+        // grid (origin_shift, snap), its point pinned to its pixel, its bias.
         std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
         EXPECT_TRUE(point) << name;
         if (!point) return out;
         FramePick pick = framePick(lesson.scene.camera, point->posWs, frameSize);
-        PinnedLookup at = pinnedLookup(lesson.scene, fit, s, *point);
         glm::ivec2 px = pick.pixel;
-        renderer.setPick(CameraPick{glm::ivec2(px.x, frameSize.y - 1 - px.y), pick.jitterNdc,
-                                    glm::vec4(at.uv, at.ref, at.z0), at.dzduv});
-        RenderSettings r = renderSettingsFor(s, frameSize);
-        r.writePositions = true;
-        renderer.render(r);
-        std::vector<float> lightSpace = renderer.readLightSpace();
+        StepView view = stepView(lesson.scene, s, point, frameSize);
+        view.render.writePositions = true;
+        renderStepView(renderer, view);
         std::vector<float> visibility = renderer.readVisibility();
-        std::vector<float> receiver = renderer.readReceiver();
         std::vector<float> positions = renderer.readPositions();
         ShadowMap map = renderer.readShadowMap();
         size_t at0 = static_cast<size_t>(px.y) * frameSize.x + px.x;
-        const float* ls = &lightSpace[at0 * 4];
-        // The bias mode with the receiver plane and depth the shader used (receiver target).
-        BiasParams bias = s.biasParams();
-        bias.dzduv = vec2(receiver[at0 * 4], receiver[at0 * 4 + 1]);
-        Trace trace = traceLookup(map, vec2(ls[0], ls[1]), receiver[at0 * 4 + 2], ls[2],
-                                  s.pcfParams(vec2(ls[0], ls[1]), map.width()), bias);
+        std::optional<PixelLookup> lookup = tracePixel(renderer, map, s, px);
+        EXPECT_TRUE(lookup) << name << ": the step's point is on no receiver";
+        if (!lookup) return out;
         glm::vec3 drawn(positions[at0 * 4], positions[at0 * 4 + 1], positions[at0 * 4 + 2]);
         bool plane = std::holds_alternative<Plane>(
             lesson.scene.objects[static_cast<size_t>(point->object)].shape);
-        out.push_back({std::move(trace), visibility[at0], ls[3] > 0.5f, plane, pick.inFrame,
+        out.push_back({lookup->trace, visibility[at0], plane, pick.inFrame,
                        glm::length(drawn - point->posWs),
-                       tracePinned(map, lesson.scene, fit, s, *point), px,
+                       tracePinned(map, lesson.scene, view.fit, s, *point), px,
                        lightAngleDeg(lesson.scene, *point)});
         renderer.setPick(std::nullopt);
     }
@@ -146,7 +137,6 @@ TEST_F(LessonPixels, EveryStepsPixelShowsWhatItsTextSays) {
                 const Trace& t0 = first[i].trace;
                 SCOPED_TRACE(name + " step " + std::to_string(i + 1) + " in " +
                              std::to_string(frameSize.x) + "x" + std::to_string(frameSize.y));
-                EXPECT_TRUE(r.receiver);
                 EXPECT_TRUE(r.inFrame);
                 EXPECT_LT(r.pointMiss, 1e-3f);
                 EXPECT_NEAR(r.gpuVisibility, t.visibility, 1e-5f);

@@ -180,6 +180,44 @@ TEST_F(Reliability, AFileSizeLimitFailsTheCommandAndLeavesNothing) {
     EXPECT_TRUE(leftovers().empty()) << leftovers().front();
 }
 
+// A full disk (ENOSPC, not the size limit above): every command that writes files fails in one
+// line naming it, exits 2 and leaves nothing, whether the disk fills on the first file or later.
+// tests/full_disk_shim.cpp makes the disk "full" under mDir after a number of bytes.
+TEST_F(Reliability, AFullDiskFailsEveryWriterAndLeavesNothing) {
+    const std::vector<std::string> writers = {
+        "render --scene box-on-plane --size 96x54 -o OUT/a.png --raw OUT/raw",
+        "truth --scene box-on-plane --size 48x27 -o OUT/t.exr",
+        "export 3 --size 320x180 --steps 1-2 -o OUT/frames",
+        "stability --quick --sweep aliasing --size 160x90 --map-size 64 -o OUT/s",
+        "bench --quick --size 64x36 --methods nearest --map-sizes 64 -o OUT/b",
+        "animate 13 --step 3 --frames 3 --size 320x180 -o OUT/v.mp4",
+    };
+    // 0: the first write fails; 1000: part of a first file gets through (each output is larger).
+    for (const char* bytes : {"0", "1000"}) {
+        for (std::string cmd : writers) {
+            fs::path out = mDir / "out";
+            fs::create_directory(out);
+            for (size_t at; (at = cmd.find("OUT")) != std::string::npos;)
+                cmd.replace(at, 3, out.string());
+            std::string env =
+                "PCF_FULL_DISK_DIR=" + out.string() + " PCF_FULL_DISK_BYTES=" + bytes +
+                " LD_PRELOAD=" + PCFSCOPE_FULL_DISK_SHIM + " ASAN_OPTIONS=verify_asan_link_order=0";
+            auto r = runPcfscope(cmd, env);
+            EXPECT_EQ(r.exitCode, 2) << bytes << ": " << cmd << "\n" << r.err;
+            // Progress lines may come first; the error is the last line, and the only one of
+            // pcfscope's own.
+            EXPECT_EQ(r.err.find("pcfscope: "), r.err.rfind("pcfscope: ")) << cmd << r.err;
+            EXPECT_NE(r.err.find("No space left on device", r.err.rfind("pcfscope: ")),
+                      std::string::npos)
+                << bytes << ": " << cmd << "\n"
+                << r.err;
+            EXPECT_TRUE(leftovers() == std::vector<std::string>{"out"})
+                << bytes << ": " << cmd << " left " << leftovers().back();
+            fs::remove_all(out);
+        }
+    }
+}
+
 // Standard output is checked like a file: a full one is an error, not a success.
 TEST_F(Reliability, AFullStandardOutputIsAnError) {
     std::string cmd = std::string(PCFSCOPE_EXE) +

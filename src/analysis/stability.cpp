@@ -601,10 +601,12 @@ std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) 
                             ": " + *validateBias(static_cast<int>(b), o.methods.front().method)};
     }
     if (o.sweeps.empty()) return empty("sweep");
-    if (o.frameSize.x < 16 || o.frameSize.y < 16 || o.frameSize.x > MAX_FRAME_SIDE ||
-        o.frameSize.y > MAX_FRAME_SIDE) {
-        return plain("the frame size is out of range (16.." + std::to_string(MAX_FRAME_SIDE) +
-                     " a side)");
+    if (o.frameSize.x < MIN_STABILITY_FRAME_SIDE || o.frameSize.y < MIN_STABILITY_FRAME_SIDE ||
+        o.frameSize.x > MAX_FRAME_SIDE || o.frameSize.y > MAX_FRAME_SIDE) {
+        const std::string lo = std::to_string(MIN_STABILITY_FRAME_SIDE);
+        const std::string hi = std::to_string(MAX_FRAME_SIDE);
+        return plain("the frame size is out of range (" + lo + "x" + lo + " up to " + hi + "x" +
+                     hi + ")");
     }
     if (o.mapSize < MIN_MAP_SIZE || o.mapSize > MAX_MAP_SIZE) {
         return outOfRange("map_size", std::to_string(o.mapSize),

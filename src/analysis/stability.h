@@ -81,6 +81,8 @@ bool stabilityPairExists(const StabilityMethod& m, BiasMode bias);
 // "pcf-gather N=5" or "nearest".
 std::string stabilityMethodName(const StabilityMethod& m);
 
+// The smallest frame side the sweeps accept (the CLI states it in --size's help).
+constexpr int MIN_STABILITY_FRAME_SIDE = 16;
 constexpr int SHIMMER_STEPS = 32;  // the light's grid moves 1/32 texel per frame
 
 struct StabilityOptions {

@@ -338,4 +338,45 @@ ImageChartSpec aliasingHeatmapSpec(const StabilityImage& heatmap,
     return spec;
 }
 
+namespace {
+
+template <LineChartSpec (*SPEC)(std::span<const StabilityRow>, const std::string&, float)>
+std::vector<ChartTextBox> lineTexts(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                    const std::string& subtitle, float minFontPx) {
+    return lineChartTextBoxes(SPEC(rows, subtitle, minFontPx), size);
+}
+
+std::vector<ChartTextBox> shimmerTexts(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                       const std::string& subtitle, float minFontPx) {
+    return barChartTextBoxes(shimmerChartSpec(rows, subtitle, minFontPx), size);
+}
+
+// In the order `pcfscope stability` lists its charts.
+constexpr SweepChart SWEEP_CHARTS[] = {
+    {Sweep::Acne, "stability_acne.png", drawAcneChart, lineTexts<acneChartSpec>},
+    {Sweep::Leak, "stability_leak.png", drawLeakChart, lineTexts<leakChartSpec>},
+    {Sweep::Shimmer, "stability_shimmer.png", drawShimmerChart, shimmerTexts},
+    {Sweep::Precision, "stability_precision.png", drawPrecisionChart,
+     lineTexts<precisionChartSpec>},
+};
+
+}  // namespace
+
+std::span<const SweepChart> sweepCharts() { return SWEEP_CHARTS; }
+
+const SweepChart* sweepChartNamed(std::string_view name) {
+    for (const SweepChart& c : SWEEP_CHARTS) {
+        if (sweepName(c.sweep) == name) return &c;
+    }
+    return nullptr;
+}
+
+std::string sweepChartNames() {
+    std::string names;
+    for (const SweepChart& c : SWEEP_CHARTS) {
+        names += (names.empty() ? "#" : ", #") + std::string(sweepName(c.sweep));
+    }
+    return names;
+}
+
 }  // namespace pcf

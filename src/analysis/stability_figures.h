@@ -66,6 +66,24 @@ std::vector<uint8_t> drawShimmerChart(std::span<const StabilityRow> rows, glm::i
 // aliasing_heatmap.png as a chart: the sweep's heat map (stability.h: aliasingHeatColour per
 // pixel, at the run's map size) with its colour scale, the map size and the median and 99th
 // percentile from the rows in the title and subtitle.
+// The sweep charts, one entry per charted sweep (the aliasing heat map is an image, not a chart):
+// the file `pcfscope stability` writes it to, and how it is drawn and where its texts go. A lesson
+// step shows one as "stability.csv#NAME" (step_chart.h), NAME its sweep's name. A new chart is
+// one entry here.
+struct SweepChart {
+    Sweep sweep;
+    std::string_view file;  // "stability_acne.png"
+    std::vector<uint8_t> (*draw)(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                 const std::string& subtitle, float minFontPx);
+    std::vector<ChartTextBox> (*texts)(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                       const std::string& subtitle, float minFontPx);
+};
+std::span<const SweepChart> sweepCharts();
+// The entry of the sweep named so ("acne"); nullptr when no chart is.
+const SweepChart* sweepChartNamed(std::string_view name);
+// "#acne, #leak, #shimmer, #precision": the names a lesson's chart may end in.
+std::string sweepChartNames();
+
 ImageChartSpec aliasingHeatmapSpec(const StabilityImage& heatmap,
                                    std::span<const StabilityRow> rows, const std::string& source,
                                    float minFontPx = 8.0f);

@@ -55,20 +55,24 @@ glm::ivec2 parseIvec2(const std::string& option, const std::string& text) {
     return v;
 }
 
-glm::ivec2 parseSize(const std::string& option, const std::string& text, int maxSide,
-                     glm::ivec2 minSize) {
+std::string SizeRange::text() const {
+    return std::to_string(min.x) + "x" + std::to_string(min.y) + " up to " +
+           std::to_string(maxSide) + "x" + std::to_string(maxSide);
+}
+
+std::string sizeHelp(const std::string& what, SizeRange range, const std::string& note) {
+    return what + " WxH, " + range.text() + (note.empty() ? "" : " (" + note + ")");
+}
+
+glm::ivec2 parseSize(const std::string& option, const std::string& text, SizeRange range) {
     size_t x = text.find('x');
     glm::ivec2 v;
     if (x == std::string::npos || !parseInt(text.substr(0, x), v.x) ||
         !parseInt(text.substr(x + 1), v.y)) {
         throw UsageError(option + " expects WxH, got '" + text + "'");
     }
-    if (v.x < minSize.x || v.y < minSize.y || v.x > maxSide || v.y > maxSide) {
-        std::ostringstream s;
-        s << option << " " << text << " is out of range (" << minSize.x << "x" << minSize.y
-          << " up to " << maxSide << "x" << maxSide << ")";
-        throw UsageError(s.str());
-    }
+    if (v.x < range.min.x || v.y < range.min.y || v.x > range.maxSide || v.y > range.maxSide)
+        throw UsageError(option + " " + text + " is out of range (" + range.text() + ")");
     return v;
 }
 

@@ -3,21 +3,15 @@
 
 #include <glm/glm.hpp>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "base/usage_error.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
 
 namespace pcf {
-
-// Bad input on the command line or in a file: the app prints what() on one line and exits 2.
-class UsageError : public std::runtime_error {
-  public:
-    using std::runtime_error::runtime_error;
-};
 
 // "a,b,a" -> {"a", "b"}: the comma-separated items, each once, in order; throws UsageError naming
 // the option on an empty item.
@@ -29,9 +23,19 @@ std::vector<int> parseIntList(const std::string& option, const std::string& text
 
 // "0.25,0.5" -> (0.25, 0.5); throws UsageError naming the option on anything else, NaN included.
 glm::vec2 parseVec2(const std::string& option, const std::string& text);
-// "1280x720" -> (1280, 720); each side minSize..maxSide.
-glm::ivec2 parseSize(const std::string& option, const std::string& text, int maxSide,
-                     glm::ivec2 minSize = glm::ivec2(1));
+// A size option's range: each side from `min` up to `maxSide`. The help and the error state
+// it with the same text(), "320x180 up to 8192x8192".
+struct SizeRange {
+    glm::ivec2 min{1};
+    int maxSide = MAX_FRAME_SIDE;
+    std::string text() const;
+};
+// The charts' smallest size: their axes, labels and legend need 64 px a side.
+constexpr SizeRange CHART_SIZE_RANGE{glm::ivec2(64), MAX_FRAME_SIDE};
+// "1280x720" -> (1280, 720); throws UsageError naming the option and the range.
+glm::ivec2 parseSize(const std::string& option, const std::string& text, SizeRange range = {});
+// A size option's help: "WHAT WxH, RANGE" and the note (a default) in parentheses if any.
+std::string sizeHelp(const std::string& what, SizeRange range, const std::string& note = "");
 // "12,34" -> (12, 34).
 glm::ivec2 parseIvec2(const std::string& option, const std::string& text);
 // Throws UsageError unless lo <= v <= hi and v is finite.

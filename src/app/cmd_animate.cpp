@@ -117,7 +117,7 @@ std::vector<std::string> planPngs(OutputFiles& outputs, const AnimateOptions& o,
 }
 
 int runAnimate(AnimateOptions o) {
-    glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE, MIN_SESSION_SIZE);
+    glm::ivec2 size = parseSize("--size", o.size, {MIN_SESSION_SIZE});
     std::optional<AnimationSweep> sweep = animationSweepFromName(o.sweep);
     if (!sweep) {
         throw UsageError("--sweep: unknown sweep '" + o.sweep +
@@ -195,7 +195,8 @@ Command addAnimateCommand(CLI::App& app) {
     sub->add_flag("--snap", o->snap, "light: the creeping grid snapped to whole texels");
     sub->add_option("--frames", o->frames, "frames (default 120)");
     sub->add_option("--fps", o->fps, "frames per second of the videos (default 12)");
-    sub->add_option("--size", o->size, "frame size WxH (default 1280x720; even for MP4)");
+    sub->add_option("--size", o->size,
+                    sizeHelp("frame size", {MIN_SESSION_SIZE}, "default 1280x720; even for MP4"));
     sub->add_flag("--presentation", o->presentation, "presentation mode's type and lines");
     sub->add_flag("--scene-only", o->sceneOnly, "the scene alone, without the inspector");
     sub->add_flag("--no-trace", o->noTrace, "no flicker trace");

@@ -237,7 +237,7 @@ BenchPlan parsePlan(const BenchCommandOptions& o) {
     // At least 960x540, so a --quick chart of a 320x180 frame is still readable.
     plan.chartSize = glm::max(plan.config.options.frameSize, glm::ivec2(960, 540));
     if (o.given("--chart-size")) {
-        plan.chartSize = parseSize("--chart-size", o.chartSize, MAX_FRAME_SIDE, glm::ivec2(64));
+        plan.chartSize = parseSize("--chart-size", o.chartSize, CHART_SIZE_RANGE);
     }
     if (o.timing != "scene" && o.timing != "lookup") {
         throw UsageError("unknown --timing '" + o.timing + "' (known: scene, lookup)");
@@ -465,7 +465,8 @@ Command addBenchCommand(CLI::App& app) {
                   "4 shimmer frames (explicit options still win); its timings are indicative "
                   "only");
     sub->add_option("--chart-size", o->chartSize,
-                    "size WxH of the two charts (default: the frame size, at least 960x540)");
+                    sizeHelp("size of the two charts", CHART_SIZE_RANGE,
+                             "default: the frame size, at least 960x540"));
     sub->add_option("--spp", o->spp,
                     "ground truth: K x K first-pass samples per pixel (2..64, default 2); edges "
                     "are then integrated to a 1/512 bound");

@@ -55,7 +55,7 @@ glm::ivec2 parseSteps(const std::string& text, int count) {
 }
 
 int runExport(const ExportOptions& o) {
-    glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE, MIN_SESSION_SIZE);
+    glm::ivec2 size = parseSize("--size", o.size, {MIN_SESSION_SIZE});
     std::string path = resolveLesson(o.lesson);
     Lesson lesson = loadLessonChecked(path);  // checked before anything is made
     glm::ivec2 steps = parseSteps(o.steps, static_cast<int>(lesson.steps.size()));
@@ -155,7 +155,8 @@ Command addExportCommand(CLI::App& app) {
     sub->add_option("lesson", o->lesson, "lesson: a .toml path, a number, or a built-in name")
         ->required();
     sub->add_option("-o,--out", o->outDir, "output directory (default pcfscope-frames/LESSON)");
-    sub->add_option("--size", o->size, "frame size WxH (default 1600x900, the viewer's)");
+    sub->add_option("--size", o->size,
+                    sizeHelp("frame size", {MIN_SESSION_SIZE}, "default 1600x900, the viewer's"));
     sub->add_option("--steps", o->steps, "steps to write, A-B or A (default all)");
     sub->add_flag("--presentation", o->presentation,
                   "what presentation mode (P) shows: 22 px step text, 18 px numbers, thick lines");

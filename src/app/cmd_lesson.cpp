@@ -77,13 +77,7 @@ struct Checker {
         renderer.renderShadowPass(renderSettingsFor(s, {64, 64}));
         ShadowMap map = renderer.readShadowMap();
         Trace trace = tracePinned(map, lesson.scene, fit, s, point);
-        StepContext ctx = makeStepContext(step);
-        ctx.bias = s.bias;
-        ctx.constantBias = s.constantBias;
-        ctx.cull = s.cull;
-        ctx.depthFormat = s.depthFormat;
-        ctx.originShift = s.originShift;
-        ctx.lightAngleDeg = lightAngleDeg(lesson.scene, point);
+        StepContext ctx = makeStepContext(s, glm::ivec2(0), lightAngleDeg(lesson.scene, point));
         ClaimWorld world = chartWorld(step);
         world.onPlane = std::holds_alternative<Plane>(
             lesson.scene.objects[static_cast<size_t>(point.object)].shape);

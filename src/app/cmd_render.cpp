@@ -52,11 +52,13 @@ LessonRender lessonRenderOf(const RenderCommandOptions& o, const RenderSettings&
     outputs.addInput("--lesson", path);
     Lesson lesson = loadLessonChecked(path);
     const LessonStep& step = lesson.steps[static_cast<size_t>(o.render.lessonStep - 1)];
-    // The step's texel grid (origin_shift, snap), as the viewer and export render it.
-    out.fit = lessonShadowFit(lesson.scene, step.settings, settings.mapSize);
-    if (std::optional<ScenePoint> point = stepPoint(lesson.scene, step.settings)) {
-        out.pick = cameraPickOf(lesson.scene, *out.fit, step.settings, *point, settings.frameSize);
-    }
+    // The step's texel grid (origin_shift, snap) and pinned point, as the viewer and export
+    // render it (step_view.h), with the settings rendered (the step's, or flags over them).
+    LessonSettings s = step.settings;
+    static_cast<ShadowSettings&>(s) = settings;
+    StepView view = stepView(lesson.scene, s, stepPoint(lesson.scene, s), settings.frameSize);
+    out.fit = view.fit;
+    out.pick = view.pick;
     if (!step.chart.empty()) {
         out.chartStep = step;
         out.chart = step.chart.substr(0, step.chart.rfind('#'));

@@ -197,10 +197,9 @@ std::string settingsLine(const StabilityOptions& o) {
 // What the command writes into -o: the CSV, the Markdown, and each chart its sweeps draw.
 std::vector<std::string> outputNames(const std::vector<Sweep>& sweeps) {
     std::vector<std::string> names = {"stability.csv", "stability.md"};
-    if (has(sweeps, Sweep::Acne)) names.push_back("stability_acne.png");
-    if (has(sweeps, Sweep::Leak)) names.push_back("stability_leak.png");
-    if (has(sweeps, Sweep::Shimmer)) names.push_back("stability_shimmer.png");
-    if (has(sweeps, Sweep::Precision)) names.push_back("stability_precision.png");
+    for (const SweepChart& c : sweepCharts()) {
+        if (has(sweeps, c.sweep)) names.emplace_back(c.file);
+    }
     if (has(sweeps, Sweep::Aliasing)) names.push_back("aliasing_heatmap.png");
     return names;
 }
@@ -216,17 +215,9 @@ void writeCharts(const fs::path& dir, const std::vector<StabilityRow>& rows,
         if (rgba.empty()) throw std::runtime_error("no rows for " + name);
         writePngRgba8((dir / name).string(), chartSize.x, chartSize.y, rgba);
     };
-    if (has(sweeps, Sweep::Acne)) {
-        chart("stability_acne.png", drawAcneChart(rows, chartSize, source, minPx));
-    }
-    if (has(sweeps, Sweep::Leak)) {
-        chart("stability_leak.png", drawLeakChart(rows, chartSize, source, minPx));
-    }
-    if (has(sweeps, Sweep::Shimmer)) {
-        chart("stability_shimmer.png", drawShimmerChart(rows, chartSize, source, minPx));
-    }
-    if (has(sweeps, Sweep::Precision)) {
-        chart("stability_precision.png", drawPrecisionChart(rows, chartSize, source, minPx));
+    for (const SweepChart& c : sweepCharts()) {
+        if (has(sweeps, c.sweep))
+            chart(std::string(c.file), c.draw(rows, chartSize, source, minPx));
     }
     // The heat map with its colour scale and map size, at the charts' size.
     for (const StabilityImage& image : result.images) {
@@ -246,7 +237,7 @@ CheckedStability checkStabilityCommand(const StabilityCommandOptions& o) {
     CheckedStability c{parseOptions(o), {}, {}};
     // --quick draws its charts at half size unless told otherwise.
     std::string chartText = o.quick && !o.given("--chart-size") ? "640x360" : o.chartSize;
-    c.chartSize = parseSize("--chart-size", chartText, MAX_FRAME_SIDE, glm::ivec2(64));
+    c.chartSize = parseSize("--chart-size", chartText, CHART_SIZE_RANGE);
     c.scene = o.render.loadScene();
     if (o.out.empty()) throw UsageError("-o needs a directory");
     // Measured peaks of `stability --quick`: 245 MB at 320x180, 432 MB at 960x540, so 414 bytes
@@ -325,6 +316,7 @@ Command addStabilityCommand(CLI::App& app) {
     o->sub = sub;
     o->render.size = "480x270";
     o->render.defaults.mapSize = 512;
+    o->render.frameRange.min = glm::ivec2(MIN_STABILITY_FRAME_SIDE);
     o->render.addTo(sub, DEFAULT_SCENE);
     // The single-lookup options of the shared set do not apply here (parseOptions says so when
     // given): out of --help, which listed them as if they did.
@@ -343,7 +335,7 @@ Command addStabilityCommand(CLI::App& app) {
                     "all)");
     sub->add_option("-o,--out", o->out, "output directory (default: stability)");
     sub->add_option("--chart-size", o->chartSize,
-                    "chart size WxH (default 1280x720; --quick 640x360)");
+                    sizeHelp("chart size", CHART_SIZE_RANGE, "default 1280x720; --quick 640x360"));
     sub->add_option("--spp", o->spp, "ground truth: K x K samples per pixel (default 2)");
     sub->add_option("--threads", o->threads, "ground truth threads (0 = all cores, the default)");
     sub->add_option("--pixel", o->pixel,

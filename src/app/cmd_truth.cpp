@@ -72,7 +72,7 @@ int runTruth(const TruthCommandOptions& o) {
     RenderOptions sceneOptions;
     sceneOptions.scene = o.scene;
     sceneOptions.sceneFile = o.sceneFile;
-    glm::ivec2 size = parseSize("--size", o.size, MAX_FRAME_SIDE);
+    glm::ivec2 size = parseSize("--size", o.size);
     checkTruthOptions(o);
     Scene scene = sceneOptions.loadScene();
     // Measured peaks of `truth --spp 1` (box-on-plane): 139 MB at 512x512, 152 MB at 1024x1024:
@@ -144,7 +144,7 @@ Command addTruthCommand(CLI::App& app) {
     sub->add_option("--scene", o->scene,
                     "built-in scene: box-on-plane, sphere-over-plane, pole, grazing, stairs");
     sub->add_option("--scene-file", o->sceneFile, "scene file (TOML)");
-    sub->add_option("--size", o->size, "frame size WxH (default 1280x720)");
+    sub->add_option("--size", o->size, sizeHelp("frame size", {}, "default 1280x720"));
     sub->add_option("--spp", o->spp,
                     "first pass: K x K stratified samples per pixel that find the edges (1..64, "
                     "default 2)");

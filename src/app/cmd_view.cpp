@@ -29,7 +29,7 @@ struct ViewCommandOptions {
 int runView(const ViewCommandOptions& o) {
     ViewerOptions v;
     v.lesson = resolveLesson(o.lesson);
-    v.windowSize = parseSize("--size", o.size, MAX_FRAME_SIDE, MIN_SESSION_SIZE);
+    v.windowSize = parseSize("--size", o.size, {MIN_SESSION_SIZE});
     v.keys = o.keys;
     v.screenshot = o.screenshot;
     v.presentation = o.presentation;
@@ -55,8 +55,7 @@ int runView(const ViewCommandOptions& o) {
 
 int runMainJob() {
     std::vector<std::string> lessons = builtInLessons();
-    if (lessons.empty())
-        throw UsageError(std::string("no lessons found in ") + PCFSCOPE_LESSON_DIR);
+    if (lessons.empty()) throw UsageError(std::string("no lessons found in ") + lessonDirectory());
     const char* display = std::getenv("DISPLAY");
     if (display && *display) {
         ViewerOptions v;
@@ -89,7 +88,8 @@ Command addViewCommand(CLI::App& app) {
     CLI::App* sub =
         app.add_subcommand("view", "the lesson in a window: pick a pixel, step through");
     sub->add_option("lesson", o->lesson, "lesson: a .toml path, a number, or a built-in name");
-    sub->add_option("--size", o->size, "window size WxH (default 1600x900)");
+    sub->add_option("--size", o->size,
+                    sizeHelp("window size", {MIN_SESSION_SIZE}, "default 1600x900"));
     sub->add_option("--keys", o->keys, "replay keys first: GLFW names, space-separated");
     sub->add_option("--screenshot", o->screenshot, "write the frame after --keys to PNG, quit");
     sub->add_flag("--presentation", o->presentation, "large type and thick lines");

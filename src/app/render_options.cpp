@@ -166,7 +166,7 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map}, defaults);
     sub->add_option("--polygon-offset", polygonOffset,
                     "slope-scaled bias in the shadow pass: FACTOR,UNITS for glPolygonOffset");
-    sub->add_option("--size", size, "frame size WxH");
+    sub->add_option("--size", size, sizeHelp("frame size", frameRange, "default " + size));
 }
 
 bool RenderOptions::given(const char* option) const {
@@ -176,7 +176,7 @@ bool RenderOptions::given(const char* option) const {
 RenderSettings RenderOptions::settings() const {
     RenderSettings s;
     static_cast<ShadowSettings&>(s) = defaults;
-    glm::ivec2 frame = parseSize("--size", size, MAX_FRAME_SIDE);
+    glm::ivec2 frame = parseSize("--size", size, frameRange);
     bool fromLesson = !lesson.empty();
     if (fromLesson) {
         Lesson l = parseLessonFile(resolveLesson(lesson));

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/cli_util.h"
 #include "render/render_settings.h"
 #include "scene/scene.h"
 
@@ -70,6 +71,7 @@ struct RenderOptions {
     SettingOptions shadow;
     std::string polygonOffset;  // "F,U": glPolygonOffset in the shadow pass
     std::string size = "1280x720";
+    SizeRange frameRange;  // --size's range; set before addTo
 
     // Registers the options on `sub`; `defaultScene` is used when neither --scene nor
     // --scene-file is given (empty: one of them is required).

@@ -3,28 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "analysis/bench_report.h"
-#include "analysis/speed_chart.h"
 #include "analysis/stability.h"
-#include "analysis/stability_figures.h"
-#include "analysis/stability_report.h"
 #include "app/cli_util.h"
 #include "app/frame_json.h"
 #include "app/step_words.h"
-#include "base/input_error.h"
-#include "base/input_file.h"
 #include "kernel/methods.h"
-#include "kernel/trace_explain.h"
 #include "kernel/trace_json.h"
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_pick.h"
 #include "lesson/lesson_text.h"
-#include "scene/light.h"
 
 namespace pcf {
 
@@ -43,206 +33,8 @@ std::string statusLine(const LessonSettings& s, glm::ivec2 sceneSize, double fra
 
 }  // namespace
 
-std::vector<std::string> builtInLessons() {
-    std::vector<std::string> paths;
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(PCFSCOPE_LESSON_DIR, ec)) {
-        if (entry.path().extension() == ".toml") paths.push_back(entry.path().string());
-    }
-    std::sort(paths.begin(), paths.end());
-    return paths;
-}
-
-std::optional<std::string> findLesson(const std::vector<std::string>& lessons,
-                                      const std::string& nameOrNumber) {
-    // A number names the file numbered so (13 -> 13-*.toml, also "013"), never the 13th file:
-    // a lesson directory with a gap (no 12) would shift every lesson after it.
-    bool number = !nameOrNumber.empty() && nameOrNumber.size() <= 6 &&
-                  std::all_of(nameOrNumber.begin(), nameOrNumber.end(),
-                              [](char c) { return c >= '0' && c <= '9'; });
-    for (const std::string& path : lessons) {
-        std::string stem = std::filesystem::path(path).stem().string();
-        if (stem == nameOrNumber) return path;
-        if (!number) continue;
-        size_t digits = 0;
-        while (digits < stem.size() && digits < 6 && stem[digits] >= '0' && stem[digits] <= '9') {
-            ++digits;
-        }
-        if (digits > 0 && std::stoi(stem.substr(0, digits)) == std::stoi(nameOrNumber)) {
-            return path;
-        }
-    }
-    return std::nullopt;
-}
-
-std::string resolveLesson(const std::string& nameOrPath) {
-    if (nameOrPath.find('/') != std::string::npos || nameOrPath.ends_with(".toml")) {
-        return nameOrPath;  // a path: parseLessonFile says what is wrong with it
-    }
-    std::vector<std::string> lessons = builtInLessons();
-    if (std::optional<std::string> found = findLesson(lessons, nameOrPath)) return *found;
-    std::string names;
-    for (const std::string& path : lessons) {
-        names += (names.empty() ? "" : ", ") + std::filesystem::path(path).stem().string();
-    }
-    throw UsageError("unknown lesson '" + nameOrPath + "' (a .toml path, a lesson's number, " +
-                     "or one of: " + names + ")");
-}
-
-RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) {
-    RenderSettings r;
-    static_cast<ShadowSettings&>(r) = s;
-    r.frameSize = sceneSize;
-    return r;
-}
-
-glm::mat4 lessonShadowFit(const Scene& scene, const LessonSettings& s, int mapSize) {
-    glm::mat4 fit = shadowClipFromWorld(scene);
-    if (s.originShift == 0.0f && !s.snap) return fit;
-    return shiftShadowOrigin(fit, glm::vec2(s.originShift), mapSize, s.snap);
-}
-
 Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presentation) {
     setFrameSize(frameSize);
-}
-
-namespace {
-
-// A chart's CSV, read with the checks every input file gets (base/input_file.h).
-std::string readChartText(const std::string& csvPath) { return readInputFile(csvPath); }
-
-// Refuses a chart of more rows than one frame can show.
-template <class Row>
-std::vector<Row> limitChartRows(std::vector<Row> rows, const std::string& csvPath) {
-    if (rows.size() > MAX_CHART_ROWS) {
-        throw InputError(csvPath, 0,
-                         std::to_string(rows.size()) + " rows; a chart shows at most " +
-                             std::to_string(MAX_CHART_ROWS));
-    }
-    return rows;
-}
-
-std::vector<BenchRow> readChartRows(const std::string& csvPath) {
-    return limitChartRows(parseBenchCsv(readChartText(csvPath), csvPath), csvPath);
-}
-
-std::vector<StabilityRow> readStabilityRows(const std::string& csvPath) {
-    return limitChartRows(parseStabilityCsv(readChartText(csvPath), csvPath), csvPath);
-}
-
-// A step's chart: "PATH" (a bench.csv) or "PATH#VIEW" (a stability.csv and which of its charts:
-// acne, leak or shimmer).
-struct ChartRef {
-    std::string path;
-    std::string view;  // empty for a bench chart
-};
-
-ChartRef chartRef(const std::string& chart) {
-    size_t hash = chart.rfind('#');
-    if (hash == std::string::npos) return {chart, ""};
-    return {chart.substr(0, hash), chart.substr(hash + 1)};
-}
-
-std::string stabilitySubtitle(const ChartRef& ref) {
-    return "measured by pcfscope stability, " + std::filesystem::path(ref.path).filename().string();
-}
-
-// The stability chart `view` of a stability.csv, or InputError for an unknown view or no rows.
-std::vector<uint8_t> drawStabilityView(const ChartRef& ref, glm::ivec2 size,
-                                       float minFontPx = 8.0f) {
-    std::vector<StabilityRow> rows = readStabilityRows(ref.path);
-    std::string subtitle = stabilitySubtitle(ref);
-    std::vector<uint8_t> rgba;
-    if (ref.view == "acne") {
-        rgba = drawAcneChart(rows, size, subtitle, minFontPx);
-    } else if (ref.view == "leak") {
-        rgba = drawLeakChart(rows, size, subtitle, minFontPx);
-    } else if (ref.view == "shimmer") {
-        rgba = drawShimmerChart(rows, size, subtitle, minFontPx);
-    } else {
-        throw InputError(
-            ref.path, 0,
-            "unknown stability chart '#" + ref.view + "' (known: #acne, #leak, #shimmer)");
-    }
-    if (rgba.empty()) throw InputError(ref.path, 0, "no " + ref.view + " rows to chart");
-    return rgba;
-}
-
-// The texts of the stability chart `view` (where drawStabilityView draws them).
-std::vector<ChartTextBox> stabilityViewTextBoxes(const ChartRef& ref, glm::ivec2 size,
-                                                 float minFontPx) {
-    std::vector<StabilityRow> rows = readStabilityRows(ref.path);
-    std::string subtitle = stabilitySubtitle(ref);
-    if (ref.view == "acne")
-        return lineChartTextBoxes(acneChartSpec(rows, subtitle, minFontPx), size);
-    if (ref.view == "leak")
-        return lineChartTextBoxes(leakChartSpec(rows, subtitle, minFontPx), size);
-    if (ref.view == "shimmer") {
-        return barChartTextBoxes(shimmerChartSpec(rows, subtitle, minFontPx), size);
-    }
-    return {};
-}
-
-// Throws InputError unless the stability.csv has rows for the view.
-void checkStabilityView(const ChartRef& ref) {
-    std::vector<StabilityRow> rows = readStabilityRows(ref.path);
-    if (ref.view != "acne" && ref.view != "leak" && ref.view != "shimmer") {
-        throw InputError(
-            ref.path, 0,
-            "unknown stability chart '#" + ref.view + "' (known: #acne, #leak, #shimmer)");
-    }
-    for (const StabilityRow& r : rows) {
-        if (r.sweep == ref.view) return;
-    }
-    throw InputError(ref.path, 0, "no " + ref.view + " rows to chart");
-}
-
-}  // namespace
-
-Focus stepFocus(const LessonStep& step) {
-    if (!step.chart.empty()) return Focus{.chart = true};
-    if (std::optional<Focus> f = parseFocus(step.focus)) return *f;
-    // A heat map is drawn over the scene, and a nearest lookup's hard edge is seen there.
-    if (step.settings.heatmap || step.settings.method == PCF_NEAREST) {
-        return Focus{.scene = true, .neighbourhood = true};
-    }
-    return Focus{.neighbourhood = true, .formula = true};
-}
-
-Lesson loadLessonChecked(const std::string& path) {
-    Lesson lesson = parseLessonFile(path);
-    if (lesson.steps.empty()) throw UsageError(path + ": the lesson has no steps");
-    for (size_t i = 0; i < lesson.steps.size(); ++i) {
-        const LessonStep& step = lesson.steps[i];
-        if (!step.focus.empty() && !parseFocus(step.focus)) {
-            throw InputError(path, step.focusLine,
-                             "step " + std::to_string(i + 1) + " focus '" + step.focus +
-                                 "' is not one of: " + focusNames());
-        }
-        if (step.chart.empty()) continue;
-        try {
-            ChartRef ref = chartRef(step.chart);
-            if (!ref.view.empty()) {
-                checkStabilityView(ref);
-            } else if (readChartRows(ref.path).empty()) {
-                throw InputError(ref.path, 0, "no rows to chart");
-            }
-        } catch (const InputError& e) {
-            throw InputError(path, step.chartLine,
-                             "step " + std::to_string(i + 1) + " chart: " + e.what());
-        }
-        if (step.chartHighlight.empty()) continue;
-        try {
-            chartRowsMatching(readChartRows(chartRef(step.chart).path), step.chartHighlight);
-        } catch (const std::invalid_argument& e) {
-            throw InputError(path, step.chartHighlightLine,
-                             "step " + std::to_string(i + 1) + " chart_highlight: " + e.what());
-        } catch (const InputError& e) {
-            throw InputError(path, step.chartLine,
-                             "step " + std::to_string(i + 1) + " chart: " + e.what());
-        }
-    }
-    return lesson;
 }
 
 void Session::loadLesson(const std::string& path) {
@@ -363,7 +155,10 @@ void Session::setFrameSize(glm::ivec2 frameSize) {
 
 void Session::setPresentation(bool on) {
     mPresentation = on;
-    mLayout = inspectorLayout(mLayout.frameSize, on);
+    // Presentation mode sizes the panels anew: the scene is laid out, picked and rendered again.
+    glm::ivec2 size = mLayout.frameSize;
+    mLayout.frameSize = glm::ivec2(0);
+    setFrameSize(size);
     mThumbnailDirty = true;
 }
 
@@ -421,67 +216,6 @@ bool Session::previousPage() {
 
 void Session::setFrameTimeMs(double ms) { mFrameTimeMs = ms; }
 
-namespace {
-
-// A chart step's smallest type: the frame's floors for numbers and labels (inspector.h:
-// typeSizes), so that the chart reads as well as the text beside it.
-float chartFloor(bool presentation) {
-    InspectorLayout frame;
-    frame.presentation = presentation;
-    TypeSizes t = typeSizes(frame);
-    return std::max(t.numberFloor, t.labelFloor);
-}
-
-// The chart's text and type for a speed-chart step.
-SpeedChartText stepChartText(const LessonStep& step, const std::vector<BenchRow>& rows,
-                             bool presentation) {
-    SpeedChartText labels;
-    labels.title = "Speed against accuracy";
-    labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
-                      std::filesystem::path(step.chart).filename().string();
-    if (!step.chartHighlight.empty())
-        labels.highlight = chartRowsMatching(rows, step.chartHighlight);
-    labels.minFontPx = chartFloor(presentation);
-    // A projector's chart names only what the step talks about.
-    labels.keptLabelsOnly = presentation;
-    return labels;
-}
-
-}  // namespace
-
-std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size, bool presentation) {
-    ChartRef ref = chartRef(step.chart);
-    if (!ref.view.empty()) return drawStabilityView(ref, size, chartFloor(presentation));
-    std::vector<BenchRow> rows = readChartRows(step.chart);
-    return drawSpeedChart(rows, size, stepChartText(step, rows, presentation));
-}
-
-std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLayout& layout) {
-    std::vector<LayoutBox> out;
-    ChartRef ref = chartRef(step.chart);
-    if (step.chart.empty()) return out;
-    glm::ivec2 size(layout.scene.size());
-    std::vector<ChartTextBox> texts;
-    if (!ref.view.empty()) {
-        texts = stabilityViewTextBoxes(ref, size, chartFloor(layout.presentation));
-    } else {
-        std::vector<BenchRow> rows = readChartRows(step.chart);
-        SpeedChartText text = stepChartText(step, rows, layout.presentation);
-        SpeedChartLayout L =
-            layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
-                             text.highlight, text.minFontPx, text.keptLabelsOnly);
-        texts = speedChartTextBoxes(L, text);
-    }
-    for (const ChartTextBox& b : texts) {
-        BoxKind kind = b.role == "chart-tick"                                ? BoxKind::Number
-                       : b.role == "chart-label" || b.role == "chart-legend" ? BoxKind::Label
-                                                                             : BoxKind::Text;
-        Rect r{b.rect.x + layout.scene.x, b.rect.y + layout.scene.y, b.rect.w, b.rect.h};
-        out.push_back({kind, r, "scene", b.role, b.fontPx, false, b.text});
-    }
-    return out;
-}
-
 void Session::blitChart(const InspectorLayout& layout) {
     glm::ivec2 size(layout.scene.size());
     const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
@@ -505,38 +239,24 @@ void Session::blitChart(const InspectorLayout& layout) {
                            x + size.x, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
-std::optional<CameraPick> cameraPickOf(const Scene& scene, const glm::mat4& shadowFit,
-                                       const LessonSettings& s, const ScenePoint& point,
-                                       glm::ivec2 frameSize) {
-    FramePick at = framePick(scene.camera, point.posWs, frameSize);
-    if (!at.inFrame) return std::nullopt;
-    PinnedLookup lookup = pinnedLookup(scene, shadowFit, s, point);
-    glm::ivec2 gl(at.pixel.x, frameSize.y - 1 - at.pixel.y);
-    return CameraPick{gl, at.jitterNdc, glm::vec4(lookup.uv, lookup.ref, lookup.z0), lookup.dzduv};
-}
-
 void Session::renderScene() {
-    RenderSettings r = renderSettingsFor(mSettings, glm::ivec2(mLayout.scene.size()));
-    // An animation's fit (setShadowFit), else the lesson's.
-    glm::mat4 fit = mShadowFit ? *mShadowFit : lessonShadowFit(mLesson.scene, mSettings, r.mapSize);
-    // The pinned point's pixel shows the point's own lookup (lesson_pick.h).
-    std::optional<CameraPick> pick;
-    if (mPoint && mPickInFrame) {
-        PinnedLookup at = pinnedLookup(mLesson.scene, fit, mSettings, *mPoint);
-        glm::ivec2 gl(mPixel.x, r.frameSize.y - 1 - mPixel.y);
-        pick = CameraPick{gl, mJitter, glm::vec4(at.uv, at.ref, at.z0), at.dzduv};
-    }
-    mRenderer->setPick(pick);
+    // The step's view (step_view.h): an animation's fit (setShadowFit), else the lesson's, and
+    // the pinned point's pixel showing the point's own lookup.
+    StepView view =
+        stepView(mLesson.scene, mSettings, mPoint, glm::ivec2(mLayout.scene.size()), mShadowFit);
+    const RenderSettings& r = view.render;
+    mRenderer->setPick(view.pick);
     // The map's texel grid slid and snapped as the lesson says (light.h: shiftShadowOrigin).
     glm::vec3 shift(mSettings.originShift, mSettings.originShift, mSettings.snap ? 1.0f : 0.0f);
     bool mapChanged = !mRendered || mRendered->mapSize != r.mapSize ||
                       mRendered->depthFormat != r.depthFormat || mRendered->cull != r.cull ||
                       mRendered->polygonOffset != r.polygonOffset || shift != mRenderedShift;
     if (mapChanged) {
-        mRenderer->setShadowClipFromWorld(fit);
+        mRenderer->setShadowClipFromWorld(view.fit);
         mRenderedShift = shift;
     }
     mHeatDirty = true;
+    // Only what changed: the shadow pass when the map did (renderStepView renders both).
     if (mapChanged) mRenderer->renderShadowPass(r);
     mRenderer->renderCameraPass(r);
     if (mapChanged) {
@@ -555,20 +275,8 @@ void Session::traceAtPixel() {
     mLightSpaceOrigin = mPixel - glm::ivec2(radius);
     mLightSpaceSize = glm::ivec2(2 * radius + 1);
     mLightSpace = mRenderer->readLightSpaceRegion(mLightSpaceOrigin, mLightSpaceSize);
-    size_t k = (static_cast<size_t>(radius) * mLightSpaceSize.x + radius) * 4;
-    if (mLightSpace[k + 3] != 1.0f) return;
-    glm::vec2 uv(mLightSpace[k], mLightSpace[k + 1]);
-    float ref = mLightSpace[k + 2];
-    // The receiver target holds the plane the shader used and the depth before any bias.
-    std::vector<float> receiver = mRenderer->readReceiverRegion(mPixel, glm::ivec2(1));
-    BiasParams bias = mSettings.biasParams();
-    bias.dzduv = glm::vec2(receiver[0], receiver[1]);
-    float z = receiver[3] == 1.0f ? receiver[2] : ref + mSettings.depthBias();
-    float scale = mRenderer->pcfParams(mSettings).penumbraScale;  // pcss's (scene/pcss.h)
-    mTrace = traceLookup(mMap, uv, z, ref, mSettings.pcfParams(uv, mMap.width(), scale), bias);
-    mLookup = glm::vec3(uv, z);
-    mLookupRef = ref;
-    mLookupBias = bias;
+    mLookup = tracePixel(*mRenderer, mMap, mSettings, mPixel);
+    if (mLookup) mTrace = mLookup->trace;
 }
 
 std::string Session::stepText() const {
@@ -580,13 +288,8 @@ std::string Session::stepText() const {
                    : "(The picked pixel is not on a shadow receiver, so this step's numbers "
                      "cannot be shown. Pick a point on the ground.)";
     }
-    StepContext ctx = makeStepContext(s, mPixel);
-    ctx.bias = mSettings.bias;
-    ctx.constantBias = mSettings.constantBias;
-    ctx.cull = mSettings.cull;
-    ctx.depthFormat = mSettings.depthFormat;
-    ctx.originShift = mSettings.originShift;
-    if (mPoint) ctx.lightAngleDeg = lightAngleDeg(mLesson.scene, *mPoint);
+    StepContext ctx =
+        makeStepContext(mSettings, mPixel, mPoint ? lightAngleDeg(mLesson.scene, *mPoint) : -1.0f);
     std::string text = fillText(s.text, *mTrace, ctx);
     if (!mStepEdited) return text;
     ClaimWorld world;

@@ -13,9 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "app/lesson_step.h"
+#include "app/step_view.h"
 #include "draw/canvas.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
+#include "lesson/lesson_catalogue.h"
 #include "lesson/lesson_pick.h"
 #include "overlay/flicker_trace.h"
 #include "overlay/inspector.h"
@@ -24,63 +27,6 @@
 #include "render/scene_renderer.h"
 
 namespace pcf {
-
-// The lessons that ship with pcfscope, sorted (lessons/*.toml): 01-..., 02-...
-std::vector<std::string> builtInLessons();
-// A lesson named on the command line: a path to a .toml file, a built-in lesson's name
-// ("03-bilinear-lerp"), or its number in the list ("3"). Throws UsageError naming the choices.
-std::string resolveLesson(const std::string& nameOrPath);
-// The lesson of `lessons` (paths) whose file name is nameOrNumber, or, for a number, the one
-// whose file name starts with that number ("13" -> "13-shimmer-and-snapping.toml", whatever its
-// place in the list); nullopt when none is.
-std::optional<std::string> findLesson(const std::vector<std::string>& lessons,
-                                      const std::string& nameOrNumber);
-
-// Parses a lesson and reads every bench.csv its steps chart, so that a broken chart is reported
-// at its lesson line before anything is drawn. Throws InputError (file:line) or UsageError.
-Lesson loadLessonChecked(const std::string& path);
-
-// A chart step draws one point per bench.csv row; a bench of every method, kernel and map size
-// has a few hundred. More is refused with one line (a 50,000-row chart took 80 s and 2.3 GB).
-constexpr std::size_t MAX_CHART_ROWS = 2000;
-
-// The smallest chart the chart drawers lay out (analysis/speed_chart.cpp, stability_chart.cpp
-// refuse less): a command that draws a step's chart checks its size against this first.
-constexpr int MIN_CHART_SIDE = 64;
-
-// A chart step's chart (LessonStep::chart, with its chart_highlight) as RGBA8 of `size`, rows
-// top-down, as the frame shows it in the scene's place; `render --lesson L --step S` writes it.
-// Needs a current OpenGL 4.5 context. Throws InputError for a bad chart file.
-// `presentation`: text at the projector's floors and only the dots the step names (and the
-// Pareto front) labelled; otherwise at the normal frame's floors.
-std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size,
-                                   bool presentation = false);
-// The texts a chart step's chart (a speed chart or a stability chart) draws in `layout`'s scene
-// panel (as chartStepLayout places it), as layout boxes: ticks are numbers, dot and bar-group
-// names and the legend labels, the rest text. The frame's layout lists them. Throws InputError
-// for a bad chart file.
-std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLayout& layout);
-
-// What a step is about (inspector.h: Focus): its `focus` key, else derived: a chart step's chart;
-// a nearest or heat-map step's scene and texel (hard shadows and the heat map are seen on the
-// scene); any other filter's
-// neighbourhood and formula (its words walk through the texels it reads). A chart step's focus is
-// its chart whatever the key says. The key's names are checked by loadLessonChecked.
-Focus stepFocus(const LessonStep& step);
-
-RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize);
-// The shadow map's fit (light clip from world) for a lesson's settings: the scene's own fit with
-// its texel grid slid by `origin_shift` and snapped with `snap` (scene/light.h:
-// shiftShadowOrigin), for a map of `mapSize` texels. The viewer, export and `render --lesson`
-// all render with it (SceneRenderer::setShadowClipFromWorld).
-// How the camera pass shows a scene point in a frame of frameSize, as the session renders a
-// step: the camera's sub-pixel jitter that centres the point on its pixel and the point's own
-// lookup there (lesson_pick.h, SceneRenderer::setPick); nullopt when the frame does not show it.
-std::optional<CameraPick> cameraPickOf(const Scene& scene, const glm::mat4& shadowFit,
-                                       const LessonSettings& s, const ScenePoint& point,
-                                       glm::ivec2 frameSize);
-
-glm::mat4 lessonShadowFit(const Scene& scene, const LessonSettings& s, int mapSize);
 
 // The smallest frame the scene view and the inspector fit into side by side.
 constexpr glm::ivec2 MIN_SESSION_SIZE{320, 180};
@@ -236,10 +182,8 @@ class Session {
     glm::ivec2 mLightSpaceOrigin{0, 0};
     glm::ivec2 mLightSpaceSize{0, 0};
     std::optional<Trace> mTrace;
-    // The last traced lookup's inputs (visibilityWith): uv, receiver depth, ref, bias.
-    glm::vec3 mLookup{0.0f};
-    float mLookupRef = 0.0f;
-    BiasParams mLookupBias{};
+    // The last traced lookup and its inputs (visibilityWith).
+    std::optional<PixelLookup> mLookup;
     bool mSceneOnly = false;
     std::optional<glm::mat4> mShadowFit;
     std::function<FlickerTrace()> mFlicker;

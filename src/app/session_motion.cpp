@@ -40,14 +40,12 @@ void Session::setSceneOnly(bool on) {
 }
 
 std::optional<float> Session::visibilityWith(int method, int kernel) const {
-    if (!mTrace) return std::nullopt;
+    if (!mLookup) return std::nullopt;
     LessonSettings s = mSettings;
     s.method = method;
     s.kernel = kernel;
-    PcfParams prm = s.pcfParams(glm::vec2(mLookup.x, mLookup.y), mMap.width(),
-                                mRenderer->pcfParams(s).penumbraScale);
-    glm::vec2 uv(mLookup.x, mLookup.y);
-    return traceLookup(mMap, uv, mLookup.z, mLookupRef, prm, mLookupBias).visibility;
+    PcfParams prm = s.pcfParams(mLookup->uv, mMap.width(), mRenderer->pcfParams(s).penumbraScale);
+    return traceLookup(mMap, mLookup->uv, mLookup->z, mLookup->ref, prm, mLookup->bias).visibility;
 }
 
 // The scene over the whole frame, the pinned point ringed, and the flicker trace when set.

@@ -407,13 +407,18 @@ std::optional<PlaceholderProblem> scan(std::string_view text, OnLiteral onLitera
 }  // namespace
 
 StepContext makeStepContext(const LessonStep& step, glm::ivec2 pixel) {
+    return makeStepContext(step.settings, pixel, -1.0f);
+}
+
+StepContext makeStepContext(const LessonSettings& s, glm::ivec2 pixel, float lightAngleDeg) {
     StepContext ctx;
     ctx.pixel = pixel;
-    ctx.originShift = step.settings.originShift;
-    ctx.bias = step.settings.bias;
-    ctx.constantBias = step.settings.constantBias;
-    ctx.cull = step.settings.cull;
-    ctx.depthFormat = step.settings.depthFormat;
+    ctx.originShift = s.originShift;
+    ctx.bias = s.bias;
+    ctx.constantBias = s.constantBias;
+    ctx.cull = s.cull;
+    ctx.depthFormat = s.depthFormat;
+    ctx.lightAngleDeg = lightAngleDeg;
     return ctx;
 }
 

@@ -1,0 +1,50 @@
+// step_chart.h: the chart a lesson step shows in the scene's place (lesson.h: LessonStep::chart
+// and chart_highlight): "PATH", a bench.csv's speed against accuracy (speed_chart.h), or
+// "PATH#NAME", one of a stability.csv's sweep charts (stability_figures.h: sweepCharts). Read,
+// checked, drawn and its texts placed here, for every command that shows a step.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "analysis/bench_report.h"
+#include "analysis/speed_chart.h"
+
+namespace pcf {
+
+// A chart step draws one point per bench.csv row; a bench of every method, kernel and map size
+// has a few hundred. More is refused with one line (a 50,000-row chart took 80 s and 2.3 GB).
+constexpr std::size_t MAX_CHART_ROWS = 2000;
+
+// The smallest chart the chart drawers lay out (speed_chart.cpp, stability_chart.cpp refuse
+// less): a command that draws a step's chart checks its size against this first.
+constexpr int MIN_CHART_SIDE = 64;
+
+struct StepChart {
+    std::string chart;      // "PATH" or "PATH#NAME"
+    std::string highlight;  // the rows ringed (chartRowsMatching); empty: none
+    float minFontPx = 8.0f;
+    // Only the dots the highlight names (and the Pareto front) labelled: a projector's chart.
+    bool keptLabelsOnly = false;
+};
+
+// A bench.csv's rows, read with the checks of every input file and at most MAX_CHART_ROWS.
+// Throws InputError.
+std::vector<BenchRow> readChartRows(const std::string& csvPath);
+
+// Throws InputError unless `chart` can be drawn: its file is read, has rows (for a sweep chart,
+// of that sweep) and names a sweep chart that exists.
+void checkStepChart(const std::string& chart);
+// Throws std::invalid_argument unless `highlight` names rows of the chart's bench.csv
+// (chartRowsMatching), InputError for the file.
+void checkStepChartHighlight(const std::string& chart, const std::string& highlight);
+
+// The chart as RGBA8 of `size`, rows top-down. Throws InputError for a bad chart file.
+std::vector<uint8_t> drawStepChart(const StepChart& chart, glm::ivec2 size);
+// The texts it draws, placed in a chart of `size` (origin top-left). Throws InputError.
+std::vector<ChartTextBox> stepChartTexts(const StepChart& chart, glm::ivec2 size);
+
+}  // namespace pcf

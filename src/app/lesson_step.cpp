@@ -1,0 +1,78 @@
+#include "app/lesson_step.h"
+
+#include <stdexcept>
+
+#include "base/input_error.h"
+#include "base/usage_error.h"
+#include "kernel/methods.h"
+
+namespace pcf {
+
+Lesson loadLessonChecked(const std::string& path) {
+    Lesson lesson = parseLessonFile(path);
+    if (lesson.steps.empty()) throw UsageError(path + ": the lesson has no steps");
+    for (size_t i = 0; i < lesson.steps.size(); ++i) {
+        const LessonStep& step = lesson.steps[i];
+        std::string which = "step " + std::to_string(i + 1);
+        if (!step.focus.empty() && !parseFocus(step.focus)) {
+            throw InputError(path, step.focusLine,
+                             which + " focus '" + step.focus + "' is not one of: " + focusNames());
+        }
+        if (step.chart.empty()) continue;
+        try {
+            checkStepChart(step.chart);
+        } catch (const InputError& e) {
+            throw InputError(path, step.chartLine, which + " chart: " + e.what());
+        }
+        if (step.chartHighlight.empty()) continue;
+        try {
+            checkStepChartHighlight(step.chart, step.chartHighlight);
+        } catch (const std::invalid_argument& e) {
+            throw InputError(path, step.chartHighlightLine,
+                             which + " chart_highlight: " + e.what());
+        } catch (const InputError& e) {
+            throw InputError(path, step.chartLine, which + " chart: " + e.what());
+        }
+    }
+    return lesson;
+}
+
+StepChart stepChart(const LessonStep& step, bool presentation) {
+    // The chart's smallest type: the frame's floors for numbers and labels (inspector.h:
+    // typeSizes), so that the chart reads as well as the text beside it.
+    InspectorLayout frame;
+    frame.presentation = presentation;
+    TypeSizes t = typeSizes(frame);
+    // A projector's chart names only what the step talks about.
+    return {step.chart, step.chartHighlight, std::max(t.numberFloor, t.labelFloor), presentation};
+}
+
+std::vector<uint8_t> drawStepChart(const LessonStep& step, glm::ivec2 size, bool presentation) {
+    return drawStepChart(stepChart(step, presentation), size);
+}
+
+std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLayout& layout) {
+    std::vector<LayoutBox> out;
+    if (step.chart.empty()) return out;
+    glm::ivec2 size(layout.scene.size());
+    for (const ChartTextBox& b : stepChartTexts(stepChart(step, layout.presentation), size)) {
+        BoxKind kind = b.role == "chart-tick"                                ? BoxKind::Number
+                       : b.role == "chart-label" || b.role == "chart-legend" ? BoxKind::Label
+                                                                             : BoxKind::Text;
+        Rect r{b.rect.x + layout.scene.x, b.rect.y + layout.scene.y, b.rect.w, b.rect.h};
+        out.push_back({kind, r, "scene", b.role, b.fontPx, false, b.text});
+    }
+    return out;
+}
+
+Focus stepFocus(const LessonStep& step) {
+    if (!step.chart.empty()) return Focus{.chart = true};
+    if (std::optional<Focus> f = parseFocus(step.focus)) return *f;
+    // A heat map is drawn over the scene, and a nearest lookup's hard edge is seen there.
+    if (step.settings.heatmap || step.settings.method == PCF_NEAREST) {
+        return Focus{.scene = true, .neighbourhood = true};
+    }
+    return Focus{.neighbourhood = true, .formula = true};
+}
+
+}  // namespace pcf

@@ -1,0 +1,64 @@
+#include "app/step_view.h"
+
+#include "scene/light.h"
+
+namespace pcf {
+
+RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) {
+    RenderSettings r;
+    static_cast<ShadowSettings&>(r) = s;
+    r.frameSize = sceneSize;
+    return r;
+}
+
+glm::mat4 lessonShadowFit(const Scene& scene, const LessonSettings& s, int mapSize) {
+    glm::mat4 fit = shadowClipFromWorld(scene);
+    if (s.originShift == 0.0f && !s.snap) return fit;
+    return shiftShadowOrigin(fit, glm::vec2(s.originShift), mapSize, s.snap);
+}
+
+std::optional<CameraPick> cameraPickOf(const Scene& scene, const glm::mat4& shadowFit,
+                                       const LessonSettings& s, const ScenePoint& point,
+                                       glm::ivec2 frameSize) {
+    FramePick at = framePick(scene.camera, point.posWs, frameSize);
+    if (!at.inFrame) return std::nullopt;
+    PinnedLookup lookup = pinnedLookup(scene, shadowFit, s, point);
+    glm::ivec2 gl(at.pixel.x, frameSize.y - 1 - at.pixel.y);
+    return CameraPick{gl, at.jitterNdc, glm::vec4(lookup.uv, lookup.ref, lookup.z0), lookup.dzduv};
+}
+
+StepView stepView(const Scene& scene, const LessonSettings& s,
+                  const std::optional<ScenePoint>& point, glm::ivec2 sceneSize,
+                  const std::optional<glm::mat4>& fit) {
+    StepView view;
+    view.render = renderSettingsFor(s, sceneSize);
+    view.fit = fit ? *fit : lessonShadowFit(scene, s, view.render.mapSize);
+    if (point) view.pick = cameraPickOf(scene, view.fit, s, *point, sceneSize);
+    return view;
+}
+
+void renderStepView(SceneRenderer& renderer, const StepView& view) {
+    renderer.setShadowClipFromWorld(view.fit);
+    renderer.setPick(view.pick);
+    renderer.render(view.render);
+}
+
+std::optional<PixelLookup> tracePixel(const SceneRenderer& renderer, const ShadowMap& map,
+                                      const LessonSettings& s, glm::ivec2 pixel) {
+    std::vector<float> ls = renderer.readLightSpaceRegion(pixel, glm::ivec2(1));
+    if (ls[3] != 1.0f) return std::nullopt;
+    PixelLookup out;
+    out.uv = glm::vec2(ls[0], ls[1]);
+    out.ref = ls[2];
+    // The receiver target holds the plane the shader used and the depth before any bias.
+    std::vector<float> receiver = renderer.readReceiverRegion(pixel, glm::ivec2(1));
+    out.bias = s.biasParams();
+    out.bias.dzduv = glm::vec2(receiver[0], receiver[1]);
+    out.z = receiver[3] == 1.0f ? receiver[2] : out.ref + s.depthBias();
+    float scale = renderer.pcfParams(s).penumbraScale;  // pcss's (scene/pcss.h)
+    out.trace = traceLookup(map, out.uv, out.z, out.ref, s.pcfParams(out.uv, map.width(), scale),
+                            out.bias);
+    return out;
+}
+
+}  // namespace pcf
