@@ -14,6 +14,7 @@
 #include "json_lite.h"
 #include "kernel/methods.h"
 #include "kernel/trace.h"
+#include "kernel/trace_explain.h"
 #include "kernel/trace_json.h"
 #include "random_map.h"
 #include "render/gl_context.h"
@@ -269,7 +270,7 @@ TEST(Bias, TraceJsonCarriesTheModeItsParametersAndEachTapsShift) {
     // Texel (3,3)'s centre is half a texel left and below uv 0.5: shift -(0.5 + 0.25) / 16.
     EXPECT_NE(json.find("\"ref_shift\":-0.046875"), std::string::npos) << json;
     bool perTapStep = false;
-    for (const TraceStep& s : tr.steps)
+    for (const TraceStep& s : explainTrace(tr))
         perTapStep = perTapStep || s.kind == TraceStepKind::PerTapRef;
     EXPECT_TRUE(perTapStep);
 }
@@ -346,7 +347,7 @@ TEST(Bias, TraceShowsTheCappedSlope) {
     // Texel (3,3)'s centre is half a texel left and below uv 0.5: shift -(0.125 + 0.125) / 16.
     EXPECT_NE(json.find("\"ref_shift\":-0.015625"), std::string::npos) << json;
     std::string all;
-    for (const TraceStep& s : tr.steps) all += s.text;
+    for (const TraceStep& s : explainTrace(tr)) all += s.text;
     EXPECT_NE(all.find("capped at 0.125 depth per uv unit"), std::string::npos) << all;
 }
 

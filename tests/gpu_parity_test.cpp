@@ -11,6 +11,7 @@
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/pcf.h"
+#include "random_map.h"
 #include "render/depth_readback.h"
 #include "render/gl_context.h"
 #include "render/gpu_lookup.h"
@@ -90,22 +91,10 @@ std::string describe(const PcfParams& prm) {
 
 TEST_F(GpuParity, RandomLookupsOnRandomMapsMatchTheCpuKernel) {
     GpuLookup gpu;
-    std::mt19937 rng(17);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    std::uniform_real_distribution<float> around(-0.03f, 1.03f);
     for (glm::ivec2 size : {glm::ivec2(37, 23), glm::ivec2(64, 64)}) {
-        ShadowMap map(size.x, size.y);
-        for (int j = 0; j < size.y; ++j) {
-            for (int i = 0; i < size.x; ++i) map.setDepth(i, j, unit(rng));
-        }
+        ShadowMap map = randomMap(size.x, size.y, 17 + size.x);
         const int width = 64;
-        std::vector<glm::vec4> lookups(width * 64);
-        for (glm::vec4& l : lookups) l = glm::vec4(around(rng), around(rng), unit(rng), 0.0f);
-        // A few lookups exactly on texel centres and edges, where floor() decides.
-        for (int k = 0; k < 64; ++k) {
-            lookups[k].x = (k % size.x + 0.5f * (k % 3)) / size.x;
-            lookups[k].y = (k % size.y + 0.5f * (k % 2)) / size.y;
-        }
+        std::vector<glm::vec4> lookups = randomLookups(size, width, 64, 18 + size.x);
         for (bool rotate : {false, true}) {
             for (const PcfParams& prm : parityCases({1, 2, 3, 5, 8})) {
                 if (rotate && prm.method != PCF_POISSON && prm.method != PCF_PCSS) continue;

@@ -11,6 +11,7 @@
 #include "base/input_error.h"
 #include "kernel/pcf.h"
 #include "lesson/lesson.h"
+#include "scene/presets.h"
 
 namespace pcf {
 namespace {
@@ -312,8 +313,31 @@ TEST(LessonFormat, ALessonNeedsStepsAndAScene) {
     e = errorOf("title = \"T\"\n[[step]]\ntitle = \"S\"\ntext = \"x\"\n");
     EXPECT_EQ(e.rfind("bad.toml:1: lesson has no scene", 0), 0u) << e;
     e = errorOf("title = \"T\"\nscene = \"pole\"\n[light]\ntype = \"directional\"\n");
-    EXPECT_EQ(e.rfind("bad.toml:2: lesson gives both scene = \"pole\" and scene tables", 0), 0u)
+    EXPECT_EQ(
+        e.rfind("bad.toml:2: lesson gives both scene = \"pole\" and scene tables ([light]", 0), 0u)
         << e;
+}
+
+TEST(LessonFormat, ACameraBesideAPresetViewsThePresetFromThere) {
+    Lesson lesson = parseLessonString(
+        "title = \"T\"\nscene = \"grazing\"\n[camera]\neye = [0.5, 1.0, 3.0]\n"
+        "target = [0.9, 0.0, 1.4]\nfov = 30.0\n[[step]]\ntitle = \"S\"\ntext = \"x\"\n",
+        "close.toml");
+    std::optional<Scene> preset = presetScene("grazing");
+    ASSERT_TRUE(preset);
+    EXPECT_EQ(lesson.scene.objects.size(), preset->objects.size());
+    EXPECT_EQ(lesson.scene.light.directionWs, preset->light.directionWs);
+    EXPECT_EQ(lesson.scene.camera.eyeWs, glm::vec3(0.5f, 1.0f, 3.0f));
+    EXPECT_EQ(lesson.scene.camera.targetWs, glm::vec3(0.9f, 0.0f, 1.4f));
+    EXPECT_EQ(lesson.scene.camera.fovYDeg, 30.0f);
+    EXPECT_NE(lesson.scene.camera.eyeWs, preset->camera.eyeWs);
+    // Its planes are fitted to the preset's scene, as a preset's own camera's are.
+    EXPECT_GT(lesson.scene.camera.nearZ, 0.0f);
+    EXPECT_GT(lesson.scene.camera.farZ, lesson.scene.camera.nearZ);
+    // A bad camera beside a preset names its line.
+    std::string e = errorOf("title = \"T\"\nscene = \"grazing\"\n[camera]\neye = [0, 1, 3]\n");
+    EXPECT_EQ(e.rfind("bad.toml:3: ", 0), 0u) << e;
+    EXPECT_NE(e.find("target"), std::string::npos) << e;
 }
 
 TEST(LessonFormat, EmbeddedSceneErrorsKeepTheLessonsLines) {

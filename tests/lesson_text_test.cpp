@@ -8,6 +8,7 @@
 
 #include "kernel/methods.h"
 #include "kernel/trace.h"
+#include "lesson/lesson_pick.h"
 
 namespace pcf {
 namespace {

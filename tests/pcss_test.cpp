@@ -12,6 +12,7 @@
 #include "kernel/methods.h"
 #include "kernel/pcf.h"
 #include "kernel/trace.h"
+#include "kernel/trace_explain.h"
 #include "kernel/trace_json.h"
 #include "random_map.h"
 #include "scene/presets.h"
@@ -110,16 +111,16 @@ TEST(Pcss, TheTraceStepsThroughSearchPenumbraAndFilter) {
     EXPECT_NEAR(tr.pcss.penumbra, 8.0f, 1e-5f);
     EXPECT_FLOAT_EQ(tr.visibility, 0.5f);
     EXPECT_FLOAT_EQ(weightedTapSum(tr), tr.visibility);
+    std::vector<TraceStep> steps = explainTrace(tr);
     std::vector<TraceStepKind> kinds;
-    for (const TraceStep& s : tr.steps) kinds.push_back(s.kind);
+    for (const TraceStep& s : steps) kinds.push_back(s.kind);
     std::vector<TraceStepKind> tail = {TraceStepKind::BlockerSearch, TraceStepKind::PenumbraWidth,
                                        TraceStepKind::DiskPoints, TraceStepKind::Result};
     ASSERT_GE(kinds.size(), tail.size());
     EXPECT_TRUE(std::equal(tail.begin(), tail.end(), kinds.end() - 4));
-    const std::string& width = tr.steps[tr.steps.size() - 3].text;
+    const std::string& width = steps[steps.size() - 3].text;
     EXPECT_NE(width.find("(0.7 - 0.3) * 20 = 8 texels"), std::string::npos) << width;
-    EXPECT_NE(tr.steps.back().text.find("8 lit / 16 = 0.5"), std::string::npos)
-        << tr.steps.back().text;
+    EXPECT_NE(steps.back().text.find("8 lit / 16 = 0.5"), std::string::npos) << steps.back().text;
     Json j = traceJson(tr);
     EXPECT_EQ(j["pcss"]["blockers"], 8);
     EXPECT_NEAR(j["pcss"]["penumbra"].get<double>(), 8.0, 1e-5);
@@ -133,8 +134,9 @@ TEST(Pcss, TheTraceStepsThroughSearchPenumbraAndFilter) {
     EXPECT_EQ(lit.taps.size(), 16u);
     EXPECT_EQ(lit.visibility, 1.0f);
     EXPECT_FLOAT_EQ(weightedTapSum(lit), 1.0f);
-    EXPECT_EQ(lit.steps.back().kind, TraceStepKind::Result);
-    EXPECT_EQ(lit.steps[lit.steps.size() - 2].kind, TraceStepKind::BlockerSearch);
+    std::vector<TraceStep> litSteps = explainTrace(lit);
+    EXPECT_EQ(litSteps.back().kind, TraceStepKind::Result);
+    EXPECT_EQ(litSteps[litSteps.size() - 2].kind, TraceStepKind::BlockerSearch);
 }
 
 // The width (texels) over which a scan across the edge is neither lit nor shadowed.

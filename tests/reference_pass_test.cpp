@@ -7,10 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include "kernel/methods.h"
 #include "kernel/pcf.h"
+#include "random_map.h"
 #include "render/gl_context.h"
 #include "render/gpu_lookup.h"
 
@@ -54,22 +54,10 @@ std::vector<PcfParams> referenceCases() {
 
 TEST_F(ReferencePass, EveryMethodGivesTheKernelsVisibility) {
     GpuLookup gpu;
-    std::mt19937 rng(23);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    std::uniform_real_distribution<float> around(-0.03f, 1.03f);
     const glm::ivec2 size(61, 47);
-    ShadowMap map(size.x, size.y);
-    for (int j = 0; j < size.y; ++j) {
-        for (int i = 0; i < size.x; ++i) map.setDepth(i, j, unit(rng));
-    }
+    ShadowMap map = randomMap(size.x, size.y, 23);
     const int width = 64;
-    std::vector<glm::vec4> lookups(width * 48);
-    for (glm::vec4& l : lookups) l = glm::vec4(around(rng), around(rng), unit(rng), 0.0f);
-    // Lookups on texel centres and edges, where floor() decides.
-    for (int k = 0; k < 64; ++k) {
-        lookups[k].x = (k % size.x + 0.5f * (k % 3)) / size.x;
-        lookups[k].y = (k % size.y + 0.5f * (k % 2)) / size.y;
-    }
+    std::vector<glm::vec4> lookups = randomLookups(size, width, 48, 24);
     gpu.setMap(map);
     gpu.setLookups(lookups, width);
     for (const PcfParams& prm : referenceCases()) {

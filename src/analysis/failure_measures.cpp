@@ -5,8 +5,8 @@
 #include <cmath>
 #include <thread>
 
-#include "analysis/stability.h"
 #include "scene/camera.h"
+#include "scene/light.h"
 
 namespace pcf {
 
@@ -213,6 +213,39 @@ ShimmerStats shimmerStats(const std::vector<std::vector<float>>& frames,
     s.p99 = quantileOf(changes, 0.99);
     s.flickerP99 = quantileOf(flickerChanges, 0.99);
     return s;
+}
+
+std::vector<glm::vec3> footprintPoints(const Scene& scene, const glm::mat4& shadowClipFromWorld,
+                                       int mapSize, glm::vec3 posWs, glm::vec3 normalWs,
+                                       float reachTexels, int gridSide) {
+    // One texel across the map at p's depth, as world vectors: the inverse of the shadow
+    // matrix applied to clip + (2 w / mapSize) along x (and y), minus p.
+    glm::mat4 worldFromClip = glm::inverse(shadowClipFromWorld);
+    glm::vec4 clip = shadowClipFromWorld * glm::vec4(posWs, 1.0f);
+    float step = 2.0f * clip.w / static_cast<float>(mapSize);
+    auto unproject = [&](glm::vec4 c) {
+        glm::vec4 w = worldFromClip * c;
+        return glm::vec3(w) / w.w;
+    };
+    glm::vec3 texelU = unproject(clip + glm::vec4(step, 0, 0, 0)) - posWs;
+    glm::vec3 texelV = unproject(clip + glm::vec4(0, step, 0, 0)) - posWs;
+    glm::vec3 toLight = towardLight(scene.light, posWs).dirWs;
+    float nDotL = glm::dot(normalWs, toLight);
+    std::vector<glm::vec3> points;
+    if (std::abs(nDotL) < 1e-4f) return points;
+    int side = std::max(gridSide, 2);
+    for (int j = 0; j < side; ++j) {
+        for (int i = 0; i < side; ++i) {
+            float a = reachTexels * (2.0f * i / (side - 1) - 1.0f);
+            float b = reachTexels * (2.0f * j / (side - 1) - 1.0f);
+            glm::vec3 o = a * texelU + b * texelV;
+            // Along the light (which keeps the map position) back onto the surface's plane:
+            // dot(n, o + t * toLight) = 0.
+            float t = -glm::dot(normalWs, o) / nDotL;
+            points.push_back(posWs + o + t * toLight);
+        }
+    }
+    return points;
 }
 
 }  // namespace pcf

@@ -2,7 +2,7 @@
 // stability sweeps (stability.h), so both split a picture's error the same way:
 //
 //   clean lit    the truth says fully lit at the pixel AND at every point of a grid spanning
-//                +-reach texels of the map around it (footprintPoints in stability.h): a filter
+//                +-reach texels of the map around it (footprintPoints, below): a filter
 //                may not darken it at all; where it does, that is false shadow (acne), a bias
 //                error, not the filter's legitimate penumbra next to a real edge.
 //   clean umbra  the same for fully shadowed: where a filter lights it, that is false light
@@ -112,5 +112,12 @@ double meanOf(const std::vector<float>& values);
 
 // The q-quantile (0..1, nearest rank) of `values` (reordered); 0 when empty.
 double quantileOf(std::vector<float>& values, double q);
+
+// The surface points a +-reachTexels grid (gridSide x gridSide points) around `hit` covers in
+// the shadow map: each grid point moved across the map's plane and carried along the light
+// onto the plane of the hit's surface. Empty when the surface is edge-on to the light.
+std::vector<glm::vec3> footprintPoints(const Scene& scene, const glm::mat4& shadowClipFromWorld,
+                                       int mapSize, glm::vec3 posWs, glm::vec3 normalWs,
+                                       float reachTexels, int gridSide);
 
 }  // namespace pcf

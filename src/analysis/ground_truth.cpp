@@ -134,7 +134,6 @@ struct Scanline {
 struct ScanlineWalk {
     const Scene& scene;
     const CameraRays& rays;
-    const EdgeFinder& edges;
     glm::ivec2 pixel;
     int object;
     double y;  // window coordinate of the scanline
@@ -207,10 +206,9 @@ struct ScanlineWalk {
     }
 };
 
-Scanline scanline(const Scene& scene, const CameraRays& rays, const EdgeFinder& edges,
-                  glm::ivec2 pixel, int object, double v) {
-    ScanlineWalk w{scene, rays, edges, pixel, object, static_cast<double>(pixel.y) + v,
-                   false, {},   {},    {}};
+Scanline scanline(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel, int object,
+                  double v) {
+    ScanlineWalk w{scene, rays, pixel, object, static_cast<double>(pixel.y) + v, false, {}, {}, {}};
     w.walk();
     return w.line;
 }
@@ -222,7 +220,6 @@ Scanline scanline(const Scene& scene, const CameraRays& rays, const EdgeFinder& 
 struct AreaLine {
     const Scene& scene;
     const CameraRays& rays;
-    const EdgeFinder& edges;
     glm::ivec2 pixel;
     int object;
     double fTarget;  // the bound each f aims for
@@ -280,7 +277,7 @@ struct AreaLine {
 
     Scanline operator()(double v) const {
         double y = static_cast<double>(pixel.y) + v;
-        ScanlineWalk w{scene, rays, edges, pixel, object, y, true, {}, {}, {}};
+        ScanlineWalk w{scene, rays, pixel, object, y, true, {}, {}, {}};
         w.walk();
         Scanline line;
         line.on = w.line.on;
@@ -374,17 +371,17 @@ Refined integrateRows(const LineFn& line, float fallback, float target) {
     }
 }
 
-Refined refinePixel(const Scene& scene, const CameraRays& rays, const EdgeFinder& edges,
-                    glm::ivec2 pixel, const FirstPass& first, float target) {
-    auto line = [&](double v) { return scanline(scene, rays, edges, pixel, first.object, v); };
+Refined refinePixel(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel,
+                    const FirstPass& first, float target) {
+    auto line = [&](double v) { return scanline(scene, rays, pixel, first.object, v); };
     return integrateRows(line, first.visibility, target);
 }
 
 // The area light's pixel: a quarter of the target to each f and to each x-integral, the rest
 // to the integral over v.
-Refined refineAreaPixel(const Scene& scene, const CameraRays& rays, const EdgeFinder& edges,
-                        glm::ivec2 pixel, const FirstPass& first, float target) {
-    AreaLine line{scene, rays, edges, pixel, first.object, 0.25 * target, 0.25 * target};
+Refined refineAreaPixel(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel,
+                        const FirstPass& first, float target) {
+    AreaLine line{scene, rays, pixel, first.object, 0.25 * target, 0.25 * target};
     return integrateRows(line, first.visibility, target);
 }
 
@@ -512,11 +509,11 @@ PassTwo passTwo(const Scene& scene, const CameraRays& rays, const EdgeFinder& ed
             std::tan(0.5 * glm::radians(static_cast<double>(scene.light.angularDiameterDeg)));
         int state = edges.areaState(pixelCone(rays, x, y), p.object, tanHalf);
         if (state >= 0) return {static_cast<float>(state), 0.0f, false};
-        Refined r = refineAreaPixel(scene, rays, edges, {x, y}, p, target);
+        Refined r = refineAreaPixel(scene, rays, {x, y}, p, target);
         return {r.visibility, r.bound, true};
     }
     if (needsRefinement(firstAt, x, y, rays, edges)) {
-        Refined r = refinePixel(scene, rays, edges, {x, y}, p, target);
+        Refined r = refinePixel(scene, rays, {x, y}, p, target);
         return {r.visibility, r.bound, true};
     }
     return {p.visibility, 0.0f, false};

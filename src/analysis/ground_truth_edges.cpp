@@ -422,18 +422,4 @@ bool EdgeFinder::litMayChange(const RayCone& cone, int object) const {
     return false;
 }
 
-bool EdgeFinder::hitMayChange(const RayCone& cone, int object) const {
-    for (const SceneObject& o : mScene.objects) {
-        if (outlineInCone(cone, o.shape)) return true;
-    }
-    Footprint f = footprint(cone, object);
-    if (!f.bounded) return true;
-    if (f.radius < 0.0) return false;
-    for (size_t i = 0; i < mScene.objects.size(); ++i) {
-        if (static_cast<int>(i) == object) continue;
-        if (surfaceDistance(mScene.objects[i].shape, f.centre) <= f.radius) return true;
-    }
-    return false;
-}
-
 }  // namespace pcf

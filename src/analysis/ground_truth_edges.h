@@ -59,10 +59,6 @@ class EdgeFinder {
     // differ: false means every ray of the cone that meets the object meets it equally lit.
     bool litMayChange(const RayCone& cone, int object) const;
 
-    // Whether which object a ray meets may change within the cone: an outline inside it, or a
-    // surface of another object near `object`'s footprint (surfaces cutting each other).
-    bool hitMayChange(const RayCone& cone, int object) const;
-
     // For a directional light with a size (tanHalf = tan of half its angular diameter): 1 when
     // every point of `object` in the cone sees the whole light disk, 0 when none sees any of
     // it, -1 when that is not certain (a penumbra may be there). A ray from a point of the ball

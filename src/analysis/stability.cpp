@@ -568,14 +568,22 @@ StabilityOptions quickStabilityOptions() {
     return o;
 }
 
-std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) {
-    // A sentence naming no option, one naming an option list once (said as its flag by the
-    // command line: app/cli_util.h's cliWords), and a value of a list out of its range.
-    auto plain = [](std::string sentence) { return ParamProblem{"", std::move(sentence), ""}; };
-    auto empty = [](const char* setting) { return ParamProblem{setting, "", " is empty"}; };
-    auto outOfRange = [](const char* setting, const std::string& v, const std::string& range) {
-        return ParamProblem{setting, "", " " + v + " is out of range (" + range + ")"};
-    };
+namespace {
+
+// A sentence naming no option, one naming an option list once (said as its flag by the command
+// line: app/cli_util.h's cliWords), and a value of a list out of its range.
+ParamProblem plainProblem(std::string sentence) {
+    return ParamProblem{"", std::move(sentence), ""};
+}
+ParamProblem emptyList(const char* setting) { return ParamProblem{setting, "", " is empty"}; }
+ParamProblem outOfRange(const char* setting, const std::string& v, const std::string& range) {
+    return ParamProblem{setting, "", " " + v + " is out of range (" + range + ")"};
+}
+
+// The methods and biases: each method's kernel fits it, and some pair of them exists.
+std::optional<ParamProblem> validateStabilityPairs(const StabilityOptions& o) {
+    auto plain = plainProblem;
+    auto empty = emptyList;
     if (o.methods.empty()) return empty("methods");
     for (const StabilityMethod& m : o.methods) {
         if (m.method < 0 || m.method >= PCF_METHOD_COUNT) {
@@ -600,6 +608,15 @@ std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) 
         return ParamProblem{"biases", "no method given combines with ",
                             ": " + *validateBias(static_cast<int>(b), o.methods.front().method)};
     }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) {
+    auto plain = plainProblem;
+    auto empty = emptyList;
+    if (std::optional<ParamProblem> p = validateStabilityPairs(o)) return p;
     if (o.sweeps.empty()) return empty("sweep");
     if (o.frameSize.x < MIN_STABILITY_FRAME_SIDE || o.frameSize.y < MIN_STABILITY_FRAME_SIDE ||
         o.frameSize.x > MAX_FRAME_SIDE || o.frameSize.y > MAX_FRAME_SIDE) {
@@ -693,39 +710,6 @@ float footprintReachTexels(const StabilityMethod& m, float poissonRadius) {
             return 0.5f * static_cast<float>(std::max(m.kernel, 1) + 1);
     }
     return 0.0f;
-}
-
-std::vector<glm::vec3> footprintPoints(const Scene& scene, const glm::mat4& shadowClipFromWorld,
-                                       int mapSize, glm::vec3 posWs, glm::vec3 normalWs,
-                                       float reachTexels, int gridSide) {
-    // One texel across the map at p's depth, as world vectors: the inverse of the shadow
-    // matrix applied to clip + (2 w / mapSize) along x (and y), minus p.
-    glm::mat4 worldFromClip = glm::inverse(shadowClipFromWorld);
-    glm::vec4 clip = shadowClipFromWorld * glm::vec4(posWs, 1.0f);
-    float step = 2.0f * clip.w / static_cast<float>(mapSize);
-    auto unproject = [&](glm::vec4 c) {
-        glm::vec4 w = worldFromClip * c;
-        return glm::vec3(w) / w.w;
-    };
-    glm::vec3 texelU = unproject(clip + glm::vec4(step, 0, 0, 0)) - posWs;
-    glm::vec3 texelV = unproject(clip + glm::vec4(0, step, 0, 0)) - posWs;
-    glm::vec3 toLight = towardLight(scene.light, posWs).dirWs;
-    float nDotL = glm::dot(normalWs, toLight);
-    std::vector<glm::vec3> points;
-    if (std::abs(nDotL) < 1e-4f) return points;
-    int side = std::max(gridSide, 2);
-    for (int j = 0; j < side; ++j) {
-        for (int i = 0; i < side; ++i) {
-            float a = reachTexels * (2.0f * i / (side - 1) - 1.0f);
-            float b = reachTexels * (2.0f * j / (side - 1) - 1.0f);
-            glm::vec3 o = a * texelU + b * texelV;
-            // Along the light (which keeps the map position) back onto the surface's plane:
-            // dot(n, o + t * toLight) = 0.
-            float t = -glm::dot(normalWs, o) / nDotL;
-            points.push_back(posWs + o + t * toLight);
-        }
-    }
-    return points;
 }
 
 std::vector<float> pixelsPerTexel(const std::vector<float>& lightSpace, glm::ivec2 size,

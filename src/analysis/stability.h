@@ -180,13 +180,6 @@ StabilityResult runStability(const StabilityContext& context, const StabilityOpt
 // poisson, 0.5 for nearest.
 float footprintReachTexels(const StabilityMethod& m, float poissonRadius);
 
-// The surface points a +-reachTexels grid (gridSide x gridSide points) around `hit` covers in
-// the shadow map: each grid point moved across the map's plane and carried along the light
-// onto the plane of the hit's surface. Empty when the surface is edge-on to the light.
-std::vector<glm::vec3> footprintPoints(const Scene& scene, const glm::mat4& shadowClipFromWorld,
-                                       int mapSize, glm::vec3 posWs, glm::vec3 normalWs,
-                                       float reachTexels, int gridSide);
-
 // Pixels per texel from a light-space readback (4 floats per pixel, top-down, alpha 1 on
 // receivers) for a mapSize map: per pixel 1 / |det J|, or -1 where it cannot be measured (not
 // a receiver, no receiver neighbour, or a jump of more than 32 texels to it).

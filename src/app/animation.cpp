@@ -92,6 +92,40 @@ double animationSweepValue(const AnimationOptions& o, int k) {
 Animation::Animation(Session& session, const AnimationOptions& options)
     : mSession(session), mOptions(options), mBase(session.settings()), mScene(session.scene()) {}
 
+Animation::Animation(Session& session, const AnimationOptions& options, CompareView& compare)
+    : Animation(session, options) {
+    mSplit = &compare;
+    mOptions.compareMethod = -1;  // the parts are the comparison
+    mParts.resize(static_cast<size_t>(compare.parts()));
+    compare.setTraceBand(mOptions.flicker);
+}
+
+// A split view's frame: the parts take the swept state, are traced, and their visibilities join
+// their curves before the trace is drawn.
+void Animation::composeCompare() {
+    mSplit->follow(mSession);
+    bool recorded = false;
+    auto record = [this, &recorded] {
+        if (recorded) return;
+        recorded = true;
+        for (int i = 0; i < mSplit->parts(); ++i) {
+            std::optional<float> v = mSplit->visibility(i);
+            mParts[static_cast<size_t>(i)].push_back(v ? *v : -1.0f);
+        }
+        mCurve = mParts[0];
+        mCompare = mParts[1];
+    };
+    if (mOptions.flicker) {
+        mSplit->setFlickerTrace([this, record] {
+            record();
+            return flickerTrace();
+        });
+    }
+    mSplit->compose();
+    mSplit->setFlickerTrace({});
+    record();
+}
+
 void Animation::apply(int k) {
     double v = animationSweepValue(mOptions, k);
     LessonSettings s = mBase;
@@ -123,6 +157,7 @@ void Animation::apply(int k) {
 
 void Animation::composeFrame(int k) {
     apply(k);
+    if (mSplit) return composeCompare();
     bool recorded = false;
     // Called by compose() once the frame's lookup is traced: the point's value joins the curve
     // before the trace is drawn.
@@ -169,6 +204,13 @@ FlickerTrace Animation::flickerTrace() const {
         c.colour = colour;
         return c;
     };
+    if (mSplit) {
+        for (int i = 0; i < mSplit->parts(); ++i) {
+            t.curves.push_back(curve(mParts[static_cast<size_t>(i)],
+                                     comparePartLabel(mSplit->spec(), i), comparePartColour(i)));
+        }
+        return t;
+    }
     const LessonSettings& s = mSession.settings();
     t.curves.push_back(curve(mCurve, methodLabel(s.method, s.kernel), FLICKER_MAIN_COLOUR));
     if (mOptions.compareMethod >= 0) {

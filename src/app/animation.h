@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/compare_view.h"
 #include "app/session.h"
 
 namespace pcf {
@@ -48,6 +49,9 @@ std::string_view animationSweepUnit(AnimationSweep sweep);
 class Animation {
   public:
     Animation(Session& session, const AnimationOptions& options);
+    // A split view (compare_view.h): the sweep moves `session` (never composed) and every frame
+    // is the split view following it; the flicker trace has one curve per part.
+    Animation(Session& session, const AnimationOptions& options, CompareView& compare);
     // Puts frame k's state on the session, composes it and records the pinned point's
     // visibility (and the comparison's) for the flicker trace drawn in this and later frames.
     void composeFrame(int k);
@@ -56,10 +60,15 @@ class Animation {
     // receiver in that frame.
     const std::vector<float>& curve() const { return mCurve; }
     const std::vector<float>& compareCurve() const { return mCompare; }
+    // With a split view: part i's curve (part 0's is curve(), part 1's compareCurve()).
+    const std::vector<float>& partCurve(int part) const {
+        return mParts[static_cast<size_t>(part)];
+    }
 
   private:
     void apply(int k);
     FlickerTrace flickerTrace() const;
+    void composeCompare();
 
     Session& mSession;
     AnimationOptions mOptions;
@@ -67,6 +76,8 @@ class Animation {
     Scene mScene;
     std::vector<float> mCurve;
     std::vector<float> mCompare;
+    CompareView* mSplit = nullptr;
+    std::vector<std::vector<float>> mParts;
 };
 
 }  // namespace pcf

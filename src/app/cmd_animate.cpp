@@ -3,6 +3,7 @@
 // folder beside their final names and moved there only when complete, so an error, a full disk
 // or Ctrl-C leaves no half video; PNGs are taken back like `export`'s.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -12,7 +13,9 @@
 #include "app/animation.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/compare_view.h"
 #include "app/export.h"
+#include "app/magnifier.h"
 #include "app/output_files.h"
 #include "app/session.h"
 #include "kernel/methods.h"
@@ -38,6 +41,8 @@ struct AnimateOptions {
     bool presentation = false;
     bool sceneOnly = false;
     bool noTrace = false;
+    bool magnify = false;
+    std::string point;
     std::string compare = "auto";
     int compareKernel = 3;
     std::vector<std::string> videos;
@@ -45,10 +50,44 @@ struct AnimateOptions {
     bool force = false;
 };
 
+// --point X,Y,Z: the scene point the animation watches instead of the step's, on a surface the
+// camera sees (lesson_pick.h: seenPoint, as a lesson's `point`).
+std::optional<ScenePoint> pointOption(const Scene& scene, const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    glm::vec3 p(0.0f);
+    char tail = 0;
+    if (std::sscanf(text.c_str(), "%f,%f,%f%c", &p.x, &p.y, &p.z, &tail) != 3 ||
+        !std::isfinite(p.x + p.y + p.z)) {
+        throw UsageError("--point expects X,Y,Z (world units), got '" + text + "'");
+    }
+    std::optional<ScenePoint> seen = seenPoint(scene, p);
+    if (!seen) {
+        throw UsageError("--point " + text + " is not on a surface the camera sees (within " +
+                         "0.001; a click in `pcfscope view` prints a point)");
+    }
+    return seen;
+}
+
+// "--compare bias=none,constant,slope": a split view (compare_view.h), not a second curve.
+bool isSplitCompare(const std::string& compare) { return compare.find('=') != std::string::npos; }
+
+// The split view's spec, each part checked on the step's settings; UsageError in the option's
+// words.
+std::optional<CompareSpec> splitSpecOf(const AnimateOptions& o, const LessonSettings& step) {
+    if (!isSplitCompare(o.compare)) return std::nullopt;
+    try {
+        CompareSpec spec = parseCompareSpec(o.compare);
+        for (int i = 0; i < spec.parts(); ++i) comparePart(step, spec, i);
+        return spec;
+    } catch (const std::invalid_argument& e) {
+        throw UsageError("--" + std::string(e.what()));
+    }
+}
+
 // The comparison curve's method: a method id, or -1 for none. auto: nearest (the hard edge every
 // filter is measured against), or pcf-gather 3 when the step's method is nearest.
 int compareMethodOf(const AnimateOptions& o, const LessonSettings& step) {
-    if (o.compare == "none") return -1;
+    if (o.compare == "none" || isSplitCompare(o.compare)) return -1;
     if (o.compare == "auto") return step.method == PCF_NEAREST ? PCF_GATHER : PCF_NEAREST;
     std::optional<int> m = methodFromName(o.compare);
     if (!m) {
@@ -116,6 +155,44 @@ std::vector<std::string> planPngs(OutputFiles& outputs, const AnimateOptions& o,
     return pngs;
 }
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void checkSplitSize(const AnimateOptions& o, glm::ivec2 size, int parts) {
+    if (auto problem = compareFrameProblem(size, parts, o.presentation, !o.noTrace)) {
+        throw UsageError("--size " + o.size + ": " + *problem);
+    }
+}
+
+// The session at the step, watching `point`, magnified when asked; with a split view (returned)
+// it is the scene alone at a part's size: the sweep moves it as the parts see it.
+std::unique_ptr<CompareView> setUpView(Session& session, const AnimateOptions& o,
+                                       const std::optional<CompareSpec>& split,
+                                       const std::optional<ScenePoint>& point) {
+    std::unique_ptr<CompareView> view;
+    if (split) {
+        view = std::make_unique<CompareView>(session.frameSize(), o.presentation, *split);
+        view->setTraceBand(!o.noTrace);
+        session.setSceneOnly(true);
+        session.setFrameSize(view->partSceneSize());
+    }
+    if (point) session.pinPoint(*point);
+    if (o.magnify) magnifySession(session, session.scene().camera);
+    return view;
+}
+
+AnimationOptions animationOptions(const AnimateOptions& o, AnimationSweep sweep, int compare) {
+    AnimationOptions ao;
+    ao.sweep = sweep;
+    ao.frames = o.frames;
+    ao.snap = o.snap;
+    ao.flicker = !o.noTrace;
+    ao.compareMethod = compare;
+    ao.compareKernel = o.compareKernel;
+    return ao;
+}
+
 int runAnimate(AnimateOptions o) {
     glm::ivec2 size = parseSize("--size", o.size, {MIN_SESSION_SIZE});
     std::optional<AnimationSweep> sweep = animationSweepFromName(o.sweep);
@@ -128,7 +205,11 @@ int runAnimate(AnimateOptions o) {
     std::string path = resolveLesson(o.lesson);
     Lesson lesson = loadLessonChecked(path);
     requireIntRange("--step", o.step, 1, static_cast<int>(lesson.steps.size()));
-    int compare = compareMethodOf(o, lesson.steps[static_cast<size_t>(o.step - 1)].settings);
+    const LessonSettings& stepSettings = lesson.steps[static_cast<size_t>(o.step - 1)].settings;
+    int compare = compareMethodOf(o, stepSettings);
+    std::optional<CompareSpec> split = splitSpecOf(o, stepSettings);
+    std::optional<ScenePoint> point = pointOption(lesson.scene, o.point);
+    if (split) checkSplitSize(o, size, split->parts());
     std::string stem = frameStem(lesson.name, o.step) + "-" + o.sweep;
     if (o.videos.empty() && o.pngDir.empty())
         o.videos.push_back("pcfscope-frames/" + stem + ".mp4");
@@ -143,24 +224,17 @@ int runAnimate(AnimateOptions o) {
     session.loadLesson(path);
     session.goToStep(o.step - 1);
     session.setSceneOnly(o.sceneOnly);
-    AnimationOptions ao;
-    ao.sweep = *sweep;
-    ao.frames = o.frames;
-    ao.snap = o.snap;
-    ao.flicker = !o.noTrace;
-    ao.compareMethod = compare;
-    ao.compareKernel = o.compareKernel;
-    Animation animation(session, ao);
+    std::unique_ptr<CompareView> splitView = setUpView(session, o, split, point);
+    AnimationOptions ao = animationOptions(o, *sweep, compare);
+    Animation animation = splitView ? Animation(session, ao, *splitView) : Animation(session, ao);
 
     auto start = std::chrono::steady_clock::now();
     for (int k = 0; k < o.frames; ++k) {
         animation.composeFrame(k);
-        std::vector<uint8_t> rgba = session.readFrame();
+        std::vector<uint8_t> rgba = splitView ? splitView->readFrame() : session.readFrame();
         for (VideoOut& v : videos) v.writer->addFrame(rgba);
         if (!pngs.empty()) writePngRgba8(pngs[static_cast<size_t>(k)], size.x, size.y, rgba);
-        progressBar(
-            k + 1, o.frames,
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        progressBar(k + 1, o.frames, secondsSince(start));
     }
     std::vector<std::pair<fs::path, fs::path>> moves;
     double encode = 0.0;
@@ -170,8 +244,7 @@ int runAnimate(AnimateOptions o) {
         moves.emplace_back(v.staging->path() / v.final.filename(), v.final);
     }
     outputs.commitMoves(moves);
-    double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double seconds = secondsSince(start);
     std::fprintf(
         stderr, "animate: %d frames of %dx%d in %.2f s (%.1f frames/s; encoding %.2f s, %.0f %%)\n",
         o.frames, size.x, size.y, seconds, o.frames / seconds, encode, 100.0 * encode / seconds);
@@ -200,10 +273,15 @@ Command addAnimateCommand(CLI::App& app) {
     sub->add_flag("--presentation", o->presentation, "presentation mode's type and lines");
     sub->add_flag("--scene-only", o->sceneOnly, "the scene alone, without the inspector");
     sub->add_flag("--no-trace", o->noTrace, "no flicker trace");
+    sub->add_option("--point", o->point,
+                    "X,Y,Z: the scene point watched (ringed, traced) instead of the step's");
+    sub->add_flag("--magnify", o->magnify,
+                  "a close-up camera on the pinned point: a texel many pixels wide");
     sub->add_option(
         "--compare", o->compare,
         "the flicker trace's second method (default auto: nearest, or pcf-gather 3 when the step's "
-        "method is nearest; none: no second curve)");
+        "method is nearest; none: no second curve); or KEY=V1,V2[,V3] (bias=none,constant,slope): "
+        "a split view of 2 or 3 parts, one curve each");
     sub->add_option("--compare-kernel", o->compareKernel, "its kernel size (default 3)");
     sub->add_option(
         "-o,--out", o->videos,

@@ -10,7 +10,9 @@
 
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/compare_view.h"
 #include "app/export.h"
+#include "app/magnifier.h"
 #include "app/render_options.h"
 #include "app/session.h"
 #include "render/gl_context.h"
@@ -26,6 +28,8 @@ struct ExportOptions {
     std::string size = "1600x900";
     std::string steps;
     bool presentation = false;
+    std::string compare;
+    bool magnify = false;
     bool force = false;
 };
 
@@ -64,6 +68,22 @@ int runExport(const ExportOptions& o) {
     outputs.addInput("LESSON", path);
     for (const LessonStep& step : lesson.steps) outputs.addInput("chart", step.chart);
     ExportPlan plan = planExport(outputs, dir, lesson.name, steps);
+    CompareSpec all;
+    if (!o.compare.empty()) {
+        try {
+            all = parseCompareSpec(o.compare);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError("--" + std::string(e.what()));
+        }
+    }
+    planCompares(outputs, plan, lesson, all);
+    for (const CompareSpec& spec : plan.compares) {
+        if (spec.empty()) continue;
+        if (auto problem = compareFrameProblem(size, spec.parts(), o.presentation, false)) {
+            throw UsageError("--size " + o.size + ": " + *problem);
+        }
+    }
+    plan.magnify = o.magnify;
     exportFrames(path, plan, size, o.presentation, true, &outputs);
     outputs.commit();
     return 0;
@@ -105,6 +125,40 @@ ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::s
     return plan;
 }
 
+void planCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
+                  const CompareSpec& all) {
+    plan.compares.clear();
+    for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
+        const LessonStep& step = lesson.steps[static_cast<size_t>(s - 1)];
+        CompareSpec spec = all.empty() ? step.compare : all;
+        try {
+            for (int i = 0; i < spec.parts(); ++i) comparePart(step.settings, spec, i);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError("--" + std::string(e.what()) + " (at step " + std::to_string(s) + ")");
+        }
+        if (!spec.empty()) {
+            const std::string& stem = plan.stems[static_cast<size_t>(s - plan.steps.x)];
+            outputs.add("--compare", stem + "-compare.png");
+            outputs.add("--compare", stem + "-compare.json");
+        }
+        plan.compares.push_back(std::move(spec));
+    }
+}
+
+namespace {
+
+// The step's split view beside its frame (STEM-compare.png + .json), following `session`.
+void writeCompare(const Session& session, const CompareSpec& spec, const std::string& stem,
+                  glm::ivec2 size, bool presentation) {
+    CompareView view(size, presentation, spec);
+    view.follow(session);
+    view.compose();
+    writePngRgba8(stem + "-compare.png", size.x, size.y, view.readFrame());
+    writeTextFile(stem + "-compare.json", view.json() + "\n");
+}
+
+}  // namespace
+
 void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
                   bool presentation, bool progress, OutputFiles* outputs) {
     std::unique_ptr<GlContext> context = createHeadlessContext();
@@ -112,10 +166,19 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
     session.loadLesson(lessonPath);
     auto start = std::chrono::steady_clock::now();
     int extraFrames = 0;
+    const Camera wide = session.scene().camera;
     for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
+        // Each step's point is found in the lesson's own view, then magnified.
+        if (plan.magnify) session.setCamera(wide);
         session.goToStep(s - 1);
+        if (plan.magnify) magnifySession(session, wide);
         session.compose();
         const std::string& stem = plan.stems[static_cast<size_t>(s - plan.steps.x)];
+        size_t index = static_cast<size_t>(s - plan.steps.x);
+        if (index < plan.compares.size() && !plan.compares[index].empty()) {
+            writeCompare(session, plan.compares[index], stem, size, presentation);
+            ++extraFrames;
+        }
         writePngRgba8(stem + ".png", size.x, size.y, session.readFrame());
         writeTextFile(stem + ".json", session.stepJson() + "\n");
         if (progress) {
@@ -160,6 +223,11 @@ Command addExportCommand(CLI::App& app) {
     sub->add_option("--steps", o->steps, "steps to write, A-B or A (default all)");
     sub->add_flag("--presentation", o->presentation,
                   "what presentation mode (P) shows: 22 px step text, 18 px numbers, thick lines");
+    sub->add_option("--compare", o->compare,
+                    "also a split view of every step, STEM-compare.png: KEY=V1,V2[,V3] "
+                    "(bias=none,constant,slope); without it a step's own `compare` is written");
+    sub->add_flag("--magnify", o->magnify,
+                  "a close-up camera on each step's point: a texel many pixels wide");
     sub->add_flag("-f,--force", o->force, "overwrite existing frames");
     return {sub, [o] { return runExport(*o); }};
 }

@@ -86,7 +86,7 @@ int runMainJob() {
 Command addViewCommand(CLI::App& app) {
     auto o = std::make_shared<ViewCommandOptions>();
     CLI::App* sub =
-        app.add_subcommand("view", "the lesson in a window: pick a pixel, step through");
+        app.add_subcommand("view", "the lesson in a window: pick a scene point, step through");
     sub->add_option("lesson", o->lesson, "lesson: a .toml path, a number, or a built-in name");
     sub->add_option("--size", o->size,
                     sizeHelp("window size", {MIN_SESSION_SIZE}, "default 1600x900"));

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/output_files.h"
+#include "lesson/compare_spec.h"
 
 namespace pcf {
 
@@ -18,6 +19,10 @@ struct ExportPlan {
     std::string dir;
     glm::ivec2 steps{1, 1};          // 1-based, inclusive
     std::vector<std::string> stems;  // DIR/LESSON-stepNN, one per step, without extension
+    // Per step: the split view written beside its frame as STEM-compare.png (+ .json), from the
+    // step's `compare` or `export --compare`; empty: none (planCompares fills it).
+    std::vector<CompareSpec> compares;
+    bool magnify = false;  // every frame through the magnifier (magnifier.h)
 };
 
 // Checks every output before anything is written and adds it to `outputs` (which creates the
@@ -26,6 +31,12 @@ struct ExportPlan {
 // steps already in the folder (STEM-pageN.*) count as outputs too, so they are refused here.
 ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::string& lessonName,
                       glm::ivec2 steps);
+
+// Fills plan.compares: `all` (export --compare) for every step, else each step's own `compare`;
+// adds their files to `outputs`. Throws UsageError when a step's settings cannot take `all`.
+struct Lesson;
+void planCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
+                  const CompareSpec& all);
 
 // Renders and writes each planned step headless; progress and frames/s on stderr. A step whose
 // text pages at this size (inspector.h) also gets one frame per further page, STEM-page2.png

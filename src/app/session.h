@@ -123,6 +123,12 @@ class Session {
     // The shadow map's fit (light clip from world) instead of lessonShadowFit's, or nullopt for
     // the lesson's own: an animation creeps the light's texel grid exactly as `stability` does.
     void setShadowFit(const std::optional<glm::mat4>& shadowClipFromWorld);
+    const std::optional<glm::mat4>& shadowFit() const { return mShadowFit; }
+    // The fit the next compose() renders the map with: shadowFit(), else the lesson's.
+    glm::mat4 renderedShadowFit() const;
+    // Pins this scene point (a split view's parts pin their main view's point; the magnifier
+    // keeps its point when it moves the camera): the pixel and jitter follow for this frame.
+    void pinPoint(const ScenePoint& point);
     // The scene alone over the whole frame (no inspector, steps or status): `animate --scene-only`.
     void setSceneOnly(bool on);
     bool sceneOnly() const { return mSceneOnly; }

@@ -31,6 +31,15 @@ void Session::setShadowFit(const std::optional<glm::mat4>& shadowClipFromWorld) 
     mSceneDirty = true;
 }
 
+glm::mat4 Session::renderedShadowFit() const {
+    return mShadowFit ? *mShadowFit : lessonShadowFit(mLesson.scene, mSettings, mSettings.mapSize);
+}
+
+void Session::pinPoint(const ScenePoint& point) {
+    mPoint = point;
+    repick();
+}
+
 void Session::setSceneOnly(bool on) {
     if (on == mSceneOnly) return;
     mSceneOnly = on;

@@ -1,6 +1,8 @@
 #include "app/step_words.h"
 
 #include <sstream>
+#include <stdexcept>
+#include <variant>
 
 #include "app/cli_util.h"
 #include "kernel/methods.h"
@@ -9,30 +11,75 @@
 
 namespace pcf {
 
+namespace {
+
+// The status line, part by part in its order: a parameter of the table (kernel/settings.h
+// PARAMS: its value as the table writes it, numbers as the trace prints them) or a lesson's own
+// setting (`text`), the words before it, and when it shows: the settings use it (a kernel size
+// under a method that has one, a bias mode's own parameters) and its value is not `quiet` (box
+// weights and exact precision go without saying). `bare`: the words alone (" rotated").
+struct StatusPart {
+    std::string_view key;
+    std::string_view before;
+    bool (*shows)(const LessonSettings& s) = nullptr;  // nullptr: always
+    std::string_view quiet = "";
+    bool bare = false;
+    std::string (*text)(const LessonSettings& s) = nullptr;  // the value, when not a parameter
+};
+
+bool usesKernel(const LessonSettings& s) { return methodInfo(s.method).usesKernel; }
+bool usesRadius(const LessonSettings& s) { return methodInfo(s.method).usesRadius; }
+bool anyBias(const LessonSettings& s) { return s.bias != BiasMode::None; }
+template <BiasMode MODE>
+bool biasIs(const LessonSettings& s) {
+    return s.bias == MODE;
+}
+bool gridMoved(const LessonSettings& s) { return s.originShift != 0.0f || s.snap; }
+std::string gridText(const LessonSettings& s) {
+    return formatNumber(s.originShift) + " texel" + (s.snap ? " snapped" : "");
+}
+
+const StatusPart STATUS_PARTS[] = {
+    {"method", ""},
+    {"kernel", " N=", usesKernel},
+    {"weights", " ", nullptr, "box"},
+    {"radius", " R=", usesRadius},
+    {"rotate", " rotated", usesRadius, "false", true},
+    {"bias", "   bias "},
+    {"constant_bias", " ", anyBias},
+    {"slope_bias", " +", biasIs<BiasMode::Slope>},
+    {"slope_max", "tan<=", biasIs<BiasMode::Slope>},
+    {"normal_offset", " k=", biasIs<BiasMode::Normal>},
+    {"soft_scale", " x", biasIs<BiasMode::Soft>},
+    {"rpdb_max", " dz<=", biasIs<BiasMode::ReceiverPlane>},
+    {"cull", "   cull "},
+    {"map_size", "   map "},
+    {"depth_format", " "},
+    {"origin_shift", "   grid +", gridMoved, "", false, gridText},
+    {"precision", "   ", nullptr, "exact"},
+};
+
+std::string statusValue(const StatusPart& part, const LessonSettings& s) {
+    if (part.text) return part.text(s);
+    const ParamInfo* p = findParam(part.key);
+    if (!p) throw std::logic_error("status line: no parameter '" + std::string(part.key) + "'");
+    if (const auto* field = std::get_if<float ShadowSettings::*>(&p->field)) {
+        return formatNumber(s.*(*field));
+    }
+    return settingText(*p, s);
+}
+
+}  // namespace
+
 std::string settingsSummary(const LessonSettings& s) {
-    const MethodInfo& info = methodInfo(s.method);
-    // A stream: GCC 12 warns falsely (-Wrestrict) on chains of string operator+.
-    std::ostringstream line;
-    line << info.name;
-    if (info.usesKernel) line << " N=" << s.kernel;
-    if (s.weights != PCF_WEIGHTS_BOX) line << " " << weightsName(s.weights);
-    if (info.usesRadius) line << " R=" << formatNumber(s.radius) << (s.rotate ? " rotated" : "");
-    line << "   bias " << biasModeName(s.bias);
-    if (s.bias != BiasMode::None) line << " " << formatNumber(s.constantBias);
-    if (s.bias == BiasMode::Slope) {
-        line << " +" << formatNumber(s.slopeBias) << "tan<=" << formatNumber(s.slopeMax);
+    std::string line;
+    for (const StatusPart& part : STATUS_PARTS) {
+        if (part.shows && !part.shows(s)) continue;
+        std::string value = statusValue(part, s);
+        if (value == part.quiet) continue;
+        line += std::string(part.before) + (part.bare ? "" : value);
     }
-    if (s.bias == BiasMode::Normal) line << " k=" << formatNumber(s.normalOffset);
-    if (s.bias == BiasMode::Soft) line << " x" << formatNumber(s.softScale);
-    if (s.bias == BiasMode::ReceiverPlane) line << " dz<=" << formatNumber(s.rpdbMax);
-    line << "   cull " << cullModeName(s.cull) << "   map " << s.mapSize << " "
-         << depthFormatName(s.depthFormat);
-    if (s.originShift != 0.0f || s.snap) {
-        line << "   grid +" << formatNumber(s.originShift) << " texel"
-             << (s.snap ? " snapped" : "");
-    }
-    if (s.precision == PCF_PRECISION_HW8) line << "   hw8";
-    return line.str();
+    return line;
 }
 
 std::string wordsForLiveState(const LessonStep& step, const LessonSettings& live,

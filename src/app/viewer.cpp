@@ -19,6 +19,7 @@
 #include "app/output_files.h"
 #include "app/render_options.h"
 #include "app/session.h"
+#include "app/viewer_split.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "lesson/lesson_keys.h"
@@ -59,10 +60,17 @@ class Viewer {
 
     void press(KeyPress k) {
         bool shift = (k.mods & GLFW_MOD_SHIFT) != 0;
-        if (pressNavigation(k.key, shift)) return;
-        if (pressSetting(k.key, shift)) return;
+        if (mSplit.press(mSession, k.key)) return;
+        if (pressNavigation(k.key, shift) || pressSetting(k.key, shift)) {
+            mSplit.follow(mSession);
+            return;
+        }
         pressView(k.key);
+        mSplit.follow(mSession);
     }
+
+    // The split view (C) and the magnifier (Z): viewer_split.h.
+    ViewerSplit& split() { return mSplit; }
 
     void click(glm::dvec2 cursor) {
         // Cursor in screen coordinates; the frame is in framebuffer pixels (HiDPI).
@@ -73,6 +81,7 @@ class Viewer {
         glm::vec2 p(cursor.x * fb.x / ww, cursor.y * fb.y / wh);
         // A chart step's chart covers the scene: a click on it picks nothing.
         if (!mSession.clickFrame(p)) return;
+        mSplit.follow(mSession);
         // The scene point the click pinned, as a lesson's `point` key takes it (lesson.h).
         if (const std::optional<ScenePoint>& q = mSession.point()) {
             std::printf("pixel (%d, %d): point = [%.4f, %.4f, %.4f]\n", mSession.pixel().x,
@@ -248,6 +257,7 @@ class Viewer {
 
     GlfwWindowContext& mWindow;
     Session mSession;
+    ViewerSplit mSplit;
     std::vector<std::string> mLessons;
     int mLessonIndex = -1;
     bool mQuit = false;
@@ -292,17 +302,6 @@ class InputBinding {
   private:
     GLFWwindow* mWindow;
 };
-
-// The offscreen frame (just composed for a screenshot) into the window.
-void present(Session& session, GlfwWindowContext& window) {
-    glm::ivec2 fb = window.framebufferSize();
-    glm::ivec2 frame = session.frameSize();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fb.x, fb.y);
-    glBlitNamedFramebuffer(session.frameFramebuffer(), 0, 0, 0, frame.x, frame.y, 0, 0, frame.x,
-                           frame.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    window.swapBuffers();
-}
 
 // A frame for the window: composed straight into its back buffer (Session::composeInto says why
 // not through the offscreen frame), at the window's size.
@@ -421,8 +420,9 @@ void benchFrames(Session& session, GlfwWindowContext& window, int frames) {
 }
 
 // --screenshot: the frame after the keys, written to `path` (staged in `outputs`).
-void writeScreenshot(Session& session, GlfwWindowContext& window, const std::string& path,
+void writeScreenshot(Viewer& viewer, GlfwWindowContext& window, const std::string& path,
                      OutputFiles& outputs) {
+    Session& session = viewer.session();
     // Keys such as F change the window: let it settle, then compose at its size.
     for (int k = 0; k < 10; ++k) {
         glfwPollEvents();
@@ -431,11 +431,11 @@ void writeScreenshot(Session& session, GlfwWindowContext& window, const std::str
     }
     glfwPollEvents();
     session.setFrameSize(window.framebufferSize());
-    session.compose();
     glm::ivec2 size = session.frameSize();
-    writePngRgba8(path, size.x, size.y, session.readFrame());
+    writePngRgba8(path, size.x, size.y, viewer.split().readFrame(session));
     outputs.commit();
-    present(session, window);
+    viewer.split().composeInto(session, 0, size);
+    window.swapBuffers();
 }
 
 // The class: a frame whenever something happens (or every 0.25 s), until Esc or the window
@@ -444,7 +444,7 @@ void runInteractive(Viewer& viewer, GlfwWindowContext& window) {
     Session& session = viewer.session();
     while (!glfwWindowShouldClose(window.window()) && !viewer.quit()) {
         auto start = std::chrono::steady_clock::now();
-        composeToWindow(session, window);
+        viewer.split().composeInto(session, 0, window.framebufferSize());
         glFinish();
         double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -486,7 +486,7 @@ int runViewer(const ViewerOptions& o) {
     if (o.benchFrames > 0) {
         benchFrames(viewer.session(), *window, o.benchFrames);
     } else if (!o.screenshot.empty()) {
-        writeScreenshot(viewer.session(), *window, o.screenshot, outputs);
+        writeScreenshot(viewer, *window, o.screenshot, outputs);
     } else {
         runInteractive(viewer, *window);
     }

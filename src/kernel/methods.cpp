@@ -1,11 +1,11 @@
 #include "kernel/methods.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
-#include "kernel/settings.h"
 #include "kernel/sigma_limits.h"
 
 namespace pcf {
@@ -186,7 +186,16 @@ FetchCounts fetchCounts(int method, int kernel) {
 }
 
 PcfParams makeParams(int method, int kernel, float radius, vec2 rotation) {
-    return PcfParams{method, kernel, radius, rotation, PCF_WEIGHTS_BOX, 1.0f, 0.0f};
+    // Member by member: a parameter added to PcfParams starts at zero here without an edit, and
+    // ShadowSettings::pcfParams sets it from the settings (kernel/settings.cpp).
+    PcfParams p{};
+    p.method = method;
+    p.kernel = kernel;
+    p.radius = radius;
+    p.rotation = rotation;
+    p.weights = PCF_WEIGHTS_BOX;
+    p.sigma = 1.0f;
+    return p;
 }
 
 std::optional<int> weightsFromName(std::string_view name) {
@@ -256,6 +265,52 @@ std::optional<ParamProblem> checkParams(const PcfParams& prm) {
 std::optional<std::string> validateParams(const PcfParams& prm) {
     if (auto p = checkParams(prm)) return p->text();
     return std::nullopt;
+}
+
+namespace {
+
+// The sizes `method` takes when they are not all of MIN_KERNEL..MAX_KERNEL (tent's), or empty.
+std::span<const int> listedSizes(int method) {
+    if (method < 0 || method >= PCF_METHOD_COUNT) return {};
+    return methodInfo(method).kernelSizes;
+}
+
+}  // namespace
+
+bool kernelFits(int method, int n) {
+    std::span<const int> sizes = listedSizes(method);
+    if (!sizes.empty()) return std::ranges::find(sizes, n) != sizes.end();
+    if (method < 0 || method >= PCF_METHOD_COUNT || !methodInfo(method).usesKernel) return true;
+    return n >= MIN_KERNEL && n <= MAX_KERNEL;
+}
+
+std::string kernelSizesText(int method) {
+    std::span<const int> sizes = listedSizes(method);
+    if (sizes.empty()) return std::to_string(MIN_KERNEL) + ".." + std::to_string(MAX_KERNEL);
+    std::string text;
+    for (size_t k = 0; k < sizes.size(); ++k) {
+        if (k > 0) text += k + 1 == sizes.size() ? " or " : ", ";
+        text += std::to_string(sizes[k]);
+    }
+    return text;
+}
+
+int fitKernel(int method, int n) {
+    if (kernelFits(method, n)) return n;
+    std::span<const int> sizes = listedSizes(method);
+    return sizes.empty() ? std::clamp(n, MIN_KERNEL, MAX_KERNEL) : sizes.front();
+}
+
+int stepKernel(int method, int n, int direction) {
+    if (!kernelFits(method, n)) return fitKernel(method, n);
+    std::span<const int> sizes = listedSizes(method);
+    if (!sizes.empty()) {
+        auto at = std::ranges::find(sizes, n);
+        std::ptrdiff_t k =
+            std::clamp<std::ptrdiff_t>((at - sizes.begin()) + direction, 0, std::ssize(sizes) - 1);
+        return sizes[static_cast<size_t>(k)];
+    }
+    return std::clamp(n + direction, MIN_KERNEL, MAX_KERNEL);
 }
 
 }  // namespace pcf

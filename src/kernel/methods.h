@@ -1,5 +1,5 @@
-// methods.h: the PCF methods by name (the command line's ids), what each reads, and the
-// checks on their parameters.
+// methods.h: the PCF methods by name (the command line's ids), what each reads, the kernel sizes
+// each takes, and the checks on their parameters.
 #pragma once
 
 #include <optional>
@@ -90,5 +90,16 @@ struct ParamProblem {
 std::optional<ParamProblem> checkParams(const PcfParams& prm);
 // checkParams's sentence in the kernel's words, or nullopt when the parameters are valid.
 std::optional<std::string> validateParams(const PcfParams& prm);
+
+// Whether `method` can take kernel size n: MIN_KERNEL..MAX_KERNEL, and for tent 3, 5 or 7 (its
+// 4, 9 or 16 hardware taps). Methods without a kernel take any n (they ignore it).
+bool kernelFits(int method, int n);
+// The kernel sizes `method` takes, in words: "1..8", or "3, 5 or 7" for tent.
+std::string kernelSizesText(int method);
+// The next kernel size `method` takes after n, going up (direction 1) or down (-1), staying
+// at the end of the range; a size the method cannot take becomes its smallest.
+int stepKernel(int method, int n, int direction);
+// n if the method takes it, else its smallest size (a method change keeps N when it can).
+int fitKernel(int method, int n);
 
 }  // namespace pcf

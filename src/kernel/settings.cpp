@@ -84,51 +84,9 @@ std::string numberText(double v) {
     return s.str();
 }
 
-// The sizes `method` takes when they are not all of MIN_KERNEL..MAX_KERNEL (tent's), or empty.
-std::span<const int> listedSizes(int method) {
-    if (method < 0 || method >= PCF_METHOD_COUNT) return {};
-    return methodInfo(method).kernelSizes;
-}
-
 }  // namespace
 
-bool kernelFits(int method, int n) {
-    std::span<const int> sizes = listedSizes(method);
-    if (!sizes.empty()) return std::ranges::find(sizes, n) != sizes.end();
-    if (method < 0 || method >= PCF_METHOD_COUNT || !methodInfo(method).usesKernel) return true;
-    return n >= MIN_KERNEL && n <= MAX_KERNEL;
-}
-
-std::string kernelSizesText(int method) {
-    std::span<const int> sizes = listedSizes(method);
-    if (sizes.empty()) return std::to_string(MIN_KERNEL) + ".." + std::to_string(MAX_KERNEL);
-    std::string text;
-    for (size_t k = 0; k < sizes.size(); ++k) {
-        if (k > 0) text += k + 1 == sizes.size() ? " or " : ", ";
-        text += std::to_string(sizes[k]);
-    }
-    return text;
-}
-
-int fitKernel(int method, int n) {
-    if (kernelFits(method, n)) return n;
-    std::span<const int> sizes = listedSizes(method);
-    return sizes.empty() ? std::clamp(n, MIN_KERNEL, MAX_KERNEL) : sizes.front();
-}
-
-int stepKernel(int method, int n, int direction) {
-    if (!kernelFits(method, n)) return fitKernel(method, n);
-    std::span<const int> sizes = listedSizes(method);
-    if (!sizes.empty()) {
-        auto at = std::ranges::find(sizes, n);
-        std::ptrdiff_t k =
-            std::clamp<std::ptrdiff_t>((at - sizes.begin()) + direction, 0, std::ssize(sizes) - 1);
-        return sizes[static_cast<size_t>(k)];
-    }
-    return std::clamp(n + direction, MIN_KERNEL, MAX_KERNEL);
-}
-
-PcfParams ShadowSettings::pcfParams(vec2 rotation, float penumbraScale) const {
+PcfParams ShadowSettings::pcfParams(vec2 rotation) const {
     PcfParams p = makeParams(method, kernel, radius, rotation);
     p.penumbraScale = penumbraScale;
     p.weights = weights;

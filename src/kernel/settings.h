@@ -2,9 +2,9 @@
 // trace and lesson step is made with (ShadowSettings), the table of its parameters (PARAMS:
 // key, flag, uniform, unit, range, help), and the vocabulary the command line, lesson files and
 // renderer parse and check through. Methods, their kernel sizes, weights and precision are in
-// methods.h, bias modes in bias.h; both come with this header. Here: the depth formats,
-// culling, the bias modes as an enum, the map-size range and the kernel-size rule, with
-// names <-> enums.
+// methods.h (with the kernel-size rule), bias modes in bias.h; both come with this header. Here:
+// the depth formats, culling, the bias modes as an enum and the map-size range, with names <->
+// enums.
 #pragma once
 
 #include <optional>
@@ -31,17 +31,6 @@ constexpr int MAX_MAP_SIZE = 4096;
 constexpr float MAX_LIGHT_SIZE_DEG = 10.0f;
 // The largest frame side (window, export, chart) in pixels.
 constexpr int MAX_FRAME_SIDE = 8192;
-
-// Whether `method` can take kernel size n: MIN_KERNEL..MAX_KERNEL, and for tent 3, 5 or 7 (its
-// 4, 9 or 16 hardware taps). Methods without a kernel take any n (they ignore it).
-bool kernelFits(int method, int n);
-// The kernel sizes `method` takes, in words: "1..8", or "3, 5 or 7" for tent.
-std::string kernelSizesText(int method);
-// The next kernel size `method` takes after n, going up (direction 1) or down (-1), staying
-// at the end of the range; a size the method cannot take becomes its smallest.
-int stepKernel(int method, int n, int direction);
-// n if the method takes it, else its smallest size (a method change keeps N when it can).
-int fitKernel(int method, int n);
 
 std::string_view depthFormatName(DepthFormat format);                   // "16", "24", "32f"
 std::optional<DepthFormat> depthFormatFromName(std::string_view name);  // also "32", "32F"

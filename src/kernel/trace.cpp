@@ -2,8 +2,6 @@
 // text in trace_json.cpp.
 #include "kernel/trace.h"
 
-#include "kernel/trace_explain.h"
-
 namespace pcf {
 
 float WeightGrid::at(ivec2 texel) const {
@@ -128,7 +126,6 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
         case Method::Poisson:
             break;
     }
-    tr.steps = explainTrace(tr);
     return tr;
 }
 

@@ -80,7 +80,6 @@ struct Trace {
     // when none blocks and they alone give the visibility, 1), the rest the filter's. Zero
     // otherwise.
     PcfPcssEstimate pcss{0.0f, 0, 0.0f, 0.0f, 0.0f};
-    std::vector<TraceStep> steps;
     // The texture unit's precision (issue 10): the lookup's sub-texel fraction as a float and
     // rounded to 1/256 texel (hw8), and the visibility the kernel gives under each model.
     bool usesTextureUnit = false;  // the method issues hardware taps or gathers
@@ -90,9 +89,8 @@ struct Trace {
     bool fixedPoint = false;  // the map is 16/24-bit: D_ref clamped to [0,1]
 };
 
-// Runs the kernel at (uv, ref) with recording on and explains it step by step (explainTrace in
-// trace_explain.h fills `steps`). z is the
-// receiver's depth before bias (shown to the student; the kernel only sees ref).
+// Runs the kernel at (uv, ref) with recording on (trace_explain.h: explainTrace puts it in words).
+// z is the receiver's depth before bias (shown to the student; the kernel only sees ref).
 // Without a mode: bias "none" when ref == z, else "constant" with b = z - ref.
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm);
 // Under a bias mode: ref is the lookup's ref with the per-lookup bias applied (for normal offset,

@@ -102,7 +102,7 @@ Json traceJson(const Trace& tr) {
     Json weights = Json::array();
     for (float w : tr.weights.values) weights.push_back(jsonNumber(w));
     Json steps = Json::array();
-    for (const TraceStep& s : tr.steps) {
+    for (const TraceStep& s : explainTrace(tr)) {
         steps.push_back({{"kind", stepKindName(s.kind)}, {"title", s.title}, {"text", s.text}});
     }
     Json j = {{"method", methodInfo(tr.params.method).name},
@@ -159,9 +159,10 @@ std::string traceToText(const Trace& tr) {
     if (info.usesKernel) s << ", N = " << tr.params.kernel;
     if (info.usesRadius) s << ", radius " << num(tr.params.radius) << " texels";
     s << "  (" << info.summary << ")\n\n";
-    for (size_t k = 0; k < tr.steps.size(); ++k) {
-        s << k + 1 << ". " << tr.steps[k].title << "\n   ";
-        for (char c : tr.steps[k].text) {
+    std::vector<TraceStep> steps = explainTrace(tr);
+    for (size_t k = 0; k < steps.size(); ++k) {
+        s << k + 1 << ". " << steps[k].title << "\n   ";
+        for (char c : steps[k].text) {
             s << c;
             if (c == '\n') s << "   ";
         }

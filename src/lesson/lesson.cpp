@@ -118,7 +118,7 @@ class LessonParser {
             std::string what = "step " + std::to_string(i + 1);
             checkKeys(table, what,
                       {"title", "text", "chart", "chart_highlight", "highlight", "claims", "keys",
-                       "focus"});
+                       "focus", "compare"});
             applySettings(table, what, state, lines);
             lesson.steps.push_back(readStep(table, what, state, lines));
             // The step's own focus, else the lesson's (checked by the app: overlay/inspector.h).
@@ -165,6 +165,7 @@ class LessonParser {
         step.settings = state;
         checkState(table, what, state, lines);
         checkText(*table.get("text"), what, step);
+        readCompare(table, what, step);
         return step;
     }
 
@@ -241,6 +242,50 @@ class LessonParser {
             step.keys.push_back(key);
             step.keysLine = lineOf(*node);
         }
+    }
+
+    // compare = { key = [values, one per part], ... }: each value checked on the step's settings
+    // (compare_spec.h: comparePart), a problem blamed on the compare table's line.
+    void readCompare(const toml::table& table, const std::string& what, LessonStep& step) const {
+        const toml::node* node = table.get("compare");
+        if (!node) return;
+        const toml::table* keys = node->as_table();
+        if (!keys || keys->empty()) {
+            fail(*node, what +
+                            " compare must be a table of arrays, e.g. compare = { bias = "
+                            "[\"none\", \"constant\", \"slope\"] }");
+        }
+        try {
+            for (auto&& [key, values] : *keys) {
+                const toml::array* array = values.as_array();
+                if (!array)
+                    fail(values, what + " compare " + std::string(key.str()) +
+                                     " must be an array, one value per part");
+                std::vector<std::string> texts;
+                for (const toml::node& v : *array) texts.push_back(valueText(v));
+                addCompareKey(step.compare, std::string(key.str()), std::move(texts));
+            }
+            for (int part = 0; part < step.compare.parts(); ++part) {
+                comparePart(step.settings, step.compare, part);
+            }
+        } catch (const std::invalid_argument& e) {
+            fail(*node, what + " " + e.what());
+        }
+        step.compareLine = lineOf(*node);
+    }
+
+    // A TOML value as the parameter table's text reader takes it ("none", "3", "0.002", "true").
+    static std::string valueText(const toml::node& v) {
+        if (const auto* s = v.as_string()) return s->get();
+        if (const auto* b = v.as_boolean()) return b->get() ? "true" : "false";
+        if (const auto* i = v.as_integer()) return std::to_string(i->get());
+        if (const auto* f = v.as_floating_point()) {
+            std::ostringstream s;
+            s.precision(9);
+            s << f->get();
+            return s.str();
+        }
+        return "(" + typeName(v) + ")";
     }
 
   private:
@@ -327,15 +372,21 @@ class LessonParser {
                                      "; a lesson's own scene is given by top-level [camera], "
                                      "[light] and [[object]] tables");
             }
-            if (hasTables) {
-                fail(*sceneNode,
-                     "lesson gives both scene = \"" + name->get() +
-                         "\" and scene tables ([camera], [light], [[object]]): keep one");
+            // A [camera] alone beside a preset views the preset from there (lesson 8 looks
+            // closer, so that its acne stripes are texels several pixels wide, not a moire).
+            if (root.contains("light") || root.contains("object")) {
+                fail(*sceneNode, "lesson gives both scene = \"" + name->get() +
+                                     "\" and scene tables ([light], [[object]]): keep one");
             }
             std::optional<Scene> scene = presetScene(name->get());
             if (!scene) {
                 fail(*sceneNode, "unknown scene preset '" + name->get() +
                                      "' (known: " + joinNames(presetNames()) + ")");
+            }
+            if (const toml::node* camera = root.get("camera")) {
+                const toml::table* table = camera->as_table();
+                if (!table) fail(*camera, "camera must be a table, got " + typeName(*camera));
+                scene->camera = parseCameraToml(*table, mSource, *scene);
             }
             return *scene;
         }

@@ -9,7 +9,8 @@
 //   title = "The bilinear lerp"       required, the lesson's title
 //   scene = "box-on-plane"            a preset name (scene/presets.h), OR the scene's own
 //                                     [camera], [light] and [[object]] tables at the top level
-//                                     (scene/scene_file.h), never both
+//                                     (scene/scene_file.h), never both; a preset with a
+//                                     [camera] table alone: the preset seen from that camera
 //
 //   [settings]                        optional: the state before the first step. Every key is
 //                                     optional. The shadow settings' keys, their types, ranges
@@ -53,6 +54,11 @@
 //   keys = ["O"]                      viewer keys the words invite: the claims must hold after
 //                                     each too (lesson_keys.h names them); after any other key
 //                                     a failing claim withholds the words in the viewer
+//   compare = { bias = ["none", "constant", "slope"] }
+//                                     the split view the viewer's C key and `export` show: 2
+//                                     or 3 parts, each this step with those parameter-table
+//                                     keys set (compare_spec.h); several keys take one value
+//                                     per part each. Not inherited
 //   method = "hw2x2"                  any [settings] key: it changes the state from this step
 //                                     on; the steps after it inherit it
 //
@@ -80,6 +86,7 @@
 #include "kernel/bias.h"
 #include "kernel/pcf.h"
 #include "kernel/settings.h"
+#include "lesson/compare_spec.h"
 #include "scene/scene.h"
 
 namespace pcf {
@@ -147,6 +154,11 @@ struct LessonStep {
     // (app/session.h: stepFocus).
     std::string focus;
     int focusLine = 0;
+    // `compare = { bias = ["none", "constant", "slope"] }`: the split view this step offers (the
+    // viewer's C key, `export`): 2 or 3 parts, each the step with those parameters set
+    // (compare_spec.h). Checked against the step's settings. Not inherited.
+    CompareSpec compare;
+    int compareLine = 0;
 };
 
 // What a lesson may hold; more is refused with one line naming the limit. The lessons that ship

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "kernel/trace.h"
+#include "lesson/lesson.h"
 #include "lesson/lesson_text.h"
 
 namespace pcf {

@@ -127,4 +127,20 @@ PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWor
     return out;
 }
 
+StepContext makeStepContext(const LessonStep& step, glm::ivec2 pixel) {
+    return makeStepContext(step.settings, pixel, -1.0f);
+}
+
+StepContext makeStepContext(const LessonSettings& s, glm::ivec2 pixel, float lightAngleDeg) {
+    StepContext ctx;
+    ctx.pixel = pixel;
+    ctx.originShift = s.originShift;
+    ctx.bias = s.bias;
+    ctx.constantBias = s.constantBias;
+    ctx.cull = s.cull;
+    ctx.depthFormat = s.depthFormat;
+    ctx.lightAngleDeg = lightAngleDeg;
+    return ctx;
+}
+
 }  // namespace pcf

@@ -12,6 +12,7 @@
 
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
+#include "lesson/lesson_text.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
@@ -71,5 +72,12 @@ float lightAngleDeg(const Scene& scene, const ScenePoint& point);
 // camera pass (the pixel shows this very lookup: SceneRenderer::setPick).
 Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
                   const LessonSettings& s, const ScenePoint& point);
+
+// The context of a step: its state, and the pixel that shows its point in the frame rendered
+// (framePick).
+StepContext makeStepContext(const LessonStep& step, glm::ivec2 pixel = glm::ivec2(0));
+// The context of settings `s` (a step's, or the live state after keys) at `pixel`, the point's
+// angle to the light `lightAngleDeg` (negative: not known).
+StepContext makeStepContext(const LessonSettings& s, glm::ivec2 pixel, float lightAngleDeg);
 
 }  // namespace pcf

@@ -406,22 +406,6 @@ std::optional<PlaceholderProblem> scan(std::string_view text, OnLiteral onLitera
 
 }  // namespace
 
-StepContext makeStepContext(const LessonStep& step, glm::ivec2 pixel) {
-    return makeStepContext(step.settings, pixel, -1.0f);
-}
-
-StepContext makeStepContext(const LessonSettings& s, glm::ivec2 pixel, float lightAngleDeg) {
-    StepContext ctx;
-    ctx.pixel = pixel;
-    ctx.originShift = s.originShift;
-    ctx.bias = s.bias;
-    ctx.constantBias = s.constantBias;
-    ctx.cull = s.cull;
-    ctx.depthFormat = s.depthFormat;
-    ctx.lightAngleDeg = lightAngleDeg;
-    return ctx;
-}
-
 std::vector<std::string> placeholderNames() {
     std::vector<std::string> names;
     for (const Simple& s : simpleNames()) names.emplace_back(s.name);

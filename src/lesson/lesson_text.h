@@ -72,8 +72,8 @@
 #include <string_view>
 #include <vector>
 
+#include "kernel/settings.h"
 #include "kernel/trace_explain.h"
-#include "lesson/lesson.h"
 
 namespace pcf {
 
@@ -89,13 +89,6 @@ struct StepContext {
     float lightAngleDeg = -1.0f;
     float originShift = 0.0f;  // the map's texel grid slid by this many texels (origin_shift)
 };
-
-// The context of a step: its state, and the pixel that shows its point in the frame rendered
-// (lesson_pick.h: framePick).
-StepContext makeStepContext(const LessonStep& step, glm::ivec2 pixel = glm::ivec2(0));
-// The context of settings `s` (a step's, or the live state after keys) at `pixel`, the point's
-// angle to the light `lightAngleDeg` (lesson_pick.h; negative: not known).
-StepContext makeStepContext(const LessonSettings& s, glm::ivec2 pixel, float lightAngleDeg);
 
 // Every placeholder name, indexed ones written with K, I and J ("tap[K].depth", "weight[I,J]").
 std::vector<std::string> placeholderNames();

@@ -131,6 +131,10 @@ struct FramePlan {
     std::vector<glm::ivec2> drawnTexels;
     std::vector<int> drawnFetches;
     bool formulaWhole = false;
+    // The read texels whose numbers (bit, own ref, depth, weight) this page draws whole: in their
+    // cell, or as a row of the texel table (the page after the cells when a cell had to drop
+    // some of its numbers at this size).
+    std::vector<glm::ivec2> numberedTexels;
 };
 FramePlan planFrame(const InspectorLayout& layout, const InspectorModel& model);
 void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& ops);

@@ -6,9 +6,9 @@ namespace pcf {
 
 const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
     static const std::vector<std::pair<std::string, std::string>> keys = {
-        {"click", "pick a pixel"},
-        {"Up / Down", "move the pixel one row"},
-        {"Shift+arrows", "move the pixel one pixel"},
+        {"click", "pin the scene point under the cursor"},
+        {"Up / Down", "pin the point one pixel row up / down"},
+        {"Shift+arrows", "pin the point one pixel over"},
         {"Space, Right", "next page of the text, then next step"},
         {"Left, Backspace", "previous step"},
         {"Home / End", "first / last step"},
@@ -20,6 +20,8 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"G", "texel grid on the scene on / off"},
         {"A", "aliasing heat map (pixels per texel)"},
         {"O / Shift+O, S", "slide the map's grid 1/8 texel; snap"},
+        {"C", "split view: the step's compare, or this method and nearest"},
+        {"Z", "magnifier: a close-up on the point, a texel many pixels wide"},
         {"L / Shift+L", "next / previous lesson"},
         {"E", "export this frame (PNG + JSON)"},
         {"P", "presentation mode"},

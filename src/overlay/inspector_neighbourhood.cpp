@@ -646,6 +646,7 @@ bool planCell(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm
             if (!done.empty()) break;
         }
     }
+    if (tap && done.size() == all.size()) pl.plan.numberedTexels.push_back(texel);
     for (const auto& [box, it] : done) {
         pl.text({box.x + box.w * 0.5f, box.y}, it->text,
                 {FontFace::Mono, it->size, ink, TextAlign::Center}, BoxKind::Number, "inspector",

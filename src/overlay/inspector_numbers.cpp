@@ -2,6 +2,7 @@
 // visibility, fetch counts, uv, ref, bias), the notes on what the cells leave out, the legend of
 // the marks drawn, and the formula with its numbers from the kernel's own explanation.
 #include "kernel/methods.h"
+#include "kernel/trace_explain.h"
 #include "overlay/inspector_plan.h"
 
 namespace pcf::inspector_detail {
@@ -51,9 +52,10 @@ namespace {
 
 std::string formulaText(const Trace& tr) {
     std::string out;
-    for (size_t k = 0; k < tr.steps.size(); ++k) {
-        const TraceStep& s = tr.steps[k];
-        bool last = k + 1 == tr.steps.size();
+    std::vector<TraceStep> steps = explainTrace(tr);
+    for (size_t k = 0; k < steps.size(); ++k) {
+        const TraceStep& s = steps[k];
+        bool last = k + 1 == steps.size();
         if (last || s.kind == TraceStepKind::Lerp) {
             if (!out.empty()) out += "\n";
             out += s.text;
@@ -258,7 +260,11 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     float formulaTop = p.y + margin + layout.header.height + t.label * 0.5f;
     Rect alone{p.x + margin, formulaTop, width, p.bottom() - margin - formulaTop};
     FittedText formulaAlone = fitFormula(tr, t, alone);
-    int parts = panel.together ? 1 : 1 + formulaAlone.pages;
+    // The parts: the cells (with the formula when it fits under them), the texel table's pages
+    // when some cells could not hold their numbers, the formula's pages when it did not fit.
+    const std::vector<glm::ivec2>& table = panel.tableTexels;
+    int tableParts = table.empty() ? 0 : texelTablePages(l, t, table.size(), formulaTop);
+    int parts = 1 + tableParts + (panel.together ? 0 : formulaAlone.pages);
     pl.plan.textPages = std::max(pl.plan.textPages, parts);
     int part = std::min(std::max(0, m.textPage), parts - 1);
     if (part == 0) {
@@ -267,16 +273,33 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
         pl.plan.boxes.insert(pl.plan.boxes.end(), cells.boxes.begin(), cells.boxes.end());
         pl.plan.drawnTexels = cells.drawnTexels;
         pl.plan.drawnFetches = cells.drawnFetches;
+        pl.plan.numberedTexels = cells.numberedTexels;
         Rect under{p.x + margin, panel.cellsBottom, width, p.bottom() - margin - panel.cellsBottom};
+        float noteY = panel.cellsBottom;
         if (panel.together) {
             placeFormula(pl, fitFormula(tr, t, under), under, 0);
-        } else {
-            planNextPageNote(pl, l, t, margin, panel.cellsBottom, "the formula, every term");
+            noteY = pl.plan.boxes.back().rect.bottom() + t.label * 0.5f;
+        }
+        // Where the rest is; under a formula only where there is room left for the line.
+        bool room = noteY + lineHeightOf(t.label) <= p.bottom() - margin;
+        if (tableParts > 0 && room) {
+            planNextPageNote(pl, l, t, margin, noteY, "every texel's numbers");
+        } else if (!panel.together) {
+            planNextPageNote(pl, l, t, margin, noteY, "the formula, every term");
         }
         return;
     }
-    placeFormula(pl, formulaAlone, alone, part - 1);
-    if (part < parts - 1) {
+    if (part <= tableParts) {
+        float end = planTexelTable(pl, l, m, t, table, formulaTop, part - 1);
+        if (part < parts - 1) {
+            planNextPageNote(pl, l, t, margin, end + t.label * 0.5f,
+                             part < tableParts ? "more texels" : "the formula, every term");
+        }
+        return;
+    }
+    int formulaPage = part - tableParts - 1;
+    placeFormula(pl, formulaAlone, alone, formulaPage);
+    if (formulaPage < formulaAlone.pages - 1) {
         float end = pl.plan.boxes.back().rect.bottom() + t.label * 0.5f;
         planNextPageNote(pl, l, t, margin, end, "the rest of the formula");
     }
@@ -307,9 +330,13 @@ InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m,
         Rect under{p.x + margin, out.cellsBottom, width, p.bottom() - margin - out.cellsBottom};
         return under.h >= lineHeightOf(t.numberFloor) && fitFormula(tr, t, under).pages == 1;
     };
+    auto finish = [&]() {
+        out.tableTexels = texelsWithoutNumbers(tr, out.cells);
+        return out;
+    };
     planCellsPage(panelLayout(l, tr, t, m.highlightFetch));
     out.together = formulaFits();
-    if (out.together) return out;
+    if (out.together) return finish();
     // Cells a little smaller, the formula's own height kept under them, as long as every cell
     // keeps its numbers (a 2 x 2 has room to spare).
     FittedText whole = fitFormula(tr, t, {0, 0, width, 1e6f});
@@ -318,7 +345,7 @@ InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m,
     planCellsPage(panelLayout(l, tr, t, m.highlightFetch, formulaH + legendH));
     out.together = hidden == 0 && formulaFits();
     if (!out.together) planCellsPage(panelLayout(l, tr, t, m.highlightFetch, legendH));
-    return out;
+    return finish();
 }
 
 }  // namespace pcf::inspector_detail

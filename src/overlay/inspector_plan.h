@@ -200,6 +200,9 @@ struct InspectorPanel {
     FramePlan cells;
     float cellsBottom = 0.0f;
     bool together = true;
+    // The read texels whose cells could not hold all their numbers: the texel table lists them
+    // on the page(s) after the cells (inspector_table.cpp).
+    std::vector<glm::ivec2> tableTexels;
 };
 InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
                               bool onTop = false);
@@ -230,6 +233,19 @@ void planDisks(Planner& pl, const Trace& tr, const Rect& area, glm::vec2 point, 
 // numbers the marks left no room for.
 void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const Grid& g,
                const TypeSizes& t, LegendNeeds& legend, int& hiddenCells);
+
+// ---- inspector_table.cpp: the texel table. ----
+
+// The read texels (each once, row by row) whose numbers `cells` did not draw whole.
+std::vector<glm::ivec2> texelsWithoutNumbers(const Trace& tr, const FramePlan& cells);
+// The texel table: one row per texel of `texels` with the numbers its cell shows at a size
+// where they fit (bit, own ref, depth, weight) and depth - ref, under a column header, in the
+// inspector panel from `top` down. texelTablePages: the pages it takes; planTexelTable: page
+// `page` of it (it lists the rows it draws in numberedTexels); returns the y under its last row.
+int texelTablePages(const InspectorLayout& l, const TypeSizes& t, size_t rows, float top);
+float planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top,
+                     int page);
 
 // ---- inspector_subtexel.cpp: the hw8 inset. ----
 

@@ -459,6 +459,13 @@ Scene parseSceneToml(const toml::table& table, const std::string& sourceName) {
     return scene;
 }
 
+Camera parseCameraToml(const toml::table& cameraTable, const std::string& sourceName,
+                       const Scene& scene) {
+    Camera camera = readCamera(sourceName, cameraTable);
+    fitCameraPlanes(camera, sceneBounds(scene));
+    return camera;
+}
+
 std::string formatSceneToml(const Scene& scene) {
     std::ostringstream s;
     const Camera& c = scene.camera;

@@ -72,6 +72,11 @@ Scene parseSceneString(std::string_view text, const std::string& sourceName);
 // sourceName.
 Scene parseSceneToml(const toml::table& table, const std::string& sourceName);
 
+// A [camera] table (the format above) read on its own, for a scene it views: its missing near /
+// far are fitted to that scene. A lesson gives one beside a preset to look closer.
+Camera parseCameraToml(const toml::table& cameraTable, const std::string& sourceName,
+                       const Scene& scene);
+
 // The scene as TOML text in the format above, numbers written so that parsing gives the same
 // floats back (shortest round-trip form).
 std::string formatSceneToml(const Scene& scene);

@@ -1,0 +1,344 @@
+// The split view (app/compare_view.h) and the magnifier (app/magnifier.h): a compare spec is read
+// from the command line and from a lesson and refused with one line when wrong; each part shows
+// exactly what its setting alone shows at the same point (the same pixels, the same lookup), and
+// the difference it states is the difference of those visibilities; under `animate --sweep sun`
+// the parts' curves are the curves of three separate animations, one per bias mode, and the
+// frames are the same bytes run to run with the right count; the magnifier keeps the point's
+// lookup and makes its texel many pixels wide, measured from the GPU's own light-space lookups.
+#include "app/compare_view.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "app/animation.h"
+#include "app/magnifier.h"
+#include "json_lite.h"
+#include "render/gl_context.h"
+#include "run_command.h"
+#include "video_read.h"
+#include "virtual_display.h"
+
+namespace pcf {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string LESSON = std::string(PCFSCOPE_SOURCE_DIR) + "/lessons/01-hard-shadows.toml";
+// Open ground in lesson 1's view, in front of the box and away from its shadow while the sun
+// sets: the acne under no bias is seen there.
+constexpr glm::vec3 OPEN_GROUND{0.3f, 0.0f, 2.2f};
+
+TEST(CompareSpec, ReadsKeysWithOneValuePerPartAndRefusesTheRest) {
+    CompareSpec spec = parseCompareSpec("bias=none,constant,slope");
+    ASSERT_EQ(spec.parts(), 3);
+    LessonSettings base;
+    base.method = PCF_NEAREST;
+    EXPECT_EQ(comparePart(base, spec, 0).bias, BiasMode::None);
+    EXPECT_EQ(comparePart(base, spec, 2).bias, BiasMode::Slope);
+    EXPECT_EQ(comparePart(base, spec, 2).method, PCF_NEAREST) << "the rest is the base's";
+    EXPECT_EQ(comparePartLabel(spec, 1), "bias constant");
+    EXPECT_EQ(compareSpecText(spec), "bias=none,constant,slope");
+
+    CompareSpec two = parseCompareSpec("method=nearest,tent kernel=1,5");
+    LessonSettings tent = comparePart(base, two, 1);
+    EXPECT_EQ(tent.method, PCF_TENT);
+    EXPECT_EQ(tent.kernel, 5);
+    EXPECT_EQ(comparePartLabel(two, 1), "method tent, kernel 5");
+    // A method change alone keeps the kernel when the method takes it, else its smallest.
+    base.kernel = 4;
+    EXPECT_EQ(comparePart(base, parseCompareSpec("method=nearest,tent"), 1).kernel, 3);
+    EXPECT_FLOAT_EQ(comparePart(base, parseCompareSpec("constant_bias=0.001,0.01"), 1).constantBias,
+                    0.01f);
+
+    for (const char* bad : {"bias=none", "bias=none,constant,slope,normal", "blur=1,2",
+                            "bias=none,wobbly", "bias=none,constant method=tent,nearest,box2x2",
+                            "kernel=3,99", "method=tent,nearest kernel=4,4", "bias none,slope",
+                            "bias=none,,slope", "map_size=64,64 map_size=32,32", ""}) {
+        EXPECT_THROW(
+            {
+                CompareSpec s = parseCompareSpec(bad);
+                for (int i = 0; i < s.parts(); ++i) comparePart(base, s, i);
+            },
+            std::invalid_argument)
+            << bad;
+    }
+}
+
+TEST(CompareSpec, ALessonStepSaysItAsATableOfArraysCheckedAtItsLine) {
+    const std::string head =
+        "title = \"t\"\nscene = \"box-on-plane\"\n[[step]]\ntitle = \"s\"\n"
+        "text = \"x\"\nmethod = \"nearest\"\n";
+    Lesson lesson =
+        parseLessonString(head +
+                              "compare = { bias = [\"none\", \"constant\"], constant_bias = "
+                              "[0.002, 0.004] }\n",
+                          "ok.toml");
+    const CompareSpec& spec = lesson.steps[0].compare;
+    ASSERT_EQ(spec.parts(), 2);
+    EXPECT_EQ(compareSpecText(spec), "bias=none,constant constant_bias=0.002,0.004");
+    EXPECT_EQ(lesson.steps[0].compareLine, 7);
+    for (const char* bad :
+         {"compare = { bias = [\"none\"] }", "compare = { bias = \"none\" }",
+          "compare = { method = [\"nearest\", \"tent\"], kernel = [4, 4] }", "compare = 3"}) {
+        try {
+            parseLessonString(head + bad + "\n", "bad.toml");
+            ADD_FAILURE() << bad;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("bad.toml:7"), std::string::npos)
+                << bad << ": " << e.what();
+        }
+    }
+}
+
+// A session showing lesson 1's first step at OPEN_GROUND (or its own point), as the scene alone.
+void showStep(Session& s, glm::ivec2 sceneSize, bool openGround) {
+    s.loadLesson(LESSON);
+    s.setSceneOnly(true);
+    s.setFrameSize(sceneSize);
+    if (openGround) s.pinPoint(*seenPoint(s.scene(), OPEN_GROUND));
+}
+
+TEST(CompareView, EachPartIsWhatItsSettingAloneShowsAndTheDifferenceIsTheirs) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    const glm::ivec2 frame{640, 360};
+    CompareView view(frame, false, parseCompareSpec("method=nearest,pcf-gather,tent"));
+    Session main(view.partSceneSize(), false);
+    showStep(main, view.partSceneSize(), false);  // the step's point, on the shadow's edge
+    view.follow(main);
+    view.compose();
+    std::vector<uint8_t> frameBytes = view.readFrame();
+    ASSERT_EQ(frameBytes.size(), size_t(frame.x) * frame.y * 4);
+    glm::ivec2 part = view.partSceneSize();
+    for (int i = 0; i < view.parts(); ++i) {
+        Session alone(part, false);
+        showStep(alone, part, false);
+        alone.setSettings(comparePart(main.settings(), view.spec(), i));
+        alone.compose();
+        ASSERT_TRUE(alone.trace()) << i;
+        ASSERT_TRUE(view.visibility(i)) << i;
+        EXPECT_EQ(*view.visibility(i), alone.trace()->visibility) << i;
+        EXPECT_EQ(alone.pixel(), view.part(i).pixel()) << i;
+        // The part's pixels in the frame are the lone session's, byte for byte.
+        std::vector<uint8_t> own = alone.readFrame();
+        int x0 = static_cast<int>(view.partRect(i).x);
+        int mismatched = 0;
+        for (int y = 0; y < part.y; ++y) {
+            for (int x = 0; x < part.x * 4; ++x) {
+                mismatched += frameBytes[(size_t(y) * frame.x + x0) * 4 + x] !=
+                              own[size_t(y) * part.x * 4 + x];
+            }
+        }
+        EXPECT_EQ(mismatched, 0) << "part " << i;
+        if (i > 0) {
+            ASSERT_TRUE(view.difference(i));
+            EXPECT_EQ(*view.difference(i), *view.visibility(i) - *view.visibility(0));
+        }
+    }
+    // On the shadow's edge the three filters disagree: the differences are not zeros.
+    EXPECT_NE(*view.visibility(0), *view.visibility(1));
+    EXPECT_NE(view.json().find("\"label\":\"method tent\""), std::string::npos) << view.json();
+}
+
+TEST(CompareView, SunSweepPartsAreThreeAnimationsOfOneBiasEach) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    const glm::ivec2 frame{640, 360};
+    CompareSpec spec = parseCompareSpec("bias=none,constant,slope");
+    AnimationOptions ao;
+    ao.sweep = AnimationSweep::Sun;
+    ao.frames = 5;
+    CompareView view(frame, false, spec);
+    view.setTraceBand(true);
+    Session main(view.partSceneSize(), false);
+    showStep(main, view.partSceneSize(), true);
+    Animation split(main, ao, view);
+    std::vector<std::vector<float>> drawn(3);
+    for (int k = 0; k < ao.frames; ++k) {
+        split.composeFrame(k);
+        for (int i = 1; i < 3; ++i) {
+            ASSERT_TRUE(view.difference(i));
+            EXPECT_EQ(*view.difference(i), split.partCurve(i)[k] - split.partCurve(0)[k]);
+        }
+    }
+    bool disagree = false;
+    for (int i = 0; i < 3; ++i) {
+        Session alone(view.partSceneSize(), false);
+        showStep(alone, view.partSceneSize(), true);
+        alone.setSettings(comparePart(alone.settings(), spec, i));
+        AnimationOptions one = ao;
+        one.compareMethod = -1;
+        Animation single(alone, one);
+        for (int k = 0; k < ao.frames; ++k) single.composeFrame(k);
+        ASSERT_EQ(split.partCurve(i).size(), size_t(ao.frames));
+        for (int k = 0; k < ao.frames; ++k) {
+            EXPECT_EQ(split.partCurve(i)[k], single.curve()[k]) << "part " << i << " frame " << k;
+            disagree = disagree || split.partCurve(i)[k] != split.partCurve(0)[k];
+        }
+    }
+    EXPECT_TRUE(disagree) << "no bias and a bias differ somewhere as the sun sets (acne)";
+    EXPECT_EQ(split.partCurve(1).front(), 1.0f) << "a constant bias: lit at noon";
+}
+
+TEST(AnimateCommand, ThreeBiasSunSetIsTheSameBytesRunToRunWithEveryFrame) {
+    fs::path dir = testutil::makeTempDir("compare");
+    std::string common =
+        "animate 1 --sweep sun --frames 4 --size 640x360 --point 0.3,0,2.2 "
+        "--compare bias=none,constant,slope ";
+    for (const char* run : {"a", "b"}) {
+        std::string d = (dir / run).string();
+        testutil::CommandResult r =
+            testutil::runPcfscope(common + "--png " + d + "/png -o " + d + "/sun.mp4");
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+    }
+    for (int k = 1; k <= 4; ++k) {
+        std::string name = "png/01-hard-shadows-step01-sun-000" + std::to_string(k) + ".png";
+        ASSERT_TRUE(fs::exists(dir / "a" / name)) << name;
+        EXPECT_EQ(testutil::readAll(dir / "a" / name), testutil::readAll(dir / "b" / name)) << name;
+    }
+    EXPECT_FALSE(fs::exists(dir / "a/png/01-hard-shadows-step01-sun-0005.png"));
+    testutil::VideoInfo v = testutil::readVideo((dir / "a/sun.mp4").string());
+    ASSERT_TRUE(v.opened);
+    EXPECT_EQ(v.width, 640);
+    EXPECT_EQ(v.height, 360);
+    EXPECT_EQ(v.frames, 4);
+    // Bad splits: one line, exit 2, nothing made.
+    std::string out = (dir / "new").string();
+    for (std::string args : {"--compare bias=none", "--compare blur=1,2",
+                             "--compare bias=none,constant --size 320x180", "--point 0,5,0",
+                             "--compare bias=none,wobbly"}) {
+        testutil::CommandResult r =
+            testutil::runPcfscope("animate 1 --frames 2 " + args + " -o " + out + "/x.mp4");
+        EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
+        EXPECT_EQ(testutil::lineCount(r.err), 1) << args << ": " << r.err;
+        EXPECT_FALSE(fs::exists(out)) << args;
+    }
+    fs::remove_all(dir);
+}
+
+// The texel steps on screen at the session's pinned pixel, from the GPU's light-space lookups
+// of pixels `d` apart (the trace's uv at each): the columns of d(pixel)/d(texel).
+glm::vec2 measuredTexelPixels(Session& s, int d) {
+    glm::ivec2 p = s.pixel();
+    auto uvAt = [&](glm::ivec2 q) {
+        s.setPixel(q);
+        s.compose();
+        EXPECT_TRUE(s.trace());
+        return s.trace() ? s.trace()->uv * float(s.settings().mapSize) : glm::vec2(0.0f);
+    };
+    glm::vec2 at = uvAt(p);
+    glm::vec2 du = (uvAt(p + glm::ivec2(d, 0)) - at) / float(d);  // texels per pixel right
+    glm::vec2 dv = (uvAt(p + glm::ivec2(0, d)) - at) / float(d);  // texels per pixel down
+    glm::mat2 pixelsPerTexel = glm::inverse(glm::mat2(du, dv));
+    return {glm::length(pixelsPerTexel[0]), glm::length(pixelsPerTexel[1])};
+}
+
+TEST(Magnifier, KeepsThePointsLookupAndATexelIsManyPixelsWide) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    const glm::ivec2 size{640, 360};
+    Session s(size, false);
+    s.loadLesson(LESSON);
+    s.setSceneOnly(true);
+    s.compose();
+    ASSERT_TRUE(s.trace());
+    Trace wide = *s.trace();
+    glm::vec3 point = s.point()->posWs;
+    glm::vec2 widePx = measuredTexelPixels(s, 4);
+    EXPECT_LT(std::min(widePx.x, widePx.y), 4.0f) << "the wide view: a texel is a few pixels";
+
+    s.pinPoint(*seenPoint(s.scene(), point));
+    Camera lessonCamera = s.scene().camera;
+    magnifySession(s, lessonCamera);
+    s.compose();
+    ASSERT_TRUE(s.trace());
+    EXPECT_EQ(s.point()->posWs, point);
+    EXPECT_NEAR(s.trace()->uv.x, wide.uv.x, 1e-6f);
+    EXPECT_NEAR(s.trace()->uv.y, wide.uv.y, 1e-6f);
+    EXPECT_EQ(s.trace()->visibility, wide.visibility);
+    float k = size.y / MAGNIFIER_TEXELS_ACROSS;  // 22.5 px
+    glm::vec2 px = measuredTexelPixels(s, 2);
+    EXPECT_GE(std::min(px.x, px.y), 0.95f * k) << px.x << " x " << px.y;
+    EXPECT_LE(std::min(px.x, px.y), 1.5f * k) << "the close-up still shows a neighbourhood";
+}
+
+// A lesson step's own `compare` is exported beside its frame; a step without one is not; the
+// JSON's differences are its parts' visibilities' differences. A bad --compare is one line,
+// exit 2, and nothing is written.
+TEST(ExportCompare, AStepsOwnCompareIsWrittenBesideItsFrame) {
+    fs::path dir = testutil::makeTempDir("exportsplit");
+    std::string lesson = (dir / "split.toml").string();
+    {
+        std::ofstream f(lesson);
+        f << "title = \"Split\"\nscene = \"box-on-plane\"\n[settings]\nmethod = \"nearest\"\n"
+             "map_size = 256\npoint = [1.3287, 0, 0.8441]\n"
+             "[[step]]\ntitle = \"One\"\ntext = \"x\"\n"
+             "[[step]]\ntitle = \"Two\"\ntext = \"y\"\n"
+             "compare = { method = [\"nearest\", \"pcf-gather\", \"tent\"] }\n";
+    }
+    auto r =
+        testutil::runPcfscope("export " + lesson + " --size 1024x768 -o " + (dir / "out").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out/split-step01-compare.png"));
+    ASSERT_TRUE(fs::exists(dir / "out/split-step02-compare.png"));
+    jsonlite::Value j = jsonlite::parse(testutil::readAll(dir / "out/split-step02-compare.json"));
+    EXPECT_EQ(j["compare"].string, "method=nearest,pcf-gather,tent");
+    const auto& parts = j["parts"].array;
+    ASSERT_EQ(parts.size(), 3u);
+    EXPECT_EQ(parts[2]["label"].string, "method tent");
+    for (size_t i = 1; i < parts.size(); ++i) {
+        EXPECT_NEAR(parts[i]["difference"].number,
+                    parts[i]["visibility"].number - parts[0]["visibility"].number, 1e-6);
+        EXPECT_EQ(parts[i]["visibility"].number, parts[i]["trace"]["visibility"].number);
+    }
+    std::string out = (dir / "bad").string();
+    for (std::string args :
+         {"--compare bias=none", "--compare \"method=nearest,tent kernel=3,4\" --steps 2",
+          "--compare bias=none,slope --size 320x180"}) {
+        auto bad = testutil::runPcfscope("export " + lesson + " " + args + " -o " + out);
+        EXPECT_EQ(bad.exitCode, 2) << args << ": " << bad.err;
+        EXPECT_EQ(testutil::lineCount(bad.err), 1) << args << ": " << bad.err;
+        EXPECT_FALSE(fs::exists(out)) << args;
+    }
+    fs::remove_all(dir);
+}
+
+// The viewer's C and Z, replayed by --keys: the window shows exactly the frames `export
+// --compare` and `export --magnify` write (the same code composes them), and Z again is the
+// lesson's own frame.
+TEST(ViewKeys, CIsTheSplitViewAndZTheMagnifierAsExportWritesThem) {
+    testutil::VirtualDisplay x;
+    ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
+    fs::path dir = testutil::makeTempDir("viewsplit");
+    std::string d = dir.string();
+    auto view = [&](const std::string& keys, const std::string& shot) {
+        testutil::CommandResult r =
+            testutil::runPcfscope("view 1 --keys \"" + keys + "\" --screenshot " + d + "/" + shot,
+                                  "DISPLAY=" + x.display());
+        EXPECT_EQ(r.exitCode, 0) << keys << ": " << r.err;
+    };
+    view("c", "c.png");
+    view("z", "z.png");
+    view("z z", "zz.png");
+    view("z right", "zr.png");  // the next step's point, found in the lesson's view, magnified
+    auto split = testutil::runPcfscope(
+        "export 1 --steps 1 --compare method=nearest,pcf-gather -o " + d + "/split");
+    ASSERT_EQ(split.exitCode, 0) << split.err;
+    auto magnified = testutil::runPcfscope("export 1 --steps 1-2 --magnify -o " + d + "/magnified");
+    ASSERT_EQ(magnified.exitCode, 0) << magnified.err;
+    auto plain = testutil::runPcfscope("export 1 --steps 1 -o " + d + "/plain");
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    const std::string stem = "/01-hard-shadows-step01";
+    EXPECT_EQ(testutil::readAll(d + "/c.png"),
+              testutil::readAll(d + "/split" + stem + "-compare.png"));
+    EXPECT_EQ(testutil::readAll(d + "/z.png"), testutil::readAll(d + "/magnified" + stem + ".png"));
+    EXPECT_NE(testutil::readAll(d + "/z.png"), testutil::readAll(d + "/plain" + stem + ".png"));
+    EXPECT_EQ(testutil::readAll(d + "/zr.png"),
+              testutil::readAll(d + "/magnified/01-hard-shadows-step02.png"));
+    EXPECT_EQ(testutil::readAll(d + "/zz.png"), testutil::readAll(d + "/plain" + stem + ".png"));
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace pcf
