@@ -86,7 +86,7 @@ std::string numberText(double v) {
 
 }  // namespace
 
-PcfParams ShadowSettings::pcfParams(vec2 rotation) const {
+PcfParams ShadowSettings::pcfParams(vec2 rotation, float penumbraScale) const {
     PcfParams p = makeParams(method, kernel, radius, rotation);
     p.penumbraScale = penumbraScale;
     p.weights = weights;
