@@ -31,11 +31,7 @@ const ParamInfo PARAMS[] = {
     {"radius", &ShadowSettings::radius, ParamGroup::Filter, "uRadius", TEXELS, 0.0,
      MAX_POISSON_RADIUS, true, "poisson: disk radius in texels", true},
     {"rotate", &ShadowSettings::rotate, ParamGroup::Filter, "", "", 0, 0, false,
-     "poisson, pcss: rotate the disk per pixel", true},
-    {"light_size", &ShadowSettings::lightSize, ParamGroup::Filter, "", "degrees", 0.0,
-     MAX_LIGHT_SIZE_DEG, false,
-     "pcss: the light's angular diameter in degrees (0: the scene light's, or the sun's 0.53)",
-     true},
+     "poisson: rotate the disk per pixel", true},
     {"weights", NamedField<int>{&ShadowSettings::weights, weightsName, weightsFromName,
         [] { return std::string("box, binomial, gaussian"); }, "weights"}, ParamGroup::Filter,
      "", "", 0, 0, false,
@@ -86,9 +82,8 @@ std::string numberText(double v) {
 
 }  // namespace
 
-PcfParams ShadowSettings::pcfParams(vec2 rotation, float penumbraScale) const {
+PcfParams ShadowSettings::pcfParams(vec2 rotation) const {
     PcfParams p = makeParams(method, kernel, radius, rotation);
-    p.penumbraScale = penumbraScale;
     p.weights = weights;
     p.sigma = sigma;
     p.precision = precision;
