@@ -83,14 +83,15 @@ TEST(LessonFiles, TheReadmeListsEveryLessonAndNoOther) {
     }
 }
 
-TEST(LessonFiles, EveryLessonParsesWithThreeToSixSteps) {
+// Short enough for one sitting: three to seven steps (an animation step makes the seventh).
+TEST(LessonFiles, EveryLessonParsesWithThreeToSevenSteps) {
     for (const std::string& file : lessonFiles()) {
         SCOPED_TRACE(file);
         Lesson lesson;
         ASSERT_NO_THROW(lesson = parseLessonFile(file));
         EXPECT_FALSE(lesson.title.empty());
         EXPECT_GE(lesson.steps.size(), 3u);
-        EXPECT_LE(lesson.steps.size(), 6u);
+        EXPECT_LE(lesson.steps.size(), 7u);
         EXPECT_FALSE(lesson.scene.objects.empty());
         for (const LessonStep& step : lesson.steps) {
             EXPECT_FALSE(step.title.empty());

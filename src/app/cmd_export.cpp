@@ -280,10 +280,11 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
     // it names.
     if (outputs) outputs->commit();
     if (progress) {
-        std::fprintf(stderr,
-                     "export: %d frames of %dx%d (%d of them in videos) in %.2f s (%.1f frames/s) "
-                     "into %s\n",
-                     frames, size.x, size.y, videoFrames, seconds, frames / seconds,
+        // The videos' share is named only when the lesson has animation steps.
+        std::string inVideos =
+            videoFrames > 0 ? " (" + std::to_string(videoFrames) + " of them in videos)" : "";
+        std::fprintf(stderr, "export: %d frames of %dx%d%s in %.2f s (%.1f frames/s) into %s\n",
+                     frames, size.x, size.y, inVideos.c_str(), seconds, frames / seconds,
                      plan.dir.c_str());
     }
 }
