@@ -2,7 +2,9 @@
 // difference images; bad input is refused before anything is written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -251,6 +253,37 @@ TEST_F(BenchCommand, ReferenceWritesBothPassesPerRun) {
     EXPECT_FALSE(fs::exists(plain + "/reference.csv"));
 }
 
+// --truth area: the truth integrates over the scene light's disk (post-in-sun: 2 degrees), the
+// report and the chart say so, and pcss, whose penumbra follows the blocker, is nearer that truth
+// at the edges than a fixed 3 x 3 kernel, which draws the hard shadow's narrow penumbra.
+TEST_F(BenchCommand, AreaTruthMeasuresAgainstTheLightsDisk) {
+    std::string out = path("area");
+    auto r = testutil::runPcfscope(
+        "bench --quick --scene post-in-sun --truth area --methods pcf-gather,pcss --kernels 3 "
+        "--map-sizes 512 --size 192x108 -o " +
+        out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("ground truth area (a sun disk of 2 degrees)"), std::string::npos)
+        << r.err;
+    std::string md = testutil::readAll(out + "/bench.md");
+    EXPECT_NE(md.find("ground truth, area (a sun disk of 2 degrees)"), std::string::npos) << md;
+    std::string csv = testutil::readAll(out + "/bench.csv");
+    std::istringstream lines(csv);
+    std::string line;
+    std::getline(lines, line);
+    std::vector<std::string> header = splitCsvLine(line);
+    size_t rmse = std::find(header.begin(), header.end(), "edge_rmse") - header.begin();
+    ASSERT_LT(rmse, header.size()) << line;
+    std::map<std::string, double> edge;
+    while (std::getline(lines, line)) {
+        std::vector<std::string> cells = splitCsvLine(line);
+        ASSERT_GT(cells.size(), rmse) << line;
+        edge[cells[0]] = std::stod(cells[rmse]);
+    }
+    ASSERT_EQ(edge.size(), 2u) << csv;
+    EXPECT_LT(edge["pcss"], edge["pcf-gather"]) << csv;
+}
+
 TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
     struct Case {
         std::string args;
@@ -281,6 +314,7 @@ TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
         {"--reference --bias receiver-plane", "--reference times the methods' plain"},
         {"--reference --depth-format 24", "--depth-format 32f"},
         {"--full", "--quick and --full exclude each other"},
+        {"--truth soft", "unknown --truth 'soft'"},
     };
     for (const Case& c : cases) {
         auto r = testutil::runPcfscope("bench --quick " + c.args + " -o " + path("out"));

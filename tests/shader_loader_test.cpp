@@ -189,7 +189,7 @@ layout(location = 0) out float outVisibility;
 void main() {
     // uv from the pixel with power-of-two arithmetic only, so the CPU can repeat it exactly.
     vec2 uv = gl_FragCoord.xy * (1.0f / 32.0f) - vec2(0.125f);
-    PcfParams prm = PcfParams(uMethod, uKernel, 1.0f, pcfPixelRotation(ivec2(gl_FragCoord.xy)), 0, 1.0f);
+    PcfParams prm = PcfParams(uMethod, uKernel, 1.0f, pcfPixelRotation(ivec2(gl_FragCoord.xy)), 0, 1.0f, 0.0f);
     outVisibility = pcfFilter(uMap, uv, uRef, prm);
 }
 )";

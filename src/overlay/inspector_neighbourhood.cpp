@@ -348,15 +348,18 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
                  }});
             legend.rings = true;
         } else if (tr.params.method == PCF_POISSON || tr.params.method == PCF_NAIVE ||
-                   tr.params.method == PCF_HW) {
+                   tr.params.method == PCF_HW || tr.params.method == PCF_PCSS) {
             if (!area.contains(at)) continue;
             pl.plan.drawnFetches.push_back(static_cast<int>(fi));
             float mr = highlit ? dotR * 2.0f + 2.0f : dotR + 1.0f;  // the highlight's halo too
-            marks.points.push_back({at, at, mr, "lookup", ACCENT, [=](Canvas& c, glm::vec2 p) {
+            // pcss: its first 16 reads are the blocker search's (weight 0), then the filter's.
+            bool search = tr.params.method == PCF_PCSS && fi < PCF_PCSS_TAPS;
+            Colour dot = search ? SEARCH : ACCENT;
+            marks.points.push_back({at, at, mr, "lookup", dot, [=](Canvas& c, glm::vec2 p) {
                                         if (highlit) c.circle(p, dotR * 2.0f + 1.0f, HIGHLIGHT);
-                                        c.circle(p, dotR, ACCENT);
+                                        c.circle(p, dotR, dot);
                                     }});
-            legend.dots = true;
+            (search ? legend.searchDisk : legend.dots) = true;
         } else {
             // Point reads and lookups without a mark of their own (nearest, box2x2,
             // bilinear2x2): drawn when the cells of the texels they read are.
@@ -371,18 +374,7 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
         }
     }
     glm::vec2 point = viewPoint(g, tr.uv * size);
-    if (tr.params.method == PCF_POISSON) {
-        // The disk the 16 points lie on, radius R texels round the lookup point (Jimmy,
-        // "Percentage Closer Filtering", 2010: a Poisson disk scaled by R), under the numbers.
-        legend.disk = true;
-        float radius = tr.params.radius * g.cell;
-        float w = std::max(1.0f, line - 1.0f);
-        pl.op([=](Canvas& c) {
-            c.pushClip(area);
-            c.ring(point, radius, w, ACCENT);
-            c.popClip();
-        });
-    }
+    planDisks(pl, tr, area, point, g.cell, std::max(1.0f, line - 1.0f), legend);
     float pr = std::max(POINT_MIN_PX, std::round(g.cell * POINT_PER_CELL));
     if (area.contains(point)) {
         marks.points.push_back(
@@ -788,7 +780,8 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     hiddenCells += planCellNumbers(pl, m, g, marks, t.numberFloor);
     planPointMarks(pl, l, g, marks, legend);
     for (auto& f : marks.ops) pl.op(std::move(f));
-    if (tr.params.method != PCF_NEAREST && tr.params.method != PCF_POISSON) {
+    if (tr.params.method != PCF_NEAREST && tr.params.method != PCF_POISSON &&
+        tr.params.method != PCF_PCSS) {
         legend.fraction = true;
         planFractions(pl, l, tr, g, t);
     }
