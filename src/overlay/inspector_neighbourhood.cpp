@@ -273,20 +273,25 @@ void planGridLines(Planner& pl, const InspectorLayout& l, const Grid& g, const T
     pl.op([lines, line](Canvas& c) {
         for (const auto& [a, b] : lines) c.line(a, b, line, Colour{0, 0, 0, 0.9f});
     });
-    // Column labels as wide as the cells allow: "i=117", else "117", else every other one.
+    // Column labels as wide as the cells allow: "i=117", else "117" on every cell, else on the
+    // texels whose index is a multiple of the smallest step that gives a label its room (a
+    // 33-texel pcss disk at 1280x720 has 11 px cells). Row labels likewise by line height.
     int last = g.view.origin.x + g.view.size.x - 1;
-    auto fitsCell = [&](const std::string& s) {
-        return measureText(FontFace::Mono, t.label, s).x + INDEX_GAP_PX <= g.cell;
-    };
-    bool prefix = fitsCell("i=" + std::to_string(last));
-    int every = prefix || fitsCell(std::to_string(last)) ? 1 : 2;
-    for (int i = 0; i < g.view.size.x; i += every) {
+    float labelW = measureText(FontFace::Mono, t.label, std::to_string(last)).x + INDEX_GAP_PX;
+    bool prefix =
+        measureText(FontFace::Mono, t.label, "i=" + std::to_string(last)).x + INDEX_GAP_PX <=
+        g.cell;
+    int every = prefix ? 1 : indexLabelStep(g.cell, labelW);
+    for (int i = 0; i < g.view.size.x; ++i) {
+        if ((g.view.origin.x + i) % every != 0) continue;
         pl.text({area.x + (i + 0.5f) * g.cell, g.laneTop.y + INDEX_TOP_GAP_PX},
                 (prefix ? "i=" : "") + std::to_string(g.view.origin.x + i),
                 {FontFace::Mono, t.label, TEXT_DIM, TextAlign::Center}, BoxKind::Label, panel,
                 "texel-index");
     }
+    int everyRow = indexLabelStep(g.cell, lineHeightOf(t.label));
     for (int j = 0; j < g.view.size.y; ++j) {
+        if ((g.view.origin.y + j) % everyRow != 0) continue;
         pl.text({g.laneLeft.right() - INDEX_RIGHT_GAP_PX,
                  area.y + (j + 0.5f) * g.cell - lineHeightOf(t.label) * 0.5f},
                 "j=" + std::to_string(g.view.origin.y + j),

@@ -167,6 +167,15 @@ struct Grid {
     Rect insetCaption;  // the lane above the inset
 };
 
+// Texel index labels go on every `step`-th cell: the smallest of 1, 2, 5, 10, 20, 50, 100 whose
+// run of cells is at least `need` pixels long.
+inline int indexLabelStep(float cell, float need) {
+    for (int step : {1, 2, 5, 10, 20, 50}) {
+        if (static_cast<float>(step) * cell >= need) return step;
+    }
+    return 100;
+}
+
 // True when the lookup's hardware taps or gathers ran with 8 fractional bits (issue 10).
 inline bool hw8Lookup(const Trace& tr) {
     return tr.usesTextureUnit && tr.params.precision == PCF_PRECISION_HW8;
