@@ -112,7 +112,8 @@ std::vector<Sweep> parseSweeps(const std::string& text) {
         std::optional<Sweep> s = sweepFromName(name);
         if (!s) {
             throw UsageError("unknown sweep '" + name +
-                             "' in --sweep (known: acne, leak, shimmer, precision, aliasing)");
+                             "' in --sweep (known: acne, leak, shimmer, precision, aliasing, "
+                             "pcss-thin, pcss-overlap, pcss-noise, pcss-bias)");
         }
         sweeps.push_back(*s);
     }
@@ -331,8 +332,8 @@ Command addStabilityCommand(CLI::App& app) {
                     "bias modes, comma-separated (default none,constant,normal,receiver-plane; "
                     "--quick none,constant; pairs that cannot exist are skipped)");
     sub->add_option("--sweep", o->sweeps,
-                    "sweeps, comma-separated: acne, leak, shimmer, precision, aliasing (default "
-                    "all)");
+                    "sweeps, comma-separated: acne, leak, shimmer, precision, aliasing, pcss-thin, "
+                    "pcss-overlap, pcss-noise, pcss-bias (default all)");
     sub->add_option("-o,--out", o->out, "output directory (default: stability)");
     sub->add_option("--chart-size", o->chartSize,
                     sizeHelp("chart size", CHART_SIZE_RANGE, "default 1280x720; --quick 640x360"));
