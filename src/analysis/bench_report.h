@@ -16,6 +16,12 @@ inline constexpr std::string_view BENCH_CSV_HEADER =
     "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
     "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,acne_share,"
     "acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,shimmer_mean,shimmer_p99,"
+    "flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,contact_edge_rmse,contact_edge_pixels";
+// The header before the contact columns (bench.h: contactDistance): still read (what lacks: 0).
+inline constexpr std::string_view BENCH_CSV_HEADER_V4 =
+    "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
+    "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,acne_share,"
+    "acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,shimmer_mean,shimmer_p99,"
     "flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms";
 // The header before the passes' CPU time: still read (what lacks: 0).
 inline constexpr std::string_view BENCH_CSV_HEADER_V3 =
@@ -35,14 +41,15 @@ inline constexpr std::string_view BENCH_CSV_HEADER_V1 =
 // The header, then one line per row in the given order. kernel is 0 for methods that take none;
 // times in ms / ns with 4 / 2 decimals, errors, shares and shimmer with 9 significant digits (so
 // equal values read back equal), timer as gpu_timer.h names it, noisy 0 or 1, weights box,
-// binomial or gaussian, sigma 0 unless gaussian. Every line ends with '\n'.
+// binomial or gaussian, sigma 0 unless gaussian; contact_edge_rmse over contact_edge_pixels (0 and
+// 0 when the bench measured no contact). Every line ends with '\n'.
 std::string benchCsv(std::span<const BenchRow> rows);
 
-// Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv), or the 27
-// columns of BENCH_CSV_HEADER_V3, the fifteen of BENCH_CSV_HEADER_V2 or the eleven of
-// BENCH_CSV_HEADER_V1 (what they lack: 0, box, not noisy). Throws pcf::InputError "SOURCE:LINE:
-// problem" on a wrong header, a wrong field count, an unknown method or a field that is not a
-// finite number.
+// Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv), or the 29
+// columns of BENCH_CSV_HEADER_V4, the 27 of BENCH_CSV_HEADER_V3, the fifteen of BENCH_CSV_HEADER_V2
+// or the eleven of BENCH_CSV_HEADER_V1 (what they lack: 0, box, not noisy). Throws pcf::InputError
+// "SOURCE:LINE: problem" on a wrong header, a wrong field count, an unknown method or a field that
+// is not a finite number.
 std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& source);
 
 // What the table's sentence says about where and how the numbers were taken.
