@@ -146,12 +146,13 @@ std::string number(double v) {
 
 class ParsedClaim {
   public:
-    enum Kind { Lit, Shadowed, Penumbra, FailingNearer, OnGround, Bits, Compare, Chart };
+    enum Kind { Lit, Shadowed, Penumbra, FailingNearer, OnGround, Bits, Compare, Chart, ChartFact };
     Kind kind = Compare;
     std::vector<Token> lhs, rhs;
     std::string op;
     double tolerance = 0.0;
     std::string chartA, chartB, metric;  // chart: a's metric < b's
+    std::string fact;                    // chart: any other statement (ClaimWorld::chartFact)
     std::string bits;                    // bits: every read's bit, in read order
 };
 
@@ -191,9 +192,12 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
             c->metric = metric;
             return c;
         }
-        throw std::invalid_argument(
-            "a chart claim reads 'chart: A faster than B' (or slower than, more accurate than, "
-            "less accurate than)");
+        // Anything else is a fact the chart's own table knows (analysis/chart_facts.h), or
+        // `lesson check` says which it knows.
+        if (rest.empty()) throw std::invalid_argument("'chart:' says nothing about the chart");
+        c->kind = ParsedClaim::ChartFact;
+        c->fact = rest;
+        return c;
     }
     auto [at, op] = findComparison(t);
     if (at == std::string_view::npos) {
@@ -226,8 +230,13 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
     return c;
 }
 
+std::string chartFactOf(const StepClaim& claim) {
+    return claim.parsed && claim.parsed->kind == ParsedClaim::ChartFact ? claim.parsed->fact : "";
+}
+
 bool isChartClaim(const StepClaim& claim) {
-    return claim.parsed && claim.parsed->kind == ParsedClaim::Chart;
+    return claim.parsed && (claim.parsed->kind == ParsedClaim::Chart ||
+                            claim.parsed->kind == ParsedClaim::ChartFact);
 }
 
 namespace {
@@ -301,6 +310,13 @@ bool claimHolds(const StepClaim& claim, const Trace& trace, const StepContext& c
             }
             say(c.chartA + "'s " + c.metric + " is not less than " + c.chartB + "'s");
             return std::get<bool>(r);
+        }
+        case ParsedClaim::ChartFact: {
+            if (!world.chartFact) return true;
+            std::string factWhy;
+            bool holds = world.chartFact(c.fact, &factWhy);
+            say(factWhy);
+            return holds;
         }
         case ParsedClaim::Compare:
             break;
