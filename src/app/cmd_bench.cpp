@@ -46,7 +46,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* DEFAULT_SCENE = "box-on-plane";
+constexpr const char* BENCH_DEFAULT_SCENE = "box-on-plane";
 constexpr const char* CSV_NAME = "bench.csv";
 constexpr const char* MD_NAME = "bench.md";
 constexpr const char* ACCURACY_CHART = "speed_vs_accuracy.png";
@@ -456,7 +456,7 @@ Command addBenchCommand(CLI::App& app) {
     // The map holds back faces by default (front faces culled): shadow acne, a bias problem,
     // stays off the lit faces, so the edge error measures the filter (analysis/bench.h).
     o->render.defaults.cull = CullMode::Front;
-    o->render.addTo(sub, DEFAULT_SCENE);
+    o->render.addTo(sub, BENCH_DEFAULT_SCENE);
     // The single-run options bench refuses (baseSettings) stay out of its help.
     for (const char* single : SINGLE_RUN_OPTIONS) sub->get_option(single)->group("");
     sub->get_option("--weights")

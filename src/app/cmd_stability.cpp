@@ -43,7 +43,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* DEFAULT_SCENE = "box-on-plane";
+constexpr const char* STABILITY_DEFAULT_SCENE = "box-on-plane";
 
 struct StabilityCommandOptions {
     RenderOptions render;  // scene, bias parameters, culling, polygon offset, map, format, size
@@ -320,7 +320,7 @@ Command addStabilityCommand(CLI::App& app) {
     o->render.size = "480x270";
     o->render.defaults.mapSize = 512;
     o->render.frameRange.min = glm::ivec2(MIN_STABILITY_FRAME_SIDE);
-    o->render.addTo(sub, DEFAULT_SCENE);
+    o->render.addTo(sub, STABILITY_DEFAULT_SCENE);
     // The single-lookup options of the shared set do not apply here (parseOptions says so when
     // given): out of --help, which listed them as if they did.
     for (const char* single : SINGLE_LOOKUP_OPTIONS) {
