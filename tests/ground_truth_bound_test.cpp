@@ -346,12 +346,15 @@ TEST(GroundTruthBound, HoldsAtTheTerminatorSliversTheSamplesMiss) {
             float sampled = first.visibility[first.index(x, y)];
             if (!e.hit || std::abs(e.visibility - sampled) <= 1e-3) continue;
             ++missed;  // the samples say uniform, the geometry says otherwise
-            // Refined now, so no longer the first pass's 0 or 1 with bound 0. (Within its bound
-            // only where the crescent is at least 1/16 px wide along the walk: see
-            // ground_truth.h, "Assumed, and not checked".)
+            // Refined now, so no longer the first pass's 0 or 1 with bound 0, and within its
+            // bound of the exact value (the crescent is far narrower than the 1/16 px the walk
+            // of old stepped by).
             GroundTruthPixel t = groundTruthAt(scene, size, {x, y});
             EXPECT_TRUE(t.refined) << x << ", " << y;
-            EXPECT_GT(t.bound, 0.0f) << x << ", " << y;
+            Exact precise = exact.precise({x, y});
+            EXPECT_LE(std::abs(t.visibility - precise.visibility), t.bound + 2e-7)
+                << x << ", " << y << ": truth " << t.visibility << " bound " << t.bound << " exact "
+                << precise.visibility;
         }
     }
     EXPECT_GE(missed, 20);  // the case is there to be caught
@@ -468,8 +471,8 @@ TEST(GroundTruthBound, RandomEdgePixelsAreWithinTheirBoundOfTheClosedForm) {
             ++checked;
             edge += e.visibility > 1e-6 && e.visibility < 1.0 - 1e-6 ? 1 : 0;
             EXPECT_LE(std::abs(t.visibility - e.visibility), t.bound + 2e-7)
-                << size.x << " (" << p.x << ", " << p.y << "): truth " << t.visibility
-                << " bound " << t.bound << " exact " << e.visibility;
+                << size.x << " (" << p.x << ", " << p.y << "): truth " << t.visibility << " bound "
+                << t.bound << " exact " << e.visibility;
             EXPECT_LE(t.bound, DEFAULT_TRUTH_TARGET_BOUND) << p.x << ", " << p.y;
         }
     }

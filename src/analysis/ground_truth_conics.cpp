@@ -45,15 +45,14 @@ EdgeForm quadraticForm(const glm::dmat3& q) { return {q, glm::dvec3(0.0), false}
 
 // w (P - x) for the hit P on the plane n . P = k, as a matrix applied to D (w = n . D):
 // w (E - x) + h D with h = k - n . E.
-glm::dmat3 planeHitFrom(const glm::dvec3& eye, const glm::dvec3& n, double k,
-                        const glm::dvec3& x) {
+glm::dmat3 planeHitFrom(const glm::dvec3& eye, const glm::dvec3& n, double k, const glm::dvec3& x) {
     return glm::outerProduct(eye - x, n) + glm::dmat3(k - glm::dot(n, eye));
 }
 
 // The ray meets the circle where the plane n . P = k cuts the sphere (c, r): none when they
 // do not meet.
-void addCircle(const glm::dvec3& eye, const glm::dvec3& n, double k, const glm::dvec3& c,
-               double r, std::vector<EdgeForm>& out) {
+void addCircle(const glm::dvec3& eye, const glm::dvec3& n, double k, const glm::dvec3& c, double r,
+               std::vector<EdgeForm>& out) {
     double len = glm::length(n);
     if (!(len > 0.0) || std::abs(glm::dot(n, c) - k) / len > r) return;
     glm::dmat3 m = planeHitFrom(eye, n, k, c);
@@ -61,8 +60,7 @@ void addCircle(const glm::dvec3& eye, const glm::dvec3& n, double k, const glm::
 }
 
 // The ray meets the curve where surfaces s and t cut each other (a line, a circle).
-void addCut(const glm::dvec3& eye, const Surface& s, const Surface& t,
-            std::vector<EdgeForm>& out) {
+void addCut(const glm::dvec3& eye, const Surface& s, const Surface& t, std::vector<EdgeForm>& out) {
     if (!s.sphere && !t.sphere) {
         // (m . E - l) n . D + h m . D: none for parallel planes (coincident ones cut nowhere
         // that the ray caster can tell apart).
@@ -90,8 +88,7 @@ void addOutline(const glm::dvec3& eye, const Primitive& shape, std::vector<EdgeF
         glm::dvec3 w = eye - glm::dvec3(s->centreWs);
         double r = s->radius;
         // |W x D|^2 - r^2 |D|^2 = D^T ((|W|^2 - r^2) I - W W^T) D.
-        out.push_back(
-            quadraticForm(glm::dmat3(glm::dot(w, w) - r * r) - glm::outerProduct(w, w)));
+        out.push_back(quadraticForm(glm::dmat3(glm::dot(w, w) - r * r) - glm::outerProduct(w, w)));
         return;
     }
     for (const auto& edge : primitiveEdges(shape)) {
@@ -109,8 +106,8 @@ void addConeOnPlane(const glm::dvec3& eye, const Surface& s, const glm::dvec3& l
 }
 
 // The shadow edges that a caster throws on surface s (false: not conics there).
-bool addShadow(const glm::dvec3& eye, const Light& light, const Surface& s,
-               const Primitive& caster, std::vector<EdgeForm>& out) {
+bool addShadow(const glm::dvec3& eye, const Light& light, const Surface& s, const Primitive& caster,
+               std::vector<EdgeForm>& out) {
     bool directional = light.type == LightType::Directional;
     glm::dvec3 travel = glm::normalize(glm::dvec3(light.directionWs));
     glm::dvec3 l(light.positionWs);
@@ -153,9 +150,8 @@ bool addLitEdges(const glm::dvec3& eye, const Scene& scene, size_t object, const
     bool exact = true;
     if (s.sphere) {
         // The terminator: the plane through c across L, or (P - c) . (l - c) = r^2 for a spot.
-        Surface plane = directional
-                            ? Surface{false, travel, glm::dot(travel, s.n)}
-                            : Surface{false, l - s.n, s.k * s.k + glm::dot(l - s.n, s.n)};
+        Surface plane = directional ? Surface{false, travel, glm::dot(travel, s.n)}
+                                    : Surface{false, l - s.n, s.k * s.k + glm::dot(l - s.n, s.n)};
         addCut(eye, s, plane, out);
     }
     if (!directional) {
@@ -205,8 +201,8 @@ namespace {
 
 // The pixel's conic of a form: D = D0 + x Dx + v Dv substituted, scaled to a largest
 // coefficient of 1; false when the form vanishes on the pixel's rays.
-bool conicOf(const EdgeForm& form, const glm::dvec3& d0, const glm::dvec3& dx,
-             const glm::dvec3& dv, Conic& out) {
+bool conicOf(const EdgeForm& form, const glm::dvec3& d0, const glm::dvec3& dx, const glm::dvec3& dv,
+             Conic& out) {
     if (form.linear) {
         out = {0.0, 0.0, 0.0, glm::dot(form.m, dx), glm::dot(form.m, dv), glm::dot(form.m, d0),
                true};
@@ -214,8 +210,12 @@ bool conicOf(const EdgeForm& form, const glm::dvec3& d0, const glm::dvec3& dx,
         glm::dvec3 q0 = form.q * d0;
         glm::dvec3 qx = form.q * dx;
         glm::dvec3 qv = form.q * dv;
-        out = {glm::dot(dx, qx),       2.0 * glm::dot(dx, qv), glm::dot(dv, qv),
-               2.0 * glm::dot(d0, qx), 2.0 * glm::dot(d0, qv), glm::dot(d0, q0),
+        out = {glm::dot(dx, qx),
+               2.0 * glm::dot(dx, qv),
+               glm::dot(dv, qv),
+               2.0 * glm::dot(d0, qx),
+               2.0 * glm::dot(d0, qv),
+               glm::dot(d0, q0),
                false};
     }
     double scale = std::max({std::abs(out.a), std::abs(out.b), std::abs(out.c), std::abs(out.d),
@@ -254,9 +254,7 @@ void quadraticRoots(double a, double b, double c, double lo, double hi, std::vec
 struct RowPoly {
     double a2, a1, a0;
 };
-RowPoly atRow(const Conic& q, double v) {
-    return {q.a, q.b * v + q.d, (q.c * v + q.e) * v + q.f};
-}
+RowPoly atRow(const Conic& q, double v) { return {q.a, q.b * v + q.d, (q.c * v + q.e) * v + q.f}; }
 
 // Whether the conic meets the pixel's closed square: a root on a side, or (a closed curve
 // inside) a tangent to the scanline direction inside.
@@ -268,8 +266,8 @@ bool meetsSquare(const Conic& q) {
         RowPoly r = atRow(q, v);
         quadraticRoots(r.a2, r.a1, r.a0, LO, HI, roots);
     }
-    quadraticRoots(q.c, q.e, q.f, LO, HI, roots);                            // x = 0
-    quadraticRoots(q.c, q.b + q.e, q.a + q.d + q.f, LO, HI, roots);          // x = 1
+    quadraticRoots(q.c, q.e, q.f, LO, HI, roots);                    // x = 0
+    quadraticRoots(q.c, q.b + q.e, q.a + q.d + q.f, LO, HI, roots);  // x = 1
     if (!roots.empty()) return true;
     if (q.a == 0.0) return false;  // unbounded in x along every row: it would cross a side
     std::vector<double> tangents;
