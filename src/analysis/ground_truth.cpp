@@ -146,27 +146,13 @@ struct ScanlineWalk {
     glm::ivec2 pixel;
     int object;
     double y;  // window coordinate of the scanline
-    // true: only which object is seen matters (the area light's walk): states OFF and LIT.
-    bool hitOnly = false;
     Scanline line;
-    // With hitOnly: the pieces on the object, [x0, x1] with both ends seen on it (merged), and
-    // the half pieces of the crossings as (the end on it, length).
-    std::vector<glm::dvec2> segments;
-    std::vector<glm::dvec2> halves;
 
     SampleState state(double x) const {
-        SampleState st = sampleState(scene, rays.at({static_cast<double>(pixel.x) + x, y}), object);
-        return hitOnly && st == UNLIT ? LIT : st;
+        return sampleState(scene, rays.at({static_cast<double>(pixel.x) + x, y}), object);
     }
     void addPiece(double x0, double x1, SampleState st) {
-        if (!(x1 > x0)) return;
-        add(st, x1 - x0);
-        if (!hitOnly || st == OFF) return;
-        if (!segments.empty() && segments.back().y == x0) {
-            segments.back().y = x1;
-        } else {
-            segments.push_back({x0, x1});
-        }
+        if (x1 > x0) add(st, x1 - x0);
     }
     void add(SampleState st, double length) {
         if (st == OFF) return;
@@ -179,8 +165,6 @@ struct ScanlineWalk {
         double length = hi - lo;
         add(s0, 0.5 * length);
         add(s1, 0.5 * length);
-        if (hitOnly && s0 != OFF) halves.push_back({lo, 0.5 * length});
-        if (hitOnly && s1 != OFF) halves.push_back({hi, 0.5 * length});
         line.litErr += length;
         if (s0 == OFF || s1 == OFF) line.onErr += length;
     }
@@ -217,7 +201,7 @@ struct ScanlineWalk {
 
 Scanline scanline(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel, int object,
                   double v) {
-    ScanlineWalk w{scene, rays, pixel, object, static_cast<double>(pixel.y) + v, false, {}, {}, {}};
+    ScanlineWalk w{scene, rays, pixel, object, static_cast<double>(pixel.y) + v, {}};
     w.walk();
     return w.line;
 }
@@ -254,8 +238,8 @@ Scanline exactScanline(const Scene& scene, const CameraRays& rays, glm::ivec2 pi
     return line;
 }
 
-// The area light's scanline: where the object is seen (the walk with hitOnly), then the light's
-// visible fraction f (light_visibility.h) integrated along each piece on it by an adaptive
+// The area light's scanline: where the object is seen (exact cuts, as the hard light's), then the
+// light's visible fraction f (light_visibility.h) integrated along each piece on it by an adaptive
 // trapezoid rule in x (panels split where coarse and fine differ most, as over v); lit is that
 // integral, its error the pieces' 2 |fine - coarse| plus f's own bound times the length.
 struct AreaLine {
@@ -263,8 +247,9 @@ struct AreaLine {
     const CameraRays& rays;
     glm::ivec2 pixel;
     int object;
-    double fTarget;  // the bound each f aims for
-    double xTarget;  // the x-integral's error aimed for, per pixel of length
+    double fTarget;                     // the bound each f aims for
+    double xTarget;                     // the x-integral's error aimed for, per pixel of length
+    const std::vector<Conic>* outline;  // the pixel's conics where the object seen changes
 
     LightFraction f(double x, double y) const {
         Ray ray = rays.at({static_cast<double>(pixel.x) + x, y});
@@ -316,20 +301,45 @@ struct AreaLine {
         }
     }
 
+    // Where the object is seen: the scanline cut at the outline's conics (ground_truth_conics.h),
+    // each piece read at its middle, consecutive pieces on the object merged into segments. A
+    // segment's end at a cut lies on the object's outline, where a ray may miss the object by
+    // rounding: f is integrated from UNSURE_PX inside it, the strip left out counts half lit
+    // and its other half as error.
     Scanline operator()(double v) const {
         double y = static_cast<double>(pixel.y) + v;
-        ScanlineWalk w{scene, rays, pixel, object, y, true, {}, {}, {}};
-        w.walk();
+        thread_local std::vector<double> xs;
+        xs.assign(1, 0.0);
+        for (const Conic& q : *outline) scanlineCuts(q, v, xs);
+        xs.push_back(1.0);
+        std::sort(xs.begin(), xs.end());
         Scanline line;
-        line.on = w.line.on;
-        line.onErr = w.line.onErr;
-        line.litErr = w.line.litErr;
-        for (const glm::dvec2& h : w.halves) {
-            LightFraction half = f(h.x, y);
-            line.lit += half.visible * h.y;
-            line.litErr += half.bound * h.y;
+        thread_local std::vector<glm::dvec2> segments;
+        segments.clear();
+        for (size_t i = 0; i + 1 < xs.size(); ++i) {
+            double length = xs[i + 1] - xs[i];
+            if (!(length > 0.0)) continue;
+            double x = static_cast<double>(pixel.x) + 0.5 * (xs[i] + xs[i + 1]);
+            if (sampleState(scene, rays.at({x, y}), object) == OFF) continue;
+            line.on += length;
+            if (length < UNSURE_PX) {
+                line.onErr += length;
+                line.litErr += length;
+            }
+            if (!segments.empty() && segments.back().y == xs[i]) {
+                segments.back().y = xs[i + 1];
+            } else {
+                segments.push_back({xs[i], xs[i + 1]});
+            }
         }
-        for (const glm::dvec2& seg : w.segments) integrate(seg.x, seg.y, y, line);
+        for (const glm::dvec2& seg : segments) {
+            double a = seg.x > 0.0 ? seg.x + UNSURE_PX : seg.x;
+            double b = seg.y < 1.0 ? seg.y - UNSURE_PX : seg.y;
+            double strips = b > a ? (a - seg.x) + (seg.y - b) : seg.y - seg.x;
+            line.lit += 0.5 * strips;
+            line.litErr += 0.5 * strips;
+            if (b > a) integrate(a, b, y, line);
+        }
         return line;
     }
 };
@@ -451,10 +461,16 @@ Refined refinePixel(const Scene& scene, const CameraRays& rays, const EdgeConics
 
 // The area light's pixel: a quarter of the target to each f and to each x-integral, the rest
 // to the integral over v.
-Refined refineAreaPixel(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel,
-                        const FirstPass& first, float target) {
-    AreaLine line{scene, rays, pixel, first.object, 0.25 * target, 0.25 * target};
-    return integrateRows(line, first.visibility, target, {});
+Refined refineAreaPixel(const Scene& scene, const CameraRays& rays, const EdgeConics& conics,
+                        glm::ivec2 pixel, const FirstPass& first, float target) {
+    thread_local std::vector<Conic> outline;
+    conics.pixelConics(first.object, false, rays.rawAt(glm::dvec2(pixel)), rays.stepX(),
+                       rays.stepY(), outline);
+    thread_local std::vector<double> breaks;
+    breaks.clear();
+    criticalRows(outline, breaks);
+    AreaLine line{scene, rays, pixel, first.object, 0.25 * target, 0.25 * target, &outline};
+    return integrateRows(line, first.visibility, target, breaks);
 }
 
 // Runs rowWork(y) for y in [0, rows) on `threads` workers, rows handed out one at a time from a
@@ -582,7 +598,7 @@ PassTwo passTwo(const Scene& scene, const CameraRays& rays, const EdgeFinder& ed
             std::tan(0.5 * glm::radians(static_cast<double>(scene.light.angularDiameterDeg)));
         int state = edges.areaState(pixelCone(rays, x, y), p.object, tanHalf);
         if (state >= 0) return {static_cast<float>(state), 0.0f, false};
-        Refined r = refineAreaPixel(scene, rays, {x, y}, p, target);
+        Refined r = refineAreaPixel(scene, rays, conics, {x, y}, p, target);
         return {r.visibility, r.bound, true};
     }
     if (needsRefinement(firstAt, x, y, rays, edges)) {
