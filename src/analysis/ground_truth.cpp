@@ -373,14 +373,9 @@ Panel makePanel(double a, double b, const Scanline& fa, const Scanline& fm, cons
     return p;
 }
 
-// The pixel's integral over v of line(v) (a Scanline), the adaptive rule of ground_truth.h.
-// `fallback`: the answer when no scanline meets the object.
-// `breaks`: rows in (0,1) that must be panel ends (criticalRows), sorted or not.
-template <typename LineFn>
-Refined integrateRows(const LineFn& line, float fallback, float target,
-                      const std::vector<double>& breaks) {
-    // The first panels: between the breaks, the widest halved until there are FIRST_PANELS.
-    thread_local std::vector<double> ends;
+// The first panels' ends: 0, the breaks and 1 (rows closer than 1e-12 merged), the widest panel
+// halved until there are FIRST_PANELS.
+void firstPanelEnds(const std::vector<double>& breaks, std::vector<double>& ends) {
     ends.assign(1, 0.0);
     ends.insert(ends.end(), breaks.begin(), breaks.end());
     ends.push_back(1.0);
@@ -389,8 +384,6 @@ Refined integrateRows(const LineFn& line, float fallback, float target,
         std::unique(ends.begin(), ends.end(), [](double a, double b) { return b - a <= 1e-12; }),
         ends.end());
     ends.back() = 1.0;
-    // More rows that must be ends than the scanlines allow: no claim.
-    if (2 * ends.size() - 1 > MAX_TRUTH_SCANLINES) return {fallback, 1.0f};
     while (ends.size() < FIRST_PANELS + 1) {
         size_t widest = 0;
         for (size_t k = 0; k + 1 < ends.size(); ++k) {
@@ -399,6 +392,18 @@ Refined integrateRows(const LineFn& line, float fallback, float target,
         ends.insert(ends.begin() + static_cast<long>(widest) + 1,
                     0.5 * (ends[widest] + ends[widest + 1]));
     }
+}
+
+// The pixel's integral over v of line(v) (a Scanline), the adaptive rule of ground_truth.h.
+// `fallback`: the answer when no scanline meets the object.
+// `breaks`: rows in (0,1) that must be panel ends (criticalRows), sorted or not.
+template <typename LineFn>
+Refined integrateRows(const LineFn& line, float fallback, float target,
+                      const std::vector<double>& breaks) {
+    thread_local std::vector<double> ends;
+    firstPanelEnds(breaks, ends);
+    // More rows that must be ends than the scanlines allow: no claim.
+    if (2 * ends.size() - 1 > MAX_TRUTH_SCANLINES) return {fallback, 1.0f};
     // One list per thread, reused pixel after pixel (no allocation per refined pixel).
     thread_local std::vector<Panel> panels;
     panels.clear();
