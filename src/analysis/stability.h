@@ -1,4 +1,4 @@
-// stability.h: where shadow-map filtering fails, measured. Five sweeps, each a curve of numbers
+// stability.h: where shadow-map filtering fails, measured. Six sweeps, each a curve of numbers
 // against the exact ground truth (ground_truth.h), for any list of methods and bias modes, and
 // four of pcss's own (stability_pcss.h: pcss-thin, pcss-overlap, pcss-noise, pcss-bias):
 //
@@ -18,6 +18,9 @@
 //              stray pixel cannot set it; failure_measures.h says why 8), in world units and in
 //              shadow-map texels (the two points' map positions apart), with its support (the
 //              pixels counted) and the stray pixels left out.
+//   tradeoff   the acne sweep's false-shadow rate at ONE elevation (tradeoffElevation) with the
+//              constant bias swept over the leak sweep's biases: acne and leak on one bias axis,
+//              so that where a good bias lies (acne gone, no leak yet) can be read off one chart.
 //   shimmer    the map's texel grid slid under the world by (k/32, k/32) texel for k = 0..31
 //              (light.h's shiftShadowOrigin; the world's shadow stays where it is), mean and 99th
 //              percentile of |v(t) - v(t-1)| over the compared pixels of all frame pairs; the
@@ -65,6 +68,7 @@ namespace pcf {
 enum class Sweep {
     Acne,
     Leak,
+    Tradeoff,
     Shimmer,
     Precision,
     Aliasing,
@@ -75,11 +79,12 @@ enum class Sweep {
     PcssBias,
 };
 
-// "acne", "leak", "shimmer", "precision", "aliasing", "pcss-thin", "pcss-overlap", "pcss-noise",
-// "pcss-bias"
+// "acne", "leak", "tradeoff", "shimmer", "precision", "aliasing", "pcss-thin", "pcss-overlap",
+// "pcss-noise", "pcss-bias"
 std::string_view sweepName(Sweep sweep);
 std::optional<Sweep> sweepFromName(std::string_view name);
 std::vector<Sweep> allSweeps();
+std::string sweepNameList();  // "acne, leak, tradeoff, shimmer, precision, aliasing"
 
 struct StabilityMethod {
     int method = PCF_NEAREST;
@@ -123,6 +128,7 @@ struct StabilityOptions {
     std::vector<float> depthRanges{1, 10, 100, 1e3f, 1e4f, 1e5f};
     std::vector<DepthFormat> depthFormats{DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F};
     float precisionElevation = 30.0f;  // degrees
+    float tradeoffElevation = 30.0f;   // degrees: the tradeoff sweep's light
     std::vector<int> aliasingMapSizes{256, 512, 1024, 2048};
     // pcss's sweeps (stability_pcss.h): the thin pole's widths in map texels, the plank's
     // heights in world units, the suns' angular diameters in degrees, poisson's radii in texels

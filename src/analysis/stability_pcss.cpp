@@ -367,9 +367,9 @@ std::optional<ParamProblem> validatePcssSweepOptions(const StabilityOptions& o) 
     return std::nullopt;
 }
 
-std::vector<StabilityRow> runPcssSweep(Sweep sweep, const StabilityOptions& options,
-                                       const Scene& scene,
-                                       const std::function<void(const std::string&)>& say) {
+void runPcssSweep(Sweep sweep, const StabilityOptions& options, const Scene& scene,
+                  const std::function<void(const std::string&)>& say,
+                  std::vector<StabilityRow>& rows) {
     PcssSweeper sweeper(options, say);
     switch (sweep) {
         case Sweep::PcssThin:
@@ -387,7 +387,7 @@ std::vector<StabilityRow> runPcssSweep(Sweep sweep, const StabilityOptions& opti
         default:
             throw std::invalid_argument("runPcssSweep: not a pcss sweep");
     }
-    return std::move(sweeper.rows);
+    rows.insert(rows.end(), sweeper.rows.begin(), sweeper.rows.end());
 }
 
 }  // namespace pcf

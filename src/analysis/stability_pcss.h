@@ -49,10 +49,11 @@ Scene pcssOverlapScene(float height, bool withBlock);
 // validateStabilityOptions.
 std::optional<ParamProblem> validatePcssSweepOptions(const StabilityOptions& options);
 
-// Runs one of the four sweeps above; `say` gets a line of progress. Needs a current OpenGL 4.5
-// context; the options are checked by validateStabilityOptions.
-std::vector<StabilityRow> runPcssSweep(Sweep sweep, const StabilityOptions& options,
-                                       const Scene& scene,
-                                       const std::function<void(const std::string&)>& say);
+// Runs one of the four sweeps above and appends its rows to `rows`; `say` gets a line of
+// progress. Needs a current OpenGL 4.5 context; the options are checked by
+// validateStabilityOptions.
+void runPcssSweep(Sweep sweep, const StabilityOptions& options, const Scene& scene,
+                  const std::function<void(const std::string&)>& say,
+                  std::vector<StabilityRow>& rows);
 
 }  // namespace pcf
