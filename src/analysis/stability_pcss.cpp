@@ -21,7 +21,7 @@ namespace {
 
 // post-in-sun's camera, ground and sun direction (presets.cpp), so the sweeps' scenes read like
 // the lesson's: the light travels (1, -0.7, 0.3), 56 degrees from the zenith.
-constexpr const char* SCENE_HEAD = R"([camera]
+constexpr const char* PCSS_SCENE_HEAD = R"([camera]
 eye = [2.2, 4.2, 6.0]
 target = [2.0, 0.4, 0.4]
 fov = 45.0
@@ -39,7 +39,7 @@ normal = [0.0, 1.0, 0.0]
 size = [9.0, 6.0]
 )";
 
-constexpr const char* BOX = R"(
+constexpr const char* PCSS_BOX = R"(
 [[object]]
 type = "box"
 name = "%s"
@@ -51,24 +51,25 @@ half = [%g, %g, %g]
 // tan(diameter / 2) and to the map size) spreads its 16 taps wider than a texel even on
 // --quick's 128 map: about 5 texels at the pole's foot there.
 constexpr float THIN_POLE_SUN_DEG = 8.0f;
-constexpr float POLE_HALF_HEIGHT = 1.5f;
+constexpr float PCSS_POLE_HALF_HEIGHT = 1.5f;
 // A wider sun for the plank: its penumbra on the ground is 2 tan(2 deg) * 1.8 H = 0.13 H wide.
 constexpr float OVERLAP_SUN_DEG = 4.0f;
-constexpr float TRUTH_SHADOWED = 0.5f;  // the thin pole's population: area truth below this
+constexpr float PCSS_TRUTH_SHADOWED = 0.5f;  // the thin pole's population: area truth below this
 
-std::string boxToml(const char* name, glm::vec3 centre, glm::vec3 half) {
+std::string pcssBoxToml(const char* name, glm::vec3 centre, glm::vec3 half) {
     char buf[256];
-    std::snprintf(buf, sizeof buf, BOX, name, centre.x, centre.y, centre.z, half.x, half.y, half.z);
+    std::snprintf(buf, sizeof buf, PCSS_BOX, name, centre.x, centre.y, centre.z, half.x, half.y,
+                  half.z);
     return buf;
 }
 
-std::string headToml(float sunDeg) {
+std::string pcssHeadToml(float sunDeg) {
     char buf[512];
-    std::snprintf(buf, sizeof buf, SCENE_HEAD, sunDeg);
+    std::snprintf(buf, sizeof buf, PCSS_SCENE_HEAD, sunDeg);
     return buf;
 }
 
-RenderSettings settingsFor(const StabilityOptions& o, int method, int kernel, BiasMode bias) {
+RenderSettings pcssSettingsFor(const StabilityOptions& o, int method, int kernel, BiasMode bias) {
     RenderSettings s = o.base;
     s.method = method;
     s.kernel = kernel > 0 ? kernel : 3;
@@ -80,13 +81,13 @@ RenderSettings settingsFor(const StabilityOptions& o, int method, int kernel, Bi
     return s;
 }
 
-std::vector<float> renderFrame(SceneRenderer& r, const RenderSettings& s) {
+std::vector<float> pcssRenderFrame(SceneRenderer& r, const RenderSettings& s) {
     r.renderShadowPass(s);
     r.renderCameraPass(s);
     return r.readVisibility();
 }
 
-GroundTruth truthOf(const Scene& scene, const StabilityOptions& o, bool area) {
+GroundTruth pcssTruthOf(const Scene& scene, const StabilityOptions& o, bool area) {
     GroundTruthOptions g;
     g.spp = o.truthSpp;
     g.threads = o.threads;
@@ -95,7 +96,7 @@ GroundTruth truthOf(const Scene& scene, const StabilityOptions& o, bool area) {
     return computeGroundTruth(scene, o.frameSize, g);
 }
 
-ErrorRegions regionsOf(SceneRenderer& r, const GroundTruth& truth, const RenderSettings& s) {
+ErrorRegions pcssRegionsOf(SceneRenderer& r, const GroundTruth& truth, const RenderSettings& s) {
     r.renderShadowPass(s);
     r.renderCameraPass(s);
     return errorRegions(truth, receiverMaskFromLightSpace(r.readLightSpace()));
@@ -139,9 +140,9 @@ void PcssSweeper::thin() {
         say(line);
         Scene scene = pcssThinPoleScene(widthTexels * texelWs);
         SceneRenderer renderer(scene);
-        GroundTruth truth = truthOf(scene, mOptions, true);
-        RenderSettings pcss = settingsFor(mOptions, PCF_PCSS, 0, bias);
-        ErrorRegions regions = regionsOf(renderer, truth, pcss);
+        GroundTruth truth = pcssTruthOf(scene, mOptions, true);
+        RenderSettings pcss = pcssSettingsFor(mOptions, PCF_PCSS, 0, bias);
+        ErrorRegions regions = pcssRegionsOf(renderer, truth, pcss);
         glm::mat4 fitted = renderer.shadowClipFromWorld();
         // The search's radius at the pole's foot (the kernel's searchHalf: ref * S / 2).
         glm::vec3 foot = glm::vec3(1.0f, 0.0f, 0.3f) * (widthTexels * texelWs);
@@ -152,17 +153,17 @@ void PcssSweeper::thin() {
         std::vector<uint8_t> shadowed(truth.pixelCount(), 0);
         int population = 0;
         for (size_t k = 0; k < shadowed.size(); ++k) {
-            shadowed[k] = regions.compared[k] && truth.visibility[k] < TRUTH_SHADOWED;
+            shadowed[k] = regions.compared[k] && truth.visibility[k] < PCSS_TRUTH_SHADOWED;
             population += shadowed[k];
         }
         for (StabilityMethod m : {StabilityMethod{PCF_PCSS, 0}, StabilityMethod{PCF_GATHER, 5}}) {
-            RenderSettings s = settingsFor(mOptions, m.method, m.kernel, bias);
+            RenderSettings s = pcssSettingsFor(mOptions, m.method, m.kernel, bias);
             std::vector<double> shares;
             std::vector<uint8_t> previous, changed(shadowed.size(), 0);
             for (int t = 0; t < PCSS_THIN_SHIFTS; ++t) {
                 renderer.setShadowClipFromWorld(shimmerShadowFit(
                     fitted, mOptions.mapSize, t * SHIMMER_STEPS / PCSS_THIN_SHIFTS, false));
-                std::vector<float> v = renderFrame(renderer, s);
+                std::vector<float> v = pcssRenderFrame(renderer, s);
                 std::vector<uint8_t> missed(v.size(), 0);
                 int count = 0;
                 for (size_t k = 0; k < v.size(); ++k) {
@@ -189,22 +190,22 @@ void PcssSweeper::thin() {
     }
 }
 
-struct PenumbraMeasure {
+struct PcssPenumbraMeasure {
     double ratio = 0.0;  // pcss's penumbra pixels / the truth's
     double rmse = 0.0;   // over the pixels either calls penumbra
     int truthPixels = 0;
 };
 
-bool inPenumbra(float v) { return v > PCSS_PENUMBRA_LO && v < PCSS_PENUMBRA_HI; }
+bool inPcssPenumbra(float v) { return v > PCSS_PENUMBRA_LO && v < PCSS_PENUMBRA_HI; }
 
-PenumbraMeasure penumbraOf(const std::vector<float>& v, const GroundTruth& truth,
-                           const ErrorRegions& regions) {
-    PenumbraMeasure out;
+PcssPenumbraMeasure pcssPenumbraOf(const std::vector<float>& v, const GroundTruth& truth,
+                                   const ErrorRegions& regions) {
+    PcssPenumbraMeasure out;
     int drawn = 0, union_ = 0;
     double sq = 0.0;
     for (size_t k = 0; k < v.size(); ++k) {
         if (!regions.compared[k]) continue;
-        bool t = inPenumbra(truth.visibility[k]), d = inPenumbra(v[k]);
+        bool t = inPcssPenumbra(truth.visibility[k]), d = inPcssPenumbra(v[k]);
         out.truthPixels += t;
         drawn += d;
         if (!t && !d) continue;
@@ -229,10 +230,10 @@ void PcssSweeper::overlap() {
             say(line);
             Scene scene = pcssOverlapScene(height, block);
             SceneRenderer renderer(scene);
-            GroundTruth truth = truthOf(scene, mOptions, true);
-            RenderSettings s = settingsFor(mOptions, PCF_PCSS, 0, bias);
-            ErrorRegions regions = regionsOf(renderer, truth, s);
-            PenumbraMeasure p = penumbraOf(renderFrame(renderer, s), truth, regions);
+            GroundTruth truth = pcssTruthOf(scene, mOptions, true);
+            RenderSettings s = pcssSettingsFor(mOptions, PCF_PCSS, 0, bias);
+            ErrorRegions regions = pcssRegionsOf(renderer, truth, s);
+            PcssPenumbraMeasure p = pcssPenumbraOf(pcssRenderFrame(renderer, s), truth, regions);
             std::string prefix = block ? "stacked:" : "alone:";
             add(Sweep::PcssOverlap, PCF_PCSS, 0, bias, "plank_height", height,
                 prefix + "penumbra_pixels_ratio", p.ratio);
@@ -246,11 +247,11 @@ void PcssSweeper::overlap() {
 
 // Over the truth's penumbra: the RMS of e(x+1) - e(x) for horizontal neighbours both in it, and
 // the RMSE of e = v - truth.
-glm::dvec2 roughnessOf(const std::vector<float>& v, const GroundTruth& truth,
-                       const ErrorRegions& regions) {
+glm::dvec2 pcssRoughnessOf(const std::vector<float>& v, const GroundTruth& truth,
+                           const ErrorRegions& regions) {
     double rough = 0.0, sq = 0.0;
     int pairs = 0, n = 0;
-    auto in = [&](size_t k) { return regions.compared[k] && inPenumbra(truth.visibility[k]); };
+    auto in = [&](size_t k) { return regions.compared[k] && inPcssPenumbra(truth.visibility[k]); };
     for (int y = 0; y < truth.size.y; ++y) {
         for (int x = 0; x < truth.size.x; ++x) {
             size_t k = truth.index(x, y);
@@ -279,12 +280,12 @@ void PcssSweeper::noise() {
         Scene scene = *presetScene("post-in-sun");
         scene.light.angularDiameterDeg = sun;
         SceneRenderer renderer(scene);
-        GroundTruth truth = truthOf(scene, mOptions, true);
-        RenderSettings s = settingsFor(mOptions, PCF_PCSS, 0, bias);
-        ErrorRegions regions = regionsOf(renderer, truth, s);
+        GroundTruth truth = pcssTruthOf(scene, mOptions, true);
+        RenderSettings s = pcssSettingsFor(mOptions, PCF_PCSS, 0, bias);
+        ErrorRegions regions = pcssRegionsOf(renderer, truth, s);
         for (bool rotate : {true, false}) {
             s.rotate = rotate;
-            glm::dvec2 r = roughnessOf(renderFrame(renderer, s), truth, regions);
+            glm::dvec2 r = pcssRoughnessOf(pcssRenderFrame(renderer, s), truth, regions);
             std::string prefix = rotate ? "rotated:" : "fixed:";
             add(Sweep::PcssNoise, PCF_PCSS, 0, bias, "sun_deg", sun, prefix + "penumbra_roughness",
                 r.x);
@@ -299,9 +300,9 @@ void PcssSweeper::bias(const Scene& base) {
         directionAtElevation(scene.light.directionWs, mOptions.pcssBiasElevation);
     say("pcss-bias: poisson's radius swept at one bias, " + scene.name);
     SceneRenderer renderer(scene);
-    GroundTruth truth = truthOf(scene, mOptions, false);
-    ErrorRegions regions =
-        regionsOf(renderer, truth, settingsFor(mOptions, PCF_POISSON, 0, BiasMode::Constant));
+    GroundTruth truth = pcssTruthOf(scene, mOptions, false);
+    ErrorRegions regions = pcssRegionsOf(
+        renderer, truth, pcssSettingsFor(mOptions, PCF_POISSON, 0, BiasMode::Constant));
     std::vector<std::optional<Hit>> hits = centreHits(scene, mOptions.frameSize, mOptions.threads);
     for (float radius : mOptions.pcssRadii) {
         // The clean-lit mask of this reach (stability.cpp's reachOf: the footprint + 1/2 texel).
@@ -309,9 +310,9 @@ void PcssSweeper::bias(const Scene& base) {
             cleanPixelMask(scene, truth, regions, hits, renderer.shadowClipFromWorld(),
                            mOptions.mapSize, radius + 1.0f, true, mOptions.threads);
         for (BiasMode bias : {BiasMode::Constant, BiasMode::ReceiverPlane}) {
-            RenderSettings s = settingsFor(mOptions, PCF_POISSON, 0, bias);
+            RenderSettings s = pcssSettingsFor(mOptions, PCF_POISSON, 0, bias);
             s.radius = radius;
-            FailureRate r = falseShadow(renderFrame(renderer, s), lit);
+            FailureRate r = falseShadow(pcssRenderFrame(renderer, s), lit);
             add(Sweep::PcssBias, PCF_POISSON, 0, bias, "filter_radius_texels", radius,
                 "false_shadow_rate", r.share);
             add(Sweep::PcssBias, PCF_POISSON, 0, bias, "filter_radius_texels", radius,
@@ -323,20 +324,20 @@ void PcssSweeper::bias(const Scene& base) {
 }  // namespace
 
 Scene pcssThinPoleScene(float width) {
-    std::string toml =
-        headToml(THIN_POLE_SUN_DEG) + boxToml("pole", {0.0f, POLE_HALF_HEIGHT, 0.0f},
-                                              {0.5f * width, POLE_HALF_HEIGHT, 0.5f * width});
+    std::string toml = pcssHeadToml(THIN_POLE_SUN_DEG) +
+                       pcssBoxToml("pole", {0.0f, PCSS_POLE_HALF_HEIGHT, 0.0f},
+                                   {0.5f * width, PCSS_POLE_HALF_HEIGHT, 0.5f * width});
     return parseSceneString(toml, "pcss-thin pole");
 }
 
 Scene pcssOverlapScene(float height, bool withBlock) {
     // The plank's far edge (x = 0.6) casts its shadow edge 0.6 + H / 0.7 along x and 0.3 H / 0.7
     // along z; the block straddles it.
-    std::string toml =
-        headToml(OVERLAP_SUN_DEG) + boxToml("plank", {0.0f, height, 0.0f}, {0.6f, 0.05f, 0.8f});
+    std::string toml = pcssHeadToml(OVERLAP_SUN_DEG) +
+                       pcssBoxToml("plank", {0.0f, height, 0.0f}, {0.6f, 0.05f, 0.8f});
     if (withBlock) {
-        toml += boxToml("block", {0.6f + height / 0.7f, 0.15f, 0.3f * height / 0.7f},
-                        {0.3f, 0.15f, 0.8f});
+        toml += pcssBoxToml("block", {0.6f + height / 0.7f, 0.15f, 0.3f * height / 0.7f},
+                            {0.3f, 0.15f, 0.8f});
     }
     return parseSceneString(toml, "pcss-overlap plank");
 }

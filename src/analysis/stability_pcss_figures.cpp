@@ -13,7 +13,7 @@ namespace pcf {
 
 namespace {
 
-std::string gText(double v) {
+std::string pcssGText(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%g", v);
     return buf;
@@ -27,12 +27,12 @@ std::string pcssSubtitle(std::span<const StabilityRow> rows, const std::string& 
     const StabilitySetup& s = *setup;
     return where + ", " + std::to_string(s.frameSize.x) + "x" + std::to_string(s.frameSize.y) +
            " frame, map " + std::to_string(s.mapSize) + "^2; " + bias + ", constant bias " +
-           gText(s.constantBias) + "; cull " + s.cull + "\n" + chartRendererLine(s.glRenderer);
+           pcssGText(s.constantBias) + "; cull " + s.cull + "\n" + chartRendererLine(s.glRenderer);
 }
 
 // The (x, y) of the rows of one sweep, method and metric, in order.
-ChartLine lineOf(std::span<const StabilityRow> rows, std::string_view sweep, int method,
-                 std::string_view bias, const std::string& metric, ChartLine line) {
+ChartLine pcssLineOf(std::span<const StabilityRow> rows, std::string_view sweep, int method,
+                     std::string_view bias, const std::string& metric, ChartLine line) {
     for (const StabilityRow& r : rows) {
         if (r.sweep == sweep && r.method == method && r.metric == metric &&
             (bias.empty() || r.bias == bias)) {
@@ -42,10 +42,10 @@ ChartLine lineOf(std::span<const StabilityRow> rows, std::string_view sweep, int
     return line;
 }
 
-const glm::vec4 PCSS_COLOUR{0.0f, 0.45f, 0.70f, 1.0f};   // Okabe-Ito blue
-const glm::vec4 OTHER_COLOUR{0.84f, 0.37f, 0.0f, 1.0f};  // Okabe-Ito vermillion
+const glm::vec4 PCSS_COLOUR{0.0f, 0.45f, 0.70f, 1.0f};        // Okabe-Ito blue
+const glm::vec4 PCSS_OTHER_COLOUR{0.84f, 0.37f, 0.0f, 1.0f};  // Okabe-Ito vermillion
 
-LineChartSpec finish(LineChartSpec spec, float minFontPx) {
+LineChartSpec finishPcssChart(LineChartSpec spec, float minFontPx) {
     for (auto it = spec.panels.front().lines.begin(); it != spec.panels.front().lines.end();) {
         it = it->points.empty() ? spec.panels.front().lines.erase(it) : it + 1;
     }
@@ -69,13 +69,13 @@ LineChartSpec pcssThinChartSpec(std::span<const StabilityRow> rows, const std::s
     spec.logX = true;
     spec.percentY = true;
     ChartPanel panel{"pcss and pcf-gather 5x5", {}};
-    panel.lines.push_back(lineOf(rows, "pcss-thin", PCF_PCSS, "", "missed_share_mean",
-                                 {"pcss, mean of 4 grid shifts", PCSS_COLOUR, false, {}}));
-    panel.lines.push_back(lineOf(rows, "pcss-thin", PCF_PCSS, "", "missed_share_max",
-                                 {"pcss, worst grid shift", PCSS_COLOUR, true, {}}));
+    panel.lines.push_back(pcssLineOf(rows, "pcss-thin", PCF_PCSS, "", "missed_share_mean",
+                                     {"pcss, mean of 4 grid shifts", PCSS_COLOUR, false, {}}));
+    panel.lines.push_back(pcssLineOf(rows, "pcss-thin", PCF_PCSS, "", "missed_share_max",
+                                     {"pcss, worst grid shift", PCSS_COLOUR, true, {}}));
     panel.lines.push_back(
-        lineOf(rows, "pcss-thin", PCF_GATHER, "", "missed_share_mean",
-               {"pcf-gather 5x5 (the map holds the pole)", OTHER_COLOUR, false, {}}));
+        pcssLineOf(rows, "pcss-thin", PCF_GATHER, "", "missed_share_mean",
+                   {"pcf-gather 5x5 (the map holds the pole)", PCSS_OTHER_COLOUR, false, {}}));
     spec.panels.push_back(panel);
     for (const StabilityRow& r : rows) {
         if (r.sweep == "pcss-thin" && r.metric == "search_radius_texels") {
@@ -86,7 +86,7 @@ LineChartSpec pcssThinChartSpec(std::span<const StabilityRow> rows, const std::s
             spec.notes.push_back(buf);
         }
     }
-    return finish(spec, minFontPx);
+    return finishPcssChart(spec, minFontPx);
 }
 
 LineChartSpec pcssOverlapChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
@@ -100,14 +100,15 @@ LineChartSpec pcssOverlapChartSpec(std::span<const StabilityRow> rows, const std
     spec.xLabel = "the plank's height above the ground, world units";
     spec.yLabel = "penumbra pixels (0.02 < v < 0.98), pcss / area truth";
     ChartPanel panel{"pcss", {}};
-    panel.lines.push_back(lineOf(rows, "pcss-overlap", PCF_PCSS, "", "alone:penumbra_pixels_ratio",
-                                 {"the plank alone", PCSS_COLOUR, false, {}}));
-    panel.lines.push_back(
-        lineOf(rows, "pcss-overlap", PCF_PCSS, "", "stacked:penumbra_pixels_ratio",
-               {"with a 0.3-unit block under its shadow's edge", OTHER_COLOUR, false, {}}));
+    panel.lines.push_back(pcssLineOf(rows, "pcss-overlap", PCF_PCSS, "",
+                                     "alone:penumbra_pixels_ratio",
+                                     {"the plank alone", PCSS_COLOUR, false, {}}));
+    panel.lines.push_back(pcssLineOf(
+        rows, "pcss-overlap", PCF_PCSS, "", "stacked:penumbra_pixels_ratio",
+        {"with a 0.3-unit block under its shadow's edge", PCSS_OTHER_COLOUR, false, {}}));
     spec.panels.push_back(panel);
     spec.notes.push_back("1 = as many penumbra pixels as the truth");
-    return finish(spec, minFontPx);
+    return finishPcssChart(spec, minFontPx);
 }
 
 LineChartSpec pcssNoiseChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
@@ -121,12 +122,12 @@ LineChartSpec pcssNoiseChartSpec(std::span<const StabilityRow> rows, const std::
     spec.yLabel = "RMS of e(x+1) - e(x), e = pcss - truth, neighbours in the penumbra";
     spec.logX = true;
     ChartPanel panel{"pcss, 16 search + 16 filter taps", {}};
-    panel.lines.push_back(lineOf(rows, "pcss-noise", PCF_PCSS, "", "rotated:penumbra_roughness",
-                                 {"disk rotated per pixel (noise)", PCSS_COLOUR, false, {}}));
-    panel.lines.push_back(lineOf(rows, "pcss-noise", PCF_PCSS, "", "fixed:penumbra_roughness",
-                                 {"disk not rotated (banding)", OTHER_COLOUR, false, {}}));
+    panel.lines.push_back(pcssLineOf(rows, "pcss-noise", PCF_PCSS, "", "rotated:penumbra_roughness",
+                                     {"disk rotated per pixel (noise)", PCSS_COLOUR, false, {}}));
+    panel.lines.push_back(pcssLineOf(rows, "pcss-noise", PCF_PCSS, "", "fixed:penumbra_roughness",
+                                     {"disk not rotated (banding)", PCSS_OTHER_COLOUR, false, {}}));
     spec.panels.push_back(panel);
-    return finish(spec, minFontPx);
+    return finishPcssChart(spec, minFontPx);
 }
 
 LineChartSpec pcssBiasChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
@@ -137,22 +138,23 @@ LineChartSpec pcssBiasChartSpec(std::span<const StabilityRow> rows, const std::s
         "by filter radius";
     std::optional<StabilitySetup> setup = stabilitySetupOf(rows);
     std::string where = setup ? setup->sceneName : std::string("the scene");
-    spec.subtitle = pcssSubtitle(
-        rows,
-        where + ", light " + gText(StabilityOptions{}.pcssBiasElevation) + " deg above the ground",
-        "poisson (pcss's filter) at each radius", subtitle);
+    spec.subtitle =
+        pcssSubtitle(rows,
+                     where + ", light " + pcssGText(StabilityOptions{}.pcssBiasElevation) +
+                         " deg above the ground",
+                     "poisson (pcss's filter) at each radius", subtitle);
     spec.xLabel = "poisson's radius, shadow-map texels (log scale)";
     spec.yLabel = "false-shadow rate (clean-lit pixels darker than 0.99)";
     spec.logX = true;
     spec.percentY = true;
     ChartPanel panel{"poisson, 16 taps", {}};
     for (const char* bias : {"constant", "receiver-plane"}) {
-        panel.lines.push_back(lineOf(rows, "pcss-bias", PCF_POISSON, bias, "false_shadow_rate",
-                                     {bias, biasColour(bias), false, {}}));
+        panel.lines.push_back(pcssLineOf(rows, "pcss-bias", PCF_POISSON, bias, "false_shadow_rate",
+                                         {bias, biasColour(bias), false, {}}));
     }
     spec.panels.push_back(panel);
     spec.notes.push_back("1% = acne onset");
-    return finish(spec, minFontPx);
+    return finishPcssChart(spec, minFontPx);
 }
 
 std::vector<uint8_t> drawPcssChart(const LineChartSpec& spec, glm::ivec2 size) {
