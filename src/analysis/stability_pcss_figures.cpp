@@ -70,22 +70,24 @@ LineChartSpec pcssThinChartSpec(std::span<const StabilityRow> rows, const std::s
     spec.percentY = true;
     ChartPanel panel{"pcss and pcf-gather 5x5", {}};
     panel.lines.push_back(pcssLineOf(rows, "pcss-thin", PCF_PCSS, "", "missed_share_mean",
-                                     {"pcss, mean of 4 grid shifts", PCSS_COLOUR, false, {}}));
+                                     {"pcss, mean of 4 grids", PCSS_COLOUR, false, {}}));
     panel.lines.push_back(pcssLineOf(rows, "pcss-thin", PCF_PCSS, "", "missed_share_max",
-                                     {"pcss, worst grid shift", PCSS_COLOUR, true, {}}));
-    panel.lines.push_back(
-        pcssLineOf(rows, "pcss-thin", PCF_GATHER, "", "missed_share_mean",
-                   {"pcf-gather 5x5 (the map holds the pole)", PCSS_OTHER_COLOUR, false, {}}));
+                                     {"pcss, worst grid", PCSS_COLOUR, true, {}}));
+    panel.lines.push_back(pcssLineOf(rows, "pcss-thin", PCF_GATHER, "", "missed_share_mean",
+                                     {"pcf-gather 5x5", PCSS_OTHER_COLOUR, false, {}}));
     spec.panels.push_back(panel);
+    // The notes: the search radius at the pole's foot per width (the 16 taps lie about 0.44 r
+    // apart: a disk of radius r shared by 16 points, sqrt(pi / 16) r each).
+    std::string radii;
     for (const StabilityRow& r : rows) {
         if (r.sweep == "pcss-thin" && r.metric == "search_radius_texels") {
-            char buf[128];
-            std::snprintf(buf, sizeof buf,
-                          "pole %g tx: search radius %.1f tx at its foot (16 taps, ~%.1f tx apart)",
-                          r.x, r.y, r.y * 0.443);
-            spec.notes.push_back(buf);
+            char buf[48];
+            std::snprintf(buf, sizeof buf, "%s%.1f", radii.empty() ? "" : ", ", r.y);
+            radii += buf;
         }
     }
+    if (!radii.empty()) spec.notes.push_back("search radius r at the foot: " + radii + " tx");
+    if (!radii.empty()) spec.notes.push_back("16 taps, about 0.44 r apart");
     return finishPcssChart(spec, minFontPx);
 }
 
