@@ -13,6 +13,7 @@ uniform float uRadius;
 uniform float uSoftScale;
 uniform float uRpdbMax;      // receiver-plane: cap on dz/duv, depth per uv unit
 uniform float uSigma;  // gaussian weights, texels
+uniform float uPenumbraScale;  // pcss: texels of penumbra per unit of light depth
 
 layout(location = 0) out float oVisibility;
 
@@ -33,5 +34,5 @@ void main() {
     PcfRef ref = PcfRef(lookup.z, uv, PcfBias(PCF_LOOKUP_BIAS, dzduv, uSoftScale, uRpdbMax));
     oVisibility = pcfFilterRef(uPcfDepth, uv, ref,
                                PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, PCF_WEIGHTS,
-                                         uSigma));
+                                         uSigma, uPenumbraScale));
 }

@@ -31,6 +31,7 @@ uniform float uSoftScale;             // soft: the correction scale of "PCF Shad
 uniform float uRpdbMax;               // receiver-plane: cap on dz/duv, depth per uv unit
 uniform float uRadius;                // poisson radius in texels
 uniform float uSigma;                 // gaussian weights, texels
+uniform float uPenumbraScale;         // pcss: texels of penumbra per unit of light depth
 uniform ivec2 uPickPixel;             // a lesson's pinned point's pixel (window coords); -1: none
 uniform vec4 uPickLookup;             // its u, v, ref, z0, computed on the CPU
 uniform vec2 uPickDzDuv;              // its receiver plane, dz/du, dz/dv
@@ -104,7 +105,7 @@ void main() {
         PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(BIAS_MODE, dzduv, uSoftScale, uRpdbMax));
         visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef,
                                   PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation,
-                                            PCF_WEIGHTS, uSigma));
+                                            PCF_WEIGHTS, uSigma, uPenumbraScale));
     }
     // Gamma 2.2 of albedo * light, light = ambient + diffuse * visibility (a scalar):
     //   (albedo * light)^(1/2.2) = albedo^(1/2.2) * light^(1/2.2)

@@ -141,7 +141,7 @@ TEST_F(BenchSweep, ErrorFallsAsTheMapGrowsForEveryMethod) {
     o.kernels = {3};
     o.mapSizes = {128, 256, 512, 1024};
     std::vector<BenchRow> rows = sweep("box-on-plane", o, 4);
-    ASSERT_EQ(rows.size(), 9u * 4u);
+    ASSERT_EQ(rows.size(), allMethods().size() * 4u);
     for (size_t k = 0; k < rows.size(); k += 4) {
         std::string name = pointName(rows[k].point);
         std::printf("%-16s edge RMSE", name.c_str());
@@ -248,13 +248,14 @@ TEST(BenchOptionsCheck, NamesTheOptionThatIsOutOfRange) {
               std::string::npos);
     EXPECT_FALSE(validateBenchOptions(BenchOptions{}).has_value());
     EXPECT_FALSE(validateBenchOptions(quickBenchOptions()).has_value());
-    // The defaults: 5 one-shot methods + 4 kernel methods x 3 sizes, at 4 map sizes.
-    EXPECT_EQ(benchPoints(BenchOptions{}).size(), 68u);
-    EXPECT_EQ(benchPoints(quickBenchOptions()).size(), 18u);
+    // The defaults: 6 one-shot methods (nearest, box2x2, bilinear2x2, hw2x2, poisson, pcss) + 4
+    // kernel methods x 3 sizes, at 4 map sizes.
+    EXPECT_EQ(benchPoints(BenchOptions{}).size(), 72u);
+    EXPECT_EQ(benchPoints(quickBenchOptions()).size(), 20u);
     // A weighting list repeats pcf-naive and pcf-gather only.
     o = BenchOptions{};
     o.weights = {PCF_WEIGHTS_BOX, PCF_WEIGHTS_BINOMIAL, PCF_WEIGHTS_GAUSSIAN};
-    EXPECT_EQ(benchPoints(o).size(), 68u + 2u * 2u * 3u * 4u);
+    EXPECT_EQ(benchPoints(o).size(), 72u + 2u * 2u * 3u * 4u);
     o.weights = {PCF_WEIGHTS_GAUSSIAN};
     EXPECT_NE(problemText(validateBenchOptions(o)).find("pcf-naive and pcf-gather only"),
               std::string::npos);

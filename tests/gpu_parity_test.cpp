@@ -70,6 +70,13 @@ std::vector<PcfParams> parityCases(std::initializer_list<int> kernels) {
         } else if (m.id == PCF_POISSON) {
             cases.push_back(makeParams(m.id, 1, 1.0f));
             cases.push_back(makeParams(m.id, 1, 2.5f));
+        } else if (m.id == PCF_PCSS) {
+            // A light of no size (radius 1 throughout) and one whose disks span many texels.
+            for (float scale : {0.0f, 30.0f}) {
+                PcfParams p = makeParams(m.id, 1);
+                p.penumbraScale = scale;
+                cases.push_back(p);
+            }
         } else {
             cases.push_back(makeParams(m.id, 1));
         }
@@ -79,7 +86,7 @@ std::vector<PcfParams> parityCases(std::initializer_list<int> kernels) {
 
 std::string describe(const PcfParams& prm) {
     return std::string(methodInfo(prm.method).name) + " N=" + std::to_string(prm.kernel) +
-           " R=" + std::to_string(prm.radius);
+           " R=" + std::to_string(prm.radius) + " S=" + std::to_string(prm.penumbraScale);
 }
 
 TEST_F(GpuParity, RandomLookupsOnRandomMapsMatchTheCpuKernel) {
@@ -90,7 +97,7 @@ TEST_F(GpuParity, RandomLookupsOnRandomMapsMatchTheCpuKernel) {
         std::vector<glm::vec4> lookups = randomLookups(size, width, 64, 18 + size.x);
         for (bool rotate : {false, true}) {
             for (const PcfParams& prm : parityCases({1, 2, 3, 5, 8})) {
-                if (rotate && prm.method != PCF_POISSON) continue;
+                if (rotate && prm.method != PCF_POISSON && prm.method != PCF_PCSS) continue;
                 std::vector<float> got = gpu.run(map, lookups, width, prm, rotate);
                 Agreement a;
                 for (size_t k = 0; k < lookups.size(); ++k) {
@@ -311,7 +318,8 @@ TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
                         size_t k = static_cast<size_t>(y) * s.frameSize.x + x;
                         if (ls[4 * k + 3] != 1.0f) continue;
                         ++receivers;
-                        PcfParams p = s.pcfParams();
+                        // pcss: the light's size in this map, as the renderer measured it.
+                        PcfParams p = renderer.pcfParams(s);
                         // The disk turns with the texel looked up (pcfTexelRotation).
                         if (s.rotate) {
                             p.rotation = pcfTexelRotation(glm::vec2(ls[4 * k], ls[4 * k + 1]),
@@ -432,7 +440,7 @@ RenderedParity renderAndCompare(SceneRenderer& renderer, const RenderSettings& s
         if (b.dzduv != glm::vec2(0.0f)) ++r.planes;
         if (pcfClampDzDuv(b.dzduv, s.rpdbMax) != b.dzduv) ++r.capped;
         float cpu = filterVisibility(map, glm::vec2(ls[4 * k], ls[4 * k + 1]), ls[4 * k + 2],
-                                     s.pcfParams(), b);
+                                     renderer.pcfParams(s), b);
         r.worst = std::max(r.worst, std::fabs(cpu - vis[k]));
     }
     return r;

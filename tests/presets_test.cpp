@@ -17,7 +17,7 @@ constexpr float ASPECT = 16.0f / 9.0f;
 TEST(Presets, NamesInOrder) {
     std::vector<std::string_view> names = presetNames();
     std::vector<std::string_view> expected = {"box-on-plane", "sphere-over-plane", "pole",
-                                              "grazing", "stairs"};
+                                              "post-in-sun",  "grazing",           "stairs"};
     EXPECT_EQ(names, expected);
     EXPECT_FALSE(presetScene("no-such-scene"));
     EXPECT_FALSE(presetSceneToml("no-such-scene"));

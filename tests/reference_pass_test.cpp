@@ -39,6 +39,12 @@ std::vector<PcfParams> referenceCases() {
         } else if (m.id == PCF_POISSON) {
             cases.push_back(makeParams(m.id, 1, 1.0f));
             cases.push_back(makeParams(m.id, 1, 2.5f));
+        } else if (m.id == PCF_PCSS) {
+            for (float scale : {0.0f, 30.0f}) {
+                PcfParams p = makeParams(m.id, 1);
+                p.penumbraScale = scale;
+                cases.push_back(p);
+            }
         } else {
             cases.push_back(makeParams(m.id, 1));
         }

@@ -19,7 +19,8 @@ PCF_CONST int PCF_GATHER = 5;
 PCF_CONST int PCF_HW = 6;
 PCF_CONST int PCF_TENT = 7;
 PCF_CONST int PCF_POISSON = 8;
-PCF_CONST int PCF_METHOD_COUNT = 9;
+PCF_CONST int PCF_PCSS = 9;
+PCF_CONST int PCF_METHOD_COUNT = 10;
 
 // What one fetch instruction is, for the trace and the fetch counts.
 PCF_CONST int PCF_FETCH_POINT = 0;   // one texel read (nearest sampler, texel's centre)
@@ -59,12 +60,15 @@ PCF_ARRAY_END;
 
 // What a method needs besides the lookup itself.
 struct PcfParams {
-    int method;     // PCF_NEAREST .. PCF_POISSON
+    int method;     // PCF_NEAREST .. PCF_PCSS
     int kernel;     // N: 1..8 for pcf-naive, pcf-gather and pcf-hw; 3, 5 or 7 for tent
     float radius;   // poisson: disk radius in texels (Jimmy 2010 uses 1)
     vec2 rotation;  // poisson: (cos, sin) of the disk's rotation; (1, 0) for none
     int weights;    // pcf-naive, pcf-gather: PCF_WEIGHTS_BOX (0), _BINOMIAL or _GAUSSIAN
     float sigma;    // gaussian weights: standard deviation in texels
+    // pcss: the light's size in the map, texels of penumbra width per unit of light depth
+    // between receiver and blocker (scene/pcss.h computes it from the light and the map)
+    float penumbraScale;
 #ifdef __cplusplus
     // The CPU's model of the texture unit (PCF_PRECISION_EXACT or _HW8). In GLSL the same
     // choice is the define PCF_PRECISION, read through mapPrecision(map) (pcf_prelude.h).
@@ -728,12 +732,109 @@ PCF_FN vec2 pcfTexelRotation(vec2 uv, ivec2 size) {
     return pcfPixelRotation(ivec2(floor(p)));
 }
 
+// ---- Percentage-closer soft shadows (issue 21) -------------------------------------------
+//
+// Fernando, "Percentage-Closer Soft Shadows" (NVIDIA, SIGGRAPH 2005 sketch), three steps:
+//   1. blocker search: the depths in a region around uv nearer the light than the receiver are
+//      blockers; d_blocker = their mean depth;
+//   2. penumbra width by similar triangles: w = (d_receiver - d_blocker) * w_light / d_blocker;
+//   3. PCF with a kernel of width w.
+// pcfscope's soft shadows are a directional light's (an orthographic map, depth linear in
+// distance, the light at infinity). Its disk of angular diameter theta then gives the penumbra
+// w = (d_receiver - d_blocker) * 2 tan(theta / 2) in world units: the seed's w_light / d_blocker
+// is the angle the light subtends. In the map's units (texels, light depth [0,1]):
+//   w = (ref - d_blocker) * S        S = penumbraScale, texels per unit of light depth
+// The search region: a blocker at depth d can hide part of the light only within
+// (ref - d) * S / 2 texels of uv, and d >= 0 (the map's near plane), so its radius is
+//   r_search = ref * S / 2
+// (the seed's w_light * (d_receiver - near) / d_receiver with the light at infinity).
+// Taps: both steps use the 16-point Poisson disk of Jimmy 2010 (the disk of `poisson`; the
+// seed's filter is a Poisson-disk PCF too), nearest-texel reads, turned by prm.rotation. The
+// filter's radius is w / 2. Both radii are kept in [PCF_PCSS_MIN_RADIUS, PCF_PCSS_MAX_RADIUS]:
+// with a light of size 0 pcss is exactly poisson with radius 1.
+PCF_CONST float PCF_PCSS_MIN_RADIUS = 1.0f;   // texels: the poisson default (Jimmy 2010)
+PCF_CONST float PCF_PCSS_MAX_RADIUS = 32.0f;  // texels: 16 taps spread wider say nothing
+PCF_CONST int PCF_PCSS_TAPS = 16;
+
+// 1 / k for k = 0..16 as literals (entry 0 unused): the mean blocker depth is sum * (1 / count)
+// with the same float on the CPU and the GPU (a GLSL division may be a reciprocal estimate).
+// clang-format off
+PCF_CONST_ARRAY(float, PCF_PCSS_RECIPROCALS, 17) PCF_ARRAY_BEGIN(float, 17)
+    0.0f, 1.0f, 0.5f, 0.333333343f, 0.25f, 0.200000003f, 0.166666672f, 0.142857149f, 0.125f,
+    0.111111112f, 0.100000001f, 0.0909090936f, 0.0833333358f, 0.0769230798f, 0.0714285746f,
+    0.0666666701f, 0.0625f
+PCF_ARRAY_END;
+// clang-format on
+
+// What steps 1 and 2 found for one lookup (the trace shows each number).
+struct PcfPcssEstimate {
+    float searchRadius;  // texels: clamp(ref * S / 2, MIN, MAX)
+    int blockers;        // search taps with depth < their ref, 0..16
+    float blockerDepth;  // their mean depth, light depth [0,1]; 0 when there is none
+    float penumbra;      // texels: (ref - blockerDepth) * S, the full width; 0 without blockers
+    float filterRadius;  // texels: clamp(penumbra / 2, MIN, MAX)
+};
+
+PCF_FN float pcfPcssRadius(float r) { return clamp(r, PCF_PCSS_MIN_RADIUS, PCF_PCSS_MAX_RADIUS); }
+
+// Steps 1 and 2. Each search tap is recorded with weight 0 (it decides the width, not the
+// visibility); a blocker is a texel nearer than the tap's ref (the hard comparison, also under
+// soft bias: the soft ramp is about the receiver's own acne, not about who blocks).
+PCF_MAP_FN PcfPcssEstimate pcfPcssEstimate(Map map, vec2 uv, PcfRef ref, float penumbraScale,
+                                           vec2 rotation) {
+    ivec2 size = mapSize(map);
+    vec2 texelUv = vec2(1.0f) / vec2(size);
+    float zr = pcfDepthRef(map, ref.ref);
+    PCF_PRECISE float searchHalf = zr * penumbraScale * 0.5f;
+    float search = pcfPcssRadius(searchHalf);
+    int blockers = 0;
+    PCF_PRECISE float depthSum = 0.0f;
+    for (int k = 0; k < PCF_PCSS_TAPS; ++k) {
+        PCF_PRECISE vec2 tapUv = uv + pcfPoissonOffset(k, search, rotation) * texelUv;
+        PCF_PRECISE vec2 p = tapUv * vec2(size);
+        ivec2 texel = ivec2(floor(p));
+        pcfFetch(map, PCF_FETCH_POINT, tapUv, 0.0f);
+        pcfTapWanted(map, texel);
+        ivec2 t = pcfClampTexel(texel, size);
+        float depth = fetchDepth(map, t);
+        float tapRef = ref.ref;
+        if (ref.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
+            tapRef = pcfRefAt(ref, pcfTexelCentreUv(texel, size));
+        }
+        float r = pcfDepthRef(map, tapRef);
+        float lit = pcfCompare(depth, r);
+        pcfTap(map, t, depth, r, lit, 0.0f);
+        if (lit == 0.0f) {
+            blockers += 1;
+            depthSum += depth;
+        }
+    }
+    PCF_PRECISE float blockerDepth = depthSum * PCF_PCSS_RECIPROCALS[blockers];
+    PCF_PRECISE float penumbra = blockers > 0 ? (zr - blockerDepth) * penumbraScale : 0.0f;
+    PCF_PRECISE float halfWidth = penumbra * 0.5f;
+    return PcfPcssEstimate(search, blockers, blockerDepth, penumbra, pcfPcssRadius(halfWidth));
+}
+
+// pcss: no blocker in the region means fully lit (the seed's early out); otherwise step 3,
+// poisson's 16 comparisons on a disk of the estimated radius.
+PCF_MAP_FN float pcfPcss(Map map, vec2 uv, PcfRef ref, float penumbraScale, vec2 rotation) {
+    PcfPcssEstimate e = pcfPcssEstimate(map, uv, ref, penumbraScale, rotation);
+    if (e.blockers == 0) return 1.0f;
+    return pcfPoisson(map, uv, ref, e.filterRadius, rotation);
+}
+
 // The entry point with a bias mode: visibility of a receiver seen at uv, compared per tap as
 // ref (PcfRef) says. Weighted sums can land an ulp above 1; the result is clamped to [0,1].
-PCF_MAP_FN float pcfFilterRef(Map map, vec2 uv, PcfRef ref, PcfParams prm) {
+// The ref every method's taps see: under receiver-plane bias, the plane's slope capped.
+PCF_FN PcfRef pcfLookupRef(PcfRef ref) {
     if (ref.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
         ref.bias.dzduv = pcfClampDzDuv(ref.bias.dzduv, ref.bias.rpdbMax);
     }
+    return ref;
+}
+
+PCF_MAP_FN float pcfFilterRef(Map map, vec2 uv, PcfRef lookupRef, PcfParams prm) {
+    PcfRef ref = pcfLookupRef(lookupRef);
     float v;
     if (prm.method == PCF_NEAREST) {
         v = pcfNearest(map, uv, ref, 1.0f);
@@ -755,8 +856,10 @@ PCF_MAP_FN float pcfFilterRef(Map map, vec2 uv, PcfRef ref, PcfParams prm) {
         v = pcfHw(map, uv, ref, prm.kernel);
     } else if (prm.method == PCF_TENT) {
         v = pcfTent(map, uv, ref, prm.kernel);
-    } else {
+    } else if (prm.method == PCF_POISSON) {
         v = pcfPoisson(map, uv, ref, prm.radius, prm.rotation);
+    } else {
+        v = pcfPcss(map, uv, ref, prm.penumbraScale, prm.rotation);
     }
     return clamp(v, 0.0f, 1.0f);
 }

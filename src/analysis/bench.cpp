@@ -282,10 +282,11 @@ class BenchRun {
         row.shimmer = measureShimmer(s);
         // One untimed draw of each timed pass: compiles its programs before the rounds.
         row.timer = mRenderer.timeCameraPass(s, 1).timer;
-        mLookupPass.draw(s.pcfParams(), s.rotate, s.biasParams().kernelBias());
-        if (mOptions.reference) mLookupPass.drawReference(s.pcfParams());
+        PcfParams prm = mRenderer.pcfParams(s);  // pcss: the scene light's size in the map
+        mLookupPass.draw(prm, s.rotate, s.biasParams().kernelBias());
+        if (mOptions.reference) mLookupPass.drawReference(prm);
         glFinish();
-        row.cpuNsPerPixel = timeCpuKernel(map(mMaps, p.mapSize), mCpuLookups, s.pcfParams(),
+        row.cpuNsPerPixel = timeCpuKernel(map(mMaps, p.mapSize), mCpuLookups, prm,
                                           mOptions.cpuPasses, mOptions.cpuThreads)
                                 .nsPerPixel;
         row.cpuPixels = static_cast<int>(mCpuLookups.size());
@@ -356,7 +357,7 @@ class BenchRun {
     // One sample of each of the point's passes, back to back.
     void timePoint(const RenderSettings& s, PointSamples& samples) {
         samples.scene.add(mRenderer.timeCameraPass(s, 1, false));
-        PcfParams prm = s.pcfParams();
+        PcfParams prm = mRenderer.pcfParams(s);
         PcfBias bias = s.biasParams().kernelBias();
         samples.lookup.add(timeGpu([&] { mLookupPass.draw(prm, s.rotate, bias); }, 1, false));
         if (mOptions.reference) {
@@ -444,6 +445,7 @@ BenchResult runBenchSweep(const BenchConfig& config, BenchContext callbacks,
     GroundTruthOptions truthOptions;
     truthOptions.spp = options.truthSpp;
     truthOptions.threads = options.cpuThreads;
+    truthOptions.area = options.areaTruth;
     result.truth = computeGroundTruth(config.scene, options.frameSize, truthOptions);
     // The chart's accuracy axis is the edge band's error: without a shadow edge in view every
     // method would score a perfect 0 and the chart would say nothing. Refuse instead.

@@ -61,7 +61,10 @@ struct BenchOptions {
     float sigma = 1.0f;
     glm::ivec2 frameSize{1280, 720};
     int truthSpp = DEFAULT_TRUTH_SPP;  // K x K first-pass samples of the ground truth (>= 2)
-    int shimmerFrames = 8;             // frames of the grid slid 1/32 texel apart (< 2: none)
+    // The truth against the light's disk (GroundTruthOptions::area), not its centre: the scene's
+    // directional light must have an angular diameter.
+    bool areaTruth = false;
+    int shimmerFrames = 8;  // frames of the grid slid 1/32 texel apart (< 2: none)
     // The clean-pixel masks (acne, leak) test every stride-th pixel in x and y; 0 = the stride
     // that leaves about CLEAN_SAMPLE_TARGET compared pixels.
     int cleanStride = 0;

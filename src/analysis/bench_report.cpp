@@ -197,7 +197,7 @@ std::string methodsNote(const BenchSetup& setup, const std::string& timer,
         std::to_string(setup.cpuThreads) + " thread" + (setup.cpuThreads == 1 ? "" : "s") +
         " sharing each pass, the median of " + std::to_string(setup.cpuPasses) + " passes over " +
         std::to_string(setup.cpuLookups) + " receiver pixels' light-space lookups. ";
-    md += "Errors are of visibility against the ray-cast ground truth (" +
+    md += "Errors are of visibility against the ray-cast ground truth, " + setup.truthLight + " (" +
           std::to_string(setup.truthSpp) + "x" + std::to_string(setup.truthSpp) +
           " first-pass samples per pixel, then " + std::to_string(setup.truthRefined) +
           " edge pixels integrated along sub-scanlines; largest per-pixel bound " +

@@ -56,6 +56,9 @@ struct BenchSetup {
     int cpuPasses = 0;
     int cpuThreads = 1;
     int truthSpp = 0;
+    // Which truth: "hard" (the light's centre) or the area light's, e.g. "area: a sun disk of
+    // 2 degrees" (what the chart's title says too).
+    std::string truthLight = "hard";
     int comparedPixels = 0;
     int edgePixels = 0;
     float truthMaxBound = 0.0f;  // the ground truth's largest per-pixel bound

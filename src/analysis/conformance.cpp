@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace pcf {
@@ -81,6 +82,24 @@ VisibilityEnvelope hwTapEnvelope(const ShadowMap& map, vec2 uv, float ref,
     return {std::max(0.0f, env.lo - w), std::min(1.0f, env.hi + w)};
 }
 
+// pcss (Fernando, "Percentage-Closer Soft Shadows", NVIDIA, 2005): the blocker search's taps
+// (recorded with weight 0) decide whether the filter runs and how wide it is, a jump rather
+// than a weight. A search bit that may go either way on some GPU leaves no claim ([0, 1]);
+// with no blocker certain the result is exactly 1 (the early out). Otherwise the filter's taps
+// are judged like any other reads.
+std::optional<VisibilityEnvelope> pcssSearchEnvelope(const ShadowMap& map, const Recording& rec,
+                                                     float eps) {
+    int blockers = 0;
+    for (const TapRecord& t : rec.taps) {
+        if (t.weight != 0.0f) continue;
+        BitRange r = compareRange(map, t.texel, t.ref, eps);
+        if (r.lo != r.hi) return VisibilityEnvelope{0.0f, 1.0f};
+        blockers += r.lo == 0.0f;
+    }
+    if (blockers == 0) return VisibilityEnvelope{1.0f, 1.0f};
+    return std::nullopt;
+}
+
 VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
                                       const PcfParams& prm, const ConformancePrecision& prec) {
     return visibilityEnvelope(
@@ -96,6 +115,9 @@ VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
     exact.precision = PCF_PRECISION_EXACT;
     Recording rec;
     filterRecorded(map, uv, ref, exact, bias, rec);
+    if (prm.method == PCF_PCSS) {
+        if (std::optional<VisibilityEnvelope> env = pcssSearchEnvelope(map, rec, eps)) return *env;
+    }
     // Soft and interpolated comparisons are shader arithmetic on fetched texels: their recorded
     // values are what any GPU computes, but for float rounding (a continuous ramp, or one
     // comparison against a lerped depth that the reference tolerance covers).

@@ -701,6 +701,8 @@ float footprintReachTexels(const StabilityMethod& m, float poissonRadius) {
             return 1.0f;
         case Method::Poisson:
             return poissonRadius + 0.5f;
+        case Method::Pcss:  // its disks' radius follows the blocker: at most the cap
+            return PCF_PCSS_MAX_RADIUS + 0.5f;
         case Method::Naive:
         case Method::Gather:
         case Method::Hw:

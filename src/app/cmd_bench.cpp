@@ -38,6 +38,7 @@
 #include "kernel/settings.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
+#include "scene/pcss.h"
 
 namespace pcf {
 
@@ -67,7 +68,8 @@ struct BenchCommandOptions {
     bool full = false;
     std::string chartSize;
     int spp = DEFAULT_TRUTH_SPP;
-    int repeats = 9;  // timing rounds; 5 with --quick unless given
+    std::string truth = "hard";  // --truth hard|area
+    int repeats = 9;             // timing rounds; 5 with --quick unless given
     int shimmerFrames = 8;
     std::string timing = "lookup";
     bool reference = false;
@@ -216,6 +218,31 @@ BenchOptions parseSweep(const BenchCommandOptions& o) {
 // frame pixel; issue 24's run at 8192x8192 had reached 9.8 GiB (157 a pixel) and not finished.
 constexpr std::uint64_t BENCH_BYTES_PER_PIXEL = 160;
 
+// --truth area: the truth integrates over the light's disk, the one pcss filters for
+// (scene/pcss.h effectiveLightSizeDeg: --light-size, else the scene's, else the sun's).
+void applyTruth(const BenchCommandOptions& o, BenchPlan& plan) {
+    if (o.truth != "hard" && o.truth != "area") {
+        throw UsageError("unknown --truth '" + o.truth + "' (known: hard, area)");
+    }
+    plan.config.options.areaTruth = o.truth == "area";
+    Light& light = plan.config.scene.light;
+    if (!plan.config.options.areaTruth) return;
+    if (light.type != LightType::Directional) {
+        throw UsageError("--truth area takes a directional light (scene '" +
+                         plan.config.scene.name + "' has a spot light)");
+    }
+    light.angularDiameterDeg = effectiveLightSizeDeg(light, plan.config.options.base.lightSize);
+}
+
+// Which truth the report and the charts say they measured against.
+std::string truthWords(const BenchPlan& plan) {
+    if (!plan.config.options.areaTruth) return "hard (the light's centre)";
+    char buf[80];
+    std::snprintf(buf, sizeof buf, "area (a sun disk of %g degrees)",
+                  static_cast<double>(plan.config.scene.light.angularDiameterDeg));
+    return buf;
+}
+
 BenchPlan parsePlan(const BenchCommandOptions& o) {
     BenchPlan plan;
     plan.config.options = parseSweep(o);
@@ -229,6 +256,7 @@ BenchPlan parsePlan(const BenchCommandOptions& o) {
     }
     plan.timing = o.timing == "scene" ? ChartTiming::Scene : ChartTiming::Lookup;
     plan.config.scene = o.render.loadScene();
+    applyTruth(o, plan);
     return plan;
 }
 
@@ -272,11 +300,11 @@ class BenchReporter {
         const BenchOptions& o = mPlan.config.options;
         int threads = resolveThreadCount(o.cpuThreads);
         std::fprintf(stderr,
-                     "bench: %s, %dx%d, %zu runs on %s; ground truth: %dx%d first-pass samples "
-                     "per pixel, edges refined, on %d thread%s\n",
+                     "bench: %s, %dx%d, %zu runs on %s; ground truth %s: %dx%d first-pass "
+                     "samples per pixel, edges refined, on %d thread%s\n",
                      mPlan.config.scene.name.c_str(), o.frameSize.x, o.frameSize.y,
-                     benchPoints(o).size(), mGl.renderer().c_str(), o.truthSpp, o.truthSpp, threads,
-                     threads == 1 ? "" : "s");
+                     benchPoints(o).size(), mGl.renderer().c_str(), truthWords(mPlan).c_str(),
+                     o.truthSpp, o.truthSpp, threads, threads == 1 ? "" : "s");
         std::fprintf(stderr,
                      "bench: ground truth done (%.1f s, %d pixels refined, largest bound %.5f)\n",
                      mClock.seconds(), truth.refinedPixels, truth.maxBound);
@@ -325,6 +353,7 @@ BenchSetup setupOf(const BenchPlan& plan, const BenchResult& result, const GlCon
     setup.cpuPasses = o.cpuPasses;
     setup.cpuThreads = resolveThreadCount(o.cpuThreads);
     setup.truthSpp = o.truthSpp;
+    setup.truthLight = truthWords(plan);
     setup.comparedPixels = result.regions.comparedCount;
     setup.edgePixels = result.regions.edgeCount;
     setup.truthMaxBound = result.truth.maxBound;
@@ -342,7 +371,8 @@ void writeCharts(const BenchPlan& plan, const BenchResult& result, const GlConte
                  const fs::path& staging) {
     const BenchOptions& o = plan.config.options;
     std::string where = plan.config.scene.name + ", " + std::to_string(o.frameSize.x) + "x" +
-                        std::to_string(o.frameSize.y);
+                        std::to_string(o.frameSize.y) +
+                        (o.areaTruth ? ", truth: " + truthWords(plan) : std::string());
     std::string indicative = quick ? " (--quick: timings indicative only)" : "";
     std::string timer = result.rows.empty() ? std::string() : result.rows.front().timer;
     SpeedChartText text;
@@ -455,6 +485,10 @@ Command addBenchCommand(CLI::App& app) {
     sub->add_option("--spp", o->spp,
                     "ground truth: K x K first-pass samples per pixel (2..64, default 2); edges "
                     "are then integrated to a 1/512 bound");
+    sub->add_option("--truth", o->truth,
+                    "hard: the truth of the light's centre (default); area: integrated over the "
+                    "light's disk (--light-size, else the scene's angular_diameter, else the "
+                    "sun's 0.53 degrees), the truth soft shadows and pcss are measured against");
     sub->add_option("--repeats", o->repeats,
                     "timing rounds (default 9): each times every run once, round-robin; median "
                     "and IQR per run");

@@ -18,6 +18,12 @@ namespace pcf {
 
 namespace {
 
+// pcss without a scene: the light's size in the map (texels of penumbra per unit of light depth)
+// when --penumbra-scale is not given. On the example map (caster 0.3, ground 0.55) a receiver
+// at 0.5 gets a penumbra of about 3 texels, inside the 8 x 8 map.
+constexpr float DEFAULT_TRACE_PENUMBRA_SCALE = 16.0f;
+constexpr float MAX_TRACE_PENUMBRA_SCALE = 1.0e6f;
+
 struct TraceOptions {
     std::string mapPath;
     bool example = false;
@@ -30,6 +36,7 @@ struct TraceOptions {
     std::string dzduv;        // receiver-plane: "DU,DV"
     CLI::App* sub = nullptr;  // to ask which options were given
     float rotationDeg = 0.0f;
+    float penumbraScale = DEFAULT_TRACE_PENUMBRA_SCALE;
     bool json = false;
     std::string depthFormat = "32f";
 };
@@ -56,9 +63,13 @@ ShadowSettings traceSettings(const TraceOptions& o) {
 // The filter's parameters: the settings', and trace's own --rotation.
 PcfParams traceParams(const TraceOptions& o, const ShadowSettings& s) {
     float rad = o.rotationDeg * 0.0174532925f;
-    PcfParams prm = s.pcfParams(vec2(std::cos(rad), std::sin(rad)));
+    PcfParams prm = s.pcfParams(vec2(std::cos(rad), std::sin(rad)), o.penumbraScale);
     if (auto why = cliParamsProblem(prm)) throw UsageError(*why);
     requireRange("--rotation", o.rotationDeg, -360.0f, 360.0f);
+    requireRange("--penumbra-scale", o.penumbraScale, 0.0f, MAX_TRACE_PENUMBRA_SCALE);
+    if (o.sub->count("--penumbra-scale") > 0 && prm.method != PCF_PCSS) {
+        throw UsageError("--penumbra-scale is for --method pcss (the light's size in the map)");
+    }
     return prm;
 }
 
@@ -151,7 +162,9 @@ Command addTraceCommand(CLI::App& app) {
     defaults.method = PCF_BILINEAR2X2;
     defaults.bias = BiasMode::None;
     // trace has --rotation (degrees) in the place of --rotate.
-    o->shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias}, defaults, {"rotate"});
+    // pcss's light size is --penumbra-scale here: trace has no scene to measure the light in.
+    o->shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias}, defaults,
+                    {"rotate", "light_size"});
     sub->add_option(
         "--angle", o->angleDeg,
         "slope: angle in degrees between the receiver's normal and the light (default 0)");
@@ -160,7 +173,10 @@ Command addTraceCommand(CLI::App& app) {
         "receiver-plane: the receiver's DU,DV = d(depth)/d(u, v) (render --raw writes them in "
         "dzduv.exr). For --bias normal give --uv and --z of the point already moved "
         "(lightspace.exr holds them)");
-    sub->add_option("--rotation", o->rotationDeg, "poisson: disk rotation in degrees");
+    sub->add_option("--rotation", o->rotationDeg, "poisson, pcss: disk rotation in degrees");
+    sub->add_option("--penumbra-scale", o->penumbraScale,
+                    "pcss: the light's size in the map, texels of penumbra per unit of light "
+                    "depth between receiver and blocker (default 16)");
     sub->add_flag("--json", o->json, "print the trace as one JSON object");
     sub->add_option("--depth-format", o->depthFormat,
                     "the map's format: 16, 24 (fixed-point: ref clamped to [0,1]) or 32f");

@@ -122,6 +122,10 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
     if (!weights || !precision || !format) {
         throw UsageError("render.json: unknown weights, precision or depth_format (" + where + ")");
     }
+    // pcss's light size in the map; folders written before pcss have none (0: no method used it).
+    if (json.contains("penumbra_scale")) {
+        r.prm.penumbraScale = jsonFloat(json, "penumbra_scale", where);
+    }
     r.prm.weights = *weights;
     r.prm.sigma = jsonFloat(json, "sigma", where);
     r.prm.precision = *precision;

@@ -125,7 +125,7 @@ DepthFormat depthFormatOption(const std::string& name) {
     return *f;
 }
 
-std::string settingsJson(const ShadowSettings& s) {
+std::string settingsJson(const ShadowSettings& s, float penumbraScale) {
     Json j = Json::object();
     for (const ParamInfo& p : allParams()) {
         if (!p.rawJson) continue;
@@ -142,6 +142,7 @@ std::string settingsJson(const ShadowSettings& s) {
             },
             p.field);
     }
+    j["penumbra_scale"] = jsonNumber(penumbraScale);
     return jsonDump(j) + "\n";
 }
 

@@ -47,7 +47,9 @@ class SettingOptions {
 // What `pcfscope verify` needs to repeat the lookups of a --raw folder, as its render.json: the
 // parameters the table marks rawJson (the method and its parameters, the map's format, the
 // precision model, the bias mode and what changes each tap's comparison), one JSON object.
-std::string settingsJson(const ShadowSettings& s);
+// penumbraScale: pcss's, as the frame was rendered with it (scene/pcss.h), written as
+// "penumbra_scale" so that `verify` repeats the very lookups; 0 for the other methods.
+std::string settingsJson(const ShadowSettings& s, float penumbraScale = 0.0f);
 
 // The shared options' names parsed, each with one error for every command ("unknown method
 // 'blur' (known: ...)", "unknown --weights 'sharp' (known: box, binomial, gaussian)").

@@ -53,7 +53,7 @@ std::optional<float> Session::visibilityWith(int method, int kernel) const {
     LessonSettings s = mSettings;
     s.method = method;
     s.kernel = kernel;
-    PcfParams prm = s.pcfParams(mLookup->uv, mMap.width());
+    PcfParams prm = s.pcfParams(mLookup->uv, mMap.width(), mRenderer->pcfParams(s).penumbraScale);
     return traceLookup(mMap, mLookup->uv, mLookup->z, mLookup->ref, prm, mLookup->bias).visibility;
 }
 

@@ -55,8 +55,9 @@ std::optional<PixelLookup> tracePixel(const SceneRenderer& renderer, const Shado
     out.bias = s.biasParams();
     out.bias.dzduv = glm::vec2(receiver[0], receiver[1]);
     out.z = receiver[3] == 1.0f ? receiver[2] : out.ref + s.depthBias();
+    float scale = renderer.pcfParams(s).penumbraScale;  // pcss's (scene/pcss.h)
     out.trace =
-        traceLookup(map, out.uv, out.z, out.ref, s.pcfParams(out.uv, map.width()), out.bias);
+        traceLookup(map, out.uv, out.z, out.ref, s.pcfParams(out.uv, map.width(), scale), out.bias);
     return out;
 }
 

@@ -108,6 +108,16 @@ constexpr std::array<MethodInfo, PCF_METHOD_COUNT> METHODS = {{
      MethodReads::Texels,
      {},
      {0.61f, 0.46f, 0.37f, 1.0f}},
+    {PCF_PCSS,
+     "pcss",
+     "pcss",
+     "soft shadows: a blocker search, a penumbra width from the light size, then poisson that wide",
+     false,
+     false,
+     false,
+     MethodReads::Texels,
+     {},
+     {0.47f, 0.47f, 0.47f, 1.0f}},
 }};
 
 // The table is in id order: methodInfo indexes it by id.
@@ -118,7 +128,7 @@ constexpr bool inIdOrder() {
     return true;
 }
 static_assert(inIdOrder());
-static_assert(static_cast<int>(Method::Poisson) == PCF_POISSON && PCF_METHOD_COUNT == 9);
+static_assert(static_cast<int>(Method::Pcss) == PCF_PCSS && PCF_METHOD_COUNT == 10);
 
 }  // namespace
 
@@ -169,6 +179,8 @@ FetchCounts fetchCounts(int method, int kernel) {
         }
         case Method::Poisson:
             return {16, 0, 0};
+        case Method::Pcss:  // at most: the 16 search taps, then 16 filter taps unless none blocks
+            return {2 * PCF_PCSS_TAPS, 0, 0};
     }
     throw std::out_of_range("fetchCounts: unknown method");
 }

@@ -14,7 +14,7 @@ namespace pcf {
 // The methods, typed: the kernel's PCF_* ids (shaders/shared/pcf_kernel.h, where GLSL selects
 // by define) as C++ switches on them. Switches over Method have no `default:`, so the compiler
 // names every place a new method must be handled.
-enum class Method { Nearest, Box2x2, Bilinear2x2, Hw2x2, Naive, Gather, Hw, Tent, Poisson };
+enum class Method { Nearest, Box2x2, Bilinear2x2, Hw2x2, Naive, Gather, Hw, Tent, Poisson, Pcss };
 
 // How a method reads the map: where receiver-plane bias takes each tap's ref (per texel, per
 // gather, per hardware tap), whether soft bias can see the depths (not through the texture
@@ -23,7 +23,7 @@ enum class MethodReads { Texels, Gathers, HwTaps };
 
 // Everything pcfscope says about a method, in its one table entry (methods.cpp).
 struct MethodInfo {
-    int id;                      // PCF_NEAREST .. PCF_POISSON, the kernel's id
+    int id;                      // PCF_NEAREST .. PCF_PCSS, the kernel's id
     std::string_view name;       // the command line's id, e.g. "pcf-gather"
     std::string_view shortName;  // the charts' label, e.g. "gather"
     std::string_view summary;    // one line for `pcfscope methods`

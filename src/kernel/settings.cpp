@@ -31,7 +31,11 @@ const ParamInfo PARAMS[] = {
     {"radius", &ShadowSettings::radius, ParamGroup::Filter, "uRadius", TEXELS, 0.0,
      MAX_POISSON_RADIUS, true, "poisson: disk radius in texels", true},
     {"rotate", &ShadowSettings::rotate, ParamGroup::Filter, "", "", 0, 0, false,
-     "poisson: rotate the disk per pixel", true},
+     "poisson, pcss: rotate the disk per pixel", true},
+    {"light_size", &ShadowSettings::lightSize, ParamGroup::Filter, "", "degrees", 0.0,
+     MAX_LIGHT_SIZE_DEG, false,
+     "pcss: the light's angular diameter in degrees (0: the scene light's, or the sun's 0.53)",
+     true},
     {"weights", NamedField<int>{&ShadowSettings::weights, weightsName, weightsFromName,
         [] { return std::string("box, binomial, gaussian"); }, "weights"}, ParamGroup::Filter,
      "", "", 0, 0, false,
@@ -82,8 +86,9 @@ std::string numberText(double v) {
 
 }  // namespace
 
-PcfParams ShadowSettings::pcfParams(vec2 rotation) const {
+PcfParams ShadowSettings::pcfParams(vec2 rotation, float penumbraScale) const {
     PcfParams p = makeParams(method, kernel, radius, rotation);
+    p.penumbraScale = penumbraScale;
     p.weights = weights;
     p.sigma = sigma;
     p.precision = precision;

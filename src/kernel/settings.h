@@ -26,6 +26,9 @@ enum class CullMode { Back, Front, None };
 // The shadow map is N x N texels, N in this range.
 constexpr int MIN_MAP_SIZE = 4;
 constexpr int MAX_MAP_SIZE = 4096;
+// pcss's light size, degrees: the same bound as a scene light's angular_diameter (scene/light.h
+// MAX_ANGULAR_DIAMETER_DEG; scene/pcss.cpp asserts the two equal).
+constexpr float MAX_LIGHT_SIZE_DEG = 10.0f;
 // The largest frame side (window, export, chart) in pixels.
 constexpr int MAX_FRAME_SIDE = 8192;
 
@@ -47,10 +50,13 @@ constexpr std::string_view CULL_MODE_NAMES = "back, front, none";
 // (LessonSettings) add what only they need. Each field's key, flag, uniform, unit, range and
 // help are its row of PARAMS (allParams()).
 struct ShadowSettings {
-    int method = PCF_GATHER;              // a kernel id, PCF_NEAREST .. (methods.h)
-    int kernel = 3;                       // N
-    float radius = 1.0f;                  // poisson, texels
-    bool rotate = false;                  // poisson: rotate the disk per pixel
+    int method = PCF_GATHER;  // a kernel id, PCF_NEAREST .. (methods.h)
+    int kernel = 3;           // N
+    float radius = 1.0f;      // poisson, texels
+    bool rotate = false;      // poisson, pcss: rotate the disk per pixel
+    // pcss: the light's angular diameter in degrees; 0 = the scene light's (its
+    // angular_diameter, or the sun's when it has none): scene/pcss.h effectiveLightSizeDeg
+    float lightSize = 0.0f;
     int weights = PCF_WEIGHTS_BOX;        // pcf-naive, pcf-gather: PCF_WEIGHTS_*
     float sigma = 1.0f;                   // gaussian weights, texels
     int precision = PCF_PRECISION_EXACT;  // hardware taps and gathers: PCF_PRECISION_*
@@ -68,7 +74,9 @@ struct ShadowSettings {
 
     // The kernel's parameters; `rotation` is the Poisson disk's (cos, sin), when rotate says so
     // the caller's per-pixel one.
-    PcfParams pcfParams(vec2 rotation = vec2(1.0f, 0.0f)) const;
+    // pcss's penumbraScale (texels per light depth) depends on the scene and the map: the
+    // caller's, from scene/pcss.h penumbraScale(); 0 without a scene.
+    PcfParams pcfParams(vec2 rotation = vec2(1.0f, 0.0f), float penumbraScale = 0.0f) const;
     // The mode and its parameters, as the kernel and the trace take them.
     BiasParams biasParams() const;
     // The constant depth subtracted from z first: 0 for BiasMode::None (kernel/bias.h).

@@ -55,6 +55,21 @@ int tapsChangedByPlane(const Trace& tr) {
     return changed;
 }
 
+namespace {
+
+// pcss records its search taps with weight 0 (pcf_kernel.h pcfPcssEstimate): they choose the
+// filter's width, the filter's taps make the visibility. When no search tap blocks there is no
+// filter and the visibility, 1, is the mean of the 16 search bits (all 1): the search taps then
+// weigh 1/16 each, so visibility = sum(weight * lit) holds for every lookup (DESIGN.md 4).
+void weighPcssSearch(Trace& tr) {
+    if (tr.taps.size() != static_cast<size_t>(PCF_PCSS_TAPS)) return;
+    float w = 1.0f / static_cast<float>(PCF_PCSS_TAPS);
+    for (TapRecord& t : tr.taps) t.weight = w;
+    for (FetchRecord& f : tr.fetches) f.weight = w;
+}
+
+}  // namespace
+
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm) {
     BiasParams b;
     b.mode = ref == z ? PCF_BIAS_NONE : PCF_BIAS_CONSTANT;
@@ -76,6 +91,7 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
     tr.visibility = filterRecorded(map, uv, ref, prm, bias.kernelBias(), rec);
     tr.taps = std::move(rec.taps);
     tr.fetches = std::move(rec.fetches);
+    if (prm.method == PCF_PCSS) weighPcssSearch(tr);
     tr.weights = mergeWeights(tr.taps);
     tr.counts = countFetches(tr);
     tr.fixedPoint = map.isFixedPoint();
@@ -95,6 +111,11 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
             break;
         case Method::Tent:
             tr.footprint = pcfTentBase(uv, map.size());
+            break;
+        case Method::Pcss:
+            tr.pcss = pcfPcssEstimate(plainMap(map, prm), uv,
+                                      pcfLookupRef(PcfRef(ref, uv, bias.kernelBias())),
+                                      prm.penumbraScale, prm.rotation);
             break;
         case Method::Nearest:
         case Method::Box2x2:

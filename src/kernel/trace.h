@@ -43,7 +43,9 @@ enum class TraceStepKind {
     Gather,               // pcf-gather: the comparison gathers
     TentTaps,             // tent: where its taps sit and what they weigh
     TentHardwareTaps,     // tent: the taps taken
-    DiskPoints,           // poisson: the disk's points
+    DiskPoints,           // poisson, pcss: the disk's points
+    BlockerSearch,        // pcss: the search disk's texels, the blockers and their mean depth
+    PenumbraWidth,        // pcss: the penumbra's width from the blocker's depth, the filter radius
     InterpolatedCompare,  // interpolated depth: one comparison against the lerped depth
     Precision,            // hw8: the texture unit's 1/256 texel steps
     Result,               // the visibility: the last step (box2x2 ends with AverageBits)
@@ -73,6 +75,11 @@ struct Trace {
     // The footprint the method floors, as the kernel computed it (never derived again here):
     // pcf-gather: pcfKernelFootprint (origin, g); tent: pcfTentBase (b, (s, t)). Zero otherwise.
     PcfFootprint footprint{ivec2(0), vec2(0.0f)};
+    // pcss: what its blocker search and penumbra estimate found, as the kernel computed them
+    // (pcfPcssEstimate). Its first PCF_PCSS_TAPS taps are the search's (weight 0; 1/16 each
+    // when none blocks and they alone give the visibility, 1), the rest the filter's. Zero
+    // otherwise.
+    PcfPcssEstimate pcss{0.0f, 0, 0.0f, 0.0f, 0.0f};
     // The texture unit's precision (issue 10): the lookup's sub-texel fraction as a float and
     // rounded to 1/256 texel (hw8), and the visibility the kernel gives under each model.
     bool usesTextureUnit = false;  // the method issues hardware taps or gathers

@@ -1,6 +1,7 @@
 // trace_explain.cpp: the English of a trace. Reads the record only; see trace_explain.h.
 #include "kernel/trace_explain.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -44,6 +45,10 @@ const char* stepTitle(TraceStepKind kind) {
             return "Take the hardware taps";
         case TraceStepKind::DiskPoints:
             return "Compare the disk's points";
+        case TraceStepKind::BlockerSearch:
+            return "Search for blockers";
+        case TraceStepKind::PenumbraWidth:
+            return "Estimate the penumbra's width";
         case TraceStepKind::InterpolatedCompare:
             return "Compare against the interpolated depth";
         case TraceStepKind::Precision:
@@ -88,6 +93,10 @@ const char* stepKindName(TraceStepKind kind) {
             return "tent_hardware_taps";
         case TraceStepKind::DiskPoints:
             return "disk_points";
+        case TraceStepKind::BlockerSearch:
+            return "blocker_search";
+        case TraceStepKind::PenumbraWidth:
+            return "penumbra_width";
         case TraceStepKind::InterpolatedCompare:
             return "interpolated_compare";
         case TraceStepKind::Precision:
@@ -546,6 +555,66 @@ void explainPoisson(const Trace& tr, Steps& out) {
                 "banding for noise.");
 }
 
+// pcss (Fernando 2005, see pcf_kernel.h): the search disk's taps, the penumbra from the mean
+// blocker depth, then the filter disk's taps; every number is the kernel's (tr.pcss, tr.taps).
+void explainPcss(const Trace& tr, Steps& out) {
+    const PcfPcssEstimate& e = tr.pcss;
+    float angle = std::atan2(tr.params.rotation.y, tr.params.rotation.x) * 57.2957795f;
+    std::ostringstream s;
+    s << "The light has a size: S = " << num(tr.params.penumbraScale)
+      << " texels of penumbra per unit of light depth between receiver and blocker. A blocker "
+         "further than ref * S / 2 = "
+      << num(tr.ref) << " * " << num(tr.params.penumbraScale) << " / 2 texels away cannot hide "
+      << "any of the light, so 16 points of the Poisson disk, radius " << num(e.searchRadius)
+      << " texels (kept within [" << num(PCF_PCSS_MIN_RADIUS) << ", " << num(PCF_PCSS_MAX_RADIUS)
+      << "]), rotated by " << num(angle)
+      << " degrees, read the nearest texel; a depth below ref is a blocker:";
+    float sum = 0.0f;
+    size_t searchTaps = std::min(tr.taps.size(), static_cast<size_t>(PCF_PCSS_TAPS));
+    for (size_t k = 0; k < searchTaps; ++k) {
+        const TapRecord& t = tr.taps[k];
+        vec2 off = pcfPoissonOffset(static_cast<int>(k), e.searchRadius, tr.params.rotation);
+        bool blocks = t.lit < 0.5f;
+        if (blocks) sum += t.depth;
+        s << "\n  offset " << pair(off) << " -> texel " << pair(t.texel) << " depth "
+          << num(t.depth) << (blocks ? " < " : " >= ") << num(t.ref)
+          << (blocks ? ": blocker" : ": not a blocker");
+    }
+    if (e.blockers == 0) {
+        s << "\nNo blocker: the point sees the whole light.";
+        addStep(out, K::BlockerSearch, s.str());
+        addStep(out, K::Result, "visibility = 1, without filtering (no blocker, no penumbra).");
+        return;
+    }
+    s << "\n"
+      << e.blockers << " blockers, mean depth d_blocker = " << num(sum) << " / " << e.blockers
+      << " = " << num(e.blockerDepth) << ".";
+    addStep(out, K::BlockerSearch, s.str());
+    std::ostringstream w;
+    w << "Similar triangles (Fernando 2005), the light at infinity: the penumbra is "
+         "(ref - d_blocker) * S = ("
+      << num(tr.ref) << " - " << num(e.blockerDepth) << ") * " << num(tr.params.penumbraScale)
+      << " = " << num(e.penumbra) << " texels wide; the filter disk's radius is half that, "
+      << num(e.filterRadius) << " texels (kept within [" << num(PCF_PCSS_MIN_RADIUS) << ", "
+      << num(PCF_PCSS_MAX_RADIUS) << "]). Near its blocker a receiver gets a narrow, hard "
+      << "penumbra; far from it a wide, soft one.";
+    addStep(out, K::PenumbraWidth, w.str());
+    std::ostringstream f;
+    f << "16 points of the same disk, radius " << num(e.filterRadius)
+      << " texels, each compared with the nearest texel:";
+    int lit = 0;
+    for (size_t k = searchTaps; k < tr.taps.size(); ++k) {
+        const TapRecord& t = tr.taps[k];
+        vec2 off =
+            pcfPoissonOffset(static_cast<int>(k - searchTaps), e.filterRadius, tr.params.rotation);
+        f << "\n  offset " << pair(off) << " -> " << tapLine(t);
+        if (t.lit >= 0.5f) ++lit;
+    }
+    addStep(out, K::DiskPoints, f.str());
+    addStep(out, K::Result,
+            "visibility = " + std::to_string(lit) + " lit / 16 = " + num(tr.visibility) + ".");
+}
+
 // Issue 10: what an 8-bit texture unit does to this lookup.
 void stepPrecision(const Trace& tr, Steps& out) {
     std::ostringstream s;
@@ -595,6 +664,9 @@ std::vector<TraceStep> explainTrace(const Trace& tr) {
             break;
         case Method::Poisson:
             explainPoisson(tr, out);
+            break;
+        case Method::Pcss:
+            explainPcss(tr, out);
             break;
     }
     if (tr.usesTextureUnit && tr.params.precision == PCF_PRECISION_HW8) stepPrecision(tr, out);

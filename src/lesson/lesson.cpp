@@ -675,10 +675,10 @@ class LessonParser {
 
 }  // namespace
 
-PcfParams LessonSettings::pcfParams(glm::vec2 uv, int mapSizeTexels) const {
+PcfParams LessonSettings::pcfParams(glm::vec2 uv, int mapSizeTexels, float penumbraScale) const {
     vec2 rotation(1.0f, 0.0f);
     if (rotate) rotation = pcfTexelRotation(uv, ivec2(mapSizeTexels));
-    return ShadowSettings::pcfParams(rotation);
+    return ShadowSettings::pcfParams(rotation, penumbraScale);
 }
 
 Lesson parseLessonFile(const std::string& path) {

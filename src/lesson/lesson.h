@@ -111,8 +111,9 @@ struct LessonSettings : ShadowSettings {
     float sunTurn = 0.0f;
 
     // The kernel's parameters for a lookup at uv in a map of mapSize texels: the Poisson disk
-    // turns with the texel looked up (pcfTexelRotation), as the shaders turn it.
-    PcfParams pcfParams(glm::vec2 uv, int mapSize) const;
+    // turns with the texel looked up (pcfTexelRotation), as the shaders turn it; pcss's
+    // penumbraScale is the caller's (scene/pcss.h, for the scene's light and map).
+    PcfParams pcfParams(glm::vec2 uv, int mapSize, float penumbraScale = 0.0f) const;
 
     bool operator==(const LessonSettings&) const = default;
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "kernel/shading.h"
+#include "scene/pcss.h"
 #include "scene/raycast.h"
 
 namespace pcf {
@@ -113,7 +114,8 @@ Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& sha
     PinnedLookup at = pinnedLookup(scene, shadowClipFromWorld, s, point);
     BiasParams bias = s.biasParams();
     bias.dzduv = at.dzduv;
-    return traceLookup(map, at.uv, at.z0, at.ref, s.pcfParams(at.uv, map.width()), bias);
+    float scale = pcssPcfParams(scene.light, shadowClipFromWorld, s).penumbraScale;
+    return traceLookup(map, at.uv, at.z0, at.ref, s.pcfParams(at.uv, map.width(), scale), bias);
 }
 
 PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,

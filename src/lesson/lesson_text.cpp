@@ -171,12 +171,30 @@ const std::vector<Simple>& simpleNames() {
              for (const TapRecord& tap : t.taps) n += pcfCompare(tap.depth, t.ref) < 0.5f;
              return integer(n);
          }},
+        // pcss (Fernando 2005): the blocker search and the penumbra estimate, as the kernel found
+        // them (Trace::pcss); 0 for the other methods.
+        {"pcss.scale",
+         [](const Trace& t, const StepContext&) { return number(t.params.penumbraScale); }},
+        {"pcss.search_radius",
+         [](const Trace& t, const StepContext&) { return number(t.pcss.searchRadius); }},
+        {"pcss.search_taps",
+         [](const Trace& t, const StepContext&) {
+             bool pcss = t.params.method == PCF_PCSS;
+             return integer(pcss ? std::min(static_cast<int>(t.taps.size()), PCF_PCSS_TAPS) : 0);
+         }},
+        {"pcss.blockers",
+         [](const Trace& t, const StepContext&) { return integer(t.pcss.blockers); }},
+        {"pcss.blocker_depth",
+         [](const Trace& t, const StepContext&) { return number(t.pcss.blockerDepth); }},
+        {"pcss.penumbra",
+         [](const Trace& t, const StepContext&) { return number(t.pcss.penumbra); }},
+        {"pcss.filter_radius",
+         [](const Trace& t, const StepContext&) { return number(t.pcss.filterRadius); }},
         {"cull", [](const Trace&,
                     const StepContext& c) { return text(std::string(cullModeName(c.cull))); }},
         {"depth_format",
-         [](const Trace&, const StepContext& c) {
-             return text(std::string(depthFormatName(c.depthFormat)));
-         }},
+         [](const Trace&,
+            const StepContext& c) { return text(std::string(depthFormatName(c.depthFormat))); }},
     };
     return names;
 }

@@ -273,20 +273,25 @@ void planGridLines(Planner& pl, const InspectorLayout& l, const Grid& g, const T
     pl.op([lines, line](Canvas& c) {
         for (const auto& [a, b] : lines) c.line(a, b, line, Colour{0, 0, 0, 0.9f});
     });
-    // Column labels as wide as the cells allow: "i=117", else "117", else every other one.
+    // Column labels as wide as the cells allow: "i=117", else "117" on every cell, else on the
+    // texels whose index is a multiple of the smallest step that gives a label its room (a
+    // 33-texel pcss disk at 1280x720 has 11 px cells). Row labels likewise by line height.
     int last = g.view.origin.x + g.view.size.x - 1;
-    auto fitsCell = [&](const std::string& s) {
-        return measureText(FontFace::Mono, t.label, s).x + INDEX_GAP_PX <= g.cell;
-    };
-    bool prefix = fitsCell("i=" + std::to_string(last));
-    int every = prefix || fitsCell(std::to_string(last)) ? 1 : 2;
-    for (int i = 0; i < g.view.size.x; i += every) {
+    float labelW = measureText(FontFace::Mono, t.label, std::to_string(last)).x + INDEX_GAP_PX;
+    bool prefix =
+        measureText(FontFace::Mono, t.label, "i=" + std::to_string(last)).x + INDEX_GAP_PX <=
+        g.cell;
+    int every = prefix ? 1 : indexLabelStep(g.cell, labelW);
+    for (int i = 0; i < g.view.size.x; ++i) {
+        if ((g.view.origin.x + i) % every != 0) continue;
         pl.text({area.x + (i + 0.5f) * g.cell, g.laneTop.y + INDEX_TOP_GAP_PX},
                 (prefix ? "i=" : "") + std::to_string(g.view.origin.x + i),
                 {FontFace::Mono, t.label, TEXT_DIM, TextAlign::Center}, BoxKind::Label, panel,
                 "texel-index");
     }
+    int everyRow = indexLabelStep(g.cell, lineHeightOf(t.label));
     for (int j = 0; j < g.view.size.y; ++j) {
+        if ((g.view.origin.y + j) % everyRow != 0) continue;
         pl.text({g.laneLeft.right() - INDEX_RIGHT_GAP_PX,
                  area.y + (j + 0.5f) * g.cell - lineHeightOf(t.label) * 0.5f},
                 "j=" + std::to_string(g.view.origin.y + j),
@@ -348,15 +353,18 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
                  }});
             legend.rings = true;
         } else if (tr.params.method == PCF_POISSON || tr.params.method == PCF_NAIVE ||
-                   tr.params.method == PCF_HW) {
+                   tr.params.method == PCF_HW || tr.params.method == PCF_PCSS) {
             if (!area.contains(at)) continue;
             pl.plan.drawnFetches.push_back(static_cast<int>(fi));
             float mr = highlit ? dotR * 2.0f + 2.0f : dotR + 1.0f;  // the highlight's halo too
-            marks.points.push_back({at, at, mr, "lookup", ACCENT, [=](Canvas& c, glm::vec2 p) {
+            // pcss: its first 16 reads are the blocker search's (weight 0), then the filter's.
+            bool search = tr.params.method == PCF_PCSS && fi < PCF_PCSS_TAPS;
+            Colour dot = search ? SEARCH : ACCENT;
+            marks.points.push_back({at, at, mr, "lookup", dot, [=](Canvas& c, glm::vec2 p) {
                                         if (highlit) c.circle(p, dotR * 2.0f + 1.0f, HIGHLIGHT);
-                                        c.circle(p, dotR, ACCENT);
+                                        c.circle(p, dotR, dot);
                                     }});
-            legend.dots = true;
+            (search ? legend.searchDisk : legend.dots) = true;
         } else {
             // Point reads and lookups without a mark of their own (nearest, box2x2,
             // bilinear2x2): drawn when the cells of the texels they read are.
@@ -371,18 +379,7 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
         }
     }
     glm::vec2 point = viewPoint(g, tr.uv * size);
-    if (tr.params.method == PCF_POISSON) {
-        // The disk the 16 points lie on, radius R texels round the lookup point (Jimmy,
-        // "Percentage Closer Filtering", 2010: a Poisson disk scaled by R), under the numbers.
-        legend.disk = true;
-        float radius = tr.params.radius * g.cell;
-        float w = std::max(1.0f, line - 1.0f);
-        pl.op([=](Canvas& c) {
-            c.pushClip(area);
-            c.ring(point, radius, w, ACCENT);
-            c.popClip();
-        });
-    }
+    planDisks(pl, tr, area, point, g.cell, std::max(1.0f, line - 1.0f), legend);
     float pr = std::max(POINT_MIN_PX, std::round(g.cell * POINT_PER_CELL));
     if (area.contains(point)) {
         marks.points.push_back(
@@ -788,7 +785,8 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     hiddenCells += planCellNumbers(pl, m, g, marks, t.numberFloor);
     planPointMarks(pl, l, g, marks, legend);
     for (auto& f : marks.ops) pl.op(std::move(f));
-    if (tr.params.method != PCF_NEAREST && tr.params.method != PCF_POISSON) {
+    if (tr.params.method != PCF_NEAREST && tr.params.method != PCF_POISSON &&
+        tr.params.method != PCF_PCSS) {
         legend.fraction = true;
         planFractions(pl, l, tr, g, t);
     }

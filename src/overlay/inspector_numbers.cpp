@@ -128,7 +128,12 @@ std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeed
     if (need.fraction) entries.push_back({POINT, "fx, fy: lookup point - base texel centre", BAR});
     if (need.hw8) entries.push_back({HW8_POINT, "8-bit position (1/256 texel)", OUTLINE});
     if (need.dots) entries.push_back({ACCENT, "each lookup", DOT});
-    if (need.disk) entries.push_back({ACCENT, "the disk, radius R", CIRCLE});
+    bool pcss = m.trace && m.trace->params.method == PCF_PCSS;
+    if (need.searchDisk) entries.push_back({SEARCH, "blocker search: taps, disk", CIRCLE});
+    if (need.disk) {
+        entries.push_back(
+            {ACCENT, pcss ? "filter disk: penumbra / 2" : "the disk, radius R", CIRCLE});
+    }
     if (need.rings) entries.push_back({ACCENT, "hardware tap", RING});
     if (need.gathers) entries.push_back({GATHER, "one gather (2 x 2)", OUTLINE});
     if (need.highlight) entries.push_back({HIGHLIGHT, "the fetch the text talks about", OUTLINE});

@@ -41,6 +41,7 @@ constexpr Colour STATUS{0.03f, 0.03f, 0.04f, 1.0f};
 constexpr Colour WEIGHT_BAR{0.95f, 0.35f, 0.25f, 0.9f};
 constexpr Colour HIGHLIGHT{1.0f, 0.62f, 0.10f, 1.0f};
 constexpr Colour FOOTPRINT_TINT{0.2f, 0.85f, 1.0f, 0.18f};
+constexpr Colour SEARCH{0.80f, 0.58f, 1.0f, 1.0f};  // pcss: the blocker search's taps and disk
 
 // A texel narrower than this on screen makes the grid's lines a moire that reads as acne: the
 // grid is hidden then (the footprint tint stays).
@@ -169,6 +170,15 @@ struct Grid {
     Rect insetCaption;  // the lane above the inset
 };
 
+// Texel index labels go on every `step`-th cell: the smallest of 1, 2, 5, 10, 20, 50, 100 whose
+// run of cells is at least `need` pixels long.
+inline int indexLabelStep(float cell, float need) {
+    for (int step : {1, 2, 5, 10, 20, 50}) {
+        if (static_cast<float>(step) * cell >= need) return step;
+    }
+    return 100;
+}
+
 // True when the lookup's hardware taps or gathers ran with 8 fractional bits (issue 10).
 inline bool hw8Lookup(const Trace& tr) {
     return tr.usesTextureUnit && tr.params.precision == PCF_PRECISION_HW8;
@@ -218,11 +228,18 @@ inline float lineOf(const InspectorLayout& l) {
 struct LegendNeeds {
     bool highlight = false, weightBar = false, dots = false, rings = false, gathers = false,
          fraction = false, baseCentre = false, padding = false, footprint = false;
-    bool clamped = false;    // a texel read clamped to the edge (any finite uv)
-    bool hw8 = false;        // the 8-bit position (the sub-texel inset)
-    bool movedMark = false;  // a point mark moved beside its cell's numbers, with a tick
-    bool disk = false;       // the Poisson disk's circle
+    bool clamped = false;     // a texel read clamped to the edge (any finite uv)
+    bool hw8 = false;         // the 8-bit position (the sub-texel inset)
+    bool movedMark = false;   // a point mark moved beside its cell's numbers, with a tick
+    bool disk = false;        // the Poisson disk's circle
+    bool searchDisk = false;  // pcss: the blocker search's disk and taps
 };
+
+// ---- inspector_disks.cpp: the disks poisson's and pcss's points lie on. ----
+// Rings round the lookup point (`point`, pixels; `cell` pixels per texel) clipped to `area`:
+// poisson's disk, or pcss's search disk and (when it found a blocker) its filter disk.
+void planDisks(Planner& pl, const Trace& tr, const Rect& area, glm::vec2 point, float cell,
+               float width, LegendNeeds& legend);
 
 // The cells, their numbers, the fetch marks and the fx/fy brackets; counts the cells whose
 // numbers the marks left no room for.

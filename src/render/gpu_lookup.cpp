@@ -75,6 +75,7 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
     glProgramUniform1f(program, glGetUniformLocation(program, "uSoftScale"), bias.softScale);
     glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.rpdbMax);
     glProgramUniform1f(program, glGetUniformLocation(program, "uSigma"), prm.sigma);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
     drawOver(program, prm.radius);
 }
 
@@ -129,6 +130,8 @@ ReferencePass referencePass(const PcfParams& prm) {
             return {"reference/tent.frag", prm.kernel};
         case PCF_POISSON:
             return {"reference/poisson.frag", 1};
+        case PCF_PCSS:
+            return {"reference/pcss.frag", 1};
     }
     throw std::invalid_argument("no reference pass for method id " + std::to_string(prm.method));
 }
@@ -152,6 +155,7 @@ void GpuLookup::drawReference(const PcfParams& prm) {
     }
     GLuint program = it->second.id();
     glUseProgram(program);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
     drawOver(program, prm.radius);
 }
 

@@ -12,6 +12,7 @@
 #include "render/depth_readback.h"
 #include "render/shader_loader.h"
 #include "scene/mesh.h"
+#include "scene/pcss.h"
 
 namespace pcf {
 
@@ -231,6 +232,8 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     setSettingUniforms(program, settings);
     glProgramUniform1f(program, uniform(program, "uShadowTexelWs"),
                        pcf::shadowTexelWs(mScene, settings.mapSize));
+    glProgramUniform1f(program, uniform(program, "uPenumbraScale"),
+                       pcfParams(settings).penumbraScale);
     // A lesson's pinned point (setPick); pixel -1, -1 matches no fragment.
     glm::ivec2 pickPixel = mPick ? mPick->pixelGl : glm::ivec2(-1);
     glm::vec4 pickLookup = mPick ? mPick->lookup : glm::vec4(0.0f);
@@ -243,6 +246,10 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glBindSampler(0, 0);
     glBindSampler(1, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+PcfParams SceneRenderer::pcfParams(const ShadowSettings& settings, vec2 rotation) const {
+    return pcssPcfParams(mScene.light, mShadowClipFromWorld, settings, rotation);
 }
 
 void SceneRenderer::render(const RenderSettings& settings) {

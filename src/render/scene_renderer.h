@@ -71,6 +71,9 @@ class SceneRenderer {
     GLuint frameFramebuffer() const { return mFrame.framebuffer.id(); }
     const Scene& scene() const { return mScene; }
     glm::mat4 shadowClipFromWorld() const { return mShadowClipFromWorld; }
+    // The kernel's parameters the camera pass filters with: the settings', and pcss's
+    // penumbraScale for this light and this shadow matrix (scene/pcss.h).
+    PcfParams pcfParams(const ShadowSettings& settings, vec2 rotation = vec2(1.0f, 0.0f)) const;
     glm::mat4 clipFromWorld() const;
     // What the sweeps of analysis/stability.h change between frames without re-uploading the
     // meshes: the light (the shadow matrix is re-fitted to it), the camera, or the shadow

@@ -98,6 +98,38 @@ half = [0.08, 1.0, 0.08]
 rotate_y = 30.0
 colour = [0.85, 0.75, 0.3]
 )"},
+    {"post-in-sun",
+     R"(# A square post in a sun of 2 degrees (four suns wide): its shadow is sharp at the foot and
+# soft at the tip, the penumbra as wide as 2 tan(1) = 0.035 times the distance to the post
+# (contact hardening). The sun is 56 degrees from the zenith, so the 3-unit post throws a
+# shadow 3 tan(56) = 4.4 units long, whose tip is 3 / cos(56) = 5.4 units from the post's top:
+# a penumbra 0.19 units wide there.
+[camera]
+eye = [2.2, 4.2, 6.0]
+target = [2.0, 0.4, 0.4]
+fov = 45.0
+
+[light]
+type = "directional"
+direction = [1.0, -0.7, 0.3]
+angular_diameter = 2.0
+
+[[object]]
+type = "plane"
+name = "ground"
+centre = [1.5, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+size = [9.0, 6.0]
+colour = [0.8, 0.8, 0.8]
+
+[[object]]
+type = "box"
+name = "post"
+centre = [0.0, 1.5, 0.0]
+half = [0.2, 1.5, 0.2]
+rotate_y = 20.0
+colour = [0.55, 0.6, 0.8]
+)"},
     {"grazing",
      R"(# The light 82 degrees from the ground's normal: direction = (sin 82, -cos 82, 0).
 # Depth changes fast across each shadow-map texel, the classic setting for shadow acne. A low

@@ -1,0 +1,36 @@
+// pcss.h: what percentage-closer soft shadows need from the scene: the light's size in the
+// shadow map's own units (the kernel's penumbraScale, shaders/shared/pcf_kernel.h pcfPcss).
+#pragma once
+
+#include "kernel/settings.h"
+#include "scene/scene.h"
+
+namespace pcf {
+
+// The sun's angular diameter, degrees (about 32 arc minutes): pcss's light when neither the
+// settings nor the scene's light give a size.
+constexpr float SUN_ANGULAR_DIAMETER_DEG = 0.53f;
+
+// The light size pcss uses, degrees: the settings' light_size when above 0, else the scene
+// light's angular_diameter when above 0, else the sun's.
+float effectiveLightSizeDeg(const Light& light, float lightSizeDeg);
+
+// The kernel's penumbraScale: texels of penumbra width per unit of light depth between the
+// receiver and its blocker, for a directional light of angular diameter theta and the map
+// shadowClipFromWorld * (x, 1) of mapSize texels. Fernando, "Percentage-Closer Soft Shadows"
+// (2005), with the light at infinity: width_ws = (d_receiver_ws - d_blocker_ws) * 2 tan(theta/2).
+// The map is orthographic: its matrix's rows are the light's axes scaled, so with row lengths
+// L0, L1 (u, v) and L2 (depth), one unit of light depth is 2 / L2 world units
+// (depth = 0.5 * ndc.z + 0.5) and one texel 2 / (min(L0, L1) * mapSize) (as shadowTexelWs):
+//   S = 2 tan(theta / 2) * (2 / L2) / texelWs
+// The matrix, not the scene: a widened depth range or a shifted grid (light.h) changes S with
+// the map. A spot light's map is perspective (depth not linear in distance): S = 0 there, and
+// pcss filters as poisson with radius 1 (the kernel's PCF_PCSS_MIN_RADIUS).
+float penumbraScale(const Light& light, const glm::mat4& shadowClipFromWorld, int mapSize,
+                    float lightSizeDeg);
+
+// The settings' kernel parameters, with pcss's penumbraScale for this light and map.
+PcfParams pcssPcfParams(const Light& light, const glm::mat4& shadowClipFromWorld,
+                        const ShadowSettings& s, vec2 rotation = vec2(1.0f, 0.0f));
+
+}  // namespace pcf
