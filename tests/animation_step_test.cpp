@@ -175,7 +175,10 @@ TEST(AnimationFrames, LessonAnimationsShowTheSceneTheTraceAndTheWordsWhole) {
             ASSERT_TRUE(step.animate);
             AnimationOptions ao = stepAnimationOptions(step, lesson, 7);
             Animation animation(session, ao);
-            for (int k : {0, ao.frames - 1}) expectTraceAndWordsWhole(session, k);
+            for (int k : {0, ao.frames - 1}) {
+                animation.composeFrame(k);
+                expectTraceAndWordsWhole(session, k);
+            }
         }
     }
 }
