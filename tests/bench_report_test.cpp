@@ -27,6 +27,7 @@ std::vector<BenchRow> sampleRows() {
     a.shimmer.mean = 0.000246913578;
     a.gpuCpuMs = 21.25;
     a.lookupCpuMs = 9.5;
+    a.glRenderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
     BenchRow b = a;
     b.point = {PCF_NEAREST, 0, 256};
     b.acne = {};
@@ -62,11 +63,13 @@ TEST(BenchReport, CsvReadsBackWhatWasWritten) {
         EXPECT_NEAR(back[k].shimmer.mean, rows[k].shimmer.mean, 1e-15);
         EXPECT_NEAR(back[k].gpuCpuMs, rows[k].gpuCpuMs, 1e-4);
         EXPECT_NEAR(back[k].lookupCpuMs, rows[k].lookupCpuMs, 1e-4);
+        // The renderer, its comma written ';' (the files carry no quoting).
+        EXPECT_EQ(back[k].glRenderer, "llvmpipe (LLVM 15.0.6; 256 bits)");
     }
     // The columns by name: the weighting's name, and the gaussian's sigma.
     std::string csv = benchCsv(rows);
     EXPECT_NE(csv.find(",gaussian,1.25,0.125,0.03125,4096,0.0625,0.015625,512,0.0123456789,0.375,"
-                       "0.02,0.000246913578,21.2500,9.5000\n"),
+                       "0.02,0.000246913578,21.2500,9.5000,llvmpipe (LLVM 15.0.6; 256 bits)\n"),
               std::string::npos)
         << csv;
 }
@@ -81,12 +84,12 @@ TEST(BenchReport, TheShippedCsvParses) {
     std::fclose(f);
     std::vector<BenchRow> rows = parseBenchCsv(text, path);
     EXPECT_GE(rows.size(), 60u);  // every method, N = 3, 5, 7, four map sizes
-    // The error split and the shimmer are there (the current header or the one before the
-    // passes' CPU time), and say what they must.
-    EXPECT_TRUE(text.starts_with(std::string(BENCH_CSV_HEADER) + "\n") ||
-                text.starts_with(std::string(BENCH_CSV_HEADER_V3) + "\n"));
+    // The error split, the shimmer and the renderer are there (the current header), and say
+    // what they must: lesson 11's words on llvmpipe read the renderer.
+    EXPECT_TRUE(text.starts_with(std::string(BENCH_CSV_HEADER) + "\n"));
     for (const BenchRow& r : rows) {
         std::string name = pointName(r.point) + " map " + std::to_string(r.point.mapSize);
+        EXPECT_NE(r.glRenderer.find("llvmpipe"), std::string::npos) << name;
         EXPECT_GT(r.acne.count, 0) << name;
         EXPECT_GT(r.leak.count, 0) << name;
         EXPECT_GT(r.shimmer.flickerShare, 0.0) << name;
@@ -127,8 +130,8 @@ TEST(BenchReport, BadCsvNamesTheLine) {
               "b.csv:2: field 20 '1.5' is not a whole number");
     EXPECT_EQ(message(v3 + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0\n"),
               "b.csv:2: expected 27 fields, got 15");
-    // The current header: 29 fields, the last two the passes' CPU time.
-    std::string v4 = std::string(BENCH_CSV_HEADER) + "\n";
+    // The header before the renderer: 29 fields, the last two the passes' CPU time.
+    std::string v4 = std::string(BENCH_CSV_HEADER_V4) + "\n";
     const std::string row27 = head + "box,0,0,0,10,0,0,10,0,0,0,0";
     EXPECT_EQ(message(v4 + row27 + "\n"), "b.csv:2: expected 29 fields, got 27");
     std::vector<BenchRow> cpu = parseBenchCsv(v4 + row27 + ",12.5,4.25\n", "b.csv");
@@ -136,6 +139,14 @@ TEST(BenchReport, BadCsvNamesTheLine) {
     EXPECT_EQ(cpu[0].gpuCpuMs, 12.5);
     EXPECT_EQ(cpu[0].lookupCpuMs, 4.25);
     EXPECT_EQ(parseBenchCsv(v3 + row27 + "\n", "b.csv")[0].gpuCpuMs, 0.0);
+    EXPECT_EQ(cpu[0].glRenderer, "");  // not recorded before the current header
+    // The current header: 30 fields, the last the renderer.
+    std::string v5 = std::string(BENCH_CSV_HEADER) + "\n";
+    EXPECT_EQ(message(v5 + row27 + ",12.5,4.25\n"), "b.csv:2: expected 30 fields, got 29");
+    std::vector<BenchRow> named =
+        parseBenchCsv(v5 + row27 + ",12.5,4.25,NVIDIA H200/PCIe/SSE2\n", "b.csv");
+    ASSERT_EQ(named.size(), 1u);
+    EXPECT_EQ(named[0].glRenderer, "NVIDIA H200/PCIe/SSE2");
     // The eleven columns from before the timing spreads still read, with no spread.
     std::string v1 = std::string(BENCH_CSV_HEADER_V1) + "\n";
     EXPECT_EQ(message(v1 + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0\n"),

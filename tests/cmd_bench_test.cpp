@@ -52,13 +52,14 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
               "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,"
               "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,"
               "acne_share,acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,"
-              "shimmer_mean,shimmer_p99,flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms");
+              "shimmer_mean,shimmer_p99,flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,"
+              "gl_renderer");
     std::set<std::string> methods;
     int rows = 0;
     while (std::getline(csv, line)) {
         ++rows;
         std::vector<std::string> f = splitCsvLine(line);
-        ASSERT_EQ(f.size(), 29u) << line;
+        ASSERT_EQ(f.size(), 30u) << line;
         methods.insert(f[0]);
         bool kernelMethod =
             f[0] == "pcf-naive" || f[0] == "pcf-gather" || f[0] == "pcf-hw" || f[0] == "tent";
@@ -108,6 +109,9 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
         EXPECT_LE(std::stod(f[18]), std::stod(f[17]) + 0.01) << line;
         // Some pixel flickers as the grid slides, and nearest jumps all the way (0 <-> 1).
         EXPECT_GT(std::stod(f[25]), 0.0) << line;
+        // The renderer it was timed on (GL_RENDERER, commas written ';'): the charts read it.
+        EXPECT_EQ(f[29].find(','), std::string::npos) << line;
+        EXPECT_FALSE(f[29].empty()) << line;
         EXPECT_GT(std::stod(f[24]), 0.0) << line;
         if (f[0] == "nearest") {
             EXPECT_EQ(f[24], "1") << line;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <memory>
@@ -16,6 +17,7 @@
 #include "analysis/difference_image.h"
 #include "analysis/pareto.h"
 #include "analysis/speed_chart.h"
+#include "analysis/step_chart.h"
 #include "kernel/methods.h"
 #include "render/gl_context.h"
 
@@ -154,6 +156,8 @@ std::vector<BenchRow> sampleRows() {
         r.lookupMs = ms / 2;
         r.lookupMsIqr = ms / 4;  // 50 %: noisy
         r.noisy = method == PCF_POISSON;
+        if (r.noisy) r.gpuMsIqr = ms / 4;  // the scene time too: a hollow dot on either chart
+        r.glRenderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
         rows.push_back(r);
     };
     add(PCF_NEAREST, 0, 256, 2.0, 0.5);
@@ -174,15 +178,16 @@ TEST(BenchReport, CsvHasTheDocumentedColumnsAndOneLinePerRow) {
               "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,"
               "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,"
               "acne_share,acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,"
-              "shimmer_mean,shimmer_p99,flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms");
+              "shimmer_mean,shimmer_p99,flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,"
+              "gl_renderer");
     std::getline(in, line);
     EXPECT_EQ(line,
               "nearest,0,256,2.0000,12.35,1,0.05,1,0.5,0.75,glFinish+steady_clock,0.1000,1.0000,"
-              "0.5000,0,box,0,0,0,0,0,0,0,0,0,0,0,0.0000,0.0000");
+              "0.5000,0,box,0,0,0,0,0,0,0,0,0,0,0,0.0000,0.0000,llvmpipe (LLVM 15.0.6; 256 bits)");
     int lines = 2;
     while (std::getline(in, line)) {
         ++lines;
-        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 28) << line;
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 29) << line;
     }
     EXPECT_EQ(lines, 1 + static_cast<int>(rows.size()));
     EXPECT_NE(csv.find("tent,5,1024,11.0000,12.35,36,0.0123456789,1,0.123456789,0.75,"),
@@ -312,60 +317,142 @@ TEST(SpeedChart, ACrowdedChartDrawsOnlyLabelsThatFit) {
     }
 }
 
-// A label ending in " !" (a noisy row) comes with the legend's line saying what "!" means,
-// inside the legend's box; a chart that draws no such label has no such line.
-TEST(SpeedChart, LegendExplainsTheNoisyMarkWhenALabelCarriesIt) {
-    std::vector<BenchRow> rows = sampleRows();  // poisson 1024 is noisy, and on no front
-    EXPECT_EQ(noisyNote(), "! noisy: IQR > 10% of median");
-    auto legendLines = [](const SpeedChartLayout& L, const SpeedChartText& text) {
-        std::vector<ChartTextBox> out;
-        for (const ChartTextBox& b : speedChartTextBoxes(L, text)) {
-            if (b.role != "chart-legend") continue;
-            EXPECT_TRUE(b.rect.intersect(L.legend).w >= b.rect.w - 0.5f) << b.text;
-            EXPECT_LE(b.rect.bottom(), L.legend.bottom()) << b.text;
-            out.push_back(b);
-        }
-        return out;
-    };
+// A noisy dot (hollow, its label ending in " !") comes with the subtitle's note saying what
+// hollow and "!" mean, whether or not its label is drawn, wrapped to the chart's width; a chart
+// without a noisy dot says nothing of it.
+TEST(SpeedChart, SubtitleExplainsHollowDotsWhenAnyIsDrawn) {
+    std::vector<BenchRow> rows = sampleRows();  // poisson 1024 is noisy
+    EXPECT_EQ(noisyNote(), "hollow, !: noisy (IQR > 10% of median), never on the front");
     SpeedChartText text;
-    // Every label drawn (room to spare): poisson's " !" is among them.
+    text.subtitle = "rendered on llvmpipe";
+    auto unwrapped = [](std::string t) {
+        std::replace(t.begin(), t.end(), '\n', ' ');
+        return t;
+    };
     SpeedChartLayout all = layoutSpeedChart(rows, {1280, 720});
     ASSERT_TRUE(all.labelShown[4]);
     EXPECT_EQ(all.labelTexts[4], "poisson 1024 !");
-    std::vector<ChartTextBox> lines = legendLines(all, text);
-    // The note's lines (wrapped to the legend's width) end the legend and read as the note.
-    ASSERT_FALSE(all.noisyLines.empty());
-    ASSERT_GE(lines.size(), all.noisyLines.size());
-    std::string note;
-    for (size_t k = lines.size() - all.noisyLines.size(); k < lines.size(); ++k) {
-        note += (note.empty() ? "" : " ") + lines[k].text;
+    EXPECT_FALSE(all.steady[4]);
+    EXPECT_EQ(unwrapped(speedChartTextFor(rows, text, {1280, 720}).subtitle),
+              "rendered on llvmpipe; " + noisyNote());
+    // Narrow: the same words, wrapped to lines that fit the chart.
+    glm::ivec2 narrow{480, 270};  // a lesson frame's chart, at its 18 px type
+    SpeedChartText big = text;
+    big.minFontPx = 18.0f;
+    SpeedChartText fitted = speedChartTextFor(rows, big, narrow);
+    EXPECT_EQ(unwrapped(fitted.subtitle), "rendered on llvmpipe; " + noisyNote());
+    EXPECT_GT(subtitleLineCount(fitted.subtitle), 1);
+    SpeedChartLayout small =
+        layoutSpeedChart(rows, narrow, ChartTiming::Scene, ChartAccuracy::EdgeRmse, {}, 18.0f,
+                         false, subtitleLineCount(fitted.subtitle));
+    for (const ChartTextBox& b : speedChartTextBoxes(small, fitted)) {
+        EXPECT_LE(b.rect.right(), narrow.x) << b.text;
+        if (b.role == "chart-legend") {
+            EXPECT_EQ(b.text.find("noisy"), std::string::npos);
+        }
     }
-    EXPECT_EQ(note, noisyNote());
-    // Only the front's labels (no highlight asked for): no "!" drawn, no line for it.
-    SpeedChartLayout kept = layoutSpeedChart(rows, {1280, 720}, ChartTiming::Scene,
-                                             ChartAccuracy::EdgeRmse, {}, 8.0f, true);
-    ASSERT_FALSE(kept.labelShown[4]);
-    for (const ChartTextBox& b : legendLines(kept, text)) {
-        EXPECT_FALSE(b.text.starts_with("!")) << b.text;
+    // Every dot steady: no note.
+    std::vector<BenchRow> steady = rows;
+    steady[4].gpuMsIqr = steady[4].gpuMs / 20;
+    EXPECT_EQ(speedChartTextFor(steady, text, {1280, 720}).subtitle, "rendered on llvmpipe");
+    // The lookup timing's spreads are its own: every sample row's lookup IQR is 50 %.
+    EXPECT_EQ(unwrapped(speedChartTextFor(steady, text, {1280, 720}, ChartTiming::Lookup).subtitle),
+              "rendered on llvmpipe; " + noisyNote());
+}
+
+// The front joins steady dots only: a noisy dot, however fast and accurate, neither starts it
+// nor sits on it (it would hide the steady dots it seems to beat), in the chart, the table and a
+// lesson's "front" highlight alike. Read from a CSV, as a lesson's chart is.
+TEST(SpeedChart, ANoisyPointCannotStartOrSitOnTheFront) {
+    std::string csv = std::string(BENCH_CSV_HEADER_V2) + "\n";
+    // method,kernel,map,gpu_ms,cpu_ns,reads,rmse,max,edge_rmse,edge_max,timer,iqr,lookup,iqr,noisy
+    csv += "nearest,0,256,2,1,1,0,1,0.5,1,t,0.1,1,0.05,0\n";     // 0: steady, the fastest
+    csv += "hw2x2,0,256,1,1,1,0,1,0.1,1,t,1.9,1,0.05,1\n";       // 1: noisy, 1 +- 0.95 ms
+    csv += "pcf-gather,3,256,5,1,16,0,1,0.3,1,t,0.2,2,0.1,0\n";  // 2: steady
+    csv += "pcf-naive,3,256,8,1,36,0,1,0.2,1,t,4,4,0.2,1\n";     // 3: noisy, between
+    csv += "tent,5,1024,20,1,36,0,1,0.1,1,t,1,10,0.5,0\n";       // 4: steady, most accurate
+    std::vector<BenchRow> rows = parseBenchCsv(csv, "noisy.csv");
+    ASSERT_EQ(rows.size(), 5u);
+    const std::vector<size_t> steadyFront{0, 2, 4};
+    EXPECT_EQ(benchParetoFront(rows), steadyFront);
+    SpeedChartLayout L = layoutSpeedChart(rows, {1280, 720});
+    EXPECT_EQ(L.front, steadyFront);
+    EXPECT_EQ(L.steady, (std::vector<bool>{true, false, true, false, true}));
+    EXPECT_EQ(L.labelTexts[1], "hw2x2 256 !");
+    EXPECT_EQ(chartRowsMatching(rows, "front"), steadyFront);
+    // Without the rule the noisy dot would have started the front and sat on it.
+    std::vector<glm::dvec2> all;
+    for (const BenchRow& r : rows) all.emplace_back(r.gpuMs, r.error.edgeRmse);
+    EXPECT_EQ(paretoFront(all).front(), 1u);
+    // The lookup timing has its own spreads: all five are steady there (IQR 5 %).
+    EXPECT_EQ(benchParetoFront(rows, true).size(), 1u);  // hw2x2: fastest and most accurate
+    BenchSetup setup;
+    setup.glRenderer = "llvmpipe";
+    std::string md = benchMarkdown(rows, setup);
+    EXPECT_NE(md.find("| hw2x2 ! |"), std::string::npos) << md;  // not "| hw2x2 * ! |"
+    EXPECT_NE(md.find("| tent * | 5 |"), std::string::npos) << md;
+}
+
+// A chart drawn from a CSV names the renderer the CSV records (a lesson's chart, from the
+// shipped bench.csv: llvmpipe, with what carries over to a GPU), in its layout list; a CSV from
+// before the renderer column says it was not recorded, and no renderer is made up.
+TEST(SpeedChart, AChartFromACsvNamesItsRenderer) {
+    auto subtitleOf = [](const std::string& chart, glm::ivec2 size) {
+        std::string subtitle;
+        for (const ChartTextBox& b : stepChartTexts(StepChart{chart, "", 18.0f, true}, size)) {
+            if (b.role != "chart-subtitle") continue;
+            subtitle += b.text;
+            EXPECT_LE(b.rect.right(), size.x) << b.text;
+        }
+        return subtitle;
+    };
+    std::string shipped = PCFSCOPE_SOURCE_DIR "/lessons/figures/bench.csv";
+    for (glm::ivec2 size : {glm::ivec2(617, 347), glm::ivec2(1280, 720)}) {
+        std::string subtitle = subtitleOf(shipped, size);
+        EXPECT_NE(subtitle.find("rendered on llvmpipe (LLVM 15.0.6; 256 bits)"), std::string::npos)
+            << subtitle;
+        EXPECT_NE(subtitle.find(LLVMPIPE_NOTE), std::string::npos) << subtitle;
     }
-    EXPECT_LT(kept.legend.h, all.legend.h);
+    EXPECT_EQ(LLVMPIPE_NOTE, "llvmpipe: a CPU rasteriser; ratios carry over, milliseconds do not");
+    std::string old = (std::filesystem::temp_directory_path() / "pcfscope-v4-bench.csv").string();
+    {
+        std::ofstream f(old);
+        f << BENCH_CSV_HEADER_V4 << "\n"
+          << "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0,box,0,0,0,10,0,0,10,0,0,0,0,0,0\n";
+    }
+    std::string subtitle = subtitleOf(old, {1280, 720});
+    std::filesystem::remove(old);
+    EXPECT_NE(subtitle.find(RENDERER_UNKNOWN), std::string::npos) << subtitle;
+    EXPECT_EQ(subtitle.find("rendered on"), std::string::npos) << subtitle;
 }
 
 TEST(SpeedChart, DrawsTheRequestedSizeWithEachMethodsColour) {
     std::unique_ptr<GlContext> context = createHeadlessContext();
     std::vector<BenchRow> rows = sampleRows();
-    glm::ivec2 size{800, 450};
+    glm::ivec2 size{1280, 720};
     SpeedChartText text;
     text.title = "Speed against accuracy: test";
     text.subtitle = context->renderer();
+    text.minFontPx = 24.0f;  // dots 6 px: a hollow one's inside stays clear of its rim and bar
     std::vector<uint8_t> rgba = drawSpeedChart(rows, size, text);
     ASSERT_EQ(rgba.size(), static_cast<size_t>(size.x) * size.y * 4);
-    SpeedChartLayout L = layoutSpeedChart(rows, size);
-    // Each dot's centre pixel has its method's colour.
+    SpeedChartLayout L = layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
+                                          {}, text.minFontPx);
+    // Each steady dot's centre pixel has its method's colour; a noisy one is hollow: its centre
+    // is the background, its rim its method's colour.
     for (size_t k = 0; k < rows.size(); ++k) {
         glm::ivec2 p(L.points[k]);
         size_t at = (static_cast<size_t>(p.y) * size.x + p.x) * 4;
         glm::vec4 want = methodColour(rows[k].point.method) * 255.0f;
+        if (!L.steady[k]) {
+            // 2 px below the centre: inside the ring, off the IQR bar through it.
+            size_t inside = at + 2 * static_cast<size_t>(size.x) * 4;
+            for (int c = 0; c < 3; ++c) EXPECT_GT(rgba[inside + c], 230) << k;
+            size_t rim = at + static_cast<size_t>(L.dotRadius - 1.0f) * 4;
+            int darkest = std::min({rgba[rim], rgba[rim + 1], rgba[rim + 2]});
+            EXPECT_LT(darkest, 200) << k;
+            continue;
+        }
         EXPECT_NEAR(rgba[at + 0], want.r, 2.0) << k;
         EXPECT_NEAR(rgba[at + 1], want.g, 2.0) << k;
         EXPECT_NEAR(rgba[at + 2], want.b, 2.0) << k;
@@ -388,12 +475,13 @@ TEST(SpeedChart, StandAloneTextIsAtLeast14PxWithoutOverlap) {
     SpeedChartText text;
     text.title = "Speed against accuracy: box-on-plane, 1280x720";
     text.subtitle = chartRendererLine("llvmpipe (LLVM 15.0.6, 256 bits)") +
-                    "\nmedian of 9 round-robin samples, glFinish+steady_clock; bars: IQR; ! noisy "
-                    "(IQR > 10 % of median)";
+                    "\nmedian of 9 round-robin samples, glFinish+steady_clock; bars: IQR";
     text.minFontPx = STANDALONE_CHART_MIN_PX;
     const glm::ivec2 size{1280, 720};
-    SpeedChartLayout L = layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
-                                          {}, text.minFontPx, false, 2);
+    text = speedChartTextFor(rows, text, size);  // as drawSpeedChart draws it
+    SpeedChartLayout L =
+        layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse, {},
+                         text.minFontPx, false, subtitleLineCount(text.subtitle));
     std::vector<ChartTextBox> boxes = speedChartTextBoxes(L, text);
     std::string subtitle;
     for (const ChartTextBox& b : boxes) {

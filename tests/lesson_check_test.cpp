@@ -104,4 +104,38 @@ TEST_F(LessonCheck, ABadClaimIsABadFile) {
     EXPECT_NE(r.err.find(":9: step 1 keys: unknown key 'X'"), std::string::npos) << r.err;
 }
 
+// A chart fact reads the CSV the step's chart draws: one the chart's table does not know, or on a
+// step without a chart, is a bad file (exit 2, its line); a known one that the rows contradict
+// fails at its line with the numbers (exit 1).
+TEST_F(LessonCheck, ChartFactsReadTheChartsCsv) {
+    std::string figures = PCFSCOPE_SOURCE_DIR "/lessons/figures/";
+    std::string path = write("claims = [\"chart: measured on llvmpipe\"]\n");
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find(":9: step 1 claim \"chart: measured on llvmpipe\": the step shows no "
+                         "chart"),
+              std::string::npos)
+        << r.err;
+    path = write("claims = [\"chart: acne looks bad\"]\nchart = \"" + figures +
+                 "stability.csv#tradeoff\"\n");
+    r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find(":9: step 1 claim \"chart: acne looks bad\": unknown chart fact"),
+              std::string::npos)
+        << r.err;
+    path = write(
+        "claims = [\"chart: measured on NVIDIA\",\n"                       // 9
+        "  \"chart: nearest: a good bias lies between acne and leak\",\n"  // 10
+        "  \"chart: measured on llvmpipe\"]\n"                             // 11
+        "chart = \"" +
+        figures + "stability.csv#tradeoff\"\n");
+    r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find(":9: step 1 claim \"chart: measured on NVIDIA\" fails: measured on "
+                         "llvmpipe"),
+              std::string::npos)
+        << r.out;
+    EXPECT_EQ(r.out.find(":11:"), std::string::npos) << r.out;
+}
+
 }  // namespace

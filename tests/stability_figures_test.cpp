@@ -32,6 +32,7 @@ StabilitySetup setupOf(const std::string& renderer) {
     s.cull = "back";
     s.depthFormat = "32f";
     s.precisionElevation = 30;
+    s.tradeoffElevation = 30;
     return s;
 }
 
@@ -58,7 +59,17 @@ std::vector<StabilityRow> defaultShapedRows(const std::string& renderer) {
                 for (float bias : o.leakBiases) {
                     add("leak", m, b, "constant_bias", bias, scene + ":leak_width_texels",
                         k * std::log2(bias / 0.0004));
+                    // Leak past 0.016: 2 % of the clean umbra at 0.032, 4 % at 0.064.
+                    add("leak", m, b, "constant_bias", bias, scene + ":leak_rate",
+                        bias > 0.02f ? bias * 0.625 : 0.0);
                 }
+            }
+            // Acne at the trade-off's elevation: gone from 0.004 on (the wider filter: 0.008).
+            for (float bias : o.leakBiases) {
+                if (b != BiasMode::Constant) continue;
+                float gone = m.kernel == 5 ? 0.006f : 0.003f;
+                add("tradeoff", m, b, "constant_bias", bias, "false_shadow_rate",
+                    bias < gone ? 0.9 : 0.0);
             }
             add("shimmer", m, b, "texel_step", 1.0 / 32, "light_flicker_p99", 0.9);
             add("shimmer", m, b, "texel_step", 1.0 / 32, "light_edge_mean", 0.004);
@@ -107,6 +118,7 @@ std::vector<NamedChart> allCharts(const std::vector<StabilityRow>& rows, float m
     const std::string source = "pcfscope stability";
     return {{"acne", lineChartTextBoxes(acneChartSpec(rows, source, minPx), CHART)},
             {"leak", lineChartTextBoxes(leakChartSpec(rows, source, minPx), CHART)},
+            {"tradeoff", lineChartTextBoxes(tradeoffChartSpec(rows, source, minPx), CHART)},
             {"precision", lineChartTextBoxes(precisionChartSpec(rows, source, minPx), CHART)},
             {"shimmer", barChartTextBoxes(shimmerChartSpec(rows, source, minPx), CHART)},
             {"aliasing",
@@ -117,8 +129,12 @@ TEST(StabilityFigures, TitlesStateThePopulationAndSubtitlesTheSettingsAndRendere
     std::vector<StabilityRow> rows = defaultShapedRows(LLVMPIPE);
     std::vector<NamedChart> charts = allCharts(rows, STANDALONE_CHART_MIN_PX);
     // The population each title names.
-    const char* populations[] = {"clean-lit receivers", "leaking pixels", "clean-lit receivers",
-                                 "the same 2500 pixels for every bar", "at each pixel, map 512^2"};
+    const char* populations[] = {"clean-lit receivers",
+                                 "leaking pixels",
+                                 "clean pixels",
+                                 "clean-lit receivers",
+                                 "the same 2500 pixels for every bar",
+                                 "at each pixel, map 512^2"};
     for (size_t i = 0; i < charts.size(); ++i) {
         SCOPED_TRACE(charts[i].name);
         std::string title = textOf(charts[i].boxes, "chart-title");
@@ -131,9 +147,11 @@ TEST(StabilityFigures, TitlesStateThePopulationAndSubtitlesTheSettingsAndRendere
         EXPECT_NE(subtitle.find("rendered on llvmpipe (LLVM 15.0.6; 256 bits)"), std::string::npos)
             << subtitle;
         EXPECT_NE(subtitle.find(LLVMPIPE_NOTE), std::string::npos) << subtitle;
-        // The leak chart sweeps the constant bias: its subtitle names no single value of it.
+        // The leak and trade-off charts sweep the constant bias: their subtitles name no single
+        // value of it.
         bool oneBias = subtitle.find("constant bias 0.002") != std::string::npos;
-        EXPECT_EQ(oneBias, charts[i].name != "leak" && charts[i].name != "aliasing") << subtitle;
+        bool swept = charts[i].name == "leak" || charts[i].name == "tradeoff";
+        EXPECT_EQ(oneBias, !swept && charts[i].name != "aliasing") << subtitle;
     }
     // Panels name the kernel; the leak's title names the run length that counts.
     EXPECT_NE(textOf(charts[0].boxes, "chart-title").find("pcf-gather 5x5"), std::string::npos);
@@ -151,6 +169,43 @@ TEST(StabilityFigures, TitlesStateThePopulationAndSubtitlesTheSettingsAndRendere
                                    rows.end());
     EXPECT_EQ(acneChartSpec(bare, "measured by pcfscope stability").subtitle,
               "measured by pcfscope stability");
+}
+
+// The trade-off chart puts acne (at one elevation) and leak on one bias axis, and shades the
+// biases where both stay under 1 %: "a good bias sits between the two curves" is what it shows.
+TEST(StabilityFigures, TheTradeOffShadesTheBiasesBetweenAcneAndLeak) {
+    std::vector<StabilityRow> rows = defaultShapedRows(LLVMPIPE);
+    std::vector<TradeoffSeries> series = tradeoffSeries(rows);
+    ASSERT_EQ(series.size(), 2u);  // nearest, pcf-gather 5x5
+    EXPECT_EQ(series[1].name, "pcf-gather 5x5");
+    // Swept biases 0.0005 .. 0.064: acne gone from 0.008 (5x5; nearest from 0.004), leak from
+    // 0.032: the good biases run 0.008 .. 0.016 (nearest 0.004 .. 0.016).
+    ASSERT_TRUE(series[1].good.has_value());
+    EXPECT_NEAR(series[1].good->x, 0.008, 1e-6);
+    EXPECT_NEAR(series[1].good->y, 0.016, 1e-6);
+    ASSERT_TRUE(series[0].good.has_value());
+    EXPECT_NEAR(series[0].good->x, 0.004, 1e-6);
+    EXPECT_EQ(series[1].leakScenes, (std::vector<std::string>{"pole", "box-on-plane"}));
+    LineChartSpec spec = tradeoffChartSpec(rows, "x", 14.0f);
+    ASSERT_EQ(spec.panels.size(), 2u);
+    for (size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(spec.panels[k].band, series[k].good);
+        // One acne line (solid), one leak line per contact scene (dashed), on one axis.
+        ASSERT_EQ(spec.panels[k].lines.size(), 3u);
+        EXPECT_FALSE(spec.panels[k].lines[0].dashed);
+        EXPECT_EQ(spec.panels[k].lines[0].label, "acne, light 30 deg");
+        EXPECT_TRUE(spec.panels[k].lines[1].dashed);
+        EXPECT_EQ(spec.panels[k].lines[2].label, "leak: box-on-plane");
+        EXPECT_EQ(spec.panels[k].lines[1].points.size(), StabilityOptions{}.leakBiases.size());
+    }
+    std::string legend = textOf(lineChartTextBoxes(spec, CHART), "chart-legend");
+    EXPECT_NE(legend.find("green: a good bias (both < 1%)"), std::string::npos) << legend;
+    // Acne that never goes: no good bias, no band.
+    for (StabilityRow& r : rows) {
+        if (r.sweep == "tradeoff" && r.kernel == 5) r.y = 0.5;
+    }
+    EXPECT_FALSE(tradeoffSeries(rows)[1].good.has_value());
+    EXPECT_FALSE(tradeoffChartSpec(rows, "x").panels[1].band.has_value());
 }
 
 TEST(StabilityFigures, SetupRowsSurviveTheCsv) {

@@ -139,6 +139,9 @@ struct BenchRow {
     FailureRate leak;    // false light over the clean umbra pixels
     ShimmerStats shimmer;
     std::string timer;  // which timer gave gpuMs
+    // GL_RENDERER of the run (every row of one run carries it: bench.csv has no other place);
+    // empty when unknown (a bench.csv older than BENCH_CSV_HEADER_V4's successor).
+    std::string glRenderer;
 };
 
 // "pcf-gather N=3", "pcf-gather N=3 gaussian 1.5" or "nearest".

@@ -16,6 +16,13 @@ namespace pcf {
 
 namespace {
 
+// A text field: the files carry no quoting, so a comma becomes ';' and a line break a space.
+std::string csvWords(std::string text) {
+    std::replace(text.begin(), text.end(), ',', ';');
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    return text;
+}
+
 std::string format(const char* fmt, double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, fmt, v);
@@ -57,7 +64,8 @@ std::string benchCsv(std::span<const BenchRow> rows) {
                g(r.acne.mean) + ',' + std::to_string(r.acne.count) + g(r.leak.share) +
                g(r.leak.mean) + ',' + std::to_string(r.leak.count) + g(r.shimmer.flickerMean) +
                g(r.shimmer.flickerP99) + g(r.shimmer.flickerShare) + g(r.shimmer.mean) + ',' +
-               format("%.4f", r.gpuCpuMs) + ',' + format("%.4f", r.lookupCpuMs) + '\n';
+               format("%.4f", r.gpuCpuMs) + ',' + format("%.4f", r.lookupCpuMs) + ',' +
+               csvWords(r.glRenderer) + '\n';
     }
     return out;
 }
@@ -93,13 +101,15 @@ BenchRow parseBenchRow(const CsvFields& f) {
     if (f.size() == 27) return r;
     r.gpuCpuMs = f.number(27);
     r.lookupCpuMs = f.number(28);
+    if (f.size() == 29) return r;
+    r.glRenderer = f.text(29);
     return r;
 }
 
 // The field count a header line promises, or 0 when it is not a bench.csv header.
 size_t fieldsOfHeader(const std::string& header) {
-    for (std::string_view h :
-         {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V3, BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
+    for (std::string_view h : {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V4, BENCH_CSV_HEADER_V3,
+                               BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
         if (header == h) return static_cast<size_t>(std::count(h.begin(), h.end(), ',')) + 1;
     }
     return 0;
@@ -133,12 +143,23 @@ std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& so
     return rows;
 }
 
+bool steadyTiming(const BenchRow& row, bool byLookup) {
+    double ms = byLookup ? row.lookupMs : row.gpuMs;
+    double iqr = byLookup ? row.lookupMsIqr : row.gpuMsIqr;
+    return iqr <= NOISY_IQR_SHARE * ms;
+}
+
 std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows, bool byLookup) {
     std::vector<glm::dvec2> points;
-    for (const BenchRow& r : rows) {
-        points.emplace_back(byLookup ? r.lookupMs : r.gpuMs, r.error.edgeRmse);
+    std::vector<size_t> steady;  // points[k] is rows[steady[k]]
+    for (size_t k = 0; k < rows.size(); ++k) {
+        if (!steadyTiming(rows[k], byLookup)) continue;
+        points.emplace_back(byLookup ? rows[k].lookupMs : rows[k].gpuMs, rows[k].error.edgeRmse);
+        steady.push_back(k);
     }
-    return paretoFront(points, PARETO_ERROR_TOLERANCE);
+    std::vector<size_t> front = paretoFront(points, PARETO_ERROR_TOLERANCE);
+    for (size_t& k : front) k = steady[k];
+    return front;
 }
 
 double noisyShare(std::span<const BenchRow> rows) {
@@ -228,7 +249,9 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
     md += "\n`*` marks the Pareto front of " +
           std::string(setup.frontByLookup ? "lookup" : "scene") +
           " time against edge RMSE: no other run is both "
-          "faster and more accurate; `!` a noisy point (an IQR above 10 % of its median). "
+          "faster and more accurate, among the runs whose time is steady (an IQR at most 10 % of "
+          "its median: a noisy time cannot be ranked, so a noisy run is never on the front); "
+          "`!` a noisy point (an IQR above 10 % of its median). "
           "Edge RMSE is the filter's aliasing error (the edge band, where the truth is partly "
           "lit); acne % is the share of the clean lit pixels (fully lit over the method's whole "
           "footprint) the method darkens below 0.99, leak % the share of the clean umbra pixels "

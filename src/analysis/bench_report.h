@@ -11,8 +11,15 @@
 namespace pcf {
 
 // The CSV's first line, exactly (no trailing newline). Newer columns come last, so a reader of
-// the first eleven (or fifteen) columns keeps working.
+// the first eleven (or fifteen) columns keeps working. gl_renderer is GL_RENDERER with its
+// commas written as ';' (the files carry no quoting), the same on every row of a run.
 inline constexpr std::string_view BENCH_CSV_HEADER =
+    "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
+    "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,acne_share,"
+    "acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,shimmer_mean,shimmer_p99,"
+    "flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,gl_renderer";
+// The header before the renderer: still read (the renderer unknown: empty).
+inline constexpr std::string_view BENCH_CSV_HEADER_V4 =
     "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
     "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,acne_share,"
     "acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,shimmer_mean,shimmer_p99,"
@@ -38,11 +45,12 @@ inline constexpr std::string_view BENCH_CSV_HEADER_V1 =
 // binomial or gaussian, sigma 0 unless gaussian. Every line ends with '\n'.
 std::string benchCsv(std::span<const BenchRow> rows);
 
-// Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv), or the 27
-// columns of BENCH_CSV_HEADER_V3, the fifteen of BENCH_CSV_HEADER_V2 or the eleven of
-// BENCH_CSV_HEADER_V1 (what they lack: 0, box, not noisy). Throws pcf::InputError "SOURCE:LINE:
-// problem" on a wrong header, a wrong field count, an unknown method or a field that is not a
-// finite number.
+// Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv), or the 29
+// columns of BENCH_CSV_HEADER_V4, the 27 of BENCH_CSV_HEADER_V3, the fifteen of
+// BENCH_CSV_HEADER_V2 or the eleven of BENCH_CSV_HEADER_V1 (what they lack: 0, box, not noisy,
+// the renderer empty). The renderer reads back with ';' where GL_RENDERER had ','. Throws
+// pcf::InputError "SOURCE:LINE: problem" on a wrong header, a wrong field count, an unknown method
+// or a field that is not a finite number.
 std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& source);
 
 // What the table's sentence says about where and how the numbers were taken.
@@ -89,8 +97,14 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
 // (and bilinear2x2 and hw2x2) compute one filter, and their errors differ by float rounding.
 constexpr double PARETO_ERROR_TOLERANCE = 1e-6;
 
+// Whether the row's time (the scene pass, or the lookup pass when byLookup) is steady enough to
+// rank: its IQR at most NOISY_IQR_SHARE of its median. A dot whose time may lie anywhere in a
+// spread wider than that cannot be said to beat its neighbours, so it never joins the front.
+bool steadyTiming(const BenchRow& row, bool byLookup = false);
+
 // Indices of the rows on the Pareto front of (gpu_ms, edge_rmse), cheapest first (pareto.h);
-// of (lookup_ms, edge_rmse) when byLookup.
+// of (lookup_ms, edge_rmse) when byLookup. Only rows with steadyTiming take part: a noisy row is
+// neither on the front nor hides a steady one from it.
 std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows, bool byLookup = false);
 
 }  // namespace pcf

@@ -21,10 +21,12 @@ std::string chartTickText(double v, bool percent) {
     return buf;
 }
 
-std::string chartRendererLine(const std::string& glRenderer) {
+std::string chartRendererLine(const std::string& glRenderer, bool noteOwnLine) {
+    if (glRenderer.empty()) return std::string(RENDERER_UNKNOWN);
     std::string line = "rendered on " + glRenderer;
     if (glRenderer.find("llvmpipe") != std::string::npos) {
-        line += " (" + std::string(LLVMPIPE_NOTE) + ")";
+        line += noteOwnLine ? "\n" + std::string(LLVMPIPE_NOTE)
+                            : " (" + std::string(LLVMPIPE_NOTE) + ")";
     }
     return line;
 }

@@ -174,7 +174,7 @@ DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 faci
         double visible = chordVisible(scene, c, along, facingWs, object, w);
         return Value{visible * w, (2.0 * w - visible) * w};
     };
-    struct Panel {
+    struct ChordPanel {
         double a, b;
         Value ga, gm, gb;
         double v, b2, errV, errB, errT;
@@ -185,18 +185,18 @@ DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 faci
         auto coarse = [&](double Value::*m) { return 0.5 * h * (ga.*m + gb.*m); };
         double v = fine(&Value::v), bl = fine(&Value::b);
         double dv = v - coarse(&Value::v), db = bl - coarse(&Value::b);
-        return Panel{a,
-                     b,
-                     ga,
-                     gm,
-                     gb,
-                     v,
-                     bl,
-                     2.0 * std::abs(dv),
-                     2.0 * std::abs(db),
-                     2.0 * std::abs(dv + db)};
+        return ChordPanel{a,
+                          b,
+                          ga,
+                          gm,
+                          gb,
+                          v,
+                          bl,
+                          2.0 * std::abs(dv),
+                          2.0 * std::abs(db),
+                          2.0 * std::abs(dv + db)};
     };
-    std::vector<Panel> panels;
+    std::vector<ChordPanel> panels;
     double step = PI / firstPanels;
     Value gPrev = g(-0.5 * PI);
     for (int k = 0; k < firstPanels; ++k) {
@@ -226,7 +226,7 @@ DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 faci
         if (bound <= target || chords + 2 > std::max(MAX_CHORDS, 4 * firstPanels + 1)) {
             return {std::clamp(f, 0.0, 1.0), bound};
         }
-        Panel p = panels[worst];
+        ChordPanel p = panels[worst];
         double m = 0.5 * (p.a + p.b);
         Value q1 = g(0.5 * (p.a + m));
         Value q3 = g(0.5 * (m + p.b));

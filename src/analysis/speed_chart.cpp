@@ -47,9 +47,41 @@ double safeLog(double ms) { return std::log10(std::max(ms, 1e-6)); }
 }  // namespace
 
 std::string noisyNote() {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "! noisy: IQR > %g%% of median", NOISY_IQR_SHARE * 100.0);
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "hollow, !: noisy (IQR > %g%% of median), never on the front",
+                  NOISY_IQR_SHARE * 100.0);
     return buf;
+}
+
+std::string speedChartRenderer(std::span<const BenchRow> rows) {
+    for (const BenchRow& r : rows) {
+        if (!r.glRenderer.empty()) return r.glRenderer;
+    }
+    return "";
+}
+
+SpeedChartText speedChartTextFor(std::span<const BenchRow> rows, const SpeedChartText& text,
+                                 glm::ivec2 size, ChartTiming timing) {
+    SpeedChartText out = text;
+    bool anyNoisy = false;
+    for (const BenchRow& r : rows) {
+        anyNoisy = anyNoisy || !steadyTiming(r, timing == ChartTiming::Lookup);
+    }
+    float s = std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
+    // As speedChartTextBoxes places it: 12 px (scaled) in from the left, as much kept on the right.
+    float width = std::max(16.0f, size.x - 2.0f * std::round(12.0f * s));
+    out.subtitle.clear();
+    std::string full = text.subtitle;
+    if (anyNoisy) full += (full.empty() ? "" : "; ") + noisyNote();
+    for (const std::string& line :
+         wrapText(FontFace::Sans, fontsFor(s, text.minFontPx).subtitle, full, width)) {
+        out.subtitle += (out.subtitle.empty() ? "" : "\n") + line;
+    }
+    return out;
+}
+
+int subtitleLineCount(const std::string& subtitle) {
+    return 1 + static_cast<int>(std::count(subtitle.begin(), subtitle.end(), '\n'));
 }
 
 std::vector<size_t> chartRowsMatching(std::span<const BenchRow> rows,
@@ -123,11 +155,6 @@ glm::vec2 layoutLegend(SpeedChartLayout& L, std::span<const BenchRow> rows, cons
     for (int m : L.legendMethods) {
         legendText =
             std::max(legendText, measureText(FontFace::Sans, f.legend, methodInfo(m).name).x);
-    }
-    // The note on "!" wraps to the names' width (a wider legend would crowd the plot's labels).
-    L.noisyLines = wrapText(FontFace::Sans, f.legend, noisyNote(), legendText);
-    for (const std::string& line : L.noisyLines) {
-        legendText = std::max(legendText, measureText(FontFace::Sans, f.legend, line).x);
     }
     float lineH = fontMetrics(FontFace::Sans, f.legend).lineHeight;
     float swatch = 22.0f * s;
@@ -234,13 +261,20 @@ void layoutDots(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTiming
                               yPixelOf(L, chartAccuracy(r, accuracy)));
         L.errorBars.emplace_back(xPixelOf(L, barLogLo(r, timing)),
                                  xPixelOf(L, barLogHi(r, timing)));
-        L.labelTexts.push_back(chartLabel(r.point) + (r.noisy ? " !" : ""));
+        bool steady = steadyTiming(r, timing == ChartTiming::Lookup);
+        L.steady.push_back(steady);
+        L.labelTexts.push_back(chartLabel(r.point) + (steady ? "" : " !"));
     }
+    // The front of the steady dots only (bench_report.h: steadyTiming says why).
     std::vector<glm::dvec2> frontPoints;
-    for (const BenchRow& r : rows) {
-        frontPoints.emplace_back(chartMs(r, timing), chartAccuracy(r, accuracy));
+    std::vector<size_t> steadyRows;
+    for (size_t k = 0; k < rows.size(); ++k) {
+        if (!L.steady[k]) continue;
+        frontPoints.emplace_back(chartMs(rows[k], timing), chartAccuracy(rows[k], accuracy));
+        steadyRows.push_back(k);
     }
     L.front = paretoFront(frontPoints, PARETO_ERROR_TOLERANCE);
+    for (size_t& k : L.front) k = steadyRows[k];
 }
 
 // The order labels are placed in: the front's first, then the kept rows', then the rest.
@@ -300,10 +334,8 @@ LabelSpot bestLabelSpot(const SpeedChartLayout& L, glm::vec2 p, glm::vec2 t, boo
 }
 
 // Greedy label placement: the front's labels first, then the rest; each at bestLabelSpot.
-void placeLabels(SpeedChartLayout& L, std::span<const BenchRow> rows,
-                 const std::vector<bool>& needLabel, bool keptLabelsOnly) {
+void placeLabels(SpeedChartLayout& L, const std::vector<bool>& needLabel, bool keptLabelsOnly) {
     float s = L.scale;
-    float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
     std::vector<Rect> dots;
     float dotR = L.dotRadius;
     for (glm::vec2 p : L.points) dots.push_back({p.x - dotR, p.y - dotR, 2 * dotR, 2 * dotR});
@@ -320,11 +352,6 @@ void placeLabels(SpeedChartLayout& L, std::span<const BenchRow> rows,
         L.labels[k] = spot.box;
         L.labelShown[k] = true;
         placed.push_back(spot.box);
-        // A drawn " !" gets the legend's line that says what it means.
-        if (rows[k].noisy && !L.noisyNote) {
-            L.noisyNote = true;
-            L.legend.h += static_cast<float>(L.noisyLines.size()) * lineH;
-        }
     }
 }
 
@@ -365,7 +392,7 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
         if (k < rows.size()) needLabel[k] = true;
     }
     L.dotRadius = std::max(4.5f * s, std::round(f.label * 0.25f));
-    placeLabels(L, rows, needLabel, keptLabelsOnly);
+    placeLabels(L, needLabel, keptLabelsOnly);
     return L;
 }
 
@@ -418,10 +445,6 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
         y += lineH;
     }
     add({textX, y}, TextAlign::Left, L.legendPx, "chart-legend", "Pareto front");
-    for (size_t k = 0; L.noisyNote && k < L.noisyLines.size(); ++k) {
-        y += lineH;
-        add({textX, y}, TextAlign::Left, L.legendPx, "chart-legend", L.noisyLines[k]);
-    }
     return out;
 }
 
@@ -477,8 +500,15 @@ void drawPlotMarks(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRo
                    glm::vec4(1.0f, 0.55f, 0.0f, 1.0f));
         }
     }
+    // A noisy dot is hollow: a ring of its method's colour (its place across is not known).
     for (size_t k = 0; k < rows.size(); ++k) {
-        c.circle(L.points[k], dotR, methodColour(rows[k].point.method));
+        glm::vec4 colour = methodColour(rows[k].point.method);
+        if (L.steady[k]) {
+            c.circle(L.points[k], dotR, colour);
+        } else {
+            float w = std::max(1.5f, 0.4f * dotR);
+            c.ring(L.points[k], dotR - 0.5f * w, w, colour);
+        }
     }
     c.popClip();
 }
@@ -535,11 +565,11 @@ void drawTexts(Canvas& c, std::span<const ChartTextBox> texts, std::span<const B
 std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                     const SpeedChartText& text, ChartTiming timing,
                                     ChartAccuracy accuracy) {
-    int subtitleLines =
-        1 + static_cast<int>(std::count(text.subtitle.begin(), text.subtitle.end(), '\n'));
-    SpeedChartLayout L = layoutSpeedChart(rows, size, timing, accuracy, text.highlight,
-                                          text.minFontPx, text.keptLabelsOnly, subtitleLines);
-    std::vector<ChartTextBox> texts = speedChartTextBoxes(L, text);
+    SpeedChartText fitted = speedChartTextFor(rows, text, size, timing);
+    SpeedChartLayout L =
+        layoutSpeedChart(rows, size, timing, accuracy, text.highlight, text.minFontPx,
+                         text.keptLabelsOnly, subtitleLineCount(fitted.subtitle));
+    std::vector<ChartTextBox> texts = speedChartTextBoxes(L, fitted);
 
     return drawChartOffscreen(size, [&](Canvas& c) {
         drawGrid(c, L);

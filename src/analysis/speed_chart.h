@@ -3,7 +3,10 @@
 // (each run's cost spans 1 to ~200 texel reads), edge-band RMSE on a linear y axis from 0, one
 // dot per run coloured by method and labelled "gather3 1024" (method, N, map size), and the
 // Pareto front (runs no other run beats on both time and error) joined by a line, its dots
-// ringed. Drawn with the overlay's Canvas (src/draw/canvas.h) into an offscreen target.
+// ringed. A run whose time is noisy (its IQR above NOISY_IQR_SHARE of its median: bench.h) is a
+// hollow dot labelled " !" and never on the front, which joins the steady runs' medians only
+// (bench_report.h: steadyTiming): a dot that may sit anywhere along a wide bar cannot be ranked.
+// Drawn with the overlay's Canvas (src/draw/canvas.h) into an offscreen target.
 //
 // The layout is computed apart from the drawing (no GL), so where things go can be tested
 // without reading pixels. Coordinates are the canvas's: pixels, origin top-left, y down.
@@ -78,6 +81,7 @@ struct SpeedChartLayout {
     // as wide as the IQR, centred on the median; the CSV keeps the IQR, not the quartiles)
     std::vector<glm::vec2> errorBars;
     std::vector<std::string> labelTexts;  // per row
+    std::vector<bool> steady;             // per row: its time steady (a filled dot), or noisy
     std::vector<Rect> labels;             // per row: where its label's box goes
     // per row: whether its label is drawn. The front's and the kept rows' always are; any other
     // only where it finds a spot that overlaps no other label, no dot and stays in the plot.
@@ -85,18 +89,28 @@ struct SpeedChartLayout {
     std::vector<size_t> front;       // rows on the Pareto front, fastest first
     std::vector<int> legendMethods;  // methods present, in the rows' order of appearance
     Rect legend;
-    // Whether a drawn label ends in " !" (a noisy row): the legend then says what "!" means
-    // (noisyNote, wrapped to the legend's width: noisyLines), below the front's entry.
-    bool noisyNote = false;
-    std::vector<std::string> noisyLines;
     // The type sizes, pixels: scaled with the chart, none below the minimum asked for.
     float titlePx = 0, subtitlePx = 0, axisPx = 0, tickPx = 0, labelPx = 0, legendPx = 0;
     float dotRadius = 4.5f;  // pixels; a quarter of the label size at least, to see from afar
 };
 
-// The legend's line for the " !" that ends a noisy row's label: "! noisy: IQR > 10% of median"
-// (bench.h NOISY_IQR_SHARE).
+// What hollow dots and the " !" that ends their labels mean: "hollow, !: noisy (IQR > 10% of
+// median), never on the front" (bench.h NOISY_IQR_SHARE). The subtitle says it (a legend line
+// wrapped to the names' width took seven lines and ran off a lesson frame's chart).
 std::string noisyNote();
+
+// The GL_RENDERER the rows were measured on (bench.csv's gl_renderer), "" when not recorded.
+std::string speedChartRenderer(std::span<const BenchRow> rows);
+
+// The text as drawn: when any row is noisy in the timing, noisyNote ends the subtitle; the
+// subtitle is wrapped at spaces to the chart's width at its type size ('\n' still breaks: a
+// lesson frame's chart is narrow). drawSpeedChart draws this; a caller that lays the texts out
+// itself lays out this.
+SpeedChartText speedChartTextFor(std::span<const BenchRow> rows, const SpeedChartText& text,
+                                 glm::ivec2 size, ChartTiming timing = ChartTiming::Scene);
+
+// The lines a subtitle takes ('\n' separates them): layoutSpeedChart's subtitleLines.
+int subtitleLineCount(const std::string& subtitle);
 
 // "gather3 1024", "nearest 256", "gather3 gauss1.5 1024": the label of one run.
 std::string chartLabel(const BenchPoint& point);
@@ -110,8 +124,8 @@ glm::vec4 methodColour(int method);
 
 // Where everything goes. Needs the fonts (to measure labels), not GL. Times <= 0 are drawn at
 // the axis's low end. Throws std::invalid_argument for a side < 64 pixels.
-// Noisy rows' labels end in " !".
-// The Pareto front is of time against the chosen accuracy.
+// Rows noisy in the chosen timing are hollow dots whose labels end in " !".
+// The Pareto front is of time against the chosen accuracy, over the steady rows.
 SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                   ChartTiming timing = ChartTiming::Scene,
                                   ChartAccuracy accuracy = ChartAccuracy::EdgeRmse,

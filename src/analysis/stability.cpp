@@ -63,6 +63,9 @@ class Sweeper {
             case Sweep::Leak:
                 leak();
                 break;
+            case Sweep::Tradeoff:
+                tradeoff();
+                break;
             case Sweep::Shimmer:
                 shimmer();
                 break;
@@ -185,6 +188,34 @@ class Sweeper {
         }
     }
 
+    // Acne against the constant bias at one elevation, over the leak sweep's biases (the
+    // trade-off chart puts the two on one bias axis).
+    void tradeoff() {
+        say("tradeoff: acne against the constant bias at one elevation");
+        SceneRenderer renderer(*mContext.scene);
+        Scene scene = sceneAtElevation(mOptions.tradeoffElevation);
+        renderer.setLight(scene.light);
+        GroundTruth truth = truthOf(scene);
+        std::vector<std::vector<uint8_t>> lit =
+            cleanMasks(scene, truth, regionsOf(renderer, truth),
+                       centreHits(scene, mOptions.frameSize, mOptions.threads),
+                       renderer.shadowClipFromWorld(), true);
+        for (float b : mOptions.leakBiases) {
+            for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
+                const StabilityMethod& m = mOptions.methods[mi];
+                if (!stabilityPairExists(m, BiasMode::Constant)) continue;
+                RenderSettings s = settings(m, BiasMode::Constant);
+                s.constantBias = b;
+                FailureRate r = falseShadow(frame(renderer, s), lit[mi]);
+                for (auto [metric, y] :
+                     {std::pair<const char*, double>{"false_shadow_rate", r.share},
+                      {"clean_lit_pixels", r.count}}) {
+                    add(Sweep::Tradeoff, m, BiasMode::Constant, "constant_bias", b, metric, y);
+                }
+            }
+        }
+    }
+
     void leak() {
         for (size_t si = 0; si < mOptions.leakScenes.size(); ++si) {
             const std::string& name = mOptions.leakScenes[si];
@@ -225,18 +256,16 @@ class Sweeper {
                         std::vector<float> vis = frame(renderer, s);
                         FailureRate leaks = falseLight(vis, umbra);
                         LeakWidth width = leakWidth(vis, umbra, texels, world, mOptions.frameSize);
-                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_rate",
-                            leaks.share);
-                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_world",
-                            width.world);
-                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_texels",
-                            width.texels);
-                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_width_support",
-                            width.support);
-                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":leak_stray_pixels",
-                            width.stray);
-                        add(Sweep::Leak, m, bias, "constant_bias", b, name + ":clean_umbra_pixels",
-                            leaks.count);
+                        const std::pair<const char*, double> measured[] = {
+                            {"leak_rate", leaks.share},
+                            {"leak_width_world", width.world},
+                            {"leak_width_texels", width.texels},
+                            {"leak_width_support", width.support},
+                            {"leak_stray_pixels", width.stray},
+                            {"clean_umbra_pixels", leaks.count}};
+                        for (auto [metric, y] : measured) {
+                            add(Sweep::Leak, m, bias, "constant_bias", b, name + ":" + metric, y);
+                        }
                     }
                 }
             }
@@ -523,6 +552,8 @@ std::string_view sweepName(Sweep sweep) {
             return "acne";
         case Sweep::Leak:
             return "leak";
+        case Sweep::Tradeoff:
+            return "tradeoff";
         case Sweep::Shimmer:
             return "shimmer";
         case Sweep::Precision:
@@ -540,7 +571,14 @@ std::optional<Sweep> sweepFromName(std::string_view name) {
 }
 
 std::vector<Sweep> allSweeps() {
-    return {Sweep::Acne, Sweep::Leak, Sweep::Shimmer, Sweep::Precision, Sweep::Aliasing};
+    return {Sweep::Acne,    Sweep::Leak,      Sweep::Tradeoff,
+            Sweep::Shimmer, Sweep::Precision, Sweep::Aliasing};
+}
+
+std::string sweepNameList() {
+    std::string names;
+    for (Sweep s : allSweeps()) names += (names.empty() ? "" : ", ") + std::string(sweepName(s));
+    return names;
 }
 
 bool stabilityPairExists(const StabilityMethod& m, BiasMode bias) {
@@ -661,6 +699,9 @@ std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) 
     if (o.depthRanges.empty()) return empty("depth_ranges");
     if (!(o.precisionElevation >= 1.0f && o.precisionElevation <= 90.0f)) {
         return plain("the precision elevation is out of range (1..90 degrees)");
+    }
+    if (!(o.tradeoffElevation >= 1.0f && o.tradeoffElevation <= 90.0f)) {
+        return plain("the trade-off elevation is out of range (1..90 degrees)");
     }
     for (int size : o.aliasingMapSizes) {
         if (size < MIN_MAP_SIZE || size > MAX_MAP_SIZE) {

@@ -1,4 +1,4 @@
-// stability.h: where shadow-map filtering fails, measured. Five sweeps, each a curve of numbers
+// stability.h: where shadow-map filtering fails, measured. Six sweeps, each a curve of numbers
 // against the exact ground truth (ground_truth.h), for any list of methods and bias modes:
 //
 //   acne       the light's elevation swept from 90 down to 2 degrees over the scene; the
@@ -17,6 +17,9 @@
 //              stray pixel cannot set it; failure_measures.h says why 8), in world units and in
 //              shadow-map texels (the two points' map positions apart), with its support (the
 //              pixels counted) and the stray pixels left out.
+//   tradeoff   the acne sweep's false-shadow rate at ONE elevation (tradeoffElevation) with the
+//              constant bias swept over the leak sweep's biases: acne and leak on one bias axis,
+//              so that where a good bias lies (acne gone, no leak yet) can be read off one chart.
 //   shimmer    the map's texel grid slid under the world by (k/32, k/32) texel for k = 0..31
 //              (light.h's shiftShadowOrigin; the world's shadow stays where it is), mean and 99th
 //              percentile of |v(t) - v(t-1)| over the compared pixels of all frame pairs; the
@@ -61,11 +64,13 @@
 
 namespace pcf {
 
-enum class Sweep { Acne, Leak, Shimmer, Precision, Aliasing };
+enum class Sweep { Acne, Leak, Tradeoff, Shimmer, Precision, Aliasing };
 
-std::string_view sweepName(Sweep sweep);  // "acne", "leak", "shimmer", "precision", "aliasing"
+// "acne", "leak", "tradeoff", "shimmer", "precision", "aliasing"
+std::string_view sweepName(Sweep sweep);
 std::optional<Sweep> sweepFromName(std::string_view name);
 std::vector<Sweep> allSweeps();
+std::string sweepNameList();  // "acne, leak, tradeoff, shimmer, precision, aliasing"
 
 struct StabilityMethod {
     int method = PCF_NEAREST;
@@ -109,6 +114,7 @@ struct StabilityOptions {
     std::vector<float> depthRanges{1, 10, 100, 1e3f, 1e4f, 1e5f};
     std::vector<DepthFormat> depthFormats{DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F};
     float precisionElevation = 30.0f;  // degrees
+    float tradeoffElevation = 30.0f;   // degrees: the tradeoff sweep's light
     std::vector<int> aliasingMapSizes{256, 512, 1024, 2048};
     // A pinned pixel (frame coordinates, top-left origin): the shimmer sweep also writes the
     // flicker of its visibility curve (failure_measures.h: curveFlicker) as light_pinned_flicker

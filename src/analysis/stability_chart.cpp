@@ -288,6 +288,15 @@ void paintPanel(Painter& c, const LineChartSpec& spec, const LineAxes& axes,
     c.text({plot.centre().x, cell.y}, panel.title,
            {FontFace::Sans, px(14, s, mn), CHART_INK, TextAlign::Center}, "chart-title");
     PanelPlot pp{spec, axes, plot};
+    if (panel.band) {
+        float a = pp.xPixel(panel.band->x), b = pp.xPixel(panel.band->y);
+        float lo = std::min(a, b), hi = std::max(a, b), minW = 8.0f * s;
+        if (hi - lo < minW) {
+            lo -= 0.5f * (minW - (hi - lo));
+            hi = lo + minW;
+        }
+        c.fillRect({lo, plot.y, hi - lo, plot.h}, CHART_BAND);
+    }
     paintPanelGrid(c, pp, panel, s, tickFont);
     paintPanelLines(c, pp, panel, s, lw);
 }

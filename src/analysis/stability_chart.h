@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -29,7 +30,13 @@ struct ChartLine {
 struct ChartPanel {
     std::string title;
     std::vector<ChartLine> lines;
+    // An x range shaded behind the lines (lowest, highest x; e.g. the trade-off chart's good
+    // biases), at least a few pixels wide where the two are one point; a note names it.
+    std::optional<glm::dvec2> band = std::nullopt;
 };
+
+// The shade of a panel's band.
+inline const glm::vec4 CHART_BAND{0.80f, 0.93f, 0.80f, 1.0f};
 
 struct LineChartSpec {
     std::string title;

@@ -99,13 +99,17 @@ std::string stabilityChartSubtitle(std::span<const StabilityRow> rows, Sweep swe
     const StabilitySetup& s = *setup;
     std::string where =
         sweep == Sweep::Leak ? "the pole's and box-on-plane's contacts" : s.sceneName;
+    if (sweep == Sweep::Tradeoff) {
+        where = "acne: " + s.sceneName + ", light " + gText(s.tradeoffElevation) +
+                " deg above the ground; leak: the pole's and box-on-plane's contacts";
+    }
     if (sweep == Sweep::Precision) {
         where += ", light " + gText(s.precisionElevation) + " deg above the ground";
     }
     std::string frame = std::to_string(s.frameSize.x) + "x" + std::to_string(s.frameSize.y) +
                         " frame, map " + std::to_string(s.mapSize) + "^2";
     // Every mode but none subtracts the constant bias (kernel/bias.h: baseBias).
-    std::string bias = sweep == Sweep::Leak
+    std::string bias = sweep == Sweep::Leak || sweep == Sweep::Tradeoff
                            ? "the constant bias is the x axis (every mode but none subtracts it)"
                        : sweep == Sweep::Precision
                            ? "constant bias " + gText(s.constantBias) +
@@ -199,6 +203,111 @@ LineChartSpec leakChartSpec(std::span<const StabilityRow> rows, const std::strin
 std::vector<uint8_t> drawLeakChart(std::span<const StabilityRow> rows, glm::ivec2 size,
                                    const std::string& subtitle, float minFontPx) {
     LineChartSpec spec = leakChartSpec(rows, subtitle, minFontPx);
+    if (spec.panels.empty()) return {};
+    return drawLineChart(spec, size);
+}
+
+namespace {
+
+// The leak rates of one method in constant mode, per contact scene, at each bias of `biases`.
+void readTradeoffLeak(std::span<const StabilityRow> rows, TradeoffSeries& t) {
+    const std::string suffix = ":leak_rate";
+    for (const StabilityRow& r : rows) {
+        if (r.sweep != "leak" || !r.metric.ends_with(suffix)) continue;
+        std::string scene = r.metric.substr(0, r.metric.size() - suffix.size());
+        if (std::find(t.leakScenes.begin(), t.leakScenes.end(), scene) == t.leakScenes.end()) {
+            t.leakScenes.push_back(scene);
+        }
+    }
+    for (const std::string& scene : t.leakScenes) {
+        std::vector<std::optional<double>> leak;
+        for (double b : t.biases) {
+            leak.push_back(stabilityValue(rows, "leak", t.method, "constant", scene + suffix, b));
+        }
+        t.leak.push_back(leak);
+    }
+}
+
+// The first run of biases where acne and every scene's leak stay under the onset.
+std::optional<glm::dvec2> goodBiases(const TradeoffSeries& t) {
+    std::optional<glm::dvec2> good;
+    for (size_t k = 0; k < t.biases.size(); ++k) {
+        bool ok = t.acne[k] < TRADEOFF_ONSET && !t.leak.empty();
+        for (const auto& scene : t.leak) ok = ok && scene[k] && *scene[k] < TRADEOFF_ONSET;
+        if (ok && !good) good = glm::dvec2(t.biases[k]);
+        if (ok) good->y = t.biases[k];
+        if (!ok && good) break;
+    }
+    return good;
+}
+
+}  // namespace
+
+std::vector<TradeoffSeries> tradeoffSeries(std::span<const StabilityRow> rows) {
+    std::vector<TradeoffSeries> out;
+    for (const StabilityMethod& m : methodsOf(rows, "tradeoff")) {
+        TradeoffSeries t{m, shortMethod(m), {}, {}, {}, {}, std::nullopt};
+        std::vector<glm::dvec2> acne;
+        for (const StabilityRow& r : rows) {
+            if (r.sweep == "tradeoff" && r.metric == "false_shadow_rate" && r.method == m.method &&
+                r.kernel == m.kernel) {
+                acne.emplace_back(r.x, r.y);
+            }
+        }
+        std::sort(acne.begin(), acne.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x; });
+        for (glm::dvec2 p : acne) {
+            t.biases.push_back(p.x);
+            t.acne.push_back(p.y);
+        }
+        readTradeoffLeak(rows, t);
+        t.good = goodBiases(t);
+        out.push_back(t);
+    }
+    return out;
+}
+
+LineChartSpec tradeoffChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                                float minFontPx) {
+    LineChartSpec spec;
+    spec.title = "The bias trade-off: share of clean pixels wrong (acne, leak) by constant bias";
+    spec.subtitle = stabilityChartSubtitle(rows, Sweep::Tradeoff, subtitle);
+    spec.xLabel = "constant bias, light depth units (log scale)";
+    spec.yLabel =
+        "share of clean pixels wrong: acne = clean-lit pixels darker than 0.99, leak = clean "
+        "umbra pixels above 0.01";
+    spec.logX = true;
+    spec.percentY = true;
+    const glm::vec4 ACNE{0.84f, 0.37f, 0.0f, 1.0f};  // Okabe-Ito, as the biases'
+    const glm::vec4 LEAK[] = {{0.0f, 0.45f, 0.70f, 1.0f}, {0.0f, 0.62f, 0.45f, 1.0f}};
+    std::optional<StabilitySetup> setup = stabilitySetupOf(rows);
+    std::string acneName = "acne";
+    if (setup && setup->tradeoffElevation > 0.0) {
+        acneName += ", light " + gText(setup->tradeoffElevation) + " deg";
+    }
+    for (const TradeoffSeries& t : tradeoffSeries(rows)) {
+        ChartPanel panel{t.name, {}, t.good};
+        ChartLine acne{acneName, ACNE, false, {}};
+        for (size_t k = 0; k < t.biases.size(); ++k)
+            acne.points.emplace_back(t.biases[k], t.acne[k]);
+        panel.lines.push_back(acne);
+        for (size_t si = 0; si < t.leakScenes.size(); ++si) {
+            ChartLine leak{"leak: " + t.leakScenes[si], LEAK[si % 2], true, {}};
+            for (size_t k = 0; k < t.biases.size(); ++k) {
+                if (t.leak[si][k]) leak.points.emplace_back(t.biases[k], *t.leak[si][k]);
+            }
+            panel.lines.push_back(leak);
+        }
+        spec.panels.push_back(panel);
+    }
+    if (spec.panels.empty()) return spec;
+    spec.notes.push_back("green: a good bias (both < " + gText(100.0 * TRADEOFF_ONSET) + "%)");
+    spec.minFontPx = minFontPx;
+    return spec;
+}
+
+std::vector<uint8_t> drawTradeoffChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                       const std::string& subtitle, float minFontPx) {
+    LineChartSpec spec = tradeoffChartSpec(rows, subtitle, minFontPx);
     if (spec.panels.empty()) return {};
     return drawLineChart(spec, size);
 }
@@ -355,6 +464,7 @@ std::vector<ChartTextBox> shimmerTexts(std::span<const StabilityRow> rows, glm::
 constexpr SweepChart SWEEP_CHARTS[] = {
     {Sweep::Acne, "stability_acne.png", drawAcneChart, lineTexts<acneChartSpec>},
     {Sweep::Leak, "stability_leak.png", drawLeakChart, lineTexts<leakChartSpec>},
+    {Sweep::Tradeoff, "stability_tradeoff.png", drawTradeoffChart, lineTexts<tradeoffChartSpec>},
     {Sweep::Shimmer, "stability_shimmer.png", drawShimmerChart, shimmerTexts},
     {Sweep::Precision, "stability_precision.png", drawPrecisionChart,
      lineTexts<precisionChartSpec>},

@@ -4,6 +4,8 @@
 //              bias;
 //   leak       leak width against the constant bias: a panel per method, a line per bias, the
 //              second contact scene dashed;
+//   tradeoff   acne (at one elevation) and leak (at the contacts) against the constant bias, as
+//              shares of their clean pixels: a panel per method, the good biases shaded;
 //   precision  false-shadow rate against the light's depth range: a panel per bias, a line per
 //              depth format, the second method dashed;
 //   shimmer    mean change per frame over the same edge pixels, per method and bias;
@@ -50,6 +52,31 @@ LineChartSpec precisionChartSpec(std::span<const StabilityRow> rows, const std::
 BarChartSpec shimmerChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
                               float minFontPx = 8.0f);
 
+// Acne or leak on more than this share of their clean pixels counts (the acne chart's onset
+// line: "1% = acne onset").
+constexpr double TRADEOFF_ONSET = 0.01;
+
+// One method's trade-off, read from the tradeoff rows (acne) and the leak rows (constant mode):
+// at each swept constant bias, ascending, the false-shadow rate at the tradeoff elevation and
+// the leak rate of each contact scene (a bias the leak sweep did not run: no leak there).
+struct TradeoffSeries {
+    StabilityMethod method;
+    std::string name;  // the panel's title: "pcf-gather 5x5"
+    std::vector<double> biases;
+    std::vector<double> acne;
+    std::vector<std::string> leakScenes;
+    std::vector<std::vector<std::optional<double>>> leak;  // [scene][bias]
+    // The good biases: the first run of swept biases where acne and every scene's leak stay
+    // under TRADEOFF_ONSET (lowest, highest); nullopt when there is none.
+    std::optional<glm::dvec2> good;
+};
+std::vector<TradeoffSeries> tradeoffSeries(std::span<const StabilityRow> rows);
+
+LineChartSpec tradeoffChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                                float minFontPx = 8.0f);
+std::vector<uint8_t> drawTradeoffChart(std::span<const StabilityRow> rows, glm::ivec2 size,
+                                       const std::string& subtitle, float minFontPx = 8.0f);
+
 // The charts `pcfscope stability` writes, from its rows: acne rate against elevation (empty when
 // no acne row), leak width against bias, false-shadow rate against the depth range per depth
 // format, shimmer per method. Each is RGBA8 of `size`, no text
@@ -81,7 +108,7 @@ struct SweepChart {
 std::span<const SweepChart> sweepCharts();
 // The entry of the sweep named so ("acne"); nullptr when no chart is.
 const SweepChart* sweepChartNamed(std::string_view name);
-// "#acne, #leak, #shimmer, #precision": the names a lesson's chart may end in.
+// "#acne, #leak, #tradeoff, #shimmer, #precision": the names a lesson's chart may end in.
 std::string sweepChartNames();
 
 ImageChartSpec aliasingHeatmapSpec(const StabilityImage& heatmap,

@@ -103,7 +103,8 @@ std::vector<StabilityRow> stabilitySetupRows(const StabilitySetup& setup) {
             value("constant_bias", setup.constantBias),
             words("cull", setup.cull),
             words("depth", setup.depthFormat),
-            value("precision_elevation_deg", setup.precisionElevation)};
+            value("precision_elevation_deg", setup.precisionElevation),
+            value("tradeoff_elevation_deg", setup.tradeoffElevation)};
 }
 
 std::optional<StabilitySetup> stabilitySetupOf(std::span<const StabilityRow> rows) {
@@ -125,6 +126,7 @@ std::optional<StabilitySetup> stabilitySetupOf(std::span<const StabilityRow> row
         if (key == "truth_spp") s.truthSpp = static_cast<int>(r.y);
         if (key == "constant_bias") s.constantBias = r.y;
         if (key == "precision_elevation_deg") s.precisionElevation = r.y;
+        if (key == "tradeoff_elevation_deg") s.tradeoffElevation = r.y;
     }
     if (!any) return std::nullopt;
     char buf[32];

@@ -73,12 +73,14 @@ struct StabilitySetup {
     std::string cull;               // cullModeName of the shadow pass
     std::string depthFormat;        // depthFormatName
     double precisionElevation = 0;  // degrees: the precision sweep's light
+    double tradeoffElevation = 0;   // degrees: the tradeoff sweep's light (0: not recorded)
     std::string settings;           // e.g. "constant bias 0.002, cull back, depth 32f"
 };
 
 // The run's settings travel in stability.csv as rows of the pseudo-sweep "setup" (method "-",
 // bias "-", x_name "-", x 0), first: numbers in y ("frame_width", "frame_height", "map_size",
-// "truth_spp", "constant_bias", "precision_elevation_deg"), words after a colon in the metric
+// "truth_spp", "constant_bias", "precision_elevation_deg", "tradeoff_elevation_deg"), words after a
+// colon in the metric
 // ("scene:box-on-plane", "gl_renderer:llvmpipe (LLVM 15.0.6; 256 bits)", "cull:back",
 // "depth:32f"; a comma in them is written ';'), so that a chart drawn later from the CSV (a
 // lesson's) states the settings it was measured with.

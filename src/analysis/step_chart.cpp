@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "analysis/chart_axes.h"
 #include "analysis/stability_figures.h"
 #include "analysis/stability_report.h"
 #include "base/input_error.h"
@@ -54,8 +55,10 @@ const SweepChart& sweepChartOf(const ChartRef& ref) {
 SpeedChartText speedChartText(const StepChart& chart, const std::vector<BenchRow>& rows) {
     SpeedChartText labels;
     labels.title = "Speed against accuracy";
+    // The renderer (bench.csv's gl_renderer) and, on llvmpipe, what carries over to a GPU.
     labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
-                      std::filesystem::path(chart.chart).filename().string();
+                      std::filesystem::path(chart.chart).filename().string() + "; " +
+                      chartRendererLine(speedChartRenderer(rows), true);
     if (!chart.highlight.empty()) labels.highlight = chartRowsMatching(rows, chart.highlight);
     labels.minFontPx = chart.minFontPx;
     labels.keptLabelsOnly = chart.keptLabelsOnly;
@@ -103,10 +106,10 @@ std::vector<ChartTextBox> stepChartTexts(const StepChart& chart, glm::ivec2 size
     ChartRef ref = chartRef(chart.chart);
     if (ref.view.empty()) {
         std::vector<BenchRow> rows = readChartRows(chart.chart);
-        SpeedChartText text = speedChartText(chart, rows);
-        SpeedChartLayout layout =
-            layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
-                             text.highlight, text.minFontPx, text.keptLabelsOnly);
+        SpeedChartText text = speedChartTextFor(rows, speedChartText(chart, rows), size);
+        SpeedChartLayout layout = layoutSpeedChart(
+            rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse, text.highlight, text.minFontPx,
+            text.keptLabelsOnly, subtitleLineCount(text.subtitle));
         return speedChartTextBoxes(layout, text);
     }
     std::vector<StabilityRow> rows = readStabilityRows(ref.path);

@@ -46,7 +46,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* DEFAULT_SCENE = "box-on-plane";
+constexpr const char* BENCH_DEFAULT_SCENE = "box-on-plane";
 constexpr const char* CSV_NAME = "bench.csv";
 constexpr const char* MD_NAME = "bench.md";
 constexpr const char* ACCURACY_CHART = "speed_vs_accuracy.png";
@@ -367,7 +367,7 @@ BenchSetup setupOf(const BenchPlan& plan, const BenchResult& result, const GlCon
 }
 
 // The two charts into the staging folder: time against edge RMSE, and against shimmer.
-void writeCharts(const BenchPlan& plan, const BenchResult& result, const GlContext& gl, bool quick,
+void writeCharts(const BenchPlan& plan, const BenchResult& result, bool quick,
                  const fs::path& staging) {
     const BenchOptions& o = plan.config.options;
     std::string where = plan.config.scene.name + ", " + std::to_string(o.frameSize.x) + "x" +
@@ -377,10 +377,10 @@ void writeCharts(const BenchPlan& plan, const BenchResult& result, const GlConte
     std::string timer = result.rows.empty() ? std::string() : result.rows.front().timer;
     SpeedChartText text;
     text.minFontPx = STANDALONE_CHART_MIN_PX;
-    text.subtitle = chartRendererLine(gl.renderer()) + "\nmedian of " +
+    text.subtitle = chartRendererLine(speedChartRenderer(result.rows)) + "\nmedian of " +
                     std::to_string(o.gpuRepeats) + " round-robin samples (" +
                     std::to_string(2 * o.gpuRepeats) + " where the first were noisy), " + timer +
-                    "; bars: IQR; ! noisy (IQR > 10 % of median)";
+                    "; bars: IQR";
     text.xLabel = plan.timing == ChartTiming::Lookup
                       ? "filter time: bare lookup pass, ms (log scale)"
                       : "camera pass time, ms (log scale)";
@@ -419,11 +419,13 @@ int runBenchCommand(const BenchCommandOptions& o) {
         throw UsageError(e.what());
     }
     getloadavg(&loadEnd, 1);
+    // Every row names the renderer it was timed on (bench.csv's gl_renderer, the charts' subtitle).
+    for (BenchRow& row : result.rows) row.glRenderer = gl->renderer();
     BenchSetup setup = setupOf(plan, result, *gl, loadStart, loadEnd);
     std::string markdown = benchMarkdown(result.rows, setup);
     writeTextFile((staging.path() / CSV_NAME).string(), benchCsv(result.rows));
     writeTextFile((staging.path() / MD_NAME).string(), markdown);
-    writeCharts(plan, result, *gl, o.quick, staging.path());
+    writeCharts(plan, result, o.quick, staging.path());
     if (o.reference) {
         writeTextFile((staging.path() / REFERENCE_CSV_NAME).string(), referenceCsv(result.rows));
     }
@@ -454,7 +456,7 @@ Command addBenchCommand(CLI::App& app) {
     // The map holds back faces by default (front faces culled): shadow acne, a bias problem,
     // stays off the lit faces, so the edge error measures the filter (analysis/bench.h).
     o->render.defaults.cull = CullMode::Front;
-    o->render.addTo(sub, DEFAULT_SCENE);
+    o->render.addTo(sub, BENCH_DEFAULT_SCENE);
     // The single-run options bench refuses (baseSettings) stay out of its help.
     for (const char* single : SINGLE_RUN_OPTIONS) sub->get_option(single)->group("");
     sub->get_option("--weights")

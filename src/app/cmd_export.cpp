@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -138,7 +139,7 @@ ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::s
 namespace {
 
 // The MP4s of the planned steps that are animations; sets plan.videos.
-void planVideos(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson, glm::ivec2 size) {
+void planStepVideos(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson, glm::ivec2 size) {
     plan.videos = true;
     for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
         if (!lesson.steps[static_cast<size_t>(s - 1)].animate) continue;
@@ -152,8 +153,8 @@ void planVideos(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson, gl
 
 // plan.compares: `all` for every step, else each step's own `compare`, each checked on the step's
 // settings and the frame's size.
-void planCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
-                  const ExtrasFrame& frame, const CompareSpec& all) {
+void planStepCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
+                      const ExtrasFrame& frame, const CompareSpec& all) {
     plan.compares.clear();
     for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
         const LessonStep& step = lesson.steps[static_cast<size_t>(s - 1)];
@@ -181,7 +182,7 @@ void planCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
 
 void planExtras(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
                 const ExtrasFrame& frame, const std::string& compare) {
-    planVideos(outputs, plan, lesson, frame.size);
+    planStepVideos(outputs, plan, lesson, frame.size);
     CompareSpec all;
     if (!compare.empty()) {
         try {
@@ -190,7 +191,7 @@ void planExtras(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
             throw UsageError("--" + std::string(e.what()));
         }
     }
-    planCompares(outputs, plan, lesson, frame, all);
+    planStepCompares(outputs, plan, lesson, frame, all);
 }
 
 namespace {
@@ -237,6 +238,36 @@ void writeCompare(const Session& session, const CompareSpec& spec, const std::st
     writeTextFile(stem + "-compare.json", view.json() + "\n");
 }
 
+// Writes a frame's PNG and JSON on a second thread while the next frame renders: PNG encoding
+// is a third of an export's CPU time (perf, lesson 6 at 1280x720 presentation), and done on
+// the rendering thread it left llvmpipe's threads idle. One frame in flight at a time, so the
+// memory held is one frame's; wait() rethrows a failed write's error (a full disk), and the
+// destructor waits, so nothing is written after exportFrames returns or throws (the caller's
+// OutputFiles then takes back what an error left).
+class FrameWriter {
+  public:
+    FrameWriter() = default;
+    FrameWriter(const FrameWriter&) = delete;
+    FrameWriter& operator=(const FrameWriter&) = delete;
+    ~FrameWriter() {
+        if (mPending.valid()) mPending.wait();
+    }
+    void write(std::string stem, glm::ivec2 size, std::vector<uint8_t> rgba, std::string json) {
+        wait();
+        mPending = std::async(std::launch::async, [stem = std::move(stem), size,
+                                                   rgba = std::move(rgba), json = std::move(json)] {
+            writePngRgba8(stem + ".png", size.x, size.y, rgba);
+            writeTextFile(stem + ".json", json);
+        });
+    }
+    void wait() {
+        if (mPending.valid()) mPending.get();
+    }
+
+  private:
+    std::future<void> mPending;
+};
+
 }  // namespace
 
 void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
@@ -245,6 +276,7 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
     Session session(size, presentation);
     session.loadLesson(lessonPath);
     auto start = std::chrono::steady_clock::now();
+    FrameWriter writer;
     int extraFrames = 0;
     int videoFrames = 0;  // the frames of the steps' MP4s
     const Camera wide = session.scene().camera;
@@ -261,8 +293,7 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
             writeCompare(session, plan.compares[index], stem, size, presentation);
             ++extraFrames;
         }
-        writePngRgba8(stem + ".png", size.x, size.y, session.readFrame());
-        writeTextFile(stem + ".json", session.stepJson() + "\n");
+        writer.write(stem, size, session.readFrame(), session.stepJson() + "\n");
         if (progress) {
             std::fprintf(stderr, "export: %s (%d/%d)\n", (stem + ".png").c_str(),
                          s - plan.steps.x + 1, plan.steps.y - plan.steps.x + 1);
@@ -274,8 +305,7 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
             outputs->add("-o", more + ".json");
             session.setTextPage(page);
             session.compose();
-            writePngRgba8(more + ".png", size.x, size.y, session.readFrame());
-            writeTextFile(more + ".json", session.stepJson() + "\n");
+            writer.write(more, size, session.readFrame(), session.stepJson() + "\n");
             if (progress)
                 std::fprintf(stderr, "export: %s (page %d)\n", (more + ".png").c_str(), page + 1);
             ++extraFrames;
@@ -285,6 +315,7 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
             if (progress) std::fprintf(stderr, "export: %s\n", (stem + ".mp4").c_str());
         }
     }
+    writer.wait();
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     int frames = plan.steps.y - plan.steps.x + 1 + extraFrames + videoFrames;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/bench_report.h"
+#include "analysis/chart_facts.h"
 #include "analysis/speed_chart.h"
 #include "app/commands.h"
 #include "app/session.h"
@@ -28,7 +29,8 @@ namespace {
 constexpr glm::ivec2 CHECKED_FRAMES[] = {{1024, 768}, {1280, 720}, {1600, 900}, {1920, 1080}};
 
 // A bench chart's order: whether a's metric is less than b's (time: the median scene pass, as
-// the chart's x axis; rmse: the edge RMSE, its y axis). Each label must pick one row.
+// the chart's x axis; rmse: the edge RMSE, its y axis). Each label must pick one row. Any other
+// chart claim is a fact of the chart's table (analysis/chart_facts.h).
 ClaimWorld chartWorld(const LessonStep& step) {
     ClaimWorld world;
     world.chartLess = [&step](const std::string& a, const std::string& b,
@@ -55,6 +57,20 @@ ClaimWorld chartWorld(const LessonStep& step) {
                                         : chartAccuracy(r, ChartAccuracy::EdgeRmse);
         }
         return value[0] < value[1];
+    };
+    world.chartFact = [&step](const std::string& fact, std::string* why) {
+        if (step.chart.empty()) {
+            *why = "the step shows no chart";
+            return false;
+        }
+        try {
+            ChartFactAnswer a = chartFactHolds(step.chart, fact);
+            *why = a.why;
+            return a.holds;
+        } catch (const std::invalid_argument& e) {
+            *why = e.what();
+            return false;
+        }
     };
     return world;
 }

@@ -1,9 +1,11 @@
 // pcfscope stability: where methods fail (analysis/stability.h). Runs the sweeps (acne, leak,
-// shimmer, precision, aliasing) for a list of methods and bias modes and writes, into DIR:
+// tradeoff, shimmer, precision, aliasing) for a list of methods and bias modes and writes, into
+// DIR:
 //   stability.csv          one row per measured point: sweep,method,kernel,bias,x_name,x,metric,y
 //   stability.md           per method and bias: acne onset, leak width, shimmer
 //   stability_acne.png     false-shadow rate against the light's elevation, a line per bias
 //   stability_leak.png     leak width against the constant bias, a line per bias
+//   stability_tradeoff.png acne at one elevation and leak against the constant bias
 //   stability_shimmer.png  shimmer at the shadow edges per method and bias
 //   stability_precision.png false-shadow rate against the light's depth range, per format
 //   aliasing_heatmap.png   screen pixels per shadow-map texel over the frame, with its scale
@@ -41,7 +43,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* DEFAULT_SCENE = "box-on-plane";
+constexpr const char* STABILITY_DEFAULT_SCENE = "box-on-plane";
 
 struct StabilityCommandOptions {
     RenderOptions render;  // scene, bias parameters, culling, polygon offset, map, format, size
@@ -111,8 +113,8 @@ std::vector<Sweep> parseSweeps(const std::string& text) {
     for (const std::string& name : splitList("--sweep", text)) {
         std::optional<Sweep> s = sweepFromName(name);
         if (!s) {
-            throw UsageError("unknown sweep '" + name +
-                             "' in --sweep (known: acne, leak, shimmer, precision, aliasing)");
+            throw UsageError("unknown sweep '" + name + "' in --sweep (known: " + sweepNameList() +
+                             ")");
         }
         sweeps.push_back(*s);
     }
@@ -290,6 +292,7 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
     setup.cull = std::string(cullModeName(options.base.cull));
     setup.depthFormat = std::string(depthFormatName(options.base.depthFormat));
     setup.precisionElevation = options.precisionElevation;
+    setup.tradeoffElevation = options.tradeoffElevation;
     setup.settings = settingsLine(options);
     // The setup first, then the measured rows: the CSV says what it was measured with.
     std::vector<StabilityRow> rows = stabilitySetupRows(setup);
@@ -317,7 +320,7 @@ Command addStabilityCommand(CLI::App& app) {
     o->render.size = "480x270";
     o->render.defaults.mapSize = 512;
     o->render.frameRange.min = glm::ivec2(MIN_STABILITY_FRAME_SIDE);
-    o->render.addTo(sub, DEFAULT_SCENE);
+    o->render.addTo(sub, STABILITY_DEFAULT_SCENE);
     // The single-lookup options of the shared set do not apply here (parseOptions says so when
     // given): out of --help, which listed them as if they did.
     for (const char* single : SINGLE_LOOKUP_OPTIONS) {
@@ -331,8 +334,7 @@ Command addStabilityCommand(CLI::App& app) {
                     "bias modes, comma-separated (default none,constant,normal,receiver-plane; "
                     "--quick none,constant; pairs that cannot exist are skipped)");
     sub->add_option("--sweep", o->sweeps,
-                    "sweeps, comma-separated: acne, leak, shimmer, precision, aliasing (default "
-                    "all)");
+                    "sweeps, comma-separated: " + sweepNameList() + " (default all)");
     sub->add_option("-o,--out", o->out, "output directory (default: stability)");
     sub->add_option("--chart-size", o->chartSize,
                     sizeHelp("chart size", CHART_SIZE_RANGE, "default 1280x720; --quick 640x360"));

@@ -2,10 +2,12 @@
 
 #include <stdexcept>
 
+#include "analysis/chart_facts.h"
 #include "app/animation.h"
 #include "base/input_error.h"
 #include "base/usage_error.h"
 #include "kernel/methods.h"
+#include "lesson/lesson_claims.h"
 
 namespace pcf {
 
@@ -20,6 +22,21 @@ Lesson loadLessonChecked(const std::string& path) {
                              which + " focus '" + step.focus + "' is not one of: " + focusNames());
         }
         if (step.animate) stepAnimationOptions(step, path, static_cast<int>(i) + 1);  // checks
+        // A fact about a chart names one its chart's table knows (analysis/chart_facts.h).
+        for (const StepClaim& claim : step.claims) {
+            std::string fact = chartFactOf(claim);
+            if (fact.empty()) continue;
+            if (step.chart.empty()) {
+                throw InputError(path, claim.line,
+                                 which + " claim \"" + claim.text + "\": the step shows no chart");
+            }
+            try {
+                checkChartFactKnown(step.chart, fact);
+            } catch (const std::invalid_argument& e) {
+                throw InputError(path, claim.line,
+                                 which + " claim \"" + claim.text + "\": " + e.what());
+            }
+        }
         if (step.chart.empty()) continue;
         try {
             checkStepChart(step.chart);

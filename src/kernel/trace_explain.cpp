@@ -118,19 +118,24 @@ std::string formatNumber(float value) {
     return s;
 }
 
+std::string formatPair(vec2 value) {
+    return "(" + formatNumber(value.x) + ", " + formatNumber(value.y) + ")";
+}
+
+std::string formatBit(float lit) {
+    if (lit == 0.0f || lit == 1.0f) return lit >= 0.5f ? "1" : "0";
+    return formatNumber(lit);
+}
+
 namespace {
 
 using K = TraceStepKind;
 using Steps = std::vector<TraceStep>;
 
 std::string num(float v) { return formatNumber(v); }
-std::string pair(vec2 v) { return "(" + num(v.x) + ", " + num(v.y) + ")"; }
+std::string pair(vec2 v) { return formatPair(v); }
 std::string pair(ivec2 v) { return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ")"; }
-// A comparison's result: the bit, or the soft comparison's fraction.
-std::string bit(float lit) {
-    if (lit == 0.0f || lit == 1.0f) return lit >= 0.5f ? "1" : "0";
-    return formatNumber(lit);
-}
+std::string bit(float lit) { return formatBit(lit); }
 
 // The taps a fetch instruction read, in read order.
 std::vector<TapRecord> tapsOf(const Trace& tr, int fetch) {

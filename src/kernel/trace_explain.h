@@ -21,5 +21,9 @@ const char* stepKindName(TraceStepKind kind);
 
 // A number as the steps print it: up to 4 decimals, trailing zeros trimmed ("0.8", "0.0711").
 std::string formatNumber(float value);
+// A position "(u, v)" of two such numbers.
+std::string formatPair(vec2 value);
+// A comparison's result: the bit "0" or "1", or the soft comparison's fraction.
+std::string formatBit(float lit);
 
 }  // namespace pcf

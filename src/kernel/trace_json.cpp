@@ -13,14 +13,6 @@ namespace pcf {
 
 namespace {
 
-std::string num(float v) { return formatNumber(v); }
-std::string pair(vec2 v) { return "(" + num(v.x) + ", " + num(v.y) + ")"; }
-// A comparison's result: the bit, or the soft comparison's fraction.
-std::string bit(float lit) {
-    if (lit == 0.0f || lit == 1.0f) return lit >= 0.5f ? "1" : "0";
-    return formatNumber(lit);
-}
-
 const char* fetchKindName(int kind) {
     switch (kind) {
         case PCF_FETCH_POINT:
@@ -157,7 +149,7 @@ std::string traceToText(const Trace& tr) {
     const MethodInfo& info = methodInfo(tr.params.method);
     s << "pcfscope trace: " << info.name;
     if (info.usesKernel) s << ", N = " << tr.params.kernel;
-    if (info.usesRadius) s << ", radius " << num(tr.params.radius) << " texels";
+    if (info.usesRadius) s << ", radius " << formatNumber(tr.params.radius) << " texels";
     s << "  (" << info.summary << ")\n\n";
     std::vector<TraceStep> steps = explainTrace(tr);
     for (size_t k = 0; k < steps.size(); ++k) {
@@ -195,8 +187,8 @@ std::string traceToText(const Trace& tr) {
             bool clamped = false;
             for (const TapRecord& t : tr.taps) clamped = clamped || (t.texel == texel && t.clamped);
             anyClamped = anyClamped || clamped;
-            std::string cell = tap ? num(tap->depth) + " / " + bit(tap->lit) + " / " +
-                                         num(g.at(texel)) + (clamped ? " *" : "")
+            std::string cell = tap ? formatNumber(tap->depth) + " / " + formatBit(tap->lit) +
+                                         " / " + formatNumber(g.at(texel)) + (clamped ? " *" : "")
                                    : "-";
             char buf[40];
             std::snprintf(buf, sizeof buf, " %-18s", cell.c_str());
@@ -207,11 +199,11 @@ std::string traceToText(const Trace& tr) {
     if (anyClamped) s << "* also read for texels outside the map, clamped to the edge\n";
     s << "\nfetches: " << tr.counts.texels << " texel reads, " << tr.counts.gathers << " gathers, "
       << tr.counts.hwTaps << " hardware taps\n";
-    s << "visibility = " << num(tr.visibility) << "\n";
+    s << "visibility = " << formatNumber(tr.visibility) << "\n";
     if (tr.usesTextureUnit) {
-        s << "texture unit: frac " << pair(tr.pos.frac) << " -> visibility "
-          << num(tr.visibilityExact) << " (exact); frac " << pair(tr.fracHw8) << " -> visibility "
-          << num(tr.visibilityHw8) << " (hw8, 1/256 texel)\n";
+        s << "texture unit: frac " << formatPair(tr.pos.frac) << " -> visibility "
+          << formatNumber(tr.visibilityExact) << " (exact); frac " << formatPair(tr.fracHw8)
+          << " -> visibility " << formatNumber(tr.visibilityHw8) << " (hw8, 1/256 texel)\n";
     }
     return s.str();
 }

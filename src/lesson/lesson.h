@@ -151,7 +151,7 @@ struct LessonStep {
     // `chart = "figures/bench.csv"`: this step shows the speed/accuracy chart drawn from that
     // bench.csv (a path relative to the lesson file) where the scene would be. Not inherited.
     // A stability.csv names its chart after a '#': "figures/stability.csv#acne" (or #leak,
-    // #shimmer), kept in `chart` after the resolved path.
+    // #tradeoff, #shimmer, #precision), kept in `chart` after the resolved path.
     std::string chart;
     int chartLine = 0;  // the line of the `chart` key
     // `chart_highlight = "front"` or `"gather3, tent3 256"`: the bench chart's dots the step's

@@ -7,14 +7,18 @@
 
 namespace pcf {
 
-namespace {
-
-struct Token {
+// A claim's token: a member of ParsedClaim (lesson.h holds claims), so outside the anonymous
+// namespace.
+struct ClaimToken {
     enum Kind { Number, Name, Op } kind = Number;
     double number = 0.0;
     std::string name;  // the inside of a {placeholder}
     char op = 0;       // + - * / ( )
 };
+
+namespace {
+
+using Token = ClaimToken;
 
 std::string trim(std::string_view s) {
     size_t a = s.find_first_not_of(" \t");
@@ -135,7 +139,7 @@ std::pair<size_t, std::string> findComparison(std::string_view s) {
     return {std::string_view::npos, ""};
 }
 
-std::string number(double v) {
+std::string numberText(double v) {
     std::ostringstream s;
     s.precision(6);
     s << v;
@@ -146,12 +150,13 @@ std::string number(double v) {
 
 class ParsedClaim {
   public:
-    enum Kind { Lit, Shadowed, Penumbra, FailingNearer, OnGround, Bits, Compare, Chart };
+    enum Kind { Lit, Shadowed, Penumbra, FailingNearer, OnGround, Bits, Compare, Chart, ChartFact };
     Kind kind = Compare;
-    std::vector<Token> lhs, rhs;
+    std::vector<ClaimToken> lhs, rhs;
     std::string op;
     double tolerance = 0.0;
     std::string chartA, chartB, metric;  // chart: a's metric < b's
+    std::string fact;                    // chart: any other statement (ClaimWorld::chartFact)
     std::string bits;                    // bits: every read's bit, in read order
 };
 
@@ -191,9 +196,12 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
             c->metric = metric;
             return c;
         }
-        throw std::invalid_argument(
-            "a chart claim reads 'chart: A faster than B' (or slower than, more accurate than, "
-            "less accurate than)");
+        // Anything else is a fact the chart's own table knows (analysis/chart_facts.h), or
+        // `lesson check` says which it knows.
+        if (rest.empty()) throw std::invalid_argument("'chart:' says nothing about the chart");
+        c->kind = ParsedClaim::ChartFact;
+        c->fact = rest;
+        return c;
     }
     auto [at, op] = findComparison(t);
     if (at == std::string_view::npos) {
@@ -226,8 +234,13 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
     return c;
 }
 
+std::string chartFactOf(const StepClaim& claim) {
+    return claim.parsed && claim.parsed->kind == ParsedClaim::ChartFact ? claim.parsed->fact : "";
+}
+
 bool isChartClaim(const StepClaim& claim) {
-    return claim.parsed && claim.parsed->kind == ParsedClaim::Chart;
+    return claim.parsed && (claim.parsed->kind == ParsedClaim::Chart ||
+                            claim.parsed->kind == ParsedClaim::ChartFact);
 }
 
 namespace {
@@ -246,7 +259,7 @@ bool failingNearer(const Trace& t, std::string* why) {
         if (tap.lit < 0.5f && !(tap.depth < tap.ref)) {
             if (why)
                 *why = "read " + std::to_string(k) +
-                       " fails with depth - ref = " + number(tap.depth - tap.ref);
+                       " fails with depth - ref = " + numberText(tap.depth - tap.ref);
             return false;
         }
     }
@@ -273,13 +286,13 @@ bool claimHolds(const StepClaim& claim, const Trace& trace, const StepContext& c
     };
     switch (c.kind) {
         case ParsedClaim::Lit:
-            say("visibility " + number(trace.visibility));
+            say("visibility " + numberText(trace.visibility));
             return litHolds(trace);
         case ParsedClaim::Shadowed:
-            say("visibility " + number(trace.visibility));
+            say("visibility " + numberText(trace.visibility));
             return trace.visibility == 0.0f;
         case ParsedClaim::Penumbra:
-            say("visibility " + number(trace.visibility));
+            say("visibility " + numberText(trace.visibility));
             return trace.visibility > 0.0f && trace.visibility < 1.0f;
         case ParsedClaim::FailingNearer:
             return failingNearer(trace, why);
@@ -302,6 +315,13 @@ bool claimHolds(const StepClaim& claim, const Trace& trace, const StepContext& c
             say(c.chartA + "'s " + c.metric + " is not less than " + c.chartB + "'s");
             return std::get<bool>(r);
         }
+        case ParsedClaim::ChartFact: {
+            if (!world.chartFact) return true;
+            std::string factWhy;
+            bool holds = world.chartFact(c.fact, &factWhy);
+            say(factWhy);
+            return holds;
+        }
         case ParsedClaim::Compare:
             break;
     }
@@ -313,8 +333,8 @@ bool claimHolds(const StepClaim& claim, const Trace& trace, const StepContext& c
         return false;
     }
     bool holds = compare(*a, c.op, *b, c.tolerance);
-    std::string got = number(*a) + " " + c.op + " " + number(*b);
-    if (c.op == "~") got += " +- " + number(c.tolerance);
+    std::string got = numberText(*a) + " " + c.op + " " + numberText(*b);
+    if (c.op == "~") got += " +- " + numberText(c.tolerance);
     say((holds ? "" : "not ") + got);
     return holds;
 }

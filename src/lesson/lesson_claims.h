@@ -11,6 +11,7 @@
 //                                       its ref (depth < ref)
 //     "bits 1010",                      every read's bit, in read order
 //     "chart: pcf-gather3 faster than pcf-hw3",   an order on the step's chart (bench.csv)
+//     "chart: measured on llvmpipe",    any other fact of the step's chart's table
 //   ]
 //
 // Keywords: `lit` (every read that counts passes, visibility 1), `shadowed` (visibility 0),
@@ -21,7 +22,9 @@
 // for counts and bits. Chart claims read the CSV the step's chart draws: `chart: A faster than B` /
 // `slower than` (the median scene-pass time), `more accurate than` / `less accurate than` (edge
 // RMSE against the ray-cast truth); A and B are dot labels or their first word, as chart_highlight
-// takes them.
+// takes them. Any other `chart: FACT` is one of the facts the chart's data answers
+// (analysis/chart_facts.h: the renderer it was measured on, where acne and leak lie on the bias
+// axis); `lesson check` names the facts it knows when one is not among them.
 //
 // A step's `keys = ["O", "+"]` names the viewer keys its words are written to survive (a step that
 // tells the class to press O): the checker verifies the claims after each of those keys too.
@@ -51,6 +54,10 @@ struct ClaimWorld {
     std::function<std::variant<bool, std::string>(const std::string& a, const std::string& b,
                                                   const std::string& metric)>
         chartLess;
+    // Any other chart claim: whether the fact holds on the step's chart; `why` gets the numbers
+    // that decided it, or the reason it cannot be told (an unknown fact, a file without the
+    // data: then false). Unset: held.
+    std::function<bool(const std::string& fact, std::string* why)> chartFact;
 };
 
 // Parses a claim; std::invalid_argument naming what is wrong (an unknown placeholder, a missing
@@ -62,7 +69,10 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text);
 bool claimHolds(const StepClaim& claim, const Trace& trace, const StepContext& ctx,
                 const ClaimWorld& world, std::string* why = nullptr);
 
-// Whether the claim reads the step's chart (and nothing of the trace).
+// The fact a "chart: FACT" claim states (not an order of dots), or "" for any other claim.
+std::string chartFactOf(const StepClaim& claim);
+
+// Whether the claim reads the step's chart (an order or a fact; nothing of the trace).
 bool isChartClaim(const StepClaim& claim);
 
 }  // namespace pcf

@@ -9,7 +9,7 @@ namespace pcf {
 
 namespace {
 
-constexpr Colour PANEL{0.05f, 0.06f, 0.08f, 0.86f};
+constexpr Colour TRACE_PANEL{0.05f, 0.06f, 0.08f, 0.86f};
 constexpr Colour AXIS{0.55f, 0.58f, 0.65f, 1.0f};
 constexpr Colour TEXT{0.92f, 0.93f, 0.96f, 1.0f};
 
@@ -37,7 +37,7 @@ glm::vec2 flickerTracePoint(const Rect& plot, int frameCount, int k, float v) {
 
 std::vector<LayoutBox> drawFlickerTrace(Canvas& canvas, const Rect& box, const FlickerTrace& trace,
                                         float textPx) {
-    canvas.fillRect(box, PANEL);
+    canvas.fillRect(box, TRACE_PANEL);
     float row = std::ceil(textPx * 1.3f);
     float pad = std::ceil(textPx * 0.5f);
     std::vector<LayoutBox> boxes;

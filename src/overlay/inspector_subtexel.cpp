@@ -12,13 +12,13 @@ namespace pcf::inspector_detail {
 
 namespace {
 
-constexpr int INSET_STEPS = 6;           // the inset spans this many 1/256 steps per side
-constexpr float CAPTION_GAP_PX = 4.0f;   // the caption below its lane's top
-constexpr float LATTICE_LINE_PX = 1.0f;  // a 1/256 line
-constexpr float POINT_MIN_PX = 3.0f;     // the float position's dot: at least this,
-constexpr float POINT_PER_STEP = 0.16f;  // else this share of a step
-constexpr float QUANT_PER_STEP = 0.4f;   // the 8-bit position's square: this share of a step
-constexpr float QUANT_LINE_PX = 2.0f;    // its outline
+constexpr int INSET_STEPS = 6;               // the inset spans this many 1/256 steps per side
+constexpr float CAPTION_GAP_PX = 4.0f;       // the caption below its lane's top
+constexpr float LATTICE_LINE_PX = 1.0f;      // a 1/256 line
+constexpr float SUBTEXEL_DOT_MIN_PX = 3.0f;  // the float position's dot: at least this,
+constexpr float POINT_PER_STEP = 0.16f;      // else this share of a step
+constexpr float QUANT_PER_STEP = 0.4f;       // the 8-bit position's square: this share of a step
+constexpr float QUANT_LINE_PX = 2.0f;        // its outline
 constexpr Colour INSET_BACK{0.06f, 0.07f, 0.09f, 1.0f};
 constexpr Colour LATTICE{0.66f, 0.69f, 0.76f, 0.45f};
 constexpr Colour TEXEL_EDGE{0.95f, 0.95f, 0.98f, 0.9f};   // a lattice line on a texel border
@@ -87,7 +87,7 @@ void planSubtexelInset(Planner& pl, const InspectorLayout& l, const Trace& tr, c
     glm::vec2 fp = at(s);
     glm::vec2 qp = at(q);
     Rect rounds{qp.x - step * 0.5f, qp.y - step * 0.5f, step, step};
-    float pr = std::max(POINT_MIN_PX, std::round(step * POINT_PER_STEP));
+    float pr = std::max(SUBTEXEL_DOT_MIN_PX, std::round(step * POINT_PER_STEP));
     float qs = std::round(step * QUANT_PER_STEP);
     pl.op([=](Canvas& c) {
         c.fillRect(box, INSET_BACK);

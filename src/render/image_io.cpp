@@ -154,6 +154,11 @@ void writePngRgba8(const std::string& path, int width, int height, std::span<con
     // zlib level 1: exported frames are flat UI colours and compress well anyway, and at the
     // default level 6 compression was a third of an export's time.
     spec.attribute("png:compressionLevel", 1);
+    // One row filter, "up" (each byte minus the one above: flat panels and vertical gradients
+    // become runs of zeros), instead of libpng's per-row trial of all five, which cost more
+    // than the compression (22 % of an export's CPU against zlib's 11 %, perf). 0x20 is
+    // libpng's PNG_FILTER_UP.
+    spec.attribute("png:filter", 0x20);
     writeImageAtomically(path, spec, OIIO::TypeDesc::UINT8, rgba.data());
 }
 

@@ -1,0 +1,161 @@
+#include "analysis/chart_facts.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <span>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+#include "analysis/bench_report.h"
+#include "analysis/speed_chart.h"
+#include "analysis/stability_figures.h"
+#include "analysis/stability_report.h"
+#include "analysis/step_chart.h"
+#include "base/input_file.h"
+
+namespace pcf {
+
+namespace {
+
+// A chart as the step names it: the file, and after '#' which stability chart ("" for bench).
+struct ChartData {
+    std::string path;
+    std::string view;
+};
+
+ChartData chartData(const std::string& chart) {
+    size_t hash = chart.rfind('#');
+    if (hash == std::string::npos) return {chart, ""};
+    return {chart.substr(0, hash), chart.substr(hash + 1)};
+}
+
+std::string percent(double share) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g%%", 100.0 * share);
+    return buf;
+}
+
+std::string gText(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+// "measured on NAME": the renderer the file records contains NAME.
+ChartFactAnswer measuredOn(const ChartData& c, const std::string& name) {
+    std::string renderer;
+    if (c.view.empty()) {
+        renderer = speedChartRenderer(readChartRows(c.path));
+    } else {
+        std::vector<StabilityRow> rows = parseStabilityCsv(readInputFile(c.path), c.path);
+        if (std::optional<StabilitySetup> setup = stabilitySetupOf(rows)) {
+            renderer = setup->glRenderer;
+        }
+    }
+    if (renderer.empty()) {
+        return {false, c.path + " records no renderer (older than its gl_renderer column)"};
+    }
+    return {renderer.find(name) != std::string::npos, "measured on " + renderer};
+}
+
+// The trade-off of the panel titled `method`, or std::invalid_argument naming the panels.
+TradeoffSeries tradeoffOf(const ChartData& c, const std::string& method) {
+    std::vector<StabilityRow> rows = parseStabilityCsv(readInputFile(c.path), c.path);
+    std::string names;
+    for (const TradeoffSeries& t : tradeoffSeries(rows)) {
+        if (t.name == method) return t;
+        names += (names.empty() ? "" : ", ") + t.name;
+    }
+    throw std::invalid_argument("'" + method + "' is no panel of the trade-off chart (panels: " +
+                                (names.empty() ? "none" : names) + ")");
+}
+
+// The largest leak rate of the contact scenes at bias index k (0 where none was measured).
+double leakAt(const TradeoffSeries& t, size_t k) {
+    double most = 0.0;
+    for (const auto& scene : t.leak) most = std::max(most, scene[k].value_or(0.0));
+    return most;
+}
+
+std::string acneWhy(const TradeoffSeries& t, size_t k) {
+    return "acne " + percent(t.acne[k]) + " at bias " + gText(t.biases[k]);
+}
+
+std::string leakWhy(const TradeoffSeries& t, size_t k) {
+    return "leak " + percent(leakAt(t, k)) + " at bias " + gText(t.biases[k]);
+}
+
+ChartFactAnswer acneFalls(const ChartData& c, const std::string& method) {
+    TradeoffSeries t = tradeoffOf(c, method);
+    if (t.biases.empty()) return {false, "no trade-off rows for " + method};
+    size_t last = t.biases.size() - 1;
+    return {t.acne.front() >= TRADEOFF_ONSET && t.acne.back() < TRADEOFF_ONSET,
+            acneWhy(t, 0) + ", " + acneWhy(t, last)};
+}
+
+ChartFactAnswer leakGrows(const ChartData& c, const std::string& method) {
+    TradeoffSeries t = tradeoffOf(c, method);
+    if (t.biases.empty() || t.leak.empty()) return {false, "no leak rows for " + method};
+    size_t last = t.biases.size() - 1;
+    return {leakAt(t, 0) < TRADEOFF_ONSET && leakAt(t, last) >= TRADEOFF_ONSET,
+            leakWhy(t, 0) + ", " + leakWhy(t, last)};
+}
+
+ChartFactAnswer goodBetween(const ChartData& c, const std::string& method) {
+    TradeoffSeries t = tradeoffOf(c, method);
+    if (!t.good) return {false, "no bias keeps both acne and leak under the onset"};
+    bool acneBelow = false, leakAbove = false;
+    for (size_t k = 0; k < t.biases.size(); ++k) {
+        if (t.biases[k] < t.good->x && t.acne[k] >= TRADEOFF_ONSET) acneBelow = true;
+        if (t.biases[k] > t.good->y && leakAt(t, k) >= TRADEOFF_ONSET) leakAbove = true;
+    }
+    return {acneBelow && leakAbove, "good biases " + gText(t.good->x) + " to " + gText(t.good->y) +
+                                        (acneBelow ? "" : "; no acne below") +
+                                        (leakAbove ? "" : "; no leak above")};
+}
+
+// A fact's words around its one argument: PREFIX ARG SUFFIX; `view` the chart it applies to
+// ("" a bench chart, "*" any chart, else a stability chart's name).
+struct FactEntry {
+    std::string_view prefix;
+    std::string_view suffix;
+    std::string_view view;
+    ChartFactAnswer (*test)(const ChartData&, const std::string& arg);
+};
+
+constexpr FactEntry FACTS[] = {
+    {"measured on ", "", "*", measuredOn},
+    {"", ": acne falls as the bias grows", "tradeoff", acneFalls},
+    {"", ": leak grows with the bias", "tradeoff", leakGrows},
+    {"", ": a good bias lies between acne and leak", "tradeoff", goodBetween},
+};
+
+// The entry whose words match `fact` on this chart, and its argument; or invalid_argument.
+std::pair<const FactEntry*, std::string> matchFact(const ChartData& c, const std::string& fact) {
+    std::string known;
+    for (const FactEntry& e : FACTS) {
+        if (e.view != "*" && e.view != c.view) continue;
+        known += std::string(known.empty() ? "" : "; ") + std::string(e.prefix) + "X" +
+                 std::string(e.suffix);
+        if (fact.size() <= e.prefix.size() + e.suffix.size()) continue;
+        if (!fact.starts_with(e.prefix) || !fact.ends_with(e.suffix)) continue;
+        return {&e, fact.substr(e.prefix.size(), fact.size() - e.prefix.size() - e.suffix.size())};
+    }
+    throw std::invalid_argument("unknown chart fact '" + fact +
+                                "' (this chart knows: " + (known.empty() ? "none" : known) + ")");
+}
+
+}  // namespace
+
+ChartFactAnswer chartFactHolds(const std::string& chart, const std::string& fact) {
+    ChartData c = chartData(chart);
+    auto [entry, arg] = matchFact(c, fact);
+    return entry->test(c, arg);
+}
+
+void checkChartFactKnown(const std::string& chart, const std::string& fact) {
+    matchFact(chartData(chart), fact);
+}
+
+}  // namespace pcf

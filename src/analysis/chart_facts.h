@@ -1,0 +1,38 @@
+// chart_facts.h: the statements a lesson step makes about its chart's data ("chart: FACT" claims,
+// lesson/lesson_claims.h), read from the CSV the chart draws, so that `lesson check` verifies
+// them as it verifies the words about a lookup. One table (chart_facts.cpp): each fact's words,
+// the charts it applies to, and its test. Orders of dots ("A faster than B") are not facts here:
+// lesson_claims.h parses those itself.
+//
+//   measured on NAME                          any chart: GL_RENDERER contains NAME (bench.csv's
+//                                             gl_renderer, stability.csv's setup row)
+//   M: acne falls as the bias grows           #tradeoff: method M's acne over the onset at the
+//                                             smallest bias, under it at the largest
+//   M: leak grows with the bias               #tradeoff: M's leak under the onset at the smallest
+//                                             bias, over it (some contact scene) at the largest
+//   M: a good bias lies between acne and leak #tradeoff: M has good biases (stability_figures.h:
+//                                             TradeoffSeries::good), acne over the onset below
+//                                             them and leak over it above them
+//
+// M is the chart's panel title ("pcf-gather 5x5", "nearest").
+#pragma once
+
+#include <string>
+
+namespace pcf {
+
+struct ChartFactAnswer {
+    bool holds = false;
+    std::string why;  // the numbers that decided it ("acne 0.3% at bias 0.0005")
+};
+
+// Whether `fact` holds on `chart` ("PATH" for a bench.csv, "PATH#NAME" for a stability chart,
+// as step_chart.h reads them). Throws std::invalid_argument naming the facts the chart knows
+// when none matches, InputError for the file.
+ChartFactAnswer chartFactHolds(const std::string& chart, const std::string& fact);
+
+// Throws std::invalid_argument as chartFactHolds does when no fact of the table matches `fact`
+// for that kind of chart (the file is not read): a lesson is refused at load for it.
+void checkChartFactKnown(const std::string& chart, const std::string& fact);
+
+}  // namespace pcf
