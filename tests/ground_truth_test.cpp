@@ -93,10 +93,12 @@ std::vector<glm::dvec2> sphereShadowPolygon(glm::dvec3 centre, double r, glm::dv
 std::vector<glm::dvec2> boxShadowPolygon(const Box& box, glm::dvec3 d) {
     std::vector<glm::dvec2> pts;
     for (int k = 0; k < 8; ++k) {
-        glm::vec3 local((k & 1 ? 1.0f : -1.0f) * box.halfExtents.x,
-                        (k & 2 ? 1.0f : -1.0f) * box.halfExtents.y,
-                        (k & 4 ? 1.0f : -1.0f) * box.halfExtents.z);
-        glm::dvec3 v(boxWorldFromLocal(box, local));
+        // In double (boxWorldFromLocal rounds to float: 2e-7 units, 5e-6 of a pixel here).
+        BoxAxes ax = boxAxes(box);
+        glm::dvec3 v = glm::dvec3(box.centreWs) +
+                       ax.xWs * ((k & 1 ? 1.0 : -1.0) * box.halfExtents.x) +
+                       glm::dvec3(0.0, (k & 2 ? 1.0 : -1.0) * box.halfExtents.y, 0.0) +
+                       ax.zWs * ((k & 4 ? 1.0 : -1.0) * box.halfExtents.z);
         glm::dvec3 q = v - d * (v.y / d.y);
         pts.emplace_back(q.x, q.z);
     }
@@ -154,12 +156,18 @@ struct GroundPoint {
     glm::dvec2 xz;
     int object;
 };
-GroundPoint groundPoint(const Scene& scene, glm::vec2 ndc, float aspect) {
-    Ray ray = cameraRay(scene.camera, ndc, aspect);
-    glm::dvec3 o(ray.originWs);
-    glm::dvec3 d(ray.dirWs);
+// In double throughout (cameraRay's formula without its rounding to float, which would move a
+// footprint's side by ~1e-6 units, 3e-5 of a pixel here, more than the truth's rounding).
+GroundPoint groundPoint(const Scene& scene, glm::dvec2 ndc, double aspect) {
+    const Camera& cam = scene.camera;
+    glm::dvec3 o(cam.eyeWs);
+    glm::dvec3 f = glm::normalize(glm::dvec3(cam.targetWs) - o);
+    glm::dvec3 s = glm::normalize(glm::cross(f, glm::dvec3(cam.upWs)));
+    glm::dvec3 u = glm::cross(s, f);
+    double t = std::tan(0.5 * glm::radians(static_cast<double>(cam.fovYDeg)));
+    glm::dvec3 d = f + s * (ndc.x * aspect * t) + u * (ndc.y * t);
     glm::dvec3 p = o + d * (-o.y / d.y);
-    std::optional<Hit> hit = intersect(scene, ray);
+    std::optional<Hit> hit = intersect(scene, Ray{cam.eyeWs, glm::vec3(glm::normalize(d))});
     return {{p.x, p.z}, hit ? hit->object : -1};
 }
 
@@ -179,7 +187,7 @@ ClosedFormCheck checkAgainstClosedForm(const Scene& scene, glm::ivec2 size, int 
     GroundTruthOptions options;
     options.spp = spp;
     GroundTruth truth = computeGroundTruth(scene, size, options);
-    float aspect = static_cast<float>(size.x) / size.y;
+    double aspect = static_cast<double>(size.x) / size.y;
     ClosedFormCheck c;
     c.maxBound = truth.maxBound;
     EXPECT_EQ(truth.bound.size(), truth.pixelCount());
@@ -188,8 +196,8 @@ ClosedFormCheck checkAgainstClosedForm(const Scene& scene, glm::ivec2 size, int 
             size_t k = truth.index(x, size.y - 1 - y);
             float v = truth.visibility[k];
             float bound = truth.bound[k];
-            glm::vec2 lo = glm::vec2(x, y) / glm::vec2(size) * 2.0f - 1.0f;
-            glm::vec2 hi = glm::vec2(x + 1, y + 1) / glm::vec2(size) * 2.0f - 1.0f;
+            glm::dvec2 lo = glm::dvec2(x, y) / glm::dvec2(size) * 2.0 - 1.0;
+            glm::dvec2 hi = glm::dvec2(x + 1, y + 1) / glm::dvec2(size) * 2.0 - 1.0;
             GroundPoint corners[4] = {
                 groundPoint(scene, lo, aspect), groundPoint(scene, {hi.x, lo.y}, aspect),
                 groundPoint(scene, {lo.x, hi.y}, aspect), groundPoint(scene, hi, aspect)};

@@ -12,6 +12,7 @@
 #include <thread>
 #include <utility>
 
+#include "analysis/ground_truth_conics.h"
 #include "analysis/ground_truth_edges.h"
 #include "analysis/light_visibility.h"
 #include "scene/camera.h"
@@ -61,6 +62,14 @@ struct CameraRays {
         return glm::normalize(f + s * (ndc.x * aspect * tanHalfFov) + u * (ndc.y * tanHalfFov));
     }
     Ray at(glm::dvec2 window) const { return Ray{eye, glm::vec3(dirAt(window))}; }
+    // dirAt before normalising is D0 + x Dx + v Dv at window (X + x, Y + v): the rays of pixel
+    // (X, Y) as ground_truth_conics.h takes them.
+    glm::dvec3 rawAt(glm::dvec2 window) const {
+        glm::dvec2 ndc = window / size * 2.0 - 1.0;
+        return f + s * (ndc.x * aspect * tanHalfFov) + u * (ndc.y * tanHalfFov);
+    }
+    glm::dvec3 stepX() const { return s * (2.0 / size.x * aspect * tanHalfFov); }
+    glm::dvec3 stepY() const { return u * (2.0 / size.y * tanHalfFov); }
 };
 
 enum SampleState : uint8_t { UNLIT = 0, LIT = 1, OFF = 2 };  // OFF: not on the centre's object
@@ -137,27 +146,13 @@ struct ScanlineWalk {
     glm::ivec2 pixel;
     int object;
     double y;  // window coordinate of the scanline
-    // true: only which object is seen matters (the area light's walk): states OFF and LIT.
-    bool hitOnly = false;
     Scanline line;
-    // With hitOnly: the pieces on the object, [x0, x1] with both ends seen on it (merged), and
-    // the half pieces of the crossings as (the end on it, length).
-    std::vector<glm::dvec2> segments;
-    std::vector<glm::dvec2> halves;
 
     SampleState state(double x) const {
-        SampleState st = sampleState(scene, rays.at({static_cast<double>(pixel.x) + x, y}), object);
-        return hitOnly && st == UNLIT ? LIT : st;
+        return sampleState(scene, rays.at({static_cast<double>(pixel.x) + x, y}), object);
     }
     void addPiece(double x0, double x1, SampleState st) {
-        if (!(x1 > x0)) return;
-        add(st, x1 - x0);
-        if (!hitOnly || st == OFF) return;
-        if (!segments.empty() && segments.back().y == x0) {
-            segments.back().y = x1;
-        } else {
-            segments.push_back({x0, x1});
-        }
+        if (x1 > x0) add(st, x1 - x0);
     }
     void add(SampleState st, double length) {
         if (st == OFF) return;
@@ -170,8 +165,6 @@ struct ScanlineWalk {
         double length = hi - lo;
         add(s0, 0.5 * length);
         add(s1, 0.5 * length);
-        if (hitOnly && s0 != OFF) halves.push_back({lo, 0.5 * length});
-        if (hitOnly && s1 != OFF) halves.push_back({hi, 0.5 * length});
         line.litErr += length;
         if (s0 == OFF || s1 == OFF) line.onErr += length;
     }
@@ -208,13 +201,45 @@ struct ScanlineWalk {
 
 Scanline scanline(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel, int object,
                   double v) {
-    ScanlineWalk w{scene, rays, pixel, object, static_cast<double>(pixel.y) + v, false, {}, {}, {}};
+    ScanlineWalk w{scene, rays, pixel, object, static_cast<double>(pixel.y) + v, {}};
     w.walk();
     return w.line;
 }
 
-// The area light's scanline: where the object is seen (the walk with hitOnly), then the light's
-// visible fraction f (light_visibility.h) integrated along each piece on it by an adaptive
+// A piece shorter than this (pixels) may be read wrong at its middle: the ray caster rounds the
+// direction and the hit to float, which moves a state's border by about 1e-5 px (6e-8 rad
+// against 4e-3 rad per pixel at 320x180; 6e-5 px at 1280x720); such a piece counts whole as
+// error.
+constexpr double UNSURE_PX = 1.0 / 4096.0;
+
+// The exact scanline (ground_truth_conics.h): cut at every root of the pixel's conics, each
+// piece read at its middle with the ray caster.
+Scanline exactScanline(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel, int object,
+                       const std::vector<Conic>& conics, double v) {
+    thread_local std::vector<double> xs;
+    xs.assign(1, 0.0);
+    for (const Conic& q : conics) scanlineCuts(q, v, xs);
+    xs.push_back(1.0);
+    std::sort(xs.begin(), xs.end());
+    double y = static_cast<double>(pixel.y) + v;
+    Scanline line;
+    for (size_t i = 0; i + 1 < xs.size(); ++i) {
+        double length = xs[i + 1] - xs[i];
+        if (!(length > 0.0)) continue;
+        double x = static_cast<double>(pixel.x) + 0.5 * (xs[i] + xs[i + 1]);
+        SampleState st = sampleState(scene, rays.at({x, y}), object);
+        if (st != OFF) line.on += length;
+        if (st == LIT) line.lit += length;
+        if (length < UNSURE_PX) {
+            line.litErr += length;
+            line.onErr += length;
+        }
+    }
+    return line;
+}
+
+// The area light's scanline: where the object is seen (exact cuts, as the hard light's), then the
+// light's visible fraction f (light_visibility.h) integrated along each piece on it by an adaptive
 // trapezoid rule in x (panels split where coarse and fine differ most, as over v); lit is that
 // integral, its error the pieces' 2 |fine - coarse| plus f's own bound times the length.
 struct AreaLine {
@@ -222,8 +247,9 @@ struct AreaLine {
     const CameraRays& rays;
     glm::ivec2 pixel;
     int object;
-    double fTarget;  // the bound each f aims for
-    double xTarget;  // the x-integral's error aimed for, per pixel of length
+    double fTarget;                     // the bound each f aims for
+    double xTarget;                     // the x-integral's error aimed for, per pixel of length
+    const std::vector<Conic>* outline;  // the pixel's conics where the object seen changes
 
     LightFraction f(double x, double y) const {
         Ray ray = rays.at({static_cast<double>(pixel.x) + x, y});
@@ -275,20 +301,45 @@ struct AreaLine {
         }
     }
 
+    // Where the object is seen: the scanline cut at the outline's conics (ground_truth_conics.h),
+    // each piece read at its middle, consecutive pieces on the object merged into segments. A
+    // segment's end at a cut lies on the object's outline, where a ray may miss the object by
+    // rounding: f is integrated from UNSURE_PX inside it, the strip left out counts half lit
+    // and its other half as error.
     Scanline operator()(double v) const {
         double y = static_cast<double>(pixel.y) + v;
-        ScanlineWalk w{scene, rays, pixel, object, y, true, {}, {}, {}};
-        w.walk();
+        thread_local std::vector<double> xs;
+        xs.assign(1, 0.0);
+        for (const Conic& q : *outline) scanlineCuts(q, v, xs);
+        xs.push_back(1.0);
+        std::sort(xs.begin(), xs.end());
         Scanline line;
-        line.on = w.line.on;
-        line.onErr = w.line.onErr;
-        line.litErr = w.line.litErr;
-        for (const glm::dvec2& h : w.halves) {
-            LightFraction half = f(h.x, y);
-            line.lit += half.visible * h.y;
-            line.litErr += half.bound * h.y;
+        thread_local std::vector<glm::dvec2> segments;
+        segments.clear();
+        for (size_t i = 0; i + 1 < xs.size(); ++i) {
+            double length = xs[i + 1] - xs[i];
+            if (!(length > 0.0)) continue;
+            double x = static_cast<double>(pixel.x) + 0.5 * (xs[i] + xs[i + 1]);
+            if (sampleState(scene, rays.at({x, y}), object) == OFF) continue;
+            line.on += length;
+            if (length < UNSURE_PX) {
+                line.onErr += length;
+                line.litErr += length;
+            }
+            if (!segments.empty() && segments.back().y == xs[i]) {
+                segments.back().y = xs[i + 1];
+            } else {
+                segments.push_back({xs[i], xs[i + 1]});
+            }
         }
-        for (const glm::dvec2& seg : w.segments) integrate(seg.x, seg.y, y, line);
+        for (const glm::dvec2& seg : segments) {
+            double a = seg.x > 0.0 ? seg.x + UNSURE_PX : seg.x;
+            double b = seg.y < 1.0 ? seg.y - UNSURE_PX : seg.y;
+            double strips = b > a ? (a - seg.x) + (seg.y - b) : seg.y - seg.x;
+            line.lit += 0.5 * strips;
+            line.litErr += 0.5 * strips;
+            if (b > a) integrate(a, b, y, line);
+        }
         return line;
     }
 };
@@ -322,24 +373,48 @@ Panel makePanel(double a, double b, const Scanline& fa, const Scanline& fm, cons
     return p;
 }
 
+// The first panels' ends: 0, the breaks and 1 (rows closer than 1e-12 merged), the widest panel
+// halved until there are FIRST_PANELS.
+void firstPanelEnds(const std::vector<double>& breaks, std::vector<double>& ends) {
+    ends.assign(1, 0.0);
+    ends.insert(ends.end(), breaks.begin(), breaks.end());
+    ends.push_back(1.0);
+    std::sort(ends.begin(), ends.end());
+    ends.erase(
+        std::unique(ends.begin(), ends.end(), [](double a, double b) { return b - a <= 1e-12; }),
+        ends.end());
+    ends.back() = 1.0;
+    while (ends.size() < FIRST_PANELS + 1) {
+        size_t widest = 0;
+        for (size_t k = 0; k + 1 < ends.size(); ++k) {
+            if (ends[k + 1] - ends[k] > ends[widest + 1] - ends[widest]) widest = k;
+        }
+        ends.insert(ends.begin() + static_cast<long>(widest) + 1,
+                    0.5 * (ends[widest] + ends[widest + 1]));
+    }
+}
+
 // The pixel's integral over v of line(v) (a Scanline), the adaptive rule of ground_truth.h.
 // `fallback`: the answer when no scanline meets the object.
+// `breaks`: rows in (0,1) that must be panel ends (criticalRows), sorted or not.
 template <typename LineFn>
-Refined integrateRows(const LineFn& line, float fallback, float target) {
-    // FIRST_PANELS panels over v in [0,1]: 2 * FIRST_PANELS + 1 scanlines.
-    std::array<Scanline, 2 * FIRST_PANELS + 1> start;
-    for (int r = 0; r <= 2 * FIRST_PANELS; ++r) {
-        start[r] = line(static_cast<double>(r) / (2 * FIRST_PANELS));
-    }
+Refined integrateRows(const LineFn& line, float fallback, float target,
+                      const std::vector<double>& breaks) {
+    thread_local std::vector<double> ends;
+    firstPanelEnds(breaks, ends);
+    // More rows that must be ends than the scanlines allow: no claim.
+    if (2 * ends.size() - 1 > MAX_TRUTH_SCANLINES) return {fallback, 1.0f};
     // One list per thread, reused pixel after pixel (no allocation per refined pixel).
     thread_local std::vector<Panel> panels;
     panels.clear();
-    for (int k = 0; k < FIRST_PANELS; ++k) {
-        panels.push_back(makePanel(static_cast<double>(k) / FIRST_PANELS,
-                                   static_cast<double>(k + 1) / FIRST_PANELS, start[2 * k],
-                                   start[2 * k + 1], start[2 * k + 2]));
+    Scanline low = line(ends[0]);
+    for (size_t k = 0; k + 1 < ends.size(); ++k) {
+        Scanline mid = line(0.5 * (ends[k] + ends[k + 1]));
+        Scanline high = line(ends[k + 1]);
+        panels.push_back(makePanel(ends[k], ends[k + 1], low, mid, high));
+        low = high;
     }
-    int scanlines = 2 * FIRST_PANELS + 1;
+    int scanlines = static_cast<int>(2 * panels.size() + 1);
     for (;;) {
         double lit = 0.0, on = 0.0, placed = 0.0, err = 0.0;
         size_t worst = 0;
@@ -371,18 +446,36 @@ Refined integrateRows(const LineFn& line, float fallback, float target) {
     }
 }
 
-Refined refinePixel(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel,
-                    const FirstPass& first, float target) {
-    auto line = [&](double v) { return scanline(scene, rays, pixel, first.object, v); };
-    return integrateRows(line, first.visibility, target);
+// The hard light's pixel: exact scanlines between the conics' critical rows where the object's
+// edges are conics (ground_truth_conics.h), else the walk.
+Refined refinePixel(const Scene& scene, const CameraRays& rays, const EdgeConics& conics,
+                    glm::ivec2 pixel, const FirstPass& first, float target) {
+    thread_local std::vector<double> breaks;
+    breaks.clear();
+    if (!conics.exact(first.object)) {
+        auto line = [&](double v) { return scanline(scene, rays, pixel, first.object, v); };
+        return integrateRows(line, first.visibility, target, breaks);
+    }
+    thread_local std::vector<Conic> here;
+    conics.pixelConics(first.object, true, rays.rawAt(glm::dvec2(pixel)), rays.stepX(),
+                       rays.stepY(), here);
+    criticalRows(here, breaks);
+    auto line = [&](double v) { return exactScanline(scene, rays, pixel, first.object, here, v); };
+    return integrateRows(line, first.visibility, target, breaks);
 }
 
 // The area light's pixel: a quarter of the target to each f and to each x-integral, the rest
 // to the integral over v.
-Refined refineAreaPixel(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel,
-                        const FirstPass& first, float target) {
-    AreaLine line{scene, rays, pixel, first.object, 0.25 * target, 0.25 * target};
-    return integrateRows(line, first.visibility, target);
+Refined refineAreaPixel(const Scene& scene, const CameraRays& rays, const EdgeConics& conics,
+                        glm::ivec2 pixel, const FirstPass& first, float target) {
+    thread_local std::vector<Conic> outline;
+    conics.pixelConics(first.object, false, rays.rawAt(glm::dvec2(pixel)), rays.stepX(),
+                       rays.stepY(), outline);
+    thread_local std::vector<double> breaks;
+    breaks.clear();
+    criticalRows(outline, breaks);
+    AreaLine line{scene, rays, pixel, first.object, 0.25 * target, 0.25 * target, &outline};
+    return integrateRows(line, first.visibility, target, breaks);
 }
 
 // Runs rowWork(y) for y in [0, rows) on `threads` workers, rows handed out one at a time from a
@@ -499,7 +592,8 @@ struct PassTwo {
 // samples see.
 template <typename FirstAt>
 PassTwo passTwo(const Scene& scene, const CameraRays& rays, const EdgeFinder& edges,
-                const FirstAt& firstAt, int x, int y, const GroundTruthOptions& options) {
+                const EdgeConics& conics, const FirstAt& firstAt, int x, int y,
+                const GroundTruthOptions& options) {
     const FirstPass& p = *firstAt(x, y);
     float target = options.targetBound;
     if (!(target > 0.0f)) return {p.visibility, p.cls == MIXED ? 1.0f : 0.0f, false};
@@ -509,11 +603,11 @@ PassTwo passTwo(const Scene& scene, const CameraRays& rays, const EdgeFinder& ed
             std::tan(0.5 * glm::radians(static_cast<double>(scene.light.angularDiameterDeg)));
         int state = edges.areaState(pixelCone(rays, x, y), p.object, tanHalf);
         if (state >= 0) return {static_cast<float>(state), 0.0f, false};
-        Refined r = refineAreaPixel(scene, rays, {x, y}, p, target);
+        Refined r = refineAreaPixel(scene, rays, conics, {x, y}, p, target);
         return {r.visibility, r.bound, true};
     }
     if (needsRefinement(firstAt, x, y, rays, edges)) {
-        Refined r = refinePixel(scene, rays, {x, y}, p, target);
+        Refined r = refinePixel(scene, rays, conics, {x, y}, p, target);
         return {r.visibility, r.bound, true};
     }
     return {p.visibility, 0.0f, false};
@@ -535,6 +629,7 @@ GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
     float aspect = static_cast<float>(frameSize.x) / static_cast<float>(frameSize.y);
     CameraRays rays(scene.camera, frameSize);
     EdgeFinder edges(scene);
+    EdgeConics conics(scene, rays.eyeD);
     int threads = resolveThreadCount(options.threads);
     const int rows = frameSize.y;
     // The first pass counts as half the work, the refinement as the other half.
@@ -573,7 +668,7 @@ GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
                 size_t k = truth.index(x, rowTopDown);
                 truth.receiver[k] = p.receiver ? 1 : 0;
                 truth.facesLight[k] = p.facesLight ? 1 : 0;
-                PassTwo r = passTwo(scene, rays, edges, firstAt, x, y, options);
+                PassTwo r = passTwo(scene, rays, edges, conics, firstAt, x, y, options);
                 truth.visibility[k] = r.visibility;
                 truth.bound[k] = r.bound;
                 refinedHere += r.refined ? 1 : 0;
@@ -598,6 +693,7 @@ GroundTruthPixel groundTruthAt(const Scene& scene, glm::ivec2 frameSize, glm::iv
     float aspect = static_cast<float>(frameSize.x) / static_cast<float>(frameSize.y);
     CameraRays rays(scene.camera, frameSize);
     EdgeFinder edges(scene);
+    EdgeConics conics(scene, rays.eyeD);
     glm::ivec2 pixel(pixelTopDown.x, frameSize.y - 1 - pixelTopDown.y);  // GL order
     // The first pass of the pixel and its 8 neighbours, as computeGroundTruth has them.
     std::array<FirstPass, 9> block;
@@ -615,7 +711,7 @@ GroundTruthPixel groundTruthAt(const Scene& scene, glm::ivec2 frameSize, glm::iv
         return inside[k] ? &block[k] : nullptr;
     };
     const FirstPass& p = block[4];
-    PassTwo r = passTwo(scene, rays, edges, firstAt, pixel.x, pixel.y, options);
+    PassTwo r = passTwo(scene, rays, edges, conics, firstAt, pixel.x, pixel.y, options);
     return {r.visibility, r.bound, p.receiver, p.facesLight, r.refined};
 }
 

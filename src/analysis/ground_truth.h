@@ -20,36 +20,42 @@
 //    the pixel sees on its object: ground_truth_edges.h). The last test is conservative, so a
 //    sliver too thin for any sample (a terminator grazing a silhouette) is still refined. On
 //    such a pixel:
-//    - a scanline at height v in [0,1] is walked at x = i / 16 (i = 0..16); between two walk
-//      points whose states differ the crossing is found by bisection against the exact ray cast
-//      to 1/4096 of a pixel; lit(v) and on(v) are the lit and on-object lengths of the scanline,
-//      the crossing's piece split half and half, its length the scanline's error (of lit, and
-//      of on where the object seen changes).
+//    - a scanline at height v in [0,1] is cut at every place where the answer may change:
+//      inside a pixel every edge of a hard light's answer (a silhouette, a box's edge, the
+//      terminator, a shadow's outline, a spot's rim, where two objects cut each other) lies on
+//      a conic in the pixel's (x, v), so these are the roots of quadratics in x
+//      (ground_truth_conics.h). Each piece between two cuts is read at its middle with the
+//      exact ray cast; lit(v) and on(v) are the lit and on-object lengths, exact but for
+//      pieces shorter than 1/4096 px (the ray caster's float rounding may misread those), whose
+//      lengths are the scanline's error (of lit and of on).
 //    - the pixel's integral over v in [0,1] is an adaptive trapezoid rule (the step-halving error
 //      estimate of Press et al., "Numerical Recipes", 3rd ed. 2007, 4.2 qtrap, applied per panel
 //      as in McKeeman, "Adaptive numerical integration by Simpson's rule", CACM 1962): panels [a,
 //      b] with scanlines at a, the middle m and b; per panel a coarse estimate (trapezoid on a, b)
-//      and a fine one (on a, m, b), for lit and for on. Start with 4 panels (9 scanlines), then
-//      split the panel whose estimates differ most (two more scanlines, at its quarters) until
+//      and a fine one (on a, m, b), for lit and for on. The first panels end at the conics'
+//      critical rows (their tangents along a scanline, their crossings of the pixel's left and
+//      right sides and of each other), the widest halved until there are at least 4; then the
+//      panel whose estimates differ most is split (two more scanlines, at its quarters) until
 //        bound = (sum over panels of 2 |fine - coarse| for lit and for on
 //                 + e) / on_total
-//      is <= the target (default 1/512), or the pixel has used 513 scanlines. The value kept is
+//      is <= the target (default 1/512), or the pixel has used 513 scanlines (the bound is then
+//      what it is, above the target: it says so). The value kept is
 //        V = sum of fine lit / sum of fine on
-//      e is the integral over v of the scanlines' errors (their crossings' 1/4096 px pieces).
+//      e is the integral over v of the scanlines' errors.
 //    Why: V - V* = (L - L*) / O + V* (O* - O) / O with V* <= 1, so |V - V*| is at most the lit
-//    and on errors over O. Per panel, lit(v) and on(v) are continuous and piecewise smooth (a
-//    kink where an edge crosses a pixel corner, a steep ramp where an edge runs along the
-//    pixel's top or bottom) or jump (a silhouette); halving a panel shrinks the trapezoid
-//    error at least by half (4x on smooth parts, 2x to 4x over a kink, ramp or jump inside it,
-//    exactly 2x when it sits at the panel's end), and |e_fine| <= |e_coarse| / 2 gives
-//    |e_fine| <= |fine - coarse|, met with equality in the last case; the factor 2 is a margin
-//    over rounding and over edges whose error shrinks unevenly (a curve's tangent point). Only
-//    the panels that hold an edge's trouble are split, so a silhouette's jump costs a few
-//    scanlines per halving of the bound, not a doubling of all of them.
-//    Assumed, and not checked: no lit or unlit sliver narrower than 1/16 px across a whole
-//    scanline's walk of a refined pixel. (Which pixels are refined is not assumed: the
-//    geometric test above finds a sliver in a pixel however thin; the walk inside it still
-//    samples at 1/16 px.)
+//    and on errors over O. Between two critical rows the cuts keep their count and order, so
+//    no lit or unlit region begins or ends inside a panel, and lit(v) and on(v) are sums of
+//    smooth branches of the conics (at worst a square root at a panel's end, where a conic
+//    is tangent to the scanline); halving a panel shrinks the trapezoid error by 4 on smooth
+//    parts and by 2^1.5 at a square root, and |e_fine| <= |e_coarse| / 2 gives |e_fine| <=
+//    |fine - coarse|; the factor 2 is a margin over rounding and over panels not yet small
+//    enough for that. Only the panels that hold an edge's trouble are split.
+//    Where an object's edges are not all conics (a sphere receiving another sphere's shadow,
+//    a spot's rim on a sphere: quartic curves), its scanline is walked instead: at x = i / 16
+//    (i = 0..16), a crossing between two walk points whose states differ found by bisection to
+//    1/4096 px (its piece half to each side, its length to the error), and the first panels are
+//    the 4 quarters. Assumed there, and not checked: no lit or unlit sliver narrower than
+//    1/16 px across the walk, and none between two scanlines.
 //    Uniform pixels keep the first pass's 0 or 1 with bound 0.
 //
 // Rows are TOP-DOWN, like every image pcfscope writes (element (H - 1 - y) * W + x is GL row y).

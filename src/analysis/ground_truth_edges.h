@@ -23,8 +23,9 @@
 // change": refining more is the safe side.
 //
 // Which object a ray meets changes only across an outline (a sphere's silhouette circle, the
-// projection of a box's or rectangle's edges) or where two surfaces cut each other; the walk
-// along a scanline asks for those too (they move the on-object length).
+// projection of a box's or rectangle's edges) or where two surfaces cut each other; the
+// refinement cuts its scanlines there too (ground_truth_conics.h: they move the on-object
+// length).
 #pragma once
 
 #include <algorithm>

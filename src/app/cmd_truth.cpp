@@ -1,5 +1,6 @@
 // pcfscope truth: the exact shadow of a scene by ray casting (analysis/ground_truth.h), as an
 // EXR of visibility and its error bound per pixel, rows top-down like every image pcfscope writes.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -67,6 +68,18 @@ void writeTruthExr(const std::string& path, const GroundTruth& truth, bool mask)
     writeExr(path, truth.size.x, truth.size.y, static_cast<int>(n), data, channels);
 }
 
+// A bound above the target is honest (what the pixel's scanlines reached), but not what was asked
+// for: said, with how many pixels.
+void sayAboveTarget(const GroundTruth& truth) {
+    if (!(truth.targetBound > 0.0f) || !(truth.maxBound > truth.targetBound)) return;
+    long above = std::count_if(truth.bound.begin(), truth.bound.end(),
+                               [&](float b) { return b > truth.targetBound; });
+    std::fprintf(stderr,
+                 "truth: %ld pixels did not reach the target within %d scanlines; their bound "
+                 "is what they reached\n",
+                 above, MAX_TRUTH_SCANLINES);
+}
+
 int runTruth(const TruthCommandOptions& o) {
     // Every check first: nothing is computed or written unless all of it can be.
     RenderOptions sceneOptions;
@@ -128,6 +141,7 @@ int runTruth(const TruthCommandOptions& o) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "truth: %d pixels refined, largest bound %.6g (target %.6g), %.2f s\n",
                  truth.refinedPixels, truth.maxBound, truth.targetBound, seconds);
+    sayAboveTarget(truth);
     outputs.commit();
     std::fprintf(stderr, "truth: wrote %s\n", o.out.c_str());
     return 0;
