@@ -5,10 +5,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <string>
 
 #include "app/animation.h"
 #include "json_lite.h"
+#include "render/gl_context.h"
 #include "run_command.h"
 #include "video_read.h"
 #include "virtual_display.h"
@@ -57,13 +60,7 @@ TEST_F(AnimationStep, ExportWritesAnMp4OfTheStepsFramesTheSameBytesRunToRun) {
     }
     EXPECT_FALSE(fs::exists(mDir / "a/anim-step01.mp4")) << "a still step has no video";
     EXPECT_TRUE(fs::exists(mDir / "a/anim-step02.png"));
-    testutil::VideoInfo v = testutil::readVideo((mDir / "a/anim-step02.mp4").string());
-    ASSERT_TRUE(v.opened);
-    EXPECT_EQ(v.codec, "h264");
-    EXPECT_EQ(v.pixelFormat, "yuv420p");
-    EXPECT_EQ(v.width, 320);
-    EXPECT_EQ(v.height, 180);
-    EXPECT_EQ(v.frames, 5);
+    testutil::expectMp4(testutil::readVideo((mDir / "a/anim-step02.mp4").string()), 320, 180, 5);
     EXPECT_EQ(testutil::readAll(mDir / "a/anim-step02.mp4"),
               testutil::readAll(mDir / "b/anim-step02.mp4"));
     // An odd size cannot be an MP4: refused before anything is written.
@@ -121,6 +118,68 @@ TEST_F(AnimationStep, TheViewersFrameKeysShowTheSweepsFrames) {
         // The JSON rounds to two digits; the frames' values are 0.001, 0.0032, 0.01.
         double want = animationSweepValue(o, c.frame);
         EXPECT_NEAR(step["settings"]["constant_bias"].number, want, 0.02 * want) << c.keys;
+    }
+}
+
+// One composed animation frame: a `trace` panel off the scene, steps and inspector, above the
+// status line, its title and two labels whole inside it; the step's words unshortened, no
+// "more" mark in the step panel.
+void expectTraceAndWordsWhole(const Session& session, int k) {
+    std::map<std::string, Rect> panels;
+    for (const LayoutBox& b : session.boxes()) {
+        if (b.kind == BoxKind::Panel) panels[b.panel] = b.rect;
+    }
+    ASSERT_TRUE(panels.count("trace")) << "frame " << k;
+    const Rect& trace = panels["trace"];
+    EXPECT_TRUE(trace.intersect(panels["scene"]).empty());
+    EXPECT_TRUE(trace.intersect(panels["steps"]).empty());
+    EXPECT_TRUE(trace.intersect(panels["inspector"]).empty());
+    EXPECT_LE(trace.bottom(), panels["status"].y);
+    int titles = 0, labels = 0;
+    for (const LayoutBox& b : session.boxes()) {
+        if (b.role == "step-text" || (b.panel == "steps" && b.role == "more")) {
+            EXPECT_FALSE(b.shortened || b.role == "more") << "frame " << k;
+        }
+        if (b.panel != "trace" || b.kind == BoxKind::Panel) continue;
+        titles += b.role == "trace-title";
+        labels += b.role == "trace-label";
+        EXPECT_FALSE(b.shortened) << b.text;
+        EXPECT_TRUE(b.rect.x >= trace.x && b.rect.right() <= trace.right() + 0.5f &&
+                    b.rect.y >= trace.y && b.rect.bottom() <= trace.bottom() + 0.5f)
+            << b.text << " runs out of the panel";
+    }
+    EXPECT_EQ(titles, 1);
+    EXPECT_EQ(labels, 2) << "the method on screen and its comparison";
+}
+
+// The lessons' animation steps as their MP4s show them (`export 8 --steps 7`, the viewer playing
+// them), at the projector sizes and the handout's: the flicker trace has a room of its own, off
+// the scene (whose acne or stairs the frames show) and off the step's words, with its title and
+// both labels whole; the words are whole on the first page, since a video never shows a second.
+TEST(AnimationFrames, LessonAnimationsShowTheSceneTheTraceAndTheWordsWhole) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    struct Frame {
+        glm::ivec2 size;
+        bool presentation;
+    };
+    for (const char* name : {"08-acne-and-bias", "13-shimmer-and-snapping"}) {
+        const std::string lesson = std::string(PCFSCOPE_SOURCE_DIR) + "/lessons/" + name + ".toml";
+        for (Frame f :
+             {Frame{{1280, 720}, true}, Frame{{1024, 768}, true}, Frame{{1600, 900}, false}}) {
+            SCOPED_TRACE(std::string(name) + " step 7 at " + std::to_string(f.size.x) + "x" +
+                         std::to_string(f.size.y) + (f.presentation ? " presentation" : ""));
+            Session session(f.size, f.presentation);
+            session.loadLesson(lesson);
+            session.goToStep(6);
+            const LessonStep& step = session.lesson().steps[6];
+            ASSERT_TRUE(step.animate);
+            AnimationOptions ao = stepAnimationOptions(step, lesson, 7);
+            Animation animation(session, ao);
+            for (int k : {0, ao.frames - 1}) {
+                animation.composeFrame(k);
+                expectTraceAndWordsWhole(session, k);
+            }
+        }
     }
 }
 

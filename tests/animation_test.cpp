@@ -121,12 +121,11 @@ TEST(AnimateCommand, FramesAreTheSameBytesRunToRunAndVideosReadBack) {
     EXPECT_NE(testutil::readAll(dir / "a/png/13-shimmer-and-snapping-step02-light-0001.png"),
               testutil::readAll(dir / "a/png/13-shimmer-and-snapping-step02-light-0003.png"))
         << "the frames move";
+    testutil::expectMp4(testutil::readVideo((dir / "a/clip.mp4").string()), 320, 180, 3);
+    testutil::expectGif(testutil::readVideo((dir / "a/clip.gif").string()), 320, 180, 3);
+    // Encoded on the writers' own threads, the videos are still the same bytes run to run.
     for (const char* clip : {"clip.mp4", "clip.gif"}) {
-        testutil::VideoInfo v = testutil::readVideo((dir / "a" / clip).string());
-        ASSERT_TRUE(v.opened) << clip;
-        EXPECT_EQ(v.width, 320) << clip;
-        EXPECT_EQ(v.height, 180) << clip;
-        EXPECT_EQ(v.frames, 3) << clip;
+        EXPECT_EQ(testutil::readAll(dir / "a" / clip), testutil::readAll(dir / "b" / clip)) << clip;
     }
     // No scratch folder is left beside the videos.
     for (const auto& e : fs::directory_iterator(dir / "a")) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 
 #include "analysis/ground_truth.h"
 #include "image_read.h"
@@ -79,6 +80,55 @@ TEST_F(TruthCommand, SaysWhichPixelsStoppedAboveTheTarget) {
                          " pixels did not reach the target within 513 scanlines"),
               std::string::npos)
         << r.err;
+}
+
+// A sphere in another sphere's shadow has a quartic shadow edge, which the truth walks instead
+// of cutting exactly: `truth` names the objects that may take one; the presets name none.
+TEST_F(TruthCommand, NamesTheObjectsWhoseEdgesAreWalked) {
+    std::string scene = path("two-balls.toml");
+    std::ofstream(scene) << R"([camera]
+eye = [3.0, 3.0, 4.5]
+target = [0.0, 0.5, 0.0]
+fov = 40.0
+
+[light]
+type = "directional"
+direction = [0.0, -1.0, 0.0]
+
+[[object]]
+type = "plane"
+name = "ground"
+centre = [0.0, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+size = [8.0, 8.0]
+
+[[object]]
+type = "sphere"
+name = "low-ball"
+centre = [0.0, 0.5, 0.0]
+radius = 0.5
+
+[[object]]
+type = "sphere"
+name = "high-ball"
+centre = [0.0, 2.0, 0.0]
+radius = 0.3
+)";
+    auto r = testutil::runPcfscope("truth --scene-file " + scene + " --size 32x18 -o " +
+                                   path("two.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    // Each ball may lie in the other's shadow; the ground takes only conic edges.
+    EXPECT_NE(r.err.find("truth: low-ball may take shadow edges that are not conics"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("truth: high-ball may take shadow edges"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("ground may take"), std::string::npos) << r.err;
+    for (std::string_view preset : presetNames()) {
+        auto p = testutil::runPcfscope("truth --scene " + std::string(preset) +
+                                       " --size 32x18 -f -o " + path("p.exr"));
+        ASSERT_EQ(p.exitCode, 0) << p.err;
+        EXPECT_EQ(p.err.find("not conics"), std::string::npos) << preset << ": " << p.err;
+    }
 }
 
 TEST_F(TruthCommand, MaskAddsTheReceiverChannel) {

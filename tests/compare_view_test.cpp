@@ -143,6 +143,48 @@ TEST(CompareView, EachPartIsWhatItsSettingAloneShowsAndTheDifferenceIsTheirs) {
     EXPECT_NE(view.json().find("\"label\":\"method tent\""), std::string::npos) << view.json();
 }
 
+// The split view answers as the lesson's frame does: the same status line along the bottom, its
+// words the main view's and then what is compared, and the key list over everything while H
+// (the main view's help) is on; the parts stay above the status line.
+TEST(CompareView, HasTheLessonFramesStatusLineAndItsHelp) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    for (bool presentation : {false, true}) {
+        const glm::ivec2 frame{1280, 720};
+        Session main(frame, presentation);
+        main.loadLesson(LESSON);
+        CompareView view(frame, presentation, parseCompareSpec("bias=none,constant,slope"));
+        const Rect single = inspectorLayout(frame, presentation).status;
+        for (bool help : {false, true}) {
+            SCOPED_TRACE(std::string(presentation ? "presentation" : "normal") +
+                         (help ? ", help" : ""));
+            main.setHelp(help);
+            view.follow(main);
+            view.compose();
+            EXPECT_EQ(view.status(), main.statusText() + "   compare bias=none,constant,slope");
+            Rect statusPanel;
+            std::string words;
+            bool keysHint = false, helpShown = false;
+            for (const LayoutBox& b : view.boxes()) {
+                if (b.role == "status" && b.kind == BoxKind::Panel) statusPanel = b.rect;
+                if (b.role == "status" && b.kind == BoxKind::Text) {
+                    words = b.text;
+                    EXPECT_TRUE(b.text == view.status() || b.shortened) << b.text;
+                }
+                keysHint |= b.role == "keys-hint";
+                helpShown |= b.role == "help";
+            }
+            EXPECT_EQ(statusPanel, single) << "where the lesson's frame has it";
+            EXPECT_TRUE(words.starts_with(main.statusText().substr(0, 20))) << words;
+            EXPECT_TRUE(keysHint) << "H: keys";
+            EXPECT_EQ(helpShown, help);
+            for (int i = 0; i < view.parts(); ++i) {
+                EXPECT_LE(view.partRect(i).bottom(), statusPanel.y) << "part " << i;
+            }
+            EXPECT_NE(view.json().find("\"status\":"), std::string::npos);
+        }
+    }
+}
+
 TEST(CompareView, SunSweepPartsAreThreeAnimationsOfOneBiasEach) {
     std::unique_ptr<GlContext> context = createHeadlessContext();
     const glm::ivec2 frame{640, 360};
@@ -199,11 +241,7 @@ TEST(AnimateCommand, ThreeBiasSunSetIsTheSameBytesRunToRunWithEveryFrame) {
         EXPECT_EQ(testutil::readAll(dir / "a" / name), testutil::readAll(dir / "b" / name)) << name;
     }
     EXPECT_FALSE(fs::exists(dir / "a/png/01-hard-shadows-step01-sun-0005.png"));
-    testutil::VideoInfo v = testutil::readVideo((dir / "a/sun.mp4").string());
-    ASSERT_TRUE(v.opened);
-    EXPECT_EQ(v.width, 640);
-    EXPECT_EQ(v.height, 360);
-    EXPECT_EQ(v.frames, 4);
+    testutil::expectMp4(testutil::readVideo((dir / "a/sun.mp4").string()), 640, 360, 4);
     // Bad splits: one line, exit 2, nothing made.
     std::string out = (dir / "new").string();
     for (std::string args : {"--compare bias=none", "--compare blur=1,2",

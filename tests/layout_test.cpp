@@ -542,6 +542,16 @@ TEST_F(Layout, LongStepTextPagesWithAMoreMarkInsteadOfClipping) {
         }
     }
     EXPECT_TRUE(more);
+    // The mark names the keys that turn the page: on an animation step Space plays, so Right.
+    for (bool plays : {false, true}) {
+        m.plays = plays;
+        for (const LayoutBox& b : planFrame(l, m).boxes) {
+            if (b.role != "more") continue;
+            EXPECT_EQ(b.text.starts_with("more Space/Right"), !plays) << b.text;
+            EXPECT_EQ(b.text.starts_with("more Right"), plays) << b.text;
+        }
+    }
+    m.plays = false;
     // The last page holds the last sentence's words (nothing is dropped between pages).
     m.textPage = plan.textPages - 1;
     FramePlan last = planFrame(l, m);

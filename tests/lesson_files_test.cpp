@@ -114,12 +114,15 @@ TEST(LessonFiles, EveryPlaceholderIsKnownAndFillsFromATrace) {
                             s.pcfParams(vec2(0.4625f, 0.3875f), map.width()), s.biasParams());
             int taps = static_cast<int>(trace.taps.size());
             int fetches = static_cast<int>(trace.fetches.size());
-            EXPECT_FALSE(checkPlaceholders(step.text, taps, fetches));
+            EXPECT_FALSE(checkPlaceholders(step.text, taps, fetches, step.compare.parts()));
             // The context the viewer gives: the step's point's light angle too.
             StepContext ctx = makeStepContext(step);
             std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
             ASSERT_TRUE(point);
             ctx.lightAngleDeg = lightAngleDeg(lesson.scene, *point);
+            // A step with `compare` reads its parts (rendered by the viewer and lesson check):
+            // here each part stands in with this trace's visibility.
+            ctx.partVisibility.assign(static_cast<size_t>(step.compare.parts()), trace.visibility);
             std::string text = fillText(step.text, trace, ctx);
             EXPECT_EQ(text.find("n/a"), std::string::npos) << text;
         }

@@ -28,6 +28,7 @@ StepContext context() {
     ctx.depthFormat = DepthFormat::D24;
     ctx.lightAngleDeg = 51.25f;
     ctx.originShift = 0.375f;
+    ctx.partVisibility = {0.25f, 1.0f};
     return ctx;
 }
 
@@ -153,6 +154,23 @@ TEST(LessonText, AnIndexPastTheTraceIsNotAvailable) {
     // Possible only when the viewer changed the method under a step's text.
     Trace tr = exampleTrace(PCF_NEAREST);
     EXPECT_EQ(fill("{tap[3].depth} {fetch[2].u}", tr), "n/a n/a");
+}
+
+// A step with `compare` reads its split view's parts (StepContext::partVisibility, in the
+// spec's order); a part not known (no split, a key the parts cannot take) is "n/a", and a text
+// naming a part past the step's compare is refused.
+TEST(LessonText, PartsOfTheSplitViewAreTheContextsVisibilities) {
+    Trace tr = exampleTrace(PCF_NEAREST);
+    StepContext ctx = context();
+    ctx.partVisibility = {0.0f, 0.75f, 1.0f};
+    EXPECT_EQ(fillText("{part[0].visibility} {part[1].visibility} {part[2].visibility:2}", tr, ctx),
+              "0 0.75 1.00");
+    EXPECT_EQ(placeholderNumber("part[1].visibility*4", tr, ctx), 3.0);
+    ctx.partVisibility.clear();
+    EXPECT_EQ(fillText("{part[0].visibility}", tr, ctx), "n/a");
+    EXPECT_FALSE(checkPlaceholders("{part[2].visibility}", 1, 1, 3));
+    EXPECT_TRUE(checkPlaceholders("{part[2].visibility}", 1, 1, 2));
+    EXPECT_TRUE(checkPlaceholders("{part[0].depth}"));
 }
 
 TEST(LessonText, EveryListedNameFills) {

@@ -1,7 +1,9 @@
 // video_read.h: what FFmpeg's libavformat and libavcodec read back from a video file: the
 // container's codec, the frame size and the number of frames decoded. The video tests check
-// animate's MP4 and GIF through it, as a player would open them.
+// animate's MP4 and GIF through it, as a player would open them (expectMp4, expectGif).
 #pragma once
+
+#include <gtest/gtest.h>
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -65,6 +67,26 @@ inline VideoInfo readVideo(const std::string& path) {
     avcodec_free_context(&dec);
     avformat_close_input(&in);
     return info;
+}
+
+// The checks every test of a written video makes: it opened, its codec (and for an MP4 the
+// yuv420p that browsers and slide software play), its size and every frame decoded.
+inline void expectVideo(const VideoInfo& v, const std::string& codec, int width, int height,
+                        int frames) {
+    ASSERT_TRUE(v.opened) << "FFmpeg could not open the video";
+    EXPECT_EQ(v.codec, codec);
+    if (codec == "h264") {
+        EXPECT_EQ(v.pixelFormat, "yuv420p");
+    }
+    EXPECT_EQ(v.width, width);
+    EXPECT_EQ(v.height, height);
+    EXPECT_EQ(v.frames, frames);
+}
+inline void expectMp4(const VideoInfo& v, int width, int height, int frames) {
+    expectVideo(v, "h264", width, height, frames);
+}
+inline void expectGif(const VideoInfo& v, int width, int height, int frames) {
+    expectVideo(v, "gif", width, height, frames);
 }
 
 }  // namespace testutil

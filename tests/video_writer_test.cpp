@@ -42,13 +42,7 @@ void writeVideo(const fs::path& path, VideoFormat format, int w, int h, int fram
 TEST(VideoWriter, Mp4IsH264Yuv420pWithEveryFrame) {
     fs::path dir = testutil::makeTempDir("video");
     writeVideo(dir / "a.mp4", VideoFormat::Mp4, 96, 64, 7);
-    testutil::VideoInfo v = testutil::readVideo((dir / "a.mp4").string());
-    ASSERT_TRUE(v.opened);
-    EXPECT_EQ(v.codec, "h264");
-    EXPECT_EQ(v.pixelFormat, "yuv420p");
-    EXPECT_EQ(v.width, 96);
-    EXPECT_EQ(v.height, 64);
-    EXPECT_EQ(v.frames, 7);
+    testutil::expectMp4(testutil::readVideo((dir / "a.mp4").string()), 96, 64, 7);
     fs::remove_all(dir);
 }
 
@@ -56,12 +50,7 @@ TEST(VideoWriter, GifHasEveryFrameAndTheSameBytesRunToRun) {
     fs::path dir = testutil::makeTempDir("video");
     writeVideo(dir / "a.gif", VideoFormat::Gif, 75, 41, 5);
     writeVideo(dir / "b.gif", VideoFormat::Gif, 75, 41, 5);
-    testutil::VideoInfo v = testutil::readVideo((dir / "a.gif").string());
-    ASSERT_TRUE(v.opened);
-    EXPECT_EQ(v.codec, "gif");
-    EXPECT_EQ(v.width, 75);
-    EXPECT_EQ(v.height, 41);
-    EXPECT_EQ(v.frames, 5);
+    testutil::expectGif(testutil::readVideo((dir / "a.gif").string()), 75, 41, 5);
     EXPECT_EQ(testutil::readAll(dir / "a.gif"), testutil::readAll(dir / "b.gif"));
     fs::remove_all(dir);
 }

@@ -15,6 +15,7 @@
 #include "app/commands.h"
 #include "app/compare_view.h"
 #include "app/export.h"
+#include "app/frame_options.h"
 #include "app/live_keys.h"
 #include "app/magnifier.h"
 #include "app/render_options.h"
@@ -92,23 +93,8 @@ int runExport(const ExportOptions& o) {
     for (const LessonStep& step : lesson.steps) outputs.addInput("chart", step.chart);
     ExportPlan plan = planExport(outputs, dir, lesson.name, steps);
     plan.keys = keys;
-    planVideos(outputs, plan, lesson, size);
-    CompareSpec all;
-    if (!o.compare.empty()) {
-        try {
-            all = parseCompareSpec(o.compare);
-        } catch (const std::invalid_argument& e) {
-            throw UsageError("--" + std::string(e.what()));
-        }
-    }
-    planCompares(outputs, plan, lesson, all);
-    for (const CompareSpec& spec : plan.compares) {
-        if (spec.empty()) continue;
-        if (auto problem = compareFrameProblem(size, spec.parts(), o.presentation, false)) {
-            throw UsageError("--size " + o.size + ": " + *problem);
-        }
-    }
     plan.magnify = o.magnify;
+    planExtras(outputs, plan, lesson, {size, o.presentation}, o.compare);
     exportFrames(path, plan, size, o.presentation, true, &outputs);
     outputs.commit();
     return 0;
@@ -150,7 +136,10 @@ ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::s
     return plan;
 }
 
-void planVideos(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson, glm::ivec2 size) {
+namespace {
+
+// The MP4s of the planned steps that are animations; sets plan.videos.
+void planStepVideos(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson, glm::ivec2 size) {
     plan.videos = true;
     for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
         if (!lesson.steps[static_cast<size_t>(s - 1)].animate) continue;
@@ -162,8 +151,10 @@ void planVideos(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson, gl
     }
 }
 
-void planCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
-                  const CompareSpec& all) {
+// plan.compares: `all` for every step, else each step's own `compare`, each checked on the step's
+// settings and the frame's size.
+void planStepCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
+                      const ExtrasFrame& frame, const CompareSpec& all) {
     plan.compares.clear();
     for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
         const LessonStep& step = lesson.steps[static_cast<size_t>(s - 1)];
@@ -174,12 +165,33 @@ void planCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
             throw UsageError("--" + std::string(e.what()) + " (at step " + std::to_string(s) + ")");
         }
         if (!spec.empty()) {
+            if (auto problem =
+                    compareFrameProblem(frame.size, spec.parts(), frame.presentation, false)) {
+                throw UsageError("--size " + std::to_string(frame.size.x) + "x" +
+                                 std::to_string(frame.size.y) + ": " + *problem);
+            }
             const std::string& stem = plan.stems[static_cast<size_t>(s - plan.steps.x)];
             outputs.add("--compare", stem + "-compare.png");
             outputs.add("--compare", stem + "-compare.json");
         }
         plan.compares.push_back(std::move(spec));
     }
+}
+
+}  // namespace
+
+void planExtras(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
+                const ExtrasFrame& frame, const std::string& compare) {
+    planStepVideos(outputs, plan, lesson, frame.size);
+    CompareSpec all;
+    if (!compare.empty()) {
+        try {
+            all = parseCompareSpec(compare);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError("--" + std::string(e.what()));
+        }
+    }
+    planStepCompares(outputs, plan, lesson, frame, all);
 }
 
 namespace {
@@ -324,21 +336,17 @@ Command addExportCommand(CLI::App& app) {
     auto o = std::make_shared<ExportOptions>();
     CLI::App* sub = app.add_subcommand(
         "export", "write a lesson's annotated frames (PNG + JSON trace per step), no display");
-    sub->add_option("lesson", o->lesson, "lesson: a .toml path, a number, or a built-in name")
-        ->required();
+    addLessonArgument(sub, o->lesson)->required();
     sub->add_option("-o,--out", o->outDir, "output directory (default pcfscope-frames/LESSON)");
-    sub->add_option("--size", o->size,
-                    sizeHelp("frame size", {MIN_SESSION_SIZE}, "default 1600x900, the viewer's"));
+    addFrameSizeOption(sub, o->size, "frame size", "default 1600x900, the viewer's");
     sub->add_option("--steps", o->steps, "steps to write, A-B or A (default all)");
     sub->add_option("--keys", o->keys,
                     "on every step: the viewer's settings keys, x and click:X,Y (\"v v t\")");
-    sub->add_flag("--presentation", o->presentation,
-                  "what presentation mode (P) shows: 22 px step text, 18 px numbers, thick lines");
+    addPresentationFlag(sub, o->presentation);
     sub->add_option("--compare", o->compare,
                     "also a split view of every step, STEM-compare.png: KEY=V1,V2[,V3] "
                     "(bias=none,constant,slope); without it a step's own `compare` is written");
-    sub->add_flag("--magnify", o->magnify,
-                  "a close-up camera on each step's point: a texel many pixels wide");
+    addMagnifyFlag(sub, o->magnify);
     sub->add_flag("-f,--force", o->force, "overwrite existing frames");
     return {sub, [o] { return runExport(*o); }};
 }

@@ -13,6 +13,7 @@
 #include "analysis/speed_chart.h"
 #include "app/commands.h"
 #include "app/session.h"
+#include "app/step_view.h"
 #include "base/input_file.h"
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_keys.h"
@@ -85,6 +86,18 @@ struct Checker {
         ++failures;
     }
 
+    // The step's split view at the point (part[K].visibility), each part's map rendered as the
+    // split view renders it; empty without `compare` or when the settings cannot take it.
+    std::vector<float> partVisibilities(const LessonStep& step, const LessonSettings& s,
+                                        const Scene& scene, const ScenePoint& point) {
+        if (step.compare.empty()) return {};
+        try {
+            return comparePartVisibilities(renderer, scene, std::nullopt, s, step.compare, point);
+        } catch (const std::invalid_argument&) {
+            return {};
+        }
+    }
+
     // The step's claims on its lookup under settings s (after `key`, when not empty).
     void checkState(size_t index, const LessonStep& step, const LessonSettings& s,
                     const std::string& key, const ScenePoint& point) {
@@ -98,6 +111,7 @@ struct Checker {
         ShadowMap map = renderer.readShadowMap();
         Trace trace = tracePinned(map, scene, fit, s, point);
         StepContext ctx = makeStepContext(s, glm::ivec2(0), lightAngleDeg(scene, point));
+        ctx.partVisibility = partVisibilities(step, s, scene, point);
         ClaimWorld world = chartWorld(step);
         world.onPlane = std::holds_alternative<Plane>(
             lesson.scene.objects[static_cast<size_t>(point.object)].shape);

@@ -8,6 +8,7 @@
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/export.h"
+#include "app/frame_options.h"
 #include "app/session.h"
 #include "app/viewer.h"
 #include "render/render_settings.h"
@@ -87,13 +88,12 @@ Command addViewCommand(CLI::App& app) {
     auto o = std::make_shared<ViewCommandOptions>();
     CLI::App* sub =
         app.add_subcommand("view", "the lesson in a window: pick a scene point, step through");
-    sub->add_option("lesson", o->lesson, "lesson: a .toml path, a number, or a built-in name");
-    sub->add_option("--size", o->size,
-                    sizeHelp("window size", {MIN_SESSION_SIZE}, "default 1600x900"));
+    addLessonArgument(sub, o->lesson);
+    addFrameSizeOption(sub, o->size, "window size", "default 1600x900");
     sub->add_option("--keys", o->keys,
                     "replay keys first: GLFW names and click:X,Y (frame pixels), space-separated");
     sub->add_option("--screenshot", o->screenshot, "write the frame after --keys to PNG, quit");
-    sub->add_flag("--presentation", o->presentation, "large type and thick lines");
+    addPresentationFlag(sub, o->presentation);
     sub->add_flag("-f,--force", o->force, "let --screenshot overwrite an existing file");
     sub->add_option("--bench-frames", o->benchFrames,
                     "time this many frames (after --keys), print the median frame time, quit");

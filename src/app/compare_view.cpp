@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "app/cli_util.h"
+#include "app/frame_json.h"
 #include "kernel/trace_json.h"
 #include "render/gl_context.h"
 
@@ -47,10 +48,15 @@ float panelHeightOf(glm::ivec2 frame, bool presentation) {
     return std::round(panelTextPx(frame, presentation) * (4 * 1.4f + 1.0f));
 }
 
+// The status line along the bottom, as tall as the lesson frame's at this size.
+float statusHeightOf(glm::ivec2 frame, bool presentation) {
+    return inspectorLayout(frame, presentation).status.h;
+}
+
 glm::ivec2 partSceneSizeOf(glm::ivec2 frame, int parts, bool presentation, bool traceBand) {
     int n = std::max(1, parts);
-    float band =
-        panelHeightOf(frame, presentation) + (traceBand ? std::round(frame.y * 0.24f) : 0.0f);
+    float band = panelHeightOf(frame, presentation) + statusHeightOf(frame, presentation) +
+                 (traceBand ? std::round(frame.y * 0.24f) : 0.0f);
     int w = (frame.x - (n - 1) * static_cast<int>(GAP)) / n;
     return {w, frame.y - static_cast<int>(band)};
 }
@@ -134,6 +140,8 @@ void CompareView::follow(const Session& main) {
         bool samePoint = point && p.point() && p.point()->posWs == point->posWs;
         if (point && !samePoint) p.pinPoint(*point);
     }
+    mStatus = main.statusText() + "   compare " + compareSpecText(mSpec);
+    mHelp = main.help();
 }
 
 void CompareView::compose() { composeInto(mFrame.framebuffer.id()); }
@@ -152,15 +160,27 @@ void CompareView::composeInto(GLuint fbo) {
     }
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     mCanvas.begin(mFrameSize);
+    // The status line and the help as the lesson's frame has them; the help over everything.
+    FramePlan chrome = planStatusFrame(inspectorLayout(mFrameSize, mPresentation), mStatus, mHelp);
+    mBoxes = chrome.boxes;
     drawPanels();
-    if (mFlicker && mTraceBand) {
-        float pad = std::round(textPx() * 0.5f);
-        float top = partSceneSize().y + panelHeight();
-        Rect box{pad, top, mFrameSize.x - 2.0f * pad, mFrameSize.y - top - pad};
-        drawFlickerTrace(mCanvas, box, mFlicker(), textPx());
-    }
+    drawTraceBand();
+    drawPlan(mCanvas, chrome.base);
+    drawPlan(mCanvas, chrome.top);
     mCanvas.flush();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// The flicker trace across the frame, between the parts' panels and the status line.
+void CompareView::drawTraceBand() {
+    if (!mFlicker || !mTraceBand) return;
+    float pad = std::round(textPx() * 0.5f);
+    float top = partSceneSize().y + panelHeight();
+    float bottom = mFrameSize.y - statusHeightOf(mFrameSize, mPresentation);
+    Rect box{pad, top, mFrameSize.x - 2.0f * pad, bottom - top - pad};
+    std::vector<LayoutBox> texts = drawFlickerTrace(mCanvas, box, mFlicker(), textPx());
+    mBoxes.push_back({BoxKind::Panel, box, "trace", "trace", 0.0f, false, {}});
+    mBoxes.insert(mBoxes.end(), texts.begin(), texts.end());
 }
 
 // Each part's compact inspector under its scene: what it sets, the point's visibility, its
@@ -237,7 +257,9 @@ std::string CompareView::json() const {
                                    : Json(nullptr)},
               {"frame_size", {mFrameSize.x, mFrameSize.y}},
               {"part_scene_size", {partSceneSize().x, partSceneSize().y}},
-              {"parts", parts}};
+              {"parts", parts},
+              {"status", mStatus},
+              {"layout", layoutJson(mBoxes)}};
     return jsonDump(j);
 }
 

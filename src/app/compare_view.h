@@ -48,8 +48,9 @@ class CompareView {
     glm::ivec2 partSceneSize() const;
 
     // Takes the main view's state: its lesson, step, light, camera, shadow fit and pinned
-    // point, and its settings with each part's values set (compare_spec.h: comparePart, whose
-    // std::invalid_argument passes through when the live settings cannot take them).
+    // point, its settings with each part's values set (compare_spec.h: comparePart, whose
+    // std::invalid_argument passes through when the live settings cannot take them), its status
+    // line and its help (H).
     void follow(const Session& main);
 
     void compose();
@@ -68,13 +69,20 @@ class CompareView {
     void setFlickerTrace(std::function<FlickerTrace()> source) { mFlicker = std::move(source); }
     // Keeps a band under the panels for that trace (the parts' scenes are shorter by it).
     void setTraceBand(bool on);
-    // The frame as JSON: the spec, each part's label, settings, visibility and difference.
+    // The frame as JSON: the spec, each part's label, settings, visibility and difference, the
+    // status line and the layout's boxes.
     std::string json() const;
+    // The status line's words (the main view's, then what is compared) and the boxes of the last
+    // compose: the status line, its keys hint and, with the main view's help on (H), the key list
+    // over the frame, as the lesson's frame draws them (inspector.h: planStatusFrame).
+    const std::string& status() const { return mStatus; }
+    const std::vector<LayoutBox>& boxes() const { return mBoxes; }
 
   private:
     float textPx() const;
     float panelHeight() const;
     void drawPanels();
+    void drawTraceBand();
 
     CompareSpec mSpec;
     bool mPresentation = false;
@@ -82,6 +90,9 @@ class CompareView {
     glm::ivec2 mFrameSize{0, 0};
     std::vector<std::unique_ptr<Session>> mParts;
     std::function<FlickerTrace()> mFlicker;
+    std::string mStatus;
+    bool mHelp = false;
+    std::vector<LayoutBox> mBoxes;
     Canvas mCanvas;
     OffscreenTarget mFrame;
 };

@@ -24,19 +24,14 @@ struct ExportPlan {
     // `export --keys`: settings keys, X and clicks (app/live_keys.h) applied to every step
     // before it is written, as the viewer's keys change the step on screen.
     std::vector<ScriptedInput> keys;
-    // Steps that are animations (`animate = {...}`) are also written as STEM.mp4 (planVideos
+    // Steps that are animations (`animate = {...}`) are also written as STEM.mp4 (planExtras
     // lists them); false: stills only (the main job).
     bool videos = false;
     // Per step: the split view written beside its frame as STEM-compare.png (+ .json), from the
-    // step's `compare` or `export --compare`; empty: none (planCompares fills it).
+    // step's `compare` or `export --compare`; empty: none (planExtras fills it).
     std::vector<CompareSpec> compares;
     bool magnify = false;  // every frame through the magnifier (magnifier.h)
 };
-
-// The MP4s of the planned steps that are animations, checked and added to `outputs` like the
-// stills (before anything is written); sets plan.videos. Throws UsageError when the frame size
-// cannot be an MP4 (odd sides).
-void planVideos(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson, glm::ivec2 size);
 
 // Checks every output before anything is written and adds it to `outputs` (which creates the
 // folder and takes the frames back if the export fails): throws UsageError if a file exists
@@ -45,11 +40,18 @@ void planVideos(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson, gl
 ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::string& lessonName,
                       glm::ivec2 steps);
 
-// Fills plan.compares: `all` (export --compare) for every step, else each step's own `compare`;
-// adds their files to `outputs`. Throws UsageError when a step's settings cannot take `all`.
-struct Lesson;
-void planCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
-                  const CompareSpec& all);
+// The frame the extras are made at (the stills' size and mode).
+struct ExtrasFrame {
+    glm::ivec2 size{0, 0};
+    bool presentation = false;
+};
+// The extras beside the stills, checked and added to `outputs` as the stills are, before anything
+// is written: the MP4 of each planned step that is an animation (sets plan.videos), and the split
+// view of each step (plan.compares): `compare` (export --compare's KEY=V1,V2 text) for every
+// step, else the step's own `compare`. Throws UsageError when the size cannot be an MP4 (odd
+// sides) or hold the split, or a spec does not parse or a step's settings cannot take it.
+void planExtras(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
+                const ExtrasFrame& frame, const std::string& compare);
 
 // Renders and writes each planned step headless; progress and frames/s on stderr. A step whose
 // text pages at this size (inspector.h) also gets one frame per further page, STEM-page2.png

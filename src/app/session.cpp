@@ -46,6 +46,7 @@ void Session::loadLesson(const std::string& path) {
     Lesson lesson = loadLessonChecked(path);
     mLesson = std::move(lesson);
     mRenderer = std::make_unique<SceneRenderer>(mLesson.scene);
+    mPartRenderer.reset();
     mBaseLight = mLesson.scene.light;
     mLitSun = glm::vec2(0.0f);
     mRendered.reset();
@@ -146,7 +147,12 @@ bool Session::clickFrame(glm::vec2 framePoint) {
 
 InspectorLayout Session::stepLayout() const {
     if (mLesson.steps.empty()) return mLayout;
-    return focusLayout(mLayout, stepFocus(mLesson.steps[static_cast<size_t>(mStep)]));
+    const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
+    InspectorLayout l = focusLayout(mLayout, stepFocus(step));
+    // An animation's frames give the flicker trace (the method on screen and its comparison) a
+    // room of its own, off the scene and the step's words.
+    if (mFlicker && step.chart.empty()) l = motionLayout(l, 2);
+    return l;
 }
 
 void Session::setFrameSize(glm::ivec2 frameSize) {
@@ -289,6 +295,22 @@ void Session::traceAtPixel() {
     mLightSpace = mRenderer->readLightSpaceRegion(mLightSpaceOrigin, mLightSpaceSize);
     mLookup = tracePixel(*mRenderer, mMap, mSettings, mPixel);
     if (mLookup) mTrace = mLookup->trace;
+    tracePartsOfText();
+}
+
+// A step whose words read its split view (part[K].visibility): each part's map rendered with its
+// settings by a renderer of its own (the scene's keeps its map), the point traced on each.
+void Session::tracePartsOfText() {
+    mPartVisibility.clear();
+    const LessonStep& step = mLesson.steps[static_cast<size_t>(mStep)];
+    if (step.compare.empty() || !mPoint || step.text.find("{part[") == std::string::npos) return;
+    if (!mPartRenderer) mPartRenderer = std::make_unique<SceneRenderer>(mLesson.scene);
+    try {
+        mPartVisibility = comparePartVisibilities(*mPartRenderer, mLesson.scene, mShadowFit,
+                                                  mSettings, step.compare, *mPoint);
+    } catch (const std::invalid_argument&) {
+        // The live settings cannot take the split (a bias the method refuses): "n/a".
+    }
 }
 
 std::string Session::stepText() const {
@@ -302,6 +324,7 @@ std::string Session::stepText() const {
     }
     StepContext ctx =
         makeStepContext(mSettings, mPixel, mPoint ? lightAngleDeg(mLesson.scene, *mPoint) : -1.0f);
+    ctx.partVisibility = mPartVisibility;
     std::string text = fillText(s.text, *mTrace, ctx);
     if (!mStepEdited) return text;
     ClaimWorld world;
@@ -373,7 +396,7 @@ void Session::composeInto(GLuint fbo) {
     // (The heat map is drawn over a full-size scene only, not an inset.)
     bool heat = mHeatmap && chart.empty() && !layout.sceneInset;
     if (heat) drawHeatLegend();
-    if (mFlicker && chart.empty()) drawFlicker();
+    if (mFlicker && chart.empty()) drawFlicker(layout);
     mCanvas.flush();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (!heat) mHeatValues.clear();
@@ -450,6 +473,14 @@ void Session::drawHeatLegend() {
     mCanvas.text({box.x + pad + barW, labelY}, "16", right);
 }
 
+std::string Session::statusText() const {
+    if (mLesson.steps.empty()) return settingsSummary(mSettings);
+    return statusLine(
+        mSettings,
+        changedSettings(mLesson.steps[static_cast<size_t>(mStep)].settings, mSettings, mBaseLight),
+        glm::ivec2(mLayout.scene.size()), mFrameTimeMs);
+}
+
 InspectorModel Session::model() const {
     glm::ivec2 scene(mLayout.scene.size());
     const std::string& chart = mLesson.steps[static_cast<size_t>(mStep)].chart;
@@ -465,9 +496,7 @@ InspectorModel Session::model() const {
     m.lightSpaceOrigin = mLightSpaceOrigin;
     m.lightSpaceSize = mLightSpaceSize;
     m.sceneSize = scene;
-    m.status =
-        statusLine(mSettings, changedSettings(mLesson.steps[mStep].settings, mSettings, mBaseLight),
-                   scene, mFrameTimeMs);
+    m.status = statusText();
     m.markers = mMarkers;
     m.presentation = mPresentation;
     m.help = mHelp;
@@ -476,6 +505,7 @@ InspectorModel Session::model() const {
     m.textPage = mTextPage;
     m.highlightFetch = mLesson.steps[static_cast<size_t>(mStep)].highlightFetch - 1;
     m.focus = stepFocus(mLesson.steps[static_cast<size_t>(mStep)]);
+    m.plays = mLesson.steps[static_cast<size_t>(mStep)].animate.has_value();
     return m;
 }
 

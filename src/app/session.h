@@ -116,6 +116,11 @@ class Session {
     // The step as JSON: lesson, step, title, text, pixel, settings, the trace object, and the
     // layout of the last composed frame (every box drawn: inspector.h LayoutBox).
     std::string stepJson() const;
+    // The status line's words: the settings, what the keys changed from the step's, the scene's
+    // size and the frame time.
+    std::string statusText() const;
+    // The boxes the last compose() drew (the JSON sidecar's `layout`), the flicker trace's too.
+    const std::vector<LayoutBox>& boxes() const { return mBoxes; }
     // The model the last compose() drew (for layout checks at other sizes without rendering).
     InspectorModel model() const;
 
@@ -136,9 +141,10 @@ class Session {
     // The scene alone over the whole frame (no inspector, steps or status): `animate --scene-only`.
     void setSceneOnly(bool on);
     bool sceneOnly() const { return mSceneOnly; }
-    // The flicker trace drawn in the scene's bottom-left corner (overlay/flicker_trace.h): the
-    // source is called by each compose() after the frame's lookup is traced (so the trace can
-    // hold this frame's value: trace(), visibilityWith()); empty: none.
+    // The flicker trace (overlay/flicker_trace.h), drawn at the bottom of the inspector's column
+    // (stepLayout: motionLayout), or in the scene's bottom-left corner when the scene is alone:
+    // the source is called by each compose() after the frame's lookup is traced (so the trace
+    // can hold this frame's value: trace(), visibilityWith()); empty: none.
     void setFlickerTrace(std::function<FlickerTrace()> source) { mFlicker = std::move(source); }
     // What another method (and kernel) returns for the very lookup the last compose() traced: the
     // same map, uv, depth and bias; nullopt when the pixel is not on a receiver.
@@ -146,11 +152,13 @@ class Session {
 
   private:
     void composeSceneOnly(GLuint fbo);
-    void drawFlicker();
+    // The flicker trace in the layout's trace room, or over the scene's corner (scene alone).
+    void drawFlicker(const InspectorLayout& layout);
     void renderScene();
     // Derives the pixel and the camera's jitter that show mPoint in this frame.
     void repick();
     void traceAtPixel();
+    void tracePartsOfText();
     void blitThumbnail(const InspectorLayout& layout);
     // A step with a chart shows it where the scene goes (lesson.h: LessonStep::chart).
     void blitChart(const InspectorLayout& layout);
@@ -190,6 +198,8 @@ class Session {
     InspectorLayout mLayout;
 
     std::unique_ptr<SceneRenderer> mRenderer;
+    std::unique_ptr<SceneRenderer> mPartRenderer;  // the split view's maps for the step's words
+    std::vector<float> mPartVisibility;            // part[K].visibility (tracePartsOfText)
     bool mSceneDirty = true;
     std::optional<RenderSettings> mRendered;
     ShadowMap mMap;

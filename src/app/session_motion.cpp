@@ -71,16 +71,22 @@ void Session::composeSceneOnly(GLuint fbo) {
     glm::vec2 centre = glm::vec2(mPixel) + 0.5f;
     mCanvas.ring(centre, r + 1.0f, 3.0f, {0.0f, 0.0f, 0.0f, 0.8f});
     mCanvas.ring(centre, r, 1.5f, FLICKER_MAIN_COLOUR);
-    if (mFlicker) drawFlicker();
+    if (mFlicker) drawFlicker(mLayout);
     mCanvas.flush();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void Session::drawFlicker() {
-    // The numbers' floor in presentation mode (18 px), scaled type otherwise.
-    float textPx = mPresentation ? 18.0f : std::max(12.0f, std::round(14.0f * mLayout.scale));
-    if (mSceneOnly) textPx = std::max(12.0f, std::round(mLayout.frameSize.y / 48.0f));
-    drawFlickerTrace(mCanvas, flickerTraceRect(mLayout.scene, textPx), mFlicker(), textPx);
+void Session::drawFlicker(const InspectorLayout& layout) {
+    std::vector<LayoutBox> boxes;
+    if (!layout.trace.empty()) {
+        boxes = drawFlickerTrace(mCanvas, layout.trace, mFlicker(), typeSizes(layout).number);
+    } else {
+        // Over the scene alone: type that scales with the frame.
+        float textPx = std::max(12.0f, std::round(mLayout.frameSize.y / 48.0f));
+        boxes =
+            drawFlickerTrace(mCanvas, flickerTraceRect(mLayout.scene, textPx), mFlicker(), textPx);
+    }
+    mBoxes.insert(mBoxes.end(), boxes.begin(), boxes.end());
 }
 
 }  // namespace pcf

@@ -61,4 +61,21 @@ std::optional<PixelLookup> tracePixel(const SceneRenderer& renderer, const Shado
     return out;
 }
 
+std::vector<float> comparePartVisibilities(SceneRenderer& renderer, const Scene& scene,
+                                           const std::optional<glm::mat4>& fit,
+                                           const LessonSettings& s, const CompareSpec& spec,
+                                           const ScenePoint& point) {
+    std::vector<float> out;
+    renderer.setLight(scene.light);
+    for (int i = 0; i < spec.parts(); ++i) {
+        LessonSettings part = comparePart(s, spec, i);
+        glm::mat4 partFit = fit ? *fit : lessonShadowFit(scene, part, part.mapSize);
+        renderer.setShadowClipFromWorld(partFit);
+        renderer.renderShadowPass(renderSettingsFor(part, {64, 64}));
+        ShadowMap map = renderer.readShadowMap();
+        out.push_back(tracePinned(map, scene, partFit, part, point).visibility);
+    }
+    return out;
+}
+
 }  // namespace pcf

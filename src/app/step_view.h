@@ -7,10 +7,12 @@
 
 #include <glm/glm.hpp>
 #include <optional>
+#include <vector>
 
 #include "kernel/bias.h"
 #include "kernel/shadow_map.h"
 #include "kernel/trace.h"
+#include "lesson/compare_spec.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_pick.h"
 #include "render/render_settings.h"
@@ -59,5 +61,15 @@ struct PixelLookup {
 // kernel on `map` with settings `s`; nullopt when the pixel is not on a shadow receiver.
 std::optional<PixelLookup> tracePixel(const SceneRenderer& renderer, const ShadowMap& map,
                                       const LessonSettings& s, glm::ivec2 pixel);
+
+// What a step's text and claims say of its split view (lesson_text.h: part[K].visibility): each
+// part's visibility at `point`, the map rendered by `renderer` with that part's settings (`s` with
+// the part's values, compare_spec.h: comparePart) under the scene's light, fitted as the lesson
+// fits it (or `fit` when given: an animation's), and the point traced as `lesson check` traces it
+// (lesson_pick.h: tracePinned). Needs a current OpenGL 4.5 context; changes `renderer`'s map.
+std::vector<float> comparePartVisibilities(SceneRenderer& renderer, const Scene& scene,
+                                           const std::optional<glm::mat4>& fit,
+                                           const LessonSettings& s, const CompareSpec& spec,
+                                           const ScenePoint& point);
 
 }  // namespace pcf

@@ -165,8 +165,8 @@ class LessonParser {
         readAnimation(table, what, step);
         step.settings = state;
         checkState(table, what, state, lines);
+        readCompare(table, what, step);  // before the text, whose part[K] it counts
         checkText(*table.get("text"), what, step);
-        readCompare(table, what, step);
         return step;
     }
 
@@ -625,8 +625,9 @@ class LessonParser {
         Trace trace = traceLookup(
             probe, vec2(0.5f), 0.5f, 0.5f,
             makeParams(step.settings.method, step.settings.kernel, step.settings.radius));
-        std::optional<PlaceholderProblem> problem = checkPlaceholders(
-            step.text, static_cast<int>(trace.taps.size()), static_cast<int>(trace.fetches.size()));
+        std::optional<PlaceholderProblem> problem =
+            checkPlaceholders(step.text, static_cast<int>(trace.taps.size()),
+                              static_cast<int>(trace.fetches.size()), step.compare.parts());
         if (!problem) return;
         throw InputError(mSource, textLine(textNode, step.text, problem->offset),
                          what + " text: " + problem->problem);

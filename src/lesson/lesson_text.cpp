@@ -202,12 +202,13 @@ const std::vector<Simple>& simpleNames() {
 constexpr std::string_view TAP_FIELDS[] = {"i",   "j",      "depth", "ref",          "margin",
                                            "lit", "weight", "shift", "lookup_margin"};
 constexpr std::string_view FETCH_FIELDS[] = {"value", "weight", "u", "v"};
+constexpr std::string_view PART_FIELDS[] = {"visibility"};
 
 // A placeholder's name, taken apart: a simple name, or an indexed one (tap[K].field,
 // fetch[K].field, weight[I,J]).
 struct Name {
     const Simple* simple = nullptr;
-    std::string_view family;  // "tap", "fetch" or "weight" for indexed names
+    std::string_view family;  // "tap", "fetch", "part" or "weight" for indexed names
     std::string_view field;   // tap / fetch field
     int index = 0;            // K, or I for weight
     int index2 = 0;           // J for weight
@@ -246,7 +247,7 @@ std::optional<Name> parseName(std::string_view s) {
         name.index2 = *j;
         return name;
     }
-    if (family != "tap" && family != "fetch") return std::nullopt;
+    if (family != "tap" && family != "fetch" && family != "part") return std::nullopt;
     std::optional<int> k = parseIndex(inside);
     if (!k || rest.size() < 2 || rest[0] != '.') return std::nullopt;
     name.index = *k;
@@ -254,6 +255,8 @@ std::optional<Name> parseName(std::string_view s) {
     bool known = false;
     if (family == "tap") {
         for (std::string_view f : TAP_FIELDS) known = known || f == name.field;
+    } else if (family == "part") {
+        for (std::string_view f : PART_FIELDS) known = known || f == name.field;
     } else {
         for (std::string_view f : FETCH_FIELDS) known = known || f == name.field;
     }
@@ -278,6 +281,10 @@ Value valueOf(const Name& name, const Trace& tr, const StepContext& ctx) {
         if (name.field == "shift") return number(t.ref - tr.ref);
         if (name.field == "lookup_margin") return number(t.depth - tr.ref);
         return number(t.weight);
+    }
+    if (name.family == "part") {
+        if (name.index >= static_cast<int>(ctx.partVisibility.size())) return {};
+        return number(ctx.partVisibility[static_cast<size_t>(name.index)]);
     }
     if (name.index >= static_cast<int>(tr.fetches.size())) return {};
     const FetchRecord& f = tr.fetches[static_cast<size_t>(name.index)];
@@ -411,12 +418,13 @@ std::vector<std::string> placeholderNames() {
     for (const Simple& s : simpleNames()) names.emplace_back(s.name);
     for (std::string_view f : TAP_FIELDS) names.push_back("tap[K]." + std::string(f));
     for (std::string_view f : FETCH_FIELDS) names.push_back("fetch[K]." + std::string(f));
+    for (std::string_view f : PART_FIELDS) names.push_back("part[K]." + std::string(f));
     names.emplace_back("weight[I,J]");
     return names;
 }
 
 std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int tapCount,
-                                                    int fetchCount) {
+                                                    int fetchCount, int partCount) {
     return scan(
         text, [](std::string_view) {},
         [&](const Placeholder& ph, size_t) -> std::optional<std::string> {
@@ -431,6 +439,10 @@ std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int t
                        std::to_string(fetchCount) +
                        " fetch instructions this step's method issues (K is 0.." +
                        std::to_string(fetchCount - 1) + ")";
+            }
+            if (n.family == "part" && partCount >= 0 && n.index >= partCount) {
+                return "part[" + std::to_string(n.index) + "] is past the " +
+                       std::to_string(partCount) + " parts of this step's compare";
             }
             return std::nullopt;
         });

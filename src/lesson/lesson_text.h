@@ -61,6 +61,9 @@
 //   pixel.x pixel.y       the pixel traced, in the frame rendered (origin top-left)
 //   bias cull depth_format  the state's names (text); constant_bias its number
 //   origin_shift          how far the map's texel grid is slid, texels (viewer keys O / Shift+O)
+//   part[K].visibility    a step with `compare` (the split view, compare_spec.h): part K's
+//                         visibility at the same point (0-based, in the order the step names
+//                         them), its map rendered with that part's settings
 // An index past the trace's reads or fetches (possible only when the state was changed from the
 // one the lesson checked) is written "n/a".
 #pragma once
@@ -88,6 +91,9 @@ struct StepContext {
     // light, degrees: 0 the light straight above it, 90 grazing; negative: not known.
     float lightAngleDeg = -1.0f;
     float originShift = 0.0f;  // the map's texel grid slid by this many texels (origin_shift)
+    // The step's split view (`compare`): each part's visibility at the point, in its order;
+    // empty: not known (part[K] is then "n/a").
+    std::vector<float> partVisibility;
 };
 
 // Every placeholder name, indexed ones written with K, I and J ("tap[K].depth", "weight[I,J]").
@@ -99,11 +105,11 @@ struct PlaceholderProblem {
 };
 
 // The first problem with the placeholders of text, or nullopt: an unknown name, a malformed
-// index or number format, an unmatched brace. tapCount and fetchCount, when not negative, are
-// the reads and fetch instructions the step's method issues (fetchCounts): a tap[K] or fetch[K]
-// past them is a problem too.
+// index or number format, an unmatched brace. tapCount, fetchCount and partCount, when not
+// negative, are the reads and fetch instructions the step's method issues (fetchCounts) and the
+// parts of its `compare`: a tap[K], fetch[K] or part[K] past them is a problem too.
 std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int tapCount = -1,
-                                                    int fetchCount = -1);
+                                                    int fetchCount = -1, int partCount = -1);
 
 // The text with every placeholder replaced by its value for this trace. Throws
 // std::invalid_argument on text that checkPlaceholders refuses (lesson files are checked when

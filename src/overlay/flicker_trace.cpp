@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "draw/text_layout.h"
+
 namespace pcf {
 
 namespace {
@@ -22,22 +24,42 @@ Rect flickerTraceRect(const Rect& scene, float textPx) {
     return {scene.x + 8.0f, scene.bottom() - 8.0f - h, w, h};
 }
 
+float flickerTraceHeight(float textPx, int curves) {
+    float row = std::ceil(textPx * 1.3f);
+    float pad = std::ceil(textPx * 0.5f);
+    return std::ceil(row * static_cast<float>(1 + std::max(1, curves) + 3) + 3.0f * pad);
+}
+
 glm::vec2 flickerTracePoint(const Rect& plot, int frameCount, int k, float v) {
     float t = frameCount > 1 ? static_cast<float>(k) / static_cast<float>(frameCount - 1) : 0.0f;
     return {plot.x + t * plot.w, plot.bottom() - std::clamp(v, 0.0f, 1.0f) * plot.h};
 }
 
-void drawFlickerTrace(Canvas& canvas, const Rect& box, const FlickerTrace& trace, float textPx) {
+std::vector<LayoutBox> drawFlickerTrace(Canvas& canvas, const Rect& box, const FlickerTrace& trace,
+                                        float textPx) {
     canvas.fillRect(box, TRACE_PANEL);
     float row = std::ceil(textPx * 1.3f);
     float pad = std::ceil(textPx * 0.5f);
-    TextStyle style{FontFace::Sans, textPx, TEXT};
+    std::vector<LayoutBox> boxes;
+    // Each text whole where the panel is wide enough, else elided (and listed as shortened).
+    auto text = [&](glm::vec2 at, const std::string& s, FontFace face, const std::string& role) {
+        std::string shown = elideText(face, textPx, s, box.right() - pad - at.x);
+        canvas.text(at, shown, {face, textPx, TEXT});
+        glm::vec2 size = measureText(face, textPx, shown);
+        boxes.push_back({BoxKind::Text,
+                         {std::round(at.x), std::round(at.y), size.x, size.y},
+                         "trace",
+                         role,
+                         textPx,
+                         shown != s,
+                         shown});
+    };
     canvas.pushClip(box);
-    canvas.text({box.x + pad, box.y + pad}, trace.title, style);
+    text({box.x + pad, box.y + pad}, trace.title, FontFace::Sans, "trace-title");
     float y = box.y + pad + row;
     for (const FlickerCurve& c : trace.curves) {
         canvas.fillRect({box.x + pad, y + 0.3f * row, row, 0.4f * row}, c.colour);
-        canvas.text({box.x + pad + 1.5f * row, y}, c.label, {FontFace::Mono, textPx, TEXT});
+        text({box.x + pad + 1.5f * row, y}, c.label, FontFace::Mono, "trace-label");
         y += row;
     }
     // The plot: 0 and 1 marked at the left, the frames across.
@@ -66,6 +88,7 @@ void drawFlickerTrace(Canvas& canvas, const Rect& box, const FlickerTrace& trace
         }
     }
     canvas.popClip();
+    return boxes;
 }
 
 }  // namespace pcf

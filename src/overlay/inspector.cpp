@@ -6,6 +6,7 @@
 #include <iterator>
 #include <optional>
 
+#include "overlay/flicker_trace.h"
 #include "overlay/inspector_plan.h"
 
 namespace pcf {
@@ -208,6 +209,18 @@ InspectorLayout focusLayout(const InspectorLayout& l, const Focus& focus) {
     return c;
 }
 
+InspectorLayout motionLayout(const InspectorLayout& l, int curves) {
+    if (l.inspector.empty()) return l;
+    InspectorLayout c = l;
+    // At the numbers' size (the projector's 18 px floor in presentation mode), at most 0.4 of
+    // the column: the inspector keeps the rest for its cells.
+    float h = std::min(std::round(flickerTraceHeight(typeSizes(l).number, curves)),
+                       std::round(l.inspector.h * 0.4f));
+    c.inspector.h = l.inspector.h - h;
+    c.trace = {l.inspector.x, c.inspector.bottom(), l.inspector.w, h};
+    return c;
+}
+
 InspectorLayout chartStepLayout(const InspectorLayout& l) {
     if (!l.presentation || l.status.y <= 0.0f) return l;
     InspectorLayout c = l;
@@ -229,6 +242,7 @@ FramePlan planFrame(const InspectorLayout& l, const InspectorModel& m) {
     pl.box(BoxKind::Panel, l.scene, "scene", "scene");
     pl.box(BoxKind::Panel, l.steps, "steps", "steps");
     if (!l.inspector.empty()) pl.box(BoxKind::Panel, l.inspector, "inspector", "inspector");
+    if (!l.trace.empty()) pl.box(BoxKind::Panel, l.trace, "trace", "trace");
     pl.box(BoxKind::Panel, l.status, "status", "status");
     if (m.showScene) planScene(pl, l, m, t);
     Rect steps = l.steps;
@@ -245,6 +259,20 @@ FramePlan planFrame(const InspectorLayout& l, const InspectorModel& m) {
     pl.onTop = true;
     planThumbnail(pl, l, m, t);
     if (m.help) planHelp(pl, l, t);
+    return plan;
+}
+
+FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, bool help) {
+    FramePlan plan;
+    Planner pl{plan};
+    TypeSizes t = typeSizes(l);
+    pl.box(BoxKind::Panel, l.status, "status", "status");
+    pl.fill(l.status, STATUS);
+    InspectorModel m;
+    m.status = status;
+    planStatus(pl, l, m, t);
+    pl.onTop = true;
+    if (help) planHelp(pl, l, t);
     return plan;
 }
 
@@ -267,7 +295,8 @@ void clearInspectorPanels(GLuint framebuffer, const InspectorLayout& l) {
         const Rect* rect;
         Colour colour;
     };
-    Panel panels[] = {{&l.inspector, PANEL}, {&l.steps, PANEL_LIGHT}, {&l.status, STATUS}};
+    Panel panels[] = {
+        {&l.inspector, PANEL}, {&l.steps, PANEL_LIGHT}, {&l.status, STATUS}, {&l.trace, PANEL}};
     auto area = [](const Panel& p) { return p.rect->w * p.rect->h; };
     Panel* largest =
         std::max_element(std::begin(panels), std::end(panels),

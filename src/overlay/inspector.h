@@ -49,6 +49,7 @@ struct InspectorLayout {
     float scale = 1.0f;  // 1 at 1600 x 900; fonts and lines scale with it
     bool presentation = false;
     bool sceneInset = false;  // the scene is drawn scaled into `scene` (focusLayout)
+    Rect trace;               // an animation's flicker trace (motionLayout); empty: none
 };
 InspectorLayout inspectorLayout(glm::ivec2 frameSize, bool presentation);
 // The frame composed for a step's focus. A scene focus (or none) keeps `l`. A focus on the
@@ -63,6 +64,11 @@ InspectorLayout focusLayout(const InspectorLayout& l, const Focus& focus);
 // scene not shown) and the step panel the full width under it, so that the chart's labels can be
 // set at projector size; normal mode keeps `l`.
 InspectorLayout chartStepLayout(const InspectorLayout& l);
+// The frame of an animation (app/animation.h) with its flicker trace of `curves` lines: the trace
+// takes the bottom of the inspector's column (the inspector is shorter by it), so that it covers
+// neither the scene, whose acne and stairs the frames show, nor the step's words. A frame
+// without an inspector (a chart step) keeps `l`.
+InspectorLayout motionLayout(const InspectorLayout& l, int curves);
 
 // The type sizes of a frame, in pixels. Every text is drawn at its size or stepped down towards
 // its floor, never below; presentation floors are the projector's (step text 22 px, numbers
@@ -99,17 +105,18 @@ struct InspectorModel {
     // A region of the scene's light-space target (u, v, ref, mask per pixel, rows top-down)
     // around the pixel, for the texel grid drawn on the receiver. May be null.
     const std::vector<float>* lightSpace = nullptr;
-    glm::ivec2 lightSpaceOrigin{0, 0};      // the region's top-left pixel in the scene
-    glm::ivec2 lightSpaceSize{0, 0};        // the region's size
-    glm::ivec2 sceneSize{0, 0};             // size of the rendered scene (== layout.scene size)
-    std::string status;                     // method, kernel, bias, map, frame time
-    bool presentation = false;              // large type, thick lines, high contrast
-    bool help = false;                      // the key list over everything
-    bool showScene = true;                  // false: a chart fills the scene's place (no overlay)
-    bool grid = true;                       // the texel grid on the receiver (G, lesson `grid`)
-    bool markers = true;                    // the pick's ring, label and grid on the scene (X)
-    int textPage = 0;                       // the page of the step text shown (when it pages)
-    int highlightFetch = -1;                // the fetch (0-based) the step talks about; -1: none
+    glm::ivec2 lightSpaceOrigin{0, 0};  // the region's top-left pixel in the scene
+    glm::ivec2 lightSpaceSize{0, 0};    // the region's size
+    glm::ivec2 sceneSize{0, 0};         // size of the rendered scene (== layout.scene size)
+    std::string status;                 // method, kernel, bias, map, frame time
+    bool presentation = false;          // large type, thick lines, high contrast
+    bool help = false;                  // the key list over everything
+    bool showScene = true;              // false: a chart fills the scene's place (no overlay)
+    bool grid = true;                   // the texel grid on the receiver (G, lesson `grid`)
+    bool markers = true;                // the pick's ring, label and grid on the scene (X)
+    int textPage = 0;                   // the page of the step text shown (when it pages)
+    int highlightFetch = -1;            // the fetch (0-based) the step talks about; -1: none
+    bool plays = false;  // an animation step: Space plays it, so Right alone turns the page
     Focus focus{true, true, false, false};  // what the step is about (inspector.h: Focus)
 };
 
@@ -139,6 +146,10 @@ struct FramePlan {
 };
 FramePlan planFrame(const InspectorLayout& layout, const InspectorModel& model);
 void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& ops);
+// The status line along the bottom of `l` (its panel filled) and, with `help`, the key list (H)
+// over the frame, as planFrame places them: what a frame composed without the inspector (the
+// split view, app/compare_view.h) draws so that it reads and answers H as the lesson's frame.
+FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, bool help);
 // A step text as the frame draws it: `code spans` without their backticks (a backtick with no
 // partner on its line stays), preformatted rows (two leading spaces) as they are, table columns
 // padded to line up. What the step JSON sidecar's `text` reports.

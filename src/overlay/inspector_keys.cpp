@@ -75,6 +75,7 @@ void planHelp(Planner& pl, const InspectorLayout& l, const TypeSizes& t) {
     float h = std::min(static_cast<float>(l.frameSize.y) - 8.0f,
                        (static_cast<float>(rows) + 2.5f) * lh + fs);
     Rect box{std::round((l.frameSize.x - w) * 0.5f), std::round((l.frameSize.y - h) * 0.5f), w, h};
+    pl.box(BoxKind::Panel, box, "help", "help");
     pl.fill(box, Colour{0.02f, 0.03f, 0.05f, 0.94f});
     pl.op([=](Canvas& c) { c.strokeRect(box, 2.0f, ACCENT); });
     float top = box.y + fs * 0.6f;

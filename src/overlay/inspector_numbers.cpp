@@ -222,11 +222,11 @@ void placeFormula(Planner& pl, const FittedText& f, const Rect& box, int page) {
 
 // A line at the panel's bottom saying where the rest of the inspector is (the next page).
 // `y`: the top of the room left under the rest.
-void planNextPageNote(Planner& pl, const InspectorLayout& l, const TypeSizes& t, float margin,
-                      float y, const std::string& what) {
+void planNextPageNote(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                      const TypeSizes& t, float margin, float y, const std::string& what) {
     const Rect& p = l.inspector;
     float lh = lineHeightOf(t.label);
-    std::string note = what + ": next page (Space/Right)";
+    std::string note = what + ": next page (" + pageKeys(m) + ")";
     std::string shown = elideText(FontFace::Sans, t.label, note, p.w - 2 * margin);
     pl.text({p.x + margin, std::min(y, p.bottom() - margin - lh)}, shown,
             {FontFace::Sans, t.label, ACCENT}, BoxKind::Text, "inspector", "more", shown != note);
@@ -283,16 +283,16 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
         // Where the rest is; under a formula only where there is room left for the line.
         bool room = noteY + lineHeightOf(t.label) <= p.bottom() - margin;
         if (tableParts > 0 && room) {
-            planNextPageNote(pl, l, t, margin, noteY, "every texel's numbers");
+            planNextPageNote(pl, l, m, t, margin, noteY, "every texel's numbers");
         } else if (!panel.together) {
-            planNextPageNote(pl, l, t, margin, noteY, "the formula, every term");
+            planNextPageNote(pl, l, m, t, margin, noteY, "the formula, every term");
         }
         return;
     }
     if (part <= tableParts) {
         float end = planTexelTable(pl, l, m, t, table, formulaTop, part - 1);
         if (part < parts - 1) {
-            planNextPageNote(pl, l, t, margin, end + t.label * 0.5f,
+            planNextPageNote(pl, l, m, t, margin, end + t.label * 0.5f,
                              part < tableParts ? "more texels" : "the formula, every term");
         }
         return;
@@ -301,7 +301,7 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     placeFormula(pl, formulaAlone, alone, formulaPage);
     if (formulaPage < formulaAlone.pages - 1) {
         float end = pl.plan.boxes.back().rect.bottom() + t.label * 0.5f;
-        planNextPageNote(pl, l, t, margin, end, "the rest of the formula");
+        planNextPageNote(pl, l, m, t, margin, end, "the rest of the formula");
     }
 }
 

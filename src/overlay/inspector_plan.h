@@ -73,6 +73,9 @@ inline bool inside(const Rect& inner, const Rect& outer) {
 }
 
 // Records boxes and the draw commands that go with them.
+// The keys that turn a page, as the "more" marks say them: on an animation step Space plays it.
+inline std::string pageKeys(const InspectorModel& m) { return m.plays ? "Right" : "Space/Right"; }
+
 struct Planner {
     FramePlan& plan;
     bool onTop = false;

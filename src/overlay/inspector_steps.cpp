@@ -138,7 +138,7 @@ void planSteps(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     Rect text = l.presentation ? planStepHeader(pl, l, m, t) : planStepList(pl, l, m, t);
     FittedText f = fitText(m.stepText, FontFace::Sans, t.body, t.bodyFloor, text.w, text.h);
     pl.plan.textPages = f.pages;
-    placeFitted(pl, f, text, m.textPage, FontFace::Sans, TEXT, panel, "step-text", "Space/Right");
+    placeFitted(pl, f, text, m.textPage, FontFace::Sans, TEXT, panel, "step-text", pageKeys(m));
 }
 
 void planThumbnail(Planner& pl, const InspectorLayout& l, const InspectorModel& m,

@@ -255,6 +255,7 @@ float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, 
         glm::vec2 at = r.position();
         pl.op([=](Canvas& cv) { cv.text(at, more, {FontFace::Sans, ms, ACCENT}); });
         pl.box(BoxKind::Mark, r, panel, "more", ms);
+        pl.plan.boxes.back().text = more;
     }
     return used;
 }

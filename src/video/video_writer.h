@@ -54,16 +54,23 @@ class VideoWriter {
     VideoWriter(const VideoWriter&) = delete;
     VideoWriter& operator=(const VideoWriter&) = delete;
 
-    // One frame, width * height * 4 bytes, rows top-down. Throws VideoError on an
-    // encoder or write failure (a full disk included).
+    // One frame, width * height * 4 bytes, rows top-down: copied into a queue of a few frames
+    // that the writer's own thread encodes in order, so the caller composes the next frame
+    // meanwhile (it waits only while the queue is full). Throws VideoError on an encoder or
+    // write failure (a full disk included), at the first call after it happened.
     void addFrame(const std::vector<uint8_t>& rgba);
-    // Flushes the encoder, writes the trailer and closes the file; every write checked. Without
-    // it (an exception, Ctrl-C) the file is incomplete: callers write to a staging name.
+    // Encodes what is queued, flushes the encoder, writes the trailer and closes the file; every
+    // write checked, a failure of a queued frame thrown here. Without it (an exception, Ctrl-C)
+    // the file is incomplete: callers write to a staging name.
     void finish();
 
+    // Frames taken (queued or encoded).
     int framesWritten() const;
-    // Seconds spent converting and encoding (steady clock), for the share of the encoder.
+    // Seconds spent converting and encoding (steady clock, on the writer's thread).
     double encodeSeconds() const;
+    // Seconds the caller was held up by the encoder (a full queue, and finish()): the encoder's
+    // share of the caller's time.
+    double waitSeconds() const;
 
   private:
     struct Impl;
