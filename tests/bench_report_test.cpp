@@ -28,6 +28,8 @@ std::vector<BenchRow> sampleRows() {
     a.gpuCpuMs = 21.25;
     a.lookupCpuMs = 9.5;
     a.glRenderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
+    a.contact.edgeRmse = 0.0625;
+    a.contact.edgePixels = 37;
     BenchRow b = a;
     b.point = {PCF_NEAREST, 0, 256};
     b.acne = {};
@@ -65,12 +67,15 @@ TEST(BenchReport, CsvReadsBackWhatWasWritten) {
         EXPECT_NEAR(back[k].lookupCpuMs, rows[k].lookupCpuMs, 1e-4);
         // The renderer, its comma written ';' (the files carry no quoting).
         EXPECT_EQ(back[k].glRenderer, "llvmpipe (LLVM 15.0.6; 256 bits)");
+        EXPECT_EQ(back[k].contact.edgeRmse, rows[k].contact.edgeRmse);
+        EXPECT_EQ(back[k].contact.edgePixels, rows[k].contact.edgePixels);
     }
     // The columns by name: the weighting's name, and the gaussian's sigma.
     std::string csv = benchCsv(rows);
-    EXPECT_NE(csv.find(",gaussian,1.25,0.125,0.03125,4096,0.0625,0.015625,512,0.0123456789,0.375,"
-                       "0.02,0.000246913578,21.2500,9.5000,llvmpipe (LLVM 15.0.6; 256 bits)\n"),
-              std::string::npos)
+    EXPECT_NE(
+        csv.find(",gaussian,1.25,0.125,0.03125,4096,0.0625,0.015625,512,0.0123456789,0.375,"
+                 "0.02,0.000246913578,21.2500,9.5000,llvmpipe (LLVM 15.0.6; 256 bits),0.0625,37\n"),
+        std::string::npos)
         << csv;
 }
 
@@ -84,9 +89,11 @@ TEST(BenchReport, TheShippedCsvParses) {
     std::fclose(f);
     std::vector<BenchRow> rows = parseBenchCsv(text, path);
     EXPECT_GE(rows.size(), 60u);  // every method, N = 3, 5, 7, four map sizes
-    // The error split, the shimmer and the renderer are there (the current header), and say
-    // what they must: lesson 11's words on llvmpipe read the renderer.
-    EXPECT_TRUE(text.starts_with(std::string(BENCH_CSV_HEADER) + "\n"));
+    // The error split, the shimmer and the renderer are there (the current header or the one
+    // before the contact columns), and say what they must: lesson 11's words on llvmpipe read
+    // the renderer.
+    EXPECT_TRUE(text.starts_with(std::string(BENCH_CSV_HEADER) + "\n") ||
+                text.starts_with(std::string(BENCH_CSV_HEADER_V5) + "\n"));
     for (const BenchRow& r : rows) {
         std::string name = pointName(r.point) + " map " + std::to_string(r.point.mapSize);
         EXPECT_NE(r.glRenderer.find("llvmpipe"), std::string::npos) << name;
@@ -140,13 +147,24 @@ TEST(BenchReport, BadCsvNamesTheLine) {
     EXPECT_EQ(cpu[0].lookupCpuMs, 4.25);
     EXPECT_EQ(parseBenchCsv(v3 + row27 + "\n", "b.csv")[0].gpuCpuMs, 0.0);
     EXPECT_EQ(cpu[0].glRenderer, "");  // not recorded before the current header
-    // The current header: 30 fields, the last the renderer.
-    std::string v5 = std::string(BENCH_CSV_HEADER) + "\n";
+    // The header before the contact columns: 30 fields, the last the renderer.
+    std::string v5 = std::string(BENCH_CSV_HEADER_V5) + "\n";
     EXPECT_EQ(message(v5 + row27 + ",12.5,4.25\n"), "b.csv:2: expected 30 fields, got 29");
     std::vector<BenchRow> named =
         parseBenchCsv(v5 + row27 + ",12.5,4.25,NVIDIA H200/PCIe/SSE2\n", "b.csv");
     ASSERT_EQ(named.size(), 1u);
     EXPECT_EQ(named[0].glRenderer, "NVIDIA H200/PCIe/SSE2");
+    EXPECT_EQ(named[0].contact.edgePixels, 0);
+    // The current header: 32 fields, the last two the edge error near the contacts.
+    std::string v6 = std::string(BENCH_CSV_HEADER) + "\n";
+    const std::string row30 = row27 + ",12.5,4.25,llvmpipe";
+    EXPECT_EQ(message(v6 + row30 + "\n"), "b.csv:2: expected 32 fields, got 30");
+    std::vector<BenchRow> contact = parseBenchCsv(v6 + row30 + ",0.125,640\n", "b.csv");
+    ASSERT_EQ(contact.size(), 1u);
+    EXPECT_EQ(contact[0].contact.edgeRmse, 0.125);
+    EXPECT_EQ(contact[0].contact.edgePixels, 640);
+    EXPECT_EQ(message(v6 + row30 + ",0.125,6.5\n"),
+              "b.csv:2: field 32 '6.5' is not a whole number");
     // The eleven columns from before the timing spreads still read, with no spread.
     std::string v1 = std::string(BENCH_CSV_HEADER_V1) + "\n";
     EXPECT_EQ(message(v1 + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0\n"),

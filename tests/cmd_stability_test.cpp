@@ -49,15 +49,18 @@ TEST_F(StabilityCommand, QuickWritesEveryFile) {
         EXPECT_TRUE(std::isfinite(std::stod(f[7]))) << line;
     }
     EXPECT_GT(rows, 100);
-    // The six sweeps, and the setup the charts state (stability_report.h: stabilitySetupRows).
+    // The ten sweeps, and the setup the charts state (stability_report.h: stabilitySetupRows).
     EXPECT_EQ(sweeps, (std::set<std::string>{"setup", "acne", "leak", "tradeoff", "shimmer",
-                                             "precision", "aliasing"}));
+                                             "precision", "aliasing", "pcss-thin", "pcss-overlap",
+                                             "pcss-noise", "pcss-bias"}));
     std::string md = testutil::readAll(out + "/stability.md");
     EXPECT_NE(md.find("| pcf-gather N=3 | constant |"), std::string::npos) << md;
     EXPECT_EQ(r.out, md);
     for (const char* chart :
          {"stability_acne.png", "stability_leak.png", "stability_tradeoff.png",
-          "stability_shimmer.png", "stability_precision.png", "aliasing_heatmap.png"}) {
+          "stability_shimmer.png", "stability_precision.png", "aliasing_heatmap.png",
+          "stability_pcss_thin.png", "stability_pcss_overlap.png", "stability_pcss_noise.png",
+          "stability_pcss_bias.png"}) {
         ImageSize size = readImageSize(out + "/" + chart);
         EXPECT_EQ(size.width, 640) << chart;
         EXPECT_EQ(size.height, 360) << chart;
@@ -65,7 +68,7 @@ TEST_F(StabilityCommand, QuickWritesEveryFile) {
     // No staging folder left behind.
     int entries = 0;
     for (const auto& e : fs::directory_iterator(out)) entries += e.is_regular_file() ? 1 : 100;
-    EXPECT_EQ(entries, 8);
+    EXPECT_EQ(entries, 12);
 
     // Written once: a second run without -f is refused and leaves the files alone.
     auto again = testutil::runPcfscope("stability --quick --sweep aliasing -o " + out);

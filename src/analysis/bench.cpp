@@ -244,6 +244,7 @@ class BenchRun {
     std::vector<size_t> mOrder;
     std::vector<BenchRow> mRows;
     ErrorRegions mRegions;
+    ErrorRegions mContactRegions;        // the edge band near the casters (contactDistance > 0)
     std::vector<glm::vec4> mCpuLookups;  // receiver pixels the CPU kernel is timed on
     std::map<int, ShadowMap> mMaps;
     GpuLookup mLookupPass;
@@ -259,6 +260,15 @@ class BenchRun {
         mCpuLookups = receiverLookups(lightSpace, static_cast<size_t>(mOptions.cpuLookups));
         mLookupPass.setLookups(glRowLookups(lightSpace, mOptions.frameSize), mOptions.frameSize.x,
                                glRowDzDuv(mRenderer.readReceiver(), mOptions.frameSize));
+        if (mOptions.contactDistance > 0.0f && mContext.scene != nullptr) {
+            if (mHits.empty())
+                mHits = centreHits(*mContext.scene, mTruth.size, mOptions.cpuThreads);
+            mContactRegions = mRegions;
+            mContactRegions.edge =
+                nearContactMask(*mContext.scene, mHits, mRegions.edge, mOptions.contactDistance);
+            mContactRegions.edgeCount = static_cast<int>(
+                std::count(mContactRegions.edge.begin(), mContactRegions.edge.end(), 1));
+        }
     }
 
     void measurePoint(BenchRow& row, const BenchPoint& p) {
@@ -274,6 +284,9 @@ class BenchRun {
         std::vector<float> visibility = mRenderer.readVisibility();
         row.point = p;
         row.error = measureError(mTruth, mRegions, visibility);
+        if (!mContactRegions.edge.empty()) {
+            row.contact = measureError(mTruth, mContactRegions, visibility);
+        }
         if (mContext.scene != nullptr) {
             const auto& [lit, umbra] = cleanMasks(p);
             row.acne = falseShadow(visibility, lit);

@@ -11,6 +11,8 @@
 //                footprint of the method at that map size) the share with v < 0.99 and the mean
 //                darkening 1 - v;
 //   leak         false light: over the CLEAN UMBRA pixels the share with v > 0.01.
+//   contact      (contactDistance > 0) the aliasing error over the edge band's pixels near a
+//                caster only: the contacts, where a soft shadow's penumbra is narrowest.
 // Shimmer, the second accuracy axis: the map's texel grid slid under the still world in steps of
 // 1/32 texel (stability.h's SHIMMER_STEPS, light.h's shiftShadowOrigin), shimmerFrames frames;
 // mean and 99th percentile of |v(t) - v(t-1)| over the pixels that flicker (failure_measures.h):
@@ -64,6 +66,11 @@ struct BenchOptions {
     // The truth against the light's disk (GroundTruthOptions::area), not its centre: the scene's
     // directional light must have an angular diameter.
     bool areaTruth = false;
+    // World units: also the edge error over the edge band's pixels within this distance of a
+    // caster (failure_measures.h: nearContactMask), where a soft shadow is sharp (contact
+    // hardening) and one fixed kernel width cannot be right both there and far away. 0: not
+    // measured.
+    float contactDistance = 0.0f;
     int shimmerFrames = 8;  // frames of the grid slid 1/32 texel apart (< 2: none)
     // The clean-pixel masks (acne, leak) test every stride-th pixel in x and y; 0 = the stride
     // that leaves about CLEAN_SAMPLE_TARGET compared pixels.
@@ -135,8 +142,10 @@ struct BenchRow {
     int cpuPixels = 0;   // receiver pixels the CPU kernel was timed on
     int texelReads = 0;  // fetchCounts(method, N).texels
     ErrorStats error;    // error.edgeRmse: the aliasing error (see the top of this file)
-    FailureRate acne;    // false shadow over the clean lit pixels
-    FailureRate leak;    // false light over the clean umbra pixels
+    // The same over the edge band near the casters (BenchOptions::contactDistance; else zero).
+    ErrorStats contact;
+    FailureRate acne;  // false shadow over the clean lit pixels
+    FailureRate leak;  // false light over the clean umbra pixels
     ShimmerStats shimmer;
     std::string timer;  // which timer gave gpuMs
     // GL_RENDERER of the run (every row of one run carries it: bench.csv has no other place);

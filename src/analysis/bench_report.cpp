@@ -65,7 +65,8 @@ std::string benchCsv(std::span<const BenchRow> rows) {
                g(r.leak.mean) + ',' + std::to_string(r.leak.count) + g(r.shimmer.flickerMean) +
                g(r.shimmer.flickerP99) + g(r.shimmer.flickerShare) + g(r.shimmer.mean) + ',' +
                format("%.4f", r.gpuCpuMs) + ',' + format("%.4f", r.lookupCpuMs) + ',' +
-               csvWords(r.glRenderer) + '\n';
+               csvWords(r.glRenderer) + g(r.contact.edgeRmse) + ',' +
+               std::to_string(r.contact.edgePixels) + '\n';
     }
     return out;
 }
@@ -103,13 +104,16 @@ BenchRow parseBenchRow(const CsvFields& f) {
     r.lookupCpuMs = f.number(28);
     if (f.size() == 29) return r;
     r.glRenderer = f.text(29);
+    if (f.size() == 30) return r;
+    r.contact.edgeRmse = f.number(30);
+    r.contact.edgePixels = f.integer(31);
     return r;
 }
 
 // The field count a header line promises, or 0 when it is not a bench.csv header.
 size_t fieldsOfHeader(const std::string& header) {
-    for (std::string_view h : {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V4, BENCH_CSV_HEADER_V3,
-                               BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
+    for (std::string_view h : {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V5, BENCH_CSV_HEADER_V4,
+                               BENCH_CSV_HEADER_V3, BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
         if (header == h) return static_cast<size_t>(std::count(h.begin(), h.end(), ',')) + 1;
     }
     return 0;

@@ -17,6 +17,13 @@ inline constexpr std::string_view BENCH_CSV_HEADER =
     "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
     "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,acne_share,"
     "acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,shimmer_mean,shimmer_p99,"
+    "flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,gl_renderer,contact_edge_rmse,"
+    "contact_edge_pixels";
+// The header before the contact columns (bench.h: contactDistance): still read (what lacks: 0).
+inline constexpr std::string_view BENCH_CSV_HEADER_V5 =
+    "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
+    "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,acne_share,"
+    "acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,shimmer_mean,shimmer_p99,"
     "flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,gl_renderer";
 // The header before the renderer: still read (the renderer unknown: empty).
 inline constexpr std::string_view BENCH_CSV_HEADER_V4 =
@@ -45,8 +52,9 @@ inline constexpr std::string_view BENCH_CSV_HEADER_V1 =
 // binomial or gaussian, sigma 0 unless gaussian. Every line ends with '\n'.
 std::string benchCsv(std::span<const BenchRow> rows);
 
-// Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv), or the 29
-// columns of BENCH_CSV_HEADER_V4, the 27 of BENCH_CSV_HEADER_V3, the fifteen of
+// Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv; contact_edge_rmse
+// over contact_edge_pixels, 0 and 0 without --contact), or the 30 columns of BENCH_CSV_HEADER_V5,
+// the 29 of BENCH_CSV_HEADER_V4, the 27 of BENCH_CSV_HEADER_V3, the fifteen of
 // BENCH_CSV_HEADER_V2 or the eleven of BENCH_CSV_HEADER_V1 (what they lack: 0, box, not noisy,
 // the renderer empty). The renderer reads back with ';' where GL_RENDERER had ','. Throws
 // pcf::InputError "SOURCE:LINE: problem" on a wrong header, a wrong field count, an unknown method

@@ -248,4 +248,41 @@ std::vector<glm::vec3> footprintPoints(const Scene& scene, const glm::mat4& shad
     return points;
 }
 
+std::optional<glm::vec3> nearestCasterPoint(const Scene& scene, glm::vec3 p) {
+    std::optional<glm::vec3> best;
+    float bestD = 1e30f;
+    for (const SceneObject& o : scene.objects) {
+        if (!o.castsShadow) continue;
+        glm::vec3 q;
+        if (const Box* box = std::get_if<Box>(&o.shape)) {
+            glm::vec3 local = boxLocalFromWorld(*box, p);
+            q = boxWorldFromLocal(*box, glm::clamp(local, -box->halfExtents, box->halfExtents));
+        } else if (const Sphere* s = std::get_if<Sphere>(&o.shape)) {
+            glm::vec3 d = p - s->centreWs;
+            float len = glm::length(d);
+            q = len > 0.0f ? s->centreWs + d * (s->radius / len) : s->centreWs;
+        } else {
+            continue;
+        }
+        float d = glm::length(p - q);
+        if (d < bestD) {
+            bestD = d;
+            best = q;
+        }
+    }
+    return best;
+}
+
+std::vector<uint8_t> nearContactMask(const Scene& scene,
+                                     const std::vector<std::optional<Hit>>& hits,
+                                     std::span<const uint8_t> pixels, float distance) {
+    std::vector<uint8_t> out(hits.size(), 0);
+    for (size_t k = 0; k < hits.size(); ++k) {
+        if (!pixels[k] || !hits[k]) continue;
+        std::optional<glm::vec3> q = nearestCasterPoint(scene, hits[k]->posWs);
+        out[k] = q && glm::length(hits[k]->posWs - *q) <= distance;
+    }
+    return out;
+}
+
 }  // namespace pcf

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "analysis/error_metrics.h"
@@ -119,5 +120,15 @@ double quantileOf(std::vector<float>& values, double q);
 std::vector<glm::vec3> footprintPoints(const Scene& scene, const glm::mat4& shadowClipFromWorld,
                                        int mapSize, glm::vec3 posWs, glm::vec3 normalWs,
                                        float reachTexels, int gridSide);
+
+// The nearest point of any caster that is not a plane (a box, a sphere) to p, or nullopt when
+// there is none: on the ground, the nearest point of a standing caster's contact line.
+std::optional<glm::vec3> nearestCasterPoint(const Scene& scene, glm::vec3 p);
+
+// 1 where `pixels` is 1 and the surface seen at the pixel centre (hits, rows top-down) lies
+// within `distance` world units of a caster (nearestCasterPoint): the pixels near a contact.
+std::vector<uint8_t> nearContactMask(const Scene& scene,
+                                     const std::vector<std::optional<Hit>>& hits,
+                                     std::span<const uint8_t> pixels, float distance);
 
 }  // namespace pcf

@@ -136,7 +136,15 @@ double chartIqr(const BenchRow& row, ChartTiming timing) {
 }
 
 double chartAccuracy(const BenchRow& row, ChartAccuracy accuracy) {
-    return accuracy == ChartAccuracy::Shimmer ? row.shimmer.flickerP99 : row.error.edgeRmse;
+    switch (accuracy) {
+        case ChartAccuracy::Shimmer:
+            return row.shimmer.flickerP99;
+        case ChartAccuracy::ContactRmse:
+            return row.contact.edgeRmse;
+        case ChartAccuracy::EdgeRmse:
+            break;
+    }
+    return row.error.edgeRmse;
 }
 
 namespace {

@@ -32,8 +32,9 @@ double chartIqr(const BenchRow& row, ChartTiming timing);
 
 // Which accuracy the y axis shows: the edge band's RMSE (the filter's aliasing error,
 // speed_vs_accuracy.png), or the shimmer as the map's grid slides (bench.h; the 99th percentile
-// of a flickering pixel's change per 1/32-texel step, speed_vs_stability.png).
-enum class ChartAccuracy { EdgeRmse, Shimmer };
+// of a flickering pixel's change per 1/32-texel step, speed_vs_stability.png), or the edge
+// band's RMSE near the casters only (bench.h: contactDistance, speed_vs_contact.png).
+enum class ChartAccuracy { EdgeRmse, Shimmer, ContactRmse };
 double chartAccuracy(const BenchRow& row, ChartAccuracy accuracy);
 
 struct ChartTick {

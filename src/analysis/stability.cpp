@@ -8,6 +8,7 @@
 #include "analysis/error_metrics.h"
 #include "analysis/failure_measures.h"
 #include "analysis/ground_truth.h"
+#include "analysis/stability_pcss.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "render/scene_renderer.h"
@@ -21,32 +22,6 @@ namespace pcf {
 namespace {
 
 constexpr float MAX_ALIASING_JUMP = 32.0f;  // texels between neighbours: another surface
-
-// The nearest point of any caster that is not a plane (the pole, the box), or nullopt.
-std::optional<glm::vec3> nearestCasterPoint(const Scene& scene, glm::vec3 p) {
-    std::optional<glm::vec3> best;
-    float bestD = 1e30f;
-    for (const SceneObject& o : scene.objects) {
-        if (!o.castsShadow) continue;
-        glm::vec3 q;
-        if (const Box* box = std::get_if<Box>(&o.shape)) {
-            glm::vec3 local = boxLocalFromWorld(*box, p);
-            q = boxWorldFromLocal(*box, glm::clamp(local, -box->halfExtents, box->halfExtents));
-        } else if (const Sphere* s = std::get_if<Sphere>(&o.shape)) {
-            glm::vec3 d = p - s->centreWs;
-            float len = glm::length(d);
-            q = len > 0.0f ? s->centreWs + d * (s->radius / len) : s->centreWs;
-        } else {
-            continue;
-        }
-        float d = glm::length(p - q);
-        if (d < bestD) {
-            bestD = d;
-            best = q;
-        }
-    }
-    return best;
-}
 
 class Sweeper {
   public:
@@ -74,6 +49,12 @@ class Sweeper {
                 break;
             case Sweep::Aliasing:
                 aliasing();
+                break;
+            case Sweep::PcssThin:
+            case Sweep::PcssOverlap:
+            case Sweep::PcssNoise:
+            case Sweep::PcssBias:
+                runPcssSweep(sweep, mOptions, *mContext.scene, mContext.progress, result.rows);
                 break;
         }
     }
@@ -558,6 +539,14 @@ std::string_view sweepName(Sweep sweep) {
             return "shimmer";
         case Sweep::Precision:
             return "precision";
+        case Sweep::PcssThin:
+            return "pcss-thin";
+        case Sweep::PcssOverlap:
+            return "pcss-overlap";
+        case Sweep::PcssNoise:
+            return "pcss-noise";
+        case Sweep::PcssBias:
+            return "pcss-bias";
         default:
             return "aliasing";
     }
@@ -571,8 +560,9 @@ std::optional<Sweep> sweepFromName(std::string_view name) {
 }
 
 std::vector<Sweep> allSweeps() {
-    return {Sweep::Acne,    Sweep::Leak,      Sweep::Tradeoff,
-            Sweep::Shimmer, Sweep::Precision, Sweep::Aliasing};
+    return {Sweep::Acne,      Sweep::Leak,     Sweep::Tradeoff, Sweep::Shimmer,
+            Sweep::Precision, Sweep::Aliasing, Sweep::PcssThin, Sweep::PcssOverlap,
+            Sweep::PcssNoise, Sweep::PcssBias};
 }
 
 std::string sweepNameList() {
@@ -603,6 +593,11 @@ StabilityOptions quickStabilityOptions() {
     o.cameraFrames = 3;
     o.depthRanges = {1, 100, 1e4f};
     o.aliasingMapSizes = {128, 512};
+    o.pcssPoleWidths = {1, 4};
+    o.pcssPlankHeights = {3};
+    o.pcssLightSizes = {2, 8};
+    o.pcssRadii = {1, 4, 16};
+    o.pcssTruthBound = 1.0f / 16.0f;
     return o;
 }
 
@@ -708,7 +703,7 @@ std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) 
             return plain("aliasing map size " + std::to_string(size) + " is out of range");
         }
     }
-    return std::nullopt;
+    return validatePcssSweepOptions(o);
 }
 
 glm::mat4 shimmerShadowFit(const glm::mat4& fitted, int mapSize, int frame, bool snap) {

@@ -1,5 +1,6 @@
 // stability.h: where shadow-map filtering fails, measured. Six sweeps, each a curve of numbers
-// against the exact ground truth (ground_truth.h), for any list of methods and bias modes:
+// against the exact ground truth (ground_truth.h), for any list of methods and bias modes, and
+// four of pcss's own (stability_pcss.h: pcss-thin, pcss-overlap, pcss-noise, pcss-bias):
 //
 //   acne       the light's elevation swept from 90 down to 2 degrees over the scene; the
 //              false-shadow rate = share of the CLEAN LIT pixels where visibility < 0.99, and the
@@ -64,9 +65,22 @@
 
 namespace pcf {
 
-enum class Sweep { Acne, Leak, Tradeoff, Shimmer, Precision, Aliasing };
+enum class Sweep {
+    Acne,
+    Leak,
+    Tradeoff,
+    Shimmer,
+    Precision,
+    Aliasing,
+    // pcss's failures (stability_pcss.h)
+    PcssThin,
+    PcssOverlap,
+    PcssNoise,
+    PcssBias,
+};
 
-// "acne", "leak", "tradeoff", "shimmer", "precision", "aliasing"
+// "acne", "leak", "tradeoff", "shimmer", "precision", "aliasing", "pcss-thin", "pcss-overlap",
+// "pcss-noise", "pcss-bias"
 std::string_view sweepName(Sweep sweep);
 std::optional<Sweep> sweepFromName(std::string_view name);
 std::vector<Sweep> allSweeps();
@@ -116,6 +130,18 @@ struct StabilityOptions {
     float precisionElevation = 30.0f;  // degrees
     float tradeoffElevation = 30.0f;   // degrees: the tradeoff sweep's light
     std::vector<int> aliasingMapSizes{256, 512, 1024, 2048};
+    // pcss's sweeps (stability_pcss.h): the thin pole's widths in map texels, the plank's
+    // heights in world units, the suns' angular diameters in degrees, poisson's radii in texels
+    // and the light's elevation for the last.
+    std::vector<float> pcssPoleWidths{1, 1.5f, 2, 3, 4};
+    std::vector<float> pcssPlankHeights{0.5f, 1, 2, 3};
+    std::vector<float> pcssLightSizes{1, 2, 4, 8};
+    std::vector<float> pcssRadii{1, 2, 4, 8, 16};
+    float pcssBiasElevation = 87.0f;
+    // The area truth's per-pixel bound for pcss's sweeps (ground_truth.h: targetBound): looser
+    // than the bench's 1/512, as the sweeps count pixels by thresholds (1/2, 0.02, 0.98) and an
+    // area truth at 1/512 costs 0.1 s per penumbra pixel (14x its cost at 1/20).
+    float pcssTruthBound = 1.0f / 64.0f;
     // A pinned pixel (frame coordinates, top-left origin): the shimmer sweep also writes the
     // flicker of its visibility curve (failure_measures.h: curveFlicker) as light_pinned_flicker
     // and snapped_pinned_flicker, the number `animate`'s flicker trace shows for that point, and
@@ -140,7 +166,7 @@ glm::mat4 shimmerShadowFit(const glm::mat4& fitted, int mapSize, int frame, bool
 Camera cameraSlidByPixels(const Camera& camera, int frameHeight, float pixels);
 
 // --quick: 160x90 frame, 128 map, 1x1 truth sample, 6 elevations, 3 leak biases, 3 camera frames,
-// 3 depth ranges; the methods nearest and pcf-gather N=3.
+// 3 depth ranges, 2 or 3 points of each pcss sweep; the methods nearest and pcf-gather N=3.
 StabilityOptions quickStabilityOptions();
 
 // Why the options cannot run, nullopt when they can: one sentence naming the option list at fault

@@ -6,6 +6,7 @@
 
 #include "analysis/chart_axes.h"
 #include "analysis/failure_measures.h"
+#include "analysis/stability_pcss_figures.h"
 #include "analysis/stability_report.h"
 #include "kernel/methods.h"
 
@@ -468,6 +469,14 @@ constexpr SweepChart SWEEP_CHARTS[] = {
     {Sweep::Shimmer, "stability_shimmer.png", drawShimmerChart, shimmerTexts},
     {Sweep::Precision, "stability_precision.png", drawPrecisionChart,
      lineTexts<precisionChartSpec>},
+    {Sweep::PcssThin, "stability_pcss_thin.png", drawPcssSweepChart<pcssThinChartSpec>,
+     lineTexts<pcssThinChartSpec>},
+    {Sweep::PcssOverlap, "stability_pcss_overlap.png", drawPcssSweepChart<pcssOverlapChartSpec>,
+     lineTexts<pcssOverlapChartSpec>},
+    {Sweep::PcssNoise, "stability_pcss_noise.png", drawPcssSweepChart<pcssNoiseChartSpec>,
+     lineTexts<pcssNoiseChartSpec>},
+    {Sweep::PcssBias, "stability_pcss_bias.png", drawPcssSweepChart<pcssBiasChartSpec>,
+     lineTexts<pcssBiasChartSpec>},
 };
 
 }  // namespace

@@ -157,7 +157,8 @@ std::vector<StabilitySummary> summarizeStability(std::span<const StabilityRow> r
         return nullptr;
     };
     for (const StabilityRow& r : rows) {
-        if (r.method < 0) continue;
+        // pcss's sweeps have their own lines (pcssLines): no row of the method-and-bias table.
+        if (r.method < 0 || r.sweep.starts_with("pcss-")) continue;
         StabilitySummary* s = find(r);
         if (s == nullptr) {
             out.push_back({});
@@ -281,6 +282,49 @@ std::string aliasingLine(std::span<const StabilityRow> rows) {
     return aliasing;
 }
 
+// One line per pcss sweep and x: "pcss-thin, pole_width_texels 2: pcss 12.0 %, pcf-gather N=5
+// 0.0 %" with its headline metric (stability_pcss.h): pcss-thin missed_share_mean per method,
+// pcss-overlap the penumbra pixel ratio alone and stacked, pcss-noise the roughness rotated and
+// fixed, pcss-bias the false-shadow rate per bias.
+std::string pcssLines(std::span<const StabilityRow> rows) {
+    struct Headline {
+        const char* sweep;
+        const char* suffix;  // the metric, after an optional "label:"
+        bool percent;
+    };
+    const Headline headlines[] = {{"pcss-thin", "missed_share_mean", true},
+                                  {"pcss-overlap", "penumbra_pixels_ratio", false},
+                                  {"pcss-noise", "penumbra_roughness", false},
+                                  {"pcss-bias", "false_shadow_rate", true}};
+    std::string md;
+    for (const Headline& h : headlines) {
+        std::string line;
+        double x = std::nan("");
+        for (const StabilityRow& r : rows) {
+            if (r.sweep != h.sweep || !r.metric.ends_with(h.suffix)) continue;
+            if (!sameX(r.x, x)) {
+                if (!line.empty()) md += line + "\n";
+                x = r.x;
+                char xs[32];
+                std::snprintf(xs, sizeof xs, "%g", r.x);
+                line = "- " + r.sweep + ", " + r.xName + " " + xs + ":";
+            } else {
+                line += ",";
+            }
+            std::string label = r.metric.substr(0, r.metric.find(':'));
+            if (label == r.metric) label = stabilityMethodName({r.method, r.kernel}) + " " + r.bias;
+            line += " " + label + " " + (h.percent ? percent(r.y) : fixed(r.y, 3));
+        }
+        if (!line.empty()) md += line + "\n";
+    }
+    if (md.empty()) return md;
+    return "\npcss's failures (stability_pcss.h; docs/measurement.md says what each measures): "
+           "thin, the share of the truth-shadowed pixels returned lit; overlap, pcss's penumbra "
+           "pixels over the area truth's; noise, the pixel-to-pixel RMS of the error in the "
+           "penumbra; bias, the false-shadow rate at the run's constant bias.\n\n" +
+           md;
+}
+
 }  // namespace
 
 std::string stabilityMarkdown(std::span<const StabilityRow> rows, const StabilitySetup& setup,
@@ -329,6 +373,7 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
         md += "\nPerspective aliasing (screen pixels per shadow-map texel, Lloyd et al.): " +
               aliasing + ".\n";
     }
+    md += pcssLines(rows);
     return md;
 }
 

@@ -6,6 +6,8 @@
 //   speed_vs_accuracy.png    GPU time (log; --timing scene or lookup) with IQR bars against
 //                            edge-band RMSE, the Pareto front drawn
 //   speed_vs_stability.png   the same against shimmer
+//   speed_vs_contact.png     with --contact D: the same against the edge-band RMSE within D
+//                            world units of a caster (the contacts, where soft shadows are sharp)
 //   diff/NAME.png            each run's signed error against the ground truth
 //   reference.csv            with --reference: per run the lookup pass against the method's
 //                            hand-written reference pass (shaders/reference/), timed in the
@@ -51,6 +53,7 @@ constexpr const char* CSV_NAME = "bench.csv";
 constexpr const char* MD_NAME = "bench.md";
 constexpr const char* ACCURACY_CHART = "speed_vs_accuracy.png";
 constexpr const char* STABILITY_CHART = "speed_vs_stability.png";
+constexpr const char* CONTACT_CHART = "speed_vs_contact.png";
 constexpr const char* REFERENCE_CSV_NAME = "reference.csv";
 // RenderOptions' options for one run, which the sweep's lists replace.
 constexpr const char* SINGLE_RUN_OPTIONS[] = {"--method", "--kernel", "--map-size", "--radius",
@@ -69,6 +72,7 @@ struct BenchCommandOptions {
     std::string chartSize;
     int spp = DEFAULT_TRUTH_SPP;
     std::string truth = "hard";  // --truth hard|area
+    float contact = 0.0f;        // --contact D, world units (0: not measured)
     int repeats = 9;             // timing rounds; 5 with --quick unless given
     int shimmerFrames = 8;
     std::string timing = "lookup";
@@ -257,6 +261,10 @@ BenchPlan parsePlan(const BenchCommandOptions& o) {
     plan.timing = o.timing == "scene" ? ChartTiming::Scene : ChartTiming::Lookup;
     plan.config.scene = o.render.loadScene();
     applyTruth(o, plan);
+    if (!(o.contact >= 0.0f && o.contact <= 1e6f)) {
+        throw UsageError("--contact must be a distance in world units, 0 or more");
+    }
+    plan.config.options.contactDistance = o.contact;
     return plan;
 }
 
@@ -266,6 +274,7 @@ std::vector<std::string> checkOutputs(const BenchCommandOptions& o, const BenchP
                                       OutputFiles& outputs) {
     if (o.out.empty()) throw UsageError("-o needs a directory");
     std::vector<std::string> names = {CSV_NAME, MD_NAME, ACCURACY_CHART, STABILITY_CHART};
+    if (plan.config.options.contactDistance > 0.0f) names.push_back(CONTACT_CHART);
     if (o.reference) names.push_back(REFERENCE_CSV_NAME);
     for (const BenchPoint& p : benchPoints(plan.config.options)) {
         names.push_back("diff/" + diffFileName(p));
@@ -396,6 +405,20 @@ void writeCharts(const BenchPlan& plan, const BenchResult& result, bool quick,
     writePngRgba8(
         (staging / STABILITY_CHART).string(), plan.chartSize.x, plan.chartSize.y,
         drawSpeedChart(result.rows, plan.chartSize, text, plan.timing, ChartAccuracy::Shimmer));
+    float contact = plan.config.options.contactDistance;
+    if (contact > 0.0f) {
+        int pixels = result.rows.empty() ? 0 : result.rows.front().contact.edgePixels;
+        char buf[160];
+        std::snprintf(buf, sizeof buf,
+                      "aliasing near the contacts: edge-band RMSE over the %d edge pixels within "
+                      "%g world unit%s of a caster",
+                      pixels, static_cast<double>(contact), contact == 1.0f ? "" : "s");
+        text.title = "Speed against accuracy near the contacts" + indicative + ": " + where;
+        text.yLabel = buf;
+        writePngRgba8((staging / CONTACT_CHART).string(), plan.chartSize.x, plan.chartSize.y,
+                      drawSpeedChart(result.rows, plan.chartSize, text, plan.timing,
+                                     ChartAccuracy::ContactRmse));
+    }
 }
 
 int runBenchCommand(const BenchCommandOptions& o) {
@@ -491,6 +514,10 @@ Command addBenchCommand(CLI::App& app) {
                     "hard: the truth of the light's centre (default); area: integrated over the "
                     "light's disk (--light-size, else the scene's angular_diameter, else the "
                     "sun's 0.53 degrees), the truth soft shadows and pcss are measured against");
+    sub->add_option("--contact", o->contact,
+                    "D: also the edge-band RMSE within D world units of a caster (bench.csv's "
+                    "contact_edge_rmse) and its chart, speed_vs_contact.png: where a soft "
+                    "shadow is sharp (default 0: not measured)");
     sub->add_option("--repeats", o->repeats,
                     "timing rounds (default 9): each times every run once, round-robin; median "
                     "and IQR per run");
