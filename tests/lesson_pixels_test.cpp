@@ -51,6 +51,7 @@ struct RenderedStep {
     Trace cpuTrace;   // tracePinned: the point traced without the camera pass
     glm::ivec2 pixel;
     float lightAngle;
+    std::vector<float> parts;  // a `compare` step's part[K].visibility (step_view.h)
 };
 
 // Renders every step of a lesson as the session does (the step's point pinned, the camera
@@ -81,10 +82,20 @@ std::vector<RenderedStep> renderLesson(const std::string& name, glm::ivec2 frame
         glm::vec3 drawn(positions[at0 * 4], positions[at0 * 4 + 1], positions[at0 * 4 + 2]);
         bool plane = std::holds_alternative<Plane>(
             lesson.scene.objects[static_cast<size_t>(point->object)].shape);
-        out.push_back({lookup->trace, visibility[at0], plane, pick.inFrame,
+        out.push_back({lookup->trace,
+                       visibility[at0],
+                       plane,
+                       pick.inFrame,
                        glm::length(drawn - point->posWs),
-                       tracePinned(map, lesson.scene, view.fit, s, *point), px,
-                       lightAngleDeg(lesson.scene, *point)});
+                       tracePinned(map, lesson.scene, view.fit, s, *point),
+                       px,
+                       lightAngleDeg(lesson.scene, *point),
+                       {}});
+        // Last: it renders each part's map into the renderer.
+        if (!step.compare.empty()) {
+            out.back().parts =
+                comparePartVisibilities(renderer, lesson.scene, view.fit, s, step.compare, *point);
+        }
         renderer.setPick(std::nullopt);
     }
     return out;
@@ -154,6 +165,8 @@ TEST_F(LessonPixels, EveryStepsPixelShowsWhatItsTextSays) {
                 const LessonStep& step = lesson.steps[i];
                 StepContext ctx = makeStepContext(step, r.pixel);
                 ctx.lightAngleDeg = r.lightAngle;
+                ctx.partVisibility = r.parts;
+                EXPECT_EQ(r.parts, first[i].parts);  // the split view's numbers at every size
                 ClaimWorld world;
                 world.onPlane = r.onGround;
                 for (const StepClaim& claim : step.claims) {
