@@ -545,11 +545,12 @@ std::string_view sweepName(Sweep sweep) {
             return "pcss-overlap";
         case Sweep::PcssNoise:
             return "pcss-noise";
+        case Sweep::Aliasing:
+            return "aliasing";
         case Sweep::PcssBias:
             return "pcss-bias";
-        default:
-            return "aliasing";
     }
+    return "";  // not reached: the switch names every sweep (the compiler checks it)
 }
 
 std::optional<Sweep> sweepFromName(std::string_view name) {
