@@ -35,7 +35,8 @@ std::string chartRendererLine(const std::string& glRenderer, bool noteOwnLine = 
 // A round step (1, 2 or 5 times a power of ten) at or above `rough` (> 0).
 double chartNiceStep(double rough);
 
-// A tick's label: %g, or with `percent` the share as a percentage ("12.5%").
+// A number as the charts print it (tick labels, notes, subtitles): %g, or with `percent` the
+// share as a percentage ("12.5%").
 std::string chartTickText(double v, bool percent = false);
 
 // Draws into a white offscreen target of `size` and reads it back (RGBA8, rows top-down as

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/bench_report.h"
+#include "analysis/chart_axes.h"
 #include "analysis/speed_chart.h"
 #include "analysis/stability_figures.h"
 #include "analysis/stability_report.h"
@@ -33,12 +34,6 @@ ChartData chartData(const std::string& chart) {
 std::string percent(double share) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3g%%", 100.0 * share);
-    return buf;
-}
-
-std::string gText(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
     return buf;
 }
 
@@ -79,11 +74,11 @@ double leakAt(const TradeoffSeries& t, size_t k) {
 }
 
 std::string acneWhy(const TradeoffSeries& t, size_t k) {
-    return "acne " + percent(t.acne[k]) + " at bias " + gText(t.biases[k]);
+    return "acne " + percent(t.acne[k]) + " at bias " + chartTickText(t.biases[k]);
 }
 
 std::string leakWhy(const TradeoffSeries& t, size_t k) {
-    return "leak " + percent(leakAt(t, k)) + " at bias " + gText(t.biases[k]);
+    return "leak " + percent(leakAt(t, k)) + " at bias " + chartTickText(t.biases[k]);
 }
 
 ChartFactAnswer acneFalls(const ChartData& c, const std::string& method) {
@@ -110,9 +105,9 @@ ChartFactAnswer goodBetween(const ChartData& c, const std::string& method) {
         if (t.biases[k] < t.good->x && t.acne[k] >= TRADEOFF_ONSET) acneBelow = true;
         if (t.biases[k] > t.good->y && leakAt(t, k) >= TRADEOFF_ONSET) leakAbove = true;
     }
-    return {acneBelow && leakAbove, "good biases " + gText(t.good->x) + " to " + gText(t.good->y) +
-                                        (acneBelow ? "" : "; no acne below") +
-                                        (leakAbove ? "" : "; no leak above")};
+    return {acneBelow && leakAbove,
+            "good biases " + chartTickText(t.good->x) + " to " + chartTickText(t.good->y) +
+                (acneBelow ? "" : "; no acne below") + (leakAbove ? "" : "; no leak above")};
 }
 
 // A fact's words around its one argument: PREFIX ARG SUFFIX; `view` the chart it applies to

@@ -64,12 +64,6 @@ bool samePoints(const ChartLine& a, const ChartLine& b) {
     return true;
 }
 
-std::string gText(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
 }  // namespace
 
 void markCoincidentLines(LineChartSpec& spec) {
@@ -101,11 +95,11 @@ std::string stabilityChartSubtitle(std::span<const StabilityRow> rows, Sweep swe
     std::string where =
         sweep == Sweep::Leak ? "the pole's and box-on-plane's contacts" : s.sceneName;
     if (sweep == Sweep::Tradeoff) {
-        where = "acne: " + s.sceneName + ", light " + gText(s.tradeoffElevation) +
+        where = "acne: " + s.sceneName + ", light " + chartTickText(s.tradeoffElevation) +
                 " deg above the ground; leak: the pole's and box-on-plane's contacts";
     }
     if (sweep == Sweep::Precision) {
-        where += ", light " + gText(s.precisionElevation) + " deg above the ground";
+        where += ", light " + chartTickText(s.precisionElevation) + " deg above the ground";
     }
     std::string frame = std::to_string(s.frameSize.x) + "x" + std::to_string(s.frameSize.y) +
                         " frame, map " + std::to_string(s.mapSize) + "^2";
@@ -113,9 +107,9 @@ std::string stabilityChartSubtitle(std::span<const StabilityRow> rows, Sweep swe
     std::string bias = sweep == Sweep::Leak || sweep == Sweep::Tradeoff
                            ? "the constant bias is the x axis (every mode but none subtracts it)"
                        : sweep == Sweep::Precision
-                           ? "constant bias " + gText(s.constantBias) +
+                           ? "constant bias " + chartTickText(s.constantBias) +
                                  " at depth range 1, divided by the range (fixed in world units)"
-                           : "constant bias " + gText(s.constantBias);
+                           : "constant bias " + chartTickText(s.constantBias);
     // The heat map depends on the camera and the light's fit alone, no bias or depth format.
     std::string line1 = sweep == Sweep::Aliasing ? where + ", " + frame
                                                  : where + ", " + frame + "; " + bias + "; cull " +
@@ -283,7 +277,7 @@ LineChartSpec tradeoffChartSpec(std::span<const StabilityRow> rows, const std::s
     std::optional<StabilitySetup> setup = stabilitySetupOf(rows);
     std::string acneName = "acne";
     if (setup && setup->tradeoffElevation > 0.0) {
-        acneName += ", light " + gText(setup->tradeoffElevation) + " deg";
+        acneName += ", light " + chartTickText(setup->tradeoffElevation) + " deg";
     }
     for (const TradeoffSeries& t : tradeoffSeries(rows)) {
         ChartPanel panel{t.name, {}, t.good};
@@ -301,7 +295,8 @@ LineChartSpec tradeoffChartSpec(std::span<const StabilityRow> rows, const std::s
         spec.panels.push_back(panel);
     }
     if (spec.panels.empty()) return spec;
-    spec.notes.push_back("green: a good bias (both < " + gText(100.0 * TRADEOFF_ONSET) + "%)");
+    spec.notes.push_back("green: a good bias (both < " + chartTickText(100.0 * TRADEOFF_ONSET) +
+                         "%)");
     spec.minFontPx = minFontPx;
     return spec;
 }
@@ -377,7 +372,7 @@ BarChartSpec shimmerChartSpec(std::span<const StabilityRow> rows, const std::str
                             : valueOf(rows, "shimmer", methods.front(),
                                       biasesOf(rows, "shimmer").front(), "light_edge_pixels");
     spec.title = "Shimmer at the shadow edges: how far pixels jump, over the same " +
-                 gText(edgePixels) + " pixels for every bar";
+                 chartTickText(edgePixels) + " pixels for every bar";
     spec.subtitle = stabilityChartSubtitle(rows, Sweep::Shimmer, subtitle);
     spec.yLabel =
         "an edge pixel's largest jump between frames, 99th percentile over the edge pixels "
@@ -438,11 +433,11 @@ ImageChartSpec aliasingHeatmapSpec(const StabilityImage& heatmap,
         scale.colours.emplace_back(aliasingHeatColour(std::exp2(l)), 1.0f);
     }
     auto at = [&](float log2v) { return (log2v + range) / (2.0f * range); };
-    std::string most = gText(std::exp2(range));
+    std::string most = chartTickText(std::exp2(range));
     scale.ticks = {{at(range), most + " or more: a texel smeared over " + most + " pixels"},
-                   {at(range / 2), gText(std::exp2(range / 2))},
+                   {at(range / 2), chartTickText(std::exp2(range / 2))},
                    {at(0.0f), "1: a texel per pixel"},
-                   {at(-range / 2), "1/" + gText(std::exp2(range / 2))},
+                   {at(-range / 2), "1/" + chartTickText(std::exp2(range / 2))},
                    {at(-range), "1/" + most + " or less: " + most + " texels in a pixel"}};
     scale.swatches = {{glm::vec4(ALIASING_HEAT_NONE, 1.0f), "not measured (no receiver)"}};
     return spec;

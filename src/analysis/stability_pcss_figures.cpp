@@ -13,12 +13,6 @@ namespace pcf {
 
 namespace {
 
-std::string pcssGText(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
 // "where; frame, map; bias" over the renderer's line; `source` alone without a setup.
 std::string pcssSubtitle(std::span<const StabilityRow> rows, const std::string& where,
                          const std::string& bias, const std::string& source) {
@@ -27,7 +21,8 @@ std::string pcssSubtitle(std::span<const StabilityRow> rows, const std::string& 
     const StabilitySetup& s = *setup;
     return where + ", " + std::to_string(s.frameSize.x) + "x" + std::to_string(s.frameSize.y) +
            " frame, map " + std::to_string(s.mapSize) + "^2; " + bias + ", constant bias " +
-           pcssGText(s.constantBias) + "; cull " + s.cull + "\n" + chartRendererLine(s.glRenderer);
+           chartTickText(s.constantBias) + "; cull " + s.cull + "\n" +
+           chartRendererLine(s.glRenderer);
 }
 
 // The (x, y) of the rows of one sweep, method and metric, in order.
@@ -142,7 +137,7 @@ LineChartSpec pcssBiasChartSpec(std::span<const StabilityRow> rows, const std::s
     std::string where = setup ? setup->sceneName : std::string("the scene");
     spec.subtitle =
         pcssSubtitle(rows,
-                     where + ", light " + pcssGText(StabilityOptions{}.pcssBiasElevation) +
+                     where + ", light " + chartTickText(StabilityOptions{}.pcssBiasElevation) +
                          " deg above the ground",
                      "poisson (pcss's filter) at each radius", subtitle);
     spec.xLabel = "poisson's radius, shadow-map texels (log scale)";
