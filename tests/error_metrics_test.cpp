@@ -215,24 +215,36 @@ TEST(BenchReport, MarkdownNamesTheMachineAndTimerAndMarksTheFront) {
     // Both times and their IQRs are in the table; the noisy poisson row is marked.
     EXPECT_NE(md.find("| 2.000 | 0.100 | 1.000 | 0.500 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| poisson ! | - | 1024 |"), std::string::npos) << md;
-    // A noisy point makes the machine busy: the note comes first, with the load and the share.
+    // Load above half the cores as the bench began: the machine was busy. The note comes
+    // first, with both loads and the noisy share.
     setup.loadStart = 3.5;
     setup.loadEnd = 0.25;
     setup.cores = 2;
-    EXPECT_TRUE(benchMachineBusy(rows, setup));
+    EXPECT_TRUE(benchMachineBusy(setup));
     EXPECT_DOUBLE_EQ(noisyShare(rows), 0.2);
     md = benchMarkdown(rows, setup);
-    size_t note = md.find("The machine was busy");
+    size_t note = md.find("The machine was busy when the bench began.");
     ASSERT_NE(note, std::string::npos) << md;
     EXPECT_LT(note, md.find("Measured on"));
-    EXPECT_NE(md.find("3.50 at the start, 0.25 at the end, on 2 cores; 1 of 5 points (20 %)"),
+    EXPECT_NE(md.find("3.50 at the start and 0.25 at the end (which counts the bench's own "
+                      "rasteriser threads), on 2 cores; 1 of 5 points (20 %)"),
               std::string::npos)
         << md;
-    // Quiet: no noisy point, load below half the cores.
-    for (BenchRow& r : rows) r.noisy = false;
+    // A quiet start with the bench's own load at the end: not busy, but a noisy point still gets
+    // its note, which then does not call the machine busy.
     setup.loadStart = 0.5;
-    EXPECT_FALSE(benchMachineBusy(rows, setup));
-    EXPECT_EQ(benchMarkdown(rows, setup).find("The machine was busy"), std::string::npos);
+    setup.loadEnd = 2.0;
+    EXPECT_FALSE(benchMachineBusy(setup));
+    EXPECT_TRUE(benchTimingNote(rows, setup));
+    md = benchMarkdown(rows, setup);
+    EXPECT_EQ(md.find("busy"), std::string::npos) << md;
+    EXPECT_NE(md.find("**Noisy timings.** 1-minute load average 0.50 at the start and 2.00"),
+              std::string::npos)
+        << md;
+    // Quiet: no noisy point, load below half the cores at the start: no note.
+    for (BenchRow& r : rows) r.noisy = false;
+    EXPECT_FALSE(benchTimingNote(rows, setup));
+    EXPECT_EQ(benchMarkdown(rows, setup).find("Noisy timings"), std::string::npos);
 }
 
 TEST(SpeedChart, LayoutPutsTimeOnALogAxisAndErrorOnALinearOne) {

@@ -173,25 +173,30 @@ double noisyShare(std::span<const BenchRow> rows) {
     return static_cast<double>(noisy) / static_cast<double>(rows.size());
 }
 
-bool benchMachineBusy(std::span<const BenchRow> rows, const BenchSetup& setup) {
-    double half = 0.5 * std::max(setup.cores, 1);
-    return setup.loadStart > half || setup.loadEnd > half || noisyShare(rows) > 0.0;
+bool benchMachineBusy(const BenchSetup& setup) {
+    return setup.loadStart > 0.5 * std::max(setup.cores, 1);
+}
+
+bool benchTimingNote(std::span<const BenchRow> rows, const BenchSetup& setup) {
+    return benchMachineBusy(setup) || noisyShare(rows) > 0.0;
 }
 
 namespace {
 
-// The warning above the table when the load average says the timings are noisy; "" otherwise.
+// The note above the table: whether other work ran as the bench began, and how many points came
+// out noisy; "" when neither.
 std::string busyNote(std::span<const BenchRow> rows, const BenchSetup& setup) {
-    if (!benchMachineBusy(rows, setup)) return "";
+    if (!benchTimingNote(rows, setup)) return "";
     size_t noisy = 0;
     for (const BenchRow& r : rows) noisy += r.noisy ? 1 : 0;
-    return "> **The machine was busy.** 1-minute load average " +
-           (setup.loadStart >= 0.0 ? format("%.2f", setup.loadStart) : std::string("?")) +
-           " at the start, " +
-           (setup.loadEnd >= 0.0 ? format("%.2f", setup.loadEnd) : std::string("?")) +
-           " at the end, on " + std::to_string(setup.cores) + " cores; " + std::to_string(noisy) +
-           " of " + std::to_string(rows.size()) + " points (" +
-           format("%.0f", 100.0 * noisyShare(rows)) +
+    auto load = [](double l) { return l >= 0.0 ? format("%.2f", l) : std::string("?"); };
+    return std::string(benchMachineBusy(setup) ? "> **The machine was busy when the bench began.** "
+                                               : "> **Noisy timings.** ") +
+           "1-minute load average " + load(setup.loadStart) + " at the start and " +
+           load(setup.loadEnd) +
+           " at the end (which counts the bench's own rasteriser threads), on " +
+           std::to_string(setup.cores) + " cores; " + std::to_string(noisy) + " of " +
+           std::to_string(rows.size()) + " points (" + format("%.0f", 100.0 * noisyShare(rows)) +
            " %) are noisy (`!`: an interquartile range above 10 % of the median). The "
            "repeats ran round-robin over all points, so load hit every method alike; "
            "compare points by their medians and mind the spreads.\n\n";

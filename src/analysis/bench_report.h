@@ -91,11 +91,15 @@ struct BenchSetup {
 // The share of rows flagged noisy, in [0,1] (0 without rows).
 double noisyShare(std::span<const BenchRow> rows);
 
-// Whether bench.md opens with the busy-machine note: a load average above half the cores at the
-// start or the end, or any noisy point.
-bool benchMachineBusy(std::span<const BenchRow> rows, const BenchSetup& setup);
+// Whether other work ran as the bench began: the 1-minute load average at the start above half
+// the cores. The one at the end does not say: it counts the bench's own rasteriser threads
+// (llvmpipe runs on the CPU), which alone take a 2-core machine to about 2.
+bool benchMachineBusy(const BenchSetup& setup);
 
-// A title, the busy-machine note when benchMachineBusy, a paragraph on the machine (GL_RENDERER),
+// Whether bench.md opens with the timing note: the machine was busy, or a point is noisy.
+bool benchTimingNote(std::span<const BenchRow> rows, const BenchSetup& setup);
+
+// A title, the timing note when benchTimingNote, a paragraph on the machine (GL_RENDERER),
 // the timers and the truth's bound, the table (one line per row, both times with their IQR,
 // noisy points marked with !, points on the Pareto front of gpu_ms against edge RMSE marked with
 // *), and how to read it.

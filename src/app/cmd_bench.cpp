@@ -452,11 +452,12 @@ int runBenchCommand(const BenchCommandOptions& o) {
     if (o.reference) {
         writeTextFile((staging.path() / REFERENCE_CSV_NAME).string(), referenceCsv(result.rows));
     }
-    if (benchMachineBusy(result.rows, setup)) {
-        std::fprintf(stderr,
-                     "bench: the machine was busy (load average %.2f -> %.2f on %d cores); %.0f %% "
-                     "of the points are noisy\n",
-                     loadStart, loadEnd, setup.cores, 100.0 * noisyShare(result.rows));
+    if (benchTimingNote(result.rows, setup)) {
+        std::fprintf(
+            stderr,
+            "bench: %s%.0f %% of the points are noisy (load average %.2f -> %.2f on %d cores)\n",
+            benchMachineBusy(setup) ? "the machine was busy when the bench began; " : "",
+            100.0 * noisyShare(result.rows), loadStart, loadEnd, setup.cores);
     }
     outputs.commitStaged(staging.path(), o.out, names);
     std::fputs(markdown.c_str(), stdout);
