@@ -72,16 +72,13 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
     }
     GLuint program = programs->second.get(pcfVariant(prm, rotatePerPixel, mFixedPoint));
     glUseProgram(program);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uSoftScale"), bias.softScale);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.rpdbMax);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uSigma"), prm.sigma);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
-    drawOver(program, prm.radius);
+    setParamUniforms(program, prm, bias);
+    drawOver(program);
 }
 
-// The shadow map, the lookups and the planes bound, uRadius set, one full-screen triangle into
-// the target: what the kernel's pass and the reference passes share.
-void GpuLookup::drawOver(GLuint program, float radius) {
+// The shadow map, the lookups and the planes bound, one full-screen triangle into the target:
+// what the kernel's pass and the reference passes share.
+void GpuLookup::drawOver(GLuint program) {
     bindShadowMap(program, mDepth.id(), mSamplers);
     glBindTextureUnit(2, mInput.id());
     glBindSampler(2, mSamplers.nearest.id());
@@ -89,7 +86,6 @@ void GpuLookup::drawOver(GLuint program, float radius) {
     glBindTextureUnit(3, mPlanes.id());
     glBindSampler(3, mSamplers.nearest.id());
     glProgramUniform1i(program, glGetUniformLocation(program, "uPlanes"), 3);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uRadius"), radius);
     glBindFramebuffer(GL_FRAMEBUFFER, mTarget.framebuffer.id());
     glViewport(0, 0, mWidth, mHeight);
     glDisable(GL_DEPTH_TEST);
@@ -155,8 +151,10 @@ void GpuLookup::drawReference(const PcfParams& prm) {
     }
     GLuint program = it->second.id();
     glUseProgram(program);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
-    drawOver(program, prm.radius);
+    // The table's uniforms a reference pass reads (uRadius: reference/poisson.frag) and
+    // uPenumbraScale (reference/pcss.frag), by the same names as the kernel's pass.
+    setParamUniforms(program, prm, pcfPlainRef(0.0f, glm::vec2(0.0f)).bias);
+    drawOver(program);
 }
 
 std::vector<float> GpuLookup::read() const {

@@ -63,7 +63,7 @@ class GpuLookup {
     const ShadowMap& storedMap() const { return mStored; }
 
   private:
-    void drawOver(GLuint program, float radius);
+    void drawOver(GLuint program);
 
     ShadowMap mStored;
     bool mFixedPoint = false;
