@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernel/methods.h"
 #include "render/depth_readback.h"
 #include "render/shader_loader.h"
 
@@ -97,55 +98,20 @@ void GpuLookup::drawOver(GLuint program) {
     for (GLuint unit : {0u, 1u, 2u, 3u}) glBindSampler(unit, 0);
 }
 
-namespace {
-
-// The reference pass of a method and the N it folds in: bilinear2x2 is pcf-naive's lookup once,
-// hw2x2 pcf-hw's tap once.
-struct ReferencePass {
-    const char* file;  // under shaders/
-    int n;
-};
-
-ReferencePass referencePass(const PcfParams& prm) {
-    switch (prm.method) {
-        case PCF_NEAREST:
-            return {"reference/nearest.frag", 1};
-        case PCF_BOX2X2:
-            return {"reference/box.frag", 1};
-        case PCF_BILINEAR2X2:
-            return {"reference/naive.frag", 1};
-        case PCF_HW2X2:
-            return {"reference/hw.frag", 1};
-        case PCF_NAIVE:
-            return {"reference/naive.frag", prm.kernel};
-        case PCF_GATHER:
-            return {"reference/gather.frag", prm.kernel};
-        case PCF_HW:
-            return {"reference/hw.frag", prm.kernel};
-        case PCF_TENT:
-            return {"reference/tent.frag", prm.kernel};
-        case PCF_POISSON:
-            return {"reference/poisson.frag", 1};
-        case PCF_PCSS:
-            return {"reference/pcss.frag", 1};
-    }
-    throw std::invalid_argument("no reference pass for method id " + std::to_string(prm.method));
-}
-
-}  // namespace
-
 void GpuLookup::drawReference(const PcfParams& prm) {
     if (!mDepth || !mInput) {
         throw std::logic_error("GpuLookup::drawReference before setMap and setLookups");
     }
-    ReferencePass pass = referencePass(prm);
-    auto key = std::make_pair(std::string(pass.file), pass.n);
+    // The method's reference pass and its N, from its entry in the method table.
+    const MethodInfo& m = methodInfo(prm.method);
+    auto key =
+        std::make_pair(std::string(m.referencePass), m.referenceTakesKernel ? prm.kernel : 1);
     auto it = mReferencePrograms.find(key);
     if (it == mReferencePrograms.end()) {
-        std::string defines = "#define N " + std::to_string(pass.n) + "\n";
+        std::string defines = "#define N " + std::to_string(key.second) + "\n";
         GlProgram program = buildProgram({
             ShaderStage{GL_VERTEX_SHADER, {"fullscreen.vert"}, "", {}},
-            ShaderStage{GL_FRAGMENT_SHADER, {pass.file}, defines, {}},
+            ShaderStage{GL_FRAGMENT_SHADER, {key.first}, defines, {}},
         });
         it = mReferencePrograms.emplace(key, std::move(program)).first;
     }
