@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "kernel/trace_explain.h"
 
@@ -13,6 +15,8 @@ namespace pcf {
 
 namespace {
 
+// The kind is the kernel's plain int (PCF_FETCH_*, shaders/shared/pcf_kernel.h: GLSL has no
+// enums), so this switch keeps a default; it names no kind the kernel does not have.
 const char* fetchKindName(int kind) {
     switch (kind) {
         case PCF_FETCH_POINT:
@@ -21,8 +25,10 @@ const char* fetchKindName(int kind) {
             return "bilinear";
         case PCF_FETCH_GATHER:
             return "gather";
-        default:
+        case PCF_FETCH_HW:
             return "hw";
+        default:
+            throw std::out_of_range("fetchKindName: no fetch kind " + std::to_string(kind));
     }
 }
 
