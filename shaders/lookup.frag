@@ -6,14 +6,11 @@
 // fixed-point clamp and the per-pixel rotation are defines too (render/pcf_programs.h), and the
 // receiver planes are read only by the mode that uses them: a second float texture read per
 // pixel is a third of what nearest's pass costs. see: src/render/gpu_lookup.cpp
+// The parameter table's uniforms and pcfProgramParams / pcfProgramBias come before this file
+// (render/pcf_programs.h, paramUniformsGlsl).
 uniform sampler2D uPcfDepth;
 uniform sampler2D uLookups;  // RGBA32F: u, v, ref, unused
 uniform sampler2D uPlanes;   // RG32F: dz/du, dz/dv of each lookup (receiver-plane bias)
-uniform float uRadius;
-uniform float uSoftScale;
-uniform float uRpdbMax;      // receiver-plane: cap on dz/duv, depth per uv unit
-uniform float uSigma;  // gaussian weights, texels
-uniform float uPenumbraScale;  // pcss: texels of penumbra per unit of light depth
 
 layout(location = 0) out float oVisibility;
 
@@ -31,8 +28,6 @@ void main() {
 #if PCF_ROTATE_PER_PIXEL
     rotation = pcfTexelRotation(uv, textureSize(uPcfDepth, 0));
 #endif
-    PcfRef ref = PcfRef(lookup.z, uv, PcfBias(PCF_LOOKUP_BIAS, dzduv, uSoftScale, uRpdbMax));
-    oVisibility = pcfFilterRef(uPcfDepth, uv, ref,
-                               PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, PCF_WEIGHTS,
-                                         uSigma, uPenumbraScale));
+    PcfRef ref = PcfRef(lookup.z, uv, pcfProgramBias(PCF_LOOKUP_BIAS, dzduv));
+    oVisibility = pcfFilterRef(uPcfDepth, uv, ref, pcfProgramParams(rotation));
 }

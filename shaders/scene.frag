@@ -11,6 +11,8 @@
 // cost").
 // The kernel's own choices (weights, precision, fixed point, per-pixel rotation) are defines for
 // the same reason: render/pcf_programs.h, PcfVariant.
+// The parameter table's uniforms (uConstantBias, uRadius, ...) and pcfProgramParams /
+// pcfProgramBias come before this file (render/pcf_programs.h, paramUniformsGlsl).
 // see: src/render/scene_renderer.cpp (uniforms, targets), src/kernel/pcf.h (CPU side)
 in vec3 vPosWs;
 in vec3 vNormalWs;
@@ -22,16 +24,7 @@ uniform int uReceives;                // 1: look the shadow map up; 0: never sha
 uniform vec3 uLightDirWs;             // the direction the light travels (unit)
 uniform vec3 uLightPosWs;             // spot only
 uniform float uSpotCosCone;           // spot only: cos of the cone's half angle
-uniform float uConstantBias;          // subtracted from z by every mode but none
-uniform float uSlopeBias;             // slope: s in min(b + s * tan(theta), max)
-uniform float uSlopeMax;              // slope: max
-uniform float uNormalOffset;          // normal: k, texels
 uniform float uShadowTexelWs;         // world size of one map texel at clip.w = 1
-uniform float uSoftScale;             // soft: the correction scale of "PCF Shadow Acne 2"
-uniform float uRpdbMax;               // receiver-plane: cap on dz/duv, depth per uv unit
-uniform float uRadius;                // poisson radius in texels
-uniform float uSigma;                 // gaussian weights, texels
-uniform float uPenumbraScale;         // pcss: texels of penumbra per unit of light depth
 uniform ivec2 uPickPixel;             // a lesson's pinned point's pixel (window coords); -1: none
 uniform vec4 uPickLookup;             // its u, v, ref, z0, computed on the CPU
 uniform vec2 uPickDzDuv;              // its receiver plane, dz/du, dz/dv
@@ -102,10 +95,8 @@ void main() {
         vec2 rotation = PCF_ROTATE_PER_PIXEL != 0
                             ? pcfTexelRotation(vec2(u, v), textureSize(uPcfDepth, 0))
                             : vec2(1.0f, 0.0f);
-        PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(BIAS_MODE, dzduv, uSoftScale, uRpdbMax));
-        visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef,
-                                  PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation,
-                                            PCF_WEIGHTS, uSigma, uPenumbraScale));
+        PcfRef lookupRef = PcfRef(ref, vec2(u, v), pcfProgramBias(BIAS_MODE, dzduv));
+        visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef, pcfProgramParams(rotation));
     }
     // Gamma 2.2 of albedo * light, light = ambient + diffuse * visibility (a scalar):
     //   (albedo * light)^(1/2.2) = albedo^(1/2.2) * light^(1/2.2)

@@ -13,6 +13,7 @@
 #include "random_map.h"
 #include "render/gl_context.h"
 #include "render/gpu_lookup.h"
+#include "render/shader_loader.h"
 
 namespace pcf {
 namespace {
@@ -79,6 +80,25 @@ TEST_F(ReferencePass, EveryMethodGivesTheKernelsVisibility) {
         // lookups, so a pass that wrote one constant or only hard bits fails here.
         if (prm.method != PCF_NEAREST) {
             EXPECT_GT(partial, static_cast<int>(kernel.size()) / 2) << what;
+        }
+    }
+}
+
+// Each method's entry in the method table names its reference pass (kernel/methods.h
+// referencePass): a file embedded at build time that compiles for every kernel size the method
+// takes, and draws.
+TEST_F(ReferencePass, EveryMethodsEntryNamesAPassThatBuilds) {
+    GpuLookup gpu;
+    ShadowMap map = randomMap(9, 7, 5);
+    gpu.setMap(map);
+    gpu.setLookups(randomLookups(glm::ivec2(9, 7), 8, 2, 6), 8);
+    for (const MethodInfo& m : allMethods()) {
+        ASSERT_TRUE(m.referencePass.starts_with("reference/")) << m.name;
+        EXPECT_NO_THROW(embeddedShader(m.referencePass)) << m.name;
+        for (int n = MIN_KERNEL; n <= MAX_KERNEL; ++n) {
+            if (!kernelFits(m.id, n) || (!m.referenceTakesKernel && n > MIN_KERNEL)) continue;
+            EXPECT_NO_THROW(gpu.drawReference(makeParams(m.id, n))) << m.name << " N=" << n;
+            EXPECT_EQ(gpu.read().size(), 16u) << m.name;
         }
     }
 }

@@ -92,6 +92,35 @@ std::vector<BenchPoint> benchPoints(const BenchOptions& options) {
     return points;
 }
 
+namespace {
+
+// The weights: each known, with a valid sigma, and only box for a method that takes no other.
+std::optional<ParamProblem> validateBenchWeights(const BenchOptions& options) {
+    if (options.weights.empty()) return ParamProblem{"weights", "", " is empty"};
+    bool box = false;
+    for (int w : options.weights) {
+        if (w < PCF_WEIGHTS_BOX || w > PCF_WEIGHTS_GAUSSIAN) {
+            return ParamProblem{"", "unknown weights id " + std::to_string(w), ""};
+        }
+        box = box || w == PCF_WEIGHTS_BOX;
+        PcfParams p = makeParams(PCF_GATHER, 3);
+        p.weights = w;
+        p.sigma = options.sigma;
+        if (auto problem = checkParams(p)) return problem;  // weights or sigma
+    }
+    for (int method : methodsOf(options)) {
+        if (!box && !methodInfo(method).takesWeights) {
+            return ParamProblem{
+                "weights", std::string(methodInfo(method).name) + " weighs its taps as it must: ",
+                " other than box apply to pcf-naive and pcf-gather only (list "
+                "only those methods)"};
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<ParamProblem> validateBenchOptions(const BenchOptions& options) {
     // A sentence naming no option, and one naming an option list once (said as its flag by the
     // command line: app/cli_util.h's cliWords).
@@ -128,26 +157,7 @@ std::optional<ParamProblem> validateBenchOptions(const BenchOptions& options) {
         options.frameSize.x > MAX_FRAME_SIDE || options.frameSize.y > MAX_FRAME_SIDE) {
         return plain("the frame size is out of range");
     }
-    if (options.weights.empty()) return ParamProblem{"weights", "", " is empty"};
-    bool box = false;
-    for (int w : options.weights) {
-        if (w < PCF_WEIGHTS_BOX || w > PCF_WEIGHTS_GAUSSIAN) {
-            return plain("unknown weights id " + std::to_string(w));
-        }
-        box = box || w == PCF_WEIGHTS_BOX;
-        PcfParams p = makeParams(PCF_GATHER, 3);
-        p.weights = w;
-        p.sigma = options.sigma;
-        if (auto problem = checkParams(p)) return problem;  // weights or sigma
-    }
-    for (int method : methodsOf(options)) {
-        if (!box && !methodInfo(method).takesWeights) {
-            return ParamProblem{
-                "weights", std::string(methodInfo(method).name) + " weighs its taps as it must: ",
-                " other than box apply to pcf-naive and pcf-gather only (list "
-                "only those methods)"};
-        }
-    }
+    if (auto problem = validateBenchWeights(options)) return problem;
     if (options.truthSpp < 2 || options.truthSpp > MAX_TRUTH_SPP) {
         // One sample per pixel makes a truth of only 0 and 1: no edge band to measure.
         return outOfRange("spp", options.truthSpp, 2, MAX_TRUTH_SPP);

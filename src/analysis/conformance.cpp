@@ -106,6 +106,76 @@ VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
         map, uv, ref, prm, PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, PCF_DZDUV_UNCLAMPED), prec);
 }
 
+namespace {
+
+// The sums of weight * bit over one fetch's taps, lowest and highest (visibilityEnvelope).
+struct WeightedRange {
+    double lo = 0.0;
+    double hi = 0.0;
+};
+
+// One comparison gather: four bits with the method's weights, in GL's order x = (0,1),
+// y = (1,1), z = (1,0), w = (0,0) from the block's base; the unit may pick its base from any
+// position within p +- e (a corner-placed gather is at p = k + 0.5: never moves).
+WeightedRange gatherRange(const ShadowMap& map, const FetchRecord& fr,
+                          const std::vector<TapRecord>& taps, const PcfBias& bias, float e,
+                          float eps) {
+    const ivec2 order[4] = {ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0)};
+    float tapRef = taps.front().ref;
+    vec2 p = pcfTexelPos(fr.uv, map.size()).p;
+    double glo = 1e30;
+    double ghi = -1e30;
+    for (float x : candidates(p.x, e)) {
+        for (float y : candidates(p.y, e)) {
+            ivec2 base = ivec2(glm::floor(vec2(x, y)));
+            double sl = 0.0;
+            double sh = 0.0;
+            for (size_t c = 0; c < 4 && c < taps.size(); ++c) {
+                // Soft bias gathers raw depths and compares in the shader ("PCF Shadow Acne 2"):
+                // a ramp, not a bit, whichever block the unit picks.
+                BitRange r = bias.mode == PCF_BIAS_SOFT
+                                 ? softRange(map, base + order[c], tapRef, bias)
+                                 : compareRange(map, base + order[c], tapRef, eps);
+                sl += taps[c].weight * r.lo;
+                sh += taps[c].weight * r.hi;
+            }
+            glo = std::min(glo, sl);
+            ghi = std::max(ghi, sh);
+        }
+    }
+    return {glo, ghi};
+}
+
+// Texel fetches and shader arithmetic: exact but for near-equal comparisons. Soft and
+// interpolated comparisons are shader arithmetic on fetched texels: their recorded values are
+// what any GPU computes, but for float rounding (a continuous ramp, or one comparison against a
+// lerped depth that the reference tolerance covers). The interpolated mode compares once,
+// against the lerp of the fetch's depths: a lerped depth within the tolerance of ref may go
+// either way. Adds each tap's weighted bit to `sum`, one at a time.
+void addTexelFetchRange(const ShadowMap& map, const std::vector<TapRecord>& taps,
+                        const PcfBias& bias, float eps, WeightedRange& sum) {
+    bool shaderCompare = bias.mode == PCF_BIAS_SOFT || bias.mode == PCF_BIAS_INTERPOLATED;
+    bool uncertainLerp = false;
+    if (bias.mode == PCF_BIAS_INTERPOLATED) {
+        double wsum = 0.0;
+        double dsum = 0.0;
+        for (const TapRecord& t : taps) {
+            wsum += t.weight;
+            dsum += static_cast<double>(t.weight) * t.depth;
+        }
+        uncertainLerp = wsum > 0.0 && std::fabs(dsum / wsum - taps.front().ref) <= 2 * eps;
+    }
+    for (const TapRecord& t : taps) {
+        BitRange r = uncertainLerp   ? BitRange{0.0f, 1.0f}
+                     : shaderCompare ? BitRange{t.lit, t.lit}
+                                     : compareRange(map, t.texel, t.ref, eps);
+        sum.lo += t.weight * r.lo;
+        sum.hi += t.weight * r.hi;
+    }
+}
+
+}  // namespace
+
 VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
                                       const PcfParams& prm, const PcfBias& bias,
                                       const ConformancePrecision& prec) {
@@ -118,12 +188,7 @@ VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
     if (prm.method == PCF_PCSS) {
         if (std::optional<VisibilityEnvelope> env = pcssSearchEnvelope(map, rec, eps)) return *env;
     }
-    // Soft and interpolated comparisons are shader arithmetic on fetched texels: their recorded
-    // values are what any GPU computes, but for float rounding (a continuous ramp, or one
-    // comparison against a lerped depth that the reference tolerance covers).
-    bool shaderCompare = bias.mode == PCF_BIAS_SOFT || bias.mode == PCF_BIAS_INTERPOLATED;
-    double lo = 0.0;
-    double hi = 0.0;
+    WeightedRange sum;
     for (size_t f = 0; f < rec.fetches.size(); ++f) {
         const FetchRecord& fr = rec.fetches[f];
         std::vector<TapRecord> taps;
@@ -131,68 +196,24 @@ VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
             if (t.fetch == static_cast<int>(f)) taps.push_back(t);
         }
         if (taps.empty()) continue;
-        float tapRef = taps.front().ref;
         if (fr.kind == PCF_FETCH_HW) {
             // The method weighs the tap's result by fr.weight (tent: w_i w_j / D).
-            VisibilityEnvelope t = hwTapEnvelope(map, fr.uv, tapRef, prec);
+            VisibilityEnvelope t = hwTapEnvelope(map, fr.uv, taps.front().ref, prec);
             double a = fr.weight * t.lo;
             double b = fr.weight * t.hi;
-            lo += std::min(a, b);
-            hi += std::max(a, b);
+            sum.lo += std::min(a, b);
+            sum.hi += std::max(a, b);
         } else if (fr.kind == PCF_FETCH_GATHER) {
-            // Four bits with the method's weights, in GL's order x = (0,1), y = (1,1),
-            // z = (1,0), w = (0,0) from the block's base; the unit may pick its base from any
-            // position within p +- e (a corner-placed gather is at p = k + 0.5: never moves).
-            const ivec2 order[4] = {ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0)};
-            vec2 p = pcfTexelPos(fr.uv, map.size()).p;
-            double glo = 1e30;
-            double ghi = -1e30;
-            for (float x : candidates(p.x, e)) {
-                for (float y : candidates(p.y, e)) {
-                    ivec2 base = ivec2(glm::floor(vec2(x, y)));
-                    double sl = 0.0;
-                    double sh = 0.0;
-                    for (size_t c = 0; c < 4 && c < taps.size(); ++c) {
-                        // Soft bias gathers raw depths and compares in the shader ("PCF Shadow
-                        // Acne 2"): a ramp, not a bit, whichever block the unit picks.
-                        BitRange r = bias.mode == PCF_BIAS_SOFT
-                                         ? softRange(map, base + order[c], tapRef, bias)
-                                         : compareRange(map, base + order[c], tapRef, eps);
-                        sl += taps[c].weight * r.lo;
-                        sh += taps[c].weight * r.hi;
-                    }
-                    glo = std::min(glo, sl);
-                    ghi = std::max(ghi, sh);
-                }
-            }
-            lo += glo;
-            hi += ghi;
+            WeightedRange g = gatherRange(map, fr, taps, bias, e, eps);
+            sum.lo += g.lo;
+            sum.hi += g.hi;
         } else {
-            // Texel fetches and shader arithmetic: exact but for near-equal comparisons. The
-            // interpolated mode compares once, against the lerp of the fetch's depths: a lerped
-            // depth within the tolerance of ref may go either way.
-            bool uncertainLerp = false;
-            if (bias.mode == PCF_BIAS_INTERPOLATED) {
-                double wsum = 0.0;
-                double dsum = 0.0;
-                for (const TapRecord& t : taps) {
-                    wsum += t.weight;
-                    dsum += static_cast<double>(t.weight) * t.depth;
-                }
-                uncertainLerp = wsum > 0.0 && std::fabs(dsum / wsum - taps.front().ref) <= 2 * eps;
-            }
-            for (const TapRecord& t : taps) {
-                BitRange r = uncertainLerp   ? BitRange{0.0f, 1.0f}
-                             : shaderCompare ? BitRange{t.lit, t.lit}
-                                             : compareRange(map, t.texel, t.ref, eps);
-                lo += t.weight * r.lo;
-                hi += t.weight * r.hi;
-            }
+            addTexelFetchRange(map, taps, bias, eps, sum);
         }
     }
     VisibilityEnvelope env;
-    env.lo = static_cast<float>(std::clamp(lo, 0.0, 1.0));
-    env.hi = static_cast<float>(std::clamp(hi, 0.0, 1.0));
+    env.lo = static_cast<float>(std::clamp(sum.lo, 0.0, 1.0));
+    env.hi = static_cast<float>(std::clamp(sum.hi, 0.0, 1.0));
     return env;
 }
 

@@ -613,11 +613,8 @@ PassTwo passTwo(const Scene& scene, const CameraRays& rays, const EdgeFinder& ed
     return {p.visibility, 0.0f, false};
 }
 
-}  // namespace
-
-GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
-                               const GroundTruthOptions& options) {
-    checkTruthArguments(scene, frameSize, options);
+// The truth before either pass: every pixel lit, no receiver, bound 0.
+GroundTruth emptyGroundTruth(glm::ivec2 frameSize, const GroundTruthOptions& options) {
     GroundTruth truth;
     truth.size = frameSize;
     truth.spp = options.spp;
@@ -626,6 +623,15 @@ GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
     truth.receiver.assign(truth.pixelCount(), 0);
     truth.facesLight.assign(truth.pixelCount(), 0);
     truth.bound.assign(truth.pixelCount(), 0.0f);
+    return truth;
+}
+
+}  // namespace
+
+GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
+                               const GroundTruthOptions& options) {
+    checkTruthArguments(scene, frameSize, options);
+    GroundTruth truth = emptyGroundTruth(frameSize, options);
     float aspect = static_cast<float>(frameSize.x) / static_cast<float>(frameSize.y);
     CameraRays rays(scene.camera, frameSize);
     EdgeFinder edges(scene);

@@ -149,6 +149,30 @@ struct DiskIntegral {
     double bound;
 };
 
+// The visible and the blocked length of one chord, each times its share of the disk.
+struct ChordValue {
+    double v, b;
+};
+
+// A panel [a, b] of theta with the chord values at its ends and middle: the visible (v) and the
+// blocked (b2) length by the trapezoid rule on its two halves, and the error of each and of
+// their sum, estimated as twice the difference from the rule on the whole panel.
+struct ChordPanel {
+    double a, b;
+    ChordValue ga, gm, gb;
+    double v, b2, errV, errB, errT;
+};
+
+ChordPanel makeChordPanel(double a, double b, ChordValue ga, ChordValue gm, ChordValue gb) {
+    double h = b - a;
+    auto fine = [&](double ChordValue::*m) { return 0.25 * h * (ga.*m + 2.0 * gm.*m + gb.*m); };
+    auto coarse = [&](double ChordValue::*m) { return 0.5 * h * (ga.*m + gb.*m); };
+    double v = fine(&ChordValue::v), bl = fine(&ChordValue::b);
+    double dv = v - coarse(&ChordValue::v), db = bl - coarse(&ChordValue::b);
+    return ChordPanel{
+        a, b, ga, gm, gb, v, bl, 2.0 * std::abs(dv), 2.0 * std::abs(db), 2.0 * std::abs(dv + db)};
+}
+
 // f by chords along `along`, stacked along `across` (both unit, across L), from `firstPanels`
 // panels in theta. The visible and the blocked length are integrated by the same rule and
 // f = V / (V + B): a point that sees all of the disk (B = 0 on every chord) or none of it gets
@@ -158,9 +182,6 @@ DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 faci
                            double target, glm::dvec3 travel, glm::dvec3 along, glm::dvec3 across,
                            double radius, int firstPanels) {
     glm::dvec3 centre = posWs - travel;  // the disk one unit toward the light
-    struct Value {
-        double v, b;
-    };
     // The chord at height R sin(theta), weighted by its share R cos(theta) dtheta.
     auto g = [&](double theta) {
         double h = radius * std::sin(theta);
@@ -172,37 +193,15 @@ DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 faci
         glm::dvec3 v = perp / d;
         ChordPlane c{posWs, along, v, glm::cross(along, v), d, x0};
         double visible = chordVisible(scene, c, along, facingWs, object, w);
-        return Value{visible * w, (2.0 * w - visible) * w};
-    };
-    struct ChordPanel {
-        double a, b;
-        Value ga, gm, gb;
-        double v, b2, errV, errB, errT;
-    };
-    auto make = [](double a, double b, Value ga, Value gm, Value gb) {
-        double h = b - a;
-        auto fine = [&](double Value::*m) { return 0.25 * h * (ga.*m + 2.0 * gm.*m + gb.*m); };
-        auto coarse = [&](double Value::*m) { return 0.5 * h * (ga.*m + gb.*m); };
-        double v = fine(&Value::v), bl = fine(&Value::b);
-        double dv = v - coarse(&Value::v), db = bl - coarse(&Value::b);
-        return ChordPanel{a,
-                          b,
-                          ga,
-                          gm,
-                          gb,
-                          v,
-                          bl,
-                          2.0 * std::abs(dv),
-                          2.0 * std::abs(db),
-                          2.0 * std::abs(dv + db)};
+        return ChordValue{visible * w, (2.0 * w - visible) * w};
     };
     std::vector<ChordPanel> panels;
     double step = PI / firstPanels;
-    Value gPrev = g(-0.5 * PI);
+    ChordValue gPrev = g(-0.5 * PI);
     for (int k = 0; k < firstPanels; ++k) {
         double a = -0.5 * PI + k * step;
-        Value gEnd = g(a + step);
-        panels.push_back(make(a, a + step, gPrev, g(a + 0.5 * step), gEnd));
+        ChordValue gEnd = g(a + step);
+        panels.push_back(makeChordPanel(a, a + step, gPrev, g(a + 0.5 * step), gEnd));
         gPrev = gEnd;
     }
     int chords = 2 * firstPanels + 1;
@@ -228,11 +227,11 @@ DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 faci
         }
         ChordPanel p = panels[worst];
         double m = 0.5 * (p.a + p.b);
-        Value q1 = g(0.5 * (p.a + m));
-        Value q3 = g(0.5 * (m + p.b));
+        ChordValue q1 = g(0.5 * (p.a + m));
+        ChordValue q3 = g(0.5 * (m + p.b));
         chords += 2;
-        panels[worst] = make(p.a, m, p.ga, q1, p.gm);
-        panels.push_back(make(m, p.b, p.gm, q3, p.gb));
+        panels[worst] = makeChordPanel(p.a, m, p.ga, q1, p.gm);
+        panels.push_back(makeChordPanel(m, p.b, p.gm, q3, p.gb));
     }
 }
 

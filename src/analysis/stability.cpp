@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <stdexcept>
+#include <utility>
 
 #include "analysis/error_metrics.h"
 #include "analysis/failure_measures.h"
@@ -298,39 +300,7 @@ class Sweeper {
                             shimmerShadowFit(fitted, mOptions.mapSize, t, snap));
                         frames.push_back(frame(renderer, s));
                     }
-                    ShimmerStats st = shimmerStats(frames, regions.compared);
-                    std::string prefix = snap ? "snapped_" : "light_";
-                    double step = 1.0 / SHIMMER_STEPS;
-                    ShimmerStats edge = shimmerStats(frames, pop.edge);
-                    ShimmerStats lit = shimmerStats(frames, pop.lit);
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "edge_mean",
-                        edge.mean);
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "edge_p99", edge.p99);
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "edge_peak_p99",
-                        edge.peakP99);
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "lit_mean", lit.mean);
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "edge_pixels",
-                        pop.edgeCount);
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "lit_pixels",
-                        pop.litCount);
-                    if (mOptions.pinnedPixel) {
-                        std::vector<float> curve = pinnedCurve(frames);
-                        add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "pinned_flicker",
-                            curveFlicker(curve));
-                        for (size_t t = 0; t < curve.size(); ++t) {
-                            add(Sweep::Shimmer, m, bias, "frame", static_cast<double>(t),
-                                prefix + "pinned_visibility", curve[t]);
-                        }
-                    }
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "flicker_share",
-                        st.flickerShare);
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "flicker_mean",
-                        st.flickerMean);
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "flicker_p99",
-                        st.flickerP99);
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "mean", st.mean);
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "p99", st.p99);
-                    add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + "max", st.max);
+                    addShimmerRows(m, bias, snap, frames, regions, pop);
                 }
             }
         }
@@ -361,6 +331,43 @@ class Sweeper {
             p.litCount += p.lit[k];
         }
         return p;
+    }
+
+    // The shimmer sweep's rows of one method and bias: the error's change over the frames on the
+    // compared pixels and on the two populations, and the pinned pixel's curve.
+    void addShimmerRows(const StabilityMethod& m, BiasMode bias, bool snap,
+                        const std::vector<std::vector<float>>& frames, const ErrorRegions& regions,
+                        const ShimmerPopulations& pop) {
+        ShimmerStats st = shimmerStats(frames, regions.compared);
+        std::string prefix = snap ? "snapped_" : "light_";
+        double step = 1.0 / SHIMMER_STEPS;
+        ShimmerStats edge = shimmerStats(frames, pop.edge);
+        ShimmerStats lit = shimmerStats(frames, pop.lit);
+        auto addAll = [&](std::initializer_list<std::pair<const char*, double>> measured) {
+            for (auto [metric, y] : measured) {
+                add(Sweep::Shimmer, m, bias, "texel_step", step, prefix + metric, y);
+            }
+        };
+        addAll({{"edge_mean", edge.mean},
+                {"edge_p99", edge.p99},
+                {"edge_peak_p99", edge.peakP99},
+                {"lit_mean", lit.mean},
+                {"edge_pixels", static_cast<double>(pop.edgeCount)},
+                {"lit_pixels", static_cast<double>(pop.litCount)}});
+        if (mOptions.pinnedPixel) {
+            std::vector<float> curve = pinnedCurve(frames);
+            addAll({{"pinned_flicker", curveFlicker(curve)}});
+            for (size_t t = 0; t < curve.size(); ++t) {
+                add(Sweep::Shimmer, m, bias, "frame", static_cast<double>(t),
+                    prefix + "pinned_visibility", curve[t]);
+            }
+        }
+        addAll({{"flicker_share", st.flickerShare},
+                {"flicker_mean", st.flickerMean},
+                {"flicker_p99", st.flickerP99},
+                {"mean", st.mean},
+                {"p99", st.p99},
+                {"max", st.max}});
     }
 
     // The camera slid right and up by 1/F pixel a frame (at the distance of its target); the
@@ -408,24 +415,32 @@ class Sweeper {
             }
             previousMask = regions.compared;
         }
+        addCameraShimmerRows(1.0 / frames, changes, edgeChanges, edgePeak);
+    }
+
+    // The camera shimmer's rows: per method and bias, the error's change between frames on the
+    // compared pixels and on the edges, and the 99th percentile of each edge pixel's largest.
+    // (quantileOf sorts the changes it is given.)
+    void addCameraShimmerRows(double step, std::vector<std::vector<float>>& changes,
+                              std::vector<std::vector<float>>& edgeChanges,
+                              const std::vector<std::vector<float>>& edgePeak) {
         size_t c = 0;
-        double step = 1.0 / frames;
         for (BiasMode bias : mOptions.biases) {
             for (const StabilityMethod& m : mOptions.methods) {
                 if (!stabilityPairExists(m, bias)) continue;
-                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_mean", meanOf(changes[c]));
-                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_p99",
-                    quantileOf(changes[c], 0.99));
-                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_edge_mean",
-                    meanOf(edgeChanges[c]));
-                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_edge_p99",
-                    quantileOf(edgeChanges[c], 0.99));
                 std::vector<float> peaks;
                 for (float p : edgePeak[c]) {
                     if (p >= 0.0f) peaks.push_back(p);
                 }
-                add(Sweep::Shimmer, m, bias, "pixel_step", step, "camera_edge_peak_p99",
-                    quantileOf(peaks, 0.99));
+                const std::pair<const char*, double> measured[] = {
+                    {"camera_mean", meanOf(changes[c])},
+                    {"camera_p99", quantileOf(changes[c], 0.99)},
+                    {"camera_edge_mean", meanOf(edgeChanges[c])},
+                    {"camera_edge_p99", quantileOf(edgeChanges[c], 0.99)},
+                    {"camera_edge_peak_p99", quantileOf(peaks, 0.99)}};
+                for (auto [metric, y] : measured) {
+                    add(Sweep::Shimmer, m, bias, "pixel_step", step, metric, y);
+                }
                 ++c;
             }
         }
@@ -580,131 +595,6 @@ std::string stabilityMethodName(const StabilityMethod& m) {
     std::string name(methodInfo(m.method).name);
     if (m.kernel > 0) name += " N=" + std::to_string(m.kernel);
     return name;
-}
-
-StabilityOptions quickStabilityOptions() {
-    StabilityOptions o;
-    o.methods = {{PCF_NEAREST, 0}, {PCF_GATHER, 3}};
-    o.biases = {BiasMode::None, BiasMode::Constant};
-    o.frameSize = {160, 90};
-    o.mapSize = 128;
-    o.truthSpp = 1;
-    o.elevations = {90, 45, 20, 10, 5, 2};
-    o.leakBiases = {0.0005f, 0.002f, 0.032f};
-    o.cameraFrames = 3;
-    o.depthRanges = {1, 100, 1e4f};
-    o.aliasingMapSizes = {128, 512};
-    o.pcssPoleWidths = {1, 4};
-    o.pcssPlankHeights = {3};
-    o.pcssLightSizes = {2, 8};
-    o.pcssRadii = {1, 4, 16};
-    o.pcssTruthBound = 1.0f / 16.0f;
-    return o;
-}
-
-namespace {
-
-// A sentence naming no option, one naming an option list once (said as its flag by the command
-// line: app/cli_util.h's cliWords), and a value of a list out of its range.
-ParamProblem plainProblem(std::string sentence) {
-    return ParamProblem{"", std::move(sentence), ""};
-}
-ParamProblem emptyList(const char* setting) { return ParamProblem{setting, "", " is empty"}; }
-ParamProblem outOfRange(const char* setting, const std::string& v, const std::string& range) {
-    return ParamProblem{setting, "", " " + v + " is out of range (" + range + ")"};
-}
-
-// The methods and biases: each method's kernel fits it, and some pair of them exists.
-std::optional<ParamProblem> validateStabilityPairs(const StabilityOptions& o) {
-    auto plain = plainProblem;
-    auto empty = emptyList;
-    if (o.methods.empty()) return empty("methods");
-    for (const StabilityMethod& m : o.methods) {
-        if (m.method < 0 || m.method >= PCF_METHOD_COUNT) {
-            return plain("unknown method id " + std::to_string(m.method));
-        }
-        RenderSettings s;
-        s.method = m.method;
-        s.kernel = m.kernel > 0 ? m.kernel : 3;
-        s.radius = o.base.radius;
-        if (std::optional<ParamProblem> p = checkParams(s.pcfParams())) {
-            if (p->setting == "kernel") p->setting = "kernels";  // the list it came from
-            return p;
-        }
-    }
-    if (o.biases.empty()) return empty("biases");
-    bool anyPair = false;
-    for (BiasMode b : o.biases) {
-        for (const StabilityMethod& m : o.methods) anyPair = anyPair || stabilityPairExists(m, b);
-    }
-    if (!anyPair) {
-        BiasMode b = o.biases.front();
-        return ParamProblem{"biases", "no method given combines with ",
-                            ": " + *validateBias(static_cast<int>(b), o.methods.front().method)};
-    }
-    return std::nullopt;
-}
-
-}  // namespace
-
-std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) {
-    auto plain = plainProblem;
-    auto empty = emptyList;
-    if (std::optional<ParamProblem> p = validateStabilityPairs(o)) return p;
-    if (o.sweeps.empty()) return empty("sweep");
-    if (o.frameSize.x < MIN_STABILITY_FRAME_SIDE || o.frameSize.y < MIN_STABILITY_FRAME_SIDE ||
-        o.frameSize.x > MAX_FRAME_SIDE || o.frameSize.y > MAX_FRAME_SIDE) {
-        const std::string lo = std::to_string(MIN_STABILITY_FRAME_SIDE);
-        const std::string hi = std::to_string(MAX_FRAME_SIDE);
-        return plain("the frame size is out of range (" + lo + "x" + lo + " up to " + hi + "x" +
-                     hi + ")");
-    }
-    if (o.mapSize < MIN_MAP_SIZE || o.mapSize > MAX_MAP_SIZE) {
-        return outOfRange("map_size", std::to_string(o.mapSize),
-                          std::to_string(MIN_MAP_SIZE) + ".." + std::to_string(MAX_MAP_SIZE));
-    }
-    if (o.truthSpp < 1 || o.truthSpp > MAX_TRUTH_SPP) {
-        return outOfRange("spp", std::to_string(o.truthSpp), "1.." + std::to_string(MAX_TRUTH_SPP));
-    }
-    for (float e : o.elevations) {
-        if (!(e >= 1.0f && e <= 90.0f)) {
-            return outOfRange("elevations", std::to_string(e), "1..90 degrees");
-        }
-    }
-    if (o.elevations.empty()) return empty("elevations");
-    for (float b : o.leakBiases) {
-        if (!(b >= 0.0f && b <= 1.0f)) {
-            return outOfRange("leak_biases", std::to_string(b), "0..1");
-        }
-    }
-    if (o.leakBiases.empty()) return empty("leak_biases");
-    for (const std::string& name : o.leakScenes) {
-        if (!presetScene(name)) return plain("unknown leak scene '" + name + "'");
-    }
-    if (o.shimmerFrames < 2 || o.shimmerFrames > 4 * SHIMMER_STEPS) {
-        return plain("the shimmer frames are out of range (2..128)");
-    }
-    if (o.cameraFrames < 0 || o.cameraFrames > 64) {
-        return plain("the camera frames are out of range (0..64)");
-    }
-    for (float r : o.depthRanges) {
-        if (!(r >= 1.0f && r <= 1e7f)) {
-            return outOfRange("depth_ranges", std::to_string(r), "1..1e7");
-        }
-    }
-    if (o.depthRanges.empty()) return empty("depth_ranges");
-    if (!(o.precisionElevation >= 1.0f && o.precisionElevation <= 90.0f)) {
-        return plain("the precision elevation is out of range (1..90 degrees)");
-    }
-    if (!(o.tradeoffElevation >= 1.0f && o.tradeoffElevation <= 90.0f)) {
-        return plain("the trade-off elevation is out of range (1..90 degrees)");
-    }
-    for (int size : o.aliasingMapSizes) {
-        if (size < MIN_MAP_SIZE || size > MAX_MAP_SIZE) {
-            return plain("aliasing map size " + std::to_string(size) + " is out of range");
-        }
-    }
-    return validatePcssSweepOptions(o);
 }
 
 glm::mat4 shimmerShadowFit(const glm::mat4& fitted, int mapSize, int frame, bool snap) {

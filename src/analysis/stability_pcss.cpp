@@ -385,7 +385,12 @@ void runPcssSweep(Sweep sweep, const StabilityOptions& options, const Scene& sce
         case Sweep::PcssBias:
             sweeper.bias(scene);
             break;
-        default:
+        case Sweep::Acne:
+        case Sweep::Leak:
+        case Sweep::Tradeoff:
+        case Sweep::Shimmer:
+        case Sweep::Precision:
+        case Sweep::Aliasing:
             throw std::invalid_argument("runPcssSweep: not a pcss sweep");
     }
     rows.insert(rows.end(), sweeper.rows.begin(), sweeper.rows.end());

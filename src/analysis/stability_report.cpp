@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "analysis/chart_axes.h"
 #include "analysis/csv_lines.h"
 #include "analysis/failure_measures.h"
 #include "base/input_error.h"
@@ -129,9 +130,7 @@ std::optional<StabilitySetup> stabilitySetupOf(std::span<const StabilityRow> row
         if (key == "tradeoff_elevation_deg") s.tradeoffElevation = r.y;
     }
     if (!any) return std::nullopt;
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", s.constantBias);
-    s.settings = std::string("constant bias ") + buf + ", cull " + s.cull +
+    s.settings = "constant bias " + chartTickText(s.constantBias) + ", cull " + s.cull +
                  " faces in the shadow pass, depth " + s.depthFormat;
     return s;
 }
@@ -305,9 +304,7 @@ std::string pcssLines(std::span<const StabilityRow> rows) {
             if (!sameX(r.x, x)) {
                 if (!line.empty()) md += line + "\n";
                 x = r.x;
-                char xs[32];
-                std::snprintf(xs, sizeof xs, "%g", r.x);
-                line = "- " + r.sweep + ", " + r.xName + " " + xs + ":";
+                line = "- " + r.sweep + ", " + r.xName + " " + chartTickText(r.x) + ":";
             } else {
                 line += ",";
             }
@@ -336,8 +333,7 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
           std::to_string(setup.truthSpp) + "x" + std::to_string(setup.truthSpp) +
           " samples per pixel); " + setup.settings + ".\n\n";
     double leakBias = largestLeakBias(rows, constantBias);
-    char leakAt[32];
-    std::snprintf(leakAt, sizeof leakAt, "%g", leakBias);
+    std::string leakAt = chartTickText(leakBias);
     std::vector<StabilitySummary> summary = summarizeStability(rows, leakBias);
     std::vector<std::string> leakScenes = leakScenesOf(summary);
     bool anyLeak = !leakScenes.empty();

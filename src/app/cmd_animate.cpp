@@ -193,6 +193,26 @@ AnimationOptions animationOptions(const AnimateOptions& o, AnimationSweep sweep,
     return ao;
 }
 
+// The encoders' own time and what the frames waited for them, seconds.
+struct EncodeTimes {
+    double encode = 0.0;
+    double waited = 0.0;
+};
+
+// Finishes every encoder and moves each video to its final name (with the other outputs).
+EncodeTimes finishVideos(std::vector<VideoOut>& videos, OutputFiles& outputs) {
+    std::vector<std::pair<fs::path, fs::path>> moves;
+    EncodeTimes t;
+    for (VideoOut& v : videos) {
+        v.writer->finish();
+        t.encode += v.writer->encodeSeconds();
+        t.waited += v.writer->waitSeconds();
+        moves.emplace_back(v.staging->path() / v.final.filename(), v.final);
+    }
+    outputs.commitMoves(moves);
+    return t;
+}
+
 int runAnimate(AnimateOptions o) {
     glm::ivec2 size = parseSize("--size", o.size, {MIN_SESSION_SIZE});
     std::optional<AnimationSweep> sweep = animationSweepFromName(o.sweep);
@@ -236,15 +256,8 @@ int runAnimate(AnimateOptions o) {
         if (!pngs.empty()) writePngRgba8(pngs[static_cast<size_t>(k)], size.x, size.y, rgba);
         progressBar(k + 1, o.frames, secondsSince(start));
     }
-    std::vector<std::pair<fs::path, fs::path>> moves;
-    double encode = 0.0, waited = 0.0;
-    for (VideoOut& v : videos) {
-        v.writer->finish();
-        encode += v.writer->encodeSeconds();
-        waited += v.writer->waitSeconds();
-        moves.emplace_back(v.staging->path() / v.final.filename(), v.final);
-    }
-    outputs.commitMoves(moves);
+    EncodeTimes encoded = finishVideos(videos, outputs);
+    double encode = encoded.encode, waited = encoded.waited;
     double seconds = secondsSince(start);
     // The encoders run on their own threads: their share of the time is what the frames waited
     // for them (a full queue, the final flush); their own time overlaps the frames'.

@@ -468,6 +468,26 @@ int runBenchCommand(const BenchCommandOptions& o) {
     return 0;
 }
 
+// What bench sweeps: the methods, kernels and map sizes, and the two presets of them.
+void addBenchSweepOptions(CLI::App* sub, BenchCommandOptions& o) {
+    sub->add_option("--methods", o.methods,
+                    "method ids, comma-separated (default: all that combine with --bias)");
+    sub->add_option("--kernels", o.kernels,
+                    "N for the methods that take one, comma-separated (default 3,5; --full "
+                    "3,5,7; tent runs only " +
+                        kernelSizesText(PCF_TENT) + ")");
+    sub->add_option("--map-sizes", o.mapSizes,
+                    "shadow map sizes, comma-separated (default 1024; --full 256,512,1024,2048)");
+    sub->add_option("-o,--out", o.out, "output directory (default: bench)");
+    sub->add_flag("--quick", o.quick,
+                  "a few seconds, for CI: 320x180 frame, maps 128,256, N = 3, 5 timing rounds, "
+                  "4 shimmer frames (explicit options still win); its timings are indicative "
+                  "only");
+    sub->add_flag("--full", o.full,
+                  "the whole sweep: N = 3,5,7 and maps 256,512,1024,2048, five times the default's "
+                  "runs (explicit options still win)");
+}
+
 }  // namespace
 
 Command addBenchCommand(CLI::App& app) {
@@ -489,22 +509,7 @@ Command addBenchCommand(CLI::App& app) {
             "binomial, gaussian (default box; each given is a run)");
     sub->get_option("--cull")->description(
         "faces culled in the shadow pass: front (the default here), back, none");
-    sub->add_option("--methods", o->methods,
-                    "method ids, comma-separated (default: all that combine with --bias)");
-    sub->add_option("--kernels", o->kernels,
-                    "N for the methods that take one, comma-separated (default 3,5; --full "
-                    "3,5,7; tent runs only " +
-                        kernelSizesText(PCF_TENT) + ")");
-    sub->add_option("--map-sizes", o->mapSizes,
-                    "shadow map sizes, comma-separated (default 1024; --full 256,512,1024,2048)");
-    sub->add_option("-o,--out", o->out, "output directory (default: bench)");
-    sub->add_flag("--quick", o->quick,
-                  "a few seconds, for CI: 320x180 frame, maps 128,256, N = 3, 5 timing rounds, "
-                  "4 shimmer frames (explicit options still win); its timings are indicative "
-                  "only");
-    sub->add_flag("--full", o->full,
-                  "the whole sweep: N = 3,5,7 and maps 256,512,1024,2048, five times the default's "
-                  "runs (explicit options still win)");
+    addBenchSweepOptions(sub, *o);
     sub->add_option("--chart-size", o->chartSize,
                     sizeHelp("size of the two charts", CHART_SIZE_RANGE,
                              "default: the frame size, at least 960x540"));

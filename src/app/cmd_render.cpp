@@ -113,6 +113,23 @@ void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderS
     writeTextFile(raw.settings, settingsJson(settings, renderer.pcfParams(settings).penumbraScale));
 }
 
+// Says what was written, like export does (a silent success left users looking for it).
+void sayRendered(const RenderCommandOptions& o, const LessonRender& lesson,
+                 const RenderSettings& settings, const RawFiles& raw, glm::ivec2 size) {
+    std::string method = std::string(methodInfo(settings.method).name);
+    if (!o.out.empty() && lesson.chartStep) {
+        std::fprintf(stderr, "render: wrote %s (%dx%d, the chart of lesson step %d: %s)\n",
+                     o.out.c_str(), size.x, size.y, o.render.lessonStep, lesson.chart.c_str());
+    } else if (!o.out.empty()) {
+        std::fprintf(stderr, "render: wrote %s (%dx%d, %s, map %d)\n", o.out.c_str(), size.x,
+                     size.y, method.c_str(), settings.mapSize);
+    }
+    if (!o.rawDir.empty()) {
+        std::fprintf(stderr, "render: wrote %s, %s, %s and %s\n", raw.shadow.c_str(),
+                     raw.lightSpace.c_str(), raw.visibility.c_str(), raw.positions.c_str());
+    }
+}
+
 int runRender(const RenderCommandOptions& o) {
     // Every check first: nothing is written unless all of it can be.
     RenderSettings settings = o.render.settings();
@@ -163,19 +180,7 @@ int runRender(const RenderCommandOptions& o) {
     }
     if (!o.rawDir.empty()) writeRawBuffers(renderer, raw, settings, size);
     outputs.commit();
-    // Say what was written, like export does (a silent success left users looking for it).
-    std::string method = std::string(methodInfo(settings.method).name);
-    if (!o.out.empty() && lesson.chartStep) {
-        std::fprintf(stderr, "render: wrote %s (%dx%d, the chart of lesson step %d: %s)\n",
-                     o.out.c_str(), size.x, size.y, o.render.lessonStep, lesson.chart.c_str());
-    } else if (!o.out.empty()) {
-        std::fprintf(stderr, "render: wrote %s (%dx%d, %s, map %d)\n", o.out.c_str(), size.x,
-                     size.y, method.c_str(), settings.mapSize);
-    }
-    if (!o.rawDir.empty()) {
-        std::fprintf(stderr, "render: wrote %s, %s, %s and %s\n", raw.shadow.c_str(),
-                     raw.lightSpace.c_str(), raw.visibility.c_str(), raw.positions.c_str());
-    }
+    sayRendered(o, lesson, settings, raw, size);
     return 0;
 }
 

@@ -96,17 +96,9 @@ void sayWalkedObjects(const Scene& scene) {
     }
 }
 
-int runTruth(const TruthCommandOptions& o) {
-    // Every check first: nothing is computed or written unless all of it can be.
-    RenderOptions sceneOptions;
-    sceneOptions.scene = o.scene;
-    sceneOptions.sceneFile = o.sceneFile;
-    glm::ivec2 size = parseSize("--size", o.size);
-    checkTruthOptions(o);
-    Scene scene = sceneOptions.loadScene();
-    // Measured peaks of `truth --spp 1` (box-on-plane): 139 MB at 512x512, 152 MB at 1024x1024:
-    // 17 bytes a pixel; 24 leaves room for --mask's channel and the EXR held in memory.
-    requireMemory("--size " + o.size, memoryEstimate(160 * MIB, 24, size.x, size.y));
+// --light-size replaces a directional light's angular diameter; a spot light with a radius has
+// no area truth yet.
+void applyTruthLightSize(const TruthCommandOptions& o, Scene& scene) {
     if (o.lightSize >= 0.0f) {
         if (scene.light.type != LightType::Directional) {
             throw UsageError("--light-size is a directional light's angular diameter; " +
@@ -119,18 +111,13 @@ int runTruth(const TruthCommandOptions& o) {
                          ": the area-light truth takes a directional light; a spot light's "
                          "radius is not integrated yet (set it to 0 for the hard truth)");
     }
-    OutputFiles outputs(o.force);
-    outputs.addInput("--scene-file", o.sceneFile);
-    outputs.add("-o", o.out);
+}
 
-    GroundTruthOptions options;
-    options.spp = o.spp;
-    options.threads = o.threads;
-    options.targetBound = o.bound;
-    options.area = hasSize(scene.light);
+// What is about to be computed, in one line on stderr.
+void sayTruthPlan(const TruthCommandOptions& o, const Scene& scene, glm::ivec2 size, bool area) {
     int threads = resolveThreadCount(o.threads);
     char light[96];
-    if (options.area) {
+    if (area) {
         std::snprintf(light, sizeof light, "a sun disk of %g degrees (integrated over the disk)",
                       static_cast<double>(scene.light.angularDiameterDeg));
     } else {
@@ -141,6 +128,30 @@ int runTruth(const TruthCommandOptions& o) {
                  "bound of %.5g, %d thread%s\n",
                  scene.name.c_str(), size.x, size.y, light, o.spp, o.spp, o.bound, threads,
                  threads == 1 ? "" : "s");
+}
+
+int runTruth(const TruthCommandOptions& o) {
+    // Every check first: nothing is computed or written unless all of it can be.
+    RenderOptions sceneOptions;
+    sceneOptions.scene = o.scene;
+    sceneOptions.sceneFile = o.sceneFile;
+    glm::ivec2 size = parseSize("--size", o.size);
+    checkTruthOptions(o);
+    Scene scene = sceneOptions.loadScene();
+    // Measured peaks of `truth --spp 1` (box-on-plane): 139 MB at 512x512, 152 MB at 1024x1024:
+    // 17 bytes a pixel; 24 leaves room for --mask's channel and the EXR held in memory.
+    requireMemory("--size " + o.size, memoryEstimate(160 * MIB, 24, size.x, size.y));
+    applyTruthLightSize(o, scene);
+    OutputFiles outputs(o.force);
+    outputs.addInput("--scene-file", o.sceneFile);
+    outputs.add("-o", o.out);
+
+    GroundTruthOptions options;
+    options.spp = o.spp;
+    options.threads = o.threads;
+    options.targetBound = o.bound;
+    options.area = hasSize(scene.light);
+    sayTruthPlan(o, scene, size, options.area);
     auto start = std::chrono::steady_clock::now();
     int lastTenth = 0;
     options.progress = [&](int done, int total) {

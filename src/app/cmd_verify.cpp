@@ -5,10 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "analysis/conformance.h"
@@ -17,6 +21,7 @@
 #include "base/input_file.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "kernel/settings.h"
 #include "kernel/trace_json.h"
 #include "render/image_io.h"
 #include "render/render_settings.h"
@@ -85,17 +90,56 @@ FloatImage readImage(const std::filesystem::path& path, int channels) {
     return img;
 }
 
-// What `render --raw` rendered with, from its render.json.
+// A whole number in render.json, within the table's range of parameter p. Checked as a double
+// before the cast: a float outside int's range (1e30) is undefined behaviour there.
+int jsonInt(const Json& json, const ParamInfo& p, const std::string& path) {
+    std::string key(p.key);
+    double v = static_cast<double>(jsonFloat(json, key, path));
+    if (!(v >= p.min && v <= p.max) || v != std::floor(v)) {
+        throw UsageError("render.json: \"" + key + "\" is not a whole number in [" +
+                         std::to_string(static_cast<int>(p.min)) + ", " +
+                         std::to_string(static_cast<int>(p.max)) + "] (" + path + ")");
+    }
+    return static_cast<int>(v);
+}
+
+// Parameter p's value in render.json, into s: written as the table's field says
+// (app/render_options.h settingsJson): a number, true or false, or a name.
+void readParam(const Json& json, const ParamInfo& p, ShadowSettings& s, const std::string& path) {
+    std::string key(p.key);
+    std::visit(
+        [&](const auto& field) {
+            using F = std::decay_t<decltype(field)>;
+            if constexpr (std::is_same_v<F, float ShadowSettings::*>) {
+                s.*field = jsonFloat(json, key, path);
+            } else if constexpr (std::is_same_v<F, int ShadowSettings::*>) {
+                s.*field = jsonInt(json, p, path);
+            } else if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
+                s.*field = jsonBool(json, key, path);
+            } else {
+                std::string name = jsonField(json, key, path);
+                auto value = field.fromName(name);
+                if (!value) {
+                    throw UsageError("render.json: unknown " + std::string(field.noun) + " '" +
+                                     name + "' (" + path + ")");
+                }
+                s.*field.field = *value;
+            }
+        },
+        p.field);
+}
+
+// render.json's keys that folders of an older pcfscope lack (before the bias modes, before
+// pcss): the setting's default when absent. Every other key the table marks rawJson is needed.
+constexpr std::string_view OPTIONAL_KEYS[] = {"bias",       "soft_scale",    "rpdb_max",
+                                              "light_size", "normal_offset", "map_size"};
+
+// What `render --raw` rendered with, from its render.json: the settings the parameter table
+// marks rawJson, and what the kernel filtered with.
 struct RawSettings {
-    std::string methodName;
+    ShadowSettings settings;
     PcfParams prm;
-    bool rotate = false;
-    BiasMode biasMode = BiasMode::Constant;
     PcfBias bias = PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, DEFAULT_RPDB_MAX);
-    DepthFormat format = DepthFormat::D32F;
-    float constantBias = 0.0f;  // what every mode but none subtracted from z (0 for none)
-    float slopeBias = 0.0f;
-    float slopeMax = 0.0f;
 };
 
 RawSettings readRawSettings(const std::filesystem::path& dir) {
@@ -106,49 +150,18 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
     Json json = readRenderJson(readInputFile(where), where);
 
     RawSettings r;
-    r.methodName = jsonField(json, "method", where);
-    std::optional<int> method = methodFromName(r.methodName);
-    if (!method)
-        throw UsageError("render.json: unknown method '" + r.methodName + "' (" + where + ")");
-    // Checked before the cast: a float outside int's range (1e30) is undefined behaviour there.
-    float kernel = jsonFloat(json, "kernel", where);
-    if (!(kernel >= 0.0f && kernel <= 64.0f) || kernel != std::floor(kernel)) {
-        throw UsageError("render.json: \"kernel\" is not a kernel size (" + where + ")");
-    }
-    r.prm = makeParams(*method, static_cast<int>(kernel), jsonFloat(json, "radius", where));
-    std::optional<int> weights = weightsFromName(jsonField(json, "weights", where));
-    std::optional<int> precision = precisionFromName(jsonField(json, "precision", where));
-    std::optional<DepthFormat> format = depthFormatFromName(jsonField(json, "depth_format", where));
-    if (!weights || !precision || !format) {
-        throw UsageError("render.json: unknown weights, precision or depth_format (" + where + ")");
+    for (const ParamInfo& p : allParams()) {
+        if (!p.rawJson) continue;
+        bool optional = std::find(std::begin(OPTIONAL_KEYS), std::end(OPTIONAL_KEYS), p.key) !=
+                        std::end(OPTIONAL_KEYS);
+        if (optional && !json.contains(std::string(p.key))) continue;
+        readParam(json, p, r.settings, where);
     }
     // pcss's light size in the map; folders written before pcss have none (0: no method used it).
-    if (json.contains("penumbra_scale")) {
-        r.prm.penumbraScale = jsonFloat(json, "penumbra_scale", where);
-    }
-    r.prm.weights = *weights;
-    r.prm.sigma = jsonFloat(json, "sigma", where);
-    r.prm.precision = *precision;
-    r.format = *format;
-    r.rotate = jsonBool(json, "rotate", where);
-    // The bias mode: folders written before render.json had it hold none of the per-tap modes.
-    float softScale = 0.0f;
-    float rpdbMax = DEFAULT_RPDB_MAX;
-    if (json.contains("bias")) {
-        std::string name = jsonField(json, "bias", where);
-        std::optional<BiasMode> mode = biasModeFromName(name);
-        if (!mode) throw UsageError("render.json: unknown bias '" + name + "' (" + where + ")");
-        r.biasMode = *mode;
-        softScale = jsonFloat(json, "soft_scale", where);
-        if (json.contains("rpdb_max")) rpdbMax = jsonFloat(json, "rpdb_max", where);
-    }
-    r.bias = PcfBias(static_cast<int>(r.biasMode), vec2(0.0f), softScale, rpdbMax);
-    // The per-lookup bias amounts, from which checkRefs recomputes ref.
-    // constant_bias is the setting as given; mode none subtracts nothing.
-    r.constantBias = jsonFloat(json, "constant_bias", where);
-    if (r.biasMode == BiasMode::None) r.constantBias = 0.0f;
-    r.slopeBias = jsonFloat(json, "slope_bias", where);
-    r.slopeMax = jsonFloat(json, "slope_max", where);
+    float penumbraScale = 0.0f;
+    if (json.contains("penumbra_scale")) penumbraScale = jsonFloat(json, "penumbra_scale", where);
+    r.prm = r.settings.pcfParams(vec2(1.0f, 0.0f), penumbraScale);
+    r.bias = r.settings.biasParams().kernelBias();
     // render.json's keys are the kernel's words.
     if (auto why = validateParams(r.prm))
         throw UsageError("render.json: " + *why + " (" + where + ")");
@@ -171,7 +184,7 @@ RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) 
     } catch (const ImageError& e) {
         throw UsageError(e.what());
     }
-    img.map.setFixedPointBits(depthFormatFixedPointBits(r.format));
+    img.map.setFixedPointBits(depthFormatFixedPointBits(r.settings.depthFormat));
     img.lightSpace = readImage(dir / "lightspace.exr", 4);
     img.visibility = readImage(dir / "visibility.exr", 1);
     const FloatImage& ls = img.lightSpace;
@@ -194,14 +207,15 @@ RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) 
 // that does not fit the pixels (a wrong bias amount, a relabelled mode) is bad input. Returns
 // the number of pixels checked.
 long checkRefs(const RawImages& img, const RawSettings& r, const std::string& dir) {
-    if (r.biasMode == BiasMode::Normal) return 0;
+    if (r.settings.bias == BiasMode::Normal) return 0;
     // GLSL rounds a float subtraction correctly; the slack is for z computed by a division
     // the compiler may turn into a multiply by 1 / w (an ulp or two of z <= 1).
     constexpr float REF_SLACK = 1.0e-6f;
-    float lo = r.constantBias, hi = r.constantBias;
-    if (r.biasMode == BiasMode::Slope) {
-        lo = pcfSlopeBias(1.0f, r.constantBias, r.slopeBias, r.slopeMax);
-        hi = pcfSlopeBias(1.0e-4f, r.constantBias, r.slopeBias, r.slopeMax);
+    const ShadowSettings& s = r.settings;
+    float lo = s.depthBias(), hi = s.depthBias();
+    if (s.bias == BiasMode::Slope) {
+        lo = pcfSlopeBias(1.0f, s.depthBias(), s.slopeBias, s.slopeMax);
+        hi = pcfSlopeBias(1.0e-4f, s.depthBias(), s.slopeBias, s.slopeMax);
         if (lo > hi) std::swap(lo, hi);
     }
     const FloatImage& ls = img.lightSpace;
@@ -220,8 +234,8 @@ long checkRefs(const RawImages& img, const RawSettings& r, const std::string& di
                               "pixel (%d, %d) has ref %.9g, but its depth %.9g less the bias "
                               "render.json gives (%s, %.9g) is %.9g",
                               x, y, static_cast<double>(ref), static_cast<double>(z),
-                              std::string(biasModeName(r.biasMode)).c_str(),
-                              static_cast<double>(lo), static_cast<double>(z - lo));
+                              std::string(biasModeName(s.bias)).c_str(), static_cast<double>(lo),
+                              static_cast<double>(z - lo));
                 throw UsageError(dir + ": render.json does not describe these images: " + buf);
             }
             ++checked;
@@ -281,7 +295,7 @@ EnvelopeTally checkEnvelopes(const RawImages& img, const RawSettings& r,
             ++t.receivers;
             PcfParams p = r.prm;
             // The disk turns with the texel looked up, as scene.frag turns it.
-            if (r.rotate)
+            if (r.settings.rotate)
                 p.rotation = pcfTexelRotation(uv, ivec2(img.map.width(), img.map.height()));
             PcfBias b = r.bias;
             if (r.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
@@ -312,14 +326,14 @@ int runVerify(const VerifyOptions& o) {
     std::filesystem::path dir(o.dir);
     RawSettings r = readRawSettings(dir);
     RawImages img = readRawImages(dir, r);
-    checkDepthFormat(img.map, r.format, (dir / "shadowmap.exr").string());
+    checkDepthFormat(img.map, r.settings.depthFormat, (dir / "shadowmap.exr").string());
     long refsChecked = checkRefs(img, r, dir.string());
     ConformancePrecision prec{o.subTexelBits, o.weightBits, o.referenceBits};
     EnvelopeTally t = checkEnvelopes(img, r, prec);
     if (t.receivers == 0) throw UsageError("no receiver pixels in " + dir.string());
 
     const PcfParams& prm = r.prm;
-    std::string what = r.methodName;
+    std::string what(methodInfo(prm.method).name);
     if (methodInfo(prm.method).usesKernel) what += " N=" + std::to_string(prm.kernel);
     if (prm.weights != PCF_WEIGHTS_BOX) what += " " + std::string(weightsName(prm.weights));
     std::string refBits =
@@ -327,8 +341,9 @@ int runVerify(const VerifyOptions& o) {
     std::printf(
         "verify %s: %s, bias %s, map %dx%d %s, precision %s; envelope: %d sub-texel bits, "
         "%d weight bits, %s reference bits\n",
-        dir.string().c_str(), what.c_str(), std::string(biasModeName(r.biasMode)).c_str(),
-        img.map.width(), img.map.height(), std::string(depthFormatName(r.format)).c_str(),
+        dir.string().c_str(), what.c_str(), std::string(biasModeName(r.settings.bias)).c_str(),
+        img.map.width(), img.map.height(),
+        std::string(depthFormatName(r.settings.depthFormat)).c_str(),
         std::string(precisionName(prm.precision)).c_str(), o.subTexelBits, o.weightBits,
         refBits.c_str());
     if (refsChecked > 0) {

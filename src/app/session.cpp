@@ -348,28 +348,8 @@ void Session::composeInto(GLuint fbo) {
     // inspector's room too; a neighbourhood step gives it the inspector).
     InspectorLayout layout = stepLayout();
     clearInspectorPanels(fbo, layout);
-    // The scene goes top-left. GL rows count from the bottom, so its top edge is frame height.
+    blitSceneOrChart(fbo, layout);
     glm::ivec2 frame = mLayout.frameSize;
-    glm::ivec2 scene(mLayout.scene.size());
-    if (chart.empty() && layout.sceneInset) {
-        // Rendered at the full scene size, drawn scaled into the inset (filtered: a nearest
-        // downscale would alias the very edges the step is about).
-        const Rect& r = layout.scene;
-        int x0 = static_cast<int>(r.x), x1 = static_cast<int>(r.right());
-        int top = frame.y - static_cast<int>(r.y), bottom = frame.y - static_cast<int>(r.bottom());
-        glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
-        glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, x0,
-                               bottom, x1, top, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    } else if (chart.empty()) {
-        glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
-        glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, 0,
-                               frame.y - scene.y, scene.x, frame.y, GL_COLOR_BUFFER_BIT,
-                               GL_NEAREST);
-        if (mHeatmap) blitHeatmap();
-    } else {
-        blitChart(layout);
-    }
-
     InspectorModel m = model();
     FramePlan plan = planFrame(layout, m);
     mTextPages = plan.textPages;
@@ -400,6 +380,31 @@ void Session::composeInto(GLuint fbo) {
     mCanvas.flush();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (!heat) mHeatValues.clear();
+}
+
+void Session::blitSceneOrChart(GLuint fbo, const InspectorLayout& layout) {
+    const std::string& chart = mLesson.steps[static_cast<size_t>(mStep)].chart;
+    // The scene goes top-left. GL rows count from the bottom, so its top edge is frame height.
+    glm::ivec2 frame = mLayout.frameSize;
+    glm::ivec2 scene(mLayout.scene.size());
+    if (chart.empty() && layout.sceneInset) {
+        // Rendered at the full scene size, drawn scaled into the inset (filtered: a nearest
+        // downscale would alias the very edges the step is about).
+        const Rect& r = layout.scene;
+        int x0 = static_cast<int>(r.x), x1 = static_cast<int>(r.right());
+        int top = frame.y - static_cast<int>(r.y), bottom = frame.y - static_cast<int>(r.bottom());
+        glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
+        glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, x0,
+                               bottom, x1, top, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    } else if (chart.empty()) {
+        glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
+        glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, 0,
+                               frame.y - scene.y, scene.x, frame.y, GL_COLOR_BUFFER_BIT,
+                               GL_NEAREST);
+        if (mHeatmap) blitHeatmap();
+    } else {
+        blitChart(layout);
+    }
 }
 
 // The heat map replaces the scene on its receivers (each pixel the colour of its pixels per

@@ -163,6 +163,8 @@ class Session {
     // A step with a chart shows it where the scene goes (lesson.h: LessonStep::chart).
     void blitChart(const InspectorLayout& layout);
     void blitHeatmap();
+    // The scene (full size, or scaled into the layout's inset) or the step's chart into `fbo`.
+    void blitSceneOrChart(GLuint fbo, const InspectorLayout& layout);
     void drawHeatLegend();
 
     Lesson mLesson;

@@ -567,17 +567,7 @@ void Canvas::uploadImage(const CanvasImage& img) {
     mImageTextures.emplace(img.id, std::move(t));
 }
 
-void Canvas::flush() {
-    if (mTargetSize.x <= 0 || mTargetSize.y <= 0) {
-        throw std::logic_error("Canvas::flush before Canvas::begin");
-    }
-    mLastFlushDrawCalls = 0;
-    mLastFlushClears = 0;
-    if (mVertices.empty() && mClears.empty()) {
-        mBatches.clear();
-        return;
-    }
-    if (!mProgram) createGlObjects();
+void Canvas::uploadBatchTextures() {
     std::vector<uint64_t> drawnImages;
     for (const Batch& b : mBatches) {
         for (int k = 0; k < b.atlasCount; ++k) uploadAtlas(*b.atlases[k]);
@@ -590,11 +580,13 @@ void Canvas::flush() {
     std::erase_if(mImageTextures, [&](const auto& kv) {
         return std::find(drawnImages.begin(), drawnImages.end(), kv.first) == drawnImages.end();
     });
-    glNamedBufferData(mVertexBuffer.id(),
-                      static_cast<GLsizeiptr>(mVertices.size() * sizeof(Vertex)), mVertices.data(),
-                      GL_STREAM_DRAW);
+}
 
-    GlStateGuard guard;
+namespace {
+
+// The GL state the canvas draws with (the caller's GlStateGuard restores it): only blending and
+// the scissor on, over the whole target.
+void setOverlayDrawState(glm::ivec2 targetSize) {
     for (GLenum cap : GlStateGuard::CAPS) glDisable(cap);
     glEnable(GL_BLEND);
     glEnable(GL_SCISSOR_TEST);
@@ -604,7 +596,29 @@ void Canvas::flush() {
     glBlendEquationSeparate(GL_FUNC_ADD, GL_FUNC_ADD);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    glViewport(0, 0, mTargetSize.x, mTargetSize.y);
+    glViewport(0, 0, targetSize.x, targetSize.y);
+}
+
+}  // namespace
+
+void Canvas::flush() {
+    if (mTargetSize.x <= 0 || mTargetSize.y <= 0) {
+        throw std::logic_error("Canvas::flush before Canvas::begin");
+    }
+    mLastFlushDrawCalls = 0;
+    mLastFlushClears = 0;
+    if (mVertices.empty() && mClears.empty()) {
+        mBatches.clear();
+        return;
+    }
+    if (!mProgram) createGlObjects();
+    uploadBatchTextures();
+    glNamedBufferData(mVertexBuffer.id(),
+                      static_cast<GLsizeiptr>(mVertices.size() * sizeof(Vertex)), mVertices.data(),
+                      GL_STREAM_DRAW);
+
+    GlStateGuard guard;
+    setOverlayDrawState(mTargetSize);
     for (const GlProgram* p : {&mProgram, &mSingleAtlasProgram}) {
         glProgramUniform2f(p->id(), 0, static_cast<float>(mTargetSize.x),
                            static_cast<float>(mTargetSize.y));

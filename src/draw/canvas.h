@@ -176,6 +176,9 @@ class Canvas {
     void createGlObjects();
     void uploadAtlas(const GlyphAtlas& atlas);
     void uploadImage(const CanvasImage& img);
+    // Uploads the atlases and images the batches draw, and drops the textures of images no
+    // batch draws (a new grid is a new image).
+    void uploadBatchTextures();
 
     glm::ivec2 mTargetSize{0, 0};
     // An opaque, pixel-aligned rect that no earlier vertex of this flush touches: flush()

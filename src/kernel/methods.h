@@ -34,6 +34,11 @@ struct MethodInfo {
     // The kernel sizes it takes when not every one of MIN_KERNEL..MAX_KERNEL (tent); empty: all.
     std::span<const int> kernelSizes;
     vec4 chartColour;  // its dots and swatches in the charts (RGBA, 0..1)
+    // Its hand-written textbook pass, no shared kernel (render/gpu_lookup.h drawReference): the
+    // file under shaders/, and whether the pass takes the kernel size as its N (else N = 1:
+    // bilinear2x2 is pcf-naive's lookup once, hw2x2 pcf-hw's tap once).
+    std::string_view referencePass;
+    bool referenceTakesKernel;
 
     Method method() const { return static_cast<Method>(id); }
 };

@@ -104,6 +104,11 @@ using ParamField = std::variant<int ShadowSettings::*, float ShadowSettings::*,
 // Which of the command line's option groups a parameter is in (render_options.h).
 enum class ParamGroup { Filter, Bias, Map };
 
+// The member of the kernel's structs (shaders/shared/pcf_kernel.h) that a parameter's uniform
+// fills, the same member in C++ and GLSL: PcfParams's or PcfBias's. None (monostate) for a
+// uniform that only the scene pass reads, around the filter (its per-lookup bias).
+using KernelMember = std::variant<std::monostate, float PcfParams::*, float PcfBias::*>;
+
 // One user-visible parameter: its row of the one parameter table. The default is the
 // ShadowSettings member's; the lesson files' key is also the JSON sidecars' key, and the
 // command line's flag is the key spelt with '-' (settingFlag).
@@ -111,13 +116,17 @@ struct ParamInfo {
     std::string_view key;  // "constant_bias"
     ParamField field;      // &ShadowSettings::constantBias
     ParamGroup group;
-    std::string_view uniform;  // the shaders' uniform ("uConstantBias"), "" when none
-    std::string_view unit;     // "texels", "light depth units", "" for counts and names
-    double min = 0.0;          // numbers: the range, [min, max] (or (min, max] when minOpen)
+    // The shaders' uniform, "" when none: "u" and the kernel member's name, capitalised
+    // ("uRpdbMax" fills PcfBias's rpdbMax). Declared and set from this table, in every program
+    // that filters (render/pcf_programs.h: paramUniformsGlsl, setParamUniforms).
+    std::string_view uniform;
+    std::string_view unit;  // "texels", "light depth units", "" for counts and names
+    double min = 0.0;       // numbers: the range, [min, max] (or (min, max] when minOpen)
     double max = 0.0;
     bool minOpen = false;
     std::string_view help;  // one line, the command line's help
     bool rawJson = false;   // in render --raw's render.json (what `verify` repeats)
+    KernelMember member{};  // what the uniform fills in the kernel's structs
 };
 
 // Every parameter, in the order the JSON sidecars write them.

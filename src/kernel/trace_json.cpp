@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "kernel/trace_explain.h"
 
@@ -13,6 +15,8 @@ namespace pcf {
 
 namespace {
 
+// The kind is the kernel's plain int (PCF_FETCH_*, shaders/shared/pcf_kernel.h: GLSL has no
+// enums), so this switch keeps a default; it names no kind the kernel does not have.
 const char* fetchKindName(int kind) {
     switch (kind) {
         case PCF_FETCH_POINT:
@@ -21,8 +25,10 @@ const char* fetchKindName(int kind) {
             return "bilinear";
         case PCF_FETCH_GATHER:
             return "gather";
-        default:
+        case PCF_FETCH_HW:
             return "hw";
+        default:
+            throw std::out_of_range("fetchKindName: no fetch kind " + std::to_string(kind));
     }
 }
 
@@ -57,21 +63,24 @@ const char* perTapName(const Trace& tr) {
     return "?";
 }
 
-}  // namespace
+// The trace's bias: the mode, every parameter, and the receiver plane as given and as used.
+Json biasJson(const Trace& tr) {
+    return {{"mode", biasName(tr.bias.mode)},
+            {"constant", jsonNumber(tr.bias.constant)},
+            {"slope", jsonNumber(tr.bias.slope)},
+            {"slope_max", jsonNumber(tr.bias.slopeMax)},
+            {"normal_offset", jsonNumber(tr.bias.normalOffset)},
+            {"soft_scale", jsonNumber(tr.bias.softScale)},
+            {"dzduv", jsonPair(tr.bias.dzduv)},
+            {"rpdb_max", jsonNumber(tr.bias.rpdbMax)},
+            {"dzduv_used", jsonPair(tr.bias.mode == PCF_BIAS_RECEIVER_PLANE
+                                        ? pcfClampDzDuv(tr.bias.dzduv, tr.bias.rpdbMax)
+                                        : tr.bias.dzduv)},
+            {"per_tap", perTapName(tr)}};
+}
 
-Json traceJson(const Trace& tr) {
-    Json bias = {{"mode", biasName(tr.bias.mode)},
-                 {"constant", jsonNumber(tr.bias.constant)},
-                 {"slope", jsonNumber(tr.bias.slope)},
-                 {"slope_max", jsonNumber(tr.bias.slopeMax)},
-                 {"normal_offset", jsonNumber(tr.bias.normalOffset)},
-                 {"soft_scale", jsonNumber(tr.bias.softScale)},
-                 {"dzduv", jsonPair(tr.bias.dzduv)},
-                 {"rpdb_max", jsonNumber(tr.bias.rpdbMax)},
-                 {"dzduv_used", jsonPair(tr.bias.mode == PCF_BIAS_RECEIVER_PLANE
-                                             ? pcfClampDzDuv(tr.bias.dzduv, tr.bias.rpdbMax)
-                                             : tr.bias.dzduv)},
-                 {"per_tap", perTapName(tr)}};
+// One object per tap, in read order, and one per fetch instruction.
+Json tapsJson(const Trace& tr) {
     Json taps = Json::array();
     for (const TapRecord& t : tr.taps) {
         // A comparison bit as 0 or 1; the soft comparison's fraction as a number.
@@ -85,12 +94,25 @@ Json traceJson(const Trace& tr) {
                         {"fetch", t.fetch},
                         {"clamped", t.clamped}});
     }
+    return taps;
+}
+
+Json fetchesJson(const Trace& tr) {
     Json fetches = Json::array();
     for (const FetchRecord& f : tr.fetches) {
         fetches.push_back({{"kind", fetchKindName(f.kind)},
                            {"uv", jsonPair(f.uv)},
                            {"weight", jsonNumber(f.weight)}});
     }
+    return fetches;
+}
+
+}  // namespace
+
+Json traceJson(const Trace& tr) {
+    Json bias = biasJson(tr);
+    Json taps = tapsJson(tr);
+    Json fetches = fetchesJson(tr);
     Json weights = Json::array();
     for (float w : tr.weights.values) weights.push_back(jsonNumber(w));
     Json steps = Json::array();
@@ -144,23 +166,10 @@ Json traceJson(const Trace& tr) {
 
 std::string traceToJson(const Trace& tr) { return jsonDump(traceJson(tr)); }
 
-std::string traceToText(const Trace& tr) {
-    std::ostringstream s;
-    const MethodInfo& info = methodInfo(tr.params.method);
-    s << "pcfscope trace: " << info.name;
-    if (info.usesKernel) s << ", N = " << tr.params.kernel;
-    if (info.usesRadius) s << ", radius " << formatNumber(tr.params.radius) << " texels";
-    s << "  (" << info.summary << ")\n\n";
-    std::vector<TraceStep> steps = explainTrace(tr);
-    for (size_t k = 0; k < steps.size(); ++k) {
-        s << k + 1 << ". " << steps[k].title << "\n   ";
-        for (char c : steps[k].text) {
-            s << c;
-            if (c == '\n') s << "   ";
-        }
-        s << "\n\n";
-    }
-    // The neighbourhood as a table: depth, bit and merged weight per texel, rows as stored.
+namespace {
+
+// The neighbourhood as a table: depth, bit and merged weight per texel, rows as stored.
+void writeTexelTable(const Trace& tr, std::ostringstream& s) {
     s << "Texels read (depth / bit / weight), row j down, column i across:\n";
     const WeightGrid& g = tr.weights;
     bool anyClamped = false;
@@ -197,6 +206,27 @@ std::string traceToText(const Trace& tr) {
         s << "\n";
     }
     if (anyClamped) s << "* also read for texels outside the map, clamped to the edge\n";
+}
+
+}  // namespace
+
+std::string traceToText(const Trace& tr) {
+    std::ostringstream s;
+    const MethodInfo& info = methodInfo(tr.params.method);
+    s << "pcfscope trace: " << info.name;
+    if (info.usesKernel) s << ", N = " << tr.params.kernel;
+    if (info.usesRadius) s << ", radius " << formatNumber(tr.params.radius) << " texels";
+    s << "  (" << info.summary << ")\n\n";
+    std::vector<TraceStep> steps = explainTrace(tr);
+    for (size_t k = 0; k < steps.size(); ++k) {
+        s << k + 1 << ". " << steps[k].title << "\n   ";
+        for (char c : steps[k].text) {
+            s << c;
+            if (c == '\n') s << "   ";
+        }
+        s << "\n\n";
+    }
+    writeTexelTable(tr, s);
     s << "\nfetches: " << tr.counts.texels << " texel reads, " << tr.counts.gathers << " gathers, "
       << tr.counts.hwTaps << " hardware taps\n";
     s << "visibility = " << formatNumber(tr.visibility) << "\n";

@@ -160,6 +160,38 @@ class ParsedClaim {
     std::string bits;                    // bits: every read's bit, in read order
 };
 
+namespace {
+
+// "chart: A faster than B" and the like (Chart), or any other fact about the chart (ChartFact);
+// `rest` is what follows "chart:".
+void parseChartClaim(ParsedClaim& c, const std::string& rest) {
+    // "A faster than B": A's time is less; "slower": B's is; accuracy reads the RMSE.
+    static const std::tuple<std::string_view, std::string_view, bool> ORDERS[] = {
+        {" faster than ", "time", false},
+        {" slower than ", "time", true},
+        {" more accurate than ", "rmse", false},
+        {" less accurate than ", "rmse", true}};
+    for (const auto& [words, metric, swap] : ORDERS) {
+        size_t at = rest.find(words);
+        if (at == std::string::npos) continue;
+        std::string a = trim(std::string_view(rest).substr(0, at));
+        std::string b = trim(std::string_view(rest).substr(at + words.size()));
+        if (a.empty() || b.empty()) break;
+        c.kind = ParsedClaim::Chart;
+        c.chartA = swap ? b : a;
+        c.chartB = swap ? a : b;
+        c.metric = metric;
+        return;
+    }
+    // Anything else is a fact the chart's own table knows (analysis/chart_facts.h), or
+    // `lesson check` says which it knows.
+    if (rest.empty()) throw std::invalid_argument("'chart:' says nothing about the chart");
+    c.kind = ParsedClaim::ChartFact;
+    c.fact = rest;
+}
+
+}  // namespace
+
 std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
     auto c = std::make_shared<ParsedClaim>();
     std::string t = trim(text);
@@ -177,30 +209,7 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
     }
     if (c->kind != ParsedClaim::Compare) return c;
     if (t.rfind("chart:", 0) == 0) {
-        std::string rest = trim(std::string_view(t).substr(6));
-        // "A faster than B": A's time is less; "slower": B's is; accuracy reads the RMSE.
-        static const std::tuple<std::string_view, std::string_view, bool> ORDERS[] = {
-            {" faster than ", "time", false},
-            {" slower than ", "time", true},
-            {" more accurate than ", "rmse", false},
-            {" less accurate than ", "rmse", true}};
-        for (const auto& [words, metric, swap] : ORDERS) {
-            size_t at = rest.find(words);
-            if (at == std::string::npos) continue;
-            std::string a = trim(std::string_view(rest).substr(0, at));
-            std::string b = trim(std::string_view(rest).substr(at + words.size()));
-            if (a.empty() || b.empty()) break;
-            c->kind = ParsedClaim::Chart;
-            c->chartA = swap ? b : a;
-            c->chartB = swap ? a : b;
-            c->metric = metric;
-            return c;
-        }
-        // Anything else is a fact the chart's own table knows (analysis/chart_facts.h), or
-        // `lesson check` says which it knows.
-        if (rest.empty()) throw std::invalid_argument("'chart:' says nothing about the chart");
-        c->kind = ParsedClaim::ChartFact;
-        c->fact = rest;
+        parseChartClaim(*c, trim(std::string_view(t).substr(6)));
         return c;
     }
     auto [at, op] = findComparison(t);

@@ -300,6 +300,40 @@ void planGridLines(Planner& pl, const InspectorLayout& l, const Grid& g, const T
     }
 }
 
+// A gather's 2 x 2 block as an outline in the border band of its cells, clipped to the view;
+// the highlight is its colour, not a wider outline: the cells' numbers keep the band inside the
+// outline (g.pad) that every gather leaves them. Drawn when its whole 2 x 2 is in the cells.
+void planGatherOutline(Planner& pl, const Grid& g, float line, glm::vec2 uvTexels, int fi,
+                       bool highlit, CellMarks& marks) {
+    glm::ivec2 corner(glm::floor(uvTexels - 0.5f));
+    Rect a = texelCellRect(g.view, g.area, corner);
+    Rect b = texelCellRect(g.view, g.area, corner + glm::ivec2(1));
+    Rect block = Rect{a.x, a.y, b.right() - a.x, b.bottom() - a.y}.expanded(-line);
+    float w = line + OUTLINE_EXTRA_PX;
+    Colour gatherColour = highlit ? HIGHLIGHT : GATHER;
+    Rect edges[] = {{block.x, block.y, block.w, w},
+                    {block.x, block.bottom() - w, block.w, w},
+                    {block.x, block.y, w, block.h},
+                    {block.right() - w, block.y, w, block.h}};
+    for (const Rect& e : edges) {
+        Rect ce = e.intersect(g.area);
+        if (ce.empty()) continue;
+        marks.ops.push_back([=](Canvas& c) { c.fillRect(ce, gatherColour); });
+        marks.add(pl, g.area, ce, "gather-outline");
+    }
+    if (inside(block, g.area)) pl.plan.drawnFetches.push_back(fi);
+}
+
+// Point reads and lookups without a mark of their own (nearest, box2x2, bilinear2x2) are drawn
+// when the cells of the texels they read are.
+bool texelsInView(const Grid& g, const FetchRecord& fr, glm::vec2 size) {
+    glm::vec2 q = fr.uv * size - (fr.kind == PCF_FETCH_POINT ? 0.0f : 0.5f);
+    glm::ivec2 lo(glm::floor(q));
+    glm::ivec2 hi = lo + (fr.kind == PCF_FETCH_POINT ? 0 : 1);
+    glm::ivec2 end = g.view.origin + g.view.size;
+    return glm::all(glm::greaterThanEqual(lo, g.view.origin)) && glm::all(glm::lessThan(hi, end));
+}
+
 // The fetches: gathers as outlines in the cells' border band, hardware taps as small rings,
 // lookups and point reads as dots, each at the uv the instruction sampled; then the lookup point.
 // The base texel's centre is not marked in the cell (its bit sits there): the fx and fy
@@ -310,8 +344,6 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
     float line = lineOf(l);
     glm::vec2 size(tr.mapSize);
     Rect area = g.area;
-    auto mark = [&](const Rect& r, const std::string& role) { marks.add(pl, area, r, role); };
-    std::vector<std::function<void(Canvas&)>>& markOps = marks.ops;
     float dotR = std::max(DOT_MIN_PX, std::round(g.cell * DOT_PER_CELL));
     for (size_t fi = 0; fi < tr.fetches.size(); ++fi) {
         const FetchRecord& fr = tr.fetches[fi];
@@ -319,27 +351,7 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
         bool highlit = static_cast<int>(fi) == m.highlightFetch;
         if (highlit) legend.highlight = true;
         if (fr.kind == PCF_FETCH_GATHER) {
-            glm::ivec2 corner(glm::floor(fr.uv * size - 0.5f));
-            Rect a = texelCellRect(g.view, area, corner);
-            Rect b = texelCellRect(g.view, area, corner + glm::ivec2(1));
-            Rect block = Rect{a.x, a.y, b.right() - a.x, b.bottom() - a.y}.expanded(-line);
-            // The highlight is its colour, not a wider outline: the cells' numbers keep the
-            // band inside the outline (g.pad) that every gather leaves them.
-            float w = line + OUTLINE_EXTRA_PX;
-            Colour gatherColour = highlit ? HIGHLIGHT : GATHER;
-            // Four edges, each inside the border band of its cells, clipped to the view.
-            Rect edges[] = {{block.x, block.y, block.w, w},
-                            {block.x, block.bottom() - w, block.w, w},
-                            {block.x, block.y, w, block.h},
-                            {block.right() - w, block.y, w, block.h}};
-            for (const Rect& e : edges) {
-                Rect ce = e.intersect(area);
-                if (ce.empty()) continue;
-                markOps.push_back([=](Canvas& c) { c.fillRect(ce, gatherColour); });
-                mark(ce, "gather-outline");
-            }
-            // Drawn when its whole 2 x 2 is in the cells.
-            if (inside(block, area)) pl.plan.drawnFetches.push_back(static_cast<int>(fi));
+            planGatherOutline(pl, g, line, fr.uv * size, static_cast<int>(fi), highlit, marks);
             legend.gathers = true;
         } else if (fr.kind == PCF_FETCH_HW) {
             float rr = std::max(RING_MIN_PX, std::round(g.cell * RING_PER_CELL));
@@ -365,17 +377,8 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
                                         c.circle(p, dotR, dot);
                                     }});
             (search ? legend.searchDisk : legend.dots) = true;
-        } else {
-            // Point reads and lookups without a mark of their own (nearest, box2x2,
-            // bilinear2x2): drawn when the cells of the texels they read are.
-            glm::vec2 q = fr.uv * size - (fr.kind == PCF_FETCH_POINT ? 0.0f : 0.5f);
-            glm::ivec2 lo(glm::floor(q));
-            glm::ivec2 hi = lo + (fr.kind == PCF_FETCH_POINT ? 0 : 1);
-            glm::ivec2 end = g.view.origin + g.view.size;
-            if (glm::all(glm::greaterThanEqual(lo, g.view.origin)) &&
-                glm::all(glm::lessThan(hi, end))) {
-                pl.plan.drawnFetches.push_back(static_cast<int>(fi));
-            }
+        } else if (texelsInView(g, fr, size)) {
+            pl.plan.drawnFetches.push_back(static_cast<int>(fi));
         }
     }
     glm::vec2 point = viewPoint(g, tr.uv * size);
@@ -389,8 +392,6 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
              }});
     }
 }
-
-namespace {
 
 // One line of a cell's number block.
 struct Item {
@@ -659,8 +660,6 @@ bool planCell(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm
     }
     return hidden;
 }
-
-}  // namespace
 
 // Numbers: each cell's block (bit, own ref, depth, weight) goes where no mark is; a smaller
 // block, or none, where the whole does not fit (smaller type first, not below numberFloor).

@@ -232,6 +232,30 @@ void planNextPageNote(Planner& pl, const InspectorLayout& l, const InspectorMode
             {FontFace::Sans, t.label, ACCENT}, BoxKind::Text, "inspector", "more", shown != note);
 }
 
+// The panel without a trace: its heading and what to do.
+void planNoTrace(Planner& pl, const Rect& p, const TypeSizes& t, float margin) {
+    float width = p.w - 2 * margin;
+    float y = p.y + margin;
+    pl.text({p.x + margin, y}, "Inspector", {FontFace::Sans, t.head, TEXT}, BoxKind::Text,
+            "inspector", "heading");
+    y += lineHeightOf(t.head) * 1.5f;
+    FittedText f = fitText(
+        "No shadow receiver under the picked pixel. Click a point on the "
+        "ground or on an object to see its shadow lookup.",
+        FontFace::Sans, t.body, t.bodyFloor, width, p.bottom() - margin - y);
+    placeFitted(pl, f, {p.x + margin, y, width, p.bottom() - margin - y}, 0, FontFace::Sans,
+                TEXT_DIM, "inspector", "no-trace", "");
+}
+
+// The cells' plan (planned before the page was known: inspectorPanel) becomes the frame's.
+void takeCellsPlan(Planner& pl, FramePlan& cells) {
+    for (auto& op : cells.base) pl.op(std::move(op));
+    pl.plan.boxes.insert(pl.plan.boxes.end(), cells.boxes.begin(), cells.boxes.end());
+    pl.plan.drawnTexels = cells.drawnTexels;
+    pl.plan.drawnFetches = cells.drawnFetches;
+    pl.plan.numberedTexels = cells.numberedTexels;
+}
+
 }  // namespace
 
 void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
@@ -239,17 +263,7 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     const Rect& p = l.inspector;
     float margin = inspectorMargin(l);
     if (!m.trace) {
-        float width = p.w - 2 * margin;
-        float y = p.y + margin;
-        pl.text({p.x + margin, y}, "Inspector", {FontFace::Sans, t.head, TEXT}, BoxKind::Text,
-                "inspector", "heading");
-        y += lineHeightOf(t.head) * 1.5f;
-        FittedText f = fitText(
-            "No shadow receiver under the picked pixel. Click a point on the "
-            "ground or on an object to see its shadow lookup.",
-            FontFace::Sans, t.body, t.bodyFloor, width, p.bottom() - margin - y);
-        placeFitted(pl, f, {p.x + margin, y, width, p.bottom() - margin - y}, 0, FontFace::Sans,
-                    TEXT_DIM, "inspector", "no-trace", "");
+        planNoTrace(pl, p, t, margin);
         return;
     }
     const Trace& tr = *m.trace;
@@ -268,12 +282,7 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     pl.plan.textPages = std::max(pl.plan.textPages, parts);
     int part = std::min(std::max(0, m.textPage), parts - 1);
     if (part == 0) {
-        FramePlan& cells = panel.cells;
-        for (auto& op : cells.base) pl.op(std::move(op));
-        pl.plan.boxes.insert(pl.plan.boxes.end(), cells.boxes.begin(), cells.boxes.end());
-        pl.plan.drawnTexels = cells.drawnTexels;
-        pl.plan.drawnFetches = cells.drawnFetches;
-        pl.plan.numberedTexels = cells.numberedTexels;
+        takeCellsPlan(pl, panel.cells);
         Rect under{p.x + margin, panel.cellsBottom, width, p.bottom() - margin - panel.cellsBottom};
         float noteY = panel.cellsBottom;
         if (panel.together) {

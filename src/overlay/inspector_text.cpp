@@ -19,6 +19,51 @@ size_t codepoints(std::string_view s) {
     return n;
 }
 
+// A preformatted row's cells (separated by two or more spaces) and its indent.
+std::vector<std::string> tableCellsOf(const std::string& row, size_t& indent) {
+    std::vector<std::string> cells;
+    indent = row.find_first_not_of(" \t");
+    if (indent == std::string::npos) return cells;
+    size_t i = indent;
+    while (i < row.size()) {
+        size_t gap = row.find("  ", i);
+        if (gap == std::string::npos) gap = row.size();
+        cells.push_back(row.substr(i, gap - i));
+        i = row.find_first_not_of(' ', gap);
+        if (i == std::string::npos) break;
+    }
+    return cells;
+}
+
+// Lines [first, end) padded column by column, when every one of them has two cells or more.
+void alignTableRows(std::vector<std::string>& lines, size_t first, size_t end) {
+    std::vector<std::vector<std::string>> rows;
+    std::vector<size_t> indents;
+    for (size_t r = first; r < end; ++r) {
+        size_t indent = 0;
+        rows.push_back(tableCellsOf(lines[r], indent));
+        indents.push_back(indent);
+        if (rows.back().size() < 2) return;
+    }
+    std::vector<size_t> widths;
+    for (const auto& row : rows) {
+        if (widths.size() < row.size()) widths.resize(row.size(), 0);
+        for (size_t c = 0; c < row.size(); ++c) {
+            widths[c] = std::max(widths[c], codepoints(row[c]));
+        }
+    }
+    for (size_t r = 0; r < rows.size(); ++r) {
+        std::string out(indents[r], ' ');
+        for (size_t c = 0; c < rows[r].size(); ++c) {
+            out += rows[r][c];
+            if (c + 1 < rows[r].size()) {
+                out += std::string(widths[c] - codepoints(rows[r][c]) + 3, ' ');
+            }
+        }
+        lines[first + r] = out;
+    }
+}
+
 // Consecutive preformatted rows whose cells are separated by two or more spaces form a table:
 // each column is padded to its widest cell, so the columns line up in the monospace face even
 // when the numbers filled into them differ in length ("1" under "0.6333").
@@ -31,53 +76,10 @@ std::string alignTables(std::string_view text) {
         if (end == std::string_view::npos) break;
         start = end + 1;
     }
-    auto cellsOf = [](const std::string& row, size_t& indent) {
-        std::vector<std::string> cells;
-        indent = row.find_first_not_of(" \t");
-        if (indent == std::string::npos) return cells;
-        size_t i = indent;
-        while (i < row.size()) {
-            size_t gap = row.find("  ", i);
-            if (gap == std::string::npos) gap = row.size();
-            cells.push_back(row.substr(i, gap - i));
-            i = row.find_first_not_of(' ', gap);
-            if (i == std::string::npos) break;
-        }
-        return cells;
-    };
     for (size_t k = 0; k < lines.size();) {
         size_t end = k;
         while (end < lines.size() && preformatted(lines[end])) ++end;
-        if (end - k >= 2) {
-            std::vector<std::vector<std::string>> rows;
-            std::vector<size_t> indents;
-            bool table = true;
-            for (size_t r = k; r < end; ++r) {
-                size_t indent = 0;
-                rows.push_back(cellsOf(lines[r], indent));
-                indents.push_back(indent);
-                if (rows.back().size() < 2) table = false;
-            }
-            if (table) {
-                std::vector<size_t> widths;
-                for (const auto& row : rows) {
-                    if (widths.size() < row.size()) widths.resize(row.size(), 0);
-                    for (size_t c = 0; c < row.size(); ++c) {
-                        widths[c] = std::max(widths[c], codepoints(row[c]));
-                    }
-                }
-                for (size_t r = 0; r < rows.size(); ++r) {
-                    std::string out(indents[r], ' ');
-                    for (size_t c = 0; c < rows[r].size(); ++c) {
-                        out += rows[r][c];
-                        if (c + 1 < rows[r].size()) {
-                            out += std::string(widths[c] - codepoints(rows[r][c]) + 3, ' ');
-                        }
-                    }
-                    lines[k + r] = out;
-                }
-            }
-        }
+        if (end - k >= 2) alignTableRows(lines, k, end);
         k = std::max(end, k + 1);
     }
     std::string out;

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernel/methods.h"
 #include "render/depth_readback.h"
 #include "render/shader_loader.h"
 
@@ -72,16 +73,13 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
     }
     GLuint program = programs->second.get(pcfVariant(prm, rotatePerPixel, mFixedPoint));
     glUseProgram(program);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uSoftScale"), bias.softScale);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.rpdbMax);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uSigma"), prm.sigma);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
-    drawOver(program, prm.radius);
+    setParamUniforms(program, prm, bias);
+    drawOver(program);
 }
 
-// The shadow map, the lookups and the planes bound, uRadius set, one full-screen triangle into
-// the target: what the kernel's pass and the reference passes share.
-void GpuLookup::drawOver(GLuint program, float radius) {
+// The shadow map, the lookups and the planes bound, one full-screen triangle into the target:
+// what the kernel's pass and the reference passes share.
+void GpuLookup::drawOver(GLuint program) {
     bindShadowMap(program, mDepth.id(), mSamplers);
     glBindTextureUnit(2, mInput.id());
     glBindSampler(2, mSamplers.nearest.id());
@@ -89,7 +87,6 @@ void GpuLookup::drawOver(GLuint program, float radius) {
     glBindTextureUnit(3, mPlanes.id());
     glBindSampler(3, mSamplers.nearest.id());
     glProgramUniform1i(program, glGetUniformLocation(program, "uPlanes"), 3);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uRadius"), radius);
     glBindFramebuffer(GL_FRAMEBUFFER, mTarget.framebuffer.id());
     glViewport(0, 0, mWidth, mHeight);
     glDisable(GL_DEPTH_TEST);
@@ -101,62 +98,29 @@ void GpuLookup::drawOver(GLuint program, float radius) {
     for (GLuint unit : {0u, 1u, 2u, 3u}) glBindSampler(unit, 0);
 }
 
-namespace {
-
-// The reference pass of a method and the N it folds in: bilinear2x2 is pcf-naive's lookup once,
-// hw2x2 pcf-hw's tap once.
-struct ReferencePass {
-    const char* file;  // under shaders/
-    int n;
-};
-
-ReferencePass referencePass(const PcfParams& prm) {
-    switch (prm.method) {
-        case PCF_NEAREST:
-            return {"reference/nearest.frag", 1};
-        case PCF_BOX2X2:
-            return {"reference/box.frag", 1};
-        case PCF_BILINEAR2X2:
-            return {"reference/naive.frag", 1};
-        case PCF_HW2X2:
-            return {"reference/hw.frag", 1};
-        case PCF_NAIVE:
-            return {"reference/naive.frag", prm.kernel};
-        case PCF_GATHER:
-            return {"reference/gather.frag", prm.kernel};
-        case PCF_HW:
-            return {"reference/hw.frag", prm.kernel};
-        case PCF_TENT:
-            return {"reference/tent.frag", prm.kernel};
-        case PCF_POISSON:
-            return {"reference/poisson.frag", 1};
-        case PCF_PCSS:
-            return {"reference/pcss.frag", 1};
-    }
-    throw std::invalid_argument("no reference pass for method id " + std::to_string(prm.method));
-}
-
-}  // namespace
-
 void GpuLookup::drawReference(const PcfParams& prm) {
     if (!mDepth || !mInput) {
         throw std::logic_error("GpuLookup::drawReference before setMap and setLookups");
     }
-    ReferencePass pass = referencePass(prm);
-    auto key = std::make_pair(std::string(pass.file), pass.n);
+    // The method's reference pass and its N, from its entry in the method table.
+    const MethodInfo& m = methodInfo(prm.method);
+    auto key =
+        std::make_pair(std::string(m.referencePass), m.referenceTakesKernel ? prm.kernel : 1);
     auto it = mReferencePrograms.find(key);
     if (it == mReferencePrograms.end()) {
-        std::string defines = "#define N " + std::to_string(pass.n) + "\n";
+        std::string defines = "#define N " + std::to_string(key.second) + "\n";
         GlProgram program = buildProgram({
             ShaderStage{GL_VERTEX_SHADER, {"fullscreen.vert"}, "", {}},
-            ShaderStage{GL_FRAGMENT_SHADER, {pass.file}, defines, {}},
+            ShaderStage{GL_FRAGMENT_SHADER, {key.first}, defines, {}},
         });
         it = mReferencePrograms.emplace(key, std::move(program)).first;
     }
     GLuint program = it->second.id();
     glUseProgram(program);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
-    drawOver(program, prm.radius);
+    // The table's uniforms a reference pass reads (uRadius: reference/poisson.frag) and
+    // uPenumbraScale (reference/pcss.frag), by the same names as the kernel's pass.
+    setParamUniforms(program, prm, pcfPlainRef(0.0f, glm::vec2(0.0f)).bias);
+    drawOver(program);
 }
 
 std::vector<float> GpuLookup::read() const {

@@ -48,12 +48,13 @@ class GpuLookup {
     void draw(const PcfParams& prm, bool rotate,
               const PcfBias& bias = PcfBias(PCF_BIAS_CONSTANT, glm::vec2(0.0f), 0.0f,
                                             PCF_DZDUV_UNCLAMPED));
-    // The hand-written textbook pass of prm's method (shaders/reference/, no shared kernel)
-    // over the same lookups into the same target: what the method itself costs, for timing the
-    // kernel's pass against (bench.h, --reference) and checked against the kernel by
-    // tests/reference_pass_test.cpp. The plain comparison only (one ref for every tap, a 32F
-    // map, no rotation). Throws std::invalid_argument for an unknown method, and
-    // std::logic_error before setMap and setLookups.
+    // The hand-written textbook pass of prm's method (shaders/reference/, no shared kernel;
+    // the file is the method table's, kernel/methods.h referencePass) over the same lookups
+    // into the same target: what the method itself costs, for timing the kernel's pass against
+    // (bench.h, --reference) and checked against the kernel by tests/reference_pass_test.cpp.
+    // The plain comparison only (one ref for every tap, a 32F map, no rotation). Throws
+    // std::out_of_range for an unknown method (methodInfo), and std::logic_error before setMap
+    // and setLookups.
     void drawReference(const PcfParams& prm);
 
     // The last draw's visibilities, in the lookups' order.
@@ -63,7 +64,7 @@ class GpuLookup {
     const ShadowMap& storedMap() const { return mStored; }
 
   private:
-    void drawOver(GLuint program, float radius);
+    void drawOver(GLuint program);
 
     ShadowMap mStored;
     bool mFixedPoint = false;

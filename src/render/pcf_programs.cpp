@@ -1,8 +1,101 @@
 #include "render/pcf_programs.h"
 
+#include <type_traits>
+#include <variant>
+
 #include "render/shader_loader.h"
 
 namespace pcf {
+
+namespace {
+
+// The kernel member a uniform fills: the uniform's name without its "u", first letter lowered
+// (settings.h ParamInfo::uniform).
+std::string memberName(std::string_view uniform) {
+    std::string name(uniform.substr(1));
+    if (!name.empty()) name[0] = static_cast<char>(name[0] - 'A' + 'a');
+    return name;
+}
+
+// "    p.radius = uRadius;\n" for each table uniform filling a member of kernel struct `Struct`.
+template <class Struct>
+std::string memberFills(const char* var) {
+    std::string out;
+    for (const ParamInfo& p : allParams()) {
+        if (!std::holds_alternative<float Struct::*>(p.member)) continue;
+        out += "    " + std::string(var) + "." + memberName(p.uniform) + " = " +
+               std::string(p.uniform) + ";\n";
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string paramUniformsGlsl() {
+    std::string out =
+        "// The parameter table's uniforms (kernel/settings.cpp PARAMS) and the kernel's structs\n"
+        "// built from them: render/pcf_programs.cpp, paramUniformsGlsl.\n";
+    for (const ParamInfo& p : allParams()) {
+        if (p.uniform.empty()) continue;
+        bool isFloat = std::holds_alternative<float ShadowSettings::*>(p.field);
+        out += std::string("uniform ") + (isFloat ? "float " : "int ") + std::string(p.uniform) +
+               ";\n";
+    }
+    out += "uniform float uPenumbraScale;  // pcss: texels of penumbra per unit of light depth\n";
+    out +=
+        "PcfParams pcfProgramParams(vec2 rotation) {\n"
+        "    PcfParams p;\n"
+        "    p.method = PCF_METHOD;\n"
+        "    p.kernel = PCF_KERNEL;\n"
+        "    p.weights = PCF_WEIGHTS;\n"
+        "    p.rotation = rotation;\n"
+        "    p.penumbraScale = uPenumbraScale;\n" +
+        memberFills<PcfParams>("p") +
+        "    return p;\n"
+        "}\n";
+    out +=
+        "PcfBias pcfProgramBias(int mode, vec2 dzduv) {\n"
+        "    PcfBias b;\n"
+        "    b.mode = mode;\n"
+        "    b.dzduv = dzduv;\n" +
+        memberFills<PcfBias>("b") +
+        "    return b;\n"
+        "}\n";
+    return out;
+}
+
+void setParamUniforms(GLuint program, const PcfParams& prm, const PcfBias& bias,
+                      const ShadowSettings* settings) {
+    for (const ParamInfo& p : allParams()) {
+        if (p.uniform.empty()) continue;
+        GLint at = glGetUniformLocation(program, std::string(p.uniform).c_str());
+        if (const auto* m = std::get_if<float PcfParams::*>(&p.member)) {
+            glProgramUniform1f(program, at, prm.*(*m));
+            continue;
+        }
+        if (const auto* m = std::get_if<float PcfBias::*>(&p.member)) {
+            glProgramUniform1f(program, at, bias.*(*m));
+            continue;
+        }
+        if (!settings) continue;
+        const ShadowSettings& s = *settings;
+        std::visit(
+            [&](const auto& field) {
+                using F = std::decay_t<decltype(field)>;
+                if constexpr (std::is_same_v<F, float ShadowSettings::*>) {
+                    glProgramUniform1f(program, at, s.*field);
+                } else if constexpr (std::is_same_v<F, int ShadowSettings::*>) {
+                    glProgramUniform1i(program, at, s.*field);
+                } else if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
+                    glProgramUniform1i(program, at, s.*field ? 1 : 0);
+                } else {
+                    glProgramUniform1i(program, at, static_cast<int>(s.*field.field));
+                }
+            },
+            p.field);
+    }
+    glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
+}
 
 PcfProgramCache::PcfProgramCache(std::string vertexFile, std::string fragmentFile,
                                  std::string extraDefines)
@@ -31,11 +124,11 @@ GLuint PcfProgramCache::get(const PcfVariant& variant) {
     std::string defines = pcfVariantDefines(variant) + mExtraDefines;
     GlProgram program = buildProgram({
         ShaderStage{GL_VERTEX_SHADER, {mVertexFile}, "", {}},
-        ShaderStage{
-            GL_FRAGMENT_SHADER,
-            {"shared/pcf_prelude.h", "shared/pcf_kernel.h", "shared/pcf_shading.h", mFragmentFile},
-            defines,
-            {}},
+        ShaderStage{GL_FRAGMENT_SHADER,
+                    {"shared/pcf_prelude.h", "shared/pcf_kernel.h", "shared/pcf_shading.h"},
+                    defines,
+                    {{"<parameter uniforms>", paramUniformsGlsl()},
+                     {"shaders/" + mFragmentFile, std::string(embeddedShader(mFragmentFile))}}},
     });
     GLuint id = program.id();
     mPrograms.emplace(variant, std::move(program));

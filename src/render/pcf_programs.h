@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "kernel/pcf.h"
+#include "kernel/settings.h"
 #include "render/gl_objects.h"
 
 namespace pcf {
@@ -41,8 +42,31 @@ PcfVariant pcfVariant(const PcfParams& prm, bool rotatePerPixel, bool fixedPoint
 // The "#define NAME VALUE" lines of a variant, in PcfVariant's order.
 std::string pcfVariantDefines(const PcfVariant& variant);
 
-// The files of a fragment stage that filters: prelude, kernel, then the stage itself, with the
-// variant's defines (DESIGN.md 5: #version, defines, prelude, kernel, stage).
+// The GLSL a stage that filters gets from the parameter table (kernel/settings.h) and the
+// variant, between the kernel and the stage: a declaration of each table uniform (float for a
+// float parameter, int for the others) and of uPenumbraScale (pcss's light in the map, not a
+// setting), and the two structs the kernel filters with, built from the variant's defines, the
+// uniforms and what the stage gives:
+//   PcfParams pcfProgramParams(vec2 rotation)    PCF_METHOD, PCF_KERNEL, PCF_WEIGHTS, rotation,
+//                                                uPenumbraScale, and every PcfParams member the
+//                                                table's uniforms fill
+//   PcfBias pcfProgramBias(int mode, vec2 dzduv) mode, dzduv and every PcfBias member the
+//                                                table's uniforms fill
+// A parameter added to the table with a uniform and a kernel member reaches both programs
+// (lookup.frag, scene.frag) with no edit to them.
+std::string paramUniformsGlsl();
+
+// Sets the table's uniforms in `program` (a location of -1, a uniform the program does not use,
+// is skipped by GL): one that fills a kernel member from that member of prm or bias, the others
+// from `settings` (the scene pass's per-lookup bias; skipped without settings, as in the lookup
+// pass, which reads its ref from its input). Numbers as their type, flags and names as int.
+// uPenumbraScale from prm.
+void setParamUniforms(GLuint program, const PcfParams& prm, const PcfBias& bias,
+                      const ShadowSettings* settings = nullptr);
+
+// The files of a fragment stage that filters: prelude, kernel, shading, the table's uniforms
+// (paramUniformsGlsl), then the stage itself, with the variant's defines (DESIGN.md 5:
+// #version, defines, prelude, kernel, stage).
 class PcfProgramCache {
   public:
     // extraDefines: more "#define NAME VALUE" lines for every program of this cache.

@@ -5,8 +5,6 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
-#include <variant>
 
 #include "kernel/methods.h"
 #include "render/depth_readback.h"
@@ -22,29 +20,6 @@ namespace {
 constexpr glm::vec4 BACKGROUND{0.72f, 0.78f, 0.86f, 1.0f};
 
 GLint uniform(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
-
-// The settings the scene shader reads as uniforms: the parameter table's uniform column
-// (kernel/settings.h), each as its type (floats as float, flags and ids as int).
-void setSettingUniforms(GLuint program, const ShadowSettings& s) {
-    for (const ParamInfo& p : allParams()) {
-        if (p.uniform.empty()) continue;
-        GLint at = uniform(program, std::string(p.uniform).c_str());
-        std::visit(
-            [&](const auto& field) {
-                using F = std::decay_t<decltype(field)>;
-                if constexpr (std::is_same_v<F, float ShadowSettings::*>) {
-                    glProgramUniform1f(program, at, s.*field);
-                } else if constexpr (std::is_same_v<F, int ShadowSettings::*>) {
-                    glProgramUniform1i(program, at, s.*field);
-                } else if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
-                    glProgramUniform1i(program, at, s.*field ? 1 : 0);
-                } else {
-                    glProgramUniform1i(program, at, static_cast<int>(s.*field.field));
-                }
-            },
-            p.field);
-    }
-}
 
 }  // namespace
 
@@ -229,11 +204,9 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform3fv(program, uniform(program, "uLightPosWs"), 1, &light.positionWs.x);
     glProgramUniform1f(program, uniform(program, "uSpotCosCone"),
                        std::cos(glm::radians(light.coneDeg)));
-    setSettingUniforms(program, settings);
+    setParamUniforms(program, pcfParams(settings), bias.kernelBias(), &settings);
     glProgramUniform1f(program, uniform(program, "uShadowTexelWs"),
                        pcf::shadowTexelWs(mScene, settings.mapSize));
-    glProgramUniform1f(program, uniform(program, "uPenumbraScale"),
-                       pcfParams(settings).penumbraScale);
     // A lesson's pinned point (setPick); pixel -1, -1 matches no fragment.
     glm::ivec2 pickPixel = mPick ? mPick->pixelGl : glm::ivec2(-1);
     glm::vec4 pickLookup = mPick ? mPick->lookup : glm::vec4(0.0f);

@@ -1,0 +1,113 @@
+// render/pcf_programs.h: the parameter table's uniforms (kernel/settings.h, PARAMS' uniform
+// column) reach both programs that filter, the scene pass (scene.frag) and the lookup pass
+// (lookup.frag): each is declared from the table, read by the GLSL (a uniform the program never
+// reads has no location), and set to the settings' value by setParamUniforms.
+#include "render/pcf_programs.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "kernel/methods.h"
+#include "kernel/settings.h"
+#include "render/gl_context.h"
+
+namespace pcf {
+namespace {
+
+class PcfPrograms : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() { sContext = createHeadlessContext(); }
+    static void TearDownTestSuite() { sContext.reset(); }
+    static std::unique_ptr<GlContext> sContext;
+};
+std::unique_ptr<GlContext> PcfPrograms::sContext;
+
+// Every float setting a value of its own, none its default: a uniform set from another
+// setting's value, or from another member, reads back wrong.
+ShadowSettings distinctSettings() {
+    ShadowSettings s;
+    float next = 0.375f;
+    for (const ParamInfo& p : allParams()) {
+        if (const auto* field = std::get_if<float ShadowSettings::*>(&p.field)) {
+            s.*(*field) = next;
+            next += 0.5f;
+        }
+    }
+    return s;
+}
+
+float settingValue(const ParamInfo& p, const ShadowSettings& s) {
+    return s.*std::get<float ShadowSettings::*>(p.field);
+}
+
+// The variants that between them read every parameter: gaussian weights read sigma, poisson
+// its radius; soft bias its scale on both (texel reads), receiver-plane its cap.
+std::vector<PcfParams> variantParams(const ShadowSettings& s) {
+    ShadowSettings gather = s;
+    gather.method = PCF_GATHER;
+    gather.weights = PCF_WEIGHTS_GAUSSIAN;
+    ShadowSettings poisson = s;
+    poisson.method = PCF_POISSON;
+    return {gather.pcfParams(), poisson.pcfParams()};
+}
+
+// For each table uniform, the values it read back with in the programs where it is live.
+using LiveUniforms = std::map<std::string, std::vector<float>>;
+
+void collectLive(GLuint program, LiveUniforms& live) {
+    for (const ParamInfo& p : allParams()) {
+        if (p.uniform.empty()) continue;
+        std::string name(p.uniform);
+        GLint at = glGetUniformLocation(program, name.c_str());
+        if (at < 0) continue;
+        float v = -1.0f;
+        glGetUniformfv(program, at, &v);
+        live[name].push_back(v);
+    }
+}
+
+TEST_F(PcfPrograms, EveryTableUniformIsReadAndSetInTheSceneAndTheLookupPass) {
+    ShadowSettings s = distinctSettings();
+    LiveUniforms scene;
+    LiveUniforms lookup;
+    for (int mode = PCF_BIAS_NONE; mode < PCF_BIAS_COUNT; ++mode) {
+        s.bias = static_cast<BiasMode>(mode);
+        PcfBias bias = s.biasParams().kernelBias();
+        PcfProgramCache scenePrograms("scene.vert", "scene.frag",
+                                      "#define PCF_ALL_TARGETS 1\n#define PCF_SCENE_BIAS " +
+                                          std::to_string(mode) + "\n#define PCF_SCENE_SPOT 0\n");
+        PcfProgramCache lookupPrograms("fullscreen.vert", "lookup.frag",
+                                       "#define PCF_LOOKUP_BIAS " + std::to_string(mode) + "\n");
+        for (const PcfParams& prm : variantParams(s)) {
+            GLuint sceneProgram = scenePrograms.get(pcfVariant(prm, false, false));
+            setParamUniforms(sceneProgram, prm, bias, &s);
+            collectLive(sceneProgram, scene);
+            // The lookup pass has no settings: its ref comes with each lookup.
+            GLuint lookupProgram = lookupPrograms.get(pcfVariant(prm, false, false));
+            setParamUniforms(lookupProgram, prm, bias);
+            collectLive(lookupProgram, lookup);
+        }
+    }
+    ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    for (const ParamInfo& p : allParams()) {
+        if (p.uniform.empty()) continue;
+        std::string name(p.uniform);
+        bool member = !std::holds_alternative<std::monostate>(p.member);
+        float want = settingValue(p, s);
+        ASSERT_TRUE(scene.count(name)) << name << " is read by no scene program";
+        for (float v : scene[name]) EXPECT_EQ(v, want) << name;
+        // A uniform that fills a kernel member is the filter's: the lookup pass reads it too.
+        // One that fills none is the scene's per-lookup bias, which the lookup pass has no use
+        // for (and setParamUniforms, without settings, leaves unset).
+        EXPECT_EQ(lookup.count(name) > 0, member) << name;
+        for (float v : lookup[name]) EXPECT_EQ(v, want) << name;
+    }
+}
+
+}  // namespace
+}  // namespace pcf
