@@ -53,13 +53,15 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
               "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,"
               "acne_share,acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,"
               "shimmer_mean,shimmer_p99,flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,"
-              "gl_renderer,contact_edge_rmse,contact_edge_pixels");
+              "gl_renderer,contact_edge_rmse,contact_edge_pixels,truth,contact_distance");
     std::set<std::string> methods;
     int rows = 0;
     while (std::getline(csv, line)) {
         ++rows;
         std::vector<std::string> f = splitCsvLine(line);
-        ASSERT_EQ(f.size(), 32u) << line;
+        ASSERT_EQ(f.size(), 34u) << line;
+        EXPECT_EQ(f[32], "hard (the light's centre)") << line;  // truth
+        EXPECT_EQ(f[33], "0") << line;                          // contact_distance: not measured
         methods.insert(f[0]);
         bool kernelMethod =
             f[0] == "pcf-naive" || f[0] == "pcf-gather" || f[0] == "pcf-hw" || f[0] == "tent";
@@ -288,8 +290,11 @@ TEST_F(BenchCommand, AreaTruthMeasuresAgainstTheLightsDisk) {
     size_t near = std::find(header.begin(), header.end(), "contact_edge_rmse") - header.begin();
     size_t nearPixels =
         std::find(header.begin(), header.end(), "contact_edge_pixels") - header.begin();
+    size_t truth = std::find(header.begin(), header.end(), "truth") - header.begin();
+    size_t distance = std::find(header.begin(), header.end(), "contact_distance") - header.begin();
     ASSERT_LT(rmse, header.size()) << line;
     ASSERT_LT(nearPixels, header.size()) << line;
+    ASSERT_LT(distance, header.size()) << line;
     std::map<std::string, double> edge, contact;
     while (std::getline(lines, line)) {
         std::vector<std::string> cells = splitCsvLine(line);
@@ -298,6 +303,9 @@ TEST_F(BenchCommand, AreaTruthMeasuresAgainstTheLightsDisk) {
         contact[cells[0]] = std::stod(cells[near]);
         // The edge band within 1 unit of the post's foot: part of the band, not all of it.
         EXPECT_GT(std::stoi(cells[nearPixels]), 20) << line;
+        // Each row says which truth and which distance (a lesson's chart reads them).
+        EXPECT_EQ(cells[truth], "area (a sun disk of 2 degrees)") << line;
+        EXPECT_EQ(cells[distance], "1") << line;
     }
     ASSERT_EQ(edge.size(), 2u) << csv;
     EXPECT_LT(edge["pcss"], edge["pcf-gather"]) << csv;

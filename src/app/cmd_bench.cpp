@@ -405,16 +405,9 @@ void writeCharts(const BenchPlan& plan, const BenchResult& result, bool quick,
     writePngRgba8(
         (staging / STABILITY_CHART).string(), plan.chartSize.x, plan.chartSize.y,
         drawSpeedChart(result.rows, plan.chartSize, text, plan.timing, ChartAccuracy::Shimmer));
-    float contact = plan.config.options.contactDistance;
-    if (contact > 0.0f) {
-        int pixels = result.rows.empty() ? 0 : result.rows.front().contact.edgePixels;
-        char buf[160];
-        std::snprintf(buf, sizeof buf,
-                      "aliasing near the contacts: edge-band RMSE over the %d edge pixels within "
-                      "%g world unit%s of a caster",
-                      pixels, static_cast<double>(contact), contact == 1.0f ? "" : "s");
+    if (plan.config.options.contactDistance > 0.0f) {
         text.title = "Speed against accuracy near the contacts" + indicative + ": " + where;
-        text.yLabel = buf;
+        text.yLabel = contactAxisLabel(result.rows);
         writePngRgba8((staging / CONTACT_CHART).string(), plan.chartSize.x, plan.chartSize.y,
                       drawSpeedChart(result.rows, plan.chartSize, text, plan.timing,
                                      ChartAccuracy::ContactRmse));
@@ -442,8 +435,12 @@ int runBenchCommand(const BenchCommandOptions& o) {
         throw UsageError(e.what());
     }
     getloadavg(&loadEnd, 1);
-    // Every row names the renderer it was timed on (bench.csv's gl_renderer, the charts' subtitle).
-    for (BenchRow& row : result.rows) row.glRenderer = gl->renderer();
+    // Every row names the renderer it was timed on (bench.csv's gl_renderer, the charts' subtitle)
+    // and the truth it was measured against (bench.csv's truth: a lesson's chart says it).
+    for (BenchRow& row : result.rows) {
+        row.glRenderer = gl->renderer();
+        row.truth = truthWords(plan);
+    }
     BenchSetup setup = setupOf(plan, result, *gl, loadStart, loadEnd);
     std::string markdown = benchMarkdown(result.rows, setup);
     writeTextFile((staging.path() / CSV_NAME).string(), benchCsv(result.rows));
