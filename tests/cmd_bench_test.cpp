@@ -317,6 +317,41 @@ TEST_F(BenchCommand, AreaTruthMeasuresAgainstTheLightsDisk) {
     EXPECT_TRUE(fs::exists(out + "/speed_vs_contact.png"));
 }
 
+// --truth area under a spot light: its disk of the scene's radius (light_visibility.h), which
+// the CSV's truth column names; a spot without a radius has no disk, one line.
+TEST_F(BenchCommand, AreaTruthOfASpotLightsDisk) {
+    const std::string head =
+        "[camera]\neye = [2.5, 3.0, 3.5]\ntarget = [0.3, 0.3, 0.0]\nfov = 40.0\n"
+        "[light]\ntype = \"spot\"\ndirection = [0.0, -1.0, 0.0]\nposition = [0.0, 4.0, 0.0]\n"
+        "cone = 50.0\n";
+    const std::string objects =
+        "[[object]]\ntype = \"plane\"\nname = \"ground\"\ncentre = [0.0, 0.0, 0.0]\n"
+        "normal = [0.0, 1.0, 0.0]\nsize = [8.0, 8.0]\n"
+        "[[object]]\ntype = \"box\"\nname = \"post\"\ncentre = [0.4, 0.75, 0.0]\n"
+        "half = [0.15, 0.75, 0.15]\n";
+    std::ofstream(path("point.toml")) << head << objects;
+    auto refused = testutil::runPcfscope("bench --quick --truth area --scene-file " +
+                                         path("point.toml") + " -o " + path("refused"));
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_EQ(testutil::lineCount(refused.err), 1) << refused.err;
+    EXPECT_NE(refused.err.find("has a spot light without a radius"), std::string::npos)
+        << refused.err;
+    EXPECT_FALSE(fs::exists(path("refused")));
+
+    std::ofstream(path("disk.toml")) << head << "radius = 0.4\n" << objects;
+    std::string out = path("disk");
+    auto r = testutil::runPcfscope(
+        "bench --quick --truth area --methods pcf-gather --kernels 3 "
+        "--map-sizes 256 --size 96x54 --scene-file " +
+        path("disk.toml") + " -o " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<BenchRow> rows =
+        parseBenchCsv(testutil::readAll(out + "/bench.csv"), out + "/bench.csv");
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0].truth, "area (a spot disk of radius 0.4)");
+    EXPECT_GT(rows[0].error.edgeRmse, 0.0);
+}
+
 TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
     struct Case {
         std::string args;

@@ -64,7 +64,7 @@ struct BenchOptions {
     glm::ivec2 frameSize{1280, 720};
     int truthSpp = DEFAULT_TRUTH_SPP;  // K x K first-pass samples of the ground truth (>= 2)
     // The truth against the light's disk (GroundTruthOptions::area), not its centre: the scene's
-    // directional light must have an angular diameter.
+    // light must have a size (a directional light's angular diameter, a spot light's radius).
     bool areaTruth = false;
     // World units: also the edge error over the edge band's pixels within this distance of a
     // caster (failure_measures.h: nearContactMask), where a soft shadow is sharp (contact

@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@
 #include "analysis/bench_report.h"
 #include "analysis/chart_axes.h"
 #include "analysis/difference_image.h"
+#include "analysis/light_visibility.h"
 #include "analysis/speed_chart.h"
 #include "analysis/stability.h"
 #include "app/cli_util.h"
@@ -222,8 +224,9 @@ BenchOptions parseSweep(const BenchCommandOptions& o) {
 // frame pixel; issue 24's run at 8192x8192 had reached 9.8 GiB (157 a pixel) and not finished.
 constexpr std::uint64_t BENCH_BYTES_PER_PIXEL = 160;
 
-// --truth area: the truth integrates over the light's disk, the one pcss filters for
-// (scene/pcss.h effectiveLightSizeDeg: --light-size, else the scene's, else the sun's).
+// --truth area: the truth integrates over the light's disk: a sun's, the one pcss filters for
+// (scene/pcss.h effectiveLightSizeDeg: --light-size, else the scene's, else the sun's), or a
+// spot's of the scene's radius (light_visibility.h).
 void applyTruth(const BenchCommandOptions& o, BenchPlan& plan) {
     if (o.truth != "hard" && o.truth != "area") {
         throw UsageError("unknown --truth '" + o.truth + "' (known: hard, area)");
@@ -231,9 +234,17 @@ void applyTruth(const BenchCommandOptions& o, BenchPlan& plan) {
     plan.config.options.areaTruth = o.truth == "area";
     Light& light = plan.config.scene.light;
     if (!plan.config.options.areaTruth) return;
-    if (light.type != LightType::Directional) {
-        throw UsageError("--truth area takes a directional light (scene '" +
-                         plan.config.scene.name + "' has a spot light)");
+    if (light.type == LightType::Spot) {
+        if (!hasSize(light)) {
+            throw UsageError("--truth area takes a light with a size (scene '" +
+                             plan.config.scene.name + "' has a spot light without a radius)");
+        }
+        try {
+            checkSpotDiskCasters(plan.config.scene);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(plan.config.scene.name + ": " + e.what());
+        }
+        return;
     }
     light.angularDiameterDeg = effectiveLightSizeDeg(light, plan.config.options.base.lightSize);
 }
@@ -241,9 +252,15 @@ void applyTruth(const BenchCommandOptions& o, BenchPlan& plan) {
 // Which truth the report and the charts say they measured against.
 std::string truthWords(const BenchPlan& plan) {
     if (!plan.config.options.areaTruth) return "hard (the light's centre)";
+    const Light& light = plan.config.scene.light;
     char buf[80];
-    std::snprintf(buf, sizeof buf, "area (a sun disk of %g degrees)",
-                  static_cast<double>(plan.config.scene.light.angularDiameterDeg));
+    if (light.type == LightType::Spot) {
+        std::snprintf(buf, sizeof buf, "area (a spot disk of radius %g)",
+                      static_cast<double>(light.radius));
+    } else {
+        std::snprintf(buf, sizeof buf, "area (a sun disk of %g degrees)",
+                      static_cast<double>(light.angularDiameterDeg));
+    }
     return buf;
 }
 
@@ -509,8 +526,9 @@ Command addBenchCommand(CLI::App& app) {
                     "are then integrated to a 1/512 bound");
     sub->add_option("--truth", o->truth,
                     "hard: the truth of the light's centre (default); area: integrated over the "
-                    "light's disk (--light-size, else the scene's angular_diameter, else the "
-                    "sun's 0.53 degrees), the truth soft shadows and pcss are measured against");
+                    "light's disk (a sun's: --light-size, else the scene's angular_diameter, else "
+                    "the sun's 0.53 degrees; a spot's: the scene's radius), the truth soft "
+                    "shadows and pcss are measured against");
     sub->add_option("--contact", o->contact,
                     "D: also the edge-band RMSE within D world units of a caster (bench.csv's "
                     "contact_edge_rmse) and its chart, speed_vs_contact.png: where a soft "

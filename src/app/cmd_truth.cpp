@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "analysis/ground_truth.h"
 #include "analysis/ground_truth_conics.h"
+#include "analysis/light_visibility.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/output_files.h"
@@ -47,12 +49,24 @@ void checkTruthOptions(const TruthCommandOptions& o) {
     if (!o.scene.empty() && !o.sceneFile.empty()) {
         throw UsageError("give --scene or --scene-file, not both");
     }
-    if (o.lightSize >= 0.0f && !(o.lightSize <= MAX_ANGULAR_DIAMETER_DEG)) {
-        throw UsageError("--light-size " + std::to_string(o.lightSize) + " is out of range (0.." +
-                         std::to_string(MAX_ANGULAR_DIAMETER_DEG) + " degrees)");
-    }
     if (o.out.empty()) throw UsageError("truth needs -o FILE.exr");
     requireExtension("-o", o.out, ".exr");
+}
+
+// --light-size: the directional light's angular diameter, degrees, or the spot light's radius,
+// world units (light.h), each in its range.
+void applyLightSize(const TruthCommandOptions& o, Scene& scene) {
+    if (o.lightSize < 0.0f) return;
+    bool spot = scene.light.type == LightType::Spot;
+    float most = spot ? MAX_SPOT_RADIUS : MAX_ANGULAR_DIAMETER_DEG;
+    if (!(o.lightSize <= most)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "--light-size %g is out of range (0..%g %s)",
+                      static_cast<double>(o.lightSize), static_cast<double>(most),
+                      spot ? "world units: a spot light's radius" : "degrees");
+        throw UsageError(text);
+    }
+    (spot ? scene.light.radius : scene.light.angularDiameterDeg) = o.lightSize;
 }
 
 // The EXR's channels: visibility, bound, and with --mask the receiver mask.
@@ -107,17 +121,11 @@ int runTruth(const TruthCommandOptions& o) {
     // Measured peaks of `truth --spp 1` (box-on-plane): 139 MB at 512x512, 152 MB at 1024x1024:
     // 17 bytes a pixel; 24 leaves room for --mask's channel and the EXR held in memory.
     requireMemory("--size " + o.size, memoryEstimate(160 * MIB, 24, size.x, size.y));
-    if (o.lightSize >= 0.0f) {
-        if (scene.light.type != LightType::Directional) {
-            throw UsageError("--light-size is a directional light's angular diameter; " +
-                             scene.name + " has a spot light");
-        }
-        scene.light.angularDiameterDeg = o.lightSize;
-    }
-    if (scene.light.type == LightType::Spot && hasSize(scene.light)) {
-        throw UsageError(scene.name +
-                         ": the area-light truth takes a directional light; a spot light's "
-                         "radius is not integrated yet (set it to 0 for the hard truth)");
+    applyLightSize(o, scene);
+    try {
+        checkSpotDiskCasters(scene);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(scene.name + ": " + e.what());
     }
     OutputFiles outputs(o.force);
     outputs.addInput("--scene-file", o.sceneFile);
@@ -130,7 +138,10 @@ int runTruth(const TruthCommandOptions& o) {
     options.area = hasSize(scene.light);
     int threads = resolveThreadCount(o.threads);
     char light[96];
-    if (options.area) {
+    if (options.area && scene.light.type == LightType::Spot) {
+        std::snprintf(light, sizeof light, "a spot disk of radius %g (integrated over the disk)",
+                      static_cast<double>(scene.light.radius));
+    } else if (options.area) {
         std::snprintf(light, sizeof light, "a sun disk of %g degrees (integrated over the disk)",
                       static_cast<double>(scene.light.angularDiameterDeg));
     } else {
@@ -182,9 +193,10 @@ Command addTruthCommand(CLI::App& app) {
     sub->add_option("--bound", o->bound,
                     "refine edge pixels until the error bound is at most this (default 1/512)");
     sub->add_option("--light-size", o->lightSize,
-                    "the directional light's angular diameter in degrees (0..10; the sun's is "
-                    "about 0.53): the truth integrates over the light's disk as well as the pixel. "
-                    "Default: the scene's light (angular_diameter), 0 = a hard shadow");
+                    "the light's size: a directional light's angular diameter in degrees "
+                    "(0..10; the sun's is about 0.53), a spot light's radius in world units "
+                    "(0..100): the truth integrates over the light's disk as well as the pixel. "
+                    "Default: the scene's light (angular_diameter, radius), 0 = a hard shadow");
     sub->add_option("--threads", o->threads, "worker threads (0 = all cores, the default)");
     sub->add_flag("--mask", o->mask,
                   "add a 'mask' channel: 1 where the pixel centre's camera ray hits a shadow "
