@@ -315,6 +315,8 @@ TEST_F(BenchCommand, AreaTruthMeasuresAgainstTheLightsDisk) {
     EXPECT_LT(contact["pcss"], contact["pcf-gather"]) << csv;
     EXPECT_GT(contact["pcss"], 0.0) << csv;
     EXPECT_TRUE(fs::exists(out + "/speed_vs_contact.png"));
+    EXPECT_NE(r.err.find("speed_vs_stability.png, speed_vs_contact.png}"), std::string::npos)
+        << r.err;  // the last line names every file written
 }
 
 // --truth area under a spot light: its disk of the scene's radius (light_visibility.h), which

@@ -474,10 +474,12 @@ int runBenchCommand(const BenchCommandOptions& o) {
     }
     outputs.commitStaged(staging.path(), o.out, names);
     std::fputs(markdown.c_str(), stdout);
+    std::string charts = std::string(ACCURACY_CHART) + ", " + STABILITY_CHART;
+    if (plan.config.options.contactDistance > 0.0f) charts += ", " + std::string(CONTACT_CHART);
     std::fprintf(stderr,
-                 "bench: %zu runs in %.1f s; wrote %s/{%s, %s, %s, %s} and %zu images in %s/diff\n",
+                 "bench: %zu runs in %.1f s; wrote %s/{%s, %s, %s} and %zu images in %s/diff\n",
                  result.rows.size(), reporter.clock().seconds(), o.out.c_str(), CSV_NAME, MD_NAME,
-                 ACCURACY_CHART, STABILITY_CHART, result.rows.size(), o.out.c_str());
+                 charts.c_str(), result.rows.size(), o.out.c_str());
     return 0;
 }
 
