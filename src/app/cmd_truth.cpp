@@ -183,8 +183,10 @@ Command addTruthCommand(CLI::App& app) {
         "truth",
         "exact shadow by ray casting: visibility per pixel with its error bound (edges "
         "integrated along sub-scanlines until two resolutions agree)");
-    sub->add_option("--scene", o->scene,
-                    "built-in scene: box-on-plane, sphere-over-plane, pole, grazing, stairs");
+    sub->add_option(
+        "--scene", o->scene,
+        "built-in scene: box-on-plane, sphere-over-plane, pole, post-in-sun, post-under-spot, "
+        "grazing, stairs");
     sub->add_option("--scene-file", o->sceneFile, "scene file (TOML)");
     sub->add_option("--size", o->size, sizeHelp("frame size", {}, "default 1280x720"));
     sub->add_option("--spp", o->spp,
