@@ -432,7 +432,8 @@ bool EdgeFinder::spotShadowEdgeNear(const Footprint& f, const Caster& caster) co
     double theta = angleBetween(f.centre - light, v);
     if (theta > gamma + beta) return false;  // outside the caster's shadow cone
     // Inside a sphere's cone, upstream and downstream are split by its surface; a box's or a
-    // rectangle's cone is not followed further here (no preset has a spot light).
+    // rectangle's cone is not followed further here: a pixel in it is refined (safe, only
+    // slower; post-under-spot's post is such a box).
     bool sphere = std::holds_alternative<Sphere>(shape);
     return !(sphere && theta < gamma - beta && surfaceDistance(shape, f.centre) > f.radius);
 }
