@@ -30,6 +30,8 @@ std::vector<BenchRow> sampleRows() {
     a.glRenderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
     a.contact.edgeRmse = 0.0625;
     a.contact.edgePixels = 37;
+    a.contactDistance = 1.5;
+    a.truth = "area (a sun disk of 2 degrees)";
     BenchRow b = a;
     b.point = {PCF_NEAREST, 0, 256};
     b.acne = {};
@@ -69,14 +71,40 @@ TEST(BenchReport, CsvReadsBackWhatWasWritten) {
         EXPECT_EQ(back[k].glRenderer, "llvmpipe (LLVM 15.0.6; 256 bits)");
         EXPECT_EQ(back[k].contact.edgeRmse, rows[k].contact.edgeRmse);
         EXPECT_EQ(back[k].contact.edgePixels, rows[k].contact.edgePixels);
+        // The truth and the contact distance: what a lesson's chart says it measured.
+        EXPECT_EQ(back[k].truth, rows[k].truth);
+        EXPECT_EQ(benchTruthKind(back[k]), "area");
+        EXPECT_EQ(back[k].contactDistance, 1.5);
     }
     // The columns by name: the weighting's name, and the gaussian's sigma.
     std::string csv = benchCsv(rows);
     EXPECT_NE(
         csv.find(",gaussian,1.25,0.125,0.03125,4096,0.0625,0.015625,512,0.0123456789,0.375,"
-                 "0.02,0.000246913578,21.2500,9.5000,llvmpipe (LLVM 15.0.6; 256 bits),0.0625,37\n"),
+                 "0.02,0.000246913578,21.2500,9.5000,llvmpipe (LLVM 15.0.6; 256 bits),0.0625,37,"
+                 "area (a sun disk of 2 degrees),1.5\n"),
         std::string::npos)
         << csv;
+}
+
+// A file from before the truth column reads with the truth unknown and no contact distance.
+TEST(BenchReport, CsvBeforeTheTruthColumnReadsWithoutIt) {
+    std::string csv = benchCsv(sampleRows());
+    std::string v6(BENCH_CSV_HEADER_V6);
+    std::string old = v6 + "\n";
+    size_t line = csv.find('\n') + 1;
+    for (size_t end; (end = csv.find('\n', line)) != std::string::npos; line = end + 1) {
+        std::string row = csv.substr(line, end - line);
+        // Drop the last two fields.
+        row = row.substr(0, row.rfind(','));
+        row = row.substr(0, row.rfind(','));
+        old += row + "\n";
+    }
+    std::vector<BenchRow> back = parseBenchCsv(old, "old.csv");
+    ASSERT_EQ(back.size(), 2u);
+    EXPECT_EQ(back[0].truth, "");
+    EXPECT_EQ(benchTruthKind(back[0]), "");
+    EXPECT_EQ(back[0].contactDistance, 0.0);
+    EXPECT_EQ(back[0].contact.edgePixels, 37);
 }
 
 TEST(BenchReport, TheShippedCsvParses) {
@@ -155,16 +183,27 @@ TEST(BenchReport, BadCsvNamesTheLine) {
     ASSERT_EQ(named.size(), 1u);
     EXPECT_EQ(named[0].glRenderer, "NVIDIA H200/PCIe/SSE2");
     EXPECT_EQ(named[0].contact.edgePixels, 0);
-    // The current header: 32 fields, the last two the edge error near the contacts.
-    std::string v6 = std::string(BENCH_CSV_HEADER) + "\n";
+    // The header before the truth: 32 fields, the last two the edge error near the contacts.
+    std::string v6 = std::string(BENCH_CSV_HEADER_V6) + "\n";
     const std::string row30 = row27 + ",12.5,4.25,llvmpipe";
     EXPECT_EQ(message(v6 + row30 + "\n"), "b.csv:2: expected 32 fields, got 30");
     std::vector<BenchRow> contact = parseBenchCsv(v6 + row30 + ",0.125,640\n", "b.csv");
     ASSERT_EQ(contact.size(), 1u);
     EXPECT_EQ(contact[0].contact.edgeRmse, 0.125);
     EXPECT_EQ(contact[0].contact.edgePixels, 640);
+    EXPECT_EQ(contact[0].truth, "");
     EXPECT_EQ(message(v6 + row30 + ",0.125,6.5\n"),
               "b.csv:2: field 32 '6.5' is not a whole number");
+    // The current header: 34 fields, the last two the truth and the contact distance.
+    std::string v7 = std::string(BENCH_CSV_HEADER) + "\n";
+    const std::string row32 = row30 + ",0.125,640";
+    EXPECT_EQ(message(v7 + row32 + "\n"), "b.csv:2: expected 34 fields, got 32");
+    std::vector<BenchRow> truth =
+        parseBenchCsv(v7 + row32 + ",area (a sun disk of 2 degrees),1.5\n", "b.csv");
+    ASSERT_EQ(truth.size(), 1u);
+    EXPECT_EQ(truth[0].truth, "area (a sun disk of 2 degrees)");
+    EXPECT_EQ(truth[0].contactDistance, 1.5);
+    EXPECT_EQ(message(v7 + row32 + ",hard,near\n"), "b.csv:2: field 34 'near' is not a number");
     // The eleven columns from before the timing spreads still read, with no spread.
     std::string v1 = std::string(BENCH_CSV_HEADER_V1) + "\n";
     EXPECT_EQ(message(v1 + "nearest,0,256,1,1,1,0,0,0,0,t,0,1,0,0\n"),

@@ -53,13 +53,15 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
               "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,"
               "acne_share,acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,"
               "shimmer_mean,shimmer_p99,flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,"
-              "gl_renderer,contact_edge_rmse,contact_edge_pixels");
+              "gl_renderer,contact_edge_rmse,contact_edge_pixels,truth,contact_distance");
     std::set<std::string> methods;
     int rows = 0;
     while (std::getline(csv, line)) {
         ++rows;
         std::vector<std::string> f = splitCsvLine(line);
-        ASSERT_EQ(f.size(), 32u) << line;
+        ASSERT_EQ(f.size(), 34u) << line;
+        EXPECT_EQ(f[32], "hard (the light's centre)") << line;  // truth
+        EXPECT_EQ(f[33], "0") << line;                          // contact_distance: not measured
         methods.insert(f[0]);
         bool kernelMethod =
             f[0] == "pcf-naive" || f[0] == "pcf-gather" || f[0] == "pcf-hw" || f[0] == "tent";
@@ -288,8 +290,11 @@ TEST_F(BenchCommand, AreaTruthMeasuresAgainstTheLightsDisk) {
     size_t near = std::find(header.begin(), header.end(), "contact_edge_rmse") - header.begin();
     size_t nearPixels =
         std::find(header.begin(), header.end(), "contact_edge_pixels") - header.begin();
+    size_t truth = std::find(header.begin(), header.end(), "truth") - header.begin();
+    size_t distance = std::find(header.begin(), header.end(), "contact_distance") - header.begin();
     ASSERT_LT(rmse, header.size()) << line;
     ASSERT_LT(nearPixels, header.size()) << line;
+    ASSERT_LT(distance, header.size()) << line;
     std::map<std::string, double> edge, contact;
     while (std::getline(lines, line)) {
         std::vector<std::string> cells = splitCsvLine(line);
@@ -298,6 +303,9 @@ TEST_F(BenchCommand, AreaTruthMeasuresAgainstTheLightsDisk) {
         contact[cells[0]] = std::stod(cells[near]);
         // The edge band within 1 unit of the post's foot: part of the band, not all of it.
         EXPECT_GT(std::stoi(cells[nearPixels]), 20) << line;
+        // Each row says which truth and which distance (a lesson's chart reads them).
+        EXPECT_EQ(cells[truth], "area (a sun disk of 2 degrees)") << line;
+        EXPECT_EQ(cells[distance], "1") << line;
     }
     ASSERT_EQ(edge.size(), 2u) << csv;
     EXPECT_LT(edge["pcss"], edge["pcf-gather"]) << csv;
@@ -307,6 +315,43 @@ TEST_F(BenchCommand, AreaTruthMeasuresAgainstTheLightsDisk) {
     EXPECT_LT(contact["pcss"], contact["pcf-gather"]) << csv;
     EXPECT_GT(contact["pcss"], 0.0) << csv;
     EXPECT_TRUE(fs::exists(out + "/speed_vs_contact.png"));
+    EXPECT_NE(r.err.find("speed_vs_stability.png, speed_vs_contact.png}"), std::string::npos)
+        << r.err;  // the last line names every file written
+}
+
+// --truth area under a spot light: its disk of the scene's radius (light_visibility.h), which
+// the CSV's truth column names; a spot without a radius has no disk, one line.
+TEST_F(BenchCommand, AreaTruthOfASpotLightsDisk) {
+    const std::string head =
+        "[camera]\neye = [2.5, 3.0, 3.5]\ntarget = [0.3, 0.3, 0.0]\nfov = 40.0\n"
+        "[light]\ntype = \"spot\"\ndirection = [0.0, -1.0, 0.0]\nposition = [0.0, 4.0, 0.0]\n"
+        "cone = 50.0\n";
+    const std::string objects =
+        "[[object]]\ntype = \"plane\"\nname = \"ground\"\ncentre = [0.0, 0.0, 0.0]\n"
+        "normal = [0.0, 1.0, 0.0]\nsize = [8.0, 8.0]\n"
+        "[[object]]\ntype = \"box\"\nname = \"post\"\ncentre = [0.4, 0.75, 0.0]\n"
+        "half = [0.15, 0.75, 0.15]\n";
+    std::ofstream(path("point.toml")) << head << objects;
+    auto refused = testutil::runPcfscope("bench --quick --truth area --scene-file " +
+                                         path("point.toml") + " -o " + path("refused"));
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_EQ(testutil::lineCount(refused.err), 1) << refused.err;
+    EXPECT_NE(refused.err.find("has a spot light without a radius"), std::string::npos)
+        << refused.err;
+    EXPECT_FALSE(fs::exists(path("refused")));
+
+    std::ofstream(path("disk.toml")) << head << "radius = 0.4\n" << objects;
+    std::string out = path("disk");
+    auto r = testutil::runPcfscope(
+        "bench --quick --truth area --methods pcf-gather --kernels 3 "
+        "--map-sizes 256 --size 96x54 --scene-file " +
+        path("disk.toml") + " -o " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<BenchRow> rows =
+        parseBenchCsv(testutil::readAll(out + "/bench.csv"), out + "/bench.csv");
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0].truth, "area (a spot disk of radius 0.4)");
+    EXPECT_GT(rows[0].error.edgeRmse, 0.0);
 }
 
 TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {

@@ -9,6 +9,7 @@
 #include "image_read.h"
 #include "run_command.h"
 #include "scene/presets.h"
+#include "scene/scene_file.h"
 
 namespace pcf {
 namespace {
@@ -129,6 +130,78 @@ radius = 0.3
         ASSERT_EQ(p.exitCode, 0) << p.err;
         EXPECT_EQ(p.err.find("not conics"), std::string::npos) << preset << ": " << p.err;
     }
+}
+
+// A spot light with a radius: the truth integrates over its disk (light_visibility.h), as the
+// library computes it; --light-size is the spot's radius; a sphere reaching behind the disk is
+// refused with one line.
+TEST_F(TruthCommand, IntegratesASpotLightsDisk) {
+    std::string spot = R"([camera]
+eye = [2.5, 3.0, 3.5]
+target = [0.0, 0.3, 0.0]
+fov = 40.0
+
+[light]
+type = "spot"
+direction = [0.0, -1.0, 0.0]
+position = [0.0, 4.0, 0.0]
+cone = 50.0
+radius = 0.4
+
+[[object]]
+type = "plane"
+name = "ground"
+centre = [0.0, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+size = [8.0, 8.0]
+
+[[object]]
+type = "box"
+name = "post"
+centre = [0.4, 0.75, 0.0]
+half = [0.15, 0.75, 0.15]
+)";
+    std::string scene = path("spot.toml");
+    std::ofstream(scene) << spot;
+    auto r = testutil::runPcfscope("truth --scene-file " + scene + " --size 24x14 -o " +
+                                   path("spot.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("a spot disk of radius 0.4"), std::string::npos) << r.err;
+    std::vector<std::string> names = readImageChannelNames(path("spot.exr"));
+    ASSERT_EQ(names.size(), 2u);
+    size_t vis = std::find(names.begin(), names.end(), "visibility") - names.begin();
+    ASSERT_LT(vis, 2u);
+    std::vector<float> both = readImageFloats(path("spot.exr"), 2);
+    GroundTruthOptions options;
+    options.area = true;
+    GroundTruth truth = computeGroundTruth(parseSceneString(spot, "spot"), {24, 14}, options);
+    ASSERT_EQ(both.size(), 2 * truth.pixelCount());
+    int partial = 0;
+    for (size_t k = 0; k < truth.pixelCount(); ++k) {
+        EXPECT_EQ(both[2 * k + vis], truth.visibility[k]) << k;
+        partial += truth.visibility[k] > 0.01f && truth.visibility[k] < 0.99f ? 1 : 0;
+    }
+    EXPECT_GT(partial, 0);  // a penumbra
+    EXPECT_GT(truth.refinedPixels, partial);
+
+    auto big = testutil::runPcfscope("truth --scene-file " + scene +
+                                     " --light-size 101 --size 24x14 -o " + path("big.exr"));
+    EXPECT_EQ(big.exitCode, 2) << big.err;
+    EXPECT_EQ(testutil::lineCount(big.err), 1) << big.err;
+    EXPECT_NE(big.err.find("a spot light's radius"), std::string::npos) << big.err;
+    EXPECT_FALSE(std::filesystem::exists(path("big.exr")));
+
+    std::string behind = path("behind.toml");
+    std::ofstream(behind) << spot
+                          << "\n[[object]]\ntype = \"sphere\"\nname = \"lamp\"\ncentre = [0.0, "
+                             "4.0, 0.0]\nradius = 0.1\n";
+    auto refused = testutil::runPcfscope("truth --scene-file " + behind + " --size 24x14 -o " +
+                                         path("behind.exr"));
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_EQ(testutil::lineCount(refused.err), 1) << refused.err;
+    EXPECT_NE(refused.err.find("sphere 'lamp' reaches behind the light's disk"), std::string::npos)
+        << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(path("behind.exr")));
 }
 
 TEST_F(TruthCommand, MaskAddsTheReceiverChannel) {

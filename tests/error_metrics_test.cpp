@@ -179,16 +179,16 @@ TEST(BenchReport, CsvHasTheDocumentedColumnsAndOneLinePerRow) {
               "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,"
               "acne_share,acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,"
               "shimmer_mean,shimmer_p99,flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,"
-              "gl_renderer,contact_edge_rmse,contact_edge_pixels");
+              "gl_renderer,contact_edge_rmse,contact_edge_pixels,truth,contact_distance");
     std::getline(in, line);
-    EXPECT_EQ(
-        line,
-        "nearest,0,256,2.0000,12.35,1,0.05,1,0.5,0.75,glFinish+steady_clock,0.1000,1.0000,"
-        "0.5000,0,box,0,0,0,0,0,0,0,0,0,0,0,0.0000,0.0000,llvmpipe (LLVM 15.0.6; 256 bits),0,0");
+    EXPECT_EQ(line,
+              "nearest,0,256,2.0000,12.35,1,0.05,1,0.5,0.75,glFinish+steady_clock,0.1000,1.0000,"
+              "0.5000,0,box,0,0,0,0,0,0,0,0,0,0,0,0.0000,0.0000,llvmpipe (LLVM 15.0.6; 256 bits),0,"
+              "0,,0");
     int lines = 2;
     while (std::getline(in, line)) {
         ++lines;
-        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 31) << line;
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 33) << line;
     }
     EXPECT_EQ(lines, 1 + static_cast<int>(rows.size()));
     EXPECT_NE(csv.find("tent,5,1024,11.0000,12.35,36,0.0123456789,1,0.123456789,0.75,"),

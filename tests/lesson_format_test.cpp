@@ -253,7 +253,7 @@ TEST(LessonFormat, UnknownNamesAreRefused) {
     e = errorOf("title = \"T\"\nscene = \"poles\"\n[[step]]\ntitle = \"S\"\ntext = \"x\"\n");
     EXPECT_EQ(e,
               "bad.toml:2: unknown scene preset 'poles' (known: box-on-plane, "
-              "sphere-over-plane, pole, post-in-sun, grazing, stairs)");
+              "sphere-over-plane, pole, post-in-sun, post-under-spot, grazing, stairs)");
 }
 
 TEST(LessonFormat, ValuesOutOfRangeAreRefused) {

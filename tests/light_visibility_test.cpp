@@ -182,6 +182,142 @@ TEST(AreaGroundTruth, IsTheSameForAnyThreadCount) {
     EXPECT_EQ(one.bound, all.bound);
 }
 
+// A spot light's disk (light.h: radius R, at positionWs, facing along directionWs) at height
+// L straight above the origin, over the slab of edgeScene. From ground point (x, 0, 0) the ray
+// toward disk point (xd, L, z) passes height h at x + (xd - x) h / L, so the slab's edge at
+// height h (the top, H + 1, for x >= 0; the bottom, H, under the slab) hides exactly the disk's
+// part xd < c, c = x (1 - L / h): the part left is the circular segment beyond the chord at c,
+// s(c / R), and along x it integrates in closed form as the sun's does.
+// (The visible share of the disk's AREA: light_visibility.h weighs every point of it alike.)
+constexpr double SPOT_HEIGHT = 6.0;
+Scene spotEdgeScene(double radius, double cx) {
+    std::string toml =
+        "[camera]\neye = [" + std::to_string(cx) + ", 20.0, 0.0]\ntarget = [" + std::to_string(cx) +
+        ", 0.0, 0.0]\nup = [0.0, 0.0, -1.0]\nfov = 2.0\n"
+        "[light]\ntype = \"spot\"\ndirection = [0.0, -1.0, 0.0]\n"
+        "position = [0.0, " +
+        std::to_string(SPOT_HEIGHT) + ", 0.0]\ncone = 60.0\nradius = " + std::to_string(radius) +
+        "\n[[object]]\ntype = \"plane\"\nname = \"ground\"\ncentre = [0.0, 0.0, "
+        "0.0]\nnormal = [0.0, 1.0, 0.0]\nsize = [200.0, 200.0]\n"
+        "[[object]]\ntype = \"box\"\nname = \"slab\"\ncentre = [-50.0, " +
+        std::to_string(H + 0.5) + ", 0.0]\nhalf = [50.0, 0.5, 50.0]\n";
+    return parseSceneString(toml, "spot-edge-test");
+}
+
+// c / x: where the slab's edge cuts the disk, per unit of x (see spotEdgeScene).
+double spotChordPerX(double x) { return 1.0 - SPOT_HEIGHT / (x >= 0.0 ? H + 1.0 : H); }
+
+TEST(LightVisibility, ASpotDiskCutByAStraightEdgeIsACircularSegment) {
+    const double radius = 0.3;
+    Scene scene = spotEdgeScene(radius, 0.0);
+    int checked = 0, partial = 0;
+    for (double x : {-0.2, -0.14, -0.1, -0.05, -0.01, 0.0, 0.02, 0.1, 0.2, 0.29, 0.35}) {
+        LightFraction f =
+            lightVisibleFraction(scene, {x, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
+        double exact = segment(x * spotChordPerX(x) / radius);
+        EXPECT_LE(std::abs(f.visible - exact), f.bound + 1e-9) << "x " << x;
+        EXPECT_LE(f.bound, 1.0 / 2048.0) << "x " << x;
+        partial += exact > 0.01 && exact < 0.99 ? 1 : 0;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 11);
+    EXPECT_GE(partial, 7);  // most of them in the penumbra
+    // Half the disk at the edge's foot; all of it past the penumbra, none deep under the slab.
+    EXPECT_NEAR(lightVisibleFraction(scene, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1e-4).visible, 0.5,
+                1e-4);
+    EXPECT_EQ(lightVisibleFraction(scene, {0.5, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1e-4).visible, 1.0);
+    EXPECT_EQ(lightVisibleFraction(scene, {-0.5, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1e-4).visible, 0.0);
+    // Outside the spot's cone (60 degrees: x > L tan 60) nothing of the light arrives.
+    EXPECT_EQ(lightVisibleFraction(scene, {11.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1e-4).visible, 0.0);
+}
+
+// A sphere of radius r centred on the spot's axis at height h, seen from the origin: a cone of
+// half-angle beta = asin(r / h) that meets the disk's plane (height L) in a circle of radius
+// L tan(beta) about the disk's centre: an annular eclipse, 1 - (L tan(beta))^2 / R^2 visible.
+TEST(LightVisibility, ASphereUnderTheSpotIsAnAnnularEclipse) {
+    const double radius = 0.5;
+    const double height = 3.0;
+    for (double sphereRadius : {0.05, 0.15, 0.24, 0.3}) {
+        std::string toml =
+            "[camera]\neye = [3.0, 3.0, 3.0]\ntarget = [0.0, 0.0, 0.0]\n"
+            "[light]\ntype = \"spot\"\ndirection = [0.0, -1.0, 0.0]\nposition = [0.0, " +
+            std::to_string(SPOT_HEIGHT) +
+            ", 0.0]\ncone = 45.0\nradius = " + std::to_string(radius) +
+            "\n[[object]]\ntype = \"plane\"\ncentre = [0.0, 0.0, 0.0]\n"
+            "normal = [0.0, 1.0, 0.0]\nsize = [20.0, 20.0]\n"
+            "[[object]]\ntype = \"sphere\"\ncentre = [0.0, " +
+            std::to_string(height) + ", 0.0]\nradius = " + std::to_string(sphereRadius) + "\n";
+        Scene scene = parseSceneString(toml, "spot-sphere-test");
+        double seen = SPOT_HEIGHT * std::tan(std::asin(sphereRadius / height));
+        double exact = seen >= radius ? 0.0 : 1.0 - seen * seen / (radius * radius);
+        LightFraction f =
+            lightVisibleFraction(scene, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
+        EXPECT_LE(std::abs(f.visible - exact), f.bound + 1e-9) << sphereRadius;
+    }
+}
+
+// A box that rises past the spot's disk beside it blocks nothing of it: only the part of a
+// caster between the point and the light counts (the slice clipped at the disk's plane). Seen
+// from the origin the pole's part above the light (x in [2, 3], up to height 100) lies in the
+// directions of the disk's points, its part below the disk does not.
+TEST(LightVisibility, ACasterBehindTheSpotDiskDoesNotBlock) {
+    std::string toml =
+        "[camera]\neye = [3.0, 3.0, 3.0]\ntarget = [0.0, 0.0, 0.0]\n"
+        "[light]\ntype = \"spot\"\ndirection = [0.0, -1.0, 0.0]\nposition = [0.0, " +
+        std::to_string(SPOT_HEIGHT) +
+        ", 0.0]\ncone = 45.0\nradius = 0.5\n"
+        "[[object]]\ntype = \"plane\"\ncentre = [0.0, 0.0, 0.0]\n"
+        "normal = [0.0, 1.0, 0.0]\nsize = [20.0, 20.0]\n"
+        "[[object]]\ntype = \"box\"\nname = \"pole\"\ncentre = [2.5, 50.0, 0.0]\n"
+        "half = [0.5, 50.0, 0.5]\n";
+    Scene scene = parseSceneString(toml, "spot-behind-test");
+    EXPECT_EQ(lightVisibleFraction(scene, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1e-4).visible, 1.0);
+    // A sphere reaching behind the disk is refused rather than integrated wrongly.
+    std::string sphere = toml +
+                         "[[object]]\ntype = \"sphere\"\nname = \"high\"\ncentre = [-3.0, "
+                         "6.1, 0.0]\nradius = 0.2\n";
+    Scene high = parseSceneString(sphere, "spot-behind-test");
+    EXPECT_THROW(checkSpotDiskCasters(high), std::invalid_argument);
+    EXPECT_NO_THROW(checkSpotDiskCasters(scene));
+    GroundTruthOptions options;
+    options.area = true;
+    EXPECT_THROW(computeGroundTruth(high, {8, 6}, options), std::invalid_argument);
+}
+
+// The whole frame under the spot's disk, as the sun's above: each ground pixel covers world x
+// in [xa, xb], and its exact value is the mean of s(k x / R) over it, k = spotChordPerX.
+TEST(AreaGroundTruth, PixelsUnderASpotDiskMatchTheClosedForm) {
+    const double radius = 0.3;
+    const double cx = 0.12;
+    Scene scene = spotEdgeScene(radius, cx);
+    glm::ivec2 size(32, 18);
+    GroundTruthOptions options;
+    options.area = true;
+    GroundTruth truth = computeGroundTruth(scene, size, options);
+    double halfWidth = 20.0 * std::tan(1.0 * PI / 180.0) * size.x / size.y;
+    auto worldX = [&](double windowX) { return cx + halfWidth * (2.0 * windowX / size.x - 1.0); };
+    int penumbra = 0, checked = 0;
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            double xa = worldX(x), xb = worldX(x + 1);
+            if (xa <= 1e-3) continue;  // the slab and its side face, not the ground
+            // x > 0: k < 0, and s(u) = 1 - s(-u) turns it into the sun's form.
+            double scale = -radius / spotChordPerX(xa);
+            double exact = 1.0 - scale *
+                                     (segmentIntegral(xb / scale) - segmentIntegral(xa / scale)) /
+                                     (xb - xa);
+            size_t k = truth.index(x, y);
+            EXPECT_LE(std::abs(truth.visibility[k] - exact), truth.bound[k] + 1e-6)
+                << "pixel " << x << ", " << y << " exact " << exact;
+            EXPECT_LE(truth.bound[k], options.targetBound);
+            penumbra += exact < 0.999 ? 1 : 0;
+            ++checked;
+        }
+    }
+    EXPECT_GE(penumbra, 4 * size.y);  // the penumbra is pixels wide
+    EXPECT_GE(checked, 18 * size.y);
+}
+
 TEST(AreaGroundTruth, RefusesALightWithoutASize) {
     Scene scene = sphereScene(0.0, 0.4, 1.0);
     GroundTruthOptions options;

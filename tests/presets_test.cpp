@@ -17,7 +17,8 @@ constexpr float ASPECT = 16.0f / 9.0f;
 TEST(Presets, NamesInOrder) {
     std::vector<std::string_view> names = presetNames();
     std::vector<std::string_view> expected = {"box-on-plane", "sphere-over-plane", "pole",
-                                              "post-in-sun",  "grazing",           "stairs"};
+                                              "post-in-sun",  "post-under-spot",   "grazing",
+                                              "stairs"};
     EXPECT_EQ(names, expected);
     EXPECT_FALSE(presetScene("no-such-scene"));
     EXPECT_FALSE(presetSceneToml("no-such-scene"));

@@ -296,6 +296,7 @@ class BenchRun {
         row.error = measureError(mTruth, mRegions, visibility);
         if (!mContactRegions.edge.empty()) {
             row.contact = measureError(mTruth, mContactRegions, visibility);
+            row.contactDistance = mOptions.contactDistance;
         }
         if (mContext.scene != nullptr) {
             const auto& [lit, umbra] = cleanMasks(p);

@@ -64,7 +64,7 @@ struct BenchOptions {
     glm::ivec2 frameSize{1280, 720};
     int truthSpp = DEFAULT_TRUTH_SPP;  // K x K first-pass samples of the ground truth (>= 2)
     // The truth against the light's disk (GroundTruthOptions::area), not its centre: the scene's
-    // directional light must have an angular diameter.
+    // light must have a size (a directional light's angular diameter, a spot light's radius).
     bool areaTruth = false;
     // World units: also the edge error over the edge band's pixels within this distance of a
     // caster (failure_measures.h: nearContactMask), where a soft shadow is sharp (contact
@@ -144,6 +144,8 @@ struct BenchRow {
     ErrorStats error;    // error.edgeRmse: the aliasing error (see the top of this file)
     // The same over the edge band near the casters (BenchOptions::contactDistance; else zero).
     ErrorStats contact;
+    // The run's BenchOptions::contactDistance, world units (0: the contact was not measured).
+    double contactDistance = 0.0;
     FailureRate acne;  // false shadow over the clean lit pixels
     FailureRate leak;  // false light over the clean umbra pixels
     ShimmerStats shimmer;
@@ -151,6 +153,10 @@ struct BenchRow {
     // GL_RENDERER of the run (every row of one run carries it: bench.csv has no other place);
     // empty when unknown (a bench.csv older than BENCH_CSV_HEADER_V4's successor).
     std::string glRenderer;
+    // Which truth the errors are measured against, in the report's words (every row of a run):
+    // "hard (the light's centre)" or "area (a sun disk of 2 degrees)" (benchTruthKind reads
+    // which); empty when unknown (a bench.csv older than BENCH_CSV_HEADER_V6's successor).
+    std::string truth;
 };
 
 // "pcf-gather N=3", "pcf-gather N=3 gaussian 1.5" or "nearest".

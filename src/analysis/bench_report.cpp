@@ -66,7 +66,8 @@ std::string benchCsv(std::span<const BenchRow> rows) {
                g(r.shimmer.flickerP99) + g(r.shimmer.flickerShare) + g(r.shimmer.mean) + ',' +
                format("%.4f", r.gpuCpuMs) + ',' + format("%.4f", r.lookupCpuMs) + ',' +
                csvWords(r.glRenderer) + g(r.contact.edgeRmse) + ',' +
-               std::to_string(r.contact.edgePixels) + '\n';
+               std::to_string(r.contact.edgePixels) + ',' + csvWords(r.truth) +
+               g(r.contactDistance) + '\n';
     }
     return out;
 }
@@ -107,13 +108,17 @@ BenchRow parseBenchRow(const CsvFields& f) {
     if (f.size() == 30) return r;
     r.contact.edgeRmse = f.number(30);
     r.contact.edgePixels = f.integer(31);
+    if (f.size() == 32) return r;
+    r.truth = f.text(32);
+    r.contactDistance = f.number(33);
     return r;
 }
 
 // The field count a header line promises, or 0 when it is not a bench.csv header.
 size_t fieldsOfHeader(const std::string& header) {
-    for (std::string_view h : {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V5, BENCH_CSV_HEADER_V4,
-                               BENCH_CSV_HEADER_V3, BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
+    for (std::string_view h :
+         {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V6, BENCH_CSV_HEADER_V5, BENCH_CSV_HEADER_V4,
+          BENCH_CSV_HEADER_V3, BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
         if (header == h) return static_cast<size_t>(std::count(h.begin(), h.end(), ',')) + 1;
     }
     return 0;
@@ -146,6 +151,8 @@ std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& so
     }
     return rows;
 }
+
+std::string benchTruthKind(const BenchRow& row) { return row.truth.substr(0, row.truth.find(' ')); }
 
 bool steadyTiming(const BenchRow& row, bool byLookup) {
     double ms = byLookup ? row.lookupMs : row.gpuMs;

@@ -18,6 +18,14 @@ inline constexpr std::string_view BENCH_CSV_HEADER =
     "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,acne_share,"
     "acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,shimmer_mean,shimmer_p99,"
     "flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,gl_renderer,contact_edge_rmse,"
+    "contact_edge_pixels,truth,contact_distance";
+// The header before the truth and the contact distance: still read (the truth unknown: empty,
+// the distance 0).
+inline constexpr std::string_view BENCH_CSV_HEADER_V6 =
+    "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
+    "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,acne_share,"
+    "acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,shimmer_mean,shimmer_p99,"
+    "flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,gl_renderer,contact_edge_rmse,"
     "contact_edge_pixels";
 // The header before the contact columns (bench.h: contactDistance): still read (what lacks: 0).
 inline constexpr std::string_view BENCH_CSV_HEADER_V5 =
@@ -53,13 +61,19 @@ inline constexpr std::string_view BENCH_CSV_HEADER_V1 =
 std::string benchCsv(std::span<const BenchRow> rows);
 
 // Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv; contact_edge_rmse
-// over contact_edge_pixels, 0 and 0 without --contact), or the 30 columns of BENCH_CSV_HEADER_V5,
+// over contact_edge_pixels, 0 and 0 without --contact; truth in the report's words, with ';' for
+// ','; contact_distance in world units), or the 32 columns of BENCH_CSV_HEADER_V6, the 30 of
+// BENCH_CSV_HEADER_V5,
 // the 29 of BENCH_CSV_HEADER_V4, the 27 of BENCH_CSV_HEADER_V3, the fifteen of
 // BENCH_CSV_HEADER_V2 or the eleven of BENCH_CSV_HEADER_V1 (what they lack: 0, box, not noisy,
 // the renderer empty). The renderer reads back with ';' where GL_RENDERER had ','. Throws
 // pcf::InputError "SOURCE:LINE: problem" on a wrong header, a wrong field count, an unknown method
 // or a field that is not a finite number.
 std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& source);
+
+// Which truth a row's errors were measured against: "hard" or "area" (the first word of
+// BenchRow::truth), "" when its file does not say (older than the truth column).
+std::string benchTruthKind(const BenchRow& row);
 
 // What the table's sentence says about where and how the numbers were taken.
 struct BenchSetup {

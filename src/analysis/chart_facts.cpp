@@ -19,17 +19,8 @@ namespace pcf {
 
 namespace {
 
-// A chart as the step names it: the file, and after '#' which stability chart ("" for bench).
-struct ChartData {
-    std::string path;
-    std::string view;
-};
-
-ChartData chartData(const std::string& chart) {
-    size_t hash = chart.rfind('#');
-    if (hash == std::string::npos) return {chart, ""};
-    return {chart.substr(0, hash), chart.substr(hash + 1)};
-}
+// A chart as the step names it (step_chart.h): the file, the view, bench or stability.
+using ChartData = StepChartRef;
 
 std::string percent(double share) {
     char buf[32];
@@ -40,7 +31,7 @@ std::string percent(double share) {
 // "measured on NAME": the renderer the file records contains NAME.
 ChartFactAnswer measuredOn(const ChartData& c, const std::string& name) {
     std::string renderer;
-    if (c.view.empty()) {
+    if (c.bench) {
         renderer = speedChartRenderer(readChartRows(c.path));
     } else {
         std::vector<StabilityRow> rows = parseStabilityCsv(readInputFile(c.path), c.path);
@@ -110,8 +101,57 @@ ChartFactAnswer goodBetween(const ChartData& c, const std::string& method) {
                 (acneBelow ? "" : "; no acne below") + (leakAbove ? "" : "; no leak above")};
 }
 
+// "measured against the KIND truth": every row's truth (bench.csv's truth column) is KIND.
+ChartFactAnswer againstTruth(const ChartData& c, const std::string& kind) {
+    std::vector<BenchRow> rows = readChartRows(c.path);
+    if (kind != "hard" && kind != "area") {
+        throw std::invalid_argument("the truth is hard or area, not '" + kind + "'");
+    }
+    for (const BenchRow& r : rows) {
+        std::string k = benchTruthKind(r);
+        if (k.empty()) return {false, c.path + " records no truth (older than its truth column)"};
+        if (k != kind) return {false, "measured against the " + r.truth + " truth"};
+    }
+    if (rows.empty()) return {false, "no rows"};
+    return {true, "truth: " + rows.front().truth};
+}
+
+// The chart's one dot `label` names (chartRowsMatching), or std::invalid_argument.
+size_t oneDot(std::span<const BenchRow> rows, const std::string& label) {
+    std::vector<size_t> picked = chartRowsMatching(rows, label);
+    if (picked.size() != 1) {
+        throw std::invalid_argument("'" + label + "' names " + std::to_string(picked.size()) +
+                                    " dots of the chart, not one");
+    }
+    return picked[0];
+}
+
+// "X is the most (least) accurate": X's dot is strictly below (above) every other dot on the
+// chart's accuracy axis (the edge RMSE, or near the contacts on a #contact chart).
+ChartFactAnswer extremeAccuracy(const ChartData& c, const std::string& label, bool most) {
+    std::vector<BenchRow> rows = readChartRows(c.path);
+    size_t k = oneDot(rows, label);
+    double mine = chartAccuracy(rows[k], c.accuracy);
+    for (size_t i = 0; i < rows.size(); ++i) {
+        double other = chartAccuracy(rows[i], c.accuracy);
+        if (i != k && (most ? other <= mine : other >= mine)) {
+            return {false, chartLabel(rows[i].point) + " " + chartTickText(other) + ", " + label +
+                               " " + chartTickText(mine)};
+        }
+    }
+    return {true, label + " " + chartTickText(mine)};
+}
+
+ChartFactAnswer mostAccurate(const ChartData& c, const std::string& label) {
+    return extremeAccuracy(c, label, true);
+}
+
+ChartFactAnswer leastAccurate(const ChartData& c, const std::string& label) {
+    return extremeAccuracy(c, label, false);
+}
+
 // A fact's words around its one argument: PREFIX ARG SUFFIX; `view` the chart it applies to
-// ("" a bench chart, "*" any chart, else a stability chart's name).
+// ("" any bench chart, "*" any chart, else a stability chart's name).
 struct FactEntry {
     std::string_view prefix;
     std::string_view suffix;
@@ -121,6 +161,9 @@ struct FactEntry {
 
 constexpr FactEntry FACTS[] = {
     {"measured on ", "", "*", measuredOn},
+    {"measured against the ", " truth", "", againstTruth},
+    {"", " is the most accurate", "", mostAccurate},
+    {"", " is the least accurate", "", leastAccurate},
     {"", ": acne falls as the bias grows", "tradeoff", acneFalls},
     {"", ": leak grows with the bias", "tradeoff", leakGrows},
     {"", ": a good bias lies between acne and leak", "tradeoff", goodBetween},
@@ -130,7 +173,8 @@ constexpr FactEntry FACTS[] = {
 std::pair<const FactEntry*, std::string> matchFact(const ChartData& c, const std::string& fact) {
     std::string known;
     for (const FactEntry& e : FACTS) {
-        if (e.view != "*" && e.view != c.view) continue;
+        bool applies = e.view == "*" || (e.view.empty() ? c.bench : !c.bench && e.view == c.view);
+        if (!applies) continue;
         known += std::string(known.empty() ? "" : "; ") + std::string(e.prefix) + "X" +
                  std::string(e.suffix);
         if (fact.size() <= e.prefix.size() + e.suffix.size()) continue;
@@ -144,13 +188,13 @@ std::pair<const FactEntry*, std::string> matchFact(const ChartData& c, const std
 }  // namespace
 
 ChartFactAnswer chartFactHolds(const std::string& chart, const std::string& fact) {
-    ChartData c = chartData(chart);
+    ChartData c = stepChartRef(chart);
     auto [entry, arg] = matchFact(c, fact);
     return entry->test(c, arg);
 }
 
 void checkChartFactKnown(const std::string& chart, const std::string& fact) {
-    matchFact(chartData(chart), fact);
+    matchFact(stepChartRef(chart), fact);
 }
 
 }  // namespace pcf

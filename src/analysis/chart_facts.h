@@ -6,6 +6,12 @@
 //
 //   measured on NAME                          any chart: GL_RENDERER contains NAME (bench.csv's
 //                                             gl_renderer, stability.csv's setup row)
+//   measured against the KIND truth           a bench chart: every row's truth (bench.csv's
+//                                             truth column) is KIND, hard or area
+//   X is the most accurate                    a bench chart: the dot X names (a label or its
+//   X is the least accurate                   first word, one dot) is strictly below (above)
+//                                             every other on the chart's accuracy axis (edge
+//                                             RMSE; near the contacts on a #contact chart)
 //   M: acne falls as the bias grows           #tradeoff: method M's acne over the onset at the
 //                                             smallest bias, under it at the largest
 //   M: leak grows with the bias               #tradeoff: M's leak under the onset at the smallest
@@ -26,9 +32,9 @@ struct ChartFactAnswer {
     std::string why;  // the numbers that decided it ("acne 0.3% at bias 0.0005")
 };
 
-// Whether `fact` holds on `chart` ("PATH" for a bench.csv, "PATH#NAME" for a stability chart,
-// as step_chart.h reads them). Throws std::invalid_argument naming the facts the chart knows
-// when none matches, InputError for the file.
+// Whether `fact` holds on `chart` ("PATH" or "PATH#contact" for a bench.csv, "PATH#NAME" for a
+// stability chart, as step_chart.h reads them). Throws std::invalid_argument naming the facts the
+// chart knows when none matches, InputError for the file.
 ChartFactAnswer chartFactHolds(const std::string& chart, const std::string& fact);
 
 // Throws std::invalid_argument as chartFactHolds does when no fact of the table matches `fact`

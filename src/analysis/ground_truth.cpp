@@ -545,11 +545,12 @@ void checkTruthArguments(const Scene& scene, glm::ivec2 frameSize,
         throw std::invalid_argument("computeGroundTruth: the target bound is NaN");
     }
     if (options.area) {
-        if (scene.light.type != LightType::Directional || !hasSize(scene.light)) {
+        if (!hasSize(scene.light)) {
             throw std::invalid_argument(
-                "computeGroundTruth: the area-light truth needs a directional light with an "
-                "angular diameter");
+                "computeGroundTruth: the area-light truth needs a light with a size (a "
+                "directional light's angular diameter, a spot light's radius)");
         }
+        checkSpotDiskCasters(scene);
         if (!(options.targetBound > 0.0f)) {
             throw std::invalid_argument("computeGroundTruth: the area-light truth needs a bound");
         }

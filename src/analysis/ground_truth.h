@@ -114,8 +114,9 @@ struct GroundTruthOptions {
     float targetBound = DEFAULT_TRUTH_TARGET_BOUND;
     // The area-light truth: each point's visibility is the fraction of the light's disk it sees
     // (light_visibility.h), integrated over the pixel with the same bound convention. Needs a
-    // directional light with an angular diameter (hasSize). Pixels the geometry proves wholly
-    // lit or wholly in the umbra (ground_truth_edges.h, areaState) keep 1 or 0 with bound 0.
+    // light with a size (hasSize: a directional light's angular diameter, a spot light's
+    // radius). Pixels the geometry proves wholly lit or wholly in the umbra (ground_truth_edges.h,
+    // areaState; under a spot only wholly lit) keep 1 or 0 with bound 0.
     bool area = false;
     // Called on the calling thread, about ten times a second and once at the end, with the
     // number of rows done out of the frame's height.
@@ -123,7 +124,8 @@ struct GroundTruthOptions {
 };
 
 // Throws std::invalid_argument for a frame side < 1, spp out of range or a NaN target, and for
-// `area` without a directional light with a size or without a positive target. The scene's
+// `area` without a light with a size, without a positive target, or with a sphere reaching
+// behind a spot light's disk (light_visibility.h: checkSpotDiskCasters). The scene's
 // camera must have its clip planes set (presets and scene files do).
 GroundTruth computeGroundTruth(const Scene& scene, glm::ivec2 frameSize,
                                const GroundTruthOptions& options = {});

@@ -323,9 +323,62 @@ int EdgeFinder::areaHorizon(const RayCone& cone, const Footprint& f, int object,
     return x > sinHalf * (1.0 + 1e-9) ? 1 : x < -sinHalf * (1.0 + 1e-9) ? 0 : -1;
 }
 
+int EdgeFinder::areaSpotState(const RayCone& cone, int object) const {
+    const SceneObject& obj = mScene.objects[static_cast<size_t>(object)];
+    const Light& light = mScene.light;
+    Footprint f = footprint(cone, object);
+    if (!f.bounded) return -1;
+    if (f.radius < 0.0) return 1;  // the cone does not meet the object
+    glm::dvec3 centre(light.positionWs);
+    glm::dvec3 axis = glm::normalize(glm::dvec3(light.directionWs));
+    double radius = light.radius;
+    glm::dvec3 toBall = f.centre - centre;
+    double dist = glm::length(toBall);
+    if (dist <= f.radius) return -1;
+    double spread = angleBetween(toBall, axis) + std::asin(f.radius / dist);
+    if (!(spread < glm::radians(static_cast<double>(light.coneDeg)))) return -1;
+    const Primitive& shape = obj.shape;
+    glm::dvec3 n;
+    if (const Plane* p = std::get_if<Plane>(&shape)) {
+        n = glm::dvec3(p->normalWs);
+        if (glm::dot(n, cone.eye - glm::dvec3(p->centreWs)) < 0.0) n = -n;
+    } else if (std::holds_alternative<Box>(shape)) {
+        std::optional<Hit> hit = intersect(shape, Ray{glm::vec3(cone.eye), glm::vec3(cone.axis)});
+        if (!hit) return -1;
+        n = glm::dvec3(hit->normalWs);
+    } else {
+        return -1;  // a sphere's normal turns within the ball
+    }
+    double na = glm::dot(n, axis);
+    double lowest =
+        glm::dot(n, centre - f.centre) - radius * std::sqrt(std::max(0.0, 1.0 - na * na));
+    if (!(lowest > f.radius * (1.0 + 1e-9))) return -1;
+    if (!obj.receivesShadow) return 1;
+    double reach = std::max(f.radius, radius) * (1.0 + 1e-9);
+    glm::dvec3 seg = centre - f.centre;
+    double segLength2 = glm::dot(seg, seg);
+    for (const Caster& c : mCasters) {
+        if (c.object == object) continue;
+        const Primitive& casterShape = mScene.objects[static_cast<size_t>(c.object)].shape;
+        glm::dvec3 q;
+        double s;
+        if (const Sphere* sp = std::get_if<Sphere>(&casterShape)) {
+            q = glm::dvec3(sp->centreWs);
+            s = sp->radius;
+        } else {
+            Aabb box = bounds(casterShape);
+            q = glm::dvec3(box.centreWs());
+            s = 0.5 * glm::length(glm::dvec3(box.extentWs()));
+        }
+        double t = std::clamp(glm::dot(q - f.centre, seg) / segLength2, 0.0, 1.0);
+        if (glm::length(q - (f.centre + seg * t)) <= s + reach) return -1;
+    }
+    return 1;
+}
+
 int EdgeFinder::areaState(const RayCone& cone, int object, double tanHalf) const {
     const SceneObject& obj = mScene.objects[static_cast<size_t>(object)];
-    if (mScene.light.type != LightType::Directional) return -1;
+    if (mScene.light.type != LightType::Directional) return areaSpotState(cone, object);
     Footprint f = footprint(cone, object);
     if (!f.bounded) return -1;
     if (f.radius < 0.0) return 1;  // the cone does not meet the object
@@ -379,7 +432,8 @@ bool EdgeFinder::spotShadowEdgeNear(const Footprint& f, const Caster& caster) co
     double theta = angleBetween(f.centre - light, v);
     if (theta > gamma + beta) return false;  // outside the caster's shadow cone
     // Inside a sphere's cone, upstream and downstream are split by its surface; a box's or a
-    // rectangle's cone is not followed further here (no preset has a spot light).
+    // rectangle's cone is not followed further here: a pixel in it is refined (safe, only
+    // slower; post-under-spot's post is such a box).
     bool sphere = std::holds_alternative<Sphere>(shape);
     return !(sphere && theta < gamma - beta && surfaceDistance(shape, f.centre) > f.radius);
 }

@@ -70,6 +70,7 @@ class EdgeFinder {
     // (the prism minus the caster has an upstream and a downstream part, and a path from one
     // to the other within the prism crosses the caster). The horizon: a sphere's normal n sees
     // the whole disk when n . toLight > sin(half), none when < -sin(half).
+    // For a spot light with a radius R (tanHalf unused): 1 or -1 (areaSpotState), never 0.
     int areaState(const RayCone& cone, int object, double tanHalf) const;
 
     // The ball around `object`'s points met by the cone (see the top of this file).
@@ -89,6 +90,13 @@ class EdgeFinder {
     bool spotShadowEdgeNear(const Footprint& f, const Caster& caster) const;
     double across(const Footprint& f, const Caster& caster) const;
     int areaHorizon(const RayCone& cone, const Footprint& f, int object, double sinHalf) const;
+    // A spot's disk (centre L, radius R, axis a): 1 when every point of the ball (centre c,
+    // radius rho) lies in the spot's cone, sees all of the disk above its tangent plane (a
+    // plane or one box face, normal n toward the eye: n . (L - c) - R sqrt(1 - (n . a)^2) -
+    // rho > 0) and no caster's bounding ball comes within max(rho, R) of the segment from c to
+    // L (a point (1 - t) x + t y of a segment from the ball to the disk lies within (1 - t) rho
+    // + t R of (1 - t) c + t L); else -1: the umbra is not told apart, it is integrated.
+    int areaSpotState(const RayCone& cone, int object) const;
 };
 
 // The edges of a box (12) or a rectangle (4) as pairs of corners; none for a sphere.

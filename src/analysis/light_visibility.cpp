@@ -6,10 +6,13 @@
 #include <numbers>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
 #include "analysis/ground_truth_edges.h"
+#include "scene/light.h"
 
 namespace pcf {
 
@@ -24,11 +27,28 @@ struct Interval {
 
 // The plane through p and one chord of the light disk, p at the origin: x along the chord, y
 // toward it; the chord is the line y = d, its point a (the disk's own coordinate) at x = x0 + a.
+// finite: the disk is a spot's, at its place: the chord's line is where this plane meets the
+// disk's, and what lies beyond it (y > d) is behind the light.
 struct ChordPlane {
     glm::dvec3 p, u, v, n;
     double d, x0;
+    bool finite;
     glm::dvec2 at(const glm::dvec3& q) const { return {glm::dot(q - p, u), glm::dot(q - p, v)}; }
 };
+
+// The part of a convex polygon (or segment, or point) with y <= d: one half-plane of
+// Sutherland and Hodgman, "Reentrant Polygon Clipping" (CACM, 1974).
+std::vector<glm::dvec2> clipBelow(const std::vector<glm::dvec2>& poly, double d) {
+    std::vector<glm::dvec2> out;
+    size_t n = poly.size();
+    for (size_t i = 0; i < n; ++i) {
+        const glm::dvec2& a = poly[i];
+        const glm::dvec2& b = poly[(i + 1) % n];
+        if (a.y <= d) out.push_back(a);
+        if ((a.y <= d) != (b.y <= d)) out.push_back(a + (b - a) * ((d - a.y) / (b.y - a.y)));
+    }
+    return out;
+}
 
 // The chord's points reached by the rays from p at angles [phiLo, phiHi] (from +x, in the
 // plane): the rays toward the chord have angles in (0, pi), and the ray at angle phi meets it
@@ -80,6 +100,10 @@ std::optional<Interval> polygonInterval(const Primitive& shape, const ChordPlane
     }
     if (pts.empty()) return std::nullopt;
     std::vector<glm::dvec2> hull = convexHull2d(std::move(pts));
+    if (c.finite) {
+        hull = clipBelow(hull, c.d);
+        if (hull.empty()) return std::nullopt;
+    }
     if (hull.size() >= 3) {
         bool inside = true;
         for (size_t i = 0; i < hull.size(); ++i) {
@@ -173,15 +197,14 @@ ChordPanel makeChordPanel(double a, double b, ChordValue ga, ChordValue gm, Chor
         a, b, ga, gm, gb, v, bl, 2.0 * std::abs(dv), 2.0 * std::abs(db), 2.0 * std::abs(dv + db)};
 }
 
-// f by chords along `along`, stacked along `across` (both unit, across L), from `firstPanels`
-// panels in theta. The visible and the blocked length are integrated by the same rule and
-// f = V / (V + B): a point that sees all of the disk (B = 0 on every chord) or none of it gets
-// exactly 1 or 0. Its error is at most min(e_V, e_B) / (V + B) plus f's share of the rule's
-// error on the chord lengths, which are smooth (cos^2).
+// f by chords along `along`, stacked along `across` (both unit, in the disk's plane), of the
+// disk of `radius` about `centre`, from `firstPanels` panels in theta. The visible and the blocked
+// length are integrated by the same rule and f = V / (V + B): a point that sees all of the disk (B
+// = 0 on every chord) or none of it gets exactly 1 or 0. Its error is at most min(e_V, e_B) / (V +
+// B) plus f's share of the rule's error on the chord lengths, which are smooth (cos^2).
 DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 facingWs, int object,
-                           double target, glm::dvec3 travel, glm::dvec3 along, glm::dvec3 across,
-                           double radius, int firstPanels) {
-    glm::dvec3 centre = posWs - travel;  // the disk one unit toward the light
+                           double target, glm::dvec3 centre, bool finite, glm::dvec3 along,
+                           glm::dvec3 across, double radius, int firstPanels) {
     // The chord at height R sin(theta), weighted by its share R cos(theta) dtheta.
     auto g = [&](double theta) {
         double h = radius * std::sin(theta);
@@ -191,7 +214,7 @@ DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 faci
         glm::dvec3 perp = toChord - along * x0;
         double d = glm::length(perp);
         glm::dvec3 v = perp / d;
-        ChordPlane c{posWs, along, v, glm::cross(along, v), d, x0};
+        ChordPlane c{posWs, along, v, glm::cross(along, v), d, x0, finite};
         double visible = chordVisible(scene, c, along, facingWs, object, w);
         return ChordValue{visible * w, (2.0 * w - visible) * w};
     };
@@ -235,28 +258,68 @@ DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 faci
     }
 }
 
+// The disk the light is: where, its axes, how wide; finite for a spot's (at its place).
+struct LightDisk {
+    glm::dvec3 centre, e1, e2;
+    double radius;
+    bool finite;
+};
+
+// Two unit vectors across `axis` (unit), and across each other.
+std::pair<glm::dvec3, glm::dvec3> acrossAxis(glm::dvec3 axis) {
+    glm::dvec3 helper = std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+    glm::dvec3 e1 = glm::normalize(glm::cross(axis, helper));
+    return {e1, glm::cross(axis, e1)};
+}
+
 }  // namespace
+
+void checkSpotDiskCasters(const Scene& scene) {
+    const Light& light = scene.light;
+    if (light.type != LightType::Spot) return;
+    glm::dvec3 axis = glm::normalize(glm::dvec3(light.directionWs));
+    for (const SceneObject& o : scene.objects) {
+        const Sphere* s = std::get_if<Sphere>(&o.shape);
+        if (!o.castsShadow || s == nullptr) continue;
+        double ahead = glm::dot(glm::dvec3(s->centreWs) - glm::dvec3(light.positionWs), axis);
+        if (ahead < static_cast<double>(s->radius)) {
+            throw std::invalid_argument(
+                "the area-light truth of a spot light with a radius: sphere '" + o.name +
+                "' reaches behind the light's disk");
+        }
+    }
+}
 
 LightFraction lightVisibleFraction(const Scene& scene, glm::dvec3 posWs, glm::dvec3 facingWs,
                                    int object, double target) {
     const Light& light = scene.light;
-    if (light.type != LightType::Directional || !hasSize(light)) {
-        throw std::invalid_argument(
-            "lightVisibleFraction: needs a directional light with an angular diameter");
+    if (!hasSize(light)) {
+        throw std::invalid_argument("lightVisibleFraction: needs a light with a size");
     }
-    glm::dvec3 travel = glm::normalize(glm::dvec3(light.directionWs));
-    glm::dvec3 helper = std::abs(travel.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-    glm::dvec3 e1 = glm::normalize(glm::cross(travel, helper));
-    glm::dvec3 e2 = glm::cross(travel, e1);
-    double radius = std::tan(0.5 * glm::radians(static_cast<double>(light.angularDiameterDeg)));
+    LightDisk disk{};
+    if (light.type == LightType::Directional) {
+        glm::dvec3 travel = glm::normalize(glm::dvec3(light.directionWs));
+        auto [e1, e2] = acrossAxis(travel);
+        // The gnomonic disk one unit toward the light.
+        disk = {posWs - travel, e1, e2,
+                std::tan(0.5 * glm::radians(static_cast<double>(light.angularDiameterDeg))), false};
+    } else {
+        // The spot's cone is its centre's: a point outside it gets no light at all.
+        if (!towardLight(light, glm::vec3(posWs)).insideCone) return {0.0, 0.0};
+        glm::dvec3 axis = glm::normalize(glm::dvec3(light.directionWs));
+        auto [e1, e2] = acrossAxis(axis);
+        disk = {glm::dvec3(light.positionWs), e1, e2, static_cast<double>(light.radius), true};
+    }
     // Chords one way and across: a sliver of the disk thinner than the chords' spacing and
     // parallel to them escapes one integral but not the other, so they are compared: the mean,
     // with half their difference added to the worse bound. More first panels while that is
     // above the target.
     DiskIntegral a{}, b{};
     for (int first : {8, 32, 128}) {
-        a = integrateDisk(scene, posWs, facingWs, object, target, travel, e1, e2, radius, first);
-        b = integrateDisk(scene, posWs, facingWs, object, target, travel, e2, -e1, radius, first);
+        a = integrateDisk(scene, posWs, facingWs, object, target, disk.centre, disk.finite, disk.e1,
+                          disk.e2, disk.radius, first);
+        b = integrateDisk(scene, posWs, facingWs, object, target, disk.centre, disk.finite, disk.e2,
+                          -disk.e1, disk.radius, first);
         double bound = 0.5 * std::abs(a.visible - b.visible) + std::max(a.bound, b.bound);
         if (bound <= target || first == 128) {
             return {0.5 * (a.visible + b.visible), bound};

@@ -19,7 +19,14 @@
 // escapes one but not the other; the mean is kept, with half their difference added to the
 // bound. Assumed, and not checked: no blocker's image (or visible part) smaller than the
 // chords' spacing both ways.
-// The spot light's cone is the centre's (a point outside it sees nothing of the light).
+//
+// A spot light's disk (light.h: radius, centred on positionWs, facing along directionWs) is the
+// same computation at a finite distance: the disk is where it is, with uniform measure over its
+// area (f is the share of the light's area p sees, not weighted by the angles to it), and a
+// caster counts only up to the light: the plane through p and a chord meets the disk's plane
+// along the chord's line, so a box's slice is clipped there (Sutherland and Hodgman, 1974); a
+// sphere may not reach behind the disk (checkSpotDiskCasters). The spot's cone is its centre's:
+// a point outside it sees nothing of the light.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -37,8 +44,14 @@ struct LightFraction {
 // `object` (-1: none; it is then shadowed by every caster), whose normal toward the side the
 // camera sees is facingWs (unit). Every caster but `object` itself counts, as in litByLight; a
 // non-receiver sees the whole light above its horizon. `target`: the bound aimed for.
-// A directional light only: throws std::invalid_argument for a spot light.
+// A directional light with an angular diameter or a spot light with a radius (hasSize), whose
+// scene passes checkSpotDiskCasters; throws std::invalid_argument for a light without a size.
 LightFraction lightVisibleFraction(const Scene& scene, glm::dvec3 posWs, glm::dvec3 facingWs,
                                    int object, double target);
+
+// Throws std::invalid_argument naming the sphere when a spot light's scene has a casting sphere
+// that reaches behind the light's disk (its slice would need clipping at the disk, which is not
+// done); nothing for other lights.
+void checkSpotDiskCasters(const Scene& scene);
 
 }  // namespace pcf

@@ -60,6 +60,24 @@ std::string speedChartRenderer(std::span<const BenchRow> rows) {
     return "";
 }
 
+std::string speedChartTruth(std::span<const BenchRow> rows) {
+    for (const BenchRow& r : rows) {
+        if (!r.truth.empty()) return r.truth;
+    }
+    return "";
+}
+
+std::string contactAxisLabel(std::span<const BenchRow> rows, bool brief) {
+    int pixels = rows.empty() ? 0 : rows.front().contact.edgePixels;
+    double distance = rows.empty() ? 0.0 : rows.front().contactDistance;
+    char within[64];
+    std::snprintf(within, sizeof within, "within %g world unit%s of a caster", distance,
+                  distance == 1.0 ? "" : "s");
+    if (brief) return "edge-band RMSE " + std::string(within);
+    return "aliasing near the contacts: edge-band RMSE over the " + std::to_string(pixels) +
+           " edge pixels " + within;
+}
+
 SpeedChartText speedChartTextFor(std::span<const BenchRow> rows, const SpeedChartText& text,
                                  glm::ivec2 size, ChartTiming timing) {
     SpeedChartText out = text;

@@ -102,6 +102,15 @@ std::string noisyNote();
 
 // The GL_RENDERER the rows were measured on (bench.csv's gl_renderer), "" when not recorded.
 std::string speedChartRenderer(std::span<const BenchRow> rows);
+// The truth the rows' errors are against, in the report's words (bench.csv's truth: "area (a
+// sun disk of 2 degrees)"), "" when not recorded.
+std::string speedChartTruth(std::span<const BenchRow> rows);
+
+// The contact chart's y axis (ChartAccuracy::ContactRmse): "aliasing near the contacts:
+// edge-band RMSE over the 676 edge pixels within 1 world unit of a caster" (the rows'
+// contact_edge_pixels and contact_distance); brief: "edge-band RMSE within 1 world unit of a
+// caster", for a lesson frame's narrow chart.
+std::string contactAxisLabel(std::span<const BenchRow> rows, bool brief = false);
 
 // The text as drawn: when any row is noisy in the timing, noisyNote ends the subtitle; the
 // subtitle is wrapped at spaces to the chart's width at its type size ('\n' still breaks: a

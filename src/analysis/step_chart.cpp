@@ -1,6 +1,7 @@
 #include "analysis/step_chart.h"
 
 #include <filesystem>
+#include <stdexcept>
 
 #include "analysis/chart_axes.h"
 #include "analysis/stability_figures.h"
@@ -27,24 +28,12 @@ std::vector<StabilityRow> readStabilityRows(const std::string& csvPath) {
     return limitChartRows(parseStabilityCsv(readInputFile(csvPath), csvPath), csvPath);
 }
 
-// A step's chart: "PATH" (a bench.csv) or "PATH#NAME" (a stability.csv and which of its charts).
-struct ChartRef {
-    std::string path;
-    std::string view;  // empty for a bench chart
-};
-
-ChartRef chartRef(const std::string& chart) {
-    size_t hash = chart.rfind('#');
-    if (hash == std::string::npos) return {chart, ""};
-    return {chart.substr(0, hash), chart.substr(hash + 1)};
-}
-
-std::string stabilitySubtitle(const ChartRef& ref) {
+std::string stabilitySubtitle(const StepChartRef& ref) {
     return "measured by pcfscope stability, " + std::filesystem::path(ref.path).filename().string();
 }
 
 // The sweep chart a stability chart's name names, or InputError.
-const SweepChart& sweepChartOf(const ChartRef& ref) {
+const SweepChart& sweepChartOf(const StepChartRef& ref) {
     if (const SweepChart* c = sweepChartNamed(ref.view)) return *c;
     throw InputError(
         ref.path, 0,
@@ -52,12 +41,19 @@ const SweepChart& sweepChartOf(const ChartRef& ref) {
 }
 
 // The chart's text and type for a speed chart.
-SpeedChartText speedChartText(const StepChart& chart, const std::vector<BenchRow>& rows) {
+SpeedChartText speedChartText(const StepChart& chart, const StepChartRef& ref,
+                              const std::vector<BenchRow>& rows) {
     SpeedChartText labels;
-    labels.title = "Speed against accuracy";
-    // The renderer (bench.csv's gl_renderer) and, on llvmpipe, what carries over to a GPU.
+    bool contact = ref.accuracy == ChartAccuracy::ContactRmse;
+    // Short: the title and the axis's name are not wrapped, and a lesson frame's chart is narrow.
+    labels.title = contact ? "Accuracy near the contacts" : "Speed against accuracy";
+    if (contact) labels.yLabel = contactAxisLabel(rows, true);
+    // Which truth the errors are against (bench.csv's truth, when the file says), the renderer
+    // (its gl_renderer) and, on llvmpipe, what carries over to a GPU.
+    std::string truth = speedChartTruth(rows);
     labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
-                      std::filesystem::path(chart.chart).filename().string() + "; " +
+                      std::filesystem::path(ref.path).filename().string() +
+                      (truth.empty() ? "" : "; truth: " + truth) + "; " +
                       chartRendererLine(speedChartRenderer(rows), true);
     if (!chart.highlight.empty()) labels.highlight = chartRowsMatching(rows, chart.highlight);
     labels.minFontPx = chart.minFontPx;
@@ -65,16 +61,38 @@ SpeedChartText speedChartText(const StepChart& chart, const std::vector<BenchRow
     return labels;
 }
 
+// A bench chart's rows, and none without the data its view draws (a contact chart of a bench
+// run without --contact would be a row of zeros).
+std::vector<BenchRow> readBenchChartRows(const StepChartRef& ref) {
+    std::vector<BenchRow> rows = readChartRows(ref.path);
+    if (rows.empty()) throw InputError(ref.path, 0, "no rows to chart");
+    if (ref.accuracy == ChartAccuracy::ContactRmse && !(rows.front().contactDistance > 0.0)) {
+        throw InputError(ref.path, 0,
+                         "no contact error to chart (measured without bench --contact, or "
+                         "older than bench.csv's contact_distance column)");
+    }
+    return rows;
+}
+
 }  // namespace
+
+StepChartRef stepChartRef(const std::string& chart) {
+    size_t hash = chart.rfind('#');
+    if (hash == std::string::npos) return {chart, "", true, ChartAccuracy::EdgeRmse};
+    std::string view = chart.substr(hash + 1);
+    bool contact = view == CONTACT_CHART_VIEW;
+    return {chart.substr(0, hash), view, contact,
+            contact ? ChartAccuracy::ContactRmse : ChartAccuracy::EdgeRmse};
+}
 
 std::vector<BenchRow> readChartRows(const std::string& csvPath) {
     return limitChartRows(parseBenchCsv(readInputFile(csvPath), csvPath), csvPath);
 }
 
 void checkStepChart(const std::string& chart) {
-    ChartRef ref = chartRef(chart);
-    if (ref.view.empty()) {
-        if (readChartRows(ref.path).empty()) throw InputError(ref.path, 0, "no rows to chart");
+    StepChartRef ref = stepChartRef(chart);
+    if (ref.bench) {
+        readBenchChartRows(ref);
         return;
     }
     std::vector<StabilityRow> rows = readStabilityRows(ref.path);
@@ -86,14 +104,20 @@ void checkStepChart(const std::string& chart) {
 }
 
 void checkStepChartHighlight(const std::string& chart, const std::string& highlight) {
-    chartRowsMatching(readChartRows(chartRef(chart).path), highlight);
+    StepChartRef ref = stepChartRef(chart);
+    if (!ref.bench) {
+        throw std::invalid_argument("needs a bench chart (chart = \"....csv\" or \"....csv#" +
+                                    std::string(CONTACT_CHART_VIEW) + "\")");
+    }
+    chartRowsMatching(readChartRows(ref.path), highlight);
 }
 
 std::vector<uint8_t> drawStepChart(const StepChart& chart, glm::ivec2 size) {
-    ChartRef ref = chartRef(chart.chart);
-    if (ref.view.empty()) {
-        std::vector<BenchRow> rows = readChartRows(chart.chart);
-        return drawSpeedChart(rows, size, speedChartText(chart, rows));
+    StepChartRef ref = stepChartRef(chart.chart);
+    if (ref.bench) {
+        std::vector<BenchRow> rows = readBenchChartRows(ref);
+        return drawSpeedChart(rows, size, speedChartText(chart, ref, rows), ChartTiming::Scene,
+                              ref.accuracy);
     }
     std::vector<StabilityRow> rows = readStabilityRows(ref.path);
     std::vector<uint8_t> rgba =
@@ -103,13 +127,13 @@ std::vector<uint8_t> drawStepChart(const StepChart& chart, glm::ivec2 size) {
 }
 
 std::vector<ChartTextBox> stepChartTexts(const StepChart& chart, glm::ivec2 size) {
-    ChartRef ref = chartRef(chart.chart);
-    if (ref.view.empty()) {
-        std::vector<BenchRow> rows = readChartRows(chart.chart);
-        SpeedChartText text = speedChartTextFor(rows, speedChartText(chart, rows), size);
-        SpeedChartLayout layout = layoutSpeedChart(
-            rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse, text.highlight, text.minFontPx,
-            text.keptLabelsOnly, subtitleLineCount(text.subtitle));
+    StepChartRef ref = stepChartRef(chart.chart);
+    if (ref.bench) {
+        std::vector<BenchRow> rows = readBenchChartRows(ref);
+        SpeedChartText text = speedChartTextFor(rows, speedChartText(chart, ref, rows), size);
+        SpeedChartLayout layout =
+            layoutSpeedChart(rows, size, ChartTiming::Scene, ref.accuracy, text.highlight,
+                             text.minFontPx, text.keptLabelsOnly, subtitleLineCount(text.subtitle));
         return speedChartTextBoxes(layout, text);
     }
     std::vector<StabilityRow> rows = readStabilityRows(ref.path);

@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@
 #include "analysis/bench_report.h"
 #include "analysis/chart_axes.h"
 #include "analysis/difference_image.h"
+#include "analysis/light_visibility.h"
 #include "analysis/speed_chart.h"
 #include "analysis/stability.h"
 #include "app/cli_util.h"
@@ -222,8 +224,9 @@ BenchOptions parseSweep(const BenchCommandOptions& o) {
 // frame pixel; issue 24's run at 8192x8192 had reached 9.8 GiB (157 a pixel) and not finished.
 constexpr std::uint64_t BENCH_BYTES_PER_PIXEL = 160;
 
-// --truth area: the truth integrates over the light's disk, the one pcss filters for
-// (scene/pcss.h effectiveLightSizeDeg: --light-size, else the scene's, else the sun's).
+// --truth area: the truth integrates over the light's disk: a sun's, the one pcss filters for
+// (scene/pcss.h effectiveLightSizeDeg: --light-size, else the scene's, else the sun's), or a
+// spot's of the scene's radius (light_visibility.h).
 void applyTruth(const BenchCommandOptions& o, BenchPlan& plan) {
     if (o.truth != "hard" && o.truth != "area") {
         throw UsageError("unknown --truth '" + o.truth + "' (known: hard, area)");
@@ -231,9 +234,17 @@ void applyTruth(const BenchCommandOptions& o, BenchPlan& plan) {
     plan.config.options.areaTruth = o.truth == "area";
     Light& light = plan.config.scene.light;
     if (!plan.config.options.areaTruth) return;
-    if (light.type != LightType::Directional) {
-        throw UsageError("--truth area takes a directional light (scene '" +
-                         plan.config.scene.name + "' has a spot light)");
+    if (light.type == LightType::Spot) {
+        if (!hasSize(light)) {
+            throw UsageError("--truth area takes a light with a size (scene '" +
+                             plan.config.scene.name + "' has a spot light without a radius)");
+        }
+        try {
+            checkSpotDiskCasters(plan.config.scene);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(plan.config.scene.name + ": " + e.what());
+        }
+        return;
     }
     light.angularDiameterDeg = effectiveLightSizeDeg(light, plan.config.options.base.lightSize);
 }
@@ -241,9 +252,15 @@ void applyTruth(const BenchCommandOptions& o, BenchPlan& plan) {
 // Which truth the report and the charts say they measured against.
 std::string truthWords(const BenchPlan& plan) {
     if (!plan.config.options.areaTruth) return "hard (the light's centre)";
+    const Light& light = plan.config.scene.light;
     char buf[80];
-    std::snprintf(buf, sizeof buf, "area (a sun disk of %g degrees)",
-                  static_cast<double>(plan.config.scene.light.angularDiameterDeg));
+    if (light.type == LightType::Spot) {
+        std::snprintf(buf, sizeof buf, "area (a spot disk of radius %g)",
+                      static_cast<double>(light.radius));
+    } else {
+        std::snprintf(buf, sizeof buf, "area (a sun disk of %g degrees)",
+                      static_cast<double>(light.angularDiameterDeg));
+    }
     return buf;
 }
 
@@ -405,16 +422,9 @@ void writeCharts(const BenchPlan& plan, const BenchResult& result, bool quick,
     writePngRgba8(
         (staging / STABILITY_CHART).string(), plan.chartSize.x, plan.chartSize.y,
         drawSpeedChart(result.rows, plan.chartSize, text, plan.timing, ChartAccuracy::Shimmer));
-    float contact = plan.config.options.contactDistance;
-    if (contact > 0.0f) {
-        int pixels = result.rows.empty() ? 0 : result.rows.front().contact.edgePixels;
-        char buf[160];
-        std::snprintf(buf, sizeof buf,
-                      "aliasing near the contacts: edge-band RMSE over the %d edge pixels within "
-                      "%g world unit%s of a caster",
-                      pixels, static_cast<double>(contact), contact == 1.0f ? "" : "s");
+    if (plan.config.options.contactDistance > 0.0f) {
         text.title = "Speed against accuracy near the contacts" + indicative + ": " + where;
-        text.yLabel = buf;
+        text.yLabel = contactAxisLabel(result.rows);
         writePngRgba8((staging / CONTACT_CHART).string(), plan.chartSize.x, plan.chartSize.y,
                       drawSpeedChart(result.rows, plan.chartSize, text, plan.timing,
                                      ChartAccuracy::ContactRmse));
@@ -442,8 +452,12 @@ int runBenchCommand(const BenchCommandOptions& o) {
         throw UsageError(e.what());
     }
     getloadavg(&loadEnd, 1);
-    // Every row names the renderer it was timed on (bench.csv's gl_renderer, the charts' subtitle).
-    for (BenchRow& row : result.rows) row.glRenderer = gl->renderer();
+    // Every row names the renderer it was timed on (bench.csv's gl_renderer, the charts' subtitle)
+    // and the truth it was measured against (bench.csv's truth: a lesson's chart says it).
+    for (BenchRow& row : result.rows) {
+        row.glRenderer = gl->renderer();
+        row.truth = truthWords(plan);
+    }
     BenchSetup setup = setupOf(plan, result, *gl, loadStart, loadEnd);
     std::string markdown = benchMarkdown(result.rows, setup);
     writeTextFile((staging.path() / CSV_NAME).string(), benchCsv(result.rows));
@@ -461,10 +475,12 @@ int runBenchCommand(const BenchCommandOptions& o) {
     }
     outputs.commitStaged(staging.path(), o.out, names);
     std::fputs(markdown.c_str(), stdout);
+    std::string charts = std::string(ACCURACY_CHART) + ", " + STABILITY_CHART;
+    if (plan.config.options.contactDistance > 0.0f) charts += ", " + std::string(CONTACT_CHART);
     std::fprintf(stderr,
-                 "bench: %zu runs in %.1f s; wrote %s/{%s, %s, %s, %s} and %zu images in %s/diff\n",
+                 "bench: %zu runs in %.1f s; wrote %s/{%s, %s, %s} and %zu images in %s/diff\n",
                  result.rows.size(), reporter.clock().seconds(), o.out.c_str(), CSV_NAME, MD_NAME,
-                 ACCURACY_CHART, STABILITY_CHART, result.rows.size(), o.out.c_str());
+                 charts.c_str(), result.rows.size(), o.out.c_str());
     return 0;
 }
 
@@ -518,8 +534,9 @@ Command addBenchCommand(CLI::App& app) {
                     "are then integrated to a 1/512 bound");
     sub->add_option("--truth", o->truth,
                     "hard: the truth of the light's centre (default); area: integrated over the "
-                    "light's disk (--light-size, else the scene's angular_diameter, else the "
-                    "sun's 0.53 degrees), the truth soft shadows and pcss are measured against");
+                    "light's disk (a sun's: --light-size, else the scene's angular_diameter, else "
+                    "the sun's 0.53 degrees; a spot's: the scene's radius), the truth soft "
+                    "shadows and pcss are measured against");
     sub->add_option("--contact", o->contact,
                     "D: also the edge-band RMSE within D world units of a caster (bench.csv's "
                     "contact_edge_rmse) and its chart, speed_vs_contact.png: where a soft "

@@ -11,6 +11,7 @@
 #include "analysis/bench_report.h"
 #include "analysis/chart_facts.h"
 #include "analysis/speed_chart.h"
+#include "analysis/step_chart.h"
 #include "app/commands.h"
 #include "app/session.h"
 #include "app/step_view.h"
@@ -29,16 +30,16 @@ namespace {
 constexpr glm::ivec2 CHECKED_FRAMES[] = {{1024, 768}, {1280, 720}, {1600, 900}, {1920, 1080}};
 
 // A bench chart's order: whether a's metric is less than b's (time: the median scene pass, as
-// the chart's x axis; rmse: the edge RMSE, its y axis). Each label must pick one row. Any other
-// chart claim is a fact of the chart's table (analysis/chart_facts.h).
+// the chart's x axis; rmse: its y axis, the edge RMSE, or near the contacts on a "#contact"
+// chart). Each label must pick one row. Any other chart claim is a fact of the chart's table
+// (analysis/chart_facts.h).
 ClaimWorld chartWorld(const LessonStep& step) {
     ClaimWorld world;
     world.chartLess = [&step](const std::string& a, const std::string& b,
                               const std::string& metric) -> std::variant<bool, std::string> {
-        if (step.chart.empty() || step.chart.find('#') != std::string::npos) {
-            return std::string("the step shows no bench chart");
-        }
-        std::vector<BenchRow> rows = parseBenchCsv(readInputFile(step.chart), step.chart);
+        StepChartRef ref = stepChartRef(step.chart);
+        if (step.chart.empty() || !ref.bench) return std::string("the step shows no bench chart");
+        std::vector<BenchRow> rows = parseBenchCsv(readInputFile(ref.path), ref.path);
         double value[2] = {0.0, 0.0};
         const std::string* labels[2] = {&a, &b};
         for (int k = 0; k < 2; ++k) {
@@ -53,8 +54,8 @@ ClaimWorld chartWorld(const LessonStep& step) {
                        " dots of the chart, not one";
             }
             const BenchRow& r = rows[picked[0]];
-            value[k] = metric == "time" ? chartMs(r, ChartTiming::Scene)
-                                        : chartAccuracy(r, ChartAccuracy::EdgeRmse);
+            value[k] =
+                metric == "time" ? chartMs(r, ChartTiming::Scene) : chartAccuracy(r, ref.accuracy);
         }
         return value[0] < value[1];
     };

@@ -4,16 +4,19 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "analysis/ground_truth.h"
 #include "analysis/ground_truth_conics.h"
+#include "analysis/light_visibility.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
 #include "base/memory_budget.h"
 #include "render/image_io.h"
+#include "scene/presets.h"
 
 namespace pcf {
 
@@ -46,10 +49,6 @@ void checkTruthOptions(const TruthCommandOptions& o) {
     }
     if (!o.scene.empty() && !o.sceneFile.empty()) {
         throw UsageError("give --scene or --scene-file, not both");
-    }
-    if (o.lightSize >= 0.0f && !(o.lightSize <= MAX_ANGULAR_DIAMETER_DEG)) {
-        throw UsageError("--light-size " + std::to_string(o.lightSize) + " is out of range (0.." +
-                         std::to_string(MAX_ANGULAR_DIAMETER_DEG) + " degrees)");
     }
     if (o.out.empty()) throw UsageError("truth needs -o FILE.exr");
     requireExtension("-o", o.out, ".exr");
@@ -96,20 +95,26 @@ void sayWalkedObjects(const Scene& scene) {
     }
 }
 
-// --light-size replaces a directional light's angular diameter; a spot light with a radius has
-// no area truth yet.
+// --light-size: the directional light's angular diameter, degrees, or the spot light's radius,
+// world units (light.h), each in its range; then a spot disk's casters are checked for what its
+// truth can integrate.
 void applyTruthLightSize(const TruthCommandOptions& o, Scene& scene) {
     if (o.lightSize >= 0.0f) {
-        if (scene.light.type != LightType::Directional) {
-            throw UsageError("--light-size is a directional light's angular diameter; " +
-                             scene.name + " has a spot light");
+        bool spot = scene.light.type == LightType::Spot;
+        float most = spot ? MAX_SPOT_RADIUS : MAX_ANGULAR_DIAMETER_DEG;
+        if (!(o.lightSize <= most)) {
+            char text[160];
+            std::snprintf(text, sizeof text, "--light-size %g is out of range (0..%g %s)",
+                          static_cast<double>(o.lightSize), static_cast<double>(most),
+                          spot ? "world units: a spot light's radius" : "degrees");
+            throw UsageError(text);
         }
-        scene.light.angularDiameterDeg = o.lightSize;
+        (spot ? scene.light.radius : scene.light.angularDiameterDeg) = o.lightSize;
     }
-    if (scene.light.type == LightType::Spot && hasSize(scene.light)) {
-        throw UsageError(scene.name +
-                         ": the area-light truth takes a directional light; a spot light's "
-                         "radius is not integrated yet (set it to 0 for the hard truth)");
+    try {
+        checkSpotDiskCasters(scene);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(scene.name + ": " + e.what());
     }
 }
 
@@ -117,7 +122,10 @@ void applyTruthLightSize(const TruthCommandOptions& o, Scene& scene) {
 void sayTruthPlan(const TruthCommandOptions& o, const Scene& scene, glm::ivec2 size, bool area) {
     int threads = resolveThreadCount(o.threads);
     char light[96];
-    if (area) {
+    if (area && scene.light.type == LightType::Spot) {
+        std::snprintf(light, sizeof light, "a spot disk of radius %g (integrated over the disk)",
+                      static_cast<double>(scene.light.radius));
+    } else if (area) {
         std::snprintf(light, sizeof light, "a sun disk of %g degrees (integrated over the disk)",
                       static_cast<double>(scene.light.angularDiameterDeg));
     } else {
@@ -183,8 +191,7 @@ Command addTruthCommand(CLI::App& app) {
         "truth",
         "exact shadow by ray casting: visibility per pixel with its error bound (edges "
         "integrated along sub-scanlines until two resolutions agree)");
-    sub->add_option("--scene", o->scene,
-                    "built-in scene: box-on-plane, sphere-over-plane, pole, grazing, stairs");
+    sub->add_option("--scene", o->scene, "built-in scene: " + presetNameList());
     sub->add_option("--scene-file", o->sceneFile, "scene file (TOML)");
     sub->add_option("--size", o->size, sizeHelp("frame size", {}, "default 1280x720"));
     sub->add_option("--spp", o->spp,
@@ -193,9 +200,10 @@ Command addTruthCommand(CLI::App& app) {
     sub->add_option("--bound", o->bound,
                     "refine edge pixels until the error bound is at most this (default 1/512)");
     sub->add_option("--light-size", o->lightSize,
-                    "the directional light's angular diameter in degrees (0..10; the sun's is "
-                    "about 0.53): the truth integrates over the light's disk as well as the pixel. "
-                    "Default: the scene's light (angular_diameter), 0 = a hard shadow");
+                    "the light's size: a directional light's angular diameter in degrees "
+                    "(0..10; the sun's is about 0.53), a spot light's radius in world units "
+                    "(0..100): the truth integrates over the light's disk as well as the pixel. "
+                    "Default: the scene's light (angular_diameter, radius), 0 = a hard shadow");
     sub->add_option("--threads", o->threads, "worker threads (0 = all cores, the default)");
     sub->add_flag("--mask", o->mask,
                   "add a 'mask' channel: 1 where the pixel centre's camera ray hits a shadow "

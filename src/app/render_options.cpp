@@ -158,10 +158,7 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
                     "a lesson (path, number or name): its scene and its step's settings; "
                     "options given here override them");
     sub->add_option("--step", lessonStep, "with --lesson: the step whose settings to use");
-    std::string presets;
-    for (std::string_view n : presetNames())
-        presets += (presets.empty() ? "" : ", ") + std::string(n);
-    sub->add_option("--scene", scene, "built-in scene: " + presets);
+    sub->add_option("--scene", scene, "built-in scene: " + presetNameList());
     sub->add_option("--scene-file", sceneFile, "scene file (TOML)");
     shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map}, defaults);
     sub->add_option("--polygon-offset", polygonOffset,
@@ -214,10 +211,7 @@ Scene RenderOptions::loadScene() const {
     if (name.empty()) throw UsageError("needs --scene PRESET, --scene-file FILE or --lesson L");
     std::optional<Scene> preset = presetScene(name);
     if (!preset) {
-        std::string known;
-        for (std::string_view n : presetNames())
-            known += (known.empty() ? "" : ", ") + std::string(n);
-        throw UsageError("unknown scene '" + name + "' (known: " + known + ")");
+        throw UsageError("unknown scene '" + name + "' (known: " + presetNameList() + ")");
     }
     return *preset;
 }

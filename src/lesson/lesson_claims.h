@@ -20,8 +20,9 @@
 // placeholder of lesson_text.h, with *F factors), + - * / and parentheses, compared with = != < <=
 // > >= or ~ (near, with a tolerance: `a ~ b +- t` holds when |a - b| <= t). `=` is exact: use it
 // for counts and bits. Chart claims read the CSV the step's chart draws: `chart: A faster than B` /
-// `slower than` (the median scene-pass time), `more accurate than` / `less accurate than` (edge
-// RMSE against the ray-cast truth); A and B are dot labels or their first word, as chart_highlight
+// `slower than` (the median scene-pass time), `more accurate than` / `less accurate than` (the
+// chart's y axis: the edge RMSE against the ray-cast truth, or near the contacts on a
+// "PATH#contact" chart); A and B are dot labels or their first word, as chart_highlight
 // takes them. Any other `chart: FACT` is one of the facts the chart's data answers
 // (analysis/chart_facts.h: the renderer it was measured on, where acne and leak lie on the bias
 // axis); `lesson check` names the facts it knows when one is not among them.

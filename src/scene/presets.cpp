@@ -130,6 +130,42 @@ half = [0.2, 1.5, 0.2]
 rotate_y = 20.0
 colour = [0.55, 0.6, 0.8]
 )"},
+    {"post-under-spot",
+     R"(# A post under a spot light with a radius (a disk 0.3 units wide each way from its centre):
+# the spot 4.5 units up and 3 to the side, so the 2-unit post throws a shadow 2.4 units long whose
+# penumbra, the disk seen past the post's edge, widens from the foot to the tip (contact
+# hardening at a finite distance). The map is perspective; the cone (45 degrees) holds the
+# whole ground and post (38.9 degrees off the axis at most). Its depth is coarse far from the
+# light: with back faces culled, the default constant bias leaves rings of acne on the ground
+# (bench culls front faces, and the ground is clean).
+[camera]
+eye = [2.2, 4.2, 6.0]
+target = [1.2, 0.3, 0.2]
+fov = 45.0
+
+[light]
+type = "spot"
+position = [-3.0, 4.5, 0.3]
+direction = [5.5, -4.5, -0.1]
+cone = 45.0
+radius = 0.3
+
+[[object]]
+type = "plane"
+name = "ground"
+centre = [2.25, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+size = [7.5, 6.0]
+colour = [0.8, 0.8, 0.8]
+
+[[object]]
+type = "box"
+name = "post"
+centre = [0.0, 1.0, 0.0]
+half = [0.25, 1.0, 0.25]
+rotate_y = 20.0
+colour = [0.55, 0.6, 0.8]
+)"},
     {"grazing",
      R"(# The light 82 degrees from the ground's normal: direction = (sin 82, -cos 82, 0).
 # Depth changes fast across each shadow-map texel, the classic setting for shadow acne. A low
@@ -215,6 +251,12 @@ std::vector<std::string_view> presetNames() {
     std::vector<std::string_view> names;
     for (const Preset& p : PRESETS) names.push_back(p.name);
     return names;
+}
+
+std::string presetNameList() {
+    std::string list;
+    for (const Preset& p : PRESETS) list += (list.empty() ? "" : ", ") + std::string(p.name);
+    return list;
 }
 
 std::optional<std::string_view> presetSceneToml(std::string_view name) {

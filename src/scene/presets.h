@@ -21,6 +21,8 @@ namespace pcf {
 
 // In the order above.
 std::vector<std::string_view> presetNames();
+// "box-on-plane, sphere-over-plane, ...": every name, for help and errors.
+std::string presetNameList();
 
 // The scene (Scene::name = the preset's name), or nullopt for an unknown name.
 std::optional<Scene> presetScene(std::string_view name);

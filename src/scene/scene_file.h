@@ -19,9 +19,12 @@
 //   angular_diameter = 0.53        directional only, optional (default 0, an ideal direction):
 //                                  the light disk's angular diameter in degrees, in [0, 10]
 //   radius    = 0.1                spot only, optional (default 0, a point): the radius of the
-//                                  light's disk, facing along direction, in [0, 100]
-//                                  The size is for the area-light truth only; the shadow map is
-//                                  rendered from the light's centre.
+//                                  light's disk, centred on position and facing along
+//                                  direction, world units, in [0, 100]
+//                                  The size is for the area-light truth (`truth`, which then
+//                                  integrates over the disk; a spot's casting spheres must lie
+//                                  wholly in front of its disk) and pcss only; the shadow map
+//                                  is rendered from the light's centre.
 //
 //   [[object]]                     one table per object, at least one
 //   type     = "plane"             required: "plane", "box" or "sphere"

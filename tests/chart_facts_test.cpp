@@ -1,0 +1,152 @@
+// The facts a lesson step states about its bench chart (analysis/chart_facts.h), read from the
+// CSV the chart draws: the truth it was measured against, the most and least accurate dot on
+// the chart's own accuracy axis (the edge band's RMSE, or near the casters on a "#contact"
+// chart, step_chart.h).
+#include "analysis/chart_facts.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "analysis/bench_report.h"
+#include "analysis/speed_chart.h"
+#include "analysis/step_chart.h"
+#include "base/input_error.h"
+#include "kernel/methods.h"
+#include "run_command.h"
+
+namespace pcf {
+namespace {
+
+// gather 3x3, 5x5, 7x7 and pcss on one map with post-in-sun's shape of numbers: over the whole
+// edge band the widest fixed kernel beats the narrowest and pcss beats both; near the contact
+// the order of the fixed widths turns over and pcss is second.
+std::vector<BenchRow> contactRows() {
+    struct Dot {
+        int method, kernel;
+        double edge, contact;
+    };
+    const Dot dots[] = {{PCF_GATHER, 3, 0.104, 0.073},
+                        {PCF_GATHER, 5, 0.078, 0.102},
+                        {PCF_GATHER, 7, 0.075, 0.139},
+                        {PCF_PCSS, 0, 0.058, 0.076}};
+    std::vector<BenchRow> rows;
+    for (const Dot& d : dots) {
+        BenchRow r;
+        r.point = {d.method, d.kernel, 512};
+        r.gpuMs = 1.0 + d.kernel;
+        r.lookupMs = 0.5 + d.kernel;
+        r.timer = "glFinish+steady_clock";
+        r.error.edgeRmse = d.edge;
+        r.contact.edgeRmse = d.contact;
+        r.contact.edgePixels = 676;
+        r.contactDistance = 1.0;
+        r.truth = "area (a sun disk of 2 degrees)";
+        r.glRenderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+class ChartFacts : public ::testing::Test {
+  protected:
+    void SetUp() override { mDir = testutil::makeTempDir("chart-facts"); }
+    void TearDown() override {
+        if (!HasFailure()) std::filesystem::remove_all(mDir);
+    }
+    std::string write(const std::string& name, const std::string& text) const {
+        std::string path = (mDir / name).string();
+        std::ofstream(path) << text;
+        return path;
+    }
+    std::filesystem::path mDir;
+};
+
+TEST_F(ChartFacts, TheTruthIsTheOneTheCsvRecords) {
+    std::string csv = write("bench.csv", benchCsv(contactRows()));
+    ChartFactAnswer area = chartFactHolds(csv, "measured against the area truth");
+    EXPECT_TRUE(area.holds) << area.why;
+    EXPECT_EQ(area.why, "truth: area (a sun disk of 2 degrees)");
+    EXPECT_FALSE(chartFactHolds(csv, "measured against the hard truth").holds);
+    EXPECT_TRUE(chartFactHolds(csv + "#contact", "measured against the area truth").holds);
+    EXPECT_THROW(chartFactHolds(csv, "measured against the soft truth"), std::invalid_argument);
+    // A file from before the truth column cannot say: the fact does not hold, and says why.
+    std::vector<BenchRow> rows = contactRows();
+    for (BenchRow& r : rows) r.truth.clear();
+    std::string old = write("old.csv", benchCsv(rows));
+    ChartFactAnswer unknown = chartFactHolds(old, "measured against the area truth");
+    EXPECT_FALSE(unknown.holds);
+    EXPECT_NE(unknown.why.find("records no truth"), std::string::npos) << unknown.why;
+}
+
+TEST_F(ChartFacts, MostAndLeastAccurateReadTheChartsOwnAxis) {
+    std::string csv = write("bench.csv", benchCsv(contactRows()));
+    // The whole edge band: pcss lowest, gather 3x3 highest.
+    EXPECT_TRUE(chartFactHolds(csv, "pcss is the most accurate").holds);
+    EXPECT_TRUE(chartFactHolds(csv, "gather3 is the least accurate").holds);
+    EXPECT_FALSE(chartFactHolds(csv, "gather7 is the least accurate").holds);
+    // Near the contact: gather 7x7 highest; pcss is not the lowest, gather 3x3 is.
+    std::string contact = csv + "#contact";
+    EXPECT_TRUE(chartFactHolds(contact, "gather7 is the least accurate").holds);
+    EXPECT_TRUE(chartFactHolds(contact, "gather3 is the most accurate").holds);
+    ChartFactAnswer pcss = chartFactHolds(contact, "pcss is the most accurate");
+    EXPECT_FALSE(pcss.holds);
+    EXPECT_EQ(pcss.why, "gather3 512 0.073, pcss 0.076") << pcss.why;
+    // A label must name one dot.
+    std::vector<BenchRow> two = contactRows();
+    two.push_back(two.front());
+    two.back().point.mapSize = 1024;
+    std::string twoMaps = write("two.csv", benchCsv(two));
+    EXPECT_THROW(chartFactHolds(twoMaps, "gather3 is the most accurate"), std::invalid_argument);
+    EXPECT_THROW(chartFactHolds(csv, "nothing3 is the most accurate"), std::invalid_argument);
+    // These are bench facts: a stability chart does not know them.
+    EXPECT_THROW(checkChartFactKnown("stability.csv#tradeoff", "pcss is the most accurate"),
+                 std::invalid_argument);
+    EXPECT_NO_THROW(checkChartFactKnown("bench.csv#contact", "pcss is the most accurate"));
+}
+
+// The contact chart of a lesson step: its title says near the contacts and the truth, its y
+// axis the distance and the pixels (from the CSV); a CSV measured without --contact is refused.
+TEST_F(ChartFacts, AContactChartSaysWhatItMeasured) {
+    std::string csv = write("bench.csv", benchCsv(contactRows()));
+    StepChartRef ref = stepChartRef(csv + "#contact");
+    EXPECT_TRUE(ref.bench);
+    EXPECT_EQ(ref.accuracy, ChartAccuracy::ContactRmse);
+    EXPECT_EQ(ref.path, csv);
+    EXPECT_FALSE(stepChartRef(csv + "#tradeoff").bench);
+    EXPECT_NO_THROW(checkStepChart(csv + "#contact"));
+    std::string title, subtitle, axis;
+    for (const ChartTextBox& b :
+         stepChartTexts(StepChart{csv + "#contact", "", 18.0f, true}, {1280, 720})) {
+        if (b.role == "chart-title") title += b.text;
+        if (b.role == "chart-subtitle") subtitle += b.text + " ";
+        if (b.role == "chart-axis") axis += b.text + "|";
+    }
+    std::replace(subtitle.begin(), subtitle.end(), '\n', ' ');  // wrapped at spaces
+    EXPECT_EQ(title, "Accuracy near the contacts");
+    EXPECT_NE(subtitle.find("truth: area (a sun disk of 2 degrees)"), std::string::npos)
+        << subtitle;
+    EXPECT_NE(axis.find("edge-band RMSE within 1 world unit of a caster|"), std::string::npos)
+        << axis;
+    EXPECT_EQ(contactAxisLabel(contactRows()),
+              "aliasing near the contacts: edge-band RMSE over the 676 edge pixels within 1 world "
+              "unit of a caster");
+    std::vector<BenchRow> rows = contactRows();
+    for (BenchRow& r : rows) {
+        r.contactDistance = 0.0;
+        r.contact = {};
+    }
+    std::string plain = write("plain.csv", benchCsv(rows));
+    EXPECT_NO_THROW(checkStepChart(plain));
+    EXPECT_THROW(checkStepChart(plain + "#contact"), InputError);
+    EXPECT_THROW(checkStepChartHighlight(plain + "#tradeoff", "front"), std::invalid_argument);
+    EXPECT_NO_THROW(checkStepChartHighlight(csv + "#contact", "pcss"));
+}
+
+}  // namespace
+}  // namespace pcf
