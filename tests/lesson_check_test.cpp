@@ -104,6 +104,34 @@ TEST_F(LessonCheck, ABadClaimIsABadFile) {
     EXPECT_NE(r.err.find(":9: step 1 keys: unknown key 'X'"), std::string::npos) << r.err;
 }
 
+// `flickers` reads the frames the step's sweep composes: on a step that does not move it is a bad
+// file (exit 2, its line); where the line only creeps (pcf-gather: the sliding grid moves its
+// weights 1/32 texel a frame) it fails at its line with the largest change (exit 1). Here nearest
+// flickers (the middle of the view lies on the pole's stair-stepped edge), and lesson 13's last
+// step does (EveryShippedLessonHolds).
+TEST_F(LessonCheck, FlickersReadsTheStepsSweep) {
+    std::string path = write("claims = [\"flickers\"]\n");
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find(":9: step 1 claim \"flickers\": the step does not move"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
+    const std::string sweep = "animate = { sweep = \"light\", frames = 8 }\n";
+    path = write("claims = [\"flickers\"]\n" + sweep);
+    r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+    path = write("claims = [\"flickers\"]\nmethod = \"pcf-gather\"\n" + sweep);
+    r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_EQ(testutil::lineCount(r.out), 1) << r.out;
+    EXPECT_NE(r.out.find(":9: step 1 claim \"flickers\" fails: largest change between two frames "),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find(" over 8 frames; flicker is a jump of 0.5 or more"), std::string::npos)
+        << r.out;
+}
+
 // A chart fact reads the CSV the step's chart draws: one the chart's table does not know, or on a
 // step without a chart, is a bad file (exit 2, its line); a known one that the rows contradict
 // fails at its line with the numbers (exit 1).

@@ -24,6 +24,12 @@ Lesson loadLessonChecked(const std::string& path) {
         if (step.animate) stepAnimationOptions(step, path, static_cast<int>(i) + 1);  // checks
         // A fact about a chart names one its chart's table knows (analysis/chart_facts.h).
         for (const StepClaim& claim : step.claims) {
+            // A claim about the frames reads the step's sweep (animation.h: stepFlickerCurves).
+            if (isMotionClaim(claim) && !step.animate) {
+                throw InputError(path, claim.line,
+                                 which + " claim \"" + claim.text +
+                                     "\": the step does not move (it has no animate)");
+            }
             std::string fact = chartFactOf(claim);
             if (fact.empty()) continue;
             if (step.chart.empty()) {
