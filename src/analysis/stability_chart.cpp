@@ -31,9 +31,12 @@ double widerTickStep(double step) {
 // A type size at scale s, not below minPx (the chart's floor: 8, or a lesson frame's).
 float px(float base, float s, float minPx) { return std::max(minPx, std::round(base * s)); }
 
-// The width the y axis's tick labels need left of the plot ("100%" is the widest).
-float yTickRoom(float s, float tickFont) {
-    return std::round(measureText(FontFace::Sans, tickFont, "100%").x + 10.0f * s + 4.0f);
+// The width the y axis's tick labels need left of the plot: "100%", or a log axis's floor
+// ("<=0.1%") where that is wider.
+float yTickRoom(float s, float tickFont, const std::string& widest) {
+    float w = std::max(measureText(FontFace::Sans, tickFont, "100%").x,
+                       measureText(FontFace::Sans, tickFont, widest).x);
+    return std::round(w + 10.0f * s + 4.0f);
 }
 
 // Draws on a Canvas, or (no canvas) only records where each text goes: one code path lays out
@@ -148,8 +151,34 @@ namespace {
 
 struct LineAxes {
     double xLo, xHi;     // the x range (log10 with logX) shared by all panels
-    double yStep, yTop;  // the y tick step and the axis's top (its bottom: spec.yFloor)
+    double yStep, yTop;  // the y tick step and the axis's top (its bottom: spec.yFloor); with
+                         // logY both in decades (log10): a tick per decade up to 10^yTop
 };
+
+// With logY: the y of a value on the axis, log10 and never under the floor's.
+double logAxisY(const LineChartSpec& spec, double y) {
+    return std::log10(std::max(y, spec.yFloor));
+}
+
+// The y tick labels, bottom up: their values and texts. A log axis labels its floor "<=" (every
+// value under it lies there, 0 too) and each decade above.
+std::vector<std::pair<double, std::string>> yTickLabels(const LineChartSpec& spec,
+                                                        const LineAxes& axes, double yStep) {
+    std::vector<std::pair<double, std::string>> out;
+    if (spec.logY) {
+        double lo = logAxisY(spec, spec.yFloor);
+        for (double d = lo; d <= axes.yTop + 1e-9; d += yStep) {
+            double v = std::pow(10.0, d);
+            std::string t = chartTickText(v, spec.percentY);
+            out.emplace_back(v, d == lo ? "<=" + t : t);
+        }
+        return out;
+    }
+    for (double y = spec.yFloor; y <= axes.yTop + 0.5 * yStep; y += yStep) {
+        out.emplace_back(y, chartTickText(y, spec.percentY));
+    }
+    return out;
+}
 
 // Axis ranges shared by all panels: x over every point, y from the floor up past the largest
 // value in round steps (a share ends at exactly 100 %).
@@ -167,6 +196,12 @@ LineAxes lineAxesOf(const LineChartSpec& spec) {
     }
     if (xLo > xHi) xLo = 0.0, xHi = 1.0;
     if (xHi - xLo < 1e-9) xLo -= 0.5, xHi += 0.5;
+    if (spec.logY) {
+        // Decades from the floor to the one at or above the largest value (a share: 100 %).
+        double top = std::ceil(logAxisY(spec, yHi) - 1e-9);
+        if (spec.percentY && yHi <= 1.0) top = 0.0;
+        return {xLo, xHi, 1.0, std::max(top, logAxisY(spec, spec.yFloor) + 1.0)};
+    }
     double yStep = chartNiceStep(std::max(yHi - spec.yFloor, 1e-6) * 1.05 / 5.0);
     double yTop =
         spec.yFloor + std::ceil((std::max(yHi - spec.yFloor, 1e-6) * 1.05) / yStep) * yStep;
@@ -202,6 +237,11 @@ struct PanelPlot {
         return plot.x + static_cast<float>(t) * plot.w;
     }
     float yPixel(double y) const {
+        if (spec.logY) {
+            double lo = logAxisY(spec, spec.yFloor);
+            return plot.bottom() -
+                   static_cast<float>((logAxisY(spec, y) - lo) / (axes.yTop - lo)) * plot.h;
+        }
         return plot.bottom() -
                static_cast<float>((y - spec.yFloor) / (axes.yTop - spec.yFloor)) * plot.h;
     }
@@ -215,15 +255,17 @@ void paintPanelGrid(Painter& c, const PanelPlot& pp, const ChartPanel& panel, fl
     const LineChartSpec& spec = pp.spec;
     float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
     float stroke = std::max(1.0f, std::round(s));
-    // Fewer ticks where the panel is short: no two labels closer than a line.
-    double yStep = pp.axes.yStep, range = pp.axes.yTop - spec.yFloor;
+    // Fewer ticks where the panel is short: no two labels closer than a line (a log axis: every
+    // second decade, then every third).
+    double yStep = pp.axes.yStep;
+    double range = pp.axes.yTop - (spec.logY ? logAxisY(spec, spec.yFloor) : spec.yFloor);
     while (plot.h * yStep / range < tickH + 1.0f && yStep < range) {
-        yStep = widerTickStep(yStep);
+        yStep = spec.logY ? yStep + 1.0 : widerTickStep(yStep);
     }
-    for (double y = spec.yFloor; y <= pp.axes.yTop + 0.5 * yStep; y += yStep) {
+    for (const auto& [y, label] : yTickLabels(spec, pp.axes, yStep)) {
         float py = std::round(pp.yPixel(y)) + 0.5f;
         c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
-        c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, spec.percentY),
+        c.text({plot.x - 5.0f * s, py - tickH / 2}, label,
                {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right}, "chart-tick");
     }
     std::vector<double> xs;
@@ -278,7 +320,8 @@ void paintPanel(Painter& c, const LineChartSpec& spec, const LineAxes& axes,
     float tickFont = px(12, s, mn);
     float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
     float titleH = fontMetrics(FontFace::Sans, px(14, s, mn)).lineHeight;
-    float left = std::max(58.0f * s, yTickRoom(s, tickFont));
+    std::string floorTick = spec.logY ? yTickLabels(spec, axes, axes.yStep).front().second : "";
+    float left = std::max(58.0f * s, yTickRoom(s, tickFont, floorTick));
     // The top tick's label reaches half a line above the plot: the panel's title stays clear.
     float titleRoom = titleH + std::max(4.0f * s, 0.5f * tickH + 2.0f);
     Rect plot{std::round(cell.x + left), std::round(cell.y + titleRoom),
@@ -550,7 +593,7 @@ void paintBarChart(const BarChartSpec& spec, glm::ivec2 size, Painter& c) {
     }
     legendW = std::round(legendW + 40.0f * s);
     top += tickH / 2;  // room for the top tick's label
-    float left = std::max(62.0f * s, yTickRoom(s, tickFont));
+    float left = std::max(62.0f * s, yTickRoom(s, tickFont, ""));
     float plotW = std::round(size.x - legendW - left - 28.0f * s);
     size_t groups = std::max<size_t>(spec.groups.size(), 1);
     BarLabels labels = barLabelsFor(spec, plotW / groups, s, tickFont);

@@ -47,6 +47,10 @@ struct LineChartSpec {
     bool reverseX = false;  // largest x on the left
     bool percentY = false;  // y is a share: ticks as percents
     double yFloor = 0.0;    // y axis starts here; its top is the data's maximum, rounded up
+    // A log y axis from yFloor (> 0, a power of ten) up to the decade above the data (a share: to
+    // 100 %), a tick per decade. Values at or under the floor, 0 among them, lie on the floor's
+    // line, whose tick says so ("<=0.1%"): small shares and large ones read on one axis.
+    bool logY = false;
     std::vector<ChartPanel> panels;
     std::vector<std::string> notes;  // legend lines without a swatch (e.g. "dashed: pole")
     float minFontPx = 8.0f;          // no text below this (a lesson frame asks for its floor)
