@@ -56,6 +56,12 @@ class Painter {
         if (mCanvas) mCanvas->text(pos, words, style);
         return r;
     }
+    // Records the box a legend entry's mark covers with its clearance (role "chart-swatch",
+    // named by the entry's words): the layout checks keep it off every text, its own words too.
+    void swatch(const Rect& r, const std::string& entry) {
+        if (mTexts)
+            mTexts->push_back({r.expanded(CHART_MARK_CLEARANCE), 0.0f, "chart-swatch", entry});
+    }
     void line(glm::vec2 a, glm::vec2 b, float w, const Colour& c) {
         if (mCanvas) mCanvas->line(a, b, w, c);
     }
@@ -359,6 +365,7 @@ void paintLineLegend(Painter& c, const LineChartSpec& spec, const std::vector<Le
         } else {
             c.line(a, b, lw, e.colour);
         }
+        c.swatch({a.x, a.y - 0.5f * lw, b.x - a.x, lw}, e.label);
         c.text({box.x + 38.0f * s, y}, e.label, {FontFace::Sans, legendFont, CHART_INK},
                "chart-legend");
         y += lineH;
@@ -565,8 +572,9 @@ void paintBarLegend(Painter& c, const BarChartSpec& spec, const Rect& box, float
     c.strokeRect(box, stroke, CHART_GRID);
     float y = box.y + 6.0f * s;
     for (size_t b = 0; b < spec.series.size(); ++b) {
-        c.fillRect({box.x + 8.0f * s, y + 2.0f * s, 22.0f * s, lineH - 4.0f * s},
-                   BAR_SERIES[b % 4]);
+        Rect mark{box.x + 8.0f * s, y + 2.0f * s, 22.0f * s, lineH - 4.0f * s};
+        c.fillRect(mark, BAR_SERIES[b % 4]);
+        c.swatch(mark, spec.series[b]);
         c.text({box.x + 36.0f * s, y}, spec.series[b], {FontFace::Sans, legendFont, CHART_INK},
                "chart-legend");
         y += lineH;
@@ -678,7 +686,9 @@ void paintColourScale(Painter& c, const ColourScale& scale, Rect box, float s, f
     }
     float y = bar.bottom() + lineH * 0.5f + 8.0f * s;
     for (const auto& [colour, words] : scale.swatches) {
-        c.fillRect({bar.x, y + 2.0f * s, bar.w, lineH - 4.0f * s}, colour);
+        Rect mark{bar.x, y + 2.0f * s, bar.w, lineH - 4.0f * s};
+        c.fillRect(mark, colour);
+        c.swatch(mark, words);
         c.text({bar.right() + 9.0f * s, y}, words, {FontFace::Sans, font, CHART_INK},
                "chart-legend");
         y += lineH;

@@ -83,6 +83,7 @@ std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLay
     for (const ChartTextBox& b : stepChartTexts(stepChart(step, layout.presentation), size)) {
         BoxKind kind = b.role == "chart-tick"                                ? BoxKind::Number
                        : b.role == "chart-label" || b.role == "chart-legend" ? BoxKind::Label
+                       : b.role == "chart-swatch"                            ? BoxKind::Mark
                                                                              : BoxKind::Text;
         Rect r{b.rect.x + layout.scene.x, b.rect.y + layout.scene.y, b.rect.w, b.rect.h};
         out.push_back({kind, r, "scene", b.role, b.fontPx, false, b.text});
