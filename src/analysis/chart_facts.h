@@ -6,6 +6,9 @@
 //
 //   measured on NAME                          any chart: GL_RENDERER contains NAME (bench.csv's
 //                                             gl_renderer, stability.csv's setup row)
+//   the front is A, B                         a bench chart: its Pareto front (the ringed steady
+//                                             dots, fastest first) is exactly A, B (dot labels,
+//                                             "gather3 1024")
 //   M: acne falls as the bias grows           #tradeoff: method M's acne over the onset at the
 //                                             smallest bias, under it at the largest
 //   M: leak grows with the bias               #tradeoff: M's leak under the onset at the smallest
