@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -100,6 +102,34 @@ TEST(Animation, FlickerTraceIsTheStabilityCurveOfThePinnedPoint) {
             EXPECT_GT(gather, 0.0);
         }
     }
+}
+
+// What `lesson check` reads for a `flickers` claim: the step's flicker trace, from the frames its
+// sweep composes. The point belongs to the scene, so the curves are the same at every frame size;
+// lesson 13's last step rings a point on the stair-stepped edge: nearest jumps 0 <-> 1 there,
+// pcf-gather 3x3 creeps.
+TEST(Animation, AStepsFlickerCurvesAreTheSameAtEverySize) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    Lesson lesson = parseLessonFile(LESSON);
+    const int step = static_cast<int>(lesson.steps.size()) - 1;
+    const LessonSettings& s = lesson.steps[static_cast<size_t>(step)].settings;
+    FlickerCurves small = stepFlickerCurves(LESSON, step, s, {320, 180});
+    FlickerCurves large = stepFlickerCurves(LESSON, step, s, {960, 540});
+    ASSERT_EQ(small.main.size(), 64u);
+    EXPECT_EQ(small.main, large.main);
+    EXPECT_EQ(small.compare, large.compare);
+    auto largestJump = [](const std::vector<float>& curve) {
+        float most = 0.0f;
+        for (size_t k = 1; k < curve.size(); ++k) {
+            most = std::max(most, std::fabs(curve[k] - curve[k - 1]));
+        }
+        return most;
+    };
+    EXPECT_EQ(largestJump(small.main), 1.0f);
+    EXPECT_GT(largestJump(small.compare), 0.0f);
+    EXPECT_LT(largestJump(small.compare), 0.5f);
+    // A step that does not move has no curves.
+    EXPECT_TRUE(stepFlickerCurves(LESSON, 0, lesson.steps[0].settings).main.empty());
 }
 
 TEST(AnimateCommand, FramesAreTheSameBytesRunToRunAndVideosReadBack) {

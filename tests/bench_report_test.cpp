@@ -126,7 +126,11 @@ TEST(BenchReport, TheShippedCsvParses) {
         std::string name = pointName(r.point) + " map " + std::to_string(r.point.mapSize);
         EXPECT_NE(r.glRenderer.find("llvmpipe"), std::string::npos) << name;
         EXPECT_GT(r.acne.count, 0) << name;
-        EXPECT_GT(r.leak.count, 0) << name;
+        // (pcss at the 256 and 512 maps has no clean umbra pixel to count: its leak is 0 of 0
+        // pixels, which bench.md prints as 0.00 %.)
+        if (r.point.method != PCF_PCSS || r.point.mapSize >= 1024) {
+            EXPECT_GT(r.leak.count, 0) << name;
+        }
         EXPECT_GT(r.shimmer.flickerShare, 0.0) << name;
         if (r.point.method == PCF_NEAREST) {
             EXPECT_EQ(r.shimmer.flickerP99, 1.0) << name;

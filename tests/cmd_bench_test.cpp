@@ -420,6 +420,52 @@ TEST_F(BenchCommand, RefusesAFrameWithoutAShadowEdge) {
     EXPECT_FALSE(fs::exists(path("out")));
 }
 
+// --replot draws an existing bench.csv's charts and measures nothing: the two PNGs at the chart
+// size and nothing else (no CSV, table or difference images, no sweep's progress); options that
+// choose what is measured, a CSV that is not there, --contact for a CSV without contact columns
+// and charts already there are refused with one line and nothing written.
+TEST_F(BenchCommand, ReplotDrawsACsvsChartsAndMeasuresNothing) {
+    const std::string csv = PCFSCOPE_SOURCE_DIR "/lessons/figures/bench.csv";
+    std::string out = path("replot");
+    auto r = testutil::runPcfscope("bench --replot " + csv + " --chart-size 960x540 -o " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("bench: drew "), std::string::npos) << r.err;
+    std::set<std::string> written;
+    for (const fs::directory_entry& e : fs::directory_iterator(out)) {
+        written.insert(e.path().filename().string());
+    }
+    EXPECT_EQ(written, (std::set<std::string>{"speed_vs_accuracy.png", "speed_vs_stability.png"}));
+    for (const std::string& name : written) {
+        ImageSize chart = readImageSize(out + "/" + name);
+        EXPECT_EQ(chart.width, 960) << name;
+        EXPECT_EQ(chart.height, 540) << name;
+    }
+    auto again = testutil::runPcfscope("bench --replot " + csv + " -o " + out);
+    EXPECT_EQ(again.exitCode, 2) << again.err;
+    EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
+    EXPECT_EQ(testutil::runPcfscope("bench --replot " + csv + " -f -o " + out).exitCode, 0);
+
+    struct Case {
+        std::string args;
+        std::string expect;
+    };
+    std::vector<Case> cases = {
+        {"--replot " + path("none.csv"), "none.csv"},
+        {"--replot " + csv + " --methods nearest", "--methods does not apply to --replot"},
+        {"--replot " + csv + " --quick", "--quick does not apply to --replot"},
+        {"--replot " + csv + " --contact 0.5", "has no contact columns"},
+        {"--replot " + csv + " --timing wall", "--timing"},
+    };
+    for (const Case& c : cases) {
+        auto bad = testutil::runPcfscope("bench " + c.args + " -o " + path("out"));
+        EXPECT_EQ(bad.exitCode, 2) << c.args << "\n" << bad.err;
+        EXPECT_EQ(testutil::lineCount(bad.err), 1) << c.args << "\n" << bad.err;
+        EXPECT_NE(bad.err.find(c.expect), std::string::npos) << c.args << "\n" << bad.err;
+        EXPECT_FALSE(fs::exists(path("out"))) << c.args;
+    }
+}
+
 TEST_F(BenchCommand, RefusesToOverwriteWithoutForce) {
     std::string out = path("again");
     fs::create_directories(out);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "analysis/bench_report.h"
 #include "run_command.h"
 
 namespace {
@@ -102,6 +103,57 @@ TEST_F(LessonCheck, ABadClaimIsABadFile) {
     r = testutil::runPcfscope("lesson check " + path);
     EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
     EXPECT_NE(r.err.find(":9: step 1 keys: unknown key 'X'"), std::string::npos) << r.err;
+}
+
+// `flickers` reads the frames the step's sweep composes: on a step that does not move it is a bad
+// file (exit 2, its line); where the line only creeps (pcf-gather: the sliding grid moves its
+// weights 1/32 texel a frame) it fails at its line with the largest change (exit 1). Here nearest
+// flickers (the middle of the view lies on the pole's stair-stepped edge), and lesson 13's last
+// step does (EveryShippedLessonHolds).
+TEST_F(LessonCheck, FlickersReadsTheStepsSweep) {
+    std::string path = write("claims = [\"flickers\"]\n");
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find(":9: step 1 claim \"flickers\": the step does not move"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
+    const std::string sweep = "animate = { sweep = \"light\", frames = 8 }\n";
+    path = write("claims = [\"flickers\"]\n" + sweep);
+    r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+    path = write("claims = [\"flickers\"]\nmethod = \"pcf-gather\"\n" + sweep);
+    r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_EQ(testutil::lineCount(r.out), 1) << r.out;
+    EXPECT_NE(r.out.find(":9: step 1 claim \"flickers\" fails: largest change between two frames "),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find(" over 8 frames; flicker is a jump of 0.5 or more"), std::string::npos)
+        << r.out;
+}
+
+// "the front is A, B" names the bench chart's Pareto front exactly, fastest first: steady dots
+// only (the noisy hw2x2 beats them all and is not on it), a dominated dot left off.
+TEST_F(LessonCheck, TheFrontIsTheChartsFrontExactly) {
+    std::string csv = (mDir / "bench.csv").string();
+    std::ofstream(csv) << pcf::BENCH_CSV_HEADER_V2 << "\n"
+                       << "nearest,0,256,2,1,1,0,1,0.5,1,t,0.1,1,0.05,0\n"
+                       << "pcf-gather,3,256,4,1,16,0,1,0.3,1,t,0.1,1,0.05,0\n"
+                       << "pcf-naive,3,256,8,1,36,0,1,0.3,1,t,0.1,1,0.05,0\n"
+                       << "hw2x2,0,256,1,1,1,0,1,0.1,1,t,0.5,1,0.05,1\n";
+    std::string path = write(
+        "claims = [\"chart: the front is nearest 256, gather3 256\",\n"  // 9
+        "  \"chart: the front is gather3 256\"]\n"                       // 10
+        "chart = \"" +
+        csv + "\"\n");
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_EQ(testutil::lineCount(r.out), 1) << r.out;
+    EXPECT_NE(r.out.find(":10: step 1 claim \"chart: the front is gather3 256\" fails: the front "
+                         "is nearest 256, gather3 256"),
+              std::string::npos)
+        << r.out;
 }
 
 // A chart fact reads the CSV the step's chart draws: one the chart's table does not know, or on a

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "kernel/methods.h"
 #include "kernel/shadow_map.h"
@@ -108,6 +110,43 @@ TEST(LessonClaims, ChartClaimsAskTheChart) {
     EXPECT_FALSE(claimHolds(f, t, StepContext{}, world, &why));
     EXPECT_EQ(asked, "pcf-gather 5x5: acne falls as the bias grows");
     EXPECT_EQ(why, "acne 90% at bias 0.0005, 90% at bias 0.064");
+}
+
+// `flickers` reads the step's flicker trace, not the trace of the still frame: it holds when the
+// curve jumps by FLICKER_JUMP or more between two consecutive frames (nearest's 0 <-> 1), not for
+// a filter's creep of small steps, a flat line, or a frame whose point is on no receiver.
+TEST(LessonClaims, FlickersReadsTheStepsFlickerTrace) {
+    Trace t = bilinearTrace();
+    StepClaim c{"flickers", 1, parseClaim("flickers")};
+    EXPECT_TRUE(isMotionClaim(c));
+    EXPECT_FALSE(isChartClaim(c));
+    EXPECT_FALSE(isMotionClaim(StepClaim{"lit", 1, parseClaim("lit")}));
+    ClaimWorld world;
+    EXPECT_TRUE(claimHolds(c, t, StepContext{}, world));  // unset: the viewer plays the frames
+    std::vector<float> curve;
+    world.flickerCurve = [&]() { return std::variant<std::vector<float>, std::string>(curve); };
+    std::string why;
+    curve = {1.0f, 1.0f, 1.0f, 0.0f, 0.0f};  // a hard edge crosses the point at frame 3
+    EXPECT_TRUE(claimHolds(c, t, StepContext{}, world, &why));
+    EXPECT_NE(why.find("largest change between two frames 1 (frame 2 to 3) over 5 frames"),
+              std::string::npos)
+        << why;
+    curve = {0.25f, 0.28125f, 0.3125f, 0.34375f, 0.375f, 0.25f + FLICKER_JUMP - 0.001f};  // creep
+    EXPECT_FALSE(claimHolds(c, t, StepContext{}, world, &why));
+    curve = {0.25f, 0.25f + FLICKER_JUMP};  // exactly the jump
+    EXPECT_TRUE(claimHolds(c, t, StepContext{}, world));
+    curve = {1.0f, 1.0f, 1.0f};  // flat: the point never flickers
+    EXPECT_FALSE(claimHolds(c, t, StepContext{}, world, &why));
+    EXPECT_NE(why.find("largest change between two frames 0 over 3 frames"), std::string::npos)
+        << why;
+    curve = {1.0f, -1.0f, 0.0f};  // off every receiver in frame 1
+    EXPECT_FALSE(claimHolds(c, t, StepContext{}, world, &why));
+    EXPECT_EQ(why, "frame 1: the point is on no receiver");
+    world.flickerCurve = []() {
+        return std::variant<std::vector<float>, std::string>(std::string("no sweep"));
+    };
+    EXPECT_FALSE(claimHolds(c, t, StepContext{}, world, &why));
+    EXPECT_EQ(why, "no sweep");
 }
 
 TEST(LessonClaims, BadClaimsAreRefusedWithTheReason) {

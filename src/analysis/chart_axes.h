@@ -19,6 +19,10 @@ inline const Colour CHART_INK{0.13f, 0.13f, 0.15f, 1.0f};       // titles, label
 inline const Colour CHART_SOFT_INK{0.35f, 0.35f, 0.38f, 1.0f};  // subtitles, ticks, frames
 inline const Colour CHART_GRID{0.88f, 0.88f, 0.9f, 1.0f};       // grid lines
 
+// Pixels a legend's mark keeps clear of any text: its box in the layout lists ("chart-swatch")
+// is the mark grown by this on every side, so a ring that touches its words counts as on them.
+constexpr float CHART_MARK_CLEARANCE = 2.0f;
+
 // The stand-alone charts (the PNGs `stability` and `bench` write) draw no text smaller than this:
 // readable when the PNG is projected or printed at its own size (issue 19: 11 px was not).
 constexpr float STANDALONE_CHART_MIN_PX = 14.0f;

@@ -150,6 +150,18 @@ ChartFactAnswer leastAccurate(const ChartData& c, const std::string& label) {
     return extremeAccuracy(c, label, false);
 }
 
+// "the front is A, B": the Pareto front the bench chart draws (benchParetoFront of the scene time:
+// the steady dots no other steady dot beats on time and edge RMSE), fastest first, is exactly the
+// dots named so (chartLabel's names, comma-separated).
+ChartFactAnswer frontIs(const ChartData& c, const std::string& names) {
+    std::vector<BenchRow> rows = readChartRows(c.path);
+    std::string got;
+    for (size_t k : benchParetoFront(rows, false)) {
+        got += (got.empty() ? "" : ", ") + chartLabel(rows[k].point);
+    }
+    return {got == names, "the front is " + (got.empty() ? std::string("empty") : got)};
+}
+
 // A fact's words around its one argument: PREFIX ARG SUFFIX; `view` the chart it applies to
 // ("" any bench chart, "*" any chart, else a stability chart's name).
 struct FactEntry {
@@ -164,6 +176,7 @@ constexpr FactEntry FACTS[] = {
     {"measured against the ", " truth", "", againstTruth},
     {"", " is the most accurate", "", mostAccurate},
     {"", " is the least accurate", "", leastAccurate},
+    {"the front is ", "", "", frontIs},
     {"", ": acne falls as the bias grows", "tradeoff", acneFalls},
     {"", ": leak grows with the bias", "tradeoff", leakGrows},
     {"", ": a good bias lies between acne and leak", "tradeoff", goodBetween},

@@ -167,8 +167,29 @@ double chartAccuracy(const BenchRow& row, ChartAccuracy accuracy) {
 
 namespace {
 
-// The legend: the methods present (in the rows' order), then the front's entry, and the note
-// on "!" wrapped to the names' width. Returns the legend's width and height.
+// The front's legend mark: a line of half-length frontHalfLine through a dot ringed at
+// frontRingRadius with a ring frontRingWidth wide (drawLegendMarks draws it, layoutLegend makes
+// room for it).
+float frontHalfLine(float s) { return 8.0f * s; }
+float frontRingRadius(const SpeedChartLayout& L) { return L.dotRadius + 2.5f * L.scale; }
+float frontRingWidth(float s) { return std::max(1.5f, 1.5f * s); }
+// The gap between the marks' column and the names: a quarter of the type, so a projector's large
+// marks and words stay apart.
+float legendGap(float s, float legendPx) {
+    return std::max(6.0f * s, std::round(0.25f * legendPx));
+}
+
+// The front's ring with its clearance is taller than a line of small type: its line gets this
+// much more room above and below, so the mark stays off the names above and below it.
+float frontLineExtra(const SpeedChartLayout& L, float lineH) {
+    float ring = frontRingRadius(L) + 0.5f * frontRingWidth(L.scale) + CHART_MARK_CLEARANCE;
+    return std::max(0.0f, std::ceil(ring - 0.5f * lineH));
+}
+
+// The legend: the methods present (in the rows' order), then the front's entry. Its marks' column
+// is as wide as the largest mark at the chart's dot size (a projector's large dots were wider
+// than the fixed column they had, and the front's ring ran into "Pareto front"); the names start
+// past it. Returns the legend's width and height; the marks' boxes are placed by placeLegend.
 glm::vec2 layoutLegend(SpeedChartLayout& L, std::span<const BenchRow> rows, const Fonts& f,
                        float s) {
     for (const BenchRow& r : rows) {
@@ -183,11 +204,32 @@ glm::vec2 layoutLegend(SpeedChartLayout& L, std::span<const BenchRow> rows, cons
             std::max(legendText, measureText(FontFace::Sans, f.legend, methodInfo(m).name).x);
     }
     float lineH = fontMetrics(FontFace::Sans, f.legend).lineHeight;
-    float swatch = 22.0f * s;
-    float legendW = std::round(swatch + legendText + 16.0f * s);
-    float legendH =
-        std::round((static_cast<float>(L.legendMethods.size()) + 1.0f) * lineH + 12.0f * s);
+    float half = std::max(frontHalfLine(s), frontRingRadius(L) + 0.5f * frontRingWidth(s));
+    float legendW =
+        std::round(8.0f * s + 2.0f * half + legendGap(s, f.legend) + legendText + 8.0f * s);
+    float legendH = std::round((static_cast<float>(L.legendMethods.size()) + 1.0f) * lineH +
+                               2.0f * frontLineExtra(L, lineH) + 12.0f * s);
     return {legendW, legendH};
+}
+
+// The marks' boxes (with CHART_MARK_CLEARANCE), one per legend line, in the legend's column, and
+// where the names start.
+void placeLegend(SpeedChartLayout& L, float legendPx) {
+    float s = L.scale;
+    float lineH = fontMetrics(FontFace::Sans, legendPx).lineHeight;
+    float half = std::max(frontHalfLine(s), frontRingRadius(L) + 0.5f * frontRingWidth(s));
+    float centreX = L.legend.x + 8.0f * s + half;
+    float y = L.legend.y + 6.0f * s;
+    L.legendSwatches.clear();
+    for (size_t k = 0; k < L.legendMethods.size(); ++k, y += lineH) {
+        float r = L.dotRadius + CHART_MARK_CLEARANCE;
+        L.legendSwatches.push_back({centreX - r, y + lineH / 2 - r, 2 * r, 2 * r});
+    }
+    float ring = frontRingRadius(L) + 0.5f * frontRingWidth(s) + CHART_MARK_CLEARANCE;
+    float w = half + CHART_MARK_CLEARANCE;
+    y += frontLineExtra(L, lineH);
+    L.legendSwatches.push_back({centreX - w, y + lineH / 2 - ring, 2 * w, 2 * ring});
+    L.legendTextX = std::round(centreX + half + legendGap(s, legendPx));
 }
 
 // The y axis: 0 to the largest error, in round steps. Returns the step.
@@ -403,9 +445,11 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     L.labelPx = f.label;
     L.legendPx = f.legend;
 
+    L.dotRadius = std::max(4.5f * s, std::round(f.label * 0.25f));
     glm::vec2 legendSize = layoutLegend(L, rows, f, s);
     double yStep = layoutYRange(L, rows, accuracy);
     layoutFrame(L, f, s, yStep, legendSize);
+    placeLegend(L, f.legend);
     layoutXRange(L, rows, timing);
     layoutTicks(L, yStep);
     layoutDots(L, rows, timing, accuracy);
@@ -417,7 +461,6 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     for (size_t k : keepLabels) {
         if (k < rows.size()) needLabel[k] = true;
     }
-    L.dotRadius = std::max(4.5f * s, std::round(f.label * 0.25f));
     placeLabels(L, needLabel, keptLabelsOnly);
     return L;
 }
@@ -462,15 +505,16 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
         out.back().row = static_cast<int>(k);
     }
     float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
-    float y = L.legend.y + 6.0f * s;
-    float textX = L.legend.x + 22.0f * s + 4.0f * s;
-    for (int m : L.legendMethods) {
-        add({textX, y}, TextAlign::Left, L.legendPx, "chart-legend",
-            std::string(methodInfo(m).name))
-            .method = m;
-        y += lineH;
+    for (size_t k = 0; k <= L.legendMethods.size(); ++k) {
+        bool front = k == L.legendMethods.size();
+        float y = L.legendSwatches[k].centre().y - 0.5f * lineH;  // the line its mark centres
+        std::string name =
+            front ? "Pareto front" : std::string(methodInfo(L.legendMethods[k]).name);
+        add({L.legendTextX, y}, TextAlign::Left, L.legendPx, "chart-legend", name).method =
+            front ? -1 : L.legendMethods[k];
+        out.push_back({L.legendSwatches[k], 0.0f, "chart-swatch", name});
+        out.back().method = front ? -1 : L.legendMethods[k];
     }
-    add({textX, y}, TextAlign::Left, L.legendPx, "chart-legend", "Pareto front");
     return out;
 }
 
@@ -558,24 +602,21 @@ void drawLegendMarks(Canvas& c, const SpeedChartLayout& L) {
     float s = L.scale;
     float stroke = std::max(1.0f, std::round(s));
     float dotR = L.dotRadius;
-    float ring = std::max(1.5f, 1.5f * s);
-    float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
     c.fillRect(L.legend, {0.97f, 0.97f, 0.98f, 1.0f});
     c.strokeRect(L.legend, stroke, CHART_GRID);
-    float y = L.legend.y + 6.0f * s;
-    float swatchX = L.legend.x + 12.0f * s;
-    for (int m : L.legendMethods) {
-        c.circle({swatchX, y + lineH / 2}, dotR, methodColour(m));
-        y += lineH;
+    for (size_t k = 0; k < L.legendMethods.size(); ++k) {
+        c.circle(L.legendSwatches[k].centre(), dotR, methodColour(L.legendMethods[k]));
     }
-    c.line({swatchX - 8.0f * s, y + lineH / 2}, {swatchX + 8.0f * s, y + lineH / 2}, 1.5f * s,
-           FRONT);
-    c.ring({swatchX, y + lineH / 2}, dotR + 2.5f * s, ring, FRONT);
+    glm::vec2 front = L.legendSwatches.back().centre();
+    c.line(front - glm::vec2(frontHalfLine(s), 0.0f), front + glm::vec2(frontHalfLine(s), 0.0f),
+           1.5f * s, FRONT);
+    c.ring(front, frontRingRadius(L), frontRingWidth(s), FRONT);
 }
 
 // Every text where speedChartTextBoxes put it; a dot's label in a darker shade of its colour.
 void drawTexts(Canvas& c, std::span<const ChartTextBox> texts, std::span<const BenchRow> rows) {
     for (const ChartTextBox& b : texts) {
+        if (b.role == "chart-swatch") continue;  // a mark's box: drawLegendMarks draws it
         Colour ink = CHART_INK;
         if (b.role == "chart-subtitle" || b.role == "chart-tick") ink = CHART_SOFT_INK;
         if (b.role == "chart-label" && b.row >= 0 && static_cast<size_t>(b.row) < rows.size()) {

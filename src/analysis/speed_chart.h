@@ -62,7 +62,9 @@ struct ChartTextBox {
     Rect rect;
     float fontPx = 0.0f;
     std::string role;  // "chart-title", "chart-subtitle", "chart-axis", "chart-tick",
-                       // "chart-label" (a dot's name), "chart-legend"
+                       // "chart-label" (a dot's name), "chart-legend"; "chart-swatch": not a
+                       // text but the box a legend entry's mark covers (text: the entry's
+                       // words, fontPx 0), which no text may cover
     std::string text;
     int row = -1;     // chart-label: the row it names
     int method = -1;  // chart-legend: the method it names (-1: the front's entry)
@@ -90,6 +92,11 @@ struct SpeedChartLayout {
     std::vector<size_t> front;       // rows on the Pareto front, fastest first
     std::vector<int> legendMethods;  // methods present, in the rows' order of appearance
     Rect legend;
+    // Per legend line (the methods', then the front's): the box its mark covers (a dot; the
+    // front's line through a ringed dot) grown by CHART_MARK_CLEARANCE (chart_axes.h), in a
+    // column wide enough for the dot at its size; the names start right of it, at legendTextX.
+    std::vector<Rect> legendSwatches;
+    float legendTextX = 0.0f;
     // The type sizes, pixels: scaled with the chart, none below the minimum asked for.
     float titlePx = 0, subtitlePx = 0, axisPx = 0, tickPx = 0, labelPx = 0, legendPx = 0;
     float dotRadius = 4.5f;  // pixels; a quarter of the label size at least, to see from afar

@@ -31,9 +31,12 @@ double widerTickStep(double step) {
 // A type size at scale s, not below minPx (the chart's floor: 8, or a lesson frame's).
 float px(float base, float s, float minPx) { return std::max(minPx, std::round(base * s)); }
 
-// The width the y axis's tick labels need left of the plot ("100%" is the widest).
-float yTickRoom(float s, float tickFont) {
-    return std::round(measureText(FontFace::Sans, tickFont, "100%").x + 10.0f * s + 4.0f);
+// The width the y axis's tick labels need left of the plot: "100%", or a log axis's floor
+// ("<=0.1%") where that is wider.
+float yTickRoom(float s, float tickFont, const std::string& widest) {
+    float w = std::max(measureText(FontFace::Sans, tickFont, "100%").x,
+                       measureText(FontFace::Sans, tickFont, widest).x);
+    return std::round(w + 10.0f * s + 4.0f);
 }
 
 // Draws on a Canvas, or (no canvas) only records where each text goes: one code path lays out
@@ -52,6 +55,12 @@ class Painter {
         if (mTexts) mTexts->push_back({r, style.pixelSize, role, words});
         if (mCanvas) mCanvas->text(pos, words, style);
         return r;
+    }
+    // Records the box a legend entry's mark covers with its clearance (role "chart-swatch",
+    // named by the entry's words): the layout checks keep it off every text, its own words too.
+    void swatch(const Rect& r, const std::string& entry) {
+        if (mTexts)
+            mTexts->push_back({r.expanded(CHART_MARK_CLEARANCE), 0.0f, "chart-swatch", entry});
     }
     void line(glm::vec2 a, glm::vec2 b, float w, const Colour& c) {
         if (mCanvas) mCanvas->line(a, b, w, c);
@@ -148,8 +157,34 @@ namespace {
 
 struct LineAxes {
     double xLo, xHi;     // the x range (log10 with logX) shared by all panels
-    double yStep, yTop;  // the y tick step and the axis's top (its bottom: spec.yFloor)
+    double yStep, yTop;  // the y tick step and the axis's top (its bottom: spec.yFloor); with
+                         // logY both in decades (log10): a tick per decade up to 10^yTop
 };
+
+// With logY: the y of a value on the axis, log10 and never under the floor's.
+double logAxisY(const LineChartSpec& spec, double y) {
+    return std::log10(std::max(y, spec.yFloor));
+}
+
+// The y tick labels, bottom up: their values and texts. A log axis labels its floor "<=" (every
+// value under it lies there, 0 too) and each decade above.
+std::vector<std::pair<double, std::string>> yTickLabels(const LineChartSpec& spec,
+                                                        const LineAxes& axes, double yStep) {
+    std::vector<std::pair<double, std::string>> out;
+    if (spec.logY) {
+        double lo = logAxisY(spec, spec.yFloor);
+        for (double d = lo; d <= axes.yTop + 1e-9; d += yStep) {
+            double v = std::pow(10.0, d);
+            std::string t = chartTickText(v, spec.percentY);
+            out.emplace_back(v, d == lo ? "<=" + t : t);
+        }
+        return out;
+    }
+    for (double y = spec.yFloor; y <= axes.yTop + 0.5 * yStep; y += yStep) {
+        out.emplace_back(y, chartTickText(y, spec.percentY));
+    }
+    return out;
+}
 
 // Axis ranges shared by all panels: x over every point, y from the floor up past the largest
 // value in round steps (a share ends at exactly 100 %).
@@ -167,6 +202,12 @@ LineAxes lineAxesOf(const LineChartSpec& spec) {
     }
     if (xLo > xHi) xLo = 0.0, xHi = 1.0;
     if (xHi - xLo < 1e-9) xLo -= 0.5, xHi += 0.5;
+    if (spec.logY) {
+        // Decades from the floor to the one at or above the largest value (a share: 100 %).
+        double top = std::ceil(logAxisY(spec, yHi) - 1e-9);
+        if (spec.percentY && yHi <= 1.0) top = 0.0;
+        return {xLo, xHi, 1.0, std::max(top, logAxisY(spec, spec.yFloor) + 1.0)};
+    }
     double yStep = chartNiceStep(std::max(yHi - spec.yFloor, 1e-6) * 1.05 / 5.0);
     double yTop =
         spec.yFloor + std::ceil((std::max(yHi - spec.yFloor, 1e-6) * 1.05) / yStep) * yStep;
@@ -202,6 +243,11 @@ struct PanelPlot {
         return plot.x + static_cast<float>(t) * plot.w;
     }
     float yPixel(double y) const {
+        if (spec.logY) {
+            double lo = logAxisY(spec, spec.yFloor);
+            return plot.bottom() -
+                   static_cast<float>((logAxisY(spec, y) - lo) / (axes.yTop - lo)) * plot.h;
+        }
         return plot.bottom() -
                static_cast<float>((y - spec.yFloor) / (axes.yTop - spec.yFloor)) * plot.h;
     }
@@ -215,15 +261,17 @@ void paintPanelGrid(Painter& c, const PanelPlot& pp, const ChartPanel& panel, fl
     const LineChartSpec& spec = pp.spec;
     float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
     float stroke = std::max(1.0f, std::round(s));
-    // Fewer ticks where the panel is short: no two labels closer than a line.
-    double yStep = pp.axes.yStep, range = pp.axes.yTop - spec.yFloor;
+    // Fewer ticks where the panel is short: no two labels closer than a line (a log axis: every
+    // second decade, then every third).
+    double yStep = pp.axes.yStep;
+    double range = pp.axes.yTop - (spec.logY ? logAxisY(spec, spec.yFloor) : spec.yFloor);
     while (plot.h * yStep / range < tickH + 1.0f && yStep < range) {
-        yStep = widerTickStep(yStep);
+        yStep = spec.logY ? yStep + 1.0 : widerTickStep(yStep);
     }
-    for (double y = spec.yFloor; y <= pp.axes.yTop + 0.5 * yStep; y += yStep) {
+    for (const auto& [y, label] : yTickLabels(spec, pp.axes, yStep)) {
         float py = std::round(pp.yPixel(y)) + 0.5f;
         c.line({plot.x, py}, {plot.right(), py}, stroke, CHART_GRID);
-        c.text({plot.x - 5.0f * s, py - tickH / 2}, chartTickText(y, spec.percentY),
+        c.text({plot.x - 5.0f * s, py - tickH / 2}, label,
                {FontFace::Sans, tickFont, CHART_SOFT_INK, TextAlign::Right}, "chart-tick");
     }
     std::vector<double> xs;
@@ -278,7 +326,8 @@ void paintPanel(Painter& c, const LineChartSpec& spec, const LineAxes& axes,
     float tickFont = px(12, s, mn);
     float tickH = fontMetrics(FontFace::Sans, tickFont).lineHeight;
     float titleH = fontMetrics(FontFace::Sans, px(14, s, mn)).lineHeight;
-    float left = std::max(58.0f * s, yTickRoom(s, tickFont));
+    std::string floorTick = spec.logY ? yTickLabels(spec, axes, axes.yStep).front().second : "";
+    float left = std::max(58.0f * s, yTickRoom(s, tickFont, floorTick));
     // The top tick's label reaches half a line above the plot: the panel's title stays clear.
     float titleRoom = titleH + std::max(4.0f * s, 0.5f * tickH + 2.0f);
     Rect plot{std::round(cell.x + left), std::round(cell.y + titleRoom),
@@ -316,6 +365,7 @@ void paintLineLegend(Painter& c, const LineChartSpec& spec, const std::vector<Le
         } else {
             c.line(a, b, lw, e.colour);
         }
+        c.swatch({a.x, a.y - 0.5f * lw, b.x - a.x, lw}, e.label);
         c.text({box.x + 38.0f * s, y}, e.label, {FontFace::Sans, legendFont, CHART_INK},
                "chart-legend");
         y += lineH;
@@ -522,8 +572,9 @@ void paintBarLegend(Painter& c, const BarChartSpec& spec, const Rect& box, float
     c.strokeRect(box, stroke, CHART_GRID);
     float y = box.y + 6.0f * s;
     for (size_t b = 0; b < spec.series.size(); ++b) {
-        c.fillRect({box.x + 8.0f * s, y + 2.0f * s, 22.0f * s, lineH - 4.0f * s},
-                   BAR_SERIES[b % 4]);
+        Rect mark{box.x + 8.0f * s, y + 2.0f * s, 22.0f * s, lineH - 4.0f * s};
+        c.fillRect(mark, BAR_SERIES[b % 4]);
+        c.swatch(mark, spec.series[b]);
         c.text({box.x + 36.0f * s, y}, spec.series[b], {FontFace::Sans, legendFont, CHART_INK},
                "chart-legend");
         y += lineH;
@@ -550,7 +601,7 @@ void paintBarChart(const BarChartSpec& spec, glm::ivec2 size, Painter& c) {
     }
     legendW = std::round(legendW + 40.0f * s);
     top += tickH / 2;  // room for the top tick's label
-    float left = std::max(62.0f * s, yTickRoom(s, tickFont));
+    float left = std::max(62.0f * s, yTickRoom(s, tickFont, ""));
     float plotW = std::round(size.x - legendW - left - 28.0f * s);
     size_t groups = std::max<size_t>(spec.groups.size(), 1);
     BarLabels labels = barLabelsFor(spec, plotW / groups, s, tickFont);
@@ -635,7 +686,9 @@ void paintColourScale(Painter& c, const ColourScale& scale, Rect box, float s, f
     }
     float y = bar.bottom() + lineH * 0.5f + 8.0f * s;
     for (const auto& [colour, words] : scale.swatches) {
-        c.fillRect({bar.x, y + 2.0f * s, bar.w, lineH - 4.0f * s}, colour);
+        Rect mark{bar.x, y + 2.0f * s, bar.w, lineH - 4.0f * s};
+        c.fillRect(mark, colour);
+        c.swatch(mark, words);
         c.text({bar.right() + 9.0f * s, y}, words, {FontFace::Sans, font, CHART_INK},
                "chart-legend");
         y += lineH;

@@ -47,6 +47,10 @@ struct LineChartSpec {
     bool reverseX = false;  // largest x on the left
     bool percentY = false;  // y is a share: ticks as percents
     double yFloor = 0.0;    // y axis starts here; its top is the data's maximum, rounded up
+    // A log y axis from yFloor (> 0, a power of ten) up to the decade above the data (a share: to
+    // 100 %), a tick per decade. Values at or under the floor, 0 among them, lie on the floor's
+    // line, whose tick says so ("<=0.1%"): small shares and large ones read on one axis.
+    bool logY = false;
     std::vector<ChartPanel> panels;
     std::vector<std::string> notes;  // legend lines without a swatch (e.g. "dashed: pole")
     float minFontPx = 8.0f;          // no text below this (a lesson frame asks for its floor)
@@ -95,8 +99,9 @@ std::vector<uint8_t> drawImageChart(const ImageChartSpec& spec, glm::ivec2 size)
 // Every text the chart draws, where it is drawn (pixels from the chart's top left; one code path
 // lays out and draws), with its role: "chart-title" (the chart's and each small multiple's),
 // "chart-subtitle", "chart-axis", "chart-tick", "chart-label" (a bar group's name),
-// "chart-legend" (also a colour scale's label, ticks and swatches). Needs the fonts, not GL;
-// throws as the draw functions do.
+// "chart-legend" (also a colour scale's label, ticks and swatches' words); and where each legend
+// entry's mark goes, "chart-swatch" (no text to draw: the entry's words, font size 0), which no
+// text may cover. Needs the fonts, not GL; throws as the draw functions do.
 std::vector<ChartTextBox> lineChartTextBoxes(const LineChartSpec& spec, glm::ivec2 size);
 std::vector<ChartTextBox> barChartTextBoxes(const BarChartSpec& spec, glm::ivec2 size);
 std::vector<ChartTextBox> imageChartTextBoxes(const ImageChartSpec& spec, glm::ivec2 size);

@@ -268,10 +268,14 @@ LineChartSpec tradeoffChartSpec(std::span<const StabilityRow> rows, const std::s
     spec.subtitle = stabilityChartSubtitle(rows, Sweep::Tradeoff, subtitle);
     spec.xLabel = "constant bias, light depth units (log scale)";
     spec.yLabel =
-        "share of clean pixels wrong: acne = clean-lit pixels darker than 0.99, leak = clean "
-        "umbra pixels above 0.01";
+        "share of clean pixels wrong (log scale): acne = clean-lit pixels darker than 0.99, "
+        "leak = clean umbra pixels above 0.01";
     spec.logX = true;
     spec.percentY = true;
+    // A log axis: acne reaches 100 % where leak stays under 10 %, and both must be read against
+    // the 1 % onset; a decade under it, the floor holds the zeros.
+    spec.logY = true;
+    spec.yFloor = TRADEOFF_ONSET / 10.0;
     const glm::vec4 ACNE{0.84f, 0.37f, 0.0f, 1.0f};  // Okabe-Ito, as the biases'
     const glm::vec4 LEAK[] = {{0.0f, 0.45f, 0.70f, 1.0f}, {0.0f, 0.62f, 0.45f, 1.0f}};
     std::optional<StabilitySetup> setup = stabilitySetupOf(rows);

@@ -5,7 +5,8 @@
 //   leak       leak width against the constant bias: a panel per method, a line per bias, the
 //              second contact scene dashed;
 //   tradeoff   acne (at one elevation) and leak (at the contacts) against the constant bias, as
-//              shares of their clean pixels: a panel per method, the good biases shaded;
+//              shares of their clean pixels on a log axis (0.1 % to 100 %): a panel per method,
+//              the good biases shaded;
 //   precision  false-shadow rate against the light's depth range: a panel per bias, a line per
 //              depth format, the second method dashed;
 //   shimmer    mean change per frame over the same edge pixels, per method and bias;

@@ -302,4 +302,20 @@ FlickerTrace Animation::flickerTrace() const {
     return t;
 }
 
+FlickerCurves stepFlickerCurves(const std::string& lessonPath, int step, const LessonSettings& s,
+                                glm::ivec2 size) {
+    Session session(size, false);
+    session.loadLesson(lessonPath);
+    session.goToStep(step);
+    const LessonStep& st = session.lesson().steps[static_cast<size_t>(step)];
+    if (!st.animate) return {};
+    session.setSettings(s);
+    session.setSceneOnly(true);
+    AnimationOptions o = stepAnimationOptions(st, lessonPath, step + 1);
+    o.flicker = false;  // the curves, not their picture
+    Animation animation(session, o);
+    for (int k = 0; k < o.frames; ++k) animation.composeFrame(k);
+    return {animation.curve(), animation.compareCurve()};
+}
+
 }  // namespace pcf

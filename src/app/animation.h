@@ -59,6 +59,21 @@ AnimationOptions stepAnimationOptions(const LessonStep& step, const std::string&
 double animationSweepValue(const AnimationOptions& o, int k);
 std::string_view animationSweepUnit(AnimationSweep sweep);
 
+// A lesson step's flicker trace, the curves of its `animate` (stepAnimationOptions): the pinned
+// point's visibility at each frame of the sweep under the step's method (`main`) and under the
+// comparison (`compare`), from the frames the viewer and export compose (Animation), the scene
+// alone at `size`: the lesson at `lessonPath` on step `step` (from 0) with settings `s` (the
+// step's own, or the state after a key). The point belongs to the scene, so a light, sun, bias or
+// map-size sweep gives the same curves at every frame size (a camera sweep moves the point: its
+// curves are those of `size`). Empty for a step without `animate`. Needs a current OpenGL 4.5
+// context; throws InputError as loadLesson and stepAnimationOptions do.
+struct FlickerCurves {
+    std::vector<float> main;
+    std::vector<float> compare;
+};
+FlickerCurves stepFlickerCurves(const std::string& lessonPath, int step, const LessonSettings& s,
+                                glm::ivec2 size = MIN_SESSION_SIZE);
+
 // Drives a Session through a sweep. Construct after the session has its lesson, step and frame
 // size: the step's settings, light, camera and fit are the sweep's starting point.
 class Animation {

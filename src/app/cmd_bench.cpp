@@ -14,6 +14,9 @@
 //                            same rounds, and their ratio (scripts/pass-overhead prints it)
 // Everything is written into a staging folder inside DIR and moved into place only once the
 // whole sweep has succeeded, so a failure or an interrupt leaves no partial output behind.
+// `bench --replot CSV` measures nothing: it draws the charts of an existing bench.csv into DIR
+// (the titles' scene, frame, repeats, timing and contact distance from the options, as the run
+// was given them), so a chart whose drawing changed can be redrawn from a quiet run.
 #include <unistd.h>
 
 #include <algorithm>
@@ -32,10 +35,12 @@
 #include "analysis/light_visibility.h"
 #include "analysis/speed_chart.h"
 #include "analysis/stability.h"
+#include "analysis/step_chart.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
+#include "base/input_error.h"
 #include "base/memory_budget.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
@@ -81,6 +86,7 @@ struct BenchCommandOptions {
     bool reference = false;
     int threads = 0;
     bool force = false;
+    std::string replot;       // --replot CSV: draw that bench.csv's charts, measure nothing
     CLI::App* sub = nullptr;  // to tell options the user gave from defaults
 
     bool given(const char* option) const { return sub != nullptr && sub->count(option) > 0; }
@@ -392,18 +398,19 @@ BenchSetup setupOf(const BenchPlan& plan, const BenchResult& result, const GlCon
     return setup;
 }
 
-// The two charts into the staging folder: time against edge RMSE, and against shimmer.
-void writeCharts(const BenchPlan& plan, const BenchResult& result, bool quick,
+// The two charts into the staging folder: time against edge RMSE, and against shimmer (and
+// with --contact, against the edge RMSE near the casters).
+void writeCharts(const BenchPlan& plan, const std::vector<BenchRow>& rows, bool quick,
                  const fs::path& staging) {
     const BenchOptions& o = plan.config.options;
     std::string where = plan.config.scene.name + ", " + std::to_string(o.frameSize.x) + "x" +
                         std::to_string(o.frameSize.y) +
                         (o.areaTruth ? ", truth: " + truthWords(plan) : std::string());
     std::string indicative = quick ? " (--quick: timings indicative only)" : "";
-    std::string timer = result.rows.empty() ? std::string() : result.rows.front().timer;
+    std::string timer = rows.empty() ? std::string() : rows.front().timer;
     SpeedChartText text;
     text.minFontPx = STANDALONE_CHART_MIN_PX;
-    text.subtitle = chartRendererLine(speedChartRenderer(result.rows)) + "\nmedian of " +
+    text.subtitle = chartRendererLine(speedChartRenderer(rows)) + "\nmedian of " +
                     std::to_string(o.gpuRepeats) + " round-robin samples (" +
                     std::to_string(2 * o.gpuRepeats) + " where the first were noisy), " + timer +
                     "; bars: IQR";
@@ -413,25 +420,68 @@ void writeCharts(const BenchPlan& plan, const BenchResult& result, bool quick,
     text.title = "Speed against accuracy" + indicative + ": " + where;
     text.yLabel = "aliasing: edge-band RMSE of visibility";
     writePngRgba8((staging / ACCURACY_CHART).string(), plan.chartSize.x, plan.chartSize.y,
-                  drawSpeedChart(result.rows, plan.chartSize, text, plan.timing));
+                  drawSpeedChart(rows, plan.chartSize, text, plan.timing));
     text.title = "Speed against stability" + indicative + ": " + where;
     text.yLabel =
         "shimmer: 99th percentile of a flickering pixel's change per 1/32-texel "
         "slide of the map (" +
         std::to_string(o.shimmerFrames) + " frames)";
-    writePngRgba8(
-        (staging / STABILITY_CHART).string(), plan.chartSize.x, plan.chartSize.y,
-        drawSpeedChart(result.rows, plan.chartSize, text, plan.timing, ChartAccuracy::Shimmer));
+    writePngRgba8((staging / STABILITY_CHART).string(), plan.chartSize.x, plan.chartSize.y,
+                  drawSpeedChart(rows, plan.chartSize, text, plan.timing, ChartAccuracy::Shimmer));
     if (plan.config.options.contactDistance > 0.0f) {
         text.title = "Speed against accuracy near the contacts" + indicative + ": " + where;
-        text.yLabel = contactAxisLabel(result.rows);
-        writePngRgba8((staging / CONTACT_CHART).string(), plan.chartSize.x, plan.chartSize.y,
-                      drawSpeedChart(result.rows, plan.chartSize, text, plan.timing,
-                                     ChartAccuracy::ContactRmse));
+        text.yLabel = contactAxisLabel(rows);
+        writePngRgba8(
+            (staging / CONTACT_CHART).string(), plan.chartSize.x, plan.chartSize.y,
+            drawSpeedChart(rows, plan.chartSize, text, plan.timing, ChartAccuracy::ContactRmse));
     }
 }
 
+// The options that choose or tune what is measured and that no chart title names: --replot
+// measures nothing, so they would be silently ignored there.
+constexpr const char* MEASURING_OPTIONS[] = {"--methods", "--kernels", "--map-sizes",
+                                             "--weights", "--quick",   "--full",
+                                             "--spp",     "--threads", "--reference"};
+
+// bench --replot CSV: the charts of an existing bench.csv, into -o, nothing measured. The CSV is
+// read with every input check (one line naming the file and the problem); the charts are staged
+// and moved into place together, as a run's are.
+int runReplot(const BenchCommandOptions& o) {
+    for (const char* option : MEASURING_OPTIONS) {
+        if (o.given(option)) {
+            throw UsageError(std::string(option) +
+                             " does not apply to --replot, which draws an existing bench.csv "
+                             "and measures nothing");
+        }
+    }
+    BenchPlan plan = parsePlan(o);
+    std::vector<BenchRow> rows = readChartRows(o.replot);
+    if (rows.empty()) throw InputError(o.replot, 0, "no rows to chart");
+    bool contact = plan.config.options.contactDistance > 0.0f;
+    if (contact && rows.front().contact.edgePixels <= 0) {
+        throw UsageError("--contact: " + o.replot +
+                         " has no contact columns measured (its run had no --contact)");
+    }
+    if (o.out.empty()) throw UsageError("-o needs a directory");
+    std::vector<std::string> names = {ACCURACY_CHART, STABILITY_CHART};
+    if (contact) names.push_back(CONTACT_CHART);
+    OutputFiles outputs(o.force);
+    outputs.addInput("--replot", o.replot);
+    outputs.addDirectory("-o", o.out);
+    for (const std::string& name : names) outputs.add("-o", fs::path(o.out) / name);
+    StagingDir staging(o.out, "bench");
+    std::unique_ptr<GlContext> gl = createHeadlessContext();
+    writeCharts(plan, rows, false, staging.path());
+    outputs.commitStaged(staging.path(), o.out, names);
+    std::fprintf(stderr, "bench: drew %zu rows of %s into %s/{%s}\n", rows.size(), o.replot.c_str(),
+                 o.out.c_str(),
+                 contact ? "speed_vs_accuracy.png, speed_vs_stability.png, speed_vs_contact.png"
+                         : "speed_vs_accuracy.png, speed_vs_stability.png");
+    return 0;
+}
+
 int runBenchCommand(const BenchCommandOptions& o) {
+    if (o.given("--replot")) return runReplot(o);
     // Every check first: nothing is computed or written unless all of it can be.
     BenchPlan plan = parsePlan(o);
     glm::ivec2 frame = plan.config.options.frameSize;
@@ -462,7 +512,7 @@ int runBenchCommand(const BenchCommandOptions& o) {
     std::string markdown = benchMarkdown(result.rows, setup);
     writeTextFile((staging.path() / CSV_NAME).string(), benchCsv(result.rows));
     writeTextFile((staging.path() / MD_NAME).string(), markdown);
-    writeCharts(plan, result, o.quick, staging.path());
+    writeCharts(plan, result.rows, o.quick, staging.path());
     if (o.reference) {
         writeTextFile((staging.path() / REFERENCE_CSV_NAME).string(), referenceCsv(result.rows));
     }
@@ -556,6 +606,10 @@ Command addBenchCommand(CLI::App& app) {
     sub->add_option("--threads", o->threads,
                     "CPU threads for the ground truth, the clean masks and the CPU kernel "
                     "timing (0 = all cores, the default)");
+    sub->add_option("--replot", o->replot,
+                    "CSV: measure nothing, draw the charts of this bench.csv into -o (give the "
+                    "run's --scene, --size, --repeats, --timing and --contact: the titles say "
+                    "them)");
     sub->add_flag("-f,--force", o->force, "overwrite existing output files");
     return {sub, [o] { return runBenchCommand(*o); }};
 }

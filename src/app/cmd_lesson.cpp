@@ -1,6 +1,7 @@
 // cmd_lesson.cpp: `pcfscope lesson check FILE`: verifies every claim of a lesson's steps
 // (lesson/lesson_claims.h) on the step's own lookup, and after each key the step's words invite
-// (`keys`). The lookup belongs to a scene point (lesson/lesson_pick.h), so it is the same at every
+// (`keys`); a claim about an animating step's frames (`flickers`) on the frames its sweep composes.
+// The lookup belongs to a scene point (lesson/lesson_pick.h), so it is the same at every
 // frame size and mode: the claims are checked once per state, and the point is checked to show in
 // the scene view of every frame size a class is likely to see, normal and presentation.
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include "analysis/chart_facts.h"
 #include "analysis/speed_chart.h"
 #include "analysis/step_chart.h"
+#include "app/animation.h"
 #include "app/commands.h"
 #include "app/session.h"
 #include "app/step_view.h"
@@ -116,6 +118,11 @@ struct Checker {
         ClaimWorld world = chartWorld(step);
         world.onPlane = std::holds_alternative<Plane>(
             lesson.scene.objects[static_cast<size_t>(point.object)].shape);
+        // `flickers`: the step's sweep played as the viewer plays it (loadLessonChecked refused
+        // the claim on a step that does not move).
+        world.flickerCurve = [&]() -> std::variant<std::vector<float>, std::string> {
+            return stepFlickerCurves(lesson.sourcePath, static_cast<int>(index), s).main;
+        };
         for (const StepClaim& claim : step.claims) {
             ++checked;
             std::string why;

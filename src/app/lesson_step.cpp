@@ -24,6 +24,12 @@ Lesson loadLessonChecked(const std::string& path) {
         if (step.animate) stepAnimationOptions(step, path, static_cast<int>(i) + 1);  // checks
         // A fact about a chart names one its chart's table knows (analysis/chart_facts.h).
         for (const StepClaim& claim : step.claims) {
+            // A claim about the frames reads the step's sweep (animation.h: stepFlickerCurves).
+            if (isMotionClaim(claim) && !step.animate) {
+                throw InputError(path, claim.line,
+                                 which + " claim \"" + claim.text +
+                                     "\": the step does not move (it has no animate)");
+            }
             std::string fact = chartFactOf(claim);
             if (fact.empty()) continue;
             if (step.chart.empty()) {
@@ -77,6 +83,7 @@ std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLay
     for (const ChartTextBox& b : stepChartTexts(stepChart(step, layout.presentation), size)) {
         BoxKind kind = b.role == "chart-tick"                                ? BoxKind::Number
                        : b.role == "chart-label" || b.role == "chart-legend" ? BoxKind::Label
+                       : b.role == "chart-swatch"                            ? BoxKind::Mark
                                                                              : BoxKind::Text;
         Rect r{b.rect.x + layout.scene.x, b.rect.y + layout.scene.y, b.rect.w, b.rect.h};
         out.push_back({kind, r, "scene", b.role, b.fontPx, false, b.text});

@@ -150,7 +150,18 @@ std::string numberText(double v) {
 
 class ParsedClaim {
   public:
-    enum Kind { Lit, Shadowed, Penumbra, FailingNearer, OnGround, Bits, Compare, Chart, ChartFact };
+    enum Kind {
+        Lit,
+        Shadowed,
+        Penumbra,
+        FailingNearer,
+        OnGround,
+        Bits,
+        Flickers,
+        Compare,
+        Chart,
+        ChartFact
+    };
     Kind kind = Compare;
     std::vector<ClaimToken> lhs, rhs;
     std::string op;
@@ -200,6 +211,7 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
     if (t == "penumbra") c->kind = ParsedClaim::Penumbra;
     if (t == "failing taps nearer") c->kind = ParsedClaim::FailingNearer;
     if (t == "on the ground") c->kind = ParsedClaim::OnGround;
+    if (t == "flickers") c->kind = ParsedClaim::Flickers;
     if (t.rfind("bits ", 0) == 0) {
         c->kind = ParsedClaim::Bits;
         c->bits = trim(std::string_view(t).substr(5));
@@ -216,7 +228,7 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
     if (at == std::string_view::npos) {
         throw std::invalid_argument(
             "no comparison (=, !=, <, <=, >, >=, ~) and not a keyword (lit, shadowed, penumbra, "
-            "failing taps nearer, on the ground, chart: ...)");
+            "failing taps nearer, on the ground, flickers, chart: ...)");
     }
     c->op = op;
     std::string_view rhs = std::string_view(t).substr(at + op.size());
@@ -252,6 +264,10 @@ bool isChartClaim(const StepClaim& claim) {
                             claim.parsed->kind == ParsedClaim::ChartFact);
 }
 
+bool isMotionClaim(const StepClaim& claim) {
+    return claim.parsed && claim.parsed->kind == ParsedClaim::Flickers;
+}
+
 namespace {
 
 bool litHolds(const Trace& t) {
@@ -273,6 +289,34 @@ bool failingNearer(const Trace& t, std::string* why) {
         }
     }
     return true;
+}
+
+// Whether the curve jumps by FLICKER_JUMP or more between two consecutive frames; `why` gets its
+// largest change and where, or the frame whose point is on no receiver.
+bool curveFlickers(const std::vector<float>& curve, std::string* why) {
+    float most = 0.0f;
+    size_t at = 0;
+    for (size_t k = 0; k < curve.size(); ++k) {
+        if (curve[k] < 0.0f) {
+            if (why) *why = "frame " + std::to_string(k) + ": the point is on no receiver";
+            return false;
+        }
+        if (k == 0) continue;
+        float change = std::fabs(curve[k] - curve[k - 1]);
+        if (change > most) {
+            most = change;
+            at = k;
+        }
+    }
+    if (why) {
+        *why =
+            "largest change between two frames " + numberText(most) +
+            (most > 0.0f ? " (frame " + std::to_string(at - 1) + " to " + std::to_string(at) + ")"
+                         : std::string()) +
+            " over " + std::to_string(curve.size()) + " frames; flicker is a jump of " +
+            numberText(FLICKER_JUMP) + " or more";
+    }
+    return most >= FLICKER_JUMP;
 }
 
 bool compare(double a, const std::string& op, double b, double tolerance) {
@@ -314,6 +358,15 @@ bool claimHolds(const StepClaim& claim, const Trace& trace, const StepContext& c
         case ParsedClaim::OnGround:
             say("the point is not on a plane");
             return world.onPlane;
+        case ParsedClaim::Flickers: {
+            if (!world.flickerCurve) return true;
+            std::variant<std::vector<float>, std::string> curve = world.flickerCurve();
+            if (auto* problem = std::get_if<std::string>(&curve)) {
+                say(*problem);
+                return false;
+            }
+            return curveFlickers(std::get<std::vector<float>>(curve), why);
+        }
         case ParsedClaim::Chart: {
             if (!world.chartLess) return true;
             std::variant<bool, std::string> r = world.chartLess(c.chartA, c.chartB, c.metric);

@@ -12,20 +12,25 @@
 //     "bits 1010",                      every read's bit, in read order
 //     "chart: pcf-gather3 faster than pcf-hw3",   an order on the step's chart (bench.csv)
 //     "chart: measured on llvmpipe",    any other fact of the step's chart's table
+//     "flickers",                       an animating step: the ringed point's visibility jumps
+//                                       between two frames of the step's sweep
 //   ]
 //
 // Keywords: `lit` (every read that counts passes, visibility 1), `shadowed` (visibility 0),
 // `penumbra` (0 < visibility < 1), `failing taps nearer`, `on the ground` (the picked point lies
-// on a plane), `bits B...` (the reads' bits). Expressions: numbers, {placeholders} (any number
-// placeholder of lesson_text.h, with *F factors), + - * / and parentheses, compared with = != < <=
-// > >= or ~ (near, with a tolerance: `a ~ b +- t` holds when |a - b| <= t). `=` is exact: use it
-// for counts and bits. Chart claims read the CSV the step's chart draws: `chart: A faster than B` /
-// `slower than` (the median scene-pass time), `more accurate than` / `less accurate than` (the
-// chart's y axis: the edge RMSE against the ray-cast truth, or near the contacts on a
-// "PATH#contact" chart); A and B are dot labels or their first word, as chart_highlight
-// takes them. Any other `chart: FACT` is one of the facts the chart's data answers
-// (analysis/chart_facts.h: the renderer it was measured on, where acne and leak lie on the bias
-// axis); `lesson check` names the facts it knows when one is not among them.
+// on a plane), `bits B...` (the reads' bits), `flickers` (a step with `animate`: the flicker
+// trace's line of the step's method, the point's visibility frame by frame, changes by at least
+// FLICKER_JUMP between two consecutive frames: the jagged line of a hard edge crossing the point).
+// Expressions: numbers, {placeholders} (any number placeholder of lesson_text.h, with *F factors),
+// + - * / and parentheses, compared with = != < <= > >= or ~ (near, with a tolerance: `a ~ b +- t`
+// holds when |a - b| <= t). `=` is exact: use it for counts and bits. Chart claims read the CSV the
+// step's chart draws: `chart: A faster than B` / `slower than` (the median scene-pass time), `more
+// accurate than` / `less accurate than` (the chart's y axis: the edge RMSE against the ray-cast
+// truth, or near the contacts on a "PATH#contact" chart); A and B are dot labels or their first
+// word, as chart_highlight takes them. Any other `chart: FACT` is one of the facts the chart's data
+// answers (analysis/chart_facts.h: the renderer it was measured on, the truth it was measured
+// against, the Pareto front, where acne and leak lie on the bias axis); `lesson check` names the
+// facts it knows when one is not among them.
 //
 // A step's `keys = ["O", "+"]` names the viewer keys its words are written to survive (a step that
 // tells the class to press O): the checker verifies the claims after each of those keys too.
@@ -47,6 +52,11 @@
 
 namespace pcf {
 
+// The smallest change of visibility between two consecutive frames that `flickers` counts: half
+// the range, which a filter's smooth creep (1/32 texel a frame) never makes and nearest's 0 <-> 1
+// always does.
+constexpr float FLICKER_JUMP = 0.5f;
+
 // What a claim may read besides the trace and the step's context.
 struct ClaimWorld {
     bool onPlane = false;  // the picked point lies on a plane
@@ -59,6 +69,10 @@ struct ClaimWorld {
     // that decided it, or the reason it cannot be told (an unknown fact, a file without the
     // data: then false). Unset: held.
     std::function<bool(const std::string& fact, std::string* why)> chartFact;
+    // A motion claim (`flickers`): the step's flicker trace, the pinned point's visibility under
+    // the step's method at each frame of its animation (-1: the point on no receiver in that
+    // frame), or the reason there is none. Unset: held (the viewer, which plays the frames).
+    std::function<std::variant<std::vector<float>, std::string>()> flickerCurve;
 };
 
 // Parses a claim; std::invalid_argument naming what is wrong (an unknown placeholder, a missing
@@ -75,5 +89,8 @@ std::string chartFactOf(const StepClaim& claim);
 
 // Whether the claim reads the step's chart (an order or a fact; nothing of the trace).
 bool isChartClaim(const StepClaim& claim);
+
+// Whether the claim reads the step's animation (`flickers`; nothing of the still frame's trace).
+bool isMotionClaim(const StepClaim& claim);
 
 }  // namespace pcf
