@@ -16,6 +16,10 @@
 //   - values that feed floor() are PCF_PRECISE, so the GLSL compiler cannot fuse a multiply
 //     and an add and land on the other side of an integer than the CPU does;
 //   - constant arrays use PCF_CONST_ARRAY / PCF_ARRAY_BEGIN / PCF_ARRAY_END;
+//   - a member added to a struct the C++ side builds positionally (PcfParams, PcfBias) comes
+//     last, with its C++ default: `float x PCF_DEFAULT(1.0f);`. C++ code that builds the struct
+//     without it keeps compiling, warning-free; GLSL has no member defaults, and the programs
+//     build the structs member by member (render/pcf_programs.h, pcfProgramParams/-Bias);
 //   - no #include here: the C++ wrapper (src/kernel/pcf.h) includes GLM, the shader loader
 //     concatenates the sources in order.
 
@@ -33,6 +37,7 @@
 #define PCF_CONST_ARRAY(T, name, n) inline const T name[n] =
 #define PCF_ARRAY_BEGIN(T, n) {
 #define PCF_ARRAY_END }
+#define PCF_DEFAULT(value) = value
 
 #else  // GLSL
 
@@ -43,6 +48,7 @@
 #define PCF_CONST_ARRAY(T, name, n) const T name[n] =
 #define PCF_ARRAY_BEGIN(T, n) T[n](
 #define PCF_ARRAY_END )
+#define PCF_DEFAULT(value)
 
 // In GLSL the map is the depth texture behind a non-comparison sampler (nearest), and the
 // same texture is bound a second time behind a comparison sampler (GL_LINEAR,
