@@ -373,7 +373,7 @@ LabelSpot bestLabelSpot(const SpeedChartLayout& L, glm::vec2 p, glm::vec2 t, boo
     float bestRing = 0.0f;
     // A label the chart must show may look farther out (with a leader) before it settles
     // on a spot that covers another.
-    for (float ring : {1.0f, 2.2f, 3.6f, 5.2f, 7.0f}) {
+    for (float ring : {1.0f, 2.2f, 3.6f, 5.2f, 7.0f, 9.0f, 11.5f}) {
         if (ring > 4.0f && !mustShow) break;
         float r = (L.dotRadius + 3.0f * s) * ring;
         float d = 0.7f * r;
@@ -386,7 +386,9 @@ LabelSpot bestLabelSpot(const SpeedChartLayout& L, glm::vec2 p, glm::vec2 t, boo
         for (glm::vec2 spot : spots) {
             Rect box{std::round(spot.x), std::round(spot.y), t.x, t.y};
             float cost = 4.0f * outsideArea(box, L.plot);
-            for (const Rect& o : placed) cost += overlapArea(box, o);
+            // A name on a name cannot be read at all; a name over a dot hides one dot: where
+            // a crowd leaves no clean spot, cover dots, not names.
+            for (const Rect& o : placed) cost += 20.0f * overlapArea(box, o);
             for (const Rect& o : dots) cost += 2.0f * overlapArea(box, o);
             if (mustShow) cost *= 100.0f;  // a leader farther out beats covering a name
             cost += ring;                  // prefer the nearest ring among equals
