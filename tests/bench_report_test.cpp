@@ -127,7 +127,7 @@ TEST(BenchReport, TheShippedCsvParses) {
         EXPECT_NE(r.glRenderer.find("llvmpipe"), std::string::npos) << name;
         EXPECT_GT(r.acne.count, 0) << name;
         // (pcss at the 256 and 512 maps has no clean umbra pixel to count: its leak is 0 of 0
-        // pixels, which bench.md prints as 0.00 %.)
+        // pixels, which bench.md prints as "-", BenchReport.AnEmptyMaskIsNoMeasurement.)
         if (r.point.method != PCF_PCSS || r.point.mapSize >= 1024) {
             EXPECT_GT(r.leak.count, 0) << name;
         }
@@ -136,6 +136,17 @@ TEST(BenchReport, TheShippedCsvParses) {
             EXPECT_EQ(r.shimmer.flickerP99, 1.0) << name;
         }
     }
+}
+
+TEST(BenchReport, AnEmptyMaskIsNoMeasurement) {
+    // Row b's acne mask is empty (acne = {}): its acne column reads "-", not 0.00 %; row a's
+    // shares are percentages of their masks.
+    std::vector<BenchRow> rows = sampleRows();
+    BenchSetup setup;
+    std::string md = benchMarkdown(rows, setup);
+    EXPECT_NE(md.find("| 12.50 | 6.25 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| - | 6.25 |"), std::string::npos) << md;
+    EXPECT_EQ(md.find("| 0.00 | 6.25 |"), std::string::npos) << md;
 }
 
 TEST(BenchReport, BadCsvNamesTheLine) {

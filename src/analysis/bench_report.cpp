@@ -29,6 +29,12 @@ std::string format(const char* fmt, double v) {
     return buf;
 }
 
+// An acne or leak share in percent, or "-" when its mask held no pixel (a footprint wider than
+// every clean region of the frame): 0 of 0 is no measurement, not a clean 0.00 %.
+std::string failurePercent(const FailureRate& f) {
+    return f.count > 0 ? format("%.2f", 100.0 * f.share) : std::string("-");
+}
+
 // One line of bench.md's table.
 std::string tableLine(const BenchRow& r, bool onFront) {
     std::string name(methodInfo(r.point.method).name);
@@ -41,9 +47,8 @@ std::string tableLine(const BenchRow& r, bool onFront) {
            format("%.3f", r.lookupMsIqr) + " | " + format("%.1f", r.cpuNsPerPixel) + " | " +
            std::to_string(r.texelReads) + " | " + format("%.4f", r.error.rmse) + " | " +
            format("%.4f", r.error.maxErr) + " | " + format("%.4f", r.error.edgeRmse) + " | " +
-           format("%.4f", r.error.edgeMaxErr) + " | " + format("%.2f", 100.0 * r.acne.share) +
-           " | " + format("%.2f", 100.0 * r.leak.share) + " | " +
-           format("%.3f", r.shimmer.flickerP99) + " | " +
+           format("%.4f", r.error.edgeMaxErr) + " | " + failurePercent(r.acne) + " | " +
+           failurePercent(r.leak) + " | " + format("%.3f", r.shimmer.flickerP99) + " | " +
            format("%.2f", 100.0 * r.shimmer.flickerShare) + " |\n";
 }
 
@@ -271,7 +276,8 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
           "Edge RMSE is the filter's aliasing error (the edge band, where the truth is partly "
           "lit); acne % is the share of the clean lit pixels (fully lit over the method's whole "
           "footprint) the method darkens below 0.99, leak % the share of the clean umbra pixels "
-          "it lights above 0.01: bias errors, kept apart from the filter's. Shimmer p99 is the "
+          "it lights above 0.01 (- where the method's footprint leaves no clean pixel to count): "
+          "bias errors, kept apart from the filter's. Shimmer p99 is the "
           "99th percentile of a pixel's change per 1/32-texel slide of the map's grid (" +
           std::to_string(setup.shimmerFrames) +
           " frames) over the pixels that flicker (change by more than 1/512), flicker % their "
