@@ -14,6 +14,7 @@ uniform float uSoftScale;
 uniform float uRpdbMax;      // receiver-plane: cap on dz/duv, depth per uv unit
 uniform float uSigma;  // gaussian weights, texels
 uniform float uPenumbraScale;  // pcss: texels of penumbra per unit of light depth
+uniform vec2 uPcssDepthRange;  // pcss: a spot map's near, far; 0: orthographic
 
 layout(location = 0) out float oVisibility;
 
@@ -34,5 +35,6 @@ void main() {
     PcfRef ref = PcfRef(lookup.z, uv, PcfBias(PCF_LOOKUP_BIAS, dzduv, uSoftScale, uRpdbMax));
     oVisibility = pcfFilterRef(uPcfDepth, uv, ref,
                                PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation, PCF_WEIGHTS,
-                                         uSigma, uPenumbraScale));
+                                         uSigma, uPenumbraScale, uPcssDepthRange.x,
+                                         uPcssDepthRange.y));
 }

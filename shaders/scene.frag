@@ -32,6 +32,7 @@ uniform float uRpdbMax;               // receiver-plane: cap on dz/duv, depth pe
 uniform float uRadius;                // poisson radius in texels
 uniform float uSigma;                 // gaussian weights, texels
 uniform float uPenumbraScale;         // pcss: texels of penumbra per unit of light depth
+uniform vec2 uPcssDepthRange;         // pcss: a spot map's near, far; 0: orthographic
 uniform ivec2 uPickPixel;             // a lesson's pinned point's pixel (window coords); -1: none
 uniform vec4 uPickLookup;             // its u, v, ref, z0, computed on the CPU
 uniform vec2 uPickDzDuv;              // its receiver plane, dz/du, dz/dv
@@ -105,7 +106,8 @@ void main() {
         PcfRef lookupRef = PcfRef(ref, vec2(u, v), PcfBias(BIAS_MODE, dzduv, uSoftScale, uRpdbMax));
         visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef,
                                   PcfParams(PCF_METHOD, PCF_KERNEL, uRadius, rotation,
-                                            PCF_WEIGHTS, uSigma, uPenumbraScale));
+                                            PCF_WEIGHTS, uSigma, uPenumbraScale,
+                                            uPcssDepthRange.x, uPcssDepthRange.y));
     }
     // Gamma 2.2 of albedo * light, light = ambient + diffuse * visibility (a scalar):
     //   (albedo * light)^(1/2.2) = albedo^(1/2.2) * light^(1/2.2)

@@ -126,6 +126,11 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
     if (json.contains("penumbra_scale")) {
         r.prm.penumbraScale = jsonFloat(json, "penumbra_scale", where);
     }
+    // A spot map's near and far for pcss; folders written before them have none (0: linear).
+    if (json.contains("pcss_depth_near") || json.contains("pcss_depth_far")) {
+        r.prm.depthNear = jsonFloat(json, "pcss_depth_near", where);
+        r.prm.depthFar = jsonFloat(json, "pcss_depth_far", where);
+    }
     r.prm.weights = *weights;
     r.prm.sigma = jsonFloat(json, "sigma", where);
     r.prm.precision = *precision;

@@ -76,6 +76,8 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
     glProgramUniform1f(program, glGetUniformLocation(program, "uRpdbMax"), bias.rpdbMax);
     glProgramUniform1f(program, glGetUniformLocation(program, "uSigma"), prm.sigma);
     glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
+    glProgramUniform2f(program, glGetUniformLocation(program, "uPcssDepthRange"), prm.depthNear,
+                       prm.depthFar);
     drawOver(program, prm.radius);
 }
 
@@ -156,6 +158,8 @@ void GpuLookup::drawReference(const PcfParams& prm) {
     GLuint program = it->second.id();
     glUseProgram(program);
     glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
+    glProgramUniform2f(program, glGetUniformLocation(program, "uPcssDepthRange"), prm.depthNear,
+                       prm.depthFar);
     drawOver(program, prm.radius);
 }
 

@@ -232,8 +232,9 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     setSettingUniforms(program, settings);
     glProgramUniform1f(program, uniform(program, "uShadowTexelWs"),
                        pcf::shadowTexelWs(mScene, settings.mapSize));
-    glProgramUniform1f(program, uniform(program, "uPenumbraScale"),
-                       pcfParams(settings).penumbraScale);
+    PcfParams pcss = pcfParams(settings);
+    glProgramUniform1f(program, uniform(program, "uPenumbraScale"), pcss.penumbraScale);
+    glProgramUniform2f(program, uniform(program, "uPcssDepthRange"), pcss.depthNear, pcss.depthFar);
     // A lesson's pinned point (setPick); pixel -1, -1 matches no fragment.
     glm::ivec2 pickPixel = mPick ? mPick->pixelGl : glm::ivec2(-1);
     glm::vec4 pickLookup = mPick ? mPick->lookup : glm::vec4(0.0f);
