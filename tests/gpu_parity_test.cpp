@@ -293,8 +293,8 @@ TEST_F(GpuParity, RenderedFixedPointFramesMatchWithAnyBias) {
 }
 
 TEST_F(GpuParity, RenderedScenesMatchTheCpuKernelOnTheirOwnLightSpaceTarget) {
-    // post-under-spot: a spot light's perspective map (its pcss has S = 0: poisson of radius 1),
-    // on the smaller map only, to keep the test lean.
+    // post-under-spot: a spot light's perspective map (its pcss works in linearised depth: the
+    // map's near and far reach the shader), on the smaller map only, to keep the test lean.
     for (const char* preset : {"box-on-plane", "sphere-over-plane", "stairs", "post-under-spot"}) {
         Scene scene = *presetScene(preset);
         SceneRenderer renderer(scene);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
 #include "kernel/methods.h"
@@ -28,7 +29,8 @@ PcfParams pcssParams(float penumbraScale, vec2 rotation = vec2(1.0f, 0.0f)) {
 
 PcfPcssEstimate estimate(const ShadowMap& map, vec2 uv, float ref, float scale) {
     PcfParams prm = pcssParams(scale);
-    return pcfPcssEstimate(plainMap(map, prm), uv, pcfPlainRef(ref, uv), scale, prm.rotation);
+    return pcfPcssEstimate(plainMap(map, prm), uv, pcfPlainRef(ref, uv), scale, 0.0f, 0.0f,
+                           prm.rotation);
 }
 
 // A 64 x 64 map lit at depth 1 but for an occluder at `depth` over columns i < 32.
@@ -210,7 +212,7 @@ TEST(Pcss, TheScaleIsTheLightsAngleInTexelsPerDepthUnit) {
                 2.0f * penumbraScale(scene.light, m, mapSize, 1.5f), expected * 1e-4f);
     EXPECT_NEAR(penumbraScale(scene.light, widenShadowDepthRange(m, 2.0f), mapSize, 1.5f),
                 2.0f * penumbraScale(scene.light, m, mapSize, 1.5f), expected * 1e-4f);
-    // Only pcss gets a scale; a spot light's perspective map gets none.
+    // Only pcss gets a scale; a spot light on an orthographic map (not a perspective one) none.
     ShadowSettings s;
     s.method = PCF_GATHER;
     EXPECT_EQ(pcssPcfParams(scene.light, m, s).penumbraScale, 0.0f);
@@ -218,6 +220,77 @@ TEST(Pcss, TheScaleIsTheLightsAngleInTexelsPerDepthUnit) {
     EXPECT_GT(pcssPcfParams(scene.light, m, s).penumbraScale, 0.0f);
     scene.light.type = LightType::Spot;
     EXPECT_EQ(pcssPcfParams(scene.light, m, s).penumbraScale, 0.0f);
+}
+
+// A spot map with near 1 and far 4 stores z = 4/3 * (1 - 1/d) at distance d: an occluder at
+// d = 2 over the left half (z = 2/3), a receiver at d = 3 (z = 8/9) on the edge, S = 60. By
+// Fernando's formulas in linear distance: the search radius S / 2 * (3 - 1) / (3 * 1) = 20
+// texels, its 8 taps left of the edge block at mean distance 2, the penumbra
+// S * (3 - 2) / (2 * 3) = 10 texels, the filter radius 5, visibility 1/2. (In stored depth the
+// directional formula would give (8/9 - 2/3) * 60 = 13.3 texels.)
+TEST(Pcss, ASpotMapsPenumbraFollowsTheLinearDistances) {
+    ShadowMap map = halfOccluded(64, 2.0f / 3.0f);
+    PcfParams prm = pcssParams(60.0f);
+    prm.depthNear = 1.0f;
+    prm.depthFar = 4.0f;
+    vec2 uv(0.5f, 0.5f);
+    PcfPcssEstimate e =
+        pcfPcssEstimate(plainMap(map, prm), uv, pcfPlainRef(8.0f / 9.0f, uv), prm.penumbraScale,
+                        prm.depthNear, prm.depthFar, prm.rotation);
+    EXPECT_NEAR(e.searchRadius, 20.0f, 1e-4f);
+    EXPECT_EQ(e.blockers, 8);
+    EXPECT_NEAR(e.blockerDepth, 2.0f, 1e-5f);
+    EXPECT_NEAR(e.penumbra, 10.0f, 1e-4f);
+    EXPECT_NEAR(e.filterRadius, 5.0f, 1e-4f);
+    EXPECT_EQ(filterVisibility(map, uv, 8.0f / 9.0f, prm), 0.5f);
+    // The inspector's steps give the same numbers in the spot's terms; --json its near and far.
+    Trace tr = traceLookup(map, uv, 8.0f / 9.0f, 8.0f / 9.0f, prm);
+    std::vector<TraceStep> steps = explainTrace(tr);
+    ASSERT_GE(steps.size(), 4u);
+    const std::string& search = steps[steps.size() - 4].text;
+    EXPECT_NE(search.find("near n = 1, far f = 4"), std::string::npos) << search;
+    EXPECT_NE(search.find("d_receiver = 3."), std::string::npos) << search;
+    EXPECT_NE(search.find("mean distance d_blocker = 16 / 8 = 2."), std::string::npos) << search;
+    const std::string& width = steps[steps.size() - 3].text;
+    EXPECT_NE(width.find("60 * (3 - 2) / (2 * 3) = 10 texels"), std::string::npos) << width;
+    Json j = traceJson(tr);
+    EXPECT_NEAR(j["pcss"]["depth_near"].get<double>(), 1.0, 1e-6);
+    EXPECT_NEAR(j["pcss"]["depth_far"].get<double>(), 4.0, 1e-6);
+    // A receiver on the far plane (z = 1, d = 4): S * (4 - 2) / (2 * 4) = 15 texels.
+    EXPECT_NEAR(pcfPcssEstimate(plainMap(map, prm), uv, pcfPlainRef(1.0f, uv), 60.0f, 1.0f, 4.0f,
+                                prm.rotation)
+                    .penumbra,
+                15.0f, 1e-4f);
+}
+
+// A spot of radius 0.25 looking down with a 90-degree cone (P00 = 1 / tan(45 degrees) = 1), near
+// 1 and far 4, a 128 map: S = 0.25 * 1 * 128 = 32 texels times scene units, near and far read
+// back from the matrix; a shifted texel grid changes neither, a widened depth range keeps near.
+TEST(Pcss, ASpotsScaleAndDepthRangeComeFromItsMatrix) {
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.radius = 0.25f;
+    glm::mat4 m = glm::perspectiveRH_NO(glm::radians(90.0f), 1.0f, 1.0f, 4.0f) *
+                  glm::lookAtRH(glm::vec3(0.0f, 5.0f, 0.0f), glm::vec3(0.0f), glm::vec3(0, 0, -1));
+    EXPECT_NEAR(penumbraScale(spot, m, 128, 0.0f), 32.0f, 1e-4f);
+    EXPECT_NEAR(penumbraScale(spot, m, 128, 3.0f), 32.0f, 1e-4f);  // degrees are the sun's
+    glm::vec2 range = pcssDepthRange(m);
+    EXPECT_NEAR(range.x, 1.0f, 1e-5f);
+    EXPECT_NEAR(range.y, 4.0f, 1e-4f);
+    glm::mat4 shifted = shiftShadowOrigin(m, glm::vec2(0.3f, -0.7f), 128, false);
+    EXPECT_NEAR(penumbraScale(spot, shifted, 128, 0.0f), 32.0f, 1e-4f);
+    EXPECT_NEAR(pcssDepthRange(shifted).y, 4.0f, 1e-4f);
+    EXPECT_NEAR(pcssDepthRange(widenShadowDepthRange(m, 2.0f)).x, 1.0f, 1e-5f);
+    EXPECT_EQ(pcssDepthRange(glm::orthoRH_NO(-1.0f, 1.0f, -1.0f, 1.0f, 1.0f, 4.0f)),
+              glm::vec2(0.0f));
+    ShadowSettings s;
+    s.method = PCF_PCSS;
+    s.mapSize = 128;
+    PcfParams p = pcssPcfParams(spot, m, s);
+    EXPECT_NEAR(p.penumbraScale, 32.0f, 1e-4f);
+    EXPECT_NEAR(p.depthNear, 1.0f, 1e-5f);
+    s.method = PCF_POISSON;
+    EXPECT_EQ(pcssPcfParams(spot, m, s).depthNear, 0.0f);
 }
 
 }  // namespace

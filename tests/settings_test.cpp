@@ -246,10 +246,13 @@ TEST(ParameterTable, TheRawJsonHoldsTheMarkedParametersWithTheirValues) {
                 EXPECT_EQ(v.number, std::stod(settingText(p, s))) << p.key;
         }
     }
-    // ... and one number that is not a setting: pcss's penumbra scale, which the scene and the
-    // map give (scene/pcss.h), so that `verify` recomputes pcss from the folder alone.
-    EXPECT_EQ(j.size(), marked + 1);
+    // ... and three numbers that are not settings: pcss's penumbra scale and a spot map's near
+    // and far, which the scene and the map give (scene/pcss.h), so that `verify` recomputes pcss
+    // from the folder alone.
+    EXPECT_EQ(j.size(), marked + 3);
     EXPECT_EQ(j["penumbra_scale"].number, 0.0);
+    EXPECT_EQ(j["pcss_depth_near"].number, 0.0);
+    EXPECT_EQ(j["pcss_depth_far"].number, 0.0);
     EXPECT_EQ(j["method"].string, "poisson");
     EXPECT_EQ(j["soft_scale"].number, 1000.0);
 }

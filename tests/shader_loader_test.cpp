@@ -189,7 +189,8 @@ layout(location = 0) out float outVisibility;
 void main() {
     // uv from the pixel with power-of-two arithmetic only, so the CPU can repeat it exactly.
     vec2 uv = gl_FragCoord.xy * (1.0f / 32.0f) - vec2(0.125f);
-    PcfParams prm = PcfParams(uMethod, uKernel, 1.0f, pcfPixelRotation(ivec2(gl_FragCoord.xy)), 0, 1.0f, 0.0f);
+    PcfParams prm = PcfParams(uMethod, uKernel, 1.0f, pcfPixelRotation(ivec2(gl_FragCoord.xy)), 0, 1.0f, 0.0f,
+                              0.0f, 0.0f);
     outVisibility = pcfFilter(uMap, uv, uRef, prm);
 }
 )";
@@ -273,8 +274,9 @@ TEST_F(ShaderLoader, SharedPcfKernelMatchesTheCpuKernel) {
                 // The shader's uv, exactly: pixel centre / 32 - 1/8 (powers of two only).
                 vec2 fragCoord(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
                 vec2 uv = fragCoord * (1.0f / 32.0f) - vec2(0.125f);
-                PcfParams prm{c.method,        c.kernel, 1.0f, pcfPixelRotation(ivec2(x, y)),
-                              PCF_WEIGHTS_BOX, 0.0f,     0.0f};
+                PcfParams prm{
+                    c.method, c.kernel, 1.0f, pcfPixelRotation(ivec2(x, y)), PCF_WEIGHTS_BOX, 0.0f,
+                    0.0f,     0.0f,     0.0f};
                 float cpu = filterVisibility(map, uv, ref, prm);
                 // readPixelsFloat is top-down: GL row y is readback row size - 1 - y.
                 float v = gpu[static_cast<size_t>(size - 1 - y) * size + x];

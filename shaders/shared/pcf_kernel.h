@@ -69,6 +69,10 @@ struct PcfParams {
     // pcss: the light's size in the map, texels of penumbra width per unit of light depth
     // between receiver and blocker (scene/pcss.h computes it from the light and the map)
     float penumbraScale;
+    // pcss under a perspective (spot) map: its near and far planes, scene units, to make depth
+    // linear (pcfPcssLinearDepth); near 0: an orthographic map, depth already linear
+    float depthNear;
+    float depthFar;
 #ifdef __cplusplus
     // The CPU's model of the texture unit (PCF_PRECISION_EXACT or _HW8). In GLSL the same
     // choice is the define PCF_PRECISION, read through mapPrecision(map) (pcf_prelude.h).
@@ -739,15 +743,23 @@ PCF_FN vec2 pcfTexelRotation(vec2 uv, ivec2 size) {
 //      blockers; d_blocker = their mean depth;
 //   2. penumbra width by similar triangles: w = (d_receiver - d_blocker) * w_light / d_blocker;
 //   3. PCF with a kernel of width w.
-// pcfscope's soft shadows are a directional light's (an orthographic map, depth linear in
-// distance, the light at infinity). Its disk of angular diameter theta then gives the penumbra
-// w = (d_receiver - d_blocker) * 2 tan(theta / 2) in world units: the seed's w_light / d_blocker
-// is the angle the light subtends. In the map's units (texels, light depth [0,1]):
+// A directional light (an orthographic map, depth linear in distance, the light at infinity):
+// its disk of angular diameter theta gives the penumbra w = (d_receiver - d_blocker) *
+// 2 tan(theta / 2) in world units: the seed's w_light / d_blocker is the angle the light
+// subtends. In the map's units (texels, light depth [0,1]):
 //   w = (ref - d_blocker) * S        S = penumbraScale, texels per unit of light depth
 // The search region: a blocker at depth d can hide part of the light only within
 // (ref - d) * S / 2 texels of uv, and d >= 0 (the map's near plane), so its radius is
 //   r_search = ref * S / 2
 // (the seed's w_light * (d_receiver - near) / d_receiver with the light at infinity).
+// A spot light of width w_light (its disk's diameter) at the light's position, a perspective
+// map with near n > 0 and far f (prm.depthNear, depthFar): the seed's formulas hold as they
+// stand with d the linear distance along the light's axis (pcfPcssLinearDepth of the stored
+// depth, each blocker's before the mean). A world width x at distance d covers x * P00 *
+// mapSize / (2 d) texels (P00 the projection's x scale), so with S = w_light * P00 * mapSize / 2
+// (texels times scene units, scene/pcss.h):
+//   w = S * (d_receiver - d_blocker) / (d_blocker * d_receiver)
+//   r_search = S * (d_receiver - n) / (d_receiver * n) / 2   (the seed's region, on the near plane)
 // Taps: both steps use the 16-point Poisson disk of Jimmy 2010 (the disk of `poisson`; the
 // seed's filter is a Poisson-disk PCF too), nearest-texel reads, turned by prm.rotation. The
 // filter's radius is w / 2. Both radii are kept in [PCF_PCSS_MIN_RADIUS, PCF_PCSS_MAX_RADIUS]:
@@ -768,24 +780,40 @@ PCF_ARRAY_END;
 
 // What steps 1 and 2 found for one lookup (the trace shows each number).
 struct PcfPcssEstimate {
-    float searchRadius;  // texels: clamp(ref * S / 2, MIN, MAX)
+    float searchRadius;  // texels: clamp(r_search, MIN, MAX); r_search = ref * S / 2 (directional)
     int blockers;        // search taps with depth < their ref, 0..16
-    float blockerDepth;  // their mean depth, light depth [0,1]; 0 when there is none
-    float penumbra;      // texels: (ref - blockerDepth) * S, the full width; 0 without blockers
+    float blockerDepth;  // their mean depth, light depth [0,1] (a spot's: distance); 0: none
+    float penumbra;      // texels: the full width w (directional: (ref - blockerDepth) * S); 0
+                         // without blockers
     float filterRadius;  // texels: clamp(penumbra / 2, MIN, MAX)
 };
 
 PCF_FN float pcfPcssRadius(float r) { return clamp(r, PCF_PCSS_MIN_RADIUS, PCF_PCSS_MAX_RADIUS); }
 
+// The distance along the light's axis of a perspective map's depth z, near n, far f: the
+// inverse of glm::perspectiveRH_NO's depth (OpenGL's, z = 0.5 * ndc.z + 0.5), Akenine-Moller,
+// Haines, Hoffman, "Real-Time Rendering" (4th ed., 2018), perspective projection:
+//   d = n * f / (f - z * (f - n))
+// z is clamped to [0,1] first (a biased ref may leave it).
+PCF_FN float pcfPcssLinearDepth(float z, float n, float f) {
+    PCF_PRECISE float zc = clamp(z, 0.0f, 1.0f);
+    PCF_PRECISE float d = (n * f) / (f - zc * (f - n));
+    return d;
+}
+
 // Steps 1 and 2. Each search tap is recorded with weight 0 (it decides the width, not the
 // visibility); a blocker is a texel nearer than the tap's ref (the hard comparison, also under
 // soft bias: the soft ramp is about the receiver's own acne, not about who blocks).
 PCF_MAP_FN PcfPcssEstimate pcfPcssEstimate(Map map, vec2 uv, PcfRef ref, float penumbraScale,
-                                           vec2 rotation) {
+                                           float depthNear, float depthFar, vec2 rotation) {
     ivec2 size = mapSize(map);
     vec2 texelUv = vec2(1.0f) / vec2(size);
     float zr = pcfDepthRef(map, ref.ref);
-    PCF_PRECISE float searchHalf = zr * penumbraScale * 0.5f;
+    bool perspective = depthNear > 0.0f;
+    PCF_PRECISE float dr = perspective ? pcfPcssLinearDepth(zr, depthNear, depthFar) : zr;
+    PCF_PRECISE float searchHalf = perspective
+                                       ? penumbraScale * 0.5f * (dr - depthNear) / (dr * depthNear)
+                                       : zr * penumbraScale * 0.5f;
     float search = pcfPcssRadius(searchHalf);
     int blockers = 0;
     PCF_PRECISE float depthSum = 0.0f;
@@ -806,21 +834,26 @@ PCF_MAP_FN PcfPcssEstimate pcfPcssEstimate(Map map, vec2 uv, PcfRef ref, float p
         pcfTap(map, t, depth, r, lit, 0.0f);
         if (lit == 0.0f) {
             blockers += 1;
-            depthSum += depth;
+            depthSum += perspective ? pcfPcssLinearDepth(depth, depthNear, depthFar) : depth;
         }
     }
     PCF_PRECISE float blockerDepth = depthSum * PCF_PCSS_RECIPROCALS[blockers];
-    PCF_PRECISE float penumbra = blockers > 0 ? (zr - blockerDepth) * penumbraScale : 0.0f;
+    PCF_PRECISE float penumbra = 0.0f;
+    if (blockers > 0) {
+        penumbra = perspective ? penumbraScale * (dr - blockerDepth) / (blockerDepth * dr)
+                               : (zr - blockerDepth) * penumbraScale;
+    }
     PCF_PRECISE float halfWidth = penumbra * 0.5f;
     return PcfPcssEstimate(search, blockers, blockerDepth, penumbra, pcfPcssRadius(halfWidth));
 }
 
 // pcss: no blocker in the region means fully lit (the seed's early out); otherwise step 3,
 // poisson's 16 comparisons on a disk of the estimated radius.
-PCF_MAP_FN float pcfPcss(Map map, vec2 uv, PcfRef ref, float penumbraScale, vec2 rotation) {
-    PcfPcssEstimate e = pcfPcssEstimate(map, uv, ref, penumbraScale, rotation);
+PCF_MAP_FN float pcfPcss(Map map, vec2 uv, PcfRef ref, PcfParams prm) {
+    PcfPcssEstimate e =
+        pcfPcssEstimate(map, uv, ref, prm.penumbraScale, prm.depthNear, prm.depthFar, prm.rotation);
     if (e.blockers == 0) return 1.0f;
-    return pcfPoisson(map, uv, ref, e.filterRadius, rotation);
+    return pcfPoisson(map, uv, ref, e.filterRadius, prm.rotation);
 }
 
 // The entry point with a bias mode: visibility of a receiver seen at uv, compared per tap as
@@ -859,7 +892,7 @@ PCF_MAP_FN float pcfFilterRef(Map map, vec2 uv, PcfRef lookupRef, PcfParams prm)
     } else if (prm.method == PCF_POISSON) {
         v = pcfPoisson(map, uv, ref, prm.radius, prm.rotation);
     } else {
-        v = pcfPcss(map, uv, ref, prm.penumbraScale, prm.rotation);
+        v = pcfPcss(map, uv, ref, prm);
     }
     return clamp(v, 0.0f, 1.0f);
 }

@@ -161,6 +161,11 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
     float penumbraScale = 0.0f;
     if (json.contains("penumbra_scale")) penumbraScale = jsonFloat(json, "penumbra_scale", where);
     r.prm = r.settings.pcfParams(vec2(1.0f, 0.0f), penumbraScale);
+    // A spot map's near and far for pcss; folders written before them have none (0: linear).
+    if (json.contains("pcss_depth_near") || json.contains("pcss_depth_far")) {
+        r.prm.depthNear = jsonFloat(json, "pcss_depth_near", where);
+        r.prm.depthFar = jsonFloat(json, "pcss_depth_far", where);
+    }
     r.bias = r.settings.biasParams().kernelBias();
     // render.json's keys are the kernel's words.
     if (auto why = validateParams(r.prm))

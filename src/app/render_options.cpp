@@ -125,7 +125,7 @@ DepthFormat depthFormatOption(const std::string& name) {
     return *f;
 }
 
-std::string settingsJson(const ShadowSettings& s, float penumbraScale) {
+std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss) {
     Json j = Json::object();
     for (const ParamInfo& p : allParams()) {
         if (!p.rawJson) continue;
@@ -142,7 +142,9 @@ std::string settingsJson(const ShadowSettings& s, float penumbraScale) {
             },
             p.field);
     }
-    j["penumbra_scale"] = jsonNumber(penumbraScale);
+    j["penumbra_scale"] = jsonNumber(pcss.penumbraScale);
+    j["pcss_depth_near"] = jsonNumber(pcss.depthNear);
+    j["pcss_depth_far"] = jsonNumber(pcss.depthFar);
     return jsonDump(j) + "\n";
 }
 

@@ -47,9 +47,10 @@ class SettingOptions {
 // What `pcfscope verify` needs to repeat the lookups of a --raw folder, as its render.json: the
 // parameters the table marks rawJson (the method and its parameters, the map's format, the
 // precision model, the bias mode and what changes each tap's comparison), one JSON object.
-// penumbraScale: pcss's, as the frame was rendered with it (scene/pcss.h), written as
-// "penumbra_scale" so that `verify` repeats the very lookups; 0 for the other methods.
-std::string settingsJson(const ShadowSettings& s, float penumbraScale = 0.0f);
+// pcss: the renderer's pcss parameters (scene/pcss.h), as the frame was rendered with them:
+// penumbraScale as "penumbra_scale", a spot map's depthNear / depthFar as "pcss_depth_near" /
+// "pcss_depth_far", so that `verify` repeats the very lookups; 0 for the other methods.
+std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss = PcfParams{});
 
 // The shared options' names parsed, each with one error for every command ("unknown method
 // 'blur' (known: ...)", "unknown --weights 'sharp' (known: box, binomial, gaussian)").

@@ -53,7 +53,10 @@ std::optional<float> Session::visibilityWith(int method, int kernel) const {
     LessonSettings s = mSettings;
     s.method = method;
     s.kernel = kernel;
-    PcfParams prm = s.pcfParams(mLookup->uv, mMap.width(), mRenderer->pcfParams(s).penumbraScale);
+    PcfParams pcss = mRenderer->pcfParams(s);  // pcss's light in this map (scene/pcss.h)
+    PcfParams prm = s.pcfParams(mLookup->uv, mMap.width(), pcss.penumbraScale);
+    prm.depthNear = pcss.depthNear;
+    prm.depthFar = pcss.depthFar;
     return traceLookup(mMap, mLookup->uv, mLookup->z, mLookup->ref, prm, mLookup->bias).visibility;
 }
 

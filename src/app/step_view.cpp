@@ -55,9 +55,11 @@ std::optional<PixelLookup> tracePixel(const SceneRenderer& renderer, const Shado
     out.bias = s.biasParams();
     out.bias.dzduv = glm::vec2(receiver[0], receiver[1]);
     out.z = receiver[3] == 1.0f ? receiver[2] : out.ref + s.depthBias();
-    float scale = renderer.pcfParams(s).penumbraScale;  // pcss's (scene/pcss.h)
-    out.trace =
-        traceLookup(map, out.uv, out.z, out.ref, s.pcfParams(out.uv, map.width(), scale), out.bias);
+    PcfParams pcss = renderer.pcfParams(s);  // pcss's light in this map (scene/pcss.h)
+    PcfParams prm = s.pcfParams(out.uv, map.width(), pcss.penumbraScale);
+    prm.depthNear = pcss.depthNear;
+    prm.depthFar = pcss.depthFar;
+    out.trace = traceLookup(map, out.uv, out.z, out.ref, prm, out.bias);
     return out;
 }
 

@@ -115,7 +115,7 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
         case Method::Pcss:
             tr.pcss = pcfPcssEstimate(plainMap(map, prm), uv,
                                       pcfLookupRef(PcfRef(ref, uv, bias.kernelBias())),
-                                      prm.penumbraScale, prm.rotation);
+                                      prm.penumbraScale, prm.depthNear, prm.depthFar, prm.rotation);
             break;
         case Method::Nearest:
         case Method::Box2x2:

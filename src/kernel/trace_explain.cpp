@@ -566,11 +566,28 @@ void explainPcss(const Trace& tr, Steps& out) {
     const PcfPcssEstimate& e = tr.pcss;
     float angle = std::atan2(tr.params.rotation.y, tr.params.rotation.x) * 57.2957795f;
     std::ostringstream s;
-    s << "The light has a size: S = " << num(tr.params.penumbraScale)
-      << " texels of penumbra per unit of light depth between receiver and blocker. A blocker "
-         "further than ref * S / 2 = "
-      << num(tr.ref) << " * " << num(tr.params.penumbraScale) << " / 2 texels away cannot hide "
-      << "any of the light, so 16 points of the Poisson disk, radius " << num(e.searchRadius)
+    // A spot's perspective map: the kernel's distances along the light's axis (pcf_kernel.h).
+    float nearD = tr.params.depthNear;
+    float farD = tr.params.depthFar;
+    bool spot = nearD > 0.0f;
+    float dr = spot ? pcfPcssLinearDepth(tr.ref, nearD, farD) : tr.ref;
+    if (spot) {
+        s << "The spot light has a size: S = " << num(tr.params.penumbraScale)
+          << " (its width times texels per scene unit at distance 1). The map's depth is not "
+             "the distance: d = n * f / (f - depth * (f - n)) with near n = "
+          << num(nearD) << ", far f = " << num(farD) << ", so the receiver's ref " << num(tr.ref)
+          << " lies at d_receiver = " << num(dr)
+          << ". A blocker further than S / 2 * (d_receiver - n) / (d_receiver * n) = "
+          << num(tr.params.penumbraScale) << " / 2 * (" << num(dr) << " - " << num(nearD) << ") / ("
+          << num(dr) << " * " << num(nearD) << ") texels away cannot hide any of the light";
+    } else {
+        s << "The light has a size: S = " << num(tr.params.penumbraScale)
+          << " texels of penumbra per unit of light depth between receiver and blocker. A "
+             "blocker further than ref * S / 2 = "
+          << num(tr.ref) << " * " << num(tr.params.penumbraScale)
+          << " / 2 texels away cannot hide any of the light";
+    }
+    s << ", so 16 points of the Poisson disk, radius " << num(e.searchRadius)
       << " texels (kept within [" << num(PCF_PCSS_MIN_RADIUS) << ", " << num(PCF_PCSS_MAX_RADIUS)
       << "]), rotated by " << num(angle)
       << " degrees, read the nearest texel; a depth below ref is a blocker:";
@@ -580,7 +597,7 @@ void explainPcss(const Trace& tr, Steps& out) {
         const TapRecord& t = tr.taps[k];
         vec2 off = pcfPoissonOffset(static_cast<int>(k), e.searchRadius, tr.params.rotation);
         bool blocks = t.lit < 0.5f;
-        if (blocks) sum += t.depth;
+        if (blocks) sum += spot ? pcfPcssLinearDepth(t.depth, nearD, farD) : t.depth;
         s << "\n  offset " << pair(off) << " -> texel " << pair(t.texel) << " depth "
           << num(t.depth) << (blocks ? " < " : " >= ") << num(t.ref)
           << (blocks ? ": blocker" : ": not a blocker");
@@ -592,14 +609,24 @@ void explainPcss(const Trace& tr, Steps& out) {
         return;
     }
     s << "\n"
-      << e.blockers << " blockers, mean depth d_blocker = " << num(sum) << " / " << e.blockers
-      << " = " << num(e.blockerDepth) << ".";
+      << e.blockers
+      << (spot ? " blockers, mean distance d_blocker = "
+               : " blockers, mean depth "
+                 "d_blocker = ")
+      << num(sum) << " / " << e.blockers << " = " << num(e.blockerDepth) << ".";
     addStep(out, K::BlockerSearch, s.str());
     std::ostringstream w;
-    w << "Similar triangles (Fernando 2005), the light at infinity: the penumbra is "
-         "(ref - d_blocker) * S = ("
-      << num(tr.ref) << " - " << num(e.blockerDepth) << ") * " << num(tr.params.penumbraScale)
-      << " = " << num(e.penumbra) << " texels wide; the filter disk's radius is half that, "
+    if (spot) {
+        w << "Similar triangles (Fernando 2005), the light at the spot: the penumbra is "
+             "S * (d_receiver - d_blocker) / (d_blocker * d_receiver) = "
+          << num(tr.params.penumbraScale) << " * (" << num(dr) << " - " << num(e.blockerDepth)
+          << ") / (" << num(e.blockerDepth) << " * " << num(dr) << ")";
+    } else {
+        w << "Similar triangles (Fernando 2005), the light at infinity: the penumbra is "
+             "(ref - d_blocker) * S = ("
+          << num(tr.ref) << " - " << num(e.blockerDepth) << ") * " << num(tr.params.penumbraScale);
+    }
+    w << " = " << num(e.penumbra) << " texels wide; the filter disk's radius is half that, "
       << num(e.filterRadius) << " texels (kept within [" << num(PCF_PCSS_MIN_RADIUS) << ", "
       << num(PCF_PCSS_MAX_RADIUS) << "]). Near its blocker a receiver gets a narrow, hard "
       << "penumbra; far from it a wide, soft one.";

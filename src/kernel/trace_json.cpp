@@ -154,6 +154,8 @@ Json traceJson(const Trace& tr) {
     // pcss: the blocker search and the penumbra estimate (its first 16 taps are the search's).
     if (tr.params.method == PCF_PCSS) {
         j["pcss"] = {{"penumbra_scale", jsonNumber(tr.params.penumbraScale)},
+                     {"depth_near", jsonNumber(tr.params.depthNear)},
+                     {"depth_far", jsonNumber(tr.params.depthFar)},
                      {"search_taps", PCF_PCSS_TAPS},
                      {"search_radius", jsonNumber(tr.pcss.searchRadius)},
                      {"blockers", tr.pcss.blockers},

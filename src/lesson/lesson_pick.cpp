@@ -114,8 +114,11 @@ Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& sha
     PinnedLookup at = pinnedLookup(scene, shadowClipFromWorld, s, point);
     BiasParams bias = s.biasParams();
     bias.dzduv = at.dzduv;
-    float scale = pcssPcfParams(scene.light, shadowClipFromWorld, s).penumbraScale;
-    return traceLookup(map, at.uv, at.z0, at.ref, s.pcfParams(at.uv, map.width(), scale), bias);
+    PcfParams pcss = pcssPcfParams(scene.light, shadowClipFromWorld, s);
+    PcfParams prm = s.pcfParams(at.uv, map.width(), pcss.penumbraScale);
+    prm.depthNear = pcss.depthNear;
+    prm.depthFar = pcss.depthFar;
+    return traceLookup(map, at.uv, at.z0, at.ref, prm, bias);
 }
 
 PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,

@@ -42,6 +42,7 @@ std::string paramUniformsGlsl() {
                ";\n";
     }
     out += "uniform float uPenumbraScale;  // pcss: texels of penumbra per unit of light depth\n";
+    out += "uniform vec2 uPcssDepthRange;  // pcss: a spot map's near, far; 0: orthographic\n";
     out +=
         "PcfParams pcfProgramParams(vec2 rotation) {\n"
         "    PcfParams p;\n"
@@ -49,7 +50,9 @@ std::string paramUniformsGlsl() {
         "    p.kernel = PCF_KERNEL;\n"
         "    p.weights = PCF_WEIGHTS;\n"
         "    p.rotation = rotation;\n"
-        "    p.penumbraScale = uPenumbraScale;\n" +
+        "    p.penumbraScale = uPenumbraScale;\n"
+        "    p.depthNear = uPcssDepthRange.x;\n"
+        "    p.depthFar = uPcssDepthRange.y;\n" +
         memberFills<PcfParams>("p") +
         "    return p;\n"
         "}\n";
@@ -95,6 +98,8 @@ void setParamUniforms(GLuint program, const PcfParams& prm, const PcfBias& bias,
             p.field);
     }
     glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
+    glProgramUniform2f(program, glGetUniformLocation(program, "uPcssDepthRange"), prm.depthNear,
+                       prm.depthFar);
 }
 
 PcfProgramCache::PcfProgramCache(std::string vertexFile, std::string fragmentFile,

@@ -24,10 +24,22 @@ float effectiveLightSizeDeg(const Light& light, float lightSizeDeg);
 // (depth = 0.5 * ndc.z + 0.5) and one texel 2 / (min(L0, L1) * mapSize) (as shadowTexelWs):
 //   S = 2 tan(theta / 2) * (2 / L2) / texelWs
 // The matrix, not the scene: a widened depth range or a shifted grid (light.h) changes S with
-// the map. A spot light's map is perspective (depth not linear in distance): S = 0 there, and
-// pcss filters as poisson with radius 1 (the kernel's PCF_PCSS_MIN_RADIUS).
+// the map.
+// A spot light of radius R (light.radius; lightSizeDeg does not apply): its map is perspective,
+// and the kernel works in linear distance (pcf_kernel.h, Fernando 2005 with w_light = 2 R):
+//   S = 2 R * P00 * mapSize / 2 = R * P00 * mapSize
+// P00 the projection's x scale (the u row of the matrix, without the part along its w row that
+// a shifted grid adds; the least of the u and v rows'). R = 0: S = 0, and pcss filters as
+// poisson with radius 1 (the kernel's PCF_PCSS_MIN_RADIUS).
 float penumbraScale(const Light& light, const glm::mat4& shadowClipFromWorld, int mapSize,
                     float lightSizeDeg);
+
+// The near and far planes (scene units, along the light's axis) of a perspective shadow matrix,
+// read from its depth row z_clip = A * z_view + B (w_clip = -z_view): depth 0 at n = B / (A - 1),
+// depth 1 at f = B / (A + 1) (glm::perspectiveRH_NO; a widened depth range moves f, past
+// infinity to a negative f, which the kernel's formula still inverts). (0, 0) for an
+// orthographic matrix: the kernel's depthNear, depthFar (pcf_kernel.h).
+glm::vec2 pcssDepthRange(const glm::mat4& shadowClipFromWorld);
 
 // The settings' kernel parameters, with pcss's penumbraScale for this light and map.
 PcfParams pcssPcfParams(const Light& light, const glm::mat4& shadowClipFromWorld,
