@@ -118,8 +118,8 @@ TEST(BenchReport, TheShippedCsvParses) {
     std::vector<BenchRow> rows = parseBenchCsv(text, path);
     EXPECT_GE(rows.size(), 60u);  // every method, N = 3, 5, 7, four map sizes
     // The error split, the shimmer and the renderer are there (the current header or the one
-    // before the truth column, BENCH_CSV_HEADER_V6: a hard-truth run), and say what they must: lesson 11's words on llvmpipe read
-    // the renderer.
+    // before the truth column, BENCH_CSV_HEADER_V6: a hard-truth run), and say what they must:
+    // lesson 11's words on llvmpipe read the renderer.
     EXPECT_TRUE(text.starts_with(std::string(BENCH_CSV_HEADER) + "\n") ||
                 text.starts_with(std::string(BENCH_CSV_HEADER_V6) + "\n"));
     for (const BenchRow& r : rows) {

@@ -38,6 +38,12 @@ double segmentIntegral(double u) {
     return (u * std::acos(u) - w + w * w * w / 3.0) / PI;
 }
 
+// A pixel spanning ground x in [xa, xb] whose points see the disk cut by the edge at
+// u = x / scale: its visible fraction, 1 - the mean of segment(u) over the pixel.
+double pixelExact(double xa, double xb, double scale) {
+    return 1.0 - scale * (segmentIntegral(xb / scale) - segmentIntegral(xa / scale)) / (xb - xa);
+}
+
 // The light straight down with angular diameter `diameter`; a ground plane; a slab covering
 // x < 0 between heights H and H + 1 (its edge along z at x = 0); a camera straight down at
 // (cx, 20, 0) with a 2 degree field of view.
@@ -149,9 +155,7 @@ TEST(AreaGroundTruth, PixelsAcrossAStraightEdgesPenumbraMatchTheClosedForm) {
             double xa = worldX(x), xb = worldX(x + 1);
             if (xa <= 1e-3) continue;  // the slab and its side face, not the ground
             double scale = (H + 1.0) * r;
-            double exact = 1.0 - scale *
-                                     (segmentIntegral(xb / scale) - segmentIntegral(xa / scale)) /
-                                     (xb - xa);
+            double exact = pixelExact(xa, xb, scale);
             size_t k = truth.index(x, y);
             EXPECT_LE(std::abs(truth.visibility[k] - exact), truth.bound[k] + 1e-6)
                 << "pixel " << x << ", " << y << " exact " << exact;
@@ -303,9 +307,7 @@ TEST(AreaGroundTruth, PixelsUnderASpotDiskMatchTheClosedForm) {
             if (xa <= 1e-3) continue;  // the slab and its side face, not the ground
             // x > 0: k < 0, and s(u) = 1 - s(-u) turns it into the sun's form.
             double scale = -radius / spotChordPerX(xa);
-            double exact = 1.0 - scale *
-                                     (segmentIntegral(xb / scale) - segmentIntegral(xa / scale)) /
-                                     (xb - xa);
+            double exact = pixelExact(xa, xb, scale);
             size_t k = truth.index(x, y);
             EXPECT_LE(std::abs(truth.visibility[k] - exact), truth.bound[k] + 1e-6)
                 << "pixel " << x << ", " << y << " exact " << exact;
