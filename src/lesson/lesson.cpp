@@ -54,15 +54,6 @@ bool isSettingKey(std::string_view key) {
            std::find(std::begin(VIEW_KEYS), std::end(VIEW_KEYS), key) != std::end(VIEW_KEYS);
 }
 
-std::string joinNames(const std::vector<std::string_view>& names) {
-    std::string out;
-    for (std::string_view n : names) {
-        if (!out.empty()) out += ", ";
-        out += n;
-    }
-    return out;
-}
-
 // Where each setting got its current value, so that a problem found only once the state is
 // complete (tent with kernel 4) is blamed on the line that made it.
 struct SettingLines {
@@ -428,7 +419,7 @@ class LessonParser {
             std::optional<Scene> scene = presetScene(name->get());
             if (!scene) {
                 fail(*sceneNode, "unknown scene preset '" + name->get() +
-                                     "' (known: " + joinNames(presetNames()) + ")");
+                                     "' (known: " + presetNameList() + ")");
             }
             if (const toml::node* camera = root.get("camera")) {
                 const toml::table* table = camera->as_table();
