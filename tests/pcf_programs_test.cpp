@@ -109,5 +109,49 @@ TEST_F(PcfPrograms, EveryTableUniformIsReadAndSetInTheSceneAndTheLookupPass) {
     }
 }
 
+// pcss's program reads a spot map's depth range only where the map is perspective (the define
+// PCF_PERSPECTIVE folds the linear-depth branch away elsewhere, issue 23), and its table of
+// 1 / k from the uniform array setParamUniforms fills from the kernel's C++ table.
+TEST_F(PcfPrograms, PcssReadsTheDepthRangeOnlyOnAPerspectiveMapAndTheReciprocalsFromTheTable) {
+    PcfProgramCache programs("fullscreen.vert", "lookup.frag",
+                             "#define PCF_LOOKUP_BIAS " + std::to_string(PCF_BIAS_CONSTANT) + "\n");
+    ShadowSettings s;
+    s.method = PCF_PCSS;
+    PcfParams ortho = s.pcfParams(vec2(1.0f, 0.0f), 24.0f);
+    PcfParams spot = ortho;
+    spot.depthNear = 1.0f;
+    spot.depthFar = 4.0f;
+    EXPECT_EQ(pcfVariant(ortho, false, false).perspective, 0);
+    EXPECT_EQ(pcfVariant(spot, false, false).perspective, 1);
+    // Only pcss reads near and far: another method keeps its one program under a spot.
+    PcfParams gatherUnderSpot = spot;
+    gatherUnderSpot.method = PCF_GATHER;
+    EXPECT_EQ(pcfVariant(gatherUnderSpot, false, false).perspective, 0);
+
+    PcfBias bias = s.biasParams().kernelBias();
+    GLuint orthoProgram = programs.get(pcfVariant(ortho, false, false));
+    GLuint spotProgram = programs.get(pcfVariant(spot, false, false));
+    ASSERT_NE(orthoProgram, spotProgram);
+    EXPECT_LT(glGetUniformLocation(orthoProgram, "uPcssDepthRange"), 0);
+    GLint range = glGetUniformLocation(spotProgram, "uPcssDepthRange");
+    ASSERT_GE(range, 0);
+    setParamUniforms(spotProgram, spot, bias);
+    float nearFar[2] = {0.0f, 0.0f};
+    glGetUniformfv(spotProgram, range, nearFar);
+    EXPECT_EQ(nearFar[0], 1.0f);
+    EXPECT_EQ(nearFar[1], 4.0f);
+
+    setParamUniforms(orthoProgram, ortho, bias);
+    for (int k = 1; k <= PCF_PCSS_TAPS; ++k) {
+        std::string name = "uPcssReciprocals[" + std::to_string(k) + "]";
+        GLint at = glGetUniformLocation(orthoProgram, name.c_str());
+        ASSERT_GE(at, 0) << name;
+        float v = 0.0f;
+        glGetUniformfv(orthoProgram, at, &v);
+        EXPECT_EQ(v, PCF_PCSS_RECIPROCALS[k]) << name;
+    }
+    ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace pcf

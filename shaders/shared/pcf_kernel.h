@@ -770,6 +770,8 @@ PCF_CONST int PCF_PCSS_TAPS = 16;
 
 // 1 / k for k = 0..16 as literals (entry 0 unused): the mean blocker depth is sum * (1 / count)
 // with the same float on the CPU and the GPU (a GLSL division may be a reciprocal estimate).
+// GLSL reads the table through PCF_PCSS_RECIPROCAL(k): a uniform array set from this C++ copy
+// (pcf_prelude.h says why).
 // clang-format off
 PCF_CONST_ARRAY(float, PCF_PCSS_RECIPROCALS, 17) PCF_ARRAY_BEGIN(float, 17)
     0.0f, 1.0f, 0.5f, 0.333333343f, 0.25f, 0.200000003f, 0.166666672f, 0.142857149f, 0.125f,
@@ -824,7 +826,8 @@ PCF_MAP_FN PcfPcssEstimate pcfPcssEstimate(Map map, vec2 uv, PcfRef ref, float p
         pcfFetch(map, PCF_FETCH_POINT, tapUv, 0.0f);
         pcfTapWanted(map, texel);
         ivec2 t = pcfClampTexel(texel, size);
-        float depth = fetchDepth(map, t);
+        // pointDepth, not fetchDepth(t): in GLSL the sampler clamps, in float (as pcfNearest).
+        float depth = pointDepth(map, p);
         float tapRef = ref.ref;
         if (ref.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
             tapRef = pcfRefAt(ref, pcfTexelCentreUv(texel, size));
@@ -837,7 +840,7 @@ PCF_MAP_FN PcfPcssEstimate pcfPcssEstimate(Map map, vec2 uv, PcfRef ref, float p
             depthSum += perspective ? pcfPcssLinearDepth(depth, depthNear, depthFar) : depth;
         }
     }
-    PCF_PRECISE float blockerDepth = depthSum * PCF_PCSS_RECIPROCALS[blockers];
+    PCF_PRECISE float blockerDepth = depthSum * PCF_PCSS_RECIPROCAL(blockers);
     PCF_PRECISE float penumbra = 0.0f;
     if (blockers > 0) {
         penumbra = perspective ? penumbraScale * (dr - blockerDepth) / (blockerDepth * dr)

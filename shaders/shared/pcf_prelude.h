@@ -38,6 +38,7 @@
 #define PCF_ARRAY_BEGIN(T, n) {
 #define PCF_ARRAY_END }
 #define PCF_DEFAULT(value) = value
+#define PCF_PCSS_RECIPROCAL(k) PCF_PCSS_RECIPROCALS[k]
 
 #else  // GLSL
 
@@ -49,6 +50,13 @@
 #define PCF_ARRAY_BEGIN(T, n) T[n](
 #define PCF_ARRAY_END )
 #define PCF_DEFAULT(value)
+// pcss's table of 1 / k (pcf_kernel.h, PCF_PCSS_RECIPROCALS), as a uniform array the program
+// is given from the C++ copy of that table (render/pcf_programs.cpp, setParamUniforms): the same
+// floats, and a uniform read at a dynamic index costs one load, where llvmpipe turns a dynamic
+// index into the const array into a chain of selects (pcss's pass 1.24x -> 1.18x its textbook
+// pass, scripts/pass-overhead).
+uniform float uPcssReciprocals[17];
+#define PCF_PCSS_RECIPROCAL(k) uPcssReciprocals[k]
 
 // In GLSL the map is the depth texture behind a non-comparison sampler (nearest), and the
 // same texture is bound a second time behind a comparison sampler (GL_LINEAR,
@@ -69,6 +77,12 @@ ivec2 mapSize(Map map) { return textureSize(map, 0); }
 #endif
 #ifndef PCF_PRECISION
 #define PCF_PRECISION 0
+#endif
+// PCF_PERSPECTIVE is 1 for pcss on a spot's perspective map: the parameter block
+// (pcfProgramParams) passes the map's near and far only then, and 0 otherwise, so the kernel's
+// `depthNear > 0` folds away where depth is already linear.
+#ifndef PCF_PERSPECTIVE
+#define PCF_PERSPECTIVE 0
 #endif
 int mapFixedPoint(Map map) { return PCF_FIXED_POINT; }
 int mapPrecision(Map map) { return PCF_PRECISION; }

@@ -1,5 +1,6 @@
 #include "render/pcf_programs.h"
 
+#include <iterator>
 #include <type_traits>
 #include <variant>
 
@@ -51,8 +52,13 @@ std::string paramUniformsGlsl() {
         "    p.weights = PCF_WEIGHTS;\n"
         "    p.rotation = rotation;\n"
         "    p.penumbraScale = uPenumbraScale;\n"
+        "#if PCF_PERSPECTIVE\n"
         "    p.depthNear = uPcssDepthRange.x;\n"
-        "    p.depthFar = uPcssDepthRange.y;\n" +
+        "    p.depthFar = uPcssDepthRange.y;\n"
+        "#else\n"
+        "    p.depthNear = 0.0;\n"
+        "    p.depthFar = 0.0;\n"
+        "#endif\n" +
         memberFills<PcfParams>("p") +
         "    return p;\n"
         "}\n";
@@ -100,6 +106,9 @@ void setParamUniforms(GLuint program, const PcfParams& prm, const PcfBias& bias,
     glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
     glProgramUniform2f(program, glGetUniformLocation(program, "uPcssDepthRange"), prm.depthNear,
                        prm.depthFar);
+    glProgramUniform1fv(program, glGetUniformLocation(program, "uPcssReciprocals"),
+                        static_cast<GLsizei>(std::size(PCF_PCSS_RECIPROCALS)),
+                        PCF_PCSS_RECIPROCALS);
 }
 
 PcfProgramCache::PcfProgramCache(std::string vertexFile, std::string fragmentFile,
@@ -109,8 +118,10 @@ PcfProgramCache::PcfProgramCache(std::string vertexFile, std::string fragmentFil
       mExtraDefines(std::move(extraDefines)) {}
 
 PcfVariant pcfVariant(const PcfParams& prm, bool rotatePerPixel, bool fixedPoint) {
+    int perspective = prm.method == PCF_PCSS && prm.depthNear > 0.0f ? 1 : 0;
     return PcfVariant{prm.method,    prm.kernel,         prm.weights,
-                      prm.precision, fixedPoint ? 1 : 0, rotatePerPixel ? 1 : 0};
+                      prm.precision, fixedPoint ? 1 : 0, rotatePerPixel ? 1 : 0,
+                      perspective};
 }
 
 std::string pcfVariantDefines(const PcfVariant& variant) {
@@ -120,7 +131,8 @@ std::string pcfVariantDefines(const PcfVariant& variant) {
     return line("PCF_METHOD", variant.method) + line("PCF_KERNEL", variant.kernel) +
            line("PCF_WEIGHTS", variant.weights) + line("PCF_PRECISION", variant.precision) +
            line("PCF_FIXED_POINT", variant.fixedPoint) +
-           line("PCF_ROTATE_PER_PIXEL", variant.rotatePerPixel);
+           line("PCF_ROTATE_PER_PIXEL", variant.rotatePerPixel) +
+           line("PCF_PERSPECTIVE", variant.perspective);
 }
 
 GLuint PcfProgramCache::get(const PcfVariant& variant) {

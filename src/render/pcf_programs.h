@@ -29,9 +29,11 @@ struct PcfVariant {
     int precision = 0;
     int fixedPoint = 0;
     int rotatePerPixel = 0;
+    int perspective = 0;  // pcss under a spot: depth made linear (a uniform would cost every tap)
 
     auto key() const {
-        return std::make_tuple(method, kernel, weights, precision, fixedPoint, rotatePerPixel);
+        return std::make_tuple(method, kernel, weights, precision, fixedPoint, rotatePerPixel,
+                               perspective);
     }
     bool operator<(const PcfVariant& o) const { return key() < o.key(); }
 };

@@ -190,8 +190,9 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
 
     BiasParams bias = settings.biasParams();
     bool fixedPoint = depthFormatFixedPointBits(mShadowFormat) != 0;
-    GLuint program = programsFor(targets, bias.mode)
-                         .get(pcfVariant(settings.pcfParams(), settings.rotate, fixedPoint));
+    PcfParams prm = pcfParams(settings);
+    GLuint program =
+        programsFor(targets, bias.mode).get(pcfVariant(prm, settings.rotate, fixedPoint));
     glUseProgram(program);
     glm::mat4 clip = clipFromWorld();
     glProgramUniformMatrix4fv(program, uniform(program, "uClipFromWorld"), 1, GL_FALSE,
@@ -204,7 +205,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform3fv(program, uniform(program, "uLightPosWs"), 1, &light.positionWs.x);
     glProgramUniform1f(program, uniform(program, "uSpotCosCone"),
                        std::cos(glm::radians(light.coneDeg)));
-    setParamUniforms(program, pcfParams(settings), bias.kernelBias(), &settings);
+    setParamUniforms(program, prm, bias.kernelBias(), &settings);
     glProgramUniform1f(program, uniform(program, "uShadowTexelWs"),
                        pcf::shadowTexelWs(mScene, settings.mapSize));
     // A lesson's pinned point (setPick); pixel -1, -1 matches no fragment.
