@@ -301,6 +301,61 @@ TEST(Magnifier, KeepsThePointsLookupAndATexelIsManyPixelsWide) {
     EXPECT_LE(std::min(px.x, px.y), 1.5f * k) << "the close-up still shows a neighbourhood";
 }
 
+// A step with `magnify = true` is seen through the magnifier's close-up on its point: the same
+// lookup as in the lesson's own view, a texel a sixteenth of the scene's height; a step that only
+// slides the grid keeps that very camera (the pictures differ by the slide alone), and a step
+// without `magnify` is seen through the lesson's camera again.
+TEST(Magnifier, AStepsMagnifyKeyShowsTheCloseUp) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    fs::path dir = testutil::makeTempDir("magnifystep");
+    std::string lesson = (dir / "magnify.toml").string();
+    {
+        std::ofstream f(lesson);
+        f << "title = \"Magnify\"\nscene = \"box-on-plane\"\n[settings]\nmethod = \"nearest\"\n"
+             "map_size = 256\ncull = \"front\"\npoint = [1.47568, 0, 0.03772]\n"
+             "[[step]]\ntitle = \"Wide\"\ntext = \"x\"\n"
+             "[[step]]\ntitle = \"Close\"\nmagnify = true\ntext = \"x\"\n"
+             "[[step]]\ntitle = \"Slid\"\norigin_shift = 0.25\ntext = \"x\"\n"
+             "[[step]]\ntitle = \"Wide again\"\nmagnify = false\norigin_shift = 0\ntext = \"x\"\n";
+    }
+    const glm::ivec2 size{640, 360};
+    Session s(size, false);
+    s.loadLesson(lesson);
+    s.setSceneOnly(true);
+    const Camera lessonCamera = s.scene().camera;
+    s.compose();
+    ASSERT_TRUE(s.trace());
+    Trace wide = *s.trace();
+
+    s.goToStep(1);
+    s.compose();
+    ASSERT_TRUE(s.trace());
+    EXPECT_NE(s.scene().camera.eyeWs, lessonCamera.eyeWs);
+    EXPECT_NEAR(s.trace()->uv.x, wide.uv.x, 1e-6f);
+    EXPECT_NEAR(s.trace()->uv.y, wide.uv.y, 1e-6f);
+    EXPECT_EQ(s.trace()->visibility, wide.visibility);
+    const Camera close = s.scene().camera;
+    float k = size.y / MAGNIFIER_TEXELS_ACROSS;  // 22.5 px
+    glm::vec2 px = measuredTexelPixels(s, 2);
+    EXPECT_GE(std::min(px.x, px.y), 0.95f * k) << px.x << " x " << px.y;
+    EXPECT_LE(std::min(px.x, px.y), 1.5f * k) << px.x << " x " << px.y;
+
+    s.goToStep(2);  // magnify inherited; only the grid slid
+    s.compose();
+    EXPECT_EQ(s.scene().camera.eyeWs, close.eyeWs);
+    EXPECT_EQ(s.scene().camera.targetWs, close.targetWs);
+    ASSERT_TRUE(s.trace());
+    EXPECT_NEAR(s.trace()->uv.x * 256.0f, wide.uv.x * 256.0f + 0.25f, 1e-3f);
+
+    s.goToStep(3);
+    s.compose();
+    EXPECT_EQ(s.scene().camera.eyeWs, lessonCamera.eyeWs);
+    EXPECT_EQ(s.scene().camera.targetWs, lessonCamera.targetWs);
+    ASSERT_TRUE(s.trace());
+    EXPECT_NEAR(s.trace()->uv.x, wide.uv.x, 1e-6f);
+    fs::remove_all(dir);
+}
+
 // A lesson step's own `compare` is exported beside its frame; a step without one is not; the
 // JSON's differences are its parts' visibilities' differences. A bad --compare is one line,
 // exit 2, and nothing is written.

@@ -156,7 +156,7 @@ std::vector<BenchRow> sampleRows() {
         r.lookupMs = ms / 2;
         r.lookupMsIqr = ms / 4;  // 50 %: noisy
         r.noisy = method == PCF_POISSON;
-        if (r.noisy) r.gpuMsIqr = ms / 4;  // the scene time too: a hollow dot on either chart
+        if (r.noisy) r.gpuMsIqr = ms / 4;  // the scene time too: a wide bar on either chart
         r.glRenderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
         rows.push_back(r);
     };
@@ -253,7 +253,7 @@ TEST(SpeedChart, LayoutPutsTimeOnALogAxisAndErrorOnALinearOne) {
     ASSERT_EQ(L.points.size(), rows.size());
     for (size_t k = 0; k < rows.size(); ++k) {
         EXPECT_TRUE(L.plot.contains(L.points[k])) << k;
-        EXPECT_EQ(L.labelTexts[k], chartLabel(rows[k].point) + (rows[k].noisy ? " !" : ""));
+        EXPECT_EQ(L.labelTexts[k], chartLabel(rows[k].point));  // noisy or not: no mark
         // The error bar spans the IQR around the median: median -/+ IQR / 2 on the log axis.
         EXPECT_LT(L.errorBars[k].x, L.points[k].x) << k;
         EXPECT_GT(L.errorBars[k].y, L.points[k].x) << k;
@@ -330,12 +330,12 @@ TEST(SpeedChart, ACrowdedChartDrawsOnlyLabelsThatFit) {
     }
 }
 
-// A noisy dot (hollow, its label ending in " !") comes with the subtitle's note saying what
-// hollow and "!" mean, whether or not its label is drawn, wrapped to the chart's width; a chart
-// without a noisy dot says nothing of it.
-TEST(SpeedChart, SubtitleExplainsHollowDotsWhenAnyIsDrawn) {
+// Every dot is solid and named without a mark; the subtitle says what the bars through the dots
+// are, wrapped to the chart's width; a chart whose times have no spread draws no bar and says
+// nothing of bars. The legend states the front's rule.
+TEST(SpeedChart, SubtitleSaysWhatTheBarsAre) {
     std::vector<BenchRow> rows = sampleRows();  // poisson 1024 is noisy
-    EXPECT_EQ(noisyNote(), "hollow, !: noisy (IQR > 10% of median), never on the front");
+    EXPECT_EQ(spreadNote(), "bars: IQR of the repeated times, centred on the median");
     SpeedChartText text;
     text.subtitle = "rendered on llvmpipe";
     auto unwrapped = [](std::string t) {
@@ -344,65 +344,74 @@ TEST(SpeedChart, SubtitleExplainsHollowDotsWhenAnyIsDrawn) {
     };
     SpeedChartLayout all = layoutSpeedChart(rows, {1280, 720});
     ASSERT_TRUE(all.labelShown[4]);
-    EXPECT_EQ(all.labelTexts[4], "poisson 1024 !");
-    EXPECT_FALSE(all.steady[4]);
+    EXPECT_EQ(all.labelTexts[4], "poisson 1024");
     EXPECT_EQ(unwrapped(speedChartTextFor(rows, text, {1280, 720}).subtitle),
-              "rendered on llvmpipe; " + noisyNote());
+              "rendered on llvmpipe; " + spreadNote());
     // Narrow: the same words, wrapped to lines that fit the chart.
     glm::ivec2 narrow{480, 270};  // a lesson frame's chart, at its 18 px type
     SpeedChartText big = text;
     big.minFontPx = 18.0f;
     SpeedChartText fitted = speedChartTextFor(rows, big, narrow);
-    EXPECT_EQ(unwrapped(fitted.subtitle), "rendered on llvmpipe; " + noisyNote());
+    EXPECT_EQ(unwrapped(fitted.subtitle), "rendered on llvmpipe; " + spreadNote());
     EXPECT_GT(subtitleLineCount(fitted.subtitle), 1);
     SpeedChartLayout small =
         layoutSpeedChart(rows, narrow, ChartTiming::Scene, ChartAccuracy::EdgeRmse, {}, 18.0f,
                          false, subtitleLineCount(fitted.subtitle));
+    int frontLegends = 0;
     for (const ChartTextBox& b : speedChartTextBoxes(small, fitted)) {
         EXPECT_LE(b.rect.right(), narrow.x) << b.text;
-        if (b.role == "chart-legend") {
-            EXPECT_EQ(b.text.find("noisy"), std::string::npos);
+        if (b.role == "chart-legend" && b.method == -1) {
+            EXPECT_EQ(b.text, FRONT_LEGEND);
+            ++frontLegends;
         }
     }
-    // Every dot steady: no note.
-    std::vector<BenchRow> steady = rows;
-    steady[4].gpuMsIqr = steady[4].gpuMs / 20;
-    EXPECT_EQ(speedChartTextFor(steady, text, {1280, 720}).subtitle, "rendered on llvmpipe");
-    // The lookup timing's spreads are its own: every sample row's lookup IQR is 50 %.
-    EXPECT_EQ(unwrapped(speedChartTextFor(steady, text, {1280, 720}, ChartTiming::Lookup).subtitle),
-              "rendered on llvmpipe; " + noisyNote());
+    EXPECT_EQ(frontLegends, 1);
+    // No spread in the scene times: no bar, no note; the lookup times have theirs (50 %).
+    std::vector<BenchRow> exact = rows;
+    for (BenchRow& r : exact) r.gpuMsIqr = 0.0;
+    EXPECT_EQ(speedChartTextFor(exact, text, {1280, 720}).subtitle, "rendered on llvmpipe");
+    EXPECT_EQ(unwrapped(speedChartTextFor(exact, text, {1280, 720}, ChartTiming::Lookup).subtitle),
+              "rendered on llvmpipe; " + spreadNote());
 }
 
-// The front joins steady dots only: a noisy dot, however fast and accurate, neither starts it
-// nor sits on it (it would hide the steady dots it seems to beat), in the chart, the table and a
-// lesson's "front" highlight alike. Read from a CSV, as a lesson's chart is.
-TEST(SpeedChart, ANoisyPointCannotStartOrSitOnTheFront) {
+// The front is the Pareto front of the medians over every dot: a noisy dot (a wide bar) that no
+// dot beats on both median time and error is on it, in the chart, the table and a lesson's
+// "front" highlight alike. Read from a CSV, as a lesson's chart is.
+TEST(SpeedChart, TheFrontIsOfTheMediansOfEveryDot) {
     std::string csv = std::string(BENCH_CSV_HEADER_V2) + "\n";
     // method,kernel,map,gpu_ms,cpu_ns,reads,rmse,max,edge_rmse,edge_max,timer,iqr,lookup,iqr,noisy
-    csv += "nearest,0,256,2,1,1,0,1,0.5,1,t,0.1,1,0.05,0\n";     // 0: steady, the fastest
-    csv += "hw2x2,0,256,1,1,1,0,1,0.1,1,t,1.9,1,0.05,1\n";       // 1: noisy, 1 +- 0.95 ms
-    csv += "pcf-gather,3,256,5,1,16,0,1,0.3,1,t,0.2,2,0.1,0\n";  // 2: steady
-    csv += "pcf-naive,3,256,8,1,36,0,1,0.2,1,t,4,4,0.2,1\n";     // 3: noisy, between
-    csv += "tent,5,1024,20,1,36,0,1,0.1,1,t,1,10,0.5,0\n";       // 4: steady, most accurate
+    csv += "nearest,0,256,2,1,1,0,1,0.5,1,t,0.1,1,0.05,0\n";     // 0: beaten by 1 on both
+    csv += "hw2x2,0,256,1,1,1,0,1,0.4,1,t,1.9,1,0.05,1\n";       // 1: noisy, 1 +- 0.95 ms
+    csv += "pcf-gather,3,256,5,1,16,0,1,0.3,1,t,0.2,2,0.1,0\n";  // 2
+    csv += "pcf-naive,3,256,8,1,36,0,1,0.2,1,t,4,4,0.2,1\n";     // 3: noisy
+    csv += "tent,5,1024,20,1,36,0,1,0.1,1,t,1,10,0.5,0\n";       // 4: most accurate
     std::vector<BenchRow> rows = parseBenchCsv(csv, "noisy.csv");
     ASSERT_EQ(rows.size(), 5u);
-    const std::vector<size_t> steadyFront{0, 2, 4};
-    EXPECT_EQ(benchParetoFront(rows), steadyFront);
+    const std::vector<size_t> front{1, 2, 3, 4};
+    EXPECT_EQ(benchParetoFront(rows), front);
     SpeedChartLayout L = layoutSpeedChart(rows, {1280, 720});
-    EXPECT_EQ(L.front, steadyFront);
-    EXPECT_EQ(L.steady, (std::vector<bool>{true, false, true, false, true}));
-    EXPECT_EQ(L.labelTexts[1], "hw2x2 256 !");
-    EXPECT_EQ(chartRowsMatching(rows, "front"), steadyFront);
-    // Without the rule the noisy dot would have started the front and sat on it.
-    std::vector<glm::dvec2> all;
-    for (const BenchRow& r : rows) all.emplace_back(r.gpuMs, r.error.edgeRmse);
-    EXPECT_EQ(paretoFront(all).front(), 1u);
-    // The lookup timing has its own spreads: all five are steady there (IQR 5 %).
-    EXPECT_EQ(benchParetoFront(rows, true).size(), 1u);  // hw2x2: fastest and most accurate
+    EXPECT_EQ(L.front, front);
+    EXPECT_EQ(L.labelTexts[1], "hw2x2 256");
+    EXPECT_EQ(chartRowsMatching(rows, "front"), front);
+    // The bar is as wide as the IQR, centred on the median: hw2x2's runs 0.05 to 1.95 ms, its
+    // dot at 1 ms between (on the log axis, so not halfway in pixels).
+    EXPECT_LT(L.errorBars[1].x, L.points[1].x);
+    EXPECT_GT(L.errorBars[1].y, L.points[1].x);
+    auto pixelOf = [&](double ms) {
+        return L.plot.x +
+               static_cast<float>((std::log10(ms) - L.xLogLo) / (L.xLogHi - L.xLogLo)) * L.plot.w;
+    };
+    EXPECT_NEAR(L.errorBars[1].y, pixelOf(1.95), 0.5f);
+    EXPECT_NEAR(L.errorBars[1].x, pixelOf(0.1), 0.5f);  // the low end kept at a tenth of the median
+    EXPECT_NEAR(L.errorBars[2].x, pixelOf(4.9), 0.5f);
+    EXPECT_NEAR(L.errorBars[2].y, pixelOf(5.1), 0.5f);
+    // The lookup times: nearest ties hw2x2's 1 ms and is less accurate: the same front.
+    EXPECT_EQ(benchParetoFront(rows, true), front);
     BenchSetup setup;
     setup.glRenderer = "llvmpipe";
     std::string md = benchMarkdown(rows, setup);
-    EXPECT_NE(md.find("| hw2x2 ! |"), std::string::npos) << md;  // not "| hw2x2 * ! |"
+    EXPECT_NE(md.find("| hw2x2 * ! |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| nearest | - |"), std::string::npos) << md;
     EXPECT_NE(md.find("| tent * | 5 |"), std::string::npos) << md;
 }
 
@@ -446,26 +455,17 @@ TEST(SpeedChart, DrawsTheRequestedSizeWithEachMethodsColour) {
     SpeedChartText text;
     text.title = "Speed against accuracy: test";
     text.subtitle = context->renderer();
-    text.minFontPx = 24.0f;  // dots 6 px: a hollow one's inside stays clear of its rim and bar
+    text.minFontPx = 24.0f;  // dots 6 px
     std::vector<uint8_t> rgba = drawSpeedChart(rows, size, text);
     ASSERT_EQ(rgba.size(), static_cast<size_t>(size.x) * size.y * 4);
     SpeedChartLayout L = layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
                                           {}, text.minFontPx);
-    // Each steady dot's centre pixel has its method's colour; a noisy one is hollow: its centre
-    // is the background, its rim its method's colour.
+    // Each dot is solid: 2 px below its centre (off the bar through it) is its method's colour,
+    // the noisy poisson dot's too.
     for (size_t k = 0; k < rows.size(); ++k) {
         glm::ivec2 p(L.points[k]);
-        size_t at = (static_cast<size_t>(p.y) * size.x + p.x) * 4;
+        size_t at = ((static_cast<size_t>(p.y) + 2) * size.x + p.x) * 4;
         glm::vec4 want = methodColour(rows[k].point.method) * 255.0f;
-        if (!L.steady[k]) {
-            // 2 px below the centre: inside the ring, off the IQR bar through it.
-            size_t inside = at + 2 * static_cast<size_t>(size.x) * 4;
-            for (int c = 0; c < 3; ++c) EXPECT_GT(rgba[inside + c], 230) << k;
-            size_t rim = at + static_cast<size_t>(L.dotRadius - 1.0f) * 4;
-            int darkest = std::min({rgba[rim], rgba[rim + 1], rgba[rim + 2]});
-            EXPECT_LT(darkest, 200) << k;
-            continue;
-        }
         EXPECT_NEAR(rgba[at + 0], want.r, 2.0) << k;
         EXPECT_NEAR(rgba[at + 1], want.g, 2.0) << k;
         EXPECT_NEAR(rgba[at + 2], want.b, 2.0) << k;

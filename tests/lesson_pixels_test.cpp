@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "app/magnifier.h"
 #include "app/session.h"
 #include "app/step_view.h"
 #include "kernel/trace.h"
@@ -67,9 +68,13 @@ std::vector<RenderedStep> renderLesson(const std::string& name, glm::ivec2 frame
         std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
         EXPECT_TRUE(point) << name;
         if (!point) return out;
-        FramePick pick = framePick(lesson.scene.camera, point->posWs, frameSize);
+        // A `magnify` step is seen through the magnifier's close-up (magnifier.h: stepCamera).
+        Scene seen = lesson.scene;
+        seen.camera = stepCamera(lesson.scene, s, point, frameSize);
+        renderer.setCamera(seen.camera);
+        FramePick pick = framePick(seen.camera, point->posWs, frameSize);
         glm::ivec2 px = pick.pixel;
-        StepView view = stepView(lesson.scene, s, point, frameSize);
+        StepView view = stepView(seen, s, point, frameSize);
         view.render.writePositions = true;
         renderStepView(renderer, view);
         std::vector<float> visibility = renderer.readVisibility();
@@ -175,6 +180,61 @@ TEST_F(LessonPixels, EveryStepsPixelShowsWhatItsTextSays) {
                         << "line " << claim.line << ": \"" << claim.text << "\": " << why;
                 }
             }
+        }
+    }
+}
+
+// Lesson 9 step 3 is about the strip of light that too much bias opens between the pole's foot and
+// its shadow: the ground that step 2's small bias shadows (visibility < 0.5) and step 3's lights
+// fully, both seen through step 3's camera at its point. At every frame size and mode the strip
+// lies inside the scene (it is seen whole) and the pick's ring (radius max(11, 14 x the layout's
+// scale) plus its line) covers at most a tenth of it (about 2 % here). In the lesson's own view
+// the strip was about as long as the ring was wide: the ring covered 13 to 28 % of it.
+TEST_F(LessonPixels, PeterPanningsStripShowsWholeBesideTheRing) {
+    Lesson lesson = parseLessonFile(PCFSCOPE_SOURCE_DIR "/lessons/09-peter-panning.toml");
+    ASSERT_GE(lesson.steps.size(), 3u);
+    const LessonSettings& lifted = lesson.steps[2].settings;
+    LessonSettings attached = lesson.steps[1].settings;
+    attached.point = lifted.point;
+    std::optional<ScenePoint> point = stepPoint(lesson.scene, lifted);
+    ASSERT_TRUE(point);
+    SceneRenderer renderer(lesson.scene);
+    for (glm::ivec2 frame : {glm::ivec2(1024, 768), glm::ivec2(1280, 720), glm::ivec2(1600, 900),
+                             glm::ivec2(1920, 1080)}) {
+        for (bool presentation : {false, true}) {
+            InspectorLayout layout = inspectorLayout(frame, presentation);
+            glm::ivec2 size(layout.scene.size());
+            SCOPED_TRACE(std::to_string(frame.x) + "x" + std::to_string(frame.y) +
+                         (presentation ? " presentation" : ""));
+            Scene seen = lesson.scene;
+            seen.camera = stepCamera(lesson.scene, lifted, point, size);
+            renderer.setCamera(seen.camera);
+            auto render = [&](const LessonSettings& s) {
+                StepView view = stepView(seen, s, point, size);
+                view.render.writePositions = true;
+                renderStepView(renderer, view);
+                return std::make_pair(renderer.readVisibility(), renderer.readPositions());
+            };
+            auto [before, positions] = render(attached);
+            std::vector<float> after = render(lifted).first;
+            glm::vec2 ring = glm::vec2(framePick(seen.camera, point->posWs, size).pixel) + 0.5f;
+            float ringR = std::max(11.0f, 14.0f * layout.scale) + (presentation ? 3.0f : 2.0f);
+            size_t strip = 0, underRing = 0, onBorder = 0;
+            for (int y = 0; y < size.y; ++y) {
+                for (int x = 0; x < size.x; ++x) {
+                    size_t k = static_cast<size_t>(y) * size.x + x;
+                    bool ground =
+                        positions[k * 4 + 3] != 0.0f && std::abs(positions[k * 4 + 1]) < 1e-3f;
+                    if (!ground || !(before[k] < 0.5f && after[k] == 1.0f)) continue;
+                    ++strip;
+                    if (glm::length(glm::vec2(x, y) + 0.5f - ring) <= ringR) ++underRing;
+                    if (x == 0 || y == 0 || x == size.x - 1 || y == size.y - 1) ++onBorder;
+                }
+            }
+            EXPECT_GT(strip, 0u);
+            EXPECT_EQ(onBorder, 0u) << "the strip runs out of the scene";
+            EXPECT_LE(10 * underRing, strip)
+                << underRing << " of the strip's " << strip << " pixels under the ring";
         }
     }
 }

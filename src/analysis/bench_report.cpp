@@ -159,23 +159,12 @@ std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& so
 
 std::string benchTruthKind(const BenchRow& row) { return row.truth.substr(0, row.truth.find(' ')); }
 
-bool steadyTiming(const BenchRow& row, bool byLookup) {
-    double ms = byLookup ? row.lookupMs : row.gpuMs;
-    double iqr = byLookup ? row.lookupMsIqr : row.gpuMsIqr;
-    return iqr <= NOISY_IQR_SHARE * ms;
-}
-
 std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows, bool byLookup) {
     std::vector<glm::dvec2> points;
-    std::vector<size_t> steady;  // points[k] is rows[steady[k]]
-    for (size_t k = 0; k < rows.size(); ++k) {
-        if (!steadyTiming(rows[k], byLookup)) continue;
-        points.emplace_back(byLookup ? rows[k].lookupMs : rows[k].gpuMs, rows[k].error.edgeRmse);
-        steady.push_back(k);
+    for (const BenchRow& r : rows) {
+        points.emplace_back(byLookup ? r.lookupMs : r.gpuMs, r.error.edgeRmse);
     }
-    std::vector<size_t> front = paretoFront(points, PARETO_ERROR_TOLERANCE);
-    for (size_t& k : front) k = steady[k];
-    return front;
+    return paretoFront(points, PARETO_ERROR_TOLERANCE);
 }
 
 double noisyShare(std::span<const BenchRow> rows) {
@@ -269,9 +258,8 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
     for (size_t k = 0; k < rows.size(); ++k) md += tableLine(rows[k], onFront.count(k) > 0);
     md += "\n`*` marks the Pareto front of " +
           std::string(setup.frontByLookup ? "lookup" : "scene") +
-          " time against edge RMSE: no other run is both "
-          "faster and more accurate, among the runs whose time is steady (an IQR at most 10 % of "
-          "its median: a noisy time cannot be ranked, so a noisy run is never on the front); "
+          " time against edge RMSE, by median time: no other run beats it on both "
+          "(where two runs' IQRs overlap, another run of the bench may order them the other way); "
           "`!` a noisy point (an IQR above 10 % of its median). "
           "Edge RMSE is the filter's aliasing error (the edge band, where the truth is partly "
           "lit); acne % is the share of the clean lit pixels (fully lit over the method's whole "

@@ -123,14 +123,10 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
 // (and bilinear2x2 and hw2x2) compute one filter, and their errors differ by float rounding.
 constexpr double PARETO_ERROR_TOLERANCE = 1e-6;
 
-// Whether the row's time (the scene pass, or the lookup pass when byLookup) is steady enough to
-// rank: its IQR at most NOISY_IQR_SHARE of its median. A dot whose time may lie anywhere in a
-// spread wider than that cannot be said to beat its neighbours, so it never joins the front.
-bool steadyTiming(const BenchRow& row, bool byLookup = false);
-
 // Indices of the rows on the Pareto front of (gpu_ms, edge_rmse), cheapest first (pareto.h);
-// of (lookup_ms, edge_rmse) when byLookup. Only rows with steadyTiming take part: a noisy row is
-// neither on the front nor hides a steady one from it.
+// of (lookup_ms, edge_rmse) when byLookup. Every row takes part, by its median time, noisy or not:
+// the charts draw each time's spread as a bar beside it (speed_chart.h), so a reader sees where
+// two dots' order across could swap in another run instead of losing the dot from the front.
 std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows, bool byLookup = false);
 
 }  // namespace pcf

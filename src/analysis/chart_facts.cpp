@@ -151,7 +151,7 @@ ChartFactAnswer leastAccurate(const ChartData& c, const std::string& label) {
 }
 
 // "the front is A, B": the Pareto front the bench chart draws (benchParetoFront of the scene time:
-// the steady dots no other steady dot beats on time and edge RMSE), fastest first, is exactly the
+// the dots no other dot beats on both median time and edge RMSE), fastest first, is exactly the
 // dots named so (chartLabel's names, comma-separated).
 ChartFactAnswer frontIs(const ChartData& c, const std::string& names) {
     std::vector<BenchRow> rows = readChartRows(c.path);

@@ -12,9 +12,9 @@
 //   X is the least accurate                   first word, one dot) is strictly below (above)
 //                                             every other on the chart's accuracy axis (edge
 //                                             RMSE; near the contacts on a #contact chart)
-//   the front is A, B                         a bench chart: its Pareto front (the ringed steady
-//                                             dots, fastest first) is exactly A, B (dot labels,
-//                                             "gather3 1024")
+//   the front is A, B                         a bench chart: its Pareto front of the medians (the
+//                                             ringed dots, fastest first) is exactly A, B (dot
+//                                             labels, "gather3 1024")
 //   M: acne falls as the bias grows           #tradeoff: method M's acne over the onset at the
 //                                             smallest bias, under it at the largest
 //   M: leak grows with the bias               #tradeoff: M's leak under the onset at the smallest

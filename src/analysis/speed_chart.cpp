@@ -46,12 +46,7 @@ double safeLog(double ms) { return std::log10(std::max(ms, 1e-6)); }
 
 }  // namespace
 
-std::string noisyNote() {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "hollow, !: noisy (IQR > %g%% of median), never on the front",
-                  NOISY_IQR_SHARE * 100.0);
-    return buf;
-}
+std::string spreadNote() { return "bars: IQR of the repeated times, centred on the median"; }
 
 std::string speedChartRenderer(std::span<const BenchRow> rows) {
     for (const BenchRow& r : rows) {
@@ -81,16 +76,14 @@ std::string contactAxisLabel(std::span<const BenchRow> rows, bool brief) {
 SpeedChartText speedChartTextFor(std::span<const BenchRow> rows, const SpeedChartText& text,
                                  glm::ivec2 size, ChartTiming timing) {
     SpeedChartText out = text;
-    bool anyNoisy = false;
-    for (const BenchRow& r : rows) {
-        anyNoisy = anyNoisy || !steadyTiming(r, timing == ChartTiming::Lookup);
-    }
+    bool anyBar = false;
+    for (const BenchRow& r : rows) anyBar = anyBar || chartIqr(r, timing) > 0.0;
     float s = std::clamp(std::min(size.x / 1280.0f, size.y / 720.0f), 0.35f, 4.0f);
     // As speedChartTextBoxes places it: 12 px (scaled) in from the left, as much kept on the right.
     float width = std::max(16.0f, size.x - 2.0f * std::round(12.0f * s));
     out.subtitle.clear();
     std::string full = text.subtitle;
-    if (anyNoisy) full += (full.empty() ? "" : "; ") + noisyNote();
+    if (anyBar) full += (full.empty() ? "" : "; ") + spreadNote();
     for (const std::string& line :
          wrapText(FontFace::Sans, fontsFor(s, text.minFontPx).subtitle, full, width)) {
         out.subtitle += (out.subtitle.empty() ? "" : "\n") + line;
@@ -198,7 +191,7 @@ glm::vec2 layoutLegend(SpeedChartLayout& L, std::span<const BenchRow> rows, cons
             L.legendMethods.push_back(r.point.method);
         }
     }
-    float legendText = measureText(FontFace::Sans, f.legend, "Pareto front").x;
+    float legendText = measureText(FontFace::Sans, f.legend, FRONT_LEGEND).x;
     for (int m : L.legendMethods) {
         legendText =
             std::max(legendText, measureText(FontFace::Sans, f.legend, methodInfo(m).name).x);
@@ -321,28 +314,20 @@ void layoutTicks(SpeedChartLayout& L, double yStep) {
     }
 }
 
-// The dots, their error bars, their label texts and the Pareto front.
+// The dots, their error bars, their label texts and the Pareto front of the medians (every
+// row: the bars show the spread, bench_report.h: benchParetoFront).
 void layoutDots(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTiming timing,
                 ChartAccuracy accuracy) {
+    std::vector<glm::dvec2> frontPoints;
     for (const BenchRow& r : rows) {
         L.points.emplace_back(xPixelOf(L, safeLog(chartMs(r, timing))),
                               yPixelOf(L, chartAccuracy(r, accuracy)));
         L.errorBars.emplace_back(xPixelOf(L, barLogLo(r, timing)),
                                  xPixelOf(L, barLogHi(r, timing)));
-        bool steady = steadyTiming(r, timing == ChartTiming::Lookup);
-        L.steady.push_back(steady);
-        L.labelTexts.push_back(chartLabel(r.point) + (steady ? "" : " !"));
-    }
-    // The front of the steady dots only (bench_report.h: steadyTiming says why).
-    std::vector<glm::dvec2> frontPoints;
-    std::vector<size_t> steadyRows;
-    for (size_t k = 0; k < rows.size(); ++k) {
-        if (!L.steady[k]) continue;
-        frontPoints.emplace_back(chartMs(rows[k], timing), chartAccuracy(rows[k], accuracy));
-        steadyRows.push_back(k);
+        L.labelTexts.push_back(chartLabel(r.point));
+        frontPoints.emplace_back(chartMs(r, timing), chartAccuracy(r, accuracy));
     }
     L.front = paretoFront(frontPoints, PARETO_ERROR_TOLERANCE);
-    for (size_t& k : L.front) k = steadyRows[k];
 }
 
 // The order labels are placed in: the front's first, then the kept rows', then the rest.
@@ -510,8 +495,7 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
     for (size_t k = 0; k <= L.legendMethods.size(); ++k) {
         bool front = k == L.legendMethods.size();
         float y = L.legendSwatches[k].centre().y - 0.5f * lineH;  // the line its mark centres
-        std::string name =
-            front ? "Pareto front" : std::string(methodInfo(L.legendMethods[k]).name);
+        std::string name = front ? FRONT_LEGEND : std::string(methodInfo(L.legendMethods[k]).name);
         add({L.legendTextX, y}, TextAlign::Left, L.legendPx, "chart-legend", name).method =
             front ? -1 : L.legendMethods[k];
         out.push_back({L.legendSwatches[k], 0.0f, "chart-swatch", name});
@@ -572,15 +556,8 @@ void drawPlotMarks(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRo
                    glm::vec4(1.0f, 0.55f, 0.0f, 1.0f));
         }
     }
-    // A noisy dot is hollow: a ring of its method's colour (its place across is not known).
     for (size_t k = 0; k < rows.size(); ++k) {
-        glm::vec4 colour = methodColour(rows[k].point.method);
-        if (L.steady[k]) {
-            c.circle(L.points[k], dotR, colour);
-        } else {
-            float w = std::max(1.5f, 0.4f * dotR);
-            c.ring(L.points[k], dotR - 0.5f * w, w, colour);
-        }
+        c.circle(L.points[k], dotR, methodColour(rows[k].point.method));
     }
     c.popClip();
 }

@@ -1,11 +1,12 @@
 // speed_chart.h: the bench's picture, speed_vs_accuracy.png. Camera-pass or lookup-pass time
 // (ChartTiming) with an error bar as wide as its IQR on a LOG x axis
 // (each run's cost spans 1 to ~200 texel reads), edge-band RMSE on a linear y axis from 0, one
-// dot per run coloured by method and labelled "gather3 1024" (method, N, map size), and the
-// Pareto front (runs no other run beats on both time and error) joined by a line, its dots
-// ringed. A run whose time is noisy (its IQR above NOISY_IQR_SHARE of its median: bench.h) is a
-// hollow dot labelled " !" and never on the front, which joins the steady runs' medians only
-// (bench_report.h: steadyTiming): a dot that may sit anywhere along a wide bar cannot be ranked.
+// solid dot per run coloured by method and labelled "gather3 1024" (method, N, map size), and the
+// Pareto front of the medians (runs no other run beats on both median time and error) joined by
+// a line, its dots ringed. The spread is drawn, not judged: every dot has its bar, so where two
+// bars overlap the reader sees that another run of the bench could order those dots the other way
+// (on llvmpipe sharing two cores most IQRs exceed a tenth of the median, and a mark for "noisy"
+// would have been on nearly every dot).
 // Drawn with the overlay's Canvas (src/draw/canvas.h) into an offscreen target.
 //
 // The layout is computed apart from the drawing (no GL), so where things go can be tested
@@ -84,7 +85,6 @@ struct SpeedChartLayout {
     // as wide as the IQR, centred on the median; the CSV keeps the IQR, not the quartiles)
     std::vector<glm::vec2> errorBars;
     std::vector<std::string> labelTexts;  // per row
-    std::vector<bool> steady;             // per row: its time steady (a filled dot), or noisy
     std::vector<Rect> labels;             // per row: where its label's box goes
     // per row: whether its label is drawn. The front's and the kept rows' always are; any other
     // only where it finds a spot that overlaps no other label, no dot and stays in the plot.
@@ -102,10 +102,13 @@ struct SpeedChartLayout {
     float dotRadius = 4.5f;  // pixels; a quarter of the label size at least, to see from afar
 };
 
-// What hollow dots and the " !" that ends their labels mean: "hollow, !: noisy (IQR > 10% of
-// median), never on the front" (bench.h NOISY_IQR_SHARE). The subtitle says it (a legend line
-// wrapped to the names' width took seven lines and ran off a lesson frame's chart).
-std::string noisyNote();
+// What the bars through the dots are: "bars: IQR of the repeated times, centred on the median"
+// (bench.csv keeps each time's median and IQR, not its quartiles). The subtitle says it (a legend
+// line wrapped to the names' width took seven lines and ran off a lesson frame's chart).
+std::string spreadNote();
+
+// The legend's line for the front's mark, which states its rule: the front of the medians.
+inline constexpr const char* FRONT_LEGEND = "Pareto front of medians";
 
 // The GL_RENDERER the rows were measured on (bench.csv's gl_renderer), "" when not recorded.
 std::string speedChartRenderer(std::span<const BenchRow> rows);
@@ -119,10 +122,10 @@ std::string speedChartTruth(std::span<const BenchRow> rows);
 // caster", for a lesson frame's narrow chart.
 std::string contactAxisLabel(std::span<const BenchRow> rows, bool brief = false);
 
-// The text as drawn: when any row is noisy in the timing, noisyNote ends the subtitle; the
-// subtitle is wrapped at spaces to the chart's width at its type size ('\n' still breaks: a
-// lesson frame's chart is narrow). drawSpeedChart draws this; a caller that lays the texts out
-// itself lays out this.
+// The text as drawn: when any row has a bar (an IQR above 0 in the timing), spreadNote ends the
+// subtitle; the subtitle is wrapped at spaces to the chart's width at its type size ('\n' still
+// breaks: a lesson frame's chart is narrow). drawSpeedChart draws this; a caller that lays the
+// texts out itself lays out this.
 SpeedChartText speedChartTextFor(std::span<const BenchRow> rows, const SpeedChartText& text,
                                  glm::ivec2 size, ChartTiming timing = ChartTiming::Scene);
 
@@ -141,8 +144,7 @@ glm::vec4 methodColour(int method);
 
 // Where everything goes. Needs the fonts (to measure labels), not GL. Times <= 0 are drawn at
 // the axis's low end. Throws std::invalid_argument for a side < 64 pixels.
-// Rows noisy in the chosen timing are hollow dots whose labels end in " !".
-// The Pareto front is of time against the chosen accuracy, over the steady rows.
+// The Pareto front is of median time against the chosen accuracy, over every row.
 SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                   ChartTiming timing = ChartTiming::Scene,
                                   ChartAccuracy accuracy = ChartAccuracy::EdgeRmse,

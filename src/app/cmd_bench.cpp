@@ -4,7 +4,7 @@
 //   bench.csv                one row per run (analysis/bench_report.h has the columns)
 //   bench.md                 the same as a table, with the machine and the timer
 //   speed_vs_accuracy.png    GPU time (log; --timing scene or lookup) with IQR bars against
-//                            edge-band RMSE, the Pareto front drawn
+//                            edge-band RMSE, the Pareto front of the medians drawn
 //   speed_vs_stability.png   the same against shimmer
 //   speed_vs_contact.png     with --contact D: the same against the edge-band RMSE within D
 //                            world units of a caster (the contacts, where soft shadows are sharp)
@@ -412,8 +412,7 @@ void writeCharts(const BenchPlan& plan, const std::vector<BenchRow>& rows, bool 
     text.minFontPx = STANDALONE_CHART_MIN_PX;
     text.subtitle = chartRendererLine(speedChartRenderer(rows)) + "\nmedian of " +
                     std::to_string(o.gpuRepeats) + " round-robin samples (" +
-                    std::to_string(2 * o.gpuRepeats) + " where the first were noisy), " + timer +
-                    "; bars: IQR";
+                    std::to_string(2 * o.gpuRepeats) + " where the first were noisy), " + timer;
     text.xLabel = plan.timing == ChartTiming::Lookup
                       ? "filter time: bare lookup pass, ms (log scale)"
                       : "camera pass time, ms (log scale)";

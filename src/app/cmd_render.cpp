@@ -8,6 +8,7 @@
 
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/magnifier.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
 #include "app/session.h"
@@ -40,6 +41,8 @@ struct LessonRender {
     // The step's pinned point where the frame shows it, as the viewer and export render it: the
     // camera's sub-pixel jitter and the point's own lookup at its pixel (lesson_pick.h).
     std::optional<CameraPick> pick;
+    // The camera the step is seen through: a `magnify` step's close-up (magnifier.h: stepCamera).
+    std::optional<Camera> camera;
 };
 
 // The lesson's step (-o writes its chart, as `export` shows it in the scene's place; --raw
@@ -56,7 +59,11 @@ LessonRender lessonRenderOf(const RenderCommandOptions& o, const RenderSettings&
     // render it (step_view.h), with the settings rendered (the step's, or flags over them).
     LessonSettings s = step.settings;
     static_cast<ShadowSettings&>(s) = settings;
-    StepView view = stepView(lesson.scene, s, stepPoint(lesson.scene, s), settings.frameSize);
+    std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
+    Scene seen = lesson.scene;
+    seen.camera = stepCamera(lesson.scene, s, point, settings.frameSize);
+    StepView view = stepView(seen, s, point, settings.frameSize);
+    out.camera = seen.camera;
     out.fit = view.fit;
     out.pick = view.pick;
     if (!step.chart.empty()) {
@@ -140,6 +147,7 @@ int runRender(const RenderCommandOptions& o) {
     OutputFiles outputs(o.force);
     outputs.addInput("--scene-file", o.render.sceneFile);
     LessonRender lesson = lessonRenderOf(o, settings, outputs);
+    if (lesson.camera) scene.camera = *lesson.camera;
     if (lesson.chartStep && !o.out.empty() &&
         std::min(settings.frameSize.x, settings.frameSize.y) < MIN_CHART_SIDE) {
         throw UsageError("--size " + o.render.size + ": lesson step " +

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/step_view.h"
+
 namespace pcf {
 
 namespace {
@@ -73,6 +75,17 @@ Camera magnifierCamera(const Camera& wide, glm::ivec2 sceneSize, const ScenePoin
     c.nearZ = distance * 0.05f;
     c.farZ = std::max(wide.farZ, 0.0f) + glm::length(wide.eyeWs - c.eyeWs) + distance;
     return c;
+}
+
+Camera stepCamera(const Scene& scene, const LessonSettings& s,
+                  const std::optional<ScenePoint>& point, glm::ivec2 sceneSize) {
+    if (!s.magnify || !point || sceneSize.x <= 0 || sceneSize.y <= 0) return scene.camera;
+    LessonSettings unslid = s;
+    unslid.originShift = 0.0f;
+    unslid.snap = false;
+    int mapSize = renderSettingsFor(unslid, sceneSize).mapSize;
+    TexelFootprint texel = texelFootprint(lessonShadowFit(scene, unslid, mapSize), mapSize, *point);
+    return magnifierCamera(scene.camera, sceneSize, *point, texel);
 }
 
 void magnifySession(Session& session, const Camera& wide) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <optional>
 
 #include "app/session.h"
 #include "lesson/lesson_pick.h"
@@ -38,6 +39,13 @@ glm::vec2 texelPixels(const Camera& camera, glm::ivec2 sceneSize, const ScenePoi
 // distance. The field of view stays, so the close-up is an ordinary perspective view.
 Camera magnifierCamera(const Camera& wide, glm::ivec2 sceneSize, const ScenePoint& point,
                        const TexelFootprint& texel);
+
+// The camera a lesson step is seen through in a scene of sceneSize: the scene's own (the lesson's
+// camera), or with the step's `magnify` (lesson.h) magnifierCamera on the step's point for its
+// map as fitted before any slide (origin_shift 0, not snapped), so that steps that only slide
+// or snap the grid are seen through the very same camera and differ by the slide alone.
+Camera stepCamera(const Scene& scene, const LessonSettings& s,
+                  const std::optional<ScenePoint>& point, glm::ivec2 sceneSize);
 
 // Puts the magnifier on the session: `wide` (the view it magnifies) moved onto the session's
 // pinned point for its map fit and scene size, the point kept. Nothing when no point is pinned.

@@ -9,6 +9,7 @@
 #include "analysis/stability.h"
 #include "app/cli_util.h"
 #include "app/frame_json.h"
+#include "app/magnifier.h"
 #include "app/step_words.h"
 #include "kernel/methods.h"
 #include "kernel/trace_json.h"
@@ -48,6 +49,8 @@ void Session::loadLesson(const std::string& path) {
     mRenderer = std::make_unique<SceneRenderer>(mLesson.scene);
     mPartRenderer.reset();
     mBaseLight = mLesson.scene.light;
+    mLessonCamera = mLesson.scene.camera;
+    mStepMagnified = false;
     mLitSun = glm::vec2(0.0f);
     mRendered.reset();
     mSceneDirty = true;
@@ -62,10 +65,29 @@ void Session::goToStep(int step) {
     mGrid = s.settings.grid;
     mHeatmap = s.settings.heatmap;
     setSettings(s.settings);
-    // The step's scene point, shown at whichever pixel holds it in this frame (lesson_pick.h).
+    // The step's scene point, found in the lesson's own view (a close-up may not see it), shown
+    // at whichever pixel holds it in this frame (lesson_pick.h).
+    if (mStepMagnified) {
+        mLesson.scene.camera = mLessonCamera;
+        if (mRenderer) mRenderer->setCamera(mLessonCamera);
+        mStepMagnified = false;
+        mSceneDirty = true;
+    }
     mPoint = stepPoint(mLesson.scene, s.settings);
+    applyStepCamera();
     repick();
     mStepEdited = false;
+}
+
+void Session::applyStepCamera() {
+    if (!mSettings.magnify && !mStepMagnified) return;
+    Scene wide = mLesson.scene;
+    wide.camera = mLessonCamera;
+    Camera camera = stepCamera(wide, mSettings, mPoint, glm::ivec2(mLayout.scene.size()));
+    mLesson.scene.camera = camera;
+    if (mRenderer) mRenderer->setCamera(camera);
+    mStepMagnified = mSettings.magnify && mPoint.has_value();
+    mSceneDirty = true;
 }
 
 void Session::repick() {
@@ -166,6 +188,8 @@ void Session::setFrameSize(glm::ivec2 frameSize) {
         mPixel = mPixel * newScene / oldScene;
     }
     mPixel = glm::clamp(mPixel, glm::ivec2(0), newScene - glm::ivec2(1));
+    // A close-up is sized to the scene (a texel a sixteenth of its height).
+    if (mStepMagnified) applyStepCamera();
     // The pinned point stays: its pixel and the camera's jitter are derived for the new size.
     repick();
     mSceneDirty = true;

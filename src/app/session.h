@@ -157,6 +157,10 @@ class Session {
     void renderScene();
     // Derives the pixel and the camera's jitter that show mPoint in this frame.
     void repick();
+    // A step with `magnify` (lesson.h) is seen through the magnifier's close-up on its point
+    // (magnifier.h: stepCamera) at this scene size; leaving it brings back the lesson's camera.
+    // Steps without it leave the camera alone (an animation's sweep, the viewer's Z).
+    void applyStepCamera();
     void traceAtPixel();
     void tracePartsOfText();
     void blitThumbnail(const InspectorLayout& layout);
@@ -186,6 +190,8 @@ class Session {
     // move the sun from the lesson's light (setSettings).
     Light mBaseLight;
     glm::vec2 mLitSun{0.0f};
+    Camera mLessonCamera;         // the lesson scene's own camera, which `magnify` moves from
+    bool mStepMagnified = false;  // the camera is a `magnify` step's close-up
     bool mHeatDirty = true;
     std::vector<float> mHeatValues;
     OffscreenTarget mHeat;           // the heat map, rows top-down, blitted over the scene

@@ -30,8 +30,8 @@ namespace {
 
 // The keys a [settings] table and a [[step]] may set besides the parameter table's: the view's
 // (`pixel` only to be refused with what to write instead).
-constexpr std::string_view VIEW_KEYS[] = {"point",   "pixel",        "grid",
-                                          "heatmap", "origin_shift", "snap"};
+constexpr std::string_view VIEW_KEYS[] = {"point",        "pixel", "grid",   "heatmap",
+                                          "origin_shift", "snap",  "magnify"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));
@@ -534,12 +534,13 @@ class LessonParser {
         s.*named.field = *v;
     }
 
-    // The view's keys of the shadow map: its grid's origin (origin_shift, snap), and the heat
-    // map of its aliasing over the scene.
+    // The view's keys of the shadow map: its grid's origin (origin_shift, snap), the heat map of
+    // its aliasing over the scene, and the magnifier's close-up on its texels.
     void applyMapKeys(const toml::table& table, const std::string& what, LessonSettings& s) const {
         auto name = [&](std::string_view key) { return what + " " + std::string(key); };
         for (auto [key, field] : {std::pair<const char*, bool*>{"heatmap", &s.heatmap},
-                                  std::pair<const char*, bool*>{"snap", &s.snap}}) {
+                                  std::pair<const char*, bool*>{"snap", &s.snap},
+                                  std::pair<const char*, bool*>{"magnify", &s.magnify}}) {
             if (const toml::node* n = table.get(key)) {
                 const auto* b = n->as_boolean();
                 if (!b) fail(*n, name(key) + " must be true or false, got " + typeName(*n));

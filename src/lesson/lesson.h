@@ -30,7 +30,8 @@
 //                                     holds it, so every size and mode traces the same lookup
 //                                     (lesson_pick.h). `pcfscope view` prints the point of a click
 //                                     (the step's JSON "point" too)
-//   heatmap, origin_shift, snap       the view's: see LessonSettings
+//   heatmap, origin_shift, snap,      the view's: see LessonSettings
+//   magnify
 //
 //   [[step]]                          one table per step, at least one, shown in file order
 //   title = "..."                     required, not empty
@@ -98,6 +99,10 @@ struct LessonSettings : ShadowSettings {
     std::optional<glm::vec3> point;
     bool grid = true;      // the texel grid overlay on the scene
     bool heatmap = false;  // the aliasing heat map over the scene (viewer key A)
+    // The scene seen through the magnifier (app/magnifier.h, viewer key Z): the lesson's camera
+    // moved toward the point until a texel of the step's map, unslid, is a sixteenth of the
+    // scene's height, so that a quarter-texel slide moves the stair steps by several pixels.
+    bool magnify = false;
     // The shadow map's texel grid slid under the world by (s, s) texels (light.h's
     // shiftShadowOrigin), then with `snap` moved to the nearest whole-texel fit (viewer keys
     // O / Shift+O step s by 1/8 texel, S toggles snap). 0 and false: the plain fit.
