@@ -77,7 +77,7 @@ TEST_F(PcfPrograms, EveryTableUniformIsReadAndSetInTheSceneAndTheLookupPass) {
     LiveUniforms lookup;
     for (int mode = PCF_BIAS_NONE; mode < PCF_BIAS_COUNT; ++mode) {
         s.bias = static_cast<BiasMode>(mode);
-        PcfBias bias = s.biasParams().kernelBias();
+        PcfBias bias = s.kernelBias();
         PcfProgramCache scenePrograms("scene.vert", "scene.frag",
                                       "#define PCF_ALL_TARGETS 1\n#define PCF_SCENE_BIAS " +
                                           std::to_string(mode) + "\n#define PCF_SCENE_SPOT 0\n");

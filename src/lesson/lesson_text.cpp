@@ -147,17 +147,13 @@ const std::vector<Simple>& simpleNames() {
                     const StepContext& c) { return text(std::string(biasModeName(c.bias))); }},
         {"constant_bias",
          [](const Trace&, const StepContext& c) { return number(c.constantBias); }},
-        {"dzduv.u", [](const Trace& t, const StepContext&) { return number(t.bias.dzduv.x); }},
-        {"dzduv.v", [](const Trace& t, const StepContext&) { return number(t.bias.dzduv.y); }},
+        {"dzduv.u", [](const Trace& t, const StepContext&) { return number(t.dzduv.x); }},
+        {"dzduv.v", [](const Trace& t, const StepContext&) { return number(t.dzduv.y); }},
         // The plane's depth change over half a texel of this map: dz/du * 0.5 / size.
         {"half_texel_dz.u",
-         [](const Trace& t, const StepContext&) {
-             return number(t.bias.dzduv.x * 0.5 / t.mapSize.x);
-         }},
+         [](const Trace& t, const StepContext&) { return number(t.dzduv.x * 0.5 / t.mapSize.x); }},
         {"half_texel_dz.v",
-         [](const Trace& t, const StepContext&) {
-             return number(t.bias.dzduv.y * 0.5 / t.mapSize.y);
-         }},
+         [](const Trace& t, const StepContext&) { return number(t.dzduv.y * 0.5 / t.mapSize.y); }},
         {"origin_shift", [](const Trace&, const StepContext& c) { return number(c.originShift); }},
         {"light_angle",
          [](const Trace&, const StepContext& c) {

@@ -188,9 +188,8 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
 
-    BiasParams bias = settings.biasParams();
     bool fixedPoint = depthFormatFixedPointBits(mShadowFormat) != 0;
-    GLuint program = programsFor(targets, bias.mode)
+    GLuint program = programsFor(targets, settings.modeId())
                          .get(pcfVariant(settings.pcfParams(), settings.rotate, fixedPoint));
     glUseProgram(program);
     glm::mat4 clip = clipFromWorld();
@@ -204,7 +203,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform3fv(program, uniform(program, "uLightPosWs"), 1, &light.positionWs.x);
     glProgramUniform1f(program, uniform(program, "uSpotCosCone"),
                        std::cos(glm::radians(light.coneDeg)));
-    setParamUniforms(program, pcfParams(settings), bias.kernelBias(), &settings);
+    setParamUniforms(program, pcfParams(settings), settings.kernelBias(), &settings);
     glProgramUniform1f(program, uniform(program, "uShadowTexelWs"),
                        pcf::shadowTexelWs(mScene, settings.mapSize));
     // A lesson's pinned point (setPick); pixel -1, -1 matches no fragment.
