@@ -84,13 +84,13 @@ TEST_F(PcfPrograms, EveryTableUniformIsReadAndSetInTheSceneAndTheLookupPass) {
         PcfProgramCache lookupPrograms("fullscreen.vert", "lookup.frag",
                                        "#define PCF_LOOKUP_BIAS " + std::to_string(mode) + "\n");
         for (const PcfParams& prm : variantParams(s)) {
-            GLuint sceneProgram = scenePrograms.get(pcfVariant(prm, false, false));
+            const PcfProgram& sceneProgram = scenePrograms.get(pcfVariant(prm, false, false));
             setParamUniforms(sceneProgram, prm, bias, &s);
-            collectLive(sceneProgram, scene);
+            collectLive(sceneProgram.id(), scene);
             // The lookup pass has no settings: its ref comes with each lookup.
-            GLuint lookupProgram = lookupPrograms.get(pcfVariant(prm, false, false));
+            const PcfProgram& lookupProgram = lookupPrograms.get(pcfVariant(prm, false, false));
             setParamUniforms(lookupProgram, prm, bias);
-            collectLive(lookupProgram, lookup);
+            collectLive(lookupProgram.id(), lookup);
         }
     }
     ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));

@@ -189,8 +189,10 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glDisable(GL_BLEND);
 
     bool fixedPoint = depthFormatFixedPointBits(mShadowFormat) != 0;
-    GLuint program = programsFor(targets, settings.modeId())
-                         .get(pcfVariant(settings.pcfParams(), settings.rotate, fixedPoint));
+    const PcfProgram& pcfProgram =
+        programsFor(targets, settings.modeId())
+            .get(pcfVariant(settings.pcfParams(), settings.rotate, fixedPoint));
+    GLuint program = pcfProgram.id();
     glUseProgram(program);
     glm::mat4 clip = clipFromWorld();
     glProgramUniformMatrix4fv(program, uniform(program, "uClipFromWorld"), 1, GL_FALSE,
@@ -203,7 +205,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform3fv(program, uniform(program, "uLightPosWs"), 1, &light.positionWs.x);
     glProgramUniform1f(program, uniform(program, "uSpotCosCone"),
                        std::cos(glm::radians(light.coneDeg)));
-    setParamUniforms(program, pcfParams(settings), settings.kernelBias(), &settings);
+    setParamUniforms(pcfProgram, pcfParams(settings), settings.kernelBias(), &settings);
     glProgramUniform1f(program, uniform(program, "uShadowTexelWs"),
                        pcf::shadowTexelWs(mScene, settings.mapSize));
     // A lesson's pinned point (setPick); pixel -1, -1 matches no fragment.
