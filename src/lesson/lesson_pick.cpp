@@ -155,10 +155,7 @@ StepContext makeStepContext(const LessonSettings& s, glm::ivec2 pixel, float lig
     StepContext ctx;
     ctx.pixel = pixel;
     ctx.originShift = s.originShift;
-    ctx.bias = s.bias;
-    ctx.constantBias = s.constantBias;
-    ctx.cull = s.cull;
-    ctx.depthFormat = s.depthFormat;
+    ctx.settings = s;
     ctx.lightAngleDeg = lightAngleDeg;
     return ctx;
 }

@@ -143,10 +143,12 @@ const std::vector<Simple>& simpleNames() {
         {"weights.h", [](const Trace& t, const StepContext&) { return integer(t.weights.size.y); }},
         {"pixel.x", [](const Trace&, const StepContext& c) { return integer(c.pixel.x); }},
         {"pixel.y", [](const Trace&, const StepContext& c) { return integer(c.pixel.y); }},
-        {"bias", [](const Trace&,
-                    const StepContext& c) { return text(std::string(biasModeName(c.bias))); }},
+        {"bias",
+         [](const Trace&, const StepContext& c) {
+             return text(std::string(biasModeName(c.settings.bias)));
+         }},
         {"constant_bias",
-         [](const Trace&, const StepContext& c) { return number(c.constantBias); }},
+         [](const Trace&, const StepContext& c) { return number(c.settings.constantBias); }},
         {"dzduv.u", [](const Trace& t, const StepContext&) { return number(t.dzduv.x); }},
         {"dzduv.v", [](const Trace& t, const StepContext&) { return number(t.dzduv.y); }},
         // The plane's depth change over half a texel of this map: dz/du * 0.5 / size.
@@ -186,11 +188,15 @@ const std::vector<Simple>& simpleNames() {
          [](const Trace& t, const StepContext&) { return number(t.pcss.penumbra); }},
         {"pcss.filter_radius",
          [](const Trace& t, const StepContext&) { return number(t.pcss.filterRadius); }},
-        {"cull", [](const Trace&,
-                    const StepContext& c) { return text(std::string(cullModeName(c.cull))); }},
+        {"cull",
+         [](const Trace&, const StepContext& c) {
+             return text(std::string(cullModeName(c.settings.cull)));
+         }},
         {"depth_format",
-         [](const Trace&,
-            const StepContext& c) { return text(std::string(depthFormatName(c.depthFormat))); }},
+         [](const Trace&, const StepContext& c) {
+             DepthFormat format = c.settings.depthFormat;
+             return text(std::string(depthFormatName(format)));
+         }},
     };
     return names;
 }
