@@ -93,12 +93,11 @@ TEST(Bias, ReceiverPlaneGivesEachTapTheRefOfThePlaneWhereItReads) {
     const vec2 uv(0.431f, 0.577f);
     const float ref = 0.5f;
     const vec2 dzduv(0.8f, -1.3f);
-    BiasParams b;
-    b.mode = PCF_BIAS_RECEIVER_PLANE;
-    b.dzduv = dzduv;
+    BiasSettings b;
+    b.bias = BiasMode::ReceiverPlane;
     int checked = 0;
     for (const PcfParams& prm : everyMethod()) {
-        Trace tr = traceLookup(map, uv, ref + b.constant, ref, prm, b);
+        Trace tr = traceLookup(map, uv, ref + b.constantBias, ref, prm, b, dzduv);
         ASSERT_FALSE(tr.taps.empty());
         for (const TapRecord& t : tr.taps) {
             vec2 at;
@@ -211,10 +210,10 @@ TEST(Bias, InterpolatedDepthFollowsAPlanarSurfaceWhereNearestMakesAcne) {
 }
 
 TEST(Bias, SlopeBiasGrowsWithTheAngleUpToItsCap) {
-    BiasParams b;
-    b.mode = PCF_BIAS_SLOPE;
-    b.constant = 0.001f;
-    b.slope = 0.002f;
+    BiasSettings b;
+    b.bias = BiasMode::Slope;
+    b.constantBias = 0.001f;
+    b.slopeBias = 0.002f;
     b.slopeMax = 0.01f;
     EXPECT_FLOAT_EQ(b.lookupBias(1.0f), 0.001f);                       // facing the light
     EXPECT_NEAR(b.lookupBias(std::cos(0.785398163f)), 0.003f, 1e-6f);  // 45 degrees: tan 1
@@ -225,10 +224,10 @@ TEST(Bias, SlopeBiasGrowsWithTheAngleUpToItsCap) {
         EXPECT_GE(v, last) << deg;
         last = v;
     }
-    BiasParams c = b;
-    c.mode = PCF_BIAS_CONSTANT;
+    BiasSettings c = b;
+    c.bias = BiasMode::Constant;
     EXPECT_FLOAT_EQ(c.lookupBias(0.1f), 0.001f);
-    c.mode = PCF_BIAS_NONE;
+    c.bias = BiasMode::None;
     EXPECT_FLOAT_EQ(c.lookupBias(0.1f), 0.0f);
 }
 
@@ -258,10 +257,10 @@ TEST(Bias, ReceiverPlaneSlopeFromScreenDerivatives) {
 
 TEST(Bias, TraceJsonCarriesTheModeItsParametersAndEachTapsShift) {
     ShadowMap map = randomMap(8, 8, 11);
-    BiasParams b;
-    b.mode = PCF_BIAS_RECEIVER_PLANE;
-    b.dzduv = vec2(0.5f, 0.25f);
-    Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.498f, makeParams(PCF_BILINEAR2X2), b);
+    BiasSettings b;
+    b.bias = BiasMode::ReceiverPlane;
+    Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.498f, makeParams(PCF_BILINEAR2X2), b,
+                           vec2(0.5f, 0.25f));
     std::string json = traceToJson(tr);
     EXPECT_NE(json.find("\"rpdb_max\":100,\"dzduv_used\":[0.5,0.25]"), std::string::npos) << json;
     EXPECT_NE(json.find("\"bias\":{\"mode\":\"receiver-plane\""), std::string::npos) << json;
@@ -335,11 +334,11 @@ TEST(Bias, TheCapKeepsAWrongSlopeFromShadowingAFlatLitSurface) {
 // The trace says when the cap bound, and the JSON carries the slope the taps used.
 TEST(Bias, TraceShowsTheCappedSlope) {
     ShadowMap map = randomMap(8, 8, 11);
-    BiasParams b;
-    b.mode = PCF_BIAS_RECEIVER_PLANE;
-    b.dzduv = vec2(0.5f, 0.25f);
+    BiasSettings b;
+    b.bias = BiasMode::ReceiverPlane;
     b.rpdbMax = 0.125f;
-    Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.498f, makeParams(PCF_BILINEAR2X2), b);
+    Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.498f, makeParams(PCF_BILINEAR2X2), b,
+                           vec2(0.5f, 0.25f));
     std::string json = traceToJson(tr);
     EXPECT_NE(json.find("\"dzduv\":[0.5,0.25],\"rpdb_max\":0.125,\"dzduv_used\":[0.125,0.125]"),
               std::string::npos)

@@ -433,7 +433,7 @@ RenderedParity renderAndCompare(SceneRenderer& renderer, const RenderSettings& s
     std::vector<float> ls = renderer.readLightSpace();
     std::vector<float> rc = renderer.readReceiver();
     std::vector<float> vis = renderer.readVisibility();
-    PcfBias bias = s.biasParams().kernelBias();
+    PcfBias bias = s.kernelBias();
     RenderedParity r;
     for (size_t k = 0; k < vis.size(); ++k) {
         if (ls[4 * k + 3] != 1.0f) continue;

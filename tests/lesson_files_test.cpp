@@ -109,9 +109,8 @@ TEST(LessonFiles, EveryPlaceholderIsKnownAndFillsFromATrace) {
         for (const LessonStep& step : lesson.steps) {
             SCOPED_TRACE(file + ": " + step.title);
             const LessonSettings& s = step.settings;
-            Trace trace =
-                traceLookup(map, vec2(0.4625f, 0.3875f), 0.5f, 0.5f - s.depthBias(),
-                            s.pcfParams(vec2(0.4625f, 0.3875f), map.width()), s.biasParams());
+            Trace trace = traceLookup(map, vec2(0.4625f, 0.3875f), 0.5f, 0.5f - s.baseBias(),
+                                      s.pcfParams(vec2(0.4625f, 0.3875f), map.width()), s);
             int taps = static_cast<int>(trace.taps.size());
             int fetches = static_cast<int>(trace.fetches.size());
             EXPECT_FALSE(checkPlaceholders(step.text, taps, fetches, step.compare.parts()));

@@ -96,9 +96,9 @@ TEST(LessonFormat, ParsesStepsThatInheritTheStateBeforeThem) {
 TEST(LessonFormat, DepthBiasIsZeroWithoutConstantBias) {
     LessonSettings s;
     s.constantBias = 0.005f;
-    EXPECT_EQ(s.depthBias(), 0.005f);
+    EXPECT_EQ(s.baseBias(), 0.005f);
     s.bias = BiasMode::None;
-    EXPECT_EQ(s.depthBias(), 0.0f);
+    EXPECT_EQ(s.baseBias(), 0.0f);
 }
 
 TEST(LessonFormat, PcfParamsRotateTheDiskWithTheTexelLookedUp) {

@@ -22,10 +22,10 @@ Trace exampleTrace(int method, int kernel = 3) {
 StepContext context() {
     StepContext ctx;
     ctx.pixel = {612, 388};
-    ctx.bias = BiasMode::None;
-    ctx.constantBias = 0.0025f;
-    ctx.cull = CullMode::Front;
-    ctx.depthFormat = DepthFormat::D24;
+    ctx.settings.bias = BiasMode::None;
+    ctx.settings.constantBias = 0.0025f;
+    ctx.settings.cull = CullMode::Front;
+    ctx.settings.depthFormat = DepthFormat::D24;
     ctx.lightAngleDeg = 51.25f;
     ctx.originShift = 0.375f;
     ctx.partVisibility = {0.25f, 1.0f};
@@ -145,9 +145,9 @@ TEST(LessonText, StepContextNamesThePixelAndTheState) {
     step.settings.depthFormat = DepthFormat::D16;
     StepContext ctx = makeStepContext(step, {306, 194});
     EXPECT_EQ(ctx.pixel, glm::ivec2(306, 194));
-    EXPECT_EQ(ctx.bias, BiasMode::None);
-    EXPECT_EQ(ctx.cull, CullMode::Front);
-    EXPECT_EQ(ctx.depthFormat, DepthFormat::D16);
+    EXPECT_EQ(ctx.settings.bias, BiasMode::None);
+    EXPECT_EQ(ctx.settings.cull, CullMode::Front);
+    EXPECT_EQ(ctx.settings.depthFormat, DepthFormat::D16);
 }
 
 TEST(LessonText, AnIndexPastTheTraceIsNotAvailable) {

@@ -77,20 +77,20 @@ TEST_F(PcfPrograms, EveryTableUniformIsReadAndSetInTheSceneAndTheLookupPass) {
     LiveUniforms lookup;
     for (int mode = PCF_BIAS_NONE; mode < PCF_BIAS_COUNT; ++mode) {
         s.bias = static_cast<BiasMode>(mode);
-        PcfBias bias = s.biasParams().kernelBias();
+        PcfBias bias = s.kernelBias();
         PcfProgramCache scenePrograms("scene.vert", "scene.frag",
                                       "#define PCF_ALL_TARGETS 1\n#define PCF_SCENE_BIAS " +
                                           std::to_string(mode) + "\n#define PCF_SCENE_SPOT 0\n");
         PcfProgramCache lookupPrograms("fullscreen.vert", "lookup.frag",
                                        "#define PCF_LOOKUP_BIAS " + std::to_string(mode) + "\n");
         for (const PcfParams& prm : variantParams(s)) {
-            GLuint sceneProgram = scenePrograms.get(pcfVariant(prm, false, false));
+            const PcfProgram& sceneProgram = scenePrograms.get(pcfVariant(prm, false, false));
             setParamUniforms(sceneProgram, prm, bias, &s);
-            collectLive(sceneProgram, scene);
+            collectLive(sceneProgram.id(), scene);
             // The lookup pass has no settings: its ref comes with each lookup.
-            GLuint lookupProgram = lookupPrograms.get(pcfVariant(prm, false, false));
+            const PcfProgram& lookupProgram = lookupPrograms.get(pcfVariant(prm, false, false));
             setParamUniforms(lookupProgram, prm, bias);
-            collectLive(lookupProgram, lookup);
+            collectLive(lookupProgram.id(), lookup);
         }
     }
     ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
@@ -128,20 +128,22 @@ TEST_F(PcfPrograms, PcssReadsTheDepthRangeOnlyOnAPerspectiveMapAndTheReciprocals
     gatherUnderSpot.method = PCF_GATHER;
     EXPECT_EQ(pcfVariant(gatherUnderSpot, false, false).perspective, 0);
 
-    PcfBias bias = s.biasParams().kernelBias();
-    GLuint orthoProgram = programs.get(pcfVariant(ortho, false, false));
-    GLuint spotProgram = programs.get(pcfVariant(spot, false, false));
+    PcfBias bias = s.kernelBias();
+    const PcfProgram& orthoCached = programs.get(pcfVariant(ortho, false, false));
+    const PcfProgram& spotCached = programs.get(pcfVariant(spot, false, false));
+    GLuint orthoProgram = orthoCached.id();
+    GLuint spotProgram = spotCached.id();
     ASSERT_NE(orthoProgram, spotProgram);
     EXPECT_LT(glGetUniformLocation(orthoProgram, "uPcssDepthRange"), 0);
     GLint range = glGetUniformLocation(spotProgram, "uPcssDepthRange");
     ASSERT_GE(range, 0);
-    setParamUniforms(spotProgram, spot, bias);
+    setParamUniforms(spotCached, spot, bias);
     float nearFar[2] = {0.0f, 0.0f};
     glGetUniformfv(spotProgram, range, nearFar);
     EXPECT_EQ(nearFar[0], 1.0f);
     EXPECT_EQ(nearFar[1], 4.0f);
 
-    setParamUniforms(orthoProgram, ortho, bias);
+    setParamUniforms(orthoCached, ortho, bias);
     for (int k = 1; k <= PCF_PCSS_TAPS; ++k) {
         std::string name = "uPcssReciprocals[" + std::to_string(k) + "]";
         GLint at = glGetUniformLocation(orthoProgram, name.c_str());

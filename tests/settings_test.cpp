@@ -137,6 +137,28 @@ TEST(ParameterTable, EveryParameterOnceWithItsKeyFlagAndRange) {
     EXPECT_EQ(settingText(*findParam("rpdb_max"), defaults), "100");
 }
 
+// The bias rows are the fields of BiasSettings, what the trace and the kernel take (trace.h
+// traceLookup, kernelBias), and no others: a bias parameter declared beside them in
+// ShadowSettings would reach the command line and the uniforms but never the trace.
+TEST(ParameterTable, TheBiasRowsAreTheFieldsTheKernelAndTheTraceTake) {
+    ShadowSettings defaults;
+    const BiasSettings& bias = defaults;
+    const char* lo = reinterpret_cast<const char*>(&bias);
+    int rows = 0;
+    for (const ParamInfo& p : allParams()) {
+        const char* at = static_cast<const char*>(fieldIn(p, defaults));
+        bool inBias = at >= lo && at < lo + sizeof(BiasSettings);
+        EXPECT_EQ(inBias, p.group == ParamGroup::Bias) << p.key;
+        rows += inBias ? 1 : 0;
+        // A per-tap parameter's kernel member is filled from its setting.
+        if (const auto* m = std::get_if<float PcfBias::*>(&p.member)) {
+            ShadowSettings s = atMax(p);
+            EXPECT_EQ(s.kernelBias().*(*m), static_cast<float>(p.max)) << p.key;
+        }
+    }
+    EXPECT_GE(rows, 7);  // the mode and its six parameters, at least
+}
+
 // The uniforms reach the programs: tests/pcf_programs_test.cpp.
 TEST(ParameterTable, EveryUniformIsNamedForTheKernelMemberItFills) {
     int uniforms = 0;

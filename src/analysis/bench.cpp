@@ -307,7 +307,7 @@ class BenchRun {
         // One untimed draw of each timed pass: compiles its programs before the rounds.
         row.timer = mRenderer.timeCameraPass(s, 1).timer;
         PcfParams prm = mRenderer.pcfParams(s);  // pcss: the scene light's size in the map
-        mLookupPass.draw(prm, s.rotate, s.biasParams().kernelBias());
+        mLookupPass.draw(prm, s.rotate, s.kernelBias());
         if (mOptions.reference) mLookupPass.drawReference(prm);
         glFinish();
         row.cpuNsPerPixel = timeCpuKernel(map(mMaps, p.mapSize), mCpuLookups, prm,
@@ -382,7 +382,7 @@ class BenchRun {
     void timePoint(const RenderSettings& s, PointSamples& samples) {
         samples.scene.add(mRenderer.timeCameraPass(s, 1, false));
         PcfParams prm = mRenderer.pcfParams(s);
-        PcfBias bias = s.biasParams().kernelBias();
+        PcfBias bias = s.kernelBias();
         samples.lookup.add(timeGpu([&] { mLookupPass.draw(prm, s.rotate, bias); }, 1, false));
         if (mOptions.reference) {
             samples.reference.add(timeGpu([&] { mLookupPass.drawReference(prm); }, 1, false));

@@ -73,10 +73,9 @@ PcfParams traceParams(const TraceOptions& o, const ShadowSettings& s) {
     return prm;
 }
 
-// The bias: the settings', and trace's --angle and --dzduv that stand in for the receiver the
-// renderer would know.
-BiasParams traceBias(const TraceOptions& o, const ShadowSettings& s) {
-    BiasParams bias = s.biasParams();
+// The bias: the settings' (checked), and trace's --angle and --dzduv that stand in for the
+// receiver the renderer would know; returns the receiver plane, --dzduv's.
+vec2 traceDzDuv(const TraceOptions& o, const ShadowSettings& s) {
     if (auto why = cliBiasProblem(s)) throw UsageError(*why);
     // trace's default mode is none: a parameter given without a mode would do nothing.
     if (!o.shadow.given("bias")) {
@@ -89,18 +88,19 @@ BiasParams traceBias(const TraceOptions& o, const ShadowSettings& s) {
     }
     checkBiasOptions(s);
     requireRange("--angle", o.angleDeg, 0.0f, 90.0f);
-    if (o.sub->count("--angle") > 0 && bias.mode != PCF_BIAS_SLOPE) {
+    if (o.sub->count("--angle") > 0 && s.bias != BiasMode::Slope) {
         throw UsageError("--angle is for --bias slope (the angle its tan(theta) reads)");
     }
+    vec2 dzduv(0.0f);
     if (o.sub->count("--dzduv") > 0) {
-        if (bias.mode != PCF_BIAS_RECEIVER_PLANE) {
+        if (s.bias != BiasMode::ReceiverPlane) {
             throw UsageError("--dzduv is for --bias receiver-plane (the receiver's plane)");
         }
-        bias.dzduv = parseVec2("--dzduv", o.dzduv);
-        requireRange("--dzduv u", bias.dzduv.x, -1.0e6f, 1.0e6f);
-        requireRange("--dzduv v", bias.dzduv.y, -1.0e6f, 1.0e6f);
+        dzduv = parseVec2("--dzduv", o.dzduv);
+        requireRange("--dzduv u", dzduv.x, -1.0e6f, 1.0e6f);
+        requireRange("--dzduv v", dzduv.y, -1.0e6f, 1.0e6f);
     }
-    return bias;
+    return dzduv;
 }
 
 int runTrace(const TraceOptions& o) {
@@ -110,7 +110,7 @@ int runTrace(const TraceOptions& o) {
     ShadowSettings settings = traceSettings(o);
     PcfParams prm = traceParams(o, settings);
     int fixedBits = depthFormatFixedPointBits(depthFormatOption(o.depthFormat));
-    BiasParams bias = traceBias(o, settings);
+    vec2 dzduv = traceDzDuv(o, settings);
 
     ShadowMap map;
     std::string uvText = o.uv;
@@ -136,8 +136,8 @@ int runTrace(const TraceOptions& o) {
     requireRange("--z", z, 0.0f, 1.0f);
 
     // The per-lookup bias (kernel/bias.h); normal offset has already moved the point given.
-    float ref = z - bias.lookupBias(std::cos(o.angleDeg * 0.0174532925f));
-    Trace tr = traceLookup(map, uv, z, ref, prm, bias);
+    float ref = z - settings.lookupBias(std::cos(o.angleDeg * 0.0174532925f));
+    Trace tr = traceLookup(map, uv, z, ref, prm, settings, dzduv);
     std::string out = o.json ? traceToJson(tr) + "\n" : traceToText(tr);
     std::fwrite(out.data(), 1, out.size(), stdout);
     return 0;

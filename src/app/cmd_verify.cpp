@@ -166,7 +166,7 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
         r.prm.depthNear = jsonFloat(json, "pcss_depth_near", where);
         r.prm.depthFar = jsonFloat(json, "pcss_depth_far", where);
     }
-    r.bias = r.settings.biasParams().kernelBias();
+    r.bias = r.settings.kernelBias();
     // render.json's keys are the kernel's words.
     if (auto why = validateParams(r.prm))
         throw UsageError("render.json: " + *why + " (" + where + ")");
@@ -217,10 +217,10 @@ long checkRefs(const RawImages& img, const RawSettings& r, const std::string& di
     // the compiler may turn into a multiply by 1 / w (an ulp or two of z <= 1).
     constexpr float REF_SLACK = 1.0e-6f;
     const ShadowSettings& s = r.settings;
-    float lo = s.depthBias(), hi = s.depthBias();
+    float lo = s.baseBias(), hi = s.baseBias();
     if (s.bias == BiasMode::Slope) {
-        lo = pcfSlopeBias(1.0f, s.depthBias(), s.slopeBias, s.slopeMax);
-        hi = pcfSlopeBias(1.0e-4f, s.depthBias(), s.slopeBias, s.slopeMax);
+        lo = pcfSlopeBias(1.0f, s.baseBias(), s.slopeBias, s.slopeMax);
+        hi = pcfSlopeBias(1.0e-4f, s.baseBias(), s.slopeBias, s.slopeMax);
         if (lo > hi) std::swap(lo, hi);
     }
     const FloatImage& ls = img.lightSpace;

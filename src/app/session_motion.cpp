@@ -57,7 +57,8 @@ std::optional<float> Session::visibilityWith(int method, int kernel) const {
     PcfParams prm = s.pcfParams(mLookup->uv, mMap.width(), pcss.penumbraScale);
     prm.depthNear = pcss.depthNear;
     prm.depthFar = pcss.depthFar;
-    return traceLookup(mMap, mLookup->uv, mLookup->z, mLookup->ref, prm, mLookup->bias).visibility;
+    const PixelLookup& at = *mLookup;
+    return traceLookup(mMap, at.uv, at.z, at.ref, prm, at.bias, at.dzduv).visibility;
 }
 
 // The scene over the whole frame, the pinned point ringed, and the flicker trace when set.

@@ -52,14 +52,14 @@ std::optional<PixelLookup> tracePixel(const SceneRenderer& renderer, const Shado
     out.ref = ls[2];
     // The receiver target holds the plane the shader used and the depth before any bias.
     std::vector<float> receiver = renderer.readReceiverRegion(pixel, glm::ivec2(1));
-    out.bias = s.biasParams();
-    out.bias.dzduv = glm::vec2(receiver[0], receiver[1]);
-    out.z = receiver[3] == 1.0f ? receiver[2] : out.ref + s.depthBias();
+    out.bias = s;
+    out.dzduv = glm::vec2(receiver[0], receiver[1]);
+    out.z = receiver[3] == 1.0f ? receiver[2] : out.ref + s.baseBias();
     PcfParams pcss = renderer.pcfParams(s);  // pcss's light in this map (scene/pcss.h)
     PcfParams prm = s.pcfParams(out.uv, map.width(), pcss.penumbraScale);
     prm.depthNear = pcss.depthNear;
     prm.depthFar = pcss.depthFar;
-    out.trace = traceLookup(map, out.uv, out.z, out.ref, prm, out.bias);
+    out.trace = traceLookup(map, out.uv, out.z, out.ref, prm, out.bias, out.dzduv);
     return out;
 }
 

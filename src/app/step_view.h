@@ -53,9 +53,10 @@ void renderStepView(SceneRenderer& renderer, const StepView& view);
 struct PixelLookup {
     Trace trace;
     glm::vec2 uv{0.0f};
-    float z = 0.0f;    // the receiver's depth before bias
-    float ref = 0.0f;  // the depth compared
-    BiasParams bias;   // the settings' bias with the receiver plane the shader used
+    float z = 0.0f;         // the receiver's depth before bias
+    float ref = 0.0f;       // the depth compared
+    BiasSettings bias;      // the settings' bias
+    glm::vec2 dzduv{0.0f};  // the receiver plane the shader used
 };
 // The lookup the last camera pass drew at a scene pixel (origin top-left), traced by the CPU
 // kernel on `map` with settings `s`; nullopt when the pixel is not on a shadow receiver.

@@ -7,6 +7,10 @@
 
 namespace pcf {
 
+static_assert(static_cast<int>(BiasMode::None) == PCF_BIAS_NONE &&
+              static_cast<int>(BiasMode::ReceiverPlane) == PCF_BIAS_RECEIVER_PLANE &&
+              static_cast<int>(BiasMode::Interpolated) == PCF_BIAS_INTERPOLATED);
+
 namespace {
 
 constexpr std::array<std::string_view, PCF_BIAS_COUNT> BIAS_NAMES = {
@@ -14,8 +18,8 @@ constexpr std::array<std::string_view, PCF_BIAS_COUNT> BIAS_NAMES = {
 
 }  // namespace
 
-float BiasParams::lookupBias(float cosTheta) const {
-    if (mode == PCF_BIAS_SLOPE) return pcfSlopeBias(cosTheta, constant, slope, slopeMax);
+float BiasSettings::lookupBias(float cosTheta) const {
+    if (bias == BiasMode::Slope) return pcfSlopeBias(cosTheta, constantBias, slopeBias, slopeMax);
     return baseBias();
 }
 

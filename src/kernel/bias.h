@@ -26,35 +26,47 @@ constexpr float DEFAULT_RPDB_MAX = 100.0f;  // light depth units per uv unit
 // Z_CMP_CORRECTION_SCALE.
 constexpr float DEFAULT_SOFT_SCALE = 2048.0f;  // 1 / light depth units
 
-// A bias mode and every parameter any mode reads. Every mode but `none` subtracts `constant`
-// from the receiver's depth; the mode says what it does besides:
-//   constant        ref = z - constant
-//   slope           ref = z - min(constant + slope * tan(theta), slopeMax)
+// The bias modes, in the kernel's order (the value is PCF_BIAS_NONE ..).
+enum class BiasMode { None, Constant, Slope, Normal, ReceiverPlane, Soft, Interpolated };
+
+// The bias mode and every parameter any mode reads, declared once: ShadowSettings
+// (kernel/settings.h) is made of these and the filter's settings, and the parameter table
+// (PARAMS) names each field's key, flag, uniform, unit and range. The kernel and the trace take
+// them as they are, with the receiver's plane (dzduv), which is no setting: it comes with each
+// pixel. Every mode but `none` subtracts `constantBias` from the receiver's depth; the mode
+// says what it does besides:
+//   constant        ref = z - constantBias
+//   slope           ref = z - min(constantBias + slopeBias * tan(theta), slopeMax)
 //   normal          the receiver moved along its normal by normalOffset texels * sin(theta)
-//                   before projection, then ref = z' - constant
-//   receiver-plane  ref = z - constant; each tap: ref + dot(dzduv', tap uv - uv), with dzduv'
+//                   before projection, then ref = z' - constantBias
+//   receiver-plane  ref = z - constantBias; each tap: ref + dot(dzduv', tap uv - uv), with dzduv'
 //                   each component of dzduv clamped to [-rpdbMax, rpdbMax] (depth per uv unit)
-//   soft            ref = z - constant; lit = (depth > ref) * saturate((depth - ref) * softScale)
-//   interpolated    ref = z - constant, compared with the bilinearly interpolated depth
-struct BiasParams {
-    int mode = PCF_BIAS_CONSTANT;
-    float constant = DEFAULT_CONSTANT_BIAS;
-    float slope = DEFAULT_SLOPE_BIAS;
+//   soft            ref = z - constantBias; lit = (depth > ref) * saturate((depth - ref) *
+//                   softScale)
+//   interpolated    ref = z - constantBias, compared with the bilinearly interpolated depth
+struct BiasSettings {
+    BiasMode bias = BiasMode::Constant;
+    float constantBias = DEFAULT_CONSTANT_BIAS;
+    float slopeBias = DEFAULT_SLOPE_BIAS;
     float slopeMax = DEFAULT_SLOPE_MAX;
     float normalOffset = DEFAULT_NORMAL_OFFSET;
     float softScale = DEFAULT_SOFT_SCALE;
     float rpdbMax = DEFAULT_RPDB_MAX;
-    // receiver-plane: the receiver's d(depth)/d(u, v) at the lookup, as the renderer measured it
-    // (light depth per uv unit). Not a setting: it comes with each pixel.
-    vec2 dzduv{0.0f};
 
-    // What the kernel needs per tap.
-    PcfBias kernelBias() const { return PcfBias(mode, dzduv, softScale, rpdbMax); }
-    // The depth every mode but none subtracts first: 0 for none, else `constant`.
-    float baseBias() const { return mode == PCF_BIAS_NONE ? 0.0f : constant; }
+    // The mode as the kernel's id, PCF_BIAS_NONE ..
+    int modeId() const { return static_cast<int>(bias); }
+    // What the kernel needs per tap. dzduv: receiver-plane's d(depth)/d(u, v) of the receiver
+    // at the lookup, as the renderer measured it (light depth per uv unit).
+    PcfBias kernelBias(vec2 dzduv = vec2(0.0f)) const {
+        return PcfBias(modeId(), dzduv, softScale, rpdbMax);
+    }
+    // The depth every mode but none subtracts first: 0 for none, else `constantBias`.
+    float baseBias() const { return bias == BiasMode::None ? 0.0f : constantBias; }
     // The per-lookup bias for a surface at angle theta to the light (cos given): what is
     // subtracted from z to give ref. Normal offset moves the point instead: baseBias() here.
     float lookupBias(float cosTheta) const;
+
+    bool operator==(const BiasSettings&) const = default;
 };
 
 // "none", "constant", ... by id (PCF_BIAS_NONE ..), and back.

@@ -10,10 +10,6 @@
 
 namespace pcf {
 
-static_assert(static_cast<int>(BiasMode::None) == PCF_BIAS_NONE &&
-              static_cast<int>(BiasMode::ReceiverPlane) == PCF_BIAS_RECEIVER_PLANE &&
-              static_cast<int>(BiasMode::Interpolated) == PCF_BIAS_INTERPOLATED);
-
 namespace {
 
 constexpr std::string_view TEXELS = "texels";
@@ -94,20 +90,6 @@ PcfParams ShadowSettings::pcfParams(vec2 rotation, float penumbraScale) const {
     p.precision = precision;
     return p;
 }
-
-BiasParams ShadowSettings::biasParams() const {
-    BiasParams b;
-    b.mode = static_cast<int>(bias);
-    b.constant = constantBias;
-    b.slope = slopeBias;
-    b.slopeMax = slopeMax;
-    b.normalOffset = normalOffset;
-    b.softScale = softScale;
-    b.rpdbMax = rpdbMax;
-    return b;
-}
-
-float ShadowSettings::depthBias() const { return biasParams().baseBias(); }
 
 std::span<const ParamInfo> allParams() { return PARAMS; }
 

@@ -19,8 +19,6 @@
 namespace pcf {
 
 enum class DepthFormat { D16, D24, D32F };
-// The bias modes, in the kernel's order (the value is PCF_BIAS_NONE ..: kernel/bias.h).
-enum class BiasMode { None, Constant, Slope, Normal, ReceiverPlane, Soft, Interpolated };
 enum class CullMode { Back, Front, None };
 
 // The shadow map is N x N texels, N in this range.
@@ -46,10 +44,11 @@ std::optional<CullMode> cullModeFromName(std::string_view name);
 constexpr std::string_view CULL_MODE_NAMES = "back, front, none";
 
 // The settings one frame, one trace or one lesson step is made with: the filter, the bias and
-// the shadow map. Declared once here; the renderer (RenderSettings) and the lessons
+// the shadow map. Declared once here, the bias's in BiasSettings (kernel/bias.h), which the
+// kernel and the trace take alone; the renderer (RenderSettings) and the lessons
 // (LessonSettings) add what only they need. Each field's key, flag, uniform, unit, range and
 // help are its row of PARAMS (allParams()).
-struct ShadowSettings {
+struct ShadowSettings : BiasSettings {
     int method = PCF_GATHER;  // a kernel id, PCF_NEAREST .. (methods.h)
     int kernel = 3;           // N
     float radius = 1.0f;      // poisson, texels
@@ -61,15 +60,7 @@ struct ShadowSettings {
     float sigma = 1.0f;                   // gaussian weights, texels
     int precision = PCF_PRECISION_EXACT;  // hardware taps and gathers: PCF_PRECISION_*
     DepthFormat depthFormat = DepthFormat::D32F;
-    int mapSize = 1024;  // the shadow map is mapSize x mapSize texels
-    BiasMode bias = BiasMode::Constant;
-    float constantBias = DEFAULT_CONSTANT_BIAS;  // every mode but none: ref = z - constantBias
-    // The other modes' parameters (kernel/bias.h says which mode reads which).
-    float slopeBias = DEFAULT_SLOPE_BIAS;
-    float slopeMax = DEFAULT_SLOPE_MAX;
-    float normalOffset = DEFAULT_NORMAL_OFFSET;
-    float softScale = DEFAULT_SOFT_SCALE;
-    float rpdbMax = DEFAULT_RPDB_MAX;
+    int mapSize = 1024;              // the shadow map is mapSize x mapSize texels
     CullMode cull = CullMode::Back;  // faces culled in the shadow pass
 
     // The kernel's parameters; `rotation` is the Poisson disk's (cos, sin), when rotate says so
@@ -77,10 +68,6 @@ struct ShadowSettings {
     // pcss's penumbraScale (texels per light depth) depends on the scene and the map: the
     // caller's, from scene/pcss.h penumbraScale(); 0 without a scene.
     PcfParams pcfParams(vec2 rotation = vec2(1.0f, 0.0f), float penumbraScale = 0.0f) const;
-    // The mode and its parameters, as the kernel and the trace take them.
-    BiasParams biasParams() const;
-    // The constant depth subtracted from z first: 0 for BiasMode::None (kernel/bias.h).
-    float depthBias() const;
 
     bool operator==(const ShadowSettings&) const = default;
 };

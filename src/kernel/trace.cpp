@@ -49,7 +49,7 @@ float weightedTapSum(const Trace& trace) {
 }
 
 int tapsChangedByPlane(const Trace& tr) {
-    if (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE) return 0;
+    if (tr.bias.bias != BiasMode::ReceiverPlane) return 0;
     int changed = 0;
     for (const TapRecord& t : tr.taps) changed += pcfCompare(t.depth, tr.ref) != t.lit ? 1 : 0;
     return changed;
@@ -71,14 +71,14 @@ void weighPcssSearch(Trace& tr) {
 }  // namespace
 
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm) {
-    BiasParams b;
-    b.mode = ref == z ? PCF_BIAS_NONE : PCF_BIAS_CONSTANT;
-    b.constant = z - ref;
+    BiasSettings b;
+    b.bias = ref == z ? BiasMode::None : BiasMode::Constant;
+    b.constantBias = z - ref;
     return traceLookup(map, uv, z, ref, prm, b);
 }
 
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm,
-                  const BiasParams& bias) {
+                  const BiasSettings& bias, vec2 dzduv) {
     Trace tr;
     tr.params = prm;
     tr.mapSize = map.size();
@@ -86,9 +86,10 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
     tr.z = z;
     tr.ref = ref;
     tr.bias = bias;
+    tr.dzduv = dzduv;
     tr.pos = pcfTexelPos(uv, map.size());
     Recording rec;
-    tr.visibility = filterRecorded(map, uv, ref, prm, bias.kernelBias(), rec);
+    tr.visibility = filterRecorded(map, uv, ref, prm, bias.kernelBias(dzduv), rec);
     tr.taps = std::move(rec.taps);
     tr.fetches = std::move(rec.fetches);
     if (prm.method == PCF_PCSS) weighPcssSearch(tr);
@@ -101,8 +102,8 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
     exact.precision = PCF_PRECISION_EXACT;
     PcfParams hw8 = prm;
     hw8.precision = PCF_PRECISION_HW8;
-    tr.visibilityExact = filterVisibility(map, uv, ref, exact, bias.kernelBias());
-    tr.visibilityHw8 = filterVisibility(map, uv, ref, hw8, bias.kernelBias());
+    tr.visibilityExact = filterVisibility(map, uv, ref, exact, bias.kernelBias(dzduv));
+    tr.visibilityHw8 = filterVisibility(map, uv, ref, hw8, bias.kernelBias(dzduv));
 
     // The footprint the method floors: a gather kernel's (N+1)^2 block, tent's base.
     switch (methodOf(prm.method)) {
@@ -114,7 +115,7 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
             break;
         case Method::Pcss:
             tr.pcss = pcfPcssEstimate(plainMap(map, prm), uv,
-                                      pcfLookupRef(PcfRef(ref, uv, bias.kernelBias())),
+                                      pcfLookupRef(PcfRef(ref, uv, bias.kernelBias(dzduv))),
                                       prm.penumbraScale, prm.depthNear, prm.depthFar, prm.rotation);
             break;
         case Method::Nearest:

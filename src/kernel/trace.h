@@ -63,10 +63,11 @@ struct Trace {
     vec2 uv{0.0f};
     float z = 0.0f;    // receiver depth in the light's [0,1] depth, before bias
     float ref = 0.0f;  // the depth compared with the map, after bias
-    // The bias mode and its parameters (dzduv: the receiver plane used). Each tap's own ref
-    // (TapRecord::ref) differs from `ref` under receiver-plane bias.
-    BiasParams bias{};
-    PcfTexelPos pos{};                 // GL bilinear position of uv: p, base, frac
+    // The bias mode and its parameters. Each tap's own ref (TapRecord::ref) differs from `ref`
+    // under receiver-plane bias.
+    BiasSettings bias{};
+    vec2 dzduv{0.0f};   // receiver-plane: the receiver's plane given, light depth per uv unit
+    PcfTexelPos pos{};  // GL bilinear position of uv: p, base, frac
     std::vector<TapRecord> taps;       // one per texel read, in read order, duplicates kept
     std::vector<FetchRecord> fetches;  // one per fetch instruction, in issue order
     WeightGrid weights;
@@ -94,10 +95,11 @@ struct Trace {
 // Without a mode: bias "none" when ref == z, else "constant" with b = z - ref.
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm);
 // Under a bias mode: ref is the lookup's ref with the per-lookup bias applied (for normal offset,
-// uv and ref are the moved point's and z the receiver's own depth); `bias` says how each tap's
+// uv and ref are the moved point's and z the receiver's own depth); `bias` and, under
+// receiver-plane bias, the receiver's plane dzduv (light depth per uv unit) say how each tap's
 // comparison varies from it.
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm,
-                  const BiasParams& bias);
+                  const BiasSettings& bias, vec2 dzduv = vec2(0.0f));
 
 // How many taps a single ref for every tap would have judged otherwise (receiver-plane bias:
 // the taps the plane rescued from acne, or darkened). 0 for the other modes.

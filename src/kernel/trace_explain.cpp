@@ -183,35 +183,35 @@ void addStep(Steps& out, K kind, std::string text) {
 
 // What the bias mode did to this lookup's ref, in words (kernel/bias.h has the formulas).
 std::string biasSentence(const Trace& tr) {
-    const BiasParams& b = tr.bias;
+    const BiasSettings& b = tr.bias;
     std::ostringstream s;
     std::string moved =
         "(z " + std::string(tr.ref < tr.z ? "- " : "+ ") + num(std::fabs(tr.z - tr.ref)) + ")";
-    switch (static_cast<BiasMode>(b.mode)) {
+    switch (b.bias) {
         case BiasMode::None:
             s << "No bias: the comparison depth is ref = z = " << num(tr.ref) << ".";
             break;
         case BiasMode::Slope:
-            s << "Slope-scaled bias: ref = z - min(" << num(b.constant) << " + " << num(b.slope)
-              << " * tan(theta), " << num(b.slopeMax) << ") = " << num(tr.ref) << " " << moved
-              << "; theta is the angle between the surface normal and the light.";
+            s << "Slope-scaled bias: ref = z - min(" << num(b.constantBias) << " + "
+              << num(b.slopeBias) << " * tan(theta), " << num(b.slopeMax) << ") = " << num(tr.ref)
+              << " " << moved << "; theta is the angle between the surface normal and the light.";
             break;
         case BiasMode::Normal:
             s << "Normal offset: before projection the receiver point moved along its normal by "
               << num(b.normalOffset)
               << " texels times sin(theta), so uv above is the moved point's; the moved point's "
                  "depth less "
-              << num(b.constant) << " gives ref = " << num(tr.ref) << " " << moved << ".";
+              << num(b.constantBias) << " gives ref = " << num(tr.ref) << " " << moved << ".";
             break;
         case BiasMode::ReceiverPlane: {
-            s << "Receiver-plane bias: ref = z - " << num(b.constant) << " = " << num(tr.ref)
+            s << "Receiver-plane bias: ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
               << " holds at uv only. The receiver's depth changes across the map by dz/duv = "
-              << pair(b.dzduv)
+              << pair(tr.dzduv)
               << " (the receiver's slope in the map; the renderer derives it from screen-space "
                  "derivatives), so each tap compares against "
                  "the plane's own depth where it reads: ref + dot(dz/duv, tap uv - uv).";
-            vec2 used = pcfClampDzDuv(b.dzduv, b.rpdbMax);
-            if (used != b.dzduv) {
+            vec2 used = pcfClampDzDuv(tr.dzduv, b.rpdbMax);
+            if (used != tr.dzduv) {
                 s << " The slope is capped at " << num(b.rpdbMax)
                   << " depth per uv unit (--rpdb-max), so the taps use dz/duv = " << pair(used)
                   << ".";
@@ -219,13 +219,13 @@ std::string biasSentence(const Trace& tr) {
             break;
         }
         case BiasMode::Soft:
-            s << "ref = z - " << num(b.constant) << " = " << num(tr.ref)
+            s << "ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
               << ". Soft comparison (\"PCF Shadow Acne\" part 2): a tap is lit by "
                  "(depth > ref) * saturate((depth - ref) * "
               << num(b.softScale) << "), so a texel just beyond ref counts only in part.";
             break;
         case BiasMode::Interpolated:
-            s << "ref = z - " << num(b.constant) << " = " << num(tr.ref)
+            s << "ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
               << ". Interpolated depth (\"PCF Shadow Acne\", Solution 2): the map's depth is "
                  "lerped at uv and compared once.";
             break;
@@ -252,7 +252,7 @@ void stepProject(const Trace& tr, Steps& out) {
 // which bits that changed. Gathers and hardware taps compare four texels against one ref: the
 // plane's depth at their own centre.
 void stepPerTapRef(const Trace& tr, Steps& out) {
-    if (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE) return;
+    if (tr.bias.bias != BiasMode::ReceiverPlane) return;
     int m = tr.params.method;
     std::ostringstream s;
     switch (methodInfo(m).reads) {
@@ -665,7 +665,7 @@ std::vector<TraceStep> explainTrace(const Trace& tr) {
     Steps out;
     stepProject(tr, out);
     stepPerTapRef(tr, out);
-    if (tr.bias.mode == PCF_BIAS_INTERPOLATED && tr.params.method == PCF_NEAREST) {
+    if (tr.bias.bias == BiasMode::Interpolated && tr.params.method == PCF_NEAREST) {
         stepTexelPosition(tr, out);
         explainInterpolated(tr, out);
         return out;

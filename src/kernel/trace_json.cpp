@@ -51,7 +51,7 @@ namespace {
 
 // Receiver-plane bias: where each tap's own ref is taken.
 const char* perTapName(const Trace& tr) {
-    if (tr.bias.mode != PCF_BIAS_RECEIVER_PLANE) return "none";
+    if (tr.bias.bias != BiasMode::ReceiverPlane) return "none";
     switch (methodInfo(tr.params.method).reads) {
         case MethodReads::Gathers:
             return "per gather, at its centre";
@@ -65,17 +65,17 @@ const char* perTapName(const Trace& tr) {
 
 // The trace's bias: the mode, every parameter, and the receiver plane as given and as used.
 Json biasJson(const Trace& tr) {
-    return {{"mode", biasName(tr.bias.mode)},
-            {"constant", jsonNumber(tr.bias.constant)},
-            {"slope", jsonNumber(tr.bias.slope)},
+    return {{"mode", biasName(tr.bias.modeId())},
+            {"constant", jsonNumber(tr.bias.constantBias)},
+            {"slope", jsonNumber(tr.bias.slopeBias)},
             {"slope_max", jsonNumber(tr.bias.slopeMax)},
             {"normal_offset", jsonNumber(tr.bias.normalOffset)},
             {"soft_scale", jsonNumber(tr.bias.softScale)},
-            {"dzduv", jsonPair(tr.bias.dzduv)},
+            {"dzduv", jsonPair(tr.dzduv)},
             {"rpdb_max", jsonNumber(tr.bias.rpdbMax)},
-            {"dzduv_used", jsonPair(tr.bias.mode == PCF_BIAS_RECEIVER_PLANE
-                                        ? pcfClampDzDuv(tr.bias.dzduv, tr.bias.rpdbMax)
-                                        : tr.bias.dzduv)},
+            {"dzduv_used", jsonPair(tr.bias.bias == BiasMode::ReceiverPlane
+                                        ? pcfClampDzDuv(tr.dzduv, tr.bias.rpdbMax)
+                                        : tr.dzduv)},
             {"per_tap", perTapName(tr)}};
 }
 

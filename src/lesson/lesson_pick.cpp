@@ -112,23 +112,20 @@ float lightElevationDeg(const Light& light) {
 Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
                   const LessonSettings& s, const ScenePoint& point) {
     PinnedLookup at = pinnedLookup(scene, shadowClipFromWorld, s, point);
-    BiasParams bias = s.biasParams();
-    bias.dzduv = at.dzduv;
     PcfParams pcss = pcssPcfParams(scene.light, shadowClipFromWorld, s);
     PcfParams prm = s.pcfParams(at.uv, map.width(), pcss.penumbraScale);
     prm.depthNear = pcss.depthNear;
     prm.depthFar = pcss.depthFar;
-    return traceLookup(map, at.uv, at.z0, at.ref, prm, bias);
+    return traceLookup(map, at.uv, at.z0, at.ref, prm, s, at.dzduv);
 }
 
 PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
                           const LessonSettings& s, const ScenePoint& point) {
     glm::vec3 n = point.normalWs;
     glm::vec3 toLight = toLightWs(scene.light, point.posWs);
-    BiasParams bias = s.biasParams();
     PcfReceiverLookup at = pcfReceiverLookup(
-        shadowClipFromWorld, point.posWs, n, glm::dot(n, toLight), bias.mode, bias.baseBias(),
-        bias.slope, bias.slopeMax, bias.normalOffset, shadowTexelWs(scene, s.mapSize));
+        shadowClipFromWorld, point.posWs, n, glm::dot(n, toLight), s.modeId(), s.baseBias(),
+        s.slopeBias, s.slopeMax, s.normalOffset, shadowTexelWs(scene, s.mapSize));
     // The receiver's plane, from two steps along the surface instead of two screen pixels: any
     // two independent directions give the same dz/duv of a plane (pcfReceiverPlaneDzDuv). In
     // double, so the steps' differences keep their digits.
@@ -158,10 +155,7 @@ StepContext makeStepContext(const LessonSettings& s, glm::ivec2 pixel, float lig
     StepContext ctx;
     ctx.pixel = pixel;
     ctx.originShift = s.originShift;
-    ctx.bias = s.bias;
-    ctx.constantBias = s.constantBias;
-    ctx.cull = s.cull;
-    ctx.depthFormat = s.depthFormat;
+    ctx.settings = s;
     ctx.lightAngleDeg = lightAngleDeg;
     return ctx;
 }

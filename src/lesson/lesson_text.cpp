@@ -143,21 +143,19 @@ const std::vector<Simple>& simpleNames() {
         {"weights.h", [](const Trace& t, const StepContext&) { return integer(t.weights.size.y); }},
         {"pixel.x", [](const Trace&, const StepContext& c) { return integer(c.pixel.x); }},
         {"pixel.y", [](const Trace&, const StepContext& c) { return integer(c.pixel.y); }},
-        {"bias", [](const Trace&,
-                    const StepContext& c) { return text(std::string(biasModeName(c.bias))); }},
+        {"bias",
+         [](const Trace&, const StepContext& c) {
+             return text(std::string(biasModeName(c.settings.bias)));
+         }},
         {"constant_bias",
-         [](const Trace&, const StepContext& c) { return number(c.constantBias); }},
-        {"dzduv.u", [](const Trace& t, const StepContext&) { return number(t.bias.dzduv.x); }},
-        {"dzduv.v", [](const Trace& t, const StepContext&) { return number(t.bias.dzduv.y); }},
+         [](const Trace&, const StepContext& c) { return number(c.settings.constantBias); }},
+        {"dzduv.u", [](const Trace& t, const StepContext&) { return number(t.dzduv.x); }},
+        {"dzduv.v", [](const Trace& t, const StepContext&) { return number(t.dzduv.y); }},
         // The plane's depth change over half a texel of this map: dz/du * 0.5 / size.
         {"half_texel_dz.u",
-         [](const Trace& t, const StepContext&) {
-             return number(t.bias.dzduv.x * 0.5 / t.mapSize.x);
-         }},
+         [](const Trace& t, const StepContext&) { return number(t.dzduv.x * 0.5 / t.mapSize.x); }},
         {"half_texel_dz.v",
-         [](const Trace& t, const StepContext&) {
-             return number(t.bias.dzduv.y * 0.5 / t.mapSize.y);
-         }},
+         [](const Trace& t, const StepContext&) { return number(t.dzduv.y * 0.5 / t.mapSize.y); }},
         {"origin_shift", [](const Trace&, const StepContext& c) { return number(c.originShift); }},
         {"light_angle",
          [](const Trace&, const StepContext& c) {
@@ -190,11 +188,15 @@ const std::vector<Simple>& simpleNames() {
          [](const Trace& t, const StepContext&) { return number(t.pcss.penumbra); }},
         {"pcss.filter_radius",
          [](const Trace& t, const StepContext&) { return number(t.pcss.filterRadius); }},
-        {"cull", [](const Trace&,
-                    const StepContext& c) { return text(std::string(cullModeName(c.cull))); }},
+        {"cull",
+         [](const Trace&, const StepContext& c) {
+             return text(std::string(cullModeName(c.settings.cull)));
+         }},
         {"depth_format",
-         [](const Trace&,
-            const StepContext& c) { return text(std::string(depthFormatName(c.depthFormat))); }},
+         [](const Trace&, const StepContext& c) {
+             DepthFormat format = c.settings.depthFormat;
+             return text(std::string(depthFormatName(format)));
+         }},
     };
     return names;
 }

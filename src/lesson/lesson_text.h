@@ -82,11 +82,8 @@ namespace pcf {
 
 // What the text may say besides the trace: the state the picture was rendered with.
 struct StepContext {
-    glm::ivec2 pixel{0, 0};  // the pixel traced, in the frame rendered (origin top-left, y down)
-    BiasMode bias = BiasMode::Constant;  // the settings' enums (kernel/settings.h)
-    float constantBias = DEFAULT_CONSTANT_BIAS;
-    CullMode cull = CullMode::Back;
-    DepthFormat depthFormat = DepthFormat::D32F;
+    glm::ivec2 pixel{0, 0};   // the pixel traced, in the frame rendered (origin top-left, y down)
+    ShadowSettings settings;  // the filter, the bias and the map the picture was rendered with
     // The angle between the receiver's normal at the picked point and the direction to the
     // light, degrees: 0 the light straight above it, 90 grazing; negative: not known.
     float lightAngleDeg = -1.0f;

@@ -28,7 +28,7 @@ Header headerOf(const Trace& tr, const TypeSizes& t, float width) {
     if (tr.counts.hwTaps)
         counts += ", " + plural(tr.counts.hwTaps, "hardware tap", "hardware taps");
     counts += "\nuv (" + fixed(tr.uv.x, 4) + ", " + fixed(tr.uv.y, 4) + ")  ref " +
-              fixed(tr.ref, 4) + "  bias " + std::string(biasName(tr.bias.mode));
+              fixed(tr.ref, 4) + "  bias " + std::string(biasName(tr.bias.modeId()));
     // Two lines when one does not hold them, and each wraps again if need be.
     std::string oneLine = counts;
     std::replace(oneLine.begin(), oneLine.end(), '\n', ' ');

@@ -71,10 +71,10 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
         programs =
             mPrograms.try_emplace(bias.mode, "fullscreen.vert", "lookup.frag", defines).first;
     }
-    GLuint program = programs->second.get(pcfVariant(prm, rotatePerPixel, mFixedPoint));
-    glUseProgram(program);
+    const PcfProgram& program = programs->second.get(pcfVariant(prm, rotatePerPixel, mFixedPoint));
+    glUseProgram(program.id());
     setParamUniforms(program, prm, bias);
-    drawOver(program);
+    drawOver(program.id());
 }
 
 // The shadow map, the lookups and the planes bound, one full-screen triangle into the target:

@@ -1,8 +1,10 @@
 #include "render/pcf_programs.h"
 
 #include <iterator>
+#include <span>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "render/shader_loader.h"
 
@@ -73,11 +75,28 @@ std::string paramUniformsGlsl() {
     return out;
 }
 
-void setParamUniforms(GLuint program, const PcfParams& prm, const PcfBias& bias,
-                      const ShadowSettings* settings) {
+ParamUniformLocations paramUniformLocations(GLuint program) {
+    ParamUniformLocations out;
     for (const ParamInfo& p : allParams()) {
+        out.params.push_back(
+            p.uniform.empty() ? -1 : glGetUniformLocation(program, std::string(p.uniform).c_str()));
+    }
+    out.penumbraScale = glGetUniformLocation(program, "uPenumbraScale");
+    out.pcssDepthRange = glGetUniformLocation(program, "uPcssDepthRange");
+    out.pcssReciprocals = glGetUniformLocation(program, "uPcssReciprocals");
+    return out;
+}
+
+namespace {
+
+// setParamUniforms with the program's locations in hand.
+void setUniformsAt(GLuint program, const ParamUniformLocations& where, const PcfParams& prm,
+                   const PcfBias& bias, const ShadowSettings* settings) {
+    std::span<const ParamInfo> params = allParams();
+    for (size_t k = 0; k < params.size(); ++k) {
+        const ParamInfo& p = params[k];
         if (p.uniform.empty()) continue;
-        GLint at = glGetUniformLocation(program, std::string(p.uniform).c_str());
+        GLint at = where.params[k];
         if (const auto* m = std::get_if<float PcfParams::*>(&p.member)) {
             glProgramUniform1f(program, at, prm.*(*m));
             continue;
@@ -103,12 +122,23 @@ void setParamUniforms(GLuint program, const PcfParams& prm, const PcfBias& bias,
             },
             p.field);
     }
-    glProgramUniform1f(program, glGetUniformLocation(program, "uPenumbraScale"), prm.penumbraScale);
-    glProgramUniform2f(program, glGetUniformLocation(program, "uPcssDepthRange"), prm.depthNear,
-                       prm.depthFar);
-    glProgramUniform1fv(program, glGetUniformLocation(program, "uPcssReciprocals"),
+    glProgramUniform1f(program, where.penumbraScale, prm.penumbraScale);
+    glProgramUniform2f(program, where.pcssDepthRange, prm.depthNear, prm.depthFar);
+    glProgramUniform1fv(program, where.pcssReciprocals,
                         static_cast<GLsizei>(std::size(PCF_PCSS_RECIPROCALS)),
                         PCF_PCSS_RECIPROCALS);
+}
+
+}  // namespace
+
+void setParamUniforms(const PcfProgram& program, const PcfParams& prm, const PcfBias& bias,
+                      const ShadowSettings* settings) {
+    setUniformsAt(program.id(), program.uniforms, prm, bias, settings);
+}
+
+void setParamUniforms(GLuint program, const PcfParams& prm, const PcfBias& bias,
+                      const ShadowSettings* settings) {
+    setUniformsAt(program, paramUniformLocations(program), prm, bias, settings);
 }
 
 PcfProgramCache::PcfProgramCache(std::string vertexFile, std::string fragmentFile,
@@ -135,9 +165,9 @@ std::string pcfVariantDefines(const PcfVariant& variant) {
            line("PCF_PERSPECTIVE", variant.perspective);
 }
 
-GLuint PcfProgramCache::get(const PcfVariant& variant) {
+const PcfProgram& PcfProgramCache::get(const PcfVariant& variant) {
     auto it = mPrograms.find(variant);
-    if (it != mPrograms.end()) return it->second.id();
+    if (it != mPrograms.end()) return it->second;
     std::string defines = pcfVariantDefines(variant) + mExtraDefines;
     GlProgram program = buildProgram({
         ShaderStage{GL_VERTEX_SHADER, {mVertexFile}, "", {}},
@@ -147,9 +177,9 @@ GLuint PcfProgramCache::get(const PcfVariant& variant) {
                     {{"<parameter uniforms>", paramUniformsGlsl()},
                      {"shaders/" + mFragmentFile, std::string(embeddedShader(mFragmentFile))}}},
     });
-    GLuint id = program.id();
-    mPrograms.emplace(variant, std::move(program));
-    return id;
+    ParamUniformLocations uniforms = paramUniformLocations(program.id());
+    return mPrograms.emplace(variant, PcfProgram{std::move(program), std::move(uniforms)})
+        .first->second;
 }
 
 PcfSamplers createPcfSamplers() { return {createNearestSampler(), createCompareSampler()}; }

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "kernel/pcf.h"
 #include "kernel/settings.h"
@@ -58,11 +59,32 @@ std::string pcfVariantDefines(const PcfVariant& variant);
 // (lookup.frag, scene.frag) with no edit to them.
 std::string paramUniformsGlsl();
 
+// Where a program reads the table's uniforms: one location per row of allParams(), -1 for a
+// row with no uniform or one the program does not read, and pcss's two uniforms. Looked up once
+// per program (PcfProgramCache keeps them with it), not by name on every draw.
+struct ParamUniformLocations {
+    std::vector<GLint> params;
+    GLint penumbraScale = -1;
+    GLint pcssDepthRange = -1;
+    GLint pcssReciprocals = -1;  // pcss: the table of 1 / k (pcf_prelude.h)
+};
+ParamUniformLocations paramUniformLocations(GLuint program);
+
+// A program of a PcfProgramCache and where it reads the table's uniforms.
+struct PcfProgram {
+    GlProgram program;
+    ParamUniformLocations uniforms;
+    GLuint id() const { return program.id(); }
+};
+
 // Sets the table's uniforms in `program` (a location of -1, a uniform the program does not use,
 // is skipped by GL): one that fills a kernel member from that member of prm or bias, the others
 // from `settings` (the scene pass's per-lookup bias; skipped without settings, as in the lookup
 // pass, which reads its ref from its input). Numbers as their type, flags and names as int.
-// uPenumbraScale from prm.
+// uPenumbraScale and uPcssDepthRange from prm.
+void setParamUniforms(const PcfProgram& program, const PcfParams& prm, const PcfBias& bias,
+                      const ShadowSettings* settings = nullptr);
+// The same for a program of no cache (a reference pass), its locations looked up first.
 void setParamUniforms(GLuint program, const PcfParams& prm, const PcfBias& bias,
                       const ShadowSettings* settings = nullptr);
 
@@ -75,15 +97,15 @@ class PcfProgramCache {
     PcfProgramCache(std::string vertexFile, std::string fragmentFile,
                     std::string extraDefines = "");
 
-    // The program for this variant; compiles it the first time. Throws std::runtime_error with
-    // the driver's log (file:line) if the GLSL does not build.
-    GLuint get(const PcfVariant& variant);
+    // The program for this variant; compiles it (and looks up its uniforms) the first time.
+    // Throws std::runtime_error with the driver's log (file:line) if the GLSL does not build.
+    const PcfProgram& get(const PcfVariant& variant);
 
   private:
     std::string mVertexFile;
     std::string mFragmentFile;
     std::string mExtraDefines;
-    std::map<PcfVariant, GlProgram> mPrograms;
+    std::map<PcfVariant, PcfProgram> mPrograms;
 };
 
 // Binds the shadow map the way pcf_prelude.h expects it: unit 0 = uPcfDepth (nearest, no

@@ -188,11 +188,11 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
 
-    BiasParams bias = settings.biasParams();
     bool fixedPoint = depthFormatFixedPointBits(mShadowFormat) != 0;
     PcfParams prm = pcfParams(settings);
-    GLuint program =
-        programsFor(targets, bias.mode).get(pcfVariant(prm, settings.rotate, fixedPoint));
+    const PcfProgram& pcfProgram =
+        programsFor(targets, settings.modeId()).get(pcfVariant(prm, settings.rotate, fixedPoint));
+    GLuint program = pcfProgram.id();
     glUseProgram(program);
     glm::mat4 clip = clipFromWorld();
     glProgramUniformMatrix4fv(program, uniform(program, "uClipFromWorld"), 1, GL_FALSE,
@@ -205,7 +205,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform3fv(program, uniform(program, "uLightPosWs"), 1, &light.positionWs.x);
     glProgramUniform1f(program, uniform(program, "uSpotCosCone"),
                        std::cos(glm::radians(light.coneDeg)));
-    setParamUniforms(program, prm, bias.kernelBias(), &settings);
+    setParamUniforms(pcfProgram, prm, settings.kernelBias(), &settings);
     glProgramUniform1f(program, uniform(program, "uShadowTexelWs"),
                        pcf::shadowTexelWs(mScene, settings.mapSize));
     // A lesson's pinned point (setPick); pixel -1, -1 matches no fragment.
