@@ -220,6 +220,15 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         }
                         pages.push_back(std::move(p));
                     }
+                    // A frame with more pages says so on its first (the step text's "more"
+                    // mark or the inspector's "next page" line): 4.3 at 1024x768 presentation
+                    // had its texel table on pages 2-3 and nothing on page 1 to say so.
+                    if (plan.textPages > 1) {
+                        bool more = false;
+                        for (const LayoutBox& b : pages.front().boxes) more |= b.role == "more";
+                        EXPECT_TRUE(more) << where << ": page 1 of " << plan.textPages
+                                          << " gives no sign that more follows";
+                    }
                     if (m.trace && !l.inspector.empty()) {
                         for (const std::string& problem : cropped(pages, *m.trace)) {
                             ADD_FAILURE() << where << ": " << problem;
@@ -577,6 +586,62 @@ TEST_F(Layout, LongStepTextPagesWithAMoreMarkInsteadOfClipping) {
         EXPECT_NE(b.role, "more");
         if (b.role == "step-text") {
             EXPECT_FALSE(b.shortened);
+        }
+    }
+}
+
+// A page of step text ends where a sentence or a paragraph ends, and a preformatted block (a
+// table, a formula) stays on one page: a slide that stopped at "p = uv * size" with "- 0.5" on
+// the next (3.6 at 1280x720 presentation) stated another formula than the lesson's.
+TEST_F(Layout, PagesEndAtSentencesAndKeepTablesWhole) {
+    InspectorModel m;
+    m.title = "Paging";
+    m.stepTitles = {"One", "Two"};
+    m.trace = syntheticTrace();
+    m.presentation = true;
+    std::string text;
+    for (int k = 0; k < 14; ++k) {
+        text += "Sentence " + std::to_string(k) +
+                " runs on over more than one line of the step panel, so that a page that is cut "
+                "at a fixed count of lines ends in its middle. ";
+        if (k == 6) text += "The rows:\n  a     b     c\n  1.0   2.0   3.0\n  4.0   5.0   6.0\n";
+    }
+    m.stepText = text;
+    for (glm::ivec2 size : {glm::ivec2{1024, 768}, glm::ivec2{1280, 720}}) {
+        InspectorLayout l = inspectorLayout(size, true);
+        m.sceneSize = glm::ivec2(l.scene.size());
+        m.textPage = 0;
+        int pages = planFrame(l, m).textPages;
+        ASSERT_GT(pages, 2) << size.x;
+        std::string all;
+        int tablePage = -1;
+        for (int page = 0; page < pages; ++page) {
+            m.textPage = page;
+            FramePlan plan = planFrame(l, m);
+            EXPECT_TRUE(problems(plan, l).empty()) << size.x << " page " << page + 1;
+            std::string shown;
+            for (const LayoutBox& b : plan.boxes) {
+                if (b.role == "step-text") shown = b.text;
+            }
+            ASSERT_FALSE(shown.empty()) << size.x << " page " << page + 1;
+            if (page + 1 < pages) {
+                EXPECT_EQ(shown.back(), '.') << size.x << " page " << page + 1 << " ends \""
+                                             << shown.substr(shown.size() - 20) << "\"";
+            }
+            size_t rows = 0;
+            for (const char* row : {"  a ", "  1.0 ", "  4.0 "})
+                rows += shown.find(row) != std::string::npos;
+            if (rows > 0) {
+                EXPECT_EQ(rows, 3u) << size.x << " page " << page + 1 << ": the table is split";
+                tablePage = page;
+            }
+            for (char c : shown) all += c == '\n' ? ' ' : c;
+            all += ' ';
+        }
+        EXPECT_GE(tablePage, 0) << size.x;
+        // Nothing is dropped between pages: every sentence is on one of them.
+        for (int k = 0; k < 14; ++k) {
+            EXPECT_NE(all.find("Sentence " + std::to_string(k) + " "), std::string::npos) << k;
         }
     }
 }

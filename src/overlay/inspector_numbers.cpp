@@ -284,6 +284,8 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     if (part == 0) {
         takeCellsPlan(pl, panel.cells);
         Rect under{p.x + margin, panel.cellsBottom, width, p.bottom() - margin - panel.cellsBottom};
+        // The room inspectorPanel kept for the line that points to the texel table.
+        if (tableParts > 0) under.h -= t.label * 0.5f + lineHeightOf(t.label);
         float noteY = panel.cellsBottom;
         if (panel.together) {
             placeFormula(pl, fitFormula(tr, t, under), under, 0);
@@ -337,6 +339,12 @@ InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m,
     float width = p.w - 2 * margin;
     auto formulaFits = [&]() {
         Rect under{p.x + margin, out.cellsBottom, width, p.bottom() - margin - out.cellsBottom};
+        // Cells that could not hold their numbers send them to a table on the next page: the
+        // line that says so (planNextPageNote) needs its room under the formula, or page 1
+        // would give no sign that there is more.
+        if (!texelsWithoutNumbers(tr, out.cells).empty()) {
+            under.h -= t.label * 0.5f + lineHeightOf(t.label);
+        }
         return under.h >= lineHeightOf(t.numberFloor) && fitFormula(tr, t, under).pages == 1;
     };
     auto finish = [&]() {

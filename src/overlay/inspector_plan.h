@@ -118,13 +118,16 @@ struct FitLine {
     bool mono = false;  // a preformatted line: monospace, spaces kept, never rewrapped
     SpanLine spans;     // a prose line's pieces: prose and `code spans` (monospace); text is
                         // their concatenation, without the backticks
+    int para = -1;      // prose: the source line (up to a hard line break) it was wrapped from
 };
 
 struct FittedText {
     float size = 0.0f;
     float lineHeight = 0.0f;
     std::vector<FitLine> lines;
-    int linesPerPage = 0;
+    // The first line of each page (pageStarts[0] = 0), and where the last page ends: a page holds
+    // lines [pageStarts[k], pageStarts[k + 1]) or, the last, [pageStarts.back(), pageEnd).
+    std::vector<int> pageStarts{0};
     int pages = 1;
     bool stepped = false;  // drawn below its starting size
 };
