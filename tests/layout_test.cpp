@@ -24,6 +24,7 @@
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "draw/text_layout.h"
+#include "kernel/methods.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_pick.h"
@@ -642,6 +643,52 @@ TEST_F(Layout, PagesEndAtSentencesAndKeepTablesWhole) {
         // Nothing is dropped between pages: every sentence is on one of them.
         for (int k = 0; k < 14; ++k) {
             EXPECT_NE(all.find("Sentence " + std::to_string(k) + " "), std::string::npos) << k;
+        }
+    }
+}
+
+// The ring drawn round poisson's and pcss's points is the disk they fill: the widely copied
+// 16-point set reaches 1.234 of its radius (8 points lie outside radius 1), and a ring of radius
+// R left half of them outside it (lesson 7, "the disk, radius R").
+TEST(PoissonDisk, TheDrawnRingHoldsEveryPointAndTouchesTheFarthest) {
+    constexpr int MAP = 32;
+    ShadowMap map(MAP, MAP, 0.9f);
+    for (int j = 0; j < MAP; ++j) {
+        for (int i = 0; i < MAP / 2; ++i) map.setDepth(i, j, 0.2f);
+    }
+    for (float radius : {1.0f, 2.5f}) {
+        for (bool rotated : {false, true}) {
+            PcfParams prm = makeParams(PCF_POISSON, 3, radius);
+            if (rotated) prm.rotation = vec2(0.38268343f, 0.92387953f);  // 67.5 degrees
+            Trace tr =
+                traceLookup(map, (vec2(15.3f, 16.6f) + vec2(0.5f)) / float(MAP), 0.5f, 0.5f, prm);
+            InspectorLayout l = inspectorLayout({1280, 720}, true);
+            InspectorModel m;
+            m.stepTitles = {"one"};
+            m.stepText = "text";
+            m.trace = tr;
+            m.presentation = true;
+            m.sceneSize = glm::ivec2(l.scene.size());
+            FramePlan plan = planFrame(l, m);
+            ASSERT_EQ(plan.diskRadii.size(), 1u);
+            ASSERT_EQ(tr.fetches.size(), 16u);
+            float farthest = 0.0f;
+            for (const FetchRecord& f : tr.fetches) {
+                vec2 p = f.uv * float(MAP) - vec2(0.5f);
+                farthest = std::max(farthest, glm::length(p - tr.pos.p));
+            }
+            EXPECT_GT(farthest, 1.2f * radius);  // the set is not a unit disk
+            EXPECT_GE(plan.diskRadii[0], farthest - 1e-4f) << radius << (rotated ? " rotated" : "");
+            EXPECT_LE(plan.diskRadii[0], farthest + 1e-3f) << radius << (rotated ? " rotated" : "");
+            // The cells reach round the whole ring (texel i spans p in [i - 0.5, i + 0.5)), so it
+            // is never cut by the cells' edge (7.2 at 1280x720 lost its left and bottom).
+            Neighbourhood view = neighbourhoodView(l, m);
+            vec2 lo = tr.pos.p - vec2(plan.diskRadii[0]) + vec2(0.5f);
+            vec2 hi = tr.pos.p + vec2(plan.diskRadii[0]) + vec2(0.5f);
+            EXPECT_LE(view.origin.x, int(std::floor(lo.x))) << radius;
+            EXPECT_LE(view.origin.y, int(std::floor(lo.y))) << radius;
+            EXPECT_GE(view.origin.x + view.size.x - 1, int(std::floor(hi.x))) << radius;
+            EXPECT_GE(view.origin.y + view.size.y - 1, int(std::floor(hi.y))) << radius;
         }
     }
 }

@@ -112,6 +112,16 @@ Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float
     Grid g;
     const Rect& p = l.inspector;
     g.full = neighbourhoodOf(tr);
+    // poisson's and pcss's rings are drawn whole: the cells reach round the largest (texel i
+    // spans p in [i - 0.5, i + 0.5)).
+    DiskRings rings = diskRings(tr);
+    if (float ring = std::max(rings.search, rings.filter); ring > 0.0f) {
+        glm::ivec2 lo(glm::floor(tr.pos.p - glm::vec2(ring) + 0.5f));
+        glm::ivec2 hi(glm::floor(tr.pos.p + glm::vec2(ring) + 0.5f));
+        lo = glm::min(lo, g.full.origin);
+        hi = glm::max(hi, g.full.origin + g.full.size - glm::ivec2(1));
+        g.full = {lo, hi - lo + glm::ivec2(1)};
+    }
     float line = lineOf(l);
     // The cell's border band: the gather outline (inset `line`, `line + 1` wide), then 2 px.
     g.pad = 2.0f * line + (OUTLINE_EXTRA_PX + PAD_GAP_PX);

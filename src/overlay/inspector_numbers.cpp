@@ -131,8 +131,12 @@ std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeed
     bool pcss = m.trace && m.trace->params.method == PCF_PCSS;
     if (need.searchDisk) entries.push_back({SEARCH, "blocker search: taps, disk", CIRCLE});
     if (need.disk) {
-        entries.push_back(
-            {ACCENT, pcss ? "filter disk: penumbra / 2" : "the disk, radius R", CIRCLE});
+        // The ring is the disk the points fill, wider than the scale they are given (planDisks).
+        std::string reach = fixed(poissonDiskExtent(), 2);
+        entries.push_back({ACCENT,
+                           pcss ? "filter disk: " + reach + " x penumbra / 2"
+                                : "the points' disk, radius " + reach + " R",
+                           CIRCLE});
     }
     if (need.rings) entries.push_back({ACCENT, "hardware tap", RING});
     if (need.gathers) entries.push_back({GATHER, "one gather (2 x 2)", OUTLINE});
@@ -254,6 +258,7 @@ void takeCellsPlan(Planner& pl, FramePlan& cells) {
     pl.plan.drawnTexels = cells.drawnTexels;
     pl.plan.drawnFetches = cells.drawnFetches;
     pl.plan.numberedTexels = cells.numberedTexels;
+    pl.plan.diskRadii = cells.diskRadii;
 }
 
 }  // namespace
