@@ -95,8 +95,7 @@ float planNotes(Planner& pl, const InspectorLayout& l, int hidden, const TypeSiz
     std::vector<std::string> notes;
     if (hidden > 0) {
         notes.push_back("numbers of " + std::to_string(hidden) +
-                        (hidden == 1 ? " cell" : " cells") +
-                        " left out: no room at this size (pcfscope trace lists every texel)");
+                        (hidden == 1 ? " cell" : " cells") + " left out: no room at this size");
     }
     for (const std::string& note : notes) {
         FittedText f =
