@@ -147,6 +147,8 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
     auto start = std::chrono::steady_clock::now();
     int plans = 0;
     int pagedPresentation = 0, depthLost = 0, pointDepthLost = 0, pointMoved = 0, split = 0;
+    int textPageEnds = 0,
+        midSentence = 0;  // step-text pages but the last; of them, cut mid-sentence
     // Rendered once per step in the scene of a 1280x720 frame, the size a projector gets.
     glm::ivec2 renderScene(inspectorLayout({1280, 720}, false).scene.size());
     std::vector<std::string> lessons;
@@ -218,6 +220,24 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         }
                         for (const std::string& problem : problems(p, l)) {
                             ADD_FAILURE() << where << " page " << page + 1 << ": " << problem;
+                        }
+                        // How the step text's pages end (reported below): at a sentence's
+                        // end, a table row or a colon, or in the middle of a sentence.
+                        for (const LayoutBox& b : p.boxes) {
+                            if (b.role != "step-text" || page + 1 >= plan.textPages) continue;
+                            std::string_view t = b.text;
+                            size_t last = t.rfind('\n');
+                            std::string_view line =
+                                last == std::string_view::npos ? t : t.substr(last + 1);
+                            while (!line.empty() && (line.back() == ')' || line.back() == '"')) {
+                                line.remove_suffix(1);
+                            }
+                            bool clean =
+                                line.starts_with("  ") ||
+                                (!line.empty() && std::string_view(".?!:").find(line.back()) !=
+                                                      std::string_view::npos);
+                            ++textPageEnds;
+                            midSentence += !clean;
                         }
                         pages.push_back(std::move(p));
                     }
@@ -331,8 +351,14 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(
         "layout: %d plans checked in %.1f s; %d presentation frames page their text; "
-        "%d frames drop a cell's depth for other marks; %d steps' frames split into pages\n",
-        plans, seconds, pagedPresentation, depthLost, split);
+        "%d frames drop a cell's depth for other marks; %d steps' frames split into pages; "
+        "%d of %d step-text pages that are not a step's last end mid-sentence\n",
+        plans, seconds, pagedPresentation, depthLost, split, midSentence, textPageEnds);
+    // A page cut at a fixed count of lines ended mid-sentence on 36 of 225 (3.6 at 1280x720
+    // presentation stopped at "p = uv * size", its "- 0.5" on the next page); pages now end at a
+    // paragraph or a sentence where one falls in the page's lower half, so only a sentence longer
+    // than half a page may still be cut.
+    EXPECT_LE(midSentence, 3) << "of " << textPageEnds << " step-text pages";
     // No cell loses a number to a mark: the lookup point's cell shows its depth, and so does
     // every cell in the map (a point mark that crowds a cell moves into a lane at its edge).
     EXPECT_EQ(pointDepthLost, 0);
