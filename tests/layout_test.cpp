@@ -289,6 +289,29 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         for (const LayoutBox& b : plan.boxes) {
                             depthThere |= b.role == "cell-depth" && inside(b.rect, cell);
                         }
+                        // Where the cells show bits, every read texel's cell shows its bit: a
+                        // mark that leaves no room for it moves into a lane (6.4 at 1280x720
+                        // lost three bits to tent taps).
+                        std::set<std::pair<int, int>> bitless;
+                        int withBit = 0;
+                        for (const TapRecord& tap : tr.taps) {
+                            Rect c = texelCellRect(view, area, tap.texel);
+                            bool bit = false;
+                            for (const LayoutBox& b : plan.boxes) {
+                                bit |= b.role == "cell-bit" && inside(b.rect, c);
+                            }
+                            if (bit) {
+                                ++withBit;
+                            } else {
+                                bitless.insert({tap.texel.x, tap.texel.y});
+                            }
+                        }
+                        if (withBit > 0) {
+                            EXPECT_TRUE(bitless.empty())
+                                << where << ": " << bitless.size()
+                                << " read cells show no bit, from (" << bitless.begin()->first
+                                << ", " << bitless.begin()->second << ")";
+                        }
                         if (pointShown && !depthThere && cellDepths > 0) {
                             ++pointDepthLost;
                             std::printf("  %s: the lookup point's cell shows no depth\n",

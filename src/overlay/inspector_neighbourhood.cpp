@@ -651,16 +651,22 @@ bool planCell(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm
         }
     }
     if (!placed) {
-        moveTo(std::vector<glm::ivec2>(owned.size(), glm::ivec2(0)));
-        std::vector<Rect> cellMarks = marksNear();
+        // Without the depth: the marks where the math puts them first, then moved into the
+        // lanes, so that a cell keeps at least its bit (6.4 at 1280x720 lost three bits to tap
+        // marks that a lane had room for).
         for (const std::vector<Item>& items : candidates) {
             if (items.empty()) {
                 hidden = !all.empty();
                 break;
             }
-            done = fitItems(items, cellMarks, inner);
-            if (!done.empty()) break;
+            for (size_t wi = 0; wi < ways.size() && !placed; ++wi) {
+                moveTo(wi == 0 ? std::vector<glm::ivec2>(owned.size(), glm::ivec2(0)) : ways[wi]);
+                done = fitItems(items, marksNear(), inner);
+                placed = !done.empty();
+            }
+            if (placed) break;
         }
+        if (!placed) moveTo(std::vector<glm::ivec2>(owned.size(), glm::ivec2(0)));
     }
     if (tap && done.size() == all.size()) pl.plan.numberedTexels.push_back(texel);
     for (const auto& [box, it] : done) {
