@@ -24,6 +24,7 @@
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "draw/text_layout.h"
+#include "kernel/methods.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_pick.h"
@@ -146,6 +147,8 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
     auto start = std::chrono::steady_clock::now();
     int plans = 0;
     int pagedPresentation = 0, depthLost = 0, pointDepthLost = 0, pointMoved = 0, split = 0;
+    int textPageEnds = 0,
+        midSentence = 0;  // step-text pages but the last; of them, cut mid-sentence
     // Rendered once per step in the scene of a 1280x720 frame, the size a projector gets.
     glm::ivec2 renderScene(inspectorLayout({1280, 720}, false).scene.size());
     std::vector<std::string> lessons;
@@ -218,7 +221,34 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         for (const std::string& problem : problems(p, l)) {
                             ADD_FAILURE() << where << " page " << page + 1 << ": " << problem;
                         }
+                        // How the step text's pages end (reported below): at a sentence's
+                        // end, a table row or a colon, or in the middle of a sentence.
+                        for (const LayoutBox& b : p.boxes) {
+                            if (b.role != "step-text" || page + 1 >= plan.textPages) continue;
+                            std::string_view t = b.text;
+                            size_t last = t.rfind('\n');
+                            std::string_view line =
+                                last == std::string_view::npos ? t : t.substr(last + 1);
+                            while (!line.empty() && (line.back() == ')' || line.back() == '"')) {
+                                line.remove_suffix(1);
+                            }
+                            bool clean =
+                                line.starts_with("  ") ||
+                                (!line.empty() && std::string_view(".?!:").find(line.back()) !=
+                                                      std::string_view::npos);
+                            ++textPageEnds;
+                            midSentence += !clean;
+                        }
                         pages.push_back(std::move(p));
+                    }
+                    // A frame with more pages says so on its first (the step text's "more"
+                    // mark or the inspector's "next page" line): 4.3 at 1024x768 presentation
+                    // had its texel table on pages 2-3 and nothing on page 1 to say so.
+                    if (plan.textPages > 1) {
+                        bool more = false;
+                        for (const LayoutBox& b : pages.front().boxes) more |= b.role == "more";
+                        EXPECT_TRUE(more) << where << ": page 1 of " << plan.textPages
+                                          << " gives no sign that more follows";
                     }
                     if (m.trace && !l.inspector.empty()) {
                         for (const std::string& problem : cropped(pages, *m.trace)) {
@@ -258,6 +288,29 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         bool depthThere = false;
                         for (const LayoutBox& b : plan.boxes) {
                             depthThere |= b.role == "cell-depth" && inside(b.rect, cell);
+                        }
+                        // Where the cells show bits, every read texel's cell shows its bit: a
+                        // mark that leaves no room for it moves into a lane (6.4 at 1280x720
+                        // lost three bits to tent taps).
+                        std::set<std::pair<int, int>> bitless;
+                        int withBit = 0;
+                        for (const TapRecord& tap : tr.taps) {
+                            Rect c = texelCellRect(view, area, tap.texel);
+                            bool bit = false;
+                            for (const LayoutBox& b : plan.boxes) {
+                                bit |= b.role == "cell-bit" && inside(b.rect, c);
+                            }
+                            if (bit) {
+                                ++withBit;
+                            } else {
+                                bitless.insert({tap.texel.x, tap.texel.y});
+                            }
+                        }
+                        if (withBit > 0) {
+                            EXPECT_TRUE(bitless.empty())
+                                << where << ": " << bitless.size()
+                                << " read cells show no bit, from (" << bitless.begin()->first
+                                << ", " << bitless.begin()->second << ")";
                         }
                         if (pointShown && !depthThere && cellDepths > 0) {
                             ++pointDepthLost;
@@ -321,8 +374,14 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(
         "layout: %d plans checked in %.1f s; %d presentation frames page their text; "
-        "%d frames drop a cell's depth for other marks; %d steps' frames split into pages\n",
-        plans, seconds, pagedPresentation, depthLost, split);
+        "%d frames drop a cell's depth for other marks; %d steps' frames split into pages; "
+        "%d of %d step-text pages that are not a step's last end mid-sentence\n",
+        plans, seconds, pagedPresentation, depthLost, split, midSentence, textPageEnds);
+    // A page cut at a fixed count of lines ended mid-sentence on 36 of 225 (3.6 at 1280x720
+    // presentation stopped at "p = uv * size", its "- 0.5" on the next page); pages now end at a
+    // paragraph or a sentence where one falls in the page's lower half, so only a sentence longer
+    // than half a page may still be cut.
+    EXPECT_LE(midSentence, 3) << "of " << textPageEnds << " step-text pages";
     // No cell loses a number to a mark: the lookup point's cell shows its depth, and so does
     // every cell in the map (a point mark that crowds a cell moves into a lane at its edge).
     EXPECT_EQ(pointDepthLost, 0);
@@ -577,6 +636,108 @@ TEST_F(Layout, LongStepTextPagesWithAMoreMarkInsteadOfClipping) {
         EXPECT_NE(b.role, "more");
         if (b.role == "step-text") {
             EXPECT_FALSE(b.shortened);
+        }
+    }
+}
+
+// A page of step text ends where a sentence or a paragraph ends, and a preformatted block (a
+// table, a formula) stays on one page: a slide that stopped at "p = uv * size" with "- 0.5" on
+// the next (3.6 at 1280x720 presentation) stated another formula than the lesson's.
+TEST_F(Layout, PagesEndAtSentencesAndKeepTablesWhole) {
+    InspectorModel m;
+    m.title = "Paging";
+    m.stepTitles = {"One", "Two"};
+    m.trace = syntheticTrace();
+    m.presentation = true;
+    std::string text;
+    for (int k = 0; k < 14; ++k) {
+        text += "Sentence " + std::to_string(k) +
+                " runs on over more than one line of the step panel, so that a page that is cut "
+                "at a fixed count of lines ends in its middle. ";
+        if (k == 6) text += "The rows:\n  a     b     c\n  1.0   2.0   3.0\n  4.0   5.0   6.0\n";
+    }
+    m.stepText = text;
+    for (glm::ivec2 size : {glm::ivec2{1024, 768}, glm::ivec2{1280, 720}}) {
+        InspectorLayout l = inspectorLayout(size, true);
+        m.sceneSize = glm::ivec2(l.scene.size());
+        m.textPage = 0;
+        int pages = planFrame(l, m).textPages;
+        ASSERT_GT(pages, 2) << size.x;
+        std::string all;
+        int tablePage = -1;
+        for (int page = 0; page < pages; ++page) {
+            m.textPage = page;
+            FramePlan plan = planFrame(l, m);
+            EXPECT_TRUE(problems(plan, l).empty()) << size.x << " page " << page + 1;
+            std::string shown;
+            for (const LayoutBox& b : plan.boxes) {
+                if (b.role == "step-text") shown = b.text;
+            }
+            ASSERT_FALSE(shown.empty()) << size.x << " page " << page + 1;
+            if (page + 1 < pages) {
+                EXPECT_EQ(shown.back(), '.') << size.x << " page " << page + 1 << " ends \""
+                                             << shown.substr(shown.size() - 20) << "\"";
+            }
+            size_t rows = 0;
+            for (const char* row : {"  a ", "  1.0 ", "  4.0 "})
+                rows += shown.find(row) != std::string::npos;
+            if (rows > 0) {
+                EXPECT_EQ(rows, 3u) << size.x << " page " << page + 1 << ": the table is split";
+                tablePage = page;
+            }
+            for (char c : shown) all += c == '\n' ? ' ' : c;
+            all += ' ';
+        }
+        EXPECT_GE(tablePage, 0) << size.x;
+        // Nothing is dropped between pages: every sentence is on one of them.
+        for (int k = 0; k < 14; ++k) {
+            EXPECT_NE(all.find("Sentence " + std::to_string(k) + " "), std::string::npos) << k;
+        }
+    }
+}
+
+// The ring drawn round poisson's and pcss's points is the disk they fill: the widely copied
+// 16-point set reaches 1.234 of its radius (8 points lie outside radius 1), and a ring of radius
+// R left half of them outside it (lesson 7, "the disk, radius R").
+TEST(PoissonDisk, TheDrawnRingHoldsEveryPointAndTouchesTheFarthest) {
+    constexpr int MAP = 32;
+    ShadowMap map(MAP, MAP, 0.9f);
+    for (int j = 0; j < MAP; ++j) {
+        for (int i = 0; i < MAP / 2; ++i) map.setDepth(i, j, 0.2f);
+    }
+    for (float radius : {1.0f, 2.5f}) {
+        for (bool rotated : {false, true}) {
+            PcfParams prm = makeParams(PCF_POISSON, 3, radius);
+            if (rotated) prm.rotation = vec2(0.38268343f, 0.92387953f);  // 67.5 degrees
+            Trace tr =
+                traceLookup(map, (vec2(15.3f, 16.6f) + vec2(0.5f)) / float(MAP), 0.5f, 0.5f, prm);
+            InspectorLayout l = inspectorLayout({1280, 720}, true);
+            InspectorModel m;
+            m.stepTitles = {"one"};
+            m.stepText = "text";
+            m.trace = tr;
+            m.presentation = true;
+            m.sceneSize = glm::ivec2(l.scene.size());
+            FramePlan plan = planFrame(l, m);
+            ASSERT_EQ(plan.diskRadii.size(), 1u);
+            ASSERT_EQ(tr.fetches.size(), 16u);
+            float farthest = 0.0f;
+            for (const FetchRecord& f : tr.fetches) {
+                vec2 p = f.uv * float(MAP) - vec2(0.5f);
+                farthest = std::max(farthest, glm::length(p - tr.pos.p));
+            }
+            EXPECT_GT(farthest, 1.2f * radius);  // the set is not a unit disk
+            EXPECT_GE(plan.diskRadii[0], farthest - 1e-4f) << radius << (rotated ? " rotated" : "");
+            EXPECT_LE(plan.diskRadii[0], farthest + 1e-3f) << radius << (rotated ? " rotated" : "");
+            // The cells reach round the whole ring (texel i spans p in [i - 0.5, i + 0.5)), so it
+            // is never cut by the cells' edge (7.2 at 1280x720 lost its left and bottom).
+            Neighbourhood view = neighbourhoodView(l, m);
+            vec2 lo = tr.pos.p - vec2(plan.diskRadii[0]) + vec2(0.5f);
+            vec2 hi = tr.pos.p + vec2(plan.diskRadii[0]) + vec2(0.5f);
+            EXPECT_LE(view.origin.x, int(std::floor(lo.x))) << radius;
+            EXPECT_LE(view.origin.y, int(std::floor(lo.y))) << radius;
+            EXPECT_GE(view.origin.x + view.size.x - 1, int(std::floor(hi.x))) << radius;
+            EXPECT_GE(view.origin.y + view.size.y - 1, int(std::floor(hi.y))) << radius;
         }
     }
 }

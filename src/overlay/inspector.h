@@ -143,6 +143,9 @@ struct FramePlan {
     // cell, or as a row of the texel table (the page after the cells when a cell had to drop
     // some of its numbers at this size).
     std::vector<glm::ivec2> numberedTexels;
+    // poisson and pcss: the radii, in texels, of the rings drawn round the lookup point (the
+    // disks the Poisson points fill: the filter's, and pcss's blocker search's).
+    std::vector<float> diskRadii;
 };
 FramePlan planFrame(const InspectorLayout& layout, const InspectorModel& model);
 void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& ops);

@@ -4,17 +4,44 @@
 
 namespace pcf::inspector_detail {
 
+float poissonDiskExtent() {
+    static const float extent = [] {
+        float r = 0.0f;
+        for (int k = 0; k < 16; ++k) r = std::max(r, glm::length(PCF_POISSON_DISK[k]));
+        return r;
+    }();
+    return extent;
+}
+
+DiskRings diskRings(const Trace& tr) {
+    bool pcss = tr.params.method == PCF_PCSS;
+    if (tr.params.method != PCF_POISSON && !pcss) return {};
+    // poisson: the 16 points scaled by R texels (Jimmy, "Percentage Closer Filtering", 2010).
+    // pcss (Fernando, "Percentage-Closer Soft Shadows", 2005): the blocker search's points, then,
+    // when the search found a blocker, the filter's, scaled by half the penumbra's width. Each
+    // ring is the disk the points fill: the scale times the set's extent, so that every point
+    // drawn lies inside its ring.
+    float reach = poissonDiskExtent();
+    DiskRings r;
+    if (!pcss || tr.pcss.blockers > 0) {
+        r.filter = (pcss ? tr.pcss.filterRadius : tr.params.radius) * reach;
+    }
+    if (pcss) r.search = tr.pcss.searchRadius * reach;
+    return r;
+}
+
 void planDisks(Planner& pl, const Trace& tr, const Rect& area, glm::vec2 point, float cell,
                float width, LegendNeeds& legend) {
     bool pcss = tr.params.method == PCF_PCSS;
     if (tr.params.method != PCF_POISSON && !pcss) return;
-    // poisson: the disk of radius R texels (Jimmy, "Percentage Closer Filtering", 2010).
-    // pcss (Fernando, "Percentage-Closer Soft Shadows", 2005): the blocker search's disk, then,
-    // when the search found a blocker, the filter's disk of half the penumbra's width.
-    legend.disk = !pcss || tr.pcss.blockers > 0;
+    DiskRings rings = diskRings(tr);
+    legend.disk = rings.filter > 0.0f;
     legend.searchDisk = pcss;
-    float filter = legend.disk ? (pcss ? tr.pcss.filterRadius : tr.params.radius) * cell : 0.0f;
-    float search = pcss ? tr.pcss.searchRadius * cell : 0.0f;
+    for (float r : {rings.search, rings.filter}) {
+        if (r > 0.0f) pl.plan.diskRadii.push_back(r);
+    }
+    float filter = rings.filter * cell;
+    float search = rings.search * cell;
     pl.op([=](Canvas& c) {
         c.pushClip(area);
         if (search > 0.0f) c.ring(point, search, width, SEARCH);

@@ -112,6 +112,16 @@ Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float
     Grid g;
     const Rect& p = l.inspector;
     g.full = neighbourhoodOf(tr);
+    // poisson's and pcss's rings are drawn whole: the cells reach round the largest (texel i
+    // spans p in [i - 0.5, i + 0.5)).
+    DiskRings rings = diskRings(tr);
+    if (float ring = std::max(rings.search, rings.filter); ring > 0.0f) {
+        glm::ivec2 lo(glm::floor(tr.pos.p - glm::vec2(ring) + 0.5f));
+        glm::ivec2 hi(glm::floor(tr.pos.p + glm::vec2(ring) + 0.5f));
+        lo = glm::min(lo, g.full.origin);
+        hi = glm::max(hi, g.full.origin + g.full.size - glm::ivec2(1));
+        g.full = {lo, hi - lo + glm::ivec2(1)};
+    }
     float line = lineOf(l);
     // The cell's border band: the gather outline (inset `line`, `line + 1` wide), then 2 px.
     g.pad = 2.0f * line + (OUTLINE_EXTRA_PX + PAD_GAP_PX);
@@ -641,16 +651,22 @@ bool planCell(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm
         }
     }
     if (!placed) {
-        moveTo(std::vector<glm::ivec2>(owned.size(), glm::ivec2(0)));
-        std::vector<Rect> cellMarks = marksNear();
+        // Without the depth: the marks where the math puts them first, then moved into the
+        // lanes, so that a cell keeps at least its bit (6.4 at 1280x720 lost three bits to tap
+        // marks that a lane had room for).
         for (const std::vector<Item>& items : candidates) {
             if (items.empty()) {
                 hidden = !all.empty();
                 break;
             }
-            done = fitItems(items, cellMarks, inner);
-            if (!done.empty()) break;
+            for (size_t wi = 0; wi < ways.size() && !placed; ++wi) {
+                moveTo(wi == 0 ? std::vector<glm::ivec2>(owned.size(), glm::ivec2(0)) : ways[wi]);
+                done = fitItems(items, marksNear(), inner);
+                placed = !done.empty();
+            }
+            if (placed) break;
         }
+        if (!placed) moveTo(std::vector<glm::ivec2>(owned.size(), glm::ivec2(0)));
     }
     if (tap && done.size() == all.size()) pl.plan.numberedTexels.push_back(texel);
     for (const auto& [box, it] : done) {

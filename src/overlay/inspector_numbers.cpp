@@ -95,8 +95,7 @@ float planNotes(Planner& pl, const InspectorLayout& l, int hidden, const TypeSiz
     std::vector<std::string> notes;
     if (hidden > 0) {
         notes.push_back("numbers of " + std::to_string(hidden) +
-                        (hidden == 1 ? " cell" : " cells") +
-                        " left out: no room at this size (pcfscope trace lists every texel)");
+                        (hidden == 1 ? " cell" : " cells") + " left out: no room at this size");
     }
     for (const std::string& note : notes) {
         FittedText f =
@@ -131,8 +130,12 @@ std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeed
     bool pcss = m.trace && m.trace->params.method == PCF_PCSS;
     if (need.searchDisk) entries.push_back({SEARCH, "blocker search: taps, disk", CIRCLE});
     if (need.disk) {
-        entries.push_back(
-            {ACCENT, pcss ? "filter disk: penumbra / 2" : "the disk, radius R", CIRCLE});
+        // The ring is the disk the points fill, wider than the scale they are given (planDisks).
+        std::string reach = fixed(poissonDiskExtent(), 2);
+        entries.push_back({ACCENT,
+                           pcss ? "filter disk: " + reach + " x penumbra / 2"
+                                : "the points' disk, radius " + reach + " R",
+                           CIRCLE});
     }
     if (need.rings) entries.push_back({ACCENT, "hardware tap", RING});
     if (need.gathers) entries.push_back({GATHER, "one gather (2 x 2)", OUTLINE});
@@ -254,6 +257,7 @@ void takeCellsPlan(Planner& pl, FramePlan& cells) {
     pl.plan.drawnTexels = cells.drawnTexels;
     pl.plan.drawnFetches = cells.drawnFetches;
     pl.plan.numberedTexels = cells.numberedTexels;
+    pl.plan.diskRadii = cells.diskRadii;
 }
 
 }  // namespace
@@ -284,6 +288,8 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     if (part == 0) {
         takeCellsPlan(pl, panel.cells);
         Rect under{p.x + margin, panel.cellsBottom, width, p.bottom() - margin - panel.cellsBottom};
+        // The room inspectorPanel kept for the line that points to the texel table.
+        if (tableParts > 0) under.h -= t.label * 0.5f + lineHeightOf(t.label);
         float noteY = panel.cellsBottom;
         if (panel.together) {
             placeFormula(pl, fitFormula(tr, t, under), under, 0);
@@ -337,6 +343,12 @@ InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m,
     float width = p.w - 2 * margin;
     auto formulaFits = [&]() {
         Rect under{p.x + margin, out.cellsBottom, width, p.bottom() - margin - out.cellsBottom};
+        // Cells that could not hold their numbers send them to a table on the next page: the
+        // line that says so (planNextPageNote) needs its room under the formula, or page 1
+        // would give no sign that there is more.
+        if (!texelsWithoutNumbers(tr, out.cells).empty()) {
+            under.h -= t.label * 0.5f + lineHeightOf(t.label);
+        }
         return under.h >= lineHeightOf(t.numberFloor) && fitFormula(tr, t, under).pages == 1;
     };
     auto finish = [&]() {

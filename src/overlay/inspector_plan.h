@@ -118,13 +118,16 @@ struct FitLine {
     bool mono = false;  // a preformatted line: monospace, spaces kept, never rewrapped
     SpanLine spans;     // a prose line's pieces: prose and `code spans` (monospace); text is
                         // their concatenation, without the backticks
+    int para = -1;      // prose: the source line (up to a hard line break) it was wrapped from
 };
 
 struct FittedText {
     float size = 0.0f;
     float lineHeight = 0.0f;
     std::vector<FitLine> lines;
-    int linesPerPage = 0;
+    // The first line of each page (pageStarts[0] = 0), and where the last page ends: a page holds
+    // lines [pageStarts[k], pageStarts[k + 1]) or, the last, [pageStarts.back(), pageEnd).
+    std::vector<int> pageStarts{0};
     int pages = 1;
     bool stepped = false;  // drawn below its starting size
 };
@@ -236,6 +239,17 @@ struct LegendNeeds {
 };
 
 // ---- inspector_disks.cpp: the disks poisson's and pcss's points lie on. ----
+// How far the 16-point Poisson set (PCF_POISSON_DISK) reaches from its centre, in units of the
+// radius it is scaled by: the widely copied set is not a unit disk (8 of its points lie outside
+// radius 1, the farthest at 1.234), so the disk its points fill is this much wider than R.
+float poissonDiskExtent();
+// The rings planDisks draws round the lookup point, radii in texels (0: none): pcss's blocker
+// search, and poisson's disk or pcss's filter disk. The cells reach round them (gridOf).
+struct DiskRings {
+    float search = 0.0f;
+    float filter = 0.0f;
+};
+DiskRings diskRings(const Trace& tr);
 // Rings round the lookup point (`point`, pixels; `cell` pixels per texel) clipped to `area`:
 // poisson's disk, or pcss's search disk and (when it found a blocker) its filter disk.
 void planDisks(Planner& pl, const Trace& tr, const Rect& area, glm::vec2 point, float cell,

@@ -137,9 +137,22 @@ std::vector<FitLine> wrapBlock(std::string_view text, FontFace face, float size,
     std::vector<FitLine> out;
     size_t start = 0;
     std::string prose;  // consecutive prose lines form one paragraph source ('\n' kept)
+    int para = 0;
     auto flushProse = [&]() {
         if (prose.empty()) return;
-        wrapProse(prose, face, size, width, out, tooWide);
+        // Each source line on its own (as wrapping breaks at '\n' anyway), its lines numbered,
+        // so that a page break can wrap the rest of one again (pageBreaks).
+        size_t from = 0;
+        while (true) {
+            size_t nl = prose.find('\n', from);
+            size_t first = out.size();
+            wrapProse(prose.substr(from, nl == std::string::npos ? nl : nl - from), face, size,
+                      width, out, tooWide);
+            for (size_t k = first; k < out.size(); ++k) out[k].para = para;
+            ++para;
+            if (nl == std::string::npos) break;
+            from = nl + 1;
+        }
         prose.clear();
     };
     while (true) {
@@ -169,6 +182,132 @@ std::vector<FitLine> wrapBlock(std::string_view text, FontFace face, float size,
     return out;
 }
 
+// A prose line that ends a sentence: a page that ends there leaves no statement half made (a
+// slide that stops at "p = uv * size" says something else than the sentence that goes on with
+// "- 0.5").
+bool endsSentence(const FitLine& line) {
+    if (line.mono) return false;
+    std::string_view t = line.text;
+    while (!t.empty() && (t.back() == ' ' || t.back() == ')' || t.back() == '"'))
+        t.remove_suffix(1);
+    return !t.empty() && (t.back() == '.' || t.back() == '?' || t.back() == '!');
+}
+
+// Where the last sentence that ends inside a prose line ends (the index after its '.', '?' or
+// '!', followed by a space and more words); npos when none does.
+size_t lastSentenceEnd(const FitLine& line) {
+    if (line.mono) return std::string::npos;
+    for (size_t k = line.text.size(); k-- > 1;) {
+        char c = line.text[k - 1];
+        if (line.text[k] == ' ' && (c == '.' || c == '?' || c == '!') && k + 1 < line.text.size())
+            return k;
+    }
+    return std::string::npos;
+}
+
+// The part of a prose line after `cut` (its sentence's end; the space there is dropped) as a
+// line of its own; `line` keeps the part before. Spans (code spans in monospace) are cut where
+// the text is.
+FitLine splitLineAt(FitLine& line, size_t cut) {
+    FitLine tail{line.text.substr(cut + 1), false, {}};
+    line.text.resize(cut);
+    if (line.spans.empty()) return tail;
+    SpanLine head;
+    size_t at = 0;
+    for (TextSpan& sp : line.spans) {
+        size_t end = at + sp.text.size();
+        if (end <= cut) {
+            head.push_back(std::move(sp));
+        } else if (at >= cut + 1) {
+            tail.spans.push_back(std::move(sp));
+        } else {
+            if (cut > at) head.push_back({sp.text.substr(0, cut - at), sp.mono});
+            size_t from = std::max(at, cut + 1) - at;
+            if (from < sp.text.size()) tail.spans.push_back({sp.text.substr(from), sp.mono});
+        }
+        at = end;
+    }
+    line.spans = std::move(head);
+    return tail;
+}
+
+bool isOperatorWord(std::string_view w) {
+    return w == "-" || w == "+" || w == "=" || w == "*" || w == "/" || w == "<=" || w == ">=";
+}
+
+// A break between lines b - 1 and b that cuts no preformatted block and no formula (a line that
+// ends or a line that starts with an operator: "p = uv * size" / "- 0.5").
+bool cleanBreak(const std::vector<FitLine>& lines, int b) {
+    if (lines[b - 1].mono && lines[b].mono) return false;
+    std::string_view before = lines[b - 1].text;
+    std::string_view after = lines[b].text;
+    size_t lastSpace = before.find_last_of(' ');
+    std::string_view lastWord =
+        lastSpace == std::string_view::npos ? before : before.substr(lastSpace + 1);
+    std::string_view firstWord = after.substr(0, after.find(' '));
+    return !isOperatorWord(lastWord) && !isOperatorWord(firstWord);
+}
+
+// Where each page starts, for pages of at most `budget` lines. A page ends, in this order of
+// preference, at a paragraph gap, at the end of a sentence (a prose line is split there when
+// the sentence ends inside it), or between two lines that cut no table and no formula, as long
+// as that keeps at least half of the page's budget; else it is cut at the budget. No page starts
+// with a gap.
+// A prose line as its source again: its code spans in backticks.
+std::string sourceOf(const FitLine& line) {
+    if (line.spans.empty()) return line.text;
+    std::string out;
+    for (const TextSpan& sp : line.spans) out += sp.mono ? "`" + sp.text + "`" : sp.text;
+    return out;
+}
+
+std::vector<int> pageBreaks(std::vector<FitLine>& lines, int budget,
+                            const std::function<std::vector<FitLine>(const std::string&)>& wrap) {
+    auto gap = [&](int k) { return lines[k].text.empty() && !lines[k].mono; };
+    std::vector<int> starts;
+    int start = 0;
+    while (start < static_cast<int>(lines.size())) {
+        starts.push_back(start);
+        const int n = static_cast<int>(lines.size());
+        int end = start + budget;
+        if (end < n) {
+            int low = std::max(start + 1, start + budget / 2 + 1);
+            int chosen = -1;
+            for (int b = end; b >= low && chosen < 0; --b) {
+                if (gap(b)) chosen = b;
+            }
+            for (int b = end; b >= low && chosen < 0; --b) {
+                if (endsSentence(lines[b - 1])) {
+                    chosen = b;
+                } else if (size_t cut = lastSentenceEnd(lines[b - 1]); cut != std::string::npos) {
+                    // The next page starts with the next sentence, and the rest of its source
+                    // line is wrapped again from there (no short line left at the page's top).
+                    int para = lines[b - 1].para;
+                    std::string rest = sourceOf(splitLineAt(lines[b - 1], cut));
+                    int e = b;
+                    while (e < static_cast<int>(lines.size()) && para >= 0 &&
+                           lines[e].para == para) {
+                        rest += " " + sourceOf(lines[e]);
+                        ++e;
+                    }
+                    std::vector<FitLine> again = wrap(rest);
+                    for (FitLine& l : again) l.para = para;
+                    lines.erase(lines.begin() + b, lines.begin() + e);
+                    lines.insert(lines.begin() + b, again.begin(), again.end());
+                    chosen = b;
+                }
+            }
+            for (int b = end; b >= low && chosen < 0; --b) {
+                if (cleanBreak(lines, b)) chosen = b;
+            }
+            if (chosen >= 0) end = chosen;
+        }
+        start = std::min(end, static_cast<int>(lines.size()));
+        while (start < static_cast<int>(lines.size()) && gap(start)) ++start;
+    }
+    return starts;
+}
+
 }  // namespace
 
 FittedText fitText(std::string_view text, FontFace face, float start, float floor, float width,
@@ -192,13 +331,18 @@ FittedText fitText(std::string_view text, FontFace face, float start, float floo
     }
     int fitting = std::max(1, static_cast<int>(std::floor(height / f.lineHeight)));
     if (static_cast<int>(f.lines.size()) <= fitting) {
-        f.linesPerPage = static_cast<int>(f.lines.size());
-        f.pages = 1;
+        f.pageStarts = {0};
     } else {
         // One line of every page is the "more" mark's.
-        f.linesPerPage = std::max(1, fitting - 1);
-        f.pages = (static_cast<int>(f.lines.size()) + f.linesPerPage - 1) / f.linesPerPage;
+        bool unused = false;
+        auto wrap = [&](const std::string& prose) {
+            std::vector<FitLine> out;
+            wrapProse(prose, face, f.size, width, out, unused);
+            return out;
+        };
+        f.pageStarts = pageBreaks(f.lines, std::max(1, fitting - 1), wrap);
     }
+    f.pages = static_cast<int>(f.pageStarts.size());
     return f;
 }
 
@@ -206,8 +350,12 @@ float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, 
                   const Colour& colour, const std::string& panel, const std::string& role,
                   const std::string& moreHint) {
     page = std::clamp(page, 0, f.pages - 1);
-    size_t first = static_cast<size_t>(page * f.linesPerPage);
-    size_t last = std::min(f.lines.size(), first + static_cast<size_t>(f.linesPerPage));
+    size_t first = static_cast<size_t>(f.pageStarts[static_cast<size_t>(page)]);
+    size_t last = page + 1 < f.pages
+                      ? static_cast<size_t>(f.pageStarts[static_cast<size_t>(page) + 1])
+                      : f.lines.size();
+    // A gap that ends a page is not drawn (it would only push the mark down).
+    while (last > first && f.lines[last - 1].text.empty() && !f.lines[last - 1].mono) --last;
     float y = area.y;
     float widest = 0.0f;
     for (size_t k = first; k < last; ++k) {
@@ -242,6 +390,9 @@ float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, 
     float used = y - area.y;
     pl.box(BoxKind::Text, {std::round(area.x), std::round(area.y), std::min(widest, area.w), used},
            panel, role, f.size, f.pages > 1);
+    for (size_t k = first; k < last; ++k) {
+        pl.plan.boxes.back().text.append(k > first ? "\n" : "").append(f.lines[k].text);
+    }
     if (f.pages > 1) {
         // Appended, not a chain of operator+ (GCC 12 warns falsely, -Wrestrict).
         std::string more;
