@@ -14,9 +14,9 @@
 namespace pcf {
 
 // A reader names a label by the nearest dot: every drawn label is nearer its own dot than any
-// other (dots whose discs overlap excepted: no place names one of them), or else has a leader that crosses no other dot and
-// no other dot next to it (within the 2.5 dot radii where leaders start); no error bar runs
-// through a label.
+// other (dots whose discs overlap excepted: no place names one of them), or else has a leader that
+// crosses no other dot and no other dot next to it (within the 2.5 dot radii where leaders start);
+// no error bar runs through a label.
 inline std::vector<std::string> speedChartLabelFaults(const SpeedChartLayout& L) {
     std::vector<std::string> out;
     auto distance = [](const Rect& box, glm::vec2 p) {
@@ -37,8 +37,8 @@ inline std::vector<std::string> speedChartLabelFaults(const SpeedChartLayout& L)
             if (j == k || glm::length(L.points[j] - L.points[k]) < 2.0f * L.dotRadius) continue;
             float other = distance(box, L.points[j]);
             if (other <= own && nearer.empty()) {
-                nearer = L.labelTexts[j] + "'s dot at " + std::to_string(other) + " px, its own at " +
-                         std::to_string(own) + " px";
+                nearer = L.labelTexts[j] + "'s dot at " + std::to_string(other) +
+                         " px, its own at " + std::to_string(own) + " px";
             }
             nextTo |= other <= 2.5f * L.dotRadius;
             if (leader && crossed.empty()) {
@@ -54,9 +54,9 @@ inline std::vector<std::string> speedChartLabelFaults(const SpeedChartLayout& L)
         if (!leader) {
             out.push_back("'" + name + "' has no leader and is nearer " + nearer);
         } else if (nextTo || !crossed.empty()) {
-            out.push_back("'" + name + "' is nearer " + nearer + ", and its leader " +
-                          (crossed.empty() ? "ends next to another dot"
-                                           : "crosses " + crossed + "'s dot"));
+            out.push_back(
+                "'" + name + "' is nearer " + nearer + ", and its leader " +
+                (crossed.empty() ? "ends next to another dot" : "crosses " + crossed + "'s dot"));
         }
     }
     return out;

@@ -42,7 +42,7 @@ double chartAccuracy(const BenchRow& row, ChartAccuracy accuracy);
 // Every dot's time has a labelled x tick within this factor of it, and each decade that holds a
 // dot a labelled tick in it (3 labels at least): a dot past the last label (17.4's four dots past
 // "10") cannot be read off the axis.
-constexpr double SPEED_CHART_TICK_REACH = 1.5;
+constexpr double SPEED_CHART_TICK_REACH = 1.25;
 
 struct ChartTick {
     double value = 0.0;
