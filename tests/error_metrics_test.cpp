@@ -20,6 +20,7 @@
 #include "analysis/step_chart.h"
 #include "kernel/methods.h"
 #include "render/gl_context.h"
+#include "speed_chart_checks.h"
 
 namespace pcf {
 namespace {
@@ -323,6 +324,9 @@ TEST(SpeedChart, ACrowdedChartDrawsOnlyLabelsThatFit) {
         }
         for (size_t k : L.front) EXPECT_TRUE(L.labelShown[k]) << size.x << ": front " << k;
         for (size_t k : gather3) EXPECT_TRUE(L.labelShown[k]) << size.x << ": gather3 " << k;
+        // Each name beside its own dot, off the bars; each dot's time near a labelled tick.
+        for (const std::string& f : speedChartLabelFaults(L)) ADD_FAILURE() << size.x << ": " << f;
+        for (const std::string& f : speedChartTickFaults(L)) ADD_FAILURE() << size.x << ": " << f;
         // Room decides how many of the rest are named: more on the larger chart.
         if (size.x == 617) {
             EXPECT_LT(shown, rows.size()) << "a crowded chart drops labels";
@@ -512,6 +516,8 @@ TEST(SpeedChart, StandAloneTextIsAtLeast14PxWithoutOverlap) {
     }
     EXPECT_NE(subtitle.find(LLVMPIPE_NOTE), std::string::npos) << subtitle;
     EXPECT_EQ(swatches, static_cast<int>(L.legendMethods.size()) + 1);  // and the front's
+    for (const std::string& f : speedChartLabelFaults(L)) ADD_FAILURE() << f;
+    for (const std::string& f : speedChartTickFaults(L)) ADD_FAILURE() << f;
     for (size_t i = 0; i < boxes.size(); ++i) {
         for (size_t j = i + 1; j < boxes.size(); ++j) {
             // (Two legend marks with their clearances may touch: a column of marks.)

@@ -19,6 +19,7 @@
 
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
+#include "analysis/step_chart.h"
 #include "app/session.h"
 #include "app/step_view.h"
 #include "base/input_error.h"
@@ -33,6 +34,7 @@
 #include "render/gl_context.h"
 #include "render/render_settings.h"
 #include "render/scene_renderer.h"
+#include "speed_chart_checks.h"
 
 namespace pcf {
 namespace {
@@ -486,6 +488,56 @@ TEST_F(Layout, ChartStepsInPresentationSetTheChartAtProjectorSize) {
     }
     EXPECT_GE(chartSteps, 6);
     EXPECT_GE(stabilitySteps, 3);
+}
+
+// A chart step's dots keep their names, at every size and mode: each drawn name is nearer its own
+// dot than any other, its leader crosses no other dot and no error bar runs through it (at 1280x720
+// presentation 11.2's "hw2x2 2048" sat by a nearest dot 0.13 of the y axis from its own, and in
+// 16.5 to 17.5 the bars struck names through); every dot's time has a labelled tick near it
+// (17.4's four dots past "10" had none).
+TEST_F(Layout, ChartStepsNameEachDotBesideItAndLabelItsTime) {
+    int charts = 0, names = 0, crowded = 0;
+    for (const char* file :
+         {"11-speed-and-accuracy", "16-contact-hardening", "17-pcss-under-a-spot"}) {
+        Lesson lesson =
+            parseLessonFile(PCFSCOPE_SOURCE_DIR "/lessons/" + std::string(file) + ".toml");
+        for (const LessonStep& step : lesson.steps) {
+            if (step.chart.empty()) continue;
+            for (glm::ivec2 size : SIZES) {
+                for (bool presentation : {true, false}) {
+                    std::string where = step.title + " at " + std::to_string(size.x) + "x" +
+                                        std::to_string(size.y) +
+                                        (presentation ? " presentation" : "");
+                    InspectorLayout l = chartStepLayout(inspectorLayout(size, presentation));
+                    std::optional<SpeedChartLayout> chart = stepSpeedChartLayout(
+                        stepChart(step, presentation), glm::ivec2(l.scene.size()));
+                    if (!chart) continue;
+                    ++charts;
+                    names += static_cast<int>(
+                        std::count(chart->labelShown.begin(), chart->labelShown.end(), true));
+                    for (const std::string& f : speedChartLabelFaults(*chart)) {
+                        // 1024x768's charts (512x288, 614x345) hold lesson 11's 72 dots in so
+                        // little room that a few names of the front and the ringed dots find no
+                        // such spot: counted, bounded, printed; every larger size has none.
+                        if (size.x == 1024) {
+                            ++crowded;
+                            std::printf("layout: crowded chart, %s: %s\n", where.c_str(),
+                                        f.c_str());
+                        } else {
+                            ADD_FAILURE() << where << ": " << f;
+                        }
+                    }
+                    for (const std::string& f : speedChartTickFaults(*chart)) {
+                        ADD_FAILURE() << where << ": " << f;
+                    }
+                }
+            }
+        }
+    }
+    // The 8 bench chart steps (4 of lesson 11; 16.5, 16.6, 17.4, 17.5), each at 4 sizes, 2 modes.
+    EXPECT_EQ(charts, 8 * 8);
+    EXPECT_GE(names, charts);
+    EXPECT_LE(crowded, 5) << "names at 1024x768 apart from their dots";
 }
 
 // Each step shows something its neighbour does not: consecutive steps that render the same scene

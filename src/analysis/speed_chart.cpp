@@ -44,6 +44,13 @@ float outsideArea(const Rect& r, const Rect& inside) { return r.w * r.h - overla
 
 double safeLog(double ms) { return std::log10(std::max(ms, 1e-6)); }
 
+// The bar's stroke width and its end ticks' half height (drawErrorBars draws them).
+float barStroke(float s) { return std::max(1.0f, 1.25f * s); }
+float barTickHalf(float s) { return 3.0f * s; }
+
+// Where a label's leader starts drawing: farther than this from its dot's centre.
+float leaderFrom(const SpeedChartLayout& L) { return 2.5f * L.dotRadius; }
+
 }  // namespace
 
 std::string spreadNote() { return "bars: IQR of the repeated times, centred on the median"; }
@@ -288,9 +295,47 @@ float yPixelOf(const SpeedChartLayout& L, double e) {
     return L.plot.bottom() - static_cast<float>((e - L.yLo) / (L.yHi - L.yLo)) * L.plot.h;
 }
 
+// Whether a labelled x tick lies within `reach` (log10 units) of log time lv.
+bool labelledTickNear(const SpeedChartLayout& L, double lv, double reach) {
+    for (const ChartTick& t : L.xTicks) {
+        if (!t.text.empty() && std::abs(std::log10(t.value) - lv) <= reach + 1e-9) return true;
+    }
+    return false;
+}
+
+// Labels the x tick at v (adding its gridline where there is none).
+void labelXTick(SpeedChartLayout& L, double v) {
+    for (ChartTick& t : L.xTicks) {
+        if (std::abs(t.value - v) <= 1e-9 * v) {
+            t.text = chartTickText(v);
+            return;
+        }
+    }
+    L.xTicks.push_back({v, xPixelOf(L, std::log10(v)), chartTickText(v)});
+}
+
+// The round values a label may be added at, m x 10^k inside the axis (m in 1, 1.5, 2, 2.5, 3..9:
+// every time lies within a factor of 1.23 of one).
+std::vector<double> xTickCandidates(const SpeedChartLayout& L) {
+    std::vector<double> out;
+    for (int k = static_cast<int>(std::floor(L.xLogLo)); k <= static_cast<int>(std::ceil(L.xLogHi));
+         ++k) {
+        for (double m : {1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0}) {
+            double v = m * std::pow(10.0, k);
+            double lv = std::log10(v);
+            if (lv >= L.xLogLo && lv <= L.xLogHi) out.push_back(v);
+        }
+    }
+    return out;
+}
+
 // The ticks of both axes. x ticks at m x 10^k: m = 1, 2, 5 (denser on a narrow axis, only the
-// 1s labelled on a wide one), so that a few labels always show.
-void layoutTicks(SpeedChartLayout& L, double yStep) {
+// 1s labelled on a wide one), so that a few labels always show. Then every dot's time gets a
+// labelled tick within a factor of SPEED_CHART_TICK_REACH (speed_chart.h), every decade holding
+// a dot a label of its own, and the axis 3 labels at least.
+
+void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> rows,
+                 ChartTiming timing) {
     double span = L.xLogHi - L.xLogLo;
     // Narrow ranges label every integer mantissa 1..9, wider ones fewer.
     std::vector<double> mantissas{1, 2, 5};
@@ -309,6 +354,54 @@ void layoutTicks(SpeedChartLayout& L, double yStep) {
             L.xTicks.push_back({v, xPixelOf(L, lv), (!wide || m == 1.0) ? chartTickText(v) : ""});
         }
     }
+    std::vector<double> candidates = xTickCandidates(L);
+    auto nearestCandidate = [&](double lv, double lo, double hi) {
+        double best = 0.0, bestD = 1e300;
+        for (double v : candidates) {
+            double d = std::abs(std::log10(v) - lv);
+            if (v >= lo && v < hi && d < bestD) {
+                best = v;
+                bestD = d;
+            }
+        }
+        return best;
+    };
+    for (const BenchRow& r : rows) {
+        double lv = std::clamp(safeLog(chartMs(r, timing)), L.xLogLo, L.xLogHi);
+        double decade = std::pow(10.0, std::floor(lv));
+        bool decadeLabelled = false;
+        for (const ChartTick& t : L.xTicks) {
+            decadeLabelled |= !t.text.empty() && t.value >= decade && t.value < 10.0 * decade;
+        }
+        if (!decadeLabelled) {
+            if (double v = nearestCandidate(lv, decade, 10.0 * decade); v > 0.0) labelXTick(L, v);
+        }
+        if (!labelledTickNear(L, lv, std::log10(SPEED_CHART_TICK_REACH))) {
+            if (double v = nearestCandidate(lv, 0.0, 1e300); v > 0.0) labelXTick(L, v);
+        }
+    }
+    // At least 3 labels: the candidate farthest from every label, until there are.
+    auto labelCount = [&] {
+        return std::count_if(L.xTicks.begin(), L.xTicks.end(),
+                             [](const ChartTick& t) { return !t.text.empty(); });
+    };
+    while (labelCount() < 3) {
+        double best = 0.0, bestD = -1.0;
+        for (double v : candidates) {
+            double d = 1e300;
+            for (const ChartTick& t : L.xTicks) {
+                if (!t.text.empty()) d = std::min(d, std::abs(std::log10(t.value / v)));
+            }
+            if (d > bestD) {
+                best = v;
+                bestD = d;
+            }
+        }
+        if (bestD <= 1e-9) break;  // every candidate is labelled
+        labelXTick(L, best);
+    }
+    std::sort(L.xTicks.begin(), L.xTicks.end(),
+              [](const ChartTick& a, const ChartTick& b) { return a.value < b.value; });
     for (double v = 0.0; v <= L.yHi + 0.5 * yStep; v += yStep) {
         L.yTicks.push_back({v, yPixelOf(L, v), chartTickText(std::round(v / yStep) * yStep)});
     }
@@ -343,70 +436,141 @@ std::vector<size_t> labelOrder(const std::vector<size_t>& front,
     return order;
 }
 
-struct LabelSpot {
-    Rect box;
-    float overlap = 1e30f;  // the spot's cost less its ring term: < 0.5 for a clean spot
-};
-
-// The first spot around dot p for a label of size t (right, left, above, below, the diagonals;
-// then the same farther out) that overlaps no placed label, no dot and stays in the plot, else
-// the spot that overlaps least.
-LabelSpot bestLabelSpot(const SpeedChartLayout& L, glm::vec2 p, glm::vec2 t, bool mustShow,
-                        const std::vector<Rect>& placed, const std::vector<Rect>& dots, float s) {
-    Rect best;
-    float bestCost = 1e30f;
-    float bestRing = 0.0f;
-    // A label the chart must show may look farther out (with a leader) before it settles
-    // on a spot that covers another.
-    for (float ring : {1.0f, 2.2f, 3.6f, 5.2f, 7.0f, 9.0f, 11.5f}) {
-        if (ring > 4.0f && !mustShow) break;
-        float r = (L.dotRadius + 3.0f * s) * ring;
-        float d = 0.7f * r;
-        const glm::vec2 spots[8] = {
-            {p.x + r, p.y - t.y / 2},       {p.x - r - t.x, p.y - t.y / 2},
-            {p.x - t.x / 2, p.y - r - t.y}, {p.x - t.x / 2, p.y + r},
-            {p.x + d, p.y - d - t.y},       {p.x + d, p.y + d},
-            {p.x - d - t.x, p.y - d - t.y}, {p.x - d - t.x, p.y + d},
-        };
-        for (glm::vec2 spot : spots) {
-            Rect box{std::round(spot.x), std::round(spot.y), t.x, t.y};
-            float cost = 4.0f * outsideArea(box, L.plot);
-            // A name on a name cannot be read at all; a name over a dot hides one dot: where
-            // a crowd leaves no clean spot, cover dots, not names.
-            for (const Rect& o : placed) cost += 20.0f * overlapArea(box, o);
-            for (const Rect& o : dots) cost += 2.0f * overlapArea(box, o);
-            if (mustShow) cost *= 100.0f;  // a leader farther out beats covering a name
-            cost += ring;                  // prefer the nearest ring among equals
-            if (cost < bestCost) {
-                bestCost = cost;
-                bestRing = ring;
-                best = box;
-            }
-        }
-        if (bestCost - bestRing < 0.5f) break;  // a clean spot (cost = the ring term)
-    }
-    return {best, bestCost - bestRing};
+// The distance from a box to a point (0 inside it), pixels.
+float boxDistance(const Rect& box, glm::vec2 p) {
+    return glm::length(glm::clamp(p, box.position(), box.position() + box.size()) - p);
 }
 
-// Greedy label placement: the front's labels first, then the rest; each at bestLabelSpot.
-void placeLabels(SpeedChartLayout& L, const std::vector<bool>& needLabel, bool keptLabelsOnly) {
-    float s = L.scale;
-    std::vector<Rect> dots;
-    float dotR = L.dotRadius;
-    for (glm::vec2 p : L.points) dots.push_back({p.x - dotR, p.y - dotR, 2 * dotR, 2 * dotR});
+// The distance from point c to the segment a-b, pixels.
+float leaderDotDistance(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
+    glm::vec2 ab = b - a;
+    float len2 = glm::dot(ab, ab);
+    float t = len2 > 0.0f ? std::clamp(glm::dot(c - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+    return glm::length(a + t * ab - c);
+}
+
+struct LabelSpot {
+    Rect box;
+    float fault = 1e30f;  // what the spot covers or misleads: 0 for a clean spot
+};
+
+// What a label at `box` for row k does wrong, 0 when nothing: it leaves the plot, covers a
+// placed label, a dot or an error bar (a bar through a name strikes it out), or a reader could
+// take it for another dot's: it is not nearer its own dot than any other, unless its leader
+// crosses no other dot and no other dot lies next to it (within leaderFrom).
+float labelFault(const SpeedChartLayout& L, size_t k, const Rect& box,
+                 const std::vector<Rect>& placed) {
+    constexpr float HARD = 1000.0f;
+    glm::vec2 p = L.points[k];
+    float fault = HARD * outsideArea(box, L.plot);
+    for (const Rect& o : placed) fault += HARD * overlapArea(box, o);
+    float own = boxDistance(box, p);
+    glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
+    bool leader = own > leaderFrom(L);
+    bool nearestOwn = true, leaderClear = leader;
+    for (size_t j = 0; j < L.points.size(); ++j) {
+        fault += HARD * overlapArea(box, speedChartBarBox(L, j));
+        if (j == k) continue;
+        fault += HARD * overlapArea(box, speedChartDotBox(L, j));
+        glm::vec2 q = L.points[j];
+        // (Dots whose discs overlap have no nearer one: a label of either names both.)
+        if (glm::length(q - p) < 2.0f * L.dotRadius) continue;
+        float other = boxDistance(box, q);
+        nearestOwn = nearestOwn && other > own;
+        leaderClear = leaderClear && other > leaderFrom(L) &&
+                      leaderDotDistance(p, nearest, q) >= L.dotRadius + 1.0f;
+    }
+    if (!nearestOwn && !leaderClear) fault += HARD;
+    return fault;
+}
+
+// The spot for row k's label of size t: around its dot in 16 directions, nearest first; the
+// first ring that has a clean spot (labelFault 0) gives its nearest one. A label the chart must
+// show looks farther out (with a leader) and otherwise settles on the spot of least fault plus
+// distance; any other stays within leader-free reach of its dot.
+LabelSpot bestLabelSpot(const SpeedChartLayout& L, size_t k, glm::vec2 t, bool mustShow,
+                        const std::vector<Rect>& placed) {
+    glm::vec2 p = L.points[k];
+    LabelSpot best;
+    float bestCost = 1e30f;
+    float step = L.dotRadius + 3.0f * L.scale;
+    for (float ring : {1.0f, 1.5f, 2.1f, 2.8f, 3.6f, 4.6f, 5.8f, 7.2f, 9.0f, 11.5f, 14.5f, 18.0f}) {
+        float r = step * ring;
+        if (!mustShow && r > leaderFrom(L)) break;
+        for (int i = 0; i < 16; ++i) {
+            float a = static_cast<float>(i) * 0.39269908f;  // 22.5 degrees
+            glm::vec2 d(std::cos(a), std::sin(a));
+            glm::vec2 at = p + r * d;
+            // The box's side (or corner) nearest the dot sits at `at`.
+            float x = d.x > 0.38f ? at.x : d.x < -0.38f ? at.x - t.x : at.x - 0.5f * t.x;
+            float y = d.y > 0.38f ? at.y : d.y < -0.38f ? at.y - t.y : at.y - 0.5f * t.y;
+            Rect box{std::round(x), std::round(y), t.x, t.y};
+            float fault = labelFault(L, k, box, placed);
+            float cost = fault + boxDistance(box, p) / L.dotRadius;
+            if (cost < bestCost) {
+                bestCost = cost;
+                best = {box, fault};
+            }
+        }
+        if (best.fault < 0.5f) return best;  // a clean spot in this ring: none farther is nearer
+    }
+    if (!mustShow) return best;
+    // A crowd left no clean spot within the rings: the nearest clean spot anywhere in the plot,
+    // on a grid a few pixels fine (with its leader).
+    float grid = std::max(3.0f, std::round(4.0f * L.scale));
+    for (float y = L.plot.y; y + t.y <= L.plot.bottom(); y += grid) {
+        for (float x = L.plot.x; x + t.x <= L.plot.right(); x += grid) {
+            Rect box{std::round(x), std::round(y), t.x, t.y};
+            float cost = boxDistance(box, p) / L.dotRadius;
+            if (best.fault < 0.5f && cost >= bestCost) continue;
+            float fault = labelFault(L, k, box, placed);
+            if (fault + cost < bestCost) {
+                bestCost = fault + cost;
+                best = {box, fault};
+            }
+        }
+    }
+    return best;
+}
+
+// Greedy label placement in `order`; each at bestLabelSpot. A label that finds no clean spot is
+// left out, unless the front or the caller needs it: a crowd of overlapping names reads as noise
+// on a projector, and a name far from its dot is read as another dot's; the dot keeps its
+// method's colour, which the legend names. Returns the needed labels that found no clean spot.
+std::vector<size_t> placeLabelsInOrder(SpeedChartLayout& L, const std::vector<bool>& needLabel,
+                                       bool keptLabelsOnly, const std::vector<size_t>& order) {
+    L.labels.assign(L.points.size(), Rect{});
+    L.labelShown.assign(L.points.size(), false);
     std::vector<Rect> placed;
-    for (size_t k : labelOrder(L.front, needLabel)) {
+    std::vector<size_t> faulty;
+    for (size_t k : order) {
         if (keptLabelsOnly && !needLabel[k]) continue;
         glm::vec2 t = measureText(FontFace::Sans, L.labelPx, L.labelTexts[k]);
         bool needed = k < needLabel.size() && needLabel[k];
-        LabelSpot spot = bestLabelSpot(L, L.points[k], t, needed, placed, dots, s);
-        // A label that finds no clean spot is left out, unless the front or the caller needs
-        // it: a crowd of overlapping names reads as noise on a projector; the dot keeps its
-        // method's colour, which the legend names.
-        if ((spot.overlap > 0.5f || keptLabelsOnly) && !needed) continue;
+        LabelSpot spot = bestLabelSpot(L, k, t, needed, placed);
+        if (spot.fault > 0.5f && !needed) continue;
+        if (spot.fault > 0.5f) faulty.push_back(k);
         L.labels[k] = spot.box;
         L.labelShown[k] = true;
         placed.push_back(spot.box);
+    }
+    return faulty;
+}
+
+// The front's labels first, then the kept rows', then the rest; where a needed label found no
+// clean spot, once more with those first (a crowd's few clean spots go to whoever comes first),
+// keeping the placement that leaves fewer such labels.
+void placeLabels(SpeedChartLayout& L, const std::vector<bool>& needLabel, bool keptLabelsOnly) {
+    std::vector<size_t> order = labelOrder(L.front, needLabel);
+    std::vector<size_t> faulty = placeLabelsInOrder(L, needLabel, keptLabelsOnly, order);
+    if (faulty.empty()) return;
+    std::vector<size_t> retry = faulty;
+    for (size_t k : order) {
+        if (std::find(faulty.begin(), faulty.end(), k) == faulty.end()) retry.push_back(k);
+    }
+    SpeedChartLayout first = L;
+    if (placeLabelsInOrder(L, needLabel, keptLabelsOnly, retry).size() >= faulty.size()) {
+        L = std::move(first);
     }
 }
 
@@ -438,7 +602,7 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     layoutFrame(L, f, s, yStep, legendSize);
     placeLegend(L, f.legend);
     layoutXRange(L, rows, timing);
-    layoutTicks(L, yStep);
+    layoutTicks(L, yStep, rows, timing);
     layoutDots(L, rows, timing, accuracy);
 
     L.labels.assign(rows.size(), Rect{});
@@ -450,6 +614,29 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     }
     placeLabels(L, needLabel, keptLabelsOnly);
     return L;
+}
+
+Rect speedChartDotBox(const SpeedChartLayout& L, size_t row) {
+    glm::vec2 p = L.points[row];
+    float r = L.dotRadius;
+    return {p.x - r, p.y - r, 2.0f * r, 2.0f * r};
+}
+
+Rect speedChartBarBox(const SpeedChartLayout& L, size_t row) {
+    glm::vec2 bar = L.errorBars[row];
+    if (bar.y - bar.x < 1.0f) return {};
+    float w = barStroke(L.scale);
+    float half = barTickHalf(L.scale) + 0.5f * w;
+    return {bar.x - 0.5f * w, L.points[row].y - half, bar.y - bar.x + w, 2.0f * half};
+}
+
+std::optional<ChartLeader> speedChartLeader(const SpeedChartLayout& L, size_t row) {
+    if (!L.labelShown[row]) return std::nullopt;
+    const Rect& box = L.labels[row];
+    glm::vec2 p = L.points[row];
+    glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
+    if (glm::length(nearest - p) <= leaderFrom(L)) return std::nullopt;
+    return ChartLeader{p, nearest};
 }
 
 std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
@@ -529,10 +716,11 @@ void drawErrorBars(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRo
         float y = L.points[k].y;
         glm::vec4 ink = methodColour(rows[k].point.method) * 0.7f;
         ink.a = 1.0f;
-        float w = std::max(1.0f, 1.25f * s);
+        float w = barStroke(s);
+        float h = barTickHalf(s);
         c.line({bar.x, y}, {bar.y, y}, w, ink);
-        c.line({bar.x, y - 3.0f * s}, {bar.x, y + 3.0f * s}, w, ink);
-        c.line({bar.y, y - 3.0f * s}, {bar.y, y + 3.0f * s}, w, ink);
+        c.line({bar.x, y - h}, {bar.x, y + h}, w, ink);
+        c.line({bar.y, y - h}, {bar.y, y + h}, w, ink);
     }
 }
 
@@ -565,13 +753,10 @@ void drawPlotMarks(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRo
 // Leaders, where a crowd pushed a label away from its dot.
 void drawLeaders(Canvas& c, const SpeedChartLayout& L, size_t rowCount) {
     for (size_t k = 0; k < rowCount; ++k) {
-        if (!L.labelShown[k]) continue;
-        const Rect& box = L.labels[k];
-        glm::vec2 p = L.points[k];
-        glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
-        if (glm::length(nearest - p) > 2.5f * L.dotRadius) {
-            c.line(p, nearest, std::max(1.0f, 0.75f * L.scale),
-                   CHART_GRID * 0.8f + CHART_SOFT_INK * 0.2f);
+        if (std::optional<ChartLeader> leader = speedChartLeader(L, k)) {
+            // Dark enough to follow: a leader a reader misses leaves the name by another dot.
+            c.line(leader->from, leader->to, std::max(1.0f, 0.75f * L.scale),
+                   CHART_GRID * 0.4f + CHART_SOFT_INK * 0.6f);
         }
     }
 }

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -37,6 +38,11 @@ double chartIqr(const BenchRow& row, ChartTiming timing);
 // band's RMSE near the casters only (bench.h: contactDistance, speed_vs_contact.png).
 enum class ChartAccuracy { EdgeRmse, Shimmer, ContactRmse };
 double chartAccuracy(const BenchRow& row, ChartAccuracy accuracy);
+
+// Every dot's time has a labelled x tick within this factor of it, and each decade that holds a
+// dot a labelled tick in it (3 labels at least): a dot past the last label (17.4's four dots past
+// "10") cannot be read off the axis.
+constexpr double SPEED_CHART_TICK_REACH = 1.25;
 
 struct ChartTick {
     double value = 0.0;
@@ -87,7 +93,8 @@ struct SpeedChartLayout {
     std::vector<std::string> labelTexts;  // per row
     std::vector<Rect> labels;             // per row: where its label's box goes
     // per row: whether its label is drawn. The front's and the kept rows' always are; any other
-    // only where it finds a spot that overlaps no other label, no dot and stays in the plot.
+    // only where it finds a spot next to its dot (no leader) that stays in the plot, overlaps no
+    // other label, dot or error bar, and is nearer its own dot than any other.
     std::vector<bool> labelShown;
     std::vector<size_t> front;       // rows on the Pareto front, fastest first
     std::vector<int> legendMethods;  // methods present, in the rows' order of appearance
@@ -150,6 +157,17 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
                                   ChartAccuracy accuracy = ChartAccuracy::EdgeRmse,
                                   std::span<const size_t> keepLabels = {}, float minFontPx = 8.0f,
                                   bool keptLabelsOnly = false, int subtitleLines = 1);
+
+// The marks a label must keep off and by: a row's dot (its disc's box), its error bar (the line
+// and its end ticks; empty where the IQR is under a pixel and no bar is drawn), and the leader
+// drawLeaders draws from a dot to its label (the dot's centre to the label box's nearest point),
+// only where the label is shown and its box lies more than 2.5 dot radii from the centre.
+Rect speedChartDotBox(const SpeedChartLayout& layout, size_t row);
+Rect speedChartBarBox(const SpeedChartLayout& layout, size_t row);
+struct ChartLeader {
+    glm::vec2 from, to;
+};
+std::optional<ChartLeader> speedChartLeader(const SpeedChartLayout& layout, size_t row);
 
 // Every text the chart draws (drawSpeedChart sets them where these say): the boxes a lesson
 // frame lists in its layout.

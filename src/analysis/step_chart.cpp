@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <utility>
 
 #include "analysis/chart_axes.h"
 #include "analysis/stability_figures.h"
@@ -126,14 +127,31 @@ std::vector<uint8_t> drawStepChart(const StepChart& chart, glm::ivec2 size) {
     return rgba;
 }
 
+namespace {
+
+// A bench chart's text as drawn and its layout at `size`.
+std::pair<SpeedChartText, SpeedChartLayout> speedChartOf(const StepChart& chart,
+                                                         const StepChartRef& ref, glm::ivec2 size) {
+    std::vector<BenchRow> rows = readBenchChartRows(ref);
+    SpeedChartText text = speedChartTextFor(rows, speedChartText(chart, ref, rows), size);
+    SpeedChartLayout layout =
+        layoutSpeedChart(rows, size, ChartTiming::Scene, ref.accuracy, text.highlight,
+                         text.minFontPx, text.keptLabelsOnly, subtitleLineCount(text.subtitle));
+    return {text, layout};
+}
+
+}  // namespace
+
+std::optional<SpeedChartLayout> stepSpeedChartLayout(const StepChart& chart, glm::ivec2 size) {
+    StepChartRef ref = stepChartRef(chart.chart);
+    if (!ref.bench) return std::nullopt;
+    return speedChartOf(chart, ref, size).second;
+}
+
 std::vector<ChartTextBox> stepChartTexts(const StepChart& chart, glm::ivec2 size) {
     StepChartRef ref = stepChartRef(chart.chart);
     if (ref.bench) {
-        std::vector<BenchRow> rows = readBenchChartRows(ref);
-        SpeedChartText text = speedChartTextFor(rows, speedChartText(chart, ref, rows), size);
-        SpeedChartLayout layout =
-            layoutSpeedChart(rows, size, ChartTiming::Scene, ref.accuracy, text.highlight,
-                             text.minFontPx, text.keptLabelsOnly, subtitleLineCount(text.subtitle));
+        auto [text, layout] = speedChartOf(chart, ref, size);
         return speedChartTextBoxes(layout, text);
     }
     std::vector<StabilityRow> rows = readStabilityRows(ref.path);

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -59,6 +60,9 @@ void checkStepChartHighlight(const std::string& chart, const std::string& highli
 
 // The chart as RGBA8 of `size`, rows top-down. Throws InputError for a bad chart file.
 std::vector<uint8_t> drawStepChart(const StepChart& chart, glm::ivec2 size);
+// A bench chart's layout at `size` (its dots, bars, labels and leaders: speed_chart.h), as
+// drawStepChart draws it; nullopt for a stability chart. Throws InputError.
+std::optional<SpeedChartLayout> stepSpeedChartLayout(const StepChart& chart, glm::ivec2 size);
 // The texts it draws, placed in a chart of `size` (origin top-left). Throws InputError.
 std::vector<ChartTextBox> stepChartTexts(const StepChart& chart, glm::ivec2 size);
 
