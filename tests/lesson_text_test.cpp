@@ -130,6 +130,21 @@ TEST(LessonText, PoissonRadiusAndRotation) {
     EXPECT_EQ(fill("{lit_count}", tr), std::to_string(static_cast<int>(tr.visibility * 16.0f)));
 }
 
+// The widely copied 16-point set reaches 1.2339 from its centre (its 8th point, (0.9748, 0.7565)):
+// the words "the farthest X texels from the centre" scale that by the radius the points are given.
+TEST(LessonText, PoissonReachIsTheFarthestPointNotTheRadius) {
+    Trace tr = traceLookup(exampleShadowMap(), vec2(0.4625f, 0.3875f), 0.5f, 0.5f,
+                           makeParams(PCF_POISSON, 3, 1.5f, PCF_ROTATIONS[4]));
+    EXPECT_EQ(fill("{disk_reach:3}", tr), "1.851");
+    EXPECT_EQ(fill("{pcss.search_reach}", tr), "0");
+    // pcss: the filter's points are scaled by filter_radius, the search's by search_radius.
+    tr.params.method = PCF_PCSS;
+    tr.pcss.filterRadius = 4.0f;
+    tr.pcss.searchRadius = 7.0f;
+    EXPECT_EQ(fill("{disk_reach:3} {pcss.search_reach:3}", tr), "4.936 8.638");
+    EXPECT_EQ(fill("{disk_reach}", exampleTrace(PCF_GATHER)), "0");
+}
+
 TEST(LessonText, ContextNamesThePixelAndTheState) {
     Trace tr = exampleTrace(PCF_NEAREST);
     EXPECT_EQ(fill("({pixel.x}, {pixel.y}) {bias} {constant_bias} {cull} {depth_format}", tr),

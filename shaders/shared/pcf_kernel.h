@@ -28,7 +28,8 @@ PCF_CONST int PCF_FETCH_LOOKUP = 1;  // a software bilinear lookup: four texel r
 PCF_CONST int PCF_FETCH_GATHER = 2;  // one textureGather on the comparison sampler
 PCF_CONST int PCF_FETCH_HW = 3;      // one hardware comparison tap (sampler2DShadow, GL_LINEAR)
 
-// The 16-point Poisson disk of Jimmy 2010 (unit radius), scaled by the radius in texels.
+// The 16-point Poisson disk of Jimmy 2010, scaled by the radius in texels. Not a unit disk: 8 of
+// its 16 points lie outside the unit circle, the farthest (the 8th) at 1.234.
 // The array macros stand for C++'s and GLSL's array syntax, which clang-format cannot read.
 // clang-format off
 PCF_CONST_ARRAY(vec2, PCF_POISSON_DISK, 16) PCF_ARRAY_BEGIN(vec2, 16)
@@ -704,8 +705,8 @@ PCF_MAP_FN float pcfTent(Map map, vec2 uv, PcfRef ref, int n) {
     return sum;
 }
 
-// Jimmy 2010: 16 point-sampled comparisons on a Poisson disk of the given radius in texels,
-// optionally rotated per pixel (rotation = (cos, sin)).
+// Jimmy 2010: 16 point-sampled comparisons at the Poisson points scaled by the given radius in
+// texels (the farthest 1.234 radius from uv), optionally rotated per pixel (rotation = (cos, sin)).
 PCF_FN vec2 pcfPoissonOffset(int k, float radius, vec2 rotation) {
     vec2 d = PCF_POISSON_DISK[k];
     PCF_PRECISE float x = d.x * rotation.x - d.y * rotation.y;

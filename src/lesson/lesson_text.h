@@ -31,6 +31,10 @@
 //   kernel radius         N, and the Poisson disk's radius in texels
 //   kernel_sq             N^2: the lookups of an N x N kernel ("{kernel_sq*4}" reads for pcf-naive)
 //   rotation              the Poisson disk's rotation in degrees
+//   disk_reach            poisson and pcss: how far the farthest of the 16 filter points lies
+//                         from the lookup, texels: the scale (radius; pcss: filter_radius) times
+//                         1.234, the set's farthest point (0 for the other methods)
+//   pcss.search_reach     pcss: the same for the blocker search's points (search_radius * 1.234)
 //   map_size              the shadow map's width in texels
 //   taps                  texel reads recorded, duplicates kept (pcf-naive 3x3: 36)
 //   texels gathers hw_taps  the fetch counts: texel reads, comparison gathers, hardware taps
