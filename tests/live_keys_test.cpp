@@ -16,6 +16,7 @@
 #include "app/session.h"
 #include "app/step_words.h"
 #include "json_lite.h"
+#include "kernel/settings.h"
 #include "lesson/lesson_keys.h"
 #include "lesson/lesson_pick.h"
 #include "render/gl_context.h"
@@ -239,6 +240,11 @@ TEST_F(LiveKeys, ExportAndViewApplyTheSameKeysAndClicks) {
     jsonlite::Value exported = jsonlite::parse(testutil::readAll(mDir / "out/keys-step01.json"));
     EXPECT_EQ(exported["settings"]["constant_bias"].number, 0.005);
     EXPECT_EQ(exported["settings"]["cull"].string, "front");
+    // Every parameter of the table, the ones these keys left alone too.
+    for (const ParamInfo& p : allParams()) {
+        EXPECT_TRUE(exported["settings"].has(std::string(p.key))) << p.key;
+    }
+    EXPECT_EQ(static_cast<float>(exported["settings"]["slope_max"].number), DEFAULT_SLOPE_MAX);
     testutil::CommandResult plain =
         testutil::runPcfscope("export " + lesson + " -o " + (mDir / "plain").string());
     ASSERT_EQ(plain.exitCode, 0) << plain.err;

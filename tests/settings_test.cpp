@@ -6,12 +6,15 @@
 
 #include <set>
 #include <sstream>
+#include <string>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "app/cli_util.h"
 #include "app/render_options.h"
 #include "json_lite.h"
+#include "kernel/trace_json.h"
 #include "lesson/lesson.h"
 
 namespace pcf {
@@ -242,6 +245,20 @@ TEST(ParameterTable, EveryParameterHasAFlagThatParsesItsDefaultAndItsMax) {
     EXPECT_THROW(parseRenderOptions({"--slope-max", "2"}), UsageError);
 }
 
+// `v` is row `p`'s value in `s`, as the status line and the lesson files say it (settingText).
+void expectParamValue(const jsonlite::Value& v, const ParamInfo& p, const ShadowSettings& s) {
+    switch (v.kind) {
+        case jsonlite::Value::STRING:
+            EXPECT_EQ(v.string, settingText(p, s)) << p.key;
+            break;
+        case jsonlite::Value::BOOL:
+            EXPECT_EQ(v.boolean ? "true" : "false", settingText(p, s)) << p.key;
+            break;
+        default:
+            EXPECT_EQ(v.number, std::stod(settingText(p, s))) << p.key;
+    }
+}
+
 TEST(ParameterTable, TheRawJsonHoldsTheMarkedParametersWithTheirValues) {
     ShadowSettings s;
     s.method = PCF_POISSON;
@@ -256,17 +273,7 @@ TEST(ParameterTable, TheRawJsonHoldsTheMarkedParametersWithTheirValues) {
             continue;
         }
         ++marked;
-        const jsonlite::Value& v = j[std::string(p.key)];
-        switch (v.kind) {
-            case jsonlite::Value::STRING:
-                EXPECT_EQ(v.string, settingText(p, s)) << p.key;
-                break;
-            case jsonlite::Value::BOOL:
-                EXPECT_EQ(v.boolean ? "true" : "false", settingText(p, s)) << p.key;
-                break;
-            default:
-                EXPECT_EQ(v.number, std::stod(settingText(p, s))) << p.key;
-        }
+        expectParamValue(j[std::string(p.key)], p, s);
     }
     // ... and three numbers that are not settings: pcss's penumbra scale and a spot map's near
     // and far, which the scene and the map give (scene/pcss.h), so that `verify` recomputes pcss
@@ -277,6 +284,62 @@ TEST(ParameterTable, TheRawJsonHoldsTheMarkedParametersWithTheirValues) {
     EXPECT_EQ(j["pcss_depth_far"].number, 0.0);
     EXPECT_EQ(j["method"].string, "poisson");
     EXPECT_EQ(j["soft_scale"].number, 1000.0);
+}
+
+}  // namespace
+}  // namespace pcf
+
+namespace pcf {
+namespace {
+
+// An export's sidecar lists every setting the step is made with, from the table: a parameter
+// added to the table appears there, in the table's order, with its value.
+TEST(ParameterTable, TheStepSidecarHoldsEveryParameterInTheTablesOrder) {
+    ShadowSettings s;
+    s.method = PCF_NAIVE;
+    s.weights = PCF_WEIGHTS_GAUSSIAN;
+    s.sigma = 0.75f;
+    s.bias = BiasMode::Slope;
+    s.slopeBias = 0.003f;
+    s.cull = CullMode::Front;
+    s.depthFormat = DepthFormat::D16;
+    Json ordered = paramsJson(s, ParamSet::All);
+    std::vector<std::string> keys;
+    for (const auto& item : ordered.items()) keys.push_back(item.key());
+    std::vector<std::string> want;
+    for (const ParamInfo& p : allParams()) want.push_back(std::string(p.key));
+    EXPECT_EQ(keys, want) << "every row, in the table's order";
+    jsonlite::Value j = jsonlite::parse(jsonDump(ordered));
+    for (const ParamInfo& p : allParams()) expectParamValue(j[std::string(p.key)], p, s);
+    EXPECT_EQ(j["sigma"].number, 0.75);
+    EXPECT_EQ(j["cull"].string, "front");
+}
+
+// A trace's `bias` is the table's bias rows under their lesson-file keys, then what the trace
+// adds: the receiver plane as measured and as used, and where each tap's ref is taken.
+TEST(ParameterTable, ATracesBiasIsTheTablesBiasRows) {
+    ShadowMap map(4, 4);
+    BiasSettings b;
+    b.bias = BiasMode::Normal;
+    b.normalOffset = 1.5f;
+    Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.49f, makeParams(PCF_BOX2X2), b);
+    std::string text = traceToJson(tr);
+    std::vector<std::string> keys;
+    Json parsed = Json::parse(text);
+    for (const auto& item : parsed["bias"].items()) keys.push_back(item.key());
+    jsonlite::Value j = jsonlite::parse(text)["bias"];
+    ShadowSettings s;
+    static_cast<BiasSettings&>(s) = b;
+    std::vector<std::string> want;
+    for (const ParamInfo& p : allParams()) {
+        if (p.group != ParamGroup::Bias) continue;
+        want.push_back(std::string(p.key));
+        expectParamValue(j[std::string(p.key)], p, s);
+    }
+    for (const char* extra : {"dzduv", "dzduv_used", "per_tap"}) want.push_back(extra);
+    EXPECT_EQ(keys, want);
+    EXPECT_EQ(j["bias"].string, "normal");
+    EXPECT_EQ(j["normal_offset"].number, 1.5);
 }
 
 }  // namespace

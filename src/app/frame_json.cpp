@@ -2,13 +2,7 @@
 
 #include <algorithm>
 
-#include "kernel/trace_explain.h"
-
 namespace pcf {
-
-// A setting as the status line and the step text print it (formatNumber: up to 4 decimals), as a
-// JSON number: 0.005 stays "0.005", not the float's "0.00499999989".
-Json settingNumber(float v) { return Json::parse(formatNumber(v)); }
 
 // The frame's layout (planFrame's boxes) as a JSON array: [{"kind", "panel", "role",
 // "rect": [x, y, w, h], "font_px", "shortened"}, ...]; font_px and shortened only for what

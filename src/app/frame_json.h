@@ -12,8 +12,6 @@
 
 namespace pcf {
 
-// A setting as the status line and the step text print it (formatNumber), as a JSON number.
-Json settingNumber(float v);
 // The frame's layout (planFrame's boxes) as a JSON array.
 Json layoutJson(const std::vector<LayoutBox>& boxes);
 // {"drawn": {"texels", "fetches", "formula_whole"}, "read": {"texels", "fetches"}}.

@@ -126,22 +126,7 @@ DepthFormat depthFormatOption(const std::string& name) {
 }
 
 std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss) {
-    Json j = Json::object();
-    for (const ParamInfo& p : allParams()) {
-        if (!p.rawJson) continue;
-        std::visit(
-            [&](const auto& field) {
-                using F = std::decay_t<decltype(field)>;
-                if constexpr (std::is_same_v<F, float ShadowSettings::*>) {
-                    j[std::string(p.key)] = jsonNumber(s.*field);
-                } else if constexpr (std::is_member_object_pointer_v<F>) {
-                    j[std::string(p.key)] = s.*field;
-                } else {
-                    j[std::string(p.key)] = field.name(s.*field.field);
-                }
-            },
-            p.field);
-    }
+    Json j = paramsJson(s, ParamSet::Raw);
     j["penumbra_scale"] = jsonNumber(pcss.penumbraScale);
     j["pcss_depth_near"] = jsonNumber(pcss.depthNear);
     j["pcss_depth_far"] = jsonNumber(pcss.depthFar);

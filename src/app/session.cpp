@@ -544,16 +544,8 @@ std::vector<uint8_t> Session::readFrame() const {
 }
 
 std::string Session::stepJson() const {
-    const LessonSettings& s = mSettings;
-    Json settings = {{"method", methodInfo(s.method).name},
-                     {"kernel", s.kernel},
-                     {"radius", settingNumber(s.radius)},
-                     {"rotate", s.rotate},
-                     {"bias", biasModeName(s.bias)},
-                     {"constant_bias", settingNumber(s.constantBias)},
-                     {"cull", cullModeName(s.cull)},
-                     {"map_size", s.mapSize},
-                     {"depth_format", depthFormatName(s.depthFormat)}};
+    // Every setting the step is made with, from the parameter table.
+    Json settings = paramsJson(mSettings, ParamSet::All);
     Json j = {
         {"lesson", mLesson.name},
         {"title", mLesson.title},

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <variant>
 
 #include "kernel/trace_explain.h"
 
@@ -63,20 +65,18 @@ const char* perTapName(const Trace& tr) {
     return "?";
 }
 
-// The trace's bias: the mode, every parameter, and the receiver plane as given and as used.
+// The trace's bias: the mode and every parameter (the table's rows, under the lesson files'
+// keys), and the receiver plane as given and as used.
 Json biasJson(const Trace& tr) {
-    return {{"mode", biasName(tr.bias.modeId())},
-            {"constant", jsonNumber(tr.bias.constantBias)},
-            {"slope", jsonNumber(tr.bias.slopeBias)},
-            {"slope_max", jsonNumber(tr.bias.slopeMax)},
-            {"normal_offset", jsonNumber(tr.bias.normalOffset)},
-            {"soft_scale", jsonNumber(tr.bias.softScale)},
-            {"dzduv", jsonPair(tr.dzduv)},
-            {"rpdb_max", jsonNumber(tr.bias.rpdbMax)},
-            {"dzduv_used", jsonPair(tr.bias.bias == BiasMode::ReceiverPlane
-                                        ? pcfClampDzDuv(tr.dzduv, tr.bias.rpdbMax)
-                                        : tr.dzduv)},
-            {"per_tap", perTapName(tr)}};
+    ShadowSettings settings;
+    static_cast<BiasSettings&>(settings) = tr.bias;
+    Json j = paramsJson(settings, ParamSet::Bias);
+    j["dzduv"] = jsonPair(tr.dzduv);
+    j["dzduv_used"] =
+        jsonPair(tr.bias.bias == BiasMode::ReceiverPlane ? pcfClampDzDuv(tr.dzduv, tr.bias.rpdbMax)
+                                                         : tr.dzduv);
+    j["per_tap"] = perTapName(tr);
+    return j;
 }
 
 // One object per tap, in read order, and one per fetch instruction.
@@ -108,6 +108,42 @@ Json fetchesJson(const Trace& tr) {
 }
 
 }  // namespace
+
+namespace {
+
+bool inParamSet(const ParamInfo& p, ParamSet which) {
+    switch (which) {
+        case ParamSet::All:
+            return true;
+        case ParamSet::Raw:
+            return p.rawJson;
+        case ParamSet::Bias:
+            return p.group == ParamGroup::Bias;
+    }
+    return false;
+}
+
+}  // namespace
+
+Json paramsJson(const ShadowSettings& s, ParamSet which) {
+    Json j = Json::object();
+    for (const ParamInfo& p : allParams()) {
+        if (!inParamSet(p, which)) continue;
+        std::visit(
+            [&](const auto& field) {
+                using F = std::decay_t<decltype(field)>;
+                if constexpr (std::is_same_v<F, float ShadowSettings::*>) {
+                    j[std::string(p.key)] = jsonNumber(s.*field);
+                } else if constexpr (std::is_member_object_pointer_v<F>) {
+                    j[std::string(p.key)] = s.*field;
+                } else {
+                    j[std::string(p.key)] = field.name(s.*field.field);
+                }
+            },
+            p.field);
+    }
+    return j;
+}
 
 Json traceJson(const Trace& tr) {
     Json bias = biasJson(tr);

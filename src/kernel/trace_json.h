@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "kernel/settings.h"
 #include "kernel/trace.h"
 
 namespace pcf {
@@ -25,6 +26,19 @@ Json jsonPair(ivec2 v);
 
 // One line, no spaces; bytes that are not UTF-8 become U+FFFD instead of throwing.
 std::string jsonDump(const Json& j);
+
+// Which of the parameter table's rows paramsJson writes.
+enum class ParamSet {
+    All,   // every parameter: the lesson step a frame shows (export's sidecar)
+    Raw,   // those render --raw's render.json holds, which `verify` reads back
+    Bias,  // the bias mode and its parameters: a trace's `bias`
+};
+
+// The settings as one JSON object written from the parameter table (settings.h allParams), so a
+// new parameter appears in every sidecar without a line here: each row of `which`, in the
+// table's order, under its key (the lesson files' key); numbers as jsonNumber, flags as
+// true/false, named values by name ("pcf-gather", "receiver-plane").
+Json paramsJson(const ShadowSettings& s, ParamSet which);
 
 // DESIGN.md section 4's object.
 Json traceJson(const Trace& trace);
