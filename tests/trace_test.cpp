@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "json_lite.h"
@@ -40,6 +42,37 @@ TEST(Trace, EveryMethodExplainsItselfAndEndsWithTheKernelsResult) {
         }
         EXPECT_NE(explainTrace(tr).back().text.find(formatNumber(tr.visibility)), std::string::npos)
             << m.name << ": " << explainTrace(tr).back().text;
+    }
+}
+
+// tent's merged weight table is a grid: every row line as long as the others and every number
+// ending in its column (tent 5x5 at the example point has numbers of 4 and 5 characters).
+TEST(Trace, TentsMergedWeightTableIsAlignedInColumns) {
+    for (int n : {3, 5, 7}) {
+        Trace tr = exampleTrace(PCF_TENT, n);
+        std::string text = explainTrace(tr).back().text;
+        size_t at = text.find("Merged, the taps weigh the texels");
+        ASSERT_NE(at, std::string::npos) << text;
+        std::vector<std::string> rows;
+        std::istringstream lines(text.substr(at));
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("  row ", 0) == 0) rows.push_back(line);
+        }
+        ASSERT_EQ(rows.size(), static_cast<size_t>(tr.weights.size.y)) << text;
+        for (const std::string& r : rows) {
+            EXPECT_EQ(r.size(), rows[0].size()) << r << "\n" << rows[0];
+            // Column ends: where a number is followed by a space or the line's end.
+            std::vector<size_t> ends, firstEnds;
+            for (size_t i = r.find(':') + 1; i < r.size(); ++i) {
+                if (r[i] != ' ' && (i + 1 == r.size() || r[i + 1] == ' ')) ends.push_back(i);
+            }
+            const std::string& f = rows[0];
+            for (size_t i = f.find(':') + 1; i < f.size(); ++i) {
+                if (f[i] != ' ' && (i + 1 == f.size() || f[i + 1] == ' ')) firstEnds.push_back(i);
+            }
+            EXPECT_EQ(ends, firstEnds) << r << "\n" << f;
+            EXPECT_EQ(ends.size(), static_cast<size_t>(tr.weights.size.x)) << r;
+        }
     }
 }
 

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "kernel/settings.h"
 
@@ -389,13 +391,24 @@ void explainBilinear(const Trace& tr, Steps& out, bool hardware) {
     addStep(out, K::Result, w.str());
 }
 
+// The merged weights as rows of numbers, right-aligned in columns as wide as the widest number
+// (and the row numbers as wide as the widest), so the table reads as a grid in a fixed-width font.
 std::string weightTable(const Trace& tr, float scale) {
-    std::ostringstream s;
     const WeightGrid& g = tr.weights;
+    std::vector<std::string> cells;
+    size_t width = 0;
+    for (float v : g.values) {
+        cells.push_back(num(v * scale));
+        width = std::max(width, cells.back().size());
+    }
+    size_t rowWidth = std::to_string(g.origin.y + g.size.y - 1).size();
+    std::ostringstream s;
     for (int j = 0; j < g.size.y; ++j) {
-        s << "\n  row " << g.origin.y + j << ":";
+        std::string row = std::to_string(g.origin.y + j);
+        s << "\n  row " << std::string(rowWidth - row.size(), ' ') << row << ":";
         for (int i = 0; i < g.size.x; ++i) {
-            s << " " << num(g.values[static_cast<size_t>(j) * g.size.x + i] * scale);
+            const std::string& c = cells[static_cast<size_t>(j) * g.size.x + i];
+            s << " " << std::string(width - c.size(), ' ') << c;
         }
     }
     return s.str();
