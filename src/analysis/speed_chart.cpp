@@ -329,15 +329,11 @@ std::vector<double> xTickCandidates(const SpeedChartLayout& L) {
     return out;
 }
 
-// The ticks of both axes. x ticks at m x 10^k: m = 1, 2, 5 (denser on a narrow axis, only the
-// 1s labelled on a wide one), so that a few labels always show. Then every dot's time gets a
-// labelled tick within a factor of SPEED_CHART_TICK_REACH (speed_chart.h), every decade holding
-// a dot a label of its own, and the axis 3 labels at least.
-
-void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> rows,
-                 ChartTiming timing) {
+// The x axis's round ticks at m x 10^k: m = 1, 2, 5 (1, 2, 3, 5 under 1.5 decades, every integer
+// mantissa under 0.7), all labelled but on a wide axis (over 3 decades), where only the 1s are,
+// so that a few labels always show.
+void addRoundXTicks(SpeedChartLayout& L) {
     double span = L.xLogHi - L.xLogLo;
-    // Narrow ranges label every integer mantissa 1..9, wider ones fewer.
     std::vector<double> mantissas{1, 2, 5};
     if (span < 1.5) mantissas = {1, 2, 3, 5};
     if (span < 0.7) {
@@ -354,18 +350,26 @@ void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> ro
             L.xTicks.push_back({v, xPixelOf(L, lv), (!wide || m == 1.0) ? chartTickText(v) : ""});
         }
     }
-    std::vector<double> candidates = xTickCandidates(L);
-    auto nearestCandidate = [&](double lv, double lo, double hi) {
-        double best = 0.0, bestD = 1e300;
-        for (double v : candidates) {
-            double d = std::abs(std::log10(v) - lv);
-            if (v >= lo && v < hi && d < bestD) {
-                best = v;
-                bestD = d;
-            }
+}
+
+// The candidate in [lo, hi) nearest log time lv (log10 units); 0 when none lies there.
+double nearestXCandidate(const std::vector<double>& candidates, double lv, double lo, double hi) {
+    double best = 0.0, bestD = 1e300;
+    for (double v : candidates) {
+        double d = std::abs(std::log10(v) - lv);
+        if (v >= lo && v < hi && d < bestD) {
+            best = v;
+            bestD = d;
         }
-        return best;
-    };
+    }
+    return best;
+}
+
+// Every dot readable off the axis: a labelled tick in its decade, and one within a factor of
+// SPEED_CHART_TICK_REACH (speed_chart.h) of its time, labelling the nearest candidate where
+// there is none.
+void labelEveryDotsTime(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTiming timing,
+                        const std::vector<double>& candidates) {
     for (const BenchRow& r : rows) {
         double lv = std::clamp(safeLog(chartMs(r, timing)), L.xLogLo, L.xLogHi);
         double decade = std::pow(10.0, std::floor(lv));
@@ -374,13 +378,19 @@ void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> ro
             decadeLabelled |= !t.text.empty() && t.value >= decade && t.value < 10.0 * decade;
         }
         if (!decadeLabelled) {
-            if (double v = nearestCandidate(lv, decade, 10.0 * decade); v > 0.0) labelXTick(L, v);
+            if (double v = nearestXCandidate(candidates, lv, decade, 10.0 * decade); v > 0.0) {
+                labelXTick(L, v);
+            }
         }
         if (!labelledTickNear(L, lv, std::log10(SPEED_CHART_TICK_REACH))) {
-            if (double v = nearestCandidate(lv, 0.0, 1e300); v > 0.0) labelXTick(L, v);
+            if (double v = nearestXCandidate(candidates, lv, 0.0, 1e300); v > 0.0) labelXTick(L, v);
         }
     }
-    // At least 3 labels: the candidate farthest from every label, until there are.
+}
+
+// At least 3 labels on the x axis (speed_chart.h, SPEED_CHART_TICK_REACH): the candidate
+// farthest from every label is labelled until there are, or every candidate is.
+void labelAtLeastThree(SpeedChartLayout& L, const std::vector<double>& candidates) {
     auto labelCount = [&] {
         return std::count_if(L.xTicks.begin(), L.xTicks.end(),
                              [](const ChartTick& t) { return !t.text.empty(); });
@@ -400,6 +410,17 @@ void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> ro
         if (bestD <= 1e-9) break;  // every candidate is labelled
         labelXTick(L, best);
     }
+}
+
+// The ticks of both axes: the x axis's round ticks (addRoundXTicks), then a labelled tick near
+// every dot's time (labelEveryDotsTime) and 3 labels at least (labelAtLeastThree), in order of
+// value; the y axis's every yStep from 0, all labelled.
+void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> rows,
+                 ChartTiming timing) {
+    addRoundXTicks(L);
+    std::vector<double> candidates = xTickCandidates(L);
+    labelEveryDotsTime(L, rows, timing, candidates);
+    labelAtLeastThree(L, candidates);
     std::sort(L.xTicks.begin(), L.xTicks.end(),
               [](const ChartTick& a, const ChartTick& b) { return a.value < b.value; });
     for (double v = 0.0; v <= L.yHi + 0.5 * yStep; v += yStep) {
