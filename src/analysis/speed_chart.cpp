@@ -8,6 +8,7 @@
 #include "analysis/bench_report.h"
 #include "analysis/chart_axes.h"
 #include "analysis/pareto.h"
+#include "analysis/speed_chart_labels.h"
 #include "draw/canvas.h"
 #include "draw/text_layout.h"
 #include "kernel/methods.h"
@@ -34,22 +35,11 @@ Fonts fontsFor(float s, float minPx) {
             px(13.0f)};
 }
 
-float overlapArea(const Rect& a, const Rect& b) {
-    Rect o = a.intersect(b);
-    return o.w * o.h;
-}
-
-// Area of r outside `inside`.
-float outsideArea(const Rect& r, const Rect& inside) { return r.w * r.h - overlapArea(r, inside); }
-
 double safeLog(double ms) { return std::log10(std::max(ms, 1e-6)); }
 
 // The bar's stroke width and its end ticks' half height (drawErrorBars draws them).
 float barStroke(float s) { return std::max(1.0f, 1.25f * s); }
 float barTickHalf(float s) { return 3.0f * s; }
-
-// Where a label's leader starts drawing: farther than this from its dot's centre.
-float leaderFrom(const SpeedChartLayout& L) { return 2.5f * L.dotRadius; }
 
 }  // namespace
 
@@ -329,15 +319,11 @@ std::vector<double> xTickCandidates(const SpeedChartLayout& L) {
     return out;
 }
 
-// The ticks of both axes. x ticks at m x 10^k: m = 1, 2, 5 (denser on a narrow axis, only the
-// 1s labelled on a wide one), so that a few labels always show. Then every dot's time gets a
-// labelled tick within a factor of SPEED_CHART_TICK_REACH (speed_chart.h), every decade holding
-// a dot a label of its own, and the axis 3 labels at least.
-
-void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> rows,
-                 ChartTiming timing) {
+// The x axis's round ticks at m x 10^k: m = 1, 2, 5 (1, 2, 3, 5 under 1.5 decades, every integer
+// mantissa under 0.7), all labelled but on a wide axis (over 3 decades), where only the 1s are,
+// so that a few labels always show.
+void addRoundXTicks(SpeedChartLayout& L) {
     double span = L.xLogHi - L.xLogLo;
-    // Narrow ranges label every integer mantissa 1..9, wider ones fewer.
     std::vector<double> mantissas{1, 2, 5};
     if (span < 1.5) mantissas = {1, 2, 3, 5};
     if (span < 0.7) {
@@ -354,18 +340,26 @@ void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> ro
             L.xTicks.push_back({v, xPixelOf(L, lv), (!wide || m == 1.0) ? chartTickText(v) : ""});
         }
     }
-    std::vector<double> candidates = xTickCandidates(L);
-    auto nearestCandidate = [&](double lv, double lo, double hi) {
-        double best = 0.0, bestD = 1e300;
-        for (double v : candidates) {
-            double d = std::abs(std::log10(v) - lv);
-            if (v >= lo && v < hi && d < bestD) {
-                best = v;
-                bestD = d;
-            }
+}
+
+// The candidate in [lo, hi) nearest log time lv (log10 units); 0 when none lies there.
+double nearestXCandidate(const std::vector<double>& candidates, double lv, double lo, double hi) {
+    double best = 0.0, bestD = 1e300;
+    for (double v : candidates) {
+        double d = std::abs(std::log10(v) - lv);
+        if (v >= lo && v < hi && d < bestD) {
+            best = v;
+            bestD = d;
         }
-        return best;
-    };
+    }
+    return best;
+}
+
+// Every dot readable off the axis: a labelled tick in its decade, and one within a factor of
+// SPEED_CHART_TICK_REACH (speed_chart.h) of its time, labelling the nearest candidate where
+// there is none.
+void labelEveryDotsTime(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTiming timing,
+                        const std::vector<double>& candidates) {
     for (const BenchRow& r : rows) {
         double lv = std::clamp(safeLog(chartMs(r, timing)), L.xLogLo, L.xLogHi);
         double decade = std::pow(10.0, std::floor(lv));
@@ -374,13 +368,19 @@ void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> ro
             decadeLabelled |= !t.text.empty() && t.value >= decade && t.value < 10.0 * decade;
         }
         if (!decadeLabelled) {
-            if (double v = nearestCandidate(lv, decade, 10.0 * decade); v > 0.0) labelXTick(L, v);
+            if (double v = nearestXCandidate(candidates, lv, decade, 10.0 * decade); v > 0.0) {
+                labelXTick(L, v);
+            }
         }
         if (!labelledTickNear(L, lv, std::log10(SPEED_CHART_TICK_REACH))) {
-            if (double v = nearestCandidate(lv, 0.0, 1e300); v > 0.0) labelXTick(L, v);
+            if (double v = nearestXCandidate(candidates, lv, 0.0, 1e300); v > 0.0) labelXTick(L, v);
         }
     }
-    // At least 3 labels: the candidate farthest from every label, until there are.
+}
+
+// At least 3 labels on the x axis (speed_chart.h, SPEED_CHART_TICK_REACH): the candidate
+// farthest from every label is labelled until there are, or every candidate is.
+void labelAtLeastThree(SpeedChartLayout& L, const std::vector<double>& candidates) {
     auto labelCount = [&] {
         return std::count_if(L.xTicks.begin(), L.xTicks.end(),
                              [](const ChartTick& t) { return !t.text.empty(); });
@@ -400,6 +400,17 @@ void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> ro
         if (bestD <= 1e-9) break;  // every candidate is labelled
         labelXTick(L, best);
     }
+}
+
+// The ticks of both axes: the x axis's round ticks (addRoundXTicks), then a labelled tick near
+// every dot's time (labelEveryDotsTime) and 3 labels at least (labelAtLeastThree), in order of
+// value; the y axis's every yStep from 0, all labelled.
+void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> rows,
+                 ChartTiming timing) {
+    addRoundXTicks(L);
+    std::vector<double> candidates = xTickCandidates(L);
+    labelEveryDotsTime(L, rows, timing, candidates);
+    labelAtLeastThree(L, candidates);
     std::sort(L.xTicks.begin(), L.xTicks.end(),
               [](const ChartTick& a, const ChartTick& b) { return a.value < b.value; });
     for (double v = 0.0; v <= L.yHi + 0.5 * yStep; v += yStep) {
@@ -421,157 +432,6 @@ void layoutDots(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTiming
         frontPoints.emplace_back(chartMs(r, timing), chartAccuracy(r, accuracy));
     }
     L.front = paretoFront(frontPoints, PARETO_ERROR_TOLERANCE);
-}
-
-// The order labels are placed in: the front's first, then the kept rows', then the rest.
-std::vector<size_t> labelOrder(const std::vector<size_t>& front,
-                               const std::vector<bool>& needLabel) {
-    std::vector<size_t> order = front;
-    for (bool needed : {true, false}) {
-        for (size_t k = 0; k < needLabel.size(); ++k) {
-            bool onFront = std::find(front.begin(), front.end(), k) != front.end();
-            if (!onFront && needLabel[k] == needed) order.push_back(k);
-        }
-    }
-    return order;
-}
-
-// The distance from a box to a point (0 inside it), pixels.
-float boxDistance(const Rect& box, glm::vec2 p) {
-    return glm::length(glm::clamp(p, box.position(), box.position() + box.size()) - p);
-}
-
-// The distance from point c to the segment a-b, pixels.
-float leaderDotDistance(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
-    glm::vec2 ab = b - a;
-    float len2 = glm::dot(ab, ab);
-    float t = len2 > 0.0f ? std::clamp(glm::dot(c - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
-    return glm::length(a + t * ab - c);
-}
-
-struct LabelSpot {
-    Rect box;
-    float fault = 1e30f;  // what the spot covers or misleads: 0 for a clean spot
-};
-
-// What a label at `box` for row k does wrong, 0 when nothing: it leaves the plot, covers a
-// placed label, a dot or an error bar (a bar through a name strikes it out), or a reader could
-// take it for another dot's: it is not nearer its own dot than any other, unless its leader
-// crosses no other dot and no other dot lies next to it (within leaderFrom).
-float labelFault(const SpeedChartLayout& L, size_t k, const Rect& box,
-                 const std::vector<Rect>& placed) {
-    constexpr float HARD = 1000.0f;
-    glm::vec2 p = L.points[k];
-    float fault = HARD * outsideArea(box, L.plot);
-    for (const Rect& o : placed) fault += HARD * overlapArea(box, o);
-    float own = boxDistance(box, p);
-    glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
-    bool leader = own > leaderFrom(L);
-    bool nearestOwn = true, leaderClear = leader;
-    for (size_t j = 0; j < L.points.size(); ++j) {
-        fault += HARD * overlapArea(box, speedChartBarBox(L, j));
-        if (j == k) continue;
-        fault += HARD * overlapArea(box, speedChartDotBox(L, j));
-        glm::vec2 q = L.points[j];
-        // (Dots whose discs overlap have no nearer one: a label of either names both.)
-        if (glm::length(q - p) < 2.0f * L.dotRadius) continue;
-        float other = boxDistance(box, q);
-        nearestOwn = nearestOwn && other > own;
-        leaderClear = leaderClear && other > leaderFrom(L) &&
-                      leaderDotDistance(p, nearest, q) >= L.dotRadius + 1.0f;
-    }
-    if (!nearestOwn && !leaderClear) fault += HARD;
-    return fault;
-}
-
-// The spot for row k's label of size t: around its dot in 16 directions, nearest first; the
-// first ring that has a clean spot (labelFault 0) gives its nearest one. A label the chart must
-// show looks farther out (with a leader) and otherwise settles on the spot of least fault plus
-// distance; any other stays within leader-free reach of its dot.
-LabelSpot bestLabelSpot(const SpeedChartLayout& L, size_t k, glm::vec2 t, bool mustShow,
-                        const std::vector<Rect>& placed) {
-    glm::vec2 p = L.points[k];
-    LabelSpot best;
-    float bestCost = 1e30f;
-    float step = L.dotRadius + 3.0f * L.scale;
-    for (float ring : {1.0f, 1.5f, 2.1f, 2.8f, 3.6f, 4.6f, 5.8f, 7.2f, 9.0f, 11.5f, 14.5f, 18.0f}) {
-        float r = step * ring;
-        if (!mustShow && r > leaderFrom(L)) break;
-        for (int i = 0; i < 16; ++i) {
-            float a = static_cast<float>(i) * 0.39269908f;  // 22.5 degrees
-            glm::vec2 d(std::cos(a), std::sin(a));
-            glm::vec2 at = p + r * d;
-            // The box's side (or corner) nearest the dot sits at `at`.
-            float x = d.x > 0.38f ? at.x : d.x < -0.38f ? at.x - t.x : at.x - 0.5f * t.x;
-            float y = d.y > 0.38f ? at.y : d.y < -0.38f ? at.y - t.y : at.y - 0.5f * t.y;
-            Rect box{std::round(x), std::round(y), t.x, t.y};
-            float fault = labelFault(L, k, box, placed);
-            float cost = fault + boxDistance(box, p) / L.dotRadius;
-            if (cost < bestCost) {
-                bestCost = cost;
-                best = {box, fault};
-            }
-        }
-        if (best.fault < 0.5f) return best;  // a clean spot in this ring: none farther is nearer
-    }
-    if (!mustShow) return best;
-    // A crowd left no clean spot within the rings: the nearest clean spot anywhere in the plot,
-    // on a grid a few pixels fine (with its leader).
-    float grid = std::max(3.0f, std::round(4.0f * L.scale));
-    for (float y = L.plot.y; y + t.y <= L.plot.bottom(); y += grid) {
-        for (float x = L.plot.x; x + t.x <= L.plot.right(); x += grid) {
-            Rect box{std::round(x), std::round(y), t.x, t.y};
-            float cost = boxDistance(box, p) / L.dotRadius;
-            if (best.fault < 0.5f && cost >= bestCost) continue;
-            float fault = labelFault(L, k, box, placed);
-            if (fault + cost < bestCost) {
-                bestCost = fault + cost;
-                best = {box, fault};
-            }
-        }
-    }
-    return best;
-}
-
-// Greedy label placement in `order`; each at bestLabelSpot. A label that finds no clean spot is
-// left out, unless the front or the caller needs it: a crowd of overlapping names reads as noise
-// on a projector, and a name far from its dot is read as another dot's; the dot keeps its
-// method's colour, which the legend names. Returns the needed labels that found no clean spot.
-std::vector<size_t> placeLabelsInOrder(SpeedChartLayout& L, const std::vector<bool>& needLabel,
-                                       bool keptLabelsOnly, const std::vector<size_t>& order) {
-    L.labels.assign(L.points.size(), Rect{});
-    L.labelShown.assign(L.points.size(), false);
-    std::vector<Rect> placed;
-    std::vector<size_t> faulty;
-    for (size_t k : order) {
-        if (keptLabelsOnly && !needLabel[k]) continue;
-        glm::vec2 t = measureText(FontFace::Sans, L.labelPx, L.labelTexts[k]);
-        bool needed = k < needLabel.size() && needLabel[k];
-        LabelSpot spot = bestLabelSpot(L, k, t, needed, placed);
-        if (spot.fault > 0.5f && !needed) continue;
-        if (spot.fault > 0.5f) faulty.push_back(k);
-        L.labels[k] = spot.box;
-        L.labelShown[k] = true;
-        placed.push_back(spot.box);
-    }
-    return faulty;
-}
-
-// The front's labels first, then the kept rows', then the rest; where a needed label found no
-// clean spot, once more with those first (a crowd's few clean spots go to whoever comes first),
-// keeping the placement that leaves fewer such labels.
-void placeLabels(SpeedChartLayout& L, const std::vector<bool>& needLabel, bool keptLabelsOnly) {
-    std::vector<size_t> order = labelOrder(L.front, needLabel);
-    std::vector<size_t> faulty = placeLabelsInOrder(L, needLabel, keptLabelsOnly, order);
-    if (faulty.empty()) return;
-    std::vector<size_t> retry = faulty;
-    for (size_t k : order) {
-        if (std::find(faulty.begin(), faulty.end(), k) == faulty.end()) retry.push_back(k);
-    }
-    SpeedChartLayout first = L;
-    if (placeLabelsInOrder(L, needLabel, keptLabelsOnly, retry).size() >= faulty.size()) {
-        L = std::move(first);
-    }
 }
 
 }  // namespace
@@ -612,7 +472,7 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     for (size_t k : keepLabels) {
         if (k < rows.size()) needLabel[k] = true;
     }
-    placeLabels(L, needLabel, keptLabelsOnly);
+    placeSpeedChartLabels(L, needLabel, keptLabelsOnly);
     return L;
 }
 
@@ -635,7 +495,7 @@ std::optional<ChartLeader> speedChartLeader(const SpeedChartLayout& L, size_t ro
     const Rect& box = L.labels[row];
     glm::vec2 p = L.points[row];
     glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
-    if (glm::length(nearest - p) <= leaderFrom(L)) return std::nullopt;
+    if (glm::length(nearest - p) <= speedChartLeaderReach(L)) return std::nullopt;
     return ChartLeader{p, nearest};
 }
 

@@ -10,7 +10,8 @@
 // Drawn with the overlay's Canvas (src/draw/canvas.h) into an offscreen target.
 //
 // The layout is computed apart from the drawing (no GL), so where things go can be tested
-// without reading pixels. Coordinates are the canvas's: pixels, origin top-left, y down.
+// without reading pixels; the dots' names are placed by speed_chart_labels.h. Coordinates are the
+// canvas's: pixels, origin top-left, y down.
 #pragma once
 
 #include <cstdint>

@@ -573,26 +573,38 @@ void explainPoisson(const Trace& tr, Steps& out) {
                 "banding for noise.");
 }
 
-// pcss (Fernando 2005, see pcf_kernel.h): the search disk's taps, the penumbra from the mean
-// blocker depth, then the filter disk's taps; every number is the kernel's (tr.pcss, tr.taps).
-void explainPcss(const Trace& tr, Steps& out) {
-    const PcfPcssEstimate& e = tr.pcss;
-    float angle = std::atan2(tr.params.rotation.y, tr.params.rotation.x) * 57.2957795f;
-    std::ostringstream s;
-    // A spot's perspective map: the kernel's distances along the light's axis (pcf_kernel.h).
-    float nearD = tr.params.depthNear;
-    float farD = tr.params.depthFar;
-    bool spot = nearD > 0.0f;
-    float dr = spot ? pcfPcssLinearDepth(tr.ref, nearD, farD) : tr.ref;
-    if (spot) {
+// The distances pcss compares (pcf_kernel.h): a spot's perspective map stores depth, not the
+// distance along the light's axis, so its receiver and blockers are converted first; a
+// directional light's map depth is the distance already.
+struct PcssDistances {
+    float nearD = 0.0f, farD = 0.0f;  // the spot's near and far planes (0: directional)
+    bool spot = false;
+    float receiver = 0.0f;  // d_receiver: the ref as a distance
+    float of(float depth) const { return spot ? pcfPcssLinearDepth(depth, nearD, farD) : depth; }
+};
+
+PcssDistances pcssDistances(const Trace& tr) {
+    PcssDistances d;
+    d.nearD = tr.params.depthNear;
+    d.farD = tr.params.depthFar;
+    d.spot = d.nearD > 0.0f;
+    d.receiver = d.of(tr.ref);
+    return d;
+}
+
+// Why the search disk has its radius: the farthest a blocker can be and still hide some of the
+// light (Fernando 2005), for a spot's perspective map or a directional light's.
+void pcssSearchReach(const Trace& tr, const PcssDistances& d, std::ostringstream& s) {
+    if (d.spot) {
         s << "The spot light has a size: S = " << num(tr.params.penumbraScale)
           << " (its width times texels per scene unit at distance 1). The map's depth is not "
              "the distance: d = n * f / (f - depth * (f - n)) with near n = "
-          << num(nearD) << ", far f = " << num(farD) << ", so the receiver's ref " << num(tr.ref)
-          << " lies at d_receiver = " << num(dr)
+          << num(d.nearD) << ", far f = " << num(d.farD) << ", so the receiver's ref "
+          << num(tr.ref) << " lies at d_receiver = " << num(d.receiver)
           << ". A blocker further than S / 2 * (d_receiver - n) / (d_receiver * n) = "
-          << num(tr.params.penumbraScale) << " / 2 * (" << num(dr) << " - " << num(nearD) << ") / ("
-          << num(dr) << " * " << num(nearD) << ") texels away cannot hide any of the light";
+          << num(tr.params.penumbraScale) << " / 2 * (" << num(d.receiver) << " - " << num(d.nearD)
+          << ") / (" << num(d.receiver) << " * " << num(d.nearD)
+          << ") texels away cannot hide any of the light";
     } else {
         s << "The light has a size: S = " << num(tr.params.penumbraScale)
           << " texels of penumbra per unit of light depth between receiver and blocker. A "
@@ -600,40 +612,42 @@ void explainPcss(const Trace& tr, Steps& out) {
           << num(tr.ref) << " * " << num(tr.params.penumbraScale)
           << " / 2 texels away cannot hide any of the light";
     }
+}
+
+// The blocker search's taps, one line each (the first `searchTaps` reads of the trace). Returns
+// the sum of the blockers' distances, in read order as the kernel adds them.
+float pcssSearchTaps(const Trace& tr, const PcssDistances& d, size_t searchTaps,
+                     std::ostringstream& s) {
+    const PcfPcssEstimate& e = tr.pcss;
+    float angle = std::atan2(tr.params.rotation.y, tr.params.rotation.x) * 57.2957795f;
     s << ", so 16 points of the Poisson disk, radius " << num(e.searchRadius)
       << " texels (kept within [" << num(PCF_PCSS_MIN_RADIUS) << ", " << num(PCF_PCSS_MAX_RADIUS)
       << "]), rotated by " << num(angle)
       << " degrees, read the nearest texel; a depth below ref is a blocker:";
     float sum = 0.0f;
-    size_t searchTaps = std::min(tr.taps.size(), static_cast<size_t>(PCF_PCSS_TAPS));
     for (size_t k = 0; k < searchTaps; ++k) {
         const TapRecord& t = tr.taps[k];
         vec2 off = pcfPoissonOffset(static_cast<int>(k), e.searchRadius, tr.params.rotation);
         bool blocks = t.lit < 0.5f;
-        if (blocks) sum += spot ? pcfPcssLinearDepth(t.depth, nearD, farD) : t.depth;
+        if (blocks) sum += d.of(t.depth);
         s << "\n  offset " << pair(off) << " -> texel " << pair(t.texel) << " depth "
           << num(t.depth) << (blocks ? " < " : " >= ") << num(t.ref)
           << (blocks ? ": blocker" : ": not a blocker");
     }
-    if (e.blockers == 0) {
-        s << "\nNo blocker: the point sees the whole light.";
-        addStep(out, K::BlockerSearch, s.str());
-        addStep(out, K::Result, "visibility = 1, without filtering (no blocker, no penumbra).");
-        return;
-    }
-    s << "\n"
-      << e.blockers
-      << (spot ? " blockers, mean distance d_blocker = "
-               : " blockers, mean depth "
-                 "d_blocker = ")
-      << num(sum) << " / " << e.blockers << " = " << num(e.blockerDepth) << ".";
-    addStep(out, K::BlockerSearch, s.str());
+    return sum;
+}
+
+// The penumbra's width from the mean blocker by similar triangles (Fernando 2005), and the
+// filter disk's radius it gives.
+void stepPcssPenumbra(const Trace& tr, const PcssDistances& d, Steps& out) {
+    const PcfPcssEstimate& e = tr.pcss;
     std::ostringstream w;
-    if (spot) {
+    if (d.spot) {
         w << "Similar triangles (Fernando 2005), the light at the spot: the penumbra is "
              "S * (d_receiver - d_blocker) / (d_blocker * d_receiver) = "
-          << num(tr.params.penumbraScale) << " * (" << num(dr) << " - " << num(e.blockerDepth)
-          << ") / (" << num(e.blockerDepth) << " * " << num(dr) << ")";
+          << num(tr.params.penumbraScale) << " * (" << num(d.receiver) << " - "
+          << num(e.blockerDepth) << ") / (" << num(e.blockerDepth) << " * " << num(d.receiver)
+          << ")";
     } else {
         w << "Similar triangles (Fernando 2005), the light at infinity: the penumbra is "
              "(ref - d_blocker) * S = ("
@@ -644,6 +658,11 @@ void explainPcss(const Trace& tr, Steps& out) {
       << num(PCF_PCSS_MAX_RADIUS) << "]). Near its blocker a receiver gets a narrow, hard "
       << "penumbra; far from it a wide, soft one.";
     addStep(out, K::PenumbraWidth, w.str());
+}
+
+// The filter disk's taps (the reads after the search's) and the visibility they count.
+void stepPcssFilter(const Trace& tr, size_t searchTaps, Steps& out) {
+    const PcfPcssEstimate& e = tr.pcss;
     std::ostringstream f;
     f << "16 points of the same disk, radius " << num(e.filterRadius)
       << " texels, each compared with the nearest texel:";
@@ -658,6 +677,32 @@ void explainPcss(const Trace& tr, Steps& out) {
     addStep(out, K::DiskPoints, f.str());
     addStep(out, K::Result,
             "visibility = " + std::to_string(lit) + " lit / 16 = " + num(tr.visibility) + ".");
+}
+
+// pcss (Fernando 2005, see pcf_kernel.h): the search disk's taps, the penumbra from the mean
+// blocker depth, then the filter disk's taps; every number is the kernel's (tr.pcss, tr.taps).
+void explainPcss(const Trace& tr, Steps& out) {
+    const PcfPcssEstimate& e = tr.pcss;
+    PcssDistances d = pcssDistances(tr);
+    std::ostringstream s;
+    pcssSearchReach(tr, d, s);
+    size_t searchTaps = std::min(tr.taps.size(), static_cast<size_t>(PCF_PCSS_TAPS));
+    float sum = pcssSearchTaps(tr, d, searchTaps, s);
+    if (e.blockers == 0) {
+        s << "\nNo blocker: the point sees the whole light.";
+        addStep(out, K::BlockerSearch, s.str());
+        addStep(out, K::Result, "visibility = 1, without filtering (no blocker, no penumbra).");
+        return;
+    }
+    s << "\n"
+      << e.blockers
+      << (d.spot ? " blockers, mean distance d_blocker = "
+                 : " blockers, mean depth "
+                   "d_blocker = ")
+      << num(sum) << " / " << e.blockers << " = " << num(e.blockerDepth) << ".";
+    addStep(out, K::BlockerSearch, s.str());
+    stepPcssPenumbra(tr, d, out);
+    stepPcssFilter(tr, searchTaps, out);
 }
 
 // Issue 10: what an 8-bit texture unit does to this lookup.

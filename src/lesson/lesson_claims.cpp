@@ -329,76 +329,102 @@ bool compare(double a, const std::string& op, double b, double tolerance) {
     return std::fabs(a - b) <= tolerance;
 }
 
-}  // namespace
+// Every claim says what decided it when the caller asks (`why` not null).
+void tellWhy(std::string* why, std::string s) {
+    if (why) *why = std::move(s);
+}
 
-bool claimHolds(const StepClaim& claim, const Trace& trace, const StepContext& ctx,
-                const ClaimWorld& world, std::string* why) {
-    const ParsedClaim& c = *claim.parsed;
-    auto say = [&](std::string s) {
-        if (why) *why = std::move(s);
-    };
-    switch (c.kind) {
-        case ParsedClaim::Lit:
-            say("visibility " + numberText(trace.visibility));
-            return litHolds(trace);
-        case ParsedClaim::Shadowed:
-            say("visibility " + numberText(trace.visibility));
-            return trace.visibility == 0.0f;
-        case ParsedClaim::Penumbra:
-            say("visibility " + numberText(trace.visibility));
-            return trace.visibility > 0.0f && trace.visibility < 1.0f;
-        case ParsedClaim::FailingNearer:
-            return failingNearer(trace, why);
-        case ParsedClaim::Bits: {
-            std::string got;
-            for (const TapRecord& tap : trace.taps) got += tap.lit >= 0.5f ? '1' : '0';
-            say("bits " + got);
-            return got == c.bits;
-        }
-        case ParsedClaim::OnGround:
-            say("the point is not on a plane");
-            return world.onPlane;
-        case ParsedClaim::Flickers: {
-            if (!world.flickerCurve) return true;
-            std::variant<std::vector<float>, std::string> curve = world.flickerCurve();
-            if (auto* problem = std::get_if<std::string>(&curve)) {
-                say(*problem);
-                return false;
-            }
-            return curveFlickers(std::get<std::vector<float>>(curve), why);
-        }
-        case ParsedClaim::Chart: {
-            if (!world.chartLess) return true;
-            std::variant<bool, std::string> r = world.chartLess(c.chartA, c.chartB, c.metric);
-            if (auto* problem = std::get_if<std::string>(&r)) {
-                say(*problem);
-                return false;
-            }
-            say(c.chartA + "'s " + c.metric + " is not less than " + c.chartB + "'s");
-            return std::get<bool>(r);
-        }
-        case ParsedClaim::ChartFact: {
-            if (!world.chartFact) return true;
-            std::string factWhy;
-            bool holds = world.chartFact(c.fact, &factWhy);
-            say(factWhy);
-            return holds;
-        }
-        case ParsedClaim::Compare:
-            break;
+// bits: every read's comparison bit, in read order, against the claim's string.
+bool bitsHold(const ParsedClaim& c, const Trace& trace, std::string* why) {
+    std::string got;
+    for (const TapRecord& tap : trace.taps) got += tap.lit >= 0.5f ? '1' : '0';
+    tellWhy(why, "bits " + got);
+    return got == c.bits;
+}
+
+// flickers: decided on the step's flicker curve, which the world computes (held without one).
+bool flickerClaimHolds(const ClaimWorld& world, std::string* why) {
+    if (!world.flickerCurve) return true;
+    std::variant<std::vector<float>, std::string> curve = world.flickerCurve();
+    if (auto* problem = std::get_if<std::string>(&curve)) {
+        tellWhy(why, *problem);
+        return false;
     }
+    return curveFlickers(std::get<std::vector<float>>(curve), why);
+}
+
+// chart: A faster (more accurate) than B, read off the step's chart by the world (held without
+// one).
+bool chartOrderHolds(const ParsedClaim& c, const ClaimWorld& world, std::string* why) {
+    if (!world.chartLess) return true;
+    std::variant<bool, std::string> r = world.chartLess(c.chartA, c.chartB, c.metric);
+    if (auto* problem = std::get_if<std::string>(&r)) {
+        tellWhy(why, *problem);
+        return false;
+    }
+    tellWhy(why, c.chartA + "'s " + c.metric + " is not less than " + c.chartB + "'s");
+    return std::get<bool>(r);
+}
+
+// chart: any other fact, decided by the world (held without one).
+bool chartFactClaimHolds(const ParsedClaim& c, const ClaimWorld& world, std::string* why) {
+    if (!world.chartFact) return true;
+    std::string factWhy;
+    bool holds = world.chartFact(c.fact, &factWhy);
+    tellWhy(why, factWhy);
+    return holds;
+}
+
+// A comparison of two expressions over the step's placeholders; false where a placeholder has
+// no value (an index past the trace's reads).
+bool comparisonHolds(const ParsedClaim& c, const Trace& trace, const StepContext& ctx,
+                     std::string* why) {
     Lookup values = [&](const std::string& name) { return placeholderNumber(name, trace, ctx); };
     std::optional<double> a = Evaluator(c.lhs, values).run();
     std::optional<double> b = Evaluator(c.rhs, values).run();
     if (!a || !b) {
-        say("a placeholder has no value here (an index past the trace's reads)");
+        tellWhy(why, "a placeholder has no value here (an index past the trace's reads)");
         return false;
     }
     bool holds = compare(*a, c.op, *b, c.tolerance);
     std::string got = numberText(*a) + " " + c.op + " " + numberText(*b);
     if (c.op == "~") got += " +- " + numberText(c.tolerance);
-    say((holds ? "" : "not ") + got);
+    tellWhy(why, (holds ? "" : "not ") + got);
     return holds;
+}
+
+}  // namespace
+
+bool claimHolds(const StepClaim& claim, const Trace& trace, const StepContext& ctx,
+                const ClaimWorld& world, std::string* why) {
+    const ParsedClaim& c = *claim.parsed;
+    switch (c.kind) {
+        case ParsedClaim::Lit:
+            tellWhy(why, "visibility " + numberText(trace.visibility));
+            return litHolds(trace);
+        case ParsedClaim::Shadowed:
+            tellWhy(why, "visibility " + numberText(trace.visibility));
+            return trace.visibility == 0.0f;
+        case ParsedClaim::Penumbra:
+            tellWhy(why, "visibility " + numberText(trace.visibility));
+            return trace.visibility > 0.0f && trace.visibility < 1.0f;
+        case ParsedClaim::FailingNearer:
+            return failingNearer(trace, why);
+        case ParsedClaim::Bits:
+            return bitsHold(c, trace, why);
+        case ParsedClaim::OnGround:
+            tellWhy(why, "the point is not on a plane");
+            return world.onPlane;
+        case ParsedClaim::Flickers:
+            return flickerClaimHolds(world, why);
+        case ParsedClaim::Chart:
+            return chartOrderHolds(c, world, why);
+        case ParsedClaim::ChartFact:
+            return chartFactClaimHolds(c, world, why);
+        case ParsedClaim::Compare:
+            break;
+    }
+    return comparisonHolds(c, trace, ctx, why);
 }
 
 }  // namespace pcf

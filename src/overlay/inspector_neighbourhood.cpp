@@ -1,6 +1,7 @@
 // inspector_neighbourhood.cpp: the magnified texel neighbourhood: where its cells go (the
-// inspector panel's one layout, panelLayout) and what each cell shows (fill, bit, depth, weight,
-// the fetches' marks, the lookup point, the fx and fy brackets).
+// inspector panel's one layout, panelLayout) and what each cell shows (fill, weight bar, the
+// fetches' marks, the lookup point, the fx and fy brackets); the numbers in the cells (bit,
+// depth, weight) are inspector_cell_numbers.cpp's.
 #include "overlay/inspector_plan.h"
 
 namespace pcf::inspector_detail {
@@ -31,7 +32,6 @@ constexpr float RING_CORE_MIN_PX = 2.0f, RING_CORE = 0.4f;    // the dot inside 
 constexpr float POINT_MIN_PX = 4.0f, POINT_PER_CELL = 0.05f;  // the lookup point's radius
 constexpr float POINT_OUTLINE_PX = 1.5f;                      // its dark outline
 constexpr float HIGHLIGHT_EXTRA_PX = 2.0f;  // the highlighted fetch's mark grows by this
-constexpr float MARK_CLEARANCE_PX = 2.0f;   // numbers keep this far from any mark
 constexpr float BRACKET_MIN_PX = 2.0f;      // the fx/fy brackets' line width, at least
 constexpr float BRACKET_GAP_PX = 4.0f;      // the fx bracket below the cells
 constexpr float FY_BRACKET_GAP_PX = 5.0f;   // the fy bracket right of the cells
@@ -41,8 +41,7 @@ constexpr float FY_LABEL_GAP_PX = 3.0f;     // "fy" right of its bracket
 constexpr float INSET_SHARE = 0.3f;         // hw8: the inset's side, this share of the width
 constexpr float INSET_GAP_PX = 6.0f;        // between the fy lane and the inset
 
-// The number block's type sizes for a number size.
-float bitFor(float number) { return std::round(number * BIT_PER_NUMBER); }
+// The weight bar's height for a number size.
 float barFor(float number) { return std::max(BAR_MIN_PX, number * BAR_PER_NUMBER); }
 
 // The side of a cell for a number size: room for the block and, beside it, for the marks a cell
@@ -162,19 +161,21 @@ Grid gridOf(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, float
     return g;
 }
 
-const TapRecord* firstTapAt(const Trace& tr, glm::ivec2 texel) {
-    for (const TapRecord& tp : tr.taps) {
-        if (tp.texel == texel) return &tp;
-    }
-    return nullptr;
-}
-
 glm::vec2 viewPoint(const Grid& g, glm::vec2 texelPos) {
     return {g.area.x + (texelPos.x - static_cast<float>(g.view.origin.x)) * g.cell,
             g.area.y + (texelPos.y - static_cast<float>(g.view.origin.y)) * g.cell};
 }
 
 }  // namespace
+
+float bitFor(float number) { return std::round(number * BIT_PER_NUMBER); }
+
+const TapRecord* firstTapAt(const Trace& tr, glm::ivec2 texel) {
+    for (const TapRecord& tp : tr.taps) {
+        if (tp.texel == texel) return &tp;
+    }
+    return nullptr;
+}
 
 PanelLayout panelLayout(const InspectorLayout& l, const Trace& tr, const TypeSizes& t, int,
                         float reserve) {
@@ -189,43 +190,6 @@ PanelLayout panelLayout(const InspectorLayout& l, const Trace& tr, const TypeSiz
 }
 
 namespace {
-
-// Marks go first: they sit where the math puts them, and the numbers then find room beside them.
-// Their rects (clipped to the cells) are what the numbers avoid; their draw calls run after the
-// numbers', so that a mark is never hidden under a number's cell.
-// A point mark (a lookup dot, a hardware tap's ring, the lookup point) whose cell cannot hold its
-// numbers around it moves into a lane at that cell's edge (see planCellNumbers); it keeps its
-// true position in one axis and a tick in the cell's border band gives the other.
-struct PointMark {
-    glm::vec2 at;       // where it is drawn
-    glm::vec2 trueAt;   // where the math puts it
-    float half = 0.0f;  // its box: a square of this half side round `at`
-    std::string role;
-    Colour tickColour;
-    std::function<void(Canvas&, glm::vec2)> draw;
-    Rect rect() const { return {at.x - half, at.y - half, 2 * half, 2 * half}; }
-};
-
-struct CellMarks {
-    std::vector<Rect> rects;  // fixed marks: weight bars, gather outlines, ticks
-    std::vector<PointMark> points;
-    std::vector<std::function<void(Canvas&)>> ops;
-    void add(Planner& pl, const Rect& area, const Rect& r, const std::string& role) {
-        Rect clipped = r.intersect(area);
-        if (clipped.empty()) return;
-        rects.push_back(clipped);
-        pl.box(BoxKind::Mark, clipped, "inspector", role);
-    }
-    // Every mark's rect, the point marks where they are now, clipped to the cells.
-    std::vector<Rect> all(const Rect& area) const {
-        std::vector<Rect> out = rects;
-        for (const PointMark& p : points) {
-            Rect c = p.rect().intersect(area);
-            if (!c.empty()) out.push_back(c);
-        }
-        return out;
-    }
-};
 
 // Each cell's fill (its bit's colour), the clamped frame and the weight bar.
 void planCellFills(Planner& pl, const InspectorLayout& l, const Trace& tr, const Grid& g,
@@ -401,295 +365,6 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
                  c.circle(p, pr, POINT);
              }});
     }
-}
-
-// One line of a cell's number block.
-struct Item {
-    std::string text;
-    float size;
-    std::string role;
-};
-using Placed = std::vector<std::pair<Rect, const Item*>>;
-
-// A cell's whole block: bit (or a soft comparison's fraction), own ref, depth, weight.
-std::vector<Item> cellItems(const InspectorModel& m, const Grid& g, glm::ivec2 texel,
-                            const TapRecord* tap, bool inMap) {
-    const Trace& tr = *m.trace;
-    std::vector<Item> all;
-    // The bit; a soft comparison's fraction (bias soft) in its place.
-    bool soft = tap && tap->lit != 0.0f && tap->lit != 1.0f;
-    if (tap) {
-        all.push_back({soft               ? fixed(tap->lit, 2)
-                       : tap->lit >= 0.5f ? "1"
-                                          : "0",
-                       g.bit, "cell-bit"});
-    }
-    // The tap's own ref where the bias gave it one (receiver plane), under its bit.
-    bool ownRef = tap && tap->ref != tr.ref;
-    if (ownRef) all.push_back({"r " + fixed(tap->ref, 4), g.number, "cell-ref"});
-    if (inMap) {
-        float depth = m.map ? m.map->depth(texel.x, texel.y) : (tap ? tap->depth : 0.0f);
-        all.push_back({"d " + fixed(depth, 3), g.number, "cell-depth"});
-    }
-    if (tap) all.push_back({"w " + fixed(tr.weights.at(texel), 3), g.number, "cell-weight"});
-    return all;
-}
-
-// The blocks to try, most first: variants from whole to nothing (all, without depth, weight
-// alone), each at the cell's number size, then a few steps smaller down to the floor: a cell
-// crowded by marks keeps its depth in smaller type before it drops it.
-std::vector<std::vector<Item>> numberCandidates(const std::vector<Item>& all, bool tap,
-                                                bool hasDepth, const Grid& g, float numberFloor) {
-    std::vector<std::vector<Item>> variants{all};
-    if (tap && hasDepth) {
-        std::vector<Item> noDepth;
-        for (const Item& it : all) {
-            if (it.role != "cell-depth") noDepth.push_back(it);
-        }
-        variants.push_back(noDepth);
-    }
-    if (tap) variants.push_back({all.back()});
-    // The bit alone, where no number fits beside it: the comparison is what the cell is for.
-    if (tap) variants.push_back({all.front()});
-    variants.push_back({});
-    std::vector<std::vector<Item>> candidates;
-    for (const std::vector<Item>& items : variants) {
-        float size = g.number;
-        for (int step = 0; step < 4; ++step) {
-            std::vector<Item> scaled = items;
-            for (Item& it : scaled) it.size = it.size == g.bit ? bitFor(size) : size;
-            candidates.push_back(scaled);
-            float next = stepDown(size, numberFloor);
-            if (items.empty() || next >= size) break;
-            size = next;
-        }
-        // Last, the bit at the numbers' size (half a line less to find room for).
-        if (!items.empty() && items.front().role == "cell-bit") {
-            std::vector<Item> flat = candidates.back();
-            flat.front().size = flat.size() > 1 ? flat.back().size : numberFloor;
-            candidates.push_back(flat);
-        }
-    }
-    return candidates;
-}
-
-// The lines of a candidate, placed in `inner` clear of `cellMarks`: the block in one piece at
-// the first free spot, else its lines in order, top to bottom, each at the first height below
-// the last where it clears every mark (the lookup point in the middle of a cell then sits
-// between the bit and the depth, not on them). Empty: no room.
-Placed fitItems(const std::vector<Item>& items, const std::vector<Rect>& cellMarks,
-                const Rect& inner) {
-    Placed out;
-    auto clear = [&](const Rect& b) {
-        return std::none_of(cellMarks.begin(), cellMarks.end(),
-                            [&](const Rect& mk) { return overlaps(mk, b); });
-    };
-    float bw = 0, bh = 0;
-    for (const Item& it : items) {
-        bw = std::max(bw, measureText(FontFace::Mono, it.size, it.text).x);
-        bh += lineHeightOf(it.size);
-    }
-    if (bw > inner.w || bh > inner.h) return out;
-    float cx = inner.x + (inner.w - bw) * 0.5f, cy = inner.y + (inner.h - bh) * 0.5f;
-    float rx = inner.right() - bw, by = inner.bottom() - bh;
-    const glm::vec2 spots[] = {{cx, cy},      {cx, inner.y}, {cx, by},
-                               {inner.x, cy}, {rx, cy},      {inner.x, inner.y},
-                               {rx, inner.y}, {inner.x, by}, {rx, by}};
-    for (glm::vec2 s : spots) {
-        Rect blk{std::round(s.x), std::round(s.y), bw, bh};
-        if (!clear(blk)) continue;
-        float y = blk.y;
-        for (const Item& it : items) {
-            out.push_back({{blk.x, y, bw, lineHeightOf(it.size)}, &it});
-            y += lineHeightOf(it.size);
-        }
-        return out;
-    }
-    float y = inner.y, below = bh;
-    for (const Item& it : items) {
-        float w = measureText(FontFace::Mono, it.size, it.text).x;
-        float h = lineHeightOf(it.size);
-        below -= h;
-        const float xs[] = {inner.x + (inner.w - w) * 0.5f, inner.x, inner.right() - w};
-        bool found = false;
-        for (; y + h + below <= inner.bottom() + 0.01f && !found; y += 1.0f) {
-            for (float x : xs) {
-                Rect ln{std::round(x), std::round(y), w, h};
-                if (clear(ln)) {
-                    out.push_back({ln, &it});
-                    found = true;
-                    break;
-                }
-            }
-            if (found) break;
-        }
-        if (!found) return Placed{};
-        y += h;
-    }
-    return out;
-}
-
-// Lanes: which edges a moved mark hugs (x: -1 left, 1 right, 0 kept; y likewise); the bottom one
-// just above the weight bar. {0, 0}: where the math puts it.
-const glm::ivec2 MARK_LANES[] = {{0, 0},   {0, -1}, {-1, 0}, {1, 0}, {0, 1},
-                                 {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
-
-// Where a point mark of cell `r` goes in `lane`; `barTop`: the weight bar's top.
-glm::vec2 laneAt(const PointMark& pm, glm::ivec2 lane, const Rect& r, float barTop) {
-    glm::vec2 at = pm.trueAt;
-    if (lane == glm::ivec2(0)) return at;
-    for (int ax = 0; ax < 2; ++ax) {
-        float lo = (ax == 0 ? r.x : r.y) + pm.half;
-        float hi = (ax == 0 ? r.right() : barTop) - pm.half;
-        if (lane[ax] < 0) at[ax] = lo;
-        if (lane[ax] > 0) at[ax] = hi;
-        at[ax] = std::clamp(at[ax], lo, std::max(lo, hi));
-    }
-    return at;
-}
-
-// The ways to place a cell's `owned` point marks: each its own lane (two marks or fewer), else
-// all in one; nearest first, so that the marks move as little as they can (the first: none
-// moves).
-std::vector<std::vector<glm::ivec2>> laneWays(const CellMarks& cm, const std::vector<size_t>& owned,
-                                              const Rect& r, float barTop) {
-    std::vector<std::vector<glm::ivec2>> ways{{}};
-    if (owned.size() <= 2) {
-        for (size_t k = 0; k < owned.size(); ++k) {
-            std::vector<std::vector<glm::ivec2>> next;
-            for (const auto& w : ways) {
-                for (glm::ivec2 lane : MARK_LANES) {
-                    next.push_back(w);
-                    next.back().push_back(lane);
-                }
-            }
-            ways = std::move(next);
-        }
-    } else {
-        ways.clear();
-        for (glm::ivec2 lane : MARK_LANES) ways.emplace_back(owned.size(), lane);
-    }
-    auto travel = [&](const std::vector<glm::ivec2>& w) {
-        float d = 0.0f;
-        for (size_t k = 0; k < owned.size(); ++k) {
-            const PointMark& pm = cm.points[owned[k]];
-            d += glm::length(laneAt(pm, w[k], r, barTop) - pm.trueAt);
-        }
-        return d;
-    };
-    std::vector<float> travels;
-    for (const auto& w : ways) travels.push_back(travel(w));
-    std::vector<size_t> order(ways.size());
-    for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t x, size_t y) { return travels[x] < travels[y]; });
-    std::vector<std::vector<glm::ivec2>> sorted;
-    for (size_t k : order) sorted.push_back(ways[k]);
-    return sorted;
-}
-
-// The point marks whose true position lies in `texel`'s cell.
-std::vector<size_t> ownedMarks(const CellMarks& cm, const Grid& g, glm::ivec2 texel) {
-    std::vector<size_t> owned;
-    for (size_t k = 0; k < cm.points.size(); ++k) {
-        glm::ivec2 at(glm::floor((cm.points[k].trueAt - glm::vec2(g.area.x, g.area.y)) / g.cell));
-        if (g.view.origin + at == texel) owned.push_back(k);
-    }
-    return owned;
-}
-
-// The marks that overlap cell `r`, grown by the clearance numbers keep from them.
-std::vector<Rect> marksOver(const CellMarks& cm, const Grid& g, const Rect& r) {
-    std::vector<Rect> near;
-    for (const Rect& mk : cm.all(g.area)) {
-        if (overlaps(mk, r)) near.push_back(mk.expanded(MARK_CLEARANCE_PX));
-    }
-    return near;
-}
-
-// One cell's numbers. The candidates that keep the depth, largest type first; each around the
-// marks where the math puts them, then with this cell's point marks moved into a lane at the
-// cell's edge (the nearest first; along an edge a mark keeps its true position), so that one
-// cell's numbers keep the size of the others' rather than shrink for a mark. Only then the
-// candidates without the depth, the marks where the math puts them. Returns whether the cell
-// had numbers and shows none.
-bool planCell(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm, float numberFloor,
-              glm::ivec2 texel) {
-    const Trace& tr = *m.trace;
-    Rect r = texelCellRect(g.view, g.area, texel);
-    const TapRecord* tap = firstTapAt(tr, texel);
-    bool inMap = texel.x >= 0 && texel.y >= 0 && texel.x < tr.mapSize.x && texel.y < tr.mapSize.y;
-    Colour ink = tap && tap->lit >= 0.5f ? DARK_TEXT : TEXT;
-    std::vector<Item> all = cellItems(m, g, texel, tap, inMap);
-    bool hasDepth = inMap;
-    std::vector<std::vector<Item>> candidates =
-        numberCandidates(all, tap != nullptr, hasDepth, g, numberFloor);
-    Rect inner = r.expanded(-g.pad);
-    inner.h -= g.bar + 1.0f;
-    auto marksNear = [&]() { return marksOver(cm, g, r); };
-    auto keepsDepth = [&](const std::vector<Item>& items) {
-        return !hasDepth || std::any_of(items.begin(), items.end(),
-                                        [](const Item& it) { return it.role == "cell-depth"; });
-    };
-    std::vector<size_t> owned = ownedMarks(cm, g, texel);
-    float barTop = r.bottom() - (g.bar + g.pad);
-    std::vector<std::vector<glm::ivec2>> ways = laneWays(cm, owned, r, barTop);
-    auto moveTo = [&](const std::vector<glm::ivec2>& w) {
-        for (size_t k = 0; k < owned.size(); ++k) {
-            PointMark& pm = cm.points[owned[k]];
-            pm.at = laneAt(pm, w[k], r, barTop);
-        }
-    };
-    Placed done;
-    bool placed = false, hidden = false;
-    for (const std::vector<Item>& items : candidates) {
-        if (items.empty() || !keepsDepth(items) || placed) break;
-        for (size_t wi = 0; wi < ways.size() && !placed; ++wi) {
-            moveTo(ways[wi]);
-            done = fitItems(items, marksNear(), inner);
-            placed = !done.empty();
-        }
-    }
-    if (!placed) {
-        // Without the depth: the marks where the math puts them first, then moved into the
-        // lanes, so that a cell keeps at least its bit (6.4 at 1280x720 lost three bits to tap
-        // marks that a lane had room for).
-        for (const std::vector<Item>& items : candidates) {
-            if (items.empty()) {
-                hidden = !all.empty();
-                break;
-            }
-            for (size_t wi = 0; wi < ways.size() && !placed; ++wi) {
-                moveTo(wi == 0 ? std::vector<glm::ivec2>(owned.size(), glm::ivec2(0)) : ways[wi]);
-                done = fitItems(items, marksNear(), inner);
-                placed = !done.empty();
-            }
-            if (placed) break;
-        }
-        if (!placed) moveTo(std::vector<glm::ivec2>(owned.size(), glm::ivec2(0)));
-    }
-    if (tap && done.size() == all.size()) pl.plan.numberedTexels.push_back(texel);
-    for (const auto& [box, it] : done) {
-        pl.text({box.x + box.w * 0.5f, box.y}, it->text,
-                {FontFace::Mono, it->size, ink, TextAlign::Center}, BoxKind::Number, "inspector",
-                it->role);
-    }
-    return hidden;
-}
-
-// Numbers: each cell's block (bit, own ref, depth, weight) goes where no mark is; a smaller
-// block, or none, where the whole does not fit (smaller type first, not below numberFloor).
-// Returns the cells left without numbers.
-int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm,
-                    float numberFloor) {
-    int hiddenCells = 0;
-    for (int j = 0; j < g.view.size.y; ++j) {
-        for (int i = 0; i < g.view.size.x; ++i) {
-            if (planCell(pl, m, g, cm, numberFloor, g.view.origin + glm::ivec2(i, j)))
-                ++hiddenCells;
-        }
-    }
-    return hiddenCells;
 }
 
 // The point marks where planCellNumbers left them. One moved into a lane keeps its true

@@ -5,6 +5,7 @@
 //   inspector_text.cpp          text blocks that fit: wrap, smaller type to a floor, then pages
 //   inspector_scene.cpp         the scene: the picked pixel, its label, the texel grid
 //   inspector_neighbourhood.cpp the magnified cells: their one layout (panelLayout) and drawing
+//   inspector_cell_numbers.cpp  the numbers in each cell, placed clear of the marks
 //   inspector_numbers.cpp       the inspector's header, notes, legend and formula
 //   inspector_steps.cpp         the step panel, the map thumbnail, the status line
 //   inspector_keys.cpp          the key table and the help overlay drawn from it
@@ -259,6 +260,59 @@ void planDisks(Planner& pl, const Trace& tr, const Rect& area, glm::vec2 point, 
 // numbers the marks left no room for.
 void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const Grid& g,
                const TypeSizes& t, LegendNeeds& legend, int& hiddenCells);
+
+// The comparison bit's type size for a number size.
+float bitFor(float number);
+// The first read of `texel` in the trace's read order; null when none reads it.
+const TapRecord* firstTapAt(const Trace& tr, glm::ivec2 texel);
+// Numbers keep this far from any mark, pixels.
+constexpr float MARK_CLEARANCE_PX = 2.0f;
+
+// Marks go first: they sit where the math puts them, and the numbers then find room beside them.
+// Their rects (clipped to the cells) are what the numbers avoid; their draw calls run after the
+// numbers', so that a mark is never hidden under a number's cell.
+// A point mark (a lookup dot, a hardware tap's ring, the lookup point) whose cell cannot hold its
+// numbers around it moves into a lane at that cell's edge (see planCellNumbers); it keeps its
+// true position in one axis and a tick in the cell's border band gives the other.
+struct PointMark {
+    glm::vec2 at;       // where it is drawn
+    glm::vec2 trueAt;   // where the math puts it
+    float half = 0.0f;  // its box: a square of this half side round `at`
+    std::string role;
+    Colour tickColour;
+    std::function<void(Canvas&, glm::vec2)> draw;
+    Rect rect() const { return {at.x - half, at.y - half, 2 * half, 2 * half}; }
+};
+
+struct CellMarks {
+    std::vector<Rect> rects;  // fixed marks: weight bars, gather outlines, ticks
+    std::vector<PointMark> points;
+    std::vector<std::function<void(Canvas&)>> ops;
+    void add(Planner& pl, const Rect& area, const Rect& r, const std::string& role) {
+        Rect clipped = r.intersect(area);
+        if (clipped.empty()) return;
+        rects.push_back(clipped);
+        pl.box(BoxKind::Mark, clipped, "inspector", role);
+    }
+    // Every mark's rect, the point marks where they are now, clipped to the cells.
+    std::vector<Rect> all(const Rect& area) const {
+        std::vector<Rect> out = rects;
+        for (const PointMark& p : points) {
+            Rect c = p.rect().intersect(area);
+            if (!c.empty()) out.push_back(c);
+        }
+        return out;
+    }
+};
+
+// ---- inspector_cell_numbers.cpp: each cell's number block, placed clear of the marks. ----
+
+// Numbers: each cell's block (bit, own ref, depth, weight) goes where no mark is; a smaller
+// block, or none, where the whole does not fit (smaller type first, not below numberFloor).
+// Moves point marks into lanes where that gives a cell its numbers. Returns the cells left
+// without numbers.
+int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm,
+                    float numberFloor);
 
 // ---- inspector_table.cpp: the texel table. ----
 

@@ -346,45 +346,82 @@ FittedText fitText(std::string_view text, FontFace face, float start, float floo
     return f;
 }
 
-float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, FontFace face,
-                  const Colour& colour, const std::string& panel, const std::string& role,
-                  const std::string& moreHint) {
-    page = std::clamp(page, 0, f.pages - 1);
+namespace {
+
+// The lines page `page` draws, [first, last): a gap that ends a page is not drawn (it would only
+// push the "more" mark down).
+std::pair<size_t, size_t> pageLineRange(const FittedText& f, int page) {
     size_t first = static_cast<size_t>(f.pageStarts[static_cast<size_t>(page)]);
     size_t last = page + 1 < f.pages
                       ? static_cast<size_t>(f.pageStarts[static_cast<size_t>(page) + 1])
                       : f.lines.size();
-    // A gap that ends a page is not drawn (it would only push the mark down).
     while (last > first && f.lines[last - 1].text.empty() && !f.lines[last - 1].mono) --last;
+    return {first, last};
+}
+
+// One line of a fitted block with its top-left at (x, y): prose in `face`, a preformatted line
+// in the monospace face, code spans in their own face. Returns the width it takes.
+float planFittedLine(Planner& pl, const FitLine& line, FontFace face, float size,
+                     const Colour& colour, float x0, float y) {
+    bool mixed = std::any_of(line.spans.begin(), line.spans.end(),
+                             [](const TextSpan& sp) { return sp.mono; });
+    if (mixed) {
+        // Each piece in its own face, one after the other on a shared baseline: the
+        // monospace pieces are moved down by the difference of the two ascenders.
+        float ascender = fontMetrics(face, size).ascender;
+        float x = std::round(x0);
+        for (const TextSpan& sp : line.spans) {
+            FontFace sf = sp.mono ? FontFace::Mono : face;
+            float dy = std::round(ascender - fontMetrics(sf, size).ascender);
+            TextStyle st{sf, size, sp.mono ? MONO_TEXT : colour};
+            glm::vec2 at{std::round(x), std::round(y) + dy};
+            std::string s = sp.text;
+            pl.op([=](Canvas& cv) { cv.text(at, s, st); });
+            x += measureText(sf, size, s).x;
+        }
+        return x - std::round(x0);
+    }
+    if (line.text.empty()) return 0.0f;
+    FontFace lf = line.mono ? FontFace::Mono : face;
+    TextStyle st{lf, size, line.mono ? MONO_TEXT : colour};
+    glm::vec2 at{std::round(x0), std::round(y)};
+    std::string s = line.text;
+    pl.op([=](Canvas& cv) { cv.text(at, s, st); });
+    return measureText(lf, size, s).x;
+}
+
+// The "more" mark of a paged block: which page this is of how many, and the key that turns it,
+// right-aligned at the area's bottom; `y`: below the page's last line.
+void planMoreMark(Planner& pl, const FittedText& f, const Rect& area, int page, float y,
+                  const std::string& panel, const std::string& moreHint) {
+    // Appended, not a chain of operator+ (GCC 12 warns falsely, -Wrestrict).
+    std::string more;
+    if (page + 1 < f.pages) more.append("more ").append(moreHint).append(" ");
+    more.append("(").append(std::to_string(page + 1)).append("/");
+    more.append(std::to_string(f.pages)).append(")");
+    float ms = std::max(10.0f, std::round(f.size * 0.85f));
+    Rect r = pl.measure({area.right(), area.bottom() - lineHeightOf(ms)}, more,
+                        {FontFace::Sans, ms, ACCENT, TextAlign::Right});
+    // The mark has the area's last line to itself (linesPerPage left it free).
+    r.y = std::max(r.y, y);
+    pl.fill(r.expanded(2), Colour{0.35f, 0.78f, 0.98f, 0.18f});
+    glm::vec2 at = r.position();
+    pl.op([=](Canvas& cv) { cv.text(at, more, {FontFace::Sans, ms, ACCENT}); });
+    pl.box(BoxKind::Mark, r, panel, "more", ms);
+    pl.plan.boxes.back().text = more;
+}
+
+}  // namespace
+
+float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, FontFace face,
+                  const Colour& colour, const std::string& panel, const std::string& role,
+                  const std::string& moreHint) {
+    page = std::clamp(page, 0, f.pages - 1);
+    auto [first, last] = pageLineRange(f, page);
     float y = area.y;
     float widest = 0.0f;
     for (size_t k = first; k < last; ++k) {
-        const FitLine& line = f.lines[k];
-        bool mixed = std::any_of(line.spans.begin(), line.spans.end(),
-                                 [](const TextSpan& sp) { return sp.mono; });
-        if (mixed) {
-            // Each piece in its own face, one after the other on a shared baseline: the
-            // monospace pieces are moved down by the difference of the two ascenders.
-            float ascender = fontMetrics(face, f.size).ascender;
-            float x = std::round(area.x);
-            for (const TextSpan& sp : line.spans) {
-                FontFace sf = sp.mono ? FontFace::Mono : face;
-                float dy = std::round(ascender - fontMetrics(sf, f.size).ascender);
-                TextStyle st{sf, f.size, sp.mono ? MONO_TEXT : colour};
-                glm::vec2 at{std::round(x), std::round(y) + dy};
-                std::string s = sp.text;
-                pl.op([=](Canvas& cv) { cv.text(at, s, st); });
-                x += measureText(sf, f.size, s).x;
-            }
-            widest = std::max(widest, x - std::round(area.x));
-        } else if (!line.text.empty()) {
-            FontFace lf = line.mono ? FontFace::Mono : face;
-            TextStyle st{lf, f.size, line.mono ? MONO_TEXT : colour};
-            glm::vec2 at{std::round(area.x), std::round(y)};
-            std::string s = line.text;
-            pl.op([=](Canvas& cv) { cv.text(at, s, st); });
-            widest = std::max(widest, measureText(lf, f.size, s).x);
-        }
+        widest = std::max(widest, planFittedLine(pl, f.lines[k], face, f.size, colour, area.x, y));
         y += f.lineHeight;
     }
     float used = y - area.y;
@@ -393,23 +430,7 @@ float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, 
     for (size_t k = first; k < last; ++k) {
         pl.plan.boxes.back().text.append(k > first ? "\n" : "").append(f.lines[k].text);
     }
-    if (f.pages > 1) {
-        // Appended, not a chain of operator+ (GCC 12 warns falsely, -Wrestrict).
-        std::string more;
-        if (page + 1 < f.pages) more.append("more ").append(moreHint).append(" ");
-        more.append("(").append(std::to_string(page + 1)).append("/");
-        more.append(std::to_string(f.pages)).append(")");
-        float ms = std::max(10.0f, std::round(f.size * 0.85f));
-        Rect r = pl.measure({area.right(), area.bottom() - lineHeightOf(ms)}, more,
-                            {FontFace::Sans, ms, ACCENT, TextAlign::Right});
-        // The mark has the area's last line to itself (linesPerPage left it free).
-        r.y = std::max(r.y, y);
-        pl.fill(r.expanded(2), Colour{0.35f, 0.78f, 0.98f, 0.18f});
-        glm::vec2 at = r.position();
-        pl.op([=](Canvas& cv) { cv.text(at, more, {FontFace::Sans, ms, ACCENT}); });
-        pl.box(BoxKind::Mark, r, panel, "more", ms);
-        pl.plan.boxes.back().text = more;
-    }
+    if (f.pages > 1) planMoreMark(pl, f, area, page, y, panel, moreHint);
     return used;
 }
 
