@@ -165,6 +165,15 @@ std::optional<int> methodFromName(std::string_view name) {
     return std::nullopt;
 }
 
+float poissonSetReach() {
+    static const float reach = [] {
+        float r = 0.0f;
+        for (int k = 0; k < 16; ++k) r = std::max(r, glm::length(PCF_POISSON_DISK[k]));
+        return r;
+    }();
+    return reach;
+}
+
 std::string methodNameList() {
     std::string list;
     for (const MethodInfo& m : METHODS) {

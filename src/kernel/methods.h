@@ -52,6 +52,13 @@ std::optional<int> methodFromName(std::string_view name);
 // "nearest, box2x2, ..." for error messages.
 std::string methodNameList();
 
+// How far the 16-point Poisson set of poisson and pcss (PCF_POISSON_DISK, from Jimmy,
+// "Percentage Closer Filtering", 2010) reaches from its centre, in units of the scale it is
+// given: max |d_k| over its points, 1.234. The widely copied set is not a unit disk (8 of its 16
+// points lie outside radius 1), so the disk its points fill is this much wider than the scale.
+// The inspector's rings and the lessons' {disk_reach} both read it.
+float poissonSetReach();
+
 // What the GPU issues for one lookup: texel reads (every texel any instruction touches, so a
 // hardware tap or a gather counts 4), gathers and hardware taps.
 struct FetchCounts {

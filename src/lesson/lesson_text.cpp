@@ -39,19 +39,6 @@ float angleDeg(vec2 rotation) {
     return std::atan2(rotation.y, rotation.x) * 57.2957795f;
 }
 
-// How far the 16-point Poisson set of Jimmy ("Percentage Closer Filtering", 2010;
-// PCF_POISSON_DISK) reaches from its centre, in units of the scale it is given: max |d_k| over
-// its points, 1.234 (8 of the 16 lie outside the unit circle). The inspector's rings are drawn at
-// the same max (poissonDiskExtent), computed from the same array.
-float poissonSetReach() {
-    static const float reach = [] {
-        float r = 0.0f;
-        for (int k = 0; k < 16; ++k) r = std::max(r, glm::length(PCF_POISSON_DISK[k]));
-        return r;
-    }();
-    return reach;
-}
-
 int distinctTexels(const Trace& tr) {
     std::set<std::pair<int, int>> seen;
     for (const TapRecord& t : tr.taps) seen.insert({t.texel.x, t.texel.y});

@@ -4,15 +4,6 @@
 
 namespace pcf::inspector_detail {
 
-float poissonDiskExtent() {
-    static const float extent = [] {
-        float r = 0.0f;
-        for (int k = 0; k < 16; ++k) r = std::max(r, glm::length(PCF_POISSON_DISK[k]));
-        return r;
-    }();
-    return extent;
-}
-
 DiskRings diskRings(const Trace& tr) {
     bool pcss = tr.params.method == PCF_PCSS;
     if (tr.params.method != PCF_POISSON && !pcss) return {};
@@ -21,7 +12,7 @@ DiskRings diskRings(const Trace& tr) {
     // when the search found a blocker, the filter's, scaled by half the penumbra's width. Each
     // ring is the disk the points fill: the scale times the set's extent, so that every point
     // drawn lies inside its ring.
-    float reach = poissonDiskExtent();
+    float reach = poissonSetReach();
     DiskRings r;
     if (!pcss || tr.pcss.blockers > 0) {
         r.filter = (pcss ? tr.pcss.filterRadius : tr.params.radius) * reach;

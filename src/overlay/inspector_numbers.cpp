@@ -131,7 +131,7 @@ std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeed
     if (need.searchDisk) entries.push_back({SEARCH, "blocker search: taps, disk", CIRCLE});
     if (need.disk) {
         // The ring is the disk the points fill, wider than the scale they are given (planDisks).
-        std::string reach = fixed(poissonDiskExtent(), 2);
+        std::string reach = fixed(poissonSetReach(), 2);
         entries.push_back({ACCENT,
                            pcss ? "filter disk: " + reach + " x penumbra / 2"
                                 : "the points' disk, radius " + reach + " R",

@@ -240,10 +240,6 @@ struct LegendNeeds {
 };
 
 // ---- inspector_disks.cpp: the disks poisson's and pcss's points lie on. ----
-// How far the 16-point Poisson set (PCF_POISSON_DISK) reaches from its centre, in units of the
-// radius it is scaled by: the widely copied set is not a unit disk (8 of its points lie outside
-// radius 1, the farthest at 1.234), so the disk its points fill is this much wider than R.
-float poissonDiskExtent();
 // The rings planDisks draws round the lookup point, radii in texels (0: none): pcss's blocker
 // search, and poisson's disk or pcss's filter disk. The cells reach round them (gridOf).
 struct DiskRings {
