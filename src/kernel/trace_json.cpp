@@ -79,6 +79,19 @@ Json biasJson(const Trace& tr) {
     return j;
 }
 
+// Whether paramsJson writes row p for `which`.
+bool inParamSet(const ParamInfo& p, ParamSet which) {
+    switch (which) {
+        case ParamSet::All:
+            return true;
+        case ParamSet::Raw:
+            return p.rawJson;
+        case ParamSet::Bias:
+            return p.group == ParamGroup::Bias;
+    }
+    return false;
+}
+
 // One object per tap, in read order, and one per fetch instruction.
 Json tapsJson(const Trace& tr) {
     Json taps = Json::array();
@@ -105,22 +118,6 @@ Json fetchesJson(const Trace& tr) {
                            {"weight", jsonNumber(f.weight)}});
     }
     return fetches;
-}
-
-}  // namespace
-
-namespace {
-
-bool inParamSet(const ParamInfo& p, ParamSet which) {
-    switch (which) {
-        case ParamSet::All:
-            return true;
-        case ParamSet::Raw:
-            return p.rawJson;
-        case ParamSet::Bias:
-            return p.group == ParamGroup::Bias;
-    }
-    return false;
 }
 
 }  // namespace
