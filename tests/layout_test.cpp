@@ -908,32 +908,42 @@ TEST_F(Layout, LongTitlesLayOutInLinearTime) {
     EXPECT_LT(large, 10.0 * small + 0.2);
 }
 
-// The texel grid is drawn where a texel spans several pixels, and hidden (or off) otherwise.
-TEST_F(Layout, GridHiddenWhenTexelsAreSmallOrTurnedOff) {
+// A light-space buffer (uv, depth, receiver) of the square of pixels `radius` round a picked
+// pixel, `pixelsPerTexel` screen pixels to a texel of a 64 x 64 map, centred on uv 0.5.
+std::vector<float> syntheticLightSpace(int radius, float pixelsPerTexel) {
+    std::vector<float> ls;
+    for (int y = -radius; y <= radius; ++y) {
+        for (int x = -radius; x <= radius; ++x) {
+            ls.push_back(0.5f + x / pixelsPerTexel / 64.0f);
+            ls.push_back(0.5f + y / pixelsPerTexel / 64.0f);
+            ls.push_back(0.4f);
+            ls.push_back(1.0f);
+        }
+    }
+    return ls;
+}
+
+// A model whose picked pixel is the scene's centre with a light-space buffer round it.
+InspectorModel gridModel(const InspectorLayout& l, int& radius) {
     InspectorModel m;
     m.trace = syntheticTrace();
     m.stepTitles = {"Grid"};
     m.stepText = "Grid.";
-    InspectorLayout l = inspectorLayout({1600, 900}, false);
     m.sceneSize = glm::ivec2(l.scene.size());
     m.pixel = m.sceneSize / 2;
-    int radius = gridRadius(m.sceneSize) + 1;
-    auto lightSpace = [&](float pixelsPerTexel) {
-        std::vector<float> ls;
-        for (int y = -radius; y <= radius; ++y) {
-            for (int x = -radius; x <= radius; ++x) {
-                ls.push_back(0.5f + x / pixelsPerTexel / 64.0f);
-                ls.push_back(0.5f + y / pixelsPerTexel / 64.0f);
-                ls.push_back(0.4f);
-                ls.push_back(1.0f);
-            }
-        }
-        return ls;
-    };
+    radius = gridRadius(m.sceneSize) + 1;
     m.lightSpaceOrigin = m.pixel - glm::ivec2(radius);
     m.lightSpaceSize = glm::ivec2(2 * radius + 1);
-    std::vector<float> big = lightSpace(9.0f);
-    std::vector<float> tiny = lightSpace(1.5f);
+    return m;
+}
+
+// The texel grid is drawn where a texel spans several pixels, and hidden (or off) otherwise.
+TEST_F(Layout, GridHiddenWhenTexelsAreSmallOrTurnedOff) {
+    InspectorLayout l = inspectorLayout({1600, 900}, false);
+    int radius = 0;
+    InspectorModel m = gridModel(l, radius);
+    std::vector<float> big = syntheticLightSpace(radius, 9.0f);
+    std::vector<float> tiny = syntheticLightSpace(radius, 1.5f);
     m.lightSpace = &big;
     EXPECT_TRUE(planFrame(l, m).gridShown);
     m.lightSpace = &tiny;
@@ -941,6 +951,40 @@ TEST_F(Layout, GridHiddenWhenTexelsAreSmallOrTurnedOff) {
     m.lightSpace = &big;
     m.grid = false;
     EXPECT_FALSE(planFrame(l, m).gridShown);
+}
+
+// The legend names the texels read "on the scene" only where the scene shows them: tinted and
+// outlined at any texel size, the grid on or off, but not on a scene drawn as a scaled inset,
+// which leaves the tint out.
+TEST_F(Layout, LegendNamesTheSceneTintOnlyWhereItIsDrawn) {
+    InspectorLayout l = inspectorLayout({1600, 900}, false);
+    int radius = 0;
+    InspectorModel m = gridModel(l, radius);
+    std::vector<float> tiny = syntheticLightSpace(radius, 1.5f);
+    m.lightSpace = &tiny;
+    auto named = [](const FramePlan& plan) {
+        for (const LayoutBox& b : plan.boxes) {
+            if (b.text == "texels read, on the scene") return true;
+        }
+        return false;
+    };
+    FramePlan full = planFrame(l, m);
+    EXPECT_TRUE(full.footprintShown);
+    EXPECT_TRUE(named(full));
+    m.grid = false;
+    EXPECT_TRUE(named(planFrame(l, m)));
+    l.sceneInset = true;
+    FramePlan inset = planFrame(l, m);
+    EXPECT_FALSE(inset.footprintShown);
+    EXPECT_FALSE(named(inset));
+    // A scene whose pixels round the pick are not receivers: nothing tinted, nothing named.
+    l.sceneInset = false;
+    std::vector<float> none = tiny;
+    for (size_t k = 3; k < none.size(); k += 4) none[k] = 0.0f;
+    m.lightSpace = &none;
+    FramePlan empty = planFrame(l, m);
+    EXPECT_FALSE(empty.footprintShown);
+    EXPECT_FALSE(named(empty));
 }
 
 // A focus names one or two parts; anything else is refused (loadLessonChecked turns that into

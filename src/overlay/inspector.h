@@ -133,6 +133,8 @@ struct FramePlan {
     // min(k, last) and the inspector's part min(k, last).
     int textPages = 1;
     bool gridShown = false;  // the texel grid was drawn on the scene (not hidden or off)
+    // The texels read were tinted on the scene (not on an inset, nor off the scene's pixels).
+    bool footprintShown = false;
     // What this page drew of what the trace read (the JSON sidecar's `drawn`): the texels whose
     // cells are drawn, the fetches (indices into Trace::fetches) whose marks are drawn, and
     // whether the formula is drawn whole, every term (not the short form).

@@ -141,7 +141,7 @@ std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeed
     if (need.gathers) entries.push_back({GATHER, "one gather (2 x 2)", OUTLINE});
     if (need.highlight) entries.push_back({HIGHLIGHT, "the fetch the text talks about", OUTLINE});
     if (need.movedMark) entries.push_back({POINT, "tick: a moved mark's true place", TICK});
-    if (m.showScene)
+    if (need.footprint)
         entries.push_back({Colour{0.2f, 0.85f, 1.0f, 1.0f}, "texels read, on the scene", SQUARE});
     return entries;
 }
@@ -271,7 +271,7 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
         return;
     }
     const Trace& tr = *m.trace;
-    InspectorPanel panel = inspectorPanel(l, m, t, pl.onTop);
+    InspectorPanel panel = inspectorPanel(l, m, t, pl.onTop, pl.plan.footprintShown);
     const PanelLayout& layout = panel.layout;
     planHeader(pl, l, layout.header, t, margin);
     float width = p.w - 2 * margin;
@@ -321,7 +321,7 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
 }
 
 InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
-                              bool onTop) {
+                              bool onTop, bool sceneTint) {
     const Rect& p = l.inspector;
     const Trace& tr = *m.trace;
     float margin = inspectorMargin(l);
@@ -335,6 +335,7 @@ InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m,
         out.cells = FramePlan{};
         Planner cp{out.cells, onTop};
         LegendNeeds need;
+        need.footprint = sceneTint;
         hidden = 0;
         planCells(cp, l, m, pan.grid, t, need, hidden);
         float y = planNotes(cp, l, hidden, t, margin, pan.grid.bottom + 2.0f);

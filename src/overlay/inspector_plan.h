@@ -220,8 +220,9 @@ struct InspectorPanel {
     // on the page(s) after the cells (inspector_table.cpp).
     std::vector<glm::ivec2> tableTexels;
 };
+// sceneTint: the scene shows the texels read (planTexelGrid), so the legend names them.
 InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
-                              bool onTop = false);
+                              bool onTop = false, bool sceneTint = false);
 
 // The line width of the inspector's strokes.
 inline float lineOf(const InspectorLayout& l) {
@@ -231,7 +232,8 @@ inline float lineOf(const InspectorLayout& l) {
 // Which kinds of mark the cells drew (the legend names only those).
 struct LegendNeeds {
     bool highlight = false, weightBar = false, dots = false, rings = false, gathers = false,
-         fraction = false, baseCentre = false, padding = false, footprint = false;
+         fraction = false, baseCentre = false, padding = false;
+    bool footprint = false;   // the texels read, tinted on the scene
     bool clamped = false;     // a texel read clamped to the edge (any finite uv)
     bool hw8 = false;         // the 8-bit position (the sub-texel inset)
     bool movedMark = false;   // a point mark moved beside its cell's numbers, with a tick

@@ -52,7 +52,22 @@ enum PixelKind { PIXEL_NONE, PIXEL_FOOTPRINT_EDGE, PIXEL_EDGE, PIXEL_FOOTPRINT }
 struct KindGrid {
     std::vector<uint8_t> kinds;
     glm::ivec2 used0, used1;
+    int footprintPixels = 0;  // pixels tinted as texels read
 };
+
+// Whether pixel p's four neighbours all look up texels of the footprint n.
+bool footprintAround(const TexelLookup& look, const Neighbourhood& n, glm::ivec2 p) {
+    const glm::ivec2 steps[] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+    for (glm::ivec2 d : steps) {
+        glm::ivec2 tx;
+        if (!look.texelAt(p.x + d.x, p.y + d.y, tx)) return false;
+        if (tx.x < n.origin.x || tx.y < n.origin.y || tx.x >= n.origin.x + n.size.x ||
+            tx.y >= n.origin.y + n.size.y) {
+            return false;
+        }
+    }
+    return true;
+}
 
 KindGrid kindsAround(const TexelLookup& look, const Neighbourhood& n, glm::ivec2 lo, glm::ivec2 hi,
                      bool drawEdges) {
@@ -67,9 +82,13 @@ KindGrid kindsAround(const TexelLookup& look, const Neighbourhood& n, glm::ivec2
                                tx.x < n.origin.x + n.size.x && tx.y < n.origin.y + n.size.y;
             bool edge = drawEdges && ((look.texelAt(x - 1, y, left) && left != tx) ||
                                       (look.texelAt(x, y - 1, up) && up != tx));
+            // The footprint's outline is drawn at any texel size: where a texel spans two or
+            // three pixels, the tint alone is a faint smudge under the pick's ring.
+            if (inFootprint && !edge) edge = !footprintAround(look, n, {x, y});
             PixelKind kind = edge ? (inFootprint ? PIXEL_FOOTPRINT_EDGE : PIXEL_EDGE)
                                   : (inFootprint ? PIXEL_FOOTPRINT : PIXEL_NONE);
             if (kind == PIXEL_NONE) continue;
+            if (inFootprint) ++g.footprintPixels;
             g.kinds[static_cast<size_t>(y - lo.y) * size.x + (x - lo.x)] =
                 static_cast<uint8_t>(kind);
             g.used0 = glm::min(g.used0, glm::ivec2(x, y));
@@ -116,6 +135,7 @@ void planTexelGrid(Planner& pl, const InspectorLayout& l, const InspectorModel& 
                 colours[g.kinds[static_cast<size_t>(q.y) * size.x + q.x]];
         }
     }
+    pl.plan.footprintShown = g.footprintPixels > 0;
     auto image = std::make_shared<const CanvasImage>(box, std::move(pixels));
     glm::ivec2 at = glm::ivec2(glm::round(l.scene.position())) + g.used0;
     pl.op([image, at](Canvas& c) { c.image(at, image); });
