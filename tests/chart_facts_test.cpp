@@ -148,5 +148,67 @@ TEST_F(ChartFacts, AContactChartSaysWhatItMeasured) {
     EXPECT_NO_THROW(checkStepChartHighlight(csv + "#contact", "pcss"));
 }
 
+// The acne chart's lines as the sun sets (elevations 90 down to 5): a line over the onset from
+// the zenith on, one that crosses it early, one that crosses it late, one that never does, and a
+// hump that rises over it and falls back.
+std::string acneCsv() {
+    std::string csv = "sweep,method,kernel,bias,x_name,x,metric,y\n";
+    struct Line {
+        const char* method;
+        int kernel;
+        const char* bias;
+        double rates[5];
+    };
+    const Line lines[] = {{"nearest", 0, "none", {0.21, 0.5, 0.5, 0.5, 0.5}},
+                          {"nearest", 0, "constant", {0, 0.002, 0.009, 0.004, 0.04}},
+                          {"pcf-gather", 5, "constant", {0, 0.4, 1, 1, 1}},
+                          {"pcf-gather", 5, "receiver-plane", {0, 0, 0.005, 0, 0}},
+                          {"pcf-gather", 5, "normal", {0, 0.011, 0.18, 0.0055, 0.004}}};
+    const int elevations[] = {90, 87, 60, 25, 5};
+    for (const Line& l : lines) {
+        for (int k = 0; k < 5; ++k) {
+            csv += std::string("acne,") + l.method + "," + std::to_string(l.kernel) + "," + l.bias +
+                   ",elevation_deg," + std::to_string(elevations[k]) + ",false_shadow_rate," +
+                   std::to_string(l.rates[k]) + "\n";
+        }
+    }
+    return csv;
+}
+
+TEST_F(ChartFacts, AcneLinesAreReadAsTheSunSets) {
+    std::string chart = write("stability.csv", acneCsv()) + "#acne";
+    auto holds = [&](const std::string& fact) { return chartFactHolds(chart, fact).holds; };
+    EXPECT_TRUE(holds("nearest none: over the onset at every elevation"));
+    EXPECT_FALSE(holds("nearest constant: over the onset at every elevation"));
+    // 0.9 % at 60 degrees is under the 1 % onset: nearest's constant line first reaches it at 5.
+    EXPECT_TRUE(holds("nearest constant: crosses the onset below 10 degrees"));
+    EXPECT_FALSE(holds("nearest constant: crosses the onset above 10 degrees"));
+    EXPECT_FALSE(holds("nearest constant: crosses the onset below 5 degrees"));
+    EXPECT_TRUE(holds("pcf-gather 5x5 constant: crosses the onset above 85 degrees"));
+    EXPECT_FALSE(holds("pcf-gather 5x5 constant: crosses the onset above 87 degrees"));
+    // Never over the onset: below every elevation, above none.
+    EXPECT_TRUE(holds("pcf-gather 5x5 receiver-plane: crosses the onset below 1 degrees"));
+    EXPECT_FALSE(holds("pcf-gather 5x5 receiver-plane: crosses the onset above 1 degrees"));
+    EXPECT_TRUE(holds("pcf-gather 5x5 normal: rises over the onset and falls back"));
+    // A climb that stays, a line that never climbs, one that starts over it: no hump.
+    EXPECT_FALSE(holds("pcf-gather 5x5 constant: rises over the onset and falls back"));
+    EXPECT_FALSE(holds("pcf-gather 5x5 receiver-plane: rises over the onset and falls back"));
+    EXPECT_FALSE(holds("nearest none: rises over the onset and falls back"));
+    ChartFactAnswer hump = chartFactHolds(chart,
+                                          "pcf-gather 5x5 normal: rises over the onset and "
+                                          "falls back");
+    EXPECT_EQ(hump.why, "0% at 90 degrees, peak 18% at 60 degrees, 0.4% at 5 degrees");
+    // Lines are named by panel and bias mode; a wrong name or number says what is known.
+    EXPECT_THROW(holds("pcf-gather 5x5 slope: rises over the onset and falls back"),
+                 std::invalid_argument);
+    EXPECT_THROW(holds("nearest constant: crosses the onset below ten degrees"),
+                 std::invalid_argument);
+    EXPECT_THROW(holds("nearest constant: sinks under 10 degrees"), std::invalid_argument);
+    // These facts belong to the acne chart, not to another view of the same file.
+    EXPECT_THROW(checkChartFactKnown(write("s2.csv", acneCsv()) + "#leak",
+                                     "nearest none: over the onset at every elevation"),
+                 std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace pcf

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <span>
 #include <stdexcept>
 #include <string_view>
@@ -10,6 +11,7 @@
 #include "analysis/bench_report.h"
 #include "analysis/chart_axes.h"
 #include "analysis/speed_chart.h"
+#include "analysis/stability_chart.h"
 #include "analysis/stability_figures.h"
 #include "analysis/stability_report.h"
 #include "analysis/step_chart.h"
@@ -101,6 +103,80 @@ ChartFactAnswer goodBetween(const ChartData& c, const std::string& method) {
                 (acneBelow ? "" : "; no acne below") + (leakAbove ? "" : "; no leak above")};
 }
 
+// The acne chart's line "PANEL LINE" ("pcf-gather 5x5 normal": the panel's title, a space, the
+// bias mode), its points in the order the sun sets (highest elevation first), as the chart draws
+// them (acneChartSpec); or std::invalid_argument naming the lines.
+std::vector<glm::dvec2> acneLine(const ChartData& c, const std::string& name) {
+    std::vector<StabilityRow> rows = parseStabilityCsv(readInputFile(c.path), c.path);
+    LineChartSpec spec = acneChartSpec(rows, "", 0.0f);
+    std::string names;
+    for (const ChartPanel& panel : spec.panels) {
+        for (const ChartLine& line : panel.lines) {
+            std::string full = panel.title + " " + line.label;
+            if (full == name) {
+                std::vector<glm::dvec2> points = line.points;
+                std::stable_sort(points.begin(), points.end(),
+                                 [](glm::dvec2 a, glm::dvec2 b) { return a.x > b.x; });
+                return points;
+            }
+            names += (names.empty() ? "" : ", ") + full;
+        }
+    }
+    throw std::invalid_argument("'" + name + "' is no line of the acne chart (lines: " +
+                                (names.empty() ? "none" : names) + ")");
+}
+
+std::string rateAt(glm::dvec2 p) { return percent(p.y) + " at " + chartTickText(p.x) + " degrees"; }
+
+// "L: over the onset at every elevation": line L's false-shadow rate is at or over the acne onset
+// (TRADEOFF_ONSET, the chart's "1% = acne onset") at every elevation swept, the highest first.
+ChartFactAnswer acneEverywhere(const ChartData& c, const std::string& line) {
+    std::vector<glm::dvec2> points = acneLine(c, line);
+    if (points.empty()) return {false, "no points on " + line};
+    for (glm::dvec2 p : points) {
+        if (p.y < TRADEOFF_ONSET) return {false, rateAt(p)};
+    }
+    return {true, "from " + rateAt(points.front())};
+}
+
+// "L: crosses the onset above E degrees" (or "below E degrees"): as the sun sets, the first
+// elevation where line L reaches the acne onset lies above (below) E; a line that never reaches
+// it crosses below every E and above none.
+ChartFactAnswer acneCrossing(const ChartData& c, const std::string& arg) {
+    for (std::string_view side : {": crosses the onset above ", ": crosses the onset below "}) {
+        size_t at = arg.find(side);
+        if (at == std::string::npos) continue;
+        std::string line = arg.substr(0, at);
+        std::string number = arg.substr(at + side.size());
+        char* end = nullptr;
+        double degrees = std::strtod(number.c_str(), &end);
+        if (number.empty() || end != number.c_str() + number.size()) {
+            throw std::invalid_argument("'" + number + "' is not a number of degrees");
+        }
+        bool above = side.find("above") != std::string_view::npos;
+        for (glm::dvec2 p : acneLine(c, line)) {
+            if (p.y < TRADEOFF_ONSET) continue;
+            return {above ? p.x > degrees : p.x < degrees, "first " + rateAt(p)};
+        }
+        return {!above, line + " never reaches the onset"};
+    }
+    throw std::invalid_argument("'" + arg +
+                                " degrees': say L: crosses the onset above E degrees, or below");
+}
+
+// "L: rises over the onset and falls back": as the sun sets, line L starts under the acne onset,
+// climbs to it or over, and ends under it again (a hump, not a climb that stays).
+ChartFactAnswer acneHump(const ChartData& c, const std::string& line) {
+    std::vector<glm::dvec2> points = acneLine(c, line);
+    if (points.size() < 3) return {false, "fewer than 3 points on " + line};
+    auto peak = std::max_element(points.begin(), points.end(),
+                                 [](glm::dvec2 a, glm::dvec2 b) { return a.y < b.y; });
+    bool holds = points.front().y < TRADEOFF_ONSET && peak->y >= TRADEOFF_ONSET &&
+                 points.back().y < TRADEOFF_ONSET;
+    return {holds,
+            rateAt(points.front()) + ", peak " + rateAt(*peak) + ", " + rateAt(points.back())};
+}
+
 // "measured against the KIND truth": every row's truth (bench.csv's truth column) is KIND.
 ChartFactAnswer againstTruth(const ChartData& c, const std::string& kind) {
     std::vector<BenchRow> rows = readChartRows(c.path);
@@ -180,6 +256,9 @@ constexpr FactEntry FACTS[] = {
     {"", ": acne falls as the bias grows", "tradeoff", acneFalls},
     {"", ": leak grows with the bias", "tradeoff", leakGrows},
     {"", ": a good bias lies between acne and leak", "tradeoff", goodBetween},
+    {"", ": over the onset at every elevation", "acne", acneEverywhere},
+    {"", " degrees", "acne", acneCrossing},
+    {"", ": rises over the onset and falls back", "acne", acneHump},
 };
 
 // The entry whose words match `fact` on this chart, and its argument; or invalid_argument.

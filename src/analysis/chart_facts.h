@@ -22,8 +22,16 @@
 //   M: a good bias lies between acne and leak #tradeoff: M has good biases (stability_figures.h:
 //                                             TradeoffSeries::good), acne over the onset below
 //                                             them and leak over it above them
+//   L: over the onset at every elevation      #acne: line L's false-shadow rate is at or over the
+//                                             onset (1 %) at every elevation swept
+//   L: crosses the onset above E degrees      #acne: as the sun sets, the first elevation where L
+//   L: crosses the onset below E degrees      reaches the onset is above (below) E; a line that
+//                                             never reaches it is below every E
+//   L: rises over the onset and falls back    #acne: L starts under the onset at the highest sun,
+//                                             reaches it, and ends under it at the lowest
 //
-// M is the chart's panel title ("pcf-gather 5x5", "nearest").
+// M is the chart's panel title ("pcf-gather 5x5", "nearest"); L a panel's title, a space and the
+// line's bias mode ("pcf-gather 5x5 normal").
 #pragma once
 
 #include <string>
