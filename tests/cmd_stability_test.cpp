@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -74,6 +75,51 @@ TEST_F(StabilityCommand, QuickWritesEveryFile) {
     auto again = testutil::runPcfscope("stability --quick --sweep aliasing -o " + out);
     EXPECT_EQ(again.exitCode, 2);
     EXPECT_EQ(testutil::readAll(out + "/stability.md"), md);
+
+    // --replot draws the run's charts again from its CSV alone, the same pixels, every chart but
+    // the heat map (an image the CSV does not hold); nothing else is written.
+    std::string redrawn = path("replot");
+    auto replot = testutil::runPcfscope("stability --replot " + out +
+                                        "/stability.csv --chart-size 640x360 -o " + redrawn);
+    ASSERT_EQ(replot.exitCode, 0) << replot.err;
+    std::set<std::string> names;
+    for (const auto& e : fs::directory_iterator(redrawn)) {
+        names.insert(e.path().filename().string());
+    }
+    EXPECT_EQ(names, (std::set<std::string>{
+                         "stability_acne.png", "stability_leak.png", "stability_tradeoff.png",
+                         "stability_shimmer.png", "stability_precision.png",
+                         "stability_pcss_thin.png", "stability_pcss_overlap.png",
+                         "stability_pcss_noise.png", "stability_pcss_bias.png"}));
+    for (const std::string& chart : names) {
+        EXPECT_EQ(readImageBytes(redrawn + "/" + chart, 4), readImageBytes(out + "/" + chart, 4))
+            << chart;
+    }
+    // Nothing it would overwrite without -f; a measuring option is refused, not ignored.
+    auto twice =
+        testutil::runPcfscope("stability --replot " + out + "/stability.csv -o " + redrawn);
+    EXPECT_EQ(twice.exitCode, 2);
+    EXPECT_NE(twice.err.find("already exists; pass --force"), std::string::npos) << twice.err;
+    auto measuring = testutil::runPcfscope("stability --replot " + out +
+                                           "/stability.csv --map-size 256 -o " + path("m"));
+    EXPECT_EQ(measuring.exitCode, 2);
+    EXPECT_EQ(measuring.err,
+              "pcfscope: --map-size does not apply to --replot, which draws an existing "
+              "stability.csv and measures nothing\n");
+    EXPECT_FALSE(fs::exists(path("m")));
+}
+
+// --replot reads its CSV with every input check: one line naming the file and line, exit 2,
+// nothing written.
+TEST_F(StabilityCommand, ReplotRefusesABadCsv) {
+    std::string csv = path("bad.csv");
+    std::ofstream(csv) << "sweep,method,kernel,bias,x_name,x,metric,y\n"
+                       << "acne,nearest,0,none,elevation_deg,ninety,false_shadow_rate,0.2\n";
+    auto r = testutil::runPcfscope("stability --replot " + csv + " -o " + path("out"));
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("pcfscope: " + csv + ":2:", 0), 0u) << r.err;
+    EXPECT_FALSE(fs::exists(path("out")));
 }
 
 TEST_F(StabilityCommand, BadSweepParametersExit2WithNothingWritten) {

@@ -259,6 +259,34 @@ TEST(StabilityFigures, EveryShimmerBarIsTheEdgePeakOfOnePopulation) {
     EXPECT_NE(spec.yLabel.find("over the edge pixels"), std::string::npos) << spec.yLabel;
 }
 
+// A bar of height 0 (the snapped shimmer) would draw nothing while the legend names its series:
+// each gets a "0" over its place on the axis, inside its own column; bars above 0 get none.
+TEST(StabilityFigures, ZeroBarsAreMarkedZero) {
+    BarChartSpec spec;
+    spec.title = "t";
+    spec.yLabel = "y";
+    spec.series = {"a", "b", "c"};
+    spec.groups = {{"one", {0.5, 0.0, 0.25}}, {"two", {0.0, 0.75, 0.0}}};
+    spec.minFontPx = STANDALONE_CHART_MIN_PX;
+    std::vector<ChartTextBox> boxes = barChartTextBoxes(spec, CHART);
+    std::vector<const ChartTextBox*> zeros;
+    float tickBottom = 0.0f;  // the lowest y tick's box: the axis runs along its middle
+    for (const ChartTextBox& b : boxes) {
+        if (b.role == "chart-value") zeros.push_back(&b);
+        if (b.role == "chart-tick" && b.text == "0") tickBottom = b.rect.bottom();
+    }
+    ASSERT_EQ(zeros.size(), 3u);
+    for (const ChartTextBox* z : zeros) {
+        EXPECT_EQ(z->text, "0");
+        EXPECT_GE(z->fontPx, STANDALONE_CHART_MIN_PX);
+        EXPECT_LT(z->rect.bottom(), tickBottom) << "over the axis";
+    }
+    // Left to right: group one's second bar, group two's first and third.
+    EXPECT_LT(zeros[0]->rect.right(), CHART.x / 2.0f);
+    EXPECT_GT(zeros[1]->rect.x, zeros[0]->rect.right());
+    EXPECT_GT(zeros[2]->rect.x, zeros[1]->rect.right());
+}
+
 TEST(StabilityFigures, CoincidentLinesAreOffsetAndNamed) {
     LineChartSpec spec = acneChartSpec(defaultShapedRows(LLVMPIPE), "x");
     const ChartPanel* gather = nullptr;

@@ -553,8 +553,18 @@ void paintBars(Painter& c, const BarChartSpec& spec, const Rect& plot, double yT
         float x0 = plot.x + g * groupW + (groupW - barW * bars) / 2;
         for (size_t b = 0; b < group.values.size() && b < bars; ++b) {
             float y = plot.bottom() - static_cast<float>(group.values[b] / yTop) * plot.h;
-            c.fillRect({std::round(x0 + b * barW), std::round(y), barW - stroke,
-                        std::round(plot.bottom() - y)},
+            float left = std::round(x0 + b * barW);
+            if (group.values[b] == 0.0) {
+                // A bar of height 0 draws nothing: a stub on the axis and a "0" over it say that
+                // the series was measured here and is zero (the snapped shimmer, all 0).
+                c.fillRect({left, plot.bottom() - 2 * stroke, barW - stroke, 2 * stroke},
+                           BAR_SERIES[b % 4]);
+                c.text({left + (barW - stroke) / 2, plot.bottom() - 2 * stroke - tickH}, "0",
+                       {FontFace::Sans, tickFont, BAR_SERIES[b % 4], TextAlign::Center},
+                       "chart-value");
+                continue;
+            }
+            c.fillRect({left, std::round(y), barW - stroke, std::round(plot.bottom() - y)},
                        BAR_SERIES[b % 4]);
         }
         float below = static_cast<float>(static_cast<int>(g) % labels.rows * labels.lines) * tickH;

@@ -98,10 +98,11 @@ std::vector<uint8_t> drawImageChart(const ImageChartSpec& spec, glm::ivec2 size)
 
 // Every text the chart draws, where it is drawn (pixels from the chart's top left; one code path
 // lays out and draws), with its role: "chart-title" (the chart's and each small multiple's),
-// "chart-subtitle", "chart-axis", "chart-tick", "chart-label" (a bar group's name),
-// "chart-legend" (also a colour scale's label, ticks and swatches' words); and where each legend
-// entry's mark goes, "chart-swatch" (no text to draw: the entry's words, font size 0), which no
-// text may cover. Needs the fonts, not GL; throws as the draw functions do.
+// "chart-subtitle", "chart-axis", "chart-tick", "chart-label" (a bar group's name), "chart-value"
+// (a "0" over a bar of height 0), "chart-legend" (also a colour scale's label, ticks and swatches'
+// words); and where each legend entry's mark goes, "chart-swatch" (no text to draw: the entry's
+// words, font size 0), which no text may cover. Needs the fonts, not GL; throws as the draw
+// functions do.
 std::vector<ChartTextBox> lineChartTextBoxes(const LineChartSpec& spec, glm::ivec2 size);
 std::vector<ChartTextBox> barChartTextBoxes(const BarChartSpec& spec, glm::ivec2 size);
 std::vector<ChartTextBox> imageChartTextBoxes(const ImageChartSpec& spec, glm::ivec2 size);

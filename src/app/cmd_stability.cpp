@@ -9,8 +9,10 @@
 //   stability_shimmer.png  shimmer at the shadow edges per method and bias
 //   stability_precision.png false-shadow rate against the light's depth range, per format
 //   aliasing_heatmap.png   screen pixels per shadow-map texel over the frame, with its scale
-// (a chart only when its sweep ran). As `bench` does, everything is written into a staging
-// folder inside DIR and moved into place once the whole run has succeeded.
+// (a chart only when its sweep ran). `stability --replot CSV -o DIR` measures nothing: it draws
+// the charts of an existing stability.csv into DIR (at --chart-size), every chart whose sweep has
+// rows, all but the heat map (an image, not in the CSV). As `bench` does, everything is written
+// into a staging folder inside DIR and moved into place once the whole run has succeeded.
 #include <unistd.h>
 
 #include <algorithm>
@@ -30,6 +32,8 @@
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
 #include "base/memory_budget.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
@@ -57,6 +61,7 @@ struct StabilityCommandOptions {
     int spp = 2;
     int threads = 0;
     std::string pixel;
+    std::string replot;  // --replot CSV: draw that stability.csv's charts, measure nothing
     bool force = false;
     CLI::App* sub = nullptr;
 
@@ -250,7 +255,76 @@ CheckedStability checkStabilityCommand(const StabilityCommandOptions& o) {
     return c;
 }
 
+// The options --replot takes: the others choose or tune what is measured, and would be silently
+// ignored by a run that measures nothing.
+constexpr const char* REPLOT_OPTIONS[] = {"--replot", "--out", "--chart-size", "--force", "--help"};
+
+// The charts --replot draws from `rows`: each sweep chart with rows of its sweep.
+std::vector<std::string> replotNames(const std::vector<StabilityRow>& rows) {
+    std::vector<std::string> names;
+    for (const SweepChart& c : sweepCharts()) {
+        bool any = std::any_of(rows.begin(), rows.end(), [&](const StabilityRow& r) {
+            return r.sweep == sweepName(c.sweep);
+        });
+        if (any) names.emplace_back(c.file);
+    }
+    return names;
+}
+
+struct CheckedReplot {
+    glm::ivec2 chartSize;
+    std::vector<StabilityRow> rows;
+    std::vector<std::string> names;  // the charts it draws
+};
+
+// --replot's checks, in order: no measuring option, the chart size, the CSV (every input check:
+// one line naming the file and the problem), -o.
+CheckedReplot checkReplot(const StabilityCommandOptions& o) {
+    for (const CLI::Option* option : o.sub->get_options()) {
+        if (option->count() == 0) continue;
+        std::string name = option->get_name();
+        bool allowed = std::any_of(std::begin(REPLOT_OPTIONS), std::end(REPLOT_OPTIONS),
+                                   [&](const char* n) { return option->check_name(n); });
+        if (!allowed) {
+            throw UsageError(name +
+                             " does not apply to --replot, which draws an existing stability.csv "
+                             "and measures nothing");
+        }
+    }
+    CheckedReplot c;
+    c.chartSize = parseSize("--chart-size", o.chartSize, CHART_SIZE_RANGE);
+    c.rows = parseStabilityCsv(readInputFile(o.replot), o.replot);
+    c.names = replotNames(c.rows);
+    if (c.names.empty()) throw InputError(o.replot, 0, "no sweep rows to chart");
+    if (o.out.empty()) throw UsageError("-o needs a directory");
+    return c;
+}
+
+// stability --replot CSV: the charts of an existing stability.csv, into -o, nothing measured;
+// staged and moved into place together, as a run's are.
+int runReplot(const StabilityCommandOptions& o) {
+    auto [chartSize, rows, names] = checkReplot(o);
+    OutputFiles outputs(o.force);
+    outputs.addInput("--replot", o.replot);
+    outputs.addDirectory("-o", o.out);
+    for (const std::string& name : names) outputs.add("-o", fs::path(o.out) / name);
+    StagingDir staging(o.out, "stability");
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    for (const SweepChart& c : sweepCharts()) {
+        if (std::find(names.begin(), names.end(), c.file) == names.end()) continue;
+        writePngRgba8((staging.path() / c.file).string(), chartSize.x, chartSize.y,
+                      c.draw(rows, chartSize, "pcfscope stability", STANDALONE_CHART_MIN_PX));
+    }
+    outputs.commitStaged(staging.path(), o.out, names);
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    std::fprintf(stderr, "stability: drew %s's charts into %s/{%s} (the heat map needs a run)\n",
+                 o.replot.c_str(), o.out.c_str(), list.c_str());
+    return 0;
+}
+
 int runStabilityCommand(const StabilityCommandOptions& o) {
+    if (o.given("--replot")) return runReplot(o);
     // Every check first: nothing is computed or written unless all of it can be.
     CheckedStability checked = checkStabilityCommand(o);
     const StabilityOptions& options = checked.options;
@@ -346,8 +420,18 @@ Command addStabilityCommand(CLI::App& app) {
     sub->add_flag("--quick", o->quick,
                   "a few seconds, for CI: 160x90 frame, 128^2 map, 1 truth sample, nearest and "
                   "pcf-gather 3x3, fewer points per sweep (explicit options still win)");
+    sub->add_option("--replot", o->replot,
+                    "CSV: draw an existing stability.csv's charts into -o (at --chart-size), "
+                    "measure nothing; all but the heat map");
     sub->add_flag("-f,--force", o->force, "overwrite existing output files");
-    return {sub, [o] { return runStabilityCommand(*o); }, [o] { checkStabilityCommand(*o); }};
+    return {sub, [o] { return runStabilityCommand(*o); },
+            [o] {
+                if (o->given("--replot")) {
+                    checkReplot(*o);
+                } else {
+                    checkStabilityCommand(*o);
+                }
+            }};
 }
 
 }  // namespace pcf
