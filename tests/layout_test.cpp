@@ -20,6 +20,7 @@
 #include "analysis/bench_report.h"
 #include "analysis/speed_chart.h"
 #include "analysis/step_chart.h"
+#include "app/lesson_step.h"
 #include "app/session.h"
 #include "app/step_view.h"
 #include "base/input_error.h"
@@ -541,29 +542,52 @@ TEST_F(Layout, ChartStepsNameEachDotBesideItAndLabelItsTime) {
 }
 
 // Each step shows something its neighbour does not: consecutive steps that render the same scene
-// at the same pixel with the same settings, the same chart and the same highlight would export
-// the same picture beside different words. (The step text and the step list always differ; the
-// scene, the cells and the chart are what a class looks at.)
+// at the same pixel with the same settings, the same chart and a focus that composes the same
+// frame export the same picture beside different words, even when one of them outlines another
+// fetch in orange (5.3 and 5.4 were such a pair: the weight table and the four gathers on one
+// picture, one box apart). The step text and the step list always differ; the scene, the cells,
+// the formula and the chart are what a class looks at. A step that moves (animate) differs; a
+// split view (compare) is a frame of its own beside the step's, which it does not change.
 TEST(LessonSteps, ConsecutiveStepsShowDifferentPictures) {
+    // What the focus composes: the panels' places at every size and mode, and whether the cells
+    // keep the formula's room (two focus names may compose one frame: "formula" and
+    // "neighbourhood+formula").
+    auto composition = [](const LessonStep& step) {
+        Focus focus = stepFocus(step);
+        std::vector<float> out{cellsAlone(focus) ? 1.0f : 0.0f};
+        for (glm::ivec2 size : SIZES) {
+            for (bool presentation : {false, true}) {
+                InspectorLayout l = focusLayout(inspectorLayout(size, presentation), focus);
+                for (const Rect& r : {l.scene, l.steps, l.inspector}) {
+                    out.insert(out.end(), {r.x, r.y, r.w, r.h});
+                }
+            }
+        }
+        return out;
+    };
     std::vector<std::string> lessons;
     for (const auto& e : std::filesystem::directory_iterator(PCFSCOPE_SOURCE_DIR "/lessons")) {
         if (e.path().extension() == ".toml") lessons.push_back(e.path().string());
     }
     std::sort(lessons.begin(), lessons.end());
     ASSERT_GE(lessons.size(), 10u);
+    int pairs = 0;
     for (const std::string& path : lessons) {
         Lesson lesson = parseLessonFile(path);
         for (size_t k = 1; k < lesson.steps.size(); ++k) {
             const LessonStep& a = lesson.steps[k - 1];
             const LessonStep& b = lesson.steps[k];
+            ++pairs;
             bool same = a.settings == b.settings && a.chart == b.chart &&
-                        a.chartHighlight == b.chartHighlight &&
-                        a.highlightFetch == b.highlightFetch;
+                        a.chartHighlight == b.chartHighlight && composition(a) == composition(b) &&
+                        !a.animate && !b.animate;
             EXPECT_FALSE(same) << lesson.name << " steps " << k << " and " << k + 1
-                               << " show the same picture: change the pixel, a setting, or "
-                                  "highlight what the text talks about";
+                               << " show the same picture (an orange outline apart): change "
+                                  "the pixel, a setting, or the focus to what each text talks "
+                                  "about";
         }
     }
+    EXPECT_GE(pairs, 60);
 }
 
 // A chart step shows its chart where the scene goes (in presentation mode over the inspector's
@@ -1044,6 +1068,50 @@ TEST(Focus, NeighbourhoodFocusGivesTheInspectorTheRoom) {
             EXPECT_FALSE(s.sceneInset);
         }
     }
+}
+
+// A focus on the neighbourhood alone gives the cells the formula's room: bigger cells on the first
+// page, the formula whole on the next (5.4, the four gathers, beside 5.3's table and sum).
+TEST_F(Layout, NeighbourhoodAloneGivesTheCellsTheFormulasRoom) {
+    InspectorModel m;
+    m.title = "Focus";
+    m.stepTitles = {"One", "Two"};
+    m.stepText = "Short.";
+    m.trace = syntheticTrace();
+    int larger = 0;
+    for (glm::ivec2 size : SIZES) {
+        for (bool presentation : {false, true}) {
+            std::string where = std::to_string(size.x) + "x" + std::to_string(size.y) +
+                                (presentation ? " presentation" : "");
+            InspectorLayout base = inspectorLayout(size, presentation);
+            m.presentation = presentation;
+            m.sceneSize = glm::ivec2(base.scene.size());
+            auto formulaOn = [&](const InspectorLayout& l, int page) {
+                m.textPage = page;
+                FramePlan plan = planFrame(l, m);
+                EXPECT_TRUE(problems(plan, l).empty()) << where << " page " << page + 1;
+                bool formula = false;
+                for (const LayoutBox& b : plan.boxes) formula |= b.role == "formula";
+                return formula;
+            };
+            Focus both{.neighbourhood = true, .formula = true};
+            InspectorLayout lb = focusLayout(base, both);
+            m.focus = both;
+            EXPECT_TRUE(formulaOn(lb, 0)) << where;
+            Rect shared = neighbourhoodArea(lb, m);
+            Focus cells{.neighbourhood = true};
+            ASSERT_TRUE(cellsAlone(cells));
+            EXPECT_FALSE(cellsAlone(both));
+            InspectorLayout lc = focusLayout(base, cells);
+            m.focus = cells;
+            EXPECT_FALSE(formulaOn(lc, 0)) << where;
+            EXPECT_TRUE(formulaOn(lc, 1)) << where;
+            Rect alone = neighbourhoodArea(lc, m);
+            EXPECT_GE(alone.w, shared.w) << where;
+            larger += alone.w > shared.w + 8.0f;
+        }
+    }
+    EXPECT_GE(larger, 6);
 }
 
 }  // namespace

@@ -190,6 +190,8 @@ const char* focusNames() {
            "(\"neighbourhood+formula\")";
 }
 
+bool cellsAlone(const Focus& focus) { return focus == Focus{.neighbourhood = true}; }
+
 InspectorLayout focusLayout(const InspectorLayout& l, const Focus& focus) {
     if (focus.chart) return chartStepLayout(l);
     if (focus.scene || !(focus.neighbourhood || focus.formula) || l.status.y <= 0.0f) return l;

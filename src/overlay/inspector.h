@@ -33,6 +33,11 @@ std::optional<Focus> parseFocus(std::string_view name);
 std::string focusName(const Focus& focus);
 // The names parseFocus knows, for an error message.
 const char* focusNames();
+// A focus on the neighbourhood alone (a step about the texels, the gathers or the taps drawn in
+// the cells, not about the sum): the cells take the inspector's room, and the formula follows on
+// a page of its own instead of sharing the first. Any other focus puts the formula under the
+// cells when it fits there.
+bool cellsAlone(const Focus& focus);
 
 // Where things go in a frame of a given size. The scene keeps 16:9 (the frame lessons pick their
 // pixels in), top-left; the step text sits under it; the inspector fills the right. Presentation

@@ -356,6 +356,13 @@ InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m,
         out.tableTexels = texelsWithoutNumbers(tr, out.cells);
         return out;
     };
+    float legendH = BELOW_APART_LINES * lineHeightOf(t.label);
+    if (cellsAlone(m.focus)) {
+        // The step is about the cells: they keep the room the formula would take.
+        planCellsPage(panelLayout(l, tr, t, m.highlightFetch, legendH));
+        out.together = false;
+        return finish();
+    }
     planCellsPage(panelLayout(l, tr, t, m.highlightFetch));
     out.together = formulaFits();
     if (out.together) return finish();
@@ -363,7 +370,6 @@ InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m,
     // keeps its numbers (a 2 x 2 has room to spare).
     FittedText whole = fitFormula(tr, t, {0, 0, width, 1e6f});
     float formulaH = static_cast<float>(whole.lines.size()) * whole.lineHeight;
-    float legendH = BELOW_APART_LINES * lineHeightOf(t.label);
     planCellsPage(panelLayout(l, tr, t, m.highlightFetch, formulaH + legendH));
     out.together = hidden == 0 && formulaFits();
     if (!out.together) planCellsPage(panelLayout(l, tr, t, m.highlightFetch, legendH));
