@@ -281,7 +281,7 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     // The parts: the cells (with the formula when it fits under them), the texel table's pages
     // when some cells could not hold their numbers, the formula's pages when it did not fit.
     const std::vector<glm::ivec2>& table = panel.tableTexels;
-    int tableParts = table.empty() ? 0 : texelTablePages(l, t, table.size(), formulaTop);
+    int tableParts = table.empty() ? 0 : texelTablePages(l, m, t, table, formulaTop);
     int parts = 1 + tableParts + (panel.together ? 0 : formulaAlone.pages);
     pl.plan.textPages = std::max(pl.plan.textPages, parts);
     int part = std::min(std::max(0, m.textPage), parts - 1);

@@ -3,6 +3,7 @@
 // the weights), the page after the cells lists them, one row per texel, so that every number the
 // step's words can name is on some frame at the projector's number size (issue 19).
 #include <algorithm>
+#include <optional>
 
 #include "overlay/inspector_plan.h"
 
@@ -17,18 +18,9 @@ const TapRecord* firstTapOf(const Trace& tr, glm::ivec2 texel) {
     return nullptr;
 }
 
-// Rows on one page: the line pitch is the numbers' own size (a row set smaller to fit the width
-// keeps it, so the count does not depend on the rows' text). Under the title and the header;
-// above the line that says where the rest is.
-int rowsPerPage(const InspectorLayout& l, const TypeSizes& t, float top) {
-    float margin = inspectorMargin(l);
-    float lh = lineHeightOf(t.number);
-    float room = l.inspector.bottom() - margin - top - lineHeightOf(t.label) * 3.0f - lh;
-    return std::max(1, static_cast<int>(room / lh));
-}
-
 // The rows as columns padded to their widest cell (monospace), the header first.
-std::vector<std::string> alignedRows(const std::vector<std::vector<std::string>>& cells) {
+std::vector<std::string> alignedRows(const std::vector<std::vector<std::string>>& cells,
+                                     size_t leftColumns) {
     std::vector<size_t> widths;
     for (const auto& row : cells) {
         widths.resize(std::max(widths.size(), row.size()), 0);
@@ -39,9 +31,9 @@ std::vector<std::string> alignedRows(const std::vector<std::vector<std::string>>
         std::string line;
         for (size_t c = 0; c < row.size(); ++c) {
             std::string cell = row[c];
-            // Numbers right-aligned, the texel left-aligned.
+            // Numbers right-aligned, a texel "(i, j)" left-aligned.
             std::string pad(widths[c] - cell.size(), ' ');
-            line += c == 0 ? cell + pad : pad + cell;
+            line += c < leftColumns ? cell + pad : pad + cell;
             if (c + 1 < row.size()) line += "  ";
         }
         out.push_back(line);
@@ -49,26 +41,116 @@ std::vector<std::string> alignedRows(const std::vector<std::vector<std::string>>
     return out;
 }
 
-// The table's text: the header and one row per texel, with or without the depth - ref column.
+// How the table's columns are spelled: the texel as "(i, j)" or as two columns i and j (two
+// characters narrower, the names the cells' index labels use); the ref column only where the taps
+// compare with refs of their own (receiver-plane bias), else the one ref is in the title; the
+// depth - ref column, dropped only where nothing else makes the row fit.
+struct TableForm {
+    bool pairTexel = true;
+    bool refColumn = true;
+    bool margin = true;
+};
+
+// The table's text: the header and one row per texel.
 std::vector<std::string> tableRows(const InspectorModel& m, const std::vector<glm::ivec2>& texels,
-                                   bool margins) {
+                                   TableForm form) {
     const Trace& tr = *m.trace;
     std::vector<std::vector<std::string>> cells;
-    cells.push_back({"texel", "bit", "ref", "depth", "w"});
-    if (margins) cells.back().insert(cells.back().begin() + 4, "d - ref");
+    std::vector<std::string> header;
+    if (form.pairTexel) {
+        header = {"texel"};
+    } else {
+        header = {"i", "j"};
+    }
+    header.push_back("bit");
+    if (form.refColumn) header.push_back("ref");
+    header.push_back("depth");
+    if (form.margin) header.push_back("d - ref");
+    header.push_back("w");
+    cells.push_back(header);
     for (glm::ivec2 texel : texels) {
         const TapRecord* tap = firstTapOf(tr, texel);
         if (!tap) continue;
         // As the cell would show it (cellItems): a soft comparison's fraction for its bit.
         bool soft = tap->lit != 0.0f && tap->lit != 1.0f;
         std::string bit = soft ? fixed(tap->lit, 2) : tap->lit >= 0.5f ? "1" : "0";
-        std::vector<std::string> row{
-            "(" + std::to_string(texel.x) + ", " + std::to_string(texel.y) + ")", bit,
-            fixed(tap->ref, 4), fixed(tap->depth, 3), fixed(tr.weights.at(texel), 3)};
-        if (margins) row.insert(row.begin() + 4, fixed(tap->depth - tap->ref, 4));
+        std::vector<std::string> row;
+        if (form.pairTexel) {
+            row = {"(" + std::to_string(texel.x) + ", " + std::to_string(texel.y) + ")"};
+        } else {
+            row = {std::to_string(texel.x), std::to_string(texel.y)};
+        }
+        row.push_back(bit);
+        if (form.refColumn) row.push_back(fixed(tap->ref, 4));
+        row.push_back(fixed(tap->depth, 3));
+        if (form.margin) row.push_back(fixed(tap->depth - tap->ref, 4));
+        row.push_back(fixed(tr.weights.at(texel), 3));
         cells.push_back(std::move(row));
     }
-    return alignedRows(cells);
+    return alignedRows(cells, form.pairTexel ? 1 : 0);
+}
+
+// The one ref every read was compared with; none under a per-tap bias (receiver-plane).
+std::optional<float> commonRef(const Trace& tr) {
+    if (tr.taps.empty()) return std::nullopt;
+    for (const TapRecord& t : tr.taps) {
+        if (t.ref != tr.taps.front().ref) return std::nullopt;
+    }
+    return tr.taps.front().ref;
+}
+
+// The table as a page draws it: the title wrapped to the panel (never cut short: it says what
+// the rows are and, without a ref column, the ref), the rows at the widest type that holds them.
+struct TexelTable {
+    FittedText title;
+    std::vector<std::string> rows;  // the header first
+    float size = 0.0f;
+};
+
+TexelTable texelTableOf(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
+                        const std::vector<glm::ivec2>& texels) {
+    float width = l.inspector.w - 2 * inspectorMargin(l);
+    auto widest = [](const std::vector<std::string>& rows, float size) {
+        float w = 0;
+        for (const std::string& r : rows) w = std::max(w, measureText(FontFace::Mono, size, r).x);
+        return w;
+    };
+    std::optional<float> ref = commonRef(*m.trace);
+    TexelTable out;
+    // The first spelling whose rows fit at the numbers' size or smaller, down to their floor.
+    TableForm forms[] = {{true, !ref, true}, {false, !ref, true}, {false, !ref, false}};
+    for (const TableForm& form : forms) {
+        out.rows = tableRows(m, texels, form);
+        out.size = t.number;
+        while (widest(out.rows, out.size) > width && out.size > t.numberFloor) {
+            out.size = stepDown(out.size, t.numberFloor);
+        }
+        if (widest(out.rows, out.size) <= width) break;
+    }
+    std::string title = texels.size() == 1 ? "The texel whose cell has no room for its numbers"
+                                           : "The " + std::to_string(texels.size()) +
+                                                 " texels whose cells have no room for their "
+                                                 "numbers, row by row";
+    title += ref ? ", each compared with ref " + fixed(*ref, 4) + ":" : ":";
+    out.title = fitText(title, FontFace::Sans, t.label, t.label, width, 1e6f);
+    return out;
+}
+
+// The height of the title and the gap under it.
+float titleHeight(const TexelTable& table, const TypeSizes& t) {
+    return static_cast<float>(table.title.lines.size()) * table.title.lineHeight +
+           lineHeightOf(t.label) * 0.5f;
+}
+
+// Rows on one page: the line pitch is the numbers' own size (a row set smaller to fit the width
+// keeps it, so the count does not depend on the rows' text). Under the title and the header;
+// above the line that says where the rest is.
+int rowsPerPage(const InspectorLayout& l, const TypeSizes& t, const TexelTable& table, float top) {
+    float margin = inspectorMargin(l);
+    float lh = lineHeightOf(t.number);
+    float room = l.inspector.bottom() - margin - top - titleHeight(table, t) -
+                 lineHeightOf(t.label) * 1.5f - lh;
+    return std::max(1, static_cast<int>(room / lh));
 }
 
 }  // namespace
@@ -87,9 +169,10 @@ std::vector<glm::ivec2> texelsWithoutNumbers(const Trace& tr, const FramePlan& c
     return out;
 }
 
-int texelTablePages(const InspectorLayout& l, const TypeSizes& t, size_t rows, float top) {
-    int per = rowsPerPage(l, t, top);
-    return static_cast<int>((rows + static_cast<size_t>(per) - 1) / static_cast<size_t>(per));
+int texelTablePages(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
+                    const std::vector<glm::ivec2>& texels, float top) {
+    size_t per = static_cast<size_t>(rowsPerPage(l, t, texelTableOf(l, m, t, texels), top));
+    return static_cast<int>((texels.size() + per - 1) / per);
 }
 
 float planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
@@ -99,35 +182,20 @@ float planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel
     const std::string panel = "inspector";
     float margin = inspectorMargin(l);
     float width = p.w - 2 * margin;
-    // The widest type that holds a row, down to the numbers' floor; without the depth - ref
-    // column when even the floor does not.
-    auto widest = [](const std::vector<std::string>& rows, float size) {
-        float w = 0;
-        for (const std::string& r : rows) w = std::max(w, measureText(FontFace::Mono, size, r).x);
-        return w;
-    };
-    std::vector<std::string> rows = tableRows(m, texels, true);
-    float size = t.number;
-    while (widest(rows, size) > width && size > t.numberFloor) size = stepDown(size, t.numberFloor);
-    if (widest(rows, size) > width) rows = tableRows(m, texels, false);
-    std::string title = texels.size() == 1 ? "The texel whose cell has no room for its numbers:"
-                                           : "The " + std::to_string(texels.size()) +
-                                                 " texels whose cells have no room for their "
-                                                 "numbers, row by row:";
-    title = elideText(FontFace::Sans, t.label, title, width);
+    TexelTable table = texelTableOf(l, m, t, texels);
     float y = top;
-    pl.text({p.x + margin, y}, title, {FontFace::Sans, t.label, TEXT_DIM}, BoxKind::Text, panel,
-            "table-title");
-    y += lineHeightOf(t.label) * 1.5f;
+    placeFitted(pl, table.title, {p.x + margin, y, width, p.bottom() - margin - y}, 0,
+                FontFace::Sans, TEXT_DIM, panel, "table-title", "");
+    y += titleHeight(table, t);
     float lh = lineHeightOf(t.number);
-    pl.text({p.x + margin, y}, rows.front(), {FontFace::Mono, size, ACCENT}, BoxKind::Text, panel,
-            "table-header");
+    pl.text({p.x + margin, y}, table.rows.front(), {FontFace::Mono, table.size, ACCENT},
+            BoxKind::Text, panel, "table-header");
     y += lh;
-    int per = rowsPerPage(l, t, top);
+    int per = rowsPerPage(l, t, table, top);
     size_t first = static_cast<size_t>(page) * static_cast<size_t>(per);
     for (size_t k = first; k < texels.size() && k < first + static_cast<size_t>(per); ++k) {
-        pl.text({p.x + margin, y}, rows[k + 1], {FontFace::Mono, size, TEXT}, BoxKind::Number,
-                panel, "table-row");
+        pl.text({p.x + margin, y}, table.rows[k + 1], {FontFace::Mono, table.size, TEXT},
+                BoxKind::Number, panel, "table-row");
         pl.plan.numberedTexels.push_back(texels[k]);
         y += lh;
     }
