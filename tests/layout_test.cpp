@@ -226,6 +226,27 @@ std::vector<std::string> tableProblems(const FramePlan& plan, const Trace& tr, i
     return out;
 }
 
+// The cells' index labels name both axes the same way (6.4, tent 7x7, at 1024x768 presentation
+// had "115" over its columns and "j=135" beside its rows): "i=" and "j=" on both, or bare numbers
+// on both and the axes named once in the corner.
+std::vector<std::string> indexLabelProblems(const FramePlan& plan) {
+    int prefixed = 0, bare = 0;
+    bool axes = false;
+    for (const LayoutBox& b : plan.boxes) {
+        if (b.role == "texel-index") (b.text.find('=') == std::string::npos ? bare : prefixed)++;
+        if (b.role == "texel-axes") {
+            axes = b.text.find('i') != std::string::npos && b.text.find('j') != std::string::npos;
+        }
+    }
+    std::vector<std::string> out;
+    if (prefixed > 0 && bare > 0) {
+        out.push_back(std::to_string(prefixed) + " index labels say i= or j=, " +
+                      std::to_string(bare) + " are bare numbers");
+    }
+    if (bare > 0 && !axes) out.push_back("bare index labels and no i/j caption in the corner");
+    return out;
+}
+
 class Layout : public ::testing::Test {
   protected:
     static void SetUpTestSuite() { sContext = createHeadlessContext(); }
@@ -240,8 +261,9 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
     int pagedPresentation = 0, depthLost = 0, pointDepthLost = 0, pointMoved = 0, split = 0;
     int textPageEnds = 0,
         midSentence = 0;  // step-text pages but the last; of them, cut mid-sentence
-    // The texel tables' rows checked (tableProblems): some, or the check saw nothing.
-    int tableRowsSeen = 0;
+    // The texel tables' rows and the cells' index labels checked (tableProblems,
+    // indexLabelProblems): some of each, bare labels among them, or the checks saw nothing.
+    int tableRowsSeen = 0, indexLabelsSeen = 0, bareIndexLabelsSeen = 0;
     // Rendered once per step in the scene of a 1280x720 frame, the size a projector gets.
     glm::ivec2 renderScene(inspectorLayout({1280, 720}, false).scene.size());
     std::vector<std::string> lessons;
@@ -314,10 +336,15 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         for (const std::string& problem : problems(p, l)) {
                             ADD_FAILURE() << where << " page " << page + 1 << ": " << problem;
                         }
-                        std::vector<std::string> found;
+                        std::vector<std::string> found = indexLabelProblems(p);
                         if (m.trace) {
                             for (std::string& problem : tableProblems(p, *m.trace, tableRowsSeen))
                                 found.push_back(std::move(problem));
+                        }
+                        for (const LayoutBox& b : p.boxes) {
+                            indexLabelsSeen += b.role == "texel-index";
+                            bareIndexLabelsSeen +=
+                                b.role == "texel-index" && b.text.find('=') == std::string::npos;
                         }
                         for (const std::string& problem : found) {
                             ADD_FAILURE() << where << " page " << page + 1 << ": " << problem;
@@ -483,8 +510,11 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
     // paragraph or a sentence where one falls in the page's lower half, so only a sentence longer
     // than half a page may still be cut.
     EXPECT_LE(midSentence, 3) << "of " << textPageEnds << " step-text pages";
-    std::printf("layout: %d texel-table rows checked\n", tableRowsSeen);
+    std::printf("layout: %d texel-table rows and %d index labels (%d bare) checked\n",
+                tableRowsSeen, indexLabelsSeen, bareIndexLabelsSeen);
     EXPECT_GT(tableRowsSeen, 100);
+    EXPECT_GT(bareIndexLabelsSeen, 0);
+    EXPECT_GT(indexLabelsSeen, bareIndexLabelsSeen);
     // No cell loses a number to a mark: the lookup point's cell shows its depth, and so does
     // every cell in the map (a point mark that crowds a cell moves into a lane at its edge).
     EXPECT_EQ(pointDepthLost, 0);
