@@ -321,12 +321,13 @@ std::vector<glm::ivec2> texelsWithoutNumbers(const Trace& tr, const FramePlan& c
 // cut; it gives the ref when every read compares with the same one, and the ref column goes)
 // and a column header, in the inspector panel from `top` down. texelTablePages: the pages it
 // takes; planTexelTable: page `page` of it (it lists the rows it draws in numberedTexels);
-// returns the y under its last row.
+// returns the y under its last row. noteAfter: pages follow the table's last (the formula's),
+// so its last page too keeps the room for the line that says so.
 int texelTablePages(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
-                    const std::vector<glm::ivec2>& texels, float top);
+                    const std::vector<glm::ivec2>& texels, float top, bool noteAfter);
 float planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top,
-                     int page);
+                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top, int page,
+                     bool noteAfter);
 
 // ---- inspector_subtexel.cpp: the hw8 inset. ----
 

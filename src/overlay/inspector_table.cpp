@@ -131,7 +131,8 @@ TexelTable texelTableOf(const InspectorLayout& l, const InspectorModel& m, const
                                            : "The " + std::to_string(texels.size()) +
                                                  " texels whose cells have no room for their "
                                                  "numbers, row by row";
-    title += ref ? ", each compared with ref " + fixed(*ref, 4) + ":" : ":";
+    // (The ref as a code span: monospace like the rows, and never broken across lines.)
+    title += ref ? "; `ref " + fixed(*ref, 4) + "` for all:" : ":";
     out.title = fitText(title, FontFace::Sans, t.label, t.label, width, 1e6f);
     return out;
 }
@@ -144,13 +145,36 @@ float titleHeight(const TexelTable& table, const TypeSizes& t) {
 
 // Rows on one page: the line pitch is the numbers' own size (a row set smaller to fit the width
 // keeps it, so the count does not depend on the rows' text). Under the title and the header;
-// above the line that says where the rest is.
-int rowsPerPage(const InspectorLayout& l, const TypeSizes& t, const TexelTable& table, float top) {
+// above the line that says where the rest is, when `note`.
+int rowsPerPage(const InspectorLayout& l, const TypeSizes& t, const TexelTable& table, float top,
+                bool note) {
     float margin = inspectorMargin(l);
     float lh = lineHeightOf(t.number);
-    float room = l.inspector.bottom() - margin - top - titleHeight(table, t) -
-                 lineHeightOf(t.label) * 1.5f - lh;
+    float room = l.inspector.bottom() - margin - top - titleHeight(table, t) - lh;
+    if (note) room -= lineHeightOf(t.label) * 1.5f;
     return std::max(1, static_cast<int>(room / lh));
+}
+
+// The first row of each page. Every page but the last keeps the room for the line that says
+// where the rest is; the last one only when more pages follow it (noteAfter: the formula's), so
+// that a 25th row does not get a slide to itself. The rows are shared out evenly over the
+// fewest pages that hold them (64 rows at 21 a page: 16 on each of 4, not 21, 21, 21, 1).
+std::vector<size_t> tablePageStarts(const InspectorLayout& l, const TypeSizes& t,
+                                    const TexelTable& table, float top, size_t rows,
+                                    bool noteAfter) {
+    size_t per = static_cast<size_t>(rowsPerPage(l, t, table, top, true));
+    size_t last = static_cast<size_t>(rowsPerPage(l, t, table, top, noteAfter));
+    size_t pages = 1;
+    for (size_t left = rows; left > last; left -= per) ++pages;
+    // The first rows % pages pages take one row more. (Where that is more than a page with the
+    // note holds, the last page, without it, takes the rest.)
+    size_t each = rows / pages, extra = rows % pages;
+    bool even = each + (extra > 0 ? 1 : 0) <= per;
+    std::vector<size_t> starts{0};
+    for (size_t k = 0; k + 1 < pages; ++k) {
+        starts.push_back(starts.back() + (even ? each + (k < extra ? 1 : 0) : per));
+    }
+    return starts;
 }
 
 }  // namespace
@@ -170,14 +194,14 @@ std::vector<glm::ivec2> texelsWithoutNumbers(const Trace& tr, const FramePlan& c
 }
 
 int texelTablePages(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
-                    const std::vector<glm::ivec2>& texels, float top) {
-    size_t per = static_cast<size_t>(rowsPerPage(l, t, texelTableOf(l, m, t, texels), top));
-    return static_cast<int>((texels.size() + per - 1) / per);
+                    const std::vector<glm::ivec2>& texels, float top, bool noteAfter) {
+    TexelTable table = texelTableOf(l, m, t, texels);
+    return static_cast<int>(tablePageStarts(l, t, table, top, texels.size(), noteAfter).size());
 }
 
 float planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top,
-                     int page) {
+                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top, int page,
+                     bool noteAfter) {
     const Rect& p = l.inspector;
     const std::string panel = "inspector";
     float margin = inspectorMargin(l);
@@ -191,9 +215,10 @@ float planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel
     pl.text({p.x + margin, y}, table.rows.front(), {FontFace::Mono, table.size, ACCENT},
             BoxKind::Text, panel, "table-header");
     y += lh;
-    int per = rowsPerPage(l, t, table, top);
-    size_t first = static_cast<size_t>(page) * static_cast<size_t>(per);
-    for (size_t k = first; k < texels.size() && k < first + static_cast<size_t>(per); ++k) {
+    std::vector<size_t> starts = tablePageStarts(l, t, table, top, texels.size(), noteAfter);
+    size_t at = std::min(static_cast<size_t>(std::max(0, page)), starts.size() - 1);
+    size_t end = at + 1 < starts.size() ? starts[at + 1] : texels.size();
+    for (size_t k = starts[at]; k < end; ++k) {
         pl.text({p.x + margin, y}, table.rows[k + 1], {FontFace::Mono, table.size, TEXT},
                 BoxKind::Number, panel, "table-row");
         pl.plan.numberedTexels.push_back(texels[k]);
