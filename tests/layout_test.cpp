@@ -6,6 +6,7 @@
 // eight sizes without drawing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -138,6 +140,114 @@ std::vector<std::string> cropped(const std::vector<FramePlan>& pages, const Trac
     return out;
 }
 
+// A table row or header as its columns: monospace cells apart by two spaces or more ("d - ref"
+// and "(160, 116)" keep their single spaces).
+std::vector<std::string> tableColumns(const std::string& line) {
+    std::vector<std::string> out;
+    std::string cell;
+    for (size_t k = 0; k <= line.size(); ++k) {
+        bool gap =
+            k == line.size() || (line[k] == ' ' && k + 1 < line.size() && line[k + 1] == ' ');
+        if (!gap) {
+            if (!(cell.empty() && line[k] == ' ')) cell += line[k];
+            continue;
+        }
+        if (!cell.empty()) out.push_back(cell);
+        cell.clear();
+        while (k + 1 < line.size() && line[k + 1] == ' ') ++k;
+    }
+    return out;
+}
+
+// The texel table of one page as a lecturer reads it (issue 19: 8.4 at 1024x768 presentation cut
+// its title with "..." and dropped its depth - ref column, the step's very subject): the title
+// whole; every row has every column of the header, depth - ref among them, and the row's numbers
+// are its texel's first read; the ref in its column or, when every read compares with the same
+// one, in the title. Returns the problems and counts the rows checked.
+std::vector<std::string> tableProblems(const FramePlan& plan, const Trace& tr, int& rowsChecked) {
+    std::vector<std::string> out;
+    std::vector<std::string> header;
+    std::string title;
+    for (const LayoutBox& b : plan.boxes) {
+        if (b.role == "table-title") {
+            title = b.text;  // its lines joined
+            std::replace(title.begin(), title.end(), '\n', ' ');
+            if (b.shortened || b.text.find("...") != std::string::npos) {
+                out.push_back("the table's title is shortened: " + b.text);
+            }
+        }
+        if (b.role == "table-header") header = tableColumns(b.text);
+    }
+    auto column = [&](const std::string& name) {
+        auto it = std::find(header.begin(), header.end(), name);
+        return it == header.end() ? -1 : static_cast<int>(it - header.begin());
+    };
+    int margin = column("d - ref"), ref = column("ref"), depth = column("depth");
+    bool pair = column("texel") == 0;
+    // Without a ref column, the title says the one ref: "...; ref 0.5867 for all:".
+    std::optional<float> titleRef;
+    if (size_t at = title.rfind("ref "); at != std::string::npos) {
+        titleRef = std::stof(title.substr(at + 4));
+    }
+    for (const LayoutBox& b : plan.boxes) {
+        if (b.role != "table-row") continue;
+        ++rowsChecked;
+        std::vector<std::string> cells = tableColumns(b.text);
+        if (margin < 0 || depth < 0 || cells.size() != header.size()) {
+            out.push_back("table row \"" + b.text + "\" lacks a column of texel, bit, ref, " +
+                          "depth, d - ref, w (header: " + std::to_string(header.size()) +
+                          " columns)");
+            continue;
+        }
+        glm::ivec2 texel(-1);
+        if (pair) {
+            std::sscanf(cells[0].c_str(), "(%d, %d)", &texel.x, &texel.y);
+        } else {
+            texel = {std::stoi(cells[column("i")]), std::stoi(cells[column("j")])};
+        }
+        const TapRecord* tap = nullptr;
+        for (const TapRecord& t : tr.taps) {
+            if (t.texel == texel && !tap) tap = &t;
+        }
+        if (!tap) {
+            out.push_back("table row \"" + b.text + "\" names a texel the trace did not read");
+            continue;
+        }
+        // Printed to 4 decimals (depth to 3).
+        if (std::abs(std::stof(cells[margin]) - (tap->depth - tap->ref)) > 5.1e-5f ||
+            std::abs(std::stof(cells[depth]) - tap->depth) > 5.1e-4f) {
+            out.push_back("table row \"" + b.text + "\": depth or d - ref is not its read's");
+        }
+        float shownRef = ref >= 0 ? std::stof(cells[ref]) : titleRef.value_or(-1.0f);
+        if (std::abs(shownRef - tap->ref) > 5.1e-5f) {
+            out.push_back("table row \"" + b.text + "\": its ref " + std::to_string(tap->ref) +
+                          " is neither in a ref column nor the title's (" + title + ")");
+        }
+    }
+    return out;
+}
+
+// The cells' index labels name both axes the same way (6.4, tent 7x7, at 1024x768 presentation
+// had "115" over its columns and "j=135" beside its rows): "i=" and "j=" on both, or bare numbers
+// on both and the axes named once in the corner.
+std::vector<std::string> indexLabelProblems(const FramePlan& plan) {
+    int prefixed = 0, bare = 0;
+    bool axes = false;
+    for (const LayoutBox& b : plan.boxes) {
+        if (b.role == "texel-index") (b.text.find('=') == std::string::npos ? bare : prefixed)++;
+        if (b.role == "texel-axes") {
+            axes = b.text.find('i') != std::string::npos && b.text.find('j') != std::string::npos;
+        }
+    }
+    std::vector<std::string> out;
+    if (prefixed > 0 && bare > 0) {
+        out.push_back(std::to_string(prefixed) + " index labels say i= or j=, " +
+                      std::to_string(bare) + " are bare numbers");
+    }
+    if (bare > 0 && !axes) out.push_back("bare index labels and no i/j caption in the corner");
+    return out;
+}
+
 class Layout : public ::testing::Test {
   protected:
     static void SetUpTestSuite() { sContext = createHeadlessContext(); }
@@ -152,6 +262,9 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
     int pagedPresentation = 0, depthLost = 0, pointDepthLost = 0, pointMoved = 0, split = 0;
     int textPageEnds = 0,
         midSentence = 0;  // step-text pages but the last; of them, cut mid-sentence
+    // The texel tables' rows and the cells' index labels checked (tableProblems,
+    // indexLabelProblems): some of each, bare labels among them, or the checks saw nothing.
+    int tableRowsSeen = 0, indexLabelsSeen = 0, bareIndexLabelsSeen = 0, tablesPaged = 0;
     // Rendered once per step in the scene of a 1280x720 frame, the size a projector gets.
     glm::ivec2 renderScene(inspectorLayout({1280, 720}, false).scene.size());
     std::vector<std::string> lessons;
@@ -224,6 +337,19 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         for (const std::string& problem : problems(p, l)) {
                             ADD_FAILURE() << where << " page " << page + 1 << ": " << problem;
                         }
+                        std::vector<std::string> found = indexLabelProblems(p);
+                        if (m.trace) {
+                            for (std::string& problem : tableProblems(p, *m.trace, tableRowsSeen))
+                                found.push_back(std::move(problem));
+                        }
+                        for (const LayoutBox& b : p.boxes) {
+                            indexLabelsSeen += b.role == "texel-index";
+                            bareIndexLabelsSeen +=
+                                b.role == "texel-index" && b.text.find('=') == std::string::npos;
+                        }
+                        for (const std::string& problem : found) {
+                            ADD_FAILURE() << where << " page " << page + 1 << ": " << problem;
+                        }
                         // How the step text's pages end (reported below): at a sentence's
                         // end, a table row or a colon, or in the middle of a sentence.
                         for (const LayoutBox& b : p.boxes) {
@@ -243,6 +369,21 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                             midSentence += !clean;
                         }
                         pages.push_back(std::move(p));
+                    }
+                    // A texel table over several pages shares its rows out evenly: 4.4 at
+                    // 1024x768 presentation gave its 25th row a slide of its own.
+                    std::vector<int> rowsPerTablePage;
+                    for (const FramePlan& p : pages) {
+                        int rows = 0;
+                        for (const LayoutBox& b : p.boxes) rows += b.role == "table-row";
+                        if (rows > 0) rowsPerTablePage.push_back(rows);
+                    }
+                    if (rowsPerTablePage.size() > 1) {
+                        auto [few, most] =
+                            std::minmax_element(rowsPerTablePage.begin(), rowsPerTablePage.end());
+                        EXPECT_LE(*most - *few, 1)
+                            << where << ": table pages of " << *most << " and " << *few << " rows";
+                        ++tablesPaged;
                     }
                     // A frame with more pages says so on its first (the step text's "more"
                     // mark or the inspector's "next page" line): 4.3 at 1024x768 presentation
@@ -385,6 +526,14 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
     // paragraph or a sentence where one falls in the page's lower half, so only a sentence longer
     // than half a page may still be cut.
     EXPECT_LE(midSentence, 3) << "of " << textPageEnds << " step-text pages";
+    std::printf(
+        "layout: %d texel-table rows (%d tables over several pages) and %d index labels (%d "
+        "bare) checked\n",
+        tableRowsSeen, tablesPaged, indexLabelsSeen, bareIndexLabelsSeen);
+    EXPECT_GT(tableRowsSeen, 100);
+    EXPECT_GT(tablesPaged, 0);
+    EXPECT_GT(bareIndexLabelsSeen, 0);
+    EXPECT_GT(indexLabelsSeen, bareIndexLabelsSeen);
     // No cell loses a number to a mark: the lookup point's cell shows its depth, and so does
     // every cell in the map (a point mark that crowds a cell moves into a lane at its edge).
     EXPECT_EQ(pointDepthLost, 0);

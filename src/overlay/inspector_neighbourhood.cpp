@@ -63,8 +63,10 @@ struct Lanes {
 Lanes lanesOf(const Grid& g, const TypeSizes& t, float width) {
     Lanes ln;
     int lastRow = std::max(std::abs(g.full.origin.y), std::abs(g.full.origin.y + g.full.size.y));
-    ln.labelW =
-        measureText(FontFace::Mono, t.label, "j=-" + std::to_string(lastRow)).x + INDEX_GAP_PX;
+    // (Room for the axes' caption too, which bare index labels bring: planGridLines.)
+    ln.labelW = std::max(measureText(FontFace::Mono, t.label, "j=-" + std::to_string(lastRow)).x,
+                         measureText(FontFace::Mono, t.label, "j↓ i→").x) +
+                INDEX_GAP_PX;
     ln.laneH = lineHeightOf(t.label) + INDEX_LANE_PAD_PX;
     ln.fyW = measureText(FontFace::Mono, t.label, "fy 0.00").x + FRACTION_LANE_PAD_PX;
     // hw8: the fractions get four decimals and their 8-bit step on a second line (the bottom
@@ -249,16 +251,20 @@ void planGridLines(Planner& pl, const InspectorLayout& l, const Grid& g, const T
     });
     // Column labels as wide as the cells allow: "i=117", else "117" on every cell, else on the
     // texels whose index is a multiple of the smallest step that gives a label its room (a
-    // 33-texel pcss disk at 1280x720 has 11 px cells). Row labels likewise by line height.
+    // 33-texel pcss disk at 1280x720 has 11 px cells). Row labels likewise by line height, and
+    // named the same way as the columns: "j=135" beside "i=117", else bare numbers on both and
+    // the axes named once, in the corner above the row labels and left of the column labels
+    // ("j↓ i→": the row index grows downwards, the column index to the right).
     int last = g.view.origin.x + g.view.size.x - 1;
     float labelW = measureText(FontFace::Mono, t.label, std::to_string(last)).x + INDEX_GAP_PX;
     bool prefix =
         measureText(FontFace::Mono, t.label, "i=" + std::to_string(last)).x + INDEX_GAP_PX <=
         g.cell;
     int every = prefix ? 1 : indexLabelStep(g.cell, labelW);
+    float labelTop = g.laneTop.y + INDEX_TOP_GAP_PX;
     for (int i = 0; i < g.view.size.x; ++i) {
         if ((g.view.origin.x + i) % every != 0) continue;
-        pl.text({area.x + (i + 0.5f) * g.cell, g.laneTop.y + INDEX_TOP_GAP_PX},
+        pl.text({area.x + (i + 0.5f) * g.cell, labelTop},
                 (prefix ? "i=" : "") + std::to_string(g.view.origin.x + i),
                 {FontFace::Mono, t.label, TEXT_DIM, TextAlign::Center}, BoxKind::Label, panel,
                 "texel-index");
@@ -268,9 +274,14 @@ void planGridLines(Planner& pl, const InspectorLayout& l, const Grid& g, const T
         if ((g.view.origin.y + j) % everyRow != 0) continue;
         pl.text({g.laneLeft.right() - INDEX_RIGHT_GAP_PX,
                  area.y + (j + 0.5f) * g.cell - lineHeightOf(t.label) * 0.5f},
-                "j=" + std::to_string(g.view.origin.y + j),
+                (prefix ? "j=" : "") + std::to_string(g.view.origin.y + j),
                 {FontFace::Mono, t.label, TEXT_DIM, TextAlign::Right}, BoxKind::Label, panel,
                 "texel-index");
+    }
+    if (!prefix) {
+        pl.text({g.laneLeft.right() - INDEX_RIGHT_GAP_PX, labelTop}, "j↓ i→",
+                {FontFace::Mono, t.label, TEXT_DIM, TextAlign::Right}, BoxKind::Label, panel,
+                "texel-axes");
     }
 }
 

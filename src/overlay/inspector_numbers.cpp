@@ -281,7 +281,8 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     // The parts: the cells (with the formula when it fits under them), the texel table's pages
     // when some cells could not hold their numbers, the formula's pages when it did not fit.
     const std::vector<glm::ivec2>& table = panel.tableTexels;
-    int tableParts = table.empty() ? 0 : texelTablePages(l, t, table.size(), formulaTop);
+    int tableParts =
+        table.empty() ? 0 : texelTablePages(l, m, t, table, formulaTop, !panel.together);
     int parts = 1 + tableParts + (panel.together ? 0 : formulaAlone.pages);
     pl.plan.textPages = std::max(pl.plan.textPages, parts);
     int part = std::min(std::max(0, m.textPage), parts - 1);
@@ -305,7 +306,7 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
         return;
     }
     if (part <= tableParts) {
-        float end = planTexelTable(pl, l, m, t, table, formulaTop, part - 1);
+        float end = planTexelTable(pl, l, m, t, table, formulaTop, part - 1, !panel.together);
         if (part < parts - 1) {
             planNextPageNote(pl, l, m, t, margin, end + t.label * 0.5f,
                              part < tableParts ? "more texels" : "the formula, every term");

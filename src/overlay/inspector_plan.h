@@ -317,13 +317,17 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, CellMar
 // The read texels (each once, row by row) whose numbers `cells` did not draw whole.
 std::vector<glm::ivec2> texelsWithoutNumbers(const Trace& tr, const FramePlan& cells);
 // The texel table: one row per texel of `texels` with the numbers its cell shows at a size
-// where they fit (bit, own ref, depth, weight) and depth - ref, under a column header, in the
-// inspector panel from `top` down. texelTablePages: the pages it takes; planTexelTable: page
-// `page` of it (it lists the rows it draws in numberedTexels); returns the y under its last row.
-int texelTablePages(const InspectorLayout& l, const TypeSizes& t, size_t rows, float top);
+// where they fit (bit, own ref, depth, weight) and depth - ref, under a title (wrapped, never
+// cut; it gives the ref when every read compares with the same one, and the ref column goes)
+// and a column header, in the inspector panel from `top` down. texelTablePages: the pages it
+// takes; planTexelTable: page `page` of it (it lists the rows it draws in numberedTexels);
+// returns the y under its last row. noteAfter: pages follow the table's last (the formula's),
+// so its last page too keeps the room for the line that says so.
+int texelTablePages(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
+                    const std::vector<glm::ivec2>& texels, float top, bool noteAfter);
 float planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top,
-                     int page);
+                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top, int page,
+                     bool noteAfter);
 
 // ---- inspector_subtexel.cpp: the hw8 inset. ----
 
