@@ -303,8 +303,7 @@ std::vector<std::string> checkOutputs(const BenchCommandOptions& o, const BenchP
         names.push_back("diff/" + diffFileName(p));
     }
     outputs.addInput("--scene-file", o.render.sceneFile);
-    outputs.addDirectory("-o", o.out);
-    for (const std::string& name : names) outputs.add("-o", fs::path(o.out) / name);
+    outputs.addFilesIn("-o", o.out, names);
     return names;
 }
 
@@ -466,8 +465,7 @@ int runReplot(const BenchCommandOptions& o) {
     if (contact) names.push_back(CONTACT_CHART);
     OutputFiles outputs(o.force);
     outputs.addInput("--replot", o.replot);
-    outputs.addDirectory("-o", o.out);
-    for (const std::string& name : names) outputs.add("-o", fs::path(o.out) / name);
+    outputs.addFilesIn("-o", o.out, names);
     StagingDir staging(o.out, "bench");
     std::unique_ptr<GlContext> gl = createHeadlessContext();
     writeCharts(plan, rows, false, staging.path());

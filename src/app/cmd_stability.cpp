@@ -306,8 +306,7 @@ int runReplot(const StabilityCommandOptions& o) {
     auto [chartSize, rows, names] = checkReplot(o);
     OutputFiles outputs(o.force);
     outputs.addInput("--replot", o.replot);
-    outputs.addDirectory("-o", o.out);
-    for (const std::string& name : names) outputs.add("-o", fs::path(o.out) / name);
+    outputs.addFilesIn("-o", o.out, names);
     StagingDir staging(o.out, "stability");
     std::unique_ptr<GlContext> context = createHeadlessContext();
     for (const SweepChart& c : sweepCharts()) {
@@ -334,8 +333,7 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
     const std::string csvName = "stability.csv", mdName = "stability.md";
     std::vector<std::string> finalNames = outputNames(options.sweeps);
     OutputFiles outputs(o.force);
-    outputs.addDirectory("-o", outDir);
-    for (const std::string& name : finalNames) outputs.add("-o", outDir / name);
+    outputs.addFilesIn("-o", outDir, finalNames);
 
     auto started = std::chrono::steady_clock::now();
     auto seconds = [&] {

@@ -245,6 +245,12 @@ void OutputFiles::add(const std::string& option, const fs::path& path) {
     if (!exists) mNewFiles.push_back(path);
 }
 
+void OutputFiles::addFilesIn(const std::string& option, const fs::path& dir,
+                             const std::vector<std::string>& names) {
+    addDirectory(option, dir);
+    for (const std::string& name : names) add(option, dir / name);
+}
+
 void OutputFiles::addDirectory(const std::string& option, const fs::path& dir) {
     if (dir.empty()) throw UsageError(option + " needs a directory");
     std::lock_guard lock(registryMutex());

@@ -32,6 +32,9 @@ class OutputFiles {
     void add(const std::string& option, const std::filesystem::path& path);
     // The same for a directory the command writes into (created now if missing).
     void addDirectory(const std::string& option, const std::filesystem::path& dir);
+    // The directory and each of `names` in it (a command's set of files in -o).
+    void addFilesIn(const std::string& option, const std::filesystem::path& dir,
+                    const std::vector<std::string>& names);
 
     // Records a file the command reads (call before add): add() then refuses an output that is this
     // file (see requireNotInput), --force or not.
