@@ -172,7 +172,7 @@ float highlightRingWidth(float s) { return std::max(2.5f, 3.0f * s); }
 float badgeRadiusFor(const SpeedChartLayout& L) {
     std::string widest(std::to_string(std::max<size_t>(1, L.mustName.size())).size(), '8');
     float w = measureText(FontFace::Sans, L.labelPx, widest).x;
-    return std::ceil(0.5f * std::max(w + 0.3f * L.labelPx, 0.95f * L.labelPx));
+    return std::ceil(0.5f * std::max(w + 0.3f * L.labelPx, 1.0f * L.labelPx));
 }
 
 // A line of the key: as tall as the legend's type or a badge with its clearance.
@@ -729,7 +729,7 @@ void drawBadges(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRow> 
     float s = L.scale;
     auto badge = [&](const Rect& box, size_t row) {
         c.circle(box.centre(), L.badgeRadius, methodColour(rows[row].point.method));
-        c.circle(box.centre(), L.badgeRadius - std::max(2.0f, 2.5f * s), {1.0f, 1.0f, 1.0f, 1.0f});
+        c.circle(box.centre(), L.badgeRadius - std::max(1.5f, 1.5f * s), {1.0f, 1.0f, 1.0f, 1.0f});
     };
     for (size_t k = 0; k < rows.size(); ++k) {
         if (L.badge[k] == 0) continue;

@@ -57,8 +57,8 @@ class Placer {
     // What a spot for row k does wrong, 0 when nothing: it leaves the plot, lies on a placed
     // name or badge, an error bar (a bar through a name strikes it out), a dot or its rings (its
     // own too, with CHART_MARK_CLEARANCE; a badge may lie on its own dot's rings), or is not
-    // strictly nearer its own dot than any other (dots whose discs overlap excepted: no spot
-    // names one of them and not the other).
+    // nearer its own dot than any other by a dot radius (dots whose discs overlap excepted: no
+    // spot names one of them and not the other).
     float fault(size_t k, const Spot& s) const {
         constexpr float HARD = 1000.0f;
         float f = HARD * outsideArea(s.box, L.plot);
@@ -71,7 +71,8 @@ class Placer {
             float keep = (j == k && s.disc ? L.dotRadius : marks[j]) + CHART_MARK_CLEARANCE;
             if (d < keep) f += HARD * (keep - d);
             if (j == k || glm::length(L.points[j] - p) < 2.0f * L.dotRadius) continue;
-            if (d <= own) f += HARD * (1.0f + own - d);
+            // (By a dot radius at least: a name about as near two dots reads as either's.)
+            if (d <= own + L.dotRadius) f += HARD * (1.0f + own + L.dotRadius - d);
         }
         return f;
     }
