@@ -1,12 +1,13 @@
 // speed_chart_labels.h: where the speed chart's dot names go, the last step of layoutSpeedChart
 // (speed_chart.h). A name sits beside its own dot, in the plot, on no other name or badge, no
-// dot or ring (its own too) and no error bar, and nearer its own dot than any other: a reader
-// takes a name for the nearest dot's, whatever a leader says (lesson 11 at 1024x768 on a
-// projector read "nearest 2048" as the name of the nearest-256 dot it sat by, 160 px from its
-// own). A dot the chart must name whose name finds no such spot within speedChartNameReach gets
-// a numbered badge touching its outer ring instead, and the key under the legend gives the
-// number its name: a badge is small enough to fit beside any dot of a crowd. No GL: the names
-// are measured with the fonts.
+// dot or ring (its own too) and no error bar, and nearer its own dot than any other by a dot
+// radius: a reader takes a name for the nearest dot's, whatever a leader says (lesson 11 at
+// 1024x768 on a projector read "nearest 2048" as the name of the nearest-256 dot it sat by,
+// 160 px from its own). A dot the chart must name whose name finds no such spot within
+// speedChartNameReach gets a numbered badge instead, touching the dot or its outer ring where
+// such a spot is clean, else drawn in the dot's place (a badge centred on its dot names no other),
+// and the key under the x axis gives the number its name. No GL: the names are measured with the
+// fonts.
 #pragma once
 
 #include "analysis/speed_chart.h"
@@ -23,9 +24,9 @@ float speedChartNameReach(const SpeedChartLayout& layout);
 // clean spot does, else lies at most this far out.
 float speedChartBadgeGap(const SpeedChartLayout& layout);
 
-// Sets layout.labels, labelShown, badge, badgeBoxes and badgeRadius from the dots, rings, error
-// bars, label texts and layout.mustName that layoutSpeedChart has laid out. keptLabelsOnly: no
-// row but mustName's is named. mustName's rows are placed first (greedily, in row order; where
+// Sets layout.labels, labelShown, badge, badgeBoxes, badgeOnDot and keyRows from the dots, rings,
+// error bars, label texts and layout.mustName that layoutSpeedChart has laid out. keptLabelsOnly:
+// no row but mustName's is named. mustName's rows are placed first (greedily, in row order; where
 // some got badges, once more with those first, keeping the placement with fewer badges), then
 // the rest where they fit; badges are numbered in the order of their dots' times.
 void placeSpeedChartLabels(SpeedChartLayout& layout, bool keptLabelsOnly);
