@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -294,43 +295,83 @@ TEST(SpeedChart, LayoutPutsTimeOnALogAxisAndErrorOnALinearOne) {
     }
 }
 
-// The shipped chart's 68 dots in a lesson's scene panel (617 x 347 at 1280x720 presentation):
-// only the labels that find a clean spot are drawn, so none overlaps another or covers a dot;
-// the front's and the highlighted dots' labels are drawn whatever the crowd.
-TEST(SpeedChart, ACrowdedChartDrawsOnlyLabelsThatFit) {
+// The shipped chart's 72 dots in a lesson's scene panel (617 x 347 at 1280x720 presentation):
+// the ringed dots (gather3 at every map size) are the ones the chart must name, each by a name
+// beside it or, where none fits, a numbered badge with its name in the key; any other dot is
+// named only where a clean spot lies right beside it, so fewer are on the small chart; the
+// front's names give way to the ringed. Where nothing is ringed, the front's are named.
+TEST(SpeedChart, ACrowdedChartNamesTheRingedDotsBesideThemOrByBadge) {
     std::ifstream in(PCFSCOPE_SOURCE_DIR "/lessons/figures/bench.csv");
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::vector<BenchRow> rows = parseBenchCsv(text, "bench.csv");
     ASSERT_GT(rows.size(), 40u);
     std::vector<size_t> gather3 = chartRowsMatching(rows, "gather3");
-    ASSERT_FALSE(gather3.empty());
+    ASSERT_EQ(gather3.size(), 4u);
+    std::map<int, size_t> shownAt;
     for (glm::ivec2 size : {glm::ivec2(617, 347), glm::ivec2(1280, 720)}) {
+        // (The small chart with a projector's 18 px type, as a lesson frame draws it.)
         SpeedChartLayout L =
-            layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse, gather3);
-        auto needed = [&](size_t k) {
-            return std::find(L.front.begin(), L.front.end(), k) != L.front.end() ||
-                   std::find(gather3.begin(), gather3.end(), k) != gather3.end();
-        };
-        size_t shown = 0;
-        for (size_t a = 0; a < rows.size(); ++a) {
-            if (!L.labelShown[a]) continue;
-            ++shown;
-            for (size_t b = a + 1; b < rows.size(); ++b) {
-                bool clash = L.labelShown[b] && !L.labels[a].intersect(L.labels[b]).empty();
-                if (clash) {
-                    EXPECT_TRUE(needed(a) && needed(b)) << size.x << ": " << a << " " << b;
-                }
-            }
+            layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse, gather3,
+                             size.x == 617 ? 18.0f : 8.0f);
+        EXPECT_EQ(L.mustName, gather3) << size.x;
+        for (size_t k : gather3) {
+            EXPECT_TRUE(L.labelShown[k] || L.badge[k] > 0) << size.x << ": gather3 " << k;
         }
-        for (size_t k : L.front) EXPECT_TRUE(L.labelShown[k]) << size.x << ": front " << k;
-        for (size_t k : gather3) EXPECT_TRUE(L.labelShown[k]) << size.x << ": gather3 " << k;
-        // Each name beside its own dot, off the bars; each dot's time near a labelled tick.
+        // Each name and badge beside its own dot, off the bars; each dot's time near a tick.
         for (const std::string& f : speedChartLabelFaults(L)) ADD_FAILURE() << size.x << ": " << f;
         for (const std::string& f : speedChartTickFaults(L)) ADD_FAILURE() << size.x << ": " << f;
-        // Room decides how many of the rest are named: more on the larger chart.
-        if (size.x == 617) {
-            EXPECT_LT(shown, rows.size()) << "a crowded chart drops labels";
+        shownAt[size.x] =
+            static_cast<size_t>(std::count(L.labelShown.begin(), L.labelShown.end(), true));
+    }
+    EXPECT_LT(shownAt[617], shownAt[1280]) << "room decides how many of the rest are named";
+    EXPECT_LT(shownAt[617], rows.size()) << "a crowded chart drops names";
+    SpeedChartLayout plain = layoutSpeedChart(rows, {1280, 720});
+    EXPECT_EQ(plain.mustName, plain.front);
+    for (const std::string& f : speedChartLabelFaults(plain)) ADD_FAILURE() << f;
+}
+
+// A crowd too dense for names: 8 ringed runs in a line, each a few dot diameters from the next,
+// named at a projector's 18 px. Every one gets a name beside it or a badge touching it, none on
+// another dot, and the key lists the badges in the order of their dots' times, each with its
+// dot's name.
+TEST(SpeedChart, ACrowdTooDenseForNamesGetsNumberedBadgesAndAKey) {
+    std::vector<BenchRow> rows;
+    for (int i = 0; i < 8; ++i) {  // a line of dots up and to the right, ~30 px apart
+        BenchRow r;
+        r.point.method = PCF_GATHER;
+        r.point.kernel = 3;
+        r.point.mapSize = 64 * (i + 1);
+        r.gpuMs = 10.0 * std::pow(1.25, i);
+        r.error.edgeRmse = 0.1 + 0.03 * i;
+        rows.push_back(r);
+    }
+    std::vector<size_t> all(rows.size());
+    for (size_t k = 0; k < all.size(); ++k) all[k] = k;
+    SpeedChartLayout L = layoutSpeedChart(rows, {617, 347}, ChartTiming::Scene,
+                                          ChartAccuracy::EdgeRmse, all, 18.0f, true);
+    for (const std::string& f : speedChartLabelFaults(L)) ADD_FAILURE() << f;
+    ASSERT_GE(L.keyRows.size(), 2u) << "a crowd this dense has badges";
+    for (size_t i = 1; i < L.keyRows.size(); ++i) {
+        EXPECT_LE(L.points[L.keyRows[i - 1]].x, L.points[L.keyRows[i]].x) << "key in time order";
+    }
+    std::vector<ChartTextBox> boxes = speedChartTextBoxes(L, SpeedChartText{});
+    for (size_t i = 0; i < L.keyRows.size(); ++i) {
+        size_t row = L.keyRows[i];
+        int numbers = 0, keyNames = 0;
+        for (const ChartTextBox& b : boxes) {
+            if (b.row != static_cast<int>(row)) continue;
+            numbers += b.role == "chart-badge" && b.text == std::to_string(i + 1);
+            keyNames += b.role == "chart-key" && b.text == L.labelTexts[row];
+            EXPECT_NE(b.role, "chart-label") << "a badged dot has no name by it: " << row;
         }
+        EXPECT_EQ(numbers, 2) << "the badge by the dot and in the key: " << row;
+        EXPECT_EQ(keyNames, 1) << row;
+        // The badge touches the dot's outer ring, or lies just beyond it.
+        float gap = glm::length(L.badgeBoxes[row].centre() - L.points[row]) - L.badgeRadius -
+                    speedChartMarkRadius(L, row);
+        EXPECT_LE(gap, speedChartBadgeGap(L) + 1.0f) << row;
+        EXPECT_GT(L.keyBadges[i].y, L.plot.bottom()) << "the key under the x axis: " << i;
+        EXPECT_LE(L.keyBadges[i].bottom(), static_cast<float>(L.size.y)) << i;
     }
 }
 

@@ -163,6 +163,23 @@ namespace {
 float frontHalfLine(float s) { return 8.0f * s; }
 float frontRingRadius(const SpeedChartLayout& L) { return L.dotRadius + 2.5f * L.scale; }
 float frontRingWidth(float s) { return std::max(1.5f, 1.5f * s); }
+// The orange ring round a highlighted dot, outside the front's.
+float highlightRingRadius(const SpeedChartLayout& L) { return L.dotRadius + 5.5f * L.scale; }
+float highlightRingWidth(float s) { return std::max(2.5f, 3.0f * s); }
+
+// The badges' radius: a number of as many digits as the most badges there can be, at the names'
+// size, with room round it.
+float badgeRadiusFor(const SpeedChartLayout& L) {
+    std::string widest(std::to_string(std::max<size_t>(1, L.mustName.size())).size(), '8');
+    float w = measureText(FontFace::Sans, L.labelPx, widest).x;
+    return std::ceil(0.5f * std::max(w + 0.3f * L.labelPx, 1.0f * L.labelPx));
+}
+
+// A line of the key: as tall as the legend's type or a badge with its clearance.
+float keyLineHeight(const SpeedChartLayout& L) {
+    return std::max(fontMetrics(FontFace::Sans, L.legendPx).lineHeight,
+                    2.0f * (L.badgeRadius + CHART_MARK_CLEARANCE));
+}
 // The gap between the marks' column and the names: a quarter of the type, so a projector's large
 // marks and words stay apart.
 float legendGap(float s, float legendPx) {
@@ -248,7 +265,8 @@ void layoutFrame(SpeedChartLayout& L, const Fonts& f, float s, double yStep, glm
     float right = std::round(legendSize.x + 28.0f * s);
     float top = std::round(titleH);
     float bottom = std::round(fontMetrics(FontFace::Sans, f.tick).lineHeight +
-                              fontMetrics(FontFace::Sans, f.axis).lineHeight + 20.0f * s);
+                              fontMetrics(FontFace::Sans, f.axis).lineHeight + 20.0f * s +
+                              static_cast<float>(L.keyLines) * keyLineHeight(L));
     L.plot = {left, top, std::max(16.0f, L.size.x - left - right),
               std::max(16.0f, L.size.y - top - bottom)};
     L.legend = {L.plot.right() + 16.0f * s, L.plot.y, legendSize.x, legendSize.y};
@@ -418,27 +436,74 @@ void layoutTicks(SpeedChartLayout& L, double yStep, std::span<const BenchRow> ro
     }
 }
 
-// The dots, their error bars, their label texts and the Pareto front of the medians (every
-// row: the bars show the spread, bench_report.h: benchParetoFront).
+// The dots, their error bars and their label texts.
 void layoutDots(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTiming timing,
                 ChartAccuracy accuracy) {
-    std::vector<glm::dvec2> frontPoints;
     for (const BenchRow& r : rows) {
         L.points.emplace_back(xPixelOf(L, safeLog(chartMs(r, timing))),
                               yPixelOf(L, chartAccuracy(r, accuracy)));
         L.errorBars.emplace_back(xPixelOf(L, barLogLo(r, timing)),
                                  xPixelOf(L, barLogHi(r, timing)));
         L.labelTexts.push_back(chartLabel(r.point));
+    }
+}
+
+// The Pareto front of the medians over every row (bench_report.h: benchParetoFront), and the
+// rows the chart must name: the highlighted, or the front's where none is.
+void layoutFront(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTiming timing,
+                 ChartAccuracy accuracy, std::span<const size_t> highlight) {
+    std::vector<glm::dvec2> frontPoints;
+    for (const BenchRow& r : rows) {
         frontPoints.emplace_back(chartMs(r, timing), chartAccuracy(r, accuracy));
     }
     L.front = paretoFront(frontPoints, PARETO_ERROR_TOLERANCE);
+    for (size_t k : highlight) {
+        if (k < rows.size()) L.highlight.push_back(k);
+    }
+    L.mustName = L.highlight.empty() ? L.front : L.highlight;
+}
+
+// Where key entry i's name starts: past its badge.
+float keyTextX(const SpeedChartLayout& L, size_t i) {
+    return std::round(L.keyBadges[i].right() + legendGap(L.scale, L.legendPx));
+}
+
+// The key under the x axis's name (speed_chart_labels.h: a dot whose name found no room gets a
+// badge): its entries in the badges' order, each a badge and the dot's name in the legend's
+// type, left to right from the plot's left edge, wrapped at the chart's right margin. Returns
+// the lines it takes (keyBadges is laid out in L.keyLines' room when they suffice).
+int placeKey(SpeedChartLayout& L) {
+    L.keyBadges.clear();
+    if (L.keyRows.empty()) return 0;
+    float s = L.scale;
+    float r = L.badgeRadius;
+    float lineH = keyLineHeight(L);
+    float tickH = fontMetrics(FontFace::Sans, L.tickPx).lineHeight;
+    float axisH = fontMetrics(FontFace::Sans, L.axisPx).lineHeight;
+    float top = L.plot.bottom() + 8.0f * s + tickH + axisH + 4.0f * s;
+    float left = L.plot.x, right = L.size.x - std::round(12.0f * s);
+    float x = left, y = top;
+    int lines = 1;
+    for (size_t i = 0; i < L.keyRows.size(); ++i) {
+        float words = measureText(FontFace::Sans, L.legendPx, L.labelTexts[L.keyRows[i]]).x;
+        float width = 2.0f * r + legendGap(s, L.legendPx) + words;
+        if (x > left && x + width > right) {
+            x = left;
+            y += lineH;
+            ++lines;
+        }
+        L.keyBadges.push_back(
+            {std::round(x), std::round(y + 0.5f * lineH - r), 2.0f * r, 2.0f * r});
+        x += width + 2.0f * legendGap(s, L.legendPx) + r;
+    }
+    return lines;
 }
 
 }  // namespace
 
 SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                   ChartTiming timing, ChartAccuracy accuracy,
-                                  std::span<const size_t> keepLabels, float minFontPx,
+                                  std::span<const size_t> highlight, float minFontPx,
                                   bool keptLabelsOnly, int subtitleLines) {
     if (size.x < 64 || size.y < 64) {
         throw std::invalid_argument("layoutSpeedChart: the chart needs at least 64 x 64 pixels");
@@ -457,22 +522,26 @@ SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 siz
     L.legendPx = f.legend;
 
     L.dotRadius = std::max(4.5f * s, std::round(f.label * 0.25f));
+    layoutFront(L, rows, timing, accuracy, highlight);
+    L.badgeRadius = badgeRadiusFor(L);
     glm::vec2 legendSize = layoutLegend(L, rows, f, s);
     double yStep = layoutYRange(L, rows, accuracy);
-    layoutFrame(L, f, s, yStep, legendSize);
-    placeLegend(L, f.legend);
-    layoutXRange(L, rows, timing);
-    layoutTicks(L, yStep, rows, timing);
-    layoutDots(L, rows, timing, accuracy);
-
-    L.labels.assign(rows.size(), Rect{});
-    L.labelShown.assign(rows.size(), false);
-    std::vector<bool> needLabel(rows.size(), false);
-    for (size_t k : L.front) needLabel[k] = true;
-    for (size_t k : keepLabels) {
-        if (k < rows.size()) needLabel[k] = true;
+    // Laid out once without room for a key, and where badges want one, again with as many
+    // lines as it takes (a plot shortened for it may need another line, at most twice).
+    const SpeedChartLayout bare = L;
+    for (int tries = 0;; ++tries) {
+        layoutFrame(L, f, s, yStep, legendSize);
+        placeLegend(L, f.legend);
+        layoutXRange(L, rows, timing);
+        layoutTicks(L, yStep, rows, timing);
+        layoutDots(L, rows, timing, accuracy);
+        placeSpeedChartLabels(L, keptLabelsOnly);
+        int lines = placeKey(L);
+        if (lines <= L.keyLines || tries == 2) break;
+        int keyLines = lines;
+        L = bare;
+        L.keyLines = keyLines;
     }
-    placeSpeedChartLabels(L, needLabel, keptLabelsOnly);
     return L;
 }
 
@@ -480,6 +549,17 @@ Rect speedChartDotBox(const SpeedChartLayout& L, size_t row) {
     glm::vec2 p = L.points[row];
     float r = L.dotRadius;
     return {p.x - r, p.y - r, 2.0f * r, 2.0f * r};
+}
+
+float speedChartMarkRadius(const SpeedChartLayout& L, size_t row) {
+    float r = L.dotRadius;
+    if (std::find(L.front.begin(), L.front.end(), row) != L.front.end()) {
+        r = std::max(r, frontRingRadius(L) + 0.5f * frontRingWidth(L.scale));
+    }
+    if (std::find(L.highlight.begin(), L.highlight.end(), row) != L.highlight.end()) {
+        r = std::max(r, highlightRingRadius(L) + 0.5f * highlightRingWidth(L.scale));
+    }
+    return r;
 }
 
 Rect speedChartBarBox(const SpeedChartLayout& L, size_t row) {
@@ -495,8 +575,10 @@ std::optional<ChartLeader> speedChartLeader(const SpeedChartLayout& L, size_t ro
     const Rect& box = L.labels[row];
     glm::vec2 p = L.points[row];
     glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
-    if (glm::length(nearest - p) <= speedChartLeaderReach(L)) return std::nullopt;
-    return ChartLeader{p, nearest};
+    float mark = speedChartMarkRadius(L, row);
+    float d = glm::length(nearest - p);
+    if (d <= mark + L.dotRadius) return std::nullopt;
+    return ChartLeader{p + (nearest - p) * (mark / d), nearest};
 }
 
 std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
@@ -534,9 +616,24 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
     add({L.plot.centre().x, L.plot.bottom() + 8.0f * s + tickH}, TextAlign::Center, L.axisPx,
         "chart-axis", text.xLabel);
     for (size_t k = 0; k < L.labels.size(); ++k) {
-        if (!L.labelShown[k]) continue;
-        out.push_back({L.labels[k], L.labelPx, "chart-label", L.labelTexts[k]});
-        out.back().row = static_cast<int>(k);
+        if (L.labelShown[k]) {
+            out.push_back({L.labels[k], L.labelPx, "chart-label", L.labelTexts[k]});
+            out.back().row = static_cast<int>(k);
+        }
+        if (L.badge[k] > 0) {
+            out.push_back({L.badgeBoxes[k], L.labelPx, "chart-badge", std::to_string(L.badge[k])});
+            out.back().row = static_cast<int>(k);
+        }
+    }
+    float keyLineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
+    for (size_t i = 0; i < L.keyRows.size(); ++i) {
+        int row = static_cast<int>(L.keyRows[i]);
+        out.push_back({L.keyBadges[i], L.labelPx, "chart-badge", std::to_string(i + 1)});
+        out.back().row = row;
+        float x = keyTextX(L, i);
+        add({x, L.keyBadges[i].centre().y - 0.5f * keyLineH}, TextAlign::Left, L.legendPx,
+            "chart-key", L.labelTexts[L.keyRows[i]])
+            .row = row;
     }
     float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
     for (size_t k = 0; k <= L.legendMethods.size(); ++k) {
@@ -586,8 +683,7 @@ void drawErrorBars(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRo
 
 // Inside the plot, bottom to top: the front's line, the error bars, the front's rings, the
 // highlighted dots' rings and the dots.
-void drawPlotMarks(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRow> rows,
-                   std::span<const size_t> highlight) {
+void drawPlotMarks(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRow> rows) {
     float s = L.scale;
     c.pushClip(L.plot.expanded(2.0f * s));
     for (size_t k = 1; k < L.front.size(); ++k) {
@@ -598,11 +694,9 @@ void drawPlotMarks(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRo
     drawErrorBars(c, L, rows);
     for (size_t k : L.front) c.ring(L.points[k], dotR + 2.5f * s, ring, FRONT);
     // The dots a lesson step talks about: a thick orange ring outside the front's.
-    for (size_t k : highlight) {
-        if (k < rows.size()) {
-            c.ring(L.points[k], dotR + 5.5f * s, std::max(2.5f, 3.0f * s),
-                   glm::vec4(1.0f, 0.55f, 0.0f, 1.0f));
-        }
+    for (size_t k : L.highlight) {
+        c.ring(L.points[k], highlightRingRadius(L), highlightRingWidth(s),
+               glm::vec4(1.0f, 0.55f, 0.0f, 1.0f));
     }
     for (size_t k = 0; k < rows.size(); ++k) {
         c.circle(L.points[k], dotR, methodColour(rows[k].point.method));
@@ -619,6 +713,40 @@ void drawLeaders(Canvas& c, const SpeedChartLayout& L, size_t rowCount) {
                    CHART_GRID * 0.4f + CHART_SOFT_INK * 0.6f);
         }
     }
+}
+
+// The colour of a dot's name, its badge's ring and number: a darker shade of its method's.
+Colour labelInk(const BenchRow& row) {
+    Colour ink = methodColour(row.point.method) * 0.55f;
+    ink.a = 1.0f;
+    return ink;
+}
+
+// The badges' discs, by their dots and in the key: white, ringed in the dot's colour (the
+// numbers are texts of speedChartTextBoxes, in the name's colour). A badge drawn in its dot's
+// place keeps the dot's orange (or the front's black) ring round it.
+void drawBadges(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRow> rows) {
+    float s = L.scale;
+    auto badge = [&](const Rect& box, size_t row) {
+        c.circle(box.centre(), L.badgeRadius, methodColour(rows[row].point.method));
+        c.circle(box.centre(), L.badgeRadius - std::max(1.5f, 1.5f * s), {1.0f, 1.0f, 1.0f, 1.0f});
+    };
+    for (size_t k = 0; k < rows.size(); ++k) {
+        if (L.badge[k] == 0) continue;
+        if (L.badgeOnDot[k]) {
+            glm::vec2 at = L.badgeBoxes[k].centre();
+            float r = L.badgeRadius;
+            bool ringed = std::find(L.highlight.begin(), L.highlight.end(), k) != L.highlight.end();
+            if (ringed) {
+                c.ring(at, r + 0.5f * highlightRingWidth(s), highlightRingWidth(s),
+                       glm::vec4(1.0f, 0.55f, 0.0f, 1.0f));
+            } else {
+                c.ring(at, r + 0.5f * frontRingWidth(s), frontRingWidth(s), FRONT);
+            }
+        }
+        badge(L.badgeBoxes[k], k);
+    }
+    for (size_t i = 0; i < L.keyRows.size(); ++i) badge(L.keyBadges[i], L.keyRows[i]);
 }
 
 // The legend's box and swatches (the names are texts of speedChartTextBoxes).
@@ -643,11 +771,15 @@ void drawTexts(Canvas& c, std::span<const ChartTextBox> texts, std::span<const B
         if (b.role == "chart-swatch") continue;  // a mark's box: drawLegendMarks draws it
         Colour ink = CHART_INK;
         if (b.role == "chart-subtitle" || b.role == "chart-tick") ink = CHART_SOFT_INK;
-        if (b.role == "chart-label" && b.row >= 0 && static_cast<size_t>(b.row) < rows.size()) {
-            ink = methodColour(rows[static_cast<size_t>(b.row)].point.method) * 0.55f;
-            ink.a = 1.0f;
+        if (b.row >= 0 && static_cast<size_t>(b.row) < rows.size()) {
+            ink = labelInk(rows[static_cast<size_t>(b.row)]);
         }
-        c.text(b.rect.position(), b.text, {FontFace::Sans, b.fontPx, ink});
+        glm::vec2 at = b.rect.position();
+        if (b.role == "chart-badge") {  // the number in the middle of its disc
+            glm::vec2 size = measureText(FontFace::Sans, b.fontPx, b.text);
+            at = glm::round(b.rect.centre() - 0.5f * size);
+        }
+        c.text(at, b.text, {FontFace::Sans, b.fontPx, ink});
     }
 }
 
@@ -664,9 +796,10 @@ std::vector<uint8_t> drawSpeedChart(std::span<const BenchRow> rows, glm::ivec2 s
 
     return drawChartOffscreen(size, [&](Canvas& c) {
         drawGrid(c, L);
-        drawPlotMarks(c, L, rows, text.highlight);
+        drawPlotMarks(c, L, rows);
         drawLeaders(c, L, rows.size());
         drawLegendMarks(c, L);
+        drawBadges(c, L, rows);
         drawTexts(c, texts, rows);
     });
 }

@@ -56,11 +56,12 @@ struct SpeedChartText {
     std::string subtitle;  // e.g. the GL_RENDERER and the timer
     std::string xLabel = "camera pass time, ms (log scale)";
     std::string yLabel = "edge-band RMSE of visibility";
-    // Rows ringed in orange: the dots a lesson step talks about (chartRowsMatching).
+    // Rows ringed in orange: the dots a lesson step talks about (chartRowsMatching). The chart
+    // names them (and not the front's, which are named where nothing is ringed).
     std::vector<size_t> highlight;
     // No text below this many pixels (a lesson frame asks for its type floor; a projector needs
-    // 14 or more), and with keptLabelsOnly only the front's and the highlighted dots are named:
-    // large labels for every dot would bury the plot.
+    // 14 or more), and with keptLabelsOnly only the dots the chart must name are named (the
+    // ringed ones, else the front's): large labels for every dot would bury the plot.
     float minFontPx = 8.0f;
     bool keptLabelsOnly = false;
 };
@@ -70,11 +71,14 @@ struct ChartTextBox {
     Rect rect;
     float fontPx = 0.0f;
     std::string role;  // "chart-title", "chart-subtitle", "chart-axis", "chart-tick",
-                       // "chart-label" (a dot's name), "chart-legend"; "chart-swatch": not a
-                       // text but the box a legend entry's mark covers (text: the entry's
-                       // words, fontPx 0), which no text may cover
+                       // "chart-label" (a dot's name), "chart-badge" (a badge's number, its
+                       // box the badge's disc's: by its dot, and again in the key),
+                       // "chart-key" (a dot's name in the key, beside its badge),
+                       // "chart-legend"; "chart-swatch": not a text but the box a legend
+                       // entry's mark covers (text: the entry's words, fontPx 0), which no
+                       // text may cover
     std::string text;
-    int row = -1;     // chart-label: the row it names
+    int row = -1;     // chart-label, chart-badge, chart-key: the row it names
     int method = -1;  // chart-legend: the method it names (-1: the front's entry)
 };
 
@@ -93,10 +97,27 @@ struct SpeedChartLayout {
     std::vector<glm::vec2> errorBars;
     std::vector<std::string> labelTexts;  // per row
     std::vector<Rect> labels;             // per row: where its label's box goes
-    // per row: whether its label is drawn. The front's and the kept rows' always are; any other
-    // only where it finds a spot next to its dot (no leader) that stays in the plot, overlaps no
-    // other label, dot or error bar, and is nearer its own dot than any other.
+    // per row: whether its label is drawn, only where it finds a clean spot
+    // (speed_chart_labels.h): in the plot, on no other name or badge, no dot or ring (its own
+    // too) and no error bar, and nearer its own dot than any other. A row the chart must name
+    // looks within speedChartNameReach of its dot, any other only right beside it.
     std::vector<bool> labelShown;
+    // Rows ringed in orange (SpeedChartText::highlight), and the rows the chart must name: the
+    // ringed ones, or the front's where none is ringed.
+    std::vector<size_t> highlight;
+    std::vector<size_t> mustName;
+    // per row: its badge's number (1, 2, ... in the order of the dots' times; 0: none) and the
+    // box of its disc: a row the chart must name whose name found no clean spot within reach.
+    // The badge touches the dot (or its outer ring) where a clean spot does; in a crowd where
+    // none does, it is centred on the dot and drawn in its place (badgeOnDot), covering no
+    // other dot's centre. The key, under the x axis, gives each number its name.
+    std::vector<int> badge;
+    std::vector<Rect> badgeBoxes;
+    std::vector<bool> badgeOnDot;
+    float badgeRadius = 0.0f;        // pixels; its number is labelPx
+    int keyLines = 0;                // the lines kept for the key under the x axis's name
+    std::vector<size_t> keyRows;     // per key entry (badge number - 1): the row
+    std::vector<Rect> keyBadges;     // per key entry: its badge's box; the name follows it
     std::vector<size_t> front;       // rows on the Pareto front, fastest first
     std::vector<int> legendMethods;  // methods present, in the rows' order of appearance
     Rect legend;
@@ -152,18 +173,21 @@ glm::vec4 methodColour(int method);
 
 // Where everything goes. Needs the fonts (to measure labels), not GL. Times <= 0 are drawn at
 // the axis's low end. Throws std::invalid_argument for a side < 64 pixels.
-// The Pareto front is of median time against the chosen accuracy, over every row.
+// The Pareto front is of median time against the chosen accuracy, over every row. highlight:
+// the rows ringed in orange, which the chart names (where empty, it names the front's).
 SpeedChartLayout layoutSpeedChart(std::span<const BenchRow> rows, glm::ivec2 size,
                                   ChartTiming timing = ChartTiming::Scene,
                                   ChartAccuracy accuracy = ChartAccuracy::EdgeRmse,
-                                  std::span<const size_t> keepLabels = {}, float minFontPx = 8.0f,
+                                  std::span<const size_t> highlight = {}, float minFontPx = 8.0f,
                                   bool keptLabelsOnly = false, int subtitleLines = 1);
 
-// The marks a label must keep off and by: a row's dot (its disc's box), its error bar (the line
-// and its end ticks; empty where the IQR is under a pixel and no bar is drawn), and the leader
-// drawLeaders draws from a dot to its label (the dot's centre to the label box's nearest point),
-// only where the label is shown and its box lies more than 2.5 dot radii from the centre.
+// The marks a label must keep off and by: a row's dot (its disc's box), the outer radius of the
+// dot with the rings drawn round it (the front's black ring, a highlighted dot's orange one),
+// its error bar (the line and its end ticks; empty where the IQR is under a pixel and no bar is
+// drawn), and the leader drawLeaders draws from a dot's outer ring to its label's nearest point,
+// only where the label is shown and lies more than a dot radius beyond that ring.
 Rect speedChartDotBox(const SpeedChartLayout& layout, size_t row);
+float speedChartMarkRadius(const SpeedChartLayout& layout, size_t row);
 Rect speedChartBarBox(const SpeedChartLayout& layout, size_t row);
 struct ChartLeader {
     glm::vec2 from, to;

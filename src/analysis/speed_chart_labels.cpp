@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 
+#include "analysis/chart_axes.h"
 #include "draw/text_layout.h"
 
 namespace pcf {
@@ -17,157 +20,250 @@ float overlapArea(const Rect& a, const Rect& b) {
 // Area of r outside `inside`.
 float outsideArea(const Rect& r, const Rect& inside) { return r.w * r.h - overlapArea(r, inside); }
 
-// The order labels are placed in: the front's first, then the kept rows', then the rest.
-std::vector<size_t> labelOrder(const std::vector<size_t>& front,
-                               const std::vector<bool>& needLabel) {
-    std::vector<size_t> order = front;
-    for (bool needed : {true, false}) {
-        for (size_t k = 0; k < needLabel.size(); ++k) {
-            bool onFront = std::find(front.begin(), front.end(), k) != front.end();
-            if (!onFront && needLabel[k] == needed) order.push_back(k);
-        }
-    }
-    return order;
-}
-
 // The distance from a box to a point (0 inside it), pixels.
 float boxDistance(const Rect& box, glm::vec2 p) {
     return glm::length(glm::clamp(p, box.position(), box.position() + box.size()) - p);
 }
 
-// The distance from point c to the segment a-b, pixels.
-float leaderDotDistance(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
-    glm::vec2 ab = b - a;
-    float len2 = glm::dot(ab, ab);
-    float t = len2 > 0.0f ? std::clamp(glm::dot(c - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
-    return glm::length(a + t * ab - c);
-}
-
-struct LabelSpot {
+// A name's box, or a badge's disc (the largest disc in its square box).
+struct Spot {
     Rect box;
-    float fault = 1e30f;  // what the spot covers or misleads: 0 for a clean spot
+    bool disc = false;
 };
 
-// What a label at `box` for row k does wrong, 0 when nothing: it leaves the plot, covers a
-// placed label, a dot or an error bar (a bar through a name strikes it out), or a reader could
-// take it for another dot's: it is not nearer its own dot than any other, unless its leader
-// crosses no other dot and no other dot lies next to it (within speedChartLeaderReach).
-float labelFault(const SpeedChartLayout& L, size_t k, const Rect& box,
-                 const std::vector<Rect>& placed) {
-    constexpr float HARD = 1000.0f;
-    glm::vec2 p = L.points[k];
-    float fault = HARD * outsideArea(box, L.plot);
-    for (const Rect& o : placed) fault += HARD * overlapArea(box, o);
-    float own = boxDistance(box, p);
-    glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
-    bool leader = own > speedChartLeaderReach(L);
-    bool nearestOwn = true, leaderClear = leader;
-    for (size_t j = 0; j < L.points.size(); ++j) {
-        fault += HARD * overlapArea(box, speedChartBarBox(L, j));
-        if (j == k) continue;
-        fault += HARD * overlapArea(box, speedChartDotBox(L, j));
-        glm::vec2 q = L.points[j];
-        // (Dots whose discs overlap have no nearer one: a label of either names both.)
-        if (glm::length(q - p) < 2.0f * L.dotRadius) continue;
-        float other = boxDistance(box, q);
-        nearestOwn = nearestOwn && other > own;
-        leaderClear = leaderClear && other > speedChartLeaderReach(L) &&
-                      leaderDotDistance(p, nearest, q) >= L.dotRadius + 1.0f;
-    }
-    if (!nearestOwn && !leaderClear) fault += HARD;
-    return fault;
+// The distance from a spot to a point (0 inside it), pixels.
+float spotDistance(const Spot& s, glm::vec2 p) {
+    if (!s.disc) return boxDistance(s.box, p);
+    return std::max(0.0f, glm::length(s.box.centre() - p) - 0.5f * s.box.w);
 }
 
-// The spot for row k's label of size t: around its dot in 16 directions, nearest first; the
-// first ring that has a clean spot (labelFault 0) gives its nearest one. A label the chart must
-// show looks farther out (with a leader) and otherwise settles on the spot of least fault plus
-// distance; any other stays within leader-free reach of its dot.
-LabelSpot bestLabelSpot(const SpeedChartLayout& L, size_t k, glm::vec2 t, bool mustShow,
-                        const std::vector<Rect>& placed) {
-    glm::vec2 p = L.points[k];
-    LabelSpot best;
-    float bestCost = 1e30f;
-    float step = L.dotRadius + 3.0f * L.scale;
-    for (float ring : {1.0f, 1.5f, 2.1f, 2.8f, 3.6f, 4.6f, 5.8f, 7.2f, 9.0f, 11.5f, 14.5f, 18.0f}) {
-        float r = step * ring;
-        if (!mustShow && r > speedChartLeaderReach(L)) break;
-        for (int i = 0; i < 16; ++i) {
-            float a = static_cast<float>(i) * 0.39269908f;  // 22.5 degrees
-            glm::vec2 d(std::cos(a), std::sin(a));
-            glm::vec2 at = p + r * d;
-            // The box's side (or corner) nearest the dot sits at `at`.
-            float x = d.x > 0.38f ? at.x : d.x < -0.38f ? at.x - t.x : at.x - 0.5f * t.x;
-            float y = d.y > 0.38f ? at.y : d.y < -0.38f ? at.y - t.y : at.y - 0.5f * t.y;
-            Rect box{std::round(x), std::round(y), t.x, t.y};
-            float fault = labelFault(L, k, box, placed);
-            float cost = fault + boxDistance(box, p) / L.dotRadius;
-            if (cost < bestCost) {
-                bestCost = cost;
-                best = {box, fault};
-            }
-        }
-        if (best.fault < 0.5f) return best;  // a clean spot in this ring: none farther is nearer
-    }
-    if (!mustShow) return best;
-    // A crowd left no clean spot within the rings: the nearest clean spot anywhere in the plot,
-    // on a grid a few pixels fine (with its leader).
-    float grid = std::max(3.0f, std::round(4.0f * L.scale));
-    for (float y = L.plot.y; y + t.y <= L.plot.bottom(); y += grid) {
-        for (float x = L.plot.x; x + t.x <= L.plot.right(); x += grid) {
-            Rect box{std::round(x), std::round(y), t.x, t.y};
-            float cost = boxDistance(box, p) / L.dotRadius;
-            if (best.fault < 0.5f && cost >= bestCost) continue;
-            float fault = labelFault(L, k, box, placed);
-            if (fault + cost < bestCost) {
-                bestCost = fault + cost;
-                best = {box, fault};
-            }
-        }
-    }
-    return best;
+// 24 directions round a dot, 15 degrees apart, starting to the right.
+constexpr int DIRECTIONS = 24;
+glm::vec2 direction(int i) {
+    float a = static_cast<float>(i) * 6.2831853f / DIRECTIONS;
+    return {std::cos(a), std::sin(a)};
 }
 
-// Greedy label placement in `order`; each at bestLabelSpot. A label that finds no clean spot is
-// left out, unless the front or the caller needs it: a crowd of overlapping names reads as noise
-// on a projector, and a name far from its dot is read as another dot's; the dot keeps its
-// method's colour, which the legend names. Returns the needed labels that found no clean spot.
-std::vector<size_t> placeLabelsInOrder(SpeedChartLayout& L, const std::vector<bool>& needLabel,
-                                       bool keptLabelsOnly, const std::vector<size_t>& order) {
-    L.labels.assign(L.points.size(), Rect{});
-    L.labelShown.assign(L.points.size(), false);
-    std::vector<Rect> placed;
-    std::vector<size_t> faulty;
-    for (size_t k : order) {
-        if (keptLabelsOnly && !needLabel[k]) continue;
-        glm::vec2 t = measureText(FontFace::Sans, L.labelPx, L.labelTexts[k]);
-        bool needed = k < needLabel.size() && needLabel[k];
-        LabelSpot spot = bestLabelSpot(L, k, t, needed, placed);
-        if (spot.fault > 0.5f && !needed) continue;
-        if (spot.fault > 0.5f) faulty.push_back(k);
-        L.labels[k] = spot.box;
-        L.labelShown[k] = true;
-        placed.push_back(spot.box);
+// The chart's marks a spot must keep off, computed once per placement.
+class Placer {
+  public:
+    explicit Placer(SpeedChartLayout& layout) : L(layout) {
+        for (size_t k = 0; k < L.points.size(); ++k) {
+            marks.push_back(speedChartMarkRadius(L, k));
+            bars.push_back(speedChartBarBox(L, k));
+        }
     }
-    return faulty;
+
+    // What a spot for row k does wrong, 0 when nothing: it leaves the plot, lies on a placed
+    // name or badge, an error bar (a bar through a name strikes it out), a dot or its rings (its
+    // own too, with CHART_MARK_CLEARANCE; a badge may lie on its own dot's rings), or is not
+    // nearer its own dot than any other by a dot radius (dots whose discs overlap excepted: no
+    // spot names one of them and not the other).
+    float fault(size_t k, const Spot& s) const {
+        constexpr float HARD = 1000.0f;
+        float f = HARD * outsideArea(s.box, L.plot);
+        for (const Rect& o : placed) f += HARD * overlapArea(s.box, o);
+        glm::vec2 p = L.points[k];
+        float own = spotDistance(s, p);
+        for (size_t j = 0; j < L.points.size(); ++j) {
+            f += HARD * overlapArea(s.box, bars[j]);
+            float d = spotDistance(s, L.points[j]);
+            float keep = (j == k && s.disc ? L.dotRadius : marks[j]) + CHART_MARK_CLEARANCE;
+            if (d < keep) f += HARD * (keep - d);
+            if (j == k || glm::length(L.points[j] - p) < 2.0f * L.dotRadius) continue;
+            // (By a dot radius at least: a name about as near two dots reads as either's.)
+            if (d <= own + L.dotRadius) f += HARD * (1.0f + own + L.dotRadius - d);
+        }
+        return f;
+    }
+
+    // The nearest clean spot for a name of size t round row k's dot whose nearest point lies
+    // at most `reach` from the dot's centre: rings from the dot's outer ring outwards, a few
+    // pixels apart, each in 24 directions with the box's side or corner nearest the dot at the
+    // ring; the first ring with a clean spot gives its nearest one.
+    std::optional<Rect> nameSpot(size_t k, glm::vec2 t, float reach) const {
+        glm::vec2 p = L.points[k];
+        float step = std::max(2.0f, 0.5f * L.dotRadius);
+        for (float r = marks[k] + CHART_MARK_CLEARANCE; r <= reach + 1e-3f; r += step) {
+            std::optional<Rect> best;
+            float bestD = 1e30f;
+            for (int i = 0; i < DIRECTIONS; ++i) {
+                glm::vec2 d = direction(i);
+                glm::vec2 at = p + r * d;
+                float x = d.x > 0.38f ? at.x : d.x < -0.38f ? at.x - t.x : at.x - 0.5f * t.x;
+                float y = d.y > 0.38f ? at.y : d.y < -0.38f ? at.y - t.y : at.y - 0.5f * t.y;
+                Rect box{std::round(x), std::round(y), t.x, t.y};
+                float own = boxDistance(box, p);
+                if (own > reach || own >= bestD || fault(k, {box, false}) > 0.0f) continue;
+                best = box;
+                bestD = own;
+            }
+            if (best) return best;
+        }
+        return std::nullopt;
+    }
+
+    // What a badge centred on row k's dot does wrong, 0 when nothing: it leaves the plot, lies
+    // on a placed name or badge, or covers another dot's centre (the badge is drawn over the
+    // dots: each other dot must still show where it is), but for a dot whose disc overlaps this
+    // one's, which overlapping dots hide already.
+    float onDotFault(size_t k, const Rect& box) const {
+        constexpr float HARD = 1000.0f;
+        float f = HARD * outsideArea(box, L.plot);
+        for (const Rect& o : placed) f += HARD * overlapArea(box, o);
+        for (size_t j = 0; j < L.points.size(); ++j) {
+            float d = glm::length(L.points[j] - L.points[k]);
+            float keep = L.badgeRadius + CHART_MARK_CLEARANCE;
+            if (j != k && d >= 2.0f * L.dotRadius && d < keep) f += HARD * (keep - d);
+        }
+        return f;
+    }
+
+    Rect onDotBox(size_t k) const {
+        glm::vec2 p = glm::round(L.points[k]);
+        float radius = L.badgeRadius;
+        return {p.x - radius, p.y - radius, 2.0f * radius, 2.0f * radius};
+    }
+
+    // Row k's badge: a disc touching the dot's outer ring where a clean spot does, else one
+    // touching the dot itself (on its rings), else the nearest clean one up to
+    // speedChartBadgeGap beyond the ring; none clean, the badge centred on the dot, and where
+    // even that is not clean, the spot of least fault. Returns whether it is on the dot.
+    bool placeBadge(size_t k) {
+        Rect box = badgeSpot(k);
+        bool onDot = fault(k, {box, true}) > 0.0f;
+        if (onDot) {
+            Rect there = onDotBox(k);
+            if (onDotFault(k, there) <= 0.0f || onDotFault(k, there) < fault(k, {box, true})) {
+                box = there;
+            } else {
+                onDot = false;
+            }
+        }
+        L.badgeBoxes[k] = box;
+        L.badgeOnDot[k] = onDot;
+        placed.push_back(box);
+        return onDot;
+    }
+
+    Rect badgeSpot(size_t k) const {
+        glm::vec2 p = L.points[k];
+        float radius = L.badgeRadius;
+        std::vector<float> centres{marks[k] + CHART_MARK_CLEARANCE,
+                                   L.dotRadius + CHART_MARK_CLEARANCE};
+        for (float gap = CHART_MARK_CLEARANCE + std::max(1.0f, 0.5f * L.dotRadius);
+             gap <= speedChartBadgeGap(L) + 1e-3f; gap += std::max(1.0f, 0.5f * L.dotRadius)) {
+            centres.push_back(marks[k] + gap);
+        }
+        Rect best;
+        float bestFault = 1e30f;
+        for (float from : centres) {
+            for (int i = 0; i < DIRECTIONS; ++i) {
+                glm::vec2 c = p + (from + radius) * direction(i);
+                Rect box{std::round(c.x - radius), std::round(c.y - radius), 2.0f * radius,
+                         2.0f * radius};
+                float f = fault(k, {box, true});
+                if (f < bestFault) {
+                    best = box;
+                    bestFault = f;
+                }
+            }
+            if (bestFault <= 0.0f) break;
+        }
+        return best;
+    }
+
+    // Names mustName's rows in `order` (a badge where no clean spot is within reach), then, but
+    // with keptLabelsOnly, any other row where a clean spot lies right beside its dot. Returns
+    // the badges given.
+    int place(const std::vector<size_t>& order, bool keptLabelsOnly) {
+        size_t n = L.points.size();
+        L.labels.assign(n, Rect{});
+        L.labelShown.assign(n, false);
+        L.badge.assign(n, 0);
+        L.badgeBoxes.assign(n, Rect{});
+        L.badgeOnDot.assign(n, false);
+        placed.clear();
+        int badges = 0;
+        std::vector<bool> must(n, false);
+        for (size_t k : order) {
+            must[k] = true;
+            glm::vec2 t = measureText(FontFace::Sans, L.labelPx, L.labelTexts[k]);
+            if (std::optional<Rect> box = nameSpot(k, t, speedChartNameReach(L))) {
+                L.labels[k] = *box;
+                L.labelShown[k] = true;
+                placed.push_back(*box);
+            } else {
+                placeBadge(k);
+                L.badge[k] = ++badges;  // numbered by time once placed
+            }
+        }
+        if (keptLabelsOnly) return badges;
+        for (size_t k = 0; k < n; ++k) {
+            if (must[k]) continue;
+            glm::vec2 t = measureText(FontFace::Sans, L.labelPx, L.labelTexts[k]);
+            float reach = marks[k] + CHART_MARK_CLEARANCE + L.dotRadius;
+            if (std::optional<Rect> box = nameSpot(k, t, reach)) {
+                L.labels[k] = *box;
+                L.labelShown[k] = true;
+                placed.push_back(*box);
+            }
+        }
+        return badges;
+    }
+
+  private:
+    SpeedChartLayout& L;
+    std::vector<float> marks;  // per row: speedChartMarkRadius
+    std::vector<Rect> bars;    // per row: speedChartBarBox
+    std::vector<Rect> placed;  // the names and badges placed so far
+};
+
+// Numbers the badges 1, 2, ... in the order of their dots' times (left to right), so that the
+// key reads in the chart's order.
+void numberBadges(SpeedChartLayout& L) {
+    std::vector<size_t> rows;
+    for (size_t k = 0; k < L.badge.size(); ++k) {
+        if (L.badge[k] > 0) rows.push_back(k);
+    }
+    std::stable_sort(rows.begin(), rows.end(),
+                     [&](size_t a, size_t b) { return L.points[a].x < L.points[b].x; });
+    for (size_t i = 0; i < rows.size(); ++i) L.badge[rows[i]] = static_cast<int>(i) + 1;
+    L.keyRows = rows;
 }
 
 }  // namespace
 
-float speedChartLeaderReach(const SpeedChartLayout& L) { return 2.5f * L.dotRadius; }
+float speedChartNameReach(const SpeedChartLayout& L) { return 8.0f * L.dotRadius; }
 
-void placeSpeedChartLabels(SpeedChartLayout& L, const std::vector<bool>& needLabel,
-                           bool keptLabelsOnly) {
-    std::vector<size_t> order = labelOrder(L.front, needLabel);
-    std::vector<size_t> faulty = placeLabelsInOrder(L, needLabel, keptLabelsOnly, order);
-    if (faulty.empty()) return;
-    std::vector<size_t> retry = faulty;
-    for (size_t k : order) {
-        if (std::find(faulty.begin(), faulty.end(), k) == faulty.end()) retry.push_back(k);
+float speedChartBadgeGap(const SpeedChartLayout& L) {
+    return std::max(2.0f * L.dotRadius, L.badgeRadius);
+}
+
+void placeSpeedChartLabels(SpeedChartLayout& L, bool keptLabelsOnly) {
+    Placer placer(L);
+    int badges = placer.place(L.mustName, keptLabelsOnly);
+    if (badges > 0) {
+        // A crowd's few clean spots go to whoever comes first: once more with the badged first.
+        std::vector<size_t> retry;
+        for (size_t k : L.mustName) {
+            if (L.badge[k] > 0) retry.push_back(k);
+        }
+        for (size_t k : L.mustName) {
+            if (L.badge[k] == 0) retry.push_back(k);
+        }
+        std::vector<Rect> labels = L.labels, badgeBoxes = L.badgeBoxes;
+        std::vector<bool> shown = L.labelShown, onDot = L.badgeOnDot;
+        std::vector<int> badge = L.badge;
+        if (placer.place(retry, keptLabelsOnly) >= badges) {
+            L.labels = std::move(labels);
+            L.labelShown = std::move(shown);
+            L.badge = std::move(badge);
+            L.badgeBoxes = std::move(badgeBoxes);
+            L.badgeOnDot = std::move(onDot);
+        }
     }
-    SpeedChartLayout first = L;
-    if (placeLabelsInOrder(L, needLabel, keptLabelsOnly, retry).size() >= faulty.size()) {
-        L = std::move(first);
-    }
+    numberBadges(L);
 }
 
 }  // namespace pcf

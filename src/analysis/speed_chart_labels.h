@@ -1,27 +1,34 @@
 // speed_chart_labels.h: where the speed chart's dot names go, the last step of layoutSpeedChart
-// (speed_chart.h). Each name sits beside its own dot, in the plot, off every other name, dot and
-// error bar, and nearer its own dot than any other; a name the chart must show (the front's, the
-// ones a lesson step keeps) may sit farther out, with a leader back to its dot. No GL: the names
-// are measured with the fonts.
+// (speed_chart.h). A name sits beside its own dot, in the plot, on no other name or badge, no
+// dot or ring (its own too) and no error bar, and nearer its own dot than any other by a dot
+// radius: a reader takes a name for the nearest dot's, whatever a leader says (lesson 11 at
+// 1024x768 on a projector read "nearest 2048" as the name of the nearest-256 dot it sat by,
+// 160 px from its own). A dot the chart must name whose name finds no such spot within
+// speedChartNameReach gets a numbered badge instead, touching the dot or its outer ring where
+// such a spot is clean, else drawn in the dot's place (a badge centred on its dot names no other),
+// and the key under the x axis gives the number its name. No GL: the names are measured with the
+// fonts.
 #pragma once
-
-#include <vector>
 
 #include "analysis/speed_chart.h"
 
 namespace pcf {
 
-// How far from its dot's centre a label's box may start before a leader joins them, pixels:
-// speedChartLeader draws one past it, and only a label the chart must show is looked for past it.
-float speedChartLeaderReach(const SpeedChartLayout& layout);
+// How far from its dot's centre a name the chart must show may lie (its box's nearest point),
+// pixels: four dot diameters. Any other name is shown only within a dot radius of the dot's
+// outer ring.
+float speedChartNameReach(const SpeedChartLayout& layout);
 
-// Sets layout.labels and layout.labelShown from the dots, error bars, label texts and front that
-// layoutSpeedChart has laid out. needLabel: per row, whether its name must show (the front's and
-// the kept rows'); keptLabelsOnly: no other is named. The front's labels are placed first, then
-// the kept rows', then the rest; where a needed label found no clean spot, once more with those
-// first (a crowd's few clean spots go to whoever comes first), keeping the placement that leaves
-// fewer such labels.
-void placeSpeedChartLabels(SpeedChartLayout& layout, const std::vector<bool>& needLabel,
-                           bool keptLabelsOnly);
+// How far beyond the dot's outer ring (speedChartMarkRadius) a badge's disc may lie, pixels (a
+// dot diameter, or a badge radius where that is more): it touches the dot or the ring where a
+// clean spot does, else lies at most this far out.
+float speedChartBadgeGap(const SpeedChartLayout& layout);
+
+// Sets layout.labels, labelShown, badge, badgeBoxes, badgeOnDot and keyRows from the dots, rings,
+// error bars, label texts and layout.mustName that layoutSpeedChart has laid out. keptLabelsOnly:
+// no row but mustName's is named. mustName's rows are placed first (greedily, in row order; where
+// some got badges, once more with those first, keeping the placement with fewer badges), then
+// the rest where they fit; badges are numbered in the order of their dots' times.
+void placeSpeedChartLabels(SpeedChartLayout& layout, bool keptLabelsOnly);
 
 }  // namespace pcf

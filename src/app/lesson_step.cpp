@@ -81,10 +81,12 @@ std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLay
     if (step.chart.empty()) return out;
     glm::ivec2 size(layout.scene.size());
     for (const ChartTextBox& b : stepChartTexts(stepChart(step, layout.presentation), size)) {
-        BoxKind kind = b.role == "chart-tick"                                ? BoxKind::Number
-                       : b.role == "chart-label" || b.role == "chart-legend" ? BoxKind::Label
-                       : b.role == "chart-swatch"                            ? BoxKind::Mark
-                                                                             : BoxKind::Text;
+        BoxKind kind =
+            b.role == "chart-tick" || b.role == "chart-badge" ? BoxKind::Number
+            : b.role == "chart-label" || b.role == "chart-legend" || b.role == "chart-key"
+                ? BoxKind::Label
+            : b.role == "chart-swatch" ? BoxKind::Mark
+                                       : BoxKind::Text;
         Rect r{b.rect.x + layout.scene.x, b.rect.y + layout.scene.y, b.rect.w, b.rect.h};
         out.push_back({kind, r, "scene", b.role, b.fontPx, false, b.text});
     }
