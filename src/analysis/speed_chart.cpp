@@ -463,11 +463,6 @@ void layoutFront(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTimin
     L.mustName = L.highlight.empty() ? L.front : L.highlight;
 }
 
-// Where key entry i's name starts: past its badge.
-float keyTextX(const SpeedChartLayout& L, size_t i) {
-    return std::round(L.keyBadges[i].right() + legendGap(L.scale, L.legendPx));
-}
-
 // The key under the x axis's name (speed_chart_labels.h: a dot whose name found no room gets a
 // badge): its entries in the badges' order, each a badge and the dot's name in the legend's
 // type, left to right from the plot's left edge, wrapped at the chart's right margin. Returns
@@ -570,16 +565,7 @@ Rect speedChartBarBox(const SpeedChartLayout& L, size_t row) {
     return {bar.x - 0.5f * w, L.points[row].y - half, bar.y - bar.x + w, 2.0f * half};
 }
 
-std::optional<ChartLeader> speedChartLeader(const SpeedChartLayout& L, size_t row) {
-    if (!L.labelShown[row]) return std::nullopt;
-    const Rect& box = L.labels[row];
-    glm::vec2 p = L.points[row];
-    glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
-    float mark = speedChartMarkRadius(L, row);
-    float d = glm::length(nearest - p);
-    if (d <= mark + L.dotRadius) return std::nullopt;
-    return ChartLeader{p + (nearest - p) * (mark / d), nearest};
-}
+float speedChartLegendGap(const SpeedChartLayout& L) { return legendGap(L.scale, L.legendPx); }
 
 std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
                                               const SpeedChartText& text) {
@@ -587,12 +573,7 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
     float s = L.scale;
     auto add = [&](glm::vec2 pos, TextAlign align, float px, const std::string& role,
                    const std::string& words) -> ChartTextBox& {
-        glm::vec2 size = measureText(FontFace::Sans, px, words);
-        float x = pos.x;
-        if (align == TextAlign::Center) x -= size.x * 0.5f;
-        if (align == TextAlign::Right) x -= size.x;
-        out.push_back({{std::round(x), std::round(pos.y), size.x, size.y}, px, role, words});
-        return out.back();
+        return addChartTextBox(out, pos, align, px, role, words);
     };
     float pad = std::round(12.0f * s);
     float titleH = fontMetrics(FontFace::Sans, L.titlePx).lineHeight;
@@ -615,26 +596,7 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
     }
     add({L.plot.centre().x, L.plot.bottom() + 8.0f * s + tickH}, TextAlign::Center, L.axisPx,
         "chart-axis", text.xLabel);
-    for (size_t k = 0; k < L.labels.size(); ++k) {
-        if (L.labelShown[k]) {
-            out.push_back({L.labels[k], L.labelPx, "chart-label", L.labelTexts[k]});
-            out.back().row = static_cast<int>(k);
-        }
-        if (L.badge[k] > 0) {
-            out.push_back({L.badgeBoxes[k], L.labelPx, "chart-badge", std::to_string(L.badge[k])});
-            out.back().row = static_cast<int>(k);
-        }
-    }
-    float keyLineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
-    for (size_t i = 0; i < L.keyRows.size(); ++i) {
-        int row = static_cast<int>(L.keyRows[i]);
-        out.push_back({L.keyBadges[i], L.labelPx, "chart-badge", std::to_string(i + 1)});
-        out.back().row = row;
-        float x = keyTextX(L, i);
-        add({x, L.keyBadges[i].centre().y - 0.5f * keyLineH}, TextAlign::Left, L.legendPx,
-            "chart-key", L.labelTexts[L.keyRows[i]])
-            .row = row;
-    }
+    speedChartNameBoxes(L, out);
     float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
     for (size_t k = 0; k <= L.legendMethods.size(); ++k) {
         bool front = k == L.legendMethods.size();

@@ -266,4 +266,48 @@ void placeSpeedChartLabels(SpeedChartLayout& L, bool keptLabelsOnly) {
     numberBadges(L);
 }
 
+std::optional<ChartLeader> speedChartLeader(const SpeedChartLayout& L, size_t row) {
+    if (!L.labelShown[row]) return std::nullopt;
+    const Rect& box = L.labels[row];
+    glm::vec2 p = L.points[row];
+    glm::vec2 nearest = glm::clamp(p, box.position(), box.position() + box.size());
+    float mark = speedChartMarkRadius(L, row);
+    float d = glm::length(nearest - p);
+    if (d <= mark + L.dotRadius) return std::nullopt;
+    return ChartLeader{p + (nearest - p) * (mark / d), nearest};
+}
+
+ChartTextBox& addChartTextBox(std::vector<ChartTextBox>& out, glm::vec2 pos, TextAlign align,
+                              float px, const std::string& role, const std::string& words) {
+    glm::vec2 size = measureText(FontFace::Sans, px, words);
+    float x = pos.x;
+    if (align == TextAlign::Center) x -= size.x * 0.5f;
+    if (align == TextAlign::Right) x -= size.x;
+    out.push_back({{std::round(x), std::round(pos.y), size.x, size.y}, px, role, words});
+    return out.back();
+}
+
+void speedChartNameBoxes(const SpeedChartLayout& L, std::vector<ChartTextBox>& out) {
+    for (size_t k = 0; k < L.labels.size(); ++k) {
+        if (L.labelShown[k]) {
+            out.push_back({L.labels[k], L.labelPx, "chart-label", L.labelTexts[k]});
+            out.back().row = static_cast<int>(k);
+        }
+        if (L.badge[k] > 0) {
+            out.push_back({L.badgeBoxes[k], L.labelPx, "chart-badge", std::to_string(L.badge[k])});
+            out.back().row = static_cast<int>(k);
+        }
+    }
+    float keyLineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
+    for (size_t i = 0; i < L.keyRows.size(); ++i) {
+        int row = static_cast<int>(L.keyRows[i]);
+        out.push_back({L.keyBadges[i], L.labelPx, "chart-badge", std::to_string(i + 1)});
+        out.back().row = row;
+        float x = std::round(L.keyBadges[i].right() + speedChartLegendGap(L));
+        addChartTextBox(out, {x, L.keyBadges[i].centre().y - 0.5f * keyLineH}, TextAlign::Left,
+                        L.legendPx, "chart-key", L.labelTexts[L.keyRows[i]])
+            .row = row;
+    }
+}
+
 }  // namespace pcf

@@ -10,7 +10,11 @@
 // fonts.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "analysis/speed_chart.h"
+#include "draw/canvas.h"
 
 namespace pcf {
 
@@ -30,5 +34,16 @@ float speedChartBadgeGap(const SpeedChartLayout& layout);
 // some got badges, once more with those first, keeping the placement with fewer badges), then
 // the rest where they fit; badges are numbered in the order of their dots' times.
 void placeSpeedChartLabels(SpeedChartLayout& layout, bool keptLabelsOnly);
+
+// A text box of `words` at `px` whose anchor `pos` is its left, centre or right end (align) at its
+// top, appended to `out`.
+ChartTextBox& addChartTextBox(std::vector<ChartTextBox>& out, glm::vec2 pos, TextAlign align,
+                              float px, const std::string& role, const std::string& words);
+
+// The dots' names, their badges and the key's badges and names, as speedChartTextBoxes lists them.
+void speedChartNameBoxes(const SpeedChartLayout& layout, std::vector<ChartTextBox>& out);
+
+// The gap between a legend's or key's mark and its words (speed_chart.cpp).
+float speedChartLegendGap(const SpeedChartLayout& layout);
 
 }  // namespace pcf
