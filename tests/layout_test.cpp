@@ -218,6 +218,12 @@ std::vector<std::string> tableProblems(const FramePlan& plan, const Trace& tr, i
             std::abs(std::stof(cells[depth]) - tap->depth) > 5.1e-4f) {
             out.push_back("table row \"" + b.text + "\": depth or d - ref is not its read's");
         }
+        // The weight to 3 decimals, and one above 0 never printed as 0 (a 7x7 tent's corners).
+        float weight = tr.weights.at(texel), shownWeight = std::stof(cells.back());
+        if (std::abs(shownWeight - weight) > 5.1e-4f || (weight > 0.0f) != (shownWeight > 0.0f)) {
+            out.push_back("table row \"" + b.text + "\": its w is not its weight " +
+                          std::to_string(weight));
+        }
         float shownRef = ref >= 0 ? std::stof(cells[ref]) : titleRef.value_or(-1.0f);
         if (std::abs(shownRef - tap->ref) > 5.1e-5f) {
             out.push_back("table row \"" + b.text + "\": its ref " + std::to_string(tap->ref) +

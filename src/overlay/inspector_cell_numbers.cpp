@@ -35,7 +35,7 @@ std::vector<Item> cellItems(const InspectorModel& m, const Grid& g, glm::ivec2 t
         float depth = m.map ? m.map->depth(texel.x, texel.y) : (tap ? tap->depth : 0.0f);
         all.push_back({"d " + fixed(depth, 3), g.number, "cell-depth"});
     }
-    if (tap) all.push_back({"w " + fixed(tr.weights.at(texel), 3), g.number, "cell-weight"});
+    if (tap) all.push_back({"w " + weightText(tr.weights.at(texel)), g.number, "cell-weight"});
     return all;
 }
 

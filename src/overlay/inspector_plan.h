@@ -54,6 +54,16 @@ inline std::string fixed(float v, int decimals) {
     return buf;
 }
 
+// A weight in five characters: three decimals, or, for a weight above 0 that would print as
+// 0.000 (a 7x7 tent's outer texels), its first digit and power of ten ("3e-04"): a texel that
+// counts never reads as one that does not.
+inline std::string weightText(float w) {
+    if (w <= 0.0f || w >= 0.0005f) return fixed(w, 3);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.0e", static_cast<double>(w));
+    return buf;
+}
+
 inline float lineHeightOf(float size) {
     return std::max(fontMetrics(FontFace::Sans, size).lineHeight,
                     fontMetrics(FontFace::Mono, size).lineHeight);

@@ -84,7 +84,7 @@ std::vector<std::string> tableRows(const InspectorModel& m, const std::vector<gl
         if (form.refColumn) row.push_back(fixed(tap->ref, 4));
         row.push_back(fixed(tap->depth, 3));
         if (form.margin) row.push_back(fixed(tap->depth - tap->ref, 4));
-        row.push_back(fixed(tr.weights.at(texel), 3));
+        row.push_back(weightText(tr.weights.at(texel)));
         cells.push_back(std::move(row));
     }
     return alignedRows(cells, form.pairTexel ? 1 : 0);
