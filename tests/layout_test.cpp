@@ -220,6 +220,19 @@ std::vector<std::string> tableProblems(const FramePlan& plan, const Trace& tr, i
         }
         // The weight to 3 decimals, and one above 0 never printed as 0 (a 7x7 tent's corners).
         float weight = tr.weights.at(texel), shownWeight = std::stof(cells.back());
+        // pcss: a 0 is a texel only the blocker search read (its first taps), and the title
+        // says so.
+        if (tr.params.method == PCF_PCSS && shownWeight == 0.0f) {
+            bool filtered = false;
+            for (size_t k = PCF_PCSS_TAPS; k < tr.taps.size(); ++k) {
+                filtered = filtered || tr.taps[k].texel == texel;
+            }
+            if (filtered ||
+                title.find("w 0.000: read by the blocker search only") == std::string::npos) {
+                out.push_back("table row \"" + b.text + "\": w 0 on a pcss table: " +
+                              (filtered ? "the filter reads it" : "the title does not say why"));
+            }
+        }
         if (std::abs(shownWeight - weight) > 5.1e-4f || (weight > 0.0f) != (shownWeight > 0.0f)) {
             out.push_back("table row \"" + b.text + "\": its w is not its weight " +
                           std::to_string(weight));

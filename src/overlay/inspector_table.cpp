@@ -131,6 +131,14 @@ TexelTable texelTableOf(const InspectorLayout& l, const InspectorModel& m, const
                                            : "The " + std::to_string(texels.size()) +
                                                  " texels whose cells have no room for their "
                                                  "numbers, row by row";
+    // pcss: the texels only its blocker search read weigh 0 (the search counts blockers; the
+    // filter's taps weigh the visibility). Without a word their w 0.000 reads as a tap that does
+    // not count.
+    const Trace& tr = *m.trace;
+    bool searchOnly = tr.params.method == PCF_PCSS &&
+                      std::any_of(texels.begin(), texels.end(),
+                                  [&](glm::ivec2 x) { return tr.weights.at(x) == 0.0f; });
+    if (searchOnly) title += " (`w 0.000`: read by the blocker search only)";
     // (The ref as a code span: monospace like the rows, and never broken across lines.)
     title += ref ? "; `ref " + fixed(*ref, 4) + "` for all:" : ":";
     out.title = fitText(title, FontFace::Sans, t.label, t.label, width, 1e6f);
