@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -202,19 +203,27 @@ std::string settingsLine(const StabilityOptions& o) {
 }
 
 // What the command writes into -o: the CSV, the Markdown, and each chart its sweeps draw.
-std::vector<std::string> outputNames(const std::vector<Sweep>& sweeps) {
-    std::vector<std::string> names = {"stability.csv", "stability.md"};
+// The charts of `sweeps`, the files writeCharts writes them to.
+std::vector<std::string> chartNames(const std::vector<Sweep>& sweeps) {
+    std::vector<std::string> names;
     for (const SweepChart& c : sweepCharts()) {
         if (has(sweeps, c.sweep)) names.emplace_back(c.file);
     }
+    return names;
+}
+
+std::vector<std::string> outputNames(const std::vector<Sweep>& sweeps) {
+    std::vector<std::string> names = {"stability.csv", "stability.md"};
+    for (const std::string& chart : chartNames(sweeps)) names.push_back(chart);
     if (has(sweeps, Sweep::Aliasing)) names.push_back("aliasing_heatmap.png");
     return names;
 }
 
-// The sweeps' charts and images, into dir. Each chart's subtitle states the settings the rows
-// carry (their setup rows); stand-alone charts keep every text at STANDALONE_CHART_MIN_PX or more.
+// The sweeps' charts and the images (a run's heat map; none for --replot), into dir. Each chart's
+// subtitle states the settings the rows carry (their setup rows); stand-alone charts keep every
+// text at STANDALONE_CHART_MIN_PX or more.
 void writeCharts(const fs::path& dir, const std::vector<StabilityRow>& rows,
-                 const StabilityResult& result, const std::vector<Sweep>& sweeps,
+                 std::span<const StabilityImage> images, const std::vector<Sweep>& sweeps,
                  glm::ivec2 chartSize) {
     const std::string source = "pcfscope stability";
     const float minPx = STANDALONE_CHART_MIN_PX;
@@ -227,7 +236,7 @@ void writeCharts(const fs::path& dir, const std::vector<StabilityRow>& rows,
             chart(std::string(c.file), c.draw(rows, chartSize, source, minPx));
     }
     // The heat map with its colour scale and map size, at the charts' size.
-    for (const StabilityImage& image : result.images) {
+    for (const StabilityImage& image : images) {
         chart(image.name,
               drawImageChart(aliasingHeatmapSpec(image, rows, source, minPx), chartSize));
     }
@@ -259,22 +268,22 @@ CheckedStability checkStabilityCommand(const StabilityCommandOptions& o) {
 // ignored by a run that measures nothing.
 constexpr const char* REPLOT_OPTIONS[] = {"--replot", "--out", "--chart-size", "--force", "--help"};
 
-// The charts --replot draws from `rows`: each sweep chart with rows of its sweep.
-std::vector<std::string> replotNames(const std::vector<StabilityRow>& rows) {
-    std::vector<std::string> names;
+// The sweeps --replot draws from `rows`: each charted sweep with rows.
+std::vector<Sweep> chartedSweeps(const std::vector<StabilityRow>& rows) {
+    std::vector<Sweep> sweeps;
     for (const SweepChart& c : sweepCharts()) {
         bool any = std::any_of(rows.begin(), rows.end(), [&](const StabilityRow& r) {
             return r.sweep == sweepName(c.sweep);
         });
-        if (any) names.emplace_back(c.file);
+        if (any) sweeps.push_back(c.sweep);
     }
-    return names;
+    return sweeps;
 }
 
 struct CheckedReplot {
     glm::ivec2 chartSize;
     std::vector<StabilityRow> rows;
-    std::vector<std::string> names;  // the charts it draws
+    std::vector<Sweep> sweeps;  // the charts it draws
 };
 
 // --replot's checks, in order: no measuring option, the chart size, the CSV (every input check:
@@ -294,8 +303,8 @@ CheckedReplot checkReplot(const StabilityCommandOptions& o) {
     CheckedReplot c;
     c.chartSize = parseSize("--chart-size", o.chartSize, CHART_SIZE_RANGE);
     c.rows = parseStabilityCsv(readInputFile(o.replot), o.replot);
-    c.names = replotNames(c.rows);
-    if (c.names.empty()) throw InputError(o.replot, 0, "no sweep rows to chart");
+    c.sweeps = chartedSweeps(c.rows);
+    if (c.sweeps.empty()) throw InputError(o.replot, 0, "no sweep rows to chart");
     if (o.out.empty()) throw UsageError("-o needs a directory");
     return c;
 }
@@ -303,17 +312,14 @@ CheckedReplot checkReplot(const StabilityCommandOptions& o) {
 // stability --replot CSV: the charts of an existing stability.csv, into -o, nothing measured;
 // staged and moved into place together, as a run's are.
 int runReplot(const StabilityCommandOptions& o) {
-    auto [chartSize, rows, names] = checkReplot(o);
+    auto [chartSize, rows, sweeps] = checkReplot(o);
+    std::vector<std::string> names = chartNames(sweeps);
     OutputFiles outputs(o.force);
     outputs.addInput("--replot", o.replot);
     outputs.addFilesIn("-o", o.out, names);
     StagingDir staging(o.out, "stability");
     std::unique_ptr<GlContext> context = createHeadlessContext();
-    for (const SweepChart& c : sweepCharts()) {
-        if (std::find(names.begin(), names.end(), c.file) == names.end()) continue;
-        writePngRgba8((staging.path() / c.file).string(), chartSize.x, chartSize.y,
-                      c.draw(rows, chartSize, "pcfscope stability", STANDALONE_CHART_MIN_PX));
-    }
+    writeCharts(staging.path(), rows, {}, sweeps, chartSize);
     outputs.commitStaged(staging.path(), o.out, names);
     std::string list;
     for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
@@ -372,7 +378,7 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
     std::string markdown = stabilityMarkdown(rows, setup, options.base.constantBias);
     writeTextFile((staging.path() / csvName).string(), stabilityCsv(rows));
     writeTextFile((staging.path() / mdName).string(), markdown);
-    writeCharts(staging.path(), rows, result, options.sweeps, chartSize);
+    writeCharts(staging.path(), rows, result.images, options.sweeps, chartSize);
     outputs.commitStaged(staging.path(), outDir, finalNames);
     std::fputs(markdown.c_str(), stdout);
     std::fprintf(stderr, "stability: %zu rows in %.1f s; wrote %zu files in %s\n",
