@@ -19,6 +19,7 @@ namespace pcf {
 namespace {
 
 const Colour FRONT{0.05f, 0.05f, 0.05f, 1.0f};
+const Colour HIGHLIGHT_RING{1.0f, 0.55f, 0.0f, 1.0f};  // round the dots a lesson step rings
 
 struct Fonts {
     float title, subtitle, axis, tick, label, legend;
@@ -657,8 +658,7 @@ void drawPlotMarks(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRo
     for (size_t k : L.front) c.ring(L.points[k], dotR + 2.5f * s, ring, FRONT);
     // The dots a lesson step talks about: a thick orange ring outside the front's.
     for (size_t k : L.highlight) {
-        c.ring(L.points[k], highlightRingRadius(L), highlightRingWidth(s),
-               glm::vec4(1.0f, 0.55f, 0.0f, 1.0f));
+        c.ring(L.points[k], highlightRingRadius(L), highlightRingWidth(s), HIGHLIGHT_RING);
     }
     for (size_t k = 0; k < rows.size(); ++k) {
         c.circle(L.points[k], dotR, methodColour(rows[k].point.method));
@@ -700,8 +700,7 @@ void drawBadges(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRow> 
             float r = L.badgeRadius;
             bool ringed = std::find(L.highlight.begin(), L.highlight.end(), k) != L.highlight.end();
             if (ringed) {
-                c.ring(at, r + 0.5f * highlightRingWidth(s), highlightRingWidth(s),
-                       glm::vec4(1.0f, 0.55f, 0.0f, 1.0f));
+                c.ring(at, r + 0.5f * highlightRingWidth(s), highlightRingWidth(s), HIGHLIGHT_RING);
             } else {
                 c.ring(at, r + 0.5f * frontRingWidth(s), frontRingWidth(s), FRONT);
             }

@@ -55,16 +55,18 @@ struct KindGrid {
     int footprintPixels = 0;  // pixels tinted as texels read
 };
 
+// Whether texel tx lies in the footprint n.
+bool inFootprintOf(const Neighbourhood& n, glm::ivec2 tx) {
+    return tx.x >= n.origin.x && tx.y >= n.origin.y && tx.x < n.origin.x + n.size.x &&
+           tx.y < n.origin.y + n.size.y;
+}
+
 // Whether pixel p's four neighbours all look up texels of the footprint n.
 bool footprintAround(const TexelLookup& look, const Neighbourhood& n, glm::ivec2 p) {
     const glm::ivec2 steps[] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
     for (glm::ivec2 d : steps) {
         glm::ivec2 tx;
-        if (!look.texelAt(p.x + d.x, p.y + d.y, tx)) return false;
-        if (tx.x < n.origin.x || tx.y < n.origin.y || tx.x >= n.origin.x + n.size.x ||
-            tx.y >= n.origin.y + n.size.y) {
-            return false;
-        }
+        if (!look.texelAt(p.x + d.x, p.y + d.y, tx) || !inFootprintOf(n, tx)) return false;
     }
     return true;
 }
@@ -78,8 +80,7 @@ KindGrid kindsAround(const TexelLookup& look, const Neighbourhood& n, glm::ivec2
         for (int x = lo.x; x <= hi.x; ++x) {
             glm::ivec2 tx, left, up;
             if (!look.texelAt(x, y, tx)) continue;
-            bool inFootprint = tx.x >= n.origin.x && tx.y >= n.origin.y &&
-                               tx.x < n.origin.x + n.size.x && tx.y < n.origin.y + n.size.y;
+            bool inFootprint = inFootprintOf(n, tx);
             bool edge = drawEdges && ((look.texelAt(x - 1, y, left) && left != tx) ||
                                       (look.texelAt(x, y - 1, up) && up != tx));
             // The footprint's outline is drawn at any texel size: where a texel spans two or

@@ -11,13 +11,6 @@ namespace pcf::inspector_detail {
 
 namespace {
 
-const TapRecord* firstTapOf(const Trace& tr, glm::ivec2 texel) {
-    for (const TapRecord& t : tr.taps) {
-        if (t.texel == texel) return &t;
-    }
-    return nullptr;
-}
-
 // The rows as columns padded to their widest cell (monospace), the header first.
 std::vector<std::string> alignedRows(const std::vector<std::vector<std::string>>& cells,
                                      size_t leftColumns) {
@@ -69,7 +62,7 @@ std::vector<std::string> tableRows(const InspectorModel& m, const std::vector<gl
     header.push_back("w");
     cells.push_back(header);
     for (glm::ivec2 texel : texels) {
-        const TapRecord* tap = firstTapOf(tr, texel);
+        const TapRecord* tap = firstTapAt(tr, texel);
         if (!tap) continue;
         // As the cell would show it (cellItems): a soft comparison's fraction for its bit.
         bool soft = tap->lit != 0.0f && tap->lit != 1.0f;
