@@ -28,7 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // The hints of the window's keys, which only its own frames may show.
-const char* const WINDOW_HINTS[] = {"Space/Right", "(Right)", "more Right",   "H: keys",
+const char* const WINDOW_HINTS[] = {"Space/Right", "(Right)",   "more Right",  "H: keys",
                                     "Step away",   "step away", "Space plays", ". and , show"};
 
 // Every string of a JSON value (keys' values, arrays' items), depth first.
@@ -53,7 +53,8 @@ void expectNoWindowHint(const std::string& json, const std::string& where) {
 // (`flickers`) speaks of the step's own sweep: held on its frames, not on another sweep's.
 bool claimsHoldOnFrame(const Session& s) {
     const LessonStep& step = s.lesson().steps[static_cast<size_t>(s.step())];
-    StepContext ctx = makeStepContext(s.settings(), s.pixel(), lightAngleDeg(s.scene(), *s.point()));
+    StepContext ctx =
+        makeStepContext(s.settings(), s.pixel(), lightAngleDeg(s.scene(), *s.point()));
     ClaimWorld world;
     world.onPlane = std::holds_alternative<Plane>(
         s.scene().objects[static_cast<size_t>(s.point()->object)].shape);
@@ -87,7 +88,8 @@ void expectWordsFollowTheClaims(const Session& s, const std::string& what, int* 
     std::string drawn = drawnStepWords(frame);
     ASSERT_FALSE(drawn.empty()) << what;
     std::string firstLine = drawn.substr(0, drawn.find('\n'));
-    StepContext ctx = makeStepContext(s.settings(), s.pixel(), lightAngleDeg(s.scene(), *s.point()));
+    StepContext ctx =
+        makeStepContext(s.settings(), s.pixel(), lightAngleDeg(s.scene(), *s.point()));
     std::string stepWords = drawnStepText(fillText(step.text, *s.trace(), ctx));
     if (claimsHoldOnFrame(s)) {
         EXPECT_EQ(frame["words"].string, "step") << what;
@@ -102,12 +104,15 @@ void expectWordsFollowTheClaims(const Session& s, const std::string& what, int* 
         EXPECT_NE(caption.find("visibility " + formatNumber(s.trace()->visibility)),
                   std::string::npos)
             << what << ": " << caption;
-        EXPECT_NE(caption.find("This step's words are not shown on this frame"),
-                  std::string::npos)
+        EXPECT_NE(caption.find("This step's words are not shown on this frame"), std::string::npos)
             << what;
         EXPECT_EQ(caption.find('{'), std::string::npos) << what << ": claim syntax in " << caption;
     }
     expectNoWindowHint(json, what);
+    // A video shows no second page, so no note points to one.
+    for (const jsonlite::Value& box : frame["layout"].array) {
+        if (box.has("text")) EXPECT_EQ(box["text"].string.find("next page"), std::string::npos);
+    }
 }
 
 struct FrameSize {
@@ -208,13 +213,13 @@ TEST(MotionWords, OnlyTheWindowsFramesNameItsKeys) {
 TEST(MotionWords, NoWrittenFrameOrVideoCarriesAWindowHint) {
     fs::path dir = testutil::makeTempDir("hints");
     for (const char* lesson : {"8", "13"}) {
-        testutil::CommandResult r = testutil::runPcfscope(
-            std::string("export ") + lesson + " --size 1024x768 --presentation -o " +
-            (dir / lesson).string());
+        testutil::CommandResult r =
+            testutil::runPcfscope(std::string("export ") + lesson +
+                                  " --size 1024x768 --presentation -o " + (dir / lesson).string());
         ASSERT_EQ(r.exitCode, 0) << r.err;
     }
-    testutil::CommandResult a = testutil::runPcfscope("animate 8 --step 7 --frames 3 --png " +
-                                                      (dir / "a").string());
+    testutil::CommandResult a =
+        testutil::runPcfscope("animate 8 --step 7 --frames 3 --png " + (dir / "a").string());
     ASSERT_EQ(a.exitCode, 0) << a.err;
     testutil::CommandResult s = testutil::runPcfscope(
         "animate 1 --sweep sun --point 0.3,0,2.2 --compare bias=none,constant,slope --frames 2 "

@@ -538,6 +538,7 @@ InspectorModel Session::model() const {
     m.status = statusText();
     m.markers = mMarkers;
     m.interactive = mInteractive;
+    m.singleFrame = mMotion.has_value() && !mInteractive;
     m.presentation = mPresentation;
     m.help = mHelp;
     m.showScene = chart.empty();

@@ -125,6 +125,9 @@ struct InspectorModel {
     // The window's frame: only it names the keys (a page's "more Right", "H: keys"); a frame
     // that is written (export, animate) never shows a hint only the window can act on.
     bool interactive = false;
+    // A frame of a written video: no page of it follows, so no note points to one (the
+    // inspector's "the formula, every term: next page").
+    bool singleFrame = false;
     Focus focus{true, true, false, false};  // what the step is about (inspector.h: Focus)
 };
 

@@ -227,6 +227,7 @@ void placeFormula(Planner& pl, const FittedText& f, const Rect& box, int page) {
 // `y`: the top of the room left under the rest.
 void planNextPageNote(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
                       const TypeSizes& t, float margin, float y, const std::string& what) {
+    if (m.singleFrame) return;  // a video's frame: no page follows it
     const Rect& p = l.inspector;
     float lh = lineHeightOf(t.label);
     std::string keys = pageKeys(m);
