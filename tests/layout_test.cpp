@@ -306,6 +306,63 @@ bool endsCleanly(std::string_view text) {
     return !line.empty() && (line.back() == '.' || line.back() == '?' || line.back() == '!');
 }
 
+// The texel table's grids of one page (issue 32: 6.4's 64 rows took three pages): under each
+// header, a number's name and the texel columns i, the rows j, each cell the number of the texel
+// (i, j)'s first read (depth to 3 decimals, d - ref and ref to 4, w as the cells print it).
+std::vector<std::string> gridProblems(const FramePlan& plan, const Trace& tr, int& cellsChecked) {
+    std::vector<std::string> out;
+    std::string name;
+    std::vector<int> columns;
+    for (const LayoutBox& b : plan.boxes) {
+        std::istringstream in(b.text);
+        std::vector<std::string> words;
+        for (std::string w; in >> w;) words.push_back(w);
+        if (b.role == "grid-header") {
+            name.clear();
+            columns.clear();
+            for (const std::string& w : words) {
+                if (std::isdigit(static_cast<unsigned char>(w[0]))) {
+                    columns.push_back(std::stoi(w));
+                } else {
+                    name += (name.empty() ? "" : " ") + w;
+                }
+            }
+            continue;
+        }
+        if (b.role != "grid-row") continue;
+        if (words.size() != columns.size() + 1) {
+            out.push_back("grid row \"" + b.text + "\" has not one cell per column");
+            continue;
+        }
+        int j = std::stoi(words[0]);
+        for (size_t c = 0; c < columns.size(); ++c) {
+            const TapRecord* tap = nullptr;
+            for (const TapRecord& t : tr.taps) {
+                if (t.texel == glm::ivec2(columns[c], j) && !tap) tap = &t;
+            }
+            if (!tap) {
+                out.push_back("grid " + name + " names texel (" + std::to_string(columns[c]) +
+                              ", " + std::to_string(j) + "), which the trace did not read");
+                continue;
+            }
+            float shown = std::stof(words[c + 1]);
+            float want = name == "depth"     ? tap->depth
+                         : name == "d - ref" ? tap->depth - tap->ref
+                         : name == "ref"     ? tap->ref
+                                             : tr.weights.at(tap->texel);
+            float tolerance = name == "depth" || name == "w" ? 5.1e-4f : 5.1e-5f;
+            if (name == "w" && want > 0.0f && want < 5e-4f) tolerance = want * 0.5f;
+            if (std::abs(shown - want) > tolerance || (name == "w" && (want > 0) != (shown > 0))) {
+                out.push_back("grid " + name + " row " + std::to_string(j) + " column " +
+                              std::to_string(columns[c]) + ": " + words[c + 1] + ", not " +
+                              std::to_string(want));
+            }
+            ++cellsChecked;
+        }
+    }
+    return out;
+}
+
 // The cells' index labels name both axes the same way (6.4, tent 7x7, at 1024x768 presentation
 // had "115" over its columns and "j=135" beside its rows): "i=" and "j=" on both, or bare numbers
 // on both and the axes named once in the corner.
@@ -343,6 +400,7 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
     // Step-text pages of paged steps; of them, cut mid-sentence or holding a lone sentence.
     int textPageEnds = 0, midSentence = 0, loneSentence = 0;
     int tableRowsWhole = 0;  // the step texts' table rows checked to fit their column
+    int gridCellsSeen = 0;   // the texel tables' grid cells checked against the trace
     // The texel tables' rows and the cells' index labels checked (tableProblems,
     // indexLabelProblems): some of each, bare labels among them, or the checks saw nothing.
     int tableRowsSeen = 0, indexLabelsSeen = 0, bareIndexLabelsSeen = 0, tablesPaged = 0;
@@ -422,6 +480,8 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         std::vector<std::string> found = indexLabelProblems(p);
                         if (m.trace) {
                             for (std::string& problem : tableProblems(p, *m.trace, tableRowsSeen))
+                                found.push_back(std::move(problem));
+                            for (std::string& problem : gridProblems(p, *m.trace, gridCellsSeen))
                                 found.push_back(std::move(problem));
                         }
                         for (const LayoutBox& b : p.boxes) {
@@ -636,6 +696,8 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                 framesAt1024, textPageEnds, loneSentence);
     EXPECT_GT(textPageEnds, 20);
     EXPECT_GT(tableRowsWhole, 100);
+    std::printf("layout: %d texel-grid cells checked\n", gridCellsSeen);
+    EXPECT_GT(gridCellsSeen, 100);
     EXPECT_EQ(midSentence, 0) << "of " << textPageEnds << " step-text pages";
     EXPECT_EQ(loneSentence, 0) << "of " << textPageEnds << " step-text pages";
     std::printf(

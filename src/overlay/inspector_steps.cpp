@@ -55,9 +55,10 @@ StepHeader stepHeaderOf(const InspectorLayout& l, const InspectorModel& m, const
 }
 
 // The header as stepHeaderOf placed it; markWidth > 0: the text's "more" mark, that wide, takes
-// the right of the neighbours' line (the previous step's title is cut short before it).
+// the right of the neighbours' line. While more pages follow, Right turns the page, so the next
+// step is not named there; on the last page it is, left of the mark.
 void planStepHeader(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                    const TypeSizes& t, const StepHeader& h, float markWidth) {
+                    const TypeSizes& t, const StepHeader& h, float markWidth, bool lastPage) {
     const Rect& p = l.steps;
     const std::string panel = "steps";
     float margin = stepsMargin(l);
@@ -73,14 +74,16 @@ void planStepHeader(Planner& pl, const InspectorLayout& l, const InspectorModel&
     int k = m.currentStep;
     std::string prev = k > 0 ? "< " + std::to_string(k) + ". " + m.stepTitles[k - 1] : "";
     std::string next = k + 1 < n ? std::to_string(k + 2) + ". " + m.stepTitles[k + 1] + " >" : "";
-    if (markWidth > 0.0f) next.clear();
-    float half = std::floor((width - h.listPx) / 2);
+    if (markWidth > 0.0f && !lastPage) next.clear();
+    // The line's room beside the mark, shared by the items it names.
+    float mark = markWidth > 0.0f ? markWidth + h.listPx : 0.0f;
+    float room = width - mark;
+    if (!prev.empty() && !next.empty()) room = std::floor((room - h.listPx) / 2);
     for (bool right : {false, true}) {
         const std::string& item = right ? next : prev;
         if (item.empty()) continue;
-        float room = markWidth > 0.0f ? width - markWidth - h.listPx : half;
         std::string shown = elideText(FontFace::Sans, h.listPx, item, room);
-        pl.text({right ? p.right() - margin : p.x + margin, h.listY}, shown,
+        pl.text({right ? p.right() - margin - mark : p.x + margin, h.listY}, shown,
                 {FontFace::Sans, h.listPx, TEXT_DIM, right ? TextAlign::Right : TextAlign::Left},
                 BoxKind::Text, panel, "step-list", shown != item);
     }
@@ -180,7 +183,7 @@ void planSteps(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
         markWidth =
             measureText(FontFace::Sans, h.listPx, moreMarkText(f, m.textPage, pageKeys(m))).x;
     }
-    planStepHeader(pl, l, m, t, h, markWidth);
+    planStepHeader(pl, l, m, t, h, markWidth, m.textPage + 1 >= f.pages);
     std::optional<MarkPlace> mark;
     if (headerMark)
         mark = MarkPlace{{h.text.x, h.listY, h.text.w, lineHeightOf(h.listPx)}, h.listPx};
