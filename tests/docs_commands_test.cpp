@@ -132,8 +132,8 @@ std::vector<std::string> wordsOf(const std::string& command) {
     return words;
 }
 
-const std::set<std::string> SUBCOMMANDS = {"view",  "export", "render", "trace",  "methods",
-                                           "truth", "bench",  "stability", "verify", "lesson",
+const std::set<std::string> SUBCOMMANDS = {"view",  "export",  "render",    "trace",  "methods",
+                                           "truth", "bench",   "stability", "verify", "lesson",
                                            "check", "animate", "pick"};
 
 // A synopsis: optional parts in brackets, alternatives, or placeholders in capitals (LESSON,
@@ -194,7 +194,8 @@ std::string withOptions(std::string args, const std::string& added) {
         std::string flag = " " + words[k] + " ";
         size_t at = (args + " ").find(flag);
         if (at == std::string::npos || !valued) {
-            if (at == std::string::npos) args += " " + words[k] + (valued ? " " + words[k + 1] : "");
+            if (at == std::string::npos)
+                args += " " + words[k] + (valued ? " " + words[k + 1] : "");
         } else {
             size_t value = at + flag.size();
             size_t end = args.find(' ', value);
@@ -233,7 +234,7 @@ Outcome runIn(const fs::path& dir, const std::string& shell) {
                       err.string() + "' </dev/null";
     int status = std::system(cmd.c_str());
     Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, testutil::readAll(out),
-          testutil::readAll(err)};
+              testutil::readAll(err)};
     fs::remove(out);
     fs::remove(err);
     return r;
@@ -283,10 +284,10 @@ TEST(DocCommandsFound, EveryDocsCommandIsFoundAndSorted) {
     EXPECT_GT(synopses, 10);
     EXPECT_GT(names, 10);
     EXPECT_GT(runs, 15);
-    for (const char* c : {"build/pcfscope export 3 -o slides --size 1280x720 --presentation",
-                          "pcfscope trace --example --method pcf-gather --kernel 3 --json",
-                          "pcfscope verify D", "pcfscope view [LESSON] [--size WxH] [--presentation]",
-                          "pcfscope", "pcfscope render"}) {
+    for (const char* c :
+         {"build/pcfscope export 3 -o slides --size 1280x720 --presentation",
+          "pcfscope trace --example --method pcf-gather --kernel 3 --json", "pcfscope verify D",
+          "pcfscope view [LESSON] [--size WxH] [--presentation]", "pcfscope", "pcfscope render"}) {
         EXPECT_TRUE(texts.count(c)) << c;
     }
     // A message (`pcfscope: interrupted ...`) and the frames folder are not commands.
@@ -336,8 +337,8 @@ TEST(DocCommandsFound, EverySynopsisNamesOptionsItsCommandHas) {
         for (std::sregex_iterator it(c.begin(), c.end(), option), end; it != end; ++it) {
             std::string name = (*it)[2];
             EXPECT_TRUE(std::regex_search(help[sub], std::regex("(^|[ ,])" + name + "([ ,=]|$)")))
-                << s.doc << ": `" << s.command << "` names " << name << ", which `pcfscope "
-                << sub << " --help` does not list";
+                << s.doc << ": `" << s.command << "` names " << name << ", which `pcfscope " << sub
+                << " --help` does not list";
             ++checked;
         }
     }
@@ -349,8 +350,9 @@ TEST_F(DocCommands, EveryConcreteCommandRunsAndShowsWhatItsDocSays) {
     ASSERT_FALSE(display.display().empty()) << "Xvfb did not start";
     // The inputs the docs' commands name: the authoring guide's worked example, and a depth map.
     std::ofstream(mDir / "my-lesson.toml") << workedExample();
-    Outcome made = runIn(mDir, std::string(PCFSCOPE_EXE) +
-                               " render --scene box-on-plane --size 320x180 -o map.png --raw raw");
+    Outcome made =
+        runIn(mDir, std::string(PCFSCOPE_EXE) +
+                        " render --scene box-on-plane --size 320x180 -o map.png --raw raw");
     ASSERT_EQ(made.exitCode, 0) << made.err;
     fs::copy_file(mDir / "raw/shadowmap.exr", mDir / "depth.exr");
     // Each command in a folder of its own (two write the default bench/), with the inputs.

@@ -47,8 +47,8 @@ TEST(LessonWords, AStateAndANumberTheStepContradictsAreBothRefused) {
 }
 
 TEST(LessonWords, ANumberTypedForAQuantityNamesItsPlaceholder) {
-    for (const char* text : {"The answer is 0.601.", "so visibility = 0.601 here",
-                             "{lit_count} / {taps} = 0.601"}) {
+    for (const char* text :
+         {"The answer is 0.601.", "so visibility = 0.601 here", "{lit_count} / {taps} = 0.601"}) {
         std::vector<WordProblem> p = problemsOf(text);
         ASSERT_EQ(p.size(), 1u) << text;
         EXPECT_EQ(p[0].offset, std::string(text).find(text[0] == 's' ? "visibility" : "0.601"))
@@ -69,17 +69,16 @@ TEST(LessonWords, ANumberTypedForAQuantityNamesItsPlaceholder) {
 }
 
 TEST(LessonWords, WordsThatStateNothingOfTheStepPass) {
-    for (const char* text : {
-             "visibility {visibility}: in the penumbra",  // true, with its placeholder
-             "{lit_count} of {taps} are lit: {visibility}.",
-             "this pixel is half in shadow.",
-             "The worked example gives `1 - 0.399 = 0.601`.",  // a code span
-             "the post's \"0.601\" is an amount of shadow",   // quoted
-             "1 - 0.399 = 0.601, as the article says",        // arithmetic on typed numbers
-             "p = uv * size - 0.601",                          // a formula's constant
-             "it can answer 0, 0.25, 0.601, 0.75 or 1",        // a list of values
-             "a visibility near 0.7 reads as grey",            // not the step's to 4 decimals
-             "Texels that are lit pass the test; shadowed ones fail."}) {
+    for (const char* text :
+         {"visibility {visibility}: in the penumbra",  // true, with its placeholder
+          "{lit_count} of {taps} are lit: {visibility}.", "this pixel is half in shadow.",
+          "The worked example gives `1 - 0.399 = 0.601`.",  // a code span
+          "the post's \"0.601\" is an amount of shadow",    // quoted
+          "1 - 0.399 = 0.601, as the article says",         // arithmetic on typed numbers
+          "p = uv * size - 0.601",                          // a formula's constant
+          "it can answer 0, 0.25, 0.601, 0.75 or 1",        // a list of values
+          "a visibility near 0.7 reads as grey",            // not the step's to 4 decimals
+          "Texels that are lit pass the test; shadowed ones fail."}) {
         EXPECT_TRUE(problemsOf(text).empty()) << text << ": " << problemsOf(text).front().problem;
     }
 }

@@ -17,6 +17,10 @@ struct ValueWalk {
     std::vector<std::size_t> starts;
     std::size_t out = 0;  // the value's bytes so far
 
+    // At column `at` (0-based) of line `from` (0-based): the opening quote.
+    ValueWalk(const std::vector<std::string_view>& fileLines, std::size_t from, std::size_t at)
+        : lines(fileLines), line(from), pos(at), l(text(from)) {}
+
     std::string_view text(std::size_t k) const {
         std::string_view t = lines[k];
         if (!t.empty() && t.back() == '\r') t.remove_suffix(1);
@@ -102,9 +106,7 @@ std::vector<std::size_t> valueLineStarts(const std::vector<std::string_view>& fi
                                          int column, const std::string& value) {
     std::size_t first = static_cast<std::size_t>(std::max(1, line)) - 1;
     if (first < fileLines.size()) {
-        ValueWalk walk{fileLines, first, static_cast<std::size_t>(std::max(1, column)) - 1, {}, {},
-                       0};
-        walk.l = walk.text(first);
+        ValueWalk walk(fileLines, first, static_cast<std::size_t>(std::max(1, column)) - 1);
         if (walk.run() && walk.out == value.size()) return walk.starts;
     }
     std::vector<std::size_t> starts;

@@ -47,7 +47,8 @@ void addRun(std::vector<Word>& out, std::string_view run, std::size_t at, bool q
     if (!core.empty()) {
         Word w{isNumber(core) ? Word::Number : Word::Text, std::string(core), at, quoted};
         if (w.kind == Word::Text) {
-            for (char& c : w.text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            for (char& c : w.text)
+                c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         }
         out.push_back(std::move(w));
     }
@@ -134,11 +135,10 @@ struct Quantity {
 // The step's quantities a decimal may be typed for, and its counts.
 std::vector<Quantity> quantities(const Trace& tr, const StepContext& ctx, bool counts) {
     static const char* decimalNames[] = {
-        "visibility", "1-visibility", "ref",     "z",       "depth_bias", "uv.x",
-        "uv.y",       "texel.x",      "texel.y", "frac.x",  "frac.y",     "1-frac.x",
-        "1-frac.y",   "g.x",          "g.y",     "tent.s",  "tent.t",     "in_texel.x",
-        "in_texel.y"};
-    static const char* countNames[] = {"lit_count", "shadowed_count", "taps",   "texels",
+        "visibility", "1-visibility", "ref",    "z",          "depth_bias", "uv.x",     "uv.y",
+        "texel.x",    "texel.y",      "frac.x", "frac.y",     "1-frac.x",   "1-frac.y", "g.x",
+        "g.y",        "tent.s",       "tent.t", "in_texel.x", "in_texel.y"};
+    static const char* countNames[] = {"lit_count", "shadowed_count", "taps",    "texels",
                                        "distinct",  "fetches",        "hw_taps", "gathers"};
     std::vector<Quantity> out;
     auto add = [&](const std::string& name) {
@@ -169,7 +169,9 @@ struct Reader {
         return k < w.size() && w[k].kind == kind && (text.empty() || w[k].text == text);
     }
     bool word(std::size_t k, std::string_view text) const { return is(k, Word::Text, text); }
-    void refuse(std::size_t k, std::string problem) { out.push_back({w[k].at, std::move(problem)}); }
+    void refuse(std::size_t k, std::string problem) {
+        out.push_back({w[k].at, std::move(problem)});
+    }
 
     // A formula's constant: next to an operator.
     bool besideOperator(std::size_t k) const {
@@ -205,9 +207,12 @@ struct Reader {
 
 // "visibility 1", "ref = 0.5", "fx of 0.25": the number after a quantity's name.
 void Reader::labelled(std::size_t k) {
-    static const std::pair<const char*, const char*> names[] = {
-        {"visibility", "visibility"}, {"ref", "ref"},       {"z", "z"},
-        {"fx", "frac.x"},             {"fy", "frac.y"},     {"depth", ""}};
+    static const std::pair<const char*, const char*> names[] = {{"visibility", "visibility"},
+                                                                {"ref", "ref"},
+                                                                {"z", "z"},
+                                                                {"fx", "frac.x"},
+                                                                {"fy", "frac.y"},
+                                                                {"depth", ""}};
     for (auto [label, placeholder] : names) {
         if (!word(k, label)) continue;
         std::size_t n = k + 1;
@@ -269,9 +274,10 @@ void Reader::countPhrase(std::size_t k) {
         for (const Quantity& q : counts) {
             bool partName = q.name == "lit_count" || q.name == "shadowed_count";
             if (partName != part || value(w[at]) != q.value) continue;
-            return refuse(at, "\"" + w[at].text + "\" in \"" + (part ? w[at].text + " of" : "of " +
-                                  w[at].text) + "\" is the step's {" + q.name + "} typed: write {" +
-                                  q.name + "}");
+            return refuse(at, "\"" + w[at].text + "\" in \"" +
+                                  (part ? w[at].text + " of" : "of " + w[at].text) +
+                                  "\" is the step's {" + q.name + "} typed: write {" + q.name +
+                                  "}");
         }
     };
     if (before) check(k - 1, true);
@@ -290,15 +296,18 @@ std::optional<std::pair<std::string, std::size_t>> Reader::stateAt(std::size_t k
     }
     bool partial = qualifier == "half" || qualifier == "partly" || qualifier == "partially";
     if (word(at, "lit")) return std::pair{std::string(partial ? "penumbra" : "lit"), at + 1};
-    if (word(at, "shadowed")) return std::pair{std::string(partial ? "penumbra" : "shadowed"), at + 1};
-    if (word(at, "dark") && !qualifier.empty() && !partial) return std::pair{std::string("shadowed"), at + 1};
+    if (word(at, "shadowed"))
+        return std::pair{std::string(partial ? "penumbra" : "shadowed"), at + 1};
+    if (word(at, "dark") && !qualifier.empty() && !partial)
+        return std::pair{std::string("shadowed"), at + 1};
     if (word(at, "in") && word(at + 1, "shadow"))
         return std::pair{std::string(partial ? "penumbra" : "shadowed"), at + 2};
     if (word(at, "in") && word(at + 1, "full") && word(at + 2, "shadow"))
         return std::pair{std::string("shadowed"), at + 3};
     if (word(at, "in") && word(at + 1, "the") && word(at + 2, "penumbra"))
         return std::pair{std::string("penumbra"), at + 3};
-    if (word(at, "in") && word(at + 1, "penumbra")) return std::pair{std::string("penumbra"), at + 2};
+    if (word(at, "in") && word(at + 1, "penumbra"))
+        return std::pair{std::string("penumbra"), at + 2};
     return std::nullopt;
 }
 
@@ -319,9 +328,10 @@ void Reader::stateWord(std::size_t k) {
     // "the point is lit", "this pixel stays in shadow", "it is lit".
     bool verb = word(k, "is") || word(k, "stays") || word(k, "lies") || word(k, "sits") ||
                 word(k, "remains") || word(k, "was");
-    bool subject = k > 0 && (word(k - 1, "it") ||
-                             ((word(k - 1, "point") || word(k - 1, "pixel")) && k > 1 &&
-                              (word(k - 2, "the") || word(k - 2, "this") || word(k - 2, "ringed"))));
+    bool subject =
+        k > 0 && (word(k - 1, "it") ||
+                  ((word(k - 1, "point") || word(k - 1, "pixel")) && k > 1 &&
+                   (word(k - 2, "the") || word(k - 2, "this") || word(k - 2, "ringed"))));
     if (verb && subject) {
         state = stateAt(k + 1);
         if (state) from = k + 1;
@@ -351,7 +361,8 @@ void Reader::stateWord(std::size_t k) {
     if (holds(state->first)) return;
     std::string truth = holds("lit") ? "lit" : holds("shadowed") ? "shadowed" : "penumbra";
     std::string said;
-    for (std::size_t j = from; j < state->second; ++j) said += (said.empty() ? "" : " ") + w[j].text;
+    for (std::size_t j = from; j < state->second; ++j)
+        said += (said.empty() ? "" : " ") + w[j].text;
     refuse(from, "\"" + said + "\" is false here: the point's visibility is " +
                      formatNumber(static_cast<float>(tr.visibility)) + ", " +
                      (truth == "penumbra" ? "in the penumbra" : truth) +
@@ -379,10 +390,9 @@ std::vector<WordProblem> typedWordProblems(std::string_view text, const Trace& t
     std::stable_sort(out.begin(), out.end(), [](const WordProblem& a, const WordProblem& b) {
         return a.offset < b.offset;
     });
-    out.erase(std::unique(out.begin(), out.end(),
-                          [](const WordProblem& a, const WordProblem& b) {
-                              return a.offset == b.offset;
-                          }),
+    out.erase(std::unique(
+                  out.begin(), out.end(),
+                  [](const WordProblem& a, const WordProblem& b) { return a.offset == b.offset; }),
               out.end());
     return out;
 }
