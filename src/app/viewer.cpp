@@ -114,9 +114,8 @@ class Viewer {
         mSplit.follow(mSession);
         // The scene point the click pinned, as a lesson's `point` key takes it (lesson.h).
         if (const std::optional<ScenePoint>& q = mSession.point()) {
-            std::printf("pixel (%d, %d): point = [%.4f, %.4f, %.4f]\n", mSession.pixel().x,
-                        mSession.pixel().y, static_cast<double>(q->posWs.x),
-                        static_cast<double>(q->posWs.y), static_cast<double>(q->posWs.z));
+            std::printf("pixel (%d, %d): %s\n", mSession.pixel().x, mSession.pixel().y,
+                        pointKeyText(q->posWs).c_str());
             std::fflush(stdout);
         }
     }

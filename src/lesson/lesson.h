@@ -150,8 +150,13 @@ constexpr int MAX_ANIMATION_FRAMES = 600;
 
 struct LessonStep {
     std::string title;
-    std::string text;         // with {placeholders}; fill with fillText (lesson_text.h)
-    int line = 0;             // the line of the step's [[step]] header in the lesson file
+    std::string text;  // with {placeholders}; fill with fillText (lesson_text.h)
+    int line = 0;      // the line of the step's [[step]] header in the lesson file
+    // Where the text is in the file: the line its value starts on, and the offsets in `text` at
+    // which each later line of the file begins (a line-ending backslash joins lines without a
+    // newline in the text). stepTextLine turns an offset into its line.
+    int textLine = 0;
+    std::vector<size_t> textLineStarts;
     LessonSettings settings;  // the state at this step: [settings], then every step up to here
     // `chart = "figures/bench.csv"`: this step shows the speed/accuracy chart drawn from that
     // bench.csv (a path relative to the lesson file) where the scene would be. Not inherited.
@@ -210,5 +215,12 @@ Lesson parseLessonFile(const std::string& path);
 // Parses lesson text; sourceName names it in error messages and gives the lesson's name (its
 // stem) and sourcePath.
 Lesson parseLessonString(std::string_view text, const std::string& sourceName);
+// The same, reading on past each problem: every one is appended to `problems`, in file order
+// (`lesson check` reports them all). The lesson returned is then as far as it could be read.
+Lesson parseLessonString(std::string_view text, const std::string& sourceName,
+                         std::vector<InputError>& problems);
+
+// The line of the lesson file that holds offset `offset` of the step's text.
+int stepTextLine(const LessonStep& step, size_t offset);
 
 }  // namespace pcf

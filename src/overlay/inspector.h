@@ -143,6 +143,9 @@ struct FramePlan {
     // term (page 2) when both do not fit one panel at the floors. Page k shows the text's page
     // min(k, last) and the inspector's part min(k, last).
     int textPages = 1;
+    // Of them: the step text's pages, and the inspector's parts (cells, texel table, formula).
+    int stepTextPages = 1;
+    int inspectorParts = 1;
     bool gridShown = false;  // the texel grid was drawn on the scene (not hidden or off)
     // The texels read were tinted on the scene (not on an inset, nor off the scene's pixels).
     bool footprintShown = false;
@@ -156,6 +159,9 @@ struct FramePlan {
     // cell, or as a row of the texel table (the page after the cells when a cell had to drop
     // some of its numbers at this size).
     std::vector<glm::ivec2> numberedTexels;
+    // The read texels whose cell shows its comparison bit (the texel table's grids leave the
+    // bits to the cells).
+    std::vector<glm::ivec2> bitTexels;
     // poisson and pcss: the radii, in texels, of the rings drawn round the lookup point (the
     // disks the Poisson points fill: the filter's, and pcss's blocker search's).
     std::vector<float> diskRadii;

@@ -303,6 +303,9 @@ bool planCell(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm
     Placed done = fitKeepingDepth(candidates, inMap, cm, g, room);
     if (done.empty()) done = fitWithoutDepth(candidates, cm, g, room);
     if (tap && done.size() == all.size()) pl.plan.numberedTexels.push_back(texel);
+    bool bit = std::any_of(done.begin(), done.end(),
+                           [](const auto& d) { return d.second->role == "cell-bit"; });
+    if (tap && bit) pl.plan.bitTexels.push_back(texel);
     Colour ink = tap && tap->lit >= 0.5f ? DARK_TEXT : TEXT;
     for (const auto& [box, it] : done) {
         pl.text({box.x + box.w * 0.5f, box.y}, it->text,

@@ -262,6 +262,50 @@ void takeCellsPlan(Planner& pl, FramePlan& cells) {
     pl.plan.diskRadii = cells.diskRadii;
 }
 
+// The first part: the cells, with the formula under them when it fits there, and the line that
+// says what follows (the texel table, `table`, or the formula).
+void planCellsPart(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                   const TypeSizes& t, InspectorPanel& panel, bool table) {
+    const Rect& p = l.inspector;
+    float margin = inspectorMargin(l);
+    float width = p.w - 2 * margin;
+    takeCellsPlan(pl, panel.cells);
+    Rect under{p.x + margin, panel.cellsBottom, width, p.bottom() - margin - panel.cellsBottom};
+    // The room inspectorPanel kept for the line that points to the texel table.
+    if (table) under.h -= t.label * 0.5f + lineHeightOf(t.label);
+    float noteY = panel.cellsBottom;
+    if (panel.together) {
+        placeFormula(pl, fitFormula(*m.trace, t, under), under, 0);
+        noteY = pl.plan.boxes.back().rect.bottom() + t.label * 0.5f;
+    }
+    // Where the rest is; under a formula only where there is room left for the line.
+    bool room = noteY + lineHeightOf(t.label) <= p.bottom() - margin;
+    if (table && room) {
+        planNextPageNote(pl, l, m, t, margin, noteY, "every texel's numbers");
+    } else if (!panel.together) {
+        planNextPageNote(pl, l, m, t, margin, noteY, "the formula, every term");
+    }
+}
+
+// The texel table's paging, the formula following it (on pages of its own, `formulaPages`, or
+// under the table's last lines) when it is not under the cells.
+TablePaging tablePaging(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
+                        const InspectorPanel& panel, float top, int formulaPages) {
+    if (panel.tableTexels.empty()) return {};
+    const Rect& p = l.inspector;
+    float margin = inspectorMargin(l);
+    FormulaAfter after;
+    if (!panel.together) {
+        after.pages = formulaPages;
+        after.fitsFrom = [&](float y) {
+            Rect below{p.x + margin, y, p.w - 2 * margin, p.bottom() - margin - y};
+            return below.h >= lineHeightOf(t.numberFloor) &&
+                   fitFormula(*m.trace, t, below).pages == 1;
+        };
+    }
+    return texelTablePaging(l, m, t, panel.tableTexels, panel.cells.bitTexels, top, after);
+}
+
 }  // namespace
 
 void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
@@ -281,34 +325,25 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     Rect alone{p.x + margin, formulaTop, width, p.bottom() - margin - formulaTop};
     FittedText formulaAlone = fitFormula(tr, t, alone);
     // The parts: the cells (with the formula when it fits under them), the texel table's pages
-    // when some cells could not hold their numbers, the formula's pages when it did not fit.
+    // when some cells could not hold their numbers (the formula under its last lines when it
+    // fits there whole), the formula's pages when it did not fit.
     const std::vector<glm::ivec2>& table = panel.tableTexels;
-    int tableParts =
-        table.empty() ? 0 : texelTablePages(l, m, t, table, formulaTop, !panel.together);
-    int parts = 1 + tableParts + (panel.together ? 0 : formulaAlone.pages);
+    TablePaging paging = tablePaging(l, m, t, panel, formulaTop, formulaAlone.pages);
+    int tableParts = table.empty() ? 0 : paging.pages();
+    int formulaParts = panel.together || paging.formulaBelow ? 0 : formulaAlone.pages;
+    int parts = 1 + tableParts + formulaParts;
     pl.plan.textPages = std::max(pl.plan.textPages, parts);
+    pl.plan.inspectorParts = parts;
     int part = std::min(std::max(0, m.textPage), parts - 1);
-    if (part == 0) {
-        takeCellsPlan(pl, panel.cells);
-        Rect under{p.x + margin, panel.cellsBottom, width, p.bottom() - margin - panel.cellsBottom};
-        // The room inspectorPanel kept for the line that points to the texel table.
-        if (tableParts > 0) under.h -= t.label * 0.5f + lineHeightOf(t.label);
-        float noteY = panel.cellsBottom;
-        if (panel.together) {
-            placeFormula(pl, fitFormula(tr, t, under), under, 0);
-            noteY = pl.plan.boxes.back().rect.bottom() + t.label * 0.5f;
-        }
-        // Where the rest is; under a formula only where there is room left for the line.
-        bool room = noteY + lineHeightOf(t.label) <= p.bottom() - margin;
-        if (tableParts > 0 && room) {
-            planNextPageNote(pl, l, m, t, margin, noteY, "every texel's numbers");
-        } else if (!panel.together) {
-            planNextPageNote(pl, l, m, t, margin, noteY, "the formula, every term");
-        }
-        return;
-    }
+    if (part == 0) return planCellsPart(pl, l, m, t, panel, tableParts > 0);
     if (part <= tableParts) {
-        float end = planTexelTable(pl, l, m, t, table, formulaTop, part - 1, !panel.together);
+        float end = planTexelTable(pl, l, m, t, table, formulaTop, paging, part - 1);
+        if (part == tableParts && paging.formulaBelow) {
+            Rect below{p.x + margin, paging.formulaTop, width,
+                       p.bottom() - margin - paging.formulaTop};
+            placeFormula(pl, fitFormula(tr, t, below), below, 0);
+            return;
+        }
         if (part < parts - 1) {
             planNextPageNote(pl, l, m, t, margin, end + t.label * 0.5f,
                              part < tableParts ? "more texels" : "the formula, every term");

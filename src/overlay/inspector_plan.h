@@ -148,14 +148,23 @@ struct FittedText {
 };
 
 // Wraps `text` into `width`, stepping the type down from `start` towards `floor` until it fits
-// `height`; what still does not fit is paged.
+// `height`; what still does not fit is paged. markLine: each page keeps its last line for the
+// "more" mark (false: the mark goes elsewhere, MarkPlace).
 FittedText fitText(std::string_view text, FontFace face, float start, float floor, float width,
-                   float height);
+                   float height, bool markLine = true);
+// Where a paged block's "more" mark goes instead of its area's last line: right-aligned in
+// `row`, at `size` (the step header's line in presentation mode).
+struct MarkPlace {
+    Rect row;
+    float size = 0.0f;
+};
+// The "more" mark of page `page`: "more Space/Right (1/3)", the last page's "(3/3)".
+std::string moreMarkText(const FittedText& f, int page, const std::string& moreHint);
 // Draws page `page` of a fitted block at the top-left of `area`, with the "more" mark on the
-// last line of the area when there are more pages. Returns the height used.
+// last line of the area (or at `mark`) when there are more pages. Returns the height used.
 float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, FontFace face,
                   const Colour& colour, const std::string& panel, const std::string& role,
-                  const std::string& moreHint);
+                  const std::string& moreHint, const std::optional<MarkPlace>& mark = std::nullopt);
 
 // ---- inspector_neighbourhood.cpp: the inspector panel's one layout and the cells. ----
 
@@ -330,18 +339,38 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, CellMar
 
 // The read texels (each once, row by row) whose numbers `cells` did not draw whole.
 std::vector<glm::ivec2> texelsWithoutNumbers(const Trace& tr, const FramePlan& cells);
-// The texel table: one row per texel of `texels` with the numbers its cell shows at a size
-// where they fit (bit, own ref, depth, weight) and depth - ref, under a title (wrapped, never
-// cut; it gives the ref when every read compares with the same one, and the ref column goes)
-// and a column header, in the inspector panel from `top` down. texelTablePages: the pages it
-// takes; planTexelTable: page `page` of it (it lists the rows it draws in numberedTexels);
-// returns the y under its last row. noteAfter: pages follow the table's last (the formula's),
-// so its last page too keeps the room for the line that says so.
-int texelTablePages(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
-                    const std::vector<glm::ivec2>& texels, float top, bool noteAfter);
+// The formula as it follows the texel table (it goes on pages after it unless it fits under the
+// table's last lines): its pages on its own (0: it is with the cells, not after the table), and
+// whether it fits whole in the panel from a y down.
+struct FormulaAfter {
+    int pages = 0;
+    std::function<bool(float top)> fitsFrom;
+};
+// How the texel table is paged: in rows (one per texel, with bit, own ref, depth, depth - ref
+// and w) or in grids (each number of every texel laid out as the cells sit, the bits left to
+// the cells), whichever makes fewer parts; the first row or grid of each page; whether the
+// formula goes whole under the last page's lines, and where.
+struct TablePaging {
+    bool grids = false;
+    std::vector<size_t> starts{0};
+    bool formulaBelow = false;
+    float formulaTop = 0.0f;
+    int parts = 1;  // the table's pages, and the formula's after them unless formulaBelow
+    int pages() const { return static_cast<int>(starts.size()); }
+};
+// The texel table: the texels of `texels` with the numbers their cells show at a size where they
+// fit, under a title (wrapped, never cut; it gives the ref when every read compares with the
+// same one, and the ref column or grid goes), in the inspector panel from `top` down.
+// texelTablePaging: how it pages (bitTexels: the texels whose cells show their bit);
+// planTexelTable: page `page` of it (it lists the texels it draws whole in numberedTexels);
+// returns the y under its last line.
+TablePaging texelTablePaging(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
+                             const std::vector<glm::ivec2>& texels,
+                             const std::vector<glm::ivec2>& bitTexels, float top,
+                             const FormulaAfter& formula);
 float planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top, int page,
-                     bool noteAfter);
+                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top,
+                     const TablePaging& paging, int page);
 
 // ---- inspector_subtexel.cpp: the hw8 inset. ----
 
