@@ -21,6 +21,7 @@
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_keys.h"
 #include "lesson/lesson_pick.h"
+#include "lesson/lesson_predict.h"
 #include "render/gl_context.h"
 #include "render/scene_renderer.h"
 
@@ -123,6 +124,15 @@ struct Checker {
         world.flickerCurve = [&]() -> std::variant<std::vector<float>, std::string> {
             return stepFlickerCurves(lesson.sourcePath, static_cast<int>(index), s).main;
         };
+        // A predict step's answer is one of its choices (lesson_predict.h).
+        if (step.predict && key.empty()) {
+            ++checked;
+            FilledPredict filled = fillPredict(*step.predict, trace, ctx);
+            if (auto why = predictChoiceProblem(*step.predict, filled)) {
+                failure(step.predict->line,
+                        "step " + std::to_string(index + 1) + " predict: " + *why);
+            }
+        }
         for (const StepClaim& claim : step.claims) {
             ++checked;
             std::string why;

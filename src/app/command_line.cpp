@@ -53,7 +53,7 @@ int pcf::runCommandLine(int argc, char** argv) {
         pcf::addMethodsCommand(app), pcf::addTraceCommand(app),   pcf::addRenderCommand(app),
         pcf::addTruthCommand(app),   pcf::addBenchCommand(app),   pcf::addStabilityCommand(app),
         pcf::addViewCommand(app),    pcf::addExportCommand(app),  pcf::addVerifyCommand(app),
-        pcf::addLessonCommand(app),  pcf::addAnimateCommand(app),
+        pcf::addLessonCommand(app),  pcf::addAnimateCommand(app), pcf::addExerciseCommand(app),
     };
 
     try {

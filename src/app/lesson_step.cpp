@@ -4,6 +4,7 @@
 
 #include "analysis/chart_facts.h"
 #include "app/animation.h"
+#include "app/predict.h"
 #include "base/input_error.h"
 #include "base/usage_error.h"
 #include "kernel/methods.h"
@@ -22,6 +23,11 @@ Lesson loadLessonChecked(const std::string& path) {
                              which + " focus '" + step.focus + "' is not one of: " + focusNames());
         }
         if (step.animate) stepAnimationOptions(step, path, static_cast<int>(i) + 1);  // checks
+        if (step.predict) {
+            if (auto why = predictStepProblem(*step.predict)) {
+                throw InputError(path, step.predict->line, which + " " + *why);
+            }
+        }
         // A fact about a chart names one its chart's table knows (analysis/chart_facts.h).
         for (const StepClaim& claim : step.claims) {
             // A claim about the frames reads the step's sweep (animation.h: stepFlickerCurves).

@@ -20,6 +20,7 @@
 #include "lesson/lesson.h"
 #include "lesson/lesson_catalogue.h"
 #include "lesson/lesson_pick.h"
+#include "lesson/lesson_predict.h"
 #include "overlay/flicker_trace.h"
 #include "overlay/inspector.h"
 #include "render/gl_objects.h"
@@ -38,7 +39,11 @@ class Session {
 
     // Loads a lesson (throws InputError) and goes to its first step.
     void loadLesson(const std::string& path);
+    // Shows a lesson made in memory (an exercise's items: app/exercise.h), from its first step.
+    void setLesson(Lesson lesson);
     const Lesson& lesson() const { return mLesson; }
+    // The title the frame shows (an exercise's carries its score).
+    void setTitle(std::string title) { mLesson.title = std::move(title); }
 
     // Steps: the step's settings and pixel replace the current ones.
     int step() const { return mStep; }
@@ -95,6 +100,26 @@ class Session {
     void setTextPage(int page) { mTextPage = std::max(0, page); }
     bool nextPage();
     bool previousPage();
+    // A predict step (lesson.h: StepPredict) shows its question until it is revealed: the
+    // numbers its answer needs hidden (app/predict.h), the question in the step panel. goToStep
+    // starts every predict step unrevealed; nextPage() past the question's last page reveals it,
+    // and previousPage() on the answer's first page goes back to the question's last.
+    bool predictStep() const;
+    bool questionShown() const { return predictStep() && !mRevealed; }
+    bool revealed() const { return mRevealed; }
+    void setRevealed(bool on);
+    // What the viewer's keyboard typed as the answer: shown under the question, judged in the
+    // reveal's answer line.
+    const std::string& typed() const { return mTyped; }
+    void setTyped(std::string text) { mTyped = std::move(text); }
+    // The question's hint says how to answer: typing (the viewer) or the next page (frames).
+    void setTypedAnswers(bool on) { mTypedAnswers = on; }
+    // The question filled from the current trace; nullopt on a step without one or off the
+    // receivers.
+    std::optional<FilledPredict> filledPredict() const;
+    // The numbers the frame hides now (none once revealed).
+    HiddenNumbers hiddenNumbers() const;
+
     // The frame time the status line shows; negative: none (exports, screenshots).
     void setFrameTimeMs(double ms);
 
@@ -111,6 +136,8 @@ class Session {
     std::vector<uint8_t> readFrame() const;  // RGBA8, rows top-down
 
     const std::optional<Trace>& trace() const { return mTrace; }
+    // The shadow map the last compose() traced on.
+    const ShadowMap& shadowMap() const { return mMap; }
     // The current step's text with its placeholders filled from the trace.
     std::string stepText() const;
     // The step as JSON: lesson, step, title, text, pixel, settings, the trace object, and the
@@ -198,6 +225,11 @@ class Session {
     glm::vec3 mRenderedShift{0.0f};  // origin shift and snap (1) the map was rendered with
     int mTextPage = 0;
     int mTextPages = 1;
+    bool mRevealed = false;  // a predict step's answer is shown
+    std::string mTyped;      // the answer typed in the viewer
+    bool mTypedAnswers = false;
+    // The step panel's question or answer (session_predict.cpp).
+    void fillPredictPanel(InspectorModel& m) const;
     std::vector<LayoutBox> mBoxes;
     std::vector<glm::ivec2> mDrawnTexels;  // what the last composed frame drew (FramePlan)
     std::vector<int> mDrawnFetches;

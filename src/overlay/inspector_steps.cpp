@@ -39,8 +39,16 @@ Rect planStepHeader(Planner& pl, const InspectorLayout& l, const InspectorModel&
         y += lineHeightOf(t.body);
     }
     // The step list's neighbours of this step, one line at the numbers' size (18 px at
-    // projector sizes): where the lesson came from, left, and where it goes, right.
+    // projector sizes): where the lesson came from, left, and where it goes, right. A revealed
+    // question's answer takes that line when it fits there (the words keep their room).
     float listPx = std::max(t.numberFloor, t.label);
+    if (m.predict.on && m.predict.revealed &&
+        measureText(FontFace::Sans, t.body, m.predict.answer).x <= width) {
+        pl.text({p.x + margin, y}, m.predict.answer, {FontFace::Sans, t.body, ACCENT},
+                BoxKind::Text, panel, "predict-answer");
+        y += lineHeightOf(t.body) + t.body * 0.4f;
+        return {p.x + margin, y, width, p.bottom() - margin * 0.7f - y};
+    }
     int k = m.currentStep;
     std::string prev = k > 0 ? "< " + std::to_string(k) + ". " + m.stepTitles[k - 1] : "";
     std::string next = k + 1 < n ? std::to_string(k + 2) + ". " + m.stepTitles[k + 1] + " >" : "";
@@ -136,6 +144,11 @@ Rect planStepList(Planner& pl, const InspectorLayout& l, const InspectorModel& m
 void planSteps(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t) {
     const std::string panel = "steps";
     Rect text = l.presentation ? planStepHeader(pl, l, m, t) : planStepList(pl, l, m, t);
+    // (A revealed answer the presentation header holds needs no place of its own.)
+    bool answered = l.presentation &&
+                    std::any_of(pl.plan.boxes.begin(), pl.plan.boxes.end(),
+                                [](const LayoutBox& b) { return b.role == "predict-answer"; });
+    if (m.predict.on && !answered) return planPredict(pl, m, t, text);
     FittedText f = fitText(m.stepText, FontFace::Sans, t.body, t.bodyFloor, text.w, text.h);
     pl.plan.textPages = f.pages;
     placeFitted(pl, f, text, m.textPage, FontFace::Sans, TEXT, panel, "step-text", pageKeys(m));

@@ -67,17 +67,20 @@ std::vector<std::string> tableRows(const InspectorModel& m, const std::vector<gl
         // As the cell would show it (cellItems): a soft comparison's fraction for its bit.
         bool soft = tap->lit != 0.0f && tap->lit != 1.0f;
         std::string bit = soft ? fixed(tap->lit, 2) : tap->lit >= 0.5f ? "1" : "0";
+        const HiddenNumbers& hide = m.hidden;
         std::vector<std::string> row;
         if (form.pairTexel) {
             row = {"(" + std::to_string(texel.x) + ", " + std::to_string(texel.y) + ")"};
         } else {
             row = {std::to_string(texel.x), std::to_string(texel.y)};
         }
-        row.push_back(bit);
-        if (form.refColumn) row.push_back(fixed(tap->ref, 4));
-        row.push_back(fixed(tap->depth, 3));
-        if (form.margin) row.push_back(fixed(tap->depth - tap->ref, 4));
-        row.push_back(weightText(tr.weights.at(texel)));
+        row.push_back(hiddenOr(hide.bits, "", bit));
+        if (form.refColumn) row.push_back(hiddenOr(hide.refs, "", fixed(tap->ref, 4)));
+        row.push_back(hiddenOr(hide.depths, "", fixed(tap->depth, hide.bits ? 4 : 3)));
+        // depth - ref: its sign is the bit.
+        bool marginHidden = hide.bits || hide.refs || hide.depths;
+        if (form.margin) row.push_back(hiddenOr(marginHidden, "", fixed(tap->depth - tap->ref, 4)));
+        row.push_back(hiddenOr(hide.weights, "", weightText(tr.weights.at(texel))));
         cells.push_back(std::move(row));
     }
     return alignedRows(cells, form.pairTexel ? 1 : 0);
@@ -120,10 +123,12 @@ TexelTable texelTableOf(const InspectorLayout& l, const InspectorModel& m, const
         }
         if (widest(out.rows, out.size) <= width) break;
     }
-    std::string title = texels.size() == 1 ? "The texel whose cell has no room for its numbers"
-                                           : "The " + std::to_string(texels.size()) +
-                                                 " texels whose cells have no room for their "
-                                                 "numbers, row by row";
+    // (A question on the fetch counts does not count them here either.)
+    std::string title =
+        texels.size() == 1 && !m.hidden.counts
+            ? "The texel whose cell has no room for its numbers"
+            : "The " + (m.hidden.counts ? std::string("") : std::to_string(texels.size()) + " ") +
+                  "texels whose cells have no room for their numbers, row by row";
     // pcss: the texels only its blocker search read weigh 0 (the search counts blockers; the
     // filter's taps weigh the visibility). Without a word their w 0.000 reads as a tap that does
     // not count.
@@ -133,7 +138,7 @@ TexelTable texelTableOf(const InspectorLayout& l, const InspectorModel& m, const
                                   [&](glm::ivec2 x) { return tr.weights.at(x) == 0.0f; });
     if (searchOnly) title += " (`w 0.000`: read by the blocker search only)";
     // (The ref as a code span: monospace like the rows, and never broken across lines.)
-    title += ref ? "; `ref " + fixed(*ref, 4) + "` for all:" : ":";
+    title += ref ? "; `ref " + hiddenOr(m.hidden.refs, "", fixed(*ref, 4)) + "` for all:" : ":";
     out.title = fitText(title, FontFace::Sans, t.label, t.label, width, 1e6f);
     return out;
 }
