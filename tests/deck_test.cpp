@@ -135,8 +135,7 @@ TEST_F(DeckTest, TheHtmlDeckIsSelfContainedASlidePerFrameOfTheFramesPixels) {
     int addresses = 0;
     for (const std::string attr : {"src=\"", "href=\"", "poster=\""}) {
         for (size_t at = 0; (at = html.find(attr, at)) != std::string::npos; ++at, ++addresses) {
-            EXPECT_EQ(html.compare(at + attr.size(), 5, "data:"), 0)
-                << html.substr(at, 60);
+            EXPECT_EQ(html.compare(at + attr.size(), 5, "data:"), 0) << html.substr(at, 60);
         }
     }
     EXPECT_GE(addresses, static_cast<int>(frames.size()));
@@ -186,8 +185,8 @@ TEST_F(DeckTest, ABrowserStepsThroughEverySlideWithTheArrowKeysAndPlaysTheVideo)
     fs::path lesson = mDir / "short.toml";
     std::ofstream(lesson) << SHORT_LESSON;
     fs::path out = mDir / "frames";
-    auto r = runPcfscope("export " + lesson.string() + " --size 640x360 --deck html -o " +
-                         out.string());
+    auto r =
+        runPcfscope("export " + lesson.string() + " --size 640x360 --deck html -o " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     size_t slides = framesOf(out).size();
     ASSERT_GE(slides, 3u);  // the question, its answer, the animation step

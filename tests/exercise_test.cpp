@@ -51,9 +51,9 @@ TEST_F(ExerciseTest, TheSameSeedWritesTheSameFilesAndAnotherOtherItems) {
         ASSERT_TRUE(b.count(name)) << name;
         EXPECT_TRUE(bytes == b[name]) << name << " differs between two runs with seed 7";
     }
-    for (const char* name : {"worksheet/item01.png", "worksheet/item03.png", "answers/item02.png",
-                             "answers/item01-map.exr", "answers/answers.json", "worksheet.pdf",
-                             "answers.pdf"}) {
+    for (const char* name :
+         {"worksheet/item01.png", "worksheet/item03.png", "answers/item02.png",
+          "answers/item01-map.exr", "answers/answers.json", "worksheet.pdf", "answers.pdf"}) {
         EXPECT_TRUE(a.count(name)) << name;
     }
     // The worksheet gives nothing away: frames only, no sidecar with the trace.
@@ -62,8 +62,8 @@ TEST_F(ExerciseTest, TheSameSeedWritesTheSameFilesAndAnotherOtherItems) {
             EXPECT_TRUE(name.ends_with(".png")) << name;
         }
     }
-    auto r = runPcfscope("exercise 5 --count 3 --seed 8 --size 1024x768 -o " +
-                         (mDir / "c").string());
+    auto r =
+        runPcfscope("exercise 5 --count 3 --seed 8 --size 1024x768 -o " + (mDir / "c").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     jsonlite::Value seven = jsonlite::parse(a["answers/answers.json"]);
     jsonlite::Value eight = jsonlite::parse(readAll(mDir / "c/answers/answers.json"));
@@ -118,9 +118,9 @@ TEST_F(ExerciseTest, TheViewersExerciseModeScoresATypedAnswer) {
     testutil::VirtualDisplay x;
     ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
     // N: the exercise; "0.5" typed; Enter judges it and reveals the answer; E writes the frame.
-    auto r = runPcfscope("view 5 --keys \"n 0 . 5 enter e\" --screenshot " +
-                             (mDir / "shot.png").string(),
-                         "cd " + mDir.string() + " && DISPLAY=" + x.display());
+    auto r = runPcfscope(
+        "view 5 --keys \"n 0 . 5 enter e\" --screenshot " + (mDir / "shot.png").string(),
+        "cd " + mDir.string() + " && DISPLAY=" + x.display());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     jsonlite::Value frame = jsonlite::parse(
         readAll(mDir / "pcfscope-frames/05-gather-weights-exercise-step01-reveal.json"));

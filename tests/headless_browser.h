@@ -86,8 +86,8 @@ class HeadlessBrowser {
 
     // The value of a JavaScript expression in the page.
     nlohmann::json evaluate(const std::string& expression) {
-        nlohmann::json r = call("Runtime.evaluate",
-                                {{"expression", expression}, {"returnByValue", true}});
+        nlohmann::json r =
+            call("Runtime.evaluate", {{"expression", expression}, {"returnByValue", true}});
         if (r.contains("exceptionDetails")) throw std::runtime_error(expression + " threw");
         return r["result"].value("value", nlohmann::json());
     }
@@ -121,9 +121,8 @@ class HeadlessBrowser {
             nlohmann::json targets = call("Target.getTargets", nlohmann::json::object(), false);
             for (const auto& t : targets["targetInfos"]) {
                 if (t["type"] != "page") continue;
-                nlohmann::json a =
-                    call("Target.attachToTarget", {{"targetId", t["targetId"]}, {"flatten", true}},
-                         false);
+                nlohmann::json a = call("Target.attachToTarget",
+                                        {{"targetId", t["targetId"]}, {"flatten", true}}, false);
                 mSession = a["sessionId"];
                 return;
             }

@@ -3,6 +3,8 @@
 // built-in lessons, at 1024x768 and 1280x720 in presentation mode and at 1600x900, the question's
 // frames draw none of the numbers the answer needs (no box of a hidden role, no text holding the
 // answer outside the choices) and the answer's frames show it. `export` writes both.
+#include "app/predict.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +17,6 @@
 #include <string>
 #include <vector>
 
-#include "app/predict.h"
 #include "app/session.h"
 #include "base/input_error.h"
 #include "json_lite.h"
@@ -70,12 +71,14 @@ TEST(PredictTable, BadTablesAreRefusedOnTheirLine) {
     EXPECT_NE(parseError("predict = { ask = \"a\", answer = \"{visibility}\" }\n")
                   .find("needs a tolerance"),
               std::string::npos);
-    EXPECT_NE(parseError("predict = { ask = \"a\", answer = \"{visibility}\", choices = [\"1\"] }\n")
-                  .find("choices must be 2 to 6"),
-              std::string::npos);
-    EXPECT_NE(parseError("predict = { ask = \"{nope}\", answer = \"{visibility}\", tolerance = 0 }\n")
-                  .find("ask: unknown placeholder {nope}"),
-              std::string::npos);
+    EXPECT_NE(
+        parseError("predict = { ask = \"a\", answer = \"{visibility}\", choices = [\"1\"] }\n")
+            .find("choices must be 2 to 6"),
+        std::string::npos);
+    EXPECT_NE(
+        parseError("predict = { ask = \"{nope}\", answer = \"{visibility}\", tolerance = 0 }\n")
+            .find("ask: unknown placeholder {nope}"),
+        std::string::npos);
     EXPECT_NE(parseError("predict = { ask = \"a\", answer = \"{method}\", tolerance = 0 }\n")
                   .find("answer {method}"),
               std::string::npos);
@@ -217,8 +220,8 @@ TEST_F(PredictFrames, QuestionsHideTheAnswerAndTheRevealShowsIt) {
             if (!lesson.steps[s].predict) continue;
             ++steps;
             lessons.insert(lesson.name);
-            spotTheBug = spotTheBug || (lesson.name.starts_with("06-") && lesson.steps[s].title ==
-                                                                              "Spot the bug");
+            spotTheBug = spotTheBug || (lesson.name.starts_with("06-") &&
+                                        lesson.steps[s].title == "Spot the bug");
             for (const Frame& fr : frames) {
                 SCOPED_TRACE(lesson.name + " step " + std::to_string(s + 1) + " at " +
                              std::to_string(fr.size.x) + "x" + std::to_string(fr.size.y) +
@@ -248,8 +251,8 @@ TEST_F(PredictFrames, QuestionsHideTheAnswerAndTheRevealShowsIt) {
                         asked = asked || b.role == "predict-ask";
                         if (!isTextual(b.kind) || b.role == "predict-choice") continue;
                         for (const std::string& token : numberTokens(b.text)) {
-                            bool same = token == f->answer ||
-                                        std::abs(std::stod(token) - *f->value) < 1e-9;
+                            bool same =
+                                token == f->answer || std::abs(std::stod(token) - *f->value) < 1e-9;
                             EXPECT_FALSE(same) << b.role << " box shows the answer " << f->answer
                                                << ": \"" << b.text << "\"";
                         }
@@ -272,8 +275,8 @@ TEST_F(PredictFrames, QuestionsHideTheAnswerAndTheRevealShowsIt) {
                         shownRoles.insert(b.role);
                         if (b.role != "predict-answer") continue;
                         std::vector<std::string> tokens = numberTokens(b.text);
-                        answered = answered ||
-                                   std::count(tokens.begin(), tokens.end(), f->answer) > 0;
+                        answered =
+                            answered || std::count(tokens.begin(), tokens.end(), f->answer) > 0;
                     }
                 }
                 EXPECT_TRUE(answered) << "no answer box holds " << f->answer;
@@ -318,8 +321,7 @@ answer = "{visibility}"
 )";
     testutil::CommandResult r = testutil::runPcfscope("lesson check " + (dir / "q.toml").string());
     EXPECT_EQ(r.exitCode, 1) << r.err;
-    EXPECT_NE(r.out.find("q.toml:9: step 1 predict: the answer {visibility} = "),
-              std::string::npos)
+    EXPECT_NE(r.out.find("q.toml:9: step 1 predict: the answer {visibility} = "), std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("is none of the choices"), std::string::npos) << r.out;
     std::filesystem::remove_all(dir);

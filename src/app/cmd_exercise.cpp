@@ -117,9 +117,9 @@ Json itemJson(const Session& session, int k, const ItemFiles& files) {
             {"answer", f.answer},
             {"tolerance", EXERCISE_TOLERANCE},
             {"frames", {{"question", files.questions}, {"answer", files.answers}}},
-            {"point", Json::array({jsonNumber(step.settings.point->x),
-                                   jsonNumber(step.settings.point->y),
-                                   jsonNumber(step.settings.point->z)})},
+            {"point",
+             Json::array({jsonNumber(step.settings.point->x), jsonNumber(step.settings.point->y),
+                          jsonNumber(step.settings.point->z)})},
             {"settings", paramsJson(step.settings, ParamSet::All)},
             {"lookup",
              {{"map", map},
@@ -151,7 +151,8 @@ int runExercise(const ExerciseOptions& o) {
         throw UsageError("--count must be 1.." + std::to_string(MAX_EXERCISE_ITEMS) + ", got " +
                          std::to_string(o.count));
     }
-    fs::path dir = o.outDir.empty() ? fs::path("pcfscope-exercise") / lesson.name : fs::path(o.outDir);
+    fs::path dir =
+        o.outDir.empty() ? fs::path("pcfscope-exercise") / lesson.name : fs::path(o.outDir);
     OutputFiles outputs(o.force);
     outputs.addInput("LESSON", path);
     planExerciseFiles(outputs, dir, o.count);
@@ -170,20 +171,16 @@ int runExercise(const ExerciseOptions& o) {
             writePages(session, dir / "worksheet", itemName(k), outputs, worksheet.frames);
         session.setRevealed(true);
         session.compose();
-        files.answers =
-            writePages(session, dir / "answers", itemName(k), outputs, answers.frames);
+        files.answers = writePages(session, dir / "answers", itemName(k), outputs, answers.frames);
         files.map = "answers/" + itemName(k) + "-map.exr";
         writeDepthImage((dir / files.map).string(), session.shadowMap());
         list.push_back(itemJson(session, k, files));
         std::fprintf(stderr, "exercise: %s (%d/%d)\n", itemName(k).c_str(), k, o.count);
     }
-    Json key = {{"lesson", lesson.name},
-                {"title", items.title},
-                {"seed", o.seed},
-                {"count", o.count},
-                {"frame_size", jsonPair(size)},
-                {"presentation", o.presentation},
-                {"items", list}};
+    Json key = {
+        {"lesson", lesson.name}, {"title", items.title},         {"seed", o.seed},
+        {"count", o.count},      {"frame_size", jsonPair(size)}, {"presentation", o.presentation},
+        {"items", list}};
     writeTextFile((dir / "answers" / "answers.json").string(), jsonDump(key) + "\n");
     // To print: the questions, then the answers with the words and the trace's table.
     writePdfHandout(worksheet, (dir / "worksheet.pdf").string());
@@ -203,7 +200,8 @@ Command addExerciseCommand(CLI::App& app) {
         "questions for a tutorial from a lesson: a worksheet of question frames and an answer key");
     addLessonArgument(sub, o->lesson)->required();
     sub->add_option("--count", o->count, "how many questions (1..32, default 8)");
-    sub->add_option("--seed", o->seed, "which questions: the same seed, the same files (default 1)");
+    sub->add_option("--seed", o->seed,
+                    "which questions: the same seed, the same files (default 1)");
     sub->add_option("-o,--out", o->outDir,
                     "output directory (default pcfscope-exercise/LESSON): worksheet/ and answers/");
     addFrameSizeOption(sub, o->size, "frame size", "default 1600x900");

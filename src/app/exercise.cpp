@@ -36,8 +36,8 @@ std::vector<FilterUse> filtersOf(const Lesson& lesson) {
         bool kernel = methodInfo(s.method).usesKernel;
         bool known = false;
         for (const FilterUse& u : uses) {
-            known = known || (u.settings.method == s.method &&
-                              (!kernel || u.settings.kernel == s.kernel));
+            known = known ||
+                    (u.settings.method == s.method && (!kernel || u.settings.kernel == s.kernel));
         }
         if (known) continue;
         LessonSettings clean = s;
@@ -118,7 +118,8 @@ Lesson makeExercise(const Lesson& lesson, int count, std::uint64_t seed) {
     }
     std::vector<FilterUse> uses = filtersOf(lesson);
     if (uses.empty()) {
-        throw UsageError(lesson.sourcePath + ": every step shows a chart; an exercise needs a scene");
+        throw UsageError(lesson.sourcePath +
+                         ": every step shows a chart; an exercise needs a scene");
     }
     Lesson out;
     out.name = lesson.name + "-exercise";

@@ -28,9 +28,7 @@ const std::vector<AnswerKind>& answerKinds() {
         {{"lit_count", "shadowed_count", "tap[K].lit", "plane_changed", "lookup_shadowed_count"},
          {.bits = true},
          {.visibility = true, .bits = true}},
-        {{"weight[I,J]", "tap[K].weight", "fetch[K].weight"},
-         {.weights = true},
-         {.weights = true}},
+        {{"weight[I,J]", "tap[K].weight", "fetch[K].weight"}, {.weights = true}, {.weights = true}},
         // A fraction: the bilinear weights are its products, so they go with it.
         {{"frac.x", "frac.y", "1-frac.x", "1-frac.y", "in_texel.x", "in_texel.y", "g.x", "g.y",
           "1-g.x", "1-g.y", "tent.s", "tent.t", "frac_hw8.x", "frac_hw8.y", "steps_hw8.x"},

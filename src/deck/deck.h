@@ -35,9 +35,9 @@ struct SlideText {
     std::string answer;  // a reveal's
     int textPage = 1;
     int textPages = 1;
-    std::string summary;                          // "pcf-gather N=3  uv (...)  ref ...  ..."
-    std::vector<std::string> header;              // the table's columns
-    std::vector<std::vector<std::string>> rows;   // one per texel read, in read order
+    std::string summary;                         // "pcf-gather N=3  uv (...)  ref ...  ..."
+    std::vector<std::string> header;             // the table's columns
+    std::vector<std::vector<std::string>> rows;  // one per texel read, in read order
 };
 // Throws std::runtime_error for a sidecar that is not one export writes.
 SlideText slideText(const std::string& json);

@@ -150,7 +150,8 @@ std::string tableHtml(const SlideText& t) {
 std::string notesText(const SlideText& t) {
     std::string notes = "Step " + std::to_string(t.step) + ": " + t.stepTitle;
     if (t.textPages > 1) {
-        notes += " (page " + std::to_string(t.textPage) + " of " + std::to_string(t.textPages) + ")";
+        notes +=
+            " (page " + std::to_string(t.textPage) + " of " + std::to_string(t.textPages) + ")";
     }
     if (t.phase == "question") notes += "\nQuestion (the next slide answers it):";
     if (!t.answer.empty()) notes += "\n" + t.answer;

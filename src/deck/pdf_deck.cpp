@@ -113,8 +113,7 @@ struct Line {
 };
 
 void setFont(cairo_t* cr, const Line& l) {
-    cairo_select_font_face(cr, l.mono ? "DejaVu Sans Mono" : "DejaVu Sans",
-                           CAIRO_FONT_SLANT_NORMAL,
+    cairo_select_font_face(cr, l.mono ? "DejaVu Sans Mono" : "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
                            l.bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, l.pt);
 }
@@ -151,6 +150,8 @@ void wrapInto(cairo_t* cr, const std::string& para, Line style, double width,
     out.push_back(style);
 }
 
+void tableLines(cairo_t* cr, const SlideText& t, double width, std::vector<Line>& out);
+
 // The text under a frame: the step and its words (a question's ask and choices, a reveal's answer
 // first), then the trace's table, its rows in as many columns as the width holds.
 std::vector<Line> frameLines(cairo_t* cr, const SlideText& t, double width) {
@@ -181,6 +182,13 @@ std::vector<Line> frameLines(cairo_t* cr, const SlideText& t, double width) {
     }
     // A question's table is its answer's, with the numbers hidden: the answer's frame prints it.
     if (t.rows.empty() || t.phase == "question") return out;
+    tableLines(cr, t, width, out);
+    return out;
+}
+
+// The trace's table under a frame's words: its summary, then its rows in as many columns as the
+// width holds.
+void tableLines(cairo_t* cr, const SlideText& t, double width, std::vector<Line>& out) {
     out.push_back({"", false, false, BODY_PT});
     wrapInto(cr, t.summary, {"", true, false, TABLE_PT}, width, out);
     // Columns of "texel depth [ref] bit weight" cells, as many side by side as fit; the ref
@@ -217,7 +225,6 @@ std::vector<Line> frameLines(cairo_t* cr, const SlideText& t, double width) {
         }
         out.push_back({line, true, false, TABLE_PT});
     }
-    return out;
 }
 
 double lineHeight(const Line& l) { return l.pt * LEADING; }

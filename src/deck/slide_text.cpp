@@ -67,7 +67,8 @@ SlideText slideText(const std::string& text) {
         // A split view's frame (app/compare_view.h) names its parts instead.
         if (j.contains("compare")) {
             out.stepTitle = "split view, " + j["compare"].get<std::string>();
-            out.words = "The same point with " + j["compare"].get<std::string>() + ", side by side.";
+            out.words =
+                "The same point with " + j["compare"].get<std::string>() + ", side by side.";
             return out;
         }
         out.stepTitle = j["step_title"];

@@ -174,7 +174,10 @@ std::string answerLine(const StepPredict& p, const FilledPredict& f, std::string
     if (t.empty()) return line;
     PredictVerdict v = judgePrediction(p, f, t);
     line += " You said " + t + ": " +
-            (!v.understood ? "not an answer here" : v.right ? "right" : "not this time") + ".";
+            (!v.understood ? "not an answer here"
+             : v.right     ? "right"
+                           : "not this time") +
+            ".";
     return line;
 }
 

@@ -52,7 +52,8 @@ struct PredictVerdict {
     bool understood = false;  // the typed text is a letter, a choice or a number
     bool right = false;
 };
-PredictVerdict judgePrediction(const StepPredict& p, const FilledPredict& f, std::string_view typed);
+PredictVerdict judgePrediction(const StepPredict& p, const FilledPredict& f,
+                               std::string_view typed);
 
 // The line the reveal shows above the step's words: "Answer: B, 0.02." or "Answer: 0.8125
 // (within 0.0625 counts).", then, when something was typed, what it was and whether it is right.

@@ -99,8 +99,7 @@ void planPredict(Planner& pl, const InspectorModel& m, const TypeSizes& t, const
         }
         placeFitted(pl, a, area, 0, FontFace::Sans, ACCENT, panel, "predict-answer", "");
         pl.plan.textPages = f.pages;
-        placeFitted(pl, f, rest, m.textPage, FontFace::Sans, TEXT, panel, "step-text",
-                    pageKeys(m));
+        placeFitted(pl, f, rest, m.textPage, FontFace::Sans, TEXT, panel, "step-text", pageKeys(m));
         return;
     }
     // The question, with its choices right under it, above the foot.
