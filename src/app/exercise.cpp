@@ -20,8 +20,8 @@ namespace {
 // tenth of its edges, where every frame size shows it).
 constexpr int BAND_COLUMNS = 96;
 constexpr int BAND_ROWS = 54;
-constexpr float BAND_VIEW = 0.9f;   // ndc
-constexpr float BAND_EDGE = 0.02f;  // a visibility this near 0 or 1 reads as lit or shadowed
+constexpr float BAND_VIEW = 0.9f;  // ndc
+constexpr float BAND_EDGE = 0.1f;  // a visibility this near 0 or 1 asks little of the class
 
 // A filter the lesson uses (a method with its kernel), with the first step's state that uses it.
 struct FilterUse {
@@ -53,8 +53,8 @@ std::vector<FilterUse> filtersOf(const Lesson& lesson) {
 // not the same on every library; this is, for a given seed).
 size_t drawIndex(std::mt19937_64& rng, size_t n) { return static_cast<size_t>(rng() % n); }
 
-// The points on the ground in view where the filter of `s` gives a visibility strictly between
-// lit and shadowed, each with its visibility, on the map `renderer` renders for `s`.
+// The points on the ground in view where the filter of `s` gives a visibility well between lit
+// and shadowed (BAND_EDGE), on the map `renderer` renders for `s`.
 std::vector<ScenePoint> edgeBand(const Scene& scene, const LessonSettings& s,
                                  SceneRenderer& renderer) {
     Scene lit = scene;

@@ -20,7 +20,7 @@ constexpr int MAX_EXERCISE_ITEMS = 32;  // MAX_LESSON_STEPS
 // same items on the same build and driver. Each item: one of the lesson's steps' states (not a
 // chart step's), with a method the lesson uses and, for a method with a kernel, a kernel size the
 // lesson uses with it (3 when none), and a point on the ground where that filter's visibility
-// lies strictly between 0 and 1 (the edge band). Renders the shadow maps: needs a current
+// lies between 0.1 and 0.9 (the edge band). Renders the shadow maps: needs a current
 // OpenGL 4.5 context. Throws UsageError when the lesson has no step with a scene, or a method
 // finds no edge in view.
 Lesson makeExercise(const Lesson& lesson, int count, std::uint64_t seed);
