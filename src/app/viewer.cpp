@@ -61,12 +61,13 @@ class Viewer {
 
     void press(KeyPress k) {
         bool shift = (k.mods & GLFW_MOD_SHIFT) != 0;
-        if (mSplit.press(mSession, k.key)) return;
-        // A question's typed answer, R and the exercise mode (viewer_answer.h).
+        // A question's typed answer (its choices' letters before C's split view), R and the
+        // exercise mode (viewer_answer.h).
         if (mAnswers.press(mSession, k)) {
             mSplit.follow(mSession);
             return;
         }
+        if (mSplit.press(mSession, k.key)) return;
         // An animation step's own keys (step_player.h) first; around the others the player
         // puts the step's state back and shows its frame on the new one.
         if (mPlayer.press(k)) return;
