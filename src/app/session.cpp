@@ -262,9 +262,9 @@ bool Session::nextPage() {
 bool Session::previousPage() {
     if (mTextPage <= 0) {
         if (!predictStep() || !mRevealed) return false;
-        // Back to the question's last page (compose clamps it to the pages there are).
+        // Back to the question's last page.
         mRevealed = false;
-        mTextPage = MAX_LESSON_STEPS * 4;
+        mTextPage = LAST_TEXT_PAGE;
         return true;
     }
     --mTextPage;

@@ -31,6 +31,8 @@ namespace pcf {
 
 // The smallest frame the scene view and the inspector fit into side by side.
 constexpr glm::ivec2 MIN_SESSION_SIZE{320, 180};
+// A text page past any step's last: compose() shows the last page there is.
+constexpr int LAST_TEXT_PAGE = 1 << 20;
 
 class Session {
   public:
