@@ -24,6 +24,7 @@
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_keys.h"
 #include "lesson/lesson_pick.h"
+#include "lesson/lesson_predict.h"
 #include "lesson/lesson_words.h"
 #include "render/gl_context.h"
 #include "render/scene_renderer.h"
@@ -133,6 +134,15 @@ struct Checker {
             for (const WordProblem& p : typedWordProblems(step.text, trace, ctx)) {
                 failure(stepTextLine(step, p.offset),
                         "step " + std::to_string(index + 1) + " text: " + p.problem);
+            }
+        }
+        // A predict step's answer is one of its choices (lesson_predict.h).
+        if (step.predict && key.empty()) {
+            ++checked;
+            FilledPredict filled = fillPredict(*step.predict, trace, ctx);
+            if (auto why = predictChoiceProblem(*step.predict, filled)) {
+                failure(step.predict->line,
+                        "step " + std::to_string(index + 1) + " predict: " + *why);
             }
         }
         for (const StepClaim& claim : step.claims) {

@@ -5,6 +5,7 @@
 
 #include "analysis/chart_facts.h"
 #include "app/animation.h"
+#include "app/predict.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/usage_error.h"
@@ -31,6 +32,9 @@ void checkStep(const LessonStep& step, const std::string& path, int number,
         } catch (const InputError& e) {
             problems.push_back(e);
         }
+    }
+    if (step.predict) {
+        if (auto why = predictStepProblem(*step.predict)) problem(step.predict->line, " " + *why);
     }
     // A fact about a chart names one its chart's table knows (analysis/chart_facts.h).
     for (const StepClaim& claim : step.claims) {

@@ -20,6 +20,7 @@
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_keys.h"
 #include "lesson/lesson_pick.h"
+#include "lesson/lesson_predict.h"
 #include "lesson/lesson_text.h"
 #include "lesson/lesson_text_lines.h"
 #include "scene/presets.h"
@@ -117,7 +118,7 @@ class LessonParser {
             std::string what = "step " + std::to_string(i + 1);
             checkKeys(table, what,
                       {"title", "text", "chart", "chart_highlight", "highlight", "claims", "keys",
-                       "focus", "animate", "compare"});
+                       "focus", "animate", "compare", "predict"});
             applySettings(table, what, state, lines);
             lesson.steps.push_back(readStep(table, what, state, lines));
             // The step's own focus, else the lesson's (checked by the app: overlay/inspector.h).
@@ -195,7 +196,50 @@ class LessonParser {
                 mLines, lineOf(node), static_cast<int>(node.source().begin.column), step.text);
             checkText(what, step);
         }
+        attempt([&] { readPredict(table, what, step); });
         return step;
+    }
+
+    // predict = { ask = "...", choices = [...], answer = "{...}", tolerance = T } (StepPredict):
+    // its texts' placeholders checked as the step's text's are (lesson_predict.h).
+    void readPredict(const toml::table& table, const std::string& what, LessonStep& step) const {
+        const toml::node* node = table.get("predict");
+        if (!node) return;
+        const toml::table* p = node->as_table();
+        std::string where = what + " predict";
+        if (!p) fail(*node, where + " must be a table ({ ask = \"...\", answer = \"{...}\" })");
+        for (auto&& [key, value] : *p) {
+            std::string_view k = key.str();
+            if (k == "ask" || k == "choices" || k == "answer" || k == "tolerance") continue;
+            fail(value, where + " has unknown key '" + std::string(k) +
+                            "' (known: ask, choices, answer, tolerance)");
+        }
+        StepPredict predict;
+        predict.line = lineOf(*node);
+        predict.ask = requireText(*p, "ask", where, *p);
+        predict.answer = requireText(*p, "answer", where, *p);
+        if (const toml::node* c = p->get("choices")) {
+            const toml::array* array = c->as_array();
+            if (!array) fail(*c, where + " choices must be an array of strings");
+            for (const toml::node& e : *array) {
+                const auto* v = e.as_string();
+                if (!v) fail(e, where + " choices must be strings, got " + typeName(e));
+                predict.choices.push_back(v->get());
+            }
+        }
+        if (const toml::node* t = p->get("tolerance")) {
+            predict.tolerance = number(*t, where + " tolerance");
+        }
+        ShadowMap probe(16, 16, 1.0f);
+        Trace trace = traceLookup(
+            probe, vec2(0.5f), 0.5f, 0.5f,
+            makeParams(step.settings.method, step.settings.kernel, step.settings.radius));
+        if (auto problem = predictProblem(
+                predict, p->get("tolerance") != nullptr, static_cast<int>(trace.taps.size()),
+                static_cast<int>(trace.fetches.size()), step.compare.parts())) {
+            fail(*node, where + ": " + *problem);
+        }
+        step.predict = std::move(predict);
     }
 
     // chart, chart_highlight and highlight: what the step shows besides (or instead of) the

@@ -12,6 +12,7 @@ struct Item {
     std::string text;
     float size;
     std::string role;
+    bool hidden = false;  // drawn as "?" (HiddenNumbers), its box's role "masked"
 };
 using Placed = std::vector<std::pair<Rect, const Item*>>;
 
@@ -19,23 +20,31 @@ using Placed = std::vector<std::pair<Rect, const Item*>>;
 std::vector<Item> cellItems(const InspectorModel& m, const Grid& g, glm::ivec2 texel,
                             const TapRecord* tap, bool inMap) {
     const Trace& tr = *m.trace;
+    const HiddenNumbers& hide = m.hidden;
     std::vector<Item> all;
     // The bit; a soft comparison's fraction (bias soft) in its place.
     bool soft = tap && tap->lit != 0.0f && tap->lit != 1.0f;
     if (tap) {
-        all.push_back({soft               ? fixed(tap->lit, 2)
-                       : tap->lit >= 0.5f ? "1"
-                                          : "0",
-                       g.bit, "cell-bit"});
+        std::string bit = soft ? fixed(tap->lit, 2) : tap->lit >= 0.5f ? "1" : "0";
+        all.push_back({hiddenOr(hide.bits, "", bit), g.bit, "cell-bit", hide.bits});
     }
     // The tap's own ref where the bias gave it one (receiver plane), under its bit.
     bool ownRef = tap && tap->ref != tr.ref;
-    if (ownRef) all.push_back({"r " + fixed(tap->ref, 4), g.number, "cell-ref"});
+    if (ownRef) {
+        all.push_back(
+            {hiddenOr(hide.refs, "r ", fixed(tap->ref, 4)), g.number, "cell-ref", hide.refs});
+    }
     if (inMap) {
         float depth = m.map ? m.map->depth(texel.x, texel.y) : (tap ? tap->depth : 0.0f);
-        all.push_back({"d " + fixed(depth, 3), g.number, "cell-depth"});
+        // Bits hidden: the depth to ref's four decimals, so that the comparison can be made.
+        int decimals = hide.bits ? 4 : 3;
+        all.push_back({hiddenOr(hide.depths, "d ", fixed(depth, decimals)), g.number, "cell-depth",
+                       hide.depths});
     }
-    if (tap) all.push_back({"w " + weightText(tr.weights.at(texel)), g.number, "cell-weight"});
+    if (tap) {
+        all.push_back({hiddenOr(hide.weights, "w ", weightText(tr.weights.at(texel))), g.number,
+                       "cell-weight", hide.weights});
+    }
     return all;
 }
 
@@ -306,11 +315,11 @@ bool planCell(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm
     bool bit = std::any_of(done.begin(), done.end(),
                            [](const auto& d) { return d.second->role == "cell-bit"; });
     if (tap && bit) pl.plan.bitTexels.push_back(texel);
-    Colour ink = tap && tap->lit >= 0.5f ? DARK_TEXT : TEXT;
+    Colour ink = tap && tap->lit >= 0.5f && !m.hidden.bits ? DARK_TEXT : TEXT;
     for (const auto& [box, it] : done) {
         pl.text({box.x + box.w * 0.5f, box.y}, it->text,
                 {FontFace::Mono, it->size, ink, TextAlign::Center}, BoxKind::Number, "inspector",
-                it->role);
+                it->hidden ? "masked" : it->role);
     }
     // numberCandidates always ends with the empty block, so a cell none fits shows nothing.
     return done.empty() && !all.empty();

@@ -10,6 +10,36 @@ namespace pcf::inspector_detail {
 // The header's title line and the counts under it are this far apart.
 constexpr float HEADER_GAP_PX = 4.0f;
 
+namespace {
+
+// The header's counts: fetch counts, then uv, ref and bias; each hidden number a "?" (a count
+// hidden keeps the plural, which would give a 1 away).
+std::string countsText(const Trace& tr, const HiddenNumbers& hidden) {
+    auto plural = [&](int n, const char* one, const char* many) {
+        if (hidden.counts) return std::string(HIDDEN_NUMBER) + " " + many;
+        return std::to_string(n) + " " + (n == 1 ? one : many);
+    };
+    std::string counts = plural(tr.counts.texels, "texel read", "texel reads");
+    if (tr.counts.gathers) counts += ", " + plural(tr.counts.gathers, "gather", "gathers");
+    if (tr.counts.hwTaps)
+        counts += ", " + plural(tr.counts.hwTaps, "hardware tap", "hardware taps");
+    counts += "\nuv (" + fixed(tr.uv.x, 4) + ", " + fixed(tr.uv.y, 4) + ")  ref " +
+              (hidden.refs ? std::string(HIDDEN_NUMBER) : fixed(tr.ref, 4)) + "  bias " +
+              std::string(biasName(tr.bias.modeId()));
+    return counts;
+}
+
+// The counts on one line when it holds them, else wrapped (and each line wrapped again).
+std::vector<std::string> countsLines(const std::string& counts, const TypeSizes& t, float width) {
+    std::string oneLine = counts;
+    std::replace(oneLine.begin(), oneLine.end(), '\n', ' ');
+    oneLine.insert(oneLine.find(" uv ("), "  ");
+    if (measureText(FontFace::Mono, t.number, oneLine).x <= width) return {oneLine};
+    return wrapText(FontFace::Mono, t.number, counts, width);
+}
+
+}  // namespace
+
 Header headerOf(const Trace& tr, const TypeSizes& t, float width) {
     Header h;
     const MethodInfo& info = methodInfo(tr.params.method);
@@ -20,24 +50,7 @@ Header headerOf(const Trace& tr, const TypeSizes& t, float width) {
     float tw = measureText(FontFace::Mono, t.head, h.title).x;
     float rw = measureText(FontFace::Mono, t.head, h.result).x;
     h.resultOnOwnLine = tw + rw + t.head > width;
-    auto plural = [](int n, const char* one, const char* many) {
-        return std::to_string(n) + " " + (n == 1 ? one : many);
-    };
-    std::string counts = plural(tr.counts.texels, "texel read", "texel reads");
-    if (tr.counts.gathers) counts += ", " + plural(tr.counts.gathers, "gather", "gathers");
-    if (tr.counts.hwTaps)
-        counts += ", " + plural(tr.counts.hwTaps, "hardware tap", "hardware taps");
-    counts += "\nuv (" + fixed(tr.uv.x, 4) + ", " + fixed(tr.uv.y, 4) + ")  ref " +
-              fixed(tr.ref, 4) + "  bias " + std::string(biasName(tr.bias.modeId()));
-    // Two lines when one does not hold them, and each wraps again if need be.
-    std::string oneLine = counts;
-    std::replace(oneLine.begin(), oneLine.end(), '\n', ' ');
-    oneLine.insert(oneLine.find(" uv ("), "  ");
-    if (measureText(FontFace::Mono, t.number, oneLine).x <= width) {
-        h.counts = {oneLine};
-    } else {
-        h.counts = wrapText(FontFace::Mono, t.number, counts, width);
-    }
+    h.counts = countsLines(countsText(tr, {}), t, width);
     float headLh = lineHeightOf(t.head);
     h.height = headLh * (h.resultOnOwnLine ? 2.0f : 1.0f) + HEADER_GAP_PX +
                lineHeightOf(t.number) * static_cast<float>(h.counts.size());
@@ -50,7 +63,9 @@ float inspectorMargin(const InspectorLayout& l) {
 
 namespace {
 
-std::string formulaText(const Trace& tr) {
+std::string formulaText(const Trace& tr, const HiddenNumbers& hidden) {
+    // Every number of the lookup is in it: a question shows none of it.
+    if (hidden.any()) return "(the formula is hidden until the answer is revealed)";
     std::string out;
     std::vector<TraceStep> steps = explainTrace(tr);
     for (size_t k = 0; k < steps.size(); ++k) {
@@ -64,23 +79,32 @@ std::string formulaText(const Trace& tr) {
     return out;
 }
 
+// The header as headerOf measured it, with the numbers `hidden` drawn as "?" (the room is the
+// one the numbers take, so a question's cells sit where its answer's do).
 void planHeader(Planner& pl, const InspectorLayout& l, const Header& h, const TypeSizes& t,
-                float margin) {
+                float margin, const Trace& tr, const HiddenNumbers& hidden) {
     const Rect& p = l.inspector;
     const std::string panel = "inspector";
     float y = p.y + margin;
     pl.text({p.x + margin, y}, h.title, {FontFace::Mono, t.head, ACCENT}, BoxKind::Text, panel,
             "method");
+    std::string result =
+        hidden.visibility ? "visibility = " + std::string(HIDDEN_NUMBER) : h.result;
+    std::string role = hidden.visibility ? "masked" : "visibility";
     if (h.resultOnOwnLine) {
         y += lineHeightOf(t.head);
-        pl.text({p.x + margin, y}, h.result, {FontFace::Mono, t.head, TEXT}, BoxKind::Number, panel,
-                "visibility");
+        pl.text({p.x + margin, y}, result, {FontFace::Mono, t.head, TEXT}, BoxKind::Number, panel,
+                role);
     } else {
-        pl.text({p.right() - margin, y}, h.result, {FontFace::Mono, t.head, TEXT, TextAlign::Right},
-                BoxKind::Number, panel, "visibility");
+        pl.text({p.right() - margin, y}, result, {FontFace::Mono, t.head, TEXT, TextAlign::Right},
+                BoxKind::Number, panel, role);
     }
     y += lineHeightOf(t.head) + HEADER_GAP_PX;
-    for (const std::string& c : h.counts) {
+    std::vector<std::string> counts = h.counts;
+    if (hidden.counts || hidden.refs) {
+        counts = countsLines(countsText(tr, hidden), t, p.w - 2 * margin);
+    }
+    for (const std::string& c : counts) {
         pl.text({p.x + margin, y}, c, {FontFace::Mono, t.number, TEXT_DIM}, BoxKind::Number, panel,
                 "counts");
         y += lineHeightOf(t.number);
@@ -120,6 +144,8 @@ struct LegendEntry {
 std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeeds& need) {
     std::vector<LegendEntry> entries{{LIT_COLOUR, "lit: ref <= depth", SQUARE},
                                      {SHADOWED_COLOUR, "shadowed", SQUARE}};
+    // A question on the bits: the cells say nothing of them until the reveal.
+    if (m.hidden.bits) entries = {{HIDDEN_BIT, "bit hidden (lit: ref <= depth)", SQUARE}};
     if (need.padding) entries.push_back({PADDING, "not read", SQUARE});
     if (need.clamped) entries.push_back({CLAMPED, "read clamped to the edge", OUTLINE});
     if (need.weightBar) entries.push_back({WEIGHT_BAR, "weight bar", BAR});
@@ -214,13 +240,16 @@ float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
 
 // The formula with its numbers, from the kernel's own explanation, fitted into `box` at the
 // numbers' size down to their floor; `page` of it when it pages.
-FittedText fitFormula(const Trace& tr, const TypeSizes& t, const Rect& box) {
-    return fitText(formulaText(tr), FontFace::Mono, t.number, t.numberFloor, box.w, box.h);
+FittedText fitFormula(const InspectorModel& m, const TypeSizes& t, const Rect& box) {
+    return fitText(formulaText(*m.trace, m.hidden), FontFace::Mono, t.number, t.numberFloor, box.w,
+                   box.h);
 }
 
-void placeFormula(Planner& pl, const FittedText& f, const Rect& box, int page) {
-    placeFitted(pl, f, box, page, FontFace::Mono, TEXT, "inspector", "formula", "");
-    pl.plan.formulaWhole = f.pages == 1;
+void placeFormula(Planner& pl, const InspectorModel& m, const FittedText& f, const Rect& box,
+                  int page) {
+    placeFitted(pl, f, box, page, FontFace::Mono, m.hidden.any() ? TEXT_DIM : TEXT, "inspector",
+                m.hidden.any() ? "masked" : "formula", "");
+    pl.plan.formulaWhole = f.pages == 1 && !m.hidden.any();
 }
 
 // A line at the panel's bottom saying where the rest of the inspector is (the next page).
@@ -275,14 +304,15 @@ void planCellsPart(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     if (table) under.h -= t.label * 0.5f + lineHeightOf(t.label);
     float noteY = panel.cellsBottom;
     if (panel.together) {
-        placeFormula(pl, fitFormula(*m.trace, t, under), under, 0);
+        placeFormula(pl, m, fitFormula(m, t, under), under, 0);
         noteY = pl.plan.boxes.back().rect.bottom() + t.label * 0.5f;
     }
-    // Where the rest is; under a formula only where there is room left for the line.
+    // Where the rest is; under a formula only where there is room left for the line (a
+    // question's hidden formula has no page of its own).
     bool room = noteY + lineHeightOf(t.label) <= p.bottom() - margin;
     if (table && room) {
         planNextPageNote(pl, l, m, t, margin, noteY, "every texel's numbers");
-    } else if (!panel.together) {
+    } else if (!panel.together && !m.hidden.any()) {
         planNextPageNote(pl, l, m, t, margin, noteY, "the formula, every term");
     }
 }
@@ -295,12 +325,11 @@ TablePaging tablePaging(const InspectorLayout& l, const InspectorModel& m, const
     const Rect& p = l.inspector;
     float margin = inspectorMargin(l);
     FormulaAfter after;
-    if (!panel.together) {
+    if (!panel.together && !m.hidden.any()) {
         after.pages = formulaPages;
         after.fitsFrom = [&](float y) {
             Rect below{p.x + margin, y, p.w - 2 * margin, p.bottom() - margin - y};
-            return below.h >= lineHeightOf(t.numberFloor) &&
-                   fitFormula(*m.trace, t, below).pages == 1;
+            return below.h >= lineHeightOf(t.numberFloor) && fitFormula(m, t, below).pages == 1;
         };
     }
     return texelTablePaging(l, m, t, panel.tableTexels, panel.cells.bitTexels, top, after);
@@ -319,18 +348,21 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     const Trace& tr = *m.trace;
     InspectorPanel panel = inspectorPanel(l, m, t, pl.onTop, pl.plan.footprintShown);
     const PanelLayout& layout = panel.layout;
-    planHeader(pl, l, layout.header, t, margin);
+    planHeader(pl, l, layout.header, t, margin, tr, m.hidden);
     float width = p.w - 2 * margin;
     float formulaTop = p.y + margin + layout.header.height + t.label * 0.5f;
     Rect alone{p.x + margin, formulaTop, width, p.bottom() - margin - formulaTop};
-    FittedText formulaAlone = fitFormula(tr, t, alone);
+    FittedText formulaAlone = fitFormula(m, t, alone);
     // The parts: the cells (with the formula when it fits under them), the texel table's pages
     // when some cells could not hold their numbers (the formula under its last lines when it
     // fits there whole), the formula's pages when it did not fit.
     const std::vector<glm::ivec2>& table = panel.tableTexels;
     TablePaging paging = tablePaging(l, m, t, panel, formulaTop, formulaAlone.pages);
     int tableParts = table.empty() ? 0 : paging.pages();
-    int formulaParts = panel.together || paging.formulaBelow ? 0 : formulaAlone.pages;
+    // A question's formula is hidden (app/predict.h): no page of its own for the line saying so.
+    bool formulaHidden = m.hidden.any();
+    int formulaParts =
+        panel.together || paging.formulaBelow || formulaHidden ? 0 : formulaAlone.pages;
     int parts = 1 + tableParts + formulaParts;
     pl.plan.textPages = std::max(pl.plan.textPages, parts);
     pl.plan.inspectorParts = parts;
@@ -341,7 +373,7 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
         if (part == tableParts && paging.formulaBelow) {
             Rect below{p.x + margin, paging.formulaTop, width,
                        p.bottom() - margin - paging.formulaTop};
-            placeFormula(pl, fitFormula(tr, t, below), below, 0);
+            placeFormula(pl, m, fitFormula(m, t, below), below, 0);
             return;
         }
         if (part < parts - 1) {
@@ -351,7 +383,7 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
         return;
     }
     int formulaPage = part - tableParts - 1;
-    placeFormula(pl, formulaAlone, alone, formulaPage);
+    placeFormula(pl, m, formulaAlone, alone, formulaPage);
     if (formulaPage < formulaAlone.pages - 1) {
         float end = pl.plan.boxes.back().rect.bottom() + t.label * 0.5f;
         planNextPageNote(pl, l, m, t, margin, end, "the rest of the formula");
@@ -388,7 +420,7 @@ InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m,
         if (!texelsWithoutNumbers(tr, out.cells).empty()) {
             under.h -= t.label * 0.5f + lineHeightOf(t.label);
         }
-        return under.h >= lineHeightOf(t.numberFloor) && fitFormula(tr, t, under).pages == 1;
+        return under.h >= lineHeightOf(t.numberFloor) && fitFormula(m, t, under).pages == 1;
     };
     auto finish = [&]() {
         out.tableTexels = texelsWithoutNumbers(tr, out.cells);
@@ -406,7 +438,7 @@ InspectorPanel inspectorPanel(const InspectorLayout& l, const InspectorModel& m,
     if (out.together) return finish();
     // Cells a little smaller, the formula's own height kept under them, as long as every cell
     // keeps its numbers (a 2 x 2 has room to spare).
-    FittedText whole = fitFormula(tr, t, {0, 0, width, 1e6f});
+    FittedText whole = fitFormula(m, t, {0, 0, width, 1e6f});
     float formulaH = static_cast<float>(whole.lines.size()) * whole.lineHeight;
     planCellsPage(panelLayout(l, tr, t, m.highlightFetch, formulaH + legendH));
     out.together = hidden == 0 && formulaFits();

@@ -42,7 +42,8 @@ constexpr Colour STATUS{0.03f, 0.03f, 0.04f, 1.0f};
 constexpr Colour WEIGHT_BAR{0.95f, 0.35f, 0.25f, 0.9f};
 constexpr Colour HIGHLIGHT{1.0f, 0.62f, 0.10f, 1.0f};
 constexpr Colour FOOTPRINT_TINT{0.2f, 0.85f, 1.0f, 0.18f};
-constexpr Colour SEARCH{0.80f, 0.58f, 1.0f, 1.0f};  // pcss: the blocker search's taps and disk
+constexpr Colour SEARCH{0.80f, 0.58f, 1.0f, 1.0f};       // pcss: the blocker search's taps and disk
+constexpr Colour HIDDEN_BIT{0.42f, 0.36f, 0.52f, 1.0f};  // a cell whose bit a question hides
 
 // A texel narrower than this on screen makes the grid's lines a moire that reads as acne: the
 // grid is hidden then (the footprint tint stays).
@@ -393,6 +394,13 @@ void planThumbnail(Planner& pl, const InspectorLayout& l, const InspectorModel& 
                    const TypeSizes& t);
 void planStatus(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t);
 void planHelp(Planner& pl, const InspectorLayout& l, const TypeSizes& t);
+// inspector_predict.cpp: the step panel's text area `area` for a question (m.predict): the
+// question with its choices and what was typed, or, revealed, the answer above the step's words.
+void planPredict(Planner& pl, const InspectorModel& m, const TypeSizes& t, const Rect& area);
+// A number the frame hides (HiddenNumbers): "?" after its prefix ("w ?").
+inline std::string hiddenOr(bool hidden, const std::string& prefix, const std::string& shown) {
+    return prefix + (hidden ? std::string(HIDDEN_NUMBER) : shown);
+}
 
 // The step panel's margin and the top of what sits under the lesson title (the step text and
 // the thumbnail): one definition for inspectorLayout and planSteps.

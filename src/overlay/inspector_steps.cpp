@@ -23,6 +23,9 @@ struct StepHeader {
     float y = 0.0f;       // the title's top
     float listY = -1.0f;  // the neighbours' line (< 0: a lesson of one step has none)
     float listPx = 0.0f;
+    // A revealed question's answer (app/predict.h) takes the neighbours' line where it fits
+    // there (the words keep their room).
+    bool answer = false;
     Rect text;  // what is left for the step's text
 };
 
@@ -45,7 +48,11 @@ StepHeader stepHeaderOf(const InspectorLayout& l, const InspectorModel& m, const
     }
     float y = h.y + static_cast<float>(h.title.size()) * lineHeightOf(t.body);
     h.listPx = std::max(t.numberFloor, t.label);
-    if (n > 1) {
+    h.answer = m.predict.on && m.predict.revealed &&
+               measureText(FontFace::Sans, t.body, m.predict.answer).x <= width;
+    if (h.answer) {
+        y += lineHeightOf(t.body);
+    } else if (n > 1) {
         h.listY = y;
         y += lineHeightOf(h.listPx);
     }
@@ -68,6 +75,11 @@ void planStepHeader(Planner& pl, const InspectorLayout& l, const InspectorModel&
         pl.text({p.x + margin, y}, line, {FontFace::Sans, t.body, ACCENT}, BoxKind::Text, panel,
                 "step-title", h.cut);
         y += lineHeightOf(t.body);
+    }
+    if (h.answer) {
+        pl.text({p.x + margin, y}, m.predict.answer, {FontFace::Sans, t.body, ACCENT},
+                BoxKind::Text, panel, "predict-answer");
+        return;
     }
     if (h.listY < 0.0f) return;
     int n = static_cast<int>(m.stepTitles.size());
@@ -168,12 +180,24 @@ void planSteps(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     const std::string panel = "steps";
     if (!l.presentation) {
         Rect text = planStepList(pl, l, m, t);
+        if (m.predict.on) {
+            planPredict(pl, m, t, text);
+            pl.plan.stepTextPages = pl.plan.textPages;
+            return;
+        }
         FittedText f = fitText(m.stepText, FontFace::Sans, t.body, t.bodyFloor, text.w, text.h);
         pl.plan.textPages = pl.plan.stepTextPages = f.pages;
         placeFitted(pl, f, text, m.textPage, FontFace::Sans, TEXT, panel, "step-text", pageKeys(m));
         return;
     }
     StepHeader h = stepHeaderOf(l, m, t);
+    // A question, or an answer the header could not hold, in the text's room (app/predict.h).
+    if (m.predict.on && !h.answer) {
+        planStepHeader(pl, l, m, t, h, 0.0f, true);
+        planPredict(pl, m, t, h.text);
+        pl.plan.stepTextPages = pl.plan.textPages;
+        return;
+    }
     bool headerMark = h.listY >= 0.0f;
     FittedText f =
         fitText(m.stepText, FontFace::Sans, t.body, t.bodyFloor, h.text.w, h.text.h, !headerMark);

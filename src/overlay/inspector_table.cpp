@@ -69,17 +69,20 @@ std::vector<std::string> tableRows(const InspectorModel& m, const std::vector<gl
         // As the cell would show it (cellItems): a soft comparison's fraction for its bit.
         bool soft = tap->lit != 0.0f && tap->lit != 1.0f;
         std::string bit = soft ? fixed(tap->lit, 2) : tap->lit >= 0.5f ? "1" : "0";
+        const HiddenNumbers& hide = m.hidden;
         std::vector<std::string> row;
         if (form.pairTexel) {
             row = {"(" + std::to_string(texel.x) + ", " + std::to_string(texel.y) + ")"};
         } else {
             row = {std::to_string(texel.x), std::to_string(texel.y)};
         }
-        row.push_back(bit);
-        if (form.refColumn) row.push_back(fixed(tap->ref, 4));
-        row.push_back(fixed(tap->depth, 3));
-        if (form.margin) row.push_back(fixed(tap->depth - tap->ref, 4));
-        row.push_back(weightText(tr.weights.at(texel)));
+        row.push_back(hiddenOr(hide.bits, "", bit));
+        if (form.refColumn) row.push_back(hiddenOr(hide.refs, "", fixed(tap->ref, 4)));
+        row.push_back(hiddenOr(hide.depths, "", fixed(tap->depth, hide.bits ? 4 : 3)));
+        // depth - ref: its sign is the bit.
+        bool marginHidden = hide.bits || hide.refs || hide.depths;
+        if (form.margin) row.push_back(hiddenOr(marginHidden, "", fixed(tap->depth - tap->ref, 4)));
+        row.push_back(hiddenOr(hide.weights, "", weightText(tr.weights.at(texel))));
         cells.push_back(std::move(row));
     }
     return alignedRows(cells, form.pairTexel ? 1 : 0);
@@ -98,7 +101,7 @@ std::optional<float> commonRef(const Trace& tr) {
 // column i across), its name in the corner: ref (where the reads compare with refs of their
 // own), depth, d - ref (where it fits the width) and w. A 7x7 tent's 64 texels take two grids
 // of nine lines instead of 64 rows. Empty when the texels do not fill their bounding box.
-std::vector<std::vector<std::string>> texelGrids(const Trace& tr,
+std::vector<std::vector<std::string>> texelGrids(const Trace& tr, const HiddenNumbers& hide,
                                                  const std::vector<glm::ivec2>& texels,
                                                  bool refGrid, bool marginGrid) {
     glm::ivec2 lo(INT32_MAX), hi(INT32_MIN);
@@ -110,16 +113,23 @@ std::vector<std::vector<std::string>> texelGrids(const Trace& tr,
         std::function<std::string(const TapRecord&, glm::ivec2)> text;
     };
     std::vector<Quantity> quantities;
+    // A question's hidden numbers (app/predict.h) as "?", as the rows form draws them; with the
+    // bits hidden the depths keep a fourth decimal, and depth - ref (its sign is the bit) goes.
+    bool marginHidden = hide.bits || hide.refs || hide.depths;
     if (refGrid)
-        quantities.push_back(
-            {"ref", [](const TapRecord& t, glm::ivec2) { return fixed(t.ref, 4); }});
-    quantities.push_back(
-        {"depth", [](const TapRecord& t, glm::ivec2) { return fixed(t.depth, 3); }});
+        quantities.push_back({"ref", [&](const TapRecord& t, glm::ivec2) {
+                                  return hiddenOr(hide.refs, "", fixed(t.ref, 4));
+                              }});
+    quantities.push_back({"depth", [&](const TapRecord& t, glm::ivec2) {
+                              return hiddenOr(hide.depths, "", fixed(t.depth, hide.bits ? 4 : 3));
+                          }});
     if (marginGrid)
-        quantities.push_back(
-            {"d - ref", [](const TapRecord& t, glm::ivec2) { return fixed(t.depth - t.ref, 4); }});
-    quantities.push_back(
-        {"w", [&tr](const TapRecord&, glm::ivec2 x) { return weightText(tr.weights.at(x)); }});
+        quantities.push_back({"d - ref", [&](const TapRecord& t, glm::ivec2) {
+                                  return hiddenOr(marginHidden, "", fixed(t.depth - t.ref, 4));
+                              }});
+    quantities.push_back({"w", [&](const TapRecord&, glm::ivec2 x) {
+                              return hiddenOr(hide.weights, "", weightText(tr.weights.at(x)));
+                          }});
     // Every grid's cells first, so that the columns of all the grids line up under each other.
     std::vector<std::vector<std::vector<std::string>>> cells;
     for (const Quantity& q : quantities) {
@@ -179,12 +189,15 @@ FittedText tableTitle(const InspectorModel& m, const TypeSizes& t,
                       const std::vector<glm::ivec2>& texels, bool grids, float width) {
     const Trace& tr = *m.trace;
     std::optional<float> ref = commonRef(tr);
-    std::string title = texels.size() == 1 ? "The texel whose cell has no room for its numbers"
-                        : grids            ? "The numbers of the " + std::to_string(texels.size()) +
-                                      " texels whose cells have no room for them, as the "
+    // (A question on the fetch counts does not count them here either.)
+    std::string count = m.hidden.counts ? "" : std::to_string(texels.size()) + " ";
+    std::string title = texels.size() == 1 && !m.hidden.counts
+                            ? "The texel whose cell has no room for its numbers"
+                        : grids ? "The numbers of the " + count +
+                                      "texels whose cells have no room for them, as the "
                                       "cells sit (bits: in the cells)"
-                                : "The " + std::to_string(texels.size()) +
-                                      " texels whose cells have no room for their "
+                                : "The " + count +
+                                      "texels whose cells have no room for their "
                                       "numbers, row by row";
     // pcss: the texels only its blocker search read weigh 0 (the search counts blockers; the
     // filter's taps weigh the visibility). Without a word their w 0.000 reads as a tap that does
@@ -194,7 +207,7 @@ FittedText tableTitle(const InspectorModel& m, const TypeSizes& t,
                                   [&](glm::ivec2 x) { return tr.weights.at(x) == 0.0f; });
     if (searchOnly) title += " (`w 0.000`: read by the blocker search only)";
     // (The ref as a code span: monospace like the rows, and never broken across lines.)
-    title += ref ? "; `ref " + fixed(*ref, 4) + "` for all:" : ":";
+    title += ref ? "; `ref " + hiddenOr(m.hidden.refs, "", fixed(*ref, 4)) + "` for all:" : ":";
     return fitText(title, FontFace::Sans, t.label, t.label, width, 1e6f);
 }
 
@@ -214,7 +227,7 @@ TexelTable texelTableOf(const InspectorLayout& l, const InspectorModel& m, const
         // With d - ref where it fits, else without: the grids' lines are as wide as a grid of
         // their widest quantity.
         for (bool margin : {true, false}) {
-            out.grids = texelGrids(*m.trace, texels, !ref, margin);
+            out.grids = texelGrids(*m.trace, m.hidden, texels, !ref, margin);
             std::vector<std::string> all;
             for (const auto& g : out.grids) all.insert(all.end(), g.begin(), g.end());
             if (!out.grids.empty() && fit(all)) break;
