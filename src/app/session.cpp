@@ -387,6 +387,7 @@ void Session::composeInto(GLuint fbo) {
     mDrawnTexels = plan.drawnTexels;
     mDrawnFetches = plan.drawnFetches;
     mFormulaWhole = plan.formulaWhole;
+    mSceneTexels = plan.sceneTexels;
     // blitChart above placed them with the chart it drew or kept.
     if (!chart.empty()) mBoxes.insert(mBoxes.end(), mChartBoxes.begin(), mChartBoxes.end());
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -566,7 +567,8 @@ std::string Session::stepJson() const {
         {"layout", layoutJson(mBoxes)}};
     if (!mLesson.steps.empty()) j["focus"] = focusName(stepFocus(mLesson.steps[mStep]));
     if (mTrace) {
-        j.update(drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole));
+        j.update(
+            drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole, mSceneTexels));
         // Where the cells are on the frame (texelCellRect of this view and rect gives a cell).
         InspectorLayout layout = stepLayout();
         if (!layout.inspector.empty() && !mDrawnTexels.empty()) {

@@ -258,6 +258,7 @@ void takeCellsPlan(Planner& pl, FramePlan& cells) {
     pl.plan.drawnFetches = cells.drawnFetches;
     pl.plan.numberedTexels = cells.numberedTexels;
     pl.plan.diskRadii = cells.diskRadii;
+    pl.plan.rings = cells.rings;
 }
 
 }  // namespace

@@ -45,8 +45,9 @@ constexpr Colour FOOTPRINT_TINT{0.2f, 0.85f, 1.0f, 0.18f};
 constexpr Colour SEARCH{0.80f, 0.58f, 1.0f, 1.0f};  // pcss: the blocker search's taps and disk
 
 // A texel narrower than this on screen makes the grid's lines a moire that reads as acne: the
-// grid is hidden then (the footprint tint stays).
-constexpr float GRID_MIN_TEXEL_PX = 4.0f;
+// grid is hidden then (the tint of the texels read stays). Lesson 8's acne stripes, one texel
+// apart, measure 3.95 px across at 1024x768 presentation: their grid shows.
+constexpr float GRID_MIN_TEXEL_PX = 3.5f;
 
 inline std::string fixed(float v, int decimals) {
     char buf[32];
@@ -259,10 +260,13 @@ struct DiskRings {
     float filter = 0.0f;
 };
 DiskRings diskRings(const Trace& tr);
+struct CellMarks;
 // Rings round the lookup point (`point`, pixels; `cell` pixels per texel) clipped to `area`:
-// poisson's disk, or pcss's search disk and (when it found a blocker) its filter disk.
+// poisson's disk, or pcss's search disk and (when it found a blocker) its filter disk. Each
+// ring's stroke goes into `marks` as small squares along it, which the cells' numbers keep
+// clear of (7.1's ring crossed them), and into the plan's rings.
 void planDisks(Planner& pl, const Trace& tr, const Rect& area, glm::vec2 point, float cell,
-               float width, LegendNeeds& legend);
+               float width, LegendNeeds& legend, CellMarks& marks);
 
 // The cells, their numbers, the fetch marks and the fx/fy brackets; counts the cells whose
 // numbers the marks left no room for.
@@ -289,6 +293,10 @@ struct PointMark {
     std::string role;
     Colour tickColour;
     std::function<void(Canvas&, glm::vec2)> draw;
+    // Never moved: a disk's points and the lookup point at its centre (poisson, pcss) are the
+    // figure itself; a point moved off them no longer lies on its ring (7.1's lookup point sat
+    // 30 px off its ring's centre). The numbers find room around them instead.
+    bool fixed = false;
     Rect rect() const { return {at.x - half, at.y - half, 2 * half, 2 * half}; }
 };
 
