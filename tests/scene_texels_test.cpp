@@ -40,8 +40,8 @@ TexelSet texelsOf(const jsonlite::Value& list) {
 TexelSet tapTexels(const jsonlite::Value& trace) {
     TexelSet out;
     for (const jsonlite::Value& tap : trace["taps"].array) {
-        out.insert({static_cast<int>(tap["texel"][0].number),
-                    static_cast<int>(tap["texel"][1].number)});
+        out.insert(
+            {static_cast<int>(tap["texel"][0].number), static_cast<int>(tap["texel"][1].number)});
     }
     return out;
 }

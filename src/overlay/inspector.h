@@ -161,6 +161,7 @@ struct FramePlan {
         glm::vec2 centre{0.0f};
         float radius = 0.0f;
         float width = 0.0f;
+        Rect clip;  // the ring is drawn clipped to this (the cells, a figure's square)
     };
     std::vector<Ring> rings;
 };

@@ -55,7 +55,7 @@ void planDisks(Planner& pl, const Trace& tr, const Rect& area, glm::vec2 point, 
     for (float r : {search, filter}) {
         if (r <= 0.0f) continue;
         ringObstacles(marks, area, point, r, width);
-        pl.plan.rings.push_back({point, r, width});
+        pl.plan.rings.push_back({point, r, width, area});
     }
     pl.op([=](Canvas& c) {
         c.pushClip(area);

@@ -208,6 +208,7 @@ void planCellFills(Planner& pl, const InspectorLayout& l, const Trace& tr, const
             Colour fill = !tap ? PADDING : tap->lit >= 0.5f ? LIT_COLOUR : SHADOWED_COLOUR;
             if (tap && weight == 0.0f) fill = glm::mix(fill, PADDING, 0.55f);
             if (!tap) legend.padding = true;
+            if (tap && weight == 0.0f) legend.zeroWeight = true;
             pl.fill(r, fill);
             // A tap whose texel lay outside the map, read clamped to the edge: an orange frame
             // in the cell's border band, where no number goes.
