@@ -46,9 +46,8 @@ std::vector<LayoutBox> withRole(const std::vector<LayoutBox>& boxes, const std::
 }
 
 bool legendNames(const std::vector<LayoutBox>& boxes, const std::string& text) {
-    return std::any_of(boxes.begin(), boxes.end(), [&](const LayoutBox& b) {
-        return b.role == "legend" && b.text == text;
-    });
+    return std::any_of(boxes.begin(), boxes.end(),
+                       [&](const LayoutBox& b) { return b.role == "legend" && b.text == text; });
 }
 
 std::string pageText(const std::vector<LayoutBox>& boxes, const std::string& role) {

@@ -51,13 +51,13 @@ bool ringCrosses(const FramePlan::Ring& ring, const Rect& r) {
 std::optional<Rect> placeBeside(glm::vec2 at, float mr, glm::vec2 size, const Rect& bounds,
                                 const std::vector<Rect>& avoid,
                                 const std::vector<FramePlan::Ring>& rings) {
-    const glm::vec2 dirs[] = {{1, 0},  {-1, 0}, {0, -1}, {0, 1},
-                              {1, -1}, {-1, -1}, {1, 1},  {-1, 1}};
+    const glm::vec2 dirs[] = {{1, 0}, {-1, 0}, {0, -1}, {0, 1}, {1, -1}, {-1, -1}, {1, 1}, {-1, 1}};
     for (float extra : {0.0f, 0.6f * size.y}) {
         float d = mr + 3.0f + extra;
         for (glm::vec2 dir : dirs) {
             glm::vec2 c = at + dir * (glm::vec2(d) + 0.5f * size);
-            Rect r{std::round(c.x - 0.5f * size.x), std::round(c.y - 0.5f * size.y), size.x, size.y};
+            Rect r{std::round(c.x - 0.5f * size.x), std::round(c.y - 0.5f * size.y), size.x,
+                   size.y};
             if (!inside(r, bounds)) continue;
             bool clear = std::none_of(avoid.begin(), avoid.end(),
                                       [&](const Rect& a) { return overlaps(a, r); }) &&
@@ -121,8 +121,8 @@ void planTapMarks(Planner& pl, const InspectorModel& m, const TypeSizes& t, cons
             c.circle(p, mr, d.edge);
             c.circle(p, mr - 2.5f, fill);
         });
-        pl.box(BoxKind::Mark, Rect{p.x - mr, p.y - mr, 2 * mr, 2 * mr},
-               "inspector", d.search ? "search-tap" : "filter-tap");
+        pl.box(BoxKind::Mark, Rect{p.x - mr, p.y - mr, 2 * mr, 2 * mr}, "inspector",
+               d.search ? "search-tap" : "filter-tap");
         pl.plan.drawnFetches.push_back(tap.fetch);
         std::string depth = fixed(tap.depth, 3);
         glm::vec2 ts = measureText(st.face, st.pixelSize, depth);
@@ -258,7 +258,8 @@ void planPcssPage(Planner& pl, const InspectorLayout& l, const InspectorModel& m
                   const TypeSizes& t, float top, int part, bool sceneTint) {
     const Trace& tr = *m.trace;
     std::vector<PcssPart> parts = pcssParts(tr, m.focus);
-    PcssPart which = parts[static_cast<size_t>(std::clamp(part, 0, static_cast<int>(parts.size()) - 1))];
+    PcssPart which =
+        parts[static_cast<size_t>(std::clamp(part, 0, static_cast<int>(parts.size()) - 1))];
     float margin = inspectorMargin(l);
     bool more = part + 1 < static_cast<int>(parts.size());
     float noteH = more ? lineHeightOf(t.label) + t.label * 0.5f : 0.0f;
@@ -275,9 +276,9 @@ void planPcssPage(Planner& pl, const InspectorLayout& l, const InspectorModel& m
                               " texels (half the penumbra), each compared with ref " +
                               fixed(tr.ref, 4) + " and weighing 1/16.";
         std::string result = explainTrace(tr).back().text;
-        planDiskPage(pl, l, m, t, top, bottom, {n, tr.taps.size() - n, tr.pcss.filterRadius,
-                                                ACCENT, false},
-                     caption, result, need);
+        planDiskPage(pl, l, m, t, top, bottom,
+                     {n, tr.taps.size() - n, tr.pcss.filterRadius, ACCENT, false}, caption, result,
+                     need);
         pl.plan.formulaWhole = true;
     } else {
         planPenumbraPage(pl, l, tr, t, top, bottom);

@@ -134,12 +134,12 @@ std::string penumbraWords(const Trace& tr) {
              ", the line the receiver at d_r = " + formatNumber(dr) +
              ", distances from the spot, the red band the penumbra w = (d_r - d_b) * w_light / "
              "d_b. At the receiver the map turns it into texels with S = " +
-             formatNumber(S) + ": w = S * (d_r - d_b) / (d_b * d_r) = " + formatNumber(S) +
-             " * (" + formatNumber(dr) + " - " + formatNumber(e.blockerDepth) + ") / (" +
+             formatNumber(S) + ": w = S * (d_r - d_b) / (d_b * d_r) = " + formatNumber(S) + " * (" +
+             formatNumber(dr) + " - " + formatNumber(e.blockerDepth) + ") / (" +
              formatNumber(e.blockerDepth) + " * " + formatNumber(dr) + ")";
     } else {
-        s += "depth d_b = " + formatNumber(e.blockerDepth) + ", the line the receiver at d_r = ref = " +
-             formatNumber(dr) +
+        s += "depth d_b = " + formatNumber(e.blockerDepth) +
+             ", the line the receiver at d_r = ref = " + formatNumber(dr) +
              ", the red band the penumbra w = (d_r - d_b) * w_light / d_b. The sun is so far "
              "away that w_light / d_b is its angular size, S = " +
              formatNumber(S) + " texels per unit of depth: w = (" + formatNumber(dr) + " - " +
