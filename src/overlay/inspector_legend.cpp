@@ -42,7 +42,7 @@ std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeed
     }
     if (need.clamped) entries.push_back({CLAMPED, "read clamped to the edge", OUTLINE});
     if (need.weightBar) entries.push_back({WEIGHT_BAR, "weight bar", BAR});
-    entries.push_back({POINT, "lookup point", DOT});
+    if (need.point) entries.push_back({POINT, "lookup point", DOT});
     if (need.fraction) entries.push_back({POINT, "fx, fy: lookup point - base texel centre", BAR});
     if (need.hw8) entries.push_back({HW8_POINT, "8-bit position (1/256 texel)", OUTLINE});
     if (need.dots) entries.push_back({ACCENT, "each lookup", DOT});

@@ -129,6 +129,12 @@ void planTapMarks(Planner& pl, const InspectorModel& m, const TypeSizes& t, cons
         std::optional<Rect> r = placeBeside(p, mr, ts, sq, avoid, rings);
         if (!r) continue;
         avoid.push_back(r->expanded(2.0f));
+        // A depth set a line further out gets a short leader from its disc.
+        glm::vec2 near = glm::clamp(p, r->position(), r->position() + r->size());
+        if (glm::length(near - p) > mr + 6.0f) {
+            glm::vec2 from = p + glm::normalize(near - p) * (mr + 1.0f);
+            pl.op([=](Canvas& c) { c.line(from, near, 1.0f, TEXT_DIM); });
+        }
         Rect plate = r->expanded(1.0f);
         pl.fill(plate, Colour{PANEL.r, PANEL.g, PANEL.b, 0.85f});
         pl.text(r->position(), depth, st, BoxKind::Number, "inspector",
@@ -188,9 +194,12 @@ float wordsHeight(const InspectorLayout& l, const TypeSizes& t, const std::strin
 // A spot's map stores perspective depth: pcss turns it into distances from the light.
 bool spotLight(const Trace& tr) { return tr.params.depthNear > 0.0f; }
 
+// "1 texel", "16.876 texels".
+std::string inTexels(float n) { return formatNumber(n) + (n == 1.0f ? " texel" : " texels"); }
+
 std::string searchCaption(const Trace& tr) {
-    return "Blocker search: 16 taps on a disk of scale " + formatNumber(tr.pcss.searchRadius) +
-           " texels round the lookup point, each reading its nearest texel. A texel whose depth "
+    return "Blocker search: 16 taps on a disk of scale " + inTexels(tr.pcss.searchRadius) +
+           " round the lookup point, each reading its nearest texel. A texel whose depth "
            "is below ref " +
            fixed(tr.ref, 4) + " blocks the light.";
 }
@@ -271,17 +280,24 @@ void planPcssPage(Planner& pl, const InspectorLayout& l, const InspectorModel& m
         planDiskPage(pl, l, m, t, top, bottom, {0, n, tr.pcss.searchRadius, SEARCH, true},
                      searchCaption(tr), searchResult(tr), need);
     } else if (which == PcssPart::Filter) {
-        std::string caption = "Filter: 16 taps on a disk of scale " +
-                              formatNumber(tr.pcss.filterRadius) +
-                              " texels (half the penumbra), each compared with ref " +
-                              fixed(tr.ref, 4) + " and weighing 1/16.";
+        std::string caption =
+            "Filter: 16 taps on a disk of scale " + inTexels(tr.pcss.filterRadius) +
+            (std::abs(tr.pcss.filterRadius - 0.5f * tr.pcss.penumbra) > 1e-4f
+                 ? " (half the penumbra, kept within [" + formatNumber(PCF_PCSS_MIN_RADIUS) + ", " +
+                       formatNumber(PCF_PCSS_MAX_RADIUS) + "])"
+                 : " (half the penumbra)") +
+            ", each compared with ref " + fixed(tr.ref, 4) + " and weighing 1/16.";
         std::string result = explainTrace(tr).back().text;
         planDiskPage(pl, l, m, t, top, bottom,
                      {n, tr.taps.size() - n, tr.pcss.filterRadius, ACCENT, false}, caption, result,
                      need);
         pl.plan.formulaWhole = true;
     } else {
-        planPenumbraPage(pl, l, tr, t, top, bottom);
+        // Its marks are named in its own labels and words; the legend names the scene's tint.
+        need.cells = need.point = false;
+        float legendH = need.footprint ? legendHeight(l, m, need, t) : 0.0f;
+        planPenumbraPage(pl, l, tr, t, top, bottom - legendH);
+        if (need.footprint) planLegendAtBottom(pl, l, m, need, t, bottom);
     }
     if (tr.pcss.blockers == 0) pl.plan.formulaWhole = true;
     if (more) {

@@ -244,6 +244,7 @@ inline float lineOf(const InspectorLayout& l) {
 // Which kinds of mark the cells drew (the legend names only those).
 struct LegendNeeds {
     bool cells = true;  // the cells' fills (lit, shadowed); pcss's figures have none
+    bool point = true;  // the lookup point (pcss's penumbra figure has none)
     bool highlight = false, weightBar = false, dots = false, rings = false, gathers = false,
          fraction = false, baseCentre = false, padding = false;
     bool zeroWeight = false;  // a texel read whose weight is 0 (its fill paled towards grey)
