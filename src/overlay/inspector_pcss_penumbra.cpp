@@ -146,7 +146,7 @@ std::string penumbraWords(const Trace& tr) {
              formatNumber(e.blockerDepth) + ") * " + formatNumber(S);
     }
     s += " = " + formatNumber(e.penumbra) + " texels. The filter's points get half of it: scale " +
-         formatNumber(e.filterRadius) + " texels";
+         formatNumber(e.filterRadius) + (e.filterRadius == 1.0f ? " texel" : " texels");
     bool clamped = std::abs(e.filterRadius - 0.5f * e.penumbra) > 1e-4f;
     if (clamped) {
         s += " (kept within [" + formatNumber(PCF_PCSS_MIN_RADIUS) + ", " +
