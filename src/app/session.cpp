@@ -412,6 +412,7 @@ void Session::composeInto(GLuint fbo) {
     mDrawnTexels = plan.drawnTexels;
     mDrawnFetches = plan.drawnFetches;
     mFormulaWhole = plan.formulaWhole;
+    mSceneTexels = plan.sceneTexels;
     // blitChart above placed them with the chart it drew or kept.
     if (!chart.empty()) mBoxes.insert(mBoxes.end(), mChartBoxes.begin(), mChartBoxes.end());
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -611,7 +612,8 @@ std::string Session::stepJson() const {
     if (!mLesson.steps.empty()) j["focus"] = focusName(stepFocus(mLesson.steps[mStep]));
     if (mMotion) j["motion"] = motionJson(*mMotion);
     if (mTrace) {
-        j.update(drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole));
+        j.update(
+            drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole, mSceneTexels));
         // Where the cells are on the frame (texelCellRect of this view and rect gives a cell).
         InspectorLayout layout = stepLayout();
         if (!layout.inspector.empty() && !mDrawnTexels.empty()) {

@@ -272,6 +272,7 @@ class Session {
     std::vector<glm::ivec2> mDrawnTexels;  // what the last composed frame drew (FramePlan)
     std::vector<int> mDrawnFetches;
     bool mFormulaWhole = false;
+    std::vector<glm::ivec2> mSceneTexels;  // the texels tinted on the scene (FramePlan)
     double mFrameTimeMs = -1.0;
     InspectorLayout mLayout;
 

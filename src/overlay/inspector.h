@@ -187,6 +187,9 @@ struct FramePlan {
     bool gridShown = false;  // the texel grid was drawn on the scene (not hidden or off)
     // The texels read were tinted on the scene (not on an inset, nor off the scene's pixels).
     bool footprintShown = false;
+    // The texels tinted and outlined on the scene, in read order: the distinct texels of the
+    // trace's taps that some scene pixel shows (the JSON sidecar's drawn.scene_texels).
+    std::vector<glm::ivec2> sceneTexels;
     // What this page drew of what the trace read (the JSON sidecar's `drawn`): the texels whose
     // cells are drawn, the fetches (indices into Trace::fetches) whose marks are drawn, and
     // whether the formula is drawn whole, every term (not the short form).
@@ -203,6 +206,14 @@ struct FramePlan {
     // poisson and pcss: the radii, in texels, of the rings drawn round the lookup point (the
     // disks the Poisson points fill: the filter's, and pcss's blocker search's).
     std::vector<float> diskRadii;
+    // Those rings as drawn on this page: centre and radius in pixels, stroke width.
+    struct Ring {
+        glm::vec2 centre{0.0f};
+        float radius = 0.0f;
+        float width = 0.0f;
+        Rect clip;  // the ring is drawn clipped to this (the cells, a figure's square)
+    };
+    std::vector<Ring> rings;
 };
 FramePlan planFrame(const InspectorLayout& layout, const InspectorModel& model);
 void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& ops);

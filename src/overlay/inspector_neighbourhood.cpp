@@ -210,6 +210,7 @@ void planCellFills(Planner& pl, const InspectorLayout& l, const InspectorModel& 
             if (tap && m.hidden.bits) fill = HIDDEN_BIT;
             if (tap && weight == 0.0f && !m.hidden.weights) fill = glm::mix(fill, PADDING, 0.55f);
             if (!tap) legend.padding = true;
+            if (tap && weight == 0.0f) legend.zeroWeight = true;
             pl.fill(r, fill);
             // A tap whose texel lay outside the map, read clamped to the edge: an orange frame
             // in the cell's border band, where no number goes.
@@ -332,6 +333,9 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
     glm::vec2 size(tr.mapSize);
     Rect area = g.area;
     float dotR = std::max(DOT_MIN_PX, std::round(g.cell * DOT_PER_CELL));
+    // poisson's and pcss's points lie on a disk round the lookup point: they stay put.
+    DiskRings disk = diskRings(tr);
+    bool onDisk = disk.filter > 0.0f || disk.search > 0.0f;
     for (size_t fi = 0; fi < tr.fetches.size(); ++fi) {
         const FetchRecord& fr = tr.fetches[fi];
         glm::vec2 at = viewPoint(g, fr.uv * size);
@@ -363,13 +367,14 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
                                         if (highlit) c.circle(p, dotR * 2.0f + 1.0f, HIGHLIGHT);
                                         c.circle(p, dotR, dot);
                                     }});
+            marks.points.back().fixed = onDisk;
             (search ? legend.searchDisk : legend.dots) = true;
         } else if (texelsInView(g, fr, size)) {
             pl.plan.drawnFetches.push_back(static_cast<int>(fi));
         }
     }
     glm::vec2 point = viewPoint(g, tr.uv * size);
-    planDisks(pl, tr, area, point, g.cell, std::max(1.0f, line - 1.0f), legend);
+    planDisks(pl, tr, area, point, g.cell, std::max(1.0f, line - 1.0f), legend, marks);
     float pr = std::max(POINT_MIN_PX, std::round(g.cell * POINT_PER_CELL));
     if (area.contains(point)) {
         marks.points.push_back(
@@ -377,6 +382,7 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
                  c.circle(p, pr + POINT_OUTLINE_PX, Colour{0, 0, 0, 0.9f});
                  c.circle(p, pr, POINT);
              }});
+        marks.points.back().fixed = onDisk;
     }
 }
 

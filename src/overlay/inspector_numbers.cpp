@@ -79,8 +79,8 @@ std::string formulaText(const Trace& tr, const HiddenNumbers& hidden) {
     return out;
 }
 
-// The header as headerOf measured it, with the numbers `hidden` drawn as "?" (the room is the
-// one the numbers take, so a question's cells sit where its answer's do).
+}  // namespace
+
 void planHeader(Planner& pl, const InspectorLayout& l, const Header& h, const TypeSizes& t,
                 float margin, const Trace& tr, const HiddenNumbers& hidden) {
     const Rect& p = l.inspector;
@@ -111,6 +111,8 @@ void planHeader(Planner& pl, const InspectorLayout& l, const Header& h, const Ty
     }
 }
 
+namespace {
+
 // What the cells leave out, said in words, from `y` down; returns the new y.
 float planNotes(Planner& pl, const InspectorLayout& l, int hidden, const TypeSizes& t, float margin,
                 float y) {
@@ -130,114 +132,6 @@ float planNotes(Planner& pl, const InspectorLayout& l, int hidden, const TypeSiz
     return y;
 }
 
-namespace {
-
-enum SwatchShape { SQUARE, DOT, RING, OUTLINE, BAR, TICK, CIRCLE };
-
-struct LegendEntry {
-    Colour colour;
-    std::string text;
-    SwatchShape shape;
-};
-
-// One entry for every kind of mark this frame draws.
-std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeeds& need) {
-    std::vector<LegendEntry> entries{{LIT_COLOUR, "lit: ref <= depth", SQUARE},
-                                     {SHADOWED_COLOUR, "shadowed", SQUARE}};
-    // A question on the bits: the cells say nothing of them until the reveal.
-    if (m.hidden.bits) entries = {{HIDDEN_BIT, "bit hidden (lit: ref <= depth)", SQUARE}};
-    if (need.padding) entries.push_back({PADDING, "not read", SQUARE});
-    if (need.clamped) entries.push_back({CLAMPED, "read clamped to the edge", OUTLINE});
-    if (need.weightBar) entries.push_back({WEIGHT_BAR, "weight bar", BAR});
-    entries.push_back({POINT, "lookup point", DOT});
-    if (need.fraction) entries.push_back({POINT, "fx, fy: lookup point - base texel centre", BAR});
-    if (need.hw8) entries.push_back({HW8_POINT, "8-bit position (1/256 texel)", OUTLINE});
-    if (need.dots) entries.push_back({ACCENT, "each lookup", DOT});
-    bool pcss = m.trace && m.trace->params.method == PCF_PCSS;
-    if (need.searchDisk) entries.push_back({SEARCH, "blocker search: taps, disk", CIRCLE});
-    if (need.disk) {
-        // The ring is the disk the points fill, wider than the scale they are given (planDisks).
-        std::string reach = fixed(poissonSetReach(), 2);
-        entries.push_back({ACCENT,
-                           pcss ? "filter disk: " + reach + " x penumbra / 2"
-                                : "the points' disk, radius " + reach + " R",
-                           CIRCLE});
-    }
-    if (need.rings) entries.push_back({ACCENT, "hardware tap", RING});
-    if (need.gathers) entries.push_back({GATHER, "one gather (2 x 2)", OUTLINE});
-    if (need.highlight) entries.push_back({HIGHLIGHT, "the fetch the text talks about", OUTLINE});
-    if (need.movedMark) entries.push_back({POINT, "tick: a moved mark's true place", TICK});
-    if (need.footprint)
-        entries.push_back({Colour{0.2f, 0.85f, 1.0f, 1.0f}, "texels read, on the scene", SQUARE});
-    return entries;
-}
-
-// An entry's swatch in the square sw, its mark drawn as the frame draws it (lg: the type size).
-void planSwatch(Planner& pl, Rect sw, SwatchShape shape, Colour col, float lg) {
-    pl.op([=](Canvas& c) {
-        glm::vec2 cc = sw.centre();
-        switch (shape) {
-            case DOT:
-                c.circle(cc, lg * 0.35f + 1.5f, Colour{1, 1, 1, 0.9f});
-                c.circle(cc, lg * 0.35f, col);
-                break;
-            case RING:
-                c.ring(cc, lg * 0.38f, 2.0f, HW_RING);
-                c.circle(cc, lg * 0.16f, col);
-                break;
-            case OUTLINE:
-                c.strokeRect(sw, 3.0f, col);
-                break;
-            case CIRCLE:  // a thin circle, as the Poisson disk's
-                c.ring(cc, lg * 0.45f, 1.5f, col);
-                break;
-            case BAR:
-                c.fillRect({sw.x, sw.y + sw.h * 0.6f, sw.w, sw.h * 0.3f}, col);
-                break;
-            case SQUARE:
-                c.fillRect(sw, col);
-                break;
-            case TICK:  // a tick across a cell border, as in the cells
-                c.fillRect({sw.x, sw.y + sw.h * 0.5f - 0.5f, sw.w, 1.0f}, TEXT_DIM);
-                c.fillRect({cc.x - 1.5f, sw.y, 3.0f, sw.h}, col);
-                break;
-        }
-    });
-}
-
-}  // namespace
-
-// The legend: a swatch and a word for every kind of mark this frame draws, flowing onto more
-// lines when the panel is narrow. From `y` down; returns the new y.
-float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                 const LegendNeeds& need, const TypeSizes& t, float margin, float y) {
-    const Rect& p = l.inspector;
-    const std::string panel = "inspector";
-    float lg = t.label;
-    float lh = lineHeightOf(lg);
-    float swatchW = lg * 1.4f;  // a swatch and the gap after it
-    float x = p.x + margin;
-    for (const LegendEntry& e : legendEntries(m, need)) {
-        float tw = measureText(FontFace::Sans, lg, e.text).x;
-        float w = swatchW + tw;
-        if (x > p.x + margin && x + w > p.right() - margin) {
-            x = p.x + margin;
-            y += lh;
-        }
-        Rect sw{x, y + (lh - lg) * 0.5f, lg, lg};
-        planSwatch(pl, sw, e.shape, e.colour, lg);
-        pl.box(BoxKind::Mark, sw, panel, "legend-swatch");
-        std::string text = e.text;
-        if (tw > p.right() - margin - (x + swatchW)) {
-            text = elideText(FontFace::Sans, lg, e.text, p.right() - margin - (x + swatchW));
-        }
-        pl.text({x + swatchW, y}, text, {FontFace::Sans, lg, TEXT_DIM}, BoxKind::Text, panel,
-                "legend", text != e.text);
-        x += w + swatchW;
-    }
-    return y + lh + lg * 0.6f;
-}
-
 // The formula with its numbers, from the kernel's own explanation, fitted into `box` at the
 // numbers' size down to their floor; `page` of it when it pages.
 FittedText fitFormula(const InspectorModel& m, const TypeSizes& t, const Rect& box) {
@@ -252,8 +146,8 @@ void placeFormula(Planner& pl, const InspectorModel& m, const FittedText& f, con
     pl.plan.formulaWhole = f.pages == 1 && !m.hidden.any();
 }
 
-// A line at the panel's bottom saying where the rest of the inspector is (the next page).
-// `y`: the top of the room left under the rest.
+}  // namespace
+
 void planNextPageNote(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
                       const TypeSizes& t, float margin, float y, const std::string& what) {
     if (m.singleFrame) return;  // a video's frame: no page follows it
@@ -265,6 +159,8 @@ void planNextPageNote(Planner& pl, const InspectorLayout& l, const InspectorMode
     pl.text({p.x + margin, std::min(y, p.bottom() - margin - lh)}, shown,
             {FontFace::Sans, t.label, ACCENT}, BoxKind::Text, "inspector", "more", shown != note);
 }
+
+namespace {
 
 // The panel without a trace: its heading and what to do.
 void planNoTrace(Planner& pl, const Rect& p, const TypeSizes& t, float margin) {
@@ -289,6 +185,7 @@ void takeCellsPlan(Planner& pl, FramePlan& cells) {
     pl.plan.drawnFetches = cells.drawnFetches;
     pl.plan.numberedTexels = cells.numberedTexels;
     pl.plan.diskRadii = cells.diskRadii;
+    pl.plan.rings = cells.rings;
 }
 
 // The first part: the cells, with the formula under them when it fits there, and the line that
@@ -346,6 +243,8 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
         return;
     }
     const Trace& tr = *m.trace;
+    // pcss: its figures, page by page, instead of its disks' hundreds of small cells.
+    if (pcssFigures(tr)) return planPcssInspector(pl, l, m, t);
     InspectorPanel panel = inspectorPanel(l, m, t, pl.onTop, pl.plan.footprintShown);
     const PanelLayout& layout = panel.layout;
     planHeader(pl, l, layout.header, t, margin, tr, m.hidden);
