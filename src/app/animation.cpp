@@ -96,7 +96,7 @@ double animationSweepValue(const AnimationOptions& o, int k) {
 }
 
 int defaultCompareMethod(int stepMethod) {
-    return stepMethod == PCF_NEAREST ? PCF_GATHER : PCF_NEAREST;
+    return methodInfo(stepMethod).hard ? PCF_GATHER : PCF_NEAREST;
 }
 
 AnimationOptions stepAnimationOptions(const LessonStep& step, const std::string& path,

@@ -128,7 +128,7 @@ TexelTable texelTableOf(const InspectorLayout& l, const InspectorModel& m, const
     // filter's taps weigh the visibility). Without a word their w 0.000 reads as a tap that does
     // not count.
     const Trace& tr = *m.trace;
-    bool searchOnly = tr.params.method == PCF_PCSS &&
+    bool searchOnly = methodInfo(tr.params.method).searchesBlockers &&
                       std::any_of(texels.begin(), texels.end(),
                                   [&](glm::ivec2 x) { return tr.weights.at(x) == 0.0f; });
     if (searchOnly) title += " (`w 0.000`: read by the blocker search only)";

@@ -56,11 +56,11 @@ float penumbraScale(const Light& light, const glm::mat4& shadowClipFromWorld, in
 
 PcfParams pcssPcfParams(const Light& light, const glm::mat4& shadowClipFromWorld,
                         const ShadowSettings& s, vec2 rotation) {
-    float scale = s.method == PCF_PCSS
-                      ? penumbraScale(light, shadowClipFromWorld, s.mapSize, s.lightSize)
-                      : 0.0f;
+    bool searches = methodInfo(s.method).searchesBlockers;
+    float scale =
+        searches ? penumbraScale(light, shadowClipFromWorld, s.mapSize, s.lightSize) : 0.0f;
     PcfParams p = s.pcfParams(rotation, scale);
-    if (s.method == PCF_PCSS && light.type == LightType::Spot) {
+    if (searches && light.type == LightType::Spot) {
         glm::vec2 range = pcssDepthRange(shadowClipFromWorld);
         p.depthNear = range.x;
         p.depthFar = range.y;
