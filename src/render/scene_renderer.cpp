@@ -229,7 +229,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
 }
 
 PcfParams SceneRenderer::pcfParams(const ShadowSettings& settings, vec2 rotation) const {
-    return pcssPcfParams(mScene.light, mMap.layers.front().shadowClipFromWorld, settings, rotation);
+    return pcssPcfParams(mScene.light, mMap.layers.front(), settings, rotation);
 }
 
 void SceneRenderer::render(const RenderSettings& settings) {
