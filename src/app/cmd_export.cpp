@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <future>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -15,6 +14,7 @@
 #include "app/commands.h"
 #include "app/compare_view.h"
 #include "app/export.h"
+#include "app/frame_files.h"
 #include "app/frame_options.h"
 #include "app/live_keys.h"
 #include "app/magnifier.h"
@@ -238,35 +238,30 @@ void writeCompare(const Session& session, const CompareSpec& spec, const std::st
     writeTextFile(stem + "-compare.json", view.json() + "\n");
 }
 
-// Writes a frame's PNG and JSON on a second thread while the next frame renders: PNG encoding
-// is a third of an export's CPU time (perf, lesson 6 at 1280x720 presentation), and done on
-// the rendering thread it left llvmpipe's threads idle. One frame in flight at a time, so the
-// memory held is one frame's; wait() rethrows a failed write's error (a full disk), and the
-// destructor waits, so nothing is written after exportFrames returns or throws (the caller's
-// OutputFiles then takes back what an error left).
-class FrameWriter {
-  public:
-    FrameWriter() = default;
-    FrameWriter(const FrameWriter&) = delete;
-    FrameWriter& operator=(const FrameWriter&) = delete;
-    ~FrameWriter() {
-        if (mPending.valid()) mPending.wait();
-    }
-    void write(std::string stem, glm::ivec2 size, std::vector<uint8_t> rgba, std::string json) {
-        wait();
-        mPending = std::async(std::launch::async, [stem = std::move(stem), size,
-                                                   rgba = std::move(rgba), json = std::move(json)] {
-            writePngRgba8(stem + ".png", size.x, size.y, rgba);
-            writeTextFile(stem + ".json", json);
-        });
-    }
-    void wait() {
-        if (mPending.valid()) mPending.get();
-    }
+// The frame the session composed, as STEM.png and STEM.json, on the writer's thread.
+void writeFrame(FrameFiles& writer, const Session& session, const std::string& stem) {
+    writer.add(stem + ".png", session.frameSize(), session.readFrame(), stem + ".json",
+               session.stepJson() + "\n");
+}
 
-  private:
-    std::future<void> mPending;
-};
+// The rest of a step's text, when it pages at this size: one more frame per page,
+// STEM-pageN. Returns the frames written.
+int writeMorePages(FrameFiles& writer, Session& session, const std::string& stem,
+                   OutputFiles& outputs, bool progress) {
+    int written = 0;
+    for (int page = 1; page < session.textPages(); ++page) {
+        std::string more = stem + "-page" + std::to_string(page + 1);
+        outputs.add("-o", more + ".png");
+        outputs.add("-o", more + ".json");
+        session.setTextPage(page);
+        session.compose();
+        writeFrame(writer, session, more);
+        if (progress)
+            std::fprintf(stderr, "export: %s (page %d)\n", (more + ".png").c_str(), page + 1);
+        ++written;
+    }
+    return written;
+}
 
 }  // namespace
 
@@ -276,7 +271,9 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
     Session session(size, presentation);
     session.loadLesson(lessonPath);
     auto start = std::chrono::steady_clock::now();
-    FrameWriter writer;
+    // A frame's PNG and JSON are written on a thread of their own while the next frame renders
+    // (frame_files.h): PNG encoding is a third of an export's CPU time.
+    FrameFiles writer(1);
     int extraFrames = 0;
     int videoFrames = 0;  // the frames of the steps' MP4s
     const Camera wide = session.scene().camera;
@@ -293,29 +290,18 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
             writeCompare(session, plan.compares[index], stem, size, presentation);
             ++extraFrames;
         }
-        writer.write(stem, size, session.readFrame(), session.stepJson() + "\n");
+        writeFrame(writer, session, stem);
         if (progress) {
             std::fprintf(stderr, "export: %s (%d/%d)\n", (stem + ".png").c_str(),
                          s - plan.steps.x + 1, plan.steps.y - plan.steps.x + 1);
         }
-        // The rest of a step's text, when it pages at this size: one more frame per page.
-        for (int page = 1; outputs && page < session.textPages(); ++page) {
-            std::string more = stem + "-page" + std::to_string(page + 1);
-            outputs->add("-o", more + ".png");
-            outputs->add("-o", more + ".json");
-            session.setTextPage(page);
-            session.compose();
-            writer.write(more, size, session.readFrame(), session.stepJson() + "\n");
-            if (progress)
-                std::fprintf(stderr, "export: %s (page %d)\n", (more + ".png").c_str(), page + 1);
-            ++extraFrames;
-        }
+        if (outputs) extraFrames += writeMorePages(writer, session, stem, *outputs, progress);
         if (plan.videos && session.lesson().steps[static_cast<size_t>(s - 1)].animate) {
             videoFrames += writeStepVideo(session, lessonPath, stem + ".mp4");
             if (progress) std::fprintf(stderr, "export: %s\n", (stem + ".mp4").c_str());
         }
     }
-    writer.wait();
+    writer.finish();
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     int frames = plan.steps.y - plan.steps.x + 1 + extraFrames + videoFrames;

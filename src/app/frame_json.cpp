@@ -5,8 +5,8 @@
 namespace pcf {
 
 // The frame's layout (planFrame's boxes) as a JSON array: [{"kind", "panel", "role",
-// "rect": [x, y, w, h], "font_px", "shortened"}, ...]; font_px and shortened only for what
-// draws text.
+// "rect": [x, y, w, h], "font_px", "shortened", "text"}, ...]; font_px and shortened only for
+// what draws text, "text" (the words drawn, as drawn) where the box knows them.
 Json layoutJson(const std::vector<LayoutBox>& boxes) {
     Json out = Json::array();
     for (const LayoutBox& b : boxes) {
@@ -20,6 +20,7 @@ Json layoutJson(const std::vector<LayoutBox>& boxes) {
             box["font_px"] = jsonNumber(b.fontPx);
             box["shortened"] = b.shortened;
         }
+        if (!b.text.empty()) box["text"] = b.text;
         out.push_back(std::move(box));
     }
     return out;

@@ -39,6 +39,12 @@ std::string statusLine(const LessonSettings& s, const std::vector<std::string>& 
 
 }  // namespace
 
+Json motionJson(const FrameMotion& motion) {
+    return {{"sweep", motion.sweep},   {"frame", motion.frame},
+            {"frames", motion.frames}, {"value", jsonNumber(static_cast<float>(motion.value))},
+            {"words", motion.swept},   {"steps_own", motion.stepsOwn}};
+}
+
 Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presentation) {
     setFrameSize(frameSize);
 }
@@ -110,15 +116,6 @@ namespace {
 bool samePicture(LessonSettings a, const LessonSettings& b) {
     a.point = b.point;
     return a == b;
-}
-
-// Equal in what a step's words can talk about: also ignores a kernel size or radius the method
-// does not use (a kernel change under bilinear2x2 leaves its text true).
-bool sameForTheWords(LessonSettings a, const LessonSettings& b) {
-    const MethodInfo& info = methodInfo(a.method);
-    if (a.method == b.method && !info.usesKernel) a.kernel = b.kernel;
-    if (a.method == b.method && !info.usesRadius) a.radius = b.radius;
-    return samePicture(a, b);
 }
 
 }  // namespace
@@ -335,24 +332,37 @@ void Session::tracePartsOfText() {
     }
 }
 
-std::string Session::stepText() const {
-    if (mLesson.steps.empty()) return "";
+std::string Session::stepText() const { return stepWords().text; }
+
+FrameWords Session::stepWords() const {
+    if (mLesson.steps.empty()) return {};
     const LessonStep& s = mLesson.steps[static_cast<size_t>(mStep)];
+    // The window's own way to play an animation step, which no written frame shows.
+    std::string hint = mInteractive && s.animate ? std::string(PLAY_HINT) + "\n\n" : "";
     if (!mTrace) {
-        return s.text.find('{') == std::string::npos
-                   ? s.text
-                   : "(The picked pixel is not on a shadow receiver, so this step's numbers "
-                     "cannot be shown. Pick a point on the ground.)";
+        return {hint + (s.text.find('{') == std::string::npos
+                            ? s.text
+                            : "(The picked pixel is not on a shadow receiver, so this step's "
+                              "numbers cannot be shown. Pick a point on the ground.)")};
     }
     StepContext ctx =
         makeStepContext(mSettings, mPixel, mPoint ? lightAngleDeg(mLesson.scene, *mPoint) : -1.0f);
     ctx.partVisibility = mPartVisibility;
     std::string text = fillText(s.text, *mTrace, ctx);
-    if (!mStepEdited) return text;
+    if (!mStepEdited && !mMotion) return {hint + text};
     ClaimWorld world;
     world.onPlane = mPoint && std::holds_alternative<Plane>(
                                   mLesson.scene.objects[static_cast<size_t>(mPoint->object)].shape);
-    return wordsForLiveState(s, mSettings, text, *mTrace, ctx, world);
+    // A step's motion claim (`flickers`) is about its own sweep: another sweep does not make it.
+    if (mMotion && !mMotion->stepsOwn) {
+        world.flickerCurve = []() -> std::variant<std::vector<float>, std::string> {
+            return std::string("another sweep than the step's own");
+        };
+    }
+    WordsInput in{s, mMotion ? mMotion->base : mSettings, text, *mTrace, ctx, world, mInteractive};
+    FrameWords words = mMotion ? wordsForMovingFrame(in, mMotion->swept) : wordsForLiveState(in);
+    words.text = hint + words.text;
+    return words;
 }
 
 void Session::compose() { composeInto(mFrame.framebuffer.id()); }
@@ -525,6 +535,8 @@ InspectorModel Session::model() const {
     m.sceneSize = scene;
     m.status = statusText();
     m.markers = mMarkers;
+    m.interactive = mInteractive;
+    m.singleFrame = mMotion.has_value() && !mInteractive;
     m.presentation = mPresentation;
     m.help = mHelp;
     m.showScene = chart.empty();
@@ -544,12 +556,14 @@ std::vector<uint8_t> Session::readFrame() const {
 std::string Session::stepJson() const {
     // Every setting the step is made with, from the parameter table.
     Json settings = paramsJson(mSettings, ParamSet::All);
+    FrameWords words = stepWords();
     Json j = {
         {"lesson", mLesson.name},
         {"title", mLesson.title},
         {"step", mStep + 1},
         {"step_title", mLesson.steps.empty() ? "" : mLesson.steps[mStep].title},
-        {"text", drawnStepText(stepText())},
+        {"text", drawnStepText(words.text)},
+        {"words", wordsShownName(words.shown)},
         {"pixel", jsonPair(mPixel)},
         {"point", mPoint ? Json::array({jsonNumber(mPoint->posWs.x), jsonNumber(mPoint->posWs.y),
                                         jsonNumber(mPoint->posWs.z)})
@@ -563,6 +577,7 @@ std::string Session::stepJson() const {
         {"text_pages", mTextPages},
         {"layout", layoutJson(mBoxes)}};
     if (!mLesson.steps.empty()) j["focus"] = focusName(stepFocus(mLesson.steps[mStep]));
+    if (mMotion) j["motion"] = motionJson(*mMotion);
     if (mTrace) {
         j.update(drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole));
         // Where the cells are on the frame (texelCellRect of this view and rect gives a cell).

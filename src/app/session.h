@@ -15,8 +15,10 @@
 
 #include "app/lesson_step.h"
 #include "app/step_view.h"
+#include "app/step_words.h"
 #include "draw/canvas.h"
 #include "kernel/trace.h"
+#include "kernel/trace_json.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_catalogue.h"
 #include "lesson/lesson_pick.h"
@@ -30,6 +32,27 @@ namespace pcf {
 
 // The smallest frame the scene view and the inspector fit into side by side.
 constexpr glm::ivec2 MIN_SESSION_SIZE{320, 180};
+
+// A frame of an animation (app/animation.h): what is swept and its value now, in words ("The sun
+// sinks from 40 to 6 degrees above the horizon: now 23.4."), the state the sweep started from,
+// and whether the sweep is the step's own `animate` (its motion claims, `flickers`, are about
+// that one). On such a frame the step's words are checked against the frame (step_words.h).
+struct FrameMotion {
+    std::string swept;
+    LessonSettings base;
+    bool stepsOwn = false;
+    // For the frame's JSON ("motion"): the sweep's name, this frame (from 1) of how many, and
+    // the swept quantity's value now (animation.h: animationSweepValue).
+    std::string sweep;
+    int frame = 0;
+    int frames = 0;
+    double value = 0.0;
+};
+// {"sweep", "frame", "frames", "value", "words", "steps_own"}: a moving frame's JSON "motion".
+Json motionJson(const FrameMotion& motion);
+
+// The viewer's own hint on an animation step (never in an exported frame or video).
+constexpr const char* PLAY_HINT = "Space plays this step; . and , show one frame more or less.";
 
 class Session {
   public:
@@ -97,6 +120,11 @@ class Session {
     bool previousPage();
     // The frame time the status line shows; negative: none (exports, screenshots).
     void setFrameTimeMs(double ms);
+    // The window's frames (the viewer sets it): only they say which keys turn a page, restore a
+    // step or play one ("next page (Right)", "H: keys"). Off (the default) for every frame that
+    // is written: export, animate, the viewer's E and --screenshot.
+    bool interactive() const { return mInteractive; }
+    void setInteractive(bool on) { mInteractive = on; }
 
     // Renders what changed, traces the pixel and composes the frame offscreen.
     void compose();
@@ -111,8 +139,10 @@ class Session {
     std::vector<uint8_t> readFrame() const;  // RGBA8, rows top-down
 
     const std::optional<Trace>& trace() const { return mTrace; }
-    // The current step's text with its placeholders filled from the trace.
+    // The current step's text with its placeholders filled from the trace, or what the frame
+    // shows in its place (step_words.h: a note, or a caption where a claim fails on this frame).
     std::string stepText() const;
+    FrameWords stepWords() const;
     // The step as JSON: lesson, step, title, text, pixel, settings, the trace object, and the
     // layout of the last composed frame (every box drawn: inspector.h LayoutBox).
     std::string stepJson() const;
@@ -138,6 +168,10 @@ class Session {
     // Pins this scene point (a split view's parts pin their main view's point; the magnifier
     // keeps its point when it moves the camera): the pixel and jitter follow for this frame.
     void pinPoint(const ScenePoint& point);
+    // An animation's frame (FrameMotion), or nullopt for a still: the step's words are then
+    // checked on every frame. Animation sets it per frame and clears it when it restores.
+    void setMotion(std::optional<FrameMotion> motion) { mMotion = std::move(motion); }
+    const std::optional<FrameMotion>& motion() const { return mMotion; }
     // The scene alone over the whole frame (no inspector, steps or status): `animate --scene-only`.
     void setSceneOnly(bool on);
     bool sceneOnly() const { return mSceneOnly; }
@@ -186,6 +220,8 @@ class Session {
     bool mGrid = true;
     bool mHeatmap = false;
     bool mMarkers = true;
+    bool mInteractive = false;
+    std::optional<FrameMotion> mMotion;
     // The lesson scene's own light, and the sun (sunTilt, sunTurn) the light now has: the keys
     // move the sun from the lesson's light (setSettings).
     Light mBaseLight;

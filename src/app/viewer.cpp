@@ -49,6 +49,7 @@ class Viewer {
         : mWindow(window), mSession(window.framebufferSize(), o.presentation) {
         mLessons = builtInLessons();
         mSession.loadLesson(o.lesson);
+        mSession.setInteractive(true);  // the window's frames name its keys
         auto it = std::find(mLessons.begin(), mLessons.end(), o.lesson);
         mLessonIndex = it == mLessons.end() ? -1 : static_cast<int>(it - mLessons.begin());
         mPlayer.afterChange();
@@ -131,13 +132,19 @@ class Viewer {
             OutputFiles outputs(false);
             outputs.add("E", stem + ".png");
             outputs.add("E", stem + ".json");
+            // Written as `export` writes it: without the window's key hints.
+            mSession.setInteractive(false);
             mSession.compose();
             glm::ivec2 size = mSession.frameSize();
-            writePngRgba8(stem + ".png", size.x, size.y, mSession.readFrame());
-            writeTextFile(stem + ".json", mSession.stepJson() + "\n");
+            std::vector<uint8_t> rgba = mSession.readFrame();
+            std::string json = mSession.stepJson() + "\n";
+            mSession.setInteractive(true);
+            writePngRgba8(stem + ".png", size.x, size.y, rgba);
+            writeTextFile(stem + ".json", json);
             outputs.commit();
             std::fprintf(stderr, "view: exported %s.png\n", stem.c_str());
         } catch (const std::exception& e) {
+            mSession.setInteractive(true);
             std::fprintf(stderr, "view: export failed: %s\n", e.what());
         }
     }

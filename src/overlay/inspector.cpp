@@ -264,7 +264,8 @@ FramePlan planFrame(const InspectorLayout& l, const InspectorModel& m) {
     return plan;
 }
 
-FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, bool help) {
+FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, bool help,
+                          bool interactive) {
     FramePlan plan;
     Planner pl{plan};
     TypeSizes t = typeSizes(l);
@@ -272,6 +273,7 @@ FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, b
     pl.fill(l.status, STATUS);
     InspectorModel m;
     m.status = status;
+    m.interactive = interactive;
     planStatus(pl, l, m, t);
     pl.onTop = true;
     if (help) planHelp(pl, l, t);

@@ -95,7 +95,7 @@ struct LayoutBox {
     std::string role;        // what it is: "step-text", "cell-depth", "lookup-point" ...
     float fontPx = 0.0f;     // text, numbers and labels: the pixel size drawn
     bool shortened = false;  // the text did not fit whole (elided, or paged: see the "more" mark)
-    std::string text;        // a text, number or label drawn by itself: its words (not in JSON)
+    std::string text;        // a text, number or label drawn by itself: its words (JSON "text")
 };
 
 // Everything the frame shows; the caller fills it from the lesson, the renderer and the trace.
@@ -122,6 +122,12 @@ struct InspectorModel {
     int textPage = 0;                   // the page of the step text shown (when it pages)
     int highlightFetch = -1;            // the fetch (0-based) the step talks about; -1: none
     bool plays = false;  // an animation step: Space plays it, so Right alone turns the page
+    // The window's frame: only it names the keys (a page's "more Right", "H: keys"); a frame
+    // that is written (export, animate) never shows a hint only the window can act on.
+    bool interactive = false;
+    // A frame of a written video: no page of it follows, so no note points to one (the
+    // inspector's "the formula, every term: next page").
+    bool singleFrame = false;
     Focus focus{true, true, false, false};  // what the step is about (inspector.h: Focus)
 };
 
@@ -156,10 +162,12 @@ struct FramePlan {
 };
 FramePlan planFrame(const InspectorLayout& layout, const InspectorModel& model);
 void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& ops);
-// The status line along the bottom of `l` (its panel filled) and, with `help`, the key list (H)
-// over the frame, as planFrame places them: what a frame composed without the inspector (the
-// split view, app/compare_view.h) draws so that it reads and answers H as the lesson's frame.
-FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, bool help);
+// The status line along the bottom of `l` (its panel filled; with `interactive` its keys hint)
+// and, with `help`, the key list (H) over the frame, as planFrame places them: what a frame
+// composed without the inspector (the split view, app/compare_view.h) draws so that it reads and
+// answers H as the lesson's frame.
+FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, bool help,
+                          bool interactive);
 // A step text as the frame draws it: `code spans` without their backticks (a backtick with no
 // partner on its line stays), preformatted rows (two leading spaces) as they are, table columns
 // padded to line up. What the step JSON sidecar's `text` reports.

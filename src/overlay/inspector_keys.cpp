@@ -30,6 +30,7 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"I / Shift+I", "gaussian weights' sigma larger / smaller"},
         {"K", "cull mode of the shadow pass"},
         {"D", "depth format: " + depthFormatNames()},
+        {"N", "shading: lit / the visibility alone (no N.L)"},
         {"X", "marks on the scene on / off"},
         {"C", "split view: the step's compare, or this method and nearest"},
         {"Z", "magnifier: a close-up on the point, a texel many pixels wide"},

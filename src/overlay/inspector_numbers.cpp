@@ -227,9 +227,11 @@ void placeFormula(Planner& pl, const FittedText& f, const Rect& box, int page) {
 // `y`: the top of the room left under the rest.
 void planNextPageNote(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
                       const TypeSizes& t, float margin, float y, const std::string& what) {
+    if (m.singleFrame) return;  // a video's frame: no page follows it
     const Rect& p = l.inspector;
     float lh = lineHeightOf(t.label);
-    std::string note = what + ": next page (" + pageKeys(m) + ")";
+    std::string keys = pageKeys(m);
+    std::string note = what + ": next page" + (keys.empty() ? "" : " (" + keys + ")");
     std::string shown = elideText(FontFace::Sans, t.label, note, p.w - 2 * margin);
     pl.text({p.x + margin, std::min(y, p.bottom() - margin - lh)}, shown,
             {FontFace::Sans, t.label, ACCENT}, BoxKind::Text, "inspector", "more", shown != note);

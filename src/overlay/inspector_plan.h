@@ -84,8 +84,12 @@ inline bool inside(const Rect& inner, const Rect& outer) {
 }
 
 // Records boxes and the draw commands that go with them.
-// The keys that turn a page, as the "more" marks say them: on an animation step Space plays it.
-inline std::string pageKeys(const InspectorModel& m) { return m.plays ? "Right" : "Space/Right"; }
+// The keys that turn a page, as the "more" marks say them in the window (on an animation step
+// Space plays it); a written frame names none.
+inline std::string pageKeys(const InspectorModel& m) {
+    if (!m.interactive) return "";
+    return m.plays ? "Right" : "Space/Right";
+}
 
 struct Planner {
     FramePlan& plan;

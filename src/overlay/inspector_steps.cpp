@@ -174,8 +174,9 @@ void planStatus(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
                 const TypeSizes& t) {
     const Rect& s = l.status;
     float pad = std::max(6.0f, 10.0f * l.scale);
-    std::string keys = "H: keys";
-    float kw = measureText(FontFace::Sans, t.status, keys).x;
+    // The window's hint only: a written frame has no H to press.
+    std::string keys = m.interactive ? "H: keys" : "";
+    float kw = keys.empty() ? 0.0f : measureText(FontFace::Sans, t.status, keys).x;
     float room = s.w - 3 * pad - kw;
     float size = t.status;
     while (size > t.labelFloor && measureText(FontFace::Mono, size, m.status).x > room) {
@@ -185,6 +186,7 @@ void planStatus(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
     float y = s.y + (s.h - lineHeightOf(size)) * 0.5f;
     pl.text({s.x + pad, y}, status, {FontFace::Mono, size, TEXT}, BoxKind::Text, "status", "status",
             status != m.status);
+    if (keys.empty()) return;
     float ky = s.y + (s.h - lineHeightOf(t.status)) * 0.5f;
     pl.text({s.right() - pad, ky}, keys, {FontFace::Sans, t.status, TEXT_DIM, TextAlign::Right},
             BoxKind::Text, "status", "keys-hint");

@@ -396,7 +396,8 @@ void planMoreMark(Planner& pl, const FittedText& f, const Rect& area, int page, 
                   const std::string& panel, const std::string& moreHint) {
     // Appended, not a chain of operator+ (GCC 12 warns falsely, -Wrestrict).
     std::string more;
-    if (page + 1 < f.pages) more.append("more ").append(moreHint).append(" ");
+    if (page + 1 < f.pages)
+        more.append("more ").append(moreHint).append(moreHint.empty() ? "" : " ");
     more.append("(").append(std::to_string(page + 1)).append("/");
     more.append(std::to_string(f.pages)).append(")");
     float ms = std::max(10.0f, std::round(f.size * 0.85f));
