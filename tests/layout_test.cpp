@@ -869,8 +869,9 @@ TEST_F(Layout, LongStepTextPagesWithAMoreMarkInsteadOfClipping) {
                 ++marks;
                 EXPECT_EQ(b.text.starts_with("more Space/Right"), interactive && !plays) << b.text;
                 EXPECT_EQ(b.text.starts_with("more Right"), interactive && plays) << b.text;
-                if (!interactive)
+                if (!interactive) {
                     EXPECT_EQ(b.text, "more (1/" + std::to_string(plan.textPages) + ")");
+                }
             }
             EXPECT_EQ(marks, 1);
         }

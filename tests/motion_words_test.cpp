@@ -111,7 +111,9 @@ void expectWordsFollowTheClaims(const Session& s, const std::string& what, int* 
     expectNoWindowHint(json, what);
     // A video shows no second page, so no note points to one.
     for (const jsonlite::Value& box : frame["layout"].array) {
-        if (box.has("text")) EXPECT_EQ(box["text"].string.find("next page"), std::string::npos);
+        if (box.has("text")) {
+            EXPECT_EQ(box["text"].string.find("next page"), std::string::npos);
+        }
     }
 }
 
