@@ -23,10 +23,11 @@ namespace {
 
 // The state, what the keys changed from the step's (`changed`: changedSettings), the scene's
 // size and the frame time.
-std::string statusLine(const LessonSettings& s, const std::vector<std::string>& changed,
-                       glm::ivec2 sceneSize, double frameTimeMs) {
+std::string statusLine(const LessonSettings& s, bool hideBiasAmounts,
+                       const std::vector<std::string>& changed, glm::ivec2 sceneSize,
+                       double frameTimeMs) {
     std::ostringstream line;
-    line << settingsSummary(s);
+    line << settingsSummary(s, hideBiasAmounts);
     for (size_t k = 0; k < changed.size(); ++k) line << (k == 0 ? "   keys: " : ", ") << changed[k];
     line << "   scene " << sceneSize.x << "x" << sceneSize.y;
     if (frameTimeMs >= 0.0) {
@@ -49,8 +50,9 @@ Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presen
     setFrameSize(frameSize);
 }
 
-void Session::loadLesson(const std::string& path) {
-    Lesson lesson = loadLessonChecked(path);
+void Session::loadLesson(const std::string& path) { setLesson(loadLessonChecked(path)); }
+
+void Session::setLesson(Lesson lesson) {
     mLesson = std::move(lesson);
     mRenderer = std::make_unique<SceneRenderer>(mLesson.scene);
     mPartRenderer.reset();
@@ -68,6 +70,8 @@ void Session::goToStep(int step) {
     mStep = std::clamp(step, 0, stepCount() - 1);
     const LessonStep& s = mLesson.steps[static_cast<size_t>(mStep)];
     mTextPage = 0;
+    mRevealed = false;
+    mTyped.clear();
     mGrid = s.settings.grid;
     mHeatmap = s.settings.heatmap;
     setSettings(s.settings);
@@ -242,13 +246,24 @@ void Session::blitThumbnail(const InspectorLayout& layout) {
 void Session::setHelp(bool on) { mHelp = on; }
 
 bool Session::nextPage() {
-    if (mTextPage + 1 >= mTextPages) return false;
+    if (mTextPage + 1 >= mTextPages) {
+        // The question's last page: the answer is the next.
+        if (!questionShown()) return false;
+        setRevealed(true);
+        return true;
+    }
     ++mTextPage;
     return true;
 }
 
 bool Session::previousPage() {
-    if (mTextPage <= 0) return false;
+    if (mTextPage <= 0) {
+        if (!predictStep() || !mRevealed) return false;
+        // Back to the question's last page.
+        mRevealed = false;
+        mTextPage = LAST_TEXT_PAGE;
+        return true;
+    }
     --mTextPage;
     return true;
 }
@@ -395,6 +410,7 @@ void Session::composeInto(GLuint fbo) {
     mDrawnTexels = plan.drawnTexels;
     mDrawnFetches = plan.drawnFetches;
     mFormulaWhole = plan.formulaWhole;
+    mSceneTexels = plan.sceneTexels;
     // blitChart above placed them with the chart it drew or kept.
     if (!chart.empty()) mBoxes.insert(mBoxes.end(), mChartBoxes.begin(), mChartBoxes.end());
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -513,7 +529,7 @@ void Session::drawHeatLegend() {
 std::string Session::statusText() const {
     if (mLesson.steps.empty()) return settingsSummary(mSettings);
     return statusLine(
-        mSettings,
+        mSettings, hiddenNumbers().refs,
         changedSettings(mLesson.steps[static_cast<size_t>(mStep)].settings, mSettings, mBaseLight),
         glm::ivec2(mLayout.scene.size()), mFrameTimeMs);
 }
@@ -545,6 +561,7 @@ InspectorModel Session::model() const {
     m.highlightFetch = mLesson.steps[static_cast<size_t>(mStep)].highlightFetch - 1;
     m.focus = stepFocus(mLesson.steps[static_cast<size_t>(mStep)]);
     m.plays = mLesson.steps[static_cast<size_t>(mStep)].animate.has_value();
+    fillPredictPanel(m);
     return m;
 }
 
@@ -562,7 +579,8 @@ std::string Session::stepJson() const {
         {"title", mLesson.title},
         {"step", mStep + 1},
         {"step_title", mLesson.steps.empty() ? "" : mLesson.steps[mStep].title},
-        {"text", drawnStepText(words.text)},
+        {"text",
+         drawnStepText(questionShown() && filledPredict() ? filledPredict()->ask : words.text)},
         {"words", wordsShownName(words.shown)},
         {"pixel", jsonPair(mPixel)},
         {"point", mPoint ? Json::array({jsonNumber(mPoint->posWs.x), jsonNumber(mPoint->posWs.y),
@@ -576,10 +594,24 @@ std::string Session::stepJson() const {
         {"text_page", mTextPage + 1},
         {"text_pages", mTextPages},
         {"layout", layoutJson(mBoxes)}};
+    // A question's frame and its answer's (DESIGN.md 8b): the roles the question does not draw.
+    if (predictStep()) {
+        Json masked = Json::array();
+        for (const std::string& role : hiddenRoles(hiddenNumbers())) masked.push_back(role);
+        j["predict"] = {{"phase", mRevealed ? "reveal" : "question"}, {"masked", masked}};
+        // The question's choices; the answer only in the answer's frame.
+        if (std::optional<FilledPredict> f = filledPredict(); f && !mRevealed) {
+            j["predict"]["choices"] = f->choices;
+        } else if (f) {
+            j["predict"]["answer"] = f->answer;
+            j["predict"]["answer_line"] = answerLine(*mLesson.steps[mStep].predict, *f, mTyped);
+        }
+    }
     if (!mLesson.steps.empty()) j["focus"] = focusName(stepFocus(mLesson.steps[mStep]));
     if (mMotion) j["motion"] = motionJson(*mMotion);
     if (mTrace) {
-        j.update(drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole));
+        j.update(
+            drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole, mSceneTexels));
         // Where the cells are on the frame (texelCellRect of this view and rect gives a cell).
         InspectorLayout layout = stepLayout();
         if (!layout.inspector.empty() && !mDrawnTexels.empty()) {

@@ -22,6 +22,7 @@
 #include "lesson/lesson.h"
 #include "lesson/lesson_catalogue.h"
 #include "lesson/lesson_pick.h"
+#include "lesson/lesson_predict.h"
 #include "overlay/flicker_trace.h"
 #include "overlay/inspector.h"
 #include "render/gl_objects.h"
@@ -32,6 +33,8 @@ namespace pcf {
 
 // The smallest frame the scene view and the inspector fit into side by side.
 constexpr glm::ivec2 MIN_SESSION_SIZE{320, 180};
+// A text page past any step's last: compose() shows the last page there is.
+constexpr int LAST_TEXT_PAGE = 1 << 20;
 
 // A frame of an animation (app/animation.h): what is swept and its value now, in words ("The sun
 // sinks from 40 to 6 degrees above the horizon: now 23.4."), the state the sweep started from,
@@ -61,7 +64,11 @@ class Session {
 
     // Loads a lesson (throws InputError) and goes to its first step.
     void loadLesson(const std::string& path);
+    // Shows a lesson made in memory (an exercise's items: app/exercise.h), from its first step.
+    void setLesson(Lesson lesson);
     const Lesson& lesson() const { return mLesson; }
+    // The title the frame shows (an exercise's carries its score).
+    void setTitle(std::string title) { mLesson.title = std::move(title); }
 
     // Steps: the step's settings and pixel replace the current ones.
     int step() const { return mStep; }
@@ -118,6 +125,26 @@ class Session {
     void setTextPage(int page) { mTextPage = std::max(0, page); }
     bool nextPage();
     bool previousPage();
+    // A predict step (lesson.h: StepPredict) shows its question until it is revealed: the
+    // numbers its answer needs hidden (app/predict.h), the question in the step panel. goToStep
+    // starts every predict step unrevealed; nextPage() past the question's last page reveals it,
+    // and previousPage() on the answer's first page goes back to the question's last.
+    bool predictStep() const;
+    bool questionShown() const { return predictStep() && !mRevealed; }
+    bool revealed() const { return mRevealed; }
+    void setRevealed(bool on);
+    // What the viewer's keyboard typed as the answer: shown under the question, judged in the
+    // reveal's answer line.
+    const std::string& typed() const { return mTyped; }
+    void setTyped(std::string text) { mTyped = std::move(text); }
+    // The question's hint says how to answer: typing (the viewer) or the next page (frames).
+    void setTypedAnswers(bool on) { mTypedAnswers = on; }
+    // The question filled from the current trace; nullopt on a step without one or off the
+    // receivers.
+    std::optional<FilledPredict> filledPredict() const;
+    // The numbers the frame hides now (none once revealed).
+    HiddenNumbers hiddenNumbers() const;
+
     // The frame time the status line shows; negative: none (exports, screenshots).
     void setFrameTimeMs(double ms);
     // The window's frames (the viewer sets it): only they say which keys turn a page, restore a
@@ -139,6 +166,8 @@ class Session {
     std::vector<uint8_t> readFrame() const;  // RGBA8, rows top-down
 
     const std::optional<Trace>& trace() const { return mTrace; }
+    // The shadow map the last compose() traced on.
+    const ShadowMap& shadowMap() const { return mMap; }
     // The current step's text with its placeholders filled from the trace, or what the frame
     // shows in its place (step_words.h: a note, or a caption where a claim fails on this frame).
     std::string stepText() const;
@@ -233,10 +262,16 @@ class Session {
     OffscreenTarget mHeat;  // the heat map, rows top-down, blitted over the scene
     int mTextPage = 0;
     int mTextPages = 1;
+    bool mRevealed = false;  // a predict step's answer is shown
+    std::string mTyped;      // the answer typed in the viewer
+    bool mTypedAnswers = false;
+    // The step panel's question or answer (session_predict.cpp).
+    void fillPredictPanel(InspectorModel& m) const;
     std::vector<LayoutBox> mBoxes;
     std::vector<glm::ivec2> mDrawnTexels;  // what the last composed frame drew (FramePlan)
     std::vector<int> mDrawnFetches;
     bool mFormulaWhole = false;
+    std::vector<glm::ivec2> mSceneTexels;  // the texels tinted on the scene (FramePlan)
     double mFrameTimeMs = -1.0;
     InspectorLayout mLayout;
 

@@ -10,6 +10,7 @@
 #include "kernel/trace_explain.h"
 #include "lesson/lesson_keys.h"
 #include "lesson/lesson_pick.h"
+#include "overlay/inspector.h"
 
 namespace pcf {
 
@@ -84,12 +85,15 @@ std::string statusValue(const StatusPart& part, const LessonSettings& s) {
 
 }  // namespace
 
-std::string settingsSummary(const LessonSettings& s) {
+std::string settingsSummary(const LessonSettings& s, bool hideBiasAmounts) {
     std::string line;
     for (const StatusPart& part : STATUS_PARTS) {
         if (part.shows && !part.shows(s)) continue;
         std::string value = statusValue(part, s);
         if (value == part.quiet) continue;
+        const ParamInfo* p = part.text ? nullptr : findParam(part.key);
+        bool amount = p && p->group == ParamGroup::Bias && part.key != "bias";
+        if (hideBiasAmounts && amount) value = HIDDEN_NUMBER;
         line += std::string(part.before) + (part.bare ? "" : value);
     }
     return line;

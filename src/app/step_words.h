@@ -20,7 +20,8 @@ namespace pcf {
 
 // "pcf-gather N=3   bias constant 0.02   cull back   map 256 32f": the state, in the status
 // line's words (with "sun -5 deg" when the keys moved the sun from the scene's).
-std::string settingsSummary(const LessonSettings& s);
+// hideBiasAmounts: the bias mode's amounts as "?" (a question that hides the ref: predict.h).
+std::string settingsSummary(const LessonSettings& s, bool hideBiasAmounts = false);
 
 // Every setting of `live` that differs from the step's (`step`), as "key value" in the lesson
 // files' words ("constant_bias 0.005", "cull front"), in the parameter table's order (but the

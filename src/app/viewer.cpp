@@ -18,6 +18,7 @@
 #include "app/render_options.h"
 #include "app/session.h"
 #include "app/step_player.h"
+#include "app/viewer_answer.h"
 #include "app/viewer_split.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
@@ -53,6 +54,7 @@ class Viewer {
         auto it = std::find(mLessons.begin(), mLessons.end(), o.lesson);
         mLessonIndex = it == mLessons.end() ? -1 : static_cast<int>(it - mLessons.begin());
         mPlayer.afterChange();
+        mSession.setTypedAnswers(true);
     }
 
     Session& session() { return mSession; }
@@ -60,6 +62,12 @@ class Viewer {
 
     void press(KeyPress k) {
         bool shift = (k.mods & GLFW_MOD_SHIFT) != 0;
+        // A question's typed answer (its choices' letters before C's split view), R and the
+        // exercise mode (viewer_answer.h).
+        if (mAnswers.press(mSession, k)) {
+            mSplit.follow(mSession);
+            return;
+        }
         if (mSplit.press(mSession, k.key)) return;
         // An animation step's own keys (step_player.h) first; around the others the player
         // puts the step's state back and shows its frame on the new one.
@@ -114,9 +122,8 @@ class Viewer {
         mSplit.follow(mSession);
         // The scene point the click pinned, as a lesson's `point` key takes it (lesson.h).
         if (const std::optional<ScenePoint>& q = mSession.point()) {
-            std::printf("pixel (%d, %d): point = [%.4f, %.4f, %.4f]\n", mSession.pixel().x,
-                        mSession.pixel().y, static_cast<double>(q->posWs.x),
-                        static_cast<double>(q->posWs.y), static_cast<double>(q->posWs.z));
+            std::printf("pixel (%d, %d): %s\n", mSession.pixel().x, mSession.pixel().y,
+                        pointKeyText(q->posWs).c_str());
             std::fflush(stdout);
         }
     }
@@ -126,6 +133,7 @@ class Viewer {
     void exportFrame() {
         std::string dir = "pcfscope-frames";
         std::string base = frameStem(mSession.lesson().name, mSession.step() + 1);
+        if (mSession.predictStep() && mSession.revealed()) base += "-reveal";
         if (mSession.textPage() > 0) base += "-page" + std::to_string(mSession.textPage() + 1);
         std::string stem = freeStem(dir, base);
         try {
@@ -257,6 +265,7 @@ class Viewer {
     Session mSession;
     StepPlayer mPlayer{mSession};
     ViewerSplit mSplit;
+    ViewerAnswers mAnswers;
     std::vector<std::string> mLessons;
     int mLessonIndex = -1;
     bool mQuit = false;
