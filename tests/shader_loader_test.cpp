@@ -190,7 +190,7 @@ void main() {
     // uv from the pixel with power-of-two arithmetic only, so the CPU can repeat it exactly.
     vec2 uv = gl_FragCoord.xy * (1.0f / 32.0f) - vec2(0.125f);
     PcfParams prm = PcfParams(uMethod, uKernel, 1.0f, pcfPixelRotation(ivec2(gl_FragCoord.xy)), 0, 1.0f, 0.0f,
-                              0.0f, 0.0f);
+                              0.0f, 0.0f, 0.0f, 1.0e-7f, vec2(40.0f, 5.0f), 3.0e-5f);
     outVisibility = pcfFilter(uMap, uv, uRef, prm);
 }
 )";

@@ -73,6 +73,7 @@ struct ParamUniformLocations {
     std::vector<GLint> params;
     GLint penumbraScale = -1;
     GLint pcssDepthRange = -1;
+    GLint evsmExponents = -1;
     GLint pcssReciprocals = -1;  // pcss: the table of 1 / k (pcf_prelude.h)
 };
 ParamUniformLocations paramUniformLocations(GLuint program);
@@ -124,5 +125,9 @@ struct PcfSamplers {
 };
 PcfSamplers createPcfSamplers();
 void bindShadowMap(GLuint program, GLuint depthTexture, const PcfSamplers& samplers);
+// The same with the map the kernel reads apart from the depth texture the comparison sampler
+// takes: a moments map (unit 0, nearest) beside the light's depths (unit 1, compare).
+void bindShadowMap(GLuint program, GLuint mapTexture, GLuint depthTexture,
+                   const PcfSamplers& samplers);
 
 }  // namespace pcf
