@@ -1,5 +1,7 @@
 // The moment methods (issue 33): vsm, evsm2, evsm4, msm and msm-hausdorff, through
 // `pcfscope trace --map` as a user runs them, and the kernel's moments pass and estimates.
+#include "kernel/moments.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 
 #include "json_lite.h"
 #include "kernel/methods.h"
-#include "kernel/moments.h"
 #include "kernel/settings.h"
 #include "kernel/trace.h"
 #include "render/image_io.h"
@@ -82,10 +83,8 @@ TEST_F(MomentsTest, ExponentsAreClampedToTheFormatAndTheTraceSaysSo) {
     jsonlite::Value j32 = trace(file, "--method evsm4 --evsm-exponents 50,50");
     EXPECT_FLOAT_EQ(static_cast<float>(j32["moments"]["exponents_used"][0].number), 42.0f);
     EXPECT_FLOAT_EQ(static_cast<float>(j32["moments"]["exponents_used"][1].number), 42.0f);
-    EXPECT_NE(mLastErr.find("--evsm-exponents 50,50 used as 42,42"), std::string::npos)
-        << mLastErr;
-    jsonlite::Value j16 =
-        trace(file, "--method evsm4 --evsm-exponents 50,50 --moment-format 16f");
+    EXPECT_NE(mLastErr.find("--evsm-exponents 50,50 used as 42,42"), std::string::npos) << mLastErr;
+    jsonlite::Value j16 = trace(file, "--method evsm4 --evsm-exponents 50,50 --moment-format 16f");
     EXPECT_FLOAT_EQ(static_cast<float>(j16["moments"]["exponents_used"][0].number), 5.54f);
     EXPECT_FLOAT_EQ(static_cast<float>(j16["moments"]["exponents_used"][1].number), 5.54f);
     EXPECT_EQ(j16["map"]["texels"].string, "moments4-16f");
@@ -97,10 +96,10 @@ TEST_F(MomentsTest, ExponentsAreClampedToTheFormatAndTheTraceSaysSo) {
 
 TEST_F(MomentsTest, BadMomentOptionsExitTwoWithOneLine) {
     std::string file = twoColumnMap(0.2f, 0.5f);
-    for (const char* args : {"--method evsm2 --evsm-exponents 40", "--method evsm2 --evsm-exponents 0,5",
-                             "--method vsm --lbr 1.5", "--method msm --moment-bias -1",
-                             "--method vsm --moment-format 8f", "--method vsm --kernel 4",
-                             "--method vsm --bias receiver-plane"}) {
+    for (const char* args : {"--method evsm2 --evsm-exponents 40",
+                             "--method evsm2 --evsm-exponents 0,5", "--method vsm --lbr 1.5",
+                             "--method msm --moment-bias -1", "--method vsm --moment-format 8f",
+                             "--method vsm --kernel 4", "--method vsm --bias receiver-plane"}) {
         auto r = runPcfscope("trace --map " + file + " --uv 0.5,0.5 --z 0.6 " + args);
         EXPECT_EQ(r.exitCode, 2) << args;
         EXPECT_EQ(testutil::lineCount(r.err), 1) << args << ": " << r.err;
@@ -131,7 +130,8 @@ TEST(Moments, ADenseSweepOfDepthsGivesNoInfOrNan) {
                 float z = static_cast<float>(k) / 512.0f;
                 vec2 uv(u(rng), u(rng));
                 float v = filterVisibility(moments, uv, z, prm);
-                ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << m.name << " " << bits << " z " << z << ": " << v;
+                ASSERT_TRUE(v >= 0.0f && v <= 1.0f)
+                    << m.name << " " << bits << " z " << z << ": " << v;
             }
         }
     }

@@ -30,14 +30,13 @@ std::string readText(const Trace& tr) {
     std::ostringstream s;
     s << "The moments pass blurred every texel's moments over " << tr.params.kernel << " x "
       << tr.params.kernel << " texels (" << weightsName(tr.params.weights)
-      << "); one bilinear read at p = " << formatPair(tr.pos.p) << " gives m = (" << sci(e.moments.x)
-      << ", " << sci(e.moments.y);
+      << "); one bilinear read at p = " << formatPair(tr.pos.p) << " gives m = ("
+      << sci(e.moments.x) << ", " << sci(e.moments.y);
     if (channels == 4) s << ", " << sci(e.moments.z) << ", " << sci(e.moments.w);
     s << ")" << (isMsm(tr) ? " after the moment bias" : "") << " in "
       << texelKindName(tr.map.texels) << ".";
     if (info.warps > 0) {
-        s << " The depths were warped to exp(" << n4(tr.params.evsmExponents.x)
-          << " (2z - 1))";
+        s << " The depths were warped to exp(" << n4(tr.params.evsmExponents.x) << " (2z - 1))";
         if (info.warps == 2) s << " and -exp(-" << n4(tr.params.evsmExponents.y) << " (2z - 1))";
         s << " first.";
     }
@@ -48,15 +47,16 @@ std::string readText(const Trace& tr) {
 std::string boundText(const Trace& tr) {
     const PcfMomentEstimate& e = tr.moments;
     std::ostringstream s;
-    s << "The receiver's t = " << sci(e.receiver) << ". Chebyshev: p_max = s^2 / (s^2 + (t - mean)^2)"
+    s << "The receiver's t = " << sci(e.receiver)
+      << ". Chebyshev: p_max = s^2 / (s^2 + (t - mean)^2)"
       << " = " << n4(e.bound) << (e.receiver <= e.mean ? " (t at or before the mean: 1)" : "")
       << ".";
     if (methodInfo(tr.params.method).warps == 2) {
         s << " The negative warp's bound: " << n4(e.negBound) << "; the smaller is taken.";
     }
     if (tr.params.lbr > 0.0f) {
-        s << " Light-bleeding reduction linstep(" << n4(tr.params.lbr) << ", 1, p) = "
-          << n4(e.visibility) << ".";
+        s << " Light-bleeding reduction linstep(" << n4(tr.params.lbr)
+          << ", 1, p) = " << n4(e.visibility) << ".";
     }
     return s.str();
 }
@@ -75,8 +75,7 @@ std::string reconstructText(const Trace& tr) {
           << n4(e.weights.w) << ").";
     } else {
         s << "z_f " << n4(e.points.x) << " (weight " << n4(e.weights.x) << "), " << n4(e.points.y)
-          << " (" << n4(e.weights.y) << "), " << n4(e.points.z) << " (" << n4(e.weights.z)
-          << ").";
+          << " (" << n4(e.weights.y) << "), " << n4(e.points.z) << " (" << n4(e.weights.z) << ").";
     }
     s << " The weight before z_f is the shadow.";
     return s.str();
