@@ -249,12 +249,19 @@ TEST(Methods, ReachIsHalfTheFootprintsWidth) {
     }
 }
 
-// The map a method reads comes from its map pass: every method today reads the depth pass's
-// map, in the depth format asked for.
+// The map a method reads comes from its map pass: the depth pass's map in the depth format
+// asked for, or the moments pass's in the moment format (2 or 4 channels, whatever the depths).
 TEST(Methods, EveryMethodReadsTheDepthMapInTheFormatAsked) {
     for (const MethodInfo& m : allMethods()) {
         for (TexelKind f : {TexelKind::D16, TexelKind::D24, TexelKind::D32F}) {
-            EXPECT_EQ(mapTexelKind(m.id, f), f) << m.name;
+            if (m.mapPass == MapPass::Depth) {
+                EXPECT_EQ(mapTexelKind(m.id, f), f) << m.name;
+                continue;
+            }
+            int channels = m.mapPass == MapPass::Moments2 ? 2 : 4;
+            EXPECT_EQ(texelKindInfo(mapTexelKind(m.id, f, 16)).channels, channels) << m.name;
+            EXPECT_EQ(texelKindInfo(mapTexelKind(m.id, f, 16)).bits, 16) << m.name;
+            EXPECT_EQ(texelKindInfo(mapTexelKind(m.id, f, 32)).bits, 32) << m.name;
         }
     }
 }
