@@ -119,6 +119,28 @@ TEST_F(InputFiles, AFifoIsRefusedWithoutBlocking) {
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
 }
 
+// A claim nested 60,000 deep (120 KB, well under the file limit) overflowed the claim parser's
+// stack in every command that reads a lesson: now one line naming the claim's line, exit 2.
+TEST_F(InputFiles, ADeeplyNestedClaimIsOneLineNotACrash) {
+    for (const std::string& expr :
+         {std::string(60000, '(') + "1" + std::string(60000, ')'), std::string(60000, '-') + "1"}) {
+        std::string lesson = path("deep.toml");
+        std::ofstream(lesson) << "title = \"t\"\nscene = \"box-on-plane\"\n[[step]]\n"
+                                 "title = \"s\"\nclaims = [\"" +
+                                     expr + " = 1\"]\ntext = \"x\"\n";
+        for (const std::string& command :
+             {std::string("lesson check "), "export --size 320x180 -o " + path("frames") + " "}) {
+            testutil::CommandResult r = testutil::runPcfscope(command + lesson);
+            EXPECT_EQ(r.exitCode, 2) << command;
+            EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err.substr(0, 300);
+            EXPECT_NE(r.err.find(lesson + ":5: step 1 claim"), std::string::npos)
+                << r.err.substr(0, 300);
+            EXPECT_NE(r.err.find("nested deeper than 256 levels"), std::string::npos);
+        }
+        EXPECT_FALSE(fs::exists(path("frames")));
+    }
+}
+
 TEST_F(InputFiles, TooLargeFilesAreRefusedBeforeParsing) {
     std::string big = path("big.toml");
     {

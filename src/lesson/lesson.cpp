@@ -619,12 +619,24 @@ class LessonParser {
         Trace trace = traceLookup(
             probe, vec2(0.5f), 0.5f, 0.5f,
             makeParams(step.settings.method, step.settings.kernel, step.settings.radius));
-        std::optional<PlaceholderProblem> problem =
-            checkPlaceholders(step.text, static_cast<int>(trace.taps.size()),
-                              static_cast<int>(trace.fetches.size()), step.compare.parts());
-        if (!problem) return;
-        throw InputError(mSource, textLine(textNode, step.text, problem->offset),
-                         what + " text: " + problem->problem);
+        auto check = [&](std::string_view text) {
+            return checkPlaceholders(text, static_cast<int>(trace.taps.size()),
+                                     static_cast<int>(trace.fetches.size()), step.compare.parts(),
+                                     trace.weights.size);
+        };
+        if (std::optional<PlaceholderProblem> problem = check(step.text)) {
+            throw InputError(mSource, textLine(textNode, step.text, problem->offset),
+                             what + " text: " + problem->problem);
+        }
+        // A claim's placeholders index the same reads: past them is the same mistake.
+        for (const StepClaim& claim : step.claims) {
+            for (const std::string& inside : claimPlaceholders(claim)) {
+                if (std::optional<PlaceholderProblem> problem = check("{" + inside + "}")) {
+                    throw InputError(mSource, claim.line,
+                                     what + " claim \"" + claim.text + "\": " + problem->problem);
+                }
+            }
+        }
     }
 
     // The line of the file holding offset `offset` of a string value. Counting the value's

@@ -32,8 +32,8 @@ AvLibrary loadAvLibrary() {
     void* avformat = openLibrary(PCF_AV_SONAME(avformat, LIBAVFORMAT_VERSION_MAJOR));
     void* swscale = openLibrary(PCF_AV_SONAME(swscale, LIBSWSCALE_VERSION_MAJOR));
     AvLibrary av;
-#define PCF_AV_LOOKUP(library, function)                                                   \
-    av.function = reinterpret_cast<decltype(av.function)>(::dlsym(library, #function));   \
+#define PCF_AV_LOOKUP(library, function)                                                \
+    av.function = reinterpret_cast<decltype(av.function)>(::dlsym(library, #function)); \
     if (!av.function) throw VideoError("FFmpeg's lib" #library " has no " #function);
     PCF_AV_FUNCTIONS(PCF_AV_LOOKUP)
 #undef PCF_AV_LOOKUP

@@ -68,7 +68,11 @@ std::string open(const std::string& path, void*& handle, ImageCodecSpec& spec) {
     if (!in) return OIIO::geterror();
     const OIIO::ImageSpec& s = in->spec();
     auto base = static_cast<OIIO::TypeDesc::BASETYPE>(s.format.basetype);
-    spec = ImageCodecSpec{s.width, s.height, s.depth, s.nchannels, s.deep,
+    spec = ImageCodecSpec{s.width,
+                          s.height,
+                          s.depth,
+                          s.nchannels,
+                          s.deep,
                           base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::FLOAT ||
                               base == OIIO::TypeDesc::DOUBLE,
                           s.format.c_str()};
