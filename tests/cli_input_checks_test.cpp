@@ -175,5 +175,47 @@ TEST_F(CliInputChecks, SizeRangesAreStatedOneWayInTheHelpAndTheError) {
     }
 }
 
+// --light-size means one thing in every command: a directional light's angular diameter in
+// degrees, in the parameter table's [0, 10], 0 the scene light's; a spot light's size is its
+// radius, --light-radius. Values outside the range (nan and inf included) are refused by every
+// command with the table's words and the value as typed; each size given for the other kind of
+// light is refused, not ignored (render used to write it into render.json and ignore it).
+TEST_F(CliInputChecks, LightSizeIsOneThingInEveryCommand) {
+    const std::string range = "--light-size must be in [0, 10] degrees, got ";
+    for (const std::string& command :
+         {std::string("render --scene post-in-sun --method pcss --size 64x36 -o out.png"),
+          std::string("truth --scene post-in-sun --size 16x9 -o out.exr"),
+          std::string("bench --quick --scene post-in-sun --methods pcss -o out")}) {
+        for (const std::string& bad : {"nan", "-1", "-inf", "inf", "11", "10.000000001"}) {
+            expectRefused(command + " --light-size=" + bad, range + bad);
+        }
+        expectRefused(command + " --light-size 0x2", "--light-size must be a decimal number");
+        expectRefused(command + " --light-radius 0.5",
+                      "--light-radius (a spot light's radius) does not apply to a directional "
+                      "light, whose size is its angular diameter");
+    }
+    for (const std::string& command :
+         {std::string("render --scene post-under-spot --method pcss --size 64x36 -o out.png"),
+          std::string("truth --scene post-under-spot --size 16x9 -o out.exr")}) {
+        expectRefused(command + " --light-size 2",
+                      "--light-size (a directional light's angular diameter) does not apply to a "
+                      "spot light, whose size is its radius");
+        expectRefused(command + " --light-radius 101",
+                      "--light-radius must be in [0, 100] world units, got 101");
+    }
+    // stability's pcss sweeps choose their own lights: the option is not offered.
+    expectRefused("stability --quick --light-size 2 -o out", "--light-size");
+}
+
+// A value below a range is printed as typed, never rounded into it: --bound 1e-300 is not "0".
+TEST_F(CliInputChecks, OutOfRangeValuesArePrintedAsGiven) {
+    expectRefused("truth --scene box-on-plane --bound 1e-300 -o t.exr",
+                  "--bound 1e-300 is out of range [1e-06, 1]");
+    expectRefused("render --scene box-on-plane --kernel 9 -o r.png",
+                  "--kernel must be 1..8, got 9");
+    expectRefused("render --scene box-on-plane --slope-max 1.0000001 -o r.png",
+                  "--slope-max must be in [0, 1] light depth units, got 1.0000001");
+}
+
 }  // namespace
 }  // namespace pcf

@@ -91,18 +91,6 @@ void requireIntRange(const std::string& option, int v, int lo, int hi) {
     }
 }
 
-void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, float radius) {
-    // The kernel's own checks, asked of a method that uses the value.
-    if (kernelGiven) {
-        if (auto why = cliParamsProblem(makeParams(PCF_NAIVE, kernel))) throw UsageError(*why);
-    }
-    if (radiusGiven) {
-        if (auto why = cliParamsProblem(makeParams(PCF_POISSON, MIN_KERNEL, radius))) {
-            throw UsageError(*why);
-        }
-    }
-}
-
 std::vector<std::string> splitList(const std::string& option, const std::string& text) {
     std::vector<std::string> items;
     size_t start = 0;
@@ -142,8 +130,8 @@ std::optional<std::string> cliParamsProblem(const PcfParams& prm) {
     return std::nullopt;
 }
 
-std::optional<std::string> cliBiasProblem(const ShadowSettings& s) {
-    if (std::optional<ParamProblem> p = checkBiasSettings(s)) return cliWords(*p);
+std::optional<std::string> cliRangeProblem(const ShadowSettings& s) {
+    if (std::optional<ParamProblem> p = checkSettingRanges(s)) return cliWords(*p);
     return std::nullopt;
 }
 

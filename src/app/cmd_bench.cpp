@@ -232,14 +232,17 @@ constexpr std::uint64_t BENCH_BYTES_PER_PIXEL = 160;
 
 // --truth area: the truth integrates over the light's disk: a sun's, the one pcss filters for
 // (scene/pcss.h effectiveLightSizeDeg: --light-size, else the scene's, else the sun's), or a
-// spot's of the scene's radius (light_visibility.h).
+// spot's of --light-radius or the scene's radius (light_visibility.h). Either size given for the
+// other kind of light is refused, whichever truth.
 void applyTruth(const BenchCommandOptions& o, BenchPlan& plan) {
     if (o.truth != "hard" && o.truth != "area") {
         throw UsageError("unknown --truth '" + o.truth + "' (known: hard, area)");
     }
     plan.config.options.areaTruth = o.truth == "area";
     Light& light = plan.config.scene.light;
+    checkLightSize(light, plan.config.options.base);
     if (!plan.config.options.areaTruth) return;
+    light = applyLightSize(light, plan.config.options.base);
     if (light.type == LightType::Spot) {
         if (!hasSize(light)) {
             throw UsageError("--truth area takes a light with a size (scene '" +

@@ -141,6 +141,7 @@ int runRender(const RenderCommandOptions& o) {
     // Every check first: nothing is written unless all of it can be.
     RenderSettings settings = o.render.settings();
     Scene scene = o.render.loadScene();
+    checkLightSize(scene.light, settings);
     if (o.out.empty() && o.rawDir.empty())
         throw UsageError("render needs -o FILE.png or --raw DIR");
     requireIntRange("--time", o.timeRepeats, 0, 10000);

@@ -398,7 +398,9 @@ Command addStabilityCommand(CLI::App& app) {
     o->render.size = "480x270";
     o->render.defaults.mapSize = 512;
     o->render.frameRange.min = glm::ivec2(MIN_STABILITY_FRAME_SIDE);
-    o->render.addTo(sub, STABILITY_DEFAULT_SCENE);
+    // The pcss sweeps set their lights' sizes themselves (the suns of pcss-noise, the presets'
+    // lights): a light size option would be read by nothing.
+    o->render.addTo(sub, STABILITY_DEFAULT_SCENE, {"light_size", "light_radius"});
     // The single-lookup options of the shared set do not apply here (parseOptions says so when
     // given): out of --help, which listed them as if they did.
     for (const char* single : SINGLE_LOOKUP_OPTIONS) {

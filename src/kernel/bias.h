@@ -80,6 +80,6 @@ std::string biasNameList();
 // interpolated is a hard comparison (nearest only).
 std::optional<std::string> validateBias(int mode, int method);
 
-// Their ranges are the parameter table's: checkBiasSettings (kernel/settings.h).
+// Their ranges are the parameter table's: checkSettingRanges (kernel/settings.h).
 
 }  // namespace pcf

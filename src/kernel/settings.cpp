@@ -1,6 +1,7 @@
 #include "kernel/settings.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <span>
 #include <sstream>
@@ -30,7 +31,11 @@ const ParamInfo PARAMS[] = {
      "poisson, pcss: rotate the disk per pixel", true},
     {"light_size", &ShadowSettings::lightSize, ParamGroup::Filter, "", "degrees", 0.0,
      MAX_LIGHT_SIZE_DEG, false,
-     "pcss: the light's angular diameter in degrees (0: the scene light's, or the sun's 0.53)",
+     "pcss, the area-light truth: a directional light's angular diameter in degrees (0: the "
+     "scene light's; pcss takes the sun's 0.53 when it has none)", true},
+    {"light_radius", &ShadowSettings::lightRadius, ParamGroup::Filter, "", "world units", 0.0,
+     MAX_LIGHT_RADIUS, false,
+     "pcss, the area-light truth: a spot light's radius in world units (0: the scene light's)",
      true},
     {"weights", NamedField<int>{&ShadowSettings::weights, weightsName, weightsFromName,
         [] { return std::string("box, binomial, gaussian"); }, "weights"}, ParamGroup::Filter,
@@ -122,18 +127,90 @@ std::string settingText(const ParamInfo& p, const ShadowSettings& s) {
         p.field);
 }
 
-std::optional<ParamProblem> checkBiasSettings(const ShadowSettings& s) {
+std::string exactNumberText(double v) {
+    char text[32];
+    auto [end, ec] = std::to_chars(text, text + sizeof text, v);
+    return ec == std::errc() ? std::string(text, end) : numberText(v);
+}
+
+std::optional<ParamProblem> paramRangeProblem(const ParamInfo& p, double v,
+                                              std::string_view given) {
+    bool whole = std::holds_alternative<int ShadowSettings::*>(p.field);
+    if (!whole && !std::holds_alternative<float ShadowSettings::*>(p.field)) return std::nullopt;
+    bool inside = std::isfinite(v) && (p.minOpen ? v > p.min : v >= p.min) && v <= p.max &&
+                  (!whole || v == std::floor(v));
+    if (inside) return std::nullopt;
+    std::string got = given.empty() ? exactNumberText(v) : std::string(given);
+    if (whole) {
+        return ParamProblem{
+            std::string(p.key), "",
+            " must be " + exactNumberText(p.min) + ".." + exactNumberText(p.max) + ", got " + got};
+    }
+    return ParamProblem{std::string(p.key), "",
+                        " must be in " + std::string(p.minOpen ? "(" : "[") +
+                            exactNumberText(p.min) + ", " + exactNumberText(p.max) + "]" +
+                            (p.unit.empty() ? "" : " ") + std::string(p.unit) + ", got " + got};
+}
+
+std::optional<ParamProblem> checkSettingRanges(const ShadowSettings& s) {
     for (const ParamInfo& p : PARAMS) {
-        const auto* field = std::get_if<float ShadowSettings::*>(&p.field);
-        if (p.group != ParamGroup::Bias || !field) continue;
-        double v = static_cast<double>(s.*(*field));
-        if (std::isfinite(v) && (p.minOpen ? v > p.min : v >= p.min) && v <= p.max) continue;
-        return ParamProblem{std::string(p.key), "",
-                            " must be in " + std::string(p.minOpen ? "(" : "[") +
-                                numberText(p.min) + ", " + numberText(p.max) + "], got " +
-                                numberText(v)};
+        std::optional<ParamProblem> problem;
+        if (const auto* f = std::get_if<float ShadowSettings::*>(&p.field)) {
+            problem = paramRangeProblem(p, static_cast<double>(s.*(*f)));
+        } else if (const auto* i = std::get_if<int ShadowSettings::*>(&p.field)) {
+            problem = paramRangeProblem(p, static_cast<double>(s.*(*i)));
+        }
+        if (problem) return problem;
     }
     return std::nullopt;
+}
+
+namespace {
+
+// A decimal number filling all of `text` (from_chars: no leading +, no hex), or nullopt.
+std::optional<double> decimalNumber(std::string_view text) {
+    double v = 0.0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+    return v;
+}
+
+}  // namespace
+
+std::optional<ParamProblem> setParamFromText(ShadowSettings& s, const ParamInfo& p,
+                                             std::string_view text) {
+    std::string key(p.key);
+    auto problem = [&](std::string after) { return ParamProblem{key, "", std::move(after)}; };
+    return std::visit(
+        [&](const auto& field) -> std::optional<ParamProblem> {
+            using F = std::decay_t<decltype(field)>;
+            if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
+                if (text != "true" && text != "false") {
+                    return problem(" must be true or false, got '" + std::string(text) + "'");
+                }
+                s.*field = text == "true";
+            } else if constexpr (std::is_same_v<F, int ShadowSettings::*> ||
+                                 std::is_same_v<F, float ShadowSettings::*>) {
+                std::optional<double> v = decimalNumber(text);
+                if (!v) {
+                    return problem(" must be a decimal number, got '" + std::string(text) + "'");
+                }
+                if (auto why = paramRangeProblem(p, *v, text)) return why;
+                using T = std::remove_reference_t<decltype(s.*field)>;
+                s.*field = static_cast<T>(*v);
+            } else {
+                auto v = field.fromName(text);
+                if (!v || field.name(*v) != text) {
+                    return ParamProblem{"",
+                                        "unknown " + std::string(field.noun) + " '" +
+                                            std::string(text) + "' (known: " + field.known() + ")",
+                                        ""};
+                }
+                s.*field.field = *v;
+            }
+            return std::nullopt;
+        },
+        p.field);
 }
 
 std::string_view depthFormatName(DepthFormat format) {

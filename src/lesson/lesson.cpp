@@ -304,7 +304,11 @@ class LessonParser {
                 addCompareKey(step.compare, std::string(key.str()), std::move(texts));
             }
             for (int part = 0; part < step.compare.parts(); ++part) {
-                comparePart(step.settings, step.compare, part);
+                LessonSettings s = comparePart(step.settings, step.compare, part);
+                if (std::optional<ParamProblem> why =
+                        mScene ? lightSizeProblem(mScene->light, s) : std::nullopt) {
+                    fail(*node, what + " compare: " + why->text());
+                }
             }
         } catch (const std::invalid_argument& e) {
             fail(*node, what + " " + e.what());
@@ -478,38 +482,22 @@ class LessonParser {
         applyViewKeys(table, what, s);
     }
 
-    // One parameter of the table, by its type: an integer in its range.
+    // One parameter of the table, by its type: an integer, then a number, each in the table's
+    // range (paramRangeProblem: the one range check of the command line, the compare values and
+    // these files).
     void readParam(const toml::node& n, const std::string& what, const ParamInfo& p,
                    int ShadowSettings::*field, LessonSettings& s) const {
-        std::string name = what + " " + std::string(p.key);
-        int64_t v = integer(n, name);
-        if (v < static_cast<int64_t>(p.min) || v > static_cast<int64_t>(p.max)) {
-            fail(n, name + " must be " + formatValue(p.min) + ".." + formatValue(p.max) + ", got " +
-                        std::to_string(v));
+        int64_t v = integer(n, what + " " + std::string(p.key));
+        if (auto why = paramRangeProblem(p, static_cast<double>(v), std::to_string(v))) {
+            fail(n, what + " " + why->text());
         }
         s.*field = static_cast<int>(v);
     }
 
-    // A number: the bias parameters checked as the command line checks them (the kernel's
-    // words are the lesson's keys), the others in their range, stating texels.
     void readParam(const toml::node& n, const std::string& what, const ParamInfo& p,
                    float ShadowSettings::*field, LessonSettings& s) const {
-        std::string name = what + " " + std::string(p.key);
-        double v = number(n, name);
-        if (p.group == ParamGroup::Bias) {
-            float old = s.*field;
-            s.*field = static_cast<float>(v);
-            if (auto why = checkBiasSettings(s)) {
-                s.*field = old;
-                fail(n, what + " " + why->text());
-            }
-            return;
-        }
-        if (!((p.minOpen ? v > p.min : v >= p.min) && v <= p.max)) {
-            fail(n, name + " must be in " + (p.minOpen ? "(" : "[") + formatValue(p.min) + ", " +
-                        formatValue(p.max) + "]" + (p.unit.empty() ? "" : " ") +
-                        std::string(p.unit) + ", got " + formatValue(v));
-        }
+        double v = number(n, what + " " + std::string(p.key));
+        if (auto why = paramRangeProblem(p, v)) fail(n, what + " " + why->text());
         s.*field = static_cast<float>(v);
     }
 
@@ -602,6 +590,13 @@ class LessonParser {
         if (auto why = validateBias(static_cast<int>(s.bias), s.method)) {
             int line = std::max(lines.bias, lines.method);
             throw InputError(mSource, line > 0 ? line : lineOf(step), what + ": " + *why);
+        }
+        // light_size for a spot light, light_radius for a directional one: blamed on the key.
+        if (std::optional<ParamProblem> why =
+                mScene ? lightSizeProblem(mScene->light, s) : std::nullopt) {
+            const toml::node* key = step.get(why->setting);
+            throw InputError(mSource, lineOf(key ? *key : static_cast<const toml::node&>(step)),
+                             what + ": " + why->text());
         }
         std::optional<ParamProblem> problem = checkParams(s.ShadowSettings::pcfParams());
         if (!problem) return;

@@ -5,8 +5,6 @@
 
 namespace pcf {
 
-static_assert(MAX_LIGHT_SIZE_DEG == MAX_ANGULAR_DIAMETER_DEG);
-
 float effectiveLightSizeDeg(const Light& light, float lightSizeDeg) {
     if (lightSizeDeg > 0.0f) return lightSizeDeg;
     if (light.type == LightType::Directional && light.angularDiameterDeg > 0.0f) {
@@ -56,9 +54,9 @@ float penumbraScale(const Light& light, const glm::mat4& shadowClipFromWorld, in
 
 PcfParams pcssPcfParams(const Light& light, const glm::mat4& shadowClipFromWorld,
                         const ShadowSettings& s, vec2 rotation) {
-    float scale = s.method == PCF_PCSS
-                      ? penumbraScale(light, shadowClipFromWorld, s.mapSize, s.lightSize)
-                      : 0.0f;
+    float scale = s.method == PCF_PCSS ? penumbraScale(applyLightSize(light, s),
+                                                       shadowClipFromWorld, s.mapSize, s.lightSize)
+                                       : 0.0f;
     PcfParams p = s.pcfParams(rotation, scale);
     if (s.method == PCF_PCSS && light.type == LightType::Spot) {
         glm::vec2 range = pcssDepthRange(shadowClipFromWorld);

@@ -25,7 +25,8 @@ float effectiveLightSizeDeg(const Light& light, float lightSizeDeg);
 //   S = 2 tan(theta / 2) * (2 / L2) / texelWs
 // The matrix, not the scene: a widened depth range or a shifted grid (light.h) changes S with
 // the map.
-// A spot light of radius R (light.radius; lightSizeDeg does not apply): its map is perspective,
+// A spot light of radius R (light.radius; lightSizeDeg does not apply, light_radius does through
+// pcssPcfParams): its map is perspective,
 // and the kernel works in linear distance (pcf_kernel.h, Fernando 2005 with w_light = 2 R):
 //   S = 2 R * P00 * mapSize / 2 = R * P00 * mapSize
 // P00 the projection's x scale (the u row of the matrix, without the part along its w row that
@@ -41,7 +42,8 @@ float penumbraScale(const Light& light, const glm::mat4& shadowClipFromWorld, in
 // orthographic matrix: the kernel's depthNear, depthFar (pcf_kernel.h).
 glm::vec2 pcssDepthRange(const glm::mat4& shadowClipFromWorld);
 
-// The settings' kernel parameters, with pcss's penumbraScale for this light and map.
+// The settings' kernel parameters, with pcss's penumbraScale for this light (its size the
+// settings' where given: light.h applyLightSize) and map.
 PcfParams pcssPcfParams(const Light& light, const glm::mat4& shadowClipFromWorld,
                         const ShadowSettings& s, vec2 rotation = vec2(1.0f, 0.0f));
 
