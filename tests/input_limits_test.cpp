@@ -117,6 +117,18 @@ TEST_F(InputFiles, AFifoIsRefusedWithoutBlocking) {
     EXPECT_THROW(parseSceneFile(fifo), InputError);
     EXPECT_THROW(readDepthImage(fifo), ImageError);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+    // A lesson's chart that is a FIFO is said to be one, not "not found".
+    ASSERT_EQ(mkfifo(path("chart.csv").c_str(), 0644), 0);
+    std::ofstream(path("chart.toml")) << "title = \"t\"\nscene = \"box-on-plane\"\n[[step]]\n"
+                                         "title = \"s\"\nchart = \"chart.csv\"\ntext = \"x\"\n";
+    try {
+        parseLessonFile(path("chart.toml"));
+        ADD_FAILURE() << "a FIFO chart was accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  path("chart.toml") + ":5: step 1 chart 'chart.csv' is not a regular file (a " +
+                      "FIFO, device or socket) (looked at " + path("chart.csv") + ")");
+    }
 }
 
 // A claim nested 60,000 deep (120 KB, well under the file limit) overflowed the claim parser's

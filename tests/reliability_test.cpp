@@ -128,7 +128,8 @@ TEST_F(Reliability, VerifyRecomputesRefAndChecksTheDepthFormat) {
     std::string raw = rawCopy();
     auto good = runPcfscope("verify " + raw);
     EXPECT_EQ(good.exitCode, 0) << good.out << good.err;
-    EXPECT_NE(good.out.find("recomputed from depth and bias: as rendered"), std::string::npos)
+    EXPECT_NE(good.out.find("recomputed from position, normal and bias: as rendered"),
+              std::string::npos)
         << good.out;
 
     setJson(raw, "bias", "\"none\"");
@@ -211,11 +212,32 @@ TEST_F(Reliability, AFullDiskFailsEveryWriterAndLeavesNothing) {
                       std::string::npos)
                 << bytes << ": " << cmd << "\n"
                 << r.err;
+            // The file named is the one asked for, not its copy in a scratch folder.
+            EXPECT_EQ(r.err.find(".pcfscope-"), std::string::npos) << cmd << "\n" << r.err;
             EXPECT_TRUE(leftovers() == std::vector<std::string>{"out"})
                 << bytes << ": " << cmd << " left " << leftovers().back();
             fs::remove_all(out);
         }
     }
+}
+
+// animate draws its progress on one line, redrawn in place: an error in the middle (here the disk
+// fills at the third PNG) starts a line of its own instead of running on after "2/3".
+TEST_F(Reliability, AnErrorDuringAnimateIsALineOfItsOwn) {
+    fs::path out = mDir / "out";
+    fs::create_directory(out);
+    // Two 320x180 frames' PNGs (about 27 KB each) fit, the third does not.
+    std::string env = "PCF_FULL_DISK_DIR=" + out.string() +
+                      " PCF_FULL_DISK_BYTES=60000 LD_PRELOAD=" + PCFSCOPE_FULL_DISK_SHIM +
+                      " ASAN_OPTIONS=verify_asan_link_order=0";
+    auto r = runPcfscope(
+        "animate 13 --step 3 --frames 3 --size 320x180 --png " + (out / "p").string(), env);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    size_t error = r.err.find("pcfscope: ");
+    ASSERT_NE(error, std::string::npos) << r.err;
+    ASSERT_GT(error, 0u) << "no progress before the error: " << r.err;
+    EXPECT_EQ(r.err[error - 1], '\n') << r.err;
+    EXPECT_NE(r.err.find("No space left on device", error), std::string::npos) << r.err;
 }
 
 // Standard output is checked like a file: a full one is an error, not a success.

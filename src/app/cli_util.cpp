@@ -1,8 +1,10 @@
 #include "app/cli_util.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
@@ -118,6 +120,21 @@ std::vector<int> parseIntList(const std::string& option, const std::string& text
         }
     }
     return values;
+}
+
+namespace {
+
+std::atomic<bool>& progressLineOpen() {
+    static std::atomic<bool> open{false};
+    return open;
+}
+
+}  // namespace
+
+void setProgressLineOpen(bool open) { progressLineOpen() = open; }
+
+void endProgressLine() {
+    if (progressLineOpen().exchange(false)) std::fputc('\n', stderr);
 }
 
 std::string cliWords(const ParamProblem& problem) {

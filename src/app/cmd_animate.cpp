@@ -46,6 +46,7 @@ struct AnimateOptions {
     std::string point;
     std::string compare = "auto";
     int compareKernel = 3;
+    CLI::Option* compareKernelOption = nullptr;  // given or not
     std::vector<std::string> videos;
     std::string pngDir;
     bool force = false;
@@ -85,10 +86,21 @@ std::optional<CompareSpec> splitSpecOf(const AnimateOptions& o, const LessonSett
     }
 }
 
+// --compare-kernel given for a comparison that has no kernel (none, a split view, nearest) would
+// change nothing: refused, not ignored.
+int withCompareKernel(const AnimateOptions& o, int method) {
+    if (o.compareKernelOption->count() == 0 || (method >= 0 && methodInfo(method).usesKernel)) {
+        return method;
+    }
+    throw UsageError("--compare-kernel is for a comparison method with a kernel; " +
+                     (method < 0 ? "--compare " + o.compare + " draws no second curve"
+                                 : std::string(methodInfo(method).name) + " has none"));
+}
+
 // The comparison curve's method: a method id, or -1 for none. auto: defaultCompareMethod.
 int compareMethodOf(const AnimateOptions& o, const LessonSettings& step) {
-    if (o.compare == "none" || isSplitCompare(o.compare)) return -1;
-    if (o.compare == "auto") return defaultCompareMethod(step.method);
+    if (o.compare == "none" || isSplitCompare(o.compare)) return withCompareKernel(o, -1);
+    if (o.compare == "auto") return withCompareKernel(o, defaultCompareMethod(step.method));
     std::optional<int> m = methodFromName(o.compare);
     if (!m) {
         throw UsageError("--compare: unknown method '" + o.compare + "' (known: auto, none, " +
@@ -98,7 +110,7 @@ int compareMethodOf(const AnimateOptions& o, const LessonSettings& step) {
         throw UsageError("--compare-kernel " + std::to_string(o.compareKernel) + ": " + o.compare +
                          " takes " + kernelSizesText(*m));
     }
-    return *m;
+    return withCompareKernel(o, *m);
 }
 
 struct VideoOut {
@@ -116,6 +128,7 @@ void progressBar(int done, int total, double seconds) {
     std::fprintf(stderr, "\ranimate [%s] %d/%d  %.1f frames/s", bar.c_str(), done, total,
                  seconds > 0.0 ? done / seconds : 0.0);
     if (done == total) std::fprintf(stderr, "\n");
+    setProgressLineOpen(done != total);  // an error meanwhile starts a line of its own
 }
 
 // Checks every output before any work and opens the videos under their scratch names.
@@ -213,6 +226,21 @@ EncodeTimes finishVideos(std::vector<VideoOut>& videos, OutputFiles& outputs) {
     return t;
 }
 
+// The step exists and shows the scene (no sweep moves a chart), and --snap goes with the sweep
+// it snaps: options that would change nothing are refused, not ignored.
+void checkSweptStep(const AnimateOptions& o, AnimationSweep sweep, const Lesson& lesson) {
+    if (o.snap && sweep != AnimationSweep::Light) {
+        throw UsageError("--snap is for --sweep light (it snaps the creeping texel grid), not " +
+                         o.sweep);
+    }
+    requireIntRange("--step", o.step, 1, static_cast<int>(lesson.steps.size()));
+    if (!lesson.steps[static_cast<size_t>(o.step - 1)].chart.empty()) {
+        throw UsageError("lesson step " + std::to_string(o.step) +
+                         " shows a chart, which no sweep moves; animate a step that shows the "
+                         "scene");
+    }
+}
+
 int runAnimate(AnimateOptions o) {
     glm::ivec2 size = parseSize("--size", o.size, {MIN_SESSION_SIZE});
     std::optional<AnimationSweep> sweep = animationSweepFromName(o.sweep);
@@ -224,7 +252,7 @@ int runAnimate(AnimateOptions o) {
     requireIntRange("--fps", o.fps, 1, 60);
     std::string path = resolveLesson(o.lesson);
     Lesson lesson = loadLessonChecked(path);
-    requireIntRange("--step", o.step, 1, static_cast<int>(lesson.steps.size()));
+    checkSweptStep(o, *sweep, lesson);
     const LessonSettings& stepSettings = lesson.steps[static_cast<size_t>(o.step - 1)].settings;
     int compare = compareMethodOf(o, stepSettings);
     std::optional<CompareSpec> split = splitSpecOf(o, stepSettings);
@@ -297,7 +325,8 @@ Command addAnimateCommand(CLI::App& app) {
         "the flicker trace's second method (default auto: nearest, or pcf-gather 3 when the step's "
         "method is nearest; none: no second curve); or KEY=V1,V2[,V3] (bias=none,constant,slope): "
         "a split view of 2 or 3 parts, one curve each");
-    sub->add_option("--compare-kernel", o->compareKernel, "its kernel size (default 3)");
+    o->compareKernelOption =
+        sub->add_option("--compare-kernel", o->compareKernel, "its kernel size (default 3)");
     sub->add_option(
         "-o,--out", o->videos,
         "video files, .mp4 and/or .gif (default pcfscope-frames/LESSON-stepNN-SWEEP.mp4)");

@@ -76,7 +76,7 @@ LessonRender lessonRenderOf(const RenderCommandOptions& o, const RenderSettings&
 
 // The files of a --raw folder.
 struct RawFiles {
-    std::string shadow, lightSpace, visibility, positions, receiver, settings;
+    std::string shadow, lightSpace, visibility, positions, normals, receiver, settings;
 };
 
 // The --raw folder's files, each added to `outputs`.
@@ -85,9 +85,10 @@ RawFiles rawFilesIn(const std::string& rawDir, OutputFiles& outputs) {
     outputs.addDirectory("--raw", dir);
     RawFiles raw{(dir / "shadowmap.exr").string(),  (dir / "lightspace.exr").string(),
                  (dir / "visibility.exr").string(), (dir / "positions.exr").string(),
-                 (dir / "dzduv.exr").string(),      (dir / "render.json").string()};
-    for (const std::string& p :
-         {raw.shadow, raw.lightSpace, raw.visibility, raw.positions, raw.receiver, raw.settings}) {
+                 (dir / "normals.exr").string(),    (dir / "dzduv.exr").string(),
+                 (dir / "render.json").string()};
+    for (const std::string& p : {raw.shadow, raw.lightSpace, raw.visibility, raw.positions,
+                                 raw.normals, raw.receiver, raw.settings}) {
         outputs.add("--raw", p);
     }
     return raw;
@@ -107,7 +108,7 @@ void printCameraTiming(SceneRenderer& renderer, const RenderSettings& settings, 
 
 // The intermediate buffers of the rendered frame, as EXR, and its settings as JSON.
 void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderSettings& settings,
-                     glm::ivec2 size) {
+                     const Scene& scene, glm::ivec2 size) {
     writeDepthImage(raw.shadow, renderer.readShadowMap());
     std::vector<float> ls = renderer.readLightSpace();
     writeExr(raw.lightSpace, size.x, size.y, 4, ls, {"R", "G", "B", "A"});
@@ -115,9 +116,13 @@ void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderS
     writeExr(raw.visibility, size.x, size.y, 1, vis, {"Y"});
     std::vector<float> pos = renderer.readPositions();
     writeExr(raw.positions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
+    std::vector<float> normals = renderer.readNormals();
+    writeExr(raw.normals, size.x, size.y, 4, normals, {"R", "G", "B", "A"});
     std::vector<float> receiver = renderer.readReceiver();
     writeExr(raw.receiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
-    writeTextFile(raw.settings, settingsJson(settings, renderer.pcfParams(settings)));
+    // scene.frag's uShadowClipFromWorld and uShadowTexelWs (SceneRenderer::drawCameraPass).
+    RawLookupFrame frame{renderer.shadowClipFromWorld(), shadowTexelWs(scene, settings.mapSize)};
+    writeTextFile(raw.settings, settingsJson(settings, renderer.pcfParams(settings), &frame));
 }
 
 // Says what was written, like export does (a silent success left users looking for it).
@@ -187,7 +192,7 @@ int runRender(const RenderCommandOptions& o) {
             lesson.chartStep ? drawStepChart(*lesson.chartStep, size) : renderer.readColour();
         writePngRgba8(o.out, size.x, size.y, rgba);
     }
-    if (!o.rawDir.empty()) writeRawBuffers(renderer, raw, settings, size);
+    if (!o.rawDir.empty()) writeRawBuffers(renderer, raw, settings, scene, size);
     outputs.commit();
     sayRendered(o, lesson, settings, raw, size);
     return 0;
@@ -202,9 +207,10 @@ Command addRenderCommand(CLI::App& app) {
     sub->add_option("-o,--out", o->out, "the frame as PNG");
     sub->add_option("--raw", o->rawDir,
                     "write shadowmap.exr, lightspace.exr (u, v, ref, receiver), "
-                    "visibility.exr, positions.exr (world xyz, drawn), dzduv.exr (dz/du, "
-                    "dz/dv of the receiver plane, z before bias, receiver) and render.json "
-                    "(method, format, precision) into DIR");
+                    "visibility.exr, positions.exr (world xyz, drawn), normals.exr (the normal "
+                    "facing the camera, cos(theta) to the light), dzduv.exr (dz/du, dz/dv of "
+                    "the receiver plane, z before bias, receiver) and render.json (the "
+                    "settings, the light's clip matrix) into DIR");
     sub->add_flag("-f,--force", o->force, "overwrite existing output files");
     sub->add_option("--time", o->timeRepeats,
                     "time the camera pass over this many draws and print the median");

@@ -305,6 +305,17 @@ CheckedReplot checkReplot(const StabilityCommandOptions& o) {
     c.rows = parseStabilityCsv(readInputFile(o.replot), o.replot);
     c.sweeps = chartedSweeps(c.rows);
     if (c.sweeps.empty()) throw InputError(o.replot, 0, "no sweep rows to chart");
+    // A sweep whose rows name metrics its chart does not read would draw an empty chart.
+    for (Sweep sweep : c.sweeps) {
+        for (const SweepChart& chart : sweepCharts()) {
+            if (chart.sweep != sweep || chart.hasData(c.rows)) continue;
+            throw InputError(o.replot, 0,
+                             "the " + std::string(sweepName(sweep)) +
+                                 " rows hold no metric its "
+                                 "chart draws (" +
+                                 std::string(chart.file) + " would be empty)");
+        }
+    }
     if (o.out.empty()) throw UsageError("-o needs a directory");
     return c;
 }

@@ -138,16 +138,20 @@ void OutputFiles::commit() {
     mCommitted = true;
 }
 
+// Staged files replace what their final names lead to, as every writer does (image_io.h
+// outputTarget): a final name that is a link is written through, not replaced by a file.
 void OutputFiles::commitStaged(const fs::path& stagingDir, const fs::path& outDir,
                                const std::vector<std::string>& names) {
     std::shared_lock gate(outputWriteGate());
-    for (const std::string& name : names) fs::rename(stagingDir / name, outDir / name);
+    for (const std::string& name : names) {
+        fs::rename(stagingDir / name, outputTarget((outDir / name).string()));
+    }
     commit();
 }
 
 void OutputFiles::commitMoves(const std::vector<std::pair<fs::path, fs::path>>& moves) {
     std::shared_lock gate(outputWriteGate());
-    for (const auto& [staged, final] : moves) fs::rename(staged, final);
+    for (const auto& [staged, final] : moves) fs::rename(staged, outputTarget(final.string()));
     commit();
 }
 
@@ -222,9 +226,30 @@ void OutputFiles::prepareDirectory(const std::string& option, const fs::path& ta
     ::unlink(probe.c_str());
 }
 
+// The same path claimed twice by one command: a file given twice (`-o a.mp4 a.mp4` rendered every
+// frame, then failed on its scratch copy), or one path as a file and as a folder (`-o X --png
+// X`, where the folder made for --png then made -o "a directory"). Refused before anything is
+// made. Folders may be named again (several outputs in one folder). Called under registryMutex.
+void OutputFiles::claim(const std::string& option, const fs::path& path, bool directory) {
+    std::error_code ec;
+    fs::path key = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    if (ec) key = fs::absolute(path).lexically_normal();
+    for (const Claim& c : mClaims) {
+        if (c.key != key || (c.directory && directory)) continue;
+        if (!c.directory && !directory) {
+            throw UsageError(quoted(option, path) + " is given twice" +
+                             (c.option == option ? "" : " (also as " + c.option + ")"));
+        }
+        throw UsageError(quoted(option, path) + " and " + quoted(c.option, c.path) +
+                         " are the same path, as a file and as a folder");
+    }
+    mClaims.push_back({option, path, key, directory});
+}
+
 void OutputFiles::add(const std::string& option, const fs::path& path) {
     if (path.empty()) throw UsageError(option + " needs a file name");
     std::lock_guard lock(registryMutex());
+    claim(option, path, false);
     std::error_code ec;
     // symlink_status: a link is the user's even when it points nowhere; never take it for free.
     bool exists = fs::symlink_status(path, ec).type() != fs::file_type::not_found;
@@ -254,6 +279,7 @@ void OutputFiles::addFilesIn(const std::string& option, const fs::path& dir,
 void OutputFiles::addDirectory(const std::string& option, const fs::path& dir) {
     if (dir.empty()) throw UsageError(option + " needs a directory");
     std::lock_guard lock(registryMutex());
+    claim(option, dir, true);
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
         throw UsageError(quoted(option, dir) + " is not a directory");
@@ -304,6 +330,25 @@ void installInterruptCleanup() {
         std::fflush(stderr);
         _exit(128 + sig);
     }).detach();
+}
+
+std::string withFinalNames(std::string message) {
+    // ".pcfscope-WHAT-PID/", WHAT lower-case letters: StagingDir's names, this process's.
+    const std::string prefix = ".pcfscope-";
+    const std::string end = "-" + std::to_string(getpid()) + "/";
+    for (size_t at = message.find(prefix); at != std::string::npos; at = message.find(prefix, at)) {
+        size_t word = at + prefix.size();
+        size_t stop = word;
+        while (stop < message.size() && std::islower(static_cast<unsigned char>(message[stop]))) {
+            ++stop;
+        }
+        if (stop > word && message.compare(stop, end.size(), end) == 0) {
+            message.erase(at, stop + end.size() - at);
+        } else {
+            at = word;
+        }
+    }
+    return message;
 }
 
 StagingDir::StagingDir(const fs::path& outDir, const std::string& what, const std::string& subdir)

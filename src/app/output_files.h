@@ -74,6 +74,15 @@ class OutputFiles {
                           const std::filesystem::path& dir);
     void lockFolder(const std::string& option, const std::filesystem::path& target,
                     const std::filesystem::path& dir);
+    void claim(const std::string& option, const std::filesystem::path& path, bool directory);
+
+    // A path this set was given, as given and as compared (absolute, links resolved).
+    struct Claim {
+        std::string option;
+        std::filesystem::path path;
+        std::filesystem::path key;
+        bool directory = false;
+    };
     void unlockFolders();
 
     bool mForce;
@@ -83,6 +92,7 @@ class OutputFiles {
     std::vector<std::pair<std::string, std::filesystem::path>> mInputs;
     std::vector<std::filesystem::path> mDirs;     // folders written into (scratch may be there)
     std::vector<std::pair<dev_t, ino_t>> mLocks;  // output folders locked (lockFolder)
+    std::vector<Claim> mClaims;                   // every file and folder added (claim)
 };
 
 // A scratch folder ".pcfscope-<what>-<pid>" inside DIR that a command stages its outputs in (and
@@ -108,6 +118,11 @@ class StagingDir {
 // exits with 128 + the signal's number: 130 for SIGINT, 143 for SIGTERM (the shell's
 // convention). Commands need no checks of their own.
 void installInterruptCleanup();
+
+// `message` with the scratch folders of this process taken out of its paths: a failure while
+// writing a staged file (a full disk) names the file the user asked for, "out/bench.csv", not
+// "out/.pcfscope-bench-4711/bench.csv". The command line says every error through it.
+std::string withFinalNames(std::string message);
 
 // Throws UsageError unless `path` ends in `extension` (".png", ".exr"; any case): the file's
 // name should say what is in it.

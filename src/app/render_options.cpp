@@ -150,11 +150,20 @@ DepthFormat depthFormatOption(const std::string& name) {
     return *f;
 }
 
-std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss) {
+std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss,
+                         const RawLookupFrame* frame) {
     Json j = paramsJson(s, ParamSet::Raw);
     j["penumbra_scale"] = jsonNumber(pcss.penumbraScale);
     j["pcss_depth_near"] = jsonNumber(pcss.depthNear);
     j["pcss_depth_far"] = jsonNumber(pcss.depthFar);
+    if (frame) {
+        Json m = Json::array();
+        for (int c = 0; c < 4; ++c) {
+            for (int r = 0; r < 4; ++r) m.push_back(jsonNumber(frame->shadowClipFromWorld[c][r]));
+        }
+        j["shadow_clip_from_world"] = std::move(m);
+        j["shadow_texel_ws"] = jsonNumber(frame->shadowTexelWs);
+    }
     return jsonDump(j) + "\n";
 }
 

@@ -59,7 +59,16 @@ class SettingOptions {
 // pcss: the renderer's pcss parameters (scene/pcss.h), as the frame was rendered with them:
 // penumbraScale as "penumbra_scale", a spot map's depthNear / depthFar as "pcss_depth_near" /
 // "pcss_depth_far", so that `verify` repeats the very lookups; 0 for the other methods.
-std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss = PcfParams{});
+// frame: what each pixel's lookup was computed from besides its position and normal (scene.frag:
+// the light's clip matrix, column by column as GL takes it, and the world size of one map texel
+// at clip.w = 1), as "shadow_clip_from_world" and "shadow_texel_ws", so that `verify`
+// recomputes every pixel's u, v and ref under every bias mode (shaders/shared/pcf_shading.h).
+struct RawLookupFrame {
+    glm::mat4 shadowClipFromWorld{1.0f};
+    float shadowTexelWs = 0.0f;
+};
+std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss = PcfParams{},
+                         const RawLookupFrame* frame = nullptr);
 
 // The shared options' names parsed, each with one error for every command ("unknown method
 // 'blur' (known: ...)", "unknown --weights 'sharp' (known: box, binomial, gaussian)").

@@ -121,6 +121,9 @@ struct ParamInfo {
     std::string_view help;  // one line, the command line's help
     bool rawJson = false;   // in render --raw's render.json (what `verify` repeats)
     KernelMember member{};  // what the uniform fills in the kernel's structs
+    // A rawJson parameter that render.json files written before it existed lack: `verify` then
+    // takes its default (the value those folders were rendered with). The others are required.
+    bool rawJsonMayLack = false;
 };
 
 // Every parameter, in the order the JSON sidecars write them.

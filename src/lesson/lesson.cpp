@@ -171,10 +171,16 @@ class LessonParser {
             std::string view = hash == std::string::npos ? "" : chart.substr(hash);
             std::filesystem::path p =
                 std::filesystem::path(mSource).parent_path() / chart.substr(0, hash);
+            // What is there, said as it is: a FIFO or a folder is not "not found".
             std::error_code ec;
-            if (!std::filesystem::is_regular_file(p, ec)) {
+            std::filesystem::file_status status = std::filesystem::status(p, ec);
+            if (!std::filesystem::is_regular_file(status)) {
+                std::string why = !std::filesystem::exists(status) ? "not found"
+                                  : std::filesystem::is_directory(status)
+                                      ? "is a directory"
+                                      : "is not a regular file (a FIFO, device or socket)";
                 fail(*table.get("chart"),
-                     what + " chart '" + chart + "' not found (looked at " + p.string() + ")");
+                     what + " chart '" + chart + "' " + why + " (looked at " + p.string() + ")");
             }
             step.chart = p.string() + view;
             step.chartLine = lineOf(*table.get("chart"));

@@ -346,6 +346,8 @@ ShadowMap readDepthImage(const std::string& path) {
     return map;
 }
 
+std::string outputTarget(const std::string& path) { return resolveLinks(path); }
+
 bool fileExists(const std::string& path) {
     std::error_code ec;
     return std::filesystem::is_regular_file(path, ec);

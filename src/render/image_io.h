@@ -76,6 +76,12 @@ FloatImage readFloatImage(const std::string& path);
 
 bool fileExists(const std::string& path);
 
+// The file a write to `path` replaces: `path`, or where its chain of symbolic links ends. An
+// output that is a link is written through (the file it points at is replaced, the link stays:
+// a link the user made is theirs), by every writer here and by the staged outputs that
+// app/output_files.h moves into place.
+std::string outputTarget(const std::string& path);
+
 // Writers (writeTextFile, writePngRgba8, writeExr) hold this shared from before the temporary
 // file exists until after the rename. Whoever holds it exclusively (the interrupt cleanup of
 // app/output_files.h) knows no write is half done and no temporary file is left.
