@@ -215,6 +215,15 @@ TEST_F(CliInputChecks, OutOfRangeValuesArePrintedAsGiven) {
                   "--kernel must be 1..8, got 9");
     expectRefused("render --scene box-on-plane --slope-max 1.0000001 -o r.png",
                   "--slope-max must be in [0, 1] light depth units, got 1.0000001");
+    expectRefused("trace --example --z 1.0000001", "--z 1.0000001 is out of range [0, 1]");
+}
+
+// A size one step's compare cannot take names that step (the whole export was refused with only
+// "a split view of 3 parts needs...").
+TEST_F(CliInputChecks, ASizeRefusedForOneStepNamesIt) {
+    expectRefused("export 8 --size 320x180 -o out",
+                  "--size 320x180: step 3's compare (bias=none,constant,slope): a split view of 3 "
+                  "parts needs a frame at least 484 pixels wide, got 320");
 }
 
 // Options that would change nothing are refused, not ignored: animate's --compare-kernel with a

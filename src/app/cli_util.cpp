@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <sstream>
 
 #include "kernel/methods.h"
 #include "kernel/settings.h"
@@ -80,9 +80,14 @@ glm::ivec2 parseSize(const std::string& option, const std::string& text, SizeRan
 
 void requireRange(const std::string& option, float v, float lo, float hi) {
     if (!std::isfinite(v) || v < lo || v > hi) {
-        std::ostringstream s;
-        s << option << " " << v << " is out of range [" << lo << ", " << hi << "]";
-        throw UsageError(s.str());
+        // Each number the shortest text of its float: 1.0000001 is not printed as 1.
+        auto text = [](float x) {
+            char buf[32];
+            auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+            return std::string(buf, ec == std::errc() ? end : buf);
+        };
+        throw UsageError(option + " " + text(v) + " is out of range [" + text(lo) + ", " +
+                         text(hi) + "]");
     }
 }
 

@@ -165,10 +165,15 @@ void planStepCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& less
             throw UsageError("--" + std::string(e.what()) + " (at step " + std::to_string(s) + ")");
         }
         if (!spec.empty()) {
+            // Said with the step it is about: one step's compare refused a whole export.
             if (auto problem =
                     compareFrameProblem(frame.size, spec.parts(), frame.presentation, false)) {
+                std::string whose = all.empty() ? "step " + std::to_string(s) + "'s compare (" +
+                                                      compareSpecText(spec) + ")"
+                                                : "--compare at step " + std::to_string(s);
                 throw UsageError("--size " + std::to_string(frame.size.x) + "x" +
-                                 std::to_string(frame.size.y) + ": " + *problem);
+                                 std::to_string(frame.size.y) + ": " + whose + ": " + *problem +
+                                 " (a larger --size, or --steps without that step)");
             }
             const std::string& stem = plan.stems[static_cast<size_t>(s - plan.steps.x)];
             outputs.add("--compare", stem + "-compare.png");
