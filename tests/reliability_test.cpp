@@ -338,10 +338,38 @@ TEST_F(Reliability, WorkLargerThanTheMemoryIsRefusedUpFront) {
          {"render --scene box-on-plane --size 8192x8192 -o " + path("a.png"),
           "truth --scene box-on-plane --size 8192x8192 -o " + path("t.exr"),
           "bench --quick --size 8192x8192 -o " + path("b"),
-          "stability --quick --size 8192x8192 -o " + path("s")}) {
-        expectOneLine(runPcfscope(args, limit), "--size 8192x8192: needs about ");
+          "stability --quick --size 8192x8192 -o " + path("s"),
+          "animate 13 --step 3 --size 8192x8192 --frames 3600 -o " + path("v.mp4"),
+          "export 3 --size 8192x8192 -o " + path("e")}) {
+        expectOneLine(runPcfscope(args, limit), "8192x8192: needs about ");
         EXPECT_TRUE(leftovers().empty()) << args << ": left " << leftovers().front();
     }
+    // The refusal names the work and the way on: -f starts it anyway, saying so.
+    auto animate = runPcfscope(
+        "animate 13 --step 3 --size 8192x8192 --frames 3600 -o " + path("v.mp4"), limit);
+    EXPECT_NE(animate.err.find("pcfscope: 3600 frames of 8192x8192: needs about "),
+              std::string::npos)
+        << animate.err;
+    EXPECT_NE(animate.err.find("or -f to start it anyway"), std::string::npos) << animate.err;
+    auto forced =
+        runPcfscope("animate 13 --step 3 --size 8192x8192 --frames 3600 -f -o " + path("v.mp4"),
+                    limit + "timeout 5");
+    EXPECT_NE(forced.err.find("animate: 3600 frames of 8192x8192: about "), std::string::npos)
+        << forced.err;
+    EXPECT_NE(forced.err.find("available: forced"), std::string::npos) << forced.err;
+    EXPECT_TRUE(leftovers().empty()) << "left " << leftovers().front();
+}
+
+// A long job says how long before it starts: animate's 3600 frames at 1280x720 are minutes of
+// work (about 100 ns a pixel a frame on llvmpipe), which it states, then begins.
+TEST_F(Reliability, ALongJobStatesItsEstimateBeforeItStarts) {
+    auto r = runPcfscope("animate 13 --step 3 --size 1280x720 --frames 3600 -o " + path("v.gif"),
+                         "timeout 5");
+    std::string first = r.err.substr(0, r.err.find('\n'));
+    EXPECT_EQ(first.rfind("animate: 3600 frames of 1280x720: about ", 0), 0u) << r.err;
+    EXPECT_NE(first.find(" min and 0."), std::string::npos) << first;  // minutes, under a GiB
+    EXPECT_NE(first.find("GiB of memory (an estimate"), std::string::npos) << first;
+    EXPECT_TRUE(leftovers().empty()) << "left " << leftovers().front();
 }
 
 }  // namespace

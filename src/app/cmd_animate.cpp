@@ -2,6 +2,7 @@
 // as MP4 (H.264), animated GIF and numbered PNGs, headless. Videos are encoded into a scratch
 // folder beside their final names and moved there only when complete, so an error, a full disk
 // or Ctrl-C leaves no half video; PNGs are taken back like `export`'s.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +20,8 @@
 #include "app/magnifier.h"
 #include "app/output_files.h"
 #include "app/session.h"
+#include "base/memory_budget.h"
+#include "base/work_estimate.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
 #include "render/gl_context.h"
@@ -226,6 +229,23 @@ EncodeTimes finishVideos(std::vector<VideoOut>& videos, OutputFiles& outputs) {
     return t;
 }
 
+// Each frame composed, read back and encoded; memory measured with /usr/bin/time (peak RSS): a
+// GIF or PNGs 125 MB and 50 bytes a pixel (1280x720 to 2560x1440), an MP4 130 bytes a pixel
+// more once libx264's look-ahead holds its frames (320 MB at 1280x720 from 40 frames on).
+WorkEstimate animateEstimate(const AnimateOptions& o, glm::ivec2 size) {
+    bool mp4 = std::any_of(o.videos.begin(), o.videos.end(), [](const std::string& v) {
+        return videoFormatFromPath(v) == VideoFormat::Mp4;
+    });
+    double pixels = static_cast<double>(size.x) * size.y;
+    WorkEstimate w;
+    w.what = std::to_string(o.frames) + " frames of " + std::to_string(size.x) + "x" +
+             std::to_string(size.y);
+    w.frameNs = pixels * o.frames * RENDER_NS_PER_PIXEL_FRAME;
+    w.fixedSeconds = 2.0;
+    w.bytes = memoryEstimate(160 * MIB, mp4 ? 190 : 60, size.x, size.y);
+    return w;
+}
+
 // The step exists and shows the scene (no sweep moves a chart), and --snap goes with the sweep
 // it snaps: options that would change nothing are refused, not ignored.
 void checkSweptStep(const AnimateOptions& o, AnimationSweep sweep, const Lesson& lesson) {
@@ -262,6 +282,7 @@ int runAnimate(AnimateOptions o) {
     if (o.videos.empty() && o.pngDir.empty())
         o.videos.push_back("pcfscope-frames/" + stem + ".mp4");
 
+    announceWork("animate", animateEstimate(o, size), o.force);
     OutputFiles outputs(o.force);
     outputs.addInput("LESSON", path);
     std::vector<std::string> pngs = planPngs(outputs, o, stem);
@@ -331,7 +352,9 @@ Command addAnimateCommand(CLI::App& app) {
         "-o,--out", o->videos,
         "video files, .mp4 and/or .gif (default pcfscope-frames/LESSON-stepNN-SWEEP.mp4)");
     sub->add_option("--png", o->pngDir, "also write the frames as numbered PNGs into this folder");
-    sub->add_flag("-f,--force", o->force, "overwrite existing files");
+    sub->add_flag("-f,--force", o->force,
+                  "overwrite existing files; start work larger than the memory estimate says the "
+                  "machine holds");
     return {sub, [o] { return runAnimate(*o); }};
 }
 

@@ -177,7 +177,8 @@ int runRender(const RenderCommandOptions& o) {
     requireMemory("--size " + std::to_string(settings.frameSize.x) + "x" +
                       std::to_string(settings.frameSize.y),
                   memoryEstimate(256 * MIB, 130, settings.frameSize.x, settings.frameSize.y) +
-                      memoryEstimate(0, 12, settings.mapSize, settings.mapSize));
+                      memoryEstimate(0, 12, settings.mapSize, settings.mapSize),
+                  o.force);
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(scene);
     if (lesson.fit) renderer.setShadowClipFromWorld(*lesson.fit);
@@ -211,7 +212,9 @@ Command addRenderCommand(CLI::App& app) {
                     "facing the camera, cos(theta) to the light), dzduv.exr (dz/du, dz/dv of "
                     "the receiver plane, z before bias, receiver) and render.json (the "
                     "settings, the light's clip matrix) into DIR");
-    sub->add_flag("-f,--force", o->force, "overwrite existing output files");
+    sub->add_flag("-f,--force", o->force,
+                  "overwrite existing output files; start work larger than the memory estimate "
+                  "says the machine holds");
     sub->add_option("--time", o->timeRepeats,
                     "time the camera pass over this many draws and print the median");
     sub->add_flag("-v,--verbose", o->verbose, "say which GL driver rendered");

@@ -147,7 +147,7 @@ int runTruth(const TruthCommandOptions& o) {
     Scene scene = sceneOptions.loadScene();
     // Measured peaks of `truth --spp 1` (box-on-plane): 139 MB at 512x512, 152 MB at 1024x1024:
     // 17 bytes a pixel; 24 leaves room for --mask's channel and the EXR held in memory.
-    requireMemory("--size " + o.size, memoryEstimate(160 * MIB, 24, size.x, size.y));
+    requireMemory("--size " + o.size, memoryEstimate(160 * MIB, 24, size.x, size.y), o.force);
     applyTruthLightSize(o, scene);
     OutputFiles outputs(o.force);
     outputs.addInput("--scene-file", o.sceneFile);
@@ -208,7 +208,9 @@ Command addTruthCommand(CLI::App& app) {
     sub->add_option("-o,--out", o->out,
                     "the truth as a float EXR: channels 'visibility' in [0,1] and 'bound' (the "
                     "stated bound on its error), rows top-down");
-    sub->add_flag("-f,--force", o->force, "overwrite an existing output file");
+    sub->add_flag("-f,--force", o->force,
+                  "overwrite an existing output file; start work larger than the memory estimate "
+                  "says the machine holds");
     return {sub, [o] { return runTruth(*o); }};
 }
 

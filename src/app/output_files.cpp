@@ -325,6 +325,7 @@ void installInterruptCleanup() {
             removed = removed || !files->mNewFiles.empty() || !files->mCreatedDirs.empty();
             files->takeBack();
         }
+        endProgressLine();  // a line of its own, not after "animate [###...] 4/3600"
         std::fprintf(stderr, "pcfscope: interrupted (%s)%s\n", sig == SIGINT ? "SIGINT" : "SIGTERM",
                      removed ? "; removed the files this command had written" : "");
         std::fflush(stderr);
