@@ -1,4 +1,5 @@
-// pcfscope trace: one lookup's step-through, as text or as DESIGN.md section 4's JSON.
+// pcfscope trace: one lookup's step-through, as text or as the JSON object of docs/user-guide.md,
+// "trace".
 #include <cmath>
 #include <cstdio>
 #include <memory>

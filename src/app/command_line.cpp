@@ -1,4 +1,4 @@
-// command_line.cpp: the command line (DESIGN.md section 6): every subcommand, parsed, run, and
+// command_line.cpp: the command line (docs/user-guide.md): every subcommand, parsed, run, and
 // its errors turned into one line and an exit code (app/command_line.h).
 #include "app/command_line.h"
 

@@ -12,9 +12,9 @@ namespace pcf {
 // The work, in the units its cost is measured in: frames rendered (composed, read back and
 // written) and ground-truth pixels, each at a frame size.
 struct WorkEstimate {
-    std::string what;          // "3600 frames of 8192x8192", for the messages
-    double frameNs = 0.0;      // all the frames: pixels x frames x RENDER_NS_PER_PIXEL_FRAME
-    double truthNs = 0.0;      // all the truths: pixels x truths x TRUTH_NS_PER_PIXEL
+    std::string what;           // "3600 frames of 8192x8192", for the messages
+    double frameNs = 0.0;       // all the frames: pixels x frames x RENDER_NS_PER_PIXEL_FRAME
+    double truthNs = 0.0;       // all the truths: pixels x truths x TRUTH_NS_PER_PIXEL
     double fixedSeconds = 0.0;  // start-up, shader compiles: what no size changes
     std::uint64_t bytes = 0;    // the peak memory
 };

@@ -1,5 +1,5 @@
-// trace_json.h: a trace (trace.h) written out: DESIGN.md section 4's JSON object, and the text
-// `pcfscope trace` prints.
+// trace_json.h: a trace (trace.h) written out: the JSON object of docs/user-guide.md ("trace"), and
+// the text `pcfscope trace` prints.
 #pragma once
 
 #include <cstdint>
@@ -40,7 +40,7 @@ enum class ParamSet {
 // true/false, named values by name ("pcf-gather", "receiver-plane").
 Json paramsJson(const ShadowSettings& s, ParamSet which);
 
-// DESIGN.md section 4's object.
+// The trace as that object.
 Json traceJson(const Trace& trace);
 
 // traceJson as one line of JSON.

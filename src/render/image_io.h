@@ -3,7 +3,8 @@
 //
 // Row order: the writers take rows TOP-DOWN (first row = top of the picture = first scanline
 // in the file), which is what readPixelsRgba8 / readPixelsFloat (gl_objects.h) return.
-// readDepthImage gives a ShadowMap whose row 0 is the file's first scanline (DESIGN.md 2).
+// readDepthImage gives a ShadowMap whose row 0 is the file's first scanline (docs/methods.md,
+// "Conventions").
 //
 // Writes are atomic: the image goes to PATH.tmp-XXXXXX in the same directory and is renamed
 // over PATH only when complete, so a failed write never leaves a half-written PATH behind.
