@@ -268,6 +268,13 @@ TEST_F(OutputSafetyTest, APathGivenTwiceIsRefusedUpFront) {
     // Two videos in one folder are two files.
     auto two = runPcfscope(animate + "-o " + path("a.gif") + " " + path("b.gif"));
     EXPECT_EQ(two.exitCode, 0) << two.err;
+    // A command's own second look at an output is the same output: export -f over an earlier
+    // export finds the page files first in the folder, then writes them.
+    for (const char* force : {"", "-f "}) {
+        auto again =
+            runPcfscope("export 1 --size 320x180 " + std::string(force) + "-o " + path("frames"));
+        EXPECT_EQ(again.exitCode, 0) << again.err;
+    }
 }
 
 // Every command writes through an output that is a link, with -f: the staged outputs (animate's

@@ -143,9 +143,9 @@ std::vector<VideoOut> planVideos(OutputFiles& outputs, const AnimateOptions& o, 
         if (auto problem = videoSizeProblem(*format, size.x, size.y)) {
             throw UsageError("--size " + o.size + ": " + *problem);
         }
-        outputs.add("-o", v);
         videos.push_back({fs::path(v), *format, nullptr, nullptr});
     }
+    outputs.addEach("-o", {o.videos.begin(), o.videos.end()});
     for (VideoOut& v : videos) {
         fs::path dir = v.final.parent_path().empty() ? fs::path(".") : v.final.parent_path();
         // Known to the interrupt cleanup, which removes the scratch folder made in it below.

@@ -226,30 +226,48 @@ void OutputFiles::prepareDirectory(const std::string& option, const fs::path& ta
     ::unlink(probe.c_str());
 }
 
-// The same path claimed twice by one command: a file given twice (`-o a.mp4 a.mp4` rendered every
-// frame, then failed on its scratch copy), or one path as a file and as a folder (`-o X --png
-// X`, where the folder made for --png then made -o "a directory"). Refused before anything is
-// made. Folders may be named again (several outputs in one folder). Called under registryMutex.
-void OutputFiles::claim(const std::string& option, const fs::path& path, bool directory) {
+namespace {
+
+// A path as outputs are compared: absolute, its links resolved as far as it exists.
+fs::path claimKey(const fs::path& path) {
     std::error_code ec;
     fs::path key = fs::weakly_canonical(fs::absolute(path, ec), ec);
-    if (ec) key = fs::absolute(path).lexically_normal();
+    return ec ? fs::absolute(path).lexically_normal() : key;
+}
+
+}  // namespace
+
+// One path as a file and as a folder (`-o X --png X`, where the folder made for --png then made
+// -o "a directory") is refused before anything is made. A file added again is the same output
+// (a command's own second look at it: export's page files); a folder may be named again (several
+// outputs in one folder). Returns whether `path` is new to this set. Called under registryMutex.
+bool OutputFiles::claim(const std::string& option, const fs::path& path, bool directory) {
+    fs::path key = claimKey(path);
     for (const Claim& c : mClaims) {
-        if (c.key != key || (c.directory && directory)) continue;
-        if (!c.directory && !directory) {
-            throw UsageError(quoted(option, path) + " is given twice" +
-                             (c.option == option ? "" : " (also as " + c.option + ")"));
-        }
+        if (c.key != key) continue;
+        if (c.directory == directory) return false;
         throw UsageError(quoted(option, path) + " and " + quoted(c.option, c.path) +
                          " are the same path, as a file and as a folder");
     }
     mClaims.push_back({option, path, key, directory});
+    return true;
+}
+
+void OutputFiles::addEach(const std::string& option, const std::vector<fs::path>& paths) {
+    for (size_t k = 0; k < paths.size(); ++k) {
+        for (size_t before = 0; before < k; ++before) {
+            if (claimKey(paths[before]) == claimKey(paths[k])) {
+                throw UsageError(quoted(option, paths[k]) + " is given twice");
+            }
+        }
+    }
+    for (const fs::path& path : paths) add(option, path);
 }
 
 void OutputFiles::add(const std::string& option, const fs::path& path) {
     if (path.empty()) throw UsageError(option + " needs a file name");
     std::lock_guard lock(registryMutex());
-    claim(option, path, false);
+    if (!claim(option, path, false)) return;
     std::error_code ec;
     // symlink_status: a link is the user's even when it points nowhere; never take it for free.
     bool exists = fs::symlink_status(path, ec).type() != fs::file_type::not_found;
@@ -279,7 +297,7 @@ void OutputFiles::addFilesIn(const std::string& option, const fs::path& dir,
 void OutputFiles::addDirectory(const std::string& option, const fs::path& dir) {
     if (dir.empty()) throw UsageError(option + " needs a directory");
     std::lock_guard lock(registryMutex());
-    claim(option, dir, true);
+    if (!claim(option, dir, true)) return;
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
         throw UsageError(quoted(option, dir) + " is not a directory");

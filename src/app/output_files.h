@@ -30,8 +30,14 @@ class OutputFiles {
     // meanwhile is refused ("another pcfscope is writing into DIR"). Throws UsageError naming
     // the option, the path and the reason; nothing is left behind on failure.
     void add(const std::string& option, const std::filesystem::path& path);
-    // The same for a directory the command writes into (created now if missing).
+    // The same for a directory the command writes into (created now if missing). A path added as
+    // a file and as a directory is refused (UsageError naming both options); one added again as
+    // the same kind is the same output.
     void addDirectory(const std::string& option, const std::filesystem::path& dir);
+    // add() for each of `paths`, the files one option names (animate's -o list): two that are the
+    // same file by any spelling ("a.mp4", "./a.mp4") are refused before any is added: the
+    // command would write one over the other.
+    void addEach(const std::string& option, const std::vector<std::filesystem::path>& paths);
     // The directory and each of `names` in it (a command's set of files in -o).
     void addFilesIn(const std::string& option, const std::filesystem::path& dir,
                     const std::vector<std::string>& names);
@@ -74,7 +80,7 @@ class OutputFiles {
                           const std::filesystem::path& dir);
     void lockFolder(const std::string& option, const std::filesystem::path& target,
                     const std::filesystem::path& dir);
-    void claim(const std::string& option, const std::filesystem::path& path, bool directory);
+    bool claim(const std::string& option, const std::filesystem::path& path, bool directory);
 
     // A path this set was given, as given and as compared (absolute, links resolved).
     struct Claim {
