@@ -108,7 +108,7 @@ void printCameraTiming(SceneRenderer& renderer, const RenderSettings& settings, 
 
 // The intermediate buffers of the rendered frame, as EXR, and its settings as JSON.
 void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderSettings& settings,
-                     const Scene& scene, glm::ivec2 size) {
+                     glm::ivec2 size) {
     writeDepthImage(raw.shadow, renderer.readShadowMap());
     std::vector<float> ls = renderer.readLightSpace();
     writeExr(raw.lightSpace, size.x, size.y, 4, ls, {"R", "G", "B", "A"});
@@ -120,9 +120,8 @@ void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderS
     writeExr(raw.normals, size.x, size.y, 4, normals, {"R", "G", "B", "A"});
     std::vector<float> receiver = renderer.readReceiver();
     writeExr(raw.receiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
-    // scene.frag's uShadowClipFromWorld and uShadowTexelWs (SceneRenderer::drawCameraPass).
-    RawLookupFrame frame{renderer.shadowClipFromWorld(), shadowTexelWs(scene, settings.mapSize)};
-    writeTextFile(raw.settings, settingsJson(settings, renderer.pcfParams(settings), &frame));
+    writeTextFile(raw.settings,
+                  settingsJson(settings, renderer.pcfParams(settings), renderer.mapSpec()));
 }
 
 // Says what was written, like export does (a silent success left users looking for it).
@@ -193,7 +192,7 @@ int runRender(const RenderCommandOptions& o) {
             lesson.chartStep ? drawStepChart(*lesson.chartStep, size) : renderer.readColour();
         writePngRgba8(o.out, size.x, size.y, rgba);
     }
-    if (!o.rawDir.empty()) writeRawBuffers(renderer, raw, settings, scene, size);
+    if (!o.rawDir.empty()) writeRawBuffers(renderer, raw, settings, size);
     outputs.commit();
     sayRendered(o, lesson, settings, raw, size);
     return 0;
@@ -204,6 +203,7 @@ int runRender(const RenderCommandOptions& o) {
 Command addRenderCommand(CLI::App& app) {
     auto o = std::make_shared<RenderCommandOptions>();
     CLI::App* sub = app.add_subcommand("render", "render one frame headless (no display needed)");
+    o->render.picture = true;  // --shading: what the frame draws
     o->render.addTo(sub, "");
     sub->add_option("-o,--out", o->out, "the frame as PNG");
     sub->add_option("--raw", o->rawDir,

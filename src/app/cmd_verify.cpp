@@ -8,6 +8,7 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -131,35 +132,24 @@ void readParam(const Json& json, const ParamInfo& p, ShadowSettings& s, const st
         p.field);
 }
 
+// What scene.frag computed each pixel's lookup from besides its position and normal: the map
+// layer's fit (the light's clip matrix) and one texel's world size at clip w = 1.
+struct RawLookupFrame {
+    glm::mat4 shadowClipFromWorld{1.0f};
+    float shadowTexelWs = 0.0f;
+};
+
 // What `render --raw` rendered with, from its render.json: the settings the parameter table
 // marks rawJson, what the kernel filtered with, and what each pixel's lookup was computed from
 // besides its position and normal (absent from folders written before render.json held it).
 struct RawSettings {
     ShadowSettings settings;
+    // The map as render.json describes it ("map"); folders written before it have none.
+    std::optional<MapSpec> map;
     PcfParams prm;
     PcfBias bias = PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, DEFAULT_RPDB_MAX);
-    std::optional<RawLookupFrame> frame;
+    std::optional<RawLookupFrame> frame;  // from "map"'s layer
 };
-
-// "shadow_clip_from_world" (16 numbers, column by column) and "shadow_texel_ws", when render.json
-// has them.
-std::optional<RawLookupFrame> readLookupFrame(const Json& json, const std::string& where) {
-    if (!json.contains("shadow_clip_from_world") && !json.contains("shadow_texel_ws")) {
-        return std::nullopt;
-    }
-    auto m = json.find("shadow_clip_from_world");
-    if (m == json.end() || !m->is_array() || m->size() != 16) {
-        throw UsageError("render.json: \"shadow_clip_from_world\" is not 16 numbers (" + where +
-                         ")");
-    }
-    RawLookupFrame frame;
-    for (int k = 0; k < 16; ++k) {
-        Json one = {{"shadow_clip_from_world", (*m)[static_cast<size_t>(k)]}};
-        frame.shadowClipFromWorld[k / 4][k % 4] = jsonFloat(one, "shadow_clip_from_world", where);
-    }
-    frame.shadowTexelWs = jsonFloat(json, "shadow_texel_ws", where);
-    return frame;
-}
 
 RawSettings readRawSettings(const std::filesystem::path& dir) {
     std::filesystem::path jsonPath = dir / "render.json";
@@ -179,7 +169,6 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
     if (std::optional<ParamProblem> why = checkSettingRanges(r.settings)) {
         throw UsageError("render.json: " + why->text() + " (" + where + ")");
     }
-    r.frame = readLookupFrame(json, where);
     // pcss's light size in the map; folders written before pcss have none (0: no method used it).
     float penumbraScale = 0.0f;
     if (json.contains("penumbra_scale")) penumbraScale = jsonFloat(json, "penumbra_scale", where);
@@ -190,10 +179,48 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
         r.prm.depthFar = jsonFloat(json, "pcss_depth_far", where);
     }
     r.bias = r.settings.kernelBias();
+    if (json.contains("map")) {
+        std::string why;
+        r.map = mapSpecFromJson(json["map"], why);
+        if (!r.map) throw UsageError("render.json: " + why + " (" + where + ")");
+        // The fit scene.frag looked each pixel up with (its one layer).
+        const PcfMapLayer& layer = r.map->layers.front();
+        if (r.map->layers.size() == 1 && layer.texelWs > 0.0f) {
+            r.frame = RawLookupFrame{layer.shadowClipFromWorld, layer.texelWs};
+        }
+    }
     // render.json's keys are the kernel's words.
     if (auto why = validateParams(r.prm))
         throw UsageError("render.json: " + *why + " (" + where + ")");
     return r;
+}
+
+// The map shadowmap.exr holds: render.json's "map", which must match the image's size, in the
+// texel kind the method reads in the folder's depth_format (checkMapTexels holds "map" to it
+// once the image has been checked against that format); for a folder without one, the image's
+// size, one layer.
+MapSpec rawMapSpec(const ShadowMap& image, const RawSettings& r, const std::string& where) {
+    TexelKind kind = mapTexelKind(r.settings.method, r.settings.depthFormat);
+    MapSpec spec = r.map.value_or(MapSpec{image.size(), kind, {MapSpec::unfittedLayer()}});
+    spec.texels = kind;
+    if (spec.size != image.size() || spec.layers.size() != 1) {
+        throw UsageError("render.json: \"map\" is " + std::to_string(spec.size.x) + "x" +
+                         std::to_string(spec.size.y) + " in " + std::to_string(spec.layers.size()) +
+                         " layer(s), but shadowmap.exr is one layer of " +
+                         std::to_string(image.width()) + "x" + std::to_string(image.height()) +
+                         " (" + where + ")");
+    }
+    return spec;
+}
+
+// render.json's "map" names the texel kind its method reads in its depth_format.
+void checkMapTexels(const RawSettings& r, const std::string& where) {
+    TexelKind kind = mapTexelKind(r.settings.method, r.settings.depthFormat);
+    if (!r.map || r.map->texels == kind) return;
+    throw UsageError("render.json: \"map\" holds texels " +
+                     std::string(texelKindName(r.map->texels)) + ", but " +
+                     std::string(methodInfo(r.settings.method).name) + " reads depth_format " +
+                     std::string(texelKindName(kind)) + " (" + where + ")");
 }
 
 // The folder's images: the map compared with, each pixel's lookup and visibility, each pixel's
@@ -227,7 +254,7 @@ RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) 
     } catch (const ImageError& e) {
         throw UsageError(e.what());
     }
-    img.map.setFixedPointBits(depthFormatFixedPointBits(r.settings.depthFormat));
+    img.map.setSpec(rawMapSpec(img.map, r, (dir / "render.json").string()));
     img.lightSpace = readImage(dir / "lightspace.exr", 4);
     img.visibility = readImage(dir / "visibility.exr", 1);
     const FloatImage& ls = img.lightSpace;
@@ -294,7 +321,7 @@ long checkLookups(const RawImages& img, const RawSettings& r, const std::string&
     if (!full && (s.bias == BiasMode::Slope || s.bias == BiasMode::Normal)) {
         throw UsageError(dir + ": bias " + std::string(biasModeName(s.bias)) +
                          " depends on each pixel's angle to the light, and the folder lacks "
-                         "normals.exr, positions.exr or render.json's shadow_clip_from_world; "
+                         "normals.exr, positions.exr or render.json's map; "
                          "render it again with `pcfscope render --raw`");
     }
     const FloatImage& ls = img.lightSpace;
@@ -331,8 +358,9 @@ long checkLookups(const RawImages& img, const RawSettings& r, const std::string&
 // the integer k (OpenGL 4.5 core, 2.3.5 "Fixed-Point Data Conversions"). A texel off that grid
 // means the map is not the format render.json names (a 32F map labelled 16). Near 1 a float
 // cannot tell 24-bit levels apart; the slack (two float ulps of the texel, in levels) says so.
-void checkDepthFormat(const ShadowMap& map, DepthFormat format, const std::string& path) {
-    int bits = depthFormatFixedPointBits(format);
+void checkDepthFormat(const ShadowMap& map, const std::string& path) {
+    int bits = map.fixedPointBits();
+    TexelKind format = map.spec().texels;
     if (bits == 0) return;
     double levels = std::ldexp(1.0, bits) - 1.0;
     const std::vector<float>& depths = map.depths();
@@ -409,7 +437,8 @@ int runVerify(const VerifyOptions& o) {
     std::filesystem::path dir(o.dir);
     RawSettings r = readRawSettings(dir);
     RawImages img = readRawImages(dir, r);
-    checkDepthFormat(img.map, r.settings.depthFormat, (dir / "shadowmap.exr").string());
+    checkDepthFormat(img.map, (dir / "shadowmap.exr").string());
+    checkMapTexels(r, (dir / "render.json").string());
     long refsChecked = checkLookups(img, r, dir.string());
     ConformancePrecision prec{o.subTexelBits, o.weightBits, o.referenceBits};
     EnvelopeTally t = checkEnvelopes(img, r, prec);
