@@ -376,7 +376,7 @@ TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
         {"--shimmer-frames 40", "--shimmer-frames 40 is out of range"},
         {"--weights box,sharp", "unknown --weights 'sharp'"},
         {"--methods nearest --weights gaussian", "pcf-naive and pcf-gather only"},
-        {"--weights gaussian --sigma -1", "--sigma -1 is out of range"},
+        {"--weights gaussian --sigma -1", "--sigma must be in [0.05, 16] texels, got -1"},
         {"--methods hw2x2 --bias soft", "soft"},
         {"--spp 0", "--spp 0"},
         {"--repeats 0", "--repeats"},

@@ -1,7 +1,7 @@
 // pcf_kernel.h: every PCF method of pcfscope, written once for C++ and GLSL (see pcf_prelude.h
 // for the rules this file follows). C++ side: src/kernel/pcf.h. GLSL side: shaders/scene.frag.
 //
-// Conventions (DESIGN.md section 2):
+// Conventions (docs/methods.md, "Conventions"):
 //   shadow map W x H, depth in [0,1], 0 = near the light; texel (i, j) = column i, row j as
 //   stored; its centre is at uv = ((i + 0.5) / W, (j + 0.5) / H);
 //   texel position of a lookup: p = uv * size - 0.5, base = floor(p), frac = p - base
@@ -9,7 +9,8 @@
 //   a tap is lit (1) when ref <= depth (GL_LEQUAL), shadowed (0) otherwise;
 //   visibility 1 = fully lit, 0 = fully shadowed.
 
-// Method ids, in the order of DESIGN.md section 3 (the command line's names: src/kernel/methods).
+// Method ids, in the order of docs/methods.md, "The methods" (the command line's names:
+// src/kernel/methods).
 PCF_CONST int PCF_NEAREST = 0;
 PCF_CONST int PCF_BOX2X2 = 1;
 PCF_CONST int PCF_BILINEAR2X2 = 2;
@@ -126,7 +127,7 @@ PCF_MAP_FN float pcfDepthRef(Map map, float ref) {
 }
 
 // Precision of the texel position inside hardware taps and gathers.
-//   exact: float, what llvmpipe does (measured, DESIGN.md 2);
+//   exact: float, what llvmpipe does (measured, docs/methods.md, "Conventions");
 //   hw8:   the position kept with 8 fractional bits, i.e. in steps of 1/256 texel, as NVIDIA and
 //          AMD texture units do. Sources: Direct3D 12 functional spec, constant
 //          D3D12_SUBTEXEL_FRACTIONAL_BIT_COUNT = 8; Inigo Quilez, "hardware interpolation"
@@ -162,10 +163,10 @@ PCF_MAP_FN vec2 pcfUnitUv(Map map, vec2 uv) {
 // The depth comparison (GL_LEQUAL): 1 = lit, 0 = shadowed.
 PCF_FN float pcfCompare(float depth, float ref) { return ref <= depth ? 1.0f : 0.0f; }
 
-// ---- Bias modes (DESIGN.md 2 names them; see: src/kernel/bias.h for names and checks) ----
-// The per-lookup part of every bias (constant, slope, normal offset) is already in ref when the
-// kernel is called: the scene shader (shaders/scene.frag) computes it where the normal and the
-// light are known. What the kernel itself must do per tap lives here: the receiver plane's ref
+// ---- Bias modes (docs/methods.md, "Bias modes", names them; see: src/kernel/bias.h for names and
+// checks) ---- The per-lookup part of every bias (constant, slope, normal offset) is already in ref
+// when the kernel is called: the scene shader (shaders/scene.frag) computes it where the normal and
+// the light are known. What the kernel itself must do per tap lives here: the receiver plane's ref
 // at each tap, the soft comparison of "PCF Shadow Acne 2", and the comparison against
 // interpolated depth of "PCF Shadow Acne".
 PCF_CONST int PCF_BIAS_NONE = 0;            // ref = z
@@ -200,7 +201,7 @@ PCF_FN PcfRef pcfPlainRef(float ref, vec2 uv) {
     return PcfRef(ref, uv, PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, PCF_DZDUV_UNCLAMPED));
 }
 
-// The centre of texel t in uv (DESIGN.md 2): ((i + 0.5) / W, (j + 0.5) / H).
+// The centre of texel t in uv (docs/methods.md, "Conventions"): ((i + 0.5) / W, (j + 0.5) / H).
 PCF_FN vec2 pcfTexelCentreUv(ivec2 t, ivec2 size) { return (vec2(t) + vec2(0.5f)) / vec2(size); }
 
 // Receiver-plane depth bias (Isidoro, "Shadow Mapping: GPU-based Tips and Techniques", GDC
@@ -347,8 +348,8 @@ PCF_MAP_FN float pcfBilinearLookup(Map map, vec2 uv, PcfRef ref, float weight) {
 }
 
 #ifdef __cplusplus
-// On the CPU a hardware comparison tap is modelled exactly as the bilinear 2x2 (DESIGN.md 2).
-// With hw8 the position is quantised before floor and frac (pcfUnitTexelPos).
+// On the CPU a hardware comparison tap is modelled exactly as the bilinear 2x2 (docs/methods.md,
+// "Conventions"). With hw8 the position is quantised before floor and frac (pcfUnitTexelPos).
 template <class Map>
 inline float hwTap(Map map, vec2 uv, float ref, float weight) {
     return pcfBilinearAt(map, pcfUnitTexelPos(map, uv), pcfPlainRef(ref, uv), weight);
