@@ -106,6 +106,10 @@ void main() {
     // camera pass cost beyond the filter (docs/measurement.md, "What the passes cost").
     float light = AMBIENT + (1.0f - AMBIENT) * nDotL * visibility * cone;
     oColour = vec4(uAlbedoEncoded * pcfGammaEncode(light), 1.0f);
+    // --shading visibility (uShading, the parameter table's): the visibility alone as the grey
+    // level, what reaches the point of the light (outside a spot's cone none does), with no N.L,
+    // so that acne under a low sun is black on white (shared/pcf_shading.h).
+    if (uShading == PCF_SHADING_VISIBILITY) oColour = vec4(vec3(visibility * cone), 1.0f);
 #if PCF_ALL_TARGETS
     oLightSpace = uReceives != 0 ? vec4(u, v, ref, 1.0f) : vec4(0.0f);
     oVisibility = visibility;

@@ -212,8 +212,15 @@ TEST(LessonText, ChecksFindTheFirstProblemAndItsOffset) {
     ASSERT_TRUE(p);
     EXPECT_EQ(p->offset, 17u);
     EXPECT_EQ(p->problem,
-              "unknown placeholder {frac.z} (see placeholderNames(); write {{ for a literal "
-              "brace)");
+              "unknown placeholder {frac.z} (did you mean {frac.x}?) (the names: "
+              "docs/lesson-authoring.md#placeholders; write {{ for a literal brace)");
+    // Every problem, read on past each.
+    std::vector<PlaceholderProblem> all = placeholderProblems("{a} ok {frac.x} } {b:x} { end");
+    ASSERT_EQ(all.size(), 4u);
+    EXPECT_EQ(all[0].offset, 0u);
+    EXPECT_EQ(all[1].offset, 16u);  // the lone }
+    EXPECT_EQ(all[2].offset, 18u);
+    EXPECT_EQ(all[3].offset, 24u);  // a { with no }
     p = checkPlaceholders("a } b");
     ASSERT_TRUE(p);
     EXPECT_EQ(p->offset, 2u);

@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -28,7 +29,8 @@ class PcfPrograms : public ::testing::Test {
 std::unique_ptr<GlContext> PcfPrograms::sContext;
 
 // Every float setting a value of its own, none its default: a uniform set from another
-// setting's value, or from another member, reads back wrong.
+// setting's value, or from another member, reads back wrong. The one named setting with a
+// uniform (the shading) is not its default either.
 ShadowSettings distinctSettings() {
     ShadowSettings s;
     float next = 0.375f;
@@ -38,11 +40,22 @@ ShadowSettings distinctSettings() {
             next += 0.5f;
         }
     }
+    s.shading = Shading::Visibility;
     return s;
 }
 
+// The setting's value as its uniform holds it: a number, or a name's id (an int uniform).
 float settingValue(const ParamInfo& p, const ShadowSettings& s) {
-    return s.*std::get<float ShadowSettings::*>(p.field);
+    return std::visit(
+        [&](const auto& field) -> float {
+            using F = std::decay_t<decltype(field)>;
+            if constexpr (std::is_member_object_pointer_v<F>) {
+                return static_cast<float>(s.*field);
+            } else {
+                return static_cast<float>(static_cast<int>(s.*field.field));
+            }
+        },
+        p.field);
 }
 
 // The variants that between them read every parameter: gaussian weights read sigma, poisson

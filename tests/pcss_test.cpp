@@ -128,6 +128,16 @@ TEST(Pcss, TheTraceStepsThroughSearchPenumbraAndFilter) {
     EXPECT_NEAR(j["pcss"]["penumbra"].get<double>(), 8.0, 1e-5);
     EXPECT_NEAR(j["pcss"]["filter_radius"].get<double>(), 4.0, 1e-5);
     EXPECT_NEAR(j["pcss"]["search_radius"].get<double>(), 7.0, 1e-5);
+    // Which search taps found a blocker: the disk's points left of the edge (x < 0), at 0.3;
+    // the others read the lit side, 1.
+    ASSERT_EQ(j["pcss"]["search"].size(), 16u);
+    for (int k = 0; k < PCF_PCSS_TAPS; ++k) {
+        const Json& s = j["pcss"]["search"][static_cast<size_t>(k)];
+        bool left = PCF_POISSON_DISK[k].x < 0.0f;
+        EXPECT_EQ(s["tap"].get<int>(), k);
+        EXPECT_EQ(s["blocker"].get<bool>(), left) << k;
+        EXPECT_NEAR(s["depth"].get<double>(), left ? 0.3 : 1.0, 1e-6) << k;
+    }
     EXPECT_NEAR(j["pcss"]["blocker_depth"].get<double>(), 0.3, 1e-6);
 
     // No blocker: the search's taps only, all lit, and visibility 1 without a filter: their

@@ -68,6 +68,11 @@ TEST(Settings, NamesRoundTrip) {
         EXPECT_NE(CULL_MODE_NAMES.find(cullModeName(c)), std::string_view::npos);
     }
     EXPECT_FALSE(cullModeFromName("both").has_value());
+    for (Shading s : {Shading::Lit, Shading::Visibility}) {
+        EXPECT_EQ(shadingFromName(shadingName(s)), s);
+        EXPECT_NE(SHADING_NAMES.find(shadingName(s)), std::string_view::npos);
+    }
+    EXPECT_FALSE(shadingFromName("flat").has_value());
     for (int m = 0; m < PCF_BIAS_COUNT; ++m) {
         BiasMode mode = static_cast<BiasMode>(m);
         EXPECT_EQ(biasModeFromName(biasModeName(mode)), mode);
@@ -216,6 +221,7 @@ TEST(ParameterTable, EveryParameterRoundTripsThroughALessonFile) {
 RenderSettings parseRenderOptions(std::vector<std::string> args) {
     CLI::App app;
     RenderOptions options;
+    options.picture = true;  // render's: the View group too
     options.addTo(&app, "box-on-plane");
     std::reverse(args.begin(), args.end());
     app.parse(args);

@@ -138,6 +138,9 @@ std::string spreadNote();
 
 // The legend's line for the front's mark, which states its rule: the front of the medians.
 inline constexpr const char* FRONT_LEGEND = "Pareto front of medians";
+// The legend's entry for the orange rings of a lesson's chart_highlight: they mark the dots the
+// step's words name, not a front (16.6 ringed pcss, off the front, with nothing to say why).
+inline constexpr const char* HIGHLIGHT_LEGEND = "named in the text";
 
 // The GL_RENDERER the rows were measured on (bench.csv's gl_renderer), "" when not recorded.
 std::string speedChartRenderer(std::span<const BenchRow> rows);

@@ -197,6 +197,7 @@ int runRender(const RenderCommandOptions& o) {
 Command addRenderCommand(CLI::App& app) {
     auto o = std::make_shared<RenderCommandOptions>();
     CLI::App* sub = app.add_subcommand("render", "render one frame headless (no display needed)");
+    o->render.picture = true;  // --shading: what the frame draws
     o->render.addTo(sub, "");
     sub->add_option("-o,--out", o->out, "the frame as PNG");
     sub->add_option("--raw", o->rawDir,

@@ -130,9 +130,10 @@ void readParam(const Json& json, const ParamInfo& p, ShadowSettings& s, const st
 }
 
 // render.json's keys that folders of an older pcfscope lack (before the bias modes, before
-// pcss): the setting's default when absent. Every other key the table marks rawJson is needed.
-constexpr std::string_view OPTIONAL_KEYS[] = {"bias",       "soft_scale",    "rpdb_max",
-                                              "light_size", "normal_offset", "map_size"};
+// pcss, before --shading): the setting's default when absent. Every other key the table marks
+// rawJson is needed.
+constexpr std::string_view OPTIONAL_KEYS[] = {
+    "bias", "soft_scale", "rpdb_max", "light_size", "normal_offset", "map_size", "shading"};
 
 // What `render --raw` rendered with, from its render.json: the settings the parameter table
 // marks rawJson, and what the kernel filtered with.

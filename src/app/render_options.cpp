@@ -147,7 +147,12 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     sub->add_option("--step", lessonStep, "with --lesson: the step whose settings to use");
     sub->add_option("--scene", scene, "built-in scene: " + presetNameList());
     sub->add_option("--scene-file", sceneFile, "scene file (TOML)");
-    shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map}, defaults);
+    if (picture) {
+        shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map, ParamGroup::View},
+                     defaults);
+    } else {
+        shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map}, defaults);
+    }
     sub->add_option("--polygon-offset", polygonOffset,
                     "slope-scaled bias in the shadow pass: FACTOR,UNITS for glPolygonOffset");
     sub->add_option("--size", size, sizeHelp("frame size", frameRange, "default " + size));

@@ -73,6 +73,9 @@ struct RenderOptions {
     std::string polygonOffset;  // "F,U": glPolygonOffset in the shadow pass
     std::string size = "1280x720";
     SizeRange frameRange;  // --size's range; set before addTo
+    // Whether the command shows its frames (render): then it also takes the parameters of what
+    // a frame draws (ParamGroup::View, --shading); the commands that measure do not.
+    bool picture = false;
 
     // Registers the options on `sub`; `defaultScene` is used when neither --scene nor
     // --scene-file is given (empty: one of them is required).

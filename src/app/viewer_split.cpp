@@ -109,12 +109,19 @@ void ViewerSplit::composeInto(Session& session, unsigned fbo, glm::ivec2 size) {
 }
 
 std::vector<uint8_t> ViewerSplit::readFrame(Session& session) {
+    // A written frame, as `export` writes it: no hint of the window's keys.
+    bool interactive = session.interactive();
+    session.setInteractive(false);
+    std::vector<uint8_t> rgba;
     if (CompareView* split = readySplit(session, session.frameSize())) {
         split->compose();
-        return split->readFrame();
+        rgba = split->readFrame();
+    } else {
+        session.compose();
+        rgba = session.readFrame();
     }
-    session.compose();
-    return session.readFrame();
+    session.setInteractive(interactive);
+    return rgba;
 }
 
 }  // namespace pcf

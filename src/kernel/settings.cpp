@@ -6,6 +6,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "kernel/shading.h"
 #include "kernel/sigma_limits.h"
 
 namespace pcf {
@@ -71,6 +72,11 @@ const ParamInfo PARAMS[] = {
     {"cull", NamedField<CullMode>{&ShadowSettings::cull, cullModeName, cullModeFromName,
         [] { return std::string(CULL_MODE_NAMES); }, "cull mode"}, ParamGroup::Map, "", "", 0, 0,
      false, "faces culled in the shadow pass: back, front, none", false},
+    {"shading", NamedField<Shading>{&ShadowSettings::shading, shadingName, shadingFromName,
+        [] { return std::string(SHADING_NAMES); }, "shading"}, ParamGroup::View, "uShading", "",
+     0, 0, false,
+     "what the receivers show: lit (ambient + N.L x visibility) or visibility (alone, 0 black "
+     "to 1 white, no N.L)", true},
 };
 // clang-format on
 
@@ -185,6 +191,26 @@ std::string_view cullModeName(CullMode mode) {
             return "none";
     }
     return "?";
+}
+
+// The shader tests the setting's uniform against the shared header's ids.
+static_assert(static_cast<int>(Shading::Lit) == PCF_SHADING_LIT &&
+              static_cast<int>(Shading::Visibility) == PCF_SHADING_VISIBILITY);
+
+std::string_view shadingName(Shading shading) {
+    switch (shading) {
+        case Shading::Lit:
+            return "lit";
+        case Shading::Visibility:
+            return "visibility";
+    }
+    return "?";
+}
+
+std::optional<Shading> shadingFromName(std::string_view name) {
+    if (name == "lit") return Shading::Lit;
+    if (name == "visibility") return Shading::Visibility;
+    return std::nullopt;
 }
 
 std::optional<CullMode> cullModeFromName(std::string_view name) {

@@ -393,22 +393,44 @@ void explainBilinear(const Trace& tr, Steps& out, bool hardware) {
 
 // The merged weights as rows of numbers, right-aligned in columns as wide as the widest number
 // (and the row numbers as wide as the widest), so the table reads as a grid in a fixed-width font.
+// A cell of a weight table: five characters at most, so that an 8-column table (tent 7x7) keeps
+// each row on one line of a projector's inspector: four significant digits and three decimals at
+// most, fixed for the magnitude ("0.196", "4.140", "20.96", "220.2"), and a weight below 0.0005 as
+// its first digit and power of ten ("7e-05"): a weight that counts never reads 0.
+std::string tableNumber(float v) {
+    char buf[32];
+    if (v > 0.0f && v < 0.0005f) {
+        std::snprintf(buf, sizeof buf, "%.0e", static_cast<double>(v));
+        return buf;
+    }
+    int decimals = v < 10.0f ? 3 : v < 100.0f ? 2 : v < 1000.0f ? 1 : 0;
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, static_cast<double>(v));
+    return v == 0.0f ? "0" : buf;
+}
+
+// The merged weights as a table: a header of the texel columns i, then one line per texel row
+// j, each cell right-aligned in its column.
 std::string weightTable(const Trace& tr, float scale) {
     const WeightGrid& g = tr.weights;
     std::vector<std::string> cells;
     size_t width = 0;
+    for (int i = 0; i < g.size.x; ++i) {
+        width = std::max(width, std::to_string(g.origin.x + i).size());
+    }
     for (float v : g.values) {
-        cells.push_back(num(v * scale));
+        cells.push_back(tableNumber(v * scale));
         width = std::max(width, cells.back().size());
     }
-    size_t rowWidth = std::to_string(g.origin.y + g.size.y - 1).size();
+    const std::string corner = "j\\i";
+    size_t rowWidth = std::max(corner.size(), std::to_string(g.origin.y + g.size.y - 1).size());
+    auto pad = [](const std::string& s, size_t w) { return std::string(w - s.size(), ' ') + s; };
     std::ostringstream s;
+    s << "\n  " << pad(corner, rowWidth);
+    for (int i = 0; i < g.size.x; ++i) s << " " << pad(std::to_string(g.origin.x + i), width);
     for (int j = 0; j < g.size.y; ++j) {
-        std::string row = std::to_string(g.origin.y + j);
-        s << "\n  row " << std::string(rowWidth - row.size(), ' ') << row << ":";
+        s << "\n  " << pad(std::to_string(g.origin.y + j), rowWidth);
         for (int i = 0; i < g.size.x; ++i) {
-            const std::string& c = cells[static_cast<size_t>(j) * g.size.x + i];
-            s << " " << std::string(width - c.size(), ' ') << c;
+            s << " " << pad(cells[static_cast<size_t>(j) * g.size.x + i], width);
         }
     }
     return s.str();

@@ -1,6 +1,7 @@
 // trace_json.cpp: a trace written as JSON and as text (trace_json.h).
 #include "kernel/trace_json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -120,6 +121,31 @@ Json fetchesJson(const Trace& tr) {
     return fetches;
 }
 
+// pcss's blocker search and penumbra estimate, and its search taps in read order (taps[k] for
+// k < search_taps) with which found a blocker: a depth below its ref (Fernando 2005), as the
+// kernel counted them.
+Json pcssJson(const Trace& tr) {
+    Json search = Json::array();
+    size_t n = std::min(tr.taps.size(), static_cast<size_t>(PCF_PCSS_TAPS));
+    for (size_t k = 0; k < n; ++k) {
+        const TapRecord& t = tr.taps[k];
+        search.push_back({{"tap", k},
+                          {"texel", jsonPair(t.texel)},
+                          {"depth", jsonNumber(t.depth)},
+                          {"blocker", t.lit < 0.5f}});
+    }
+    return {{"penumbra_scale", jsonNumber(tr.params.penumbraScale)},
+            {"depth_near", jsonNumber(tr.params.depthNear)},
+            {"depth_far", jsonNumber(tr.params.depthFar)},
+            {"search_taps", PCF_PCSS_TAPS},
+            {"search_radius", jsonNumber(tr.pcss.searchRadius)},
+            {"blockers", tr.pcss.blockers},
+            {"blocker_depth", jsonNumber(tr.pcss.blockerDepth)},
+            {"penumbra", jsonNumber(tr.pcss.penumbra)},
+            {"filter_radius", jsonNumber(tr.pcss.filterRadius)},
+            {"search", search}};
+}
+
 }  // namespace
 
 Json paramsJson(const ShadowSettings& s, ParamSet which) {
@@ -185,17 +211,7 @@ Json traceJson(const Trace& tr) {
                 {"visibility_hw8", jsonNumber(tr.visibilityHw8)}}},
               {"steps", steps}};
     // pcss: the blocker search and the penumbra estimate (its first 16 taps are the search's).
-    if (tr.params.method == PCF_PCSS) {
-        j["pcss"] = {{"penumbra_scale", jsonNumber(tr.params.penumbraScale)},
-                     {"depth_near", jsonNumber(tr.params.depthNear)},
-                     {"depth_far", jsonNumber(tr.params.depthFar)},
-                     {"search_taps", PCF_PCSS_TAPS},
-                     {"search_radius", jsonNumber(tr.pcss.searchRadius)},
-                     {"blockers", tr.pcss.blockers},
-                     {"blocker_depth", jsonNumber(tr.pcss.blockerDepth)},
-                     {"penumbra", jsonNumber(tr.pcss.penumbra)},
-                     {"filter_radius", jsonNumber(tr.pcss.filterRadius)}};
-    }
+    if (tr.params.method == PCF_PCSS) j["pcss"] = pcssJson(tr);
     return j;
 }
 

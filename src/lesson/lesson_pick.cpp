@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "kernel/shading.h"
 #include "scene/pcss.h"
@@ -32,6 +33,13 @@ std::optional<ScenePoint> seenPoint(const Scene& scene, glm::vec3 pointWs) {
     std::optional<Hit> hit = intersect(scene, Ray{scene.camera.eyeWs, toPoint / distance});
     if (!hit || std::fabs(hit->t - distance) > POINT_TOLERANCE) return std::nullopt;
     return pointOfHit(hit);
+}
+
+std::string pointKeyText(glm::vec3 posWs) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "point = [%.6f, %.6f, %.6f]", static_cast<double>(posWs.x),
+                  static_cast<double>(posWs.y), static_cast<double>(posWs.z));
+    return buf;
 }
 
 std::optional<ScenePoint> pointAtNdc(const Scene& scene, glm::vec2 ndc, float aspect,

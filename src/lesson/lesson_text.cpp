@@ -322,6 +322,34 @@ struct Placeholder {
 };
 
 // Parses the inside of the braces, or says what is wrong with it.
+// Edits (insertions, deletions, substitutions) that turn a into b (Levenshtein).
+size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+// " (did you mean {frac.x}?)" for the simple name nearest a misspelt one, two edits or fewer;
+// empty when none is that near.
+std::string nearestNameHint(std::string_view name) {
+    std::string_view best;
+    size_t bestDistance = 3;
+    for (const Simple& s : simpleNames()) {
+        size_t d = editDistance(name, s.name);
+        if (d < bestDistance) best = s.name, bestDistance = d;
+    }
+    return best.empty() ? "" : " (did you mean {" + std::string(best) + "}?)";
+}
+
 std::variant<Placeholder, std::string> parsePlaceholder(std::string_view inside) {
     // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on chains of +.
     std::string shown = "{";
@@ -352,8 +380,9 @@ std::variant<Placeholder, std::string> parsePlaceholder(std::string_view inside)
     }
     std::optional<Name> name = parseName(body);
     if (!name) {
-        return "unknown placeholder {" + std::string(body) +
-               "} (see placeholderNames(); write {{ for a literal brace)";
+        return "unknown placeholder {" + std::string(body) + "}" + nearestNameHint(body) +
+               " (the names: docs/lesson-authoring.md#placeholders; write {{ for a literal "
+               "brace)";
     }
     ph.name = *name;
     bool isText =
@@ -459,6 +488,31 @@ std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int t
             }
             return std::nullopt;
         });
+}
+
+std::vector<PlaceholderProblem> placeholderProblems(std::string_view text, int tapCount,
+                                                    int fetchCount, int partCount) {
+    std::vector<PlaceholderProblem> out;
+    size_t from = 0;
+    while (from < text.size()) {
+        std::optional<PlaceholderProblem> p =
+            checkPlaceholders(text.substr(from), tapCount, fetchCount, partCount);
+        if (!p) break;
+        p->offset += from;
+        // Read on after the offending braces: past its }, or past a lone brace (a { with no }
+        // on its line spoils only that line).
+        size_t at = p->offset;
+        size_t next = at + 1;
+        if (text[at] == '{') {
+            size_t close = text.find_first_of("{}\n", at + 1);
+            next = close == std::string_view::npos ? text.size()
+                   : text[close] == '}'            ? close + 1
+                                                   : close;
+        }
+        out.push_back(std::move(*p));
+        from = next;
+    }
+    return out;
 }
 
 std::string fillText(std::string_view text, const Trace& trace, const StepContext& ctx) {
