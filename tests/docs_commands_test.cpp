@@ -132,9 +132,9 @@ std::vector<std::string> wordsOf(const std::string& command) {
     return words;
 }
 
-const std::set<std::string> SUBCOMMANDS = {"view",  "export",  "render",    "trace",  "methods",
-                                           "truth", "bench",   "stability", "verify", "lesson",
-                                           "check", "animate", "pick"};
+const std::set<std::string> SUBCOMMANDS = {"view",  "export",  "render",    "trace",   "methods",
+                                           "truth", "bench",   "stability", "verify",  "lesson",
+                                           "check", "animate", "pick",      "exercise"};
 
 // A synopsis: optional parts in brackets, alternatives, or placeholders in capitals (LESSON,
 // DIR, WxH) where a value goes.
@@ -336,7 +336,7 @@ TEST(DocCommandsFound, EverySynopsisNamesOptionsItsCommandHas) {
         std::string c = s.command;
         for (std::sregex_iterator it(c.begin(), c.end(), option), end; it != end; ++it) {
             std::string name = (*it)[2];
-            EXPECT_TRUE(std::regex_search(help[sub], std::regex("(^|[ ,])" + name + "([ ,=]|$)")))
+            EXPECT_TRUE(std::regex_search(help[sub], std::regex("(^|[ ,])" + name + "([ ,={]|$)")))
                 << s.doc << ": `" << s.command << "` names " << name << ", which `pcfscope " << sub
                 << " --help` does not list";
             ++checked;

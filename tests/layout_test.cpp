@@ -638,7 +638,7 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         const Trace& tr = *m.trace;
                         Neighbourhood view = neighbourhoodView(l, m);
                         Rect area = neighbourhoodArea(l, m);
-                        glm::ivec2 point(glm::floor(tr.uv * glm::vec2(tr.mapSize)));
+                        glm::ivec2 point(glm::floor(tr.uv * glm::vec2(tr.map.size)));
                         Rect cell = texelCellRect(view, area, point);
                         bool pointShown = point.x >= view.origin.x && point.y >= view.origin.y &&
                                           point.x < view.origin.x + view.size.x &&
@@ -691,7 +691,7 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         // its true x for a move in x, one at its true y for a move in y.
                         glm::vec2 truePt =
                             glm::vec2(area.x, area.y) +
-                            (tr.uv * glm::vec2(tr.mapSize) - glm::vec2(view.origin)) * cell.w;
+                            (tr.uv * glm::vec2(tr.map.size) - glm::vec2(view.origin)) * cell.w;
                         for (const LayoutBox& b : plan.boxes) {
                             if (b.role != "lookup-point") continue;
                             glm::vec2 drawn = b.rect.centre();
@@ -724,8 +724,8 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                         for (int j = 0; j < view.size.y; ++j) {
                             for (int i = 0; i < view.size.x; ++i) {
                                 glm::ivec2 t = view.origin + glm::ivec2(i, j);
-                                inMap += t.x >= 0 && t.y >= 0 && t.x < tr.mapSize.x &&
-                                         t.y < tr.mapSize.y;
+                                inMap += t.x >= 0 && t.y >= 0 && t.x < tr.map.size.x &&
+                                         t.y < tr.map.size.y;
                             }
                         }
                         // (Cells too small for any depth at this size show their bits.)
@@ -1029,7 +1029,7 @@ TEST_F(Layout, PresentationTypeIsLargeAtProjectorSizes) {
 
 Trace syntheticTrace() {
     Trace tr;
-    tr.mapSize = {64, 64};
+    tr.map.size = {64, 64};
     tr.uv = {0.5f, 0.5f};
     tr.pos.base = {31, 31};
     tr.pos.frac = {0.5f, 0.5f};

@@ -71,7 +71,7 @@ TEST(LessonFormat, ParsesStepsThatInheritTheStateBeforeThem) {
     EXPECT_EQ(s0.settings.bias, BiasMode::Constant);
     EXPECT_EQ(s0.settings.constantBias, 0.002f);
     EXPECT_EQ(s0.settings.cull, CullMode::Back);
-    EXPECT_EQ(s0.settings.depthFormat, DepthFormat::D32F);
+    EXPECT_EQ(s0.settings.depthFormat, TexelKind::D32F);
 
     const LessonStep& s1 = lesson.steps[1];
     EXPECT_EQ(s1.line, 14);
@@ -85,7 +85,7 @@ TEST(LessonFormat, ParsesStepsThatInheritTheStateBeforeThem) {
     EXPECT_EQ(s2.settings.bias, BiasMode::None);
     EXPECT_EQ(s2.settings.mapSize, 1024);
     EXPECT_EQ(s2.settings.point, glm::vec3(1.5f, 0.0f, 0.25f));
-    EXPECT_EQ(s2.settings.depthFormat, DepthFormat::D16);
+    EXPECT_EQ(s2.settings.depthFormat, TexelKind::D16);
     EXPECT_EQ(s2.settings.cull, CullMode::Front);
     EXPECT_EQ(s2.settings.constantBias, 0.01f);
     EXPECT_EQ(s2.settings.kernel, 5);

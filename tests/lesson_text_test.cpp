@@ -25,7 +25,7 @@ StepContext context() {
     ctx.settings.bias = BiasMode::None;
     ctx.settings.constantBias = 0.0025f;
     ctx.settings.cull = CullMode::Front;
-    ctx.settings.depthFormat = DepthFormat::D24;
+    ctx.settings.depthFormat = TexelKind::D24;
     ctx.lightAngleDeg = 51.25f;
     ctx.originShift = 0.375f;
     ctx.partVisibility = {0.25f, 1.0f};
@@ -157,12 +157,12 @@ TEST(LessonText, StepContextNamesThePixelAndTheState) {
     LessonStep step;
     step.settings.bias = BiasMode::None;
     step.settings.cull = CullMode::Front;
-    step.settings.depthFormat = DepthFormat::D16;
+    step.settings.depthFormat = TexelKind::D16;
     StepContext ctx = makeStepContext(step, {306, 194});
     EXPECT_EQ(ctx.pixel, glm::ivec2(306, 194));
     EXPECT_EQ(ctx.settings.bias, BiasMode::None);
     EXPECT_EQ(ctx.settings.cull, CullMode::Front);
-    EXPECT_EQ(ctx.settings.depthFormat, DepthFormat::D16);
+    EXPECT_EQ(ctx.settings.depthFormat, TexelKind::D16);
 }
 
 TEST(LessonText, AnIndexPastTheTraceIsNotAvailable) {

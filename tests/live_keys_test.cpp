@@ -121,7 +121,7 @@ TEST_F(LiveKeys, EveryNewKeyIsReachableFromKeysAndChangesWhatItSays) {
     press(session, "k");
     EXPECT_EQ(session.settings().cull, CullMode::Front);
     press(session, "d");
-    EXPECT_EQ(session.settings().depthFormat, DepthFormat::D16);
+    EXPECT_EQ(session.settings().depthFormat, TexelKind::D16);
 
     session.compose();
     std::vector<uint8_t> marked = session.readFrame();

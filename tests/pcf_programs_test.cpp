@@ -97,11 +97,11 @@ TEST_F(PcfPrograms, EveryTableUniformIsReadAndSetInTheSceneAndTheLookupPass) {
         PcfProgramCache lookupPrograms("fullscreen.vert", "lookup.frag",
                                        "#define PCF_LOOKUP_BIAS " + std::to_string(mode) + "\n");
         for (const PcfParams& prm : variantParams(s)) {
-            const PcfProgram& sceneProgram = scenePrograms.get(pcfVariant(prm, false, false));
+            const PcfProgram& sceneProgram = scenePrograms.get(pcfVariant(prm, false, MapSpec{}));
             setParamUniforms(sceneProgram, prm, bias, &s);
             collectLive(sceneProgram.id(), scene);
             // The lookup pass has no settings: its ref comes with each lookup.
-            const PcfProgram& lookupProgram = lookupPrograms.get(pcfVariant(prm, false, false));
+            const PcfProgram& lookupProgram = lookupPrograms.get(pcfVariant(prm, false, MapSpec{}));
             setParamUniforms(lookupProgram, prm, bias);
             collectLive(lookupProgram.id(), lookup);
         }
@@ -134,16 +134,16 @@ TEST_F(PcfPrograms, PcssReadsTheDepthRangeOnlyOnAPerspectiveMapAndTheReciprocals
     PcfParams spot = ortho;
     spot.depthNear = 1.0f;
     spot.depthFar = 4.0f;
-    EXPECT_EQ(pcfVariant(ortho, false, false).perspective, 0);
-    EXPECT_EQ(pcfVariant(spot, false, false).perspective, 1);
+    EXPECT_EQ(pcfVariant(ortho, false, MapSpec{}).perspective, 0);
+    EXPECT_EQ(pcfVariant(spot, false, MapSpec{}).perspective, 1);
     // Only pcss reads near and far: another method keeps its one program under a spot.
     PcfParams gatherUnderSpot = spot;
     gatherUnderSpot.method = PCF_GATHER;
-    EXPECT_EQ(pcfVariant(gatherUnderSpot, false, false).perspective, 0);
+    EXPECT_EQ(pcfVariant(gatherUnderSpot, false, MapSpec{}).perspective, 0);
 
     PcfBias bias = s.kernelBias();
-    const PcfProgram& orthoCached = programs.get(pcfVariant(ortho, false, false));
-    const PcfProgram& spotCached = programs.get(pcfVariant(spot, false, false));
+    const PcfProgram& orthoCached = programs.get(pcfVariant(ortho, false, MapSpec{}));
+    const PcfProgram& spotCached = programs.get(pcfVariant(spot, false, MapSpec{}));
     GLuint orthoProgram = orthoCached.id();
     GLuint spotProgram = spotCached.id();
     ASSERT_NE(orthoProgram, spotProgram);

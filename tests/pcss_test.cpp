@@ -225,11 +225,14 @@ TEST(Pcss, TheScaleIsTheLightsAngleInTexelsPerDepthUnit) {
     // Only pcss gets a scale; a spot light on an orthographic map (not a perspective one) none.
     ShadowSettings s;
     s.method = PCF_GATHER;
-    EXPECT_EQ(pcssPcfParams(scene.light, m, s).penumbraScale, 0.0f);
+    EXPECT_EQ(pcssPcfParams(scene.light, PcfMapLayer{m, pcssDepthRange(m), 0.0f}, s).penumbraScale,
+              0.0f);
     s.method = PCF_PCSS;
-    EXPECT_GT(pcssPcfParams(scene.light, m, s).penumbraScale, 0.0f);
+    EXPECT_GT(pcssPcfParams(scene.light, PcfMapLayer{m, pcssDepthRange(m), 0.0f}, s).penumbraScale,
+              0.0f);
     scene.light.type = LightType::Spot;
-    EXPECT_EQ(pcssPcfParams(scene.light, m, s).penumbraScale, 0.0f);
+    EXPECT_EQ(pcssPcfParams(scene.light, PcfMapLayer{m, pcssDepthRange(m), 0.0f}, s).penumbraScale,
+              0.0f);
 }
 
 // A spot map with near 1 and far 4 stores z = 4/3 * (1 - 1/d) at distance d: an occluder at
@@ -296,11 +299,11 @@ TEST(Pcss, ASpotsScaleAndDepthRangeComeFromItsMatrix) {
     ShadowSettings s;
     s.method = PCF_PCSS;
     s.mapSize = 128;
-    PcfParams p = pcssPcfParams(spot, m, s);
+    PcfParams p = pcssPcfParams(spot, PcfMapLayer{m, pcssDepthRange(m), 0.0f}, s);
     EXPECT_NEAR(p.penumbraScale, 32.0f, 1e-4f);
     EXPECT_NEAR(p.depthNear, 1.0f, 1e-5f);
     s.method = PCF_POISSON;
-    EXPECT_EQ(pcssPcfParams(spot, m, s).depthNear, 0.0f);
+    EXPECT_EQ(pcssPcfParams(spot, PcfMapLayer{m, pcssDepthRange(m), 0.0f}, s).depthNear, 0.0f);
 }
 
 }  // namespace

@@ -61,7 +61,7 @@ TexelSet shownTexels(const InspectorModel& m) {
     TexelSet out;
     if (!m.lightSpace || !m.trace) return out;
     const std::vector<float>& ls = *m.lightSpace;
-    glm::vec2 size(m.trace->mapSize);
+    glm::vec2 size(m.trace->map.size);
     for (size_t k = 0; k + 3 < ls.size(); k += 4) {
         if (ls[k + 3] != 1.0f) continue;
         glm::ivec2 t(glm::floor(glm::vec2(ls[k], ls[k + 1]) * size));

@@ -217,7 +217,7 @@ TEST(TraceSplit, ExplainingTheRecordAgainGivesTheSameSteps) {
 // (nothing is derived a second time from uv).
 TEST(TraceSplit, GatherWordsReadTheRecordedFootprint) {
     Trace tr = exampleTrace(PCF_GATHER);
-    PcfFootprint kernel = pcfKernelFootprint(tr.uv, tr.mapSize, tr.params.kernel);
+    PcfFootprint kernel = pcfKernelFootprint(tr.uv, tr.map.size, tr.params.kernel);
     EXPECT_EQ(tr.footprint.origin, kernel.origin);
     EXPECT_EQ(tr.footprint.frac, kernel.frac);
     tr.footprint.origin = ivec2(40, 50);

@@ -146,7 +146,7 @@ bool isStepsOwnAnimation(const LessonStep& step, const std::string& lessonPath, 
 }
 
 int defaultCompareMethod(int stepMethod) {
-    return stepMethod == PCF_NEAREST ? PCF_GATHER : PCF_NEAREST;
+    return methodInfo(stepMethod).hard ? PCF_GATHER : PCF_NEAREST;
 }
 
 AnimationOptions stepAnimationOptions(const LessonStep& step, const std::string& path,

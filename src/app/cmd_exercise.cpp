@@ -70,7 +70,7 @@ std::string traceCommand(const LessonSettings& s, const Trace& tr, const std::st
         if (!always && settingText(p, s) == settingText(p, plain)) continue;
         cmd += " " + settingFlag(p.key) + " " + settingText(p, s);
     }
-    if (s.depthFormat != DepthFormat::D32F) {
+    if (s.depthFormat != TexelKind::D32F) {
         cmd += " --depth-format " + std::string(depthFormatName(s.depthFormat));
     }
     if (s.bias == BiasMode::Slope) cmd += " --angle " + exact(lightAngle);

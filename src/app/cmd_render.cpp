@@ -117,7 +117,8 @@ void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderS
     writeExr(raw.positions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
     std::vector<float> receiver = renderer.readReceiver();
     writeExr(raw.receiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
-    writeTextFile(raw.settings, settingsJson(settings, renderer.pcfParams(settings)));
+    writeTextFile(raw.settings,
+                  settingsJson(settings, renderer.pcfParams(settings), renderer.mapSpec()));
 }
 
 // Says what was written, like export does (a silent success left users looking for it).

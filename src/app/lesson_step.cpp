@@ -134,7 +134,7 @@ Focus stepFocus(const LessonStep& step) {
     if (!step.chart.empty()) return Focus{.chart = true};
     if (std::optional<Focus> f = parseFocus(step.focus)) return *f;
     // A heat map is drawn over the scene, and a nearest lookup's hard edge is seen there.
-    if (step.settings.heatmap || step.settings.method == PCF_NEAREST) {
+    if (step.settings.heatmap || methodInfo(step.settings.method).hard) {
         return Focus{.scene = true, .neighbourhood = true};
     }
     return Focus{.neighbourhood = true, .formula = true};

@@ -300,15 +300,13 @@ void Session::renderScene() {
         stepView(mLesson.scene, mSettings, mPoint, glm::ivec2(mLayout.scene.size()), mShadowFit);
     const RenderSettings& r = view.render;
     mRenderer->setPick(view.pick);
-    // The map's texel grid slid and snapped as the lesson says (light.h: shiftShadowOrigin).
-    glm::vec3 shift(mSettings.originShift, mSettings.originShift, mSettings.snap ? 1.0f : 0.0f);
-    bool mapChanged = !mRendered || mRendered->mapSize != r.mapSize ||
-                      mRendered->depthFormat != r.depthFormat || mRendered->cull != r.cull ||
-                      mRendered->polygonOffset != r.polygonOffset || shift != mRenderedShift;
-    if (mapChanged) {
-        mRenderer->setShadowClipFromWorld(view.fit);
-        mRenderedShift = shift;
-    }
+    // The map is drawn again when the one it would draw is another value (its size, texel kind,
+    // or fit: the texel grid slid and snapped as the lesson says, light.h shiftShadowOrigin), or
+    // the depth pass draws it otherwise (culling, polygon offset).
+    bool mapChanged = !mRendered ||
+                      shadowMapSpec(mRenderer->scene(), r, view.fit) != mRenderer->mapSpec() ||
+                      mRendered->cull != r.cull || mRendered->polygonOffset != r.polygonOffset;
+    if (mapChanged) mRenderer->setShadowClipFromWorld(view.fit);
     mHeatDirty = true;
     // Only what changed: the shadow pass when the map did (renderStepView renders both).
     if (mapChanged) mRenderer->renderShadowPass(r);

@@ -259,8 +259,7 @@ class Session {
     bool mStepMagnified = false;  // the camera is a `magnify` step's close-up
     bool mHeatDirty = true;
     std::vector<float> mHeatValues;
-    OffscreenTarget mHeat;           // the heat map, rows top-down, blitted over the scene
-    glm::vec3 mRenderedShift{0.0f};  // origin shift and snap (1) the map was rendered with
+    OffscreenTarget mHeat;  // the heat map, rows top-down, blitted over the scene
     int mTextPage = 0;
     int mTextPages = 1;
     bool mRevealed = false;  // a predict step's answer is shown

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "app/animation.h"
 #include "app/magnifier.h"
 #include "kernel/methods.h"
 
@@ -20,7 +21,7 @@ CompareSpec viewerCompareSpec(const Session& session) {
         if (!own.empty()) return own;
     }
     int method = session.settings().method;
-    int other = method == PCF_NEAREST ? PCF_GATHER : PCF_NEAREST;
+    int other = defaultCompareMethod(method);
     CompareSpec spec;
     addCompareKey(spec, "method",
                   {std::string(methodInfo(method).name), std::string(methodInfo(other).name)});

@@ -43,9 +43,9 @@ const ParamInfo PARAMS[] = {
         [] { return std::string("exact, hw8"); }, "precision"}, ParamGroup::Filter,
      "", "", 0, 0, false,
      "texel position inside hardware taps and gathers: exact, hw8 (1/256 texel)", true},
-    {"depth_format", NamedField<DepthFormat>{&ShadowSettings::depthFormat, depthFormatName,
-        depthFormatFromName, [] { return std::string(DEPTH_FORMAT_NAMES); }, "depth format"},
-     ParamGroup::Map, "", "", 0, 0, false, "shadow map depth format: 16, 24, 32f", true},
+    {"depth_format", NamedField<TexelKind>{&ShadowSettings::depthFormat, depthFormatName,
+        depthFormatFromName, depthFormatNames, "depth format"},
+     ParamGroup::Map, "", "", 0, 0, false, "shadow map depth format", true},
     {"map_size", &ShadowSettings::mapSize, ParamGroup::Map, "", TEXELS, MIN_MAP_SIZE,
      MAX_MAP_SIZE, false, "shadow map size in texels (4..4096)", true},
     {"bias", NamedField<BiasMode>{&ShadowSettings::bias, biasModeName, biasModeFromName,
@@ -142,35 +142,31 @@ std::optional<ParamProblem> checkBiasSettings(const ShadowSettings& s) {
     return std::nullopt;
 }
 
-std::string_view depthFormatName(DepthFormat format) {
-    switch (format) {
-        case DepthFormat::D16:
-            return "16";
-        case DepthFormat::D24:
-            return "24";
-        case DepthFormat::D32F:
-            return "32f";
-    }
-    return "?";
+std::string_view depthFormatName(TexelKind format) { return texelKindName(format); }
+
+std::optional<TexelKind> depthFormatFromName(std::string_view name) {
+    std::optional<TexelKind> kind = texelKindFromName(name);
+    if (!kind || !texelKindInfo(*kind).depth) return std::nullopt;
+    return kind;
 }
 
-std::optional<DepthFormat> depthFormatFromName(std::string_view name) {
-    if (name == "16") return DepthFormat::D16;
-    if (name == "24") return DepthFormat::D24;
-    if (name == "32f" || name == "32F" || name == "32") return DepthFormat::D32F;
-    return std::nullopt;
+std::string depthFormatNames() {
+    std::string out;
+    for (TexelKind k : allTexelKinds()) {
+        if (!texelKindInfo(k).depth) continue;
+        out += (out.empty() ? "" : ", ") + std::string(texelKindName(k));
+    }
+    return out;
 }
 
-int depthFormatFixedPointBits(DepthFormat format) {
-    switch (format) {
-        case DepthFormat::D16:
-            return 16;
-        case DepthFormat::D24:
-            return 24;
-        case DepthFormat::D32F:
-            return 0;
+TexelKind nextDepthFormat(TexelKind format) {
+    std::span<const TexelKind> kinds = allTexelKinds();
+    auto at = std::find(kinds.begin(), kinds.end(), format);
+    for (size_t k = 1; k <= kinds.size(); ++k) {
+        TexelKind next = kinds[(static_cast<size_t>(at - kinds.begin()) + k) % kinds.size()];
+        if (texelKindInfo(next).depth) return next;
     }
-    return 0;
+    return format;
 }
 
 std::string_view biasModeName(BiasMode mode) { return biasName(static_cast<int>(mode)); }

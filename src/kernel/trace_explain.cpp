@@ -245,7 +245,7 @@ std::string biasSentence(const Trace& tr) {
 void stepProject(const Trace& tr, Steps& out) {
     std::ostringstream s;
     s << "The receiver point under this pixel projects to uv = " << pair(tr.uv) << " in the "
-      << tr.mapSize.x << " x " << tr.mapSize.y << " shadow map, at light depth z = " << num(tr.z)
+      << tr.map.size.x << " x " << tr.map.size.y << " shadow map, at light depth z = " << num(tr.z)
       << ". " << biasSentence(tr);
     addStep(out, K::Project, s.str());
 }
@@ -273,7 +273,7 @@ void stepPerTapRef(const Trace& tr, Steps& out) {
     std::map<std::pair<int, int>, bool> shown;
     for (const TapRecord& t : tr.taps) {
         auto key = std::make_pair(t.texel.x, t.texel.y);
-        if (shown.count(key) != 0 && m != PCF_HW && m != PCF_NAIVE) continue;
+        if (shown.count(key) != 0 && !methodInfo(m).overlappingLookups) continue;
         shown[key] = true;
         float alone = pcfCompare(t.depth, tr.ref);
         s << "\n  texel " << pair(t.texel) << ": ref " << num(t.ref) << " ("
@@ -314,8 +314,8 @@ void stepTexelPosition(const Trace& tr, Steps& out) {
     std::ostringstream s;
     s << "Texel centres sit at half-integers, so the lookup's texel position is p = uv * size - "
          "0.5 = ("
-      << num(tr.uv.x) << " * " << tr.mapSize.x << " - 0.5, " << num(tr.uv.y) << " * "
-      << tr.mapSize.y << " - 0.5) = " << pair(tr.pos.p)
+      << num(tr.uv.x) << " * " << tr.map.size.x << " - 0.5, " << num(tr.uv.y) << " * "
+      << tr.map.size.y << " - 0.5) = " << pair(tr.pos.p)
       << ". base = floor(p) = " << pair(tr.pos.base)
       << " is the lower corner of the 2x2 texels around the point; frac = p - "
          "base = "
@@ -332,7 +332,7 @@ void stepTapList(const Trace& tr, Steps& out, K kind, const std::string& intro) 
 
 void explainNearest(const Trace& tr, Steps& out) {
     const TapRecord& t = tr.taps.front();
-    PCF_PRECISE vec2 p = tr.uv * vec2(tr.mapSize);
+    PCF_PRECISE vec2 p = tr.uv * vec2(tr.map.size);
     std::ostringstream s;
     s << "No filtering: the point falls in texel floor(uv * size) = floor" << pair(p) << " = "
       << pair(t.texel) << ". One comparison decides: " << tapLine(t) << ".";
@@ -745,7 +745,7 @@ std::vector<TraceStep> explainTrace(const Trace& tr) {
     Steps out;
     stepProject(tr, out);
     stepPerTapRef(tr, out);
-    if (tr.bias.bias == BiasMode::Interpolated && tr.params.method == PCF_NEAREST) {
+    if (tr.bias.bias == BiasMode::Interpolated && methodInfo(tr.params.method).hard) {
         stepTexelPosition(tr, out);
         explainInterpolated(tr, out);
         return out;
@@ -761,12 +761,12 @@ std::vector<TraceStep> explainTrace(const Trace& tr) {
         case Method::Bilinear2x2:
         case Method::Hw2x2:
             stepTexelPosition(tr, out);
-            explainBilinear(tr, out, tr.params.method == PCF_HW2X2);
+            explainBilinear(tr, out, methodInfo(tr.params.method).reads == MethodReads::HwTaps);
             break;
         case Method::Naive:
         case Method::Hw:
             stepTexelPosition(tr, out);
-            explainKernelLoop(tr, out, tr.params.method == PCF_HW);
+            explainKernelLoop(tr, out, methodInfo(tr.params.method).reads == MethodReads::HwTaps);
             break;
         case Method::Gather:
             explainGather(tr, out);

@@ -63,7 +63,7 @@ std::optional<LessonSettings> afterLiveKey(LessonSettings s, std::string_view ke
     } else if (key == "K") {
         s.cull = static_cast<CullMode>((static_cast<int>(s.cull) + 1) % 3);
     } else if (key == "D") {
-        s.depthFormat = static_cast<DepthFormat>((static_cast<int>(s.depthFormat) + 1) % 3);
+        s.depthFormat = nextDepthFormat(s.depthFormat);
     } else if (key == "N") {
         s.shading = s.shading == Shading::Lit ? Shading::Visibility : Shading::Lit;
     } else {

@@ -7,6 +7,7 @@
 #include "kernel/shading.h"
 #include "scene/pcss.h"
 #include "scene/raycast.h"
+#include "scene/shadow_fit.h"
 
 namespace pcf {
 
@@ -120,7 +121,8 @@ float lightElevationDeg(const Light& light) {
 Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
                   const LessonSettings& s, const ScenePoint& point) {
     PinnedLookup at = pinnedLookup(scene, shadowClipFromWorld, s, point);
-    PcfParams pcss = pcssPcfParams(scene.light, shadowClipFromWorld, s);
+    PcfParams pcss =
+        pcssPcfParams(scene.light, shadowMapLayer(scene, shadowClipFromWorld, s.mapSize), s);
     PcfParams prm = s.pcfParams(at.uv, map.width(), pcss.penumbraScale);
     prm.depthNear = pcss.depthNear;
     prm.depthFar = pcss.depthFar;

@@ -53,7 +53,7 @@ int litCount(const Trace& tr) {
 
 PcfFootprint footprint(const Trace& tr) {
     int n = std::max(1, tr.params.kernel);
-    return pcfKernelFootprint(tr.uv, tr.mapSize, n);
+    return pcfKernelFootprint(tr.uv, tr.map.size, n);
 }
 
 const std::vector<Simple>& simpleNames() {
@@ -89,9 +89,9 @@ const std::vector<Simple>& simpleNames() {
         {"1-g.y",
          [](const Trace& t, const StepContext&) { return number(1.0f - footprint(t).frac.y); }},
         {"tent.s", [](const Trace& t,
-                      const StepContext&) { return number(pcfTentBase(t.uv, t.mapSize).frac.x); }},
+                      const StepContext&) { return number(pcfTentBase(t.uv, t.map.size).frac.x); }},
         {"tent.t", [](const Trace& t,
-                      const StepContext&) { return number(pcfTentBase(t.uv, t.mapSize).frac.y); }},
+                      const StepContext&) { return number(pcfTentBase(t.uv, t.map.size).frac.y); }},
         {"visibility", [](const Trace& t, const StepContext&) { return number(t.visibility); }},
         // Issue 10: the texture unit's 8-bit position (hw8) next to the float one.
         {"frac_hw8.x", [](const Trace& t, const StepContext&) { return number(t.fracHw8.x); }},
@@ -121,7 +121,7 @@ const std::vector<Simple>& simpleNames() {
         {"radius", [](const Trace& t, const StepContext&) { return number(t.params.radius); }},
         {"rotation",
          [](const Trace& t, const StepContext&) { return number(angleDeg(t.params.rotation)); }},
-        {"map_size", [](const Trace& t, const StepContext&) { return integer(t.mapSize.x); }},
+        {"map_size", [](const Trace& t, const StepContext&) { return integer(t.map.size.x); }},
         {"taps", [](const Trace& t,
                     const StepContext&) { return integer(static_cast<int>(t.taps.size())); }},
         {"texels", [](const Trace& t, const StepContext&) { return integer(t.counts.texels); }},
@@ -153,9 +153,9 @@ const std::vector<Simple>& simpleNames() {
         {"dzduv.v", [](const Trace& t, const StepContext&) { return number(t.dzduv.y); }},
         // The plane's depth change over half a texel of this map: dz/du * 0.5 / size.
         {"half_texel_dz.u",
-         [](const Trace& t, const StepContext&) { return number(t.dzduv.x * 0.5 / t.mapSize.x); }},
+         [](const Trace& t, const StepContext&) { return number(t.dzduv.x * 0.5 / t.map.size.x); }},
         {"half_texel_dz.v",
-         [](const Trace& t, const StepContext&) { return number(t.dzduv.y * 0.5 / t.mapSize.y); }},
+         [](const Trace& t, const StepContext&) { return number(t.dzduv.y * 0.5 / t.map.size.y); }},
         {"origin_shift", [](const Trace&, const StepContext& c) { return number(c.originShift); }},
         {"light_angle",
          [](const Trace&, const StepContext& c) {
@@ -177,7 +177,7 @@ const std::vector<Simple>& simpleNames() {
          [](const Trace& t, const StepContext&) { return number(t.pcss.searchRadius); }},
         {"pcss.search_taps",
          [](const Trace& t, const StepContext&) {
-             bool pcss = t.params.method == PCF_PCSS;
+             bool pcss = methodInfo(t.params.method).searchesBlockers;
              return integer(pcss ? std::min(static_cast<int>(t.taps.size()), PCF_PCSS_TAPS) : 0);
          }},
         {"pcss.blockers",
@@ -194,8 +194,9 @@ const std::vector<Simple>& simpleNames() {
          }},
         {"disk_reach",
          [](const Trace& t, const StepContext&) {
-             bool pcss = t.params.method == PCF_PCSS;
-             if (!pcss && t.params.method != PCF_POISSON) return number(0.0);
+             const MethodInfo& info = methodInfo(t.params.method);
+             bool pcss = info.searchesBlockers;
+             if (!info.hasDisk) return number(0.0);
              float scale = pcss ? t.pcss.filterRadius : t.params.radius;
              return number(scale * poissonSetReach());
          }},
@@ -205,7 +206,7 @@ const std::vector<Simple>& simpleNames() {
          }},
         {"depth_format",
          [](const Trace&, const StepContext& c) {
-             DepthFormat format = c.settings.depthFormat;
+             TexelKind format = c.settings.depthFormat;
              return text(std::string(depthFormatName(format)));
          }},
     };

@@ -363,7 +363,7 @@ Neighbourhood neighbourhoodOf(const Trace& tr) {
         lo = glm::min(lo, tr.weights.origin);
         hi = glm::max(hi, tr.weights.origin + tr.weights.size - glm::ivec2(1));
     }
-    glm::ivec2 point(glm::floor(tr.uv * glm::vec2(tr.mapSize)));
+    glm::ivec2 point(glm::floor(tr.uv * glm::vec2(tr.map.size)));
     lo = glm::min(lo, point);
     hi = glm::max(hi, point);
     return {lo, hi - lo + glm::ivec2(1)};

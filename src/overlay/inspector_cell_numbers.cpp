@@ -317,7 +317,7 @@ bool planCell(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm
               glm::ivec2 texel) {
     const Trace& tr = *m.trace;
     const TapRecord* tap = firstTapAt(tr, texel);
-    bool inMap = texel.x >= 0 && texel.y >= 0 && texel.x < tr.mapSize.x && texel.y < tr.mapSize.y;
+    bool inMap = texel.x >= 0 && texel.y >= 0 && texel.x < tr.map.size.x && texel.y < tr.map.size.y;
     std::vector<Item> all = cellItems(m, g, texel, tap, inMap);
     std::vector<std::vector<Item>> candidates =
         numberCandidates(all, tap != nullptr, inMap, g, numberFloor);

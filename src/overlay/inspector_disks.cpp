@@ -5,8 +5,9 @@
 namespace pcf::inspector_detail {
 
 DiskRings diskRings(const Trace& tr) {
-    bool pcss = tr.params.method == PCF_PCSS;
-    if (tr.params.method != PCF_POISSON && !pcss) return {};
+    const MethodInfo& info = methodInfo(tr.params.method);
+    bool pcss = info.searchesBlockers;
+    if (!info.hasDisk) return {};
     // poisson: the 16 points scaled by R texels (Jimmy, "Percentage Closer Filtering", 2010).
     // pcss (Fernando, "Percentage-Closer Soft Shadows", 2005): the blocker search's points, then,
     // when the search found a blocker, the filter's, scaled by half the penumbra's width. Each
@@ -42,8 +43,9 @@ void ringObstacles(CellMarks& marks, const Rect& area, glm::vec2 centre, float r
 
 void planDisks(Planner& pl, const Trace& tr, const Rect& area, glm::vec2 point, float cell,
                float width, LegendNeeds& legend, CellMarks& marks) {
-    bool pcss = tr.params.method == PCF_PCSS;
-    if (tr.params.method != PCF_POISSON && !pcss) return;
+    const MethodInfo& info = methodInfo(tr.params.method);
+    bool pcss = info.searchesBlockers;
+    if (!info.hasDisk) return;
     DiskRings rings = diskRings(tr);
     legend.disk = rings.filter > 0.0f;
     legend.searchDisk = pcss;

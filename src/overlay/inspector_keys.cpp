@@ -1,5 +1,6 @@
 // inspector_keys.cpp: the viewer's keys as the help overlay (H) and `pcfscope view --help` list
 // them, and the overlay drawn from that list.
+#include "kernel/settings.h"
 #include "overlay/inspector_plan.h"
 
 namespace pcf {
@@ -31,7 +32,7 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"W / Shift+W", "next / previous kernel weights"},
         {"I / Shift+I", "gaussian weights' sigma larger / smaller"},
         {"K", "cull mode of the shadow pass"},
-        {"D", "depth format: 16, 24, 32f"},
+        {"D", "depth format: " + depthFormatNames()},
         {"N", "shading: lit / the visibility alone (no N.L)"},
         {"X", "marks on the scene on / off"},
         {"C", "split view: the step's compare, or this method and nearest"},

@@ -49,7 +49,7 @@ std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeed
     if (need.fraction) entries.push_back({POINT, "fx, fy: lookup point - base texel centre", BAR});
     if (need.hw8) entries.push_back({HW8_POINT, "8-bit position (1/256 texel)", OUTLINE});
     if (need.dots) entries.push_back({ACCENT, "each lookup", DOT});
-    bool pcss = m.trace && m.trace->params.method == PCF_PCSS;
+    bool pcss = m.trace && methodInfo(m.trace->params.method).searchesBlockers;
     if (need.searchDisk) {
         entries.push_back(
             {SEARCH, need.blockerTaps ? "blocker search's disk" : "blocker search: taps, disk",

@@ -329,8 +329,9 @@ bool texelsInView(const Grid& g, const FetchRecord& fr, glm::vec2 size) {
 void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const Grid& g,
                     CellMarks& marks, LegendNeeds& legend) {
     const Trace& tr = *m.trace;
+    const MethodInfo& info = methodInfo(tr.params.method);
     float line = lineOf(l);
-    glm::vec2 size(tr.mapSize);
+    glm::vec2 size(tr.map.size);
     Rect area = g.area;
     float dotR = std::max(DOT_MIN_PX, std::round(g.cell * DOT_PER_CELL));
     // poisson's and pcss's points lie on a disk round the lookup point: they stay put.
@@ -355,13 +356,12 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
                      c.circle(p, std::max(RING_CORE_MIN_PX, rr * RING_CORE), ACCENT);
                  }});
             legend.rings = true;
-        } else if (tr.params.method == PCF_POISSON || tr.params.method == PCF_NAIVE ||
-                   tr.params.method == PCF_HW || tr.params.method == PCF_PCSS) {
+        } else if (info.hasDisk || info.overlappingLookups) {
             if (!area.contains(at)) continue;
             pl.plan.drawnFetches.push_back(static_cast<int>(fi));
             float mr = highlit ? dotR * 2.0f + 2.0f : dotR + 1.0f;  // the highlight's halo too
             // pcss: its first 16 reads are the blocker search's (weight 0), then the filter's.
-            bool search = tr.params.method == PCF_PCSS && fi < PCF_PCSS_TAPS;
+            bool search = info.searchesBlockers && fi < PCF_PCSS_TAPS;
             Colour dot = search ? SEARCH : ACCENT;
             marks.points.push_back({at, at, mr, "lookup", dot, [=](Canvas& c, glm::vec2 p) {
                                         if (highlit) c.circle(p, dotR * 2.0f + 1.0f, HIGHLIGHT);
@@ -429,7 +429,7 @@ void planPointMarks(Planner& pl, const InspectorLayout& l, const Grid& g, CellMa
 void planFractions(Planner& pl, const InspectorLayout& l, const Trace& tr, const Grid& g,
                    const TypeSizes& t, bool hidden) {
     const std::string panel = "inspector";
-    glm::vec2 size(tr.mapSize);
+    glm::vec2 size(tr.map.size);
     Rect area = g.area;
     float line = lineOf(l);
     glm::vec2 point = viewPoint(g, tr.uv * size);
@@ -497,8 +497,7 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     hiddenCells += planCellNumbers(pl, m, g, marks, t.numberFloor);
     planPointMarks(pl, l, g, marks, legend);
     for (auto& f : marks.ops) pl.op(std::move(f));
-    if (tr.params.method != PCF_NEAREST && tr.params.method != PCF_POISSON &&
-        tr.params.method != PCF_PCSS) {
+    if (!methodInfo(tr.params.method).nearestTexels) {
         legend.fraction = true;
         planFractions(pl, l, tr, g, t, m.hidden.fraction);
     }

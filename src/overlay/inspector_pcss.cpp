@@ -98,7 +98,7 @@ void planTexelGridUnder(Planner& pl, const Rect& sq, glm::vec2 centre, glm::vec2
 void planTapMarks(Planner& pl, const InspectorModel& m, const TypeSizes& t, const TapDisk& d,
                   const Rect& sq, glm::vec2 centre, float k) {
     const Trace& tr = *m.trace;
-    glm::vec2 size(tr.mapSize);
+    glm::vec2 size(tr.map.size);
     float mr = std::max(6.0f, std::round(t.number * 0.42f));
     std::vector<Rect> avoid;
     std::vector<glm::vec2> at;
@@ -162,7 +162,7 @@ float planTapDisk(Planner& pl, const InspectorModel& m, const TypeSizes& t, cons
     float radius = std::max(8.0f, 0.5f * side - pad);
     float reach = d.scale * poissonSetReach();
     float k = radius / std::max(reach, 1e-3f);  // pixels per texel
-    glm::vec2 lookup = tr.uv * glm::vec2(tr.mapSize);
+    glm::vec2 lookup = tr.uv * glm::vec2(tr.map.size);
     planTexelGridUnder(pl, sq, centre, lookup, k, need);
     float width = 2.0f;
     pl.op([=](Canvas& c) { c.ring(centre, radius, width, d.edge); });

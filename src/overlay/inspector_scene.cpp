@@ -126,7 +126,7 @@ void planTexelGrid(Planner& pl, const InspectorLayout& l, const InspectorModel& 
           m.lightSpace->size() == static_cast<size_t>(region.x) * region.y * 4)) {
         return;
     }
-    TexelLookup look{m, region, glm::vec2(m.trace->mapSize)};
+    TexelLookup look{m, region, glm::vec2(m.trace->map.size)};
     int radius = gridRadius(m.sceneSize);
     // How many screen pixels a texel spans here: the smaller of the row's and the column's.
     float texelPx = std::min(look.spanAlong({1, 0}, radius), look.spanAlong({0, 1}, radius));

@@ -202,7 +202,7 @@ FittedText tableTitle(const InspectorModel& m, const TypeSizes& t,
     // pcss: the texels only its blocker search read weigh 0 (the search counts blockers; the
     // filter's taps weigh the visibility). Without a word their w 0.000 reads as a tap that does
     // not count.
-    bool searchOnly = tr.params.method == PCF_PCSS &&
+    bool searchOnly = methodInfo(tr.params.method).searchesBlockers &&
                       std::any_of(texels.begin(), texels.end(),
                                   [&](glm::ivec2 x) { return tr.weights.at(x) == 0.0f; });
     if (searchOnly) title += " (`w 0.000`: read by the blocker search only)";
