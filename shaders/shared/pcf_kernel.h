@@ -436,9 +436,9 @@ PCF_MAP_FN vec4 pcfGatherSoft(Map map, vec2 uv, PcfRef ref, vec4 weights) {
     return bits;
 }
 
-// nearest: the one texel the lookup falls in, floor(uv * size). Hard: 0 or 1.
-PCF_MAP_FN float pcfNearest(Map map, vec2 uv, PcfRef ref, float weight) {
-    PCF_PRECISE vec2 p = uv * vec2(mapSize(map));
+// nearest at texel position p (texels, uv * size): the one texel floor(p). Hard: 0 or 1. uv is
+// the same point in uv, what the trace records and the interpolated comparison reads.
+PCF_MAP_FN float pcfNearestAt(Map map, vec2 p, vec2 uv, PcfRef ref, float weight) {
     if (ref.bias.mode == PCF_BIAS_INTERPOLATED) {
         pcfFetch(map, PCF_FETCH_LOOKUP, uv, weight);
         return pcfInterpolatedCompare(map, uv, ref.ref, weight);
@@ -446,6 +446,12 @@ PCF_MAP_FN float pcfNearest(Map map, vec2 uv, PcfRef ref, float weight) {
     pcfFetch(map, PCF_FETCH_POINT, uv, weight);
     // pointDepth, not fetchDepth of the int texel: in GLSL the sampler clamps, in float.
     return pcfCompareTexel(map, ivec2(floor(p)), pointDepth(map, p), ref, weight);
+}
+
+// nearest: the one texel the lookup falls in, floor(uv * size). Hard: 0 or 1.
+PCF_MAP_FN float pcfNearest(Map map, vec2 uv, PcfRef ref, float weight) {
+    PCF_PRECISE vec2 p = uv * vec2(mapSize(map));
+    return pcfNearestAt(map, p, uv, ref, weight);
 }
 
 // box2x2: the bilinear 2x2 texels, averaged without weights: only 0, .25, .5, .75 or 1.
@@ -723,6 +729,9 @@ PCF_MAP_FN float pcfTent(Map map, vec2 uv, PcfRef ref, int n) {
 
 // Jimmy 2010: 16 point-sampled comparisons at the Poisson points scaled by the given radius in
 // texels (the farthest 1.234 radius from uv), optionally rotated per pixel (rotation = (cos, sin)).
+// The points are placed in texel space: point k reads the texel floor(uv * size + offset_k),
+// one add per point from the lookup's own texel position (an offset taken to uv and back
+// would cost two multiplies and an add more, on every point, for the same place).
 PCF_FN vec2 pcfPoissonOffset(int k, float radius, vec2 rotation) {
     vec2 d = PCF_POISSON_DISK[k];
     PCF_PRECISE float x = d.x * rotation.x - d.y * rotation.y;
@@ -731,11 +740,13 @@ PCF_FN vec2 pcfPoissonOffset(int k, float radius, vec2 rotation) {
 }
 
 PCF_MAP_FN float pcfPoisson(Map map, vec2 uv, PcfRef ref, float radius, vec2 rotation) {
-    vec2 texelUv = vec2(1.0f) / vec2(mapSize(map));
+    vec2 size = vec2(mapSize(map));
+    vec2 texelUv = vec2(1.0f) / size;
+    PCF_PRECISE vec2 centre = uv * size;
     float sum = 0.0f;
     for (int k = 0; k < 16; ++k) {
-        PCF_PRECISE vec2 tapUv = uv + pcfPoissonOffset(k, radius, rotation) * texelUv;
-        sum += pcfNearest(map, tapUv, ref, 1.0f / 16.0f);
+        PCF_PRECISE vec2 p = centre + pcfPoissonOffset(k, radius, rotation);
+        sum += pcfNearestAt(map, p, p * texelUv, ref, 1.0f / 16.0f);
     }
     return sum * (1.0f / 16.0f);
 }
@@ -840,11 +851,12 @@ PCF_MAP_FN PcfPcssEstimate pcfPcssEstimate(Map map, vec2 uv, PcfRef ref, float p
     float search = pcfPcssRadius(searchHalf);
     int blockers = 0;
     PCF_PRECISE float depthSum = 0.0f;
+    // The search's points in texel space, as poisson's (pcfPoisson).
+    PCF_PRECISE vec2 centre = uv * vec2(size);
     for (int k = 0; k < PCF_PCSS_TAPS; ++k) {
-        PCF_PRECISE vec2 tapUv = uv + pcfPoissonOffset(k, search, rotation) * texelUv;
-        PCF_PRECISE vec2 p = tapUv * vec2(size);
+        PCF_PRECISE vec2 p = centre + pcfPoissonOffset(k, search, rotation);
         ivec2 texel = ivec2(floor(p));
-        pcfFetch(map, PCF_FETCH_POINT, tapUv, 0.0f);
+        pcfFetch(map, PCF_FETCH_POINT, p * texelUv, 0.0f);
         pcfTapWanted(map, texel);
         ivec2 t = pcfClampTexel(texel, size);
         // pointDepth, not fetchDepth(t): in GLSL the sampler clamps, in float (as pcfNearest).
