@@ -18,13 +18,11 @@ in vec3 vPosWs;
 in vec3 vNormalWs;
 
 uniform sampler2D uPcfDepth;          // the shadow map, texelFetch side (pcf_prelude.h)
-uniform mat4 uShadowClipFromWorld;    // light clip space from world
 uniform vec3 uAlbedoEncoded;          // pow(linear colour of this object, 1 / 2.2)
 uniform int uReceives;                // 1: look the shadow map up; 0: never shadowed
 uniform vec3 uLightDirWs;             // the direction the light travels (unit)
 uniform vec3 uLightPosWs;             // spot only
 uniform float uSpotCosCone;           // spot only: cos of the cone's half angle
-uniform float uShadowTexelWs;         // world size of one map texel at clip.w = 1
 uniform ivec2 uPickPixel;             // a lesson's pinned point's pixel (window coords); -1: none
 uniform vec4 uPickLookup;             // its u, v, ref, z0, computed on the CPU
 uniform vec2 uPickDzDuv;              // its receiver plane, dz/du, dz/dv
@@ -59,9 +57,12 @@ void main() {
     // Where this receiver point is looked up, and its ref (shared/pcf_shading.h, the same
     // function the CPU runs for a lesson's pinned point). BIAS_MODE is a constant: the driver
     // folds the modes this program does not use.
-    PcfReceiverLookup at = pcfReceiverLookup(uShadowClipFromWorld, vPosWs, n, dot(n, toLight),
+    // The layer of the map this receiver reads (uPcfMapLayers: render/pcf_programs.h): the
+    // map's one layer.
+    PcfMapLayer layer = uPcfMapLayers[0];
+    PcfReceiverLookup at = pcfReceiverLookup(layer.shadowClipFromWorld, vPosWs, n, dot(n, toLight),
                                              BIAS_MODE, uConstantBias, uSlopeBias, uSlopeMax,
-                                             uNormalOffset, uShadowTexelWs);
+                                             uNormalOffset, layer.texelWs);
     float u = at.u;
     float v = at.v;
     float z = at.z;
@@ -106,6 +107,10 @@ void main() {
     // camera pass cost beyond the filter (docs/measurement.md, "What the passes cost").
     float light = AMBIENT + (1.0f - AMBIENT) * nDotL * visibility * cone;
     oColour = vec4(uAlbedoEncoded * pcfGammaEncode(light), 1.0f);
+    // --shading visibility (uShading, the parameter table's): the visibility alone as the grey
+    // level, what reaches the point of the light (outside a spot's cone none does), with no N.L,
+    // so that acne under a low sun is black on white (shared/pcf_shading.h).
+    if (uShading == PCF_SHADING_VISIBILITY) oColour = vec4(vec3(visibility * cone), 1.0f);
 #if PCF_ALL_TARGETS
     oLightSpace = uReceives != 0 ? vec4(u, v, ref, 1.0f) : vec4(0.0f);
     oVisibility = visibility;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +17,7 @@
 
 #include "analysis/failure_measures.h"
 #include "analysis/stability.h"
+#include "json_lite.h"
 #include "render/gl_context.h"
 #include "run_command.h"
 #include "video_read.h"
@@ -165,6 +167,69 @@ TEST(AnimateCommand, FramesAreTheSameBytesRunToRunAndVideosReadBack) {
             << e.path();
     }
     fs::remove_all(dir);
+}
+
+// A JSON number as `pcfscope trace` reads it back into the same float.
+std::string floatText(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", v);
+    return buf;
+}
+
+// `animate --png DIR` writes beside each frame's PNG its JSON, as `export` writes a still's: the
+// trace, the layout with the words drawn, the settings and the frame's motion. Its trace is the
+// one `pcfscope trace` gives on that frame's map at that frame's lookup: a bias sweep keeps the
+// map (the constant bias is the camera pass's), which `render --raw` writes for the step.
+TEST(AnimateCommand, EachPngHasItsFramesJsonWhoseTraceIsTracesAtThatLookup) {
+    fs::path dir = testutil::makeTempDir("animate-json");
+    std::string d = dir.string();
+    testutil::CommandResult r = testutil::runPcfscope(
+        "animate 14 --step 3 --sweep bias --frames 3 --size 640x360 --png " + d + "/png");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    testutil::CommandResult raw = testutil::runPcfscope("render --lesson 14 --step 3 --raw " + d +
+                                                        "/raw -o " + d + "/still.png");
+    ASSERT_EQ(raw.exitCode, 0) << raw.err;
+    AnimationOptions sweep;
+    sweep.sweep = AnimationSweep::Bias;
+    sweep.frames = 3;
+    for (int k = 1; k <= 3; ++k) {
+        std::string stem = d + "/png/14-bias-trade-off-step03-bias-000" + std::to_string(k);
+        ASSERT_TRUE(fs::exists(stem + ".png")) << stem;
+        ASSERT_TRUE(fs::exists(stem + ".json")) << stem;
+        jsonlite::Value frame = jsonlite::parse(testutil::readAll(stem + ".json"));
+        EXPECT_EQ(frame["motion"]["sweep"].string, "bias");
+        EXPECT_EQ(frame["motion"]["frame"].number, k);
+        double bias = frame["settings"]["constant_bias"].number;
+        EXPECT_NEAR(bias, animationSweepValue(sweep, k - 1), 1e-6 * bias) << k;
+        // The words drawn, as drawn: the step-text box knows them.
+        bool words = false;
+        for (const jsonlite::Value& box : frame["layout"].array) {
+            words |=
+                box["role"].string == "step-text" && box.has("text") && !box["text"].string.empty();
+        }
+        EXPECT_TRUE(words) << k;
+        const jsonlite::Value& t = frame["trace"];
+        testutil::CommandResult traced = testutil::runPcfscope(
+            "trace --map " + d + "/raw/shadowmap.exr --uv " + floatText(t["uv"][size_t{0}].number) +
+            "," + floatText(t["uv"][size_t{1}].number) + " --z " + floatText(t["z"].number) +
+            " --method pcf-gather --kernel 3 --bias constant --constant-bias " + floatText(bias) +
+            " --json");
+        ASSERT_EQ(traced.exitCode, 0) << traced.err;
+        jsonlite::Value want = jsonlite::parse(traced.out);
+        EXPECT_EQ(t["ref"].number, want["ref"].number) << k;
+        EXPECT_EQ(t["visibility"].number, want["visibility"].number) << k;
+        ASSERT_EQ(t["taps"].size(), want["taps"].size()) << k;
+        for (size_t i = 0; i < t["taps"].size(); ++i) {
+            for (const char* field : {"depth", "ref", "lit", "weight"}) {
+                EXPECT_EQ(t["taps"][i][field].number, want["taps"][i][field].number)
+                    << "frame " << k << " tap " << i << " " << field;
+            }
+            for (size_t c : {0u, 1u}) {
+                EXPECT_EQ(t["taps"][i]["texel"][c].number, want["taps"][i]["texel"][c].number);
+            }
+        }
+    }
+    if (!HasFailure()) fs::remove_all(dir);
 }
 
 TEST(AnimateCommand, CtrlCLeavesNoHalfVideoNorScratchFolder) {

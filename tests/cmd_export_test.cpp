@@ -340,12 +340,13 @@ TEST_F(ExportTest, ViewKeysScreenshotIsTheExportedFrame) {
     ASSERT_EQ(other.exitCode, 0) << other.err;
     EXPECT_NE(readFile(path("shot-m.png")), readFile(path("frames/test-step03.png")));
     // Keys that change the state the words were written for: the numbers follow the live
-    // state and the text says it was written for another one (the E key's JSON holds it).
-    auto wider = runPcfscope("view 5 --keys \"right_bracket e\" --screenshot " + path("n4.png"),
+    // state and the text says it was written for another one (the E key's JSON holds it; 5.1
+    // asks first, R shows the answer and the words).
+    auto wider = runPcfscope("view 5 --keys \"right_bracket r e\" --screenshot " + path("n4.png"),
                              "cd " + mDir.string() + " && DISPLAY=" + x.display());
     ASSERT_EQ(wider.exitCode, 0) << wider.err;
     jsonlite::Value step =
-        jsonlite::parse(readFile(path("pcfscope-frames/05-gather-weights-step01.json")));
+        jsonlite::parse(readFile(path("pcfscope-frames/05-gather-weights-step01-reveal.json")));
     EXPECT_NE(step["text"].string.find("(Written for pcf-gather N=3"), std::string::npos)
         << step["text"].string;
     EXPECT_NE(step["text"].string.find("now pcf-gather N=4"), std::string::npos);

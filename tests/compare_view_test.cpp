@@ -9,10 +9,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/animation.h"
 #include "app/magnifier.h"
@@ -158,6 +162,8 @@ TEST(CompareView, HasTheLessonFramesStatusLineAndItsHelp) {
             SCOPED_TRACE(std::string(presentation ? "presentation" : "normal") +
                          (help ? ", help" : ""));
             main.setHelp(help);
+            // The window's frame (help is the window's key) names H; a written one does not.
+            main.setInteractive(help);
             view.follow(main);
             view.compose();
             EXPECT_EQ(view.status(), main.statusText() + "   compare bias=none,constant,slope");
@@ -175,7 +181,7 @@ TEST(CompareView, HasTheLessonFramesStatusLineAndItsHelp) {
             }
             EXPECT_EQ(statusPanel, single) << "where the lesson's frame has it";
             EXPECT_TRUE(words.starts_with(main.statusText().substr(0, 20))) << words;
-            EXPECT_TRUE(keysHint) << "H: keys";
+            EXPECT_EQ(keysHint, help) << "H: keys is the window's hint, not a written frame's";
             EXPECT_EQ(helpShown, help);
             for (int i = 0; i < view.parts(); ++i) {
                 EXPECT_LE(view.partRect(i).bottom(), statusPanel.y) << "part " << i;
@@ -254,6 +260,83 @@ TEST(AnimateCommand, ThreeBiasSunSetIsTheSameBytesRunToRunWithEveryFrame) {
         EXPECT_FALSE(fs::exists(out)) << args;
     }
     fs::remove_all(dir);
+}
+
+// The lines of `text` from the one holding `marker` through its command's last line (the lines
+// that end in a backslash run on), the command joined into one line without "pcfscope ".
+std::string guideCommandAfter(const std::string& text, const std::string& marker) {
+    size_t at = text.find(marker);
+    if (at == std::string::npos) return "";
+    size_t start = text.find("\npcfscope ", at);
+    if (start == std::string::npos) return "";
+    std::string command;
+    for (size_t line = start + 1;;) {
+        size_t end = text.find('\n', line);
+        std::string l = text.substr(line, end - line);
+        bool more = !l.empty() && l.back() == '\\';
+        if (more) l.pop_back();
+        command += l;
+        if (!more || end == std::string::npos) break;
+        line = end + 1;
+    }
+    return command.substr(std::string("pcfscope ").size());
+}
+
+// The user guide's creep example, run exactly as the guide prints it: its words say "nearest
+// and tent 3: a jump against a ramp". The split view's parts are nearest and tent 3 (before, the
+// step's kernel 5 drew tent 5 under an acne the words never named); nearest's line goes from 0
+// to 1 in one frame, tent 3's never moves by a twentieth between frames and climbs from 0.1 to
+// 0.9 over some forty frames, as the paragraph under the example says.
+TEST(AnimateCommand, TheUserGuidesCreepExampleShowsWhatItsWordsSay) {
+    std::string guide = testutil::readAll(std::string(PCFSCOPE_SOURCE_DIR) + "/docs/user-guide.md");
+    const std::string marker = "# one point's visibility under a creeping camera";
+    size_t at = guide.find(marker);
+    ASSERT_NE(at, std::string::npos);
+    std::string words = guide.substr(at, guide.find('\n', at) - at);
+    EXPECT_NE(words.find("nearest and tent 3: a jump against a ramp"), std::string::npos) << words;
+    EXPECT_NE(guide.find("climbs from 0.1 to 0.9 over some forty frames"), std::string::npos);
+    std::string command = guideCommandAfter(guide, marker);
+    ASSERT_NE(command.find("-o creep.mp4"), std::string::npos) << command;
+    fs::path dir = testutil::makeTempDir("creep");
+    testutil::CommandResult r = testutil::runPcfscope(command, "cd " + dir.string() + " &&");
+    ASSERT_EQ(r.exitCode, 0) << command << ": " << r.err;
+    testutil::expectMp4(testutil::readVideo((dir / "creep.mp4").string()), 1280, 720, 72);
+    // The same frames with their JSON, to read the parts' labels and lines.
+    testutil::CommandResult png =
+        testutil::runPcfscope(command + " --png frames -f", "cd " + dir.string() + " &&");
+    ASSERT_EQ(png.exitCode, 0) << png.err;
+    std::vector<float> nearest, tent;
+    for (int k = 1; k <= 72; ++k) {
+        char name[64];
+        std::snprintf(name, sizeof name, "frames/13-shimmer-and-snapping-step03-camera-%04d.json",
+                      k);
+        jsonlite::Value frame = jsonlite::parse(testutil::readAll(dir / name));
+        ASSERT_EQ(frame["parts"].size(), 2u);
+        EXPECT_EQ(frame["parts"][size_t{0}]["label"].string.find("method nearest"), 0u);
+        EXPECT_EQ(frame["parts"][size_t{1}]["label"].string, "method tent, kernel 3");
+        nearest.push_back(static_cast<float>(frame["parts"][size_t{0}]["visibility"].number));
+        tent.push_back(static_cast<float>(frame["parts"][size_t{1}]["visibility"].number));
+    }
+    int nearestChanges = 0, rising10 = -1, rising90 = -1;
+    float tentJump = 0.0f;
+    for (size_t k = 0; k < tent.size(); ++k) {
+        EXPECT_TRUE(nearest[k] == 0.0f || nearest[k] == 1.0f) << k;
+        if (k > 0) {
+            nearestChanges += nearest[k] != nearest[k - 1];
+            tentJump = std::max(tentJump, std::fabs(tent[k] - tent[k - 1]));
+        }
+        if (rising10 < 0 && tent[k] > 0.1f) rising10 = static_cast<int>(k);
+        if (rising90 < 0 && tent[k] > 0.9f) rising90 = static_cast<int>(k);
+    }
+    EXPECT_EQ(nearest.front(), 0.0f);
+    EXPECT_EQ(nearest.back(), 1.0f);
+    EXPECT_EQ(nearestChanges, 1) << "one jump";
+    EXPECT_LT(tentJump, 0.05f) << "a ramp";
+    ASSERT_GE(rising10, 0);
+    ASSERT_GE(rising90, 0);
+    EXPECT_GE(rising90 - rising10, 35);
+    EXPECT_LE(rising90 - rising10, 50);
+    if (!HasFailure()) fs::remove_all(dir);
 }
 
 // The texel steps on screen at the session's pinned pixel, from the GPU's light-space lookups

@@ -24,7 +24,7 @@ ShadowMap randomMap(int w, int h, uint32_t seed, int bits) {
     for (int j = 0; j < h; ++j) {
         for (int i = 0; i < w; ++i) map.setDepth(i, j, u(rng) < 0.5f ? 0.3f : 0.3f + u(rng));
     }
-    map.setFixedPointBits(bits);
+    map.setTexelKind(bits == 16 ? TexelKind::D16 : bits == 24 ? TexelKind::D24 : TexelKind::D32F);
     return map;
 }
 

@@ -15,8 +15,12 @@
 #include <utility>
 #include <vector>
 
+#include "lesson/lesson.h"
+#include "lesson/lesson_catalogue.h"
 #include "lesson/lesson_text.h"
 #include "overlay/inspector.h"
+#include "run_command.h"
+#include "virtual_display.h"
 
 namespace pcf {
 namespace {
@@ -177,6 +181,83 @@ TEST(Docs, EveryRelativeLinkLeadsToAFileAndHeading) {
         }
     }
     EXPECT_GT(checked, 10);
+}
+
+// The commands of a page's ```sh blocks, in order.
+std::vector<std::string> shellCommands(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    bool sh = false;
+    for (std::string line; std::getline(in, line);) {
+        if (line.starts_with("```")) {
+            sh = !sh && line == "```sh";
+            continue;
+        }
+        if (sh && !line.empty()) out.push_back(line);
+    }
+    return out;
+}
+
+TEST(Docs, EveryCommandOfTheTeachingPageRuns) {
+    std::vector<std::string> commands = shellCommands(readFile(SOURCE_DIR / "docs/teaching.md"));
+    ASSERT_GE(commands.size(), 5u);
+    fs::path dir = testutil::makeTempDir("teaching");
+    testutil::VirtualDisplay x;
+    ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
+    int views = 0;
+    for (const std::string& command : commands) {
+        SCOPED_TRACE(command);
+        ASSERT_TRUE(command.starts_with("pcfscope ")) << "a command that is not pcfscope's";
+        std::string args = command.substr(9);
+        // The viewer runs as written; --screenshot closes its window after the keys.
+        if (args.starts_with("view ")) {
+            args += " --screenshot view" + std::to_string(++views) + ".png";
+        }
+        testutil::CommandResult r =
+            testutil::runPcfscope(args, "cd " + dir.string() + " && DISPLAY=" + x.display());
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+    }
+    // What the page says the commands leave.
+    for (const char* file :
+         {"lecture/06-hardware-taps-and-tent.html", "lecture/06-hardware-taps-and-tent.pdf",
+          "handout/06-hardware-taps-and-tent-handout.pdf", "tutorial/worksheet.pdf",
+          "tutorial/answers.pdf", "tutorial/answers/answers.json",
+          "tutorial/worksheet/item08.png"}) {
+        EXPECT_TRUE(fs::exists(dir / file)) << file;
+    }
+    EXPECT_EQ(views, 2);
+    if (!::testing::Test::HasFailure()) fs::remove_all(dir);
+}
+
+// The steps that ask before they tell, as the teaching page and the user guide list them:
+// "2.2, 3.2, ..." against the lessons' `predict` steps.
+TEST(Docs, ThePredictStepsListedAreTheLessonsOwn) {
+    std::vector<std::string> actual;
+    for (const std::string& path : builtInLessons()) {
+        Lesson lesson = parseLessonFile(path);
+        int number = std::stoi(lesson.name.substr(0, 2));
+        for (size_t k = 0; k < lesson.steps.size(); ++k) {
+            if (lesson.steps[k].predict) {
+                actual.push_back(std::to_string(number) + "." + std::to_string(k + 1));
+            }
+        }
+    }
+    std::regex listed(R"(((?:\d+\.\d+, )+\d+\.\d+ and \d+\.\d+))");
+    for (const char* page : {"docs/teaching.md", "docs/user-guide.md"}) {
+        std::string text = readFile(SOURCE_DIR / page);
+        size_t at = text.find("predict step (");
+        if (at == std::string::npos) at = text.find("Steps ");
+        std::smatch m;
+        std::string from = text.substr(at);
+        ASSERT_TRUE(std::regex_search(from, m, listed)) << page;
+        std::vector<std::string> named;
+        std::regex step(R"(\d+\.\d+)");
+        std::string list = m[1];
+        for (std::sregex_iterator it(list.begin(), list.end(), step), end; it != end; ++it) {
+            named.push_back(it->str());
+        }
+        EXPECT_EQ(named, actual) << page;
+    }
 }
 
 }  // namespace

@@ -538,6 +538,43 @@ TEST(SpeedChart, TheFrontIsOfTheMediansOfEveryDot) {
     EXPECT_NE(md.find("| tent * | 5 |"), std::string::npos) << md;
 }
 
+// A lesson's orange rings (chart_highlight) mark the dots its words name, not a front: the legend
+// says so, with an orange ring of its own, whenever they are drawn, and only then (16.6 ringed
+// pcss, off the front, and nothing on the chart said what the ring meant).
+TEST(SpeedChart, TheLegendNamesTheOrangeRings) {
+    std::string csv = std::string(BENCH_CSV_HEADER_V2) + "\n";
+    csv += "nearest,0,256,2,1,1,0,1,0.5,1,t,0.1,1,0.05,0\n";
+    csv += "pcf-gather,3,256,5,1,16,0,1,0.3,1,t,0.2,2,0.1,0\n";
+    csv += "tent,5,1024,20,1,36,0,1,0.1,1,t,1,10,0.5,0\n";
+    std::vector<BenchRow> rows = parseBenchCsv(csv, "ringed.csv");
+    ASSERT_EQ(rows.size(), 3u);
+    auto entries = [&](const SpeedChartLayout& L) {
+        int named = 0;
+        std::vector<ChartTextBox> boxes = speedChartTextBoxes(L, SpeedChartText{});
+        for (const ChartTextBox& b : boxes) {
+            if (b.role != "chart-legend" || b.text != HIGHLIGHT_LEGEND) continue;
+            ++named;
+            // Its swatch on its line, clear of the words and inside the legend.
+            for (const ChartTextBox& w : boxes) {
+                if (w.role == "chart-swatch" && w.text == HIGHLIGHT_LEGEND) {
+                    EXPECT_TRUE(w.rect.intersect(b.rect).empty());
+                    EXPECT_TRUE(L.legend.contains(w.rect.centre()));
+                    EXPECT_NEAR(w.rect.centre().y, b.rect.centre().y, 0.5f * b.rect.h);
+                }
+            }
+        }
+        return named;
+    };
+    const std::vector<size_t> ringed{0, 1};
+    for (glm::ivec2 size : {glm::ivec2(1280, 720), glm::ivec2(480, 270)}) {
+        EXPECT_EQ(entries(layoutSpeedChart(rows, size)), 0);
+        SpeedChartLayout L =
+            layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse, ringed);
+        EXPECT_EQ(entries(L), 1);
+        EXPECT_LE(L.legend.bottom(), static_cast<float>(size.y));
+    }
+}
+
 // A chart drawn from a CSV names the renderer the CSV records (a lesson's chart, from the
 // shipped bench.csv: llvmpipe, with what carries over to a GPU), in its layout list; a CSV from
 // before the renderer column says it was not recorded, and no renderer is made up.

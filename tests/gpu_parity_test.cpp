@@ -63,14 +63,14 @@ struct Agreement {
 std::vector<PcfParams> parityCases(std::initializer_list<int> kernels) {
     std::vector<PcfParams> cases;
     for (const MethodInfo& m : allMethods()) {
-        if (m.id == PCF_TENT) {
-            for (int n : {3, 5, 7}) cases.push_back(makeParams(m.id, n));
+        if (!m.kernelSizes.empty()) {
+            for (int n : m.kernelSizes) cases.push_back(makeParams(m.id, n));
         } else if (m.usesKernel) {
             for (int n : kernels) cases.push_back(makeParams(m.id, n));
-        } else if (m.id == PCF_POISSON) {
+        } else if (m.usesRadius) {
             cases.push_back(makeParams(m.id, 1, 1.0f));
             cases.push_back(makeParams(m.id, 1, 2.5f));
-        } else if (m.id == PCF_PCSS) {
+        } else if (m.searchesBlockers) {
             // A light of no size (radius 1 throughout) and one whose disks span many texels.
             for (float scale : {0.0f, 30.0f}) {
                 PcfParams p = makeParams(m.id, 1);
@@ -97,7 +97,7 @@ TEST_F(GpuParity, RandomLookupsOnRandomMapsMatchTheCpuKernel) {
         std::vector<glm::vec4> lookups = randomLookups(size, width, 64, 18 + size.x);
         for (bool rotate : {false, true}) {
             for (const PcfParams& prm : parityCases({1, 2, 3, 5, 8})) {
-                if (rotate && prm.method != PCF_POISSON && prm.method != PCF_PCSS) continue;
+                if (rotate && !methodInfo(prm.method).hasDisk) continue;
                 std::vector<float> got = gpu.run(map, lookups, width, prm, rotate);
                 Agreement a;
                 for (size_t k = 0; k < lookups.size(); ++k) {
@@ -112,6 +112,30 @@ TEST_F(GpuParity, RandomLookupsOnRandomMapsMatchTheCpuKernel) {
             }
         }
     }
+}
+
+// The shader's dispatch (pcf_kernel.h pcfFilterRef, compiled as GLSL with the method a define)
+// has a branch for every method of the table and every weighting: none gives PCF_UNDISPATCHED,
+// which an id without a branch gets on the GPU as on the CPU (so parity alone cannot tell).
+TEST_F(GpuParity, TheShadersDispatchHasABranchForEveryMethod) {
+    GpuLookup gpu;
+    ShadowMap map = randomMap(32, 32, 5);
+    const int width = 16;
+    std::vector<glm::vec4> lookups = randomLookups(glm::ivec2(32), width, 16, 6);
+    for (const MethodInfo& m : allMethods()) {
+        for (int weights : {PCF_WEIGHTS_BOX, PCF_WEIGHTS_BINOMIAL, PCF_WEIGHTS_GAUSSIAN}) {
+            if (weights != PCF_WEIGHTS_BOX && !m.takesWeights) continue;
+            PcfParams prm = makeParams(m.id, fitKernel(m.id, 3));
+            prm.weights = weights;
+            std::vector<float> got = gpu.run(map, lookups, width, prm, false);
+            auto [lo, hi] = std::minmax_element(got.begin(), got.end());
+            EXPECT_GE(*lo, 0.0f) << m.name << " weights " << weights;
+            EXPECT_LE(*hi, 1.0f) << m.name << " weights " << weights;
+        }
+    }
+    std::vector<float> unknown =
+        gpu.run(map, lookups, width, makeParams(PCF_METHOD_COUNT, 3), false);
+    for (float v : unknown) ASSERT_EQ(v, PCF_UNDISPATCHED);
 }
 
 // textureGather's components are texels (0,1), (1,1), (1,0), (0,0) of the 2x2 block: a map
@@ -158,7 +182,9 @@ TEST_F(GpuParity, FixedPointReadbackIsTheSamplersFloat) {
         for (int j = 0; j < size.y; ++j) {
             for (int i = 0; i < size.x; ++i) map.setDepth(i, j, 0.05f + 0.9f * unit(rng));
         }
-        map.setFixedPointBits(bits);
+        map.setTexelKind(bits == 16   ? TexelKind::D16
+                         : bits == 24 ? TexelKind::D24
+                                      : TexelKind::D32F);
         std::vector<glm::vec4> probe(static_cast<size_t>(size.x) * size.y);
         gpu.run(map, probe, size.x, makeParams(PCF_HW2X2), false);
         ShadowMap stored = gpu.storedMap();
@@ -222,7 +248,9 @@ TEST_F(GpuParity, EveryFormatAndOutOfRangeRefsMatchTheCpuKernel) {
                     map.setDepth(i, j, unit(rng) < 0.1f ? 1.0f : unit(rng));
                 }
             }
-            map.setFixedPointBits(bits);
+            map.setTexelKind(bits == 16   ? TexelKind::D16
+                             : bits == 24 ? TexelKind::D24
+                                          : TexelKind::D32F);
             const int width = 64;
             std::vector<glm::vec4> lookups(width * 16);
             for (glm::vec4& l : lookups) l = glm::vec4(around(rng), around(rng), refs(rng), 0.0f);
@@ -261,7 +289,7 @@ TEST_F(GpuParity, RenderedFixedPointFramesMatchWithAnyBias) {
     for (const char* preset : {"grazing", "sphere-over-plane"}) {
         Scene scene = *presetScene(preset);
         SceneRenderer renderer(scene);
-        for (DepthFormat format : {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F}) {
+        for (TexelKind format : {TexelKind::D16, TexelKind::D24, TexelKind::D32F}) {
             for (float bias : {0.0f, -0.5f, 0.5f}) {
                 for (int method : {PCF_NEAREST, PCF_BILINEAR2X2, PCF_HW2X2, PCF_GATHER, PCF_TENT}) {
                     RenderSettings s;
@@ -459,11 +487,11 @@ TEST_F(GpuParity, BiasModesRenderedMatchTheCpuKernelOnTheGpusOwnTargets) {
     SceneRenderer renderer(scene);
     for (int mode = 0; mode < PCF_BIAS_COUNT; ++mode) {
         float worstMode = 0.0f;
-        for (DepthFormat format : {DepthFormat::D32F, DepthFormat::D16, DepthFormat::D24}) {
+        for (TexelKind format : {TexelKind::D32F, TexelKind::D16, TexelKind::D24}) {
             for (const PcfParams& prm : parityCases({3})) {
                 if (validateBias(mode, prm.method)) continue;
                 if (prm.method == PCF_TENT && prm.kernel != 5) continue;
-                if (format != DepthFormat::D32F && prm.method != PCF_NEAREST &&
+                if (format != TexelKind::D32F && prm.method != PCF_NEAREST &&
                     prm.method != PCF_BILINEAR2X2 && prm.method != PCF_HW2X2 &&
                     prm.method != PCF_GATHER && prm.method != PCF_TENT)
                     continue;

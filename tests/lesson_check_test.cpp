@@ -105,6 +105,60 @@ TEST_F(LessonCheck, ABadClaimIsABadFile) {
     EXPECT_NE(r.err.find(":9: step 1 keys: unknown key 'X'"), std::string::npos) << r.err;
 }
 
+// Every problem of a file, not only the first: two bad steps, both lines, one line each (exit 2).
+TEST_F(LessonCheck, EveryProblemOfAFileIsReportedAtItsLine) {
+    std::string path = write(
+        "claims = [\"{taps} is 1\"]\n"  // 9: no comparison
+        "[[step]]\n"                    // 10
+        "title = \"Two\"\n"             // 11
+        "text = \"{frac.z}\"\n"         // 12: unknown placeholder
+    );
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+    EXPECT_EQ(testutil::lineCount(r.err), 2) << r.err;
+    EXPECT_NE(r.err.find(path + ":9: step 1 claim \"{taps} is 1\""), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(path + ":12: step 2 text: unknown placeholder {frac.z} (did you mean "
+                                "{frac.x}?) (the names: docs/lesson-authoring.md#placeholders"),
+              std::string::npos)
+        << r.err;
+    // The anchor it names is a heading of the authoring guide.
+    std::ifstream guide(PCFSCOPE_SOURCE_DIR "/docs/lesson-authoring.md");
+    std::string line;
+    bool heading = false;
+    while (std::getline(guide, line)) heading |= line == "## Placeholders";
+    EXPECT_TRUE(heading);
+}
+
+// A number or a state typed where a placeholder or a claim belongs is refused at its line (after
+// a line-ending backslash too), naming what to write: on the authoring guide's worked example's
+// point, bilinear2x2 gives 1 - fx, a penumbra.
+TEST_F(LessonCheck, TypedNumbersAndStatesOfTheStepAreRefusedAtTheirLine) {
+    std::string path = (mDir / "typed.toml").string();
+    std::ofstream(path) << "title = \"Typed\"\n"                                  // 1
+                           "scene = \"box-on-plane\"\n"                           // 2
+                           "[settings]\n"                                         // 3
+                           "method = \"bilinear2x2\"\n"                           // 4
+                           "map_size = 128\n"                                     // 5
+                           "constant_bias = 0.02\n"                               // 6
+                           "point = [0.9794, 0, -0.4338]\n"                       // 7
+                           "[[step]]\n"                                           // 8
+                           "title = \"One\"\n"                                    // 9
+                           "claims = [\"penumbra\"]\n"                            // 10
+                           "text = \"\"\"\n"                                      // 11
+                           "The lookup lerps two bits, {visibility}. \\\n"        // 12
+                           "Here the point is fully lit, visibility 1.\"\"\"\n";  // 13
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_EQ(testutil::lineCount(r.out), 2) << r.out;
+    EXPECT_NE(r.out.find(path + ":13: step 1 text: \"fully lit\" is false here"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("list the claim \"penumbra\""), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(path + ":13: step 1 text: \"visibility 1\" is false here"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("(write {visibility})"), std::string::npos) << r.out;
+}
+
 // `flickers` reads the frames the step's sweep composes: on a step that does not move it is a bad
 // file (exit 2, its line); where the line only creeps (pcf-gather: the sliding grid moves its
 // weights 1/32 texel a frame) it fails at its line with the largest change (exit 1). Here nearest

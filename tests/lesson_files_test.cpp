@@ -128,5 +128,31 @@ TEST(LessonFiles, EveryPlaceholderIsKnownAndFillsFromATrace) {
     }
 }
 
+// A step that brings a map size the lesson's scene has not shown before says so in its words
+// with {map_size} (8.7 went from 256 to 128 texels without a word: its acne stripes doubled in
+// width unexplained). A chart step's map is the one its figures were measured with, and the
+// status line under it says so.
+TEST(LessonFiles, ANewMapSizeIsNamedInTheWords) {
+    int checked = 0;
+    for (const std::string& file : lessonFiles()) {
+        Lesson lesson = parseLessonFile(file);
+        std::vector<int> seen;
+        for (size_t k = 0; k < lesson.steps.size(); ++k) {
+            const LessonStep& step = lesson.steps[k];
+            if (!step.chart.empty()) continue;
+            int size = step.settings.mapSize;
+            bool fresh = std::find(seen.begin(), seen.end(), size) == seen.end();
+            if (fresh && !seen.empty()) {
+                ++checked;
+                EXPECT_NE(step.text.find("{map_size"), std::string::npos)
+                    << file << " step " << k + 1 << " changes the map to " << size
+                    << " texels without a word";
+            }
+            if (fresh) seen.push_back(size);
+        }
+    }
+    EXPECT_GE(checked, 5);
+}
+
 }  // namespace
 }  // namespace pcf

@@ -71,7 +71,7 @@ TEST(LessonFormat, ParsesStepsThatInheritTheStateBeforeThem) {
     EXPECT_EQ(s0.settings.bias, BiasMode::Constant);
     EXPECT_EQ(s0.settings.constantBias, 0.002f);
     EXPECT_EQ(s0.settings.cull, CullMode::Back);
-    EXPECT_EQ(s0.settings.depthFormat, DepthFormat::D32F);
+    EXPECT_EQ(s0.settings.depthFormat, TexelKind::D32F);
 
     const LessonStep& s1 = lesson.steps[1];
     EXPECT_EQ(s1.line, 14);
@@ -85,7 +85,7 @@ TEST(LessonFormat, ParsesStepsThatInheritTheStateBeforeThem) {
     EXPECT_EQ(s2.settings.bias, BiasMode::None);
     EXPECT_EQ(s2.settings.mapSize, 1024);
     EXPECT_EQ(s2.settings.point, glm::vec3(1.5f, 0.0f, 0.25f));
-    EXPECT_EQ(s2.settings.depthFormat, DepthFormat::D16);
+    EXPECT_EQ(s2.settings.depthFormat, TexelKind::D16);
     EXPECT_EQ(s2.settings.cull, CullMode::Front);
     EXPECT_EQ(s2.settings.constantBias, 0.01f);
     EXPECT_EQ(s2.settings.kernel, 5);
@@ -369,9 +369,11 @@ TEST(LessonFormat, UnknownPlaceholdersNameTheLineOfTheText) {
         "The fraction is {frac.x},\n"    // 6
         "and the result {visiblity}.\n"  // 7
         "\"\"\"\n";                      // 8
+    // The nearest known name, and where the names are listed: the authoring guide, not the code.
     EXPECT_EQ(errorOf(text),
-              "bad.toml:7: step 1 text: unknown placeholder {visiblity} (see placeholderNames(); "
-              "write {{ for a literal brace)");
+              "bad.toml:7: step 1 text: unknown placeholder {visiblity} (did you mean "
+              "{visibility}?) (the names: docs/lesson-authoring.md#placeholders; write {{ for a "
+              "literal brace)");
     // Without a newline after the opening quotes, and with escaped newlines on one line.
     text =
         "title = \"T\"\nscene = \"pole\"\n[[step]]\ntitle = \"S\"\n"
@@ -385,6 +387,65 @@ TEST(LessonFormat, UnknownPlaceholdersNameTheLineOfTheText) {
     text = withStep("[[step]]\ntitle = \"S2\"\ntext = \"\"\"\nfine\nset {0, 1\n\"\"\"\n");
     std::string e = errorOf(text);
     EXPECT_EQ(e.rfind("bad.toml:10: step 2 text: a { with no closing }", 0), 0u) << e;
+}
+
+// The line of a text's character where a line-ending backslash joins file lines without a
+// newline in the text, and where escapes are longer in the file than in the text.
+TEST(LessonFormat, ATextsCharactersAreFoundOnTheirFileLines) {
+    std::string text =
+        "title = \"T\"\n"         // 1
+        "scene = \"pole\"\n"      // 2
+        "[[step]]\n"              // 3
+        "title = \"S\"\n"         // 4
+        "text = \"\"\"\n"         // 5
+        "One \\u00e9 line, \\\n"  // 6: an escape, then a joined line
+        "   two {zz} \\\n"        // 7
+        "\n"                      // 8
+        "   three, \\t {yy}\n"    // 9
+        "four {xx}\"\"\"\n";      // 10
+    std::vector<InputError> problems;
+    parseLessonString(text, "bad.toml", problems);
+    ASSERT_EQ(problems.size(), 3u);
+    EXPECT_EQ(problems[0].line(), 7);
+    EXPECT_EQ(problems[1].line(), 9);
+    EXPECT_EQ(problems[2].line(), 10);
+    Lesson ok = parseLessonString(
+        "title = \"T\"\nscene = \"pole\"\n[[step]]\ntitle = \"S\"\ntext = \"\"\"\n"
+        "a \\\n  b\nc\"\"\"\n",
+        "ok.toml");
+    const LessonStep& step = ok.steps[0];
+    ASSERT_EQ(step.text, "a b\nc");
+    EXPECT_EQ(stepTextLine(step, 0), 6);  // a
+    EXPECT_EQ(stepTextLine(step, 2), 7);  // b, after the joined line
+    EXPECT_EQ(stepTextLine(step, 4), 8);  // c
+}
+
+// Reading on: every problem of a file, each at its line, in file order; the first is the one
+// a one-line reader (view, export) throws.
+TEST(LessonFormat, EveryProblemOfAFileIsFoundInOneReading) {
+    std::string text =
+        "title = \"T\"\n"               // 1
+        "scene = \"pole\"\n"            // 2
+        "[settings]\n"                  // 3
+        "kernal = 3\n"                  // 4: unknown key
+        "[[step]]\n"                    // 5
+        "title = \"S\"\n"               // 6
+        "text = \"{frac.z}\"\n"         // 7: unknown placeholder
+        "claims = [\"{taps} is 1\"]\n"  // 8: a claim with no comparison
+        "[[step]]\n"                    // 9
+        "title = \"S2\"\n"              // 10
+        "map_size = 3\n"                // 11: out of range
+        "text = \"{a} and {b}\"\n";     // 12: two unknown placeholders
+    std::vector<InputError> problems;
+    parseLessonString(text, "bad.toml", problems);
+    std::vector<int> lines;
+    for (const InputError& e : problems) lines.push_back(e.line());
+    EXPECT_EQ(lines, (std::vector<int>{4, 7, 8, 11, 12, 12})) << problems.front().what();
+    EXPECT_EQ(errorOf(text).rfind("bad.toml:4: settings has unknown key 'kernal'", 0), 0u);
+    // A file TOML cannot read is one problem.
+    problems.clear();
+    parseLessonString("title = \"T\nscene", "bad.toml", problems);
+    EXPECT_EQ(problems.size(), 1u);
 }
 
 TEST(LessonFormat, TapIndicesMustExistForTheStepsMethod) {

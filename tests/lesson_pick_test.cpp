@@ -6,9 +6,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
 
+#include "json_lite.h"
 #include "render/scene_renderer.h"
+#include "run_command.h"
 #include "scene/presets.h"
+#include "virtual_display.h"
 
 namespace pcf {
 namespace {
@@ -78,6 +85,77 @@ TEST(LessonPick, TheLookupIsTheCameraPassFormulaAndIndependentOfTheFrame) {
     // The light comes down at acos(n . toLight) from the ground's normal.
     glm::vec3 toLight = -glm::normalize(scene.light.directionWs);
     EXPECT_NEAR(lightAngleDeg(scene, p), glm::degrees(std::acos(toLight.y)), 1e-3f);
+}
+
+// `pcfscope pick` prints what a click in the viewer prints, for the same frame pixel of the same
+// step at the same size: the line, byte for byte. Pinned by a lesson's `point`, that point traces
+// the lookup the click traced (to the six decimals printed).
+TEST(PickCommand, PrintsTheViewersClickAndItsPointTracesTheClicksLookup) {
+    testutil::VirtualDisplay display;
+    ASSERT_FALSE(display.display().empty()) << "Xvfb did not start";
+    std::filesystem::path dir = testutil::makeTempDir("pick");
+    testutil::CommandResult picked = testutil::runPcfscope("pick 3 --step 1 --pixel 300,200");
+    ASSERT_EQ(picked.exitCode, 0) << picked.err;
+    testutil::CommandResult viewed = testutil::runPcfscope(
+        "view 3 --keys click:300,200 --screenshot " + (dir / "view.png").string(),
+        "DISPLAY=" + display.display());
+    ASSERT_EQ(viewed.exitCode, 0) << viewed.err;
+    EXPECT_NE(viewed.out.find(picked.out), std::string::npos) << viewed.out << picked.out;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(picked.out, m, std::regex("point = \\[[^\\]]+\\]")))
+        << picked.out;
+    // Lesson 3 with its first step's point the one printed, against the click on that step.
+    std::ifstream in(PCFSCOPE_SOURCE_DIR "/lessons/03-bilinear-lerp.toml");
+    std::string lesson((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    size_t at = lesson.find("point = [0.9847, 0, -0.3699]");
+    ASSERT_NE(at, std::string::npos);
+    lesson.replace(at, std::string("point = [0.9847, 0, -0.3699]").size(), m.str());
+    std::ofstream((dir / "picked.toml").string()) << lesson;
+    std::string common = " --steps 1-1 --size 1600x900 -o ";
+    testutil::CommandResult a = testutil::runPcfscope("export " + (dir / "picked.toml").string() +
+                                                      common + (dir / "a").string());
+    testutil::CommandResult b =
+        testutil::runPcfscope("export 3 --keys click:300,200" + common + (dir / "b").string());
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    auto trace = [&](const char* sub, const char* stem) {
+        std::ifstream f(dir / sub / (std::string(stem) + "-step01.json"));
+        std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+        return jsonlite::parse(text)["trace"];
+    };
+    jsonlite::Value ta = trace("a", "picked"), tb = trace("b", "03-bilinear-lerp");
+    for (int k = 0; k < 2; ++k) {
+        EXPECT_NEAR(ta["uv"][k].number, tb["uv"][k].number, 2e-6);
+        EXPECT_NEAR(ta["frac"][k].number, tb["frac"][k].number, 2e-3);
+    }
+    EXPECT_NEAR(ta["ref"].number, tb["ref"].number, 2e-6);
+    EXPECT_NEAR(ta["visibility"].number, tb["visibility"].number, 2e-3);
+    ASSERT_EQ(ta["taps"].size(), tb["taps"].size());
+    for (size_t k = 0; k < ta["taps"].size(); ++k) {
+        EXPECT_EQ(ta["taps"][k]["texel"][0].number, tb["taps"][k]["texel"][0].number);
+        EXPECT_EQ(ta["taps"][k]["texel"][1].number, tb["taps"][k]["texel"][1].number);
+        EXPECT_EQ(ta["taps"][k]["lit"].number, tb["taps"][k]["lit"].number);
+    }
+    // The click pinned another point than the lesson's own: the traces compared are the click's.
+    EXPECT_EQ(picked.out.find("0.984700"), std::string::npos) << picked.out;
+    if (!HasFailure()) std::filesystem::remove_all(dir);
+}
+
+// A pixel off the scene, off the frame, or on a chart step: one line, exit 2.
+TEST(PickCommand, RefusesAPixelItCannotPick) {
+    testutil::CommandResult r = testutil::runPcfscope("pick 3 --step 1 --pixel 900,200");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("is not on the scene (step 1's scene spans x"), std::string::npos)
+        << r.err;
+    r = testutil::runPcfscope("pick 3 --step 1 --pixel 5000,200");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("is outside the 1600x900 frame"), std::string::npos) << r.err;
+    r = testutil::runPcfscope("pick 11 --step 1 --pixel 300,200");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("shows a chart"), std::string::npos) << r.err;
+    r = testutil::runPcfscope("pick 3 --step 9 --pixel 300,200");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
 }
 
 }  // namespace

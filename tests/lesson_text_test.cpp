@@ -25,7 +25,7 @@ StepContext context() {
     ctx.settings.bias = BiasMode::None;
     ctx.settings.constantBias = 0.0025f;
     ctx.settings.cull = CullMode::Front;
-    ctx.settings.depthFormat = DepthFormat::D24;
+    ctx.settings.depthFormat = TexelKind::D24;
     ctx.lightAngleDeg = 51.25f;
     ctx.originShift = 0.375f;
     ctx.partVisibility = {0.25f, 1.0f};
@@ -157,12 +157,12 @@ TEST(LessonText, StepContextNamesThePixelAndTheState) {
     LessonStep step;
     step.settings.bias = BiasMode::None;
     step.settings.cull = CullMode::Front;
-    step.settings.depthFormat = DepthFormat::D16;
+    step.settings.depthFormat = TexelKind::D16;
     StepContext ctx = makeStepContext(step, {306, 194});
     EXPECT_EQ(ctx.pixel, glm::ivec2(306, 194));
     EXPECT_EQ(ctx.settings.bias, BiasMode::None);
     EXPECT_EQ(ctx.settings.cull, CullMode::Front);
-    EXPECT_EQ(ctx.settings.depthFormat, DepthFormat::D16);
+    EXPECT_EQ(ctx.settings.depthFormat, TexelKind::D16);
 }
 
 TEST(LessonText, AnIndexPastTheTraceIsNotAvailable) {
@@ -212,8 +212,15 @@ TEST(LessonText, ChecksFindTheFirstProblemAndItsOffset) {
     ASSERT_TRUE(p);
     EXPECT_EQ(p->offset, 17u);
     EXPECT_EQ(p->problem,
-              "unknown placeholder {frac.z} (see placeholderNames(); write {{ for a literal "
-              "brace)");
+              "unknown placeholder {frac.z} (did you mean {frac.x}?) (the names: "
+              "docs/lesson-authoring.md#placeholders; write {{ for a literal brace)");
+    // Every problem, read on past each.
+    std::vector<PlaceholderProblem> all = placeholderProblems("{a} ok {frac.x} } {b:x} { end");
+    ASSERT_EQ(all.size(), 4u);
+    EXPECT_EQ(all[0].offset, 0u);
+    EXPECT_EQ(all[1].offset, 16u);  // the lone }
+    EXPECT_EQ(all[2].offset, 18u);
+    EXPECT_EQ(all[3].offset, 24u);  // a { with no }
     p = checkPlaceholders("a } b");
     ASSERT_TRUE(p);
     EXPECT_EQ(p->offset, 2u);

@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "kernel/settings.h"
 #include "kernel/trace.h"
@@ -73,6 +77,163 @@ TEST(Methods, WeightsChangeTheResultOfTheMethodsThatTakeThem) {
         vec2 uv(0.43f, 0.57f);
         EXPECT_NE(filterVisibility(map, uv, 0.5f, box), filterVisibility(map, uv, 0.5f, binomial))
             << m.name;
+    }
+}
+
+// A map with depths spread over [0, 1] (a fixed pattern): some taps lit, some not, anywhere.
+ShadowMap patternMap(int n) {
+    ShadowMap map(n, n);
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i)
+            map.setDepth(i, j, static_cast<float>((i * 7 + j * 13) % 11) / 10.0f);
+    }
+    return map;
+}
+
+// Lookups spread over the map's middle (away from its edges), at irregular fractions.
+std::vector<vec2> spreadLookups(int count) {
+    std::vector<vec2> out;
+    for (int k = 0; k < count; ++k) {
+        out.push_back(vec2(0.3f + 0.4f * std::fmod(0.618034f * k, 1.0f),
+                           0.3f + 0.4f * std::fmod(0.754878f * k + 0.1f, 1.0f)));
+    }
+    return out;
+}
+
+// The kernel's dispatch (pcf_kernel.h pcfFilterRef) has a branch for every method of the table:
+// none returns PCF_UNDISPATCHED, what an id without a branch gets (instead of another method's
+// answer). tests/gpu_parity_test.cpp holds the GLSL to the same.
+TEST(Methods, TheKernelsDispatchHasABranchForEveryMethod) {
+    ShadowMap map = patternMap(32);
+    for (const MethodInfo& m : allMethods()) {
+        for (int weights : {PCF_WEIGHTS_BOX, PCF_WEIGHTS_BINOMIAL, PCF_WEIGHTS_GAUSSIAN}) {
+            if (weights != PCF_WEIGHTS_BOX && !m.takesWeights) continue;
+            PcfParams prm = makeParams(m.id, fitKernel(m.id, 3));
+            prm.weights = weights;
+            for (vec2 uv : spreadLookups(32)) {
+                float v = filterVisibility(map, uv, 0.45f, prm);
+                EXPECT_GE(v, 0.0f) << m.name;
+                EXPECT_LE(v, 1.0f) << m.name;
+            }
+        }
+    }
+    PcfParams unknown = makeParams(PCF_METHOD_COUNT, 3);
+    EXPECT_EQ(filterVisibility(map, vec2(0.5f), 0.45f, unknown), PCF_UNDISPATCHED);
+}
+
+// `hard`: one texel, one comparison, so only 0 or 1; every other method gives a value between
+// on some lookup of a map whose depths vary texel by texel.
+TEST(Methods, HardMethodsGiveOnlyZeroOrOne) {
+    ShadowMap map = patternMap(32);
+    for (const MethodInfo& m : allMethods()) {
+        PcfParams prm = makeParams(m.id, fitKernel(m.id, 3), 2.0f);
+        prm.penumbraScale = 8.0f;
+        bool between = false;
+        for (vec2 uv : spreadLookups(64)) {
+            float v = filterVisibility(map, uv, 0.45f, prm);
+            between = between || (v > 0.0f && v < 1.0f);
+        }
+        EXPECT_EQ(!between, m.hard) << m.name;
+    }
+}
+
+// `nearestTexels`: each texel read is the one its fetch's point falls in, floor(uv * size);
+// the others read the 2x2 blocks around their points (box2x2, lookups, gathers, hardware taps).
+TEST(Methods, NearestTexelMethodsReadTheTexelEachPointFallsIn) {
+    ShadowMap map = patternMap(32);
+    for (const MethodInfo& m : allMethods()) {
+        PcfParams prm = makeParams(m.id, fitKernel(m.id, 3), 2.0f);
+        prm.penumbraScale = 8.0f;
+        Trace tr = traceLookup(map, vec2(0.43f, 0.57f), 0.45f, 0.45f, prm);
+        bool underPoints = std::all_of(tr.taps.begin(), tr.taps.end(), [&](const TapRecord& t) {
+            vec2 p = tr.fetches[static_cast<size_t>(t.fetch)].uv * 32.0f;
+            return t.texel == pcfClampTexel(ivec2(glm::floor(p)), ivec2(32));
+        });
+        EXPECT_EQ(underPoints, m.nearestTexels) << m.name;
+    }
+}
+
+// `hasDisk`: its first 16 reads sit at the Poisson set's points around the lookup, scaled (by
+// the radius R; pcss's search by its search radius); no other method reads there.
+TEST(Methods, DiskMethodsReadThePoissonPoints) {
+    ShadowMap map = patternMap(64);
+    vec2 uv(0.5f, 0.5f);
+    for (const MethodInfo& m : allMethods()) {
+        PcfParams prm = makeParams(m.id, fitKernel(m.id, 3), 2.0f);
+        prm.penumbraScale = 8.0f;
+        Trace tr = traceLookup(map, uv, 0.45f, 0.45f, prm);
+        float scale = m.searchesBlockers ? tr.pcss.searchRadius : prm.radius;
+        bool onDisk = tr.fetches.size() >= 16 && scale > 0.0f;
+        for (size_t k = 0; onDisk && k < 16; ++k) {
+            vec2 offset = (tr.fetches[k].uv - uv) * 64.0f / scale;
+            onDisk = glm::length(offset - PCF_POISSON_DISK[k]) < 1e-4f;
+        }
+        EXPECT_EQ(onDisk, m.hasDisk) << m.name;
+    }
+}
+
+// `searchesBlockers`: over an occluder the method finds blockers (the trace's pcss estimate,
+// which the trace fills per method); no other method has a search.
+TEST(Methods, BlockerSearchersFindTheBlocker) {
+    ShadowMap map(32, 32, 0.9f);
+    for (int j = 0; j < 32; ++j) {
+        for (int i = 0; i < 16; ++i) map.setDepth(i, j, 0.2f);
+    }
+    for (const MethodInfo& m : allMethods()) {
+        PcfParams prm = makeParams(m.id, fitKernel(m.id, 3));
+        prm.penumbraScale = 8.0f;
+        Trace tr = traceLookup(map, vec2(0.5f, 0.5f), 0.6f, 0.6f, prm);
+        EXPECT_EQ(tr.pcss.blockers > 0, m.searchesBlockers) << m.name;
+    }
+}
+
+// `overlappingLookups`: some texel is read by more than one of its lookups; a method with
+// neither that nor a disk reads each texel once.
+TEST(Methods, OverlappingLookupsReadATexelTwice) {
+    ShadowMap map = patternMap(32);
+    for (const MethodInfo& m : allMethods()) {
+        if (m.hasDisk) continue;  // a disk's points may share a texel, by chance of the radius
+        Trace tr = traceLookup(map, vec2(0.43f, 0.57f), 0.45f, 0.45f,
+                               makeParams(m.id, fitKernel(m.id, 3)));
+        std::set<std::pair<int, int>> texels;
+        for (const TapRecord& t : tr.taps) texels.insert({t.texel.x, t.texel.y});
+        EXPECT_EQ(texels.size() < tr.taps.size(), m.overlappingLookups) << m.name;
+    }
+}
+
+// reachTexels is half the width of the block of texels a method reads (a disk: its radius
+// plus half a texel, the stability sweeps' margin). At N = 3, 5 and 7 away from the edges.
+TEST(Methods, ReachIsHalfTheFootprintsWidth) {
+    ShadowMap map = patternMap(64);
+    for (const MethodInfo& m : allMethods()) {
+        if (m.hasDisk) {
+            EXPECT_EQ(reachTexels(m.id, 3, 2.0f),
+                      m.searchesBlockers ? PCF_PCSS_MAX_RADIUS + 0.5f : 2.5f)
+                << m.name;
+            continue;
+        }
+        for (int n : {3, 5, 7}) {
+            Trace tr = traceLookup(map, vec2(0.4321f, 0.5678f), 0.45f, 0.45f,
+                                   makeParams(m.id, fitKernel(m.id, n)));
+            int lo = 1 << 20, hi = -(1 << 20);
+            for (const TapRecord& t : tr.taps) {
+                lo = std::min(lo, t.texel.x);
+                hi = std::max(hi, t.texel.x);
+            }
+            EXPECT_EQ(static_cast<float>(hi - lo + 1),
+                      2.0f * reachTexels(m.id, fitKernel(m.id, n), 1.0f))
+                << m.name << " N=" << n;
+        }
+    }
+}
+
+// The map a method reads comes from its map pass: every method today reads the depth pass's
+// map, in the depth format asked for.
+TEST(Methods, EveryMethodReadsTheDepthMapInTheFormatAsked) {
+    for (const MethodInfo& m : allMethods()) {
+        for (TexelKind f : {TexelKind::D16, TexelKind::D24, TexelKind::D32F}) {
+            EXPECT_EQ(mapTexelKind(m.id, f), f) << m.name;
+        }
     }
 }
 

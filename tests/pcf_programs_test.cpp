@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -28,7 +29,8 @@ class PcfPrograms : public ::testing::Test {
 std::unique_ptr<GlContext> PcfPrograms::sContext;
 
 // Every float setting a value of its own, none its default: a uniform set from another
-// setting's value, or from another member, reads back wrong.
+// setting's value, or from another member, reads back wrong. The one named setting with a
+// uniform (the shading) is not its default either.
 ShadowSettings distinctSettings() {
     ShadowSettings s;
     float next = 0.375f;
@@ -38,11 +40,22 @@ ShadowSettings distinctSettings() {
             next += 0.5f;
         }
     }
+    s.shading = Shading::Visibility;
     return s;
 }
 
+// The setting's value as its uniform holds it: a number, or a name's id (an int uniform).
 float settingValue(const ParamInfo& p, const ShadowSettings& s) {
-    return s.*std::get<float ShadowSettings::*>(p.field);
+    return std::visit(
+        [&](const auto& field) -> float {
+            using F = std::decay_t<decltype(field)>;
+            if constexpr (std::is_member_object_pointer_v<F>) {
+                return static_cast<float>(s.*field);
+            } else {
+                return static_cast<float>(static_cast<int>(s.*field.field));
+            }
+        },
+        p.field);
 }
 
 // The variants that between them read every parameter: gaussian weights read sigma, poisson
@@ -84,11 +97,11 @@ TEST_F(PcfPrograms, EveryTableUniformIsReadAndSetInTheSceneAndTheLookupPass) {
         PcfProgramCache lookupPrograms("fullscreen.vert", "lookup.frag",
                                        "#define PCF_LOOKUP_BIAS " + std::to_string(mode) + "\n");
         for (const PcfParams& prm : variantParams(s)) {
-            const PcfProgram& sceneProgram = scenePrograms.get(pcfVariant(prm, false, false));
+            const PcfProgram& sceneProgram = scenePrograms.get(pcfVariant(prm, false, MapSpec{}));
             setParamUniforms(sceneProgram, prm, bias, &s);
             collectLive(sceneProgram.id(), scene);
             // The lookup pass has no settings: its ref comes with each lookup.
-            const PcfProgram& lookupProgram = lookupPrograms.get(pcfVariant(prm, false, false));
+            const PcfProgram& lookupProgram = lookupPrograms.get(pcfVariant(prm, false, MapSpec{}));
             setParamUniforms(lookupProgram, prm, bias);
             collectLive(lookupProgram.id(), lookup);
         }
@@ -121,16 +134,16 @@ TEST_F(PcfPrograms, PcssReadsTheDepthRangeOnlyOnAPerspectiveMapAndTheReciprocals
     PcfParams spot = ortho;
     spot.depthNear = 1.0f;
     spot.depthFar = 4.0f;
-    EXPECT_EQ(pcfVariant(ortho, false, false).perspective, 0);
-    EXPECT_EQ(pcfVariant(spot, false, false).perspective, 1);
+    EXPECT_EQ(pcfVariant(ortho, false, MapSpec{}).perspective, 0);
+    EXPECT_EQ(pcfVariant(spot, false, MapSpec{}).perspective, 1);
     // Only pcss reads near and far: another method keeps its one program under a spot.
     PcfParams gatherUnderSpot = spot;
     gatherUnderSpot.method = PCF_GATHER;
-    EXPECT_EQ(pcfVariant(gatherUnderSpot, false, false).perspective, 0);
+    EXPECT_EQ(pcfVariant(gatherUnderSpot, false, MapSpec{}).perspective, 0);
 
     PcfBias bias = s.kernelBias();
-    const PcfProgram& orthoCached = programs.get(pcfVariant(ortho, false, false));
-    const PcfProgram& spotCached = programs.get(pcfVariant(spot, false, false));
+    const PcfProgram& orthoCached = programs.get(pcfVariant(ortho, false, MapSpec{}));
+    const PcfProgram& spotCached = programs.get(pcfVariant(spot, false, MapSpec{}));
     GLuint orthoProgram = orthoCached.id();
     GLuint spotProgram = spotCached.id();
     ASSERT_NE(orthoProgram, spotProgram);

@@ -128,6 +128,16 @@ TEST(Pcss, TheTraceStepsThroughSearchPenumbraAndFilter) {
     EXPECT_NEAR(j["pcss"]["penumbra"].get<double>(), 8.0, 1e-5);
     EXPECT_NEAR(j["pcss"]["filter_radius"].get<double>(), 4.0, 1e-5);
     EXPECT_NEAR(j["pcss"]["search_radius"].get<double>(), 7.0, 1e-5);
+    // Which search taps found a blocker: the disk's points left of the edge (x < 0), at 0.3;
+    // the others read the lit side, 1.
+    ASSERT_EQ(j["pcss"]["search"].size(), 16u);
+    for (int k = 0; k < PCF_PCSS_TAPS; ++k) {
+        const Json& s = j["pcss"]["search"][static_cast<size_t>(k)];
+        bool left = PCF_POISSON_DISK[k].x < 0.0f;
+        EXPECT_EQ(s["tap"].get<int>(), k);
+        EXPECT_EQ(s["blocker"].get<bool>(), left) << k;
+        EXPECT_NEAR(s["depth"].get<double>(), left ? 0.3 : 1.0, 1e-6) << k;
+    }
     EXPECT_NEAR(j["pcss"]["blocker_depth"].get<double>(), 0.3, 1e-6);
 
     // No blocker: the search's taps only, all lit, and visibility 1 without a filter: their
@@ -215,11 +225,14 @@ TEST(Pcss, TheScaleIsTheLightsAngleInTexelsPerDepthUnit) {
     // Only pcss gets a scale; a spot light on an orthographic map (not a perspective one) none.
     ShadowSettings s;
     s.method = PCF_GATHER;
-    EXPECT_EQ(pcssPcfParams(scene.light, m, s).penumbraScale, 0.0f);
+    EXPECT_EQ(pcssPcfParams(scene.light, PcfMapLayer{m, pcssDepthRange(m), 0.0f}, s).penumbraScale,
+              0.0f);
     s.method = PCF_PCSS;
-    EXPECT_GT(pcssPcfParams(scene.light, m, s).penumbraScale, 0.0f);
+    EXPECT_GT(pcssPcfParams(scene.light, PcfMapLayer{m, pcssDepthRange(m), 0.0f}, s).penumbraScale,
+              0.0f);
     scene.light.type = LightType::Spot;
-    EXPECT_EQ(pcssPcfParams(scene.light, m, s).penumbraScale, 0.0f);
+    EXPECT_EQ(pcssPcfParams(scene.light, PcfMapLayer{m, pcssDepthRange(m), 0.0f}, s).penumbraScale,
+              0.0f);
 }
 
 // A spot map with near 1 and far 4 stores z = 4/3 * (1 - 1/d) at distance d: an occluder at
@@ -286,11 +299,11 @@ TEST(Pcss, ASpotsScaleAndDepthRangeComeFromItsMatrix) {
     ShadowSettings s;
     s.method = PCF_PCSS;
     s.mapSize = 128;
-    PcfParams p = pcssPcfParams(spot, m, s);
+    PcfParams p = pcssPcfParams(spot, PcfMapLayer{m, pcssDepthRange(m), 0.0f}, s);
     EXPECT_NEAR(p.penumbraScale, 32.0f, 1e-4f);
     EXPECT_NEAR(p.depthNear, 1.0f, 1e-5f);
     s.method = PCF_POISSON;
-    EXPECT_EQ(pcssPcfParams(spot, m, s).depthNear, 0.0f);
+    EXPECT_EQ(pcssPcfParams(spot, PcfMapLayer{m, pcssDepthRange(m), 0.0f}, s).depthNear, 0.0f);
 }
 
 }  // namespace

@@ -144,6 +144,22 @@ TEST_F(Reliability, VerifyRecomputesRefAndChecksTheDepthFormat) {
                   fs::copy_options::overwrite_existing);
     setJson(raw, "depth_format", "\"16\"");
     expectOneLine(runPcfscope("verify " + raw), "not a 16-bit depth value");
+
+    // The map as a value ("map"): its texel kind and size are the images'.
+    fs::copy_file(sRaw / "raw" / "render.json", raw + "/render.json",
+                  fs::copy_options::overwrite_existing);
+    setJson(raw, "texels", "\"16\"");
+    expectOneLine(runPcfscope("verify " + raw),
+                  "\"map\" holds texels 16, but pcf-gather reads depth_format 32f");
+    fs::copy_file(sRaw / "raw" / "render.json", raw + "/render.json",
+                  fs::copy_options::overwrite_existing);
+    setJson(raw, "size", "[32");
+    expectOneLine(runPcfscope("verify " + raw),
+                  "\"map\" is 32x64 in 1 layer(s), but shadowmap.exr is one layer of 64x64");
+    fs::copy_file(sRaw / "raw" / "render.json", raw + "/render.json",
+                  fs::copy_options::overwrite_existing);
+    setJson(raw, "texel_ws", "\"wide\"");
+    expectOneLine(runPcfscope("verify " + raw), "a map layer needs shadow_clip_from_world");
 }
 
 // Finding 4: the heat map was drawn only when --map-size was one of the aliasing sweep's

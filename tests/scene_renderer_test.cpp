@@ -11,6 +11,7 @@
 #include "image_read.h"
 #include "json_lite.h"
 #include "kernel/methods.h"
+#include "kernel/trace.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "run_command.h"
@@ -18,6 +19,7 @@
 #include "scene/light.h"
 #include "scene/presets.h"
 #include "scene/raycast.h"
+#include "scene/shadow_fit.h"
 
 namespace pcf {
 namespace {
@@ -224,7 +226,7 @@ TEST_F(SceneRendererTest, DepthFormatsAgree) {
     s.frameSize = {320, 180};
     s.mapSize = 512;
     std::vector<float> reference;
-    for (DepthFormat f : {DepthFormat::D32F, DepthFormat::D24, DepthFormat::D16}) {
+    for (TexelKind f : {TexelKind::D32F, TexelKind::D24, TexelKind::D16}) {
         s.depthFormat = f;
         renderer.render(s);
         // The format is applied: a 16-bit map holds only k / 65535, a float map other depths.
@@ -234,10 +236,10 @@ TEST_F(SceneRendererTest, DepthFormatsAgree) {
             float k = d * 65535.0f;
             offGrid += std::fabs(k - std::round(k)) > 0.01f;
         }
-        if (f == DepthFormat::D16) {
+        if (f == TexelKind::D16) {
             EXPECT_EQ(offGrid, 0);
         }
-        if (f == DepthFormat::D32F) {
+        if (f == TexelKind::D32F) {
             EXPECT_GT(offGrid, 0);
         }
         std::vector<float> vis = renderer.readVisibility();
@@ -248,6 +250,39 @@ TEST_F(SceneRendererTest, DepthFormatsAgree) {
         int differ = 0;
         for (size_t k = 0; k < vis.size(); ++k) differ += std::fabs(vis[k] - reference[k]) > 0.5f;
         EXPECT_LT(differ, static_cast<int>(vis.size()) / 500) << depthFormatName(f);
+    }
+}
+
+// The depth pass makes the map as a value: its size and texel kind are the settings', its one
+// layer the fit it was drawn with (a spot's perspective depth range with it), and the map read
+// back carries the same value.
+TEST_F(SceneRendererTest, TheDepthPassSaysWhatTheMapHolds) {
+    for (const char* preset : {"box-on-plane", "post-under-spot"}) {
+        Scene scene = *presetScene(preset);
+        SceneRenderer renderer(scene);
+        RenderSettings s;
+        s.frameSize = {64, 36};
+        s.mapSize = 96;
+        s.depthFormat = TexelKind::D24;
+        glm::mat4 fit = shiftShadowOrigin(shadowClipFromWorld(scene), glm::vec2(0.25f), 96, false);
+        renderer.setShadowClipFromWorld(fit);
+        renderer.render(s);
+        const MapSpec& map = renderer.mapSpec();
+        EXPECT_EQ(map.size, glm::ivec2(96));
+        EXPECT_EQ(map.texels, TexelKind::D24);
+        ASSERT_EQ(map.layers.size(), 1u);
+        EXPECT_EQ(map.layers[0].shadowClipFromWorld, fit) << preset;
+        EXPECT_EQ(map.layers[0].texelWs, shadowTexelWs(scene, 96)) << preset;
+        bool spot = scene.light.type == LightType::Spot;
+        EXPECT_EQ(map.layers[0].depthRange.x > 0.0f, spot) << preset;
+        if (spot) {
+            EXPECT_GT(map.layers[0].depthRange.y, map.layers[0].depthRange.x);
+        }
+        ShadowMap read = renderer.readShadowMap();
+        EXPECT_EQ(read.spec(), map) << preset;
+        EXPECT_EQ(read.fixedPointBits(), 24);
+        // A trace of it carries the value whole.
+        EXPECT_EQ(traceLookup(read, glm::vec2(0.5f), 0.5f, 0.5f, s.pcfParams()).map, map);
     }
 }
 

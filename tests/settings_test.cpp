@@ -55,19 +55,27 @@ TEST(Settings, KernelKeysStepThroughWhatTheMethodTakes) {
 }
 
 TEST(Settings, NamesRoundTrip) {
-    for (DepthFormat f : {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F}) {
+    for (TexelKind f : {TexelKind::D16, TexelKind::D24, TexelKind::D32F}) {
         EXPECT_EQ(depthFormatFromName(depthFormatName(f)), f);
-        EXPECT_NE(DEPTH_FORMAT_NAMES.find(depthFormatName(f)), std::string_view::npos);
+        EXPECT_NE(depthFormatNames().find(depthFormatName(f)), std::string::npos);
     }
-    EXPECT_EQ(depthFormatFromName("32"), DepthFormat::D32F);
+    EXPECT_EQ(depthFormatFromName("32"), TexelKind::D32F);
     EXPECT_FALSE(depthFormatFromName("8").has_value());
-    EXPECT_EQ(depthFormatFixedPointBits(DepthFormat::D24), 24);
-    EXPECT_EQ(depthFormatFixedPointBits(DepthFormat::D32F), 0);
+    EXPECT_EQ(depthFormatNames(), "16, 24, 32f");
+    // Moments are a map's texel kind, not a depth format.
+    EXPECT_FALSE(depthFormatFromName("moments2-32f").has_value());
+    EXPECT_EQ(nextDepthFormat(TexelKind::D32F), TexelKind::D16);
+    EXPECT_EQ(nextDepthFormat(TexelKind::D16), TexelKind::D24);
     for (CullMode c : {CullMode::Back, CullMode::Front, CullMode::None}) {
         EXPECT_EQ(cullModeFromName(cullModeName(c)), c);
         EXPECT_NE(CULL_MODE_NAMES.find(cullModeName(c)), std::string_view::npos);
     }
     EXPECT_FALSE(cullModeFromName("both").has_value());
+    for (Shading s : {Shading::Lit, Shading::Visibility}) {
+        EXPECT_EQ(shadingFromName(shadingName(s)), s);
+        EXPECT_NE(SHADING_NAMES.find(shadingName(s)), std::string_view::npos);
+    }
+    EXPECT_FALSE(shadingFromName("flat").has_value());
     for (int m = 0; m < PCF_BIAS_COUNT; ++m) {
         BiasMode mode = static_cast<BiasMode>(m);
         EXPECT_EQ(biasModeFromName(biasModeName(mode)), mode);
@@ -216,6 +224,7 @@ TEST(ParameterTable, EveryParameterRoundTripsThroughALessonFile) {
 RenderSettings parseRenderOptions(std::vector<std::string> args) {
     CLI::App app;
     RenderOptions options;
+    options.picture = true;  // render's: the View group too
     options.addTo(&app, "box-on-plane");
     std::reverse(args.begin(), args.end());
     app.parse(args);
@@ -302,7 +311,7 @@ TEST(ParameterTable, TheStepSidecarHoldsEveryParameterInTheTablesOrder) {
     s.bias = BiasMode::Slope;
     s.slopeBias = 0.003f;
     s.cull = CullMode::Front;
-    s.depthFormat = DepthFormat::D16;
+    s.depthFormat = TexelKind::D16;
     Json ordered = paramsJson(s, ParamSet::All);
     std::vector<std::string> keys;
     for (const auto& item : ordered.items()) keys.push_back(item.key());

@@ -77,7 +77,7 @@ std::vector<StabilityRow> defaultShapedRows(const std::string& renderer) {
             add("shimmer", m, b, "texel_step", 1.0 / 32, "snapped_edge_peak_p99", 0.0);
             add("shimmer", m, b, "texel_step", 1.0 / 32, "light_edge_pixels", 2500);
             add("shimmer", m, b, "pixel_step", 1.0 / 6, "camera_edge_peak_p99", 0.02 * k);
-            for (DepthFormat f : o.depthFormats) {
+            for (TexelKind f : o.depthFormats) {
                 for (float r : o.depthRanges) {
                     add("precision", m, b, "depth_range", r,
                         "false_shadow_rate_d" + std::string(depthFormatName(f)),

@@ -114,7 +114,7 @@ TEST(TextureUnit, FixedPointMapsClampTheReferenceInEveryMethod) {
     ShadowMap map = randomMap(16, 16, 6);
     map.setDepth(5, 5, 1.0f);
     ShadowMap fixed = map;
-    fixed.setFixedPointBits(16);
+    fixed.setTexelKind(TexelKind::D16);
     std::mt19937 rng(4);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     for (const MethodInfo& m : allMethods()) {
@@ -139,7 +139,7 @@ TEST(TextureUnit, FixedPointMapsClampTheReferenceInEveryMethod) {
     // The trace shows the clamped ref on each tap.
     Trace tr = traceLookup(fixed, vec2(0.5f), 1.5f, 1.5f, makeParams(PCF_BILINEAR2X2));
     for (const TapRecord& t : tr.taps) EXPECT_EQ(t.ref, 1.0f);
-    EXPECT_TRUE(tr.fixedPoint);
+    EXPECT_TRUE(tr.map.texel().fixedPoint);
 }
 
 TEST(TextureUnit, TraceShowsBothFractionsAndBothVisibilities) {

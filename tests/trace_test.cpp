@@ -45,8 +45,10 @@ TEST(Trace, EveryMethodExplainsItselfAndEndsWithTheKernelsResult) {
     }
 }
 
-// tent's merged weight table is a grid: every row line as long as the others and every number
-// ending in its column (tent 5x5 at the example point has numbers of 4 and 5 characters).
+// tent's merged weight table is a grid: a header of the texel columns i, then one line per texel
+// row j, every line as long as the others and every number ending in its column, each cell at
+// most five characters (so that 7x7's eight columns fit a projector's inspector), and each cell
+// the merged weight times the table's scale.
 TEST(Trace, TentsMergedWeightTableIsAlignedInColumns) {
     for (int n : {3, 5, 7}) {
         Trace tr = exampleTrace(PCF_TENT, n);
@@ -56,22 +58,44 @@ TEST(Trace, TentsMergedWeightTableIsAlignedInColumns) {
         std::vector<std::string> rows;
         std::istringstream lines(text.substr(at));
         for (std::string line; std::getline(lines, line);) {
-            if (line.rfind("  row ", 0) == 0) rows.push_back(line);
+            if (line.rfind("  ", 0) == 0) rows.push_back(line);
         }
-        ASSERT_EQ(rows.size(), static_cast<size_t>(tr.weights.size.y)) << text;
-        for (const std::string& r : rows) {
-            EXPECT_EQ(r.size(), rows[0].size()) << r << "\n" << rows[0];
+        ASSERT_EQ(rows.size(), static_cast<size_t>(tr.weights.size.y) + 1) << text;
+        EXPECT_EQ(rows[0].find("j\\i"), rows[0].find_first_not_of(' ')) << rows[0];
+        float scale = pcfTentNorm(n);
+        for (size_t r = 0; r < rows.size(); ++r) {
+            const std::string& row = rows[r];
+            EXPECT_EQ(row.size(), rows[0].size()) << row << "\n" << rows[0];
             // Column ends: where a number is followed by a space or the line's end.
             std::vector<size_t> ends, firstEnds;
-            for (size_t i = r.find(':') + 1; i < r.size(); ++i) {
-                if (r[i] != ' ' && (i + 1 == r.size() || r[i + 1] == ' ')) ends.push_back(i);
+            std::istringstream words(row);
+            std::vector<std::string> cells;
+            for (std::string w; words >> w;) cells.push_back(w);
+            for (size_t i = 0; i < row.size(); ++i) {
+                if (row[i] != ' ' && (i + 1 == row.size() || row[i + 1] == ' ')) ends.push_back(i);
             }
             const std::string& f = rows[0];
-            for (size_t i = f.find(':') + 1; i < f.size(); ++i) {
+            for (size_t i = 0; i < f.size(); ++i) {
                 if (f[i] != ' ' && (i + 1 == f.size() || f[i + 1] == ' ')) firstEnds.push_back(i);
             }
-            EXPECT_EQ(ends, firstEnds) << r << "\n" << f;
-            EXPECT_EQ(ends.size(), static_cast<size_t>(tr.weights.size.x)) << r;
+            EXPECT_EQ(ends, firstEnds) << row << "\n" << f;
+            ASSERT_EQ(cells.size(), static_cast<size_t>(tr.weights.size.x) + 1) << row;
+            int j = tr.weights.origin.y + static_cast<int>(r) - 1;
+            for (int i = 0; i < tr.weights.size.x; ++i) {
+                const std::string& c = cells[static_cast<size_t>(i) + 1];
+                EXPECT_LE(c.size(), 5u) << row;
+                if (r == 0) {
+                    EXPECT_EQ(c, std::to_string(tr.weights.origin.x + i)) << row;
+                    continue;
+                }
+                EXPECT_EQ(cells[0], std::to_string(j)) << row;
+                float w = tr.weights.at({tr.weights.origin.x + i, j}) * scale;
+                // Four significant digits (three decimals at most), or its first digit.
+                EXPECT_NEAR(std::stof(c), w, std::max(0.0006f, w * 0.15f)) << row;
+                if (w >= 0.0005f) {
+                    EXPECT_NEAR(std::stof(c), w, std::max(0.0006f, w * 6e-4f)) << row;
+                }
+            }
         }
     }
 }
@@ -193,7 +217,7 @@ TEST(TraceSplit, ExplainingTheRecordAgainGivesTheSameSteps) {
 // (nothing is derived a second time from uv).
 TEST(TraceSplit, GatherWordsReadTheRecordedFootprint) {
     Trace tr = exampleTrace(PCF_GATHER);
-    PcfFootprint kernel = pcfKernelFootprint(tr.uv, tr.mapSize, tr.params.kernel);
+    PcfFootprint kernel = pcfKernelFootprint(tr.uv, tr.map.size, tr.params.kernel);
     EXPECT_EQ(tr.footprint.origin, kernel.origin);
     EXPECT_EQ(tr.footprint.frac, kernel.frac);
     tr.footprint.origin = ivec2(40, 50);

@@ -21,6 +21,9 @@ PCF_CONST int PCF_TENT = 7;
 PCF_CONST int PCF_POISSON = 8;
 PCF_CONST int PCF_PCSS = 9;
 PCF_CONST int PCF_METHOD_COUNT = 10;
+// What pcfFilterRef returns for a method id it has no branch for: outside [0,1], so a method
+// missing from the dispatch fails the tests instead of running another method.
+PCF_CONST float PCF_UNDISPATCHED = -1.0f;
 
 // What one fetch instruction is, for the trace and the fetch counts.
 PCF_CONST int PCF_FETCH_POINT = 0;   // one texel read (nearest sampler, texel's centre)
@@ -58,6 +61,18 @@ PCF_CONST_ARRAY(vec2, PCF_ROTATIONS, 16) PCF_ARRAY_BEGIN(vec2, 16)
     vec2(0.70710678f, -0.70710678f), vec2(0.92387953f, -0.38268343f)
 PCF_ARRAY_END;
 // clang-format on
+
+// One layer of a shadow map: the fit the light saw it through. C++: kernel/shadow_map.h's
+// MapSpec holds one per layer; GLSL: the uniform array uPcfMapLayers (render/pcf_programs.h,
+// paramUniformsGlsl), one entry per layer, set from the same MapSpec (setMapUniforms).
+struct PcfMapLayer {
+    // The light's clip space from world: uv = 0.5 * xy / w + 0.5, depth = 0.5 * z / w + 0.5
+    mat4 shadowClipFromWorld;
+    // A perspective (spot) map's near and far planes, scene units; (0, 0): orthographic
+    vec2 depthRange;
+    // One texel's world size at clip w = 1 (normal offset's unit); 0 when not known
+    float texelWs;
+};
 
 // What a method needs besides the lookup itself.
 struct PcfParams {
@@ -899,8 +914,13 @@ PCF_MAP_FN float pcfFilterRef(Map map, vec2 uv, PcfRef lookupRef, PcfParams prm)
         v = pcfTent(map, uv, ref, prm.kernel);
     } else if (prm.method == PCF_POISSON) {
         v = pcfPoisson(map, uv, ref, prm.radius, prm.rotation);
-    } else {
+    } else if (prm.method == PCF_PCSS) {
         v = pcfPcss(map, uv, ref, prm);
+    } else {
+        // A method this dispatch does not know: no other method's answer, but a value that no
+        // visibility takes, returned unclamped (tests/methods_test.cpp and gpu_parity_test.cpp
+        // run every method of the table through this dispatch and look for it).
+        return PCF_UNDISPATCHED;
     }
     return clamp(v, 0.0f, 1.0f);
 }

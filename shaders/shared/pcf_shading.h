@@ -41,6 +41,13 @@ PCF_FN PcfReceiverLookup pcfReceiverLookup(mat4 shadowClipFromWorld, vec3 posWs,
     return PcfReceiverLookup(u, v, z, z0, z - bias);
 }
 
+// What the camera pass draws on the receivers (the `shading` setting, kernel/settings.h Shading):
+// lit, the picture, albedo * (ambient + diffuse * N.L * visibility) gamma-encoded; or the
+// visibility alone, the grey level v (0 black, 1 white: the byte is 255 v), no N.L, no albedo,
+// no gamma, so that a pixel's byte reads back as the filter's result.
+PCF_CONST int PCF_SHADING_LIT = 0;
+PCF_CONST int PCF_SHADING_VISIBILITY = 1;
+
 // Gamma 2.2, encode: g(x) = x^(1/2.2) for the scene's light factor x in [0.25, 1] (ambient 0.25
 // to full sun; scene.frag). The exponent is the conventional display gamma of "GPU Gems 3,
 // Chapter 24: The Importance of Being Linear" (Gritz and d'Eon, 2007).

@@ -185,7 +185,7 @@ VisibilityEnvelope visibilityEnvelope(const ShadowMap& map, vec2 uv, float ref,
     exact.precision = PCF_PRECISION_EXACT;
     Recording rec;
     filterRecorded(map, uv, ref, exact, bias, rec);
-    if (prm.method == PCF_PCSS) {
+    if (methodInfo(prm.method).searchesBlockers) {
         if (std::optional<VisibilityEnvelope> env = pcssSearchEnvelope(map, rec, eps)) return *env;
     }
     WeightedRange sum;

@@ -204,6 +204,12 @@ float frontLineExtra(const SpeedChartLayout& L, float lineH) {
     return std::max(0.0f, std::ceil(ring - 0.5f * lineH));
 }
 
+// The orange ring's legend mark: as wide overall as the front's ring (a thicker line a little
+// further in), so that the marks' column and the plot keep their widths.
+float legendHighlightRadius(const SpeedChartLayout& L) {
+    return frontRingRadius(L) + 0.5f * frontRingWidth(L.scale) - 0.5f * highlightRingWidth(L.scale);
+}
+
 // The legend: the methods present (in the rows' order), then the front's entry. Its marks' column
 // is as wide as the largest mark at the chart's dot size (a projector's large dots were wider
 // than the fixed column they had, and the front's ring ran into "Pareto front"); the names start
@@ -217,6 +223,11 @@ glm::vec2 layoutLegend(SpeedChartLayout& L, std::span<const BenchRow> rows, cons
         }
     }
     float legendText = measureText(FontFace::Sans, f.legend, FRONT_LEGEND).x;
+    bool ringed = !L.highlight.empty();
+    if (ringed) {
+        legendText =
+            std::max(legendText, measureText(FontFace::Sans, f.legend, HIGHLIGHT_LEGEND).x);
+    }
     for (int m : L.legendMethods) {
         legendText =
             std::max(legendText, measureText(FontFace::Sans, f.legend, methodInfo(m).name).x);
@@ -227,6 +238,7 @@ glm::vec2 layoutLegend(SpeedChartLayout& L, std::span<const BenchRow> rows, cons
         std::round(8.0f * s + 2.0f * half + legendGap(s, f.legend) + legendText + 8.0f * s);
     float legendH = std::round((static_cast<float>(L.legendMethods.size()) + 1.0f) * lineH +
                                2.0f * frontLineExtra(L, lineH) + 12.0f * s);
+    if (ringed) legendH += std::round(lineH + 2.0f * frontLineExtra(L, lineH));
     return {legendW, legendH};
 }
 
@@ -247,6 +259,11 @@ void placeLegend(SpeedChartLayout& L, float legendPx) {
     float w = half + CHART_MARK_CLEARANCE;
     y += frontLineExtra(L, lineH);
     L.legendSwatches.push_back({centreX - w, y + lineH / 2 - ring, 2 * w, 2 * ring});
+    if (!L.highlight.empty()) {
+        // The orange ring's line: below the front's, with the room its ring takes.
+        y += lineH + 2.0f * frontLineExtra(L, lineH);
+        L.legendSwatches.push_back({centreX - ring, y + lineH / 2 - ring, 2 * ring, 2 * ring});
+    }
     L.legendTextX = std::round(centreX + half + legendGap(s, legendPx));
 }
 
@@ -614,14 +631,16 @@ std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
         "chart-axis", text.xLabel);
     speedChartNameBoxes(L, out);
     float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
-    for (size_t k = 0; k <= L.legendMethods.size(); ++k) {
-        bool front = k == L.legendMethods.size();
+    for (size_t k = 0; k < L.legendSwatches.size(); ++k) {
+        bool method = k < L.legendMethods.size();
         float y = L.legendSwatches[k].centre().y - 0.5f * lineH;  // the line its mark centres
-        std::string name = front ? FRONT_LEGEND : std::string(methodInfo(L.legendMethods[k]).name);
+        std::string name = method ? std::string(methodInfo(L.legendMethods[k]).name)
+                           : k == L.legendMethods.size() ? FRONT_LEGEND
+                                                         : HIGHLIGHT_LEGEND;
         add({L.legendTextX, y}, TextAlign::Left, L.legendPx, "chart-legend", name).method =
-            front ? -1 : L.legendMethods[k];
+            method ? L.legendMethods[k] : -1;
         out.push_back({L.legendSwatches[k], 0.0f, "chart-swatch", name});
-        out.back().method = front ? -1 : L.legendMethods[k];
+        out.back().method = method ? L.legendMethods[k] : -1;
     }
     return out;
 }
@@ -736,10 +755,15 @@ void drawLegendMarks(Canvas& c, const SpeedChartLayout& L) {
     for (size_t k = 0; k < L.legendMethods.size(); ++k) {
         c.circle(L.legendSwatches[k].centre(), dotR, methodColour(L.legendMethods[k]));
     }
-    glm::vec2 front = L.legendSwatches.back().centre();
+    glm::vec2 front = L.legendSwatches[L.legendMethods.size()].centre();
     c.line(front - glm::vec2(frontHalfLine(s), 0.0f), front + glm::vec2(frontHalfLine(s), 0.0f),
            1.5f * s, FRONT);
     c.ring(front, frontRingRadius(L), frontRingWidth(s), FRONT);
+    if (!L.highlight.empty()) {
+        glm::vec2 ringed = L.legendSwatches.back().centre();
+        c.ring(ringed, legendHighlightRadius(L), highlightRingWidth(s), HIGHLIGHT_RING);
+        c.circle(ringed, dotR, CHART_SOFT_INK);
+    }
 }
 
 // Every text where speedChartTextBoxes put it; a dot's label in a darker shade of its colour.

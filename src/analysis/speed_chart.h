@@ -144,6 +144,9 @@ std::string spreadNote();
 
 // The legend's line for the front's mark, which states its rule: the front of the medians.
 inline constexpr const char* FRONT_LEGEND = "Pareto front of medians";
+// The legend's entry for the orange rings of a lesson's chart_highlight: they mark the dots the
+// step's words name, not a front (16.6 ringed pcss, off the front, with nothing to say why).
+inline constexpr const char* HIGHLIGHT_LEGEND = "named in the text";
 
 // The x axis's name: the pass (timing) and the clock its times are by (bench_report.h:
 // benchTimesByCpu of the rows), e.g. "camera pass, process CPU time, ms (log scale)".

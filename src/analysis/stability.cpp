@@ -458,7 +458,7 @@ class Sweeper {
             centreHits(scene, mOptions.frameSize, mOptions.threads);
         std::vector<std::vector<uint8_t>> lit =
             cleanMasks(scene, truth, regions, hits, fitted, true);
-        for (DepthFormat format : mOptions.depthFormats) {
+        for (TexelKind format : mOptions.depthFormats) {
             say("precision: depth format " + std::string(depthFormatName(format)));
             std::string suffix = "_d" + std::string(depthFormatName(format));
             for (float ratio : mOptions.depthRanges) {
@@ -619,24 +619,7 @@ Camera cameraSlidByPixels(const Camera& camera, int frameHeight, float pixels) {
 }
 
 float footprintReachTexels(const StabilityMethod& m, float poissonRadius) {
-    switch (methodOf(m.method)) {
-        case Method::Nearest:
-            return 0.5f;
-        case Method::Box2x2:
-        case Method::Bilinear2x2:
-        case Method::Hw2x2:
-            return 1.0f;
-        case Method::Poisson:
-            return poissonRadius + 0.5f;
-        case Method::Pcss:  // its disks' radius follows the blocker: at most the cap
-            return PCF_PCSS_MAX_RADIUS + 0.5f;
-        case Method::Naive:
-        case Method::Gather:
-        case Method::Hw:
-        case Method::Tent:
-            return 0.5f * static_cast<float>(std::max(m.kernel, 1) + 1);
-    }
-    return 0.0f;
+    return reachTexels(m.method, m.kernel, poissonRadius);
 }
 
 std::vector<float> pixelsPerTexel(const std::vector<float>& lightSpace, glm::ivec2 size,

@@ -126,7 +126,7 @@ struct StabilityOptions {
     int shimmerFrames = SHIMMER_STEPS;  // light-grid frames, 1/32 texel apart
     int cameraFrames = 6;               // camera frames, 1/cameraFrames pixel apart
     std::vector<float> depthRanges{1, 10, 100, 1e3f, 1e4f, 1e5f};
-    std::vector<DepthFormat> depthFormats{DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F};
+    std::vector<TexelKind> depthFormats{TexelKind::D16, TexelKind::D24, TexelKind::D32F};
     float precisionElevation = 30.0f;  // degrees
     float tradeoffElevation = 30.0f;   // degrees: the tradeoff sweep's light
     std::vector<int> aliasingMapSizes{256, 512, 1024, 2048};

@@ -95,8 +95,58 @@ double animationSweepValue(const AnimationOptions& o, int k) {
     return 0.0;
 }
 
+namespace {
+
+std::string numberWords(double v, int decimals) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+}  // namespace
+
+std::string animationSweepWords(const AnimationOptions& o, int k) {
+    double now = animationSweepValue(o, k);
+    double first = animationSweepValue(o, 0), last = animationSweepValue(o, o.frames - 1);
+    std::string frame = "Frame " + std::to_string(k + 1) + " of " + std::to_string(o.frames) + ". ";
+    switch (o.sweep) {
+        case AnimationSweep::Light:
+            return frame + "The shadow map's texel grid creeps under the still world by 1/" +
+                   std::to_string(SHIMMER_STEPS) + " texel a frame, starting over after a whole " +
+                   "texel" + (o.snap ? ", and the map's fit is snapped back to whole texels" : "") +
+                   "; now it is " + formatNumber(static_cast<float>(now)) + " texel along.";
+        case AnimationSweep::Camera:
+            return frame + "The camera slides right and up by 1/6 pixel a frame; now it is " +
+                   numberWords(now, 2) + " pixels along.";
+        case AnimationSweep::Sun:
+            return frame + "The sun " + (last >= first ? "rises" : "sinks") + " from " +
+                   numberWords(first, 0) + " to " + numberWords(last, 0) +
+                   " degrees above the horizon; now it stands " + numberWords(now, 1) +
+                   " degrees high.";
+        case AnimationSweep::Bias:
+            return frame + "The constant bias " + (last >= first ? "grows" : "shrinks") + " from " +
+                   formatNumber(static_cast<float>(first)) + " to " +
+                   formatNumber(static_cast<float>(last)) + "; now it is " +
+                   formatNumber(static_cast<float>(now)) + ".";
+        case AnimationSweep::MapSize:
+            return frame + "The shadow map " + (last >= first ? "grows" : "shrinks") + " from " +
+                   numberWords(first, 0) + " to " + numberWords(last, 0) +
+                   " texels a side; now it has " + numberWords(now, 0) + ".";
+    }
+    return frame;
+}
+
+bool isStepsOwnAnimation(const LessonStep& step, const std::string& lessonPath, int stepNumber,
+                         const AnimationOptions& o) {
+    if (!step.animate) return false;
+    AnimationOptions own = stepAnimationOptions(step, lessonPath, stepNumber);
+    return own.sweep == o.sweep && own.frames == o.frames && own.snap == o.snap &&
+           animationSweepValue(own, 0) == animationSweepValue(o, 0) &&
+           animationSweepValue(own, own.frames - 1) == animationSweepValue(o, o.frames - 1);
+}
+
 int defaultCompareMethod(int stepMethod) {
-    return stepMethod == PCF_NEAREST ? PCF_GATHER : PCF_NEAREST;
+    return methodInfo(stepMethod).hard ? PCF_GATHER : PCF_NEAREST;
 }
 
 AnimationOptions stepAnimationOptions(const LessonStep& step, const std::string& path,
@@ -143,7 +193,14 @@ AnimationOptions stepAnimationOptions(const LessonStep& step, const std::string&
 }
 
 Animation::Animation(Session& session, const AnimationOptions& options)
-    : mSession(session), mOptions(options), mBase(session.settings()), mScene(session.scene()) {}
+    : mSession(session), mOptions(options), mBase(session.settings()), mScene(session.scene()) {
+    const Lesson& lesson = session.lesson();
+    int step = session.step();
+    if (step >= 0 && step < session.stepCount()) {
+        mStepsOwn = isStepsOwnAnimation(lesson.steps[static_cast<size_t>(step)], lesson.sourcePath,
+                                        step + 1, options);
+    }
+}
 
 Animation::Animation(Session& session, const AnimationOptions& options, CompareView& compare)
     : Animation(session, options) {
@@ -206,10 +263,14 @@ void Animation::apply(int k) {
             break;
     }
     mSession.setSettings(s);
+    mSession.setMotion(FrameMotion{animationSweepWords(mOptions, k), mBase, mStepsOwn,
+                                   std::string(animationSweepName(mOptions.sweep)), k + 1,
+                                   mOptions.frames, v});
 }
 
 void Animation::restore() {
     mSession.setFlickerTrace({});
+    mSession.setMotion(std::nullopt);
     mSession.setShadowFit(std::nullopt);
     // Only what the sweep moved: setting the camera again would re-pin the point under its pixel.
     if (mOptions.sweep == AnimationSweep::Sun) mSession.setLight(mScene.light);

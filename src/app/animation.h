@@ -58,6 +58,13 @@ AnimationOptions stepAnimationOptions(const LessonStep& step, const std::string&
 // elevation, constant bias or map texels. Its unit in words: animationSweepUnit.
 double animationSweepValue(const AnimationOptions& o, int k);
 std::string_view animationSweepUnit(AnimationSweep sweep);
+// Frame k in plain words, the caption's first sentence: what is swept, between which values, and
+// its value now ("Frame 30 of 60. The sun sinks from 40 to 6 degrees above the horizon; now it
+// stands 23.4 degrees high.").
+std::string animationSweepWords(const AnimationOptions& o, int k);
+// Whether `o` plays the step's own `animate` (the same sweep, range, frames and snap).
+bool isStepsOwnAnimation(const LessonStep& step, const std::string& lessonPath, int stepNumber,
+                         const AnimationOptions& o);
 
 // A lesson step's flicker trace, the curves of its `animate` (stepAnimationOptions): the pinned
 // point's visibility at each frame of the sweep under the step's method (`main`) and under the
@@ -82,7 +89,8 @@ class Animation {
     // A split view (compare_view.h): the sweep moves `session` (never composed) and every frame
     // is the split view following it; the flicker trace has one curve per part.
     Animation(Session& session, const AnimationOptions& options, CompareView& compare);
-    // Puts frame k's state on the session, composes it and records the pinned point's
+    // Puts frame k's state on the session (the frame's motion too, Session::setMotion, so the
+    // step's words are checked on it), composes it and records the pinned point's
     // visibility (and the comparison's) for the flicker trace drawn in this and later frames.
     void composeFrame(int k);
     // The pinned point's visibility per composed frame (the curve of the flicker trace): the
@@ -111,6 +119,7 @@ class Animation {
     Session& mSession;
     AnimationOptions mOptions;
     LessonSettings mBase;
+    bool mStepsOwn = false;  // the step's own `animate` (its motion claims are about it)
     Scene mScene;
     std::vector<float> mCurve;
     std::vector<float> mCompare;

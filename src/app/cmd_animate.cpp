@@ -1,7 +1,8 @@
 // pcfscope animate: a lesson step with one quantity swept across the frames (app/animation.h),
-// as MP4 (H.264), animated GIF and numbered PNGs, headless. Videos are encoded into a scratch
-// folder beside their final names and moved there only when complete, so an error, a full disk
-// or Ctrl-C leaves no half video; PNGs are taken back like `export`'s.
+// as MP4 (H.264), animated GIF and numbered PNGs (each with its frame's JSON, as `export` writes
+// it), headless, at the presentation floors unless --no-presentation. Videos are encoded into a
+// scratch folder beside their final names and moved there only when complete, so an error, a
+// full disk or Ctrl-C leaves no half video; PNGs are taken back like `export`'s.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,9 +16,11 @@
 #include "app/commands.h"
 #include "app/compare_view.h"
 #include "app/export.h"
+#include "app/frame_files.h"
 #include "app/frame_options.h"
 #include "app/magnifier.h"
 #include "app/output_files.h"
+#include "app/render_options.h"
 #include "app/session.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
@@ -34,12 +37,14 @@ namespace fs = std::filesystem;
 struct AnimateOptions {
     std::string lesson;
     int step = 1;
-    std::string sweep = "light";
+    std::string sweep;  // empty: the step's own `animate`, else light
     bool snap = false;
     int frames = 120;
     int fps = 12;
     std::string size = "1280x720";
-    bool presentation = false;
+    bool presentation = true;  // the projector's floors: 22 px step text, 18 px numbers
+    SettingOptions view;       // --shading: what the frames draw (ParamGroup::View)
+    CLI::App* sub = nullptr;   // to ask which options were given
     bool sceneOnly = false;
     bool noTrace = false;
     bool magnify = false;
@@ -141,18 +146,20 @@ std::vector<VideoOut> planVideos(OutputFiles& outputs, const AnimateOptions& o, 
     return videos;
 }
 
+// The frames' stems in the --png folder (STEM-0001 ...), each a .png and a .json.
 std::vector<std::string> planPngs(OutputFiles& outputs, const AnimateOptions& o,
                                   const std::string& stem) {
-    std::vector<std::string> pngs;
-    if (o.pngDir.empty()) return pngs;
+    std::vector<std::string> stems;
+    if (o.pngDir.empty()) return stems;
     outputs.addDirectory("--png", o.pngDir);
     for (int k = 0; k < o.frames; ++k) {
         char name[32];
-        std::snprintf(name, sizeof name, "-%04d.png", k + 1);
-        pngs.push_back((fs::path(o.pngDir) / (stem + name)).string());
-        outputs.add("--png", pngs.back());
+        std::snprintf(name, sizeof name, "-%04d", k + 1);
+        stems.push_back((fs::path(o.pngDir) / (stem + name)).string());
+        outputs.add("--png", stems.back() + ".png");
+        outputs.add("--png", stems.back() + ".json");
     }
-    return pngs;
+    return stems;
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -193,6 +200,31 @@ AnimationOptions animationOptions(const AnimateOptions& o, AnimationSweep sweep,
     return ao;
 }
 
+bool given(const AnimateOptions& o, const char* option) {
+    return o.sub != nullptr && o.sub->count(option) > 0;
+}
+
+// Without --sweep a step that is an animation plays its own `animate` (its sweep, range, frames,
+// snap and rate; --frames and --fps still choose), any other step the light sweep. nullopt: the
+// options' own sweep.
+std::optional<AnimationOptions> stepsOwnSweep(AnimateOptions& o, const LessonStep& step,
+                                              const std::string& path, int compare) {
+    if (!o.sweep.empty() || !step.animate) {
+        if (o.sweep.empty()) o.sweep = "light";
+        return std::nullopt;
+    }
+    AnimationOptions ao = stepAnimationOptions(step, path, o.step);
+    o.sweep = std::string(animationSweepName(ao.sweep));
+    if (given(o, "--frames")) ao.frames = o.frames;
+    o.frames = ao.frames;
+    if (!given(o, "--fps")) o.fps = step.animate->fps;
+    if (given(o, "--snap")) ao.snap = o.snap;
+    ao.flicker = !o.noTrace;
+    ao.compareMethod = compare;
+    ao.compareKernel = o.compareKernel;
+    return ao;
+}
+
 // The encoders' own time and what the frames waited for them, seconds.
 struct EncodeTimes {
     double encode = 0.0;
@@ -213,59 +245,93 @@ EncodeTimes finishVideos(std::vector<VideoOut>& videos, OutputFiles& outputs) {
     return t;
 }
 
-int runAnimate(AnimateOptions o) {
-    glm::ivec2 size = parseSize("--size", o.size, {MIN_SESSION_SIZE});
-    std::optional<AnimationSweep> sweep = animationSweepFromName(o.sweep);
-    if (!sweep) {
+// What runAnimate makes, every option checked before anything is made.
+struct AnimatePlan {
+    std::string path;
+    Lesson lesson;
+    glm::ivec2 size{0, 0};
+    std::optional<CompareSpec> split;
+    std::optional<ScenePoint> point;
+    AnimationOptions animation;
+    std::string stem;
+};
+
+AnimatePlan planAnimate(AnimateOptions& o) {
+    AnimatePlan p;
+    p.size = parseSize("--size", o.size, {MIN_SESSION_SIZE});
+    if (!o.sweep.empty() && !animationSweepFromName(o.sweep)) {
         throw UsageError("--sweep: unknown sweep '" + o.sweep +
                          "' (known: " + std::string(ANIMATION_SWEEP_NAMES) + ")");
     }
     requireIntRange("--frames", o.frames, 2, 3600);
     requireIntRange("--fps", o.fps, 1, 60);
-    std::string path = resolveLesson(o.lesson);
-    Lesson lesson = loadLessonChecked(path);
-    requireIntRange("--step", o.step, 1, static_cast<int>(lesson.steps.size()));
-    const LessonSettings& stepSettings = lesson.steps[static_cast<size_t>(o.step - 1)].settings;
-    int compare = compareMethodOf(o, stepSettings);
-    std::optional<CompareSpec> split = splitSpecOf(o, stepSettings);
-    std::optional<ScenePoint> point = pointOption(lesson.scene, o.point);
-    if (split) checkSplitSize(o, size, split->parts());
-    std::string stem = frameStem(lesson.name, o.step) + "-" + o.sweep;
+    p.path = resolveLesson(o.lesson);
+    p.lesson = loadLessonChecked(p.path);
+    requireIntRange("--step", o.step, 1, static_cast<int>(p.lesson.steps.size()));
+    const LessonStep& step = p.lesson.steps[static_cast<size_t>(o.step - 1)];
+    int compare = compareMethodOf(o, step.settings);
+    std::optional<AnimationOptions> own = stepsOwnSweep(o, step, p.path, compare);
+    p.animation = own ? *own : animationOptions(o, *animationSweepFromName(o.sweep), compare);
+    p.split = splitSpecOf(o, step.settings);
+    p.point = pointOption(p.lesson.scene, o.point);
+    if (p.split) checkSplitSize(o, p.size, p.split->parts());
+    p.stem = frameStem(p.lesson.name, o.step) + "-" + o.sweep;
     if (o.videos.empty() && o.pngDir.empty())
-        o.videos.push_back("pcfscope-frames/" + stem + ".mp4");
+        o.videos.push_back("pcfscope-frames/" + p.stem + ".mp4");
+    return p;
+}
 
+// The frame the session (or the split view) composed, as JSON: `export`'s sidecar.
+std::string frameJson(const Session& session, const CompareView* split) {
+    return (split ? split->json() : session.stepJson()) + "\n";
+}
+
+int runAnimate(AnimateOptions o) {
+    AnimatePlan plan = planAnimate(o);
+    glm::ivec2 size = plan.size;
     OutputFiles outputs(o.force);
-    outputs.addInput("LESSON", path);
-    std::vector<std::string> pngs = planPngs(outputs, o, stem);
+    outputs.addInput("LESSON", plan.path);
+    std::vector<std::string> pngs = planPngs(outputs, o, plan.stem);
     std::unique_ptr<GlContext> context = createHeadlessContext();
     std::vector<VideoOut> videos = planVideos(outputs, o, size);
 
     Session session(size, o.presentation);
-    session.loadLesson(path);
+    session.loadLesson(plan.path);
     session.goToStep(o.step - 1);
+    LessonSettings shown = session.settings();
+    o.view.applyTo(shown, true);  // --shading, over the step's
+    session.setSettings(shown);
     session.setSceneOnly(o.sceneOnly);
-    std::unique_ptr<CompareView> splitView = setUpView(session, o, split, point);
-    AnimationOptions ao = animationOptions(o, *sweep, compare);
+    std::unique_ptr<CompareView> splitView = setUpView(session, o, plan.split, plan.point);
+    const AnimationOptions& ao = plan.animation;
     Animation animation = splitView ? Animation(session, ao, *splitView) : Animation(session, ao);
 
+    // The PNGs and their JSON on a thread of their own (frame_files.h), as the videos are.
+    FrameFiles pngWriter(2);
     auto start = std::chrono::steady_clock::now();
     for (int k = 0; k < o.frames; ++k) {
         animation.composeFrame(k);
         std::vector<uint8_t> rgba = splitView ? splitView->readFrame() : session.readFrame();
         for (VideoOut& v : videos) v.writer->addFrame(rgba);
-        if (!pngs.empty()) writePngRgba8(pngs[static_cast<size_t>(k)], size.x, size.y, rgba);
+        if (!pngs.empty()) {
+            const std::string& stem = pngs[static_cast<size_t>(k)];
+            pngWriter.add(stem + ".png", size, std::move(rgba), stem + ".json",
+                          frameJson(session, splitView.get()));
+        }
         progressBar(k + 1, o.frames, secondsSince(start));
     }
-    EncodeTimes encoded = finishVideos(videos, outputs);
-    double encode = encoded.encode, waited = encoded.waited;
+    pngWriter.finish();
+    EncodeTimes encoded = finishVideos(videos, outputs);  // commits every output
     double seconds = secondsSince(start);
-    // The encoders run on their own threads: their share of the time is what the frames waited
-    // for them (a full queue, the final flush); their own time overlaps the frames'.
+    // The encoders and the PNG writer run on their own threads: their share of the time is what
+    // the frames waited for them (a full queue, the final flush); their own time overlaps the
+    // frames'.
+    double waited = encoded.waited + pngWriter.waitSeconds();
     std::fprintf(stderr,
-                 "animate: %d frames of %dx%d in %.2f s (%.1f frames/s; encoding %.2f s beside "
-                 "the frames, waited for %.2f s, %.0f %%)\n",
-                 o.frames, size.x, size.y, seconds, o.frames / seconds, encode, waited,
-                 100.0 * waited / seconds);
+                 "animate: %d frames of %dx%d in %.2f s (%.1f frames/s; encoding and writing "
+                 "%.2f s beside the frames, waited for %.2f s, %.0f %%)\n",
+                 o.frames, size.x, size.y, seconds, o.frames / seconds,
+                 encoded.encode + pngWriter.writeSeconds(), waited, 100.0 * waited / seconds);
     for (const VideoOut& v : videos) std::printf("%s\n", v.final.string().c_str());
     if (!o.pngDir.empty()) std::printf("%s\n", o.pngDir.c_str());
     return 0;
@@ -281,12 +347,18 @@ Command addAnimateCommand(CLI::App& app) {
     sub->add_option("--step", o->step, "the lesson step animated (default 1)");
     sub->add_option("--sweep", o->sweep,
                     "what moves: light (texel grid creeping 1/32 texel a frame), camera (1/6 pixel "
-                    "a frame), sun (90 -> 2 deg), bias (0.0005 -> 0.064), map-size (32 -> 2048)");
+                    "a frame), sun (90 -> 2 deg), bias (0.0005 -> 0.064), map-size (32 -> 2048); "
+                    "default: the step's own `animate`, else light");
     sub->add_flag("--snap", o->snap, "light: the creeping grid snapped to whole texels");
-    sub->add_option("--frames", o->frames, "frames (default 120)");
+    sub->add_option("--frames", o->frames, "frames (default 120, or the step's own `animate`'s)");
     sub->add_option("--fps", o->fps, "frames per second of the videos (default 12)");
     addFrameSizeOption(sub, o->size, "frame size", "default 1280x720; even for MP4");
-    addPresentationFlag(sub, o->presentation);
+    sub->add_flag("--presentation,!--no-presentation", o->presentation,
+                  "presentation mode, the default: 22 px step text, 18 px numbers, thick lines, "
+                  "for a projector; --no-presentation: the handout's smaller type");
+    ShadowSettings defaults;
+    o->view.addTo(sub, {ParamGroup::View}, defaults);
+    o->sub = sub;
     sub->add_flag("--scene-only", o->sceneOnly, "the scene alone, without the inspector");
     sub->add_flag("--no-trace", o->noTrace, "no flicker trace");
     sub->add_option("--point", o->point,
@@ -301,7 +373,9 @@ Command addAnimateCommand(CLI::App& app) {
     sub->add_option(
         "-o,--out", o->videos,
         "video files, .mp4 and/or .gif (default pcfscope-frames/LESSON-stepNN-SWEEP.mp4)");
-    sub->add_option("--png", o->pngDir, "also write the frames as numbered PNGs into this folder");
+    sub->add_option("--png", o->pngDir,
+                    "also write the frames as numbered PNGs into this folder, each with its "
+                    "frame's JSON (trace, layout, the text drawn) as `export` writes it");
     sub->add_flag("-f,--force", o->force, "overwrite existing files");
     return {sub, [o] { return runAnimate(*o); }};
 }

@@ -180,7 +180,7 @@ void checkReference(const RenderSettings& base, const BenchOptions& options) {
     bool perTapBias = base.bias == BiasMode::ReceiverPlane || base.bias == BiasMode::Soft ||
                       base.bias == BiasMode::Interpolated;
     bool weighted = options.weights != std::vector<int>{PCF_WEIGHTS_BOX};
-    if (perTapBias || weighted || base.depthFormat != DepthFormat::D32F) {
+    if (perTapBias || weighted || base.depthFormat != TexelKind::D32F) {
         throw UsageError(
             "--reference times the methods' plain textbook passes: it needs a bias without "
             "per-tap work (none, constant, slope, normal), --weights box and --depth-format 32f");

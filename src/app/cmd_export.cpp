@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <future>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -15,11 +14,13 @@
 #include "app/commands.h"
 #include "app/compare_view.h"
 #include "app/export.h"
+#include "app/frame_files.h"
 #include "app/frame_options.h"
 #include "app/live_keys.h"
 #include "app/magnifier.h"
 #include "app/render_options.h"
 #include "app/session.h"
+#include "deck/deck.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "video/video_writer.h"
@@ -38,7 +39,31 @@ struct ExportOptions {
     std::string compare;
     bool magnify = false;
     bool force = false;
+    std::vector<std::string> decks;  // --deck html, --deck pdf
+    std::string handout;             // --handout pdf
 };
+
+// The frame size a handout's frames have (deck/deck.h: two to an A4 page, the words beneath).
+constexpr glm::ivec2 HANDOUT_FRAME{1600, 900};
+
+// --deck and --handout: the files beside the frames, DIR/LESSON.html, .pdf, -handout.pdf.
+void planDecks(OutputFiles& outputs, ExportPlan& plan, const ExportOptions& o,
+               const std::string& lessonName, glm::ivec2 size) {
+    std::filesystem::path base = std::filesystem::path(plan.dir) / lessonName;
+    for (const std::string& d : o.decks) {
+        std::string& path = d == "html" ? plan.htmlDeck : plan.pdfDeck;
+        path = base.string() + "." + d;
+        outputs.add("--deck", path);
+    }
+    if (o.handout.empty()) return;
+    if (size != HANDOUT_FRAME || o.presentation) {
+        throw UsageError(
+            "--handout is made of the 1600x900 frames (two to an A4 page, the words "
+            "beneath): drop --size and --presentation");
+    }
+    plan.handout = base.string() + "-handout.pdf";
+    outputs.add("--handout", plan.handout);
+}
 
 // "2-4" or "3" -> 1-based inclusive range, checked against the lesson's step count.
 glm::ivec2 parseSteps(const std::string& text, int count) {
@@ -91,10 +116,11 @@ int runExport(const ExportOptions& o) {
     OutputFiles outputs(o.force);
     outputs.addInput("LESSON", path);
     for (const LessonStep& step : lesson.steps) outputs.addInput("chart", step.chart);
-    ExportPlan plan = planExport(outputs, dir, lesson.name, steps);
+    ExportPlan plan = planExport(outputs, dir, lesson, steps);
     plan.keys = keys;
     plan.magnify = o.magnify;
     planExtras(outputs, plan, lesson, {size, o.presentation}, o.compare);
+    planDecks(outputs, plan, o, lesson.name, size);
     exportFrames(path, plan, size, o.presentation, true, &outputs);
     outputs.commit();
     return 0;
@@ -108,8 +134,9 @@ std::string frameStem(const std::string& lessonName, int step) {
     return lessonName + buf;
 }
 
-ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::string& lessonName,
+ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const Lesson& lesson,
                       glm::ivec2 steps) {
+    const std::string& lessonName = lesson.name;
     ExportPlan plan;
     plan.dir = dir;
     plan.steps = steps;
@@ -118,6 +145,11 @@ ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::s
         std::string stem = (std::filesystem::path(dir) / frameStem(lessonName, s)).string();
         outputs.add("-o", stem + ".png");
         outputs.add("-o", stem + ".json");
+        // A predict step's answer: STEM-reveal.png (+ .json) after its question's frames.
+        if (lesson.steps[static_cast<size_t>(s - 1)].predict) {
+            outputs.add("-o", stem + "-reveal.png");
+            outputs.add("-o", stem + "-reveal.json");
+        }
         plan.stems.push_back(stem);
     }
     // A step's extra pages are only known once it is rendered, but page files already in the
@@ -128,7 +160,10 @@ ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::s
     for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
         std::string name = entry.path().filename().string();
         for (int s = steps.x; s <= steps.y; ++s) {
-            if (name.starts_with(frameStem(lessonName, s) + "-page")) stale.push_back(entry.path());
+            std::string stem = frameStem(lessonName, s);
+            if (name.starts_with(stem + "-page") || name.starts_with(stem + "-reveal-page")) {
+                stale.push_back(entry.path());
+            }
         }
     }
     std::sort(stale.begin(), stale.end());
@@ -183,6 +218,7 @@ void planStepCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& less
 void planExtras(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
                 const ExtrasFrame& frame, const std::string& compare) {
     planStepVideos(outputs, plan, lesson, frame.size);
+
     CompareSpec all;
     if (!compare.empty()) {
         try {
@@ -228,45 +264,108 @@ void applyKeys(Session& session, const std::vector<ScriptedInput>& keys) {
     }
 }
 
-// The step's split view beside its frame (STEM-compare.png + .json), following `session`.
-void writeCompare(const Session& session, const CompareSpec& spec, const std::string& stem,
-                  glm::ivec2 size, bool presentation) {
+// The step's split view beside its frame (STEM-compare.png + .json), following `session`: the
+// deck's frame.
+DeckFrame writeCompare(const Session& session, const CompareSpec& spec, const std::string& stem,
+                       glm::ivec2 size, bool presentation) {
     CompareView view(size, presentation, spec);
     view.follow(session);
     view.compose();
     writePngRgba8(stem + "-compare.png", size.x, size.y, view.readFrame());
     writeTextFile(stem + "-compare.json", view.json() + "\n");
+    return {stem + "-compare.png", view.json(), ""};
 }
 
-// Writes a frame's PNG and JSON on a second thread while the next frame renders: PNG encoding
-// is a third of an export's CPU time (perf, lesson 6 at 1280x720 presentation), and done on
-// the rendering thread it left llvmpipe's threads idle. One frame in flight at a time, so the
-// memory held is one frame's; wait() rethrows a failed write's error (a full disk), and the
-// destructor waits, so nothing is written after exportFrames returns or throws (the caller's
-// OutputFiles then takes back what an error left).
-class FrameWriter {
-  public:
-    FrameWriter() = default;
-    FrameWriter(const FrameWriter&) = delete;
-    FrameWriter& operator=(const FrameWriter&) = delete;
-    ~FrameWriter() {
-        if (mPending.valid()) mPending.wait();
-    }
-    void write(std::string stem, glm::ivec2 size, std::vector<uint8_t> rgba, std::string json) {
-        wait();
-        mPending = std::async(std::launch::async, [stem = std::move(stem), size,
-                                                   rgba = std::move(rgba), json = std::move(json)] {
-            writePngRgba8(stem + ".png", size.x, size.y, rgba);
-            writeTextFile(stem + ".json", json);
-        });
-    }
-    void wait() {
-        if (mPending.valid()) mPending.get();
-    }
+// Every frame an export writes, in order: the deck's frames (deck/deck.h). The PNG and JSON go
+// to the writer's thread (frame_files.h: PNG encoding is a third of an export's CPU time).
+struct FrameLog {
+    FrameFiles& files;
+    std::vector<DeckFrame> written;
 
-  private:
-    std::future<void> mPending;
+    void write(const std::string& stem, glm::ivec2 size, std::vector<uint8_t> rgba,
+               std::string json) {
+        written.push_back({stem + ".png", json, ""});
+        files.add(stem + ".png", size, std::move(rgba), stem + ".json", std::move(json));
+    }
 };
+
+// The rest of a step's text, when it pages at this size: one more frame per page, STEM-pageN
+// (added to `outputs`; none without it). The step's first page is written. Returns the frames.
+int writeLaterPages(Session& session, FrameLog& writer, const std::string& stem,
+                    OutputFiles* outputs, bool progress) {
+    int written = 0;
+    glm::ivec2 size = session.frameSize();
+    for (int page = 1; outputs && page < session.textPages(); ++page) {
+        std::string more = stem + "-page" + std::to_string(page + 1);
+        outputs->add("-o", more + ".png");
+        outputs->add("-o", more + ".json");
+        session.setTextPage(page);
+        session.compose();
+        writer.write(more, size, session.readFrame(), session.stepJson() + "\n");
+        if (progress)
+            std::fprintf(stderr, "export: %s (page %d)\n", (more + ".png").c_str(), page + 1);
+        ++written;
+    }
+    return written;
+}
+
+}  // namespace
+
+namespace {
+
+// One export: the session, what it has written and its counts.
+struct ExportRun {
+    const ExportPlan& plan;
+    Session& session;
+    FrameLog& writer;
+    OutputFiles* outputs;
+    bool progress;
+    int extraFrames = 0;
+    int videoFrames = 0;  // the frames of the steps' MP4s
+};
+
+// Step `s`, gone to and composed: its frames (its pages; a predict step's question's, then its
+// answer's), its split view and its video, each on the deck in that order.
+void exportStep(ExportRun& run, const std::string& lessonPath, int s) {
+    Session& session = run.session;
+    glm::ivec2 size = session.frameSize();
+    const std::string& stem = run.plan.stems[static_cast<size_t>(s - run.plan.steps.x)];
+    size_t index = static_cast<size_t>(s - run.plan.steps.x);
+    size_t first = run.writer.written.size();
+    run.writer.write(stem, size, session.readFrame(), session.stepJson() + "\n");
+    if (run.progress) {
+        std::fprintf(stderr, "export: %s (%d/%d)\n", (stem + ".png").c_str(),
+                     s - run.plan.steps.x + 1, run.plan.steps.y - run.plan.steps.x + 1);
+    }
+    run.extraFrames += writeLaterPages(session, run.writer, stem, run.outputs, run.progress);
+    if (session.predictStep()) {
+        session.setRevealed(true);
+        session.compose();
+        run.writer.write(stem + "-reveal", size, session.readFrame(), session.stepJson() + "\n");
+        if (run.progress) std::fprintf(stderr, "export: %s\n", (stem + "-reveal.png").c_str());
+        run.extraFrames +=
+            1 + writeLaterPages(session, run.writer, stem + "-reveal", run.outputs, run.progress);
+    }
+    if (index < run.plan.compares.size() && !run.plan.compares[index].empty()) {
+        run.writer.written.push_back(
+            writeCompare(session, run.plan.compares[index], stem, size, session.presentation()));
+        ++run.extraFrames;
+    }
+    if (run.plan.videos && session.lesson().steps[static_cast<size_t>(s - 1)].animate) {
+        run.videoFrames += writeStepVideo(session, lessonPath, stem + ".mp4");
+        run.writer.written[first].video = stem + ".mp4";
+        if (run.progress) std::fprintf(stderr, "export: %s\n", (stem + ".mp4").c_str());
+    }
+}
+
+// The decks and the handout the plan asks for, from the frames written.
+void writeDecks(const ExportPlan& plan, const std::string& title,
+                const std::vector<DeckFrame>& frames) {
+    Deck deck{title, frames};
+    if (!plan.htmlDeck.empty()) writeHtmlDeck(deck, plan.htmlDeck);
+    if (!plan.pdfDeck.empty()) writePdfDeck(deck, plan.pdfDeck);
+    if (!plan.handout.empty()) writePdfHandout(deck, plan.handout);
+}
 
 }  // namespace
 
@@ -276,9 +375,11 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
     Session session(size, presentation);
     session.loadLesson(lessonPath);
     auto start = std::chrono::steady_clock::now();
-    FrameWriter writer;
-    int extraFrames = 0;
-    int videoFrames = 0;  // the frames of the steps' MP4s
+    // A frame's PNG and JSON are written on a thread of their own while the next frame renders
+    // (frame_files.h).
+    FrameFiles files(1);
+    FrameLog writer{files, {}};
+    ExportRun run{plan, session, writer, outputs, progress};
     const Camera wide = session.scene().camera;
     for (int s = plan.steps.x; s <= plan.steps.y; ++s) {
         // Each step's point is found in the lesson's own view, then magnified.
@@ -287,45 +388,21 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
         if (plan.magnify) magnifySession(session, wide);
         applyKeys(session, plan.keys);
         session.compose();
-        const std::string& stem = plan.stems[static_cast<size_t>(s - plan.steps.x)];
-        size_t index = static_cast<size_t>(s - plan.steps.x);
-        if (index < plan.compares.size() && !plan.compares[index].empty()) {
-            writeCompare(session, plan.compares[index], stem, size, presentation);
-            ++extraFrames;
-        }
-        writer.write(stem, size, session.readFrame(), session.stepJson() + "\n");
-        if (progress) {
-            std::fprintf(stderr, "export: %s (%d/%d)\n", (stem + ".png").c_str(),
-                         s - plan.steps.x + 1, plan.steps.y - plan.steps.x + 1);
-        }
-        // The rest of a step's text, when it pages at this size: one more frame per page.
-        for (int page = 1; outputs && page < session.textPages(); ++page) {
-            std::string more = stem + "-page" + std::to_string(page + 1);
-            outputs->add("-o", more + ".png");
-            outputs->add("-o", more + ".json");
-            session.setTextPage(page);
-            session.compose();
-            writer.write(more, size, session.readFrame(), session.stepJson() + "\n");
-            if (progress)
-                std::fprintf(stderr, "export: %s (page %d)\n", (more + ".png").c_str(), page + 1);
-            ++extraFrames;
-        }
-        if (plan.videos && session.lesson().steps[static_cast<size_t>(s - 1)].animate) {
-            videoFrames += writeStepVideo(session, lessonPath, stem + ".mp4");
-            if (progress) std::fprintf(stderr, "export: %s\n", (stem + ".mp4").c_str());
-        }
+        exportStep(run, lessonPath, s);
     }
-    writer.wait();
+    files.finish();
+    writeDecks(plan, session.lesson().title, writer.written);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    int frames = plan.steps.y - plan.steps.x + 1 + extraFrames + videoFrames;
+    int frames = plan.steps.y - plan.steps.x + 1 + run.extraFrames + run.videoFrames;
     // Kept before announced: an interrupt after the line below must not take back the frames
     // it names.
     if (outputs) outputs->commit();
     if (progress) {
         // The videos' share is named only when the lesson has animation steps.
-        std::string inVideos =
-            videoFrames > 0 ? " (" + std::to_string(videoFrames) + " of them in videos)" : "";
+        std::string inVideos = run.videoFrames > 0
+                                   ? " (" + std::to_string(run.videoFrames) + " of them in videos)"
+                                   : "";
         std::fprintf(stderr, "export: %d frames of %dx%d%s in %.2f s (%.1f frames/s) into %s\n",
                      frames, size.x, size.y, inVideos.c_str(), seconds, frames / seconds,
                      plan.dir.c_str());
@@ -347,6 +424,14 @@ Command addExportCommand(CLI::App& app) {
                     "also a split view of every step, STEM-compare.png: KEY=V1,V2[,V3] "
                     "(bias=none,constant,slope); without it a step's own `compare` is written");
     addMagnifyFlag(sub, o->magnify);
+    sub->add_option("--deck", o->decks,
+                    "also the frames as one deck, DIR/LESSON.html (self-contained: arrow keys, "
+                    "notes N, trace T) or DIR/LESSON.pdf (a page per frame); may be given twice")
+        ->check(CLI::IsMember({"html", "pdf"}));
+    sub->add_option("--handout", o->handout,
+                    "also DIR/LESSON-handout.pdf: A4, the 1600x900 frames two to a page with the "
+                    "words and the trace's table beneath")
+        ->check(CLI::IsMember({"pdf"}));
     sub->add_flag("-f,--force", o->force, "overwrite existing frames");
     return {sub, [o] { return runExport(*o); }};
 }

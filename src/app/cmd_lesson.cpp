@@ -1,5 +1,7 @@
-// cmd_lesson.cpp: `pcfscope lesson check FILE`: verifies every claim of a lesson's steps
-// (lesson/lesson_claims.h) on the step's own lookup, and after each key the step's words invite
+// cmd_lesson.cpp: `pcfscope lesson check FILE`: reports every problem of the file at its line;
+// verifies every claim of a lesson's steps (lesson/lesson_claims.h), and the numbers and states
+// its words type (lesson/lesson_words.h), on the step's own lookup, and after each key the step's
+// words invite
 // (`keys`); a claim about an animating step's frames (`flickers`) on the frames its sweep composes.
 // The lookup belongs to a scene point (lesson/lesson_pick.h), so it is the same at every
 // frame size and mode: the claims are checked once per state, and the point is checked to show in
@@ -14,6 +16,7 @@
 #include "analysis/speed_chart.h"
 #include "analysis/step_chart.h"
 #include "app/animation.h"
+#include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/session.h"
 #include "app/step_view.h"
@@ -21,6 +24,8 @@
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_keys.h"
 #include "lesson/lesson_pick.h"
+#include "lesson/lesson_predict.h"
+#include "lesson/lesson_words.h"
 #include "render/gl_context.h"
 #include "render/scene_renderer.h"
 
@@ -137,6 +142,23 @@ struct Checker {
         world.flickerCurve = [&]() -> std::variant<std::vector<float>, std::string> {
             return stepFlickerCurves(lesson.sourcePath, static_cast<int>(index), s).main;
         };
+        // The words typed where a placeholder or a claim belongs (lesson_words.h), read against
+        // the step's own state (after a key its words are withheld where a claim fails).
+        if (key.empty()) {
+            for (const WordProblem& p : typedWordProblems(step.text, trace, ctx)) {
+                failure(stepTextLine(step, p.offset),
+                        "step " + std::to_string(index + 1) + " text: " + p.problem);
+            }
+        }
+        // A predict step's answer is one of its choices (lesson_predict.h).
+        if (step.predict && key.empty()) {
+            ++checked;
+            FilledPredict filled = fillPredict(*step.predict, trace, ctx);
+            if (auto why = predictChoiceProblem(*step.predict, filled)) {
+                failure(step.predict->line,
+                        "step " + std::to_string(index + 1) + " predict: " + *why);
+            }
+        }
         for (const StepClaim& claim : step.claims) {
             ++checked;
             std::string why;
@@ -174,12 +196,73 @@ struct Checker {
     }
 };
 
-int runLessonCheck(const std::string& file) {
-    Lesson lesson = loadLessonChecked(resolveLesson(file));
+struct LessonCheckOptions {
+    std::string file;
+    std::vector<std::string> pages;  // "1024x768P": a frame size, P for presentation
+};
+
+struct PageSize {
+    glm::ivec2 size{0};
+    bool presentation = false;
+};
+
+PageSize parsePageSize(const std::string& text) {
+    bool p = !text.empty() && (text.back() == 'P' || text.back() == 'p');
+    std::string size = p ? text.substr(0, text.size() - 1) : text;
+    try {
+        return {parseSize("--pages", size, {MIN_SESSION_SIZE}), p};
+    } catch (const UsageError&) {
+        throw UsageError("--pages takes WxH or WxHP (P: presentation), e.g. 1024x768P; got '" +
+                         text + "'");
+    }
+}
+
+// The frames each step makes at a size, as `export` writes them: its text's pages, or the
+// inspector's parts (the cells, the texel table, the formula) where those are more.
+void printPages(const Lesson& lesson, PageSize at) {
+    Session session(at.size, at.presentation);
+    session.loadLesson(lesson.sourcePath);
+    std::vector<int> pages;
+    std::vector<std::string> parts;  // what makes them, where there are more than one
+    for (int s = 0; s < session.stepCount(); ++s) {
+        session.goToStep(s);
+        session.compose();
+        pages.push_back(session.textPages());
+        FramePlan plan = planFrame(session.stepLayout(), session.model());
+        parts.push_back(pages.back() == 1
+                            ? ""
+                            : " (text " + std::to_string(plan.stepTextPages) + ", inspector " +
+                                  std::to_string(plan.inspectorParts) + ")");
+    }
+    int frames = 0;
+    for (int p : pages) frames += p;
+    std::printf("%s at %dx%d%s: %d frames for %zu steps\n", lesson.sourcePath.c_str(), at.size.x,
+                at.size.y, at.presentation ? " presentation" : "", frames, pages.size());
+    for (size_t s = 0; s < pages.size(); ++s) {
+        std::printf("  step %zu: %d page%s  %s%s\n", s + 1, pages[s], pages[s] == 1 ? " " : "s",
+                    lesson.steps[s].title.c_str(), parts[s].c_str());
+    }
+}
+
+int runLessonCheck(const LessonCheckOptions& o) {
+    std::vector<PageSize> pageSizes;
+    for (const std::string& p : o.pages) pageSizes.push_back(parsePageSize(p));
+    std::string path = resolveLesson(o.file);
+    // Every problem of the file, each on its line, before anything is checked on its numbers.
+    std::vector<InputError> problems = lessonProblems(path);
+    if (problems.size() > 1) {
+        for (const InputError& e : problems) {
+            std::fprintf(stderr, "pcfscope: %s\n", oneLine(e.what()).c_str());
+        }
+        return 2;
+    }
+    if (!problems.empty()) throw problems.front();
+    Lesson lesson = loadLessonChecked(path);
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(lesson.scene);
     Checker checker{lesson, renderer};
     for (size_t i = 0; i < lesson.steps.size(); ++i) checker.checkStep(i, lesson.steps[i]);
+    for (const PageSize& at : pageSizes) printPages(lesson, at);
     if (checker.failures > 0) return 1;
     std::printf("%s: %d claims hold over %zu steps\n", lesson.sourcePath.c_str(), checker.checked,
                 lesson.steps.size());
@@ -189,16 +272,19 @@ int runLessonCheck(const std::string& file) {
 }  // namespace
 
 Command addLessonCommand(CLI::App& app) {
-    auto file = std::make_shared<std::string>();
+    auto o = std::make_shared<LessonCheckOptions>();
     CLI::App* lessonCmd = app.add_subcommand("lesson", "tools for lesson authors");
     lessonCmd->require_subcommand(1);
     CLI::App* check = lessonCmd->add_subcommand(
         "check",
-        "verify every claim of a lesson's steps (exit 0: all hold; 1: one line per failure, "
-        "file:line; 2: a bad file)");
-    check->add_option("file", *file, "a lesson: a .toml path, or a built-in lesson's number")
+        "verify every claim of a lesson's steps and the numbers its words type (exit 0: all "
+        "hold; 1: one line per failure, file:line; 2: a bad file, one line per problem)");
+    check->add_option("file", o->file, "a lesson: a .toml path, or a built-in lesson's number")
         ->required();
-    return {lessonCmd, [file] { return runLessonCheck(*file); }};
+    check->add_option("--pages", o->pages,
+                      "WxH or WxHP (P: presentation), e.g. 1024x768P: also print the frames "
+                      "(pages) each step makes at that size; may be given more than once");
+    return {lessonCmd, [o] { return runLessonCheck(*o); }};
 }
 
 }  // namespace pcf

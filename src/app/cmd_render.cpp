@@ -117,7 +117,8 @@ void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderS
     writeExr(raw.positions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
     std::vector<float> receiver = renderer.readReceiver();
     writeExr(raw.receiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
-    writeTextFile(raw.settings, settingsJson(settings, renderer.pcfParams(settings)));
+    writeTextFile(raw.settings,
+                  settingsJson(settings, renderer.pcfParams(settings), renderer.mapSpec()));
 }
 
 // Says what was written, like export does (a silent success left users looking for it).
@@ -197,6 +198,7 @@ int runRender(const RenderCommandOptions& o) {
 Command addRenderCommand(CLI::App& app) {
     auto o = std::make_shared<RenderCommandOptions>();
     CLI::App* sub = app.add_subcommand("render", "render one frame headless (no display needed)");
+    o->render.picture = true;  // --shading: what the frame draws
     o->render.addTo(sub, "");
     sub->add_option("-o,--out", o->out, "the frame as PNG");
     sub->add_option("--raw", o->rawDir,

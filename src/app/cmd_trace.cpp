@@ -67,7 +67,7 @@ PcfParams traceParams(const TraceOptions& o, const ShadowSettings& s) {
     if (auto why = cliParamsProblem(prm)) throw UsageError(*why);
     requireRange("--rotation", o.rotationDeg, -360.0f, 360.0f);
     requireRange("--penumbra-scale", o.penumbraScale, 0.0f, MAX_TRACE_PENUMBRA_SCALE);
-    if (o.sub->count("--penumbra-scale") > 0 && prm.method != PCF_PCSS) {
+    if (o.sub->count("--penumbra-scale") > 0 && !methodInfo(prm.method).searchesBlockers) {
         throw UsageError("--penumbra-scale is for --method pcss (the light's size in the map)");
     }
     return prm;
@@ -109,7 +109,7 @@ int runTrace(const TraceOptions& o) {
     }
     ShadowSettings settings = traceSettings(o);
     PcfParams prm = traceParams(o, settings);
-    int fixedBits = depthFormatFixedPointBits(depthFormatOption(o.depthFormat));
+    TexelKind format = depthFormatOption(o.depthFormat);
     vec2 dzduv = traceDzDuv(o, settings);
 
     ShadowMap map;
@@ -129,7 +129,7 @@ int runTrace(const TraceOptions& o) {
             throw UsageError(e.what());
         }
     }
-    map.setFixedPointBits(fixedBits);
+    map.setTexelKind(format);
     // Any finite uv: texels outside the map clamp to the edge, as the GPU's sampler does; the
     // trace marks the taps that did.
     vec2 uv = glm::clamp(parseVec2("--uv", uvText), vec2(-UV_LIMIT), vec2(1.0f + UV_LIMIT));
@@ -178,8 +178,9 @@ Command addTraceCommand(CLI::App& app) {
                     "pcss: the light's size in the map, texels of penumbra per unit of light "
                     "depth between receiver and blocker (default 16)");
     sub->add_flag("--json", o->json, "print the trace as one JSON object");
-    sub->add_option("--depth-format", o->depthFormat,
-                    "the map's format: 16, 24 (fixed-point: ref clamped to [0,1]) or 32f");
+    sub->add_option(
+        "--depth-format", o->depthFormat,
+        "the map's format: " + depthFormatNames() + " (fixed-point ones: ref clamped to [0,1])");
     return {sub, [o] { return runTrace(*o); }};
 }
 

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -130,14 +131,17 @@ void readParam(const Json& json, const ParamInfo& p, ShadowSettings& s, const st
 }
 
 // render.json's keys that folders of an older pcfscope lack (before the bias modes, before
-// pcss): the setting's default when absent. Every other key the table marks rawJson is needed.
-constexpr std::string_view OPTIONAL_KEYS[] = {"bias",       "soft_scale",    "rpdb_max",
-                                              "light_size", "normal_offset", "map_size"};
+// pcss, before --shading): the setting's default when absent. Every other key the table marks
+// rawJson is needed.
+constexpr std::string_view OPTIONAL_KEYS[] = {
+    "bias", "soft_scale", "rpdb_max", "light_size", "normal_offset", "map_size", "shading"};
 
 // What `render --raw` rendered with, from its render.json: the settings the parameter table
 // marks rawJson, and what the kernel filtered with.
 struct RawSettings {
     ShadowSettings settings;
+    // The map as render.json describes it ("map"); folders written before it have none.
+    std::optional<MapSpec> map;
     PcfParams prm;
     PcfBias bias = PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, DEFAULT_RPDB_MAX);
 };
@@ -167,10 +171,43 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
         r.prm.depthFar = jsonFloat(json, "pcss_depth_far", where);
     }
     r.bias = r.settings.kernelBias();
+    if (json.contains("map")) {
+        std::string why;
+        r.map = mapSpecFromJson(json["map"], why);
+        if (!r.map) throw UsageError("render.json: " + why + " (" + where + ")");
+    }
     // render.json's keys are the kernel's words.
     if (auto why = validateParams(r.prm))
         throw UsageError("render.json: " + *why + " (" + where + ")");
     return r;
+}
+
+// The map shadowmap.exr holds: render.json's "map", which must match the image's size, in the
+// texel kind the method reads in the folder's depth_format (checkMapTexels holds "map" to it
+// once the image has been checked against that format); for a folder without one, the image's
+// size, one layer.
+MapSpec rawMapSpec(const ShadowMap& image, const RawSettings& r, const std::string& where) {
+    TexelKind kind = mapTexelKind(r.settings.method, r.settings.depthFormat);
+    MapSpec spec = r.map.value_or(MapSpec{image.size(), kind, {MapSpec::unfittedLayer()}});
+    spec.texels = kind;
+    if (spec.size != image.size() || spec.layers.size() != 1) {
+        throw UsageError("render.json: \"map\" is " + std::to_string(spec.size.x) + "x" +
+                         std::to_string(spec.size.y) + " in " + std::to_string(spec.layers.size()) +
+                         " layer(s), but shadowmap.exr is one layer of " +
+                         std::to_string(image.width()) + "x" + std::to_string(image.height()) +
+                         " (" + where + ")");
+    }
+    return spec;
+}
+
+// render.json's "map" names the texel kind its method reads in its depth_format.
+void checkMapTexels(const RawSettings& r, const std::string& where) {
+    TexelKind kind = mapTexelKind(r.settings.method, r.settings.depthFormat);
+    if (!r.map || r.map->texels == kind) return;
+    throw UsageError("render.json: \"map\" holds texels " +
+                     std::string(texelKindName(r.map->texels)) + ", but " +
+                     std::string(methodInfo(r.settings.method).name) + " reads depth_format " +
+                     std::string(texelKindName(kind)) + " (" + where + ")");
 }
 
 // The folder's images: the map compared with, each pixel's lookup and visibility, and under
@@ -189,7 +226,7 @@ RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) 
     } catch (const ImageError& e) {
         throw UsageError(e.what());
     }
-    img.map.setFixedPointBits(depthFormatFixedPointBits(r.settings.depthFormat));
+    img.map.setSpec(rawMapSpec(img.map, r, (dir / "render.json").string()));
     img.lightSpace = readImage(dir / "lightspace.exr", 4);
     img.visibility = readImage(dir / "visibility.exr", 1);
     const FloatImage& ls = img.lightSpace;
@@ -253,8 +290,9 @@ long checkRefs(const RawImages& img, const RawSettings& r, const std::string& di
 // the integer k (OpenGL 4.5 core, 2.3.5 "Fixed-Point Data Conversions"). A texel off that grid
 // means the map is not the format render.json names (a 32F map labelled 16). Near 1 a float
 // cannot tell 24-bit levels apart; the slack (two float ulps of the texel, in levels) says so.
-void checkDepthFormat(const ShadowMap& map, DepthFormat format, const std::string& path) {
-    int bits = depthFormatFixedPointBits(format);
+void checkDepthFormat(const ShadowMap& map, const std::string& path) {
+    int bits = map.fixedPointBits();
+    TexelKind format = map.spec().texels;
     if (bits == 0) return;
     double levels = std::ldexp(1.0, bits) - 1.0;
     const std::vector<float>& depths = map.depths();
@@ -331,7 +369,8 @@ int runVerify(const VerifyOptions& o) {
     std::filesystem::path dir(o.dir);
     RawSettings r = readRawSettings(dir);
     RawImages img = readRawImages(dir, r);
-    checkDepthFormat(img.map, r.settings.depthFormat, (dir / "shadowmap.exr").string());
+    checkDepthFormat(img.map, (dir / "shadowmap.exr").string());
+    checkMapTexels(r, (dir / "render.json").string());
     long refsChecked = checkRefs(img, r, dir.string());
     ConformancePrecision prec{o.subTexelBits, o.weightBits, o.referenceBits};
     EnvelopeTally t = checkEnvelopes(img, r, prec);

@@ -50,10 +50,11 @@ int pcf::runCommandLine(int argc, char** argv) {
     CLI::App app{"pcfscope: step through Percentage Closer Filtering, one shadow lookup at a time"};
     app.require_subcommand(0, 1);
     const pcf::Command commands[] = {
-        pcf::addMethodsCommand(app), pcf::addTraceCommand(app),   pcf::addRenderCommand(app),
-        pcf::addTruthCommand(app),   pcf::addBenchCommand(app),   pcf::addStabilityCommand(app),
-        pcf::addViewCommand(app),    pcf::addExportCommand(app),  pcf::addVerifyCommand(app),
-        pcf::addLessonCommand(app),  pcf::addAnimateCommand(app),
+        pcf::addMethodsCommand(app),  pcf::addTraceCommand(app),   pcf::addRenderCommand(app),
+        pcf::addTruthCommand(app),    pcf::addBenchCommand(app),   pcf::addStabilityCommand(app),
+        pcf::addViewCommand(app),     pcf::addExportCommand(app),  pcf::addVerifyCommand(app),
+        pcf::addLessonCommand(app),   pcf::addAnimateCommand(app), pcf::addPickCommand(app),
+        pcf::addExerciseCommand(app),
     };
 
     try {

@@ -27,6 +27,8 @@ Command addExportCommand(CLI::App& app);
 Command addAnimateCommand(CLI::App& app);
 Command addVerifyCommand(CLI::App& app);
 Command addLessonCommand(CLI::App& app);  // `lesson check FILE`
+Command addPickCommand(CLI::App& app);    // `pick LESSON --step S --pixel X,Y`
+Command addExerciseCommand(CLI::App& app);
 
 // `pcfscope verify DIR` with the default envelope precision: 0 all inside, 1 some outside;
 // throws UsageError, InputError or ImageError for bad input (the fuzz targets' entry).

@@ -142,6 +142,8 @@ void CompareView::follow(const Session& main) {
     }
     mStatus = main.statusText() + "   compare " + compareSpecText(mSpec);
     mHelp = main.help();
+    mInteractive = main.interactive();
+    mMotion = main.motion();
 }
 
 void CompareView::compose() { composeInto(mFrame.framebuffer.id()); }
@@ -161,7 +163,8 @@ void CompareView::composeInto(GLuint fbo) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     mCanvas.begin(mFrameSize);
     // The status line and the help as the lesson's frame has them; the help over everything.
-    FramePlan chrome = planStatusFrame(inspectorLayout(mFrameSize, mPresentation), mStatus, mHelp);
+    FramePlan chrome =
+        planStatusFrame(inspectorLayout(mFrameSize, mPresentation), mStatus, mHelp, mInteractive);
     mBoxes = chrome.boxes;
     drawPanels();
     drawTraceBand();
@@ -260,6 +263,7 @@ std::string CompareView::json() const {
               {"parts", parts},
               {"status", mStatus},
               {"layout", layoutJson(mBoxes)}};
+    if (mMotion) j["motion"] = motionJson(*mMotion);
     return jsonDump(j);
 }
 

@@ -50,7 +50,7 @@ class CompareView {
     // Takes the main view's state: its lesson, step, light, camera, shadow fit and pinned
     // point, its settings with each part's values set (compare_spec.h: comparePart, whose
     // std::invalid_argument passes through when the live settings cannot take them), its status
-    // line and its help (H).
+    // line, its help (H) and whether it is the window's (Session::interactive).
     void follow(const Session& main);
 
     void compose();
@@ -70,7 +70,7 @@ class CompareView {
     // Keeps a band under the panels for that trace (the parts' scenes are shorter by it).
     void setTraceBand(bool on);
     // The frame as JSON: the spec, each part's label, settings, visibility and difference, the
-    // status line and the layout's boxes.
+    // status line, the layout's boxes and, on an animation's frame, its "motion" (session.h).
     std::string json() const;
     // The status line's words (the main view's, then what is compared) and the boxes of the last
     // compose: the status line, its keys hint and, with the main view's help on (H), the key list
@@ -92,6 +92,8 @@ class CompareView {
     std::function<FlickerTrace()> mFlicker;
     std::string mStatus;
     bool mHelp = false;
+    bool mInteractive = false;  // the window's: its keys hint (follow takes it from the main view)
+    std::optional<FrameMotion> mMotion;  // the main view's animation frame, for the JSON
     std::vector<LayoutBox> mBoxes;
     Canvas mCanvas;
     OffscreenTarget mFrame;

@@ -31,13 +31,17 @@ struct ExportPlan {
     // step's `compare` or `export --compare`; empty: none (planExtras fills it).
     std::vector<CompareSpec> compares;
     bool magnify = false;  // every frame through the magnifier (magnifier.h)
+    // The deck files made from the frames once they are written (deck/deck.h), "" for none:
+    // `export --deck html|pdf` and `--handout pdf`.
+    std::string htmlDeck, pdfDeck, handout;
 };
 
 // Checks every output before anything is written and adds it to `outputs` (which creates the
 // folder and takes the frames back if the export fails): throws UsageError if a file exists
-// (unless the outputs were made with force) or the folder cannot be written. Page files of these
-// steps already in the folder (STEM-pageN.*) count as outputs too, so they are refused here.
-ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const std::string& lessonName,
+// (unless the outputs were made with force) or the folder cannot be written. A predict step's
+// answer frame (STEM-reveal.*) is one of its outputs. Page files of these steps already in the
+// folder (STEM-pageN.*, STEM-reveal-pageN.*) count as outputs too, so they are refused here.
+ExportPlan planExport(OutputFiles& outputs, const std::string& dir, const Lesson& lesson,
                       glm::ivec2 steps);
 
 // The frame the extras are made at (the stills' size and mode).
@@ -55,7 +59,9 @@ void planExtras(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
 
 // Renders and writes each planned step headless; progress and frames/s on stderr. A step whose
 // text pages at this size (inspector.h) also gets one frame per further page, STEM-page2.png
-// (+ .json), added to `outputs` (checked like the rest; taken back on failure) when given.
+// (+ .json), added to `outputs` (checked like the rest; taken back on failure) when given. A
+// predict step's frames are its question's (STEM, STEM-pageN), then its answer's (STEM-reveal,
+// STEM-reveal-pageN).
 // `outputs` is committed when every frame is written, before the summary line says so.
 void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
                   bool presentation, bool progress, OutputFiles* outputs = nullptr);

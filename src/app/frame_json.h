@@ -14,9 +14,11 @@ namespace pcf {
 
 // The frame's layout (planFrame's boxes) as a JSON array.
 Json layoutJson(const std::vector<LayoutBox>& boxes);
-// {"drawn": {"texels", "fetches", "formula_whole"}, "read": {"texels", "fetches"}}.
+// {"drawn": {"texels", "fetches", "formula_whole", "scene_texels"}, "read": {"texels",
+// "fetches"}}.
 Json drawnAndReadJson(const Trace& tr, const std::vector<glm::ivec2>& texels,
-                      const std::vector<int>& fetches, bool formulaWhole);
+                      const std::vector<int>& fetches, bool formulaWhole,
+                      const std::vector<glm::ivec2>& sceneTexels);
 
 // Where the cells are: {"origin": [i, j], "size": [w, h], "rect": [x, y, w, h]}.
 Json cellsJson(const Neighbourhood& view, const Rect& rect);

@@ -1,65 +1,102 @@
 #include "app/lesson_step.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "analysis/chart_facts.h"
 #include "app/animation.h"
+#include "app/predict.h"
 #include "base/input_error.h"
+#include "base/input_file.h"
 #include "base/usage_error.h"
 #include "kernel/methods.h"
 #include "lesson/lesson_claims.h"
 
 namespace pcf {
 
+namespace {
+
+// One step's checks of checkLessonSteps.
+void checkStep(const LessonStep& step, const std::string& path, int number,
+               std::vector<InputError>& problems) {
+    std::string which = "step " + std::to_string(number);
+    auto problem = [&](int line, const std::string& what) {
+        problems.emplace_back(path, line, which + what);
+    };
+    if (!step.focus.empty() && !parseFocus(step.focus)) {
+        problem(step.focusLine, " focus '" + step.focus + "' is not one of: " + focusNames());
+    }
+    if (step.animate) {
+        try {
+            stepAnimationOptions(step, path, number);  // checks
+        } catch (const InputError& e) {
+            problems.push_back(e);
+        }
+    }
+    if (step.predict) {
+        if (auto why = predictStepProblem(*step.predict)) problem(step.predict->line, " " + *why);
+    }
+    // A fact about a chart names one its chart's table knows (analysis/chart_facts.h).
+    for (const StepClaim& claim : step.claims) {
+        std::string about = " claim \"" + claim.text + "\": ";
+        // A claim about the frames reads the step's sweep (animation.h: stepFlickerCurves).
+        if (isMotionClaim(claim) && !step.animate) {
+            problem(claim.line, about + "the step does not move (it has no animate)");
+        }
+        std::string fact = chartFactOf(claim);
+        if (fact.empty()) continue;
+        if (step.chart.empty()) {
+            problem(claim.line, about + "the step shows no chart");
+            continue;
+        }
+        try {
+            checkChartFactKnown(step.chart, fact);
+        } catch (const std::invalid_argument& e) {
+            problem(claim.line, about + e.what());
+        }
+    }
+    if (step.chart.empty()) return;
+    try {
+        checkStepChart(step.chart);
+    } catch (const InputError& e) {
+        problem(step.chartLine, std::string(" chart: ") + e.what());
+        return;
+    }
+    if (step.chartHighlight.empty()) return;
+    try {
+        checkStepChartHighlight(step.chart, step.chartHighlight);
+    } catch (const std::invalid_argument& e) {
+        problem(step.chartHighlightLine, std::string(" chart_highlight: ") + e.what());
+    } catch (const InputError& e) {
+        problem(step.chartLine, std::string(" chart: ") + e.what());
+    }
+}
+
+}  // namespace
+
+void checkLessonSteps(const Lesson& lesson, const std::string& path,
+                      std::vector<InputError>& problems) {
+    for (size_t i = 0; i < lesson.steps.size(); ++i) {
+        checkStep(lesson.steps[i], path, static_cast<int>(i) + 1, problems);
+    }
+}
+
 Lesson loadLessonChecked(const std::string& path) {
     Lesson lesson = parseLessonFile(path);
     if (lesson.steps.empty()) throw UsageError(path + ": the lesson has no steps");
-    for (size_t i = 0; i < lesson.steps.size(); ++i) {
-        const LessonStep& step = lesson.steps[i];
-        std::string which = "step " + std::to_string(i + 1);
-        if (!step.focus.empty() && !parseFocus(step.focus)) {
-            throw InputError(path, step.focusLine,
-                             which + " focus '" + step.focus + "' is not one of: " + focusNames());
-        }
-        if (step.animate) stepAnimationOptions(step, path, static_cast<int>(i) + 1);  // checks
-        // A fact about a chart names one its chart's table knows (analysis/chart_facts.h).
-        for (const StepClaim& claim : step.claims) {
-            // A claim about the frames reads the step's sweep (animation.h: stepFlickerCurves).
-            if (isMotionClaim(claim) && !step.animate) {
-                throw InputError(path, claim.line,
-                                 which + " claim \"" + claim.text +
-                                     "\": the step does not move (it has no animate)");
-            }
-            std::string fact = chartFactOf(claim);
-            if (fact.empty()) continue;
-            if (step.chart.empty()) {
-                throw InputError(path, claim.line,
-                                 which + " claim \"" + claim.text + "\": the step shows no chart");
-            }
-            try {
-                checkChartFactKnown(step.chart, fact);
-            } catch (const std::invalid_argument& e) {
-                throw InputError(path, claim.line,
-                                 which + " claim \"" + claim.text + "\": " + e.what());
-            }
-        }
-        if (step.chart.empty()) continue;
-        try {
-            checkStepChart(step.chart);
-        } catch (const InputError& e) {
-            throw InputError(path, step.chartLine, which + " chart: " + e.what());
-        }
-        if (step.chartHighlight.empty()) continue;
-        try {
-            checkStepChartHighlight(step.chart, step.chartHighlight);
-        } catch (const std::invalid_argument& e) {
-            throw InputError(path, step.chartHighlightLine,
-                             which + " chart_highlight: " + e.what());
-        } catch (const InputError& e) {
-            throw InputError(path, step.chartLine, which + " chart: " + e.what());
-        }
-    }
+    std::vector<InputError> problems;
+    checkLessonSteps(lesson, path, problems);
+    if (!problems.empty()) throw problems.front();
     return lesson;
+}
+
+std::vector<InputError> lessonProblems(const std::string& path) {
+    std::vector<InputError> problems;
+    Lesson lesson = parseLessonString(readInputFile(path), path, problems);
+    checkLessonSteps(lesson, path, problems);
+    std::stable_sort(problems.begin(), problems.end(),
+                     [](const InputError& a, const InputError& b) { return a.line() < b.line(); });
+    return problems;
 }
 
 StepChart stepChart(const LessonStep& step, bool presentation) {
@@ -97,7 +134,7 @@ Focus stepFocus(const LessonStep& step) {
     if (!step.chart.empty()) return Focus{.chart = true};
     if (std::optional<Focus> f = parseFocus(step.focus)) return *f;
     // A heat map is drawn over the scene, and a nearest lookup's hard edge is seen there.
-    if (step.settings.heatmap || step.settings.method == PCF_NEAREST) {
+    if (step.settings.heatmap || methodInfo(step.settings.method).hard) {
         return Focus{.scene = true, .neighbourhood = true};
     }
     return Focus{.neighbourhood = true, .formula = true};

@@ -17,6 +17,13 @@ namespace pcf {
 // Parses a lesson and reads every bench.csv its steps chart, so that a broken chart is reported
 // at its lesson line before anything is drawn. Throws InputError (file:line) or UsageError.
 Lesson loadLessonChecked(const std::string& path);
+// The checks loadLessonChecked makes once the file is parsed (each step's focus, animation,
+// charts, and the chart facts its claims name), every problem appended to `problems`.
+void checkLessonSteps(const Lesson& lesson, const std::string& path,
+                      std::vector<InputError>& problems);
+// Every problem of a lesson file, the parser's and checkLessonSteps's, in line order; empty: the
+// file is good. `lesson check` reports them all (loadLessonChecked throws the first).
+std::vector<InputError> lessonProblems(const std::string& path);
 
 // A chart step's chart (LessonStep::chart, with its chart_highlight) at the frame's type floors.
 // `presentation`: text at the projector's floors and only the dots the step names (and the

@@ -14,7 +14,10 @@
 
 namespace pcf {
 
-KeyPress parseKeyName(const std::string& token) {
+namespace {
+
+// The keys --keys knows by a name (letters and digits are their own).
+const std::map<std::string, int>& keyNames() {
     static const std::map<std::string, int> NAMES = {
         {"space", GLFW_KEY_SPACE},
         {"right", GLFW_KEY_RIGHT},
@@ -40,7 +43,18 @@ KeyPress parseKeyName(const std::string& token) {
         {".", GLFW_KEY_PERIOD},
         {"comma", GLFW_KEY_COMMA},
         {",", GLFW_KEY_COMMA},
+        {"slash", GLFW_KEY_SLASH},
+        {"/", GLFW_KEY_SLASH},
+        {"enter", GLFW_KEY_ENTER},
+        {"return", GLFW_KEY_ENTER},
     };
+    return NAMES;
+}
+
+}  // namespace
+
+KeyPress parseKeyName(const std::string& token) {
+    const std::map<std::string, int>& NAMES = keyNames();
     KeyPress k;
     std::string name = token;
     for (;;) {

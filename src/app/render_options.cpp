@@ -116,20 +116,22 @@ BiasMode biasModeOption(const std::string& name) {
     return *b;
 }
 
-DepthFormat depthFormatOption(const std::string& name) {
-    std::optional<DepthFormat> f = depthFormatFromName(name);
+TexelKind depthFormatOption(const std::string& name) {
+    std::optional<TexelKind> f = depthFormatFromName(name);
     if (!f) {
-        throw UsageError("unknown --depth-format '" + name +
-                         "' (known: " + std::string(DEPTH_FORMAT_NAMES) + ")");
+        throw UsageError("unknown --depth-format '" + name + "' (known: " + depthFormatNames() +
+                         ")");
     }
     return *f;
 }
 
-std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss) {
+std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss,
+                         const std::optional<MapSpec>& map) {
     Json j = paramsJson(s, ParamSet::Raw);
     j["penumbra_scale"] = jsonNumber(pcss.penumbraScale);
     j["pcss_depth_near"] = jsonNumber(pcss.depthNear);
     j["pcss_depth_far"] = jsonNumber(pcss.depthFar);
+    if (map) j["map"] = mapSpecJson(*map);
     return jsonDump(j) + "\n";
 }
 
@@ -147,7 +149,12 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     sub->add_option("--step", lessonStep, "with --lesson: the step whose settings to use");
     sub->add_option("--scene", scene, "built-in scene: " + presetNameList());
     sub->add_option("--scene-file", sceneFile, "scene file (TOML)");
-    shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map}, defaults);
+    if (picture) {
+        shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map, ParamGroup::View},
+                     defaults);
+    } else {
+        shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map}, defaults);
+    }
     sub->add_option("--polygon-offset", polygonOffset,
                     "slope-scaled bias in the shadow pass: FACTOR,UNITS for glPolygonOffset");
     sub->add_option("--size", size, sizeHelp("frame size", frameRange, "default " + size));

@@ -6,6 +6,7 @@
 #include <functional>
 #include <initializer_list>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,15 +50,18 @@ class SettingOptions {
 // precision model, the bias mode and what changes each tap's comparison), one JSON object.
 // pcss: the renderer's pcss parameters (scene/pcss.h), as the frame was rendered with them:
 // penumbraScale as "penumbra_scale", a spot map's depthNear / depthFar as "pcss_depth_near" /
-// "pcss_depth_far", so that `verify` repeats the very lookups; 0 for the other methods.
-std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss = PcfParams{});
+// "pcss_depth_far", so that `verify` repeats the very lookups; 0 for the other methods. Last,
+// the map as a value (trace_json.h mapSpecJson), "map": its size, texel kind and layers' fits,
+// when given (`verify` checks shadowmap.exr against it).
+std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss = PcfParams{},
+                         const std::optional<MapSpec>& map = std::nullopt);
 
 // The shared options' names parsed, each with one error for every command ("unknown method
 // 'blur' (known: ...)", "unknown --weights 'sharp' (known: box, binomial, gaussian)").
-int methodOption(const std::string& name);               // --method
-int weightsOption(const std::string& name);              // --weights
-BiasMode biasModeOption(const std::string& name);        // --bias
-DepthFormat depthFormatOption(const std::string& name);  // --depth-format
+int methodOption(const std::string& name);             // --method
+int weightsOption(const std::string& name);            // --weights
+BiasMode biasModeOption(const std::string& name);      // --bias
+TexelKind depthFormatOption(const std::string& name);  // --depth-format
 // The bias parameters' ranges, then whether the mode combines with the method: UsageError in
 // the flags' words.
 void checkBiasOptions(const ShadowSettings& s);
@@ -73,6 +77,9 @@ struct RenderOptions {
     std::string polygonOffset;  // "F,U": glPolygonOffset in the shadow pass
     std::string size = "1280x720";
     SizeRange frameRange;  // --size's range; set before addTo
+    // Whether the command shows its frames (render): then it also takes the parameters of what
+    // a frame draws (ParamGroup::View, --shading); the commands that measure do not.
+    bool picture = false;
 
     // Registers the options on `sub`; `defaultScene` is used when neither --scene nor
     // --scene-file is given (empty: one of them is required).

@@ -23,10 +23,11 @@ namespace {
 
 // The state, what the keys changed from the step's (`changed`: changedSettings), the scene's
 // size and the frame time.
-std::string statusLine(const LessonSettings& s, const std::vector<std::string>& changed,
-                       glm::ivec2 sceneSize, double frameTimeMs) {
+std::string statusLine(const LessonSettings& s, bool hideBiasAmounts,
+                       const std::vector<std::string>& changed, glm::ivec2 sceneSize,
+                       double frameTimeMs) {
     std::ostringstream line;
-    line << settingsSummary(s);
+    line << settingsSummary(s, hideBiasAmounts);
     for (size_t k = 0; k < changed.size(); ++k) line << (k == 0 ? "   keys: " : ", ") << changed[k];
     line << "   scene " << sceneSize.x << "x" << sceneSize.y;
     if (frameTimeMs >= 0.0) {
@@ -39,12 +40,19 @@ std::string statusLine(const LessonSettings& s, const std::vector<std::string>& 
 
 }  // namespace
 
+Json motionJson(const FrameMotion& motion) {
+    return {{"sweep", motion.sweep},   {"frame", motion.frame},
+            {"frames", motion.frames}, {"value", jsonNumber(static_cast<float>(motion.value))},
+            {"words", motion.swept},   {"steps_own", motion.stepsOwn}};
+}
+
 Session::Session(glm::ivec2 frameSize, bool presentation) : mPresentation(presentation) {
     setFrameSize(frameSize);
 }
 
-void Session::loadLesson(const std::string& path) {
-    Lesson lesson = loadLessonChecked(path);
+void Session::loadLesson(const std::string& path) { setLesson(loadLessonChecked(path)); }
+
+void Session::setLesson(Lesson lesson) {
     mLesson = std::move(lesson);
     mRenderer = std::make_unique<SceneRenderer>(mLesson.scene);
     mPartRenderer.reset();
@@ -62,6 +70,8 @@ void Session::goToStep(int step) {
     mStep = std::clamp(step, 0, stepCount() - 1);
     const LessonStep& s = mLesson.steps[static_cast<size_t>(mStep)];
     mTextPage = 0;
+    mRevealed = false;
+    mTyped.clear();
     mGrid = s.settings.grid;
     mHeatmap = s.settings.heatmap;
     setSettings(s.settings);
@@ -110,15 +120,6 @@ namespace {
 bool samePicture(LessonSettings a, const LessonSettings& b) {
     a.point = b.point;
     return a == b;
-}
-
-// Equal in what a step's words can talk about: also ignores a kernel size or radius the method
-// does not use (a kernel change under bilinear2x2 leaves its text true).
-bool sameForTheWords(LessonSettings a, const LessonSettings& b) {
-    const MethodInfo& info = methodInfo(a.method);
-    if (a.method == b.method && !info.usesKernel) a.kernel = b.kernel;
-    if (a.method == b.method && !info.usesRadius) a.radius = b.radius;
-    return samePicture(a, b);
 }
 
 }  // namespace
@@ -245,13 +246,24 @@ void Session::blitThumbnail(const InspectorLayout& layout) {
 void Session::setHelp(bool on) { mHelp = on; }
 
 bool Session::nextPage() {
-    if (mTextPage + 1 >= mTextPages) return false;
+    if (mTextPage + 1 >= mTextPages) {
+        // The question's last page: the answer is the next.
+        if (!questionShown()) return false;
+        setRevealed(true);
+        return true;
+    }
     ++mTextPage;
     return true;
 }
 
 bool Session::previousPage() {
-    if (mTextPage <= 0) return false;
+    if (mTextPage <= 0) {
+        if (!predictStep() || !mRevealed) return false;
+        // Back to the question's last page.
+        mRevealed = false;
+        mTextPage = LAST_TEXT_PAGE;
+        return true;
+    }
     --mTextPage;
     return true;
 }
@@ -288,15 +300,13 @@ void Session::renderScene() {
         stepView(mLesson.scene, mSettings, mPoint, glm::ivec2(mLayout.scene.size()), mShadowFit);
     const RenderSettings& r = view.render;
     mRenderer->setPick(view.pick);
-    // The map's texel grid slid and snapped as the lesson says (light.h: shiftShadowOrigin).
-    glm::vec3 shift(mSettings.originShift, mSettings.originShift, mSettings.snap ? 1.0f : 0.0f);
-    bool mapChanged = !mRendered || mRendered->mapSize != r.mapSize ||
-                      mRendered->depthFormat != r.depthFormat || mRendered->cull != r.cull ||
-                      mRendered->polygonOffset != r.polygonOffset || shift != mRenderedShift;
-    if (mapChanged) {
-        mRenderer->setShadowClipFromWorld(view.fit);
-        mRenderedShift = shift;
-    }
+    // The map is drawn again when the one it would draw is another value (its size, texel kind,
+    // or fit: the texel grid slid and snapped as the lesson says, light.h shiftShadowOrigin), or
+    // the depth pass draws it otherwise (culling, polygon offset).
+    bool mapChanged = !mRendered ||
+                      shadowMapSpec(mRenderer->scene(), r, view.fit) != mRenderer->mapSpec() ||
+                      mRendered->cull != r.cull || mRendered->polygonOffset != r.polygonOffset;
+    if (mapChanged) mRenderer->setShadowClipFromWorld(view.fit);
     mHeatDirty = true;
     // Only what changed: the shadow pass when the map did (renderStepView renders both).
     if (mapChanged) mRenderer->renderShadowPass(r);
@@ -337,24 +347,37 @@ void Session::tracePartsOfText() {
     }
 }
 
-std::string Session::stepText() const {
-    if (mLesson.steps.empty()) return "";
+std::string Session::stepText() const { return stepWords().text; }
+
+FrameWords Session::stepWords() const {
+    if (mLesson.steps.empty()) return {};
     const LessonStep& s = mLesson.steps[static_cast<size_t>(mStep)];
+    // The window's own way to play an animation step, which no written frame shows.
+    std::string hint = mInteractive && s.animate ? std::string(PLAY_HINT) + "\n\n" : "";
     if (!mTrace) {
-        return s.text.find('{') == std::string::npos
-                   ? s.text
-                   : "(The picked pixel is not on a shadow receiver, so this step's numbers "
-                     "cannot be shown. Pick a point on the ground.)";
+        return {hint + (s.text.find('{') == std::string::npos
+                            ? s.text
+                            : "(The picked pixel is not on a shadow receiver, so this step's "
+                              "numbers cannot be shown. Pick a point on the ground.)")};
     }
     StepContext ctx =
         makeStepContext(mSettings, mPixel, mPoint ? lightAngleDeg(mLesson.scene, *mPoint) : -1.0f);
     ctx.partVisibility = mPartVisibility;
     std::string text = fillText(s.text, *mTrace, ctx);
-    if (!mStepEdited) return text;
+    if (!mStepEdited && !mMotion) return {hint + text};
     ClaimWorld world;
     world.onPlane = mPoint && std::holds_alternative<Plane>(
                                   mLesson.scene.objects[static_cast<size_t>(mPoint->object)].shape);
-    return wordsForLiveState(s, mSettings, text, *mTrace, ctx, world);
+    // A step's motion claim (`flickers`) is about its own sweep: another sweep does not make it.
+    if (mMotion && !mMotion->stepsOwn) {
+        world.flickerCurve = []() -> std::variant<std::vector<float>, std::string> {
+            return std::string("another sweep than the step's own");
+        };
+    }
+    WordsInput in{s, mMotion ? mMotion->base : mSettings, text, *mTrace, ctx, world, mInteractive};
+    FrameWords words = mMotion ? wordsForMovingFrame(in, mMotion->swept) : wordsForLiveState(in);
+    words.text = hint + words.text;
+    return words;
 }
 
 void Session::compose() { composeInto(mFrame.framebuffer.id()); }
@@ -387,6 +410,7 @@ void Session::composeInto(GLuint fbo) {
     mDrawnTexels = plan.drawnTexels;
     mDrawnFetches = plan.drawnFetches;
     mFormulaWhole = plan.formulaWhole;
+    mSceneTexels = plan.sceneTexels;
     // blitChart above placed them with the chart it drew or kept.
     if (!chart.empty()) mBoxes.insert(mBoxes.end(), mChartBoxes.begin(), mChartBoxes.end());
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -505,7 +529,7 @@ void Session::drawHeatLegend() {
 std::string Session::statusText() const {
     if (mLesson.steps.empty()) return settingsSummary(mSettings);
     return statusLine(
-        mSettings,
+        mSettings, hiddenNumbers().refs,
         changedSettings(mLesson.steps[static_cast<size_t>(mStep)].settings, mSettings, mBaseLight),
         glm::ivec2(mLayout.scene.size()), mFrameTimeMs);
 }
@@ -527,6 +551,8 @@ InspectorModel Session::model() const {
     m.sceneSize = scene;
     m.status = statusText();
     m.markers = mMarkers;
+    m.interactive = mInteractive;
+    m.singleFrame = mMotion.has_value() && !mInteractive;
     m.presentation = mPresentation;
     m.help = mHelp;
     m.showScene = chart.empty();
@@ -535,6 +561,7 @@ InspectorModel Session::model() const {
     m.highlightFetch = mLesson.steps[static_cast<size_t>(mStep)].highlightFetch - 1;
     m.focus = stepFocus(mLesson.steps[static_cast<size_t>(mStep)]);
     m.plays = mLesson.steps[static_cast<size_t>(mStep)].animate.has_value();
+    fillPredictPanel(m);
     return m;
 }
 
@@ -546,12 +573,15 @@ std::vector<uint8_t> Session::readFrame() const {
 std::string Session::stepJson() const {
     // Every setting the step is made with, from the parameter table.
     Json settings = paramsJson(mSettings, ParamSet::All);
+    FrameWords words = stepWords();
     Json j = {
         {"lesson", mLesson.name},
         {"title", mLesson.title},
         {"step", mStep + 1},
         {"step_title", mLesson.steps.empty() ? "" : mLesson.steps[mStep].title},
-        {"text", drawnStepText(stepText())},
+        {"text",
+         drawnStepText(questionShown() && filledPredict() ? filledPredict()->ask : words.text)},
+        {"words", wordsShownName(words.shown)},
         {"pixel", jsonPair(mPixel)},
         {"point", mPoint ? Json::array({jsonNumber(mPoint->posWs.x), jsonNumber(mPoint->posWs.y),
                                         jsonNumber(mPoint->posWs.z)})
@@ -564,9 +594,24 @@ std::string Session::stepJson() const {
         {"text_page", mTextPage + 1},
         {"text_pages", mTextPages},
         {"layout", layoutJson(mBoxes)}};
+    // A question's frame and its answer's (DESIGN.md 8b): the roles the question does not draw.
+    if (predictStep()) {
+        Json masked = Json::array();
+        for (const std::string& role : hiddenRoles(hiddenNumbers())) masked.push_back(role);
+        j["predict"] = {{"phase", mRevealed ? "reveal" : "question"}, {"masked", masked}};
+        // The question's choices; the answer only in the answer's frame.
+        if (std::optional<FilledPredict> f = filledPredict(); f && !mRevealed) {
+            j["predict"]["choices"] = f->choices;
+        } else if (f) {
+            j["predict"]["answer"] = f->answer;
+            j["predict"]["answer_line"] = answerLine(*mLesson.steps[mStep].predict, *f, mTyped);
+        }
+    }
     if (!mLesson.steps.empty()) j["focus"] = focusName(stepFocus(mLesson.steps[mStep]));
+    if (mMotion) j["motion"] = motionJson(*mMotion);
     if (mTrace) {
-        j.update(drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole));
+        j.update(
+            drawnAndReadJson(*mTrace, mDrawnTexels, mDrawnFetches, mFormulaWhole, mSceneTexels));
         // Where the cells are on the frame (texelCellRect of this view and rect gives a cell).
         InspectorLayout layout = stepLayout();
         if (!layout.inspector.empty() && !mDrawnTexels.empty()) {

@@ -15,11 +15,14 @@
 
 #include "app/lesson_step.h"
 #include "app/step_view.h"
+#include "app/step_words.h"
 #include "draw/canvas.h"
 #include "kernel/trace.h"
+#include "kernel/trace_json.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_catalogue.h"
 #include "lesson/lesson_pick.h"
+#include "lesson/lesson_predict.h"
 #include "overlay/flicker_trace.h"
 #include "overlay/inspector.h"
 #include "render/gl_objects.h"
@@ -30,6 +33,29 @@ namespace pcf {
 
 // The smallest frame the scene view and the inspector fit into side by side.
 constexpr glm::ivec2 MIN_SESSION_SIZE{320, 180};
+// A text page past any step's last: compose() shows the last page there is.
+constexpr int LAST_TEXT_PAGE = 1 << 20;
+
+// A frame of an animation (app/animation.h): what is swept and its value now, in words ("The sun
+// sinks from 40 to 6 degrees above the horizon: now 23.4."), the state the sweep started from,
+// and whether the sweep is the step's own `animate` (its motion claims, `flickers`, are about
+// that one). On such a frame the step's words are checked against the frame (step_words.h).
+struct FrameMotion {
+    std::string swept;
+    LessonSettings base;
+    bool stepsOwn = false;
+    // For the frame's JSON ("motion"): the sweep's name, this frame (from 1) of how many, and
+    // the swept quantity's value now (animation.h: animationSweepValue).
+    std::string sweep;
+    int frame = 0;
+    int frames = 0;
+    double value = 0.0;
+};
+// {"sweep", "frame", "frames", "value", "words", "steps_own"}: a moving frame's JSON "motion".
+Json motionJson(const FrameMotion& motion);
+
+// The viewer's own hint on an animation step (never in an exported frame or video).
+constexpr const char* PLAY_HINT = "Space plays this step; . and , show one frame more or less.";
 
 class Session {
   public:
@@ -38,7 +64,11 @@ class Session {
 
     // Loads a lesson (throws InputError) and goes to its first step.
     void loadLesson(const std::string& path);
+    // Shows a lesson made in memory (an exercise's items: app/exercise.h), from its first step.
+    void setLesson(Lesson lesson);
     const Lesson& lesson() const { return mLesson; }
+    // The title the frame shows (an exercise's carries its score).
+    void setTitle(std::string title) { mLesson.title = std::move(title); }
 
     // Steps: the step's settings and pixel replace the current ones.
     int step() const { return mStep; }
@@ -95,8 +125,33 @@ class Session {
     void setTextPage(int page) { mTextPage = std::max(0, page); }
     bool nextPage();
     bool previousPage();
+    // A predict step (lesson.h: StepPredict) shows its question until it is revealed: the
+    // numbers its answer needs hidden (app/predict.h), the question in the step panel. goToStep
+    // starts every predict step unrevealed; nextPage() past the question's last page reveals it,
+    // and previousPage() on the answer's first page goes back to the question's last.
+    bool predictStep() const;
+    bool questionShown() const { return predictStep() && !mRevealed; }
+    bool revealed() const { return mRevealed; }
+    void setRevealed(bool on);
+    // What the viewer's keyboard typed as the answer: shown under the question, judged in the
+    // reveal's answer line.
+    const std::string& typed() const { return mTyped; }
+    void setTyped(std::string text) { mTyped = std::move(text); }
+    // The question's hint says how to answer: typing (the viewer) or the next page (frames).
+    void setTypedAnswers(bool on) { mTypedAnswers = on; }
+    // The question filled from the current trace; nullopt on a step without one or off the
+    // receivers.
+    std::optional<FilledPredict> filledPredict() const;
+    // The numbers the frame hides now (none once revealed).
+    HiddenNumbers hiddenNumbers() const;
+
     // The frame time the status line shows; negative: none (exports, screenshots).
     void setFrameTimeMs(double ms);
+    // The window's frames (the viewer sets it): only they say which keys turn a page, restore a
+    // step or play one ("next page (Right)", "H: keys"). Off (the default) for every frame that
+    // is written: export, animate, the viewer's E and --screenshot.
+    bool interactive() const { return mInteractive; }
+    void setInteractive(bool on) { mInteractive = on; }
 
     // Renders what changed, traces the pixel and composes the frame offscreen.
     void compose();
@@ -111,8 +166,12 @@ class Session {
     std::vector<uint8_t> readFrame() const;  // RGBA8, rows top-down
 
     const std::optional<Trace>& trace() const { return mTrace; }
-    // The current step's text with its placeholders filled from the trace.
+    // The shadow map the last compose() traced on.
+    const ShadowMap& shadowMap() const { return mMap; }
+    // The current step's text with its placeholders filled from the trace, or what the frame
+    // shows in its place (step_words.h: a note, or a caption where a claim fails on this frame).
     std::string stepText() const;
+    FrameWords stepWords() const;
     // The step as JSON: lesson, step, title, text, pixel, settings, the trace object, and the
     // layout of the last composed frame (every box drawn: inspector.h LayoutBox).
     std::string stepJson() const;
@@ -138,6 +197,10 @@ class Session {
     // Pins this scene point (a split view's parts pin their main view's point; the magnifier
     // keeps its point when it moves the camera): the pixel and jitter follow for this frame.
     void pinPoint(const ScenePoint& point);
+    // An animation's frame (FrameMotion), or nullopt for a still: the step's words are then
+    // checked on every frame. Animation sets it per frame and clears it when it restores.
+    void setMotion(std::optional<FrameMotion> motion) { mMotion = std::move(motion); }
+    const std::optional<FrameMotion>& motion() const { return mMotion; }
     // The scene alone over the whole frame (no inspector, steps or status): `animate --scene-only`.
     void setSceneOnly(bool on);
     bool sceneOnly() const { return mSceneOnly; }
@@ -186,6 +249,8 @@ class Session {
     bool mGrid = true;
     bool mHeatmap = false;
     bool mMarkers = true;
+    bool mInteractive = false;
+    std::optional<FrameMotion> mMotion;
     // The lesson scene's own light, and the sun (sunTilt, sunTurn) the light now has: the keys
     // move the sun from the lesson's light (setSettings).
     Light mBaseLight;
@@ -194,14 +259,19 @@ class Session {
     bool mStepMagnified = false;  // the camera is a `magnify` step's close-up
     bool mHeatDirty = true;
     std::vector<float> mHeatValues;
-    OffscreenTarget mHeat;           // the heat map, rows top-down, blitted over the scene
-    glm::vec3 mRenderedShift{0.0f};  // origin shift and snap (1) the map was rendered with
+    OffscreenTarget mHeat;  // the heat map, rows top-down, blitted over the scene
     int mTextPage = 0;
     int mTextPages = 1;
+    bool mRevealed = false;  // a predict step's answer is shown
+    std::string mTyped;      // the answer typed in the viewer
+    bool mTypedAnswers = false;
+    // The step panel's question or answer (session_predict.cpp).
+    void fillPredictPanel(InspectorModel& m) const;
     std::vector<LayoutBox> mBoxes;
     std::vector<glm::ivec2> mDrawnTexels;  // what the last composed frame drew (FramePlan)
     std::vector<int> mDrawnFetches;
     bool mFormulaWhole = false;
+    std::vector<glm::ivec2> mSceneTexels;  // the texels tinted on the scene (FramePlan)
     double mFrameTimeMs = -1.0;
     InspectorLayout mLayout;
 

@@ -10,6 +10,7 @@
 #include "kernel/trace_explain.h"
 #include "lesson/lesson_keys.h"
 #include "lesson/lesson_pick.h"
+#include "overlay/inspector.h"
 
 namespace pcf {
 
@@ -69,6 +70,7 @@ const StatusPart STATUS_PARTS[] = {
     {"precision", "   ", nullptr, "exact"},
     {"sun_tilt", "   sun ", sunTilted, "", false, sunTiltText},
     {"sun_turn", "   sun turned ", sunTurned, "", false, sunTurnText},
+    {"shading", "   shading ", nullptr, "lit"},
 };
 
 std::string statusValue(const StatusPart& part, const LessonSettings& s) {
@@ -83,12 +85,15 @@ std::string statusValue(const StatusPart& part, const LessonSettings& s) {
 
 }  // namespace
 
-std::string settingsSummary(const LessonSettings& s) {
+std::string settingsSummary(const LessonSettings& s, bool hideBiasAmounts) {
     std::string line;
     for (const StatusPart& part : STATUS_PARTS) {
         if (part.shows && !part.shows(s)) continue;
         std::string value = statusValue(part, s);
         if (value == part.quiet) continue;
+        const ParamInfo* p = part.text ? nullptr : findParam(part.key);
+        bool amount = p && p->group == ParamGroup::Bias && part.key != "bias";
+        if (hideBiasAmounts && amount) value = HIDDEN_NUMBER;
         line += std::string(part.before) + (part.bare ? "" : value);
     }
     return line;
@@ -98,6 +103,9 @@ std::vector<std::string> changedSettings(const LessonSettings& step, const Lesso
                                          const Light& sceneLight) {
     std::vector<std::string> changed;
     for (const ParamInfo& p : allParams()) {
+        // What the frame draws (the shading) is in the line's settings whenever it is not the
+        // default, and changes nothing the words say.
+        if (p.group == ParamGroup::View) continue;
         std::string now = settingText(p, live);
         if (now != settingText(p, step)) changed.push_back(std::string(p.key) + " " + now);
     }
@@ -115,30 +123,109 @@ std::vector<std::string> changedSettings(const LessonSettings& step, const Lesso
     return changed;
 }
 
-std::string wordsForLiveState(const LessonStep& step, const LessonSettings& live,
-                              const std::string& text, const Trace& trace, const StepContext& ctx,
-                              const ClaimWorld& world) {
-    if (live == step.settings) return text;
+bool sameForTheWords(LessonSettings a, const LessonSettings& b) {
+    const MethodInfo& info = methodInfo(a.method);
+    if (a.method == b.method && !info.usesKernel) a.kernel = b.kernel;
+    if (a.method == b.method && !info.usesRadius) a.radius = b.radius;
+    a.point = b.point;
+    a.shading = b.shading;
+    return a == b;
+}
+
+std::string_view wordsShownName(WordsShown shown) {
+    switch (shown) {
+        case WordsShown::Step:
+            return "step";
+        case WordsShown::Noted:
+            return "noted";
+        case WordsShown::Caption:
+            return "caption";
+    }
+    return "?";
+}
+
+std::vector<const StepClaim*> failingClaims(const WordsInput& in) {
+    std::vector<const StepClaim*> failing;
+    for (const StepClaim& claim : in.step.claims) {
+        if (isChartClaim(claim) || claimHolds(claim, in.trace, in.ctx, in.world)) continue;
+        failing.push_back(&claim);
+    }
+    return failing;
+}
+
+std::string pointNowWords(const Trace& trace, const ShadowSettings& s) {
+    const MethodInfo& info = methodInfo(s.method);
+    std::string method(info.name);
+    if (info.usesKernel) method += " " + std::to_string(s.kernel) + "x" + std::to_string(s.kernel);
+    int lit = 0;
+    for (const TapRecord& tap : trace.taps) lit += tap.lit >= 0.5f ? 1 : 0;
+    const char* state = trace.visibility >= 1.0f   ? "fully lit"
+                        : trace.visibility <= 0.0f ? "fully shadowed"
+                                                   : "in penumbra, partly lit";
+    return "Under " + method + " the ringed point is " + state + ": visibility " +
+           formatNumber(trace.visibility) + ", " + std::to_string(lit) + " of " +
+           std::to_string(trace.taps.size()) + " reads pass.";
+}
+
+namespace {
+
+// "Written for pcf-gather N=3, bias constant 0.005; now ...": the two states, in the status
+// line's words.
+std::string writtenFor(const LessonSettings& step, const LessonSettings& live) {
     auto compact = [](std::string t) {
         for (size_t at; (at = t.find("   ")) != std::string::npos;) t.replace(at, 3, ", ");
         return t;
     };
-    std::string written = "Written for " + compact(settingsSummary(step.settings)) + "; now " +
-                          compact(settingsSummary(live)) + ".";
-    for (const StepClaim& claim : step.claims) {
-        if (isChartClaim(claim) || claimHolds(claim, trace, ctx, world)) continue;
-        return "(" + written + " This step's words do not hold now (\"" + claim.text +
-               "\" is false here), so they are not shown; step away and back to restore the "
-               "step.)\n\nThe live lookup: uv = (" +
-               fillText(
-                   "{uv.x}, {uv.y}), ref = {ref}, frac = ({frac.x}, {frac.y}), "
-                   "{lit_count} of {taps} reads pass, visibility = {visibility}.",
-                   trace, ctx);
+    return "Written for " + compact(settingsSummary(step)) + "; now " +
+           compact(settingsSummary(live)) + ".";
+}
+
+// Why the words are not shown, in plain words: what the first failing claim that plain words
+// can say says, or that numbers they state do not hold.
+std::string whyWithheld(const std::vector<const StepClaim*>& failing, const char* where) {
+    std::string head = std::string("This step's words are not shown ") + where + ": ";
+    for (const StepClaim* claim : failing) {
+        std::string words = claimInWords(*claim);
+        if (!words.empty()) return head + "they say " + words + ", which is not so here.";
+    }
+    return head + "numbers they state do not hold here.";
+}
+
+// The state the words were written for, or one its `keys` invite: no note needed.
+bool wordsState(const WordsInput& in) {
+    return sameForTheWords(in.live, in.step.settings) ||
+           reachableByKeys(in.step.settings, in.live, in.step.keys);
+}
+
+}  // namespace
+
+FrameWords wordsForLiveState(const WordsInput& in) {
+    if (sameForTheWords(in.live, in.step.settings)) return {in.text, WordsShown::Step};
+    std::string written = writtenFor(in.step.settings, in.live);
+    std::string restore = in.interactive ? " Step away and back to restore the step." : "";
+    std::vector<const StepClaim*> failing = failingClaims(in);
+    if (!failing.empty()) {
+        return {"(" + written + " " + whyWithheld(failing, "in this state") + restore + ")\n\n" +
+                    pointNowWords(in.trace, in.ctx.settings) + " The live lookup: uv = (" +
+                    fillText("{uv.x}, {uv.y}), ref = {ref}, frac = ({frac.x}, {frac.y}).", in.trace,
+                             in.ctx),
+                WordsShown::Caption};
     }
     // A state the words invite (the step's `keys`, "press O") needs no note: its claims hold.
-    if (reachableByKeys(step.settings, live, step.keys)) return text;
-    return "(" + written + " The numbers are live; step away and back to restore the step.)\n\n" +
-           text;
+    if (wordsState(in)) return {in.text, WordsShown::Step};
+    return {"(" + written + " The numbers are live." + restore + ")\n\n" + in.text,
+            WordsShown::Noted};
+}
+
+FrameWords wordsForMovingFrame(const WordsInput& in, const std::string& swept) {
+    std::vector<const StepClaim*> failing = failingClaims(in);
+    if (!failing.empty()) {
+        return {swept + " " + pointNowWords(in.trace, in.ctx.settings) + "\n\n" +
+                    whyWithheld(failing, "on this frame"),
+                WordsShown::Caption};
+    }
+    if (wordsState(in)) return {in.text, WordsShown::Step};
+    return {"(" + writtenFor(in.step.settings, in.live) + ")\n\n" + in.text, WordsShown::Noted};
 }
 
 }  // namespace pcf

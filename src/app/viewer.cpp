@@ -18,6 +18,7 @@
 #include "app/render_options.h"
 #include "app/session.h"
 #include "app/step_player.h"
+#include "app/viewer_answer.h"
 #include "app/viewer_split.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
@@ -49,9 +50,11 @@ class Viewer {
         : mWindow(window), mSession(window.framebufferSize(), o.presentation) {
         mLessons = builtInLessons();
         mSession.loadLesson(o.lesson);
+        mSession.setInteractive(true);  // the window's frames name its keys
         auto it = std::find(mLessons.begin(), mLessons.end(), o.lesson);
         mLessonIndex = it == mLessons.end() ? -1 : static_cast<int>(it - mLessons.begin());
         mPlayer.afterChange();
+        mSession.setTypedAnswers(true);
     }
 
     Session& session() { return mSession; }
@@ -59,6 +62,12 @@ class Viewer {
 
     void press(KeyPress k) {
         bool shift = (k.mods & GLFW_MOD_SHIFT) != 0;
+        // A question's typed answer (its choices' letters before C's split view), R and the
+        // exercise mode (viewer_answer.h).
+        if (mAnswers.press(mSession, k)) {
+            mSplit.follow(mSession);
+            return;
+        }
         if (mSplit.press(mSession, k.key)) return;
         // An animation step's own keys (step_player.h) first; around the others the player
         // puts the step's state back and shows its frame on the new one.
@@ -113,9 +122,8 @@ class Viewer {
         mSplit.follow(mSession);
         // The scene point the click pinned, as a lesson's `point` key takes it (lesson.h).
         if (const std::optional<ScenePoint>& q = mSession.point()) {
-            std::printf("pixel (%d, %d): point = [%.4f, %.4f, %.4f]\n", mSession.pixel().x,
-                        mSession.pixel().y, static_cast<double>(q->posWs.x),
-                        static_cast<double>(q->posWs.y), static_cast<double>(q->posWs.z));
+            std::printf("pixel (%d, %d): %s\n", mSession.pixel().x, mSession.pixel().y,
+                        pointKeyText(q->posWs).c_str());
             std::fflush(stdout);
         }
     }
@@ -125,19 +133,26 @@ class Viewer {
     void exportFrame() {
         std::string dir = "pcfscope-frames";
         std::string base = frameStem(mSession.lesson().name, mSession.step() + 1);
+        if (mSession.predictStep() && mSession.revealed()) base += "-reveal";
         if (mSession.textPage() > 0) base += "-page" + std::to_string(mSession.textPage() + 1);
         std::string stem = freeStem(dir, base);
         try {
             OutputFiles outputs(false);
             outputs.add("E", stem + ".png");
             outputs.add("E", stem + ".json");
+            // Written as `export` writes it: without the window's key hints.
+            mSession.setInteractive(false);
             mSession.compose();
             glm::ivec2 size = mSession.frameSize();
-            writePngRgba8(stem + ".png", size.x, size.y, mSession.readFrame());
-            writeTextFile(stem + ".json", mSession.stepJson() + "\n");
+            std::vector<uint8_t> rgba = mSession.readFrame();
+            std::string json = mSession.stepJson() + "\n";
+            mSession.setInteractive(true);
+            writePngRgba8(stem + ".png", size.x, size.y, rgba);
+            writeTextFile(stem + ".json", json);
             outputs.commit();
             std::fprintf(stderr, "view: exported %s.png\n", stem.c_str());
         } catch (const std::exception& e) {
+            mSession.setInteractive(true);
             std::fprintf(stderr, "view: export failed: %s\n", e.what());
         }
     }
@@ -250,6 +265,7 @@ class Viewer {
     Session mSession;
     StepPlayer mPlayer{mSession};
     ViewerSplit mSplit;
+    ViewerAnswers mAnswers;
     std::vector<std::string> mLessons;
     int mLessonIndex = -1;
     bool mQuit = false;

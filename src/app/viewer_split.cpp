@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "app/animation.h"
 #include "app/magnifier.h"
 #include "kernel/methods.h"
 
@@ -20,7 +21,7 @@ CompareSpec viewerCompareSpec(const Session& session) {
         if (!own.empty()) return own;
     }
     int method = session.settings().method;
-    int other = method == PCF_NEAREST ? PCF_GATHER : PCF_NEAREST;
+    int other = defaultCompareMethod(method);
     CompareSpec spec;
     addCompareKey(spec, "method",
                   {std::string(methodInfo(method).name), std::string(methodInfo(other).name)});
@@ -109,12 +110,19 @@ void ViewerSplit::composeInto(Session& session, unsigned fbo, glm::ivec2 size) {
 }
 
 std::vector<uint8_t> ViewerSplit::readFrame(Session& session) {
+    // A written frame, as `export` writes it: no hint of the window's keys.
+    bool interactive = session.interactive();
+    session.setInteractive(false);
+    std::vector<uint8_t> rgba;
     if (CompareView* split = readySplit(session, session.frameSize())) {
         split->compose();
-        return split->readFrame();
+        rgba = split->readFrame();
+    } else {
+        session.compose();
+        rgba = session.readFrame();
     }
-    session.compose();
-    return session.readFrame();
+    session.setInteractive(interactive);
+    return rgba;
 }
 
 }  // namespace pcf

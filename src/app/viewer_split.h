@@ -25,7 +25,8 @@ class ViewerSplit {
     bool magnified() const { return mMagnified; }
     // The frame into `fbo` (0: the window) at `size`: the split view when on, else the session's.
     void composeInto(Session& session, unsigned fbo, glm::ivec2 size);
-    // The frame composed offscreen and read back (screenshots), RGBA8 rows top-down.
+    // The frame composed offscreen and read back (screenshots), RGBA8 rows top-down: as it is
+    // written, without the window's key hints (Session::interactive).
     std::vector<uint8_t> readFrame(Session& session);
 
   private:

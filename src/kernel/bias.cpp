@@ -48,7 +48,7 @@ std::optional<std::string> validateBias(int mode, int method) {
                " gets its comparisons from the texture unit (hardware taps); use nearest, "
                "box2x2, bilinear2x2, pcf-naive, pcf-gather or poisson";
     }
-    if (mode == PCF_BIAS_INTERPOLATED && method != PCF_NEAREST) {
+    if (mode == PCF_BIAS_INTERPOLATED && !methodInfo(method).hard) {
         return "bias interpolated compares one bilinearly interpolated depth, a hard edge; " +
                name +
                " lerps comparison bits by the same sub-texel fraction, so the two cannot "

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "kernel/pcf.h"
+#include "kernel/shadow_map.h"
 
 namespace pcf {
 
@@ -21,24 +22,57 @@ enum class Method { Nearest, Box2x2, Bilinear2x2, Hw2x2, Naive, Gather, Hw, Tent
 // unit's comparison), and whether --precision applies (gathers and hardware taps).
 enum class MethodReads { Texels, Gathers, HwTaps };
 
-// Everything pcfscope says about a method, in its one table entry (methods.cpp).
+// How far a method's footprint reaches from the lookup, by its shape (reachTexels says it in
+// texels for a kernel size and radius).
+enum class MethodReach {
+    OneTexel,    // the texel the lookup falls in
+    Block2x2,    // the 2x2 texels around the lookup
+    Kernel,      // N x N lookups one texel apart: (N + 1) / 2 texels
+    Disk,        // the Poisson disk of radius R texels
+    BlockerDisk  // a disk whose radius follows the blocker found, at most PCF_PCSS_MAX_RADIUS
+};
+
+// Which pass makes the map a method reads, and so the map's texel kind (mapTexelKind): the
+// light's depth pass (a depth in --depth-format). Switches over MapPass have no `default:`.
+enum class MapPass { Depth };
+
+// Everything pcfscope says about a method, in its one table entry (methods.cpp). Every question
+// about a method asked outside kernel/methods is a column here, never a comparison of ids.
 struct MethodInfo {
-    int id;                      // PCF_NEAREST .. PCF_PCSS, the kernel's id
-    std::string_view name;       // the command line's id, e.g. "pcf-gather"
-    std::string_view shortName;  // the charts' label, e.g. "gather"
-    std::string_view summary;    // one line for `pcfscope methods`
-    bool usesKernel;             // takes --kernel N
-    bool usesRadius;             // takes --radius R
-    bool takesWeights;           // takes --weights (binomial, gaussian)
-    MethodReads reads;
+    int id = 0;                               // PCF_NEAREST .. PCF_PCSS, the kernel's id
+    std::string_view name{};                  // the command line's id, e.g. "pcf-gather"
+    std::string_view shortName{};             // the charts' label, e.g. "gather"
+    std::string_view summary{};               // one line for `pcfscope methods`
+    bool usesKernel = false;                  // takes --kernel N
+    bool usesRadius = false;                  // takes --radius R
+    bool takesWeights = false;                // takes --weights (binomial, gaussian)
+    MethodReads reads = MethodReads::Texels;  // HwTaps: uses the hardware comparison taps
     // The kernel sizes it takes when not every one of MIN_KERNEL..MAX_KERNEL (tent); empty: all.
-    std::span<const int> kernelSizes;
-    vec4 chartColour;  // its dots and swatches in the charts (RGBA, 0..1)
+    std::span<const int> kernelSizes{};
+    vec4 chartColour{0.0f};  // its dots and swatches in the charts (RGBA, 0..1)
     // Its hand-written textbook pass, no shared kernel (render/gpu_lookup.h drawReference): the
     // file under shaders/, and whether the pass takes the kernel size as its N (else N = 1:
     // bilinear2x2 is pcf-naive's lookup once, hw2x2 pcf-hw's tap once).
-    std::string_view referencePass;
-    bool referenceTakesKernel;
+    std::string_view referencePass{};
+    bool referenceTakesKernel = false;
+    // One texel, one comparison: a visibility of 0 or 1 only (a hard edge). The only methods
+    // interpolated-depth bias combines with; the inspector shows their edge in the scene, and
+    // a split view sets pcf-gather beside them (the others beside nearest).
+    bool hard = false;
+    // Compares the texel each of its points falls in (floor(uv * size)): no 2x2 footprint and
+    // no sub-texel fraction to show.
+    bool nearestTexels = false;
+    // Its points lie on the 16-point Poisson disk (PCF_POISSON_DISK), drawn as rings.
+    bool hasDisk = false;
+    // Searches the map for blockers first and sizes its filter by them (pcss): its first
+    // PCF_PCSS_TAPS taps are the search's; it takes the light's size in the map (penumbraScale)
+    // and, in a perspective map, the map's depth range (PcfMapLayer::depthRange).
+    bool searchesBlockers = false;
+    // N x N lookups one texel apart, each compared with its own ref: one texel is read by up to
+    // four of them (the trace lists each read; the inspector marks each lookup).
+    bool overlappingLookups = false;
+    MethodReach reach = MethodReach::OneTexel;
+    MapPass mapPass = MapPass::Depth;
 
     Method method() const { return static_cast<Method>(id); }
 };
@@ -58,6 +92,14 @@ std::string methodNameList();
 // points lie outside radius 1), so the disk its points fill is this much wider than the scale.
 // The inspector's rings and the lessons' {disk_reach} both read it.
 float poissonSetReach();
+
+// How far from the lookup the method reads, in texels, at kernel size `kernel` and disk radius
+// `radius` (texels): the footprint's half-width, from the lookup point to the outer edge of the
+// farthest texel it reads.
+float reachTexels(int method, int kernel, float radius);
+
+// The texel kind of the map `method` reads, made with settings' formats (--depth-format).
+TexelKind mapTexelKind(int method, TexelKind depthFormat);
 
 // What the GPU issues for one lookup: texel reads (every texel any instruction touches, so a
 // hardware tap or a gather counts 4), gathers and hardware taps.

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "kernel/shading.h"
 #include "kernel/sigma_limits.h"
 
 namespace pcf {
@@ -42,9 +43,9 @@ const ParamInfo PARAMS[] = {
         [] { return std::string("exact, hw8"); }, "precision"}, ParamGroup::Filter,
      "", "", 0, 0, false,
      "texel position inside hardware taps and gathers: exact, hw8 (1/256 texel)", true},
-    {"depth_format", NamedField<DepthFormat>{&ShadowSettings::depthFormat, depthFormatName,
-        depthFormatFromName, [] { return std::string(DEPTH_FORMAT_NAMES); }, "depth format"},
-     ParamGroup::Map, "", "", 0, 0, false, "shadow map depth format: 16, 24, 32f", true},
+    {"depth_format", NamedField<TexelKind>{&ShadowSettings::depthFormat, depthFormatName,
+        depthFormatFromName, depthFormatNames, "depth format"},
+     ParamGroup::Map, "", "", 0, 0, false, "shadow map depth format", true},
     {"map_size", &ShadowSettings::mapSize, ParamGroup::Map, "", TEXELS, MIN_MAP_SIZE,
      MAX_MAP_SIZE, false, "shadow map size in texels (4..4096)", true},
     {"bias", NamedField<BiasMode>{&ShadowSettings::bias, biasModeName, biasModeFromName,
@@ -71,6 +72,11 @@ const ParamInfo PARAMS[] = {
     {"cull", NamedField<CullMode>{&ShadowSettings::cull, cullModeName, cullModeFromName,
         [] { return std::string(CULL_MODE_NAMES); }, "cull mode"}, ParamGroup::Map, "", "", 0, 0,
      false, "faces culled in the shadow pass: back, front, none", false},
+    {"shading", NamedField<Shading>{&ShadowSettings::shading, shadingName, shadingFromName,
+        [] { return std::string(SHADING_NAMES); }, "shading"}, ParamGroup::View, "uShading", "",
+     0, 0, false,
+     "what the receivers show: lit (ambient + N.L x visibility) or visibility (alone, 0 black "
+     "to 1 white, no N.L)", true},
 };
 // clang-format on
 
@@ -136,35 +142,31 @@ std::optional<ParamProblem> checkBiasSettings(const ShadowSettings& s) {
     return std::nullopt;
 }
 
-std::string_view depthFormatName(DepthFormat format) {
-    switch (format) {
-        case DepthFormat::D16:
-            return "16";
-        case DepthFormat::D24:
-            return "24";
-        case DepthFormat::D32F:
-            return "32f";
-    }
-    return "?";
+std::string_view depthFormatName(TexelKind format) { return texelKindName(format); }
+
+std::optional<TexelKind> depthFormatFromName(std::string_view name) {
+    std::optional<TexelKind> kind = texelKindFromName(name);
+    if (!kind || !texelKindInfo(*kind).depth) return std::nullopt;
+    return kind;
 }
 
-std::optional<DepthFormat> depthFormatFromName(std::string_view name) {
-    if (name == "16") return DepthFormat::D16;
-    if (name == "24") return DepthFormat::D24;
-    if (name == "32f" || name == "32F" || name == "32") return DepthFormat::D32F;
-    return std::nullopt;
+std::string depthFormatNames() {
+    std::string out;
+    for (TexelKind k : allTexelKinds()) {
+        if (!texelKindInfo(k).depth) continue;
+        out += (out.empty() ? "" : ", ") + std::string(texelKindName(k));
+    }
+    return out;
 }
 
-int depthFormatFixedPointBits(DepthFormat format) {
-    switch (format) {
-        case DepthFormat::D16:
-            return 16;
-        case DepthFormat::D24:
-            return 24;
-        case DepthFormat::D32F:
-            return 0;
+TexelKind nextDepthFormat(TexelKind format) {
+    std::span<const TexelKind> kinds = allTexelKinds();
+    auto at = std::find(kinds.begin(), kinds.end(), format);
+    for (size_t k = 1; k <= kinds.size(); ++k) {
+        TexelKind next = kinds[(static_cast<size_t>(at - kinds.begin()) + k) % kinds.size()];
+        if (texelKindInfo(next).depth) return next;
     }
-    return 0;
+    return format;
 }
 
 std::string_view biasModeName(BiasMode mode) { return biasName(static_cast<int>(mode)); }
@@ -185,6 +187,26 @@ std::string_view cullModeName(CullMode mode) {
             return "none";
     }
     return "?";
+}
+
+// The shader tests the setting's uniform against the shared header's ids.
+static_assert(static_cast<int>(Shading::Lit) == PCF_SHADING_LIT &&
+              static_cast<int>(Shading::Visibility) == PCF_SHADING_VISIBILITY);
+
+std::string_view shadingName(Shading shading) {
+    switch (shading) {
+        case Shading::Lit:
+            return "lit";
+        case Shading::Visibility:
+            return "visibility";
+    }
+    return "?";
+}
+
+std::optional<Shading> shadingFromName(std::string_view name) {
+    if (name == "lit") return Shading::Lit;
+    if (name == "visibility") return Shading::Visibility;
+    return std::nullopt;
 }
 
 std::optional<CullMode> cullModeFromName(std::string_view name) {

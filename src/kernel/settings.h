@@ -18,8 +18,12 @@
 
 namespace pcf {
 
-enum class DepthFormat { D16, D24, D32F };
 enum class CullMode { Back, Front, None };
+// What the camera pass draws on the receivers: `lit`, the picture (ambient plus the light times
+// N.L times the visibility), or `visibility`, the filter's visibility alone as a grey level (0
+// black, 1 white), with no N.L: under a low sun N.L is near 0 and the lit picture squeezes acne
+// into a few grey levels, while the visibility alone shows it black on white.
+enum class Shading { Lit, Visibility };
 
 // The shadow map is N x N texels, N in this range.
 constexpr int MIN_MAP_SIZE = 4;
@@ -30,10 +34,12 @@ constexpr float MAX_LIGHT_SIZE_DEG = 10.0f;
 // The largest frame side (window, export, chart) in pixels.
 constexpr int MAX_FRAME_SIDE = 8192;
 
-std::string_view depthFormatName(DepthFormat format);                   // "16", "24", "32f"
-std::optional<DepthFormat> depthFormatFromName(std::string_view name);  // also "32", "32F"
-int depthFormatFixedPointBits(DepthFormat format);                      // 16, 24, or 0 for 32F
-constexpr std::string_view DEPTH_FORMAT_NAMES = "16, 24, 32f";
+// --depth-format: the texel kinds of a depth map (kernel/shadow_map.h) by name.
+std::string_view depthFormatName(TexelKind format);                   // "16", "24", "32f"
+std::optional<TexelKind> depthFormatFromName(std::string_view name);  // also "32", "32F"
+std::string depthFormatNames();                                       // "16, 24, 32f"
+// The depth format after `format` (after the last, the first): the viewer's D key.
+TexelKind nextDepthFormat(TexelKind format);
 
 // "none", "constant", "slope", ...: the names of kernel/bias.h, the one table of them.
 std::string_view biasModeName(BiasMode mode);
@@ -42,6 +48,10 @@ std::optional<BiasMode> biasModeFromName(std::string_view name);
 std::string_view cullModeName(CullMode mode);  // "back", "front", "none"
 std::optional<CullMode> cullModeFromName(std::string_view name);
 constexpr std::string_view CULL_MODE_NAMES = "back, front, none";
+
+std::string_view shadingName(Shading shading);  // "lit", "visibility"
+std::optional<Shading> shadingFromName(std::string_view name);
+constexpr std::string_view SHADING_NAMES = "lit, visibility";
 
 // The settings one frame, one trace or one lesson step is made with: the filter, the bias and
 // the shadow map. Declared once here, the bias's in BiasSettings (kernel/bias.h), which the
@@ -59,9 +69,10 @@ struct ShadowSettings : BiasSettings {
     int weights = PCF_WEIGHTS_BOX;        // pcf-naive, pcf-gather: PCF_WEIGHTS_*
     float sigma = 1.0f;                   // gaussian weights, texels
     int precision = PCF_PRECISION_EXACT;  // hardware taps and gathers: PCF_PRECISION_*
-    DepthFormat depthFormat = DepthFormat::D32F;
+    TexelKind depthFormat = TexelKind::D32F;
     int mapSize = 1024;              // the shadow map is mapSize x mapSize texels
     CullMode cull = CullMode::Back;  // faces culled in the shadow pass
+    Shading shading = Shading::Lit;  // what the camera pass draws (the picture, not the lookup)
 
     // The kernel's parameters; `rotation` is the Poisson disk's (cos, sin), when rotate says so
     // the caller's per-pixel one.
@@ -86,10 +97,11 @@ struct NamedField {
 // A parameter's field, by how it is written: a number, a flag (true/false) or a name.
 using ParamField = std::variant<int ShadowSettings::*, float ShadowSettings::*,
                                 bool ShadowSettings::*, NamedField<int>, NamedField<BiasMode>,
-                                NamedField<CullMode>, NamedField<DepthFormat>>;
+                                NamedField<CullMode>, NamedField<TexelKind>, NamedField<Shading>>;
 
-// Which of the command line's option groups a parameter is in (render_options.h).
-enum class ParamGroup { Filter, Bias, Map };
+// Which of the command line's option groups a parameter is in (render_options.h). View: what the
+// frame draws of the lookups, which changes no lookup (commands that measure do not take it).
+enum class ParamGroup { Filter, Bias, Map, View };
 
 // The member of the kernel's structs (shaders/shared/pcf_kernel.h) that a parameter's uniform
 // fills, the same member in C++ and GLSL: PcfParams's or PcfBias's. None (monostate) for a

@@ -81,7 +81,7 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
                   const BiasSettings& bias, vec2 dzduv) {
     Trace tr;
     tr.params = prm;
-    tr.mapSize = map.size();
+    tr.map = map.spec();
     tr.uv = uv;
     tr.z = z;
     tr.ref = ref;
@@ -92,10 +92,9 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
     tr.visibility = filterRecorded(map, uv, ref, prm, bias.kernelBias(dzduv), rec);
     tr.taps = std::move(rec.taps);
     tr.fetches = std::move(rec.fetches);
-    if (prm.method == PCF_PCSS) weighPcssSearch(tr);
+    if (methodInfo(prm.method).searchesBlockers) weighPcssSearch(tr);
     tr.weights = mergeWeights(tr.taps);
     tr.counts = countFetches(tr);
-    tr.fixedPoint = map.isFixedPoint();
     tr.usesTextureUnit = tr.counts.gathers > 0 || tr.counts.hwTaps > 0;
     tr.fracHw8 = glm::fract(pcfQuantiseTexelPos(tr.pos.p));
     PcfParams exact = prm;

@@ -59,7 +59,10 @@ struct TraceStep {
 
 struct Trace {
     PcfParams params{};
-    ivec2 mapSize{0, 0};
+    // The map looked up, as a value (kernel/shadow_map.h): its size, texel kind and layers with
+    // their fits; and the layer this lookup read.
+    MapSpec map;
+    int layer = 0;
     vec2 uv{0.0f};
     float z = 0.0f;    // receiver depth in the light's [0,1] depth, before bias
     float ref = 0.0f;  // the depth compared with the map, after bias
@@ -87,7 +90,6 @@ struct Trace {
     vec2 fracHw8{0.0f};
     float visibilityExact = 1.0f;
     float visibilityHw8 = 1.0f;
-    bool fixedPoint = false;  // the map is 16/24-bit: D_ref clamped to [0,1]
 };
 
 // Runs the kernel at (uv, ref) with recording on (trace_explain.h: explainTrace puts it in words).

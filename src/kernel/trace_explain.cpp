@@ -245,7 +245,7 @@ std::string biasSentence(const Trace& tr) {
 void stepProject(const Trace& tr, Steps& out) {
     std::ostringstream s;
     s << "The receiver point under this pixel projects to uv = " << pair(tr.uv) << " in the "
-      << tr.mapSize.x << " x " << tr.mapSize.y << " shadow map, at light depth z = " << num(tr.z)
+      << tr.map.size.x << " x " << tr.map.size.y << " shadow map, at light depth z = " << num(tr.z)
       << ". " << biasSentence(tr);
     addStep(out, K::Project, s.str());
 }
@@ -273,7 +273,7 @@ void stepPerTapRef(const Trace& tr, Steps& out) {
     std::map<std::pair<int, int>, bool> shown;
     for (const TapRecord& t : tr.taps) {
         auto key = std::make_pair(t.texel.x, t.texel.y);
-        if (shown.count(key) != 0 && m != PCF_HW && m != PCF_NAIVE) continue;
+        if (shown.count(key) != 0 && !methodInfo(m).overlappingLookups) continue;
         shown[key] = true;
         float alone = pcfCompare(t.depth, tr.ref);
         s << "\n  texel " << pair(t.texel) << ": ref " << num(t.ref) << " ("
@@ -314,8 +314,8 @@ void stepTexelPosition(const Trace& tr, Steps& out) {
     std::ostringstream s;
     s << "Texel centres sit at half-integers, so the lookup's texel position is p = uv * size - "
          "0.5 = ("
-      << num(tr.uv.x) << " * " << tr.mapSize.x << " - 0.5, " << num(tr.uv.y) << " * "
-      << tr.mapSize.y << " - 0.5) = " << pair(tr.pos.p)
+      << num(tr.uv.x) << " * " << tr.map.size.x << " - 0.5, " << num(tr.uv.y) << " * "
+      << tr.map.size.y << " - 0.5) = " << pair(tr.pos.p)
       << ". base = floor(p) = " << pair(tr.pos.base)
       << " is the lower corner of the 2x2 texels around the point; frac = p - "
          "base = "
@@ -332,7 +332,7 @@ void stepTapList(const Trace& tr, Steps& out, K kind, const std::string& intro) 
 
 void explainNearest(const Trace& tr, Steps& out) {
     const TapRecord& t = tr.taps.front();
-    PCF_PRECISE vec2 p = tr.uv * vec2(tr.mapSize);
+    PCF_PRECISE vec2 p = tr.uv * vec2(tr.map.size);
     std::ostringstream s;
     s << "No filtering: the point falls in texel floor(uv * size) = floor" << pair(p) << " = "
       << pair(t.texel) << ". One comparison decides: " << tapLine(t) << ".";
@@ -393,22 +393,44 @@ void explainBilinear(const Trace& tr, Steps& out, bool hardware) {
 
 // The merged weights as rows of numbers, right-aligned in columns as wide as the widest number
 // (and the row numbers as wide as the widest), so the table reads as a grid in a fixed-width font.
+// A cell of a weight table: five characters at most, so that an 8-column table (tent 7x7) keeps
+// each row on one line of a projector's inspector: four significant digits and three decimals at
+// most, fixed for the magnitude ("0.196", "4.140", "20.96", "220.2"), and a weight below 0.0005 as
+// its first digit and power of ten ("7e-05"): a weight that counts never reads 0.
+std::string tableNumber(float v) {
+    char buf[32];
+    if (v > 0.0f && v < 0.0005f) {
+        std::snprintf(buf, sizeof buf, "%.0e", static_cast<double>(v));
+        return buf;
+    }
+    int decimals = v < 10.0f ? 3 : v < 100.0f ? 2 : v < 1000.0f ? 1 : 0;
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, static_cast<double>(v));
+    return v == 0.0f ? "0" : buf;
+}
+
+// The merged weights as a table: a header of the texel columns i, then one line per texel row
+// j, each cell right-aligned in its column.
 std::string weightTable(const Trace& tr, float scale) {
     const WeightGrid& g = tr.weights;
     std::vector<std::string> cells;
     size_t width = 0;
+    for (int i = 0; i < g.size.x; ++i) {
+        width = std::max(width, std::to_string(g.origin.x + i).size());
+    }
     for (float v : g.values) {
-        cells.push_back(num(v * scale));
+        cells.push_back(tableNumber(v * scale));
         width = std::max(width, cells.back().size());
     }
-    size_t rowWidth = std::to_string(g.origin.y + g.size.y - 1).size();
+    const std::string corner = "j\\i";
+    size_t rowWidth = std::max(corner.size(), std::to_string(g.origin.y + g.size.y - 1).size());
+    auto pad = [](const std::string& s, size_t w) { return std::string(w - s.size(), ' ') + s; };
     std::ostringstream s;
+    s << "\n  " << pad(corner, rowWidth);
+    for (int i = 0; i < g.size.x; ++i) s << " " << pad(std::to_string(g.origin.x + i), width);
     for (int j = 0; j < g.size.y; ++j) {
-        std::string row = std::to_string(g.origin.y + j);
-        s << "\n  row " << std::string(rowWidth - row.size(), ' ') << row << ":";
+        s << "\n  " << pad(std::to_string(g.origin.y + j), rowWidth);
         for (int i = 0; i < g.size.x; ++i) {
-            const std::string& c = cells[static_cast<size_t>(j) * g.size.x + i];
-            s << " " << std::string(width - c.size(), ' ') << c;
+            s << " " << pad(cells[static_cast<size_t>(j) * g.size.x + i], width);
         }
     }
     return s.str();
@@ -723,7 +745,7 @@ std::vector<TraceStep> explainTrace(const Trace& tr) {
     Steps out;
     stepProject(tr, out);
     stepPerTapRef(tr, out);
-    if (tr.bias.bias == BiasMode::Interpolated && tr.params.method == PCF_NEAREST) {
+    if (tr.bias.bias == BiasMode::Interpolated && methodInfo(tr.params.method).hard) {
         stepTexelPosition(tr, out);
         explainInterpolated(tr, out);
         return out;
@@ -739,12 +761,12 @@ std::vector<TraceStep> explainTrace(const Trace& tr) {
         case Method::Bilinear2x2:
         case Method::Hw2x2:
             stepTexelPosition(tr, out);
-            explainBilinear(tr, out, tr.params.method == PCF_HW2X2);
+            explainBilinear(tr, out, methodInfo(tr.params.method).reads == MethodReads::HwTaps);
             break;
         case Method::Naive:
         case Method::Hw:
             stepTexelPosition(tr, out);
-            explainKernelLoop(tr, out, tr.params.method == PCF_HW);
+            explainKernelLoop(tr, out, methodInfo(tr.params.method).reads == MethodReads::HwTaps);
             break;
         case Method::Gather:
             explainGather(tr, out);

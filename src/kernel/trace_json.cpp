@@ -1,10 +1,12 @@
 // trace_json.cpp: a trace written as JSON and as text (trace_json.h).
 #include "kernel/trace_json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -120,6 +122,31 @@ Json fetchesJson(const Trace& tr) {
     return fetches;
 }
 
+// pcss's blocker search and penumbra estimate, and its search taps in read order (taps[k] for
+// k < search_taps) with which found a blocker: a depth below its ref (Fernando 2005), as the
+// kernel counted them.
+Json pcssJson(const Trace& tr) {
+    Json search = Json::array();
+    size_t n = std::min(tr.taps.size(), static_cast<size_t>(PCF_PCSS_TAPS));
+    for (size_t k = 0; k < n; ++k) {
+        const TapRecord& t = tr.taps[k];
+        search.push_back({{"tap", k},
+                          {"texel", jsonPair(t.texel)},
+                          {"depth", jsonNumber(t.depth)},
+                          {"blocker", t.lit < 0.5f}});
+    }
+    return {{"penumbra_scale", jsonNumber(tr.params.penumbraScale)},
+            {"depth_near", jsonNumber(tr.params.depthNear)},
+            {"depth_far", jsonNumber(tr.params.depthFar)},
+            {"search_taps", PCF_PCSS_TAPS},
+            {"search_radius", jsonNumber(tr.pcss.searchRadius)},
+            {"blockers", tr.pcss.blockers},
+            {"blocker_depth", jsonNumber(tr.pcss.blockerDepth)},
+            {"penumbra", jsonNumber(tr.pcss.penumbra)},
+            {"filter_radius", jsonNumber(tr.pcss.filterRadius)},
+            {"search", search}};
+}
+
 }  // namespace
 
 Json paramsJson(const ShadowSettings& s, ParamSet which) {
@@ -142,6 +169,102 @@ Json paramsJson(const ShadowSettings& s, ParamSet which) {
     return j;
 }
 
+Json mapSpecJson(const MapSpec& map) {
+    Json layers = Json::array();
+    for (const PcfMapLayer& layer : map.layers) {
+        Json matrix = Json::array();
+        for (int c = 0; c < 4; ++c) {
+            for (int r = 0; r < 4; ++r)
+                matrix.push_back(jsonNumber(layer.shadowClipFromWorld[c][r]));
+        }
+        layers.push_back({{"shadow_clip_from_world", matrix},
+                          {"depth_range", jsonPair(layer.depthRange)},
+                          {"texel_ws", jsonNumber(layer.texelWs)}});
+    }
+    return {
+        {"size", jsonPair(map.size)}, {"texels", texelKindName(map.texels)}, {"layers", layers}};
+}
+
+namespace {
+
+// A finite JSON number that a float holds, or nullopt.
+std::optional<float> jsonFiniteFloat(const Json& v) {
+    if (!v.is_number() || !std::isfinite(v.get<double>()) ||
+        std::fabs(v.get<double>()) > static_cast<double>(std::numeric_limits<float>::max())) {
+        return std::nullopt;
+    }
+    return v.get<float>();
+}
+
+// A JSON array of n such numbers, or nullopt.
+std::optional<std::vector<float>> jsonFloats(const Json& j, size_t n) {
+    if (!j.is_array() || j.size() != n) return std::nullopt;
+    std::vector<float> out;
+    for (const Json& v : j) {
+        std::optional<float> f = jsonFiniteFloat(v);
+        if (!f) return std::nullopt;
+        out.push_back(*f);
+    }
+    return out;
+}
+
+std::optional<PcfMapLayer> mapLayerFromJson(const Json& j, std::string& why) {
+    auto matrix = j.is_object() && j.contains("shadow_clip_from_world")
+                      ? jsonFloats(j["shadow_clip_from_world"], 16)
+                      : std::nullopt;
+    auto range =
+        j.is_object() && j.contains("depth_range") ? jsonFloats(j["depth_range"], 2) : std::nullopt;
+    auto texel =
+        j.is_object() && j.contains("texel_ws") ? jsonFiniteFloat(j["texel_ws"]) : std::nullopt;
+    if (!matrix || !range || !texel) {
+        why =
+            "a map layer needs shadow_clip_from_world (16 numbers), depth_range (2) and "
+            "texel_ws";
+        return std::nullopt;
+    }
+    PcfMapLayer layer = MapSpec::unfittedLayer();
+    for (int k = 0; k < 16; ++k) layer.shadowClipFromWorld[k / 4][k % 4] = (*matrix)[k];
+    layer.depthRange = vec2((*range)[0], (*range)[1]);
+    layer.texelWs = *texel;
+    return layer;
+}
+
+}  // namespace
+
+std::optional<MapSpec> mapSpecFromJson(const Json& j, std::string& why) {
+    if (!j.is_object() || !j.contains("size") || !j.contains("texels") || !j.contains("layers")) {
+        why = "\"map\" needs size, texels and layers";
+        return std::nullopt;
+    }
+    MapSpec spec;
+    auto size = jsonFloats(j["size"], 2);
+    if (!size || (*size)[0] != std::floor((*size)[0]) || (*size)[1] != std::floor((*size)[1]) ||
+        (*size)[0] < 1.0f || (*size)[1] < 1.0f || (*size)[0] > 1e6f || (*size)[1] > 1e6f) {
+        why = "\"map\": size is not two whole numbers from 1";
+        return std::nullopt;
+    }
+    spec.size = ivec2(static_cast<int>((*size)[0]), static_cast<int>((*size)[1]));
+    std::optional<TexelKind> kind =
+        j["texels"].is_string() ? texelKindFromName(j["texels"].get<std::string>()) : std::nullopt;
+    if (!kind) {
+        why = "\"map\": texels is not a texel kind";
+        return std::nullopt;
+    }
+    spec.texels = *kind;
+    const Json& layers = j["layers"];
+    if (!layers.is_array() || layers.empty() || layers.size() > MAX_MAP_LAYERS) {
+        why = "\"map\": layers is not a list of 1 to " + std::to_string(MAX_MAP_LAYERS);
+        return std::nullopt;
+    }
+    spec.layers.clear();
+    for (const Json& l : layers) {
+        std::optional<PcfMapLayer> layer = mapLayerFromJson(l, why);
+        if (!layer) return std::nullopt;
+        spec.layers.push_back(*layer);
+    }
+    return spec;
+}
+
 Json traceJson(const Trace& tr) {
     Json bias = biasJson(tr);
     Json taps = tapsJson(tr);
@@ -155,7 +278,7 @@ Json traceJson(const Trace& tr) {
     Json j = {{"method", methodInfo(tr.params.method).name},
               {"kernel", tr.params.kernel},
               {"radius", jsonNumber(tr.params.radius)},
-              {"map_size", jsonPair(tr.mapSize)},
+              {"map_size", jsonPair(tr.map.size)},
               {"uv", jsonPair(tr.uv)},
               {"z", jsonNumber(tr.z)},
               {"ref", jsonNumber(tr.ref)},
@@ -177,7 +300,7 @@ Json traceJson(const Trace& tr) {
               {"weights_kind", weightsName(tr.params.weights)},
               {"sigma", jsonNumber(tr.params.sigma)},
               {"precision", precisionName(tr.params.precision)},
-              {"fixed_point", tr.fixedPoint},
+              {"fixed_point", tr.map.texel().fixedPoint},
               {"texture_unit",
                {{"frac_exact", jsonPair(tr.pos.frac)},
                 {"frac_hw8", jsonPair(tr.fracHw8)},
@@ -185,17 +308,9 @@ Json traceJson(const Trace& tr) {
                 {"visibility_hw8", jsonNumber(tr.visibilityHw8)}}},
               {"steps", steps}};
     // pcss: the blocker search and the penumbra estimate (its first 16 taps are the search's).
-    if (tr.params.method == PCF_PCSS) {
-        j["pcss"] = {{"penumbra_scale", jsonNumber(tr.params.penumbraScale)},
-                     {"depth_near", jsonNumber(tr.params.depthNear)},
-                     {"depth_far", jsonNumber(tr.params.depthFar)},
-                     {"search_taps", PCF_PCSS_TAPS},
-                     {"search_radius", jsonNumber(tr.pcss.searchRadius)},
-                     {"blockers", tr.pcss.blockers},
-                     {"blocker_depth", jsonNumber(tr.pcss.blockerDepth)},
-                     {"penumbra", jsonNumber(tr.pcss.penumbra)},
-                     {"filter_radius", jsonNumber(tr.pcss.filterRadius)}};
-    }
+    if (methodInfo(tr.params.method).searchesBlockers) j["pcss"] = pcssJson(tr);
+    j["map"] = mapSpecJson(tr.map);
+    j["layer"] = tr.layer;
     return j;
 }
 

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,13 @@ enum class ParamSet {
 // table's order, under its key (the lesson files' key); numbers as jsonNumber, flags as
 // true/false, named values by name ("pcf-gather", "receiver-plane").
 Json paramsJson(const ShadowSettings& s, ParamSet which);
+
+// The map as a value (kernel/shadow_map.h MapSpec), as a trace's and render.json's "map":
+//   {"size": [w, h], "texels": "32f", "layers": [{"shadow_clip_from_world": [16 numbers,
+//    column by column], "depth_range": [near, far], "texel_ws": t}, ...]}
+Json mapSpecJson(const MapSpec& map);
+// mapSpecJson read back; nullopt with `why` set (a sentence naming the key) when `j` is not one.
+std::optional<MapSpec> mapSpecFromJson(const Json& j, std::string& why);
 
 // DESIGN.md section 4's object.
 Json traceJson(const Trace& trace);

@@ -20,7 +20,9 @@
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_keys.h"
 #include "lesson/lesson_pick.h"
+#include "lesson/lesson_predict.h"
 #include "lesson/lesson_text.h"
+#include "lesson/lesson_text_lines.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"
 
@@ -64,8 +66,11 @@ struct SettingLines {
 
 class LessonParser {
   public:
-    LessonParser(std::string_view text, std::string source)
-        : mText(text), mSource(std::move(source)) {
+    // problems: when given, every problem is recorded there and the reading goes on past it
+    // (`lesson check` reports them all); else the first is thrown.
+    LessonParser(std::string_view text, std::string source,
+                 std::vector<InputError>* problems = nullptr)
+        : mText(text), mSource(std::move(source)), mProblems(problems) {
         size_t start = 0;
         while (start <= mText.size()) {
             size_t end = mText.find('\n', start);
@@ -87,20 +92,24 @@ class LessonParser {
         Lesson lesson;
         lesson.name = std::filesystem::path(mSource).stem().string();
         lesson.sourcePath = mSource;
-        lesson.title = requireText(root, "title", "lesson", root);
-        checkLength(*root.get("title"), "lesson title", lesson.title, MAX_TITLE_CHARS);
-        lesson.scene = readScene(root);
+        attempt([&] {
+            lesson.title = requireText(root, "title", "lesson", root);
+            checkLength(*root.get("title"), "lesson title", lesson.title, MAX_TITLE_CHARS);
+        });
+        lesson.scene = readScene(root);  // no scene: nothing more can be checked
         mScene = &lesson.scene;
 
         LessonSettings state;
         SettingLines lines;
         if (const toml::node* node = root.get("settings")) {
-            const toml::table* settings = node->as_table();
-            if (!settings) {
-                fail(*node, "settings must be a table ([settings]), got " + typeName(*node));
+            if (const toml::table* settings = node->as_table()) {
+                checkKeys(*settings, "settings", {});
+                applySettings(*settings, "settings", state, lines);
+            } else {
+                attempt([&] {
+                    fail(*node, "settings must be a table ([settings]), got " + typeName(*node));
+                });
             }
-            checkKeys(*settings, "settings", {});
-            applySettings(*settings, "settings", state, lines);
         }
 
         const toml::array& steps = stepTables(root);
@@ -109,17 +118,36 @@ class LessonParser {
             std::string what = "step " + std::to_string(i + 1);
             checkKeys(table, what,
                       {"title", "text", "chart", "chart_highlight", "highlight", "claims", "keys",
-                       "focus", "animate", "compare"});
+                       "focus", "animate", "compare", "predict"});
             applySettings(table, what, state, lines);
             lesson.steps.push_back(readStep(table, what, state, lines));
             // The step's own focus, else the lesson's (checked by the app: overlay/inspector.h).
             const toml::table& owner = table.get("focus") ? table : root;
             if (const toml::node* f = owner.get("focus")) {
-                lesson.steps.back().focus = requireText(owner, "focus", what, owner);
-                lesson.steps.back().focusLine = lineOf(*f);
+                attempt([&] {
+                    lesson.steps.back().focus = requireText(owner, "focus", what, owner);
+                    lesson.steps.back().focusLine = lineOf(*f);
+                });
             }
         }
         return lesson;
+    }
+
+    // Runs one check: without a problem list its problem is thrown; with one, recorded, and the
+    // reading goes on. Returns whether it passed.
+    template <class F>
+    bool attempt(F&& check) const {
+        if (!mProblems) {
+            check();
+            return true;
+        }
+        try {
+            check();
+            return true;
+        } catch (const InputError& e) {
+            mProblems->push_back(e);
+            return false;
+        }
     }
 
     // The [[step]] tables: at least one, at most MAX_LESSON_STEPS, each a table.
@@ -147,23 +175,81 @@ class LessonParser {
                         const LessonSettings& state, const SettingLines& lines) const {
         LessonStep step;
         step.line = lineOf(table);
-        step.title = requireText(table, "title", what, table);
-        step.text = requireText(table, "text", what, table);
-        checkLength(*table.get("title"), what + " title", step.title, MAX_TITLE_CHARS);
-        checkLength(*table.get("text"), what + " text", step.text, MAX_STEP_TEXT_CHARS);
+        attempt([&] {
+            step.title = requireText(table, "title", what, table);
+            checkLength(*table.get("title"), what + " title", step.title, MAX_TITLE_CHARS);
+        });
+        bool text = attempt([&] {
+            step.text = requireText(table, "text", what, table);
+            checkLength(*table.get("text"), what + " text", step.text, MAX_STEP_TEXT_CHARS);
+        });
         readChartKeys(table, what, step);
         readClaims(table, what, step);
-        readAnimation(table, what, step);
+        attempt([&] { readAnimation(table, what, step); });
         step.settings = state;
-        checkState(table, what, state, lines);
-        readCompare(table, what, step);  // before the text, whose part[K] it counts
-        checkText(*table.get("text"), what, step);
+        attempt([&] { checkState(table, what, state, lines); });
+        attempt([&] { readCompare(table, what, step); });  // before the text: its part[K]
+        if (text) {
+            const toml::node& node = *table.get("text");
+            step.textLine = lineOf(node);
+            step.textLineStarts = valueLineStarts(
+                mLines, lineOf(node), static_cast<int>(node.source().begin.column), step.text);
+            checkText(what, step);
+        }
+        attempt([&] { readPredict(table, what, step); });
         return step;
+    }
+
+    // predict = { ask = "...", choices = [...], answer = "{...}", tolerance = T } (StepPredict):
+    // its texts' placeholders checked as the step's text's are (lesson_predict.h).
+    void readPredict(const toml::table& table, const std::string& what, LessonStep& step) const {
+        const toml::node* node = table.get("predict");
+        if (!node) return;
+        const toml::table* p = node->as_table();
+        std::string where = what + " predict";
+        if (!p) fail(*node, where + " must be a table ({ ask = \"...\", answer = \"{...}\" })");
+        for (auto&& [key, value] : *p) {
+            std::string_view k = key.str();
+            if (k == "ask" || k == "choices" || k == "answer" || k == "tolerance") continue;
+            fail(value, where + " has unknown key '" + std::string(k) +
+                            "' (known: ask, choices, answer, tolerance)");
+        }
+        StepPredict predict;
+        predict.line = lineOf(*node);
+        predict.ask = requireText(*p, "ask", where, *p);
+        predict.answer = requireText(*p, "answer", where, *p);
+        if (const toml::node* c = p->get("choices")) {
+            const toml::array* array = c->as_array();
+            if (!array) fail(*c, where + " choices must be an array of strings");
+            for (const toml::node& e : *array) {
+                const auto* v = e.as_string();
+                if (!v) fail(e, where + " choices must be strings, got " + typeName(e));
+                predict.choices.push_back(v->get());
+            }
+        }
+        if (const toml::node* t = p->get("tolerance")) {
+            predict.tolerance = number(*t, where + " tolerance");
+        }
+        ShadowMap probe(16, 16, 1.0f);
+        Trace trace = traceLookup(
+            probe, vec2(0.5f), 0.5f, 0.5f,
+            makeParams(step.settings.method, step.settings.kernel, step.settings.radius));
+        if (auto problem = predictProblem(
+                predict, p->get("tolerance") != nullptr, static_cast<int>(trace.taps.size()),
+                static_cast<int>(trace.fetches.size()), step.compare.parts())) {
+            fail(*node, where + ": " + *problem);
+        }
+        step.predict = std::move(predict);
     }
 
     // chart, chart_highlight and highlight: what the step shows besides (or instead of) the
     // scene.
     void readChartKeys(const toml::table& table, const std::string& what, LessonStep& step) const {
+        attempt([&] { readChart(table, what, step); });
+        attempt([&] { readHighlights(table, what, step); });
+    }
+
+    void readChart(const toml::table& table, const std::string& what, LessonStep& step) const {
         if (table.get("chart")) {
             std::string chart = requireText(table, "chart", what, table);
             // "figures/stability.csv#shimmer": which of a stability.csv's charts to show.
@@ -179,6 +265,9 @@ class LessonParser {
             step.chart = p.string() + view;
             step.chartLine = lineOf(*table.get("chart"));
         }
+    }
+
+    void readHighlights(const toml::table& table, const std::string& what, LessonStep& step) const {
         if (const toml::node* h = table.get("chart_highlight")) {
             // That the chart is a bench chart (not a stability chart, "PATH#NAME") is checked
             // with the file (analysis/step_chart.h: checkStepChartHighlight).
@@ -217,24 +306,31 @@ class LessonParser {
             }
             return out;
         };
-        for (const auto& [text, node] : strings("claims")) {
-            StepClaim claim{text, lineOf(*node), nullptr};
-            try {
-                claim.parsed = parseClaim(text);
-            } catch (const std::invalid_argument& e) {
-                fail(*node, what + " claim \"" + text + "\": " + e.what());
-            }
-            step.claims.push_back(std::move(claim));
+        std::vector<std::pair<std::string, const toml::node*>> claims, keys;
+        attempt([&] { claims = strings("claims"); });
+        attempt([&] { keys = strings("keys"); });
+        for (const auto& [text, node] : claims) {
+            attempt([&] {
+                StepClaim claim{text, lineOf(*node), nullptr};
+                try {
+                    claim.parsed = parseClaim(text);
+                } catch (const std::invalid_argument& e) {
+                    fail(*node, what + " claim \"" + text + "\": " + e.what());
+                }
+                step.claims.push_back(std::move(claim));
+            });
         }
-        for (const auto& [key, node] : strings("keys")) {
-            const std::vector<std::string>& known = settingKeyNames();
-            if (std::find(known.begin(), known.end(), key) == known.end()) {
-                std::string names;
-                for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;
-                fail(*node, what + " keys: unknown key '" + key + "' (known: " + names + ")");
-            }
-            step.keys.push_back(key);
-            step.keysLine = lineOf(*node);
+        for (const auto& [key, node] : keys) {
+            attempt([&] {
+                const std::vector<std::string>& known = settingKeyNames();
+                if (std::find(known.begin(), known.end(), key) == known.end()) {
+                    std::string names;
+                    for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;
+                    fail(*node, what + " keys: unknown key '" + key + "' (known: " + names + ")");
+                }
+                step.keys.push_back(key);
+                step.keysLine = lineOf(*node);
+            });
         }
     }
 
@@ -354,8 +450,10 @@ class LessonParser {
             if (k == "setting") problem += " (did you mean [settings]?)";
             if (k == "objects") problem += " (objects are [[object]] tables)";
             if (isSettingKey(k)) problem += " (put it in [settings] or in a [[step]])";
-            throw InputError(mSource, std::max(1, static_cast<int>(key.source().begin.line)),
-                             problem);
+            attempt([&] {
+                throw InputError(mSource, std::max(1, static_cast<int>(key.source().begin.line)),
+                                 problem);
+            });
         }
     }
 
@@ -378,8 +476,10 @@ class LessonParser {
                 problem += " (did you mean 'depth_format'?)";
             }
             if (k == "body") problem += " (did you mean 'text'?)";
-            throw InputError(mSource, std::max(1, static_cast<int>(key.source().begin.line)),
-                             problem);
+            attempt([&] {
+                throw InputError(mSource, std::max(1, static_cast<int>(key.source().begin.line)),
+                                 problem);
+            });
         }
     }
 
@@ -467,15 +567,17 @@ class LessonParser {
         for (const ParamInfo& p : allParams()) {
             const toml::node* n = table.get(p.key);
             if (!n) continue;
-            std::visit([&](const auto& field) { readParam(*n, what, p, field, s); }, p.field);
+            attempt([&] {
+                std::visit([&](const auto& field) { readParam(*n, what, p, field, s); }, p.field);
+            });
             if (p.key == "method") lines.method = lineOf(*n);
             // A weighting the method cannot take is blamed on the later of the two.
             if (p.key == "weights") lines.method = std::max(lines.method, lineOf(*n));
             if (p.key == "kernel") lines.kernel = lineOf(*n);
             if (p.key == "bias") lines.bias = lineOf(*n);
         }
-        applyMapKeys(table, what, s);
-        applyViewKeys(table, what, s);
+        attempt([&] { applyMapKeys(table, what, s); });
+        attempt([&] { applyViewKeys(table, what, s); });
     }
 
     // One parameter of the table, by its type: an integer in its range.
@@ -612,62 +714,35 @@ class LessonParser {
     }
 
     // Placeholders are checked now, not when shown: a typo must fail the lesson, not a class.
-    void checkText(const toml::node& textNode, const std::string& what,
-                   const LessonStep& step) const {
+    void checkText(const std::string& what, const LessonStep& step) const {
         // The reads and fetch instructions this step's method issues, from the kernel itself.
         ShadowMap probe(16, 16, 1.0f);
         Trace trace = traceLookup(
             probe, vec2(0.5f), 0.5f, 0.5f,
             makeParams(step.settings.method, step.settings.kernel, step.settings.radius));
-        std::optional<PlaceholderProblem> problem =
-            checkPlaceholders(step.text, static_cast<int>(trace.taps.size()),
-                              static_cast<int>(trace.fetches.size()), step.compare.parts());
-        if (!problem) return;
-        throw InputError(mSource, textLine(textNode, step.text, problem->offset),
-                         what + " text: " + problem->problem);
-    }
-
-    // The line of the file holding offset `offset` of a string value. Counting the value's
-    // newlines is right for the usual """ block; when escapes or line-ending backslashes make it
-    // wrong, the line is found by searching the value's lines for the placeholder itself.
-    int textLine(const toml::node& node, const std::string& value, size_t offset) const {
-        int first = lineOf(node);
-        int last = std::max(first, static_cast<int>(node.source().end.line));
-        int counted = first;
-        if (first - 1 < static_cast<int>(mLines.size())) {
-            std::string_view opening = mLines[static_cast<size_t>(first - 1)];
-            size_t q = opening.find("\"\"\"");
-            if (q == std::string_view::npos) q = opening.find("'''");
-            // A newline right after the opening delimiter is not part of the value.
-            if (q != std::string_view::npos &&
-                opening.find_first_not_of(" \t\r", q + 3) == std::string_view::npos) {
-                ++counted;
-            }
+        for (const PlaceholderProblem& problem :
+             placeholderProblems(step.text, static_cast<int>(trace.taps.size()),
+                                 static_cast<int>(trace.fetches.size()), step.compare.parts())) {
+            attempt([&] {
+                throw InputError(mSource, stepTextLine(step, problem.offset),
+                                 what + " text: " + problem.problem);
+            });
         }
-        counted += static_cast<int>(std::count(value.begin(), value.begin() + offset, '\n'));
-        size_t close = value.find('}', offset);
-        std::string token =
-            value.substr(offset, close == std::string::npos || value.find('\n', offset) < close
-                                     ? 1
-                                     : close - offset + 1);
-        auto lineHas = [&](int line) {
-            return line >= 1 && line <= static_cast<int>(mLines.size()) &&
-                   mLines[static_cast<size_t>(line - 1)].find(token) != std::string_view::npos;
-        };
-        if (lineHas(counted)) return counted;
-        for (int line = first; line <= last; ++line) {
-            if (lineHas(line)) return line;
-        }
-        return std::clamp(counted, first, last);
     }
 
     std::string_view mText;
     std::string mSource;
+    std::vector<InputError>* mProblems = nullptr;
     const Scene* mScene = nullptr;  // the lesson's, once read: points are checked against it
     std::vector<std::string_view> mLines;
 };
 
 }  // namespace
+
+int stepTextLine(const LessonStep& step, size_t offset) {
+    auto after = std::upper_bound(step.textLineStarts.begin(), step.textLineStarts.end(), offset);
+    return step.textLine + static_cast<int>(after - step.textLineStarts.begin());
+}
 
 PcfParams LessonSettings::pcfParams(glm::vec2 uv, int mapSizeTexels, float penumbraScale) const {
     vec2 rotation(1.0f, 0.0f);
@@ -681,6 +756,22 @@ Lesson parseLessonFile(const std::string& path) {
 
 Lesson parseLessonString(std::string_view text, const std::string& sourceName) {
     return LessonParser(text, sourceName).parse();
+}
+
+Lesson parseLessonString(std::string_view text, const std::string& sourceName,
+                         std::vector<InputError>& problems) {
+    std::vector<InputError> found;
+    Lesson lesson;
+    try {
+        lesson = LessonParser(text, sourceName, &found).parse();
+    } catch (const InputError& e) {
+        found.push_back(e);  // one that ends the reading (TOML syntax, no scene, no steps)
+    }
+    // In file order (a step's claims are read before its text).
+    std::stable_sort(found.begin(), found.end(),
+                     [](const InputError& a, const InputError& b) { return a.line() < b.line(); });
+    problems.insert(problems.end(), found.begin(), found.end());
+    return lesson;
 }
 
 }  // namespace pcf

@@ -60,6 +60,10 @@
 //                                     or 3 parts, each this step with those parameter-table
 //                                     keys set (compare_spec.h); several keys take one value
 //                                     per part each. Not inherited
+//   predict = { ask = "...", answer = "{visibility}", tolerance = 0.05 }
+//                                     the step asks first and reveals the answer on a key
+//                                     (StepPredict); choices = [...] instead of a tolerance for
+//                                     a multiple choice. Not inherited
 //   method = "hw2x2"                  any [settings] key: it changes the state from this step
 //                                     on; the steps after it inherit it
 //
@@ -148,10 +152,33 @@ struct StepAnimation {
 };
 constexpr int MAX_ANIMATION_FRAMES = 600;
 
+// `predict = { ask = "...", choices = ["{depth_bias*-1}", "{depth_bias}"], answer =
+// "{depth_bias}" }` or `{ ask = "...", answer = "{visibility}", tolerance = 0.05 }`: the step
+// asks before it tells (DESIGN.md 8b, Students). Its frame first shows `ask` with the numbers
+// that would give the answer away hidden; a key (or, exported, the next frame) reveals the
+// answer, filled from the trace, above the step's text. ask and choices may hold placeholders
+// (none of the quantities the answer hides: app/predict.h checks). The answer is one number
+// placeholder; with choices it must equal exactly one of them at every size (lesson check), and
+// a typed answer is judged by the choice it names; without, a typed number is right within
+// `tolerance`.
+struct StepPredict {
+    std::string ask;
+    std::vector<std::string> choices;  // 2..6 of them, or none
+    std::string answer;                // "{visibility}": one number placeholder
+    double tolerance = 0.0;            // a number answer's: how far off a typed one may be
+    int line = 0;                      // the line of the predict table
+};
+constexpr size_t MAX_PREDICT_CHOICES = 6;
+
 struct LessonStep {
     std::string title;
-    std::string text;         // with {placeholders}; fill with fillText (lesson_text.h)
-    int line = 0;             // the line of the step's [[step]] header in the lesson file
+    std::string text;  // with {placeholders}; fill with fillText (lesson_text.h)
+    int line = 0;      // the line of the step's [[step]] header in the lesson file
+    // Where the text is in the file: the line its value starts on, and the offsets in `text` at
+    // which each later line of the file begins (a line-ending backslash joins lines without a
+    // newline in the text). stepTextLine turns an offset into its line.
+    int textLine = 0;
+    std::vector<size_t> textLineStarts;
     LessonSettings settings;  // the state at this step: [settings], then every step up to here
     // `chart = "figures/bench.csv"`: this step shows the speed/accuracy chart drawn from that
     // bench.csv (a path relative to the lesson file) where the scene would be. Not inherited.
@@ -187,6 +214,8 @@ struct LessonStep {
     // (compare_spec.h). Checked against the step's settings. Not inherited.
     CompareSpec compare;
     int compareLine = 0;
+    // `predict = {...}`: the step is a question first (StepPredict). Not inherited.
+    std::optional<StepPredict> predict;
 };
 
 // What a lesson may hold; more is refused with one line naming the limit. The lessons that ship
@@ -210,5 +239,12 @@ Lesson parseLessonFile(const std::string& path);
 // Parses lesson text; sourceName names it in error messages and gives the lesson's name (its
 // stem) and sourcePath.
 Lesson parseLessonString(std::string_view text, const std::string& sourceName);
+// The same, reading on past each problem: every one is appended to `problems`, in file order
+// (`lesson check` reports them all). The lesson returned is then as far as it could be read.
+Lesson parseLessonString(std::string_view text, const std::string& sourceName,
+                         std::vector<InputError>& problems);
+
+// The line of the lesson file that holds offset `offset` of the step's text.
+int stepTextLine(const LessonStep& step, size_t offset);
 
 }  // namespace pcf

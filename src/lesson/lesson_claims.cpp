@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -266,6 +267,88 @@ bool isChartClaim(const StepClaim& claim) {
 
 bool isMotionClaim(const StepClaim& claim) {
     return claim.parsed && claim.parsed->kind == ParsedClaim::Flickers;
+}
+
+namespace {
+
+// A placeholder as a class would say it ("in_texel.y": "where the point lies across its texel
+// in v"), for the placeholders claims compare most; "" for the others.
+std::string placeholderInWords(const std::string& name) {
+    static const std::pair<std::string_view, std::string_view> NOUNS[] = {
+        {"visibility", "the visibility"},
+        {"shadow", "the shadow, 1 - visibility"},
+        {"light_angle", "the light's angle from the surface's normal"},
+        {"in_texel.x", "where the point lies across its texel in u"},
+        {"in_texel.y", "where the point lies across its texel in v"},
+        {"frac.x", "the sub-texel position in u"},
+        {"frac.y", "the sub-texel position in v"},
+        {"lit_count", "the number of reads that pass"},
+        {"shadowed_count", "the number of reads that fail"},
+        {"ref", "the depth compared, ref"},
+        {"depth_bias", "the bias, z - ref"},
+    };
+    for (const auto& [key, noun] : NOUNS) {
+        if (name == key) return std::string(noun);
+    }
+    // part[K].visibility, tap[K].margin, tap[K].depth: the K-th, counted from 1.
+    size_t open = name.find('['), close = name.find(']');
+    if (open == std::string::npos || close == std::string::npos || close < open) return "";
+    std::string base = name.substr(0, open), field = name.substr(close + 1);
+    int k = std::atoi(name.substr(open + 1, close - open - 1).c_str()) + 1;
+    if (base == "part" && field == ".visibility") {
+        return "the visibility of part " + std::to_string(k) + " of the split view";
+    }
+    if (base == "tap" && field == ".margin") return "read " + std::to_string(k) + "'s depth - ref";
+    if (base == "tap" && field == ".depth") return "read " + std::to_string(k) + "'s stored depth";
+    return "";
+}
+
+// "{light_angle} > 60" as "the light's angle from the surface's normal is above 60"; "" for an
+// expression that is not one named placeholder against one number.
+std::string comparisonInWords(const ParsedClaim& c) {
+    if (c.lhs.size() != 1 || c.rhs.size() != 1 || c.lhs[0].kind != ClaimToken::Name ||
+        c.rhs[0].kind != ClaimToken::Number) {
+        return "";
+    }
+    std::string noun = placeholderInWords(c.lhs[0].name);
+    if (noun.empty()) return "";
+    std::string value = numberText(c.rhs[0].number);
+    if (c.op == "~") return noun + " is within " + numberText(c.tolerance) + " of " + value;
+    static const std::pair<std::string_view, std::string_view> OPS[] = {
+        {"=", "exactly"},  {"!=", "not"},  {"<", "below"},
+        {"<=", "at most"}, {">", "above"}, {">=", "at least"}};
+    for (const auto& [op, words] : OPS) {
+        if (c.op == op) return noun + " is " + std::string(words) + " " + value;
+    }
+    return "";
+}
+
+}  // namespace
+
+std::string claimInWords(const StepClaim& claim) {
+    if (!claim.parsed) return "";
+    switch (claim.parsed->kind) {
+        case ParsedClaim::Lit:
+            return "the point is fully lit";
+        case ParsedClaim::Shadowed:
+            return "the point is fully shadowed";
+        case ParsedClaim::Penumbra:
+            return "the point is in penumbra, partly lit";
+        case ParsedClaim::FailingNearer:
+            return "every read that fails stores a depth nearer the light than the point";
+        case ParsedClaim::OnGround:
+            return "the point lies on the ground";
+        case ParsedClaim::Bits:
+            return "the reads' comparison bits are " + claim.parsed->bits;
+        case ParsedClaim::Flickers:
+            return "the point's visibility jumps between frames of the step's own sweep";
+        case ParsedClaim::Chart:
+        case ParsedClaim::ChartFact:
+            return "";
+        case ParsedClaim::Compare:
+            break;
+    }
+    return comparisonInWords(*claim.parsed);
 }
 
 namespace {

@@ -93,4 +93,10 @@ bool isChartClaim(const StepClaim& claim);
 // Whether the claim reads the step's animation (`flickers`; nothing of the still frame's trace).
 bool isMotionClaim(const StepClaim& claim);
 
+// What a claim says, in plain words that follow "the words say" ("the point is fully
+// shadowed", "the light's angle from the surface's normal is above 60"), for a frame that
+// withholds words the claim makes false; "" for a claim plain words cannot say briefly (an
+// expression of several placeholders, a chart's), whose syntax a class should not read either.
+std::string claimInWords(const StepClaim& claim);
+
 }  // namespace pcf

@@ -36,7 +36,7 @@ float nextStep(const float (&steps)[N], float v, bool up) {
 }
 
 // The settings keys that came with the live controls: the bias amount, the sun, the weights,
-// culling and the depth format. nullopt for another name.
+// culling, the depth format and the shading. nullopt for another name.
 std::optional<LessonSettings> afterLiveKey(LessonSettings s, std::string_view key) {
     bool back = key.starts_with("Shift+");
     std::string_view letter = back ? key.substr(6) : key;
@@ -63,7 +63,9 @@ std::optional<LessonSettings> afterLiveKey(LessonSettings s, std::string_view ke
     } else if (key == "K") {
         s.cull = static_cast<CullMode>((static_cast<int>(s.cull) + 1) % 3);
     } else if (key == "D") {
-        s.depthFormat = static_cast<DepthFormat>((static_cast<int>(s.depthFormat) + 1) % 3);
+        s.depthFormat = nextDepthFormat(s.depthFormat);
+    } else if (key == "N") {
+        s.shading = s.shading == Shading::Lit ? Shading::Visibility : Shading::Lit;
     } else {
         return std::nullopt;
     }
@@ -83,9 +85,9 @@ void nextBias(LessonSettings& s, bool back) {
 
 const std::vector<std::string>& settingKeyNames() {
     static const std::vector<std::string> names = {
-        "M", "Shift+M", "[",       "]",       "-", "+",       "B", "Shift+B",
-        "Q", "O",       "Shift+O", "S",       "V", "Shift+V", "U", "Shift+U",
-        "T", "Shift+T", "W",       "Shift+W", "I", "Shift+I", "K", "D"};
+        "M", "Shift+M", "[", "]",       "-",       "+", "B",       "Shift+B", "Q",
+        "O", "Shift+O", "S", "V",       "Shift+V", "U", "Shift+U", "T",       "Shift+T",
+        "W", "Shift+W", "I", "Shift+I", "K",       "D", "N"};
     return names;
 }
 

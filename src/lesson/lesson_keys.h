@@ -20,7 +20,7 @@ namespace pcf {
 // "Shift+T" (the sun turned SUN_TURN_STEP_DEG about the vertical, one way / the other), "W" /
 // "Shift+W" (next / previous kernel weights, for the methods that take them), "I" / "Shift+I"
 // (the gaussian weights' sigma one step up / down SIGMA_STEPS), "K" (the next cull mode of the
-// shadow pass) and "D" (the next depth format).
+// shadow pass), "D" (the next depth format) and "N" (the shading: lit <-> the visibility alone).
 const std::vector<std::string>& settingKeyNames();
 
 // The constant bias's log steps (light depth units): 1, 2, 5 a decade, the range of `stability`'s

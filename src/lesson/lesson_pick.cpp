@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "kernel/shading.h"
 #include "scene/pcss.h"
 #include "scene/raycast.h"
+#include "scene/shadow_fit.h"
 
 namespace pcf {
 
@@ -32,6 +34,13 @@ std::optional<ScenePoint> seenPoint(const Scene& scene, glm::vec3 pointWs) {
     std::optional<Hit> hit = intersect(scene, Ray{scene.camera.eyeWs, toPoint / distance});
     if (!hit || std::fabs(hit->t - distance) > POINT_TOLERANCE) return std::nullopt;
     return pointOfHit(hit);
+}
+
+std::string pointKeyText(glm::vec3 posWs) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "point = [%.6f, %.6f, %.6f]", static_cast<double>(posWs.x),
+                  static_cast<double>(posWs.y), static_cast<double>(posWs.z));
+    return buf;
 }
 
 std::optional<ScenePoint> pointAtNdc(const Scene& scene, glm::vec2 ndc, float aspect,
@@ -112,7 +121,8 @@ float lightElevationDeg(const Light& light) {
 Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
                   const LessonSettings& s, const ScenePoint& point) {
     PinnedLookup at = pinnedLookup(scene, shadowClipFromWorld, s, point);
-    PcfParams pcss = pcssPcfParams(scene.light, shadowClipFromWorld, s);
+    PcfParams pcss =
+        pcssPcfParams(scene.light, shadowMapLayer(scene, shadowClipFromWorld, s.mapSize), s);
     PcfParams prm = s.pcfParams(at.uv, map.width(), pcss.penumbraScale);
     prm.depthNear = pcss.depthNear;
     prm.depthFar = pcss.depthFar;

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 #include <optional>
+#include <string>
 
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
@@ -37,6 +38,11 @@ std::optional<ScenePoint> seenPoint(const Scene& scene, glm::vec3 pointWs);
 // rendered with jitterNdc added to every position (a click on a jittered frame); nullopt: none.
 std::optional<ScenePoint> pointAtNdc(const Scene& scene, glm::vec2 ndc, float aspect,
                                      glm::vec2 jitterNdc);
+
+// The point as a lesson's `point` key takes it: "point = [x, y, z]", six decimals (a step that
+// claims a fraction to three digits needs them). What a click in the viewer and `pcfscope pick`
+// print.
+std::string pointKeyText(glm::vec3 posWs);
 
 // The point a step pins: its settings' `point`, or the one seen through the middle of the view;
 // nullopt when that is on no surface.

@@ -53,7 +53,7 @@ int litCount(const Trace& tr) {
 
 PcfFootprint footprint(const Trace& tr) {
     int n = std::max(1, tr.params.kernel);
-    return pcfKernelFootprint(tr.uv, tr.mapSize, n);
+    return pcfKernelFootprint(tr.uv, tr.map.size, n);
 }
 
 const std::vector<Simple>& simpleNames() {
@@ -89,9 +89,9 @@ const std::vector<Simple>& simpleNames() {
         {"1-g.y",
          [](const Trace& t, const StepContext&) { return number(1.0f - footprint(t).frac.y); }},
         {"tent.s", [](const Trace& t,
-                      const StepContext&) { return number(pcfTentBase(t.uv, t.mapSize).frac.x); }},
+                      const StepContext&) { return number(pcfTentBase(t.uv, t.map.size).frac.x); }},
         {"tent.t", [](const Trace& t,
-                      const StepContext&) { return number(pcfTentBase(t.uv, t.mapSize).frac.y); }},
+                      const StepContext&) { return number(pcfTentBase(t.uv, t.map.size).frac.y); }},
         {"visibility", [](const Trace& t, const StepContext&) { return number(t.visibility); }},
         // Issue 10: the texture unit's 8-bit position (hw8) next to the float one.
         {"frac_hw8.x", [](const Trace& t, const StepContext&) { return number(t.fracHw8.x); }},
@@ -121,7 +121,7 @@ const std::vector<Simple>& simpleNames() {
         {"radius", [](const Trace& t, const StepContext&) { return number(t.params.radius); }},
         {"rotation",
          [](const Trace& t, const StepContext&) { return number(angleDeg(t.params.rotation)); }},
-        {"map_size", [](const Trace& t, const StepContext&) { return integer(t.mapSize.x); }},
+        {"map_size", [](const Trace& t, const StepContext&) { return integer(t.map.size.x); }},
         {"taps", [](const Trace& t,
                     const StepContext&) { return integer(static_cast<int>(t.taps.size())); }},
         {"texels", [](const Trace& t, const StepContext&) { return integer(t.counts.texels); }},
@@ -153,9 +153,9 @@ const std::vector<Simple>& simpleNames() {
         {"dzduv.v", [](const Trace& t, const StepContext&) { return number(t.dzduv.y); }},
         // The plane's depth change over half a texel of this map: dz/du * 0.5 / size.
         {"half_texel_dz.u",
-         [](const Trace& t, const StepContext&) { return number(t.dzduv.x * 0.5 / t.mapSize.x); }},
+         [](const Trace& t, const StepContext&) { return number(t.dzduv.x * 0.5 / t.map.size.x); }},
         {"half_texel_dz.v",
-         [](const Trace& t, const StepContext&) { return number(t.dzduv.y * 0.5 / t.mapSize.y); }},
+         [](const Trace& t, const StepContext&) { return number(t.dzduv.y * 0.5 / t.map.size.y); }},
         {"origin_shift", [](const Trace&, const StepContext& c) { return number(c.originShift); }},
         {"light_angle",
          [](const Trace&, const StepContext& c) {
@@ -177,7 +177,7 @@ const std::vector<Simple>& simpleNames() {
          [](const Trace& t, const StepContext&) { return number(t.pcss.searchRadius); }},
         {"pcss.search_taps",
          [](const Trace& t, const StepContext&) {
-             bool pcss = t.params.method == PCF_PCSS;
+             bool pcss = methodInfo(t.params.method).searchesBlockers;
              return integer(pcss ? std::min(static_cast<int>(t.taps.size()), PCF_PCSS_TAPS) : 0);
          }},
         {"pcss.blockers",
@@ -194,8 +194,9 @@ const std::vector<Simple>& simpleNames() {
          }},
         {"disk_reach",
          [](const Trace& t, const StepContext&) {
-             bool pcss = t.params.method == PCF_PCSS;
-             if (!pcss && t.params.method != PCF_POISSON) return number(0.0);
+             const MethodInfo& info = methodInfo(t.params.method);
+             bool pcss = info.searchesBlockers;
+             if (!info.hasDisk) return number(0.0);
              float scale = pcss ? t.pcss.filterRadius : t.params.radius;
              return number(scale * poissonSetReach());
          }},
@@ -205,7 +206,7 @@ const std::vector<Simple>& simpleNames() {
          }},
         {"depth_format",
          [](const Trace&, const StepContext& c) {
-             DepthFormat format = c.settings.depthFormat;
+             TexelKind format = c.settings.depthFormat;
              return text(std::string(depthFormatName(format)));
          }},
     };
@@ -322,6 +323,34 @@ struct Placeholder {
 };
 
 // Parses the inside of the braces, or says what is wrong with it.
+// Edits (insertions, deletions, substitutions) that turn a into b (Levenshtein).
+size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+// " (did you mean {frac.x}?)" for the simple name nearest a misspelt one, two edits or fewer;
+// empty when none is that near.
+std::string nearestNameHint(std::string_view name) {
+    std::string_view best;
+    size_t bestDistance = 3;
+    for (const Simple& s : simpleNames()) {
+        size_t d = editDistance(name, s.name);
+        if (d < bestDistance) best = s.name, bestDistance = d;
+    }
+    return best.empty() ? "" : " (did you mean {" + std::string(best) + "}?)";
+}
+
 std::variant<Placeholder, std::string> parsePlaceholder(std::string_view inside) {
     // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on chains of +.
     std::string shown = "{";
@@ -352,8 +381,9 @@ std::variant<Placeholder, std::string> parsePlaceholder(std::string_view inside)
     }
     std::optional<Name> name = parseName(body);
     if (!name) {
-        return "unknown placeholder {" + std::string(body) +
-               "} (see placeholderNames(); write {{ for a literal brace)";
+        return "unknown placeholder {" + std::string(body) + "}" + nearestNameHint(body) +
+               " (the names: docs/lesson-authoring.md#placeholders; write {{ for a literal "
+               "brace)";
     }
     ph.name = *name;
     bool isText =
@@ -459,6 +489,31 @@ std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int t
             }
             return std::nullopt;
         });
+}
+
+std::vector<PlaceholderProblem> placeholderProblems(std::string_view text, int tapCount,
+                                                    int fetchCount, int partCount) {
+    std::vector<PlaceholderProblem> out;
+    size_t from = 0;
+    while (from < text.size()) {
+        std::optional<PlaceholderProblem> p =
+            checkPlaceholders(text.substr(from), tapCount, fetchCount, partCount);
+        if (!p) break;
+        p->offset += from;
+        // Read on after the offending braces: past its }, or past a lone brace (a { with no }
+        // on its line spoils only that line).
+        size_t at = p->offset;
+        size_t next = at + 1;
+        if (text[at] == '{') {
+            size_t close = text.find_first_of("{}\n", at + 1);
+            next = close == std::string_view::npos ? text.size()
+                   : text[close] == '}'            ? close + 1
+                                                   : close;
+        }
+        out.push_back(std::move(*p));
+        from = next;
+    }
+    return out;
 }
 
 std::string fillText(std::string_view text, const Trace& trace, const StepContext& ctx) {

@@ -112,6 +112,11 @@ struct PlaceholderProblem {
 std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int tapCount = -1,
                                                     int fetchCount = -1, int partCount = -1);
 
+// Every problem checkPlaceholders finds, in text order: after each, the text is read on past the
+// offending placeholder (or lone brace).
+std::vector<PlaceholderProblem> placeholderProblems(std::string_view text, int tapCount = -1,
+                                                    int fetchCount = -1, int partCount = -1);
+
 // The text with every placeholder replaced by its value for this trace. Throws
 // std::invalid_argument on text that checkPlaceholders refuses (lesson files are checked when
 // parsed, so that never happens to them).

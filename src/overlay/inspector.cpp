@@ -45,7 +45,9 @@ TypeSizes typeSizes(const InspectorLayout& l) {
         t.label = std::max(t.labelFloor, std::round(12.0f * s * 1.35f));
         t.status = std::max(16.0f, std::round(13.0f * s * 1.35f));
     } else {
-        t.bodyFloor = 12;
+        // The handout's step text: 14 px at 1600 x 900 (scale 1), never below 12 (1600x900's
+        // text fell to 12-13 px where it stepped down to a floor of 12).
+        t.bodyFloor = std::max(12.0f, std::round(14.0f * s));
         t.itemFloor = 12;
         t.numberFloor = 12;
         t.labelFloor = 11;
@@ -264,7 +266,8 @@ FramePlan planFrame(const InspectorLayout& l, const InspectorModel& m) {
     return plan;
 }
 
-FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, bool help) {
+FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, bool help,
+                          bool interactive) {
     FramePlan plan;
     Planner pl{plan};
     TypeSizes t = typeSizes(l);
@@ -272,6 +275,7 @@ FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, b
     pl.fill(l.status, STATUS);
     InspectorModel m;
     m.status = status;
+    m.interactive = interactive;
     planStatus(pl, l, m, t);
     pl.onTop = true;
     if (help) planHelp(pl, l, t);
@@ -359,7 +363,7 @@ Neighbourhood neighbourhoodOf(const Trace& tr) {
         lo = glm::min(lo, tr.weights.origin);
         hi = glm::max(hi, tr.weights.origin + tr.weights.size - glm::ivec2(1));
     }
-    glm::ivec2 point(glm::floor(tr.uv * glm::vec2(tr.mapSize)));
+    glm::ivec2 point(glm::floor(tr.uv * glm::vec2(tr.map.size)));
     lo = glm::min(lo, point);
     hi = glm::max(hi, point);
     return {lo, hi - lo + glm::ivec2(1)};

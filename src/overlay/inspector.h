@@ -95,7 +95,43 @@ struct LayoutBox {
     std::string role;        // what it is: "step-text", "cell-depth", "lookup-point" ...
     float fontPx = 0.0f;     // text, numbers and labels: the pixel size drawn
     bool shortened = false;  // the text did not fit whole (elided, or paged: see the "more" mark)
-    std::string text;        // a text, number or label drawn by itself: its words (not in JSON)
+    std::string text;        // a text, number or label drawn by itself: its words (JSON "text")
+};
+
+// The numbers of the trace a frame can hide until they are revealed (a predict step's question,
+// an exercise): each hidden quantity is drawn as "?" where the frame would print it, in the
+// inspector's header, cells, fraction labels and texel table; the formula, which holds them
+// all, is replaced by a line that says it is hidden. Which quantities a question hides is the
+// app's (app/predict.h); the roles whose boxes go are hiddenRoles'.
+struct HiddenNumbers {
+    bool visibility = false;  // the result: the header's visibility, the formula's result
+    bool bits = false;        // the comparison bits: the cells' bits and colours, d - ref
+    bool weights = false;     // the cells' weights and weight bars, the table's w
+    bool fraction = false;    // the fx, fy labels (and their 8-bit steps)
+    bool refs = false;        // ref: the header's, the cells' own, the table's; the bias amount
+    bool depths = false;      // the cells' and the table's depths
+    bool counts = false;      // the header's fetch counts line
+    bool any() const {
+        return visibility || bits || weights || fraction || refs || depths || counts;
+    }
+    bool operator==(const HiddenNumbers&) const = default;
+};
+// The layout roles whose boxes a frame with these numbers hidden does not draw (the JSON's
+// predict.masked): "visibility", "cell-bit", "cell-weight", "weight-bar", "formula", ...
+std::vector<std::string> hiddenRoles(const HiddenNumbers& hidden);
+// What a masked number is drawn as, in place of each hidden quantity.
+constexpr const char* HIDDEN_NUMBER = "?";
+
+// A predict step (or an exercise item) in the step panel: before the reveal, its question, the
+// choices when it has them and what was typed; after it, the answer above the step's words.
+struct PredictPanel {
+    bool on = false;                   // the step is a question
+    bool revealed = false;             // the answer and the step's words are shown
+    std::string ask;                   // the question, placeholders filled
+    std::vector<std::string> choices;  // "-0.02", ...; empty: a number to type
+    std::string answer;  // revealed: "Answer: 0.02 (B)", with the verdict on what was typed
+    std::string typed;   // what the viewer's keyboard has typed so far ("" none)
+    std::string hint;    // how to answer and reveal, e.g. "type a number, Enter; R reveals"
 };
 
 // Everything the frame shows; the caller fills it from the lesson, the renderer and the trace.
@@ -122,7 +158,15 @@ struct InspectorModel {
     int textPage = 0;                   // the page of the step text shown (when it pages)
     int highlightFetch = -1;            // the fetch (0-based) the step talks about; -1: none
     bool plays = false;  // an animation step: Space plays it, so Right alone turns the page
+    // The window's frame: only it names the keys (a page's "more Right", "H: keys"); a frame
+    // that is written (export, animate) never shows a hint only the window can act on.
+    bool interactive = false;
+    // A frame of a written video: no page of it follows, so no note points to one (the
+    // inspector's "the formula, every term: next page").
+    bool singleFrame = false;
     Focus focus{true, true, false, false};  // what the step is about (inspector.h: Focus)
+    HiddenNumbers hidden;                   // numbers drawn as "?" (a question not yet revealed)
+    PredictPanel predict;                   // a predict step's question or revealed answer
 };
 
 // The frame measured and placed, nothing drawn yet: a pure function of the layout and the model
@@ -137,9 +181,15 @@ struct FramePlan {
     // term (page 2) when both do not fit one panel at the floors. Page k shows the text's page
     // min(k, last) and the inspector's part min(k, last).
     int textPages = 1;
+    // Of them: the step text's pages, and the inspector's parts (cells, texel table, formula).
+    int stepTextPages = 1;
+    int inspectorParts = 1;
     bool gridShown = false;  // the texel grid was drawn on the scene (not hidden or off)
     // The texels read were tinted on the scene (not on an inset, nor off the scene's pixels).
     bool footprintShown = false;
+    // The texels tinted and outlined on the scene, in read order: the distinct texels of the
+    // trace's taps that some scene pixel shows (the JSON sidecar's drawn.scene_texels).
+    std::vector<glm::ivec2> sceneTexels;
     // What this page drew of what the trace read (the JSON sidecar's `drawn`): the texels whose
     // cells are drawn, the fetches (indices into Trace::fetches) whose marks are drawn, and
     // whether the formula is drawn whole, every term (not the short form).
@@ -150,16 +200,29 @@ struct FramePlan {
     // cell, or as a row of the texel table (the page after the cells when a cell had to drop
     // some of its numbers at this size).
     std::vector<glm::ivec2> numberedTexels;
+    // The read texels whose cell shows its comparison bit (the texel table's grids leave the
+    // bits to the cells).
+    std::vector<glm::ivec2> bitTexels;
     // poisson and pcss: the radii, in texels, of the rings drawn round the lookup point (the
     // disks the Poisson points fill: the filter's, and pcss's blocker search's).
     std::vector<float> diskRadii;
+    // Those rings as drawn on this page: centre and radius in pixels, stroke width.
+    struct Ring {
+        glm::vec2 centre{0.0f};
+        float radius = 0.0f;
+        float width = 0.0f;
+        Rect clip;  // the ring is drawn clipped to this (the cells, a figure's square)
+    };
+    std::vector<Ring> rings;
 };
 FramePlan planFrame(const InspectorLayout& layout, const InspectorModel& model);
 void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& ops);
-// The status line along the bottom of `l` (its panel filled) and, with `help`, the key list (H)
-// over the frame, as planFrame places them: what a frame composed without the inspector (the
-// split view, app/compare_view.h) draws so that it reads and answers H as the lesson's frame.
-FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, bool help);
+// The status line along the bottom of `l` (its panel filled; with `interactive` its keys hint)
+// and, with `help`, the key list (H) over the frame, as planFrame places them: what a frame
+// composed without the inspector (the split view, app/compare_view.h) draws so that it reads and
+// answers H as the lesson's frame.
+FramePlan planStatusFrame(const InspectorLayout& l, const std::string& status, bool help,
+                          bool interactive);
 // A step text as the frame draws it: `code spans` without their backticks (a backtick with no
 // partner on its line stays), preformatted rows (two leading spaces) as they are, table columns
 // padded to line up. What the step JSON sidecar's `text` reports.

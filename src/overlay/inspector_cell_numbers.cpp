@@ -1,6 +1,8 @@
 // inspector_cell_numbers.cpp: the numbers in each magnified cell (its bit, own ref, depth and
 // weight), placed clear of the marks the cell holds: in smaller type, with fewer numbers, or with
 // the cell's point marks moved into lanes at its edge, where the whole block does not fit.
+#include <initializer_list>
+
 #include "overlay/inspector_plan.h"
 
 namespace pcf::inspector_detail {
@@ -12,6 +14,7 @@ struct Item {
     std::string text;
     float size;
     std::string role;
+    bool hidden = false;  // drawn as "?" (HiddenNumbers), its box's role "masked"
 };
 using Placed = std::vector<std::pair<Rect, const Item*>>;
 
@@ -19,41 +22,59 @@ using Placed = std::vector<std::pair<Rect, const Item*>>;
 std::vector<Item> cellItems(const InspectorModel& m, const Grid& g, glm::ivec2 texel,
                             const TapRecord* tap, bool inMap) {
     const Trace& tr = *m.trace;
+    const HiddenNumbers& hide = m.hidden;
     std::vector<Item> all;
     // The bit; a soft comparison's fraction (bias soft) in its place.
     bool soft = tap && tap->lit != 0.0f && tap->lit != 1.0f;
     if (tap) {
-        all.push_back({soft               ? fixed(tap->lit, 2)
-                       : tap->lit >= 0.5f ? "1"
-                                          : "0",
-                       g.bit, "cell-bit"});
+        std::string bit = soft ? fixed(tap->lit, 2) : tap->lit >= 0.5f ? "1" : "0";
+        all.push_back({hiddenOr(hide.bits, "", bit), g.bit, "cell-bit", hide.bits});
     }
     // The tap's own ref where the bias gave it one (receiver plane), under its bit.
     bool ownRef = tap && tap->ref != tr.ref;
-    if (ownRef) all.push_back({"r " + fixed(tap->ref, 4), g.number, "cell-ref"});
+    if (ownRef) {
+        all.push_back(
+            {hiddenOr(hide.refs, "r ", fixed(tap->ref, 4)), g.number, "cell-ref", hide.refs});
+    }
     if (inMap) {
         float depth = m.map ? m.map->depth(texel.x, texel.y) : (tap ? tap->depth : 0.0f);
-        all.push_back({"d " + fixed(depth, 3), g.number, "cell-depth"});
+        // Bits hidden: the depth to ref's four decimals, so that the comparison can be made.
+        int decimals = hide.bits ? 4 : 3;
+        all.push_back({hiddenOr(hide.depths, "d ", fixed(depth, decimals)), g.number, "cell-depth",
+                       hide.depths});
     }
-    if (tap) all.push_back({"w " + weightText(tr.weights.at(texel)), g.number, "cell-weight"});
+    if (tap) {
+        all.push_back({hiddenOr(hide.weights, "w ", weightText(tr.weights.at(texel))), g.number,
+                       "cell-weight", hide.weights});
+    }
     return all;
 }
 
-// The blocks to try, most first: variants from whole to nothing (all, without depth, weight
-// alone), each at the cell's number size, then a few steps smaller down to the floor: a cell
-// crowded by marks keeps its depth in smaller type before it drops it.
+// The items of `all` but those in the roles named.
+std::vector<Item> itemsWithout(const std::vector<Item>& all,
+                               std::initializer_list<const char*> roles) {
+    std::vector<Item> out;
+    for (const Item& it : all) {
+        if (std::none_of(roles.begin(), roles.end(), [&](const char* r) { return it.role == r; }))
+            out.push_back(it);
+    }
+    return out;
+}
+
+// The blocks to try, most first: variants from whole to nothing (all; without the own ref;
+// without depth; the bit and weight; the bit alone), each at the cell's number size, then a few
+// steps smaller down to the floor: a cell crowded by marks keeps its depth in smaller type
+// before it drops it, and its bit always: the comparison is what the cell is for (12.3's
+// receiver-plane cells at 1024x768 showed their weights alone, the own ref too wide to fit).
+// What a cell leaves out goes to the texel table.
 std::vector<std::vector<Item>> numberCandidates(const std::vector<Item>& all, bool tap,
                                                 bool hasDepth, const Grid& g, float numberFloor) {
     std::vector<std::vector<Item>> variants{all};
-    if (tap && hasDepth) {
-        std::vector<Item> noDepth;
-        for (const Item& it : all) {
-            if (it.role != "cell-depth") noDepth.push_back(it);
-        }
-        variants.push_back(noDepth);
-    }
-    if (tap) variants.push_back({all.back()});
-    // The bit alone, where no number fits beside it: the comparison is what the cell is for.
+    bool ownRef =
+        std::any_of(all.begin(), all.end(), [](const Item& it) { return it.role == "cell-ref"; });
+    if (tap && hasDepth && ownRef) variants.push_back(itemsWithout(all, {"cell-ref"}));
+    if (tap && hasDepth) variants.push_back(itemsWithout(all, {"cell-depth"}));
+    if (tap && ownRef) variants.push_back(itemsWithout(all, {"cell-depth", "cell-ref"}));
     if (tap) variants.push_back({all.front()});
     variants.push_back({});
     std::vector<std::vector<Item>> candidates;
@@ -192,10 +213,11 @@ std::vector<std::vector<glm::ivec2>> laneWays(const CellMarks& cm, const std::ve
     return sorted;
 }
 
-// The point marks whose true position lies in `texel`'s cell.
+// The point marks whose true position lies in `texel`'s cell and that may move (not fixed).
 std::vector<size_t> ownedMarks(const CellMarks& cm, const Grid& g, glm::ivec2 texel) {
     std::vector<size_t> owned;
     for (size_t k = 0; k < cm.points.size(); ++k) {
+        if (cm.points[k].fixed) continue;
         glm::ivec2 at(glm::floor((cm.points[k].trueAt - glm::vec2(g.area.x, g.area.y)) / g.cell));
         if (g.view.origin + at == texel) owned.push_back(k);
     }
@@ -295,7 +317,7 @@ bool planCell(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm
               glm::ivec2 texel) {
     const Trace& tr = *m.trace;
     const TapRecord* tap = firstTapAt(tr, texel);
-    bool inMap = texel.x >= 0 && texel.y >= 0 && texel.x < tr.mapSize.x && texel.y < tr.mapSize.y;
+    bool inMap = texel.x >= 0 && texel.y >= 0 && texel.x < tr.map.size.x && texel.y < tr.map.size.y;
     std::vector<Item> all = cellItems(m, g, texel, tap, inMap);
     std::vector<std::vector<Item>> candidates =
         numberCandidates(all, tap != nullptr, inMap, g, numberFloor);
@@ -303,11 +325,14 @@ bool planCell(Planner& pl, const InspectorModel& m, const Grid& g, CellMarks& cm
     Placed done = fitKeepingDepth(candidates, inMap, cm, g, room);
     if (done.empty()) done = fitWithoutDepth(candidates, cm, g, room);
     if (tap && done.size() == all.size()) pl.plan.numberedTexels.push_back(texel);
-    Colour ink = tap && tap->lit >= 0.5f ? DARK_TEXT : TEXT;
+    bool bit = std::any_of(done.begin(), done.end(),
+                           [](const auto& d) { return d.second->role == "cell-bit"; });
+    if (tap && bit) pl.plan.bitTexels.push_back(texel);
+    Colour ink = tap && tap->lit >= 0.5f && !m.hidden.bits ? DARK_TEXT : TEXT;
     for (const auto& [box, it] : done) {
         pl.text({box.x + box.w * 0.5f, box.y}, it->text,
                 {FontFace::Mono, it->size, ink, TextAlign::Center}, BoxKind::Number, "inspector",
-                it->role);
+                it->hidden ? "masked" : it->role);
     }
     // numberCandidates always ends with the empty block, so a cell none fits shows nothing.
     return done.empty() && !all.empty();

@@ -5,8 +5,9 @@
 namespace pcf::inspector_detail {
 
 DiskRings diskRings(const Trace& tr) {
-    bool pcss = tr.params.method == PCF_PCSS;
-    if (tr.params.method != PCF_POISSON && !pcss) return {};
+    const MethodInfo& info = methodInfo(tr.params.method);
+    bool pcss = info.searchesBlockers;
+    if (!info.hasDisk) return {};
     // poisson: the 16 points scaled by R texels (Jimmy, "Percentage Closer Filtering", 2010).
     // pcss (Fernando, "Percentage-Closer Soft Shadows", 2005): the blocker search's points, then,
     // when the search found a blocker, the filter's, scaled by half the penumbra's width. Each
@@ -21,10 +22,30 @@ DiskRings diskRings(const Trace& tr) {
     return r;
 }
 
+namespace {
+
+// A ring's stroke as squares along it, one every few pixels, each as wide as the stroke plus a
+// pixel a side: the marks the cells' numbers keep clear of.
+void ringObstacles(CellMarks& marks, const Rect& area, glm::vec2 centre, float radius,
+                   float width) {
+    constexpr float STEP_PX = 3.0f;
+    int n = std::max(16, static_cast<int>(std::ceil(6.2831853f * radius / STEP_PX)));
+    float half = 0.5f * width + 1.0f;
+    for (int k = 0; k < n; ++k) {
+        float a = 6.2831853f * static_cast<float>(k) / static_cast<float>(n);
+        glm::vec2 p = centre + radius * glm::vec2(std::cos(a), std::sin(a));
+        Rect r = Rect{p.x - half, p.y - half, 2 * half, 2 * half}.intersect(area);
+        if (!r.empty()) marks.rects.push_back(r);
+    }
+}
+
+}  // namespace
+
 void planDisks(Planner& pl, const Trace& tr, const Rect& area, glm::vec2 point, float cell,
-               float width, LegendNeeds& legend) {
-    bool pcss = tr.params.method == PCF_PCSS;
-    if (tr.params.method != PCF_POISSON && !pcss) return;
+               float width, LegendNeeds& legend, CellMarks& marks) {
+    const MethodInfo& info = methodInfo(tr.params.method);
+    bool pcss = info.searchesBlockers;
+    if (!info.hasDisk) return;
     DiskRings rings = diskRings(tr);
     legend.disk = rings.filter > 0.0f;
     legend.searchDisk = pcss;
@@ -33,6 +54,11 @@ void planDisks(Planner& pl, const Trace& tr, const Rect& area, glm::vec2 point, 
     }
     float filter = rings.filter * cell;
     float search = rings.search * cell;
+    for (float r : {search, filter}) {
+        if (r <= 0.0f) continue;
+        ringObstacles(marks, area, point, r, width);
+        pl.plan.rings.push_back({point, r, width, area});
+    }
     pl.op([=](Canvas& c) {
         c.pushClip(area);
         if (search > 0.0f) c.ring(point, search, width, SEARCH);

@@ -1,5 +1,6 @@
 // inspector_keys.cpp: the viewer's keys as the help overlay (H) and `pcfscope view --help` list
 // them, and the overlay drawn from that list.
+#include "kernel/settings.h"
 #include "overlay/inspector_plan.h"
 
 namespace pcf {
@@ -12,6 +13,9 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"Space, Right", "next page of the text, then next step"},
         {"Left, Backspace", "previous step"},
         {"Home / End", "first / last step"},
+        {"R", "a question: reveal / hide the answer"},
+        {"0-9 . / -, Enter", "a question: type an answer, Enter judges and reveals it"},
+        {"N", "exercise mode: questions from this lesson, answers scored"},
         {"Space (animation)", "an animation step: play / pause"},
         {". / ,", "an animation step: next / previous frame"},
         {"M / Shift+M", "next / previous method"},
@@ -28,7 +32,8 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"W / Shift+W", "next / previous kernel weights"},
         {"I / Shift+I", "gaussian weights' sigma larger / smaller"},
         {"K", "cull mode of the shadow pass"},
-        {"D", "depth format: 16, 24, 32f"},
+        {"D", "depth format: " + depthFormatNames()},
+        {"N", "shading: lit / the visibility alone (no N.L)"},
         {"X", "marks on the scene on / off"},
         {"C", "split view: the step's compare, or this method and nearest"},
         {"Z", "magnifier: a close-up on the point, a texel many pixels wide"},

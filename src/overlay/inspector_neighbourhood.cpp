@@ -194,8 +194,9 @@ PanelLayout panelLayout(const InspectorLayout& l, const Trace& tr, const TypeSiz
 namespace {
 
 // Each cell's fill (its bit's colour), the clamped frame and the weight bar.
-void planCellFills(Planner& pl, const InspectorLayout& l, const Trace& tr, const Grid& g,
+void planCellFills(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const Grid& g,
                    CellMarks& marks, LegendNeeds& legend) {
+    const Trace& tr = *m.trace;
     float line = lineOf(l);
     float maxWeight = 0.0f;
     for (float w : tr.weights.values) maxWeight = std::max(maxWeight, w);
@@ -206,8 +207,10 @@ void planCellFills(Planner& pl, const InspectorLayout& l, const Trace& tr, const
             const TapRecord* tap = firstTapAt(tr, texel);
             float weight = tr.weights.at(texel);
             Colour fill = !tap ? PADDING : tap->lit >= 0.5f ? LIT_COLOUR : SHADOWED_COLOUR;
-            if (tap && weight == 0.0f) fill = glm::mix(fill, PADDING, 0.55f);
+            if (tap && m.hidden.bits) fill = HIDDEN_BIT;
+            if (tap && weight == 0.0f && !m.hidden.weights) fill = glm::mix(fill, PADDING, 0.55f);
             if (!tap) legend.padding = true;
+            if (tap && weight == 0.0f) legend.zeroWeight = true;
             pl.fill(r, fill);
             // A tap whose texel lay outside the map, read clamped to the edge: an orange frame
             // in the cell's border band, where no number goes.
@@ -219,7 +222,7 @@ void planCellFills(Planner& pl, const InspectorLayout& l, const Trace& tr, const
                 Rect frame = r.expanded(-line);
                 pl.op([frame, line](Canvas& c) { c.strokeRect(frame, line, CLAMPED); });
             }
-            if (tap && maxWeight > 0.0f && weight > 0.0f) {
+            if (tap && maxWeight > 0.0f && weight > 0.0f && !m.hidden.weights) {
                 float band = 2.0f * line + OUTLINE_EXTRA_PX;
                 Rect bar{r.x + band, r.bottom() - g.bar - band,
                          (r.w - 2 * band) * weight / maxWeight, g.bar};
@@ -326,10 +329,14 @@ bool texelsInView(const Grid& g, const FetchRecord& fr, glm::vec2 size) {
 void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const Grid& g,
                     CellMarks& marks, LegendNeeds& legend) {
     const Trace& tr = *m.trace;
+    const MethodInfo& info = methodInfo(tr.params.method);
     float line = lineOf(l);
-    glm::vec2 size(tr.mapSize);
+    glm::vec2 size(tr.map.size);
     Rect area = g.area;
     float dotR = std::max(DOT_MIN_PX, std::round(g.cell * DOT_PER_CELL));
+    // poisson's and pcss's points lie on a disk round the lookup point: they stay put.
+    DiskRings disk = diskRings(tr);
+    bool onDisk = disk.filter > 0.0f || disk.search > 0.0f;
     for (size_t fi = 0; fi < tr.fetches.size(); ++fi) {
         const FetchRecord& fr = tr.fetches[fi];
         glm::vec2 at = viewPoint(g, fr.uv * size);
@@ -349,25 +356,25 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
                      c.circle(p, std::max(RING_CORE_MIN_PX, rr * RING_CORE), ACCENT);
                  }});
             legend.rings = true;
-        } else if (tr.params.method == PCF_POISSON || tr.params.method == PCF_NAIVE ||
-                   tr.params.method == PCF_HW || tr.params.method == PCF_PCSS) {
+        } else if (info.hasDisk || info.overlappingLookups) {
             if (!area.contains(at)) continue;
             pl.plan.drawnFetches.push_back(static_cast<int>(fi));
             float mr = highlit ? dotR * 2.0f + 2.0f : dotR + 1.0f;  // the highlight's halo too
             // pcss: its first 16 reads are the blocker search's (weight 0), then the filter's.
-            bool search = tr.params.method == PCF_PCSS && fi < PCF_PCSS_TAPS;
+            bool search = info.searchesBlockers && fi < PCF_PCSS_TAPS;
             Colour dot = search ? SEARCH : ACCENT;
             marks.points.push_back({at, at, mr, "lookup", dot, [=](Canvas& c, glm::vec2 p) {
                                         if (highlit) c.circle(p, dotR * 2.0f + 1.0f, HIGHLIGHT);
                                         c.circle(p, dotR, dot);
                                     }});
+            marks.points.back().fixed = onDisk;
             (search ? legend.searchDisk : legend.dots) = true;
         } else if (texelsInView(g, fr, size)) {
             pl.plan.drawnFetches.push_back(static_cast<int>(fi));
         }
     }
     glm::vec2 point = viewPoint(g, tr.uv * size);
-    planDisks(pl, tr, area, point, g.cell, std::max(1.0f, line - 1.0f), legend);
+    planDisks(pl, tr, area, point, g.cell, std::max(1.0f, line - 1.0f), legend, marks);
     float pr = std::max(POINT_MIN_PX, std::round(g.cell * POINT_PER_CELL));
     if (area.contains(point)) {
         marks.points.push_back(
@@ -375,6 +382,7 @@ void planFetchMarks(Planner& pl, const InspectorLayout& l, const InspectorModel&
                  c.circle(p, pr + POINT_OUTLINE_PX, Colour{0, 0, 0, 0.9f});
                  c.circle(p, pr, POINT);
              }});
+        marks.points.back().fixed = onDisk;
     }
 }
 
@@ -419,9 +427,9 @@ void planPointMarks(Planner& pl, const InspectorLayout& l, const Grid& g, CellMa
 // fx and fy in the lanes under and beside the cells: a bracket from the base texel's centre
 // to the lookup point, with its value.
 void planFractions(Planner& pl, const InspectorLayout& l, const Trace& tr, const Grid& g,
-                   const TypeSizes& t) {
+                   const TypeSizes& t, bool hidden) {
     const std::string panel = "inspector";
-    glm::vec2 size(tr.mapSize);
+    glm::vec2 size(tr.map.size);
     Rect area = g.area;
     float line = lineOf(l);
     glm::vec2 point = viewPoint(g, tr.uv * size);
@@ -449,19 +457,22 @@ void planFractions(Planner& pl, const InspectorLayout& l, const Trace& tr, const
     // With hw8 the float fraction gets four decimals, and under it the 8-bit one, k/256, that
     // the texture unit lerps with (the trace's fracHw8).
     int decimals = g.hw8 ? 4 : 2;
-    std::string fx = "fx " + fixed(tr.pos.frac.x, decimals);
-    std::string fy = "fy " + fixed(tr.pos.frac.y, decimals);
+    std::string fx = hiddenOr(hidden, "fx ", fixed(tr.pos.frac.x, decimals));
+    std::string fy = hiddenOr(hidden, "fy ", fixed(tr.pos.frac.y, decimals));
+    std::string fxRole = hidden ? "masked" : "fx", fyRole = hidden ? "masked" : "fy";
     TextStyle fst{FontFace::Mono, t.label, POINT, TextAlign::Left};
     TextStyle qst{FontFace::Mono, t.label, HW8_POINT, TextAlign::Left};
     Rect fxs = pl.measure({0, 0}, fx, fst);
     float rows = g.hw8 ? 2.0f : 1.0f;
     float fxX =
         std::clamp((x0 + x1) * 0.5f - fxs.w * 0.5f, g.laneBottom.x, g.laneBottom.right() - fxs.w);
-    Rect fxBox = pl.text({fxX, ly + tick + FX_LABEL_GAP_PX}, fx, fst, BoxKind::Label, panel, "fx");
+    Rect fxBox =
+        pl.text({fxX, ly + tick + FX_LABEL_GAP_PX}, fx, fst, BoxKind::Label, panel, fxRole);
     float fyY = std::clamp((y0 + y1) * 0.5f - fxs.h * rows * 0.5f, g.laneRight.y,
                            g.laneRight.bottom() - fxs.h * rows);
-    Rect fyBox = pl.text({lx + tick + FY_LABEL_GAP_PX, fyY}, fy, fst, BoxKind::Label, panel, "fy");
-    if (g.hw8) {
+    Rect fyBox =
+        pl.text({lx + tick + FY_LABEL_GAP_PX, fyY}, fy, fst, BoxKind::Label, panel, fyRole);
+    if (g.hw8 && !hidden) {
         pl.text({fxBox.x, fxBox.bottom()}, hw8Steps(tr.fracHw8.x), qst, BoxKind::Label, panel,
                 "fx-hw8");
         pl.text({fyBox.x, fyBox.bottom()}, hw8Steps(tr.fracHw8.y), qst, BoxKind::Label, panel,
@@ -475,7 +486,7 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
                const TypeSizes& t, LegendNeeds& legend, int& hiddenCells) {
     const Trace& tr = *m.trace;
     CellMarks marks;
-    planCellFills(pl, l, tr, g, marks, legend);
+    planCellFills(pl, l, m, g, marks, legend);
     for (int j = 0; j < g.view.size.y; ++j) {
         for (int i = 0; i < g.view.size.x; ++i) {
             pl.plan.drawnTexels.push_back(g.view.origin + glm::ivec2(i, j));
@@ -486,10 +497,9 @@ void planCells(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     hiddenCells += planCellNumbers(pl, m, g, marks, t.numberFloor);
     planPointMarks(pl, l, g, marks, legend);
     for (auto& f : marks.ops) pl.op(std::move(f));
-    if (tr.params.method != PCF_NEAREST && tr.params.method != PCF_POISSON &&
-        tr.params.method != PCF_PCSS) {
+    if (!methodInfo(tr.params.method).nearestTexels) {
         legend.fraction = true;
-        planFractions(pl, l, tr, g, t);
+        planFractions(pl, l, tr, g, t, m.hidden.fraction);
     }
     planSubtexelInset(pl, l, tr, g, t, m.highlightFetch);
     legend.hw8 = g.hw8;

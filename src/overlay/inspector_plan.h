@@ -42,11 +42,14 @@ constexpr Colour STATUS{0.03f, 0.03f, 0.04f, 1.0f};
 constexpr Colour WEIGHT_BAR{0.95f, 0.35f, 0.25f, 0.9f};
 constexpr Colour HIGHLIGHT{1.0f, 0.62f, 0.10f, 1.0f};
 constexpr Colour FOOTPRINT_TINT{0.2f, 0.85f, 1.0f, 0.18f};
-constexpr Colour SEARCH{0.80f, 0.58f, 1.0f, 1.0f};  // pcss: the blocker search's taps and disk
+constexpr Colour SEARCH{0.80f, 0.58f, 1.0f, 1.0f};       // pcss: the blocker search's taps and disk
+constexpr Colour PCSS_GRID{0.45f, 0.47f, 0.53f, 1.0f};   // pcss's figures: the faint texel grid
+constexpr Colour HIDDEN_BIT{0.42f, 0.36f, 0.52f, 1.0f};  // a cell whose bit a question hides
 
 // A texel narrower than this on screen makes the grid's lines a moire that reads as acne: the
-// grid is hidden then (the footprint tint stays).
-constexpr float GRID_MIN_TEXEL_PX = 4.0f;
+// grid is hidden then (the tint of the texels read stays). Lesson 8's acne stripes, one texel
+// apart, measure 3.95 px across at 1024x768 presentation: their grid shows.
+constexpr float GRID_MIN_TEXEL_PX = 3.5f;
 
 inline std::string fixed(float v, int decimals) {
     char buf[32];
@@ -84,8 +87,12 @@ inline bool inside(const Rect& inner, const Rect& outer) {
 }
 
 // Records boxes and the draw commands that go with them.
-// The keys that turn a page, as the "more" marks say them: on an animation step Space plays it.
-inline std::string pageKeys(const InspectorModel& m) { return m.plays ? "Right" : "Space/Right"; }
+// The keys that turn a page, as the "more" marks say them in the window (on an animation step
+// Space plays it); a written frame names none.
+inline std::string pageKeys(const InspectorModel& m) {
+    if (!m.interactive) return "";
+    return m.plays ? "Right" : "Space/Right";
+}
 
 struct Planner {
     FramePlan& plan;
@@ -144,14 +151,23 @@ struct FittedText {
 };
 
 // Wraps `text` into `width`, stepping the type down from `start` towards `floor` until it fits
-// `height`; what still does not fit is paged.
+// `height`; what still does not fit is paged. markLine: each page keeps its last line for the
+// "more" mark (false: the mark goes elsewhere, MarkPlace).
 FittedText fitText(std::string_view text, FontFace face, float start, float floor, float width,
-                   float height);
+                   float height, bool markLine = true);
+// Where a paged block's "more" mark goes instead of its area's last line: right-aligned in
+// `row`, at `size` (the step header's line in presentation mode).
+struct MarkPlace {
+    Rect row;
+    float size = 0.0f;
+};
+// The "more" mark of page `page`: "more Space/Right (1/3)", the last page's "(3/3)".
+std::string moreMarkText(const FittedText& f, int page, const std::string& moreHint);
 // Draws page `page` of a fitted block at the top-left of `area`, with the "more" mark on the
-// last line of the area when there are more pages. Returns the height used.
+// last line of the area (or at `mark`) when there are more pages. Returns the height used.
 float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, FontFace face,
                   const Colour& colour, const std::string& panel, const std::string& role,
-                  const std::string& moreHint);
+                  const std::string& moreHint, const std::optional<MarkPlace>& mark = std::nullopt);
 
 // ---- inspector_neighbourhood.cpp: the inspector panel's one layout and the cells. ----
 
@@ -241,15 +257,50 @@ inline float lineOf(const InspectorLayout& l) {
 
 // Which kinds of mark the cells drew (the legend names only those).
 struct LegendNeeds {
+    bool cells = true;  // the cells' fills (lit, shadowed); pcss's figures have none
+    bool point = true;  // the lookup point (pcss's penumbra figure has none)
     bool highlight = false, weightBar = false, dots = false, rings = false, gathers = false,
          fraction = false, baseCentre = false, padding = false;
+    bool zeroWeight = false;  // a texel read whose weight is 0 (its fill paled towards grey)
     bool footprint = false;   // the texels read, tinted on the scene
     bool clamped = false;     // a texel read clamped to the edge (any finite uv)
     bool hw8 = false;         // the 8-bit position (the sub-texel inset)
     bool movedMark = false;   // a point mark moved beside its cell's numbers, with a tick
     bool disk = false;        // the Poisson disk's circle
     bool searchDisk = false;  // pcss: the blocker search's disk and taps
+    // pcss's figures (inspector_pcss.cpp): the search's taps as discs, blocker or not; the
+    // filter's taps, lit or shadowed; the faint texel grid under them.
+    bool blockerTaps = false, filterTaps = false, texelGrid = false;
 };
+
+// The legend: a swatch and a word for every kind of mark this frame draws, flowing onto more
+// lines when the panel is narrow (inspector_legend.cpp). From `y` down; returns the new y.
+float planLegend(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                 const LegendNeeds& need, const TypeSizes& t, float margin, float y);
+// The inspector's header (method, visibility, counts, uv, ref, bias) at the panel's top, with
+// the numbers `hidden` drawn as "?" (the room is the one the numbers take, so a question's cells
+// sit where its answer's do).
+void planHeader(Planner& pl, const InspectorLayout& l, const Header& h, const TypeSizes& t,
+                float margin, const Trace& tr, const HiddenNumbers& hidden);
+// A line at the panel's bottom saying where the rest of the inspector is (the next page).
+// `y`: the top of the room left under the rest.
+void planNextPageNote(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                      const TypeSizes& t, float margin, float y, const std::string& what);
+
+// ---- inspector_pcss.cpp: pcss's pages (Fernando, "Percentage-Closer Soft Shadows", 2005). ----
+// A pcss trace (its blocker search ran) is shown as figures readable from a room instead of
+// its disks' hundreds of small cells: the search's 16 taps on its disk, each a disc marked
+// blocker or not with its depth; the penumbra's width by similar triangles with the trace's
+// numbers; the filter's 16 taps, lit or shadowed, with their depths, and the visibility.
+bool pcssFigures(const Trace& tr);
+// The inspector panel of a pcss trace: the header, then the page of its figures the model's
+// textPage asks for (the frame's pages grow to hold them all).
+void planPcssInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                       const TypeSizes& t);
+// The penumbra's page (inspector_pcss_penumbra.cpp): the similar triangles drawn with the
+// trace's distances, and the words that give w with its numbers, between top and bottom.
+void planPenumbraPage(Planner& pl, const InspectorLayout& l, const Trace& tr, const TypeSizes& t,
+                      float top, float bottom);
 
 // ---- inspector_disks.cpp: the disks poisson's and pcss's points lie on. ----
 // The rings planDisks draws round the lookup point, radii in texels (0: none): pcss's blocker
@@ -259,10 +310,13 @@ struct DiskRings {
     float filter = 0.0f;
 };
 DiskRings diskRings(const Trace& tr);
+struct CellMarks;
 // Rings round the lookup point (`point`, pixels; `cell` pixels per texel) clipped to `area`:
-// poisson's disk, or pcss's search disk and (when it found a blocker) its filter disk.
+// poisson's disk, or pcss's search disk and (when it found a blocker) its filter disk. Each
+// ring's stroke goes into `marks` as small squares along it, which the cells' numbers keep
+// clear of (7.1's ring crossed them), and into the plan's rings.
 void planDisks(Planner& pl, const Trace& tr, const Rect& area, glm::vec2 point, float cell,
-               float width, LegendNeeds& legend);
+               float width, LegendNeeds& legend, CellMarks& marks);
 
 // The cells, their numbers, the fetch marks and the fx/fy brackets; counts the cells whose
 // numbers the marks left no room for.
@@ -289,6 +343,10 @@ struct PointMark {
     std::string role;
     Colour tickColour;
     std::function<void(Canvas&, glm::vec2)> draw;
+    // Never moved: a disk's points and the lookup point at its centre (poisson, pcss) are the
+    // figure itself; a point moved off them no longer lies on its ring (7.1's lookup point sat
+    // 30 px off its ring's centre). The numbers find room around them instead.
+    bool fixed = false;
     Rect rect() const { return {at.x - half, at.y - half, 2 * half, 2 * half}; }
 };
 
@@ -326,18 +384,38 @@ int planCellNumbers(Planner& pl, const InspectorModel& m, const Grid& g, CellMar
 
 // The read texels (each once, row by row) whose numbers `cells` did not draw whole.
 std::vector<glm::ivec2> texelsWithoutNumbers(const Trace& tr, const FramePlan& cells);
-// The texel table: one row per texel of `texels` with the numbers its cell shows at a size
-// where they fit (bit, own ref, depth, weight) and depth - ref, under a title (wrapped, never
-// cut; it gives the ref when every read compares with the same one, and the ref column goes)
-// and a column header, in the inspector panel from `top` down. texelTablePages: the pages it
-// takes; planTexelTable: page `page` of it (it lists the rows it draws in numberedTexels);
-// returns the y under its last row. noteAfter: pages follow the table's last (the formula's),
-// so its last page too keeps the room for the line that says so.
-int texelTablePages(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
-                    const std::vector<glm::ivec2>& texels, float top, bool noteAfter);
+// The formula as it follows the texel table (it goes on pages after it unless it fits under the
+// table's last lines): its pages on its own (0: it is with the cells, not after the table), and
+// whether it fits whole in the panel from a y down.
+struct FormulaAfter {
+    int pages = 0;
+    std::function<bool(float top)> fitsFrom;
+};
+// How the texel table is paged: in rows (one per texel, with bit, own ref, depth, depth - ref
+// and w) or in grids (each number of every texel laid out as the cells sit, the bits left to
+// the cells), whichever makes fewer parts; the first row or grid of each page; whether the
+// formula goes whole under the last page's lines, and where.
+struct TablePaging {
+    bool grids = false;
+    std::vector<size_t> starts{0};
+    bool formulaBelow = false;
+    float formulaTop = 0.0f;
+    int parts = 1;  // the table's pages, and the formula's after them unless formulaBelow
+    int pages() const { return static_cast<int>(starts.size()); }
+};
+// The texel table: the texels of `texels` with the numbers their cells show at a size where they
+// fit, under a title (wrapped, never cut; it gives the ref when every read compares with the
+// same one, and the ref column or grid goes), in the inspector panel from `top` down.
+// texelTablePaging: how it pages (bitTexels: the texels whose cells show their bit);
+// planTexelTable: page `page` of it (it lists the texels it draws whole in numberedTexels);
+// returns the y under its last line.
+TablePaging texelTablePaging(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
+                             const std::vector<glm::ivec2>& texels,
+                             const std::vector<glm::ivec2>& bitTexels, float top,
+                             const FormulaAfter& formula);
 float planTexelTable(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top, int page,
-                     bool noteAfter);
+                     const TypeSizes& t, const std::vector<glm::ivec2>& texels, float top,
+                     const TablePaging& paging, int page);
 
 // ---- inspector_subtexel.cpp: the hw8 inset. ----
 
@@ -360,6 +438,13 @@ void planThumbnail(Planner& pl, const InspectorLayout& l, const InspectorModel& 
                    const TypeSizes& t);
 void planStatus(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t);
 void planHelp(Planner& pl, const InspectorLayout& l, const TypeSizes& t);
+// inspector_predict.cpp: the step panel's text area `area` for a question (m.predict): the
+// question with its choices and what was typed, or, revealed, the answer above the step's words.
+void planPredict(Planner& pl, const InspectorModel& m, const TypeSizes& t, const Rect& area);
+// A number the frame hides (HiddenNumbers): "?" after its prefix ("w ?").
+inline std::string hiddenOr(bool hidden, const std::string& prefix, const std::string& shown) {
+    return prefix + (hidden ? std::string(HIDDEN_NUMBER) : shown);
+}
 
 // The step panel's margin and the top of what sits under the lesson title (the step text and
 // the thumbnail): one definition for inspectorLayout and planSteps.

@@ -1,5 +1,6 @@
 // inspector_scene.cpp: the scene panel's overlay: the picked pixel's ring and label, and the
-// shadow map's texel grid projected onto the receiver around it (the texels read tinted).
+// shadow map's texel grid projected onto the receiver around it (the texels read tinted: the
+// distinct texels of the trace's taps, exactly those).
 #include "overlay/inspector_plan.h"
 
 namespace pcf::inspector_detail {
@@ -48,48 +49,66 @@ struct TexelLookup {
 // Colour indices: colours[] in planTexelGrid.
 enum PixelKind { PIXEL_NONE, PIXEL_FOOTPRINT_EDGE, PIXEL_EDGE, PIXEL_FOOTPRINT };
 
+// The distinct texels the trace read (its taps'), in read order and sorted for look-ups: the
+// texels the scene tints. A nearest lookup reads one, a Poisson disk 16 scattered ones, never
+// the box around them.
+struct ReadTexels {
+    std::vector<glm::ivec2> inReadOrder;
+    std::vector<glm::ivec2> sorted;
+
+    static bool less(glm::ivec2 a, glm::ivec2 b) { return a.y != b.y ? a.y < b.y : a.x < b.x; }
+    explicit ReadTexels(const Trace& tr) {
+        for (const TapRecord& t : tr.taps) {
+            if (std::find(inReadOrder.begin(), inReadOrder.end(), t.texel) == inReadOrder.end()) {
+                inReadOrder.push_back(t.texel);
+            }
+        }
+        sorted = inReadOrder;
+        std::sort(sorted.begin(), sorted.end(), less);
+    }
+    bool has(glm::ivec2 tx) const {
+        return std::binary_search(sorted.begin(), sorted.end(), tx, less);
+    }
+};
+
 // The kind of each pixel of the box lo..hi (row-major), and the box of those with a kind.
 struct KindGrid {
     std::vector<uint8_t> kinds;
     glm::ivec2 used0, used1;
-    int footprintPixels = 0;  // pixels tinted as texels read
+    std::vector<glm::ivec2> tinted;  // the read texels that got a pixel, unordered
 };
 
-// Whether texel tx lies in the footprint n.
-bool inFootprintOf(const Neighbourhood& n, glm::ivec2 tx) {
-    return tx.x >= n.origin.x && tx.y >= n.origin.y && tx.x < n.origin.x + n.size.x &&
-           tx.y < n.origin.y + n.size.y;
-}
-
-// Whether pixel p's four neighbours all look up texels of the footprint n.
-bool footprintAround(const TexelLookup& look, const Neighbourhood& n, glm::ivec2 p) {
+// Whether pixel p's four neighbours all look up texels that were read.
+bool readAround(const TexelLookup& look, const ReadTexels& read, glm::ivec2 p) {
     const glm::ivec2 steps[] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
     for (glm::ivec2 d : steps) {
         glm::ivec2 tx;
-        if (!look.texelAt(p.x + d.x, p.y + d.y, tx) || !inFootprintOf(n, tx)) return false;
+        if (!look.texelAt(p.x + d.x, p.y + d.y, tx) || !read.has(tx)) return false;
     }
     return true;
 }
 
-KindGrid kindsAround(const TexelLookup& look, const Neighbourhood& n, glm::ivec2 lo, glm::ivec2 hi,
+KindGrid kindsAround(const TexelLookup& look, const ReadTexels& read, glm::ivec2 lo, glm::ivec2 hi,
                      bool drawEdges) {
     glm::ivec2 size = hi - lo + 1;
-    KindGrid g{std::vector<uint8_t>(static_cast<size_t>(size.x) * size.y, PIXEL_NONE), hi + 1,
-               lo - 1};
+    KindGrid g{
+        std::vector<uint8_t>(static_cast<size_t>(size.x) * size.y, PIXEL_NONE), hi + 1, lo - 1, {}};
     for (int y = lo.y; y <= hi.y; ++y) {
         for (int x = lo.x; x <= hi.x; ++x) {
             glm::ivec2 tx, left, up;
             if (!look.texelAt(x, y, tx)) continue;
-            bool inFootprint = inFootprintOf(n, tx);
+            bool isRead = read.has(tx);
             bool edge = drawEdges && ((look.texelAt(x - 1, y, left) && left != tx) ||
                                       (look.texelAt(x, y - 1, up) && up != tx));
-            // The footprint's outline is drawn at any texel size: where a texel spans two or
-            // three pixels, the tint alone is a faint smudge under the pick's ring.
-            if (inFootprint && !edge) edge = !footprintAround(look, n, {x, y});
-            PixelKind kind = edge ? (inFootprint ? PIXEL_FOOTPRINT_EDGE : PIXEL_EDGE)
-                                  : (inFootprint ? PIXEL_FOOTPRINT : PIXEL_NONE);
+            // The outline of the texels read is drawn at any texel size: where a texel spans two
+            // or three pixels, the tint alone is a faint smudge under the pick's ring.
+            if (isRead && !edge) edge = !readAround(look, read, {x, y});
+            PixelKind kind = edge ? (isRead ? PIXEL_FOOTPRINT_EDGE : PIXEL_EDGE)
+                                  : (isRead ? PIXEL_FOOTPRINT : PIXEL_NONE);
             if (kind == PIXEL_NONE) continue;
-            if (inFootprint) ++g.footprintPixels;
+            if (isRead && std::find(g.tinted.begin(), g.tinted.end(), tx) == g.tinted.end()) {
+                g.tinted.push_back(tx);
+            }
             g.kinds[static_cast<size_t>(y - lo.y) * size.x + (x - lo.x)] =
                 static_cast<uint8_t>(kind);
             g.used0 = glm::min(g.used0, glm::ivec2(x, y));
@@ -99,7 +118,7 @@ KindGrid kindsAround(const TexelLookup& look, const Neighbourhood& n, glm::ivec2
     return g;
 }
 
-// The texel grid's edges (where texels are large enough to see) and the footprint's tint
+// The texel grid's edges (where texels are large enough to see) and the tint of the texels read
 // around the picked pixel.
 void planTexelGrid(Planner& pl, const InspectorLayout& l, const InspectorModel& m) {
     glm::ivec2 region = m.lightSpaceSize;
@@ -107,25 +126,25 @@ void planTexelGrid(Planner& pl, const InspectorLayout& l, const InspectorModel& 
           m.lightSpace->size() == static_cast<size_t>(region.x) * region.y * 4)) {
         return;
     }
-    TexelLookup look{m, region, glm::vec2(m.trace->mapSize)};
+    TexelLookup look{m, region, glm::vec2(m.trace->map.size)};
     int radius = gridRadius(m.sceneSize);
     // How many screen pixels a texel spans here: the smaller of the row's and the column's.
     float texelPx = std::min(look.spanAlong({1, 0}, radius), look.spanAlong({0, 1}, radius));
     bool drawEdges = m.grid && texelPx >= GRID_MIN_TEXEL_PX;
     pl.plan.gridShown = drawEdges;
-    Neighbourhood n = neighbourhoodOf(*m.trace);
+    ReadTexels read(*m.trace);
     const Colour colours[] = {Colour{0.0f}, Colour{0.1f, 0.9f, 1.0f, 0.95f},
                               Colour{0.05f, 0.05f, 0.1f, 0.35f}, FOOTPRINT_TINT};
     // One picture over the box of pixels around the picked one that have a colour, each
     // pixel the colour of its kind, drawn as one quad: as thousands of 1-pixel-high runs of
     // rects it cost llvmpipe more per frame than the rest of the overlay (Canvas::image
     // blends each texel exactly as fillRect of that pixel did, so the frame's bytes are the
-    // same). Without the grid only the footprint's few texels are tinted: a small picture.
+    // same). Without the grid only the few texels read are tinted: a small picture.
     glm::ivec2 lo = glm::max(m.pixel - radius, glm::ivec2(0));
     glm::ivec2 hi = glm::min(m.pixel + radius, m.sceneSize - 1);
     if (hi.x < lo.x || hi.y < lo.y) return;
     glm::ivec2 size = hi - lo + 1;
-    KindGrid g = kindsAround(look, n, lo, hi, drawEdges);
+    KindGrid g = kindsAround(look, read, lo, hi, drawEdges);
     if (g.used1.x < g.used0.x || g.used1.y < g.used0.y) return;
     glm::ivec2 box = g.used1 - g.used0 + 1;
     std::vector<glm::vec4> pixels(static_cast<size_t>(box.x) * box.y);
@@ -136,7 +155,13 @@ void planTexelGrid(Planner& pl, const InspectorLayout& l, const InspectorModel& 
                 colours[g.kinds[static_cast<size_t>(q.y) * size.x + q.x]];
         }
     }
-    pl.plan.footprintShown = g.footprintPixels > 0;
+    // The texels tinted, in read order: what the frame JSON lists as drawn.scene_texels.
+    for (glm::ivec2 tx : read.inReadOrder) {
+        if (std::find(g.tinted.begin(), g.tinted.end(), tx) != g.tinted.end()) {
+            pl.plan.sceneTexels.push_back(tx);
+        }
+    }
+    pl.plan.footprintShown = !pl.plan.sceneTexels.empty();
     auto image = std::make_shared<const CanvasImage>(box, std::move(pixels));
     glm::ivec2 at = glm::ivec2(glm::round(l.scene.position())) + g.used0;
     pl.op([image, at](Canvas& c) { c.image(at, image); });

@@ -13,49 +13,92 @@ float stepsBodyTop(const InspectorLayout& l, const TypeSizes& t) {
 namespace {
 
 // Presentation: one header, where we are and what this step is about (the list would steal the
-// room the large text needs), then the step list's neighbours of this step. Returns the rect
-// left for the step's text.
-Rect planStepHeader(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                    const TypeSizes& t) {
+// room the large text needs), then the step list's neighbours of this step, one line at the
+// numbers' size (18 px at projector sizes): where the lesson came from, left, and where it goes,
+// right. When the step's text pages, its "more" mark takes the right of that line (the next
+// thing Right shows is the text's next page) and the text keeps every line of its area.
+struct StepHeader {
+    std::vector<std::string> title;  // at most two lines, the second elided
+    bool cut = false;
+    float y = 0.0f;       // the title's top
+    float listY = -1.0f;  // the neighbours' line (< 0: a lesson of one step has none)
+    float listPx = 0.0f;
+    // A revealed question's answer (app/predict.h) takes the neighbours' line where it fits
+    // there (the words keep their room).
+    bool answer = false;
+    Rect text;  // what is left for the step's text
+};
+
+StepHeader stepHeaderOf(const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t) {
+    const Rect& p = l.steps;
+    float margin = stepsMargin(l);
+    float width = p.w - 2 * margin;
+    StepHeader h;
+    h.y = p.y + margin * 0.7f;
+    int n = static_cast<int>(m.stepTitles.size());
+    std::string head = "Step " + std::to_string(m.currentStep + 1) + " of " + std::to_string(n) +
+                       ": " + (m.currentStep < n ? m.stepTitles[m.currentStep] : std::string());
+    h.title = wrapText(FontFace::Sans, t.body, head, width);
+    h.cut = h.title.size() > 2;
+    if (h.cut) {
+        std::string rest;
+        for (size_t k = 1; k < h.title.size(); ++k) rest += (k > 1 ? " " : "") + h.title[k];
+        h.title.resize(2);
+        h.title[1] = elideText(FontFace::Sans, t.body, rest, width);
+    }
+    float y = h.y + static_cast<float>(h.title.size()) * lineHeightOf(t.body);
+    h.listPx = std::max(t.numberFloor, t.label);
+    h.answer = m.predict.on && m.predict.revealed &&
+               measureText(FontFace::Sans, t.body, m.predict.answer).x <= width;
+    if (h.answer) {
+        y += lineHeightOf(t.body);
+    } else if (n > 1) {
+        h.listY = y;
+        y += lineHeightOf(h.listPx);
+    }
+    y += t.body * 0.4f;
+    h.text = {p.x + margin, y, width, p.bottom() - margin * 0.7f - y};
+    return h;
+}
+
+// The header as stepHeaderOf placed it; markWidth > 0: the text's "more" mark, that wide, takes
+// the right of the neighbours' line. While more pages follow, Right turns the page, so the next
+// step is not named there; on the last page it is, left of the mark.
+void planStepHeader(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                    const TypeSizes& t, const StepHeader& h, float markWidth, bool lastPage) {
     const Rect& p = l.steps;
     const std::string panel = "steps";
     float margin = stepsMargin(l);
     float width = p.w - 2 * margin;
-    float y = p.y + margin * 0.7f;
-    int n = static_cast<int>(m.stepTitles.size());
-    std::string head = "Step " + std::to_string(m.currentStep + 1) + " of " + std::to_string(n) +
-                       ": " + (m.currentStep < n ? m.stepTitles[m.currentStep] : std::string());
-    std::vector<std::string> lines = wrapText(FontFace::Sans, t.body, head, width);
-    bool cut = lines.size() > 2;
-    if (cut) {
-        std::string rest;
-        for (size_t k = 1; k < lines.size(); ++k) rest += (k > 1 ? " " : "") + lines[k];
-        lines.resize(2);
-        lines[1] = elideText(FontFace::Sans, t.body, rest, width);
-    }
-    for (const std::string& line : lines) {
+    float y = h.y;
+    for (const std::string& line : h.title) {
         pl.text({p.x + margin, y}, line, {FontFace::Sans, t.body, ACCENT}, BoxKind::Text, panel,
-                "step-title", cut);
+                "step-title", h.cut);
         y += lineHeightOf(t.body);
     }
-    // The step list's neighbours of this step, one line at the numbers' size (18 px at
-    // projector sizes): where the lesson came from, left, and where it goes, right.
-    float listPx = std::max(t.numberFloor, t.label);
+    if (h.answer) {
+        pl.text({p.x + margin, y}, m.predict.answer, {FontFace::Sans, t.body, ACCENT},
+                BoxKind::Text, panel, "predict-answer");
+        return;
+    }
+    if (h.listY < 0.0f) return;
+    int n = static_cast<int>(m.stepTitles.size());
     int k = m.currentStep;
     std::string prev = k > 0 ? "< " + std::to_string(k) + ". " + m.stepTitles[k - 1] : "";
     std::string next = k + 1 < n ? std::to_string(k + 2) + ". " + m.stepTitles[k + 1] + " >" : "";
-    float half = std::floor((width - listPx) / 2);
+    if (markWidth > 0.0f && !lastPage) next.clear();
+    // The line's room beside the mark, shared by the items it names.
+    float mark = markWidth > 0.0f ? markWidth + h.listPx : 0.0f;
+    float room = width - mark;
+    if (!prev.empty() && !next.empty()) room = std::floor((room - h.listPx) / 2);
     for (bool right : {false, true}) {
         const std::string& item = right ? next : prev;
         if (item.empty()) continue;
-        std::string shown = elideText(FontFace::Sans, listPx, item, half);
-        pl.text({right ? p.right() - margin : p.x + margin, y}, shown,
-                {FontFace::Sans, listPx, TEXT_DIM, right ? TextAlign::Right : TextAlign::Left},
+        std::string shown = elideText(FontFace::Sans, h.listPx, item, room);
+        pl.text({right ? p.right() - margin - mark : p.x + margin, h.listY}, shown,
+                {FontFace::Sans, h.listPx, TEXT_DIM, right ? TextAlign::Right : TextAlign::Left},
                 BoxKind::Text, panel, "step-list", shown != item);
     }
-    if (n > 1) y += lineHeightOf(listPx);
-    y += t.body * 0.4f;
-    return {p.x + margin, y, width, p.bottom() - margin * 0.7f - y};
 }
 
 // The step list's labels, "k. title": wrapped in the list's column of width listW, or each one
@@ -135,10 +178,41 @@ Rect planStepList(Planner& pl, const InspectorLayout& l, const InspectorModel& m
 
 void planSteps(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t) {
     const std::string panel = "steps";
-    Rect text = l.presentation ? planStepHeader(pl, l, m, t) : planStepList(pl, l, m, t);
-    FittedText f = fitText(m.stepText, FontFace::Sans, t.body, t.bodyFloor, text.w, text.h);
-    pl.plan.textPages = f.pages;
-    placeFitted(pl, f, text, m.textPage, FontFace::Sans, TEXT, panel, "step-text", pageKeys(m));
+    if (!l.presentation) {
+        Rect text = planStepList(pl, l, m, t);
+        if (m.predict.on) {
+            planPredict(pl, m, t, text);
+            pl.plan.stepTextPages = pl.plan.textPages;
+            return;
+        }
+        FittedText f = fitText(m.stepText, FontFace::Sans, t.body, t.bodyFloor, text.w, text.h);
+        pl.plan.textPages = pl.plan.stepTextPages = f.pages;
+        placeFitted(pl, f, text, m.textPage, FontFace::Sans, TEXT, panel, "step-text", pageKeys(m));
+        return;
+    }
+    StepHeader h = stepHeaderOf(l, m, t);
+    // A question, or an answer the header could not hold, in the text's room (app/predict.h).
+    if (m.predict.on && !h.answer) {
+        planStepHeader(pl, l, m, t, h, 0.0f, true);
+        planPredict(pl, m, t, h.text);
+        pl.plan.stepTextPages = pl.plan.textPages;
+        return;
+    }
+    bool headerMark = h.listY >= 0.0f;
+    FittedText f =
+        fitText(m.stepText, FontFace::Sans, t.body, t.bodyFloor, h.text.w, h.text.h, !headerMark);
+    pl.plan.textPages = pl.plan.stepTextPages = f.pages;
+    float markWidth = 0.0f;
+    if (f.pages > 1 && headerMark) {
+        markWidth =
+            measureText(FontFace::Sans, h.listPx, moreMarkText(f, m.textPage, pageKeys(m))).x;
+    }
+    planStepHeader(pl, l, m, t, h, markWidth, m.textPage + 1 >= f.pages);
+    std::optional<MarkPlace> mark;
+    if (headerMark)
+        mark = MarkPlace{{h.text.x, h.listY, h.text.w, lineHeightOf(h.listPx)}, h.listPx};
+    placeFitted(pl, f, h.text, m.textPage, FontFace::Sans, TEXT, panel, "step-text", pageKeys(m),
+                mark);
 }
 
 void planThumbnail(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
@@ -174,8 +248,9 @@ void planStatus(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
                 const TypeSizes& t) {
     const Rect& s = l.status;
     float pad = std::max(6.0f, 10.0f * l.scale);
-    std::string keys = "H: keys";
-    float kw = measureText(FontFace::Sans, t.status, keys).x;
+    // The window's hint only: a written frame has no H to press.
+    std::string keys = m.interactive ? "H: keys" : "";
+    float kw = keys.empty() ? 0.0f : measureText(FontFace::Sans, t.status, keys).x;
     float room = s.w - 3 * pad - kw;
     float size = t.status;
     while (size > t.labelFloor && measureText(FontFace::Mono, size, m.status).x > room) {
@@ -185,6 +260,7 @@ void planStatus(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
     float y = s.y + (s.h - lineHeightOf(size)) * 0.5f;
     pl.text({s.x + pad, y}, status, {FontFace::Mono, size, TEXT}, BoxKind::Text, "status", "status",
             status != m.status);
+    if (keys.empty()) return;
     float ky = s.y + (s.h - lineHeightOf(t.status)) * 0.5f;
     pl.text({s.right() - pad, ky}, keys, {FontFace::Sans, t.status, TEXT_DIM, TextAlign::Right},
             BoxKind::Text, "status", "keys-hint");

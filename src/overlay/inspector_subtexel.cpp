@@ -28,7 +28,7 @@ constexpr Colour ROUNDS_HERE{0.72f, 1.0f, 0.28f, 0.22f};  // positions that roun
 // it is a hardware tap or a gather, else the tap or gather nearest the lookup point (hw2x2's
 // one tap is the lookup point itself; pcf-gather's gathers sit on texel corners).
 vec2 unitPosition(const Trace& tr, int highlight) {
-    vec2 size(tr.mapSize);
+    vec2 size(tr.map.size);
     auto isUnit = [](const FetchRecord& f) {
         return f.kind == PCF_FETCH_HW || f.kind == PCF_FETCH_GATHER;
     };

@@ -1,5 +1,7 @@
 // inspector_text.cpp: text blocks that fit a box: wrapped, then set in smaller type down to a
 // floor, then paged (the step text, the notes, the formula).
+#include <limits>
+
 #include "overlay/inspector_plan.h"
 
 namespace pcf::inspector_detail {
@@ -308,10 +310,103 @@ std::vector<int> pageBreaks(std::vector<FitLine>& lines, int budget,
     return starts;
 }
 
+// ---- Pages that end where a sentence does. ----
+
+// A place a page may start: an offset into the (aligned) text, and how clean a cut it is there
+// (0: a paragraph, 1: a line of its own after a sentence or a table, 2: a sentence inside a
+// line).
+struct PageCut {
+    size_t at = 0;
+    int quality = 0;
+};
+
+// Whether the prose before `end` (exclusive) closes a sentence: '.', '?' or '!' (a closing
+// bracket or quote may follow), not an abbreviation's full stop ("e.g.").
+bool closesSentence(std::string_view line, size_t end) {
+    while (end > 0 && (line[end - 1] == ')' || line[end - 1] == '"')) --end;
+    if (end == 0) return false;
+    char c = line[end - 1];
+    if (c != '.' && c != '?' && c != '!') return false;
+    std::string_view before = line.substr(0, end);
+    for (std::string_view abbreviation : {"e.g.", "i.e.", "etc.", "vs."}) {
+        if (before.ends_with(abbreviation)) return false;
+    }
+    return true;
+}
+
+// Where pages may start: every paragraph; a line after a sentence's end or after a table (a
+// table stays with the line that introduces it: "... weigh:" and its rows are one); and every
+// sentence inside a prose line (outside code spans).
+std::vector<PageCut> pageCuts(std::string_view text) {
+    std::vector<PageCut> cuts{{0, 0}};
+    bool gap = false, afterTable = false, sentenceDone = false;
+    for (size_t start = 0; start <= text.size();) {
+        size_t end = std::min(text.find('\n', start), text.size());
+        std::string_view line = text.substr(start, end - start);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        if (line.find_first_not_of(" \t") == std::string_view::npos) {
+            gap = true;
+        } else {
+            bool pre = preformatted(line);
+            int quality = gap ? 0 : (sentenceDone || (afterTable && !pre)) ? 1 : -1;
+            if (start > 0 && quality >= 0) cuts.push_back({start, quality});
+            gap = false;
+            afterTable = pre;
+            sentenceDone = !pre && closesSentence(line, line.size());
+            bool code = false;
+            for (size_t k = 0; !pre && k + 1 < line.size(); ++k) {
+                if (line[k] == '`') code = !code;
+                if (!code && line[k + 1] == ' ' && closesSentence(line, k + 1)) {
+                    size_t next = line.find_first_not_of(' ', k + 1);
+                    if (next != std::string_view::npos) cuts.push_back({start + next, 2});
+                }
+            }
+        }
+        if (end == text.size()) break;
+        start = end + 1;
+    }
+    return cuts;
+}
+
+// Pages of at most `budget` lines that each start at a cut: the fewest pages; of those, none
+// holding a lone sentence where the text has more than one (it goes back to its neighbours), the
+// cleanest cuts and the most even pages. The lines of each page are wrapped from its cut, so no
+// page opens with the tail of a line. Empty when a sentence alone is longer than a page.
+std::vector<std::vector<FitLine>> sentencePages(
+    std::string_view text, int budget,
+    const std::function<std::vector<FitLine>(std::string_view)>& wrap) {
+    std::vector<PageCut> cuts = pageCuts(text);
+    const size_t n = cuts.size();
+    auto offset = [&](size_t k) { return k < n ? cuts[k].at : text.size(); };
+    constexpr double PAGE = 1e6, LONE = 1e4, ROUGH_CUT = 50.0;
+    std::vector<double> best(n + 1, std::numeric_limits<double>::infinity());
+    std::vector<size_t> from(n + 1, 0);
+    best[0] = 0.0;
+    for (size_t j = 1; j <= n; ++j) {
+        for (size_t i = j; i-- > 0;) {
+            if (!std::isfinite(best[i])) continue;
+            int lines =
+                static_cast<int>(wrap(text.substr(offset(i), offset(j) - offset(i))).size());
+            if (lines > budget) break;  // fewer cuts only add lines
+            double slack = budget - lines;
+            double cost = best[i] + PAGE + (j - i == 1 && n > 1 ? LONE : 0.0) +
+                          (j < n ? ROUGH_CUT * cuts[j].quality : 0.0) + slack * slack;
+            if (cost < best[j]) best[j] = cost, from[j] = i;
+        }
+    }
+    std::vector<std::vector<FitLine>> pages;
+    if (!std::isfinite(best[n])) return pages;
+    for (size_t j = n; j > 0; j = from[j]) {
+        pages.push_back(wrap(text.substr(offset(from[j]), offset(j) - offset(from[j]))));
+    }
+    std::reverse(pages.begin(), pages.end());
+    return pages;
+}
+
 }  // namespace
 
 FittedText fitText(std::string_view text, FontFace face, float start, float floor, float width,
-                   float height) {
+                   float height, bool markLine) {
     FittedText f;
     std::string aligned = alignTables(text);
     text = aligned;
@@ -333,14 +428,33 @@ FittedText fitText(std::string_view text, FontFace face, float start, float floo
     if (static_cast<int>(f.lines.size()) <= fitting) {
         f.pageStarts = {0};
     } else {
-        // One line of every page is the "more" mark's.
+        // One line of every page is the "more" mark's (unless it goes elsewhere). Prose pages end
+        // where a sentence does (sentencePages); a formula, or prose with a sentence longer than
+        // a page, where a line cuts no statement in two (pageBreaks).
+        int budget = std::max(1, fitting - (markLine ? 1 : 0));
         bool unused = false;
-        auto wrap = [&](const std::string& prose) {
-            std::vector<FitLine> out;
-            wrapProse(prose, face, f.size, width, out, unused);
-            return out;
-        };
-        f.pageStarts = pageBreaks(f.lines, std::max(1, fitting - 1), wrap);
+        std::vector<std::vector<FitLine>> pages;
+        if (face != FontFace::Mono) {
+            pages = sentencePages(text, budget, [&](std::string_view part) {
+                bool wide = false;
+                return wrapBlock(part, face, f.size, width, wide);
+            });
+        }
+        if (!pages.empty()) {
+            f.lines.clear();
+            f.pageStarts.clear();
+            for (std::vector<FitLine>& page : pages) {
+                f.pageStarts.push_back(static_cast<int>(f.lines.size()));
+                f.lines.insert(f.lines.end(), page.begin(), page.end());
+            }
+        } else {
+            auto wrap = [&](const std::string& prose) {
+                std::vector<FitLine> out;
+                wrapProse(prose, face, f.size, width, out, unused);
+                return out;
+            };
+            f.pageStarts = pageBreaks(f.lines, budget, wrap);
+        }
     }
     f.pages = static_cast<int>(f.pageStarts.size());
     return f;
@@ -393,17 +507,19 @@ float planFittedLine(Planner& pl, const FitLine& line, FontFace face, float size
 // The "more" mark of a paged block: which page this is of how many, and the key that turns it,
 // right-aligned at the area's bottom; `y`: below the page's last line.
 void planMoreMark(Planner& pl, const FittedText& f, const Rect& area, int page, float y,
-                  const std::string& panel, const std::string& moreHint) {
-    // Appended, not a chain of operator+ (GCC 12 warns falsely, -Wrestrict).
-    std::string more;
-    if (page + 1 < f.pages) more.append("more ").append(moreHint).append(" ");
-    more.append("(").append(std::to_string(page + 1)).append("/");
-    more.append(std::to_string(f.pages)).append(")");
-    float ms = std::max(10.0f, std::round(f.size * 0.85f));
+                  const std::string& panel, const std::string& moreHint,
+                  const std::optional<MarkPlace>& place) {
+    std::string more = moreMarkText(f, page, moreHint);
+    float ms = place ? place->size : std::max(10.0f, std::round(f.size * 0.85f));
     Rect r = pl.measure({area.right(), area.bottom() - lineHeightOf(ms)}, more,
                         {FontFace::Sans, ms, ACCENT, TextAlign::Right});
-    // The mark has the area's last line to itself (linesPerPage left it free).
-    r.y = std::max(r.y, y);
+    if (place) {
+        r = pl.measure({place->row.right(), place->row.y}, more,
+                       {FontFace::Sans, ms, ACCENT, TextAlign::Right});
+    } else {
+        // The mark has the area's last line to itself (fitText left it free).
+        r.y = std::max(r.y, y);
+    }
     pl.fill(r.expanded(2), Colour{0.35f, 0.78f, 0.98f, 0.18f});
     glm::vec2 at = r.position();
     pl.op([=](Canvas& cv) { cv.text(at, more, {FontFace::Sans, ms, ACCENT}); });
@@ -413,9 +529,21 @@ void planMoreMark(Planner& pl, const FittedText& f, const Rect& area, int page, 
 
 }  // namespace
 
+std::string moreMarkText(const FittedText& f, int page, const std::string& moreHint) {
+    page = std::clamp(page, 0, f.pages - 1);
+    // Appended, not a chain of operator+ (GCC 12 warns falsely, -Wrestrict).
+    std::string more;
+    if (page + 1 < f.pages) {
+        more.append("more ").append(moreHint).append(moreHint.empty() ? "" : " ");
+    }
+    more.append("(").append(std::to_string(page + 1)).append("/");
+    more.append(std::to_string(f.pages)).append(")");
+    return more;
+}
+
 float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, FontFace face,
                   const Colour& colour, const std::string& panel, const std::string& role,
-                  const std::string& moreHint) {
+                  const std::string& moreHint, const std::optional<MarkPlace>& mark) {
     page = std::clamp(page, 0, f.pages - 1);
     auto [first, last] = pageLineRange(f, page);
     float y = area.y;
@@ -430,7 +558,7 @@ float placeFitted(Planner& pl, const FittedText& f, const Rect& area, int page, 
     for (size_t k = first; k < last; ++k) {
         pl.plan.boxes.back().text.append(k > first ? "\n" : "").append(f.lines[k].text);
     }
-    if (f.pages > 1) planMoreMark(pl, f, area, page, y, panel, moreHint);
+    if (f.pages > 1) planMoreMark(pl, f, area, page, y, panel, moreHint, mark);
     return used;
 }
 

@@ -1,5 +1,7 @@
 #include "render/depth_readback.h"
 
+#include <algorithm>
+#include <stdexcept>
 #include <vector>
 
 #include "render/gl_objects.h"
@@ -7,12 +9,26 @@
 
 namespace pcf {
 
-ShadowMap readSampledDepth(GLuint texture, int width, int height, int fixedPointBits) {
+namespace {
+
+// A float target of as many channels as the map's texels.
+GLenum floatTargetFormat(int channels) {
+    static const GLenum FORMATS[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
+    return FORMATS[std::clamp(channels, 1, 4) - 1];
+}
+
+}  // namespace
+
+ShadowMap readSampledDepth(GLuint texture, const MapSpec& map) {
+    if (auto why = checkMapSpec(map)) throw std::invalid_argument(*why);
+    int width = map.size.x;
+    int height = map.size.y;
+    int channels = map.texel().channels;
     GlProgram program = buildProgram({
         ShaderStage{GL_VERTEX_SHADER, {"fullscreen.vert"}, "", {}},
         ShaderStage{GL_FRAGMENT_SHADER, {"depth_fetch.frag"}, "", {}},
     });
-    OffscreenTarget target = createOffscreenTarget(width, height, {GL_R32F});
+    OffscreenTarget target = createOffscreenTarget(width, height, {floatTargetFormat(channels)});
     GlVertexArray vao = createVertexArray();
     GlSampler nearest = createNearestSampler();
     GLint oldFramebuffer = 0;
@@ -36,16 +52,14 @@ ShadowMap readSampledDepth(GLuint texture, int width, int height, int fixedPoint
     glBindSampler(0, 0);
 
     // readPixelsFloat returns rows top-down; ShadowMap keeps GL row order.
-    std::vector<float> depths =
-        readPixelsFloat(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, width, height, 1);
-    flipRows(depths, static_cast<size_t>(width), static_cast<size_t>(height));
+    std::vector<float> texels =
+        readPixelsFloat(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, width, height, channels);
+    flipRows(texels, static_cast<size_t>(width) * channels, static_cast<size_t>(height));
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(oldFramebuffer));
     glViewport(oldViewport[0], oldViewport[1], oldViewport[2], oldViewport[3]);
     if (depthTest) glEnable(GL_DEPTH_TEST);
     if (blend) glEnable(GL_BLEND);
-    ShadowMap map(width, height, std::move(depths));
-    map.setFixedPointBits(fixedPointBits);
-    return map;
+    return ShadowMap(map, std::move(texels));
 }
 
 float unormDepthAsSampled(uint32_t k, int bits) {

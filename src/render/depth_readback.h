@@ -15,9 +15,10 @@
 
 namespace pcf {
 
-// The depths of `texture` (width x height, GL row order) as texelFetch returns them, tagged with
-// fixedPointBits (16, 24, or 0 for 32F). Needs a current OpenGL 4.5 context.
-ShadowMap readSampledDepth(GLuint texture, int width, int height, int fixedPointBits);
+// The texels of `texture`, a one-layer map of `map`'s size and texel kind (its depth, or its
+// moments: map.texel().channels floats each), as texelFetch returns them, GL row order, with
+// `map` as their spec. Needs a current OpenGL 4.5 context.
+ShadowMap readSampledDepth(GLuint texture, const MapSpec& map);
 
 // What llvmpipe's sampler makes of the stored integer k of a `bits`-bit unorm depth:
 // float(k) * float(1 / (2^bits - 1)), both factors and the product in single precision.

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "kernel/shadow_map.h"
+#include "render/render_settings.h"
 
 namespace pcf {
 
@@ -124,7 +125,10 @@ GlTexture createTexture2d(GLenum internalFormat, int width, int height) {
 }
 
 GlTexture createDepthTexture(const ShadowMap& map) {
-    GlTexture t = createTexture2d(GL_DEPTH_COMPONENT32F, map.width(), map.height());
+    if (!map.spec().texel().depth || map.layers() != 1) {
+        throw std::invalid_argument("createDepthTexture: the map is not one layer of depths");
+    }
+    GlTexture t = createTexture2d(glTexelFormat(map.spec().texels), map.width(), map.height());
     GLint unpackBuffer = 0;
     GLint alignment = 4;
     glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpackBuffer);

@@ -100,8 +100,9 @@ GlQuery createQuery(GLenum target);
 // GL_DEPTH_COMPONENT32F...), contents undefined, nearest filtering, clamped to the edge.
 GlTexture createTexture2d(GLenum internalFormat, int width, int height);
 
-// The shadow map as a GL_DEPTH_COMPONENT32F texture: depth(i, j) lands in GL texel (i, j),
-// so ShadowMap row 0 is GL texel row 0 (no flip).
+// A depth map as a texture of its texel kind (glTexelFormat: GL_DEPTH_COMPONENT16, 24 or 32F;
+// GL rounds the floats of a fixed-point kind to its integers): depth(i, j) lands in GL texel
+// (i, j), so ShadowMap row 0 is GL texel row 0 (no flip).
 GlTexture createDepthTexture(const ShadowMap& map);
 
 // The sampler behind pcf_prelude.h's uPcfCompare: hardware depth comparison (GL_LEQUAL),

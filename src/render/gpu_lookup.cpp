@@ -26,19 +26,11 @@ std::vector<float> GpuLookup::run(const ShadowMap& map, std::span<const glm::vec
     return read();
 }
 
-// The map is uploaded in its own format: 32F, or 16/24-bit when map.fixedPointBits() says so (GL
-// rounds the floats to integers); storedMap() then holds what the GPU compares with.
+// The map is uploaded in its own texel kind: 32F, or 16/24-bit (GL rounds the floats to
+// integers); storedMap() then holds what the GPU compares with.
 void GpuLookup::setMap(const ShadowMap& map) {
     mDepth = createDepthTexture(map);
-    if (map.isFixedPoint()) {
-        GLenum format = map.fixedPointBits() == 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24;
-        mDepth = createTexture2d(format, map.width(), map.height());
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTextureSubImage2D(mDepth.id(), 0, 0, 0, map.width(), map.height(), GL_DEPTH_COMPONENT,
-                            GL_FLOAT, map.depths().data());
-    }
-    mFixedPoint = map.isFixedPoint();
-    mStored = readSampledDepth(mDepth.id(), map.width(), map.height(), map.fixedPointBits());
+    mStored = readSampledDepth(mDepth.id(), map.spec());
 }
 
 void GpuLookup::setLookups(std::span<const glm::vec4> lookups, int width,
@@ -71,7 +63,8 @@ void GpuLookup::draw(const PcfParams& prm, bool rotatePerPixel, const PcfBias& b
         programs =
             mPrograms.try_emplace(bias.mode, "fullscreen.vert", "lookup.frag", defines).first;
     }
-    const PcfProgram& program = programs->second.get(pcfVariant(prm, rotatePerPixel, mFixedPoint));
+    const PcfProgram& program =
+        programs->second.get(pcfVariant(prm, rotatePerPixel, mStored.spec()));
     glUseProgram(program.id());
     setParamUniforms(program, prm, bias);
     drawOver(program.id());

@@ -23,8 +23,8 @@ class GpuLookup {
 
     // Visibility of each lookup (u, v, ref; w unused), filtered by the GPU with `prm`
     // (its rotation is ignored: rotate picks pcfTexelRotation of each lookup's uv).
-    // The map is uploaded in its own format: 32F, or 16/24-bit when map.fixedPointBits() says
-    // so (GL rounds the floats to integers); storedMap() then holds what the GPU compared with.
+    // The map is uploaded in its own texel kind (map.spec()): 32F, or 16/24-bit (GL rounds the
+    // floats to integers); storedMap() then holds what the GPU compared with.
     // Lookups fill a grid `width` wide, row by row from GL row 0; the result has the same order.
     // run() is these four in a row: setMap, setLookups, draw, read.
     std::vector<float> run(const ShadowMap& map, std::span<const glm::vec4> lookups, int width,
@@ -67,7 +67,6 @@ class GpuLookup {
     void drawOver(GLuint program);
 
     ShadowMap mStored;
-    bool mFixedPoint = false;
     // By bias mode (lookup.frag takes it as a define, PCF_LOOKUP_BIAS), made on first use.
     std::map<int, PcfProgramCache> mPrograms;
     // The reference passes by (file, N), made on first use.

@@ -44,6 +44,7 @@ std::string paramUniformsGlsl() {
         out += std::string("uniform ") + (isFloat ? "float " : "int ") + std::string(p.uniform) +
                ";\n";
     }
+    out += "uniform PcfMapLayer uPcfMapLayers[PCF_MAP_LAYERS];  // the map's layers (MapSpec)\n";
     out += "uniform float uPenumbraScale;  // pcss: texels of penumbra per unit of light depth\n";
     out += "uniform vec2 uPcssDepthRange;  // pcss: a spot map's near, far; 0: orthographic\n";
     out +=
@@ -147,11 +148,33 @@ PcfProgramCache::PcfProgramCache(std::string vertexFile, std::string fragmentFil
       mFragmentFile(std::move(fragmentFile)),
       mExtraDefines(std::move(extraDefines)) {}
 
-PcfVariant pcfVariant(const PcfParams& prm, bool rotatePerPixel, bool fixedPoint) {
-    int perspective = prm.method == PCF_PCSS && prm.depthNear > 0.0f ? 1 : 0;
-    return PcfVariant{prm.method,    prm.kernel,         prm.weights,
-                      prm.precision, fixedPoint ? 1 : 0, rotatePerPixel ? 1 : 0,
-                      perspective};
+PcfVariant pcfVariant(const PcfParams& prm, bool rotatePerPixel, const MapSpec& map) {
+    // depthNear first: an id outside the table (the dispatch's test) has none.
+    int perspective = prm.depthNear > 0.0f && methodInfo(prm.method).searchesBlockers ? 1 : 0;
+    PcfVariant v;
+    v.method = prm.method;
+    v.kernel = prm.kernel;
+    v.weights = prm.weights;
+    v.precision = prm.precision;
+    v.fixedPoint = map.texel().fixedPoint ? 1 : 0;
+    v.rotatePerPixel = rotatePerPixel ? 1 : 0;
+    v.perspective = perspective;
+    v.layers = static_cast<int>(map.layers.size());
+    return v;
+}
+
+void setMapUniforms(GLuint program, const MapSpec& map) {
+    for (size_t k = 0; k < map.layers.size(); ++k) {
+        const PcfMapLayer& layer = map.layers[k];
+        std::string at = "uPcfMapLayers[" + std::to_string(k) + "].";
+        glProgramUniformMatrix4fv(
+            program, glGetUniformLocation(program, (at + "shadowClipFromWorld").c_str()), 1,
+            GL_FALSE, &layer.shadowClipFromWorld[0][0]);
+        glProgramUniform2fv(program, glGetUniformLocation(program, (at + "depthRange").c_str()), 1,
+                            &layer.depthRange.x);
+        glProgramUniform1f(program, glGetUniformLocation(program, (at + "texelWs").c_str()),
+                           layer.texelWs);
+    }
 }
 
 std::string pcfVariantDefines(const PcfVariant& variant) {
@@ -162,7 +185,7 @@ std::string pcfVariantDefines(const PcfVariant& variant) {
            line("PCF_WEIGHTS", variant.weights) + line("PCF_PRECISION", variant.precision) +
            line("PCF_FIXED_POINT", variant.fixedPoint) +
            line("PCF_ROTATE_PER_PIXEL", variant.rotatePerPixel) +
-           line("PCF_PERSPECTIVE", variant.perspective);
+           line("PCF_PERSPECTIVE", variant.perspective) + line("PCF_MAP_LAYERS", variant.layers);
 }
 
 const PcfProgram& PcfProgramCache::get(const PcfVariant& variant) {

@@ -23,6 +23,7 @@ namespace pcf {
 //   PCF_FIXED_POINT             1 for a 16/24-bit depth map: D_ref clamped (mapFixedPoint)
 //   PCF_ROTATE_PER_PIXEL        1: poisson's disk turned per lookup, by its texel
 //   (pcfTexelRotation)
+//   PCF_MAP_LAYERS              the map's layers: the length of uPcfMapLayers
 struct PcfVariant {
     int method = 0;
     int kernel = 3;
@@ -31,24 +32,30 @@ struct PcfVariant {
     int fixedPoint = 0;
     int rotatePerPixel = 0;
     int perspective = 0;  // pcss under a spot: depth made linear (a uniform would cost every tap)
+    int layers = 1;
 
     auto key() const {
         return std::make_tuple(method, kernel, weights, precision, fixedPoint, rotatePerPixel,
-                               perspective);
+                               perspective, layers);
     }
     bool operator<(const PcfVariant& o) const { return key() < o.key(); }
 };
 
-// The variant that runs these parameters on a map of this kind.
-PcfVariant pcfVariant(const PcfParams& prm, bool rotatePerPixel, bool fixedPoint);
+// The variant that runs these parameters on this map (its texel kind and layer count).
+PcfVariant pcfVariant(const PcfParams& prm, bool rotatePerPixel, const MapSpec& map);
+
+// Sets the uniform array uPcfMapLayers of `program` (declared by paramUniformsGlsl, one entry
+// per layer, PcfMapLayer of shaders/shared/pcf_kernel.h) from the map's layers.
+void setMapUniforms(GLuint program, const MapSpec& map);
 
 // The "#define NAME VALUE" lines of a variant, in PcfVariant's order.
 std::string pcfVariantDefines(const PcfVariant& variant);
 
 // The GLSL a stage that filters gets from the parameter table (kernel/settings.h) and the
 // variant, between the kernel and the stage: a declaration of each table uniform (float for a
-// float parameter, int for the others) and of uPenumbraScale (pcss's light in the map, not a
-// setting), and the two structs the kernel filters with, built from the variant's defines, the
+// float parameter, int for the others), of the map's layers (uPcfMapLayers[PCF_MAP_LAYERS],
+// setMapUniforms) and of uPenumbraScale (pcss's light in the map, not a setting), and the two
+// structs the kernel filters with, built from the variant's defines, the
 // uniforms and what the stage gives:
 //   PcfParams pcfProgramParams(vec2 rotation)    PCF_METHOD, PCF_KERNEL, PCF_WEIGHTS, rotation,
 //                                                uPenumbraScale, and every PcfParams member the

@@ -23,6 +23,8 @@ struct RenderSettings : ShadowSettings {
     glm::ivec2 frameSize{1280, 720};
 };
 
-GLenum glDepthFormat(DepthFormat format);
+// The GL internal format a map of this texel kind is stored in (kernel/shadow_map.h TexelKind):
+// a depth format for depths, a 2- or 4-channel float colour format for moments.
+GLenum glTexelFormat(TexelKind kind);
 
 }  // namespace pcf

@@ -83,13 +83,19 @@ void SceneRenderer::setShadowClipFromWorld(const glm::mat4& shadowClipFromWorld)
     mShadowClipFromWorld = shadowClipFromWorld;
 }
 
-void SceneRenderer::ensureTargets(const RenderSettings& settings) {
-    if (mShadow.width != settings.mapSize || mShadowFormat != settings.depthFormat ||
-        !mShadow.framebuffer) {
-        mShadow = createOffscreenTarget(settings.mapSize, settings.mapSize, {},
-                                        glDepthFormat(settings.depthFormat));
-        mShadowFormat = settings.depthFormat;
+void SceneRenderer::ensureShadowTarget(const MapSpec& map) {
+    if (mShadow.framebuffer && mShadow.width == map.size.x && mShadow.height == map.size.y &&
+        mMap.texels == map.texels) {
+        return;
     }
+    if (map.layers.size() != 1) {
+        throw std::invalid_argument("the depth pass draws one layer, not " +
+                                    std::to_string(map.layers.size()));
+    }
+    mShadow = createOffscreenTarget(map.size.x, map.size.y, {}, glTexelFormat(map.texels));
+}
+
+void SceneRenderer::ensureTargets(const RenderSettings& settings) {
     size_t attachments = settings.writePositions ? 5 : 4;
     if (mFrame.width != settings.frameSize.x || mFrame.height != settings.frameSize.y ||
         !mFrame.framebuffer || mFrame.colors.size() != attachments) {
@@ -118,6 +124,9 @@ void SceneRenderer::drawObjects(GLuint program, bool castersOnly, bool setMateri
 }
 
 void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
+    MapSpec map = shadowMapSpec(mScene, settings, mShadowClipFromWorld);
+    ensureShadowTarget(map);
+    mMap = std::move(map);
     ensureTargets(settings);
     glBindFramebuffer(GL_FRAMEBUFFER, mShadow.framebuffer.id());
     glViewport(0, 0, mShadow.width, mShadow.height);
@@ -141,8 +150,9 @@ void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
     }
     GLuint program = mDepthProgram.id();
     glUseProgram(program);
+    const PcfMapLayer& layer = mMap.layers.front();
     glProgramUniformMatrix4fv(program, uniform(program, "uShadowClipFromWorld"), 1, GL_FALSE,
-                              &mShadowClipFromWorld[0][0]);
+                              &layer.shadowClipFromWorld[0][0]);
     drawObjects(program, true, false);
     if (offset) glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
@@ -188,17 +198,15 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
 
-    bool fixedPoint = depthFormatFixedPointBits(mShadowFormat) != 0;
     PcfParams prm = pcfParams(settings);
     const PcfProgram& pcfProgram =
-        programsFor(targets, settings.modeId()).get(pcfVariant(prm, settings.rotate, fixedPoint));
+        programsFor(targets, settings.modeId()).get(pcfVariant(prm, settings.rotate, mMap));
     GLuint program = pcfProgram.id();
     glUseProgram(program);
     glm::mat4 clip = clipFromWorld();
     glProgramUniformMatrix4fv(program, uniform(program, "uClipFromWorld"), 1, GL_FALSE,
                               &clip[0][0]);
-    glProgramUniformMatrix4fv(program, uniform(program, "uShadowClipFromWorld"), 1, GL_FALSE,
-                              &mShadowClipFromWorld[0][0]);
+    setMapUniforms(program, mMap);
     const Light& light = mScene.light;
     glm::vec3 dir = glm::normalize(light.directionWs);
     glProgramUniform3fv(program, uniform(program, "uLightDirWs"), 1, &dir.x);
@@ -206,8 +214,6 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform1f(program, uniform(program, "uSpotCosCone"),
                        std::cos(glm::radians(light.coneDeg)));
     setParamUniforms(pcfProgram, prm, settings.kernelBias(), &settings);
-    glProgramUniform1f(program, uniform(program, "uShadowTexelWs"),
-                       pcf::shadowTexelWs(mScene, settings.mapSize));
     // A lesson's pinned point (setPick); pixel -1, -1 matches no fragment.
     glm::ivec2 pickPixel = mPick ? mPick->pixelGl : glm::ivec2(-1);
     glm::vec4 pickLookup = mPick ? mPick->lookup : glm::vec4(0.0f);
@@ -223,7 +229,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
 }
 
 PcfParams SceneRenderer::pcfParams(const ShadowSettings& settings, vec2 rotation) const {
-    return pcssPcfParams(mScene.light, mShadowClipFromWorld, settings, rotation);
+    return pcssPcfParams(mScene.light, mMap.layers.front(), settings, rotation);
 }
 
 void SceneRenderer::render(const RenderSettings& settings) {
@@ -307,8 +313,7 @@ std::vector<float> SceneRenderer::readRegion(GLenum attachment, glm::ivec2 topLe
 
 // The map the sampler compares against (depth_readback.h), not glGetTextureImage's conversion.
 ShadowMap SceneRenderer::readShadowMap() const {
-    return readSampledDepth(mShadow.depth.id(), mShadow.width, mShadow.height,
-                            depthFormatFixedPointBits(mShadowFormat));
+    return readSampledDepth(mShadow.depth.id(), mMap);
 }
 
 }  // namespace pcf

@@ -23,6 +23,7 @@
 #include "render/pcf_programs.h"
 #include "render/render_settings.h"
 #include "scene/scene.h"
+#include "scene/shadow_fit.h"
 
 namespace pcf {
 
@@ -44,9 +45,10 @@ class SceneRenderer {
 
     // Both passes: shadow map, then the camera pass.
     void render(const RenderSettings& settings);
-    // The light's depth pass alone (re-created when size or format change).
+    // The light's depth pass alone: the map of shadowMapSpec (scene/shadow_fit.h) for these
+    // settings and the current fit (re-created when its size or texel kind change).
     void renderShadowPass(const RenderSettings& settings);
-    // The camera pass alone, reading the current shadow map.
+    // The camera pass alone, reading the current shadow map (its layers' fits: mapSpec()).
     void renderCameraPass(const RenderSettings& settings);
     // Median time of the camera pass over `repeats` draws (gpu_timer.h says which timer), drawn
     // the way an engine would: colour only, into an RGBA8 target of the frame's size, so the
@@ -65,11 +67,16 @@ class SceneRenderer {
     std::vector<float> readLightSpaceRegion(glm::ivec2 topLeft, glm::ivec2 size) const;
     // The receiver target's pixels, the same way.
     std::vector<float> readReceiverRegion(glm::ivec2 topLeft, glm::ivec2 size) const;
-    ShadowMap readShadowMap() const;  // GL row order
+    // The map the last depth pass made, its texels as the sampler reads them, GL row order.
+    ShadowMap readShadowMap() const;
+    // What the last depth pass made: size, texel kind, each layer's fit. The camera pass's
+    // uniforms, readShadowMap's spec and render.json's "map" all come from it.
+    const MapSpec& mapSpec() const { return mMap; }
 
     glm::ivec2 frameSize() const { return {mFrame.width, mFrame.height}; }
     GLuint frameFramebuffer() const { return mFrame.framebuffer.id(); }
     const Scene& scene() const { return mScene; }
+    // The fit the next depth pass uses (its layer's light clip from world).
     glm::mat4 shadowClipFromWorld() const { return mShadowClipFromWorld; }
     // The kernel's parameters the camera pass filters with: the settings', and pcss's
     // penumbraScale for this light and this shadow matrix (scene/pcss.h).
@@ -94,6 +101,8 @@ class SceneRenderer {
         GLsizei indexCount = 0;
     };
     void ensureTargets(const RenderSettings& settings);
+    // The depth target for `map` (re-created when its size or texel kind change).
+    void ensureShadowTarget(const MapSpec& map);
     std::vector<float> readRegion(GLenum attachment, glm::ivec2 topLeft, glm::ivec2 size) const;
     void drawObjects(GLuint program, bool castersOnly, bool setMaterial);
     // The camera pass into `target`, writing `targets` (scene.frag's PCF_ALL_TARGETS: 0 colour
@@ -112,7 +121,7 @@ class SceneRenderer {
     std::map<std::tuple<int, int, int>, PcfProgramCache> mPrograms;
     PcfSamplers mSamplers;
     OffscreenTarget mShadow;
-    DepthFormat mShadowFormat = DepthFormat::D32F;
+    MapSpec mMap;  // what the last depth pass made (the target's size and texel kind)
     OffscreenTarget mFrame;
     OffscreenTarget mTimingFrame;
 };

@@ -54,16 +54,15 @@ float penumbraScale(const Light& light, const glm::mat4& shadowClipFromWorld, in
     return 2.0f * std::tan(0.5f * theta) * depthUnitWs / texelWs;
 }
 
-PcfParams pcssPcfParams(const Light& light, const glm::mat4& shadowClipFromWorld,
-                        const ShadowSettings& s, vec2 rotation) {
-    float scale = s.method == PCF_PCSS
-                      ? penumbraScale(light, shadowClipFromWorld, s.mapSize, s.lightSize)
-                      : 0.0f;
+PcfParams pcssPcfParams(const Light& light, const PcfMapLayer& layer, const ShadowSettings& s,
+                        vec2 rotation) {
+    bool searches = methodInfo(s.method).searchesBlockers;
+    float scale =
+        searches ? penumbraScale(light, layer.shadowClipFromWorld, s.mapSize, s.lightSize) : 0.0f;
     PcfParams p = s.pcfParams(rotation, scale);
-    if (s.method == PCF_PCSS && light.type == LightType::Spot) {
-        glm::vec2 range = pcssDepthRange(shadowClipFromWorld);
-        p.depthNear = range.x;
-        p.depthFar = range.y;
+    if (searches && light.type == LightType::Spot) {
+        p.depthNear = layer.depthRange.x;
+        p.depthFar = layer.depthRange.y;
     }
     return p;
 }

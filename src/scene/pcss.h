@@ -41,8 +41,10 @@ float penumbraScale(const Light& light, const glm::mat4& shadowClipFromWorld, in
 // orthographic matrix: the kernel's depthNear, depthFar (pcf_kernel.h).
 glm::vec2 pcssDepthRange(const glm::mat4& shadowClipFromWorld);
 
-// The settings' kernel parameters, with pcss's penumbraScale for this light and map.
-PcfParams pcssPcfParams(const Light& light, const glm::mat4& shadowClipFromWorld,
-                        const ShadowSettings& s, vec2 rotation = vec2(1.0f, 0.0f));
+// The settings' kernel parameters, with what a blocker search (pcss) takes from the light and
+// the map's layer it reads (kernel/shadow_map.h): the penumbraScale for this light and the
+// layer's fit, and under a spot the layer's depth range (PcfMapLayer::depthRange).
+PcfParams pcssPcfParams(const Light& light, const PcfMapLayer& layer, const ShadowSettings& s,
+                        vec2 rotation = vec2(1.0f, 0.0f));
 
 }  // namespace pcf
