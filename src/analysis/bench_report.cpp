@@ -11,6 +11,7 @@
 #include "analysis/pareto.h"
 #include "base/input_error.h"
 #include "kernel/methods.h"
+#include "render/gpu_timer.h"
 
 namespace pcf {
 
@@ -44,7 +45,9 @@ std::string tableLine(const BenchRow& r, bool onFront) {
            (r.point.kernel > 0 ? std::to_string(r.point.kernel) : std::string("-")) + " | " +
            std::to_string(r.point.mapSize) + " | " + format("%.3f", r.gpuMs) + " | " +
            format("%.3f", r.gpuMsIqr) + " | " + format("%.3f", r.lookupMs) + " | " +
-           format("%.3f", r.lookupMsIqr) + " | " + format("%.1f", r.cpuNsPerPixel) + " | " +
+           format("%.3f", r.lookupMsIqr) + " | " + format("%.3f", r.gpuCpuMs) + " | " +
+           format("%.3f", r.gpuCpuMsIqr) + " | " + format("%.3f", r.lookupCpuMs) + " | " +
+           format("%.3f", r.lookupCpuMsIqr) + " | " + format("%.1f", r.cpuNsPerPixel) + " | " +
            std::to_string(r.texelReads) + " | " + format("%.4f", r.error.rmse) + " | " +
            format("%.4f", r.error.maxErr) + " | " + format("%.4f", r.error.edgeRmse) + " | " +
            format("%.4f", r.error.edgeMaxErr) + " | " + failurePercent(r.acne) + " | " +
@@ -72,7 +75,8 @@ std::string benchCsv(std::span<const BenchRow> rows) {
                format("%.4f", r.gpuCpuMs) + ',' + format("%.4f", r.lookupCpuMs) + ',' +
                csvWords(r.glRenderer) + g(r.contact.edgeRmse) + ',' +
                std::to_string(r.contact.edgePixels) + ',' + csvWords(r.truth) +
-               g(r.contactDistance) + '\n';
+               g(r.contactDistance) + ',' + format("%.4f", r.gpuCpuMsIqr) + ',' +
+               format("%.4f", r.lookupCpuMsIqr) + '\n';
     }
     return out;
 }
@@ -116,14 +120,17 @@ BenchRow parseBenchRow(const CsvFields& f) {
     if (f.size() == 32) return r;
     r.truth = f.text(32);
     r.contactDistance = f.measure(33);
+    if (f.size() == 34) return r;
+    r.gpuCpuMsIqr = f.measure(34);
+    r.lookupCpuMsIqr = f.measure(35);
     return r;
 }
 
 // The field count a header line promises, or 0 when it is not a bench.csv header.
 size_t fieldsOfHeader(const std::string& header) {
     for (std::string_view h :
-         {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V6, BENCH_CSV_HEADER_V5, BENCH_CSV_HEADER_V4,
-          BENCH_CSV_HEADER_V3, BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
+         {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V7, BENCH_CSV_HEADER_V6, BENCH_CSV_HEADER_V5,
+          BENCH_CSV_HEADER_V4, BENCH_CSV_HEADER_V3, BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
         if (header == h) return static_cast<size_t>(std::count(h.begin(), h.end(), ',')) + 1;
     }
     return 0;
@@ -159,11 +166,29 @@ std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& so
 
 std::string benchTruthKind(const BenchRow& row) { return row.truth.substr(0, row.truth.find(' ')); }
 
+bool benchTimesByCpu(const BenchRow& row) {
+    return isSoftwareRenderer(row.glRenderer) && row.gpuCpuMs > 0.0 && row.lookupCpuMs > 0.0;
+}
+
+double benchPassMs(const BenchRow& row, bool lookup) {
+    if (benchTimesByCpu(row)) return lookup ? row.lookupCpuMs : row.gpuCpuMs;
+    return lookup ? row.lookupMs : row.gpuMs;
+}
+
+double benchPassIqr(const BenchRow& row, bool lookup) {
+    if (benchTimesByCpu(row)) return lookup ? row.lookupCpuMsIqr : row.gpuCpuMsIqr;
+    return lookup ? row.lookupMsIqr : row.gpuMsIqr;
+}
+
+bool benchSpreadsOverlap(const BenchRow& a, const BenchRow& b, bool lookup) {
+    double aMs = benchPassMs(a, lookup), bMs = benchPassMs(b, lookup);
+    double reach = 0.5 * (benchPassIqr(a, lookup) + benchPassIqr(b, lookup));
+    return std::abs(aMs - bMs) <= reach;
+}
+
 std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows, bool byLookup) {
     std::vector<glm::dvec2> points;
-    for (const BenchRow& r : rows) {
-        points.emplace_back(byLookup ? r.lookupMs : r.gpuMs, r.error.edgeRmse);
-    }
+    for (const BenchRow& r : rows) points.emplace_back(benchPassMs(r, byLookup), r.error.edgeRmse);
     return paretoFront(points, PARETO_ERROR_TOLERANCE);
 }
 
@@ -252,14 +277,21 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
     std::vector<size_t> front = benchParetoFront(rows, setup.frontByLookup);
     std::set<size_t> onFront(front.begin(), front.end());
     md +=
-        "| method | N | map | scene ms | IQR | lookup ms | IQR | CPU ns/px | texel reads | RMSE | "
-        "max err | edge RMSE | edge max err | acne % | leak % | shimmer p99 | flicker % |\n";
-    md += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+        "| method | N | map | scene ms | IQR | lookup ms | IQR | scene CPU ms | IQR | lookup CPU "
+        "ms "
+        "| IQR | CPU ns/px | texel reads | RMSE | max err | edge RMSE | edge max err | acne % | "
+        "leak % | shimmer p99 | flicker % |\n";
+    md += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
     for (size_t k = 0; k < rows.size(); ++k) md += tableLine(rows[k], onFront.count(k) > 0);
+    bool cpu = !rows.empty() && std::all_of(rows.begin(), rows.end(), benchTimesByCpu);
     md += "\n`*` marks the Pareto front of " +
           std::string(setup.frontByLookup ? "lookup" : "scene") +
-          " time against edge RMSE, by median time: no other run beats it on both "
+          (cpu ? " process CPU time (the renderer is a CPU rasteriser: its work is the CPU's, "
+                 "which other processes do not stretch as they do the wall clock)"
+               : " time") +
+          " against edge RMSE, by the median: no other run beats it on both "
           "(where two runs' IQRs overlap, another run of the bench may order them the other way); "
+          "CPU ms are the passes' process CPU time, all threads (0: a GPU's own timer measured); "
           "`!` a noisy point (an IQR above 10 % of its median). "
           "Edge RMSE is the filter's aliasing error (the edge band, where the truth is partly "
           "lit); acne % is the share of the clean lit pixels (fully lit over the method's whole "

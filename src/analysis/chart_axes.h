@@ -31,7 +31,7 @@ constexpr float STANDALONE_CHART_MIN_PX = 14.0f;
 // Mesa's llvmpipe, a CPU rasteriser, " (LLVMPIPE_NOTE)", or with noteOwnLine "\nLLVMPIPE_NOTE"
 // (a narrow chart: a lesson frame's). An empty name: RENDERER_UNKNOWN.
 inline constexpr std::string_view LLVMPIPE_NOTE =
-    "llvmpipe: a CPU rasteriser; ratios carry over, milliseconds do not";
+    "llvmpipe: a CPU rasteriser; a GPU's times, and their ratios, differ";
 inline constexpr std::string_view RENDERER_UNKNOWN =
     "renderer not recorded (a file older than its gl_renderer column)";
 std::string chartRendererLine(const std::string& glRenderer, bool noteOwnLine = false);

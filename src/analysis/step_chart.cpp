@@ -49,6 +49,7 @@ SpeedChartText speedChartText(const StepChart& chart, const StepChartRef& ref,
     // Short: the title and the axis's name are not wrapped, and a lesson frame's chart is narrow.
     labels.title = contact ? "Accuracy near the contacts" : "Speed against accuracy";
     if (contact) labels.yLabel = contactAxisLabel(rows, true);
+    labels.xLabel = speedChartXLabel(rows, ChartTiming::Scene);
     // Which truth the errors are against (bench.csv's truth, when the file says), the renderer
     // (its gl_renderer) and, on llvmpipe, what carries over to a GPU.
     std::string truth = speedChartTruth(rows);

@@ -416,9 +416,7 @@ void writeCharts(const BenchPlan& plan, const std::vector<BenchRow>& rows, bool 
     text.subtitle = chartRendererLine(speedChartRenderer(rows)) + "\nmedian of " +
                     std::to_string(o.gpuRepeats) + " round-robin samples (" +
                     std::to_string(2 * o.gpuRepeats) + " where the first were noisy), " + timer;
-    text.xLabel = plan.timing == ChartTiming::Lookup
-                      ? "filter time: bare lookup pass, ms (log scale)"
-                      : "camera pass time, ms (log scale)";
+    text.xLabel = speedChartXLabel(rows, plan.timing);
     text.title = "Speed against accuracy" + indicative + ": " + where;
     text.yLabel = "aliasing: edge-band RMSE of visibility";
     writePngRgba8((staging / ACCURACY_CHART).string(), plan.chartSize.x, plan.chartSize.y,
