@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "kernel/settings.h"
@@ -183,6 +184,22 @@ void addStep(Steps& out, K kind, std::string text) {
     out.push_back({kind, stepTitle(kind), std::move(text)});
 }
 
+// The settings the kernel read under the trace's bias mode, with the values the kernel read:
+// the parameter table's rows that act under the mode and fill a member of PcfBias, as
+// "rpdb_max = 100 light depth per uv unit (--rpdb-max)", joined. A parameter added to the table
+// and the kernel is named here without a word of this file changed.
+std::string kernelBiasSettings(const Trace& tr) {
+    std::string out;
+    for (const ParamInfo& p : allParams()) {
+        const auto* member = std::get_if<float PcfBias::*>(&p.member);
+        if (member == nullptr || !paramActsUnder(p, tr.bias.bias)) continue;
+        out += (out.empty() ? "" : ", ") + std::string(p.key) + " = " +
+               num(tr.lookup.bias.*(*member)) + (p.unit.empty() ? "" : " ") + std::string(p.unit) +
+               " (" + settingFlag(p.key) + ")";
+    }
+    return out.empty() ? "no setting" : out;
+}
+
 // What the bias mode did to this lookup's ref, in words (kernel/bias.h has the formulas).
 std::string biasSentence(const Trace& tr) {
     const BiasSettings& b = tr.bias;
@@ -212,19 +229,18 @@ std::string biasSentence(const Trace& tr) {
               << " (the receiver's slope in the map; the renderer derives it from screen-space "
                  "derivatives), so each tap compares against "
                  "the plane's own depth where it reads: ref + dot(dz/duv, tap uv - uv).";
-            vec2 used = pcfClampDzDuv(tr.dzduv, b.rpdbMax);
-            if (used != tr.dzduv) {
-                s << " The slope is capped at " << num(b.rpdbMax)
-                  << " depth per uv unit (--rpdb-max), so the taps use dz/duv = " << pair(used)
-                  << ".";
-            }
+            vec2 used = tr.lookup.bias.dzduv;
+            s << " The kernel takes the slope with " << kernelBiasSettings(tr)
+              << ": the taps use dz/duv = " << pair(used)
+              << (used == tr.dzduv ? ", as given." : ".");
             break;
         }
         case BiasMode::Soft:
             s << "ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
               << ". Soft comparison (\"PCF Shadow Acne\" part 2): a tap is lit by "
                  "(depth > ref) * saturate((depth - ref) * "
-              << num(b.softScale) << "), so a texel just beyond ref counts only in part.";
+              << num(tr.lookup.bias.softScale)
+              << "), so a texel just beyond ref counts only in part.";
             break;
         case BiasMode::Interpolated:
             s << "ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
