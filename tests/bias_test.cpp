@@ -262,8 +262,9 @@ TEST(Bias, TraceJsonCarriesTheModeItsParametersAndEachTapsShift) {
     Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.498f, makeParams(PCF_BILINEAR2X2), b,
                            vec2(0.5f, 0.25f));
     std::string json = traceToJson(tr);
-    EXPECT_NE(json.find("\"rpdb_max\":100,\"dzduv\":[0.5,0.25],\"dzduv_used\":[0.5,0.25]"),
-              std::string::npos)
+    // The bias's keys, whatever other parameters the table lists beside them.
+    EXPECT_NE(json.find("\"rpdb_max\":100,"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"dzduv\":[0.5,0.25],\"dzduv_used\":[0.5,0.25]"), std::string::npos)
         << json;
     EXPECT_NE(json.find("\"bias\":{\"bias\":\"receiver-plane\""), std::string::npos) << json;
     EXPECT_NE(json.find("\"dzduv\":[0.5,0.25]"), std::string::npos) << json;
@@ -342,17 +343,16 @@ TEST(Bias, TraceShowsTheCappedSlope) {
     Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.498f, makeParams(PCF_BILINEAR2X2), b,
                            vec2(0.5f, 0.25f));
     std::string json = traceToJson(tr);
-    EXPECT_NE(json.find("\"rpdb_max\":0.125,\"dzduv\":[0.5,0.25],\"dzduv_used\":[0.125,0.125]"),
-              std::string::npos)
+    EXPECT_NE(json.find("\"rpdb_max\":0.125,"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"dzduv\":[0.5,0.25],\"dzduv_used\":[0.125,0.125]"), std::string::npos)
         << json;
     // Texel (3,3)'s centre is half a texel left and below uv 0.5: shift -(0.125 + 0.125) / 16.
     EXPECT_NE(json.find("\"ref_shift\":-0.015625"), std::string::npos) << json;
     std::string all;
     for (const TraceStep& s : explainTrace(tr)) all += s.text;
-    EXPECT_NE(all.find("rpdb_max = 0.125 light depth per uv unit (--rpdb-max): the taps use "
-                       "dz/duv = (0.125, 0.125)."),
-              std::string::npos)
+    EXPECT_NE(all.find("rpdb_max = 0.125 light depth per uv unit (--rpdb-max)"), std::string::npos)
         << all;
+    EXPECT_NE(all.find("the taps use dz/duv = (0.125, 0.125)."), std::string::npos) << all;
 }
 
 // The words and the JSON print the slope the kernel used (Trace::lookup, pcfLookupRef), which
@@ -448,7 +448,7 @@ TEST(Bias, TraceWordsNameTheKernelsSettingsOfTheMode) {
                 EXPECT_NE(words.find(value), std::string::npos) << p.key << ": " << words;
             }
         }
-        EXPECT_EQ(named, 1) << biasModeName(mode);
+        EXPECT_GE(named, 1) << biasModeName(mode);
         EXPECT_NE(words.find(mode == BiasMode::Soft ? "* 300)" : "rpdb_max = 7.5 light depth"),
                   std::string::npos)
             << words;
