@@ -130,8 +130,7 @@ void CompareView::follow(const Session& main) {
     const std::optional<ScenePoint>& point = main.point();
     for (int i = 0; i < parts(); ++i) {
         Session& p = *mParts[static_cast<size_t>(i)];
-        if (p.lesson().sourcePath != main.lesson().sourcePath)
-            p.loadLesson(main.lesson().sourcePath);
+        if (p.lesson().sourcePath != main.lesson().sourcePath) p.setLesson(main.lesson());
         if (p.step() != main.step()) p.goToStep(main.step());
         if (!sameLight(p.scene().light, main.scene().light)) p.setLight(main.scene().light);
         if (!sameCamera(p.scene().camera, main.scene().camera)) p.setCamera(main.scene().camera);

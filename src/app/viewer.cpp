@@ -46,10 +46,11 @@ std::string freeStem(const std::string& dir, const std::string& base) {
 
 class Viewer {
   public:
-    Viewer(const ViewerOptions& o, GlfwWindowContext& window)
+    // `lesson`: o.lesson as runViewer loaded and checked it.
+    Viewer(const ViewerOptions& o, GlfwWindowContext& window, Lesson lesson)
         : mWindow(window), mSession(window.framebufferSize(), o.presentation) {
         mLessons = builtInLessons();
-        mSession.loadLesson(o.lesson);
+        mSession.setLesson(std::move(lesson));
         mSession.setInteractive(true);  // the window's frames name its keys
         auto it = std::find(mLessons.begin(), mLessons.end(), o.lesson);
         mLessonIndex = it == mLessons.end() ? -1 : static_cast<int>(it - mLessons.begin());
@@ -425,7 +426,7 @@ int runViewer(const ViewerOptions& o) {
 
     std::unique_ptr<GlfwWindowContext> window =
         GlfwWindowContext::create(o.windowSize.x, o.windowSize.y, "pcfscope", true);
-    Viewer viewer(o, *window);
+    Viewer viewer(o, *window, std::move(lesson));
     InputBinding input(window->window(), viewer);
     for (const ScriptedInput& k : keys) {
         // As on screen, where every key lands on a composed frame: the step's pages are known,
