@@ -22,6 +22,7 @@
 #include "app/viewer_split.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "render/frame_ops.h"
 #include "render/glfw_window_context.h"
 #include "render/image_io.h"
 
@@ -348,10 +349,10 @@ void benchFrames(Session& session, GlfwWindowContext& window, int frames) {
                 session.setPixel(session.pixel() + glm::ivec2(k % 2 ? -1 : 1, 0));
             auto start = Clock::now();
             composeToWindow(session, window);
-            glFinish();
+            finishGpu();
             auto composed = Clock::now();
             window.swapBuffers();
-            glFinish();
+            finishGpu();
             auto end = Clock::now();
             frame.push_back(ms(start, end));
             compose.push_back(ms(start, composed));
@@ -397,7 +398,7 @@ void runInteractive(Viewer& viewer, GlfwWindowContext& window) {
     while (!glfwWindowShouldClose(window.window()) && !viewer.quit()) {
         auto start = std::chrono::steady_clock::now();
         viewer.split().composeInto(session, 0, window.framebufferSize());
-        glFinish();
+        finishGpu();
         double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();

@@ -8,6 +8,7 @@
 
 #include "overlay/flicker_trace.h"
 #include "overlay/inspector_plan.h"
+#include "render/frame_ops.h"
 
 namespace pcf {
 
@@ -258,19 +259,15 @@ void clearInspectorPanels(GLuint framebuffer, const InspectorLayout& l) {
     Panel* largest =
         std::max_element(std::begin(panels), std::end(panels),
                          [&](const Panel& a, const Panel& b) { return area(a) < area(b); });
-    GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
-    glDisable(GL_SCISSOR_TEST);
-    glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, &largest->colour.x);
-    glEnable(GL_SCISSOR_TEST);
+    clearColour(framebuffer, largest->colour);
     for (const Panel& p : panels) {
         if (&p == largest || p.rect->empty()) continue;  // a chart step has no inspector
         const Rect& r = *p.rect;
         int frameH = l.frameSize.y;
-        glScissor(static_cast<GLint>(r.x), frameH - static_cast<GLint>(r.bottom()),
-                  static_cast<GLsizei>(r.w), static_cast<GLsizei>(r.h));
-        glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, &p.colour.x);
+        int x = static_cast<int>(r.x), y = frameH - static_cast<int>(r.bottom());
+        clearColourRect(framebuffer, {x, y, x + static_cast<int>(r.w), y + static_cast<int>(r.h)},
+                        p.colour);
     }
-    if (!scissor) glDisable(GL_SCISSOR_TEST);
 }
 
 void drawInspectorTop(Canvas& c, const InspectorLayout& l, const InspectorModel& m) {
