@@ -91,7 +91,8 @@ SpeedChartText speedChartTextFor(std::span<const BenchRow> rows, const SpeedChar
     float width = std::max(16.0f, size.x - 2.0f * std::round(12.0f * s));
     out.subtitle.clear();
     std::string full = text.subtitle;
-    if (anyBar) full += (full.empty() ? "" : "; ") + spreadNote();
+    // The bars' meaning on a line of its own: a line break never splits it from its words.
+    if (anyBar) full += (full.empty() ? "" : "\n") + spreadNote();
     for (const std::string& line :
          wrapText(FontFace::Sans, fontsFor(s, text.minFontPx).subtitle, full, width)) {
         out.subtitle += (out.subtitle.empty() ? "" : "\n") + line;
