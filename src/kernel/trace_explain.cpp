@@ -184,10 +184,8 @@ void addStep(Steps& out, K kind, std::string text) {
     out.push_back({kind, stepTitle(kind), std::move(text)});
 }
 
-// The settings the kernel read under the trace's bias mode, with the values the kernel read:
-// the parameter table's rows that act under the mode and fill a member of PcfBias, as
-// "rpdb_max = 100 light depth per uv unit (--rpdb-max)", joined. A parameter added to the table
-// and the kernel is named here without a word of this file changed.
+// The table's rows that act under the mode and fill a PcfBias member, with the values the kernel
+// read: "rpdb_max = 100 light depth per uv unit (--rpdb-max)", joined (none named by hand here).
 std::string kernelBiasSettings(const Trace& tr) {
     std::string out;
     for (const ParamInfo& p : allParams()) {
@@ -222,25 +220,22 @@ std::string biasSentence(const Trace& tr) {
                  "depth less "
               << num(b.constantBias) << " gives ref = " << num(tr.ref) << " " << moved << ".";
             break;
-        case BiasMode::ReceiverPlane: {
+        case BiasMode::ReceiverPlane:
             s << "Receiver-plane bias: ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
               << " holds at uv only. The receiver's depth changes across the map by dz/duv = "
               << pair(tr.dzduv)
               << " (the receiver's slope in the map; the renderer derives it from screen-space "
-                 "derivatives), so each tap compares against "
-                 "the plane's own depth where it reads: ref + dot(dz/duv, tap uv - uv).";
-            vec2 used = tr.lookup.bias.dzduv;
-            s << " The kernel takes the slope with " << kernelBiasSettings(tr)
-              << ": the taps use dz/duv = " << pair(used)
-              << (used == tr.dzduv ? ", as given." : ".");
+                 "derivatives), so each tap compares against the plane's own depth where it "
+                 "reads: ref + dot(dz/duv, tap uv - uv).";
+            s << " The kernel takes the slope with " << kernelBiasSettings(tr) << ": the taps use "
+              << "dz/duv = " << pair(tr.lookup.bias.dzduv)
+              << (tr.lookup.bias.dzduv == tr.dzduv ? ", as given." : ".");
             break;
-        }
         case BiasMode::Soft:
             s << "ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
               << ". Soft comparison (\"PCF Shadow Acne\" part 2): a tap is lit by "
                  "(depth > ref) * saturate((depth - ref) * "
-              << num(tr.lookup.bias.softScale)
-              << "), so a texel just beyond ref counts only in part.";
+              << num(tr.lookup.bias.softScale) << "): a texel just beyond ref counts in part.";
             break;
         case BiasMode::Interpolated:
             s << "ref = z - " << num(b.constantBias) << " = " << num(tr.ref)

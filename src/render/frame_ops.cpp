@@ -4,8 +4,8 @@ namespace pcf {
 
 void blitColour(GLuint from, GlRect fromRect, GLuint to, GlRect toRect, bool linear) {
     glNamedFramebufferReadBuffer(from, GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(from, to, fromRect.x0, fromRect.y0, fromRect.x1, fromRect.y1,
-                           toRect.x0, toRect.y0, toRect.x1, toRect.y1, GL_COLOR_BUFFER_BIT,
+    glBlitNamedFramebuffer(from, to, fromRect.x0, fromRect.y0, fromRect.x1, fromRect.y1, toRect.x0,
+                           toRect.y0, toRect.x1, toRect.y1, GL_COLOR_BUFFER_BIT,
                            linear ? GL_LINEAR : GL_NEAREST);
 }
 
