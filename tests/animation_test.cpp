@@ -117,8 +117,8 @@ TEST(Animation, AStepsFlickerCurvesAreTheSameAtEverySize) {
     Lesson lesson = parseLessonFile(LESSON);
     const int step = static_cast<int>(lesson.steps.size()) - 1;
     const LessonSettings& s = lesson.steps[static_cast<size_t>(step)].settings;
-    FlickerCurves small = stepFlickerCurves(LESSON, step, s, {320, 180});
-    FlickerCurves large = stepFlickerCurves(LESSON, step, s, {960, 540});
+    FlickerCurves small = stepFlickerCurves(lesson, step, s, {320, 180});
+    FlickerCurves large = stepFlickerCurves(lesson, step, s, {960, 540});
     ASSERT_EQ(small.main.size(), 64u);
     EXPECT_EQ(small.main, large.main);
     EXPECT_EQ(small.compare, large.compare);
@@ -133,7 +133,7 @@ TEST(Animation, AStepsFlickerCurvesAreTheSameAtEverySize) {
     EXPECT_GT(largestJump(small.compare), 0.0f);
     EXPECT_LT(largestJump(small.compare), 0.5f);
     // A step that does not move has no curves.
-    EXPECT_TRUE(stepFlickerCurves(LESSON, 0, lesson.steps[0].settings).main.empty());
+    EXPECT_TRUE(stepFlickerCurves(lesson, 0, lesson.steps[0].settings).main.empty());
 }
 
 TEST(AnimateCommand, FramesAreTheSameBytesRunToRunAndVideosReadBack) {

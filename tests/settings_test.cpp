@@ -172,6 +172,20 @@ TEST(ParameterTable, TheBiasRowsAreTheFieldsTheKernelAndTheTraceTake) {
     EXPECT_GE(rows, 7);  // the mode and its six parameters, at least
 }
 
+// The modes a parameter acts under (biasModes): some for every bias parameter, none for the mode
+// itself and for every parameter that is no bias's; none acts under `none`.
+TEST(ParameterTable, EveryBiasParameterActsUnderTheModesItNames) {
+    for (const ParamInfo& p : allParams()) {
+        bool parameterOfBias = p.group == ParamGroup::Bias && p.key != "bias";
+        EXPECT_EQ(p.biasModes != 0, parameterOfBias) << p.key;
+        EXPECT_FALSE(paramActsUnder(p, BiasMode::None)) << p.key;
+        EXPECT_EQ(p.biasModes >> PCF_BIAS_COUNT, 0u) << p.key;
+    }
+    EXPECT_TRUE(paramActsUnder(*findParam("rpdb_max"), BiasMode::ReceiverPlane));
+    EXPECT_FALSE(paramActsUnder(*findParam("rpdb_max"), BiasMode::Soft));
+    EXPECT_TRUE(paramActsUnder(*findParam("constant_bias"), BiasMode::Interpolated));
+}
+
 // The uniforms reach the programs: tests/pcf_programs_test.cpp.
 TEST(ParameterTable, EveryUniformIsNamedForTheKernelMemberItFills) {
     int uniforms = 0;

@@ -12,6 +12,7 @@
 #include "analysis/stability.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
+#include "render/frame_ops.h"
 #include "render/gpu_lookup.h"
 #include "render/gpu_timer.h"
 #include "scene/light.h"
@@ -309,7 +310,7 @@ class BenchRun {
         PcfParams prm = mRenderer.pcfParams(s);  // pcss: the scene light's size in the map
         mLookupPass.draw(prm, s.rotate, s.kernelBias());
         if (mOptions.reference) mLookupPass.drawReference(prm);
-        glFinish();
+        finishGpu();
         row.cpuNsPerPixel = timeCpuKernel(map(mMaps, p.mapSize), mCpuLookups, prm,
                                           mOptions.cpuPasses, mOptions.cpuThreads)
                                 .nsPerPixel;
@@ -398,7 +399,7 @@ class BenchRun {
             if (p.mapSize != mCurrentMap) {
                 mRenderer.renderShadowPass(s);
                 mLookupPass.setMap(mMaps[p.mapSize]);
-                glFinish();
+                finishGpu();
                 mCurrentMap = p.mapSize;
             }
             timePoint(s, samples[k]);

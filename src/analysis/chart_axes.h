@@ -10,6 +10,7 @@
 
 #include "draw/canvas.h"
 #include "draw/rect.h"
+#include "render/frame_ops.h"
 #include "render/gl_objects.h"
 
 namespace pcf {
@@ -47,23 +48,17 @@ std::string chartTickText(double v, bool percent = false);
 // bindings are restored.
 template <class Paint>
 std::vector<uint8_t> drawChartOffscreen(glm::ivec2 size, Paint&& paint) {
-    GLint previousDraw = 0, previousRead = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDraw);
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousRead);
+    FramebufferBindingsKept kept;
     OffscreenTarget target = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
-    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, &CHART_WHITE.x);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer.id());
+    clearColour(target.framebuffer.id(), CHART_WHITE);
+    bindFramebuffer(target.framebuffer.id());
     {
         Canvas c;
         c.begin(size);
         paint(c);
         c.flush();
     }
-    std::vector<uint8_t> rgba =
-        readPixelsRgba8(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, size.x, size.y);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousDraw));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previousRead));
-    return rgba;
+    return readPixelsRgba8(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, size.x, size.y);
 }
 
 }  // namespace pcf

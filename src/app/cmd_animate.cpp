@@ -224,12 +224,12 @@ bool given(const AnimateOptions& o, const char* option) {
 // snap and rate; --frames and --fps still choose), any other step the light sweep. nullopt: the
 // options' own sweep.
 std::optional<AnimationOptions> stepsOwnSweep(AnimateOptions& o, const LessonStep& step,
-                                              const std::string& path, int compare) {
+                                              int compare) {
     if (!o.sweep.empty() || !step.animate) {
         if (o.sweep.empty()) o.sweep = "light";
         return std::nullopt;
     }
-    AnimationOptions ao = stepAnimationOptions(step, path, o.step);
+    AnimationOptions ao = stepAnimationOptions(step);
     o.sweep = std::string(animationSweepName(ao.sweep));
     if (given(o, "--frames")) ao.frames = o.frames;
     o.frames = ao.frames;
@@ -317,7 +317,7 @@ AnimatePlan planAnimate(AnimateOptions& o) {
     requireIntRange("--step", o.step, 1, static_cast<int>(p.lesson.steps.size()));
     const LessonStep& step = p.lesson.steps[static_cast<size_t>(o.step - 1)];
     int compare = compareMethodOf(o, step.settings);
-    std::optional<AnimationOptions> own = stepsOwnSweep(o, step, p.path, compare);
+    std::optional<AnimationOptions> own = stepsOwnSweep(o, step, compare);
     p.animation = own ? *own : animationOptions(o, *animationSweepFromName(o.sweep), compare);
     checkSweptStep(o, p.animation.sweep, step);
     p.split = splitSpecOf(o, step.settings);
@@ -345,7 +345,7 @@ int runAnimate(AnimateOptions o) {
     std::vector<VideoOut> videos = planVideos(outputs, o, size);
 
     Session session(size, o.presentation);
-    session.loadLesson(plan.path);
+    session.setLesson(plan.lesson);
     session.goToStep(o.step - 1);
     LessonSettings shown = session.settings();
     o.view.applyTo(shown, true);  // --shading, over the step's

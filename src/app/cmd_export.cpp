@@ -139,7 +139,7 @@ int runExport(const ExportOptions& o) {
     plan.magnify = o.magnify;
     planExtras(outputs, plan, lesson, {size, o.presentation}, o.compare);
     planDecks(outputs, plan, o, lesson.name, size);
-    exportFrames(path, plan, size, o.presentation, true, &outputs);
+    exportFrames(lesson, plan, size, o.presentation, true, &outputs);
     outputs.commit();
     return 0;
 }
@@ -258,9 +258,9 @@ namespace {
 // A step that is an animation (`animate = {...}`) as an MP4 at `path`: its frames as the viewer
 // plays them (app/animation.h), with the flicker trace; the session is put back afterwards.
 // Returns the frames written.
-int writeStepVideo(Session& session, const std::string& lessonPath, const std::string& path) {
+int writeStepVideo(Session& session, const std::string& path) {
     const LessonStep& step = session.lesson().steps[static_cast<size_t>(session.step())];
-    AnimationOptions ao = stepAnimationOptions(step, lessonPath, session.step() + 1);
+    AnimationOptions ao = stepAnimationOptions(step);
     glm::ivec2 size = session.frameSize();
     VideoWriter writer(path, VideoFormat::Mp4, size.x, size.y, step.animate->fps);
     session.setTextPage(0);
@@ -349,7 +349,7 @@ struct ExportRun {
 
 // Step `s`, gone to and composed: its frames (its pages; a predict step's question's, then its
 // answer's), its split view and its video, each on the deck in that order.
-void exportStep(ExportRun& run, const std::string& lessonPath, int s) {
+void exportStep(ExportRun& run, int s) {
     Session& session = run.session;
     glm::ivec2 size = session.frameSize();
     const std::string& stem = run.plan.stems[static_cast<size_t>(s - run.plan.steps.x)];
@@ -375,7 +375,7 @@ void exportStep(ExportRun& run, const std::string& lessonPath, int s) {
         ++run.extraFrames;
     }
     if (run.plan.videos && session.lesson().steps[static_cast<size_t>(s - 1)].animate) {
-        run.videoFrames += writeStepVideo(session, lessonPath, stem + ".mp4");
+        run.videoFrames += writeStepVideo(session, stem + ".mp4");
         run.writer.written[first].video = stem + ".mp4";
         if (run.progress) std::fprintf(stderr, "export: %s\n", (stem + ".mp4").c_str());
     }
@@ -392,11 +392,11 @@ void writeDecks(const ExportPlan& plan, const std::string& title,
 
 }  // namespace
 
-void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
-                  bool presentation, bool progress, OutputFiles* outputs) {
+void exportFrames(const Lesson& lesson, const ExportPlan& plan, glm::ivec2 size, bool presentation,
+                  bool progress, OutputFiles* outputs) {
     std::unique_ptr<GlContext> context = createHeadlessContext();
     Session session(size, presentation);
-    session.loadLesson(lessonPath);
+    session.setLesson(lesson);
     auto start = std::chrono::steady_clock::now();
     // A frame's PNG and JSON are written on a thread of their own while the next frame renders
     // (frame_files.h).
@@ -411,7 +411,7 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
         if (plan.magnify) magnifySession(session, wide);
         applyKeys(session, plan.keys);
         session.compose();
-        exportStep(run, lessonPath, s);
+        exportStep(run, s);
     }
     files.finish();
     writeDecks(plan, session.lesson().title, writer.written);

@@ -140,7 +140,7 @@ struct Checker {
         // `flickers`: the step's sweep played as the viewer plays it (loadLessonChecked refused
         // the claim on a step that does not move).
         world.flickerCurve = [&]() -> std::variant<std::vector<float>, std::string> {
-            return stepFlickerCurves(lesson.sourcePath, static_cast<int>(index), s).main;
+            return stepFlickerCurves(lesson, static_cast<int>(index), s).main;
         };
         // The words typed where a placeholder or a claim belongs (lesson_words.h), read against
         // the step's own state (after a key its words are withheld where a claim fails).
@@ -221,7 +221,7 @@ PageSize parsePageSize(const std::string& text) {
 // inspector's parts (the cells, the texel table, the formula) where those are more.
 void printPages(const Lesson& lesson, PageSize at) {
     Session session(at.size, at.presentation);
-    session.loadLesson(lesson.sourcePath);
+    session.setLesson(lesson);
     std::vector<int> pages;
     std::vector<std::string> parts;  // what makes them, where there are more than one
     for (int s = 0; s < session.stepCount(); ++s) {
@@ -249,7 +249,8 @@ int runLessonCheck(const LessonCheckOptions& o) {
     for (const std::string& p : o.pages) pageSizes.push_back(parsePageSize(p));
     std::string path = resolveLesson(o.file);
     // Every problem of the file, each on its line, before anything is checked on its numbers.
-    std::vector<InputError> problems = lessonProblems(path);
+    Lesson lesson;
+    std::vector<InputError> problems = lessonProblems(path, &lesson);
     if (problems.size() > 1) {
         for (const InputError& e : problems) {
             std::fprintf(stderr, "pcfscope: %s\n", oneLine(e.what()).c_str());
@@ -257,7 +258,7 @@ int runLessonCheck(const LessonCheckOptions& o) {
         return 2;
     }
     if (!problems.empty()) throw problems.front();
-    Lesson lesson = loadLessonChecked(path);
+    requireSteps(lesson, path);
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(lesson.scene);
     Checker checker{lesson, renderer};

@@ -276,18 +276,16 @@ RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) 
 // w into a multiply by 1 / w: an ulp or two of values of at most 1.
 constexpr float LOOKUP_SLACK = 1.0e-6f;
 
-// The bias render.json names, in words: "slope (constant_bias 0.002, slope_bias 0.001, ...)".
+// The bias render.json names, in words, with the parameters its lookups were made with: those
+// the table says act under the mode and the scene pass applies per lookup (no kernel member):
+// "slope (constant_bias 0.002, slope_bias 0.001, ...)".
 std::string biasWords(const ShadowSettings& s) {
     std::string words(biasModeName(s.bias));
     std::string params;
-    for (const char* key : {"constant_bias", "slope_bias", "slope_max", "normal_offset"}) {
-        bool used = s.bias != BiasMode::None &&
-                    (std::string_view(key) == "constant_bias" ||
-                     (s.bias == BiasMode::Slope && std::string_view(key).starts_with("slope")) ||
-                     (s.bias == BiasMode::Normal && std::string_view(key) == "normal_offset"));
-        if (used)
-            params += (params.empty() ? "" : ", ") + std::string(key) + " " +
-                      settingText(*findParam(key), s);
+    for (const ParamInfo& p : allParams()) {
+        if (!paramActsUnder(p, s.bias) || !std::holds_alternative<std::monostate>(p.member))
+            continue;
+        params += (params.empty() ? "" : ", ") + std::string(p.key) + " " + settingText(p, s);
     }
     return params.empty() ? words : words + " (" + params + ")";
 }

@@ -81,7 +81,7 @@ int runMainJob() {
     glm::ivec2 steps(1, static_cast<int>(lesson.steps.size()));
     OutputFiles outputs(false);
     ExportPlan plan = planExport(outputs, dir, lesson, steps);
-    exportFrames(lessons.front(), plan, {1600, 900}, false, true, &outputs);
+    exportFrames(lesson, plan, {1600, 900}, false, true, &outputs);
     outputs.commit();
     std::printf("No display: lesson '%s' exported as %d frames into %s/\n", lesson.title.c_str(),
                 steps.y, dir.c_str());

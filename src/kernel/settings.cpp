@@ -17,9 +17,12 @@ namespace {
 constexpr std::string_view TEXELS = "texels";
 constexpr std::string_view DEPTH_UNITS = "light depth units";
 
+// Every mode but none subtracts the constant bias (kernel/bias.h).
+constexpr unsigned BIASED_MODES = ((1u << PCF_BIAS_COUNT) - 1u) & ~biasModeBit(BiasMode::None);
+
 // The one parameter table (settings.h ParamInfo). Ranges are the named limits of methods.h and
 // this header, checked by paramRangeProblem; what depends on the method (tent's sizes) by
-// checkParams. The last `true` of a row, after its kernel member, is rawJsonMayLack.
+// checkParams. After a row's kernel member come rawJsonMayLack and the bias modes it acts under.
 // clang-format off
 const ParamInfo PARAMS[] = {
     {"method", NamedField<int>{&ShadowSettings::method, [](int m) { return methodInfo(m).name; },
@@ -60,23 +63,26 @@ const ParamInfo PARAMS[] = {
      {}, true},
     {"constant_bias", &ShadowSettings::constantBias, ParamGroup::Bias, "uConstantBias",
      DEPTH_UNITS, -1.0, 1.0, false,
-     "depth subtracted from z in light depth units (ref = z - B)", true},
+     "depth subtracted from z in light depth units (ref = z - B)", true, {}, false,
+     BIASED_MODES},
     {"slope_bias", &ShadowSettings::slopeBias, ParamGroup::Bias, "uSlopeBias",
      "light depth units per unit of tan(theta)", 0.0, 1.0, false,
-     "slope: S in ref = z - min(B + S * tan(theta), M)", true},
+     "slope: S in ref = z - min(B + S * tan(theta), M)", true, {}, false,
+     biasModeBit(BiasMode::Slope)},
     {"slope_max", &ShadowSettings::slopeMax, ParamGroup::Bias, "uSlopeMax", DEPTH_UNITS, 0.0, 1.0,
-     false, "slope: the cap M, light depth units", true},
+     false, "slope: the cap M, light depth units", true, {}, false, biasModeBit(BiasMode::Slope)},
     {"normal_offset", &ShadowSettings::normalOffset, ParamGroup::Bias, "uNormalOffset", TEXELS,
      0.0, 64.0, false,
-     "normal: K, texels the receiver moves along its normal (times sin(theta))", true, {}, true},
+     "normal: K, texels the receiver moves along its normal (times sin(theta))", true, {}, true,
+     biasModeBit(BiasMode::Normal)},
     {"soft_scale", &ShadowSettings::softScale, ParamGroup::Bias, "uSoftScale",
      "1 / light depth units", 1.0, 1.0e9, false,
      "soft: lit = (depth > ref) * saturate((depth - ref) * SCALE)", true, &PcfBias::softScale,
-     true},
+     true, biasModeBit(BiasMode::Soft)},
     {"rpdb_max", &ShadowSettings::rpdbMax, ParamGroup::Bias, "uRpdbMax",
      "light depth per uv unit", 0.0, 1.0e9, false,
      "receiver-plane: cap M on each component of dz/duv, light depth per uv unit (the whole map)",
-     true, &PcfBias::rpdbMax, true},
+     true, &PcfBias::rpdbMax, true, biasModeBit(BiasMode::ReceiverPlane)},
     {"cull", NamedField<CullMode>{&ShadowSettings::cull, cullModeName, cullModeFromName,
         [] { return std::string(CULL_MODE_NAMES); }, "cull mode"}, ParamGroup::Map, "", "", 0, 0,
      false, "faces culled in the shadow pass: back, front, none", false},

@@ -136,7 +136,18 @@ struct ParamInfo {
     // A rawJson parameter that render.json files written before it existed lack: `verify` then
     // takes its default (the value those folders were rendered with). The others are required.
     bool rawJsonMayLack = false;
+    // The bias modes this parameter acts under, one bit per mode (biasModeBit); 0 for the
+    // parameters that are no bias's. The trace's words, the status line and `verify` ask it
+    // which parameters a mode reads.
+    unsigned biasModes = 0;
 };
+
+// A bias mode's bit in ParamInfo::biasModes.
+constexpr unsigned biasModeBit(BiasMode mode) { return 1u << static_cast<unsigned>(mode); }
+// Whether parameter p acts under bias mode `mode` (its biasModes column).
+inline bool paramActsUnder(const ParamInfo& p, BiasMode mode) {
+    return (p.biasModes & biasModeBit(mode)) != 0;
+}
 
 // Every parameter, in the order the JSON sidecars write them.
 std::span<const ParamInfo> allParams();

@@ -89,6 +89,7 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
     tr.bias = bias;
     tr.dzduv = dzduv;
     tr.pos = pcfTexelPos(uv, map.size());
+    tr.lookup = pcfLookupRef(PcfRef(ref, uv, bias.kernelBias(dzduv)));
     Recording rec;
     tr.visibility = filterRecorded(map, uv, ref, prm, bias.kernelBias(dzduv), rec);
     tr.taps = std::move(rec.taps);
@@ -114,9 +115,8 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
             tr.footprint = pcfTentBase(uv, map.size());
             break;
         case Method::Pcss:
-            tr.pcss = pcfPcssEstimate(plainMap(map, prm), uv,
-                                      pcfLookupRef(PcfRef(ref, uv, bias.kernelBias(dzduv))),
-                                      prm.penumbraScale, prm.depthNear, prm.depthFar, prm.rotation);
+            tr.pcss = pcfPcssEstimate(plainMap(map, prm), uv, tr.lookup, prm.penumbraScale,
+                                      prm.depthNear, prm.depthFar, prm.rotation);
             break;
         case Method::Nearest:
         case Method::Box2x2:

@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -29,6 +30,9 @@
 namespace pcf {
 
 namespace {
+
+// lessonParseCount's count.
+std::atomic<long> gLessonParses{0};
 
 // The keys a [settings] table and a [[step]] may set besides the parameter table's: the view's
 // (`pixel` only to be refused with what to write instead).
@@ -81,6 +85,7 @@ class LessonParser {
     }
 
     Lesson parse() {
+        ++gLessonParses;
         toml::table root;
         try {
             root = toml::parse(mText, mSource);
@@ -121,12 +126,16 @@ class LessonParser {
                        "focus", "animate", "compare", "predict"});
             applySettings(table, what, state, lines);
             lesson.steps.push_back(readStep(table, what, state, lines));
-            // The step's own focus, else the lesson's (checked by the app: overlay/inspector.h).
+            // The step's own focus, else the lesson's (lesson_focus.h).
             const toml::table& owner = table.get("focus") ? table : root;
             if (const toml::node* f = owner.get("focus")) {
                 attempt([&] {
-                    lesson.steps.back().focus = requireText(owner, "focus", what, owner);
+                    std::string name = requireText(owner, "focus", what, owner);
                     lesson.steps.back().focusLine = lineOf(*f);
+                    lesson.steps.back().focus = parseFocus(name);
+                    if (!lesson.steps.back().focus) {
+                        fail(*f, what + " focus '" + name + "' is not one of: " + focusNames());
+                    }
                 });
             }
         }
@@ -358,7 +367,14 @@ class LessonParser {
         }
         StepAnimation anim;
         anim.line = lineOf(*node);
-        anim.sweep = requireText(*a, "sweep", where, *a);
+        std::string sweep = requireText(*a, "sweep", where, *a);
+        std::optional<AnimationSweep> known = animationSweepFromName(sweep);
+        if (!known) {
+            fail(*node, where + " sweep '" + sweep +
+                            "' is not one of: " + std::string(ANIMATION_SWEEP_NAMES));
+        }
+        anim.sweep = *known;
+        if (!step.chart.empty()) fail(*node, where + ": a chart step cannot move");
         auto integer = [&](const char* key, int lo, int hi, int& out) {
             const toml::node* n = a->get(key);
             if (!n) return;
@@ -373,7 +389,9 @@ class LessonParser {
         integer("fps", 1, 60, anim.fps);
         for (const char* key : {"from", "to"}) {
             if (const toml::node* n = a->get(key)) {
-                (key[0] == 'f' ? anim.from : anim.to) = number(*n, where + " " + key);
+                double v = number(*n, where + " " + key);
+                if (auto why = animationEndProblem(anim.sweep, v)) fail(*node, where + *why);
+                (key[0] == 'f' ? anim.from : anim.to) = v;
             }
         }
         if (const toml::node* n = a->get("snap")) {
@@ -766,6 +784,8 @@ PcfParams LessonSettings::pcfParams(glm::vec2 uv, int mapSizeTexels, float penum
     if (rotate) rotation = pcfTexelRotation(uv, ivec2(mapSizeTexels));
     return ShadowSettings::pcfParams(rotation, penumbraScale);
 }
+
+long lessonParseCount() { return gLessonParses.load(); }
 
 Lesson parseLessonFile(const std::string& path) {
     return parseLessonString(readInputFile(path), path);
