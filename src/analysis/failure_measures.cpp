@@ -285,4 +285,24 @@ std::vector<uint8_t> nearContactMask(const Scene& scene,
     return out;
 }
 
+CasterDistances casterDistances(const Scene& scene, const GroundTruth& truth,
+                                const ErrorRegions& regions,
+                                const std::vector<std::optional<Hit>>& hits,
+                                const glm::mat4& shadowClip, int mapSize) {
+    CasterDistances d;
+    d.world.assign(truth.pixelCount(), 0.0f);
+    d.texels.assign(truth.pixelCount(), 0.0f);
+    float size = static_cast<float>(mapSize);
+    for (size_t k = 0; k < d.world.size(); ++k) {
+        if (!regions.compared[k] || truth.visibility[k] > 0.0f || !hits[k]) continue;
+        glm::vec3 p = hits[k]->posWs;
+        std::optional<glm::vec3> q = nearestCasterPoint(scene, p);
+        if (!q) continue;
+        d.world[k] = glm::length(p - *q);
+        d.texels[k] =
+            glm::length(shadowCoord(shadowClip, p).uvSm - shadowCoord(shadowClip, *q).uvSm) * size;
+    }
+    return d;
+}
+
 }  // namespace pcf
