@@ -49,12 +49,10 @@ class AdviseGl : public ::testing::Test {
     // 5 filters x 4 map sizes x 3 biases: 60 settings.
     static AdviseSpace space() {
         AdviseSpace s;
-        s.filters = {{PCF_NEAREST, 0}, {PCF_HW2X2, 0}, {PCF_GATHER, 3}, {PCF_TENT, 3},
-                     {PCF_GATHER, 5}};
+        s.filters = {
+            {PCF_NEAREST, 0}, {PCF_HW2X2, 0}, {PCF_GATHER, 3}, {PCF_TENT, 3}, {PCF_GATHER, 5}};
         s.mapSizes = {128, 256, 512, 1024};
-        s.biases = {{BiasMode::None, 0.0f},
-                    {BiasMode::Constant, 0.002f},
-                    {BiasMode::Normal, 1.5f}};
+        s.biases = {{BiasMode::None, 0.0f}, {BiasMode::Constant, 0.002f}, {BiasMode::Normal, 1.5f}};
         return s;
     }
     // Stable edges and a bounded shimmer: a hard filter's p99 jump of 1 breaks it at any size.
@@ -162,8 +160,7 @@ TEST_F(AdviseGl, TheChartDrawsTheBudgetAndLabelsWhatEachBreaks) {
             // On the budget's good side: below the line (y grows downward).
             EXPECT_GE(o.chart.points[k].y, o.budgetY);
         } else {
-            EXPECT_NE(o.labels[k].find(adviseConstraintName(c.broken.front())),
-                      std::string::npos);
+            EXPECT_NE(o.labels[k].find(adviseConstraintName(c.broken.front())), std::string::npos);
             EXPECT_FALSE(o.labelBoxes[k].empty());
         }
     }

@@ -18,9 +18,9 @@ namespace {
 // A space of 9 filters, 4 map sizes and 4 biases.
 AdviseSpace syntheticSpace() {
     AdviseSpace s;
-    s.filters = {{PCF_NEAREST, 0}, {PCF_HW2X2, 0},  {PCF_GATHER, 3}, {PCF_GATHER, 5},
-                 {PCF_GATHER, 7},  {PCF_TENT, 3},   {PCF_TENT, 5},   {PCF_TENT, 7},
-                 {PCF_GATHER, 3, PCF_WEIGHTS_BINOMIAL}};
+    s.filters = {{PCF_NEAREST, 0}, {PCF_HW2X2, 0},  {PCF_GATHER, 3},
+                 {PCF_GATHER, 5},  {PCF_GATHER, 7}, {PCF_TENT, 3},
+                 {PCF_TENT, 5},    {PCF_TENT, 7},   {PCF_GATHER, 3, PCF_WEIGHTS_BINOMIAL}};
     s.mapSizes = {256, 512, 1024, 2048};
     s.biases = {{BiasMode::None, 0.0f},
                 {BiasMode::Constant, 0.001f},

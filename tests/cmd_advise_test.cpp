@@ -66,9 +66,9 @@ TEST_F(AdviseCommand, WritesTheChoiceItsReasonsAndEveryMeasuredSetting) {
     EXPECT_LE(choice["metrics"]["edge_rmse"].number, 0.1);
     EXPECT_LE(choice["metrics"]["shimmer_p99"].number, 0.5);
     EXPECT_NE(toml.find("method = \"" + choice["method"].string + "\""), std::string::npos);
-    EXPECT_NE(toml.find("map_size = " + std::to_string(static_cast<int>(
-                                            choice["map_size"].number))),
-              std::string::npos);
+    EXPECT_NE(
+        toml.find("map_size = " + std::to_string(static_cast<int>(choice["map_size"].number))),
+        std::string::npos);
     // nearest, hw2x2 and pcf-gather 3 at two maps: 6 settings.
     EXPECT_EQ(json["grid_size"].number, 6);
     size_t measured = json["candidates"].size();

@@ -131,8 +131,7 @@ void checkSearchInput(const AdviseSpace& space, const AdviseBudget& budget) {
         throw std::invalid_argument("advise: no filter, map size or bias to choose from");
     }
     if (!std::is_sorted(space.mapSizes.begin(), space.mapSizes.end()) ||
-        std::adjacent_find(space.mapSizes.begin(), space.mapSizes.end()) !=
-            space.mapSizes.end()) {
+        std::adjacent_find(space.mapSizes.begin(), space.mapSizes.end()) != space.mapSizes.end()) {
         throw std::invalid_argument("advise: the map sizes must ascend");
     }
     for (AdviseConstraint c : ALL_ADVISE_CONSTRAINTS) {
@@ -151,8 +150,7 @@ bool breaks(const AdviseCandidate& c, AdviseConstraint k) {
 // The walk over the grid (advise.h's rules), measuring through the callback.
 class AdviseSearch {
   public:
-    AdviseSearch(const AdviseSpace& space, const AdviseBudget& budget,
-                 const AdviseMeasure& measure)
+    AdviseSearch(const AdviseSpace& space, const AdviseBudget& budget, const AdviseMeasure& measure)
         : mSpace(space), mBudget(budget), mMeasure(measure) {}
 
     std::vector<AdviseCandidate> run() {
@@ -369,9 +367,11 @@ namespace {
 const AdviseCandidate* smallerMap(const AdviseResult& r, const AdviseCandidate& choice) {
     const AdviseCandidate* found = nullptr;
     for (const AdviseCandidate& c : r.measured) {
-        if (c.setting.filter == choice.setting.filter && c.setting.mapSize < choice.setting.mapSize &&
+        if (c.setting.filter == choice.setting.filter &&
+            c.setting.mapSize < choice.setting.mapSize &&
             (!found || c.setting.mapSize > found->setting.mapSize ||
-             (c.setting.mapSize == found->setting.mapSize && c.setting.bias == choice.setting.bias))) {
+             (c.setting.mapSize == found->setting.mapSize &&
+              c.setting.bias == choice.setting.bias))) {
             found = &c;
         }
     }

@@ -65,22 +65,22 @@ std::vector<BenchRow> adviseChartRows(const AdviseResult& result,
 }
 
 bool adviseBudgetLineShown(const AdviseResult& result, const AdviseBudget& budget) {
-    return std::any_of(result.measured.begin(), result.measured.end(), [&](const auto& c) {
-        return c.metrics.edgeRmse >= budget.maxEdgeRmse;
-    });
+    return std::any_of(result.measured.begin(), result.measured.end(),
+                       [&](const auto& c) { return c.metrics.edgeRmse >= budget.maxEdgeRmse; });
 }
 
 SpeedChartText adviseChartText(const AdviseResult& result, const AdviseBudget& budget,
                                const std::string& title, const std::string& glRenderer) {
     SpeedChartText text;
     text.title = title;
-    text.subtitle = chartRendererLine(glRenderer) +
-                    "\ngreen ring: meets the whole budget; orange ring: the choice; the words beside a "
-                    "dot: the budgets it breaks; " +
-                    (adviseBudgetLineShown(result, budget)
-                         ? std::string("dashed: the edge-RMSE budget, ")
-                         : std::string("every dot is within the edge-RMSE budget, ")) +
-                    chartTickText(budget.maxEdgeRmse);
+    text.subtitle =
+        chartRendererLine(glRenderer) +
+        "\ngreen ring: meets the whole budget; orange ring: the choice; the words beside a "
+        "dot: the budgets it breaks; " +
+        (adviseBudgetLineShown(result, budget)
+             ? std::string("dashed: the edge-RMSE budget, ")
+             : std::string("every dot is within the edge-RMSE budget, ")) +
+        chartTickText(budget.maxEdgeRmse);
     text.xLabel = "lookup pass, process CPU time, ms (log scale)";
     text.yLabel = "edge-band RMSE of visibility";
     text.minFontPx = STANDALONE_CHART_MIN_PX;
@@ -92,9 +92,8 @@ AdviseChartOverlay layoutAdviseChart(const AdviseResult& result, const std::vect
                                      const AdviseBudget& budget, glm::ivec2 size,
                                      const std::string& title, const std::string& glRenderer) {
     std::vector<BenchRow> chartRows = adviseChartRows(result, rows);
-    SpeedChartText text =
-        speedChartTextFor(chartRows, adviseChartText(result, budget, title, glRenderer), size,
-                          ChartTiming::Lookup);
+    SpeedChartText text = speedChartTextFor(
+        chartRows, adviseChartText(result, budget, title, glRenderer), size, ChartTiming::Lookup);
     AdviseChartOverlay o;
     o.chart = layoutSpeedChart(chartRows, size, ChartTiming::Lookup, ChartAccuracy::EdgeRmse,
                                text.highlight, text.minFontPx, text.keptLabelsOnly,
@@ -127,15 +126,15 @@ std::vector<uint8_t> drawAdviseChart(const AdviseResult& result, const std::vect
                                      const AdviseBudget& budget, glm::ivec2 size,
                                      const std::string& title, const std::string& glRenderer) {
     std::vector<BenchRow> chartRows = adviseChartRows(result, rows);
-    std::vector<uint8_t> base = drawSpeedChart(chartRows, size,
-                                               adviseChartText(result, budget, title, glRenderer),
-                                               ChartTiming::Lookup, ChartAccuracy::EdgeRmse);
+    std::vector<uint8_t> base =
+        drawSpeedChart(chartRows, size, adviseChartText(result, budget, title, glRenderer),
+                       ChartTiming::Lookup, ChartAccuracy::EdgeRmse);
     AdviseChartOverlay o = layoutAdviseChart(result, rows, budget, size, title, glRenderer);
     const SpeedChartLayout& L = o.chart;
     std::vector<glm::vec4> pixels(base.size() / 4);
     for (size_t k = 0; k < pixels.size(); ++k) {
-        pixels[k] = glm::vec4(base[4 * k], base[4 * k + 1], base[4 * k + 2], base[4 * k + 3]) /
-                    255.0f;
+        pixels[k] =
+            glm::vec4(base[4 * k], base[4 * k + 1], base[4 * k + 2], base[4 * k + 3]) / 255.0f;
     }
     auto picture = std::make_shared<const CanvasImage>(size, std::move(pixels));
     return drawChartOffscreen(size, [&](Canvas& c) {
@@ -155,8 +154,8 @@ std::vector<uint8_t> drawAdviseChart(const AdviseResult& result, const std::vect
         }
         for (size_t k = 0; k < result.measured.size() && k < L.points.size(); ++k) {
             if (result.measured[k].feasible()) {
-                c.ring(L.points[k], speedChartMarkRadius(L, k) + 2.0f * s,
-                       std::max(2.0f, 2.0f * s), FEASIBLE_RING);
+                c.ring(L.points[k], speedChartMarkRadius(L, k) + 2.0f * s, std::max(2.0f, 2.0f * s),
+                       FEASIBLE_RING);
             } else {
                 TextStyle style{FontFace::Sans, o.fontPx, CHART_SOFT_INK, TextAlign::Left};
                 c.text(o.labelBoxes[k].position(), o.labels[k], style);

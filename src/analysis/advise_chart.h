@@ -1,9 +1,9 @@
 // advise_chart.h: advise.png, the settings `pcfscope advise` measured (advise.h): the speed
 // chart's picture (speed_chart.h: each setting's lookup-pass cost with its IQR bar on a log x
-// axis against its edge-band RMSE, dots coloured by method, the Pareto front of the medians, named),
-// and over it the choice ringed in orange and the budget: the edge-RMSE bound as a dashed line, a green
-// ring round every setting that meets the whole budget, and beside every other one the budgets
-// it breaks ("leak", "edge+shimmer").
+// axis against its edge-band RMSE, dots coloured by method, the Pareto front of the medians,
+// named), and over it the choice ringed in orange and the budget: the edge-RMSE bound as a dashed
+// line, a green ring round every setting that meets the whole budget, and beside every other one
+// the budgets it breaks ("leak", "edge+shimmer").
 #pragma once
 
 #include <cstdint>

@@ -20,7 +20,8 @@ namespace {
 // "leak+shimmer", or "-" for none.
 std::string brokenText(const AdviseCandidate& c) {
     std::string s;
-    for (AdviseConstraint k : c.broken) s += (s.empty() ? "" : "+") + std::string(adviseConstraintName(k));
+    for (AdviseConstraint k : c.broken)
+        s += (s.empty() ? "" : "+") + std::string(adviseConstraintName(k));
     return s.empty() ? "-" : s;
 }
 
@@ -37,9 +38,10 @@ std::string csvLine(const AdviseCandidate& c, const BenchRow& r, bool chosen) {
         s.mapSize, std::string(biasName(static_cast<int>(s.bias.mode))).c_str(),
         static_cast<double>(s.bias.amount), c.texelReads, m.edgeRmse, m.acneShare, m.leakTexels,
         m.shimmerP99, m.costMs, m.costIqr, c.feasible() ? 1 : 0, brokenText(c).c_str(),
-        chosen ? 1 : 0, r.error.rmse, r.error.maxErr, r.error.edgeMaxErr, r.acne.mean,
-        r.acne.count, r.leak.share, r.leakWidth.world, r.leakWidth.support, r.shimmer.mean,
-        r.shimmer.flickerShare, r.lookupMs, r.lookupMsIqr, r.lookupCpuMs, r.noisy ? 1 : 0, c.retimed ? 1 : 0);
+        chosen ? 1 : 0, r.error.rmse, r.error.maxErr, r.error.edgeMaxErr, r.acne.mean, r.acne.count,
+        r.leak.share, r.leakWidth.world, r.leakWidth.support, r.shimmer.mean,
+        r.shimmer.flickerShare, r.lookupMs, r.lookupMsIqr, r.lookupCpuMs, r.noisy ? 1 : 0,
+        c.retimed ? 1 : 0);
     return line;
 }
 

@@ -312,7 +312,8 @@ class BenchRun {
             row.acne = falseShadow(visibility, lit);
             row.leak = falseLight(visibility, umbra);
             const CasterDistances& d = distancesFor(p.mapSize);
-            row.leakWidth = leakWidth(visibility, umbra, d.texels, d.world, mOptions.frameSize);
+            row.leakWidth = leakWidth(visibility, umbra, d.texels, d.world, mOptions.frameSize,
+                                      LEAK_MIN_RUN, cleanStride());
         }
         row.shimmer = measureShimmer(s);
         // One untimed draw of each timed pass: compiles its programs before the rounds.

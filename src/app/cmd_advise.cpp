@@ -40,10 +40,9 @@ constexpr const char* ADVISE_JSON = "advise.json";
 constexpr const char* ADVISE_TOML = "settings.toml";
 constexpr const char* ADVISE_CHART = "advise.png";
 // The options the search sets itself; RenderOptions registers them for the commands that render.
-constexpr const char* SEARCHED_OPTIONS[] = {"--method", "--kernel",        "--map-size",
-                                            "--bias",   "--constant-bias", "--normal-offset",
-                                            "--radius", "--rotate",        "--lesson",
-                                            "--step"};
+constexpr const char* SEARCHED_OPTIONS[] = {
+    "--method",        "--kernel", "--map-size", "--bias",   "--constant-bias",
+    "--normal-offset", "--radius", "--rotate",   "--lesson", "--step"};
 
 struct AdviseCommandOptions {
     RenderOptions render;  // scene, frame size, culling, depth format, the other bias parameters
@@ -82,8 +81,9 @@ std::optional<double> bound(const AdviseCommandOptions& o, const char* option, d
 
 AdviseBudget parseBudget(const AdviseCommandOptions& o) {
     if (!o.given("--max-edge-rmse")) {
-        throw UsageError("advise needs a budget: --max-edge-rmse E (and optionally --max-acne, "
-                         "--max-leak-texels, --max-shimmer)");
+        throw UsageError(
+            "advise needs a budget: --max-edge-rmse E (and optionally --max-acne, "
+            "--max-leak-texels, --max-shimmer)");
     }
     AdviseBudget b;
     b.maxEdgeRmse = *bound(o, "--max-edge-rmse", o.maxEdgeRmse, 1.0);
@@ -239,23 +239,25 @@ int runAdvise(const AdviseCommandOptions& o) {
         return bench->measure(s);
     };
     auto retime = [&](const std::vector<AdviseSetting>& settings) {
-        std::fprintf(stderr, "advise: timing the %zu settings that meet the budget again, %d "
-                     "rounds round-robin\n", settings.size(), o.repeats);
+        std::fprintf(stderr,
+                     "advise: timing the %zu settings that meet the budget again, %d "
+                     "rounds round-robin\n",
+                     settings.size(), o.repeats);
         return bench->retime(settings, o.repeats);
     };
     AdviseResult r = searchAdvice(plan.space, plan.budget, measure, retime);
     if (!r.choice) throw UsageError(nothingMet(r, plan.budget));
-    AdviseContext context{plan.scene.name,   plan.measure.frameSize.x,
-                          plan.measure.frameSize.y,
-                          truthWordsFor(plan.scene, plan.measure.areaTruth), gl->renderer(),
-                          plan.measure.base};
+    AdviseContext context{
+        plan.scene.name,          plan.measure.frameSize.x,
+        plan.measure.frameSize.y, truthWordsFor(plan.scene, plan.measure.areaTruth),
+        gl->renderer(),           plan.measure.base};
     std::string toml = adviseSettingsToml(r.measured[*r.choice].setting, plan.measure.base);
     writeTextFile((staging.path() / ADVISE_CSV).string(), adviseCsv(r, bench->rows()));
     writeTextFile((staging.path() / ADVISE_JSON).string(), adviseJson(r, plan.budget, context));
     writeTextFile((staging.path() / ADVISE_TOML).string(), toml);
     std::string title = "Settings measured for " + plan.scene.name + " against the budget";
-    std::vector<uint8_t> png = drawAdviseChart(r, bench->rows(), plan.budget, plan.chartSize,
-                                               title, gl->renderer());
+    std::vector<uint8_t> png =
+        drawAdviseChart(r, bench->rows(), plan.budget, plan.chartSize, title, gl->renderer());
     writePngRgba8((staging.path() / ADVISE_CHART).string(), plan.chartSize.x, plan.chartSize.y,
                   png);
     outputs.commitStaged(staging.path(), o.out, names);
@@ -304,8 +306,9 @@ Command addAdviseCommand(CLI::App& app) {
     o->render.addTo(sub, "");
     for (const char* searched : SEARCHED_OPTIONS) sub->get_option(searched)->group("");
     sub->get_option("--weights")
-        ->description("pcf-naive, pcf-gather: weightings to choose from, comma-separated: box, "
-                      "binomial, gaussian (default box)");
+        ->description(
+            "pcf-naive, pcf-gather: weightings to choose from, comma-separated: box, "
+            "binomial, gaussian (default box)");
     addBudgetOptions(sub, *o);
     addSpaceOptions(sub, *o);
     sub->add_option("--truth", o->truth,
