@@ -155,13 +155,24 @@ TEST_F(AdviseGl, TheChartDrawsTheBudgetAndLabelsWhatEachBreaks) {
     EXPECT_LT(o.budgetY, o.chart.plot.bottom());
     for (size_t k = 0; k < r.measured.size(); ++k) {
         const AdviseCandidate& c = r.measured[k];
+        // A setting that meets the budget lies on its good side: below the line (y grows down).
         if (c.feasible()) {
-            EXPECT_TRUE(o.labels[k].empty());
-            // On the budget's good side: below the line (y grows downward).
             EXPECT_GE(o.chart.points[k].y, o.budgetY);
+        }
+        if (r.choice && *r.choice == k) {
+            EXPECT_EQ(o.labels[k].rfind("choice: ", 0), 0u) << o.labels[k];
+        } else if (c.feasible()) {
+            EXPECT_TRUE(o.labels[k].empty());
         } else {
             EXPECT_NE(o.labels[k].find(adviseConstraintName(c.broken.front())), std::string::npos);
             EXPECT_FALSE(o.labelBoxes[k].empty());
+        }
+    }
+    // No label on another.
+    for (size_t a = 0; a < o.labelBoxes.size(); ++a) {
+        for (size_t b = a + 1; b < o.labelBoxes.size(); ++b) {
+            EXPECT_TRUE(o.labelBoxes[a].intersect(o.labelBoxes[b]).empty())
+                << o.labels[a] << " on " << o.labels[b];
         }
     }
     std::vector<uint8_t> png = drawAdviseChart(r, rows, budget(), size, "t", "llvmpipe");

@@ -29,10 +29,17 @@ bool overlapsAny(const Rect& r, const std::vector<Rect>& taken) {
                        [&](const Rect& t) { return !r.intersect(t).empty(); });
 }
 
+// How far a point lies from a box (0 inside).
+float distanceTo(const Rect& r, glm::vec2 p) {
+    glm::vec2 nearest = glm::clamp(p, r.position(), r.position() + r.size());
+    return glm::length(p - nearest);
+}
+
 // A label's box beside its dot: right, left, above, below, then the diagonals, the first in the
-// plot on no text, dot or other label; else right of the dot.
+// plot on no text, dot, bar or other label and nearer its own dot than any other; else right of
+// the dot.
 Rect placeLabel(glm::vec2 dot, glm::vec2 size, float gap, const Rect& plot,
-                const std::vector<Rect>& taken) {
+                const std::vector<Rect>& taken, const std::vector<glm::vec2>& dots) {
     const glm::vec2 offsets[] = {{gap, -size.y / 2},
                                  {-gap - size.x, -size.y / 2},
                                  {-size.x / 2, -gap - size.y},
@@ -45,7 +52,10 @@ Rect placeLabel(glm::vec2 dot, glm::vec2 size, float gap, const Rect& plot,
         Rect r{dot.x + o.x, dot.y + o.y, size.x, size.y};
         bool inside = r.x >= plot.x && r.right() <= plot.right() && r.y >= plot.y &&
                       r.bottom() <= plot.bottom();
-        if (inside && !overlapsAny(r, taken)) return r;
+        bool own = std::all_of(dots.begin(), dots.end(), [&](glm::vec2 other) {
+            return other == dot || distanceTo(r, other) > distanceTo(r, dot);
+        });
+        if (inside && own && !overlapsAny(r, taken)) return r;
     }
     return {dot.x + offsets[0].x, dot.y + offsets[0].y, size.x, size.y};
 }
@@ -103,22 +113,26 @@ AdviseChartOverlay layoutAdviseChart(const AdviseResult& result, const std::vect
     std::vector<Rect> taken;
     for (const ChartTextBox& b : speedChartTextBoxes(L, text)) taken.push_back(b.rect);
     for (size_t k = 0; k < chartRows.size(); ++k) {
-        taken.push_back(speedChartDotBox(L, k).expanded(speedChartMarkRadius(L, k) * 0.5f));
+        taken.push_back(speedChartDotBox(L, k));
         taken.push_back(speedChartBarBox(L, k));
-    }
-    o.labels.assign(chartRows.size(), "");
-    o.labelBoxes.assign(chartRows.size(), Rect{});
-    for (size_t k = 0; k < chartRows.size(); ++k) {
-        if (result.measured[k].feasible()) continue;
-        o.labels[k] = brokenLabel(result.measured[k]);
-        glm::vec2 extent = measureText(FontFace::Sans, o.fontPx, o.labels[k]);
-        float gap = speedChartMarkRadius(L, k) + 2.0f * L.scale;
-        o.labelBoxes[k] = placeLabel(L.points[k], extent, gap, L.plot, taken);
-        taken.push_back(o.labelBoxes[k]);
     }
     double e = budget.maxEdgeRmse;
     o.budgetShown = adviseBudgetLineShown(result, budget) && L.yHi > L.yLo;
     o.budgetY = L.plot.bottom() - static_cast<float>((e - L.yLo) / (L.yHi - L.yLo)) * L.plot.h;
+    if (o.budgetShown)
+        taken.push_back({L.plot.x, o.budgetY - 2.0f * L.scale, L.plot.w, 4.0f * L.scale});
+    o.labels.assign(chartRows.size(), "");
+    o.labelBoxes.assign(chartRows.size(), Rect{});
+    for (size_t k = 0; k < chartRows.size(); ++k) {
+        bool chosen = result.choice && *result.choice == k;
+        if (result.measured[k].feasible() && !chosen) continue;
+        o.labels[k] =
+            chosen ? "choice: " + chartLabel(chartRows[k].point) : brokenLabel(result.measured[k]);
+        glm::vec2 extent = measureText(FontFace::Sans, o.fontPx, o.labels[k]);
+        float gap = speedChartMarkRadius(L, k) + 2.0f * L.scale;
+        o.labelBoxes[k] = placeLabel(L.points[k], extent, gap, L.plot, taken, L.points);
+        taken.push_back(o.labelBoxes[k]);
+    }
     return o;
 }
 
@@ -156,8 +170,11 @@ std::vector<uint8_t> drawAdviseChart(const AdviseResult& result, const std::vect
             if (result.measured[k].feasible()) {
                 c.ring(L.points[k], speedChartMarkRadius(L, k) + 2.0f * s, std::max(2.0f, 2.0f * s),
                        FEASIBLE_RING);
-            } else {
-                TextStyle style{FontFace::Sans, o.fontPx, CHART_SOFT_INK, TextAlign::Left};
+            }
+            if (!o.labels[k].empty()) {
+                bool chosen = result.choice && *result.choice == k;
+                TextStyle style{FontFace::Sans, o.fontPx, chosen ? CHART_INK : CHART_SOFT_INK,
+                                TextAlign::Left};
                 c.text(o.labelBoxes[k].position(), o.labels[k], style);
             }
         }

@@ -31,8 +31,9 @@ SpeedChartText adviseChartText(const AdviseResult& result, const AdviseBudget& b
 // above the plot, and the subtitle says every dot is within the budget).
 bool adviseBudgetLineShown(const AdviseResult& result, const AdviseBudget& budget);
 
-// Where the overlay goes (no GL): per measured setting its broken budgets' label and box (empty
-// for a setting that meets the budget), and the budget line's y (NaN when off the plot).
+// Where the overlay goes (no GL): per measured setting its label and box: the budgets it breaks,
+// "choice: tent3 1024" for the choice, empty for the others that meet the budget; and the budget
+// line's y (budgetShown: adviseBudgetLineShown).
 struct AdviseChartOverlay {
     SpeedChartLayout chart;
     std::vector<std::string> labels;
