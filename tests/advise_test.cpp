@@ -132,10 +132,32 @@ TEST(AdviseSearch, OverlappingSpreadsPickTheFewerReads) {
     EXPECT_NE(note.find("hw2x2"), std::string::npos) << note;
     EXPECT_NE(note.find("pcf-gather N=3"), std::string::npos) << note;
 
+    EXPECT_NE(note.find("fewest texel reads (4)"), std::string::npos) << note;
+
     AdviseResult apart = tieCase(0.02);
     ASSERT_TRUE(apart.choice);
     EXPECT_EQ(apart.measured[*apart.choice].setting.filter.method, PCF_GATHER);
     EXPECT_TRUE(adviseTieNote(apart).empty());
+}
+
+TEST(AdviseSearch, OverlappingSpreadsWithEqualReadsPickTheLowerMedian) {
+    ASSERT_EQ(adviseTexelReads({PCF_TENT, 3}), adviseTexelReads({PCF_GATHER, 3}));
+    AdviseSpace space;
+    space.filters = {{PCF_TENT, 3}, {PCF_GATHER, 3}};
+    space.mapSizes = {512};
+    space.biases = {{BiasMode::None, 0.0f}};
+    AdviseBudget budget;
+    budget.maxEdgeRmse = 1.0;
+    AdviseResult r = searchAdvice(space, budget, [](const AdviseSetting& s) {
+        AdviseMetrics m;
+        m.costMs = s.filter.method == PCF_GATHER ? 1.0 : 1.1;
+        m.costIqr = 0.3;
+        return m;
+    });
+    ASSERT_TRUE(r.choice);
+    EXPECT_EQ(r.measured[*r.choice].setting.filter.method, PCF_GATHER);
+    std::string note = adviseTieNote(r);
+    EXPECT_NE(note.find("none reads fewer texels"), std::string::npos) << note;
 }
 
 TEST(AdviseSearch, TheBindingSentenceNamesTheSmallerMapAndWhatItBroke) {

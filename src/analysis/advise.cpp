@@ -424,9 +424,16 @@ std::string adviseTieNote(const AdviseResult& result) {
         names += adviseSettingName(result.measured[k].setting);
     }
     const AdviseCandidate& choice = result.measured[*result.choice];
+    bool fewest = std::all_of(result.tied.begin(), result.tied.end(), [&](size_t k) {
+        return k == *result.choice || result.measured[k].texelReads > choice.texelReads;
+    });
+    std::string why = fewest ? "so the one with the fewest texel reads (" +
+                                   std::to_string(choice.texelReads) + ") is chosen"
+                             : "and none reads fewer texels than the chosen one (" +
+                                   std::to_string(choice.texelReads) +
+                                   "), so its lower median decides";
     return "the timer cannot order " + adviseSettingName(choice.setting) + " and " + names +
-           " (their cost spreads overlap), so the one with the fewest texel reads (" +
-           std::to_string(choice.texelReads) + ") is chosen";
+           " (their cost spreads overlap), " + why;
 }
 
 }  // namespace pcf
