@@ -181,6 +181,38 @@ TEST(AdviseSearch, TheBindingSentenceNamesTheSmallerMapAndWhatItBroke) {
               "map 512 is needed for the leak budget; 256 leaks 3.1 texels (budget 2)");
 }
 
+TEST(AdviseSearch, AMeasureADoubledMapDidNotLowerEndsTheWalk) {
+    // nearest jumps a whole step wherever it flickers, at any map size (syntheticMetrics): after
+    // two sizes the walk knows a larger map will not mend it.
+    AdviseSpace space;
+    space.filters = {{PCF_NEAREST, 0}};
+    space.mapSizes = {256, 512, 1024, 2048};
+    space.biases = {{BiasMode::None, 0.0f}};
+    AdviseBudget budget;
+    budget.maxEdgeRmse = 1.0;
+    budget.maxShimmer = 0.5;
+    AdviseResult r = searchAdvice(space, budget, syntheticMetrics);
+    EXPECT_FALSE(r.choice.has_value());
+    ASSERT_EQ(r.measured.size(), 2u);
+    EXPECT_EQ(r.measured[1].setting.mapSize, 512);
+}
+
+TEST(AdviseSearch, ACostlierFilterIsLeftAtItsSmallestMapWithItsLargerKernels) {
+    // hw2x2 meets the budget at 256; pcf-gather N=3 at 256 already costs more (its spread wholly
+    // above), so neither its larger maps nor N = 5, 7 are measured.
+    AdviseSpace space;
+    space.filters = {{PCF_HW2X2, 0}, {PCF_GATHER, 3}, {PCF_GATHER, 5}, {PCF_GATHER, 7}};
+    space.mapSizes = {256, 512, 1024};
+    space.biases = {{BiasMode::None, 0.0f}};
+    AdviseBudget budget;
+    budget.maxEdgeRmse = 1.0;
+    AdviseResult r = searchAdvice(space, budget, syntheticMetrics);
+    ASSERT_TRUE(r.choice.has_value());
+    EXPECT_EQ(r.measured[*r.choice].setting.filter.method, PCF_HW2X2);
+    ASSERT_EQ(r.measured.size(), 2u);
+    EXPECT_EQ(r.measured[1].setting, (AdviseSetting{{PCF_GATHER, 3}, 256, {}}));
+}
+
 TEST(AdviseSearch, AnImpossibleBudgetHasNoChoiceButAClosestCandidate) {
     AdviseSpace space = syntheticSpace();
     AdviseBudget budget = syntheticBudget();

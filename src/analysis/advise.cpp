@@ -236,14 +236,14 @@ class AdviseSearch {
             int last = walkBiases(f, mSpace.mapSizes[i], start);
             if (last < 0) return;  // no bias of the space combines with the method
             AdviseCandidate c = mMeasured.back();
-            if (c.feasible()) return;
-            if (costlier(c)) {
+            if (costlier(c)) {  // met the budget or not, it cannot win, nor can larger N
                 if (i == 0) {
                     auto [it, fresh] = mTooCostly.emplace(methodKey(f), f.kernel);
                     if (!fresh) it->second = std::min(it->second, f.kernel);
                 }
                 return;
             }
+            if (c.feasible()) return;
             if (!improving(c, before ? &*before : nullptr)) return;
             start = breaks(c, AdviseConstraint::Leak) ? 0 : last;
             before = c;
