@@ -236,11 +236,12 @@ TEST(AnimateCommand, CtrlCLeavesNoHalfVideoNorScratchFolder) {
     fs::path dir = testutil::makeTempDir("animate");
     fs::path out = dir / "out";
     // Interrupted once the first PNG is written: the videos are then half encoded.
-    std::string script = "cd " + dir.string() + " && (" + PCFSCOPE_EXE +
-                         " animate 13 --frames 400 --size 320x180 -o out/v.mp4 -o out/v.gif "
-                         "--png out/png 2>err.txt >/dev/null & pid=$!; "
-                         "for i in $(seq 600); do ls out/png/*.png >/dev/null 2>&1 && break; "
-                         "sleep 0.05; done; kill -INT $pid; wait $pid; echo $? >rc.txt)";
+    std::string script =
+        "cd " + dir.string() + " && (" + PCFSCOPE_EXE +
+        " animate 13 --step 3 --frames 400 --size 320x180 -o out/v.mp4 -o out/v.gif "
+        "--png out/png 2>err.txt >/dev/null & pid=$!; "
+        "for i in $(seq 600); do ls out/png/*.png >/dev/null 2>&1 && break; "
+        "sleep 0.05; done; kill -INT $pid; wait $pid; echo $? >rc.txt)";
     ASSERT_EQ(std::system(script.c_str()), 0);
     EXPECT_EQ(testutil::readAll(dir / "rc.txt"), "130\n") << testutil::readAll(dir / "err.txt");
     EXPECT_FALSE(fs::exists(out)) << "the folder it made, with everything in it, is taken back";
@@ -253,7 +254,7 @@ TEST(AnimateCommand, BadInputIsOneLineAndLeavesNothing) {
     for (std::string args :
          {"--sweep wobble", "--size 321x180", "--compare tent --compare-kernel 4", "--frames 1"}) {
         testutil::CommandResult r =
-            testutil::runPcfscope("animate 13 " + args + " -o " + out + "/x.mp4");
+            testutil::runPcfscope("animate 13 --step 3 " + args + " -o " + out + "/x.mp4");
         EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
         EXPECT_EQ(testutil::lineCount(r.err), 1) << args << ": " << r.err;
         EXPECT_FALSE(fs::exists(out)) << args;
@@ -265,7 +266,7 @@ TEST(AnimateCommand, BadInputIsOneLineAndLeavesNothing) {
         keep << "mine";
     }
     testutil::CommandResult r =
-        testutil::runPcfscope("animate 13 --frames 2 --size 320x180 -o " + out + "/x.gif");
+        testutil::runPcfscope("animate 13 --step 3 --frames 2 --size 320x180 -o " + out + "/x.gif");
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(testutil::readAll(out + "/x.gif"), "mine");
     fs::remove_all(dir);

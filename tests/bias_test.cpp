@@ -460,7 +460,7 @@ TEST_F(BiasCli, CombinationsThatCannotExistExitTwoAndWriteNothing) {
          "bias interpolated"},
         {"render --scene grazing --bias fancy -o " + out, "unknown bias mode 'fancy'"},
         {"render --scene grazing --bias slope --slope-max 2 -o " + out,
-         "--slope-max must be in [0, 1], got 2"},
+         "--slope-max must be in [0, 1] light depth units, got 2"},
         {"trace --example --method tent --bias soft", "tent gets its comparisons"},
         {"trace --example --method poisson --bias interpolated", "use --method nearest"},
         {"trace --example --bias 0.002", "unknown bias mode '0.002'"},

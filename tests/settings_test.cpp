@@ -93,7 +93,9 @@ std::string tomlValue(const ParamInfo& p, const ShadowSettings& s) {
 
 // A lesson whose [settings] sets `key = value`, parsed: its first step's settings.
 LessonSettings lessonWith(std::string_view key, const std::string& value) {
-    std::string text = "title = \"t\"\nscene = \"box-on-plane\"\n[settings]\n" + std::string(key) +
+    // light_radius is a spot light's size: its scene has one.
+    std::string scene = key == "light_radius" ? "post-under-spot" : "box-on-plane";
+    std::string text = "title = \"t\"\nscene = \"" + scene + "\"\n[settings]\n" + std::string(key) +
                        " = " + value + "\n[[step]]\ntitle = \"s\"\ntext = \"x\"\n";
     return parseLessonString(text, "table.toml").steps.at(0).settings;
 }

@@ -447,10 +447,12 @@ class BenchRun {
             row.gpuMsIqr = scene.iqr();
             row.lookupMs = lookup.median;
             row.lookupMsIqr = lookup.iqr();
-            row.gpuCpuMs = medianOf(samples[k].scene.cpu);
-            row.lookupCpuMs = medianOf(samples[k].lookup.cpu);
-            row.lookupCpuMsIqr =
-                samples[k].lookup.cpu.empty() ? 0.0 : quartilesOf(samples[k].lookup.cpu).iqr();
+            Quartiles sceneCpu = quartilesOf(samples[k].scene.cpu);
+            Quartiles lookupCpu = quartilesOf(samples[k].lookup.cpu);
+            row.gpuCpuMs = sceneCpu.median;
+            row.gpuCpuMsIqr = sceneCpu.iqr();
+            row.lookupCpuMs = lookupCpu.median;
+            row.lookupCpuMsIqr = lookupCpu.iqr();
             row.noisy = noisyTimes(samples[k]);
             if (mOptions.reference) {
                 Quartiles reference = quartilesOf(samples[k].reference.wall);

@@ -138,7 +138,9 @@ struct BenchRow {
     // clock on a busy machine. 0 when the GPU's own timer measured.
     double gpuCpuMs = 0.0;
     double lookupCpuMs = 0.0;
-    double lookupCpuMsIqr = 0.0;  // the IQR of those lookup-pass CPU samples
+    // Their interquartile ranges (0 where unknown: a bench.csv before these columns).
+    double gpuCpuMsIqr = 0.0;
+    double lookupCpuMsIqr = 0.0;
     double cpuNsPerPixel = 0.0;
     int cpuPixels = 0;   // receiver pixels the CPU kernel was timed on
     int texelReads = 0;  // fetchCounts(method, N).texels

@@ -28,13 +28,12 @@ constexpr float CHART_MARK_CLEARANCE = 2.0f;
 constexpr float STANDALONE_CHART_MIN_PX = 14.0f;
 
 // What a chart says of the renderer it was measured on: "rendered on NAME" (GL_RENDERER), and for
-// Mesa's llvmpipe, a CPU rasteriser, " (LLVMPIPE_NOTE)", or with noteOwnLine "\nLLVMPIPE_NOTE"
-// (a narrow chart: a lesson frame's). An empty name: RENDERER_UNKNOWN.
+// Mesa's llvmpipe, a CPU rasteriser, " (LLVMPIPE_NOTE)". An empty name: RENDERER_UNKNOWN.
 inline constexpr std::string_view LLVMPIPE_NOTE =
-    "llvmpipe: a CPU rasteriser; ratios carry over, milliseconds do not";
+    "llvmpipe: a CPU rasteriser; a GPU's times, and their ratios, differ";
 inline constexpr std::string_view RENDERER_UNKNOWN =
     "renderer not recorded (a file older than its gl_renderer column)";
-std::string chartRendererLine(const std::string& glRenderer, bool noteOwnLine = false);
+std::string chartRendererLine(const std::string& glRenderer);
 
 // A round step (1, 2 or 5 times a power of ten) at or above `rough` (> 0).
 double chartNiceStep(double rough);

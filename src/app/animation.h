@@ -1,4 +1,4 @@
-// animation.h: a sweep played as a sequence of ordinary frames (DESIGN.md 8, "Motion"): the
+// animation.h: a sweep played as a sequence of ordinary frames (docs/user-guide.md, "animate"): the
 // lesson step's frame (or the scene alone) with one quantity swept from frame to frame, and a
 // flicker trace of the pinned point's visibility. `pcfscope animate` encodes the frames to MP4
 // and GIF (video/video_writer.h) and numbered PNGs. Every frame is an ordinary Session frame, so

@@ -179,7 +179,7 @@ AdvisePlan parsePlan(const AdviseCommandOptions& o) {
     plan.chartSize = parseSize("--chart-size", o.chartSize, CHART_SIZE_RANGE);
     plan.scene = o.render.loadScene();
     AdviseMeasureOptions& m = plan.measure;
-    m.areaTruth = applyTruthOption(o.truth, plan.scene, base.lightSize);
+    m.areaTruth = applyTruthOption(o.truth, plan.scene, base);
     m.frameSize = base.frameSize;
     m.truthSpp = o.spp;
     m.repeats = o.repeats;

@@ -20,6 +20,8 @@
 #include "app/magnifier.h"
 #include "app/render_options.h"
 #include "app/session.h"
+#include "base/memory_budget.h"
+#include "base/work_estimate.h"
 #include "deck/deck.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
@@ -106,6 +108,21 @@ std::vector<ScriptedInput> exportKeys(const std::string& text) {
     return keys;
 }
 
+// The frames: a step's page at least (a step split into pages writes more; those are known only
+// once rendered), each composed and written as PNG. Peak memory measured with /usr/bin/time:
+// 225 MB and 25 bytes a pixel (1280x720 to 2560x1440); 40 leaves room for a step's pages.
+WorkEstimate exportEstimate(glm::ivec2 size, glm::ivec2 steps) {
+    double pixels = static_cast<double>(size.x) * size.y;
+    int frames = steps.y - steps.x + 1;
+    WorkEstimate w;
+    w.what = "at least " + std::to_string(frames) + " frames of " + std::to_string(size.x) + "x" +
+             std::to_string(size.y);
+    w.frameNs = pixels * frames * RENDER_NS_PER_PIXEL_FRAME;
+    w.fixedSeconds = 1.0;
+    w.bytes = memoryEstimate(240 * MIB, 40, size.x, size.y);
+    return w;
+}
+
 int runExport(const ExportOptions& o) {
     glm::ivec2 size = parseSize("--size", o.size, {MIN_SESSION_SIZE});
     std::string path = resolveLesson(o.lesson);
@@ -113,6 +130,7 @@ int runExport(const ExportOptions& o) {
     glm::ivec2 steps = parseSteps(o.steps, static_cast<int>(lesson.steps.size()));
     std::vector<ScriptedInput> keys = exportKeys(o.keys);
     std::string dir = o.outDir.empty() ? "pcfscope-frames/" + lesson.name : o.outDir;
+    announceWork("export", exportEstimate(size, steps), o.force);
     OutputFiles outputs(o.force);
     outputs.addInput("LESSON", path);
     for (const LessonStep& step : lesson.steps) outputs.addInput("chart", step.chart);
@@ -200,10 +218,15 @@ void planStepCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& less
             throw UsageError("--" + std::string(e.what()) + " (at step " + std::to_string(s) + ")");
         }
         if (!spec.empty()) {
+            // Said with the step it is about: one step's compare refused a whole export.
             if (auto problem =
                     compareFrameProblem(frame.size, spec.parts(), frame.presentation, false)) {
+                std::string whose = all.empty() ? "step " + std::to_string(s) + "'s compare (" +
+                                                      compareSpecText(spec) + ")"
+                                                : "--compare at step " + std::to_string(s);
                 throw UsageError("--size " + std::to_string(frame.size.x) + "x" +
-                                 std::to_string(frame.size.y) + ": " + *problem);
+                                 std::to_string(frame.size.y) + ": " + whose + ": " + *problem +
+                                 " (a larger --size, or --steps without that step)");
             }
             const std::string& stem = plan.stems[static_cast<size_t>(s - plan.steps.x)];
             outputs.add("--compare", stem + "-compare.png");
@@ -432,7 +455,9 @@ Command addExportCommand(CLI::App& app) {
                     "also DIR/LESSON-handout.pdf: A4, the 1600x900 frames two to a page with the "
                     "words and the trace's table beneath")
         ->check(CLI::IsMember({"pdf"}));
-    sub->add_flag("-f,--force", o->force, "overwrite existing frames");
+    sub->add_flag("-f,--force", o->force,
+                  "overwrite existing frames; start work larger than the memory estimate says "
+                  "the machine holds");
     return {sub, [o] { return runExport(*o); }};
 }
 

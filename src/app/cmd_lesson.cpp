@@ -36,10 +36,18 @@ namespace {
 // The frame sizes a lesson is checked at (lessons are shown at each, normal and presentation).
 constexpr glm::ivec2 CHECKED_FRAMES[] = {{1024, 768}, {1280, 720}, {1600, 900}, {1920, 1080}};
 
+// "7.15 +- 0.42 ms": a row's scene time as the chart draws it, the median and half the IQR.
+std::string msWithSpread(const BenchRow& r) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2f +- %.2f ms", chartMs(r, ChartTiming::Scene),
+                  0.5 * chartIqr(r, ChartTiming::Scene));
+    return text;
+}
+
 // A bench chart's order: whether a's metric is less than b's (time: the median scene pass, as
-// the chart's x axis; rmse: its y axis, the edge RMSE, or near the contacts on a "#contact"
-// chart). Each label must pick one row. Any other chart claim is a fact of the chart's table
-// (analysis/chart_facts.h).
+// the chart's x axis, refused where the two bars overlap; rmse: its y axis, the edge RMSE, or near
+// the contacts on a "#contact" chart). Each label must pick one row. Any other chart claim is a
+// fact of the chart's table (analysis/chart_facts.h).
 ClaimWorld chartWorld(const LessonStep& step) {
     ClaimWorld world;
     world.chartLess = [&step](const std::string& a, const std::string& b,
@@ -47,7 +55,7 @@ ClaimWorld chartWorld(const LessonStep& step) {
         StepChartRef ref = stepChartRef(step.chart);
         if (step.chart.empty() || !ref.bench) return std::string("the step shows no bench chart");
         std::vector<BenchRow> rows = parseBenchCsv(readInputFile(ref.path), ref.path);
-        double value[2] = {0.0, 0.0};
+        const BenchRow* picks[2] = {nullptr, nullptr};
         const std::string* labels[2] = {&a, &b};
         for (int k = 0; k < 2; ++k) {
             std::vector<size_t> picked;
@@ -60,11 +68,17 @@ ClaimWorld chartWorld(const LessonStep& step) {
                 return "'" + *labels[k] + "' names " + std::to_string(picked.size()) +
                        " dots of the chart, not one";
             }
-            const BenchRow& r = rows[picked[0]];
-            value[k] =
-                metric == "time" ? chartMs(r, ChartTiming::Scene) : chartAccuracy(r, ref.accuracy);
+            picks[k] = &rows[picked[0]];
         }
-        return value[0] < value[1];
+        if (metric != "time") {
+            return chartAccuracy(*picks[0], ref.accuracy) < chartAccuracy(*picks[1], ref.accuracy);
+        }
+        // An order the bars do not support is not a fact of the chart (bench_report.h).
+        if (benchSpreadsOverlap(*picks[0], *picks[1], false)) {
+            return a + "'s and " + b + "'s time bars overlap (" + msWithSpread(*picks[0]) +
+                   " and " + msWithSpread(*picks[1]) + "): no order to claim";
+        }
+        return chartMs(*picks[0], ChartTiming::Scene) < chartMs(*picks[1], ChartTiming::Scene);
     };
     world.chartFact = [&step](const std::string& fact, std::string* why) {
         if (step.chart.empty()) {

@@ -594,7 +594,8 @@ std::string Session::stepJson() const {
         {"text_page", mTextPage + 1},
         {"text_pages", mTextPages},
         {"layout", layoutJson(mBoxes)}};
-    // A question's frame and its answer's (DESIGN.md 8b): the roles the question does not draw.
+    // A question's frame and its answer's (docs/teaching.md, "Predict, then reveal"): the roles the
+    // question does not draw.
     if (predictStep()) {
         Json masked = Json::array();
         for (const std::string& role : hiddenRoles(hiddenNumbers())) masked.push_back(role);

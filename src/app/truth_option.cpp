@@ -4,17 +4,20 @@
 #include <stdexcept>
 
 #include "analysis/light_visibility.h"
+#include "app/render_options.h"
 #include "base/usage_error.h"
 #include "scene/pcss.h"
 
 namespace pcf {
 
-bool applyTruthOption(const std::string& truth, Scene& scene, float lightSizeDeg) {
+bool applyTruthOption(const std::string& truth, Scene& scene, const ShadowSettings& s) {
     if (truth != "hard" && truth != "area") {
         throw UsageError("unknown --truth '" + truth + "' (known: hard, area)");
     }
-    if (truth == "hard") return false;
     Light& light = scene.light;
+    checkLightSize(light, s);
+    if (truth == "hard") return false;
+    light = applyLightSize(light, s);
     if (light.type == LightType::Spot) {
         if (!hasSize(light)) {
             throw UsageError("--truth area takes a light with a size (scene '" + scene.name +
@@ -27,7 +30,7 @@ bool applyTruthOption(const std::string& truth, Scene& scene, float lightSizeDeg
         }
         return true;
     }
-    light.angularDiameterDeg = effectiveLightSizeDeg(light, lightSizeDeg);
+    light.angularDiameterDeg = effectiveLightSizeDeg(light, s.lightSize);
     return true;
 }
 

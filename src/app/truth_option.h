@@ -4,15 +4,18 @@
 
 #include <string>
 
+#include "kernel/settings.h"
 #include "scene/scene.h"
 
 namespace pcf {
 
 // Parses --truth: false for "hard" (the light's centre), true for "area" (its disk), after
-// making the scene's light carry the size the area truth integrates over (a sun's: lightSizeDeg
-// when above 0, else its angular_diameter, else the sun's; a spot needs its radius). Throws
-// UsageError for another name, a spot without a radius or casters a spot's disk cannot take.
-bool applyTruthOption(const std::string& truth, Scene& scene, float lightSizeDeg);
+// making the scene's light carry the size the area truth integrates over (a sun's: the
+// settings' light_size when above 0, else its angular_diameter, else the sun's; a spot's: the
+// settings' light_radius when above 0, else its radius). Throws UsageError for another name, a
+// light size given for the other kind of light (whichever truth), a spot without a radius or
+// casters a spot's disk cannot take.
+bool applyTruthOption(const std::string& truth, Scene& scene, const ShadowSettings& s);
 
 // "hard (the light's centre)", "area (a sun disk of 2 degrees)", "area (a spot disk of radius
 // 0.3)": bench.md's, bench.csv's truth column's and advise.json's words.

@@ -60,7 +60,8 @@ namespace {
 // pcss records its search taps with weight 0 (pcf_kernel.h pcfPcssEstimate): they choose the
 // filter's width, the filter's taps make the visibility. When no search tap blocks there is no
 // filter and the visibility, 1, is the mean of the 16 search bits (all 1): the search taps then
-// weigh 1/16 each, so visibility = sum(weight * lit) holds for every lookup (DESIGN.md 4).
+// weigh 1/16 each, so visibility = sum(weight * lit) holds for every lookup (docs/user-guide.md,
+// "trace").
 void weighPcssSearch(Trace& tr) {
     if (tr.taps.size() != static_cast<size_t>(PCF_PCSS_TAPS)) return;
     float w = 1.0f / static_cast<float>(PCF_PCSS_TAPS);

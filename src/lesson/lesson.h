@@ -154,9 +154,9 @@ constexpr int MAX_ANIMATION_FRAMES = 600;
 
 // `predict = { ask = "...", choices = ["{depth_bias*-1}", "{depth_bias}"], answer =
 // "{depth_bias}" }` or `{ ask = "...", answer = "{visibility}", tolerance = 0.05 }`: the step
-// asks before it tells (DESIGN.md 8b, Students). Its frame first shows `ask` with the numbers
-// that would give the answer away hidden; a key (or, exported, the next frame) reveals the
-// answer, filled from the trace, above the step's text. ask and choices may hold placeholders
+// asks before it tells (docs/teaching.md, "Predict, then reveal"). Its frame first shows `ask` with
+// the numbers that would give the answer away hidden; a key (or, exported, the next frame) reveals
+// the answer, filled from the trace, above the step's text. ask and choices may hold placeholders
 // (none of the quantities the answer hides: app/predict.h checks). The answer is one number
 // placeholder; with choices it must equal exactly one of them at every size (lesson check), and
 // a typed answer is judged by the choice it names; without, a typed number is right within

@@ -21,9 +21,10 @@
 
 namespace pcf {
 
-// What a step is about (DESIGN.md 8, lesson key `focus`): the parts of the frame its words refer
-// to. The frame gives them the room and shows them whole; the rest shrinks (focusLayout). Names:
-// "scene", "neighbourhood", "formula", "chart", or two joined by '+' ("neighbourhood+formula").
+// What a step is about (docs/lesson-authoring.md, lesson key `focus`): the parts of the frame its
+// words refer to. The frame gives them the room and shows them whole; the rest shrinks
+// (focusLayout). Names: "scene", "neighbourhood", "formula", "chart", or two joined by '+'
+// ("neighbourhood+formula").
 struct Focus {
     bool scene = false, neighbourhood = false, formula = false, chart = false;
     bool operator==(const Focus&) const = default;
