@@ -132,9 +132,9 @@ std::vector<std::string> wordsOf(const std::string& command) {
     return words;
 }
 
-const std::set<std::string> SUBCOMMANDS = {"view",  "export",  "render",    "trace",   "methods",
-                                           "truth", "bench",   "stability", "verify",  "lesson",
-                                           "check", "animate", "pick",      "exercise"};
+const std::set<std::string> SUBCOMMANDS = {"view",  "export",  "render",    "trace",    "methods",
+                                           "truth", "bench",   "stability", "verify",   "lesson",
+                                           "check", "animate", "pick",      "exercise", "advise"};
 
 // A synopsis: optional parts in brackets, alternatives, or placeholders in capitals (LESSON,
 // DIR, WxH) where a value goes.

@@ -263,6 +263,15 @@ class BenchRun {
     std::vector<std::optional<Hit>> mHits;  // the clean masks' surface points, once
     // Clean lit and clean umbra masks per (footprint reach, map size).
     std::map<std::pair<float, int>, std::pair<std::vector<uint8_t>, std::vector<uint8_t>>> mClean;
+    std::map<int, CasterDistances> mDistances;  // per map size: the leak width's distances
+
+    // The umbra pixels' distances from the casters at the point's map size (its fitted map).
+    const CasterDistances& distancesFor(int mapSize) {
+        auto it = mDistances.find(mapSize);
+        if (it != mDistances.end()) return it->second;
+        return mDistances[mapSize] = casterDistances(*mContext.scene, mTruth, mRegions, mHits,
+                                                     mRenderer.shadowClipFromWorld(), mapSize);
+    }
 
     // The first camera pass fixes what depends on the geometry only: the regions, the lookups.
     void readGeometry() {
@@ -303,6 +312,9 @@ class BenchRun {
             const auto& [lit, umbra] = cleanMasks(p);
             row.acne = falseShadow(visibility, lit);
             row.leak = falseLight(visibility, umbra);
+            const CasterDistances& d = distancesFor(p.mapSize);
+            row.leakWidth = leakWidth(visibility, umbra, d.texels, d.world, mOptions.frameSize,
+                                      LEAK_MIN_RUN, cleanStride());
         }
         row.shimmer = measureShimmer(s);
         // One untimed draw of each timed pass: compiles its programs before the rounds.
@@ -466,19 +478,16 @@ std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& option
     return BenchRun(context, options).run();
 }
 
-BenchResult runBenchSweep(const BenchConfig& config, BenchContext callbacks,
-                          const std::function<void(const GroundTruth&)>& truthDone) {
+GroundTruth benchGroundTruth(const BenchConfig& config) {
     const BenchOptions& options = config.options;
-    if (auto why = validateBenchOptions(options)) throw std::invalid_argument(why->text());
-    BenchResult result;
     GroundTruthOptions truthOptions;
     truthOptions.spp = options.truthSpp;
     truthOptions.threads = options.cpuThreads;
     truthOptions.area = options.areaTruth;
-    result.truth = computeGroundTruth(config.scene, options.frameSize, truthOptions);
+    GroundTruth truth = computeGroundTruth(config.scene, options.frameSize, truthOptions);
     // The chart's accuracy axis is the edge band's error: without a shadow edge in view every
     // method would score a perfect 0 and the chart would say nothing. Refuse instead.
-    ErrorRegions truthRegions = errorRegions(result.truth);
+    ErrorRegions truthRegions = errorRegions(truth);
     if (truthRegions.comparedCount == 0 || truthRegions.edgeCount == 0) {
         throw BenchSceneError(
             "scene '" + config.scene.name + "' shows " +
@@ -488,6 +497,15 @@ BenchResult runBenchSweep(const BenchConfig& config, BenchContext callbacks,
             std::to_string(options.frameSize.y) +
             ", so there is no edge band to measure error over; bench needs a shadow edge in view");
     }
+    return truth;
+}
+
+BenchResult runBenchSweep(const BenchConfig& config, BenchContext callbacks,
+                          const std::function<void(const GroundTruth&)>& truthDone) {
+    const BenchOptions& options = config.options;
+    if (auto why = validateBenchOptions(options)) throw std::invalid_argument(why->text());
+    BenchResult result;
+    result.truth = benchGroundTruth(config);
     if (truthDone) truthDone(result.truth);
     SceneRenderer renderer(config.scene);
     callbacks.renderer = &renderer;

@@ -40,6 +40,7 @@
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
+#include "app/truth_option.h"
 #include "base/input_error.h"
 #include "base/memory_budget.h"
 #include "base/work_estimate.h"
@@ -236,42 +237,13 @@ constexpr std::uint64_t BENCH_BYTES_PER_PIXEL = 160;
 // spot's of --light-radius or the scene's radius (light_visibility.h). Either size given for the
 // other kind of light is refused, whichever truth.
 void applyTruth(const BenchCommandOptions& o, BenchPlan& plan) {
-    if (o.truth != "hard" && o.truth != "area") {
-        throw UsageError("unknown --truth '" + o.truth + "' (known: hard, area)");
-    }
-    plan.config.options.areaTruth = o.truth == "area";
-    Light& light = plan.config.scene.light;
-    checkLightSize(light, plan.config.options.base);
-    if (!plan.config.options.areaTruth) return;
-    light = applyLightSize(light, plan.config.options.base);
-    if (light.type == LightType::Spot) {
-        if (!hasSize(light)) {
-            throw UsageError("--truth area takes a light with a size (scene '" +
-                             plan.config.scene.name + "' has a spot light without a radius)");
-        }
-        try {
-            checkSpotDiskCasters(plan.config.scene);
-        } catch (const std::invalid_argument& e) {
-            throw UsageError(plan.config.scene.name + ": " + e.what());
-        }
-        return;
-    }
-    light.angularDiameterDeg = effectiveLightSizeDeg(light, plan.config.options.base.lightSize);
+    plan.config.options.areaTruth =
+        applyTruthOption(o.truth, plan.config.scene, plan.config.options.base);
 }
 
 // Which truth the report and the charts say they measured against.
 std::string truthWords(const BenchPlan& plan) {
-    if (!plan.config.options.areaTruth) return "hard (the light's centre)";
-    const Light& light = plan.config.scene.light;
-    char buf[80];
-    if (light.type == LightType::Spot) {
-        std::snprintf(buf, sizeof buf, "area (a spot disk of radius %g)",
-                      static_cast<double>(light.radius));
-    } else {
-        std::snprintf(buf, sizeof buf, "area (a sun disk of %g degrees)",
-                      static_cast<double>(light.angularDiameterDeg));
-    }
-    return buf;
+    return truthWordsFor(plan.config.scene, plan.config.options.areaTruth);
 }
 
 BenchPlan parsePlan(const BenchCommandOptions& o) {

@@ -57,7 +57,7 @@ int pcf::runCommandLine(int argc, char** argv) {
         pcf::addTruthCommand(app),    pcf::addBenchCommand(app),   pcf::addStabilityCommand(app),
         pcf::addViewCommand(app),     pcf::addExportCommand(app),  pcf::addVerifyCommand(app),
         pcf::addLessonCommand(app),   pcf::addAnimateCommand(app), pcf::addPickCommand(app),
-        pcf::addExerciseCommand(app),
+        pcf::addExerciseCommand(app), pcf::addAdviseCommand(app),
     };
 
     try {
