@@ -12,6 +12,7 @@
 #include "analysis/advise_chart.h"
 #include "analysis/advise_measure.h"
 #include "analysis/advise_report.h"
+#include "analysis/bench_report.h"
 #include "render/gl_context.h"
 #include "scene/presets.h"
 
@@ -182,6 +183,31 @@ TEST_F(AdviseGl, TheChartDrawsTheBudgetAndLabelsWhatEachBreaks) {
     const uint8_t* p = &png[(static_cast<size_t>(y) * size.x + x) * 4];
     EXPECT_GT(p[0], 150);
     EXPECT_LT(p[1], 80);
+}
+
+// The chart draws each setting at the cost the search compared (the feasible ones timed again),
+// in the field the speed chart reads: process CPU time on a CPU rasteriser, wall time on a GPU.
+TEST(AdviseChart, DotsSitAtTheCostTheSearchCompared) {
+    AdviseResult result;
+    result.measured.resize(2);
+    result.measured[0].metrics.costMs = 3.0;
+    result.measured[0].metrics.costIqr = 0.25;
+    result.measured[1].metrics.costMs = 7.0;
+    result.measured[1].metrics.costIqr = 0.5;
+    BenchRow cpu;
+    cpu.glRenderer = "llvmpipe (LLVM 15.0.6; 256 bits)";
+    cpu.gpuCpuMs = 9.0;
+    cpu.lookupCpuMs = 5.0;  // the first timing, before the round-robin one
+    cpu.lookupMs = 11.0;
+    BenchRow gpu;
+    gpu.glRenderer = "NVIDIA H200/PCIe/SSE2";
+    gpu.lookupMs = 4.0;
+    std::vector<BenchRow> rows = adviseChartRows(result, {cpu, gpu});
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(benchPassMs(rows[0], true), 3.0);
+    EXPECT_EQ(benchPassIqr(rows[0], true), 0.25);
+    EXPECT_EQ(benchPassMs(rows[1], true), 7.0);
+    EXPECT_EQ(benchPassIqr(rows[1], true), 0.5);
 }
 
 TEST_F(AdviseGl, TheSettingsTableAndJsonNameTheChoice) {
