@@ -132,24 +132,26 @@ void readParam(const Json& json, const ParamInfo& p, ShadowSettings& s, const st
         p.field);
 }
 
-// What scene.frag computed each pixel's lookup from besides its position and normal: the map
-// layer's fit (the light's clip matrix) and one texel's world size at clip w = 1.
-struct RawLookupFrame {
-    glm::mat4 shadowClipFromWorld{1.0f};
-    float shadowTexelWs = 0.0f;
-};
-
 // What `render --raw` rendered with, from its render.json: the settings the parameter table
-// marks rawJson, what the kernel filtered with, and what each pixel's lookup was computed from
-// besides its position and normal (absent from folders written before render.json held it).
+// marks rawJson, what the kernel filtered with, and the map (whose layer's fit each pixel's
+// lookup was computed from besides its position and normal).
 struct RawSettings {
     ShadowSettings settings;
     // The map as render.json describes it ("map"); folders written before it have none.
     std::optional<MapSpec> map;
     PcfParams prm;
     PcfBias bias = PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, DEFAULT_RPDB_MAX);
-    std::optional<RawLookupFrame> frame;  // from "map"'s layer
 };
+
+// The layer scene.frag looked each pixel up with besides its position and normal: its fit (the
+// light's clip matrix) and one texel's world size at clip w = 1. None for a folder written before
+// render.json held the map, or a map without a texel size.
+const PcfMapLayer* lookupLayer(const RawSettings& r) {
+    if (!r.map || r.map->layers.size() != 1 || !(r.map->layers.front().texelWs > 0.0f)) {
+        return nullptr;
+    }
+    return &r.map->layers.front();
+}
 
 RawSettings readRawSettings(const std::filesystem::path& dir) {
     std::filesystem::path jsonPath = dir / "render.json";
@@ -183,11 +185,6 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
         std::string why;
         r.map = mapSpecFromJson(json["map"], why);
         if (!r.map) throw UsageError("render.json: " + why + " (" + where + ")");
-        // The fit scene.frag looked each pixel up with (its one layer).
-        const PcfMapLayer& layer = r.map->layers.front();
-        if (r.map->layers.size() == 1 && layer.texelWs > 0.0f) {
-            r.frame = RawLookupFrame{layer.shadowClipFromWorld, layer.texelWs};
-        }
     }
     // render.json's keys are the kernel's words.
     if (auto why = validateParams(r.prm))
@@ -234,6 +231,11 @@ struct RawImages {
     FloatImage positions;  // world x, y, z, 1 where drawn; empty when the folder has none
     FloatImage normals;    // n facing the camera, cos(theta); empty when the folder has none
 };
+
+// Whether each pixel's lookup can be recomputed whole: the layer's fit, positions and normals.
+bool recomputesWhole(const RawImages& img, const RawSettings& r) {
+    return lookupLayer(r) && !img.positions.data.empty() && !img.normals.data.empty();
+}
 
 // An image of the folder the size of lightspace.exr with 4 channels, or an empty one when the
 // file does not exist.
@@ -299,14 +301,13 @@ PcfReceiverLookup recomputedLookup(const RawImages& img, const RawSettings& r, s
     const ShadowSettings& s = r.settings;
     const float* ls = &img.lightSpace.data[4 * k];
     float z0 = img.planes.data[4 * k + 2];
-    if (!r.frame || img.positions.data.empty() || img.normals.data.empty()) {
-        return PcfReceiverLookup(ls[0], ls[1], z0, z0, z0 - s.baseBias());
-    }
+    if (!recomputesWhole(img, r)) return PcfReceiverLookup(ls[0], ls[1], z0, z0, z0 - s.baseBias());
+    const PcfMapLayer& layer = *lookupLayer(r);
     const float* p = &img.positions.data[4 * k];
     const float* n = &img.normals.data[4 * k];
-    return pcfReceiverLookup(r.frame->shadowClipFromWorld, vec3(p[0], p[1], p[2]),
+    return pcfReceiverLookup(layer.shadowClipFromWorld, vec3(p[0], p[1], p[2]),
                              vec3(n[0], n[1], n[2]), n[3], s.modeId(), s.constantBias, s.slopeBias,
-                             s.slopeMax, s.normalOffset, r.frame->shadowTexelWs);
+                             s.slopeMax, s.normalOffset, layer.texelWs);
 }
 
 // Every receiver pixel's u, v, depth before bias and ref against recomputedLookup, within
@@ -315,8 +316,7 @@ PcfReceiverLookup recomputedLookup(const RawImages& img, const RawSettings& r, s
 // number of pixels checked.
 long checkLookups(const RawImages& img, const RawSettings& r, const std::string& dir) {
     const ShadowSettings& s = r.settings;
-    bool full = r.frame && !img.positions.data.empty() && !img.normals.data.empty();
-    if (!full && (s.bias == BiasMode::Slope || s.bias == BiasMode::Normal)) {
+    if (!recomputesWhole(img, r) && (s.bias == BiasMode::Slope || s.bias == BiasMode::Normal)) {
         throw UsageError(dir + ": bias " + std::string(biasModeName(s.bias)) +
                          " depends on each pixel's angle to the light, and the folder lacks "
                          "normals.exr, positions.exr or render.json's map; "
@@ -458,7 +458,7 @@ int runVerify(const VerifyOptions& o) {
         refBits.c_str());
     std::printf("lookup (u, v, ref) of all %ld receiver pixels recomputed from %s: as rendered\n",
                 refsChecked,
-                r.frame && !img.normals.data.empty()
+                recomputesWhole(img, r)
                     ? "position, normal and bias"
                     : "depth and bias (the folder has no normals: u, v not recomputed)");
     std::printf("%ld of %ld receiver pixels inside the envelope (%.4f %%)\n", t.inside, t.receivers,
