@@ -3,7 +3,7 @@
 // the kernel before this file). PCF_METHOD and PCF_KERNEL arrive as defines, so the driver
 // folds the method dispatch and unrolls the kernel loops. PCF_ALL_TARGETS adds outputs: 0 colour
 // only (timing), 1 + light-space, visibility and receiver (the inspector), 2 + world position
-// (tests, --raw). The bias mode (PCF_SCENE_BIAS) and the light type (PCF_SCENE_SPOT) are
+// and normal (tests, --raw: what `verify` recomputes each pixel's lookup from). The bias mode (PCF_SCENE_BIAS) and the light type (PCF_SCENE_SPOT) are
 // defines too, one program each: llvmpipe runs both sides of every branch under a lane mask,
 // even when the condition is a uniform, so a branch on a uniform costs its whole body on every
 // fragment. As uniforms, the bias modes' branches here and in the kernel's taps made the camera
@@ -35,6 +35,7 @@ layout(location = 3) out vec4 oReceiver;    // dz/du, dz/dv, z before bias, 1 on
 #endif
 #if PCF_ALL_TARGETS >= 2
 layout(location = 4) out vec4 oPosWs;       // world position, w = 1 where drawn
+layout(location = 5) out vec4 oNormalWs;    // the unit normal facing the camera, cos(theta)
 #endif
 
 const float AMBIENT = 0.25f;
@@ -52,7 +53,8 @@ void main() {
     }
     vec3 n = normalize(vNormalWs);
     if (!gl_FrontFacing) n = -n;  // a plane seen from behind
-    float nDotL = max(dot(n, toLight), 0.0f);
+    float cosTheta = dot(n, toLight);
+    float nDotL = max(cosTheta, 0.0f);
 
     // Where this receiver point is looked up, and its ref (shared/pcf_shading.h, the same
     // function the CPU runs for a lesson's pinned point). BIAS_MODE is a constant: the driver
@@ -60,7 +62,7 @@ void main() {
     // The layer of the map this receiver reads (uPcfMapLayers: render/pcf_programs.h): the
     // map's one layer.
     PcfMapLayer layer = uPcfMapLayers[0];
-    PcfReceiverLookup at = pcfReceiverLookup(layer.shadowClipFromWorld, vPosWs, n, dot(n, toLight),
+    PcfReceiverLookup at = pcfReceiverLookup(layer.shadowClipFromWorld, vPosWs, n, cosTheta,
                                              BIAS_MODE, uConstantBias, uSlopeBias, uSlopeMax,
                                              uNormalOffset, layer.texelWs);
     float u = at.u;
@@ -118,5 +120,6 @@ void main() {
 #endif
 #if PCF_ALL_TARGETS >= 2
     oPosWs = vec4(vPosWs, 1.0f);
+    oNormalWs = vec4(n, cosTheta);
 #endif
 }

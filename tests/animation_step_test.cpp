@@ -173,7 +173,7 @@ TEST(AnimationFrames, LessonAnimationsShowTheSceneTheTraceAndTheWordsWhole) {
             session.goToStep(6);
             const LessonStep& step = session.lesson().steps[6];
             ASSERT_TRUE(step.animate);
-            AnimationOptions ao = stepAnimationOptions(step, lesson, 7);
+            AnimationOptions ao = stepAnimationOptions(step);
             Animation animation(session, ao);
             for (int k : {0, ao.frames - 1}) {
                 animation.composeFrame(k);

@@ -117,8 +117,8 @@ TEST(Animation, AStepsFlickerCurvesAreTheSameAtEverySize) {
     Lesson lesson = parseLessonFile(LESSON);
     const int step = static_cast<int>(lesson.steps.size()) - 1;
     const LessonSettings& s = lesson.steps[static_cast<size_t>(step)].settings;
-    FlickerCurves small = stepFlickerCurves(LESSON, step, s, {320, 180});
-    FlickerCurves large = stepFlickerCurves(LESSON, step, s, {960, 540});
+    FlickerCurves small = stepFlickerCurves(lesson, step, s, {320, 180});
+    FlickerCurves large = stepFlickerCurves(lesson, step, s, {960, 540});
     ASSERT_EQ(small.main.size(), 64u);
     EXPECT_EQ(small.main, large.main);
     EXPECT_EQ(small.compare, large.compare);
@@ -133,7 +133,7 @@ TEST(Animation, AStepsFlickerCurvesAreTheSameAtEverySize) {
     EXPECT_GT(largestJump(small.compare), 0.0f);
     EXPECT_LT(largestJump(small.compare), 0.5f);
     // A step that does not move has no curves.
-    EXPECT_TRUE(stepFlickerCurves(LESSON, 0, lesson.steps[0].settings).main.empty());
+    EXPECT_TRUE(stepFlickerCurves(lesson, 0, lesson.steps[0].settings).main.empty());
 }
 
 TEST(AnimateCommand, FramesAreTheSameBytesRunToRunAndVideosReadBack) {
@@ -236,11 +236,12 @@ TEST(AnimateCommand, CtrlCLeavesNoHalfVideoNorScratchFolder) {
     fs::path dir = testutil::makeTempDir("animate");
     fs::path out = dir / "out";
     // Interrupted once the first PNG is written: the videos are then half encoded.
-    std::string script = "cd " + dir.string() + " && (" + PCFSCOPE_EXE +
-                         " animate 13 --frames 400 --size 320x180 -o out/v.mp4 -o out/v.gif "
-                         "--png out/png 2>err.txt >/dev/null & pid=$!; "
-                         "for i in $(seq 600); do ls out/png/*.png >/dev/null 2>&1 && break; "
-                         "sleep 0.05; done; kill -INT $pid; wait $pid; echo $? >rc.txt)";
+    std::string script =
+        "cd " + dir.string() + " && (" + PCFSCOPE_EXE +
+        " animate 13 --step 3 --frames 400 --size 320x180 -o out/v.mp4 -o out/v.gif "
+        "--png out/png 2>err.txt >/dev/null & pid=$!; "
+        "for i in $(seq 600); do ls out/png/*.png >/dev/null 2>&1 && break; "
+        "sleep 0.05; done; kill -INT $pid; wait $pid; echo $? >rc.txt)";
     ASSERT_EQ(std::system(script.c_str()), 0);
     EXPECT_EQ(testutil::readAll(dir / "rc.txt"), "130\n") << testutil::readAll(dir / "err.txt");
     EXPECT_FALSE(fs::exists(out)) << "the folder it made, with everything in it, is taken back";
@@ -253,7 +254,7 @@ TEST(AnimateCommand, BadInputIsOneLineAndLeavesNothing) {
     for (std::string args :
          {"--sweep wobble", "--size 321x180", "--compare tent --compare-kernel 4", "--frames 1"}) {
         testutil::CommandResult r =
-            testutil::runPcfscope("animate 13 " + args + " -o " + out + "/x.mp4");
+            testutil::runPcfscope("animate 13 --step 3 " + args + " -o " + out + "/x.mp4");
         EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
         EXPECT_EQ(testutil::lineCount(r.err), 1) << args << ": " << r.err;
         EXPECT_FALSE(fs::exists(out)) << args;
@@ -265,7 +266,7 @@ TEST(AnimateCommand, BadInputIsOneLineAndLeavesNothing) {
         keep << "mine";
     }
     testutil::CommandResult r =
-        testutil::runPcfscope("animate 13 --frames 2 --size 320x180 -o " + out + "/x.gif");
+        testutil::runPcfscope("animate 13 --step 3 --frames 2 --size 320x180 -o " + out + "/x.gif");
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(testutil::readAll(out + "/x.gif"), "mine");
     fs::remove_all(dir);

@@ -266,8 +266,9 @@ TEST(Bias, TraceJsonCarriesTheModeItsParametersAndEachTapsShift) {
     Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.498f, makeParams(PCF_BILINEAR2X2), b,
                            vec2(0.5f, 0.25f));
     std::string json = traceToJson(tr);
-    EXPECT_NE(json.find("\"rpdb_max\":100,\"dzduv\":[0.5,0.25],\"dzduv_used\":[0.5,0.25]"),
-              std::string::npos)
+    // The bias's keys, whatever other parameters the table lists beside them.
+    EXPECT_NE(json.find("\"rpdb_max\":100,"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"dzduv\":[0.5,0.25],\"dzduv_used\":[0.5,0.25]"), std::string::npos)
         << json;
     EXPECT_NE(json.find("\"bias\":{\"bias\":\"receiver-plane\""), std::string::npos) << json;
     EXPECT_NE(json.find("\"dzduv\":[0.5,0.25]"), std::string::npos) << json;
@@ -346,14 +347,116 @@ TEST(Bias, TraceShowsTheCappedSlope) {
     Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.498f, makeParams(PCF_BILINEAR2X2), b,
                            vec2(0.5f, 0.25f));
     std::string json = traceToJson(tr);
-    EXPECT_NE(json.find("\"rpdb_max\":0.125,\"dzduv\":[0.5,0.25],\"dzduv_used\":[0.125,0.125]"),
-              std::string::npos)
+    EXPECT_NE(json.find("\"rpdb_max\":0.125,"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"dzduv\":[0.5,0.25],\"dzduv_used\":[0.125,0.125]"), std::string::npos)
         << json;
     // Texel (3,3)'s centre is half a texel left and below uv 0.5: shift -(0.125 + 0.125) / 16.
     EXPECT_NE(json.find("\"ref_shift\":-0.015625"), std::string::npos) << json;
     std::string all;
     for (const TraceStep& s : explainTrace(tr)) all += s.text;
-    EXPECT_NE(all.find("capped at 0.125 depth per uv unit"), std::string::npos) << all;
+    EXPECT_NE(all.find("rpdb_max = 0.125 light depth per uv unit (--rpdb-max)"), std::string::npos)
+        << all;
+    EXPECT_NE(all.find("the taps use dz/duv = (0.125, 0.125)."), std::string::npos) << all;
+}
+
+// The words and the JSON print the slope the kernel used (Trace::lookup, pcfLookupRef), which
+// is the one the taps' refs were taken with: every texel's ref shift is dot(used, its centre -
+// uv). Within the cap the slope is used as given, and the words say so.
+TEST(Bias, TraceCarriesTheSlopeTheTapsUsed) {
+    ShadowMap map = randomMap(16, 16, 5);
+    BiasSettings b;
+    b.bias = BiasMode::ReceiverPlane;
+    b.rpdbMax = 0.3f;
+    const vec2 uv(0.43f, 0.61f);
+    for (vec2 given : {vec2(0.2f, -0.1f), vec2(0.9f, -2.0f)}) {
+        Trace tr = traceLookup(map, uv, 0.5f, 0.498f, makeParams(PCF_NAIVE, 3), b, given);
+        const vec2 used = tr.lookup.bias.dzduv;
+        EXPECT_EQ(used, given.x > 0.3f ? vec2(0.3f, -0.3f) : given);
+        for (const TapRecord& t : tr.taps) {
+            vec2 centre = (vec2(t.texel) + 0.5f) / 16.0f;
+            EXPECT_NEAR(t.ref - tr.ref, dot(used, centre - uv), 1e-6f);
+        }
+        Json j = Json::parse(traceToJson(tr));
+        EXPECT_EQ(j["bias"]["dzduv_used"][0].get<float>(), used.x);
+        EXPECT_EQ(j["bias"]["dzduv_used"][1].get<float>(), used.y);
+        std::string all;
+        for (const TraceStep& s : explainTrace(tr)) all += s.text;
+        EXPECT_NE(all.find("the taps use dz/duv = " + formatPair(used) +
+                           (used == given ? ", as given." : ".")),
+                  std::string::npos)
+            << all;
+    }
+}
+
+// A kernel member's parameter changes lookups under the modes the table says it acts under, and
+// under no other: the column the trace's words read is the kernel's behaviour.
+TEST(Bias, AKernelParameterActsExactlyUnderItsModes) {
+    ShadowMap map = randomMap(16, 16, 21);
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<float> u(0.1f, 0.9f);
+    std::uniform_real_distribution<float> slope(-3.0f, 3.0f);
+    int members = 0;
+    for (const ParamInfo& p : allParams()) {
+        const auto* member = std::get_if<float PcfBias::*>(&p.member);
+        if (member == nullptr) continue;
+        ++members;
+        for (int mode = 0; mode < PCF_BIAS_COUNT; ++mode) {
+            BiasSettings base;
+            base.bias = static_cast<BiasMode>(mode);
+            base.rpdbMax = 1.0f;
+            base.softScale = 50.0f;
+            int changed = 0;
+            for (int k = 0; k < 200; ++k) {
+                vec2 uv(u(rng), u(rng));
+                float ref = u(rng);
+                PcfBias a = base.kernelBias(vec2(slope(rng), slope(rng)));
+                PcfBias b = a;
+                b.*(*member) = a.*(*member) * 4.0f;
+                PcfParams prm = makeParams(PCF_NAIVE, 3);
+                if (mode == PCF_BIAS_INTERPOLATED) prm = makeParams(PCF_NEAREST);
+                changed +=
+                    filterVisibility(map, uv, ref, prm, a) != filterVisibility(map, uv, ref, prm, b)
+                        ? 1
+                        : 0;
+            }
+            EXPECT_EQ(changed > 0, paramActsUnder(p, base.bias))
+                << p.key << " under " << biasName(mode) << ": " << changed;
+        }
+    }
+    EXPECT_GE(members, 2);
+}
+
+// The words name every setting the kernel reads under the mode, from the parameter table (its
+// rows acting under the mode that fill a PcfBias member), with the value the kernel read.
+TEST(Bias, TraceWordsNameTheKernelsSettingsOfTheMode) {
+    ShadowMap map = randomMap(8, 8, 3);
+    for (BiasMode mode : {BiasMode::ReceiverPlane, BiasMode::Soft}) {
+        BiasSettings b;
+        b.bias = mode;
+        b.rpdbMax = 7.5f;
+        b.softScale = 300.0f;
+        Trace tr = traceLookup(map, vec2(0.5f), 0.5f, 0.498f, makeParams(PCF_BOX2X2), b,
+                               vec2(0.5f, 0.25f));
+        std::string words = explainTrace(tr).front().text;
+        int named = 0;
+        for (const ParamInfo& p : allParams()) {
+            const auto* member = std::get_if<float PcfBias::*>(&p.member);
+            if (member == nullptr) continue;
+            std::string value = formatNumber(tr.lookup.bias.*(*member));
+            bool acts = paramActsUnder(p, mode);
+            named += acts ? 1 : 0;
+            if (mode == BiasMode::ReceiverPlane) {
+                EXPECT_EQ(words.find(std::string(p.key) + " = " + value) != std::string::npos, acts)
+                    << p.key << ": " << words;
+            } else if (acts) {
+                EXPECT_NE(words.find(value), std::string::npos) << p.key << ": " << words;
+            }
+        }
+        EXPECT_GE(named, 1) << biasModeName(mode);
+        EXPECT_NE(words.find(mode == BiasMode::Soft ? "* 300)" : "rpdb_max = 7.5 light depth"),
+                  std::string::npos)
+            << words;
+    }
 }
 
 // The default cap on `grazing`: its flat surfaces (the ground and the box top share one slope,
@@ -464,7 +567,7 @@ TEST_F(BiasCli, CombinationsThatCannotExistExitTwoAndWriteNothing) {
          "bias interpolated"},
         {"render --scene grazing --bias fancy -o " + out, "unknown bias mode 'fancy'"},
         {"render --scene grazing --bias slope --slope-max 2 -o " + out,
-         "--slope-max must be in [0, 1], got 2"},
+         "--slope-max must be in [0, 1] light depth units, got 2"},
         {"trace --example --method tent --bias soft", "tent gets its comparisons"},
         {"trace --example --method poisson --bias interpolated", "use --method nearest"},
         {"trace --example --bias 0.002", "unknown bias mode '0.002'"},

@@ -175,5 +175,108 @@ TEST_F(CliInputChecks, SizeRangesAreStatedOneWayInTheHelpAndTheError) {
     }
 }
 
+// --light-size means one thing in every command: a directional light's angular diameter in
+// degrees, in the parameter table's [0, 10], 0 the scene light's; a spot light's size is its
+// radius, --light-radius. Values outside the range (nan and inf included) are refused by every
+// command with the table's words and the value as typed; each size given for the other kind of
+// light is refused, not ignored (render used to write it into render.json and ignore it).
+TEST_F(CliInputChecks, LightSizeIsOneThingInEveryCommand) {
+    const std::string range = "--light-size must be in [0, 10] degrees, got ";
+    for (const std::string& command :
+         {std::string("render --scene post-in-sun --method pcss --size 64x36 -o out.png"),
+          std::string("truth --scene post-in-sun --size 16x9 -o out.exr"),
+          std::string("bench --quick --scene post-in-sun --methods pcss -o out")}) {
+        for (std::string bad : {"nan", "-1", "-inf", "inf", "11", "10.000000001"}) {
+            expectRefused(command + " --light-size=" + bad, range + bad);
+        }
+        expectRefused(command + " --light-size 0x2", "--light-size must be a decimal number");
+        expectRefused(command + " --light-radius 0.5",
+                      "--light-radius (a spot light's radius) does not apply to a directional "
+                      "light, whose size is its angular diameter");
+    }
+    for (const std::string& command :
+         {std::string("render --scene post-under-spot --method pcss --size 64x36 -o out.png"),
+          std::string("truth --scene post-under-spot --size 16x9 -o out.exr")}) {
+        expectRefused(command + " --light-size 2",
+                      "--light-size (a directional light's angular diameter) does not apply to a "
+                      "spot light, whose size is its radius");
+        expectRefused(command + " --light-radius 101",
+                      "--light-radius must be in [0, 100] world units, got 101");
+    }
+    // stability's pcss sweeps choose their own lights: the option is not offered.
+    expectRefused("stability --quick --light-size 2 -o out", "--light-size");
+}
+
+// A value below a range is printed as typed, never rounded into it: --bound 1e-300 is not "0".
+TEST_F(CliInputChecks, OutOfRangeValuesArePrintedAsGiven) {
+    expectRefused("truth --scene box-on-plane --bound 1e-300 -o t.exr",
+                  "--bound 1e-300 is out of range [1e-06, 1]");
+    expectRefused("render --scene box-on-plane --kernel 9 -o r.png",
+                  "--kernel must be 1..8, got 9");
+    expectRefused("render --scene box-on-plane --slope-max 1.0000001 -o r.png",
+                  "--slope-max must be in [0, 1] light depth units, got 1.0000001");
+    expectRefused("trace --example --z 1.0000001", "--z 1.0000001 is out of range [0, 1]");
+}
+
+// A size one step's compare cannot take names that step (the whole export was refused with only
+// "a split view of 3 parts needs...").
+TEST_F(CliInputChecks, ASizeRefusedForOneStepNamesIt) {
+    expectRefused("export 8 --size 320x180 -o out",
+                  "--size 320x180: step 3's compare (bias=none,constant,slope): a split view of 3 "
+                  "parts needs a frame at least 484 pixels wide, got 320");
+}
+
+// Options that would change nothing are refused, not ignored: animate's --compare-kernel with a
+// comparison that has no kernel, --snap with a sweep other than light's creeping grid, a chart
+// step (no sweep moves a chart), and view's --bench-frames 0 (it opened the window).
+TEST_F(CliInputChecks, OptionsThatWouldChangeNothingAreRefused) {
+    const std::string animate = "animate 13 --step 3 --frames 2 --size 320x180 -o v.gif ";
+    expectRefused(animate + "--compare nearest --compare-kernel 5",
+                  "--compare-kernel is for a comparison method with a kernel; nearest has none");
+    expectRefused(animate + "--compare none --compare-kernel 5",
+                  "--compare-kernel is for a comparison method with a kernel; --compare none "
+                  "draws no second curve");
+    expectRefused(animate + "--sweep sun --snap",
+                  "--snap is for --sweep light (it snaps the creeping texel grid), not sun");
+    expectRefused("animate 11 --step 1 --frames 2 --size 320x180 -o v.gif",
+                  "lesson step 1 shows a chart, which no sweep moves");
+    expectRefused("view 3 --bench-frames 0", "--bench-frames 0 is out of range (1..10000)");
+}
+
+// What --replot reads back is what pcfscope writes: decimal numbers, never negative where they
+// are measures or counts (hex and negative times were drawn), and rows its charts can draw
+// (rows of metrics no chart reads made five empty charts and exit 0).
+TEST_F(CliInputChecks, ReplotReadsOnlyWhatPcfscopeWrites) {
+    std::string bench = testutil::readAll(PCFSCOPE_SOURCE_DIR "/lessons/figures/bench.csv");
+    size_t row = bench.find('\n') + 1;
+    size_t ms = bench.find(',', bench.find(',', bench.find(',', row) + 1) + 1) + 1;
+    size_t msEnd = bench.find(',', ms);
+    for (std::string bad : {"0x1p4", "-21.0463", " 21"}) {
+        std::string csv = bench;
+        csv.replace(ms, msEnd - ms, bad);
+        std::ofstream(path("bench.csv")) << csv;
+        mKeep = {"bench.csv"};
+        expectRefused("bench --replot bench.csv -o out", "bench.csv:2: field 4 '" + bad + "'");
+    }
+    std::string stability = testutil::readAll(PCFSCOPE_SOURCE_DIR "/lessons/figures/stability.csv");
+    std::string renamed;
+    for (size_t at = 0, end; at < stability.size(); at = end + 1) {
+        end = stability.find('\n', at);
+        std::string line = stability.substr(at, end - at);
+        // Every acne row's metric renamed to one no chart reads.
+        if (line.rfind("acne,", 0) == 0) {
+            size_t metric = line.rfind(',', line.rfind(',') - 1);
+            line = line.substr(0, metric) + ",shadow_rate_v2" + line.substr(line.rfind(','));
+        }
+        renamed += line + "\n";
+        if (end == std::string::npos) break;
+    }
+    std::ofstream(path("stability.csv")) << renamed;
+    mKeep = {"bench.csv", "stability.csv"};
+    expectRefused("stability --replot stability.csv -o out",
+                  "stability.csv: the acne rows hold no metric its chart draws "
+                  "(stability_acne.png would be empty)");
+}
+
 }  // namespace
 }  // namespace pcf

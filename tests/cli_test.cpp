@@ -132,9 +132,9 @@ TEST_F(CliTest, BadInputExitsTwoWithOneLine) {
         {"trace --map " + path("gray.png") + at, "uint8"},
         {"trace --map " + path("nan.exr") + at, "texel (1, 2) is NaN"},
         {"trace --map " + path("good.exr") + at + " --method pcf-naive --kernel 9",
-         "--kernel 9 is out of range"},
+         "--kernel must be 1..8, got 9"},
         {"trace --map " + path("good.exr") + at + " --method pcf-naive --kernel 0",
-         "--kernel 0 is out of range"},
+         "--kernel must be 1..8, got 0"},
         {"trace --map " + path("good.exr") + at + " --method tent --kernel 4", "tent takes"},
         {"trace --map " + path("good.exr") + at + " --method fancy", "unknown method 'fancy'"},
         {"trace --map " + path("good.exr") + " --uv 0.5 --z 0.5", "--uv expects"},
@@ -149,8 +149,9 @@ TEST_F(CliTest, BadInputExitsTwoWithOneLine) {
         {"trace --example --z nan", "--z nan is out of range"},
         {"trace --example --z 1.5", "--z 1.5 is out of range"},
         // Options the method does not use are still checked: a typo should not pass unseen.
-        {"trace --example --method poisson --kernel 99", "--kernel 99 is out of range"},
-        {"trace --example --method nearest --radius -5", "--radius -5 is out of range"},
+        {"trace --example --method poisson --kernel 99", "--kernel must be 1..8, got 99"},
+        {"trace --example --method nearest --radius -5",
+         "--radius must be in (0, 64] texels, got -5"},
         {"frobnicate", "frobnicate"},
     };
     for (const Case& c : cases) {

@@ -53,15 +53,21 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
               "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,"
               "acne_share,acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,"
               "shimmer_mean,shimmer_p99,flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,"
-              "gl_renderer,contact_edge_rmse,contact_edge_pixels,truth,contact_distance");
+              "gl_renderer,contact_edge_rmse,contact_edge_pixels,truth,contact_distance,"
+              "gpu_cpu_ms_iqr,lookup_cpu_ms_iqr");
     std::set<std::string> methods;
     int rows = 0;
     while (std::getline(csv, line)) {
         ++rows;
         std::vector<std::string> f = splitCsvLine(line);
-        ASSERT_EQ(f.size(), 34u) << line;
+        ASSERT_EQ(f.size(), 36u) << line;
         EXPECT_EQ(f[32], "hard (the light's centre)") << line;  // truth
         EXPECT_EQ(f[33], "0") << line;                          // contact_distance: not measured
+        // The CPU times' spreads: the IQR of the repeats, never negative, below the median.
+        for (auto [iqr, median] : {std::pair{34, 27}, std::pair{35, 28}}) {
+            EXPECT_GE(std::stod(f[iqr]), 0.0) << line;
+            EXPECT_LT(std::stod(f[iqr]), std::stod(f[median])) << line;
+        }
         methods.insert(f[0]);
         bool kernelMethod =
             f[0] == "pcf-naive" || f[0] == "pcf-gather" || f[0] == "pcf-hw" || f[0] == "tent";
@@ -376,7 +382,7 @@ TEST_F(BenchCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
         {"--shimmer-frames 40", "--shimmer-frames 40 is out of range"},
         {"--weights box,sharp", "unknown --weights 'sharp'"},
         {"--methods nearest --weights gaussian", "pcf-naive and pcf-gather only"},
-        {"--weights gaussian --sigma -1", "--sigma -1 is out of range"},
+        {"--weights gaussian --sigma -1", "--sigma must be in [0.05, 16] texels, got -1"},
         {"--methods hw2x2 --bias soft", "soft"},
         {"--spp 0", "--spp 0"},
         {"--repeats 0", "--repeats"},

@@ -67,7 +67,7 @@ TEST_F(TruthCommand, WritesTheVisibilityTopDownAsTheLibraryComputesIt) {
 // A target too fine for 513 scanlines (issue 24 finding 15: a bound of 0.002005 above the 1/512
 // asked for, unsaid): the summary says how many pixels stopped short of it.
 TEST_F(TruthCommand, SaysWhichPixelsStoppedAboveTheTarget) {
-    auto r = testutil::runPcfscope("truth --scene sphere-over-plane --size 48x27 --bound 1e-9 -o " +
+    auto r = testutil::runPcfscope("truth --scene sphere-over-plane --size 48x27 --bound 1e-6 -o " +
                                    path("gt.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::vector<std::string> names = readImageChannelNames(path("gt.exr"));
@@ -75,7 +75,7 @@ TEST_F(TruthCommand, SaysWhichPixelsStoppedAboveTheTarget) {
     ASSERT_LT(bound, 2u);
     std::vector<float> both = readImageFloats(path("gt.exr"), 2);
     long above = 0;
-    for (size_t k = bound; k < both.size(); k += 2) above += both[k] > 1e-9f ? 1 : 0;
+    for (size_t k = bound; k < both.size(); k += 2) above += both[k] > 1e-6f ? 1 : 0;
     ASSERT_GT(above, 0);
     EXPECT_NE(r.err.find("truth: " + std::to_string(above) +
                          " pixels did not reach the target within 513 scanlines"),
@@ -133,7 +133,7 @@ radius = 0.3
 }
 
 // A spot light with a radius: the truth integrates over its disk (light_visibility.h), as the
-// library computes it; --light-size is the spot's radius; a sphere reaching behind the disk is
+// library computes it; --light-radius is the spot's radius; a sphere reaching behind the disk is
 // refused with one line.
 TEST_F(TruthCommand, IntegratesASpotLightsDisk) {
     std::string spot = R"([camera]
@@ -185,10 +185,12 @@ half = [0.15, 0.75, 0.15]
     EXPECT_GT(truth.refinedPixels, partial);
 
     auto big = testutil::runPcfscope("truth --scene-file " + scene +
-                                     " --light-size 101 --size 24x14 -o " + path("big.exr"));
+                                     " --light-radius 101 --size 24x14 -o " + path("big.exr"));
     EXPECT_EQ(big.exitCode, 2) << big.err;
     EXPECT_EQ(testutil::lineCount(big.err), 1) << big.err;
-    EXPECT_NE(big.err.find("a spot light's radius"), std::string::npos) << big.err;
+    EXPECT_NE(big.err.find("--light-radius must be in [0, 100] world units, got 101"),
+              std::string::npos)
+        << big.err;
     EXPECT_FALSE(std::filesystem::exists(path("big.exr")));
 
     std::string behind = path("behind.toml");

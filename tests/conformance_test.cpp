@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <random>
 
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "kernel/settings.h"
+#include "kernel/trace_json.h"
 #include "render/image_io.h"
 #include "run_command.h"
 
@@ -190,6 +193,118 @@ TEST(Conformance, VerifyPassesOnTheRendererAndCatchesAWrongPixel) {
     auto missing = runPcfscope("verify " + (dir / "nothing").string());
     EXPECT_EQ(missing.exitCode, 2);
     EXPECT_EQ(testutil::lineCount(missing.err), 1) << missing.err;
+    std::filesystem::remove_all(dir);
+}
+
+// verify recomputes every pixel's lookup (u, v, depth before bias, ref) from its position and
+// normal under the bias render.json names, every mode exactly: each mode's render passes, and a
+// render.json that says another amount or another mode is refused (a slope_bias 50 times the
+// rendered one, or slope for a constant-bias render, passed as "as rendered" when slope was
+// checked as a range).
+TEST(Conformance, VerifyRecomputesEveryBiasModeAndRefusesAnotherLabel) {
+    std::filesystem::path dir = makeTempDir("verify-bias");
+    auto rendered = [&](const std::string& name, const std::string& args) {
+        std::string raw = (dir / name).string();
+        auto r = runPcfscope("render " + args + " --map-size 128 --size 160x90 --raw " + raw);
+        EXPECT_EQ(r.exitCode, 0) << args << ": " << r.err;
+        return raw;
+    };
+    auto relabelled = [](const std::string& raw, const std::string& key, const Json& value) {
+        std::string path = raw + "/render.json";
+        Json j = Json::parse(testutil::readAll(path));
+        j[key] = value;
+        std::ofstream(path) << j.dump();
+        return j;
+    };
+    const std::pair<std::string, std::string> modes[] = {
+        {"none", "--scene grazing --bias none"},
+        {"constant", "--scene grazing --bias constant"},
+        {"slope", "--scene grazing --bias slope --slope-bias 0.001"},
+        {"normal", "--scene post-under-spot --bias normal"},
+        {"receiver-plane", "--scene grazing --bias receiver-plane"},
+        {"soft", "--scene grazing --method pcf-gather --bias soft"},
+        {"interpolated", "--scene grazing --method nearest --bias interpolated"},
+        {"spot-slope", "--scene post-under-spot --method pcss --bias slope"}};
+    for (const auto& [name, args] : modes) {
+        auto v = runPcfscope("verify " + rendered(name, args));
+        EXPECT_EQ(v.exitCode, 0) << name << ": " << v.out << v.err;
+        EXPECT_NE(v.out.find("recomputed from position, normal and bias: as rendered"),
+                  std::string::npos)
+            << name << ": " << v.out;
+    }
+    auto refused = [&](const std::string& raw, const std::string& why) {
+        auto v = runPcfscope("verify " + raw);
+        EXPECT_EQ(v.exitCode, 2) << why << ": " << v.out << v.err;
+        EXPECT_EQ(testutil::lineCount(v.err), 1) << v.err;
+        EXPECT_NE(v.err.find("render.json does not describe these images: pixel ("),
+                  std::string::npos)
+            << why << ": " << v.err;
+        return v.err;
+    };
+    Json slope = Json::parse(testutil::readAll(dir / "slope" / "render.json"));
+    relabelled((dir / "slope").string(), "slope_bias", slope["slope_bias"].get<double>() * 50);
+    EXPECT_NE(refused((dir / "slope").string(), "slope_bias x 50").find("under bias slope"),
+              std::string::npos);
+    relabelled((dir / "slope").string(), "slope_bias", slope["slope_bias"]);
+    relabelled((dir / "slope").string(), "bias", "constant");
+    refused((dir / "slope").string(), "slope labelled constant");
+    relabelled((dir / "constant").string(), "bias", "slope");
+    EXPECT_NE(refused((dir / "constant").string(), "constant labelled slope").find("has ref"),
+              std::string::npos);
+    Json normal = Json::parse(testutil::readAll(dir / "normal" / "render.json"));
+    relabelled((dir / "normal").string(), "normal_offset",
+               normal["normal_offset"].get<double>() * 2);
+    refused((dir / "normal").string(), "normal_offset x 2");
+    relabelled((dir / "normal").string(), "normal_offset", normal["normal_offset"]);
+    relabelled((dir / "normal").string(), "bias", "constant");
+    refused((dir / "normal").string(), "normal labelled constant");
+
+    // A folder without the normals (render --raw before it wrote them): ref from the depth
+    // before bias where the mode needs nothing else; slope, which needs each pixel's angle, is
+    // refused in one line.
+    std::filesystem::remove(dir / "receiver-plane" / "normals.exr");
+    auto plane = runPcfscope("verify " + (dir / "receiver-plane").string());
+    EXPECT_EQ(plane.exitCode, 0) << plane.err;
+    EXPECT_NE(plane.out.find("from depth and bias (the folder has no normals"), std::string::npos)
+        << plane.out;
+    relabelled((dir / "slope").string(), "bias", "slope");
+    std::filesystem::remove(dir / "slope" / "normals.exr");
+    auto noNormals = runPcfscope("verify " + (dir / "slope").string());
+    EXPECT_EQ(noNormals.exitCode, 2);
+    EXPECT_NE(noNormals.err.find("bias slope depends on each pixel's angle to the light"),
+              std::string::npos)
+        << noNormals.err;
+    std::filesystem::remove_all(dir);
+}
+
+// Which render.json keys a folder may lack is the parameter table's column (rawJsonMayLack):
+// each such key left out is its default; any other key left out is refused.
+TEST(Conformance, VerifyTakesTheKeysAFolderMayLackFromTheTable) {
+    std::filesystem::path dir = makeTempDir("verify-keys");
+    std::string raw = (dir / "raw").string();
+    auto r = runPcfscope(
+        "render --scene grazing --bias constant --map-size 64 --size 96x54 --raw " + raw);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::string path = raw + "/render.json";
+    const Json full = Json::parse(testutil::readAll(path));
+    int mayLack = 0;
+    for (const ParamInfo& p : allParams()) {
+        if (!p.rawJson) continue;
+        Json j = full;
+        j.erase(std::string(p.key));
+        std::ofstream(path) << j.dump();
+        auto v = runPcfscope("verify " + raw);
+        if (p.rawJsonMayLack) {
+            ++mayLack;
+            EXPECT_EQ(v.exitCode, 0) << p.key << ": " << v.err;
+        } else {
+            EXPECT_EQ(v.exitCode, 2) << p.key;
+            EXPECT_NE(v.err.find("render.json has no \"" + std::string(p.key) + "\""),
+                      std::string::npos)
+                << v.err;
+        }
+    }
+    EXPECT_GE(mayLack, 6);
     std::filesystem::remove_all(dir);
 }
 

@@ -32,13 +32,6 @@ namespace fs = std::filesystem;
 
 const fs::path SOURCE_DIR = PCFSCOPE_SOURCE_DIR;
 
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
-}
-
 std::vector<fs::path> documents() {
     std::vector<fs::path> docs{SOURCE_DIR / "README.md"};
     for (const auto& entry : fs::directory_iterator(SOURCE_DIR / "docs")) {
@@ -71,7 +64,7 @@ bool isCommand(const std::string& s) {
 std::vector<Shown> commandsOf(const fs::path& path) {
     std::string doc = path.parent_path() == SOURCE_DIR ? path.filename().string()
                                                        : "docs/" + path.filename().string();
-    std::string text = readFile(path);
+    std::string text = testutil::readAll(path);
     std::vector<Shown> out;
     std::istringstream in(text);
     std::string prose, pending;
@@ -132,9 +125,9 @@ std::vector<std::string> wordsOf(const std::string& command) {
     return words;
 }
 
-const std::set<std::string> SUBCOMMANDS = {"view",  "export",  "render",    "trace",   "methods",
-                                           "truth", "bench",   "stability", "verify",  "lesson",
-                                           "check", "animate", "pick",      "exercise"};
+const std::set<std::string> SUBCOMMANDS = {"view",  "export",  "render",    "trace",    "methods",
+                                           "truth", "bench",   "stability", "verify",   "lesson",
+                                           "check", "animate", "pick",      "exercise", "advise"};
 
 // A synopsis: optional parts in brackets, alternatives, or placeholders in capitals (LESSON,
 // DIR, WxH) where a value goes.
@@ -242,7 +235,7 @@ Outcome runIn(const fs::path& dir, const std::string& shell) {
 
 // The first ```toml block of docs/lesson-authoring.md: the worked example, my-lesson.toml.
 std::string workedExample() {
-    std::istringstream doc(readFile(SOURCE_DIR / "docs/lesson-authoring.md"));
+    std::istringstream doc(testutil::readAll(SOURCE_DIR / "docs/lesson-authoring.md"));
     std::string example;
     bool inside = false;
     for (std::string line; std::getline(doc, line);) {
@@ -310,7 +303,7 @@ TEST(DocCommandsFound, QuickRunsReplaceOrAddOptions) {
 TEST(DocCommandsFound, EveryShortenedCommandIsOneItsDocPermits) {
     std::vector<Shown> all = shownCommands();
     for (const Shortened& sh : SHORTENED) {
-        EXPECT_NE(readFile(SOURCE_DIR / sh.doc).find(sh.docSays), std::string::npos)
+        EXPECT_NE(testutil::readAll(SOURCE_DIR / sh.doc).find(sh.docSays), std::string::npos)
             << sh.doc << " does not say " << sh.docSays;
         bool shown = std::any_of(all.begin(), all.end(), [&](const Shown& s) {
             return s.doc == sh.doc && s.command.starts_with(sh.starts);
@@ -382,7 +375,7 @@ TEST_F(DocCommands, EveryConcreteCommandRunsAndShowsWhatItsDocSays) {
         EXPECT_TRUE(results.count(c)) << "no doc shows `" << c << "` any more";
         return results[c];
     };
-    std::string readme = readFile(SOURCE_DIR / "README.md");
+    std::string readme = testutil::readAll(SOURCE_DIR / "README.md");
     // "`build/pcfscope methods` lists the fifteen methods": one line each, up to the first blank.
     {
         std::istringstream out(result("build/pcfscope methods").out);
@@ -438,7 +431,7 @@ TEST_F(DocCommands, EveryConcreteCommandRunsAndShowsWhatItsDocSays) {
 // 17 teaches it). On post-under-spot (a spot of radius 0.3) pcss is not poisson with radius 1,
 // which it is for a light of size 0 (docs/methods.md).
 TEST_F(DocCommands, PcssUnderASpotUsesTheSpotsRadiusAsTheUserGuideSays) {
-    std::string guide = squeezed(readFile(SOURCE_DIR / "docs/user-guide.md"));
+    std::string guide = squeezed(testutil::readAll(SOURCE_DIR / "docs/user-guide.md"));
     EXPECT_NE(guide.find("`pcss`: a directional light's angular diameter, and a spot light's "
                          "radius"),
               std::string::npos);

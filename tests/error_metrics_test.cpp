@@ -181,16 +181,17 @@ TEST(BenchReport, CsvHasTheDocumentedColumnsAndOneLinePerRow) {
               "edge_rmse,edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,"
               "acne_share,acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,"
               "shimmer_mean,shimmer_p99,flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,"
-              "gl_renderer,contact_edge_rmse,contact_edge_pixels,truth,contact_distance");
+              "gl_renderer,contact_edge_rmse,contact_edge_pixels,truth,contact_distance,"
+              "gpu_cpu_ms_iqr,lookup_cpu_ms_iqr");
     std::getline(in, line);
     EXPECT_EQ(line,
               "nearest,0,256,2.0000,12.35,1,0.05,1,0.5,0.75,glFinish+steady_clock,0.1000,1.0000,"
               "0.5000,0,box,0,0,0,0,0,0,0,0,0,0,0,0.0000,0.0000,llvmpipe (LLVM 15.0.6; 256 bits),0,"
-              "0,,0");
+              "0,,0,0.0000,0.0000");
     int lines = 2;
     while (std::getline(in, line)) {
         ++lines;
-        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 33) << line;
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 35) << line;
     }
     EXPECT_EQ(lines, 1 + static_cast<int>(rows.size()));
     EXPECT_NE(csv.find("tent,5,1024,11.0000,12.35,36,0.0123456789,1,0.123456789,0.75,"),
@@ -380,7 +381,9 @@ TEST(SpeedChart, ACrowdTooDenseForNamesGetsNumberedBadgesAndAKey) {
 // nothing of bars. The legend states the front's rule.
 TEST(SpeedChart, SubtitleSaysWhatTheBarsAre) {
     std::vector<BenchRow> rows = sampleRows();  // poisson 1024 is noisy
-    EXPECT_EQ(spreadNote(), "bars: IQR of the repeated times, centred on the median");
+    EXPECT_EQ(spreadNote(),
+              "bars: IQR of the repeated times, centred on the median; the front's line joins "
+              "only dots whose bars are apart");
     SpeedChartText text;
     text.subtitle = "rendered on llvmpipe";
     auto unwrapped = [](std::string t) {
@@ -390,14 +393,15 @@ TEST(SpeedChart, SubtitleSaysWhatTheBarsAre) {
     SpeedChartLayout all = layoutSpeedChart(rows, {1280, 720});
     ASSERT_TRUE(all.labelShown[4]);
     EXPECT_EQ(all.labelTexts[4], "poisson 1024");
-    EXPECT_EQ(unwrapped(speedChartTextFor(rows, text, {1280, 720}).subtitle),
-              "rendered on llvmpipe; " + spreadNote());
+    // The bars' words on a line of their own.
+    EXPECT_EQ(speedChartTextFor(rows, text, {1280, 720}).subtitle,
+              "rendered on llvmpipe\n" + spreadNote());
     // Narrow: the same words, wrapped to lines that fit the chart.
     glm::ivec2 narrow{480, 270};  // a lesson frame's chart, at its 18 px type
     SpeedChartText big = text;
     big.minFontPx = 18.0f;
     SpeedChartText fitted = speedChartTextFor(rows, big, narrow);
-    EXPECT_EQ(unwrapped(fitted.subtitle), "rendered on llvmpipe; " + spreadNote());
+    EXPECT_EQ(unwrapped(fitted.subtitle), "rendered on llvmpipe " + spreadNote());
     EXPECT_GT(subtitleLineCount(fitted.subtitle), 1);
     SpeedChartLayout small =
         layoutSpeedChart(rows, narrow, ChartTiming::Scene, ChartAccuracy::EdgeRmse, {}, 18.0f,
@@ -416,7 +420,82 @@ TEST(SpeedChart, SubtitleSaysWhatTheBarsAre) {
     for (BenchRow& r : exact) r.gpuMsIqr = 0.0;
     EXPECT_EQ(speedChartTextFor(exact, text, {1280, 720}).subtitle, "rendered on llvmpipe");
     EXPECT_EQ(unwrapped(speedChartTextFor(exact, text, {1280, 720}, ChartTiming::Lookup).subtitle),
-              "rendered on llvmpipe; " + spreadNote());
+              "rendered on llvmpipe " + spreadNote());
+}
+
+// On a CPU rasteriser with CPU times recorded, the chart, the front and bench.md go by the
+// process CPU time (issue 32: 17.4's wall clock put pcf-gather 7x7 left of 3x3 while its CPU time
+// rose with the kernel); on a GPU, or without CPU times, by the wall clock or the GPU's timer. The
+// CPU times' IQRs go through the CSV and back.
+TEST(SpeedChart, ACpuRasterisersTimesAreItsCpuTime) {
+    std::vector<BenchRow> rows(2);
+    for (int k = 0; k < 2; ++k) {
+        BenchRow& r = rows[k];
+        r.point = {PCF_GATHER, k == 0 ? 3 : 7, 512};
+        r.timer = "glFinish+steady_clock";
+        r.glRenderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
+        r.error.edgeRmse = k == 0 ? 0.15 : 0.10;
+    }
+    // The wall clock backwards (11.6 ms for 3x3, 8.5 for 7x7), the CPU time rising.
+    rows[0].gpuMs = 11.6, rows[0].gpuMsIqr = 0.5, rows[0].gpuCpuMs = 6.3, rows[0].gpuCpuMsIqr = 0.2;
+    rows[1].gpuMs = 8.5, rows[1].gpuMsIqr = 5.7, rows[1].gpuCpuMs = 9.2, rows[1].gpuCpuMsIqr = 0.4;
+    rows[0].lookupMs = 8.0, rows[0].lookupCpuMs = 5.4, rows[0].lookupCpuMsIqr = 0.3;
+    rows[1].lookupMs = 18.4, rows[1].lookupCpuMs = 11.3, rows[1].lookupCpuMsIqr = 0.6;
+    EXPECT_TRUE(benchTimesByCpu(rows[0]));
+    EXPECT_DOUBLE_EQ(chartMs(rows[0], ChartTiming::Scene), 6.3);
+    EXPECT_DOUBLE_EQ(chartIqr(rows[1], ChartTiming::Scene), 0.4);
+    EXPECT_DOUBLE_EQ(chartMs(rows[1], ChartTiming::Lookup), 11.3);
+    EXPECT_DOUBLE_EQ(chartIqr(rows[0], ChartTiming::Lookup), 0.3);
+    EXPECT_EQ(speedChartXLabel(rows, ChartTiming::Scene),
+              "camera pass, process CPU time, ms (log scale)");
+    // By CPU time 3x3 is the cheaper and 7x7 the more accurate: both on the front, 3x3 first,
+    // and their bars (6.1-6.5 and 9.0-9.4 ms) apart: joined.
+    SpeedChartLayout L = layoutSpeedChart(rows, {1280, 720});
+    EXPECT_EQ(L.front, (std::vector<size_t>{0, 1}));
+    EXPECT_LT(L.points[0].x, L.points[1].x);
+    EXPECT_EQ(L.frontJoined, (std::vector<bool>{false, true}));
+    EXPECT_FALSE(benchSpreadsOverlap(rows[0], rows[1], false));
+    // Read back from the CSV, the same.
+    std::vector<BenchRow> back = parseBenchCsv(benchCsv(rows), "cpu.csv");
+    ASSERT_EQ(back.size(), 2u);
+    EXPECT_DOUBLE_EQ(back[1].gpuCpuMsIqr, 0.4);
+    EXPECT_DOUBLE_EQ(back[0].lookupCpuMsIqr, 0.3);
+    EXPECT_DOUBLE_EQ(chartMs(back[1], ChartTiming::Scene), 9.2);
+    // A GPU's rows go by their own timer, and so does a CPU rasteriser's file without CPU times.
+    std::vector<BenchRow> gpu = rows;
+    for (BenchRow& r : gpu) r.glRenderer = "NVIDIA H200/PCIe/SSE2";
+    EXPECT_FALSE(benchTimesByCpu(gpu[0]));
+    EXPECT_DOUBLE_EQ(chartMs(gpu[0], ChartTiming::Scene), 11.6);
+    EXPECT_EQ(speedChartXLabel(gpu, ChartTiming::Scene), "camera pass, time, ms (log scale)");
+    EXPECT_EQ(layoutSpeedChart(gpu, {1280, 720}).front, (std::vector<size_t>{1}));
+    std::vector<BenchRow> old = rows;
+    for (BenchRow& r : old) r.gpuCpuMs = r.lookupCpuMs = 0.0;
+    EXPECT_DOUBLE_EQ(chartMs(old[0], ChartTiming::Scene), 11.6);
+    BenchSetup setup;
+    EXPECT_NE(benchMarkdown(rows, setup).find("Pareto front of scene process CPU time"),
+              std::string::npos);
+    EXPECT_NE(benchMarkdown(rows, setup).find("| 6.300 | 0.200 | 5.400 | 0.300 |"),
+              std::string::npos)
+        << benchMarkdown(rows, setup);
+}
+
+// A step of the front is a line only where the two dots' bars are apart: the line says the next
+// dot costs more, which overlapping bars do not support (issue 32). The dots stay on the front,
+// ringed.
+TEST(SpeedChart, TheFrontsLineJoinsOnlyDotsWhoseBarsAreApart) {
+    std::string csv = std::string(BENCH_CSV_HEADER_V2) + "\n";
+    // method,kernel,map,gpu_ms,cpu_ns,reads,rmse,max,edge_rmse,edge_max,timer,iqr,lookup,iqr,noisy
+    csv += "nearest,0,256,2,1,1,0,1,0.5,1,t,0.2,1,0.05,0\n";     // 1.9 to 2.1 ms
+    csv += "hw2x2,0,256,2.3,1,1,0,1,0.4,1,t,0.6,1,0.05,0\n";     // 2.0 to 2.6: overlaps nearest
+    csv += "pcf-gather,3,256,5,1,16,0,1,0.3,1,t,0.2,2,0.1,0\n";  // 4.9 to 5.1: apart
+    csv += "tent,3,256,5.05,1,16,0,1,0.25,1,t,0.02,2,0.1,0\n";   // 5.04 to 5.06: inside gather's
+    std::vector<BenchRow> rows = parseBenchCsv(csv, "front.csv");
+    SpeedChartLayout L = layoutSpeedChart(rows, {1280, 720});
+    EXPECT_EQ(L.front, (std::vector<size_t>{0, 1, 2, 3}));
+    EXPECT_EQ(L.frontJoined, (std::vector<bool>{false, false, true, false}));
+    EXPECT_TRUE(benchSpreadsOverlap(rows[0], rows[1], false));
+    EXPECT_FALSE(benchSpreadsOverlap(rows[1], rows[2], false));
+    EXPECT_TRUE(benchSpreadsOverlap(rows[2], rows[3], false));
 }
 
 // The front is the Pareto front of the medians over every dot: a noisy dot (a wide bar) that no
@@ -508,6 +587,8 @@ TEST(SpeedChart, AChartFromACsvNamesItsRenderer) {
             subtitle += b.text;
             EXPECT_LE(b.rect.right(), size.x) << b.text;
         }
+        // Read as one text: where a line wraps is the layout's business.
+        std::replace(subtitle.begin(), subtitle.end(), '\n', ' ');
         return subtitle;
     };
     std::string shipped = PCFSCOPE_SOURCE_DIR "/lessons/figures/bench.csv";
@@ -517,7 +598,7 @@ TEST(SpeedChart, AChartFromACsvNamesItsRenderer) {
             << subtitle;
         EXPECT_NE(subtitle.find(LLVMPIPE_NOTE), std::string::npos) << subtitle;
     }
-    EXPECT_EQ(LLVMPIPE_NOTE, "llvmpipe: a CPU rasteriser; ratios carry over, milliseconds do not");
+    EXPECT_EQ(LLVMPIPE_NOTE, "llvmpipe: a CPU rasteriser; a GPU's times, and their ratios, differ");
     std::string old = (std::filesystem::temp_directory_path() / "pcfscope-v4-bench.csv").string();
     {
         std::ofstream f(old);
@@ -540,8 +621,10 @@ TEST(SpeedChart, DrawsTheRequestedSizeWithEachMethodsColour) {
     text.minFontPx = 24.0f;  // dots 6 px
     std::vector<uint8_t> rgba = drawSpeedChart(rows, size, text);
     ASSERT_EQ(rgba.size(), static_cast<size_t>(size.x) * size.y * 4);
+    // Laid out as drawSpeedChart lays it out: with the subtitle's lines once wrapped.
+    int subtitleLines = subtitleLineCount(speedChartTextFor(rows, text, size).subtitle);
     SpeedChartLayout L = layoutSpeedChart(rows, size, ChartTiming::Scene, ChartAccuracy::EdgeRmse,
-                                          {}, text.minFontPx);
+                                          {}, text.minFontPx, false, subtitleLines);
     // Each dot is solid: 2 px below its centre (off the bar through it) is its method's colour,
     // the noisy poisson dot's too.
     for (size_t k = 0; k < rows.size(); ++k) {

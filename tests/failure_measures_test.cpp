@@ -82,5 +82,24 @@ TEST(LeakWidth, RunsShorterThanTheMinimumAreStrayAndDiagonalRunsHoldTogether) {
     EXPECT_EQ(g.width().texels, 5.0);
 }
 
+// A mask tested on every second pixel (bench's clean masks on a large frame): the band's tested
+// pixels are two apart, a run only at that stride.
+TEST(LeakWidth, AStridedMaskIsConnectedAtItsStride) {
+    SyntheticLeak f;
+    f.band(9);
+    for (size_t k = 0; k < f.umbra.size(); ++k) {
+        int x = static_cast<int>(k % f.size.x), y = static_cast<int>(k / f.size.x);
+        f.umbra[k] = x % 2 == 0 && y % 2 == 0;
+    }
+    // Rows 8 and 10, columns 0, 2, .., 8: ten tested pixels, none next to another.
+    LeakWidth plain = leakWidth(f.visibility, f.umbra, f.texels, f.world, f.size);
+    EXPECT_EQ(plain.support, 0);
+    EXPECT_EQ(plain.stray, 10);
+    LeakWidth strided =
+        leakWidth(f.visibility, f.umbra, f.texels, f.world, f.size, LEAK_MIN_RUN, 2);
+    EXPECT_EQ(strided.support, 10);
+    EXPECT_EQ(strided.texels, 8.0);
+}
+
 }  // namespace
 }  // namespace pcf

@@ -1,5 +1,6 @@
 // The GLSL equals the CPU kernel: the same shared source, compiled twice, gives the same
-// visibility on the same inputs (DESIGN.md section 5). Runs on llvmpipe through EGL in CI.
+// visibility on the same inputs (docs/architecture.md, "One kernel for the CPU and the GPU"). Runs
+// on llvmpipe through EGL in CI.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -54,8 +54,9 @@ TEST(GpuTimer, TimesRealWorkWithTheRightTimer) {
     std::vector<double> sorted = r.samplesMs;
     std::sort(sorted.begin(), sorted.end());
     EXPECT_EQ(r.medianMs, sorted[2]);
-    // llvmpipe runs the work at glFinish, so only the wall clock sees it (DESIGN.md 8); a GPU's
-    // own timer query is honest there. The renderers this suite runs on, by name:
+    // llvmpipe runs the work at glFinish, so only the wall clock sees it (docs/measurement.md,
+    // "Speed against accuracy: bench"); a GPU's own timer query is honest there. The renderers
+    // this suite runs on, by name:
     const std::string& name = context->renderer();
     bool software = name.starts_with("llvmpipe") || name.starts_with("softpipe");
     EXPECT_EQ(r.timer, software ? "glFinish+steady_clock" : "GL_TIME_ELAPSED") << name;

@@ -117,6 +117,40 @@ TEST_F(InputFiles, AFifoIsRefusedWithoutBlocking) {
     EXPECT_THROW(parseSceneFile(fifo), InputError);
     EXPECT_THROW(readDepthImage(fifo), ImageError);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+    // A lesson's chart that is a FIFO is said to be one, not "not found".
+    ASSERT_EQ(mkfifo(path("chart.csv").c_str(), 0644), 0);
+    std::ofstream(path("chart.toml")) << "title = \"t\"\nscene = \"box-on-plane\"\n[[step]]\n"
+                                         "title = \"s\"\nchart = \"chart.csv\"\ntext = \"x\"\n";
+    try {
+        parseLessonFile(path("chart.toml"));
+        ADD_FAILURE() << "a FIFO chart was accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  path("chart.toml") + ":5: step 1 chart 'chart.csv' is not a regular file (a " +
+                      "FIFO, device or socket) (looked at " + path("chart.csv") + ")");
+    }
+}
+
+// A claim nested 60,000 deep (120 KB, well under the file limit) overflowed the claim parser's
+// stack in every command that reads a lesson: now one line naming the claim's line, exit 2.
+TEST_F(InputFiles, ADeeplyNestedClaimIsOneLineNotACrash) {
+    for (const std::string& expr :
+         {std::string(60000, '(') + "1" + std::string(60000, ')'), std::string(60000, '-') + "1"}) {
+        std::string lesson = path("deep.toml");
+        std::ofstream(lesson) << "title = \"t\"\nscene = \"box-on-plane\"\n[[step]]\n"
+                                 "title = \"s\"\nclaims = [\"" +
+                                     expr + " = 1\"]\ntext = \"x\"\n";
+        for (const std::string& command :
+             {std::string("lesson check "), "export --size 320x180 -o " + path("frames") + " "}) {
+            testutil::CommandResult r = testutil::runPcfscope(command + lesson);
+            EXPECT_EQ(r.exitCode, 2) << command;
+            EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err.substr(0, 300);
+            EXPECT_NE(r.err.find(lesson + ":5: step 1 claim"), std::string::npos)
+                << r.err.substr(0, 300);
+            EXPECT_NE(r.err.find("nested deeper than 256 levels"), std::string::npos);
+        }
+        EXPECT_FALSE(fs::exists(path("frames")));
+    }
 }
 
 TEST_F(InputFiles, TooLargeFilesAreRefusedBeforeParsing) {

@@ -211,6 +211,30 @@ TEST_F(LessonCheck, TheFrontIsTheChartsFrontExactly) {
         << r.out;
 }
 
+// "A faster than B" holds only where the two dots' time bars are apart: where they overlap,
+// another run of the bench could order them the other way, and the claim fails with both times
+// and their spreads (issue 32).
+TEST_F(LessonCheck, AnOrderAcrossOverlappingBarsIsNotAFact) {
+    std::string csv = (mDir / "bench.csv").string();
+    std::ofstream(csv) << pcf::BENCH_CSV_HEADER_V2 << "\n"
+                       << "nearest,0,256,2,1,1,0,1,0.5,1,t,0.2,1,0.05,0\n"
+                       << "pcf-gather,3,256,4,1,16,0,1,0.3,1,t,0.4,1,0.05,0\n"
+                       << "pcf-naive,3,256,4.5,1,36,0,1,0.3,1,t,1,1,0.05,0\n";
+    std::string path = write(
+        "claims = [\"chart: nearest 256 faster than gather3 256\",\n"  // 9
+        "  \"chart: gather3 256 faster than naive3 256\"]\n"           // 10
+        "chart = \"" +
+        csv + "\"\n");
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_EQ(testutil::lineCount(r.out), 1) << r.out;
+    EXPECT_NE(r.out.find(":10: step 1 claim \"chart: gather3 256 faster than naive3 256\" fails: "
+                         "gather3 256's and naive3 256's time bars overlap (4.00 +- 0.20 ms and "
+                         "4.50 +- 0.50 ms): no order to claim"),
+              std::string::npos)
+        << r.out;
+}
+
 // A chart fact reads the CSV the step's chart draws: one the chart's table does not know, or on a
 // step without a chart, is a bad file (exit 2, its line); a known one that the rows contradict
 // fails at its line with the numbers (exit 1).

@@ -8,8 +8,10 @@
 #include <variant>
 #include <vector>
 
+#include "base/input_error.h"
 #include "kernel/methods.h"
 #include "kernel/shadow_map.h"
+#include "lesson/lesson.h"
 
 namespace pcf {
 namespace {
@@ -166,6 +168,66 @@ TEST(LessonClaims, BadClaimsAreRefusedWithTheReason) {
     EXPECT_NE(problem("taps = 4").find("braces"), std::string::npos);
     EXPECT_NE(problem("bits 10a1").find("bits"), std::string::npos);
     EXPECT_NE(problem("chart:  ").find("says nothing"), std::string::npos);
+    // Numbers are finite: "inf" and "nan" read as doubles, but no claim means them.
+    EXPECT_NE(problem("{visibility} ~ 1 +- inf").find("finite number >= 0"), std::string::npos);
+    EXPECT_NE(problem("{visibility} ~ 1 +- nan").find("finite number >= 0"), std::string::npos);
+    EXPECT_NE(problem("{visibility} < inf").find("'inf' is not a finite number"),
+              std::string::npos);
+    EXPECT_NE(problem("{visibility} != nan").find("'nan' is not a finite number"),
+              std::string::npos);
+}
+
+// Parentheses and unary minus nest on the parser's stack: past MAX_CLAIM_NESTING levels the
+// claim is refused, however deep (60,000 levels overflowed the stack).
+TEST(LessonClaims, DeepNestingIsRefusedNotOverflowed) {
+    auto nested = [](int n, bool parens) {
+        if (!parens) return std::string(static_cast<size_t>(n), '-') + "1 = 1";
+        return std::string(static_cast<size_t>(n), '(') + "1" +
+               std::string(static_cast<size_t>(n), ')') + " = 1";
+    };
+    for (bool parens : {true, false}) {
+        // At the limit the claim parses and computes (256 minuses cancel).
+        EXPECT_TRUE(holds(nested(MAX_CLAIM_NESTING, parens), bilinearTrace()));
+        for (int n : {MAX_CLAIM_NESTING + 1, 60000}) {
+            try {
+                parseClaim(nested(n, parens));
+                ADD_FAILURE() << n << " levels parsed";
+            } catch (const std::invalid_argument& e) {
+                EXPECT_EQ(std::string(e.what()), "nested deeper than 256 levels of ( and unary -");
+            }
+        }
+    }
+}
+
+// A claim's placeholders index the step's reads, weights and compare parts as its text's do: an
+// index past them is refused when the lesson is read, at the claim's line.
+TEST(LessonClaims, IndicesPastTheStepsReadsAreRefusedWhenRead) {
+    auto error = [](const std::string& claims, const std::string& text = "x") {
+        std::string lesson =
+            "title = \"t\"\nscene = \"box-on-plane\"\n[settings]\n"
+            "method = \"box2x2\"\n[[step]]\ntitle = \"s\"\nclaims = [" +
+            claims + "]\ntext = \"" + text + "\"\n";
+        try {
+            parseLessonString(lesson, "claims.toml");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(error("\"{weight[1,1]} > 0\""), "");
+    EXPECT_EQ(error("\"{weight[99999,99999]} = 0\""),
+              "claims.toml:7: step 1 claim \"{weight[99999,99999]} = 0\": weight[99999,99999] "
+              "is past the 2 x 2 weights this step's method merges (I is 0..1, J is 0..1)");
+    EXPECT_EQ(error("\"{part[0].visibility} = 1\""),
+              "claims.toml:7: step 1 claim \"{part[0].visibility} = 1\": part[0] is past the 0 "
+              "parts of this step's compare");
+    EXPECT_EQ(error("\"{tap[4].depth} < 1\""),
+              "claims.toml:7: step 1 claim \"{tap[4].depth} < 1\": tap[4] is past the 4 reads "
+              "this step's method makes (K is 0..3)");
+    // The text's weights are held to the same.
+    EXPECT_EQ(error("\"lit\"", "w = {weight[2,0]}"),
+              "claims.toml:8: step 1 text: weight[2,0] is past the 2 x 2 weights this step's "
+              "method merges (I is 0..1, J is 0..1)");
 }
 
 }  // namespace

@@ -245,7 +245,7 @@ TEST(LessonFormat, UnknownNamesAreRefused) {
     e = errorOf(withStep("method = \"tent\"\nbias = \"soft\"\n"));
     EXPECT_EQ(e.rfind("bad.toml:7: step 1: bias soft compares", 0), 0u) << e;
     e = errorOf(withStep("slope_max = 3\n"));
-    EXPECT_EQ(e, "bad.toml:6: step 1 slope_max must be in [0, 1], got 3");
+    EXPECT_EQ(e, "bad.toml:6: step 1 slope_max must be in [0, 1] light depth units, got 3");
     EXPECT_EQ(errorOf(withStep("cull = \"both\"\n")),
               "bad.toml:6: unknown cull mode 'both' (known: back, front, none)");
     EXPECT_EQ(errorOf(withStep("depth_format = \"32\"\n")),
@@ -266,9 +266,21 @@ TEST(LessonFormat, ValuesOutOfRangeAreRefused) {
     EXPECT_EQ(errorOf(withStep("radius = 0\n")),
               "bad.toml:6: step 1 radius must be in (0, 64] texels, got 0");
     EXPECT_EQ(errorOf(withStep("constant_bias = 2\n")),
-              "bad.toml:6: step 1 constant_bias must be in [-1, 1], got 2");
+              "bad.toml:6: step 1 constant_bias must be in [-1, 1] light depth units, got 2");
     EXPECT_EQ(errorOf(withStep("constant_bias = nan\n")),
               "bad.toml:6: step 1 constant_bias must be finite, got nan");
+    // The light's size: the parameter table's range, its value as written, and each size for
+    // its own kind of light (the pole scene's is directional), also in a compare.
+    EXPECT_EQ(errorOf(withStep("light_size = 10.000001\n")),
+              "bad.toml:6: step 1 light_size must be in [0, 10] degrees, got 10.000001");
+    EXPECT_EQ(errorOf(withStep("light_radius = 0.5\n")),
+              "bad.toml:6: step 1: light_radius (a spot light's radius) does not apply to a "
+              "directional light, whose size is its angular diameter");
+    EXPECT_EQ(errorOf(withStep("compare = { light_size = [\"2\", \"11\"] }\n")),
+              "bad.toml:6: step 1 compare: light_size must be in [0, 10] degrees, got 11");
+    EXPECT_EQ(errorOf(withStep("compare = { light_radius = [\"0\", \"1\"] }\n")),
+              "bad.toml:6: step 1 compare: light_radius (a spot light's radius) does not apply "
+              "to a directional light, whose size is its angular diameter");
     // A point must lie on a surface the camera sees: the pole scene's ground does, the air
     // above it does not.
     EXPECT_NO_THROW(parseLessonString(withStep("point = [1.1, 0, 0.3]\n"), "ok.toml"));

@@ -18,6 +18,8 @@
 #include <thread>
 
 #include "analysis/ground_truth.h"
+#include "scene/camera.h"
+#include "scene/presets.h"
 #include "scene/raycast.h"
 #include "scene/scene_file.h"
 
@@ -109,13 +111,90 @@ TEST(LightVisibility, ASphereBeforeTheSunIsAnAnnularEclipse) {
     const double diameter = 4.0;
     const double height = 2.0;
     double r = radiusOf(diameter);
-    for (double sphereRadius : {0.01, 0.03, 0.05}) {
-        Scene scene = sphereScene(diameter, sphereRadius, height);
+    for (double given : {0.01, 0.03, 0.05}) {
+        Scene scene = sphereScene(diameter, given, height);
+        double sphereRadius = std::get<Sphere>(scene.objects[1].shape).radius;  // as stored
         double tb = std::tan(std::asin(sphereRadius / height));
         double exact = tb >= r ? 0.0 : 1.0 - tb * tb / (r * r);
         LightFraction f =
             lightVisibleFraction(scene, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
-        EXPECT_LE(std::abs(f.visible - exact), f.bound + 1e-9) << sphereRadius;
+        EXPECT_LE(std::abs(f.visible - exact), f.bound + 1e-12) << sphereRadius;
+        // The ellipse (here a circle) bracketed to within half the target.
+        EXPECT_LE(f.bound, 0.5 / 2048.0) << sphereRadius;
+    }
+}
+
+// The closed form (light_disk_shadow.h) against the slicing it replaces, point by point over the
+// presets' penumbrae: |closed - sliced| <= both bounds. Points are the camera's hits on a grid of
+// the frame, those in the penumbra (0 < f < 1) and a few outside it.
+struct FractionCheck {
+    int penumbra = 0;
+    int compared = 0;
+    double worstClosedBound = 0.0;
+};
+
+FractionCheck compareWithSlices(const Scene& scene, int wanted) {
+    const glm::ivec2 grid(160, 90);
+    const float aspect = 16.0f / 9.0f;
+    const double target = 1.0 / 2048.0;
+    FractionCheck check;
+    int stride = 0;
+    for (int y = 0; y < grid.y; ++y) {
+        for (int x = 0; x < grid.x; ++x) {
+            Ray ray = cameraRay(scene.camera, pixelCentreNdc({x, y}, grid), aspect);
+            std::optional<Hit> hit = intersect(scene, ray);
+            if (!hit) continue;
+            glm::dvec3 pos(hit->posWs);
+            glm::dvec3 facing(hit->frontFace ? hit->normalWs : -hit->normalWs);
+            LightFraction closed = lightVisibleFraction(scene, pos, facing, hit->object, target);
+            bool partial = closed.visible > 0.0 && closed.visible < 1.0;
+            // Every penumbra point until `wanted`, and one in 97 of the others.
+            if (!(partial ? check.penumbra < wanted : ++stride % 97 == 0)) continue;
+            LightFraction sliced =
+                lightVisibleFractionBySlices(scene, pos, facing, hit->object, target);
+            EXPECT_LE(std::abs(closed.visible - sliced.visible), closed.bound + sliced.bound)
+                << scene.name << " pixel " << x << ", " << y << " closed " << closed.visible
+                << " sliced " << sliced.visible;
+            check.penumbra += partial ? 1 : 0;
+            ++check.compared;
+            check.worstClosedBound = std::max(check.worstClosedBound, closed.bound);
+        }
+    }
+    return check;
+}
+
+TEST(LightVisibility, TheClosedFormAgreesWithTheSlicesOnThePresets) {
+    // name, light size (degrees, or a spot's radius; 0: the preset's own)
+    const std::pair<const char*, float> presets[] = {
+        {"post-in-sun", 0.0f}, {"post-under-spot", 0.0f},  {"box-on-plane", 1.0f}, {"stairs", 1.5f},
+        {"pole", 2.0f},        {"sphere-over-plane", 2.0f}};
+    for (auto [name, size] : presets) {
+        Scene scene = *presetScene(name);
+        if (size > 0.0f) scene.light.angularDiameterDeg = size;
+        FractionCheck check = compareWithSlices(scene, 40);
+        EXPECT_GE(check.penumbra, 20) << name;
+        EXPECT_GE(check.compared, check.penumbra + 5) << name;
+        // Boxes and rectangles are exact up to rounding; a sphere's ellipse is bracketed.
+        bool sphere = std::string(name) == "sphere-over-plane";
+        EXPECT_LE(check.worstClosedBound, sphere ? 0.5 / 2048.0 : 1e-8) << name;
+    }
+}
+
+// An off-axis sphere under a sun: its shadow on the disk is an ellipse, bracketed between two
+// polygons; the bracket's middle agrees with the slicing, and its gap is stated in the bound.
+// (Every point here sees part of the sphere's image on the disk: the image's angular radius
+// 0.025 plus the disk's tan(2 deg) exceeds each point's offset over 2 units of height.)
+TEST(LightVisibility, ASphereOffTheAxisIsBracketed) {
+    const double diameter = 4.0;
+    Scene scene = sphereScene(diameter, 0.05, 2.0);
+    for (double x : {-0.1, -0.07, -0.05, -0.03, 0.0, 0.02, 0.04, 0.06, 0.09}) {
+        LightFraction closed =
+            lightVisibleFraction(scene, {x, 0.0, 0.02}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
+        LightFraction sliced =
+            lightVisibleFractionBySlices(scene, {x, 0.0, 0.02}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
+        EXPECT_LE(std::abs(closed.visible - sliced.visible), closed.bound + sliced.bound) << x;
+        EXPECT_LE(closed.bound, 0.5 / 2048.0) << x;
+        EXPECT_GT(closed.bound, 0.0) << x;  // the bracket's gap, never claimed away
     }
 }
 
@@ -212,15 +291,21 @@ Scene spotEdgeScene(double radius, double cx) {
 double spotChordPerX(double x) { return 1.0 - SPOT_HEIGHT / (x >= 0.0 ? H + 1.0 : H); }
 
 TEST(LightVisibility, ASpotDiskCutByAStraightEdgeIsACircularSegment) {
-    const double radius = 0.3;
-    Scene scene = spotEdgeScene(radius, 0.0);
+    Scene scene = spotEdgeScene(0.3, 0.0);
+    double radius = scene.light.radius;  // the scene's float, which the closed form meets exactly
     int checked = 0, partial = 0;
     for (double x : {-0.2, -0.14, -0.1, -0.05, -0.01, 0.0, 0.02, 0.1, 0.2, 0.29, 0.35}) {
+        double exact = segment(x * spotChordPerX(x) / radius);
+        // The closed form (light_disk_shadow.h): exact up to rounding.
         LightFraction f =
             lightVisibleFraction(scene, {x, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
-        double exact = segment(x * spotChordPerX(x) / radius);
-        EXPECT_LE(std::abs(f.visible - exact), f.bound + 1e-9) << "x " << x;
-        EXPECT_LE(f.bound, 1.0 / 2048.0) << "x " << x;
+        EXPECT_LE(std::abs(f.visible - exact), f.bound + 1e-12) << "x " << x;
+        EXPECT_LE(f.bound, 1e-8) << "x " << x;
+        // The slicing it falls back to, within its own bound.
+        LightFraction sliced =
+            lightVisibleFractionBySlices(scene, {x, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0, 1.0 / 2048.0);
+        EXPECT_LE(std::abs(sliced.visible - exact), sliced.bound + 1e-9) << "x " << x;
+        EXPECT_LE(sliced.bound, 1.0 / 2048.0) << "x " << x;
         partial += exact > 0.01 && exact < 0.99 ? 1 : 0;
         ++checked;
     }

@@ -141,7 +141,7 @@ TEST(MotionWords, EveryLessonVideoDrawsItsWordsOnlyOnFramesWhereItsClaimsHold) {
                 Session session(f.size, f.presentation);
                 session.loadLesson(path);
                 session.goToStep(static_cast<int>(i));
-                AnimationOptions ao = stepAnimationOptions(step, path, static_cast<int>(i) + 1);
+                AnimationOptions ao = stepAnimationOptions(step);
                 Animation animation(session, ao);
                 bool every = f.size.x == 1280;
                 for (int k = 0; k < ao.frames; ++k) {

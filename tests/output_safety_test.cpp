@@ -255,5 +255,41 @@ TEST_F(OutputSafetyTest, AFailedStagedMoveTakesEverythingBack) {
     EXPECT_TRUE(leftovers().empty()) << leftovers().front();
 }
 
+// One command, one path, one use: a file given twice (animate rendered every frame of
+// `-o a.mp4 a.mp4`, then failed naming its scratch copy) or a path given as a file and as a
+// folder (`-o X --png X` said "X is a directory" of the folder it had just made) is refused
+// before anything is rendered or made.
+TEST_F(OutputSafetyTest, APathGivenTwiceIsRefusedUpFront) {
+    const std::string animate = "animate 13 --step 3 --frames 3 --size 320x180 ";
+    expectRefused(animate + "-o a.mp4 a.mp4", "-o a.mp4 is given twice");
+    expectRefused(animate + "-o a.gif -o ./a.gif", "-o ./a.gif is given twice");
+    expectRefused(animate + "-o v.gif --png v.gif",
+                  "-o v.gif and --png v.gif are the same path, as a file and as a folder");
+    // Two videos in one folder are two files.
+    auto two = runPcfscope(animate + "-o " + path("a.gif") + " " + path("b.gif"));
+    EXPECT_EQ(two.exitCode, 0) << two.err;
+    // A command's own second look at an output is the same output: export -f over an earlier
+    // export finds the page files first in the folder, then writes them.
+    for (const char* force : {"", "-f "}) {
+        auto again =
+            runPcfscope("export 1 --size 320x180 " + std::string(force) + "-o " + path("frames"));
+        EXPECT_EQ(again.exitCode, 0) << again.err;
+    }
+}
+
+// Every command writes through an output that is a link, with -f: the staged outputs (animate's
+// videos, bench's and stability's files, moved into place at the end) as the direct writers
+// (render, truth, export) do. animate replaced the link with its video.
+TEST_F(OutputSafetyTest, AStagedOutputIsWrittenThroughALinkToo) {
+    fs::create_directory(mDir / "store");
+    std::ofstream(mDir / "store/real.gif") << "old";
+    fs::create_symlink("store/real.gif", mDir / "link.gif");
+    auto r = runPcfscope("animate 13 --step 3 --frames 2 --size 320x180 -f -o " + path("link.gif"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(mDir / "link.gif")));
+    EXPECT_EQ(testutil::readAll(mDir / "store/real.gif").substr(0, 3), "GIF");
+    EXPECT_EQ(leftovers().size(), 3u);  // link.gif, store, store/real.gif
+}
+
 }  // namespace
 }  // namespace pcf

@@ -1,8 +1,8 @@
-// Predict steps (DESIGN.md 8b, Students; lesson/lesson_predict.h, app/predict.h): the question
-// table is checked as it is read, a typed answer is judged, and on every predict step of the
-// built-in lessons, at 1024x768 and 1280x720 in presentation mode and at 1600x900, the question's
-// frames draw none of the numbers the answer needs (no box of a hidden role, no text holding the
-// answer outside the choices) and the answer's frames show it. `export` writes both.
+// Predict steps (docs/teaching.md, "Predict, then reveal"; lesson/lesson_predict.h, app/predict.h):
+// the question table is checked as it is read, a typed answer is judged, and on every predict step
+// of the built-in lessons, at 1024x768 and 1280x720 in presentation mode and at 1600x900, the
+// question's frames draw none of the numbers the answer needs (no box of a hidden role, no text
+// holding the answer outside the choices) and the answer's frames show it. `export` writes both.
 #include "app/predict.h"
 
 #include <gtest/gtest.h>

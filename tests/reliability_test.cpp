@@ -128,7 +128,8 @@ TEST_F(Reliability, VerifyRecomputesRefAndChecksTheDepthFormat) {
     std::string raw = rawCopy();
     auto good = runPcfscope("verify " + raw);
     EXPECT_EQ(good.exitCode, 0) << good.out << good.err;
-    EXPECT_NE(good.out.find("recomputed from depth and bias: as rendered"), std::string::npos)
+    EXPECT_NE(good.out.find("recomputed from position, normal and bias: as rendered"),
+              std::string::npos)
         << good.out;
 
     setJson(raw, "bias", "\"none\"");
@@ -227,11 +228,32 @@ TEST_F(Reliability, AFullDiskFailsEveryWriterAndLeavesNothing) {
                       std::string::npos)
                 << bytes << ": " << cmd << "\n"
                 << r.err;
+            // The file named is the one asked for, not its copy in a scratch folder.
+            EXPECT_EQ(r.err.find(".pcfscope-"), std::string::npos) << cmd << "\n" << r.err;
             EXPECT_TRUE(leftovers() == std::vector<std::string>{"out"})
                 << bytes << ": " << cmd << " left " << leftovers().back();
             fs::remove_all(out);
         }
     }
+}
+
+// animate draws its progress on one line, redrawn in place: an error in the middle (here the disk
+// fills at the third PNG) starts a line of its own instead of running on after "2/3".
+TEST_F(Reliability, AnErrorDuringAnimateIsALineOfItsOwn) {
+    fs::path out = mDir / "out";
+    fs::create_directory(out);
+    // Two 320x180 frames' PNGs (about 27 KB each) fit, the third does not.
+    std::string env = "PCF_FULL_DISK_DIR=" + out.string() +
+                      " PCF_FULL_DISK_BYTES=60000 LD_PRELOAD=" + PCFSCOPE_FULL_DISK_SHIM +
+                      " ASAN_OPTIONS=verify_asan_link_order=0";
+    auto r = runPcfscope(
+        "animate 13 --step 3 --frames 3 --size 320x180 --png " + (out / "p").string(), env);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    size_t error = r.err.find("pcfscope: ");
+    ASSERT_NE(error, std::string::npos) << r.err;
+    ASSERT_GT(error, 0u) << "no progress before the error: " << r.err;
+    EXPECT_EQ(r.err[error - 1], '\n') << r.err;
+    EXPECT_NE(r.err.find("No space left on device", error), std::string::npos) << r.err;
 }
 
 // Standard output is checked like a file: a full one is an error, not a success.
@@ -332,10 +354,38 @@ TEST_F(Reliability, WorkLargerThanTheMemoryIsRefusedUpFront) {
          {"render --scene box-on-plane --size 8192x8192 -o " + path("a.png"),
           "truth --scene box-on-plane --size 8192x8192 -o " + path("t.exr"),
           "bench --quick --size 8192x8192 -o " + path("b"),
-          "stability --quick --size 8192x8192 -o " + path("s")}) {
-        expectOneLine(runPcfscope(args, limit), "--size 8192x8192: needs about ");
+          "stability --quick --size 8192x8192 -o " + path("s"),
+          "animate 13 --step 3 --size 8192x8192 --frames 3600 -o " + path("v.mp4"),
+          "export 3 --size 8192x8192 -o " + path("e")}) {
+        expectOneLine(runPcfscope(args, limit), "8192x8192: needs about ");
         EXPECT_TRUE(leftovers().empty()) << args << ": left " << leftovers().front();
     }
+    // The refusal names the work and the way on: -f starts it anyway, saying so.
+    auto animate = runPcfscope(
+        "animate 13 --step 3 --size 8192x8192 --frames 3600 -o " + path("v.mp4"), limit);
+    EXPECT_NE(animate.err.find("pcfscope: 3600 frames of 8192x8192: needs about "),
+              std::string::npos)
+        << animate.err;
+    EXPECT_NE(animate.err.find("or -f to start it anyway"), std::string::npos) << animate.err;
+    auto forced =
+        runPcfscope("animate 13 --step 3 --size 8192x8192 --frames 3600 -f -o " + path("v.mp4"),
+                    limit + "timeout 5");
+    EXPECT_NE(forced.err.find("animate: 3600 frames of 8192x8192: about "), std::string::npos)
+        << forced.err;
+    EXPECT_NE(forced.err.find("available: forced"), std::string::npos) << forced.err;
+    EXPECT_TRUE(leftovers().empty()) << "left " << leftovers().front();
+}
+
+// A long job says how long before it starts: animate's 3600 frames at 1280x720 are minutes of
+// work (about 100 ns a pixel a frame on llvmpipe), which it states, then begins.
+TEST_F(Reliability, ALongJobStatesItsEstimateBeforeItStarts) {
+    auto r = runPcfscope("animate 13 --step 3 --size 1280x720 --frames 3600 -o " + path("v.gif"),
+                         "timeout 5");
+    std::string first = r.err.substr(0, r.err.find('\n'));
+    EXPECT_EQ(first.rfind("animate: 3600 frames of 1280x720: about ", 0), 0u) << r.err;
+    EXPECT_NE(first.find(" min and 0."), std::string::npos) << first;  // minutes, under a GiB
+    EXPECT_NE(first.find("GiB of memory (an estimate"), std::string::npos) << first;
+    EXPECT_TRUE(leftovers().empty()) << "left " << leftovers().front();
 }
 
 }  // namespace

@@ -332,7 +332,21 @@ std::vector<BadCase> badCases() {
              "[light]\ntype = \"spot\"\ndirection = [0, -1, 0]\n"
              "position = [0, 5, 0]\ncone = 95\n" +
              BALL,
-         8, "spot light cone must be in (0, 89] degrees, got 95"},
+         8, "spot light cone must be in [0.01, 89] degrees, got 95"},
+        // Printed as given, not rounded to the limit it exceeds ("got 89" read as a contradiction).
+        {"spot cone a hair wide",
+         CAMERA +
+             "[light]\ntype = \"spot\"\ndirection = [0, -1, 0]\n"
+             "position = [0, 5, 0]\ncone = 89.0000000001\n" +
+             BALL,
+         8, "spot light cone must be in [0.01, 89] degrees, got 89.0000000001"},
+        // A cone too thin for float's tangent gave infinite light-space coordinates.
+        {"spot cone too thin",
+         CAMERA +
+             "[light]\ntype = \"spot\"\ndirection = [0, -1, 0]\n"
+             "position = [0, 5, 0]\ncone = 1e-45\n" +
+             BALL,
+         8, "spot light cone must be in [0.01, 89] degrees, got 1e-45"},
         {"spot without position",
          CAMERA + "[light]\ntype = \"spot\"\ndirection = [0, -1, 0]\ncone = 30\n" + BALL, 4,
          "spot light is missing required key 'position'"},
@@ -342,6 +356,8 @@ std::vector<BadCase> badCases() {
          "directional light angular_diameter must be in [0, 10] degrees, got 12"},
         {"negative sun", CAMERA + SUN + "angular_diameter = -0.5\n" + BALL, 7,
          "directional light angular_diameter must be in [0, 10] degrees, got -0.5"},
+        {"sun a hair too wide", CAMERA + SUN + "angular_diameter = 10.000000000001\n" + BALL, 7,
+         "directional light angular_diameter must be in [0, 10] degrees, got 10.000000000001"},
         {"radius on directional", CAMERA + SUN + "radius = 0.1\n" + BALL, 7,
          "directional light has unknown key 'radius'"},
         {"negative spot radius",
@@ -349,7 +365,7 @@ std::vector<BadCase> badCases() {
              "[light]\ntype = \"spot\"\ndirection = [0, -1, 0]\n"
              "position = [0, 5, 0]\ncone = 30\nradius = -1\n" +
              BALL,
-         9, "spot light radius must be in [0, 100] scene units, got -1"},
+         9, "spot light radius must be in [0, 100] world units, got -1"},
         {"misspelt key",
          withObject("[[object]]\ntype = \"sphere\"\ncentre = [0, 1, 0]\n"
                     "raduis = 1\n"),

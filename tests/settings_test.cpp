@@ -93,7 +93,9 @@ std::string tomlValue(const ParamInfo& p, const ShadowSettings& s) {
 
 // A lesson whose [settings] sets `key = value`, parsed: its first step's settings.
 LessonSettings lessonWith(std::string_view key, const std::string& value) {
-    std::string text = "title = \"t\"\nscene = \"box-on-plane\"\n[settings]\n" + std::string(key) +
+    // light_radius is a spot light's size: its scene has one.
+    std::string scene = key == "light_radius" ? "post-under-spot" : "box-on-plane";
+    std::string text = "title = \"t\"\nscene = \"" + scene + "\"\n[settings]\n" + std::string(key) +
                        " = " + value + "\n[[step]]\ntitle = \"s\"\ntext = \"x\"\n";
     return parseLessonString(text, "table.toml").steps.at(0).settings;
 }
@@ -168,6 +170,20 @@ TEST(ParameterTable, TheBiasRowsAreTheFieldsTheKernelAndTheTraceTake) {
         }
     }
     EXPECT_GE(rows, 7);  // the mode and its six parameters, at least
+}
+
+// The modes a parameter acts under (biasModes): some for every bias parameter, none for the mode
+// itself and for every parameter that is no bias's; none acts under `none`.
+TEST(ParameterTable, EveryBiasParameterActsUnderTheModesItNames) {
+    for (const ParamInfo& p : allParams()) {
+        bool parameterOfBias = p.group == ParamGroup::Bias && p.key != "bias";
+        EXPECT_EQ(p.biasModes != 0, parameterOfBias) << p.key;
+        EXPECT_FALSE(paramActsUnder(p, BiasMode::None)) << p.key;
+        EXPECT_EQ(p.biasModes >> PCF_BIAS_COUNT, 0u) << p.key;
+    }
+    EXPECT_TRUE(paramActsUnder(*findParam("rpdb_max"), BiasMode::ReceiverPlane));
+    EXPECT_FALSE(paramActsUnder(*findParam("rpdb_max"), BiasMode::Soft));
+    EXPECT_TRUE(paramActsUnder(*findParam("constant_bias"), BiasMode::Interpolated));
 }
 
 // The uniforms reach the programs: tests/pcf_programs_test.cpp.

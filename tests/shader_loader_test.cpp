@@ -209,9 +209,9 @@ TEST_F(ShaderLoader, SharedPcfKernelCompilesAndLinks) {
     EXPECT_GE(glGetUniformLocation(program.id(), "uPcfCompare"), 0);
 }
 
-// Beyond compiling: the kernel run by the driver gives the CPU kernel's numbers (DESIGN.md 5's
-// parity, in small: one 16 x 16 map, every method, a 32 x 32 grid of lookups reaching past the
-// map's edges). The renderer's own parity test covers scenes and sizes.
+// Beyond compiling: the kernel run by the driver gives the CPU kernel's numbers
+// (docs/architecture.md's parity, in small: one 16 x 16 map, every method, a 32 x 32 grid of
+// lookups reaching past the map's edges). The renderer's own parity test covers scenes and sizes.
 TEST_F(ShaderLoader, SharedPcfKernelMatchesTheCpuKernel) {
     GlProgram program = buildProgram({{GL_VERTEX_SHADER, {}, "", {{"full.vert", FULL_VERT}}},
                                       {GL_FRAGMENT_SHADER,
@@ -285,8 +285,8 @@ TEST_F(ShaderLoader, SharedPcfKernelMatchesTheCpuKernel) {
                 highest = std::max(highest, v);
             }
         }
-        // llvmpipe lerps hardware taps with exact weights (DESIGN.md 2); real GPUs round them
-        // to about 8 bits, which moves a result by up to 1/256.
+        // llvmpipe lerps hardware taps with exact weights (docs/methods.md, "Conventions"); real
+        // GPUs round them to about 8 bits, which moves a result by up to 1/256.
         bool hwTaps = c.method == PCF_HW2X2 || c.method == PCF_HW || c.method == PCF_TENT;
         float tolerance = hwTaps && !software ? 1.0f / 256.0f + 1e-5f : 1e-5f;
         EXPECT_LE(worst, tolerance) << "method " << c.method << " kernel " << c.kernel;

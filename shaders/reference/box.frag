@@ -1,6 +1,7 @@
 // reference/box.frag: box2x2, the textbook way (see README.md here): the four texels of the
-// bilinear 2x2 (p = uv * size - 0.5, b = floor(p); DESIGN.md 2), each compared, averaged without
-// weights, so only 0, .25, .5, .75 or 1 ("What Is PCF and How Does It Work?").
+// bilinear 2x2 (p = uv * size - 0.5, b = floor(p); docs/methods.md, "Conventions"), each
+// compared, averaged without weights, so only 0, .25, .5, .75 or 1 ("What Is PCF and How Does It
+// Work?").
 uniform sampler2D uPcfDepth;  // texelFetch; out-of-range texels clamp to the edge
 uniform sampler2D uLookups;   // RGBA32F: u, v, ref, unused
 

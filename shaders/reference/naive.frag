@@ -1,7 +1,7 @@
 // reference/naive.frag: pcf-naive, the textbook way (see README.md here): N x N bilinear
 // lookups one texel apart, averaged ("PCF Shadow Acne"). Each lookup compares the four texels
 // around it and lerps the four bits by the sub-texel position ("What Is PCF and How Does It
-// Work?"), in GL's convention p = uv * size - 0.5 (DESIGN.md 2):
+// Work?"), in GL's convention p = uv * size - 0.5 (docs/methods.md, "Conventions"):
 //   b = floor(p), f = p - b,  v = mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y)
 //   offsets k - (N-1)/2, k = 0..N-1;  visibility = sum / N^2
 // N = 1 is bilinear2x2. N is a define.

@@ -1,6 +1,6 @@
 // reference/nearest.frag: nearest, the textbook way (see README.md here): the depth of the one
 // texel the lookup falls in, floor(uv * size), through the nearest sampler, compared once
-// (GL_LEQUAL: lit when ref <= depth; DESIGN.md 2 and 3).
+// (GL_LEQUAL: lit when ref <= depth; docs/methods.md, "Conventions" and "The methods").
 uniform sampler2D uPcfDepth;  // nearest, clamp to edge
 uniform sampler2D uLookups;   // RGBA32F: u, v, ref, unused
 

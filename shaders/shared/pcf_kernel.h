@@ -1,7 +1,7 @@
 // pcf_kernel.h: every PCF method of pcfscope, written once for C++ and GLSL (see pcf_prelude.h
 // for the rules this file follows). C++ side: src/kernel/pcf.h. GLSL side: shaders/scene.frag.
 //
-// Conventions (DESIGN.md section 2):
+// Conventions (docs/methods.md, "Conventions"):
 //   shadow map W x H, depth in [0,1], 0 = near the light; texel (i, j) = column i, row j as
 //   stored; its centre is at uv = ((i + 0.5) / W, (j + 0.5) / H);
 //   texel position of a lookup: p = uv * size - 0.5, base = floor(p), frac = p - base
@@ -9,7 +9,8 @@
 //   a tap is lit (1) when ref <= depth (GL_LEQUAL), shadowed (0) otherwise;
 //   visibility 1 = fully lit, 0 = fully shadowed.
 
-// Method ids, in the order of DESIGN.md section 3 (the command line's names: src/kernel/methods).
+// Method ids, in the order of docs/methods.md, "The methods" (the command line's names:
+// src/kernel/methods).
 PCF_CONST int PCF_NEAREST = 0;
 PCF_CONST int PCF_BOX2X2 = 1;
 PCF_CONST int PCF_BILINEAR2X2 = 2;
@@ -139,7 +140,7 @@ PCF_MAP_FN float pcfDepthRef(Map map, float ref) {
 }
 
 // Precision of the texel position inside hardware taps and gathers.
-//   exact: float, what llvmpipe does (measured, DESIGN.md 2);
+//   exact: float, what llvmpipe does (measured, docs/methods.md, "Conventions");
 //   hw8:   the position kept with 8 fractional bits, i.e. in steps of 1/256 texel, as NVIDIA and
 //          AMD texture units do. Sources: Direct3D 12 functional spec, constant
 //          D3D12_SUBTEXEL_FRACTIONAL_BIT_COUNT = 8; Inigo Quilez, "hardware interpolation"
@@ -175,10 +176,10 @@ PCF_MAP_FN vec2 pcfUnitUv(Map map, vec2 uv) {
 // The depth comparison (GL_LEQUAL): 1 = lit, 0 = shadowed.
 PCF_FN float pcfCompare(float depth, float ref) { return ref <= depth ? 1.0f : 0.0f; }
 
-// ---- Bias modes (DESIGN.md 2 names them; see: src/kernel/bias.h for names and checks) ----
-// The per-lookup part of every bias (constant, slope, normal offset) is already in ref when the
-// kernel is called: the scene shader (shaders/scene.frag) computes it where the normal and the
-// light are known. What the kernel itself must do per tap lives here: the receiver plane's ref
+// ---- Bias modes (docs/methods.md, "Bias modes", names them; see: src/kernel/bias.h for names and
+// checks) ---- The per-lookup part of every bias (constant, slope, normal offset) is already in ref
+// when the kernel is called: the scene shader (shaders/scene.frag) computes it where the normal and
+// the light are known. What the kernel itself must do per tap lives here: the receiver plane's ref
 // at each tap, the soft comparison of "PCF Shadow Acne 2", and the comparison against
 // interpolated depth of "PCF Shadow Acne".
 PCF_CONST int PCF_BIAS_NONE = 0;            // ref = z
@@ -213,7 +214,7 @@ PCF_FN PcfRef pcfPlainRef(float ref, vec2 uv) {
     return PcfRef(ref, uv, PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, PCF_DZDUV_UNCLAMPED));
 }
 
-// The centre of texel t in uv (DESIGN.md 2): ((i + 0.5) / W, (j + 0.5) / H).
+// The centre of texel t in uv (docs/methods.md, "Conventions"): ((i + 0.5) / W, (j + 0.5) / H).
 PCF_FN vec2 pcfTexelCentreUv(ivec2 t, ivec2 size) { return (vec2(t) + vec2(0.5f)) / vec2(size); }
 
 // Receiver-plane depth bias (Isidoro, "Shadow Mapping: GPU-based Tips and Techniques", GDC
@@ -360,8 +361,8 @@ PCF_MAP_FN float pcfBilinearLookup(Map map, vec2 uv, PcfRef ref, float weight) {
 }
 
 #ifdef __cplusplus
-// On the CPU a hardware comparison tap is modelled exactly as the bilinear 2x2 (DESIGN.md 2).
-// With hw8 the position is quantised before floor and frac (pcfUnitTexelPos).
+// On the CPU a hardware comparison tap is modelled exactly as the bilinear 2x2 (docs/methods.md,
+// "Conventions"). With hw8 the position is quantised before floor and frac (pcfUnitTexelPos).
 template <class Map>
 inline float hwTap(Map map, vec2 uv, float ref, float weight) {
     return pcfBilinearAt(map, pcfUnitTexelPos(map, uv), pcfPlainRef(ref, uv), weight);
@@ -448,9 +449,9 @@ PCF_MAP_FN vec4 pcfGatherSoft(Map map, vec2 uv, PcfRef ref, vec4 weights) {
     return bits;
 }
 
-// nearest: the one texel the lookup falls in, floor(uv * size). Hard: 0 or 1.
-PCF_MAP_FN float pcfNearest(Map map, vec2 uv, PcfRef ref, float weight) {
-    PCF_PRECISE vec2 p = uv * vec2(mapSize(map));
+// nearest at texel position p (texels, uv * size): the one texel floor(p). Hard: 0 or 1. uv is
+// the same point in uv, what the trace records and the interpolated comparison reads.
+PCF_MAP_FN float pcfNearestAt(Map map, vec2 p, vec2 uv, PcfRef ref, float weight) {
     if (ref.bias.mode == PCF_BIAS_INTERPOLATED) {
         pcfFetch(map, PCF_FETCH_LOOKUP, uv, weight);
         return pcfInterpolatedCompare(map, uv, ref.ref, weight);
@@ -458,6 +459,12 @@ PCF_MAP_FN float pcfNearest(Map map, vec2 uv, PcfRef ref, float weight) {
     pcfFetch(map, PCF_FETCH_POINT, uv, weight);
     // pointDepth, not fetchDepth of the int texel: in GLSL the sampler clamps, in float.
     return pcfCompareTexel(map, ivec2(floor(p)), pointDepth(map, p), ref, weight);
+}
+
+// nearest: the one texel the lookup falls in, floor(uv * size). Hard: 0 or 1.
+PCF_MAP_FN float pcfNearest(Map map, vec2 uv, PcfRef ref, float weight) {
+    PCF_PRECISE vec2 p = uv * vec2(mapSize(map));
+    return pcfNearestAt(map, p, uv, ref, weight);
 }
 
 // box2x2: the bilinear 2x2 texels, averaged without weights: only 0, .25, .5, .75 or 1.
@@ -735,6 +742,9 @@ PCF_MAP_FN float pcfTent(Map map, vec2 uv, PcfRef ref, int n) {
 
 // Jimmy 2010: 16 point-sampled comparisons at the Poisson points scaled by the given radius in
 // texels (the farthest 1.234 radius from uv), optionally rotated per pixel (rotation = (cos, sin)).
+// The points are placed in texel space: point k reads the texel floor(uv * size + offset_k),
+// one add per point from the lookup's own texel position (an offset taken to uv and back
+// would cost two multiplies and an add more, on every point, for the same place).
 PCF_FN vec2 pcfPoissonOffset(int k, float radius, vec2 rotation) {
     vec2 d = PCF_POISSON_DISK[k];
     PCF_PRECISE float x = d.x * rotation.x - d.y * rotation.y;
@@ -743,11 +753,13 @@ PCF_FN vec2 pcfPoissonOffset(int k, float radius, vec2 rotation) {
 }
 
 PCF_MAP_FN float pcfPoisson(Map map, vec2 uv, PcfRef ref, float radius, vec2 rotation) {
-    vec2 texelUv = vec2(1.0f) / vec2(mapSize(map));
+    vec2 size = vec2(mapSize(map));
+    vec2 texelUv = vec2(1.0f) / size;
+    PCF_PRECISE vec2 centre = uv * size;
     float sum = 0.0f;
     for (int k = 0; k < 16; ++k) {
-        PCF_PRECISE vec2 tapUv = uv + pcfPoissonOffset(k, radius, rotation) * texelUv;
-        sum += pcfNearest(map, tapUv, ref, 1.0f / 16.0f);
+        PCF_PRECISE vec2 p = centre + pcfPoissonOffset(k, radius, rotation);
+        sum += pcfNearestAt(map, p, p * texelUv, ref, 1.0f / 16.0f);
     }
     return sum * (1.0f / 16.0f);
 }
@@ -852,11 +864,12 @@ PCF_MAP_FN PcfPcssEstimate pcfPcssEstimate(Map map, vec2 uv, PcfRef ref, float p
     float search = pcfPcssRadius(searchHalf);
     int blockers = 0;
     PCF_PRECISE float depthSum = 0.0f;
+    // The search's points in texel space, as poisson's (pcfPoisson).
+    PCF_PRECISE vec2 centre = uv * vec2(size);
     for (int k = 0; k < PCF_PCSS_TAPS; ++k) {
-        PCF_PRECISE vec2 tapUv = uv + pcfPoissonOffset(k, search, rotation) * texelUv;
-        PCF_PRECISE vec2 p = tapUv * vec2(size);
+        PCF_PRECISE vec2 p = centre + pcfPoissonOffset(k, search, rotation);
         ivec2 texel = ivec2(floor(p));
-        pcfFetch(map, PCF_FETCH_POINT, tapUv, 0.0f);
+        pcfFetch(map, PCF_FETCH_POINT, p * texelUv, 0.0f);
         pcfTapWanted(map, texel);
         ivec2 t = pcfClampTexel(texel, size);
         // pointDepth, not fetchDepth(t): in GLSL the sampler clamps, in float (as pcfNearest).

@@ -12,6 +12,7 @@
 #include "analysis/stability.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
+#include "render/frame_ops.h"
 #include "render/gpu_lookup.h"
 #include "render/gpu_timer.h"
 #include "scene/light.h"
@@ -262,6 +263,15 @@ class BenchRun {
     std::vector<std::optional<Hit>> mHits;  // the clean masks' surface points, once
     // Clean lit and clean umbra masks per (footprint reach, map size).
     std::map<std::pair<float, int>, std::pair<std::vector<uint8_t>, std::vector<uint8_t>>> mClean;
+    std::map<int, CasterDistances> mDistances;  // per map size: the leak width's distances
+
+    // The umbra pixels' distances from the casters at the point's map size (its fitted map).
+    const CasterDistances& distancesFor(int mapSize) {
+        auto it = mDistances.find(mapSize);
+        if (it != mDistances.end()) return it->second;
+        return mDistances[mapSize] = casterDistances(*mContext.scene, mTruth, mRegions, mHits,
+                                                     mRenderer.shadowClipFromWorld(), mapSize);
+    }
 
     // The first camera pass fixes what depends on the geometry only: the regions, the lookups.
     void readGeometry() {
@@ -302,6 +312,9 @@ class BenchRun {
             const auto& [lit, umbra] = cleanMasks(p);
             row.acne = falseShadow(visibility, lit);
             row.leak = falseLight(visibility, umbra);
+            const CasterDistances& d = distancesFor(p.mapSize);
+            row.leakWidth = leakWidth(visibility, umbra, d.texels, d.world, mOptions.frameSize,
+                                      LEAK_MIN_RUN, cleanStride());
         }
         row.shimmer = measureShimmer(s);
         // One untimed draw of each timed pass: compiles its programs before the rounds.
@@ -309,7 +322,7 @@ class BenchRun {
         PcfParams prm = mRenderer.pcfParams(s);  // pcss: the scene light's size in the map
         mLookupPass.draw(prm, s.rotate, s.kernelBias());
         if (mOptions.reference) mLookupPass.drawReference(prm);
-        glFinish();
+        finishGpu();
         row.cpuNsPerPixel = timeCpuKernel(map(mMaps, p.mapSize), mCpuLookups, prm,
                                           mOptions.cpuPasses, mOptions.cpuThreads)
                                 .nsPerPixel;
@@ -398,7 +411,7 @@ class BenchRun {
             if (p.mapSize != mCurrentMap) {
                 mRenderer.renderShadowPass(s);
                 mLookupPass.setMap(mMaps[p.mapSize]);
-                glFinish();
+                finishGpu();
                 mCurrentMap = p.mapSize;
             }
             timePoint(s, samples[k]);
@@ -435,8 +448,12 @@ class BenchRun {
             row.gpuMsIqr = scene.iqr();
             row.lookupMs = lookup.median;
             row.lookupMsIqr = lookup.iqr();
-            row.gpuCpuMs = medianOf(samples[k].scene.cpu);
-            row.lookupCpuMs = medianOf(samples[k].lookup.cpu);
+            Quartiles sceneCpu = quartilesOf(samples[k].scene.cpu);
+            Quartiles lookupCpu = quartilesOf(samples[k].lookup.cpu);
+            row.gpuCpuMs = sceneCpu.median;
+            row.gpuCpuMsIqr = sceneCpu.iqr();
+            row.lookupCpuMs = lookupCpu.median;
+            row.lookupCpuMsIqr = lookupCpu.iqr();
             row.noisy = noisyTimes(samples[k]);
             if (mOptions.reference) {
                 Quartiles reference = quartilesOf(samples[k].reference.wall);
@@ -461,19 +478,16 @@ std::vector<BenchRow> runBench(BenchContext& context, const BenchOptions& option
     return BenchRun(context, options).run();
 }
 
-BenchResult runBenchSweep(const BenchConfig& config, BenchContext callbacks,
-                          const std::function<void(const GroundTruth&)>& truthDone) {
+GroundTruth benchGroundTruth(const BenchConfig& config) {
     const BenchOptions& options = config.options;
-    if (auto why = validateBenchOptions(options)) throw std::invalid_argument(why->text());
-    BenchResult result;
     GroundTruthOptions truthOptions;
     truthOptions.spp = options.truthSpp;
     truthOptions.threads = options.cpuThreads;
     truthOptions.area = options.areaTruth;
-    result.truth = computeGroundTruth(config.scene, options.frameSize, truthOptions);
+    GroundTruth truth = computeGroundTruth(config.scene, options.frameSize, truthOptions);
     // The chart's accuracy axis is the edge band's error: without a shadow edge in view every
     // method would score a perfect 0 and the chart would say nothing. Refuse instead.
-    ErrorRegions truthRegions = errorRegions(result.truth);
+    ErrorRegions truthRegions = errorRegions(truth);
     if (truthRegions.comparedCount == 0 || truthRegions.edgeCount == 0) {
         throw BenchSceneError(
             "scene '" + config.scene.name + "' shows " +
@@ -483,6 +497,15 @@ BenchResult runBenchSweep(const BenchConfig& config, BenchContext callbacks,
             std::to_string(options.frameSize.y) +
             ", so there is no edge band to measure error over; bench needs a shadow edge in view");
     }
+    return truth;
+}
+
+BenchResult runBenchSweep(const BenchConfig& config, BenchContext callbacks,
+                          const std::function<void(const GroundTruth&)>& truthDone) {
+    const BenchOptions& options = config.options;
+    if (auto why = validateBenchOptions(options)) throw std::invalid_argument(why->text());
+    BenchResult result;
+    result.truth = benchGroundTruth(config);
     if (truthDone) truthDone(result.truth);
     SceneRenderer renderer(config.scene);
     callbacks.renderer = &renderer;

@@ -138,6 +138,9 @@ struct BenchRow {
     // clock on a busy machine. 0 when the GPU's own timer measured.
     double gpuCpuMs = 0.0;
     double lookupCpuMs = 0.0;
+    // Their interquartile ranges (0 where unknown: a bench.csv before these columns).
+    double gpuCpuMsIqr = 0.0;
+    double lookupCpuMsIqr = 0.0;
     double cpuNsPerPixel = 0.0;
     int cpuPixels = 0;   // receiver pixels the CPU kernel was timed on
     int texelReads = 0;  // fetchCounts(method, N).texels
@@ -148,6 +151,9 @@ struct BenchRow {
     double contactDistance = 0.0;
     FailureRate acne;  // false shadow over the clean lit pixels
     FailureRate leak;  // false light over the clean umbra pixels
+    // How far the false light reaches from the casters (failure_measures.h: leakWidth, the
+    // stability leak sweep's measure) over the same clean umbra pixels; zero without a scene.
+    LeakWidth leakWidth;
     ShimmerStats shimmer;
     std::string timer;  // which timer gave gpuMs
     // GL_RENDERER of the run (every row of one run carries it: bench.csv has no other place);
@@ -199,6 +205,10 @@ struct BenchResult {
     GroundTruth truth;
     ErrorRegions regions;  // compared pixels and edge band the errors were measured over
 };
+
+// The ground truth of the config's scene at its frame size (no progress), checked to show a
+// shadow edge: BenchSceneError when it shows no receiver or no edge.
+GroundTruth benchGroundTruth(const BenchConfig& config);
 
 // The whole bench, for a current GL context: the ground truth (its own progress: none), the
 // check that the scene has a shadow edge in view (BenchSceneError before any callback runs),

@@ -11,6 +11,7 @@
 #include "analysis/pareto.h"
 #include "base/input_error.h"
 #include "kernel/methods.h"
+#include "render/gpu_timer.h"
 
 namespace pcf {
 
@@ -44,7 +45,9 @@ std::string tableLine(const BenchRow& r, bool onFront) {
            (r.point.kernel > 0 ? std::to_string(r.point.kernel) : std::string("-")) + " | " +
            std::to_string(r.point.mapSize) + " | " + format("%.3f", r.gpuMs) + " | " +
            format("%.3f", r.gpuMsIqr) + " | " + format("%.3f", r.lookupMs) + " | " +
-           format("%.3f", r.lookupMsIqr) + " | " + format("%.1f", r.cpuNsPerPixel) + " | " +
+           format("%.3f", r.lookupMsIqr) + " | " + format("%.3f", r.gpuCpuMs) + " | " +
+           format("%.3f", r.gpuCpuMsIqr) + " | " + format("%.3f", r.lookupCpuMs) + " | " +
+           format("%.3f", r.lookupCpuMsIqr) + " | " + format("%.1f", r.cpuNsPerPixel) + " | " +
            std::to_string(r.texelReads) + " | " + format("%.4f", r.error.rmse) + " | " +
            format("%.4f", r.error.maxErr) + " | " + format("%.4f", r.error.edgeRmse) + " | " +
            format("%.4f", r.error.edgeMaxErr) + " | " + failurePercent(r.acne) + " | " +
@@ -72,7 +75,8 @@ std::string benchCsv(std::span<const BenchRow> rows) {
                format("%.4f", r.gpuCpuMs) + ',' + format("%.4f", r.lookupCpuMs) + ',' +
                csvWords(r.glRenderer) + g(r.contact.edgeRmse) + ',' +
                std::to_string(r.contact.edgePixels) + ',' + csvWords(r.truth) +
-               g(r.contactDistance) + '\n';
+               g(r.contactDistance) + ',' + format("%.4f", r.gpuCpuMsIqr) + ',' +
+               format("%.4f", r.lookupCpuMsIqr) + '\n';
     }
     return out;
 }
@@ -83,47 +87,50 @@ BenchRow parseBenchRow(const CsvFields& f) {
     std::optional<int> method = methodFromName(f.text(0));
     if (!method) f.fail("unknown method '" + f.text(0) + "'");
     BenchRow r;
-    r.point = {*method, f.integer(1), f.integer(2)};
-    r.gpuMs = f.number(3);
-    r.cpuNsPerPixel = f.number(4);
-    r.texelReads = f.integer(5);
-    r.error = {f.number(6), f.number(7), f.number(8), f.number(9), 0, 0};
+    r.point = {*method, f.count(1), f.count(2)};
+    r.gpuMs = f.measure(3);
+    r.cpuNsPerPixel = f.measure(4);
+    r.texelReads = f.count(5);
+    r.error = {f.measure(6), f.measure(7), f.measure(8), f.measure(9), 0, 0};
     r.timer = f.text(10);
     if (f.size() == 11) return r;
-    r.gpuMsIqr = f.number(11);
-    r.lookupMs = f.number(12);
-    r.lookupMsIqr = f.number(13);
+    r.gpuMsIqr = f.measure(11);
+    r.lookupMs = f.measure(12);
+    r.lookupMsIqr = f.measure(13);
     r.noisy = f.flag(14);
     if (f.size() == 15) return r;
     std::optional<int> weights = weightsFromName(f.text(15));
     if (!weights) f.fail("unknown weights '" + f.text(15) + "'");
     r.point.weights = *weights;
-    r.point.sigma = static_cast<float>(f.number(16));
-    r.acne = {f.number(17), f.number(18), f.integer(19)};
-    r.leak = {f.number(20), f.number(21), f.integer(22)};
-    r.shimmer.flickerMean = f.number(23);
-    r.shimmer.flickerP99 = f.number(24);
-    r.shimmer.flickerShare = f.number(25);
-    r.shimmer.mean = f.number(26);
+    r.point.sigma = static_cast<float>(f.measure(16));
+    r.acne = {f.measure(17), f.measure(18), f.count(19)};
+    r.leak = {f.measure(20), f.measure(21), f.count(22)};
+    r.shimmer.flickerMean = f.measure(23);
+    r.shimmer.flickerP99 = f.measure(24);
+    r.shimmer.flickerShare = f.measure(25);
+    r.shimmer.mean = f.measure(26);
     if (f.size() == 27) return r;
-    r.gpuCpuMs = f.number(27);
-    r.lookupCpuMs = f.number(28);
+    r.gpuCpuMs = f.measure(27);
+    r.lookupCpuMs = f.measure(28);
     if (f.size() == 29) return r;
     r.glRenderer = f.text(29);
     if (f.size() == 30) return r;
-    r.contact.edgeRmse = f.number(30);
-    r.contact.edgePixels = f.integer(31);
+    r.contact.edgeRmse = f.measure(30);
+    r.contact.edgePixels = f.count(31);
     if (f.size() == 32) return r;
     r.truth = f.text(32);
-    r.contactDistance = f.number(33);
+    r.contactDistance = f.measure(33);
+    if (f.size() == 34) return r;
+    r.gpuCpuMsIqr = f.measure(34);
+    r.lookupCpuMsIqr = f.measure(35);
     return r;
 }
 
 // The field count a header line promises, or 0 when it is not a bench.csv header.
 size_t fieldsOfHeader(const std::string& header) {
     for (std::string_view h :
-         {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V6, BENCH_CSV_HEADER_V5, BENCH_CSV_HEADER_V4,
-          BENCH_CSV_HEADER_V3, BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
+         {BENCH_CSV_HEADER, BENCH_CSV_HEADER_V7, BENCH_CSV_HEADER_V6, BENCH_CSV_HEADER_V5,
+          BENCH_CSV_HEADER_V4, BENCH_CSV_HEADER_V3, BENCH_CSV_HEADER_V2, BENCH_CSV_HEADER_V1}) {
         if (header == h) return static_cast<size_t>(std::count(h.begin(), h.end(), ',')) + 1;
     }
     return 0;
@@ -159,11 +166,29 @@ std::vector<BenchRow> parseBenchCsv(std::string_view text, const std::string& so
 
 std::string benchTruthKind(const BenchRow& row) { return row.truth.substr(0, row.truth.find(' ')); }
 
+bool benchTimesByCpu(const BenchRow& row) {
+    return isSoftwareRenderer(row.glRenderer) && row.gpuCpuMs > 0.0 && row.lookupCpuMs > 0.0;
+}
+
+double benchPassMs(const BenchRow& row, bool lookup) {
+    if (benchTimesByCpu(row)) return lookup ? row.lookupCpuMs : row.gpuCpuMs;
+    return lookup ? row.lookupMs : row.gpuMs;
+}
+
+double benchPassIqr(const BenchRow& row, bool lookup) {
+    if (benchTimesByCpu(row)) return lookup ? row.lookupCpuMsIqr : row.gpuCpuMsIqr;
+    return lookup ? row.lookupMsIqr : row.gpuMsIqr;
+}
+
+bool benchSpreadsOverlap(const BenchRow& a, const BenchRow& b, bool lookup) {
+    double aMs = benchPassMs(a, lookup), bMs = benchPassMs(b, lookup);
+    double reach = 0.5 * (benchPassIqr(a, lookup) + benchPassIqr(b, lookup));
+    return std::abs(aMs - bMs) <= reach;
+}
+
 std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows, bool byLookup) {
     std::vector<glm::dvec2> points;
-    for (const BenchRow& r : rows) {
-        points.emplace_back(byLookup ? r.lookupMs : r.gpuMs, r.error.edgeRmse);
-    }
+    for (const BenchRow& r : rows) points.emplace_back(benchPassMs(r, byLookup), r.error.edgeRmse);
     return paretoFront(points, PARETO_ERROR_TOLERANCE);
 }
 
@@ -252,14 +277,21 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
     std::vector<size_t> front = benchParetoFront(rows, setup.frontByLookup);
     std::set<size_t> onFront(front.begin(), front.end());
     md +=
-        "| method | N | map | scene ms | IQR | lookup ms | IQR | CPU ns/px | texel reads | RMSE | "
-        "max err | edge RMSE | edge max err | acne % | leak % | shimmer p99 | flicker % |\n";
-    md += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+        "| method | N | map | scene ms | IQR | lookup ms | IQR | scene CPU ms | IQR | lookup CPU "
+        "ms "
+        "| IQR | CPU ns/px | texel reads | RMSE | max err | edge RMSE | edge max err | acne % | "
+        "leak % | shimmer p99 | flicker % |\n";
+    md += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
     for (size_t k = 0; k < rows.size(); ++k) md += tableLine(rows[k], onFront.count(k) > 0);
+    bool cpu = !rows.empty() && std::all_of(rows.begin(), rows.end(), benchTimesByCpu);
     md += "\n`*` marks the Pareto front of " +
           std::string(setup.frontByLookup ? "lookup" : "scene") +
-          " time against edge RMSE, by median time: no other run beats it on both "
+          (cpu ? " process CPU time (the renderer is a CPU rasteriser: its work is the CPU's, "
+                 "which other processes do not stretch as they do the wall clock)"
+               : " time") +
+          " against edge RMSE, by the median: no other run beats it on both "
           "(where two runs' IQRs overlap, another run of the bench may order them the other way); "
+          "CPU ms are the passes' process CPU time, all threads (0: a GPU's own timer measured); "
           "`!` a noisy point (an IQR above 10 % of its median). "
           "Edge RMSE is the filter's aliasing error (the edge band, where the truth is partly "
           "lit); acne % is the share of the clean lit pixels (fully lit over the method's whole "

@@ -18,6 +18,13 @@ inline constexpr std::string_view BENCH_CSV_HEADER =
     "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,acne_share,"
     "acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,shimmer_mean,shimmer_p99,"
     "flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,gl_renderer,contact_edge_rmse,"
+    "contact_edge_pixels,truth,contact_distance,gpu_cpu_ms_iqr,lookup_cpu_ms_iqr";
+// The header before the CPU times' spreads: still read (their IQRs unknown: 0).
+inline constexpr std::string_view BENCH_CSV_HEADER_V7 =
+    "method,kernel,map_size,gpu_ms,cpu_ns_per_pixel,texel_reads,rmse,max_err,edge_rmse,"
+    "edge_max_err,timer,gpu_ms_iqr,lookup_ms,lookup_ms_iqr,noisy,weights,sigma,acne_share,"
+    "acne_darkening,acne_pixels,leak_share,leak_mean,leak_pixels,shimmer_mean,shimmer_p99,"
+    "flicker_share,change_mean,gpu_cpu_ms,lookup_cpu_ms,gl_renderer,contact_edge_rmse,"
     "contact_edge_pixels,truth,contact_distance";
 // The header before the truth and the contact distance: still read (the truth unknown: empty,
 // the distance 0).
@@ -62,7 +69,8 @@ std::string benchCsv(std::span<const BenchRow> rows);
 
 // Reads what benchCsv wrote (a lesson's chart comes from a shipped bench.csv; contact_edge_rmse
 // over contact_edge_pixels, 0 and 0 without --contact; truth in the report's words, with ';' for
-// ','; contact_distance in world units), or the 32 columns of BENCH_CSV_HEADER_V6, the 30 of
+// ','; contact_distance in world units; the CPU times' IQRs), or the 34 columns of
+// BENCH_CSV_HEADER_V7, the 32 of BENCH_CSV_HEADER_V6, the 30 of
 // BENCH_CSV_HEADER_V5,
 // the 29 of BENCH_CSV_HEADER_V4, the 27 of BENCH_CSV_HEADER_V3, the fifteen of
 // BENCH_CSV_HEADER_V2 or the eleven of BENCH_CSV_HEADER_V1 (what they lack: 0, box, not noisy,
@@ -123,10 +131,29 @@ std::string benchMarkdown(std::span<const BenchRow> rows, const BenchSetup& setu
 // (and bilinear2x2 and hw2x2) compute one filter, and their errors differ by float rounding.
 constexpr double PARETO_ERROR_TOLERANCE = 1e-6;
 
-// Indices of the rows on the Pareto front of (gpu_ms, edge_rmse), cheapest first (pareto.h);
-// of (lookup_ms, edge_rmse) when byLookup. Every row takes part, by its median time, noisy or not:
-// the charts draw each time's spread as a bar beside it (speed_chart.h), so a reader sees where
-// two dots' order across could swap in another run instead of losing the dot from the front.
+// The clock a row's times are charted and compared by. On a CPU rasteriser (llvmpipe, softpipe:
+// render/gpu_timer.h, isSoftwareRenderer) whose CPU times were recorded, the process CPU time of
+// all threads: there the GPU's work is the CPU's, and other processes on a shared machine stretch
+// the wall clock (17.4's scene pass once read 11.6 ms for pcf-gather 3x3 and 8.5 ms for 7x7 by
+// the wall clock, while its CPU time rose 6.3, 7.1, 9.2 ms with the kernel). Else the wall clock
+// or the GPU's own query (BenchRow::timer).
+bool benchTimesByCpu(const BenchRow& row);
+
+// A row's time of the camera pass (the lookup pass when `lookup`) by that clock: median and
+// interquartile range, ms.
+double benchPassMs(const BenchRow& row, bool lookup);
+double benchPassIqr(const BenchRow& row, bool lookup);
+
+// Whether two rows' times, each drawn as its median +- half its IQR (speed_chart.h), overlap:
+// then another run of the bench could order them either way, and neither a chart's front line nor
+// a lesson's "faster than" may say which is cheaper.
+bool benchSpreadsOverlap(const BenchRow& a, const BenchRow& b, bool lookup);
+
+// Indices of the rows on the Pareto front of (benchPassMs, edge_rmse), cheapest first
+// (pareto.h); of the lookup pass's time when byLookup. Every row takes part, by its median time,
+// noisy or not: the charts draw each time's spread as a bar beside it (speed_chart.h), so a reader
+// sees where two dots' order across could swap in another run instead of losing the dot from the
+// front.
 std::vector<size_t> benchParetoFront(std::span<const BenchRow> rows, bool byLookup = false);
 
 }  // namespace pcf

@@ -21,12 +21,11 @@ std::string chartTickText(double v, bool percent) {
     return buf;
 }
 
-std::string chartRendererLine(const std::string& glRenderer, bool noteOwnLine) {
+std::string chartRendererLine(const std::string& glRenderer) {
     if (glRenderer.empty()) return std::string(RENDERER_UNKNOWN);
     std::string line = "rendered on " + glRenderer;
     if (glRenderer.find("llvmpipe") != std::string::npos) {
-        line += noteOwnLine ? "\n" + std::string(LLVMPIPE_NOTE)
-                            : " (" + std::string(LLVMPIPE_NOTE) + ")";
+        line += " (" + std::string(LLVMPIPE_NOTE) + ")";
     }
     return line;
 }

@@ -10,6 +10,7 @@
 
 #include "draw/canvas.h"
 #include "draw/rect.h"
+#include "render/frame_ops.h"
 #include "render/gl_objects.h"
 
 namespace pcf {
@@ -28,13 +29,12 @@ constexpr float CHART_MARK_CLEARANCE = 2.0f;
 constexpr float STANDALONE_CHART_MIN_PX = 14.0f;
 
 // What a chart says of the renderer it was measured on: "rendered on NAME" (GL_RENDERER), and for
-// Mesa's llvmpipe, a CPU rasteriser, " (LLVMPIPE_NOTE)", or with noteOwnLine "\nLLVMPIPE_NOTE"
-// (a narrow chart: a lesson frame's). An empty name: RENDERER_UNKNOWN.
+// Mesa's llvmpipe, a CPU rasteriser, " (LLVMPIPE_NOTE)". An empty name: RENDERER_UNKNOWN.
 inline constexpr std::string_view LLVMPIPE_NOTE =
-    "llvmpipe: a CPU rasteriser; ratios carry over, milliseconds do not";
+    "llvmpipe: a CPU rasteriser; a GPU's times, and their ratios, differ";
 inline constexpr std::string_view RENDERER_UNKNOWN =
     "renderer not recorded (a file older than its gl_renderer column)";
-std::string chartRendererLine(const std::string& glRenderer, bool noteOwnLine = false);
+std::string chartRendererLine(const std::string& glRenderer);
 
 // A round step (1, 2 or 5 times a power of ten) at or above `rough` (> 0).
 double chartNiceStep(double rough);
@@ -48,23 +48,17 @@ std::string chartTickText(double v, bool percent = false);
 // bindings are restored.
 template <class Paint>
 std::vector<uint8_t> drawChartOffscreen(glm::ivec2 size, Paint&& paint) {
-    GLint previousDraw = 0, previousRead = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDraw);
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousRead);
+    FramebufferBindingsKept kept;
     OffscreenTarget target = createOffscreenTarget(size.x, size.y, {GL_RGBA8});
-    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, &CHART_WHITE.x);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer.id());
+    clearColour(target.framebuffer.id(), CHART_WHITE);
+    bindFramebuffer(target.framebuffer.id());
     {
         Canvas c;
         c.begin(size);
         paint(c);
         c.flush();
     }
-    std::vector<uint8_t> rgba =
-        readPixelsRgba8(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, size.x, size.y);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousDraw));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previousRead));
-    return rgba;
+    return readPixelsRgba8(target.framebuffer.id(), GL_COLOR_ATTACHMENT0, size.x, size.y);
 }
 
 }  // namespace pcf

@@ -1,5 +1,6 @@
 #include "analysis/csv_lines.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 
@@ -35,10 +36,31 @@ void CsvFields::fail(const std::string& problem) const {
 }
 
 double CsvFields::number(size_t k) const {
-    char* endPtr = nullptr;
-    double v = std::strtod(mFields[k].c_str(), &endPtr);
-    if (mFields[k].empty() || *endPtr != '\0' || !std::isfinite(v)) {
-        fail("field " + std::to_string(k + 1) + " '" + mFields[k] + "' is not a number");
+    // from_chars, not strtod: strtod also reads hex ("0x1p3"), leading spaces and a '+'.
+    const std::string& text = mFields[k];
+    double v = 0.0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size() ||
+        !std::isfinite(v)) {
+        fail("field " + std::to_string(k + 1) + " '" + text + "' is not a number");
+    }
+    return v;
+}
+
+double CsvFields::measure(size_t k) const {
+    double v = number(k);
+    if (v < 0.0) {
+        fail("field " + std::to_string(k + 1) + " '" + mFields[k] +
+             "' is negative; it is a measure, 0 or more");
+    }
+    return v;
+}
+
+int CsvFields::count(size_t k) const {
+    int v = integer(k);
+    if (v < 0) {
+        fail("field " + std::to_string(k + 1) + " '" + mFields[k] +
+             "' is negative; it is a count or a size, 0 or more");
     }
     return v;
 }

@@ -25,10 +25,15 @@ class CsvFields {
     size_t size() const { return mFields.size(); }
     const std::string& text(size_t k) const { return mFields[k]; }
     [[noreturn]] void fail(const std::string& problem) const;
-    // A finite number, or "field k 'x' is not a number".
+    // A finite number in decimal, as pcfscope writes them (no hex, no leading + or spaces), or
+    // "field k 'x' is not a number".
     double number(size_t k) const;
+    // A number that is 0 or more: a time, a share, an error, a count.
+    double measure(size_t k) const;
     // Counts and sizes: a whole number an int holds (a cast of 1e30 is undefined behaviour).
     int integer(size_t k) const;
+    // A count or size: a whole number 0 or more.
+    int count(size_t k) const;
     // 0 or 1.
     bool flag(size_t k) const;
 

@@ -135,8 +135,9 @@ double meanOf(const std::vector<float>& values) {
 
 LeakWidth leakWidth(const std::vector<float>& visibility, const std::vector<uint8_t>& cleanUmbra,
                     const std::vector<float>& texels, const std::vector<float>& world,
-                    glm::ivec2 size, int minRun) {
+                    glm::ivec2 size, int minRun, int stride) {
     size_t n = static_cast<size_t>(size.x) * static_cast<size_t>(size.y);
+    stride = std::max(1, stride);
     std::vector<uint8_t> seen(n, 0);
     auto leaking = [&](size_t k) { return cleanUmbra[k] && visibility[k] > LEAK_LEVEL; };
     LeakWidth out;
@@ -152,8 +153,8 @@ LeakWidth leakWidth(const std::vector<float>& visibility, const std::vector<uint
             stack.pop_back();
             run.push_back(k);
             int x = static_cast<int>(k % size.x), y = static_cast<int>(k / size.x);
-            for (int dy = -1; dy <= 1; ++dy) {
-                for (int dx = -1; dx <= 1; ++dx) {
+            for (int dy = -stride; dy <= stride; dy += stride) {
+                for (int dx = -stride; dx <= stride; dx += stride) {
                     int nx = x + dx, ny = y + dy;
                     if (nx < 0 || ny < 0 || nx >= size.x || ny >= size.y) continue;
                     size_t q = static_cast<size_t>(ny) * size.x + static_cast<size_t>(nx);
@@ -283,6 +284,26 @@ std::vector<uint8_t> nearContactMask(const Scene& scene,
         out[k] = q && glm::length(hits[k]->posWs - *q) <= distance;
     }
     return out;
+}
+
+CasterDistances casterDistances(const Scene& scene, const GroundTruth& truth,
+                                const ErrorRegions& regions,
+                                const std::vector<std::optional<Hit>>& hits,
+                                const glm::mat4& shadowClip, int mapSize) {
+    CasterDistances d;
+    d.world.assign(truth.pixelCount(), 0.0f);
+    d.texels.assign(truth.pixelCount(), 0.0f);
+    float size = static_cast<float>(mapSize);
+    for (size_t k = 0; k < d.world.size(); ++k) {
+        if (!regions.compared[k] || truth.visibility[k] > 0.0f || !hits[k]) continue;
+        glm::vec3 p = hits[k]->posWs;
+        std::optional<glm::vec3> q = nearestCasterPoint(scene, p);
+        if (!q) continue;
+        d.world[k] = glm::length(p - *q);
+        d.texels[k] =
+            glm::length(shadowCoord(shadowClip, p).uvSm - shadowCoord(shadowClip, *q).uvSm) * size;
+    }
+    return d;
 }
 
 }  // namespace pcf

@@ -78,9 +78,25 @@ struct LeakWidth {
 
 // Over the frame (size.x * size.y pixels, rows top-down): leaking pixels are those of the umbra
 // mask with visibility > LEAK_LEVEL; texels / world give each pixel's distance from the caster.
+// A mask tested on every stride-th pixel only (cleanPixelMask's stride) is connected at that
+// stride: a pixel's neighbours are the tested pixels around it, stride pixels away.
 LeakWidth leakWidth(const std::vector<float>& visibility, const std::vector<uint8_t>& cleanUmbra,
                     const std::vector<float>& texels, const std::vector<float>& world,
-                    glm::ivec2 size, int minRun = LEAK_MIN_RUN);
+                    glm::ivec2 size, int minRun = LEAK_MIN_RUN, int stride = 1);
+
+// Per pixel (rows top-down, the truth's size), how far the surface seen at its centre lies from
+// the nearest caster (nearestCasterPoint): in world units, and in texels of a mapSize map whose
+// clip transform is shadowClip (the two points' map positions apart). Filled only where leakWidth
+// reads them: compared pixels the truth calls fully shadowed (visibility 0) with a caster near;
+// 0 elsewhere.
+struct CasterDistances {
+    std::vector<float> world;
+    std::vector<float> texels;
+};
+CasterDistances casterDistances(const Scene& scene, const GroundTruth& truth,
+                                const ErrorRegions& regions,
+                                const std::vector<std::optional<Hit>>& hits,
+                                const glm::mat4& shadowClip, int mapSize);
 
 struct ShimmerStats {
     double mean = 0.0;          // mean |dv| over the compared pixels of every frame pair

@@ -12,8 +12,10 @@
 #include <thread>
 #include <utility>
 
+#include "analysis/ground_truth_area.h"
 #include "analysis/ground_truth_conics.h"
 #include "analysis/ground_truth_edges.h"
+#include "analysis/ground_truth_rays.h"
 #include "analysis/light_visibility.h"
 #include "scene/camera.h"
 #include "scene/light.h"
@@ -36,49 +38,6 @@ uint32_t hash32(uint32_t x) {
 
 // 24 bits of the hash as a float in [0,1): exact in float, and never 1.
 float unitFloat(uint32_t h) { return static_cast<float>(h >> 8) * (1.0f / 16777216.0f); }
-
-// Camera rays from window coordinates in double: the basis of cameraRay (camera.h) computed once,
-// and the sub-pixel position kept in double until the direction is normalised, so a bisection
-// step of 1/4096 px is not lost to float rounding of the window position.
-struct CameraRays {
-    glm::dvec3 f, s, u;
-    glm::vec3 eye;
-    glm::dvec3 eyeD;
-    double tanHalfFov, aspect;
-    glm::dvec2 size;
-    CameraRays(const Camera& camera, glm::ivec2 frameSize)
-        : eye(camera.eyeWs),
-          eyeD(camera.eyeWs),
-          tanHalfFov(std::tan(0.5 * glm::radians(static_cast<double>(camera.fovYDeg)))),
-          aspect(static_cast<double>(frameSize.x) / static_cast<double>(frameSize.y)),
-          size(frameSize) {
-        f = glm::normalize(glm::dvec3(camera.targetWs) - glm::dvec3(camera.eyeWs));
-        s = glm::normalize(glm::cross(f, glm::dvec3(camera.upWs)));
-        u = glm::cross(s, f);
-    }
-    // window: GL window coordinates in pixels (y up), e.g. (x + 0.5, y + 0.5) for a centre.
-    glm::dvec3 dirAt(glm::dvec2 window) const {
-        glm::dvec2 ndc = window / size * 2.0 - 1.0;
-        return glm::normalize(f + s * (ndc.x * aspect * tanHalfFov) + u * (ndc.y * tanHalfFov));
-    }
-    Ray at(glm::dvec2 window) const { return Ray{eye, glm::vec3(dirAt(window))}; }
-    // dirAt before normalising is D0 + x Dx + v Dv at window (X + x, Y + v): the rays of pixel
-    // (X, Y) as ground_truth_conics.h takes them.
-    glm::dvec3 rawAt(glm::dvec2 window) const {
-        glm::dvec2 ndc = window / size * 2.0 - 1.0;
-        return f + s * (ndc.x * aspect * tanHalfFov) + u * (ndc.y * tanHalfFov);
-    }
-    glm::dvec3 stepX() const { return s * (2.0 / size.x * aspect * tanHalfFov); }
-    glm::dvec3 stepY() const { return u * (2.0 / size.y * tanHalfFov); }
-};
-
-enum SampleState : uint8_t { UNLIT = 0, LIT = 1, OFF = 2 };  // OFF: not on the centre's object
-
-SampleState sampleState(const Scene& scene, const Ray& ray, int object) {
-    std::optional<Hit> hit = intersect(scene, ray);
-    if (!hit || hit->object != object) return OFF;
-    return litByLight(scene, *hit) ? LIT : UNLIT;
-}
 
 // What the first pass knows of a pixel.
 enum PixelClass : uint8_t { ALL_UNLIT = 0, ALL_LIT = 1, MIXED = 2, NO_HIT = 3 };
@@ -130,15 +89,6 @@ FirstPass firstPass(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel
 constexpr int WALK_POINTS = 16;
 constexpr double MIN_PIECE_PX = 1.0 / 4096.0;  // 1/16 px halved 8 times
 constexpr int FIRST_PANELS = 4;
-// Light-fraction evaluations per piece of an area light's scanline, at most.
-constexpr int MAX_AREA_EVALUATIONS = 33;
-
-struct Scanline {
-    double lit = 0.0;     // lit length on the centre's object, pixels
-    double on = 0.0;      // length on the centre's object, pixels
-    double litErr = 0.0;  // what lit may be off by: the crossings' pieces of 1/4096 px
-    double onErr = 0.0;   // likewise for on: those where the object seen changes
-};
 
 struct ScanlineWalk {
     const Scene& scene;
@@ -206,12 +156,6 @@ Scanline scanline(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel, 
     return w.line;
 }
 
-// A piece shorter than this (pixels) may be read wrong at its middle: the ray caster rounds the
-// direction and the hit to float, which moves a state's border by about 1e-5 px (6e-8 rad
-// against 4e-3 rad per pixel at 320x180; 6e-5 px at 1280x720); such a piece counts whole as
-// error.
-constexpr double UNSURE_PX = 1.0 / 4096.0;
-
 // The exact scanline (ground_truth_conics.h): cut at every root of the pixel's conics, each
 // piece read at its middle with the ray caster.
 Scanline exactScanline(const Scene& scene, const CameraRays& rays, glm::ivec2 pixel, int object,
@@ -237,112 +181,6 @@ Scanline exactScanline(const Scene& scene, const CameraRays& rays, glm::ivec2 pi
     }
     return line;
 }
-
-// The area light's scanline: where the object is seen (exact cuts, as the hard light's), then the
-// light's visible fraction f (light_visibility.h) integrated along each piece on it by an adaptive
-// trapezoid rule in x (panels split where coarse and fine differ most, as over v); lit is that
-// integral, its error the pieces' 2 |fine - coarse| plus f's own bound times the length.
-struct AreaLine {
-    const Scene& scene;
-    const CameraRays& rays;
-    glm::ivec2 pixel;
-    int object;
-    double fTarget;                     // the bound each f aims for
-    double xTarget;                     // the x-integral's error aimed for, per pixel of length
-    const std::vector<Conic>* outline;  // the pixel's conics where the object seen changes
-
-    LightFraction f(double x, double y) const {
-        Ray ray = rays.at({static_cast<double>(pixel.x) + x, y});
-        // The object alone: within a piece it is what the ray sees (rounding aside).
-        std::optional<Hit> hit = intersect(scene.objects[static_cast<size_t>(object)].shape, ray);
-        if (!hit) return {0.5, 0.5};
-        glm::vec3 facing = hit->frontFace ? hit->normalWs : -hit->normalWs;
-        return lightVisibleFraction(scene, glm::dvec3(hit->posWs), glm::dvec3(facing), object,
-                                    fTarget);
-    }
-
-    // The integral of f over [x0, x1] on scanline y, into lit and litErr.
-    void integrate(double x0, double x1, double y, Scanline& line) const {
-        struct Piece {
-            double a, b, fa, fm, fb, fine, err;
-        };
-        double worstF = 0.0;
-        auto at = [&](double x) {
-            LightFraction here = f(x, y);
-            worstF = std::max(worstF, here.bound);
-            return here.visible;
-        };
-        auto make = [](double a, double b, double fa, double fm, double fb) {
-            double h = b - a;
-            double fine = 0.25 * h * (fa + 2.0 * fm + fb);
-            return Piece{a, b, fa, fm, fb, fine, 2.0 * std::abs(fine - 0.5 * h * (fa + fb))};
-        };
-        double xm = 0.5 * (x0 + x1);
-        double f0 = at(x0), fm = at(xm), f1 = at(x1);
-        std::vector<Piece> pieces{make(x0, xm, f0, at(0.5 * (x0 + xm)), fm),
-                                  make(xm, x1, fm, at(0.5 * (xm + x1)), f1)};
-        for (int evaluations = 5;; evaluations += 2) {
-            double sum = 0.0, err = 0.0;
-            size_t worst = 0;
-            for (size_t k = 0; k < pieces.size(); ++k) {
-                sum += pieces[k].fine;
-                err += pieces[k].err;
-                if (pieces[k].err > pieces[worst].err) worst = k;
-            }
-            if (err <= xTarget * (x1 - x0) || evaluations + 2 > MAX_AREA_EVALUATIONS) {
-                line.lit += sum;
-                line.litErr += err + worstF * (x1 - x0);
-                return;
-            }
-            Piece p = pieces[worst];
-            double m = 0.5 * (p.a + p.b);
-            pieces[worst] = make(p.a, m, p.fa, at(0.5 * (p.a + m)), p.fm);
-            pieces.push_back(make(m, p.b, p.fm, at(0.5 * (m + p.b)), p.fb));
-        }
-    }
-
-    // Where the object is seen: the scanline cut at the outline's conics (ground_truth_conics.h),
-    // each piece read at its middle, consecutive pieces on the object merged into segments. A
-    // segment's end at a cut lies on the object's outline, where a ray may miss the object by
-    // rounding: f is integrated from UNSURE_PX inside it, the strip left out counts half lit
-    // and its other half as error.
-    Scanline operator()(double v) const {
-        double y = static_cast<double>(pixel.y) + v;
-        thread_local std::vector<double> xs;
-        xs.assign(1, 0.0);
-        for (const Conic& q : *outline) scanlineCuts(q, v, xs);
-        xs.push_back(1.0);
-        std::sort(xs.begin(), xs.end());
-        Scanline line;
-        thread_local std::vector<glm::dvec2> segments;
-        segments.clear();
-        for (size_t i = 0; i + 1 < xs.size(); ++i) {
-            double length = xs[i + 1] - xs[i];
-            if (!(length > 0.0)) continue;
-            double x = static_cast<double>(pixel.x) + 0.5 * (xs[i] + xs[i + 1]);
-            if (sampleState(scene, rays.at({x, y}), object) == OFF) continue;
-            line.on += length;
-            if (length < UNSURE_PX) {
-                line.onErr += length;
-                line.litErr += length;
-            }
-            if (!segments.empty() && segments.back().y == xs[i]) {
-                segments.back().y = xs[i + 1];
-            } else {
-                segments.push_back({xs[i], xs[i + 1]});
-            }
-        }
-        for (const glm::dvec2& seg : segments) {
-            double a = seg.x > 0.0 ? seg.x + UNSURE_PX : seg.x;
-            double b = seg.y < 1.0 ? seg.y - UNSURE_PX : seg.y;
-            double strips = b > a ? (a - seg.x) + (seg.y - b) : seg.y - seg.x;
-            line.lit += 0.5 * strips;
-            line.litErr += 0.5 * strips;
-            if (b > a) integrate(a, b, y, line);
-        }
-        return line;
-    }
-};
 
 struct Refined {
     float visibility;
@@ -467,14 +305,15 @@ Refined refinePixel(const Scene& scene, const CameraRays& rays, const EdgeConics
 // The area light's pixel: a quarter of the target to each f and to each x-integral, the rest
 // to the integral over v.
 Refined refineAreaPixel(const Scene& scene, const CameraRays& rays, const EdgeConics& conics,
-                        glm::ivec2 pixel, const FirstPass& first, float target) {
+                        glm::ivec2 pixel, const FirstPass& first, float target, bool bySlices) {
     thread_local std::vector<Conic> outline;
     conics.pixelConics(first.object, false, rays.rawAt(glm::dvec2(pixel)), rays.stepX(),
                        rays.stepY(), outline);
     thread_local std::vector<double> breaks;
     breaks.clear();
     criticalRows(outline, breaks);
-    AreaLine line{scene, rays, pixel, first.object, 0.25 * target, 0.25 * target, &outline};
+    AreaLine line{scene,         rays,          pixel,    first.object,
+                  0.25 * target, 0.25 * target, &outline, bySlices};
     return integrateRows(line, first.visibility, target, breaks);
 }
 
@@ -604,7 +443,7 @@ PassTwo passTwo(const Scene& scene, const CameraRays& rays, const EdgeFinder& ed
             std::tan(0.5 * glm::radians(static_cast<double>(scene.light.angularDiameterDeg)));
         int state = edges.areaState(pixelCone(rays, x, y), p.object, tanHalf);
         if (state >= 0) return {static_cast<float>(state), 0.0f, false};
-        Refined r = refineAreaPixel(scene, rays, conics, {x, y}, p, target);
+        Refined r = refineAreaPixel(scene, rays, conics, {x, y}, p, target, options.areaBySlices);
         return {r.visibility, r.bound, true};
     }
     if (needsRefinement(firstAt, x, y, rays, edges)) {

@@ -113,11 +113,15 @@ struct GroundTruthOptions {
     // the refinement off (the first pass's mean; bound 1 where its samples disagree: no claim).
     float targetBound = DEFAULT_TRUTH_TARGET_BOUND;
     // The area-light truth: each point's visibility is the fraction of the light's disk it sees
-    // (light_visibility.h), integrated over the pixel with the same bound convention. Needs a
+    // (light_visibility.h), integrated over the pixel with the same bound convention (along runs
+    // of each scanline on one face: ground_truth_area.h; each point's own bound added). Needs a
     // light with a size (hasSize: a directional light's angular diameter, a spot light's
     // radius). Pixels the geometry proves wholly lit or wholly in the umbra (ground_truth_edges.h,
     // areaState; under a spot only wholly lit) keep 1 or 0 with bound 0.
     bool area = false;
+    // The area-light truth with every point's share of the disk sliced into chords
+    // (lightVisibleFractionBySlices), not in closed form: the older computation, to compare.
+    bool areaBySlices = false;
     // Called on the calling thread, about ten times a second and once at the end, with the
     // number of rows done out of the frame's height.
     std::function<void(int rowsDone, int rows)> progress;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "analysis/ground_truth_edges.h"
+#include "analysis/light_disk_shadow.h"
 #include "scene/light.h"
 
 namespace pcf {
@@ -258,13 +259,6 @@ DiskIntegral integrateDisk(const Scene& scene, glm::dvec3 posWs, glm::dvec3 faci
     }
 }
 
-// The disk the light is: where, its axes, how wide; finite for a spot's (at its place).
-struct LightDisk {
-    glm::dvec3 centre, e1, e2;
-    double radius;
-    bool finite;
-};
-
 // Two unit vectors across `axis` (unit), and across each other.
 std::pair<glm::dvec3, glm::dvec3> acrossAxis(glm::dvec3 axis) {
     glm::dvec3 helper = std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
@@ -290,42 +284,71 @@ void checkSpotDiskCasters(const Scene& scene) {
     }
 }
 
-LightFraction lightVisibleFraction(const Scene& scene, glm::dvec3 posWs, glm::dvec3 facingWs,
-                                   int object, double target) {
-    const Light& light = scene.light;
+namespace {
+
+// The light's disk seen from posWs, or nullopt for a spot's point outside its cone (which sees
+// nothing of the light). Throws for a light without a size.
+std::optional<LightDiskView> diskFor(const Light& light, glm::dvec3 posWs) {
     if (!hasSize(light)) {
         throw std::invalid_argument("lightVisibleFraction: needs a light with a size");
     }
-    LightDisk disk{};
     if (light.type == LightType::Directional) {
         glm::dvec3 travel = glm::normalize(glm::dvec3(light.directionWs));
         auto [e1, e2] = acrossAxis(travel);
         // The gnomonic disk one unit toward the light.
-        disk = {posWs - travel, e1, e2,
-                std::tan(0.5 * glm::radians(static_cast<double>(light.angularDiameterDeg))), false};
-    } else {
-        // The spot's cone is its centre's: a point outside it gets no light at all.
-        if (!towardLight(light, glm::vec3(posWs)).insideCone) return {0.0, 0.0};
-        glm::dvec3 axis = glm::normalize(glm::dvec3(light.directionWs));
-        auto [e1, e2] = acrossAxis(axis);
-        disk = {glm::dvec3(light.positionWs), e1, e2, static_cast<double>(light.radius), true};
+        return LightDiskView{
+            posWs,
+            posWs - travel,
+            e1,
+            e2,
+            std::tan(0.5 * glm::radians(static_cast<double>(light.angularDiameterDeg))),
+            false};
     }
-    // Chords one way and across: a sliver of the disk thinner than the chords' spacing and
-    // parallel to them escapes one integral but not the other, so they are compared: the mean,
-    // with half their difference added to the worse bound. More first panels while that is
-    // above the target.
+    // The spot's cone is its centre's: a point outside it gets no light at all.
+    if (!towardLight(light, glm::vec3(posWs)).insideCone) return std::nullopt;
+    glm::dvec3 axis = glm::normalize(glm::dvec3(light.directionWs));
+    auto [e1, e2] = acrossAxis(axis);
+    return LightDiskView{posWs, glm::dvec3(light.positionWs),      e1,
+                         e2,    static_cast<double>(light.radius), true};
+}
+
+// Chords one way and across: a sliver of the disk thinner than the chords' spacing and parallel
+// to them escapes one integral but not the other, so they are compared: the mean, with half
+// their difference added to the worse bound. More first panels while that is above the target.
+LightFraction slicedFraction(const Scene& scene, const LightDiskView& disk, glm::dvec3 facingWs,
+                             int object, double target) {
     DiskIntegral a{}, b{};
     for (int first : {8, 32, 128}) {
-        a = integrateDisk(scene, posWs, facingWs, object, target, disk.centre, disk.finite, disk.e1,
-                          disk.e2, disk.radius, first);
-        b = integrateDisk(scene, posWs, facingWs, object, target, disk.centre, disk.finite, disk.e2,
-                          -disk.e1, disk.radius, first);
+        a = integrateDisk(scene, disk.p, facingWs, object, target, disk.centre, disk.finite,
+                          disk.e1, disk.e2, disk.radius, first);
+        b = integrateDisk(scene, disk.p, facingWs, object, target, disk.centre, disk.finite,
+                          disk.e2, -disk.e1, disk.radius, first);
         double bound = 0.5 * std::abs(a.visible - b.visible) + std::max(a.bound, b.bound);
         if (bound <= target || first == 128) {
             return {0.5 * (a.visible + b.visible), bound};
         }
     }
     return {0.5 * (a.visible + b.visible), 1.0};
+}
+
+}  // namespace
+
+LightFraction lightVisibleFraction(const Scene& scene, glm::dvec3 posWs, glm::dvec3 facingWs,
+                                   int object, double target) {
+    std::optional<LightDiskView> disk = diskFor(scene.light, posWs);
+    if (!disk) return {0.0, 0.0};
+    if (std::optional<LightFraction> f =
+            diskFractionClosedForm(scene, *disk, facingWs, object, target)) {
+        return *f;
+    }
+    return slicedFraction(scene, *disk, facingWs, object, target);
+}
+
+LightFraction lightVisibleFractionBySlices(const Scene& scene, glm::dvec3 posWs,
+                                           glm::dvec3 facingWs, int object, double target) {
+    std::optional<LightDiskView> disk = diskFor(scene.light, posWs);
+    if (!disk) return {0.0, 0.0};
+    return slicedFraction(scene, *disk, facingWs, object, target);
 }
 
 }  // namespace pcf

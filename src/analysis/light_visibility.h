@@ -8,11 +8,16 @@
 // circular segment). The visible fraction at p is
 //   f(p) = (1 / (pi R^2)) * integral over the disk of [the light point is above p's horizon and
 //          the segment from p toward it meets no caster]
-// Per chord of the disk (height b, a in [-w, w], w = sqrt(R^2 - b^2)) the blocked part is found
-// exactly: each caster cut by the plane through p and the chord is a convex slice (a box: a
-// polygon, a rectangle: a segment, a sphere: a disk), and the rays from p through it meet the
-// chord in one interval; the horizon n . (light point - p) <= 0 is a half-line. The chords'
-// blocked lengths are merged and the integral over b = R sin(theta) (which takes the square
+// It is computed in closed form where the casters allow (light_disk_shadow.h: each caster's
+// shadow on the disk a convex polygon or, for a sphere, an ellipse bracketed between two, and the
+// covered area light_disk_area.h's), with the bound that form states (rounding only, or a
+// sphere's bracket). Elsewhere the disk is sliced (lightVisibleFractionBySlices below).
+//
+// The slicing: per chord of the disk (height b, a in [-w, w], w = sqrt(R^2 - b^2)) the blocked
+// part is found exactly: each caster cut by the plane through p and the chord is a convex slice
+// (a box: a polygon, a rectangle: a segment, a sphere: a disk), and the rays from p through it
+// meet the chord in one interval; the horizon n . (light point - p) <= 0 is a half-line. The
+// chords' blocked lengths are merged and the integral over b = R sin(theta) (which takes the square
 // root out of the chord ends) is an adaptive trapezoid rule with the step-halving error
 // estimate of ground_truth.h, so f comes with a bound. It is done twice, with chords one way
 // and across: a sliver of the disk parallel to the chords and thinner than their spacing
@@ -48,6 +53,12 @@ struct LightFraction {
 // scene passes checkSpotDiskCasters; throws std::invalid_argument for a light without a size.
 LightFraction lightVisibleFraction(const Scene& scene, glm::dvec3 posWs, glm::dvec3 facingWs,
                                    int object, double target);
+
+// The same by slicing the disk into chords for every point (what lightVisibleFraction falls back
+// to where the closed form does not apply): the older computation, to compare the closed form
+// against.
+LightFraction lightVisibleFractionBySlices(const Scene& scene, glm::dvec3 posWs,
+                                           glm::dvec3 facingWs, int object, double target);
 
 // Throws std::invalid_argument naming the sphere when a spot light's scene has a casting sphere
 // that reaches behind the light's disk (its slice would need clipping at the disk, which is not

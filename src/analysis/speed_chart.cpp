@@ -44,7 +44,17 @@ float barTickHalf(float s) { return 3.0f * s; }
 
 }  // namespace
 
-std::string spreadNote() { return "bars: IQR of the repeated times, centred on the median"; }
+std::string spreadNote() {
+    return "bars: IQR of the repeated times, centred on the median; the front's line joins only "
+           "dots whose bars are apart";
+}
+
+std::string speedChartXLabel(std::span<const BenchRow> rows, ChartTiming timing) {
+    bool cpu = !rows.empty() && std::all_of(rows.begin(), rows.end(), benchTimesByCpu);
+    std::string pass =
+        timing == ChartTiming::Lookup ? "filter time: bare lookup pass" : "camera pass";
+    return pass + (cpu ? ", process CPU time" : ", time") + ", ms (log scale)";
+}
 
 std::string speedChartRenderer(std::span<const BenchRow> rows) {
     for (const BenchRow& r : rows) {
@@ -81,7 +91,8 @@ SpeedChartText speedChartTextFor(std::span<const BenchRow> rows, const SpeedChar
     float width = std::max(16.0f, size.x - 2.0f * std::round(12.0f * s));
     out.subtitle.clear();
     std::string full = text.subtitle;
-    if (anyBar) full += (full.empty() ? "" : "; ") + spreadNote();
+    // The bars' meaning on a line of its own: a line break never splits it from its words.
+    if (anyBar) full += (full.empty() ? "" : "\n") + spreadNote();
     for (const std::string& line :
          wrapText(FontFace::Sans, fontsFor(s, text.minFontPx).subtitle, full, width)) {
         out.subtitle += (out.subtitle.empty() ? "" : "\n") + line;
@@ -137,11 +148,11 @@ glm::vec4 methodColour(int method) {
 }
 
 double chartMs(const BenchRow& row, ChartTiming timing) {
-    return timing == ChartTiming::Lookup ? row.lookupMs : row.gpuMs;
+    return benchPassMs(row, timing == ChartTiming::Lookup);
 }
 
 double chartIqr(const BenchRow& row, ChartTiming timing) {
-    return timing == ChartTiming::Lookup ? row.lookupMsIqr : row.gpuMsIqr;
+    return benchPassIqr(row, timing == ChartTiming::Lookup);
 }
 
 double chartAccuracy(const BenchRow& row, ChartAccuracy accuracy) {
@@ -475,6 +486,11 @@ void layoutFront(SpeedChartLayout& L, std::span<const BenchRow> rows, ChartTimin
         frontPoints.emplace_back(chartMs(r, timing), chartAccuracy(r, accuracy));
     }
     L.front = paretoFront(frontPoints, PARETO_ERROR_TOLERANCE);
+    L.frontJoined.assign(L.front.size(), false);
+    for (size_t k = 1; k < L.front.size(); ++k) {
+        L.frontJoined[k] = !benchSpreadsOverlap(rows[L.front[k - 1]], rows[L.front[k]],
+                                                timing == ChartTiming::Lookup);
+    }
     for (size_t k : highlight) {
         if (k < rows.size()) L.highlight.push_back(k);
     }
@@ -669,6 +685,7 @@ void drawPlotMarks(Canvas& c, const SpeedChartLayout& L, std::span<const BenchRo
     float s = L.scale;
     c.pushClip(L.plot.expanded(2.0f * s));
     for (size_t k = 1; k < L.front.size(); ++k) {
+        if (!L.frontJoined[k]) continue;
         c.line(L.points[L.front[k - 1]], L.points[L.front[k]], std::max(1.5f, 1.5f * s), FRONT);
     }
     float dotR = L.dotRadius;

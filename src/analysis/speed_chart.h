@@ -2,11 +2,13 @@
 // (ChartTiming) with an error bar as wide as its IQR on a LOG x axis
 // (each run's cost spans 1 to ~200 texel reads), edge-band RMSE on a linear y axis from 0, one
 // solid dot per run coloured by method and labelled "gather3 1024" (method, N, map size), and the
-// Pareto front of the medians (runs no other run beats on both median time and error) joined by
-// a line, its dots ringed. The spread is drawn, not judged: every dot has its bar, so where two
-// bars overlap the reader sees that another run of the bench could order those dots the other way
-// (on llvmpipe sharing two cores most IQRs exceed a tenth of the median, and a mark for "noisy"
-// would have been on nearly every dot).
+// Pareto front of the medians (runs no other run beats on both median time and error), its dots
+// ringed and joined by a line where their bars are apart. On a CPU rasteriser the times are the
+// process CPU time (bench_report.h: benchTimesByCpu), and the x axis's name says so. The spread
+// is drawn, not judged: every dot has its bar, so where two bars overlap the reader sees that
+// another run of the bench could order those dots the other way, and no front line claims an
+// order between them (on llvmpipe sharing two cores most wall-clock IQRs exceed a tenth of the
+// median, and a mark for "noisy" would have been on nearly every dot).
 // Drawn with the overlay's Canvas (src/draw/canvas.h) into an offscreen target.
 //
 // The layout is computed apart from the drawing (no GL), so where things go can be tested
@@ -114,11 +116,15 @@ struct SpeedChartLayout {
     std::vector<int> badge;
     std::vector<Rect> badgeBoxes;
     std::vector<bool> badgeOnDot;
-    float badgeRadius = 0.0f;        // pixels; its number is labelPx
-    int keyLines = 0;                // the lines kept for the key under the x axis's name
-    std::vector<size_t> keyRows;     // per key entry (badge number - 1): the row
-    std::vector<Rect> keyBadges;     // per key entry: its badge's box; the name follows it
-    std::vector<size_t> front;       // rows on the Pareto front, fastest first
+    float badgeRadius = 0.0f;     // pixels; its number is labelPx
+    int keyLines = 0;             // the lines kept for the key under the x axis's name
+    std::vector<size_t> keyRows;  // per key entry (badge number - 1): the row
+    std::vector<Rect> keyBadges;  // per key entry: its badge's box; the name follows it
+    std::vector<size_t> front;    // rows on the Pareto front, fastest first
+    // Per step of the front (front[k - 1] to front[k], k >= 1): whether the line joins them. Not
+    // where their time bars overlap (bench_report.h: benchSpreadsOverlap): a line from one to the
+    // next says the second costs more, which such spreads do not support.
+    std::vector<bool> frontJoined;
     std::vector<int> legendMethods;  // methods present, in the rows' order of appearance
     Rect legend;
     // Per legend line (the methods', then the front's): the box its mark covers (a dot; the
@@ -141,6 +147,10 @@ inline constexpr const char* FRONT_LEGEND = "Pareto front of medians";
 // The legend's entry for the orange rings of a lesson's chart_highlight: they mark the dots the
 // step's words name, not a front (16.6 ringed pcss, off the front, with nothing to say why).
 inline constexpr const char* HIGHLIGHT_LEGEND = "named in the text";
+
+// The x axis's name: the pass (timing) and the clock its times are by (bench_report.h:
+// benchTimesByCpu of the rows), e.g. "camera pass, process CPU time, ms (log scale)".
+std::string speedChartXLabel(std::span<const BenchRow> rows, ChartTiming timing);
 
 // The GL_RENDERER the rows were measured on (bench.csv's gl_renderer), "" when not recorded.
 std::string speedChartRenderer(std::span<const BenchRow> rows);

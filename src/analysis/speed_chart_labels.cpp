@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "analysis/chart_axes.h"
 #include "draw/text_layout.h"
@@ -44,13 +45,85 @@ glm::vec2 direction(int i) {
     return {std::cos(a), std::sin(a)};
 }
 
+// A uniform grid of cells over the chart, each listing the items (dots, error bars, placed
+// names) whose boxes reach into it: a spot tried visits only the few items near it, not every
+// dot and name, so placing n names takes time about linear in n, not quadratic. Items and
+// queries outside the chart fall into its border cells.
+class CellIndex {
+  public:
+    CellIndex(glm::vec2 size, float cell)
+        : mCell(cell),
+          mCols(std::max(1, static_cast<int>(std::ceil(size.x / cell)))),
+          mRows(std::max(1, static_cast<int>(std::ceil(size.y / cell)))),
+          mItems(static_cast<size_t>(mCols) * static_cast<size_t>(mRows)) {}
+
+    void insert(size_t id, const Rect& r) {
+        forCells(r, [&](size_t cell) { mItems[cell].push_back(id); });
+    }
+    void clear() {
+        for (std::vector<size_t>& cell : mItems) cell.clear();
+    }
+    // The ids of the items whose cells r reaches, ascending, each once: every item whose box
+    // overlaps r is among them.
+    void query(const Rect& r, std::vector<size_t>& out) const {
+        out.clear();
+        forCells(r, [&](size_t cell) {
+            out.insert(out.end(), mItems[cell].begin(), mItems[cell].end());
+        });
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+    }
+
+    // Whether pred(id) holds for an item whose cells r reaches (items in several cells may be
+    // asked more than once).
+    template <typename Pred>
+    bool any(const Rect& r, Pred pred) const {
+        bool found = false;
+        forCells(r, [&](size_t cell) {
+            for (size_t id : mItems[cell]) {
+                if (found) return;
+                found = pred(id);
+            }
+        });
+        return found;
+    }
+
+  private:
+    // f(cell index) for every cell r reaches (floor is monotone, so two boxes that overlap reach
+    // a common cell).
+    template <typename F>
+    void forCells(const Rect& r, F f) const {
+        // The cell of coordinate t among n, clamped (NaN to the first).
+        auto cellOf = [&](float t, int n) {
+            float c = std::floor(t / mCell);
+            if (!(c >= 0.0f)) return 0;
+            return c >= static_cast<float>(n - 1) ? n - 1 : static_cast<int>(c);
+        };
+        int c0 = cellOf(r.x, mCols), c1 = std::max(c0, cellOf(r.right(), mCols));
+        int r0 = cellOf(r.y, mRows), r1 = std::max(r0, cellOf(r.bottom(), mRows));
+        for (int j = r0; j <= r1; ++j) {
+            for (int i = c0; i <= c1; ++i) f(static_cast<size_t>(j * mCols + i));
+        }
+    }
+    float mCell;
+    int mCols, mRows;
+    std::vector<std::vector<size_t>> mItems;
+};
+
 // The chart's marks a spot must keep off, computed once per placement.
 class Placer {
   public:
-    explicit Placer(SpeedChartLayout& layout) : L(layout) {
+    explicit Placer(SpeedChartLayout& layout)
+        : L(layout),
+          dotCells(layout.size, cellSize(layout)),
+          barCells(layout.size, cellSize(layout)),
+          placedCells(layout.size, cellSize(layout)) {
         for (size_t k = 0; k < L.points.size(); ++k) {
             marks.push_back(speedChartMarkRadius(L, k));
             bars.push_back(speedChartBarBox(L, k));
+            dotCells.insert(k, {L.points[k].x, L.points[k].y, 0.0f, 0.0f});
+            barCells.insert(k, bars.back());
+            widestMark = std::max(widestMark, marks.back());
         }
     }
 
@@ -58,14 +131,21 @@ class Placer {
     // name or badge, an error bar (a bar through a name strikes it out), a dot or its rings (its
     // own too, with CHART_MARK_CLEARANCE; a badge may lie on its own dot's rings), or is not
     // nearer its own dot than any other by a dot radius (dots whose discs overlap excepted: no
-    // spot names one of them and not the other).
+    // spot names one of them and not the other). Only the items near the spot can add to it
+    // (each term below is 0 farther out), and they are added in row order, so the sum is the
+    // same float as over every row.
     float fault(size_t k, const Spot& s) const {
         constexpr float HARD = 1000.0f;
         float f = HARD * outsideArea(s.box, L.plot);
-        for (const Rect& o : placed) f += HARD * overlapArea(s.box, o);
+        placedCells.query(s.box, near);
+        for (size_t i : near) f += HARD * overlapArea(s.box, placed[i]);
         glm::vec2 p = L.points[k];
         float own = spotDistance(s, p);
-        for (size_t j = 0; j < L.points.size(); ++j) {
+        // A dot counts within its keep distance (at most the widest mark's) or within own plus
+        // a dot radius; a pixel more for rounding.
+        float reach = std::max(widestMark + CHART_MARK_CLEARANCE, own + L.dotRadius) + 1.0f;
+        nearRows(s.box, reach);
+        for (size_t j : near) {
             f += HARD * overlapArea(s.box, bars[j]);
             float d = spotDistance(s, L.points[j]);
             float keep = (j == k && s.disc ? L.dotRadius : marks[j]) + CHART_MARK_CLEARANCE;
@@ -75,6 +155,28 @@ class Placer {
             if (d <= own + L.dotRadius) f += HARD * (1.0f + own + L.dotRadius - d);
         }
         return f;
+    }
+
+    // Whether fault(k, s) is 0, without summing: every term of fault is >= 0, so it is 0 when
+    // none is positive, and the first positive one ends the test (in a crowded chart most spots
+    // tried meet a dot at once).
+    bool clean(size_t k, const Spot& s) const {
+        if (outsideArea(s.box, L.plot) > 0.0f) return false;
+        glm::vec2 p = L.points[k];
+        float own = spotDistance(s, p);
+        float reach = std::max(widestMark + CHART_MARK_CLEARANCE, own + L.dotRadius) + 1.0f;
+        bool nearDot = dotCells.any(s.box.expanded(reach), [&](size_t j) {
+            float d = spotDistance(s, L.points[j]);
+            float keep = (j == k && s.disc ? L.dotRadius : marks[j]) + CHART_MARK_CLEARANCE;
+            if (d < keep) return true;
+            if (j == k || glm::length(L.points[j] - p) < 2.0f * L.dotRadius) return false;
+            return d <= own + L.dotRadius;
+        });
+        if (nearDot) return false;
+        auto overlaps = [&](const std::vector<Rect>& boxes) {
+            return [&](size_t i) { return overlapArea(s.box, boxes[i]) > 0.0f; };
+        };
+        return !placedCells.any(s.box, overlaps(placed)) && !barCells.any(s.box, overlaps(bars));
     }
 
     // The nearest clean spot for a name of size t round row k's dot whose nearest point lies
@@ -94,7 +196,7 @@ class Placer {
                 float y = d.y > 0.38f ? at.y : d.y < -0.38f ? at.y - t.y : at.y - 0.5f * t.y;
                 Rect box{std::round(x), std::round(y), t.x, t.y};
                 float own = boxDistance(box, p);
-                if (own > reach || own >= bestD || fault(k, {box, false}) > 0.0f) continue;
+                if (own > reach || own >= bestD || !clean(k, {box, false})) continue;
                 best = box;
                 bestD = own;
             }
@@ -110,10 +212,14 @@ class Placer {
     float onDotFault(size_t k, const Rect& box) const {
         constexpr float HARD = 1000.0f;
         float f = HARD * outsideArea(box, L.plot);
-        for (const Rect& o : placed) f += HARD * overlapArea(box, o);
-        for (size_t j = 0; j < L.points.size(); ++j) {
-            float d = glm::length(L.points[j] - L.points[k]);
-            float keep = L.badgeRadius + CHART_MARK_CLEARANCE;
+        placedCells.query(box, near);
+        for (size_t i : near) f += HARD * overlapArea(box, placed[i]);
+        float keep = L.badgeRadius + CHART_MARK_CLEARANCE;
+        glm::vec2 p = L.points[k];
+        dotCells.query(
+            {p.x - keep - 1.0f, p.y - keep - 1.0f, 2.0f * keep + 2.0f, 2.0f * keep + 2.0f}, near);
+        for (size_t j : near) {
+            float d = glm::length(L.points[j] - p);
             if (j != k && d >= 2.0f * L.dotRadius && d < keep) f += HARD * (keep - d);
         }
         return f;
@@ -131,7 +237,7 @@ class Placer {
     // even that is not clean, the spot of least fault. Returns whether it is on the dot.
     bool placeBadge(size_t k) {
         Rect box = badgeSpot(k);
-        bool onDot = fault(k, {box, true}) > 0.0f;
+        bool onDot = !clean(k, {box, true});
         if (onDot) {
             Rect there = onDotBox(k);
             if (onDotFault(k, there) <= 0.0f || onDotFault(k, there) < fault(k, {box, true})) {
@@ -142,7 +248,7 @@ class Placer {
         }
         L.badgeBoxes[k] = box;
         L.badgeOnDot[k] = onDot;
-        placed.push_back(box);
+        addPlaced(box);
         return onDot;
     }
 
@@ -184,6 +290,7 @@ class Placer {
         L.badgeBoxes.assign(n, Rect{});
         L.badgeOnDot.assign(n, false);
         placed.clear();
+        placedCells.clear();
         int badges = 0;
         std::vector<bool> must(n, false);
         for (size_t k : order) {
@@ -192,7 +299,7 @@ class Placer {
             if (std::optional<Rect> box = nameSpot(k, t, speedChartNameReach(L))) {
                 L.labels[k] = *box;
                 L.labelShown[k] = true;
-                placed.push_back(*box);
+                addPlaced(*box);
             } else {
                 placeBadge(k);
                 L.badge[k] = ++badges;  // numbered by time once placed
@@ -206,7 +313,7 @@ class Placer {
             if (std::optional<Rect> box = nameSpot(k, t, reach)) {
                 L.labels[k] = *box;
                 L.labelShown[k] = true;
-                placed.push_back(*box);
+                addPlaced(*box);
             }
         }
         return badges;
@@ -217,6 +324,27 @@ class Placer {
     std::vector<float> marks;  // per row: speedChartMarkRadius
     std::vector<Rect> bars;    // per row: speedChartBarBox
     std::vector<Rect> placed;  // the names and badges placed so far
+    float widestMark = 0.0f;
+    CellIndex dotCells, barCells, placedCells;   // rows by dot and by bar; placed by box
+    mutable std::vector<size_t> near, nearBars;  // a query's answer, reused
+
+    static float cellSize(const SpeedChartLayout& layout) {
+        return std::max(8.0f, 4.0f * layout.dotRadius);
+    }
+    void addPlaced(const Rect& box) {
+        placedCells.insert(placed.size(), box);
+        placed.push_back(box);
+    }
+    // Into `near`: the rows whose dot lies within `reach` of box or whose bar overlaps it,
+    // ascending.
+    void nearRows(const Rect& box, float reach) const {
+        dotCells.query(box.expanded(reach), near);
+        barCells.query(box, nearBars);
+        size_t dots = near.size();
+        near.insert(near.end(), nearBars.begin(), nearBars.end());
+        std::inplace_merge(near.begin(), near.begin() + static_cast<long>(dots), near.end());
+        near.erase(std::unique(near.begin(), near.end()), near.end());
+    }
 };
 
 // Numbers the badges 1, 2, ... in the order of their dots' times (left to right), so that the

@@ -216,18 +216,8 @@ class Sweeper {
             std::vector<std::vector<uint8_t>> umbras =
                 cleanMasks(scene, truth, regions, hits, shadowClip, false);
             // Per truth umbra pixel: its distance from the caster, world and texels.
-            std::vector<float> world(truth.pixelCount(), 0.0f), texels(truth.pixelCount(), 0.0f);
-            float mapSize = static_cast<float>(mOptions.mapSize);
-            for (size_t k = 0; k < world.size(); ++k) {
-                if (!regions.compared[k] || truth.visibility[k] > 0.0f || !hits[k]) continue;
-                glm::vec3 p = hits[k]->posWs;
-                std::optional<glm::vec3> q = nearestCasterPoint(scene, p);
-                if (!q) continue;
-                world[k] = glm::length(p - *q);
-                texels[k] = glm::length(shadowCoord(shadowClip, p).uvSm -
-                                        shadowCoord(shadowClip, *q).uvSm) *
-                            mapSize;
-            }
+            CasterDistances distances =
+                casterDistances(scene, truth, regions, hits, shadowClip, mOptions.mapSize);
             for (float b : mOptions.leakBiases) {
                 for (BiasMode bias : mOptions.biases) {
                     for (size_t mi = 0; mi < mOptions.methods.size(); ++mi) {
@@ -238,7 +228,8 @@ class Sweeper {
                         s.constantBias = b;
                         std::vector<float> vis = frame(renderer, s);
                         FailureRate leaks = falseLight(vis, umbra);
-                        LeakWidth width = leakWidth(vis, umbra, texels, world, mOptions.frameSize);
+                        LeakWidth width = leakWidth(vis, umbra, distances.texels, distances.world,
+                                                    mOptions.frameSize);
                         const std::pair<const char*, double> measured[] = {
                             {"leak_rate", leaks.share},
                             {"leak_width_world", width.world},

@@ -139,8 +139,7 @@ struct StabilityOptions {
     std::vector<float> pcssRadii{1, 2, 4, 8, 16};
     float pcssBiasElevation = 87.0f;
     // The area truth's per-pixel bound for pcss's sweeps (ground_truth.h: targetBound): looser
-    // than the bench's 1/512, as the sweeps count pixels by thresholds (1/2, 0.02, 0.98) and an
-    // area truth at 1/512 costs 0.1 s per penumbra pixel (14x its cost at 1/20).
+    // than the bench's 1/512, as the sweeps count pixels by thresholds (1/2, 0.02, 0.98).
     float pcssTruthBound = 1.0f / 64.0f;
     // A pinned pixel (frame coordinates, top-left origin): the shimmer sweep also writes the
     // flicker of its visibility curve (failure_measures.h: curveFlicker) as light_pinned_flicker

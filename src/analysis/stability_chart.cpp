@@ -137,7 +137,7 @@ void dashedLine(Painter& c, glm::vec2 a, glm::vec2 b, float width, const Colour&
 }  // namespace
 
 glm::vec4 biasColour(std::string_view bias) {
-    // One colour per bias name of DESIGN.md section 2 (Okabe-Ito, readable on white).
+    // One colour per bias name of docs/methods.md, "Bias modes" (Okabe-Ito, readable on white).
     static const std::pair<std::string_view, glm::vec4> COLOURS[] = {
         {"none", {0.84f, 0.37f, 0.0f, 1.0f}},
         {"constant", {0.0f, 0.45f, 0.70f, 1.0f}},

@@ -460,22 +460,42 @@ std::vector<ChartTextBox> shimmerTexts(std::span<const StabilityRow> rows, glm::
     return barChartTextBoxes(shimmerChartSpec(rows, subtitle, minFontPx), size);
 }
 
+template <LineChartSpec (*SPEC)(std::span<const StabilityRow>, const std::string&, float)>
+bool linePoints(std::span<const StabilityRow> rows) {
+    for (const ChartPanel& panel : SPEC(rows, "", 8.0f).panels) {
+        for (const ChartLine& line : panel.lines) {
+            if (!line.points.empty()) return true;
+        }
+    }
+    return false;
+}
+
+bool shimmerBars(std::span<const StabilityRow> rows) {
+    for (const BarGroup& group : shimmerChartSpec(rows, "", 8.0f).groups) {
+        if (!group.values.empty()) return true;
+    }
+    return false;
+}
+
 // In the order `pcfscope stability` lists its charts.
 constexpr SweepChart SWEEP_CHARTS[] = {
-    {Sweep::Acne, "stability_acne.png", drawAcneChart, lineTexts<acneChartSpec>},
-    {Sweep::Leak, "stability_leak.png", drawLeakChart, lineTexts<leakChartSpec>},
-    {Sweep::Tradeoff, "stability_tradeoff.png", drawTradeoffChart, lineTexts<tradeoffChartSpec>},
-    {Sweep::Shimmer, "stability_shimmer.png", drawShimmerChart, shimmerTexts},
-    {Sweep::Precision, "stability_precision.png", drawPrecisionChart,
-     lineTexts<precisionChartSpec>},
+    {Sweep::Acne, "stability_acne.png", drawAcneChart, lineTexts<acneChartSpec>,
+     linePoints<acneChartSpec>},
+    {Sweep::Leak, "stability_leak.png", drawLeakChart, lineTexts<leakChartSpec>,
+     linePoints<leakChartSpec>},
+    {Sweep::Tradeoff, "stability_tradeoff.png", drawTradeoffChart, lineTexts<tradeoffChartSpec>,
+     linePoints<tradeoffChartSpec>},
+    {Sweep::Shimmer, "stability_shimmer.png", drawShimmerChart, shimmerTexts, shimmerBars},
+    {Sweep::Precision, "stability_precision.png", drawPrecisionChart, lineTexts<precisionChartSpec>,
+     linePoints<precisionChartSpec>},
     {Sweep::PcssThin, "stability_pcss_thin.png", drawPcssSweepChart<pcssThinChartSpec>,
-     lineTexts<pcssThinChartSpec>},
+     lineTexts<pcssThinChartSpec>, linePoints<pcssThinChartSpec>},
     {Sweep::PcssOverlap, "stability_pcss_overlap.png", drawPcssSweepChart<pcssOverlapChartSpec>,
-     lineTexts<pcssOverlapChartSpec>},
+     lineTexts<pcssOverlapChartSpec>, linePoints<pcssOverlapChartSpec>},
     {Sweep::PcssNoise, "stability_pcss_noise.png", drawPcssSweepChart<pcssNoiseChartSpec>,
-     lineTexts<pcssNoiseChartSpec>},
+     lineTexts<pcssNoiseChartSpec>, linePoints<pcssNoiseChartSpec>},
     {Sweep::PcssBias, "stability_pcss_bias.png", drawPcssSweepChart<pcssBiasChartSpec>,
-     lineTexts<pcssBiasChartSpec>},
+     lineTexts<pcssBiasChartSpec>, linePoints<pcssBiasChartSpec>},
 };
 
 }  // namespace

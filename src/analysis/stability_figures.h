@@ -105,6 +105,9 @@ struct SweepChart {
                                  const std::string& subtitle, float minFontPx);
     std::vector<ChartTextBox> (*texts)(std::span<const StabilityRow> rows, glm::ivec2 size,
                                        const std::string& subtitle, float minFontPx);
+    // Whether `rows` hold anything the chart plots (a point, a bar): rows of its sweep whose
+    // metrics it does not read would draw an empty chart.
+    bool (*hasData)(std::span<const StabilityRow> rows);
 };
 std::span<const SweepChart> sweepCharts();
 // The entry of the sweep named so ("acne"); nullptr when no chart is.

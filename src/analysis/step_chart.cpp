@@ -49,13 +49,14 @@ SpeedChartText speedChartText(const StepChart& chart, const StepChartRef& ref,
     // Short: the title and the axis's name are not wrapped, and a lesson frame's chart is narrow.
     labels.title = contact ? "Accuracy near the contacts" : "Speed against accuracy";
     if (contact) labels.yLabel = contactAxisLabel(rows, true);
-    // Which truth the errors are against (bench.csv's truth, when the file says), the renderer
-    // (its gl_renderer) and, on llvmpipe, what carries over to a GPU.
+    labels.xLabel = speedChartXLabel(rows, ChartTiming::Scene);
+    // Which truth the errors are against (bench.csv's truth, when the file says), then on a line
+    // of its own the renderer (its gl_renderer) and, on llvmpipe, what carries over to a GPU.
     std::string truth = speedChartTruth(rows);
     labels.subtitle = "measured by pcfscope bench (" + rows.front().timer + "), " +
                       std::filesystem::path(ref.path).filename().string() +
-                      (truth.empty() ? "" : "; truth: " + truth) + "; " +
-                      chartRendererLine(speedChartRenderer(rows), true);
+                      (truth.empty() ? "" : "; truth: " + truth) + "\n" +
+                      chartRendererLine(speedChartRenderer(rows));
     if (!chart.highlight.empty()) labels.highlight = chartRowsMatching(rows, chart.highlight);
     labels.minFontPx = chart.minFontPx;
     labels.keptLabelsOnly = chart.keptLabelsOnly;

@@ -36,46 +36,6 @@ std::string methodLabel(int method, int kernel) {
 
 }  // namespace
 
-std::string_view animationSweepName(AnimationSweep sweep) {
-    switch (sweep) {
-        case AnimationSweep::Light:
-            return "light";
-        case AnimationSweep::Camera:
-            return "camera";
-        case AnimationSweep::Sun:
-            return "sun";
-        case AnimationSweep::Bias:
-            return "bias";
-        case AnimationSweep::MapSize:
-            return "map-size";
-    }
-    return "?";
-}
-
-std::optional<AnimationSweep> animationSweepFromName(std::string_view name) {
-    for (AnimationSweep s : {AnimationSweep::Light, AnimationSweep::Camera, AnimationSweep::Sun,
-                             AnimationSweep::Bias, AnimationSweep::MapSize}) {
-        if (animationSweepName(s) == name) return s;
-    }
-    return std::nullopt;
-}
-
-std::string_view animationSweepUnit(AnimationSweep sweep) {
-    switch (sweep) {
-        case AnimationSweep::Light:
-            return "texel slide";
-        case AnimationSweep::Camera:
-            return "pixel slide";
-        case AnimationSweep::Sun:
-            return "deg elevation";
-        case AnimationSweep::Bias:
-            return "constant bias";
-        case AnimationSweep::MapSize:
-            return "texels a side";
-    }
-    return "";
-}
-
 double animationSweepValue(const AnimationOptions& o, int k) {
     double t = progress(k, o.frames);
     switch (o.sweep) {
@@ -136,10 +96,9 @@ std::string animationSweepWords(const AnimationOptions& o, int k) {
     return frame;
 }
 
-bool isStepsOwnAnimation(const LessonStep& step, const std::string& lessonPath, int stepNumber,
-                         const AnimationOptions& o) {
+bool isStepsOwnAnimation(const LessonStep& step, const AnimationOptions& o) {
     if (!step.animate) return false;
-    AnimationOptions own = stepAnimationOptions(step, lessonPath, stepNumber);
+    AnimationOptions own = stepAnimationOptions(step);
     return own.sweep == o.sweep && own.frames == o.frames && own.snap == o.snap &&
            animationSweepValue(own, 0) == animationSweepValue(o, 0) &&
            animationSweepValue(own, own.frames - 1) == animationSweepValue(o, o.frames - 1);
@@ -149,41 +108,10 @@ int defaultCompareMethod(int stepMethod) {
     return methodInfo(stepMethod).hard ? PCF_GATHER : PCF_NEAREST;
 }
 
-AnimationOptions stepAnimationOptions(const LessonStep& step, const std::string& path,
-                                      int stepNumber) {
+AnimationOptions stepAnimationOptions(const LessonStep& step) {
     const StepAnimation& a = *step.animate;
-    std::string what = "step " + std::to_string(stepNumber) + " animate";
-    std::optional<AnimationSweep> sweep = animationSweepFromName(a.sweep);
-    if (!sweep) {
-        throw InputError(
-            path, a.line,
-            what + " sweep '" + a.sweep + "' is not one of: " + std::string(ANIMATION_SWEEP_NAMES));
-    }
-    if (!step.chart.empty()) throw InputError(path, a.line, what + ": a chart step cannot move");
-    // The ranges the sweeps can show: a sun above the ground, a bias a mode can subtract, a map
-    // the renderer makes.
-    double lo = 0.0, hi = 0.0;
-    bool openLo = false;
-    if (*sweep == AnimationSweep::Sun) lo = 1.0, hi = 90.0;
-    if (*sweep == AnimationSweep::Bias) lo = 0.0, hi = 1.0, openLo = true;
-    if (*sweep == AnimationSweep::MapSize) lo = MIN_MAP_SIZE, hi = MAX_MAP_SIZE;
-    for (const std::optional<double>& v : {a.from, a.to}) {
-        if (!v) continue;
-        if (hi == 0.0) {
-            throw InputError(path, a.line,
-                             what + ": the " + a.sweep + " sweep has no from / to (it moves by " +
-                                 std::string(animationSweepUnit(*sweep)) + " a frame)");
-        }
-        if (*v > hi || *v < lo || (openLo && *v == lo)) {
-            throw InputError(path, a.line,
-                             what + " from / to must be in " + (openLo ? "(" : "[") +
-                                 formatNumber(static_cast<float>(lo)) + ", " +
-                                 formatNumber(static_cast<float>(hi)) + "] for the " + a.sweep +
-                                 " sweep");
-        }
-    }
     AnimationOptions o;
-    o.sweep = *sweep;
+    o.sweep = a.sweep;
     o.frames = a.frames;
     o.snap = a.snap;
     o.from = a.from;
@@ -197,8 +125,7 @@ Animation::Animation(Session& session, const AnimationOptions& options)
     const Lesson& lesson = session.lesson();
     int step = session.step();
     if (step >= 0 && step < session.stepCount()) {
-        mStepsOwn = isStepsOwnAnimation(lesson.steps[static_cast<size_t>(step)], lesson.sourcePath,
-                                        step + 1, options);
+        mStepsOwn = isStepsOwnAnimation(lesson.steps[static_cast<size_t>(step)], options);
     }
 }
 
@@ -363,16 +290,16 @@ FlickerTrace Animation::flickerTrace() const {
     return t;
 }
 
-FlickerCurves stepFlickerCurves(const std::string& lessonPath, int step, const LessonSettings& s,
+FlickerCurves stepFlickerCurves(const Lesson& lesson, int step, const LessonSettings& s,
                                 glm::ivec2 size) {
     Session session(size, false);
-    session.loadLesson(lessonPath);
+    session.setLesson(lesson);
     session.goToStep(step);
     const LessonStep& st = session.lesson().steps[static_cast<size_t>(step)];
     if (!st.animate) return {};
     session.setSettings(s);
     session.setSceneOnly(true);
-    AnimationOptions o = stepAnimationOptions(st, lessonPath, step + 1);
+    AnimationOptions o = stepAnimationOptions(st);
     o.flicker = false;  // the curves, not their picture
     Animation animation(session, o);
     for (int k = 0; k < o.frames; ++k) animation.composeFrame(k);

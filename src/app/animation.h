@@ -1,4 +1,4 @@
-// animation.h: a sweep played as a sequence of ordinary frames (DESIGN.md 8, "Motion"): the
+// animation.h: a sweep played as a sequence of ordinary frames (docs/user-guide.md, "animate"): the
 // lesson step's frame (or the scene alone) with one quantity swept from frame to frame, and a
 // flicker trace of the pinned point's visibility. `pcfscope animate` encodes the frames to MP4
 // and GIF (video/video_writer.h) and numbered PNGs. Every frame is an ordinary Session frame, so
@@ -12,24 +12,11 @@
 
 #include "app/compare_view.h"
 #include "app/session.h"
+#include "lesson/lesson_animation.h"
 
 namespace pcf {
 
-// What moves:
-//   light     the light's texel grid slid under the world 1/32 texel a frame (looping each
-//             texel), exactly as `stability`'s shimmer sweep (analysis/stability.h:
-//             shimmerShadowFit); with `snap`, snapped to whole texels (Valient's stable fit)
-//   camera    the camera slid right and up by 1/6 pixel a frame (stability's camera shimmer)
-//   sun       the light's elevation from 90 down to 2 degrees (acne arriving, per bias mode)
-//   bias      the constant bias from 0.0005 to 0.064, log steps (acne giving way to peter
-//             panning); a step with bias `none` gets `constant`
-//   map-size  the shadow map from 32 to 2048 texels a side, log steps (aliasing)
-enum class AnimationSweep { Light, Camera, Sun, Bias, MapSize };
-
-std::string_view animationSweepName(AnimationSweep sweep);
-std::optional<AnimationSweep> animationSweepFromName(std::string_view name);
-constexpr std::string_view ANIMATION_SWEEP_NAMES = "light, camera, sun, bias, map-size";
-
+// The sweeps and their names are the lesson's (lesson/lesson_animation.h: AnimationSweep).
 struct AnimationOptions {
     AnimationSweep sweep = AnimationSweep::Light;
     int frames = 120;
@@ -47,38 +34,32 @@ struct AnimationOptions {
 // measured against), or pcf-gather when the step's method is nearest.
 int defaultCompareMethod(int stepMethod);
 
-// A lesson step's `animate` (lesson/lesson.h: StepAnimation) as options, its trace comparing with
-// defaultCompareMethod. Throws InputError at the key's line (`path`, step `stepNumber`) for an
-// unknown sweep, from / to on a sweep that has none (light, camera) or outside its range (sun
-// 1..90 degrees, bias (0, 1], map-size 4..4096), or a chart step.
-AnimationOptions stepAnimationOptions(const LessonStep& step, const std::string& path,
-                                      int stepNumber);
+// A lesson step's `animate` (lesson/lesson.h: StepAnimation, checked by the lesson parser) as
+// options, its trace comparing with defaultCompareMethod. The step must have one.
+AnimationOptions stepAnimationOptions(const LessonStep& step);
 
 // The swept quantity at frame k of `frames`: texels of slide, pixels of slide, degrees of
 // elevation, constant bias or map texels. Its unit in words: animationSweepUnit.
 double animationSweepValue(const AnimationOptions& o, int k);
-std::string_view animationSweepUnit(AnimationSweep sweep);
 // Frame k in plain words, the caption's first sentence: what is swept, between which values, and
 // its value now ("Frame 30 of 60. The sun sinks from 40 to 6 degrees above the horizon; now it
 // stands 23.4 degrees high.").
 std::string animationSweepWords(const AnimationOptions& o, int k);
 // Whether `o` plays the step's own `animate` (the same sweep, range, frames and snap).
-bool isStepsOwnAnimation(const LessonStep& step, const std::string& lessonPath, int stepNumber,
-                         const AnimationOptions& o);
+bool isStepsOwnAnimation(const LessonStep& step, const AnimationOptions& o);
 
 // A lesson step's flicker trace, the curves of its `animate` (stepAnimationOptions): the pinned
 // point's visibility at each frame of the sweep under the step's method (`main`) and under the
 // comparison (`compare`), from the frames the viewer and export compose (Animation), the scene
-// alone at `size`: the lesson at `lessonPath` on step `step` (from 0) with settings `s` (the
-// step's own, or the state after a key). The point belongs to the scene, so a light, sun, bias or
-// map-size sweep gives the same curves at every frame size (a camera sweep moves the point: its
-// curves are those of `size`). Empty for a step without `animate`. Needs a current OpenGL 4.5
-// context; throws InputError as loadLesson and stepAnimationOptions do.
+// alone at `size`: `lesson` on step `step` (from 0) with settings `s` (the step's own, or the
+// state after a key). The point belongs to the scene, so a light, sun, bias or map-size sweep
+// gives the same curves at every frame size (a camera sweep moves the point: its curves are those
+// of `size`). Empty for a step without `animate`. Needs a current OpenGL 4.5 context.
 struct FlickerCurves {
     std::vector<float> main;
     std::vector<float> compare;
 };
-FlickerCurves stepFlickerCurves(const std::string& lessonPath, int step, const LessonSettings& s,
+FlickerCurves stepFlickerCurves(const Lesson& lesson, int step, const LessonSettings& s,
                                 glm::ivec2 size = MIN_SESSION_SIZE);
 
 // Drives a Session through a sweep. Construct after the session has its lesson, step and frame

@@ -1,10 +1,12 @@
 #include "app/cli_util.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
-#include <sstream>
 
 #include "kernel/methods.h"
 #include "kernel/settings.h"
@@ -78,9 +80,14 @@ glm::ivec2 parseSize(const std::string& option, const std::string& text, SizeRan
 
 void requireRange(const std::string& option, float v, float lo, float hi) {
     if (!std::isfinite(v) || v < lo || v > hi) {
-        std::ostringstream s;
-        s << option << " " << v << " is out of range [" << lo << ", " << hi << "]";
-        throw UsageError(s.str());
+        // Each number the shortest text of its float: 1.0000001 is not printed as 1.
+        auto text = [](float x) {
+            char buf[32];
+            auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+            return std::string(buf, ec == std::errc() ? end : buf);
+        };
+        throw UsageError(option + " " + text(v) + " is out of range [" + text(lo) + ", " +
+                         text(hi) + "]");
     }
 }
 
@@ -88,18 +95,6 @@ void requireIntRange(const std::string& option, int v, int lo, int hi) {
     if (v < lo || v > hi) {
         throw UsageError(option + " " + std::to_string(v) + " is out of range (" +
                          std::to_string(lo) + ".." + std::to_string(hi) + ")");
-    }
-}
-
-void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, float radius) {
-    // The kernel's own checks, asked of a method that uses the value.
-    if (kernelGiven) {
-        if (auto why = cliParamsProblem(makeParams(PCF_NAIVE, kernel))) throw UsageError(*why);
-    }
-    if (radiusGiven) {
-        if (auto why = cliParamsProblem(makeParams(PCF_POISSON, MIN_KERNEL, radius))) {
-            throw UsageError(*why);
-        }
     }
 }
 
@@ -132,6 +127,21 @@ std::vector<int> parseIntList(const std::string& option, const std::string& text
     return values;
 }
 
+namespace {
+
+std::atomic<bool>& progressLineOpen() {
+    static std::atomic<bool> open{false};
+    return open;
+}
+
+}  // namespace
+
+void setProgressLineOpen(bool open) { progressLineOpen() = open; }
+
+void endProgressLine() {
+    if (progressLineOpen().exchange(false)) std::fputc('\n', stderr);
+}
+
 std::string cliWords(const ParamProblem& problem) {
     if (problem.setting.empty()) return problem.text();
     return problem.say(settingFlag(problem.setting));
@@ -142,8 +152,8 @@ std::optional<std::string> cliParamsProblem(const PcfParams& prm) {
     return std::nullopt;
 }
 
-std::optional<std::string> cliBiasProblem(const ShadowSettings& s) {
-    if (std::optional<ParamProblem> p = checkBiasSettings(s)) return cliWords(*p);
+std::optional<std::string> cliRangeProblem(const ShadowSettings& s) {
+    if (std::optional<ParamProblem> p = checkSettingRanges(s)) return cliWords(*p);
     return std::nullopt;
 }
 

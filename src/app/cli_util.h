@@ -43,17 +43,19 @@ void requireRange(const std::string& option, float v, float lo, float hi);
 // Throws UsageError ("--spp 0 is out of range (1..64)") unless lo <= v <= hi.
 void requireIntRange(const std::string& option, int v, int lo, int hi);
 
-// Range checks of --kernel and --radius when the user gave them, whether or not the method uses
-// them: a value no method accepts is a mistake worth a word, not something to ignore silently.
-void checkGivenKernelOptions(bool kernelGiven, int kernel, bool radiusGiven, float radius);
+// A progress line on stderr ("\ranimate [###...] 12/120", redrawn in place, its newline not yet
+// written) is open: an error said meanwhile must start a line of its own. The command that draws
+// the line says when it opens and closes; endProgressLine ends it, if open, with a newline.
+void setProgressLineOpen(bool open);
+void endProgressLine();
 
 // A problem the kernel (or an analysis sweep) states in its words, said in the command line's:
 // the setting named as its flag, "slope_max" -> "--slope-max" ("tent takes --kernel 3, 5 or 7,
 // not 4"). The one place the CLI turns setting names into flags.
 std::string cliWords(const ParamProblem& problem);
-// checkParams (kernel/methods.h) and checkBiasSettings (kernel/settings.h) in cliWords; nullopt
+// checkParams (kernel/methods.h) and checkSettingRanges (kernel/settings.h) in cliWords; nullopt
 // when the parameters are valid.
 std::optional<std::string> cliParamsProblem(const PcfParams& prm);
-std::optional<std::string> cliBiasProblem(const ShadowSettings& s);
+std::optional<std::string> cliRangeProblem(const ShadowSettings& s);
 
 }  // namespace pcf

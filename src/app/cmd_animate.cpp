@@ -3,6 +3,7 @@
 // it), headless, at the presentation floors unless --no-presentation. Videos are encoded into a
 // scratch folder beside their final names and moved there only when complete, so an error, a
 // full disk or Ctrl-C leaves no half video; PNGs are taken back like `export`'s.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -22,6 +23,8 @@
 #include "app/output_files.h"
 #include "app/render_options.h"
 #include "app/session.h"
+#include "base/memory_budget.h"
+#include "base/work_estimate.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
 #include "render/gl_context.h"
@@ -51,6 +54,7 @@ struct AnimateOptions {
     std::string point;
     std::string compare = "auto";
     int compareKernel = 3;
+    CLI::Option* compareKernelOption = nullptr;  // given or not
     std::vector<std::string> videos;
     std::string pngDir;
     bool force = false;
@@ -90,10 +94,21 @@ std::optional<CompareSpec> splitSpecOf(const AnimateOptions& o, const LessonSett
     }
 }
 
+// --compare-kernel given for a comparison that has no kernel (none, a split view, nearest) would
+// change nothing: refused, not ignored.
+int withCompareKernel(const AnimateOptions& o, int method) {
+    if (o.compareKernelOption->count() == 0 || (method >= 0 && methodInfo(method).usesKernel)) {
+        return method;
+    }
+    throw UsageError("--compare-kernel is for a comparison method with a kernel; " +
+                     (method < 0 ? "--compare " + o.compare + " draws no second curve"
+                                 : std::string(methodInfo(method).name) + " has none"));
+}
+
 // The comparison curve's method: a method id, or -1 for none. auto: defaultCompareMethod.
 int compareMethodOf(const AnimateOptions& o, const LessonSettings& step) {
-    if (o.compare == "none" || isSplitCompare(o.compare)) return -1;
-    if (o.compare == "auto") return defaultCompareMethod(step.method);
+    if (o.compare == "none" || isSplitCompare(o.compare)) return withCompareKernel(o, -1);
+    if (o.compare == "auto") return withCompareKernel(o, defaultCompareMethod(step.method));
     std::optional<int> m = methodFromName(o.compare);
     if (!m) {
         throw UsageError("--compare: unknown method '" + o.compare + "' (known: auto, none, " +
@@ -103,7 +118,7 @@ int compareMethodOf(const AnimateOptions& o, const LessonSettings& step) {
         throw UsageError("--compare-kernel " + std::to_string(o.compareKernel) + ": " + o.compare +
                          " takes " + kernelSizesText(*m));
     }
-    return *m;
+    return withCompareKernel(o, *m);
 }
 
 struct VideoOut {
@@ -121,6 +136,7 @@ void progressBar(int done, int total, double seconds) {
     std::fprintf(stderr, "\ranimate [%s] %d/%d  %.1f frames/s", bar.c_str(), done, total,
                  seconds > 0.0 ? done / seconds : 0.0);
     if (done == total) std::fprintf(stderr, "\n");
+    setProgressLineOpen(done != total);  // an error meanwhile starts a line of its own
 }
 
 // Checks every output before any work and opens the videos under their scratch names.
@@ -132,9 +148,9 @@ std::vector<VideoOut> planVideos(OutputFiles& outputs, const AnimateOptions& o, 
         if (auto problem = videoSizeProblem(*format, size.x, size.y)) {
             throw UsageError("--size " + o.size + ": " + *problem);
         }
-        outputs.add("-o", v);
         videos.push_back({fs::path(v), *format, nullptr, nullptr});
     }
+    outputs.addEach("-o", {o.videos.begin(), o.videos.end()});
     for (VideoOut& v : videos) {
         fs::path dir = v.final.parent_path().empty() ? fs::path(".") : v.final.parent_path();
         // Known to the interrupt cleanup, which removes the scratch folder made in it below.
@@ -208,12 +224,12 @@ bool given(const AnimateOptions& o, const char* option) {
 // snap and rate; --frames and --fps still choose), any other step the light sweep. nullopt: the
 // options' own sweep.
 std::optional<AnimationOptions> stepsOwnSweep(AnimateOptions& o, const LessonStep& step,
-                                              const std::string& path, int compare) {
+                                              int compare) {
     if (!o.sweep.empty() || !step.animate) {
         if (o.sweep.empty()) o.sweep = "light";
         return std::nullopt;
     }
-    AnimationOptions ao = stepAnimationOptions(step, path, o.step);
+    AnimationOptions ao = stepAnimationOptions(step);
     o.sweep = std::string(animationSweepName(ao.sweep));
     if (given(o, "--frames")) ao.frames = o.frames;
     o.frames = ao.frames;
@@ -245,6 +261,37 @@ EncodeTimes finishVideos(std::vector<VideoOut>& videos, OutputFiles& outputs) {
     return t;
 }
 
+// Each frame composed, read back and encoded; memory measured with /usr/bin/time (peak RSS): a
+// GIF or PNGs 125 MB and 50 bytes a pixel (1280x720 to 2560x1440), an MP4 130 bytes a pixel
+// more once libx264's look-ahead holds its frames (320 MB at 1280x720 from 40 frames on).
+WorkEstimate animateEstimate(const AnimateOptions& o, glm::ivec2 size) {
+    bool mp4 = std::any_of(o.videos.begin(), o.videos.end(), [](const std::string& v) {
+        return videoFormatFromPath(v) == VideoFormat::Mp4;
+    });
+    double pixels = static_cast<double>(size.x) * size.y;
+    WorkEstimate w;
+    w.what = std::to_string(o.frames) + " frames of " + std::to_string(size.x) + "x" +
+             std::to_string(size.y);
+    w.frameNs = pixels * o.frames * RENDER_NS_PER_PIXEL_FRAME;
+    w.fixedSeconds = 2.0;
+    w.bytes = memoryEstimate(160 * MIB, mp4 ? 190 : 60, size.x, size.y);
+    return w;
+}
+
+// The step shows the scene (no sweep moves a chart), and --snap goes with the sweep it snaps:
+// options that would change nothing are refused, not ignored.
+void checkSweptStep(const AnimateOptions& o, AnimationSweep sweep, const LessonStep& step) {
+    if (o.snap && sweep != AnimationSweep::Light) {
+        throw UsageError("--snap is for --sweep light (it snaps the creeping texel grid), not " +
+                         o.sweep);
+    }
+    if (!step.chart.empty()) {
+        throw UsageError("lesson step " + std::to_string(o.step) +
+                         " shows a chart, which no sweep moves; animate a step that shows the "
+                         "scene");
+    }
+}
+
 // What runAnimate makes, every option checked before anything is made.
 struct AnimatePlan {
     std::string path;
@@ -270,8 +317,9 @@ AnimatePlan planAnimate(AnimateOptions& o) {
     requireIntRange("--step", o.step, 1, static_cast<int>(p.lesson.steps.size()));
     const LessonStep& step = p.lesson.steps[static_cast<size_t>(o.step - 1)];
     int compare = compareMethodOf(o, step.settings);
-    std::optional<AnimationOptions> own = stepsOwnSweep(o, step, p.path, compare);
+    std::optional<AnimationOptions> own = stepsOwnSweep(o, step, compare);
     p.animation = own ? *own : animationOptions(o, *animationSweepFromName(o.sweep), compare);
+    checkSweptStep(o, p.animation.sweep, step);
     p.split = splitSpecOf(o, step.settings);
     p.point = pointOption(p.lesson.scene, o.point);
     if (p.split) checkSplitSize(o, p.size, p.split->parts());
@@ -289,6 +337,7 @@ std::string frameJson(const Session& session, const CompareView* split) {
 int runAnimate(AnimateOptions o) {
     AnimatePlan plan = planAnimate(o);
     glm::ivec2 size = plan.size;
+    announceWork("animate", animateEstimate(o, size), o.force);
     OutputFiles outputs(o.force);
     outputs.addInput("LESSON", plan.path);
     std::vector<std::string> pngs = planPngs(outputs, o, plan.stem);
@@ -296,7 +345,7 @@ int runAnimate(AnimateOptions o) {
     std::vector<VideoOut> videos = planVideos(outputs, o, size);
 
     Session session(size, o.presentation);
-    session.loadLesson(plan.path);
+    session.setLesson(plan.lesson);
     session.goToStep(o.step - 1);
     LessonSettings shown = session.settings();
     o.view.applyTo(shown, true);  // --shading, over the step's
@@ -369,14 +418,17 @@ Command addAnimateCommand(CLI::App& app) {
         "the flicker trace's second method (default auto: nearest, or pcf-gather 3 when the step's "
         "method is nearest; none: no second curve); or KEY=V1,V2[,V3] (bias=none,constant,slope): "
         "a split view of 2 or 3 parts, one curve each");
-    sub->add_option("--compare-kernel", o->compareKernel, "its kernel size (default 3)");
+    o->compareKernelOption =
+        sub->add_option("--compare-kernel", o->compareKernel, "its kernel size (default 3)");
     sub->add_option(
         "-o,--out", o->videos,
         "video files, .mp4 and/or .gif (default pcfscope-frames/LESSON-stepNN-SWEEP.mp4)");
     sub->add_option("--png", o->pngDir,
                     "also write the frames as numbered PNGs into this folder, each with its "
                     "frame's JSON (trace, layout, the text drawn) as `export` writes it");
-    sub->add_flag("-f,--force", o->force, "overwrite existing files");
+    sub->add_flag("-f,--force", o->force,
+                  "overwrite existing files; start work larger than the memory estimate says the "
+                  "machine holds");
     return {sub, [o] { return runAnimate(*o); }};
 }
 

@@ -40,8 +40,10 @@
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
+#include "app/truth_option.h"
 #include "base/input_error.h"
 #include "base/memory_budget.h"
+#include "base/work_estimate.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
@@ -232,42 +234,16 @@ constexpr std::uint64_t BENCH_BYTES_PER_PIXEL = 160;
 
 // --truth area: the truth integrates over the light's disk: a sun's, the one pcss filters for
 // (scene/pcss.h effectiveLightSizeDeg: --light-size, else the scene's, else the sun's), or a
-// spot's of the scene's radius (light_visibility.h).
+// spot's of --light-radius or the scene's radius (light_visibility.h). Either size given for the
+// other kind of light is refused, whichever truth.
 void applyTruth(const BenchCommandOptions& o, BenchPlan& plan) {
-    if (o.truth != "hard" && o.truth != "area") {
-        throw UsageError("unknown --truth '" + o.truth + "' (known: hard, area)");
-    }
-    plan.config.options.areaTruth = o.truth == "area";
-    Light& light = plan.config.scene.light;
-    if (!plan.config.options.areaTruth) return;
-    if (light.type == LightType::Spot) {
-        if (!hasSize(light)) {
-            throw UsageError("--truth area takes a light with a size (scene '" +
-                             plan.config.scene.name + "' has a spot light without a radius)");
-        }
-        try {
-            checkSpotDiskCasters(plan.config.scene);
-        } catch (const std::invalid_argument& e) {
-            throw UsageError(plan.config.scene.name + ": " + e.what());
-        }
-        return;
-    }
-    light.angularDiameterDeg = effectiveLightSizeDeg(light, plan.config.options.base.lightSize);
+    plan.config.options.areaTruth =
+        applyTruthOption(o.truth, plan.config.scene, plan.config.options.base);
 }
 
 // Which truth the report and the charts say they measured against.
 std::string truthWords(const BenchPlan& plan) {
-    if (!plan.config.options.areaTruth) return "hard (the light's centre)";
-    const Light& light = plan.config.scene.light;
-    char buf[80];
-    if (light.type == LightType::Spot) {
-        std::snprintf(buf, sizeof buf, "area (a spot disk of radius %g)",
-                      static_cast<double>(light.radius));
-    } else {
-        std::snprintf(buf, sizeof buf, "area (a sun disk of %g degrees)",
-                      static_cast<double>(light.angularDiameterDeg));
-    }
-    return buf;
+    return truthWordsFor(plan.config.scene, plan.config.options.areaTruth);
 }
 
 BenchPlan parsePlan(const BenchCommandOptions& o) {
@@ -412,9 +388,7 @@ void writeCharts(const BenchPlan& plan, const std::vector<BenchRow>& rows, bool 
     text.subtitle = chartRendererLine(speedChartRenderer(rows)) + "\nmedian of " +
                     std::to_string(o.gpuRepeats) + " round-robin samples (" +
                     std::to_string(2 * o.gpuRepeats) + " where the first were noisy), " + timer;
-    text.xLabel = plan.timing == ChartTiming::Lookup
-                      ? "filter time: bare lookup pass, ms (log scale)"
-                      : "camera pass time, ms (log scale)";
+    text.xLabel = speedChartXLabel(rows, plan.timing);
     text.title = "Speed against accuracy" + indicative + ": " + where;
     text.yLabel = "aliasing: edge-band RMSE of visibility";
     writePngRgba8((staging / ACCURACY_CHART).string(), plan.chartSize.x, plan.chartSize.y,
@@ -477,13 +451,27 @@ int runReplot(const BenchCommandOptions& o) {
     return 0;
 }
 
+// The sweep's work: each run renders its timing rounds of both passes (and the reference pass's),
+// its shimmer frames and a few more (the error, the clean masks' frames), over one ground truth.
+WorkEstimate benchEstimate(const BenchOptions& b) {
+    double pixels = static_cast<double>(b.frameSize.x) * b.frameSize.y;
+    double perRun = b.gpuRepeats * (b.reference ? 3.0 : 2.0) + std::max(b.shimmerFrames, 0) + 4.0;
+    double runs = static_cast<double>(benchPoints(b).size());
+    WorkEstimate w;
+    w.what = std::to_string(static_cast<long>(runs)) + " runs at " + std::to_string(b.frameSize.x) +
+             "x" + std::to_string(b.frameSize.y);
+    w.frameNs = pixels * runs * perRun * RENDER_NS_PER_PIXEL_FRAME;
+    w.truthNs = pixels * TRUTH_NS_PER_PIXEL;
+    w.fixedSeconds = 10.0;  // the methods' shaders compiled
+    w.bytes = memoryEstimate(256 * MIB, BENCH_BYTES_PER_PIXEL, b.frameSize.x, b.frameSize.y);
+    return w;
+}
+
 int runBenchCommand(const BenchCommandOptions& o) {
     if (o.given("--replot")) return runReplot(o);
     // Every check first: nothing is computed or written unless all of it can be.
     BenchPlan plan = parsePlan(o);
-    glm::ivec2 frame = plan.config.options.frameSize;
-    requireMemory("--size " + std::to_string(frame.x) + "x" + std::to_string(frame.y),
-                  memoryEstimate(256 * MIB, BENCH_BYTES_PER_PIXEL, frame.x, frame.y));
+    announceWork("bench", benchEstimate(plan.config.options), o.force);
     OutputFiles outputs(o.force);
     std::vector<std::string> names = checkOutputs(o, plan, outputs);
     StagingDir staging(o.out, "bench", "diff");
@@ -607,7 +595,9 @@ Command addBenchCommand(CLI::App& app) {
                     "CSV: measure nothing, draw the charts of this bench.csv into -o (give the "
                     "run's --scene, --size, --repeats, --timing and --contact: the titles say "
                     "them)");
-    sub->add_flag("-f,--force", o->force, "overwrite existing output files");
+    sub->add_flag("-f,--force", o->force,
+                  "overwrite existing output files; start work larger than the memory estimate "
+                  "says the machine holds");
     return {sub, [o] { return runBenchCommand(*o); }};
 }
 

@@ -20,6 +20,8 @@
 #include "app/magnifier.h"
 #include "app/render_options.h"
 #include "app/session.h"
+#include "base/memory_budget.h"
+#include "base/work_estimate.h"
 #include "deck/deck.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
@@ -106,6 +108,21 @@ std::vector<ScriptedInput> exportKeys(const std::string& text) {
     return keys;
 }
 
+// The frames: a step's page at least (a step split into pages writes more; those are known only
+// once rendered), each composed and written as PNG. Peak memory measured with /usr/bin/time:
+// 225 MB and 25 bytes a pixel (1280x720 to 2560x1440); 40 leaves room for a step's pages.
+WorkEstimate exportEstimate(glm::ivec2 size, glm::ivec2 steps) {
+    double pixels = static_cast<double>(size.x) * size.y;
+    int frames = steps.y - steps.x + 1;
+    WorkEstimate w;
+    w.what = "at least " + std::to_string(frames) + " frames of " + std::to_string(size.x) + "x" +
+             std::to_string(size.y);
+    w.frameNs = pixels * frames * RENDER_NS_PER_PIXEL_FRAME;
+    w.fixedSeconds = 1.0;
+    w.bytes = memoryEstimate(240 * MIB, 40, size.x, size.y);
+    return w;
+}
+
 int runExport(const ExportOptions& o) {
     glm::ivec2 size = parseSize("--size", o.size, {MIN_SESSION_SIZE});
     std::string path = resolveLesson(o.lesson);
@@ -113,6 +130,7 @@ int runExport(const ExportOptions& o) {
     glm::ivec2 steps = parseSteps(o.steps, static_cast<int>(lesson.steps.size()));
     std::vector<ScriptedInput> keys = exportKeys(o.keys);
     std::string dir = o.outDir.empty() ? "pcfscope-frames/" + lesson.name : o.outDir;
+    announceWork("export", exportEstimate(size, steps), o.force);
     OutputFiles outputs(o.force);
     outputs.addInput("LESSON", path);
     for (const LessonStep& step : lesson.steps) outputs.addInput("chart", step.chart);
@@ -121,7 +139,7 @@ int runExport(const ExportOptions& o) {
     plan.magnify = o.magnify;
     planExtras(outputs, plan, lesson, {size, o.presentation}, o.compare);
     planDecks(outputs, plan, o, lesson.name, size);
-    exportFrames(path, plan, size, o.presentation, true, &outputs);
+    exportFrames(lesson, plan, size, o.presentation, true, &outputs);
     outputs.commit();
     return 0;
 }
@@ -200,10 +218,15 @@ void planStepCompares(OutputFiles& outputs, ExportPlan& plan, const Lesson& less
             throw UsageError("--" + std::string(e.what()) + " (at step " + std::to_string(s) + ")");
         }
         if (!spec.empty()) {
+            // Said with the step it is about: one step's compare refused a whole export.
             if (auto problem =
                     compareFrameProblem(frame.size, spec.parts(), frame.presentation, false)) {
+                std::string whose = all.empty() ? "step " + std::to_string(s) + "'s compare (" +
+                                                      compareSpecText(spec) + ")"
+                                                : "--compare at step " + std::to_string(s);
                 throw UsageError("--size " + std::to_string(frame.size.x) + "x" +
-                                 std::to_string(frame.size.y) + ": " + *problem);
+                                 std::to_string(frame.size.y) + ": " + whose + ": " + *problem +
+                                 " (a larger --size, or --steps without that step)");
             }
             const std::string& stem = plan.stems[static_cast<size_t>(s - plan.steps.x)];
             outputs.add("--compare", stem + "-compare.png");
@@ -235,9 +258,9 @@ namespace {
 // A step that is an animation (`animate = {...}`) as an MP4 at `path`: its frames as the viewer
 // plays them (app/animation.h), with the flicker trace; the session is put back afterwards.
 // Returns the frames written.
-int writeStepVideo(Session& session, const std::string& lessonPath, const std::string& path) {
+int writeStepVideo(Session& session, const std::string& path) {
     const LessonStep& step = session.lesson().steps[static_cast<size_t>(session.step())];
-    AnimationOptions ao = stepAnimationOptions(step, lessonPath, session.step() + 1);
+    AnimationOptions ao = stepAnimationOptions(step);
     glm::ivec2 size = session.frameSize();
     VideoWriter writer(path, VideoFormat::Mp4, size.x, size.y, step.animate->fps);
     session.setTextPage(0);
@@ -326,7 +349,7 @@ struct ExportRun {
 
 // Step `s`, gone to and composed: its frames (its pages; a predict step's question's, then its
 // answer's), its split view and its video, each on the deck in that order.
-void exportStep(ExportRun& run, const std::string& lessonPath, int s) {
+void exportStep(ExportRun& run, int s) {
     Session& session = run.session;
     glm::ivec2 size = session.frameSize();
     const std::string& stem = run.plan.stems[static_cast<size_t>(s - run.plan.steps.x)];
@@ -352,7 +375,7 @@ void exportStep(ExportRun& run, const std::string& lessonPath, int s) {
         ++run.extraFrames;
     }
     if (run.plan.videos && session.lesson().steps[static_cast<size_t>(s - 1)].animate) {
-        run.videoFrames += writeStepVideo(session, lessonPath, stem + ".mp4");
+        run.videoFrames += writeStepVideo(session, stem + ".mp4");
         run.writer.written[first].video = stem + ".mp4";
         if (run.progress) std::fprintf(stderr, "export: %s\n", (stem + ".mp4").c_str());
     }
@@ -369,11 +392,11 @@ void writeDecks(const ExportPlan& plan, const std::string& title,
 
 }  // namespace
 
-void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
-                  bool presentation, bool progress, OutputFiles* outputs) {
+void exportFrames(const Lesson& lesson, const ExportPlan& plan, glm::ivec2 size, bool presentation,
+                  bool progress, OutputFiles* outputs) {
     std::unique_ptr<GlContext> context = createHeadlessContext();
     Session session(size, presentation);
-    session.loadLesson(lessonPath);
+    session.setLesson(lesson);
     auto start = std::chrono::steady_clock::now();
     // A frame's PNG and JSON are written on a thread of their own while the next frame renders
     // (frame_files.h).
@@ -388,7 +411,7 @@ void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::iv
         if (plan.magnify) magnifySession(session, wide);
         applyKeys(session, plan.keys);
         session.compose();
-        exportStep(run, lessonPath, s);
+        exportStep(run, s);
     }
     files.finish();
     writeDecks(plan, session.lesson().title, writer.written);
@@ -432,7 +455,9 @@ Command addExportCommand(CLI::App& app) {
                     "also DIR/LESSON-handout.pdf: A4, the 1600x900 frames two to a page with the "
                     "words and the trace's table beneath")
         ->check(CLI::IsMember({"pdf"}));
-    sub->add_flag("-f,--force", o->force, "overwrite existing frames");
+    sub->add_flag("-f,--force", o->force,
+                  "overwrite existing frames; start work larger than the memory estimate says "
+                  "the machine holds");
     return {sub, [o] { return runExport(*o); }};
 }
 

@@ -36,10 +36,18 @@ namespace {
 // The frame sizes a lesson is checked at (lessons are shown at each, normal and presentation).
 constexpr glm::ivec2 CHECKED_FRAMES[] = {{1024, 768}, {1280, 720}, {1600, 900}, {1920, 1080}};
 
+// "7.15 +- 0.42 ms": a row's scene time as the chart draws it, the median and half the IQR.
+std::string msWithSpread(const BenchRow& r) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2f +- %.2f ms", chartMs(r, ChartTiming::Scene),
+                  0.5 * chartIqr(r, ChartTiming::Scene));
+    return text;
+}
+
 // A bench chart's order: whether a's metric is less than b's (time: the median scene pass, as
-// the chart's x axis; rmse: its y axis, the edge RMSE, or near the contacts on a "#contact"
-// chart). Each label must pick one row. Any other chart claim is a fact of the chart's table
-// (analysis/chart_facts.h).
+// the chart's x axis, refused where the two bars overlap; rmse: its y axis, the edge RMSE, or near
+// the contacts on a "#contact" chart). Each label must pick one row. Any other chart claim is a
+// fact of the chart's table (analysis/chart_facts.h).
 ClaimWorld chartWorld(const LessonStep& step) {
     ClaimWorld world;
     world.chartLess = [&step](const std::string& a, const std::string& b,
@@ -47,7 +55,7 @@ ClaimWorld chartWorld(const LessonStep& step) {
         StepChartRef ref = stepChartRef(step.chart);
         if (step.chart.empty() || !ref.bench) return std::string("the step shows no bench chart");
         std::vector<BenchRow> rows = parseBenchCsv(readInputFile(ref.path), ref.path);
-        double value[2] = {0.0, 0.0};
+        const BenchRow* picks[2] = {nullptr, nullptr};
         const std::string* labels[2] = {&a, &b};
         for (int k = 0; k < 2; ++k) {
             std::vector<size_t> picked;
@@ -60,11 +68,17 @@ ClaimWorld chartWorld(const LessonStep& step) {
                 return "'" + *labels[k] + "' names " + std::to_string(picked.size()) +
                        " dots of the chart, not one";
             }
-            const BenchRow& r = rows[picked[0]];
-            value[k] =
-                metric == "time" ? chartMs(r, ChartTiming::Scene) : chartAccuracy(r, ref.accuracy);
+            picks[k] = &rows[picked[0]];
         }
-        return value[0] < value[1];
+        if (metric != "time") {
+            return chartAccuracy(*picks[0], ref.accuracy) < chartAccuracy(*picks[1], ref.accuracy);
+        }
+        // An order the bars do not support is not a fact of the chart (bench_report.h).
+        if (benchSpreadsOverlap(*picks[0], *picks[1], false)) {
+            return a + "'s and " + b + "'s time bars overlap (" + msWithSpread(*picks[0]) +
+                   " and " + msWithSpread(*picks[1]) + "): no order to claim";
+        }
+        return chartMs(*picks[0], ChartTiming::Scene) < chartMs(*picks[1], ChartTiming::Scene);
     };
     world.chartFact = [&step](const std::string& fact, std::string* why) {
         if (step.chart.empty()) {
@@ -126,7 +140,7 @@ struct Checker {
         // `flickers`: the step's sweep played as the viewer plays it (loadLessonChecked refused
         // the claim on a step that does not move).
         world.flickerCurve = [&]() -> std::variant<std::vector<float>, std::string> {
-            return stepFlickerCurves(lesson.sourcePath, static_cast<int>(index), s).main;
+            return stepFlickerCurves(lesson, static_cast<int>(index), s).main;
         };
         // The words typed where a placeholder or a claim belongs (lesson_words.h), read against
         // the step's own state (after a key its words are withheld where a claim fails).
@@ -207,7 +221,7 @@ PageSize parsePageSize(const std::string& text) {
 // inspector's parts (the cells, the texel table, the formula) where those are more.
 void printPages(const Lesson& lesson, PageSize at) {
     Session session(at.size, at.presentation);
-    session.loadLesson(lesson.sourcePath);
+    session.setLesson(lesson);
     std::vector<int> pages;
     std::vector<std::string> parts;  // what makes them, where there are more than one
     for (int s = 0; s < session.stepCount(); ++s) {
@@ -235,7 +249,8 @@ int runLessonCheck(const LessonCheckOptions& o) {
     for (const std::string& p : o.pages) pageSizes.push_back(parsePageSize(p));
     std::string path = resolveLesson(o.file);
     // Every problem of the file, each on its line, before anything is checked on its numbers.
-    std::vector<InputError> problems = lessonProblems(path);
+    Lesson lesson;
+    std::vector<InputError> problems = lessonProblems(path, &lesson);
     if (problems.size() > 1) {
         for (const InputError& e : problems) {
             std::fprintf(stderr, "pcfscope: %s\n", oneLine(e.what()).c_str());
@@ -243,7 +258,7 @@ int runLessonCheck(const LessonCheckOptions& o) {
         return 2;
     }
     if (!problems.empty()) throw problems.front();
-    Lesson lesson = loadLessonChecked(path);
+    requireSteps(lesson, path);
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(lesson.scene);
     Checker checker{lesson, renderer};

@@ -39,7 +39,7 @@ int runPick(const PickOptions& o) {
     }
     std::unique_ptr<GlContext> context = createHeadlessContext();
     Session session(size, o.presentation);
-    session.loadLesson(path);
+    session.setLesson(lesson);
     StepPlayer player(session);
     session.goToStep(o.step - 1);
     player.afterChange();  // as the viewer arrives on a step: an animation on its first frame

@@ -76,7 +76,7 @@ LessonRender lessonRenderOf(const RenderCommandOptions& o, const RenderSettings&
 
 // The files of a --raw folder.
 struct RawFiles {
-    std::string shadow, lightSpace, visibility, positions, receiver, settings;
+    std::string shadow, lightSpace, visibility, positions, normals, receiver, settings;
 };
 
 // The --raw folder's files, each added to `outputs`.
@@ -85,9 +85,10 @@ RawFiles rawFilesIn(const std::string& rawDir, OutputFiles& outputs) {
     outputs.addDirectory("--raw", dir);
     RawFiles raw{(dir / "shadowmap.exr").string(),  (dir / "lightspace.exr").string(),
                  (dir / "visibility.exr").string(), (dir / "positions.exr").string(),
-                 (dir / "dzduv.exr").string(),      (dir / "render.json").string()};
-    for (const std::string& p :
-         {raw.shadow, raw.lightSpace, raw.visibility, raw.positions, raw.receiver, raw.settings}) {
+                 (dir / "normals.exr").string(),    (dir / "dzduv.exr").string(),
+                 (dir / "render.json").string()};
+    for (const std::string& p : {raw.shadow, raw.lightSpace, raw.visibility, raw.positions,
+                                 raw.normals, raw.receiver, raw.settings}) {
         outputs.add("--raw", p);
     }
     return raw;
@@ -115,6 +116,8 @@ void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderS
     writeExr(raw.visibility, size.x, size.y, 1, vis, {"Y"});
     std::vector<float> pos = renderer.readPositions();
     writeExr(raw.positions, size.x, size.y, 4, pos, {"R", "G", "B", "A"});
+    std::vector<float> normals = renderer.readNormals();
+    writeExr(raw.normals, size.x, size.y, 4, normals, {"R", "G", "B", "A"});
     std::vector<float> receiver = renderer.readReceiver();
     writeExr(raw.receiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
     writeTextFile(raw.settings,
@@ -142,6 +145,7 @@ int runRender(const RenderCommandOptions& o) {
     // Every check first: nothing is written unless all of it can be.
     RenderSettings settings = o.render.settings();
     Scene scene = o.render.loadScene();
+    checkLightSize(scene.light, settings);
     if (o.out.empty() && o.rawDir.empty())
         throw UsageError("render needs -o FILE.png or --raw DIR");
     requireIntRange("--time", o.timeRepeats, 0, 10000);
@@ -172,7 +176,8 @@ int runRender(const RenderCommandOptions& o) {
     requireMemory("--size " + std::to_string(settings.frameSize.x) + "x" +
                       std::to_string(settings.frameSize.y),
                   memoryEstimate(256 * MIB, 130, settings.frameSize.x, settings.frameSize.y) +
-                      memoryEstimate(0, 12, settings.mapSize, settings.mapSize));
+                      memoryEstimate(0, 12, settings.mapSize, settings.mapSize),
+                  o.force);
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(scene);
     if (lesson.fit) renderer.setShadowClipFromWorld(*lesson.fit);
@@ -203,10 +208,13 @@ Command addRenderCommand(CLI::App& app) {
     sub->add_option("-o,--out", o->out, "the frame as PNG");
     sub->add_option("--raw", o->rawDir,
                     "write shadowmap.exr, lightspace.exr (u, v, ref, receiver), "
-                    "visibility.exr, positions.exr (world xyz, drawn), dzduv.exr (dz/du, "
-                    "dz/dv of the receiver plane, z before bias, receiver) and render.json "
-                    "(method, format, precision) into DIR");
-    sub->add_flag("-f,--force", o->force, "overwrite existing output files");
+                    "visibility.exr, positions.exr (world xyz, drawn), normals.exr (the normal "
+                    "facing the camera, cos(theta) to the light), dzduv.exr (dz/du, dz/dv of "
+                    "the receiver plane, z before bias, receiver) and render.json (the "
+                    "settings, the light's clip matrix) into DIR");
+    sub->add_flag("-f,--force", o->force,
+                  "overwrite existing output files; start work larger than the memory estimate "
+                  "says the machine holds");
     sub->add_option("--time", o->timeRepeats,
                     "time the camera pass over this many draws and print the median");
     sub->add_flag("-v,--verbose", o->verbose, "say which GL driver rendered");

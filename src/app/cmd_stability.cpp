@@ -36,6 +36,7 @@
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/memory_budget.h"
+#include "base/work_estimate.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
@@ -249,6 +250,58 @@ struct CheckedStability {
     Scene scene;
 };
 
+// The sweeps' work, counted from their options: each point's frames (method x bias x the swept
+// value) and the ground truths under them (an area truth, pcss's, at AREA_TRUTH_FACTOR a hard
+// one's cost). An estimate to say before a long run, not a measurement.
+WorkEstimate stabilityEstimate(const StabilityOptions& s) {
+    constexpr double AREA_TRUTH_FACTOR = 20.0;
+    double m = static_cast<double>(s.methods.size()), b = static_cast<double>(s.biases.size());
+    double frames = 0.0, truths = 0.0;
+    auto n = [](const auto& list) { return static_cast<double>(list.size()); };
+    for (Sweep sweep : s.sweeps) {
+        switch (sweep) {
+            case Sweep::Acne:
+            case Sweep::Tradeoff:
+                frames += n(s.elevations) * m * b;
+                truths += n(s.elevations);
+                break;
+            case Sweep::Leak:
+                frames += n(s.leakScenes) * n(s.leakBiases) * m;
+                truths += n(s.leakScenes);
+                break;
+            case Sweep::Shimmer:
+                frames += (2.0 * s.shimmerFrames + s.cameraFrames) * m * b;
+                truths += 1.0;
+                break;
+            case Sweep::Precision:
+                frames += n(s.depthRanges) * n(s.depthFormats) * m;
+                truths += 1.0;
+                break;
+            case Sweep::Aliasing:
+                frames += n(s.aliasingMapSizes);
+                break;
+            case Sweep::PcssThin:
+            case Sweep::PcssOverlap:
+            case Sweep::PcssNoise:
+            case Sweep::PcssBias:
+                frames += 4.0 * (n(s.pcssPoleWidths) + n(s.pcssRadii));
+                truths += AREA_TRUTH_FACTOR * 4.0;
+                break;
+        }
+    }
+    double pixels = static_cast<double>(s.frameSize.x) * s.frameSize.y;
+    WorkEstimate w;
+    w.what = std::to_string(s.sweeps.size()) + " sweeps at " + std::to_string(s.frameSize.x) + "x" +
+             std::to_string(s.frameSize.y);
+    w.frameNs = frames * pixels * RENDER_NS_PER_PIXEL_FRAME;
+    w.truthNs = truths * pixels * TRUTH_NS_PER_PIXEL;
+    w.fixedSeconds = 10.0;  // the methods' shaders compiled
+    // Measured peaks of `stability --quick`: 245 MB at 320x180, 432 MB at 960x540, so 414 bytes
+    // a frame pixel (truth, error regions and a frame's targets for each sweep point at once).
+    w.bytes = memoryEstimate(256 * MIB, 420, s.frameSize.x, s.frameSize.y);
+    return w;
+}
+
 CheckedStability checkStabilityCommand(const StabilityCommandOptions& o) {
     CheckedStability c{parseOptions(o), {}, {}};
     // --quick draws its charts at half size unless told otherwise.
@@ -256,11 +309,7 @@ CheckedStability checkStabilityCommand(const StabilityCommandOptions& o) {
     c.chartSize = parseSize("--chart-size", chartText, CHART_SIZE_RANGE);
     c.scene = o.render.loadScene();
     if (o.out.empty()) throw UsageError("-o needs a directory");
-    // Measured peaks of `stability --quick`: 245 MB at 320x180, 432 MB at 960x540, so 414 bytes
-    // a frame pixel (truth, error regions and a frame's targets for each sweep point at once).
-    glm::ivec2 frame = c.options.frameSize;
-    requireMemory("--size " + std::to_string(frame.x) + "x" + std::to_string(frame.y),
-                  memoryEstimate(256 * MIB, 420, frame.x, frame.y));
+    announceWork("stability", stabilityEstimate(c.options), o.force);
     return c;
 }
 
@@ -305,6 +354,17 @@ CheckedReplot checkReplot(const StabilityCommandOptions& o) {
     c.rows = parseStabilityCsv(readInputFile(o.replot), o.replot);
     c.sweeps = chartedSweeps(c.rows);
     if (c.sweeps.empty()) throw InputError(o.replot, 0, "no sweep rows to chart");
+    // A sweep whose rows name metrics its chart does not read would draw an empty chart.
+    for (Sweep sweep : c.sweeps) {
+        for (const SweepChart& chart : sweepCharts()) {
+            if (chart.sweep != sweep || chart.hasData(c.rows)) continue;
+            throw InputError(o.replot, 0,
+                             "the " + std::string(sweepName(sweep)) +
+                                 " rows hold no metric its "
+                                 "chart draws (" +
+                                 std::string(chart.file) + " would be empty)");
+        }
+    }
     if (o.out.empty()) throw UsageError("-o needs a directory");
     return c;
 }
@@ -398,7 +458,9 @@ Command addStabilityCommand(CLI::App& app) {
     o->render.size = "480x270";
     o->render.defaults.mapSize = 512;
     o->render.frameRange.min = glm::ivec2(MIN_STABILITY_FRAME_SIDE);
-    o->render.addTo(sub, STABILITY_DEFAULT_SCENE);
+    // The pcss sweeps set their lights' sizes themselves (the suns of pcss-noise, the presets'
+    // lights): a light size option would be read by nothing.
+    o->render.addTo(sub, STABILITY_DEFAULT_SCENE, {"light_size", "light_radius"});
     // The single-lookup options of the shared set do not apply here (parseOptions says so when
     // given): out of --help, which listed them as if they did.
     for (const char* single : SINGLE_LOOKUP_OPTIONS) {
@@ -427,7 +489,9 @@ Command addStabilityCommand(CLI::App& app) {
     sub->add_option("--replot", o->replot,
                     "CSV: draw an existing stability.csv's charts into -o (at --chart-size), "
                     "measure nothing; all but the heat map");
-    sub->add_flag("-f,--force", o->force, "overwrite existing output files");
+    sub->add_flag("-f,--force", o->force,
+                  "overwrite existing output files; start work larger than the memory estimate "
+                  "says the machine holds");
     return {sub, [o] { return runStabilityCommand(*o); },
             [o] {
                 if (o->given("--replot")) {

@@ -1,4 +1,5 @@
-// pcfscope trace: one lookup's step-through, as text or as DESIGN.md section 4's JSON.
+// pcfscope trace: one lookup's step-through, as text or as the JSON object of docs/user-guide.md,
+// "trace".
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -53,11 +54,9 @@ constexpr float UV_LIMIT = 20.0f;
 constexpr const char* EXAMPLE_UV = "0.4625,0.3875";
 constexpr float EXAMPLE_Z = 0.5f;
 
-// The settings given: the shared options' parsing (render_options.h), the kernel and radius
-// checked whether or not the method uses them.
+// The settings given: the shared options' parsing (render_options.h), each value given checked
+// in its range whether or not the method uses it.
 ShadowSettings traceSettings(const TraceOptions& o) {
-    checkGivenKernelOptions(o.shadow.given("kernel"), o.shadow.values().kernel,
-                            o.shadow.given("radius"), o.shadow.values().radius);
     ShadowSettings s;
     o.shadow.applyTo(s, false);
     o.mapOptions.applyTo(s, false);
@@ -80,7 +79,7 @@ PcfParams traceParams(const TraceOptions& o, const ShadowSettings& s) {
 // The bias: the settings' (checked), and trace's --angle and --dzduv that stand in for the
 // receiver the renderer would know; returns the receiver plane, --dzduv's.
 vec2 traceDzDuv(const TraceOptions& o, const ShadowSettings& s) {
-    if (auto why = cliBiasProblem(s)) throw UsageError(*why);
+    if (auto why = cliRangeProblem(s)) throw UsageError(*why);
     // trace's default mode is none: a parameter given without a mode would do nothing.
     if (!o.shadow.given("bias")) {
         for (const ParamInfo& p : allParams()) {
@@ -181,7 +180,7 @@ Command addTraceCommand(CLI::App& app) {
     // trace has --rotation (degrees) in the place of --rotate.
     // pcss's light size is --penumbra-scale here: trace has no scene to measure the light in.
     o->shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias}, defaults,
-                    {"rotate", "light_size"});
+                    {"rotate", "light_size", "light_radius"});
     o->mapOptions.addTo(sub, {ParamGroup::Map}, defaults, {"depth_format", "map_size", "cull"});
     sub->add_option(
         "--angle", o->angleDeg,

@@ -28,21 +28,26 @@ struct TruthCommandOptions {
     std::string size = "1280x720";
     int spp = DEFAULT_TRUTH_SPP;
     int threads = 0;
-    float bound = DEFAULT_TRUTH_TARGET_BOUND;
-    float lightSize = -1.0f;  // < 0: the scene's light as it is
+    // Read as a double, so that a value below float's range is refused as given, not as 0.
+    double bound = DEFAULT_TRUTH_TARGET_BOUND;
+    // The light's size where given (--light-size, --light-radius: the parameter table's).
+    SettingOptions light;
     bool mask = false;
     std::string out;
     bool force = false;
 };
 
+// The smallest --bound: a visibility near 1 is a float, whose steps there are 6e-8; a bound of
+// 1e-6 is 16 of them, and nothing finer is meaningful (1e-300 was a float 0).
+constexpr double MIN_TRUTH_BOUND = 1.0e-6;
+
 // The options parseSize and the scene loading do not check.
 void checkTruthOptions(const TruthCommandOptions& o) {
     requireIntRange("--spp", o.spp, 1, MAX_TRUTH_SPP);
     requireIntRange("--threads", o.threads, 0, 1024);
-    if (!(o.bound > 0.0f && o.bound <= 1.0f)) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%g", static_cast<double>(o.bound));  // not 0.000000
-        throw UsageError(std::string("--bound ") + text + " is out of range (0..1]");
+    if (!(o.bound >= MIN_TRUTH_BOUND && o.bound <= 1.0)) {
+        throw UsageError("--bound " + exactNumberText(o.bound) + " is out of range [" +
+                         exactNumberText(MIN_TRUTH_BOUND) + ", 1]");
     }
     if (o.scene.empty() && o.sceneFile.empty()) {
         throw UsageError("truth needs --scene PRESET or --scene-file FILE");
@@ -95,22 +100,16 @@ void sayWalkedObjects(const Scene& scene) {
     }
 }
 
-// --light-size: the directional light's angular diameter, degrees, or the spot light's radius,
-// world units (light.h), each in its range; then a spot disk's casters are checked for what its
-// truth can integrate.
+// --light-size (a directional light's angular diameter, degrees) or --light-radius (a spot
+// light's radius, world units): the parameter table's, each for its own kind of light, 0 the
+// scene light's; then a spot disk's casters are checked for what its truth can integrate.
 void applyTruthLightSize(const TruthCommandOptions& o, Scene& scene) {
-    if (o.lightSize >= 0.0f) {
-        bool spot = scene.light.type == LightType::Spot;
-        float most = spot ? MAX_SPOT_RADIUS : MAX_ANGULAR_DIAMETER_DEG;
-        if (!(o.lightSize <= most)) {
-            char text[160];
-            std::snprintf(text, sizeof text, "--light-size %g is out of range (0..%g %s)",
-                          static_cast<double>(o.lightSize), static_cast<double>(most),
-                          spot ? "world units: a spot light's radius" : "degrees");
-            throw UsageError(text);
-        }
-        (spot ? scene.light.radius : scene.light.angularDiameterDeg) = o.lightSize;
+    ShadowSettings given;
+    o.light.applyTo(given, true);
+    if (std::optional<ParamProblem> why = lightSizeProblem(scene.light, given)) {
+        throw UsageError(cliWords(*why));
     }
+    scene.light = applyLightSize(scene.light, given);
     try {
         checkSpotDiskCasters(scene);
     } catch (const std::invalid_argument& e) {
@@ -148,7 +147,7 @@ int runTruth(const TruthCommandOptions& o) {
     Scene scene = sceneOptions.loadScene();
     // Measured peaks of `truth --spp 1` (box-on-plane): 139 MB at 512x512, 152 MB at 1024x1024:
     // 17 bytes a pixel; 24 leaves room for --mask's channel and the EXR held in memory.
-    requireMemory("--size " + o.size, memoryEstimate(160 * MIB, 24, size.x, size.y));
+    requireMemory("--size " + o.size, memoryEstimate(160 * MIB, 24, size.x, size.y), o.force);
     applyTruthLightSize(o, scene);
     OutputFiles outputs(o.force);
     outputs.addInput("--scene-file", o.sceneFile);
@@ -157,7 +156,7 @@ int runTruth(const TruthCommandOptions& o) {
     GroundTruthOptions options;
     options.spp = o.spp;
     options.threads = o.threads;
-    options.targetBound = o.bound;
+    options.targetBound = static_cast<float>(o.bound);
     options.area = hasSize(scene.light);
     sayTruthPlan(o, scene, size, options.area);
     auto start = std::chrono::steady_clock::now();
@@ -198,12 +197,10 @@ Command addTruthCommand(CLI::App& app) {
                     "first pass: K x K stratified samples per pixel that find the edges (1..64, "
                     "default 2)");
     sub->add_option("--bound", o->bound,
-                    "refine edge pixels until the error bound is at most this (default 1/512)");
-    sub->add_option("--light-size", o->lightSize,
-                    "the light's size: a directional light's angular diameter in degrees "
-                    "(0..10; the sun's is about 0.53), a spot light's radius in world units "
-                    "(0..100): the truth integrates over the light's disk as well as the pixel. "
-                    "Default: the scene's light (angular_diameter, radius), 0 = a hard shadow");
+                    "refine edge pixels until the error bound is at most this (1e-06..1, default "
+                    "1/512)");
+    // With a size, the truth integrates over the light's disk as well as the pixel.
+    o->light.addKeys(sub, {"light_size", "light_radius"}, ShadowSettings{});
     sub->add_option("--threads", o->threads, "worker threads (0 = all cores, the default)");
     sub->add_flag("--mask", o->mask,
                   "add a 'mask' channel: 1 where the pixel centre's camera ray hits a shadow "
@@ -211,7 +208,9 @@ Command addTruthCommand(CLI::App& app) {
     sub->add_option("-o,--out", o->out,
                     "the truth as a float EXR: channels 'visibility' in [0,1] and 'bound' (the "
                     "stated bound on its error), rows top-down");
-    sub->add_flag("-f,--force", o->force, "overwrite an existing output file");
+    sub->add_flag("-f,--force", o->force,
+                  "overwrite an existing output file; start work larger than the memory estimate "
+                  "says the machine holds");
     return {sub, [o] { return runTruth(*o); }};
 }
 

@@ -19,10 +19,12 @@
 #include "analysis/conformance.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/render_options.h"
 #include "base/input_file.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
+#include "kernel/shading.h"
 #include "kernel/trace_json.h"
 #include "render/image_io.h"
 #include "render/render_settings.h"
@@ -130,14 +132,9 @@ void readParam(const Json& json, const ParamInfo& p, ShadowSettings& s, const st
         p.field);
 }
 
-// render.json's keys that folders of an older pcfscope lack (before the bias modes, before
-// pcss, before --shading): the setting's default when absent. Every other key the table marks
-// rawJson is needed.
-constexpr std::string_view OPTIONAL_KEYS[] = {
-    "bias", "soft_scale", "rpdb_max", "light_size", "normal_offset", "map_size", "shading"};
-
 // What `render --raw` rendered with, from its render.json: the settings the parameter table
-// marks rawJson, and what the kernel filtered with.
+// marks rawJson, what the kernel filtered with, and the map (whose layer's fit each pixel's
+// lookup was computed from besides its position and normal).
 struct RawSettings {
     ShadowSettings settings;
     // The map as render.json describes it ("map"); folders written before it have none.
@@ -145,6 +142,16 @@ struct RawSettings {
     PcfParams prm;
     PcfBias bias = PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, DEFAULT_RPDB_MAX);
 };
+
+// The layer scene.frag looked each pixel up with besides its position and normal: its fit (the
+// light's clip matrix) and one texel's world size at clip w = 1. None for a folder written before
+// render.json held the map, or a map without a texel size.
+const PcfMapLayer* lookupLayer(const RawSettings& r) {
+    if (!r.map || r.map->layers.size() != 1 || !(r.map->layers.front().texelWs > 0.0f)) {
+        return nullptr;
+    }
+    return &r.map->layers.front();
+}
 
 RawSettings readRawSettings(const std::filesystem::path& dir) {
     std::filesystem::path jsonPath = dir / "render.json";
@@ -156,10 +163,13 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
     RawSettings r;
     for (const ParamInfo& p : allParams()) {
         if (!p.rawJson) continue;
-        bool optional = std::find(std::begin(OPTIONAL_KEYS), std::end(OPTIONAL_KEYS), p.key) !=
-                        std::end(OPTIONAL_KEYS);
-        if (optional && !json.contains(std::string(p.key))) continue;
+        // Keys that folders written before the parameter lack: its default (the table says which).
+        if (p.rawJsonMayLack && !json.contains(std::string(p.key))) continue;
         readParam(json, p, r.settings, where);
+    }
+    // In the table's ranges, as every command line and lesson value is.
+    if (std::optional<ParamProblem> why = checkSettingRanges(r.settings)) {
+        throw UsageError("render.json: " + why->text() + " (" + where + ")");
     }
     // pcss's light size in the map; folders written before pcss have none (0: no method used it).
     float penumbraScale = 0.0f;
@@ -216,14 +226,34 @@ void checkMapTexels(const RawSettings& r, const std::string& where) {
                      std::string(texelKindName(kind)) + " (" + where + ")");
 }
 
-// The folder's images: the map compared with, each pixel's lookup and visibility, and under
-// receiver-plane bias each pixel's plane.
+// The folder's images: the map compared with, each pixel's lookup and visibility, each pixel's
+// plane (dzduv.exr), and where present what the lookup was computed from: the world position
+// (positions.exr) and the normal with cos(theta) (normals.exr).
 struct RawImages {
     ShadowMap map;
     FloatImage lightSpace;  // u, v, ref, receiver (1 or 0)
     FloatImage visibility;
-    FloatImage planes;  // dz/du, dz/dv, z before bias, 1 on receivers (dzduv.exr)
+    FloatImage planes;     // dz/du, dz/dv, z before bias, 1 on receivers (dzduv.exr)
+    FloatImage positions;  // world x, y, z, 1 where drawn; empty when the folder has none
+    FloatImage normals;    // n facing the camera, cos(theta); empty when the folder has none
 };
+
+// Whether each pixel's lookup can be recomputed whole: the layer's fit, positions and normals.
+bool recomputesWhole(const RawImages& img, const RawSettings& r) {
+    return lookupLayer(r) && !img.positions.data.empty() && !img.normals.data.empty();
+}
+
+// An image of the folder the size of lightspace.exr with 4 channels, or an empty one when the
+// file does not exist.
+FloatImage readOptionalImage(const std::filesystem::path& path, const FloatImage& like) {
+    std::error_code ec;
+    if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec))) return {};
+    FloatImage img = readImage(path, 4);
+    if (img.width != like.width || img.height != like.height) {
+        throw UsageError(path.string() + " and lightspace.exr differ in size");
+    }
+    return img;
+}
 
 RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) {
     RawImages img;
@@ -244,27 +274,59 @@ RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) 
     if (img.planes.width != ls.width || img.planes.height != ls.height) {
         throw UsageError("dzduv.exr and lightspace.exr differ in size (" + dir.string() + ")");
     }
+    img.positions = readOptionalImage(dir / "positions.exr", ls);
+    img.normals = readOptionalImage(dir / "normals.exr", ls);
     return img;
 }
 
-// The ref each receiver pixel filtered with, recomputed from its depth before bias (dzduv.exr's
-// third channel) and render.json's bias amounts as scene.frag computes it: ref = z - b, b the
-// constant bias (0 for none); under slope bias b = pcfSlopeBias's min(b + s tan(theta), max),
-// a range, since the folder holds no normals (theta from 0 to the 1e-4 cosine it clamps to).
-// Normal offset projects a moved point, so its z is not dzduv's and it is not checked. A label
-// that does not fit the pixels (a wrong bias amount, a relabelled mode) is bad input. Returns
-// the number of pixels checked.
-long checkRefs(const RawImages& img, const RawSettings& r, const std::string& dir) {
-    if (r.settings.bias == BiasMode::Normal) return 0;
-    // GLSL rounds a float subtraction correctly; the slack is for z computed by a division
-    // the compiler may turn into a multiply by 1 / w (an ulp or two of z <= 1).
-    constexpr float REF_SLACK = 1.0e-6f;
+// How far a recomputed lookup may be from the shader's: GLSL rounds each float operation
+// correctly, but the driver may order a matrix product's sums otherwise, or turn a division by
+// w into a multiply by 1 / w: an ulp or two of values of at most 1.
+constexpr float LOOKUP_SLACK = 1.0e-6f;
+
+// The bias render.json names, in words, with the parameters its lookups were made with: those
+// the table says act under the mode and the scene pass applies per lookup (no kernel member):
+// "slope (constant_bias 0.002, slope_bias 0.001, ...)".
+std::string biasWords(const ShadowSettings& s) {
+    std::string words(biasModeName(s.bias));
+    std::string params;
+    for (const ParamInfo& p : allParams()) {
+        if (!paramActsUnder(p, s.bias) || !std::holds_alternative<std::monostate>(p.member))
+            continue;
+        params += (params.empty() ? "" : ", ") + std::string(p.key) + " " + settingText(p, s);
+    }
+    return params.empty() ? words : words + " (" + params + ")";
+}
+
+// The lookup of receiver pixel k as scene.frag made it (shaders/shared/pcf_shading.h
+// pcfReceiverLookup, the very function the shader runs), from its world position, its normal
+// and cos(theta), render.json's light matrix and bias: every bias mode recomputed exactly.
+// Without the normals or the matrix (folders written before render --raw kept them) only ref
+// from the depth before bias, for the modes that need nothing else.
+PcfReceiverLookup recomputedLookup(const RawImages& img, const RawSettings& r, size_t k) {
     const ShadowSettings& s = r.settings;
-    float lo = s.baseBias(), hi = s.baseBias();
-    if (s.bias == BiasMode::Slope) {
-        lo = pcfSlopeBias(1.0f, s.baseBias(), s.slopeBias, s.slopeMax);
-        hi = pcfSlopeBias(1.0e-4f, s.baseBias(), s.slopeBias, s.slopeMax);
-        if (lo > hi) std::swap(lo, hi);
+    const float* ls = &img.lightSpace.data[4 * k];
+    float z0 = img.planes.data[4 * k + 2];
+    if (!recomputesWhole(img, r)) return PcfReceiverLookup(ls[0], ls[1], z0, z0, z0 - s.baseBias());
+    const PcfMapLayer& layer = *lookupLayer(r);
+    const float* p = &img.positions.data[4 * k];
+    const float* n = &img.normals.data[4 * k];
+    return pcfReceiverLookup(layer.shadowClipFromWorld, vec3(p[0], p[1], p[2]),
+                             vec3(n[0], n[1], n[2]), n[3], s.modeId(), s.constantBias, s.slopeBias,
+                             s.slopeMax, s.normalOffset, layer.texelWs);
+}
+
+// Every receiver pixel's u, v, depth before bias and ref against recomputedLookup, within
+// LOOKUP_SLACK. A label that does not fit the pixels (a bias amount, a relabelled mode: slope
+// for a constant-bias render, a slope_bias 50 times the rendered one) is bad input. Returns the
+// number of pixels checked.
+long checkLookups(const RawImages& img, const RawSettings& r, const std::string& dir) {
+    const ShadowSettings& s = r.settings;
+    if (!recomputesWhole(img, r) && (s.bias == BiasMode::Slope || s.bias == BiasMode::Normal)) {
+        throw UsageError(dir + ": bias " + std::string(biasModeName(s.bias)) +
+                         " depends on each pixel's angle to the light, and the folder lacks "
+                         "normals.exr, positions.exr or render.json's map; "
+                         "render it again with `pcfscope render --raw`");
     }
     const FloatImage& ls = img.lightSpace;
     long checked = 0;
@@ -272,19 +334,23 @@ long checkRefs(const RawImages& img, const RawSettings& r, const std::string& di
         for (int x = 0; x < ls.width; ++x) {
             size_t k = static_cast<size_t>(y) * ls.width + x;
             if (ls.data[4 * k + 3] != 1.0f) continue;
-            float z = img.planes.data[4 * k + 2];
-            float ref = ls.data[4 * k + 2];
-            bool fits = img.planes.data[4 * k + 3] == 1.0f && ref >= (z - hi) - REF_SLACK &&
-                        ref <= (z - lo) + REF_SLACK;
-            if (!fits) {
-                char buf[200];
-                std::snprintf(buf, sizeof buf,
-                              "pixel (%d, %d) has ref %.9g, but its depth %.9g less the bias "
-                              "render.json gives (%s, %.9g) is %.9g",
-                              x, y, static_cast<double>(ref), static_cast<double>(z),
-                              std::string(biasModeName(s.bias)).c_str(), static_cast<double>(lo),
-                              static_cast<double>(z - lo));
-                throw UsageError(dir + ": render.json does not describe these images: " + buf);
+            PcfReceiverLookup at = recomputedLookup(img, r, k);
+            const std::pair<const char*, std::pair<float, float>> quantities[] = {
+                {"u", {ls.data[4 * k], at.u}},
+                {"v", {ls.data[4 * k + 1], at.v}},
+                {"depth before bias", {img.planes.data[4 * k + 2], at.z0}},
+                {"ref", {ls.data[4 * k + 2], at.ref}}};
+            for (const auto& [what, values] : quantities) {
+                if (img.planes.data[4 * k + 3] == 1.0f &&
+                    std::abs(values.first - values.second) <= LOOKUP_SLACK) {
+                    continue;
+                }
+                char buf[160];
+                std::snprintf(buf, sizeof buf, "pixel (%d, %d) has %s %.9g, recomputed %.9g", x, y,
+                              what, static_cast<double>(values.first),
+                              static_cast<double>(values.second));
+                throw UsageError(dir + ": render.json does not describe these images: " + buf +
+                                 " under bias " + biasWords(s));
             }
             ++checked;
         }
@@ -377,7 +443,7 @@ int runVerify(const VerifyOptions& o) {
     RawImages img = readRawImages(dir, r);
     checkDepthFormat(img.map, (dir / "shadowmap.exr").string());
     checkMapTexels(r, (dir / "render.json").string());
-    long refsChecked = checkRefs(img, r, dir.string());
+    long refsChecked = checkLookups(img, r, dir.string());
     ConformancePrecision prec{o.subTexelBits, o.weightBits, o.referenceBits};
     EnvelopeTally t = checkEnvelopes(img, r, prec);
     if (t.receivers == 0) throw UsageError("no receiver pixels in " + dir.string());
@@ -396,14 +462,11 @@ int runVerify(const VerifyOptions& o) {
         std::string(depthFormatName(r.settings.depthFormat)).c_str(),
         std::string(precisionName(prm.precision)).c_str(), o.subTexelBits, o.weightBits,
         refBits.c_str());
-    if (refsChecked > 0) {
-        std::printf("ref of all %ld receiver pixels recomputed from depth and bias: as rendered\n",
-                    refsChecked);
-    } else {
-        std::printf(
-            "ref not recomputed: normal offset moves the point, and the folder holds no "
-            "normals\n");
-    }
+    std::printf("lookup (u, v, ref) of all %ld receiver pixels recomputed from %s: as rendered\n",
+                refsChecked,
+                recomputesWhole(img, r)
+                    ? "position, normal and bias"
+                    : "depth and bias (the folder has no normals: u, v not recomputed)");
     std::printf("%ld of %ld receiver pixels inside the envelope (%.4f %%)\n", t.inside, t.receivers,
                 100.0 * static_cast<double>(t.inside) / static_cast<double>(t.receivers));
     if (t.inside == t.receivers) return 0;

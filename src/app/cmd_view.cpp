@@ -25,6 +25,7 @@ struct ViewCommandOptions {
     bool presentation = false;
     bool force = false;
     int benchFrames = 0;
+    CLI::Option* benchFramesOption = nullptr;  // given or not
 };
 
 int runView(const ViewCommandOptions& o) {
@@ -36,7 +37,10 @@ int runView(const ViewCommandOptions& o) {
     v.presentation = o.presentation;
     v.force = o.force;
     v.benchFrames = o.benchFrames;
-    requireIntRange("--bench-frames", o.benchFrames, 0, 10000);
+    // Given, it times at least one frame: 0 opened the window as if it had not been given.
+    if (o.benchFramesOption->count() > 0) {
+        requireIntRange("--bench-frames", o.benchFrames, 1, 10000);
+    }
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!display || !*display) && (!wayland || !*wayland)) {
@@ -77,7 +81,7 @@ int runMainJob() {
     glm::ivec2 steps(1, static_cast<int>(lesson.steps.size()));
     OutputFiles outputs(false);
     ExportPlan plan = planExport(outputs, dir, lesson, steps);
-    exportFrames(lessons.front(), plan, {1600, 900}, false, true, &outputs);
+    exportFrames(lesson, plan, {1600, 900}, false, true, &outputs);
     outputs.commit();
     std::printf("No display: lesson '%s' exported as %d frames into %s/\n", lesson.title.c_str(),
                 steps.y, dir.c_str());
@@ -95,8 +99,9 @@ Command addViewCommand(CLI::App& app) {
     sub->add_option("--screenshot", o->screenshot, "write the frame after --keys to PNG, quit");
     addPresentationFlag(sub, o->presentation);
     sub->add_flag("-f,--force", o->force, "let --screenshot overwrite an existing file");
-    sub->add_option("--bench-frames", o->benchFrames,
-                    "time this many frames (after --keys), print the median frame time, quit");
+    o->benchFramesOption = sub->add_option(
+        "--bench-frames", o->benchFrames,
+        "time this many frames (1..10000, after --keys), print the median frame time, quit");
     // The keys, from the table the help overlay (H) draws (overlay/inspector_keys.cpp).
     std::string keys = "\nKeys in the window:\n";
     for (const auto& [key, what] : viewerKeys()) {

@@ -1,4 +1,4 @@
-// command_line.cpp: the command line (DESIGN.md section 6): every subcommand, parsed, run, and
+// command_line.cpp: the command line (docs/user-guide.md): every subcommand, parsed, run, and
 // its errors turned into one line and an exit code (app/command_line.h).
 #include "app/command_line.h"
 
@@ -21,8 +21,11 @@ namespace {
 
 // One line whatever the message holds: a newline in an option value or a file name is written
 // as \n (base/input_error.h oneLine).
+// Staged outputs are named by their final names (app/output_files.h withFinalNames); a progress
+// line still open is ended first, so the error is a line of its own.
 int fail(const std::string& message) {
-    std::fprintf(stderr, "pcfscope: %s\n", pcf::oneLine(message).c_str());
+    pcf::endProgressLine();
+    std::fprintf(stderr, "pcfscope: %s\n", pcf::oneLine(pcf::withFinalNames(message)).c_str());
     return 2;
 }
 
@@ -54,7 +57,7 @@ int pcf::runCommandLine(int argc, char** argv) {
         pcf::addTruthCommand(app),    pcf::addBenchCommand(app),   pcf::addStabilityCommand(app),
         pcf::addViewCommand(app),     pcf::addExportCommand(app),  pcf::addVerifyCommand(app),
         pcf::addLessonCommand(app),   pcf::addAnimateCommand(app), pcf::addPickCommand(app),
-        pcf::addExerciseCommand(app),
+        pcf::addExerciseCommand(app), pcf::addAdviseCommand(app),
     };
 
     try {
@@ -94,6 +97,7 @@ int pcf::runCommandLine(int argc, char** argv) {
         return fail(e.path1().empty() ? e.code().message()
                                       : e.path1().string() + ": " + e.code().message());
     } catch (const std::exception& e) {
+        pcf::endProgressLine();
         std::fprintf(stderr, "pcfscope: internal error: %s\n", pcf::oneLine(e.what()).c_str());
         return 1;
     }

@@ -22,6 +22,7 @@ Command addRenderCommand(CLI::App& app);
 Command addTruthCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addStabilityCommand(CLI::App& app);
+Command addAdviseCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 Command addAnimateCommand(CLI::App& app);

@@ -7,6 +7,7 @@
 #include "app/cli_util.h"
 #include "app/frame_json.h"
 #include "kernel/trace_json.h"
+#include "render/frame_ops.h"
 #include "render/gl_context.h"
 
 namespace pcf {
@@ -130,8 +131,7 @@ void CompareView::follow(const Session& main) {
     const std::optional<ScenePoint>& point = main.point();
     for (int i = 0; i < parts(); ++i) {
         Session& p = *mParts[static_cast<size_t>(i)];
-        if (p.lesson().sourcePath != main.lesson().sourcePath)
-            p.loadLesson(main.lesson().sourcePath);
+        if (p.lesson().sourcePath != main.lesson().sourcePath) p.setLesson(main.lesson());
         if (p.step() != main.step()) p.goToStep(main.step());
         if (!sameLight(p.scene().light, main.scene().light)) p.setLight(main.scene().light);
         if (!sameCamera(p.scene().camera, main.scene().camera)) p.setCamera(main.scene().camera);
@@ -150,17 +150,15 @@ void CompareView::compose() { composeInto(mFrame.framebuffer.id()); }
 
 void CompareView::composeInto(GLuint fbo) {
     for (auto& p : mParts) p->compose();
-    glClearNamedFramebufferfv(fbo, GL_COLOR, 0, &BACKGROUND.x);
+    clearColour(fbo, BACKGROUND);
     for (int i = 0; i < parts(); ++i) {
         Rect r = partRect(i);
         GLuint src = mParts[static_cast<size_t>(i)]->frameFramebuffer();
         int top = mFrameSize.y - static_cast<int>(r.y);
         int x = static_cast<int>(r.x), w = static_cast<int>(r.w), h = static_cast<int>(r.h);
-        glNamedFramebufferReadBuffer(src, GL_COLOR_ATTACHMENT0);
-        glBlitNamedFramebuffer(src, fbo, 0, 0, w, h, x, top - h, x + w, top, GL_COLOR_BUFFER_BIT,
-                               GL_NEAREST);
+        blitColour(src, {0, 0, w, h}, fbo, {x, top - h, x + w, top});
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    bindFramebuffer(fbo);
     mCanvas.begin(mFrameSize);
     // The status line and the help as the lesson's frame has them; the help over everything.
     FramePlan chrome =
@@ -171,7 +169,7 @@ void CompareView::composeInto(GLuint fbo) {
     drawPlan(mCanvas, chrome.base);
     drawPlan(mCanvas, chrome.top);
     mCanvas.flush();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    bindFramebuffer(0);
 }
 
 // The flicker trace across the frame, between the parts' panels and the status line.

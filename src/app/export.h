@@ -62,8 +62,9 @@ void planExtras(OutputFiles& outputs, ExportPlan& plan, const Lesson& lesson,
 // (+ .json), added to `outputs` (checked like the rest; taken back on failure) when given. A
 // predict step's frames are its question's (STEM, STEM-pageN), then its answer's (STEM-reveal,
 // STEM-reveal-pageN).
-// `outputs` is committed when every frame is written, before the summary line says so.
-void exportFrames(const std::string& lessonPath, const ExportPlan& plan, glm::ivec2 size,
-                  bool presentation, bool progress, OutputFiles* outputs = nullptr);
+// `outputs` is committed when every frame is written, before the summary line says so. The
+// lesson is the one the command loaded and checked (loadLessonChecked), not read again.
+void exportFrames(const Lesson& lesson, const ExportPlan& plan, glm::ivec2 size, bool presentation,
+                  bool progress, OutputFiles* outputs = nullptr);
 
 }  // namespace pcf

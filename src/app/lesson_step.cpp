@@ -23,16 +23,6 @@ void checkStep(const LessonStep& step, const std::string& path, int number,
     auto problem = [&](int line, const std::string& what) {
         problems.emplace_back(path, line, which + what);
     };
-    if (!step.focus.empty() && !parseFocus(step.focus)) {
-        problem(step.focusLine, " focus '" + step.focus + "' is not one of: " + focusNames());
-    }
-    if (step.animate) {
-        try {
-            stepAnimationOptions(step, path, number);  // checks
-        } catch (const InputError& e) {
-            problems.push_back(e);
-        }
-    }
     if (step.predict) {
         if (auto why = predictStepProblem(*step.predict)) problem(step.predict->line, " " + *why);
     }
@@ -81,19 +71,24 @@ void checkLessonSteps(const Lesson& lesson, const std::string& path,
     }
 }
 
+void requireSteps(const Lesson& lesson, const std::string& path) {
+    if (lesson.steps.empty()) throw UsageError(path + ": the lesson has no steps");
+}
+
 Lesson loadLessonChecked(const std::string& path) {
     Lesson lesson = parseLessonFile(path);
-    if (lesson.steps.empty()) throw UsageError(path + ": the lesson has no steps");
+    requireSteps(lesson, path);
     std::vector<InputError> problems;
     checkLessonSteps(lesson, path, problems);
     if (!problems.empty()) throw problems.front();
     return lesson;
 }
 
-std::vector<InputError> lessonProblems(const std::string& path) {
+std::vector<InputError> lessonProblems(const std::string& path, Lesson* read) {
     std::vector<InputError> problems;
     Lesson lesson = parseLessonString(readInputFile(path), path, problems);
     checkLessonSteps(lesson, path, problems);
+    if (read) *read = std::move(lesson);
     std::stable_sort(problems.begin(), problems.end(),
                      [](const InputError& a, const InputError& b) { return a.line() < b.line(); });
     return problems;
@@ -132,7 +127,7 @@ std::vector<LayoutBox> stepChartBoxes(const LessonStep& step, const InspectorLay
 
 Focus stepFocus(const LessonStep& step) {
     if (!step.chart.empty()) return Focus{.chart = true};
-    if (std::optional<Focus> f = parseFocus(step.focus)) return *f;
+    if (step.focus) return *step.focus;
     // A heat map is drawn over the scene, and a nearest lookup's hard edge is seen there.
     if (step.settings.heatmap || methodInfo(step.settings.method).hard) {
         return Focus{.scene = true, .neighbourhood = true};

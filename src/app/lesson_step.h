@@ -17,13 +17,17 @@ namespace pcf {
 // Parses a lesson and reads every bench.csv its steps chart, so that a broken chart is reported
 // at its lesson line before anything is drawn. Throws InputError (file:line) or UsageError.
 Lesson loadLessonChecked(const std::string& path);
-// The checks loadLessonChecked makes once the file is parsed (each step's focus, animation,
-// charts, and the chart facts its claims name), every problem appended to `problems`.
+// Throws UsageError "PATH: the lesson has no steps" when it has none (a command needs a step).
+void requireSteps(const Lesson& lesson, const std::string& path);
+// The checks loadLessonChecked makes once the file is parsed that need more than the lesson
+// parser knows (a predict step's answer, a claim about motion on a step that moves, each step's
+// chart and the chart facts its claims name), every problem appended to `problems`.
 void checkLessonSteps(const Lesson& lesson, const std::string& path,
                       std::vector<InputError>& problems);
 // Every problem of a lesson file, the parser's and checkLessonSteps's, in line order; empty: the
-// file is good. `lesson check` reports them all (loadLessonChecked throws the first).
-std::vector<InputError> lessonProblems(const std::string& path);
+// file is good. `lesson check` reports them all (loadLessonChecked throws the first). `lesson`,
+// when given, receives the lesson as far as it could be read (whole when there is no problem).
+std::vector<InputError> lessonProblems(const std::string& path, Lesson* lesson = nullptr);
 
 // A chart step's chart (LessonStep::chart, with its chart_highlight) at the frame's type floors.
 // `presentation`: text at the projector's floors and only the dots the step names (and the

@@ -138,16 +138,20 @@ void OutputFiles::commit() {
     mCommitted = true;
 }
 
+// Staged files replace what their final names lead to, as every writer does (image_io.h
+// outputTarget): a final name that is a link is written through, not replaced by a file.
 void OutputFiles::commitStaged(const fs::path& stagingDir, const fs::path& outDir,
                                const std::vector<std::string>& names) {
     std::shared_lock gate(outputWriteGate());
-    for (const std::string& name : names) fs::rename(stagingDir / name, outDir / name);
+    for (const std::string& name : names) {
+        fs::rename(stagingDir / name, outputTarget((outDir / name).string()));
+    }
     commit();
 }
 
 void OutputFiles::commitMoves(const std::vector<std::pair<fs::path, fs::path>>& moves) {
     std::shared_lock gate(outputWriteGate());
-    for (const auto& [staged, final] : moves) fs::rename(staged, final);
+    for (const auto& [staged, final] : moves) fs::rename(staged, outputTarget(final.string()));
     commit();
 }
 
@@ -222,9 +226,48 @@ void OutputFiles::prepareDirectory(const std::string& option, const fs::path& ta
     ::unlink(probe.c_str());
 }
 
+namespace {
+
+// A path as outputs are compared: absolute, its links resolved as far as it exists.
+fs::path claimKey(const fs::path& path) {
+    std::error_code ec;
+    fs::path key = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    return ec ? fs::absolute(path).lexically_normal() : key;
+}
+
+}  // namespace
+
+// One path as a file and as a folder (`-o X --png X`, where the folder made for --png then made
+// -o "a directory") is refused before anything is made. A file added again is the same output
+// (a command's own second look at it: export's page files); a folder may be named again (several
+// outputs in one folder). Returns whether `path` is new to this set. Called under registryMutex.
+bool OutputFiles::claim(const std::string& option, const fs::path& path, bool directory) {
+    fs::path key = claimKey(path);
+    for (const Claim& c : mClaims) {
+        if (c.key != key) continue;
+        if (c.directory == directory) return false;
+        throw UsageError(quoted(option, path) + " and " + quoted(c.option, c.path) +
+                         " are the same path, as a file and as a folder");
+    }
+    mClaims.push_back({option, path, key, directory});
+    return true;
+}
+
+void OutputFiles::addEach(const std::string& option, const std::vector<fs::path>& paths) {
+    for (size_t k = 0; k < paths.size(); ++k) {
+        for (size_t before = 0; before < k; ++before) {
+            if (claimKey(paths[before]) == claimKey(paths[k])) {
+                throw UsageError(quoted(option, paths[k]) + " is given twice");
+            }
+        }
+    }
+    for (const fs::path& path : paths) add(option, path);
+}
+
 void OutputFiles::add(const std::string& option, const fs::path& path) {
     if (path.empty()) throw UsageError(option + " needs a file name");
     std::lock_guard lock(registryMutex());
+    if (!claim(option, path, false)) return;
     std::error_code ec;
     // symlink_status: a link is the user's even when it points nowhere; never take it for free.
     bool exists = fs::symlink_status(path, ec).type() != fs::file_type::not_found;
@@ -254,6 +297,7 @@ void OutputFiles::addFilesIn(const std::string& option, const fs::path& dir,
 void OutputFiles::addDirectory(const std::string& option, const fs::path& dir) {
     if (dir.empty()) throw UsageError(option + " needs a directory");
     std::lock_guard lock(registryMutex());
+    if (!claim(option, dir, true)) return;
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
         throw UsageError(quoted(option, dir) + " is not a directory");
@@ -299,11 +343,31 @@ void installInterruptCleanup() {
             removed = removed || !files->mNewFiles.empty() || !files->mCreatedDirs.empty();
             files->takeBack();
         }
+        endProgressLine();  // a line of its own, not after "animate [###...] 4/3600"
         std::fprintf(stderr, "pcfscope: interrupted (%s)%s\n", sig == SIGINT ? "SIGINT" : "SIGTERM",
                      removed ? "; removed the files this command had written" : "");
         std::fflush(stderr);
         _exit(128 + sig);
     }).detach();
+}
+
+std::string withFinalNames(std::string message) {
+    // ".pcfscope-WHAT-PID/", WHAT lower-case letters: StagingDir's names, this process's.
+    const std::string prefix = ".pcfscope-";
+    const std::string end = "-" + std::to_string(getpid()) + "/";
+    for (size_t at = message.find(prefix); at != std::string::npos; at = message.find(prefix, at)) {
+        size_t word = at + prefix.size();
+        size_t stop = word;
+        while (stop < message.size() && std::islower(static_cast<unsigned char>(message[stop]))) {
+            ++stop;
+        }
+        if (stop > word && message.compare(stop, end.size(), end) == 0) {
+            message.erase(at, stop + end.size() - at);
+        } else {
+            at = word;
+        }
+    }
+    return message;
 }
 
 StagingDir::StagingDir(const fs::path& outDir, const std::string& what, const std::string& subdir)

@@ -30,8 +30,14 @@ class OutputFiles {
     // meanwhile is refused ("another pcfscope is writing into DIR"). Throws UsageError naming
     // the option, the path and the reason; nothing is left behind on failure.
     void add(const std::string& option, const std::filesystem::path& path);
-    // The same for a directory the command writes into (created now if missing).
+    // The same for a directory the command writes into (created now if missing). A path added as
+    // a file and as a directory is refused (UsageError naming both options); one added again as
+    // the same kind is the same output.
     void addDirectory(const std::string& option, const std::filesystem::path& dir);
+    // add() for each of `paths`, the files one option names (animate's -o list): two that are the
+    // same file by any spelling ("a.mp4", "./a.mp4") are refused before any is added: the
+    // command would write one over the other.
+    void addEach(const std::string& option, const std::vector<std::filesystem::path>& paths);
     // The directory and each of `names` in it (a command's set of files in -o).
     void addFilesIn(const std::string& option, const std::filesystem::path& dir,
                     const std::vector<std::string>& names);
@@ -74,6 +80,15 @@ class OutputFiles {
                           const std::filesystem::path& dir);
     void lockFolder(const std::string& option, const std::filesystem::path& target,
                     const std::filesystem::path& dir);
+    bool claim(const std::string& option, const std::filesystem::path& path, bool directory);
+
+    // A path this set was given, as given and as compared (absolute, links resolved).
+    struct Claim {
+        std::string option;
+        std::filesystem::path path;
+        std::filesystem::path key;
+        bool directory = false;
+    };
     void unlockFolders();
 
     bool mForce;
@@ -83,6 +98,7 @@ class OutputFiles {
     std::vector<std::pair<std::string, std::filesystem::path>> mInputs;
     std::vector<std::filesystem::path> mDirs;     // folders written into (scratch may be there)
     std::vector<std::pair<dev_t, ino_t>> mLocks;  // output folders locked (lockFolder)
+    std::vector<Claim> mClaims;                   // every file and folder added (claim)
 };
 
 // A scratch folder ".pcfscope-<what>-<pid>" inside DIR that a command stages its outputs in (and
@@ -108,6 +124,11 @@ class StagingDir {
 // exits with 128 + the signal's number: 130 for SIGINT, 143 for SIGTERM (the shell's
 // convention). Commands need no checks of their own.
 void installInterruptCleanup();
+
+// `message` with the scratch folders of this process taken out of its paths: a failure while
+// writing a staged file (a full disk) names the file the user asked for, "out/bench.csv", not
+// "out/.pcfscope-bench-4711/bench.csv". The command line says every error through it.
+std::string withFinalNames(std::string message);
 
 // Throws UsageError unless `path` ends in `extension` (".png", ".exr"; any case): the file's
 // name should say what is in it.

@@ -1,8 +1,8 @@
-// predict.h: what a predict step's question hides (DESIGN.md 8b, Students). The answer is a
-// placeholder (lesson/lesson_predict.h); each placeholder a question may ask for shows one kind
-// of number in the frame, and asking for it hides those numbers, and the ones it follows from
-// at a glance, until the reveal: a visibility hides the result and the bits (the depths and ref
-// stay, to compare), a weight the weights, a fraction the fractions and the weights, a ref the
+// predict.h: what a predict step's question hides (docs/teaching.md, "Predict, then reveal"). The
+// answer is a placeholder (lesson/lesson_predict.h); each placeholder a question may ask for shows
+// one kind of number in the frame, and asking for it hides those numbers, and the ones it follows
+// from at a glance, until the reveal: a visibility hides the result and the bits (the depths and
+// ref stay, to compare), a weight the weights, a fraction the fractions and the weights, a ref the
 // refs and the bias amount, a count the fetch counts. The formula, which holds them all, is
 // hidden with any of them (overlay/inspector.h: HiddenNumbers).
 #pragma once

@@ -51,26 +51,37 @@ void SettingOptions::addTo(CLI::App* sub, std::initializer_list<ParamGroup> grou
             std::find(except.begin(), except.end(), p.key) != except.end()) {
             continue;
         }
-        mParams.push_back(&p);
-        std::string flag = settingFlag(p.key);
-        std::string help = std::string(p.help);
-        std::visit(
-            [&](const auto& field) {
-                using F = std::decay_t<decltype(field)>;
-                if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
-                    sub->add_flag(flag, mValues.*field, help);
-                } else if constexpr (std::is_same_v<F, int ShadowSettings::*> ||
-                                     std::is_same_v<F, float ShadowSettings::*>) {
-                    sub->add_option(flag, mValues.*field,
-                                    help + ", default " + settingText(p, defaults));
-                } else {
-                    std::string& text = mNames[std::string(p.key)];
-                    text = settingText(p, defaults);
-                    sub->add_option(flag, text, help + ": " + field.known() + ", default " + text);
-                }
-            },
-            p.field);
+        addParam(p, defaults);
     }
+}
+
+void SettingOptions::addKeys(CLI::App* sub, std::initializer_list<std::string_view> keys,
+                             const ShadowSettings& defaults) {
+    mSub = sub;
+    mValues = defaults;
+    for (std::string_view key : keys) addParam(*findParam(key), defaults);
+}
+
+void SettingOptions::addParam(const ParamInfo& p, const ShadowSettings& defaults) {
+    mParams.push_back(&p);
+    std::string flag = settingFlag(p.key);
+    std::string help = std::string(p.help);
+    std::visit(
+        [&](const auto& field) {
+            using F = std::decay_t<decltype(field)>;
+            if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
+                mSub->add_flag(flag, mValues.*field, help);
+            } else if constexpr (std::is_same_v<F, int ShadowSettings::*> ||
+                                 std::is_same_v<F, float ShadowSettings::*>) {
+                mSub->add_option(flag, mValues.*field,
+                                 help + ", default " + settingText(p, defaults));
+            } else {
+                std::string& text = mNames[std::string(p.key)];
+                text = settingText(p, defaults);
+                mSub->add_option(flag, text, help + ": " + field.known() + ", default " + text);
+            }
+        },
+        p.field);
 }
 
 bool SettingOptions::given(std::string_view key) const {
@@ -89,12 +100,26 @@ const std::string& SettingOptions::name(std::string_view key) const {
 
 void SettingOptions::applyTo(ShadowSettings& s, bool onlyGiven) const {
     for (const ParamInfo* p : mParams) {
-        if (onlyGiven && !given(p->key)) continue;
+        bool isGiven = given(p->key);
+        if (onlyGiven && !isGiven) continue;
         std::visit(
             [&](const auto& field) {
                 using F = std::decay_t<decltype(field)>;
-                if constexpr (std::is_member_object_pointer_v<F>) {
+                if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
                     s.*field = mValues.*field;
+                } else if constexpr (std::is_member_object_pointer_v<F>) {
+                    // A number given is read again from the text as typed, by the table's reader:
+                    // its range checked, the value in a message as given ("--light-size 11",
+                    // not CLI11's float of it), whether or not the method uses it.
+                    if (!isGiven) {
+                        s.*field = mValues.*field;
+                        return;
+                    }
+                    const std::string& typed =
+                        mSub->get_option(settingFlag(p->key))->results().back();
+                    if (std::optional<ParamProblem> why = setParamFromText(s, *p, typed)) {
+                        throw UsageError(cliWords(*why));
+                    }
                 } else {
                     s.*field.field = parseNamed(*p, field, mNames.find(p->key)->second);
                 }
@@ -141,11 +166,18 @@ std::string settingsJson(const ShadowSettings& s, const PcfParams& pcss,
 }
 
 void checkBiasOptions(const ShadowSettings& s) {
-    if (auto why = cliBiasProblem(s)) throw UsageError(*why);
+    if (auto why = cliRangeProblem(s)) throw UsageError(*why);
     if (auto why = validateBias(static_cast<int>(s.bias), s.method)) throw UsageError(*why);
 }
 
-void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
+void checkLightSize(const Light& light, const ShadowSettings& s) {
+    if (std::optional<ParamProblem> why = lightSizeProblem(light, s)) {
+        throw UsageError(cliWords(*why));
+    }
+}
+
+void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene,
+                          std::initializer_list<std::string_view> except) {
     mDefaultScene = defaultScene;
     mSub = sub;
     sub->add_option("--lesson", lesson,
@@ -156,9 +188,10 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene) {
     sub->add_option("--scene-file", sceneFile, "scene file (TOML)");
     if (picture) {
         shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map, ParamGroup::View},
-                     defaults);
+                     defaults, except);
     } else {
-        shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map}, defaults);
+        shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map}, defaults,
+                     except);
     }
     sub->add_option("--polygon-offset", polygonOffset,
                     "slope-scaled bias in the shadow pass: FACTOR,UNITS for glPolygonOffset");
@@ -179,8 +212,6 @@ RenderSettings RenderOptions::settings() const {
         requireIntRange("--step", lessonStep, 1, static_cast<int>(l.steps.size()));
         s = renderSettingsFor(l.steps[static_cast<size_t>(lessonStep - 1)].settings, frame);
     }
-    checkGivenKernelOptions(shadow.given("kernel"), shadow.values().kernel, shadow.given("radius"),
-                            shadow.values().radius);
     shadow.applyTo(s, fromLesson);
     if (auto why = cliParamsProblem(s.pcfParams())) throw UsageError(*why);
     checkBiasOptions(s);

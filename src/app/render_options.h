@@ -26,6 +26,10 @@ class SettingOptions {
     // command's.
     void addTo(CLI::App* sub, std::initializer_list<ParamGroup> groups,
                const ShadowSettings& defaults, std::initializer_list<std::string_view> except = {});
+    // Registers only the parameters named by `keys` (e.g. a command that takes the light's size
+    // and nothing else of the settings).
+    void addKeys(CLI::App* sub, std::initializer_list<std::string_view> keys,
+                 const ShadowSettings& defaults);
     // Whether the user gave the parameter's option.
     bool given(std::string_view key) const;
     // The name given for a named parameter (or its default): "pcf-gather"; set it to override.
@@ -33,12 +37,17 @@ class SettingOptions {
     const std::string& name(std::string_view key) const;
     // The number given for a numeric parameter (or its default), e.g. to check it before use.
     const ShadowSettings& values() const { return mValues; }
-    // Sets each registered parameter in `s` (only those given when onlyGiven): numbers and flags
-    // as given, names parsed, an unknown one a UsageError naming its option. Ranges are checked
-    // by the caller (cliParamsProblem, checkBiasOptions, ...).
+    // Sets each registered parameter in `s` (only those given when onlyGiven): flags as given,
+    // numbers given read from their text by the parameter table (kernel/settings.h
+    // setParamFromText: decimal, in the table's range, the value as typed in the message),
+    // names parsed; any problem a UsageError naming its option. What depends on the method
+    // (tent's kernel sizes, the bias a method takes) is the caller's (cliParamsProblem,
+    // checkBiasOptions).
     void applyTo(ShadowSettings& s, bool onlyGiven) const;
 
   private:
+    void addParam(const ParamInfo& p, const ShadowSettings& defaults);
+
     CLI::App* mSub = nullptr;
     std::vector<const ParamInfo*> mParams;
     ShadowSettings mValues;
@@ -65,6 +74,9 @@ TexelKind depthFormatOption(const std::string& name);  // --depth-format
 // The bias parameters' ranges, then whether the mode combines with the method: UsageError in
 // the flags' words.
 void checkBiasOptions(const ShadowSettings& s);
+// --light-size on a spot light, or --light-radius on a directional one: UsageError in the flags'
+// words (scene/light.h lightSizeProblem).
+void checkLightSize(const Light& light, const ShadowSettings& s);
 
 struct RenderOptions {
     std::string scene;      // preset name
@@ -82,8 +94,10 @@ struct RenderOptions {
     bool picture = false;
 
     // Registers the options on `sub`; `defaultScene` is used when neither --scene nor
-    // --scene-file is given (empty: one of them is required).
-    void addTo(CLI::App* sub, const std::string& defaultScene);
+    // --scene-file is given (empty: one of them is required). The parameters named in `except`
+    // are left out (a command that sets them itself).
+    void addTo(CLI::App* sub, const std::string& defaultScene,
+               std::initializer_list<std::string_view> except = {});
 
     // The settings, checked; throws UsageError naming the option.
     RenderSettings settings() const;

@@ -16,6 +16,7 @@
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_pick.h"
 #include "lesson/lesson_text.h"
+#include "render/frame_ops.h"
 
 namespace pcf {
 
@@ -218,8 +219,7 @@ void uploadBottomUp(const OffscreenTarget& target, int w, int h, const std::vect
             rgba.begin() + static_cast<std::ptrdiff_t>(row * static_cast<size_t>(h - 1 - y)), row,
             flipped.begin() + static_cast<std::ptrdiff_t>(row * static_cast<size_t>(y)));
     }
-    glTextureSubImage2D(target.colors[0].id(), 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE,
-                        flipped.data());
+    uploadRgba8(target.colors[0].id(), w, h, flipped);
 }
 
 }  // namespace
@@ -238,9 +238,8 @@ void Session::blitThumbnail(const InspectorLayout& layout) {
     int frameH = mLayout.frameSize.y;
     int x = static_cast<int>(r.x);
     int top = frameH - static_cast<int>(r.y);
-    glNamedFramebufferReadBuffer(mThumbnail.framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mThumbnail.framebuffer.id(), mTarget, 0, 0, side, side, x, top - side,
-                           x + side, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    blitColour(mThumbnail.framebuffer.id(), {0, 0, side, side}, mTarget,
+               {x, top - side, x + side, top});
 }
 
 void Session::setHelp(bool on) { mHelp = on; }
@@ -288,9 +287,8 @@ void Session::blitChart(const InspectorLayout& layout) {
     int frameH = mLayout.frameSize.y;
     int x = static_cast<int>(layout.scene.x);
     int top = frameH - static_cast<int>(layout.scene.y);
-    glNamedFramebufferReadBuffer(mChart.framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mChart.framebuffer.id(), mTarget, 0, 0, size.x, size.y, x, top - size.y,
-                           x + size.x, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    blitColour(mChart.framebuffer.id(), {0, 0, size.x, size.y}, mTarget,
+               {x, top - size.y, x + size.x, top});
 }
 
 void Session::renderScene() {
@@ -413,12 +411,12 @@ void Session::composeInto(GLuint fbo) {
     mSceneTexels = plan.sceneTexels;
     // blitChart above placed them with the chart it drew or kept.
     if (!chart.empty()) mBoxes.insert(mBoxes.end(), mChartBoxes.begin(), mChartBoxes.end());
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    bindFramebuffer(fbo);
     mCanvas.begin(frame);
     drawPlan(mCanvas, plan.base);
     mCanvas.flush();
     blitThumbnail(layout);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    bindFramebuffer(fbo);
     mCanvas.begin(frame);
     drawPlan(mCanvas, plan.top);
     // (The heat map is drawn over a full-size scene only, not an inset.)
@@ -426,7 +424,7 @@ void Session::composeInto(GLuint fbo) {
     if (heat) drawHeatLegend();
     if (mFlicker && chart.empty()) drawFlicker(layout);
     mCanvas.flush();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    bindFramebuffer(0);
     if (!heat) mHeatValues.clear();
 }
 
@@ -441,14 +439,11 @@ void Session::blitSceneOrChart(GLuint fbo, const InspectorLayout& layout) {
         const Rect& r = layout.scene;
         int x0 = static_cast<int>(r.x), x1 = static_cast<int>(r.right());
         int top = frame.y - static_cast<int>(r.y), bottom = frame.y - static_cast<int>(r.bottom());
-        glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
-        glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, x0,
-                               bottom, x1, top, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        blitColour(mRenderer->frameFramebuffer(), {0, 0, scene.x, scene.y}, fbo,
+                   {x0, bottom, x1, top}, true);
     } else if (chart.empty()) {
-        glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
-        glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, scene.x, scene.y, 0,
-                               frame.y - scene.y, scene.x, frame.y, GL_COLOR_BUFFER_BIT,
-                               GL_NEAREST);
+        blitColour(mRenderer->frameFramebuffer(), {0, 0, scene.x, scene.y}, fbo,
+                   {0, frame.y - scene.y, scene.x, frame.y});
         if (mHeatmap) blitHeatmap();
     } else {
         blitChart(layout);
@@ -475,9 +470,8 @@ void Session::blitHeatmap() {
     }
     // Texture row 0 holds the image's bottom row (uploadBottomUp): a straight copy.
     int frameH = mLayout.frameSize.y;
-    glNamedFramebufferReadBuffer(mHeat.framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mHeat.framebuffer.id(), mTarget, 0, 0, size.x, size.y, 0,
-                           frameH - size.y, size.x, frameH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    blitColour(mHeat.framebuffer.id(), {0, 0, size.x, size.y}, mTarget,
+               {0, frameH - size.y, size.x, frameH});
 }
 
 // The legend in the scene's bottom-left corner: the colour ramp from 1/16 to 16 screen pixels
@@ -594,7 +588,8 @@ std::string Session::stepJson() const {
         {"text_page", mTextPage + 1},
         {"text_pages", mTextPages},
         {"layout", layoutJson(mBoxes)}};
-    // A question's frame and its answer's (DESIGN.md 8b): the roles the question does not draw.
+    // A question's frame and its answer's (docs/teaching.md, "Predict, then reveal"): the roles the
+    // question does not draw.
     if (predictStep()) {
         Json masked = Json::array();
         for (const std::string& role : hiddenRoles(hiddenNumbers())) masked.push_back(role);

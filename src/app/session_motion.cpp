@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "app/session.h"
+#include "render/frame_ops.h"
 
 namespace pcf {
 
@@ -65,11 +66,10 @@ std::optional<float> Session::visibilityWith(int method, int kernel) const {
 void Session::composeSceneOnly(GLuint fbo) {
     mTarget = fbo;
     glm::ivec2 frame = mLayout.frameSize;
-    glNamedFramebufferReadBuffer(mRenderer->frameFramebuffer(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(mRenderer->frameFramebuffer(), fbo, 0, 0, frame.x, frame.y, 0, 0,
-                           frame.x, frame.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    blitColour(mRenderer->frameFramebuffer(), {0, 0, frame.x, frame.y}, fbo,
+               {0, 0, frame.x, frame.y});
     mBoxes.clear();
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    bindFramebuffer(fbo);
     mCanvas.begin(frame);
     float r = std::max(6.0f, std::round(frame.y / 90.0f));
     glm::vec2 centre = glm::vec2(mPixel) + 0.5f;
@@ -77,7 +77,7 @@ void Session::composeSceneOnly(GLuint fbo) {
     mCanvas.ring(centre, r, 1.5f, FLICKER_MAIN_COLOUR);
     if (mFlicker) drawFlicker(mLayout);
     mCanvas.flush();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    bindFramebuffer(0);
 }
 
 void Session::drawFlicker(const InspectorLayout& layout) {

@@ -52,7 +52,7 @@ void StepPlayer::afterChange() {
     mStep = step;
     mFrame = 0;
     // Checked when the lesson was loaded (loadLessonChecked), so this does not throw.
-    mOptions = stepAnimationOptions(s, lesson.sourcePath, step + 1);
+    mOptions = stepAnimationOptions(s);
     mFps = s.animate->fps;
     // The frames start from the state now on screen (a key may have changed it).
     mAnimation = std::make_unique<Animation>(mSession, mOptions);

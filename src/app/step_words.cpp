@@ -32,11 +32,6 @@ struct StatusPart {
 
 bool usesKernel(const LessonSettings& s) { return methodInfo(s.method).usesKernel; }
 bool usesRadius(const LessonSettings& s) { return methodInfo(s.method).usesRadius; }
-bool anyBias(const LessonSettings& s) { return s.bias != BiasMode::None; }
-template <BiasMode MODE>
-bool biasIs(const LessonSettings& s) {
-    return s.bias == MODE;
-}
 bool gridMoved(const LessonSettings& s) { return s.originShift != 0.0f || s.snap; }
 std::string gridText(const LessonSettings& s) {
     return formatNumber(s.originShift) + " texel" + (s.snap ? " snapped" : "");
@@ -57,12 +52,12 @@ const StatusPart STATUS_PARTS[] = {
     {"radius", " R=", usesRadius},
     {"rotate", " rotated", usesRadius, "false", true},
     {"bias", "   bias "},
-    {"constant_bias", " ", anyBias},
-    {"slope_bias", " +", biasIs<BiasMode::Slope>},
-    {"slope_max", "tan<=", biasIs<BiasMode::Slope>},
-    {"normal_offset", " k=", biasIs<BiasMode::Normal>},
-    {"soft_scale", " x", biasIs<BiasMode::Soft>},
-    {"rpdb_max", " dz<=", biasIs<BiasMode::ReceiverPlane>},
+    {"constant_bias", " "},
+    {"slope_bias", " +"},
+    {"slope_max", "tan<="},
+    {"normal_offset", " k="},
+    {"soft_scale", " x"},
+    {"rpdb_max", " dz<="},
     {"cull", "   cull "},
     {"map_size", "   map "},
     {"depth_format", " "},
@@ -89,9 +84,11 @@ std::string settingsSummary(const LessonSettings& s, bool hideBiasAmounts) {
     std::string line;
     for (const StatusPart& part : STATUS_PARTS) {
         if (part.shows && !part.shows(s)) continue;
+        const ParamInfo* p = part.text ? nullptr : findParam(part.key);
+        // A bias parameter shows under the modes it acts under (the table's biasModes).
+        if (p && p->biasModes != 0 && !paramActsUnder(*p, s.bias)) continue;
         std::string value = statusValue(part, s);
         if (value == part.quiet) continue;
-        const ParamInfo* p = part.text ? nullptr : findParam(part.key);
         bool amount = p && p->group == ParamGroup::Bias && part.key != "bias";
         if (hideBiasAmounts && amount) value = HIDDEN_NUMBER;
         line += std::string(part.before) + (part.bare ? "" : value);

@@ -22,6 +22,7 @@
 #include "app/viewer_split.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "render/frame_ops.h"
 #include "render/glfw_window_context.h"
 #include "render/image_io.h"
 
@@ -46,10 +47,11 @@ std::string freeStem(const std::string& dir, const std::string& base) {
 
 class Viewer {
   public:
-    Viewer(const ViewerOptions& o, GlfwWindowContext& window)
+    // `lesson`: o.lesson as runViewer loaded and checked it.
+    Viewer(const ViewerOptions& o, GlfwWindowContext& window, Lesson lesson)
         : mWindow(window), mSession(window.framebufferSize(), o.presentation) {
         mLessons = builtInLessons();
-        mSession.loadLesson(o.lesson);
+        mSession.setLesson(std::move(lesson));
         mSession.setInteractive(true);  // the window's frames name its keys
         auto it = std::find(mLessons.begin(), mLessons.end(), o.lesson);
         mLessonIndex = it == mLessons.end() ? -1 : static_cast<int>(it - mLessons.begin());
@@ -347,10 +349,10 @@ void benchFrames(Session& session, GlfwWindowContext& window, int frames) {
                 session.setPixel(session.pixel() + glm::ivec2(k % 2 ? -1 : 1, 0));
             auto start = Clock::now();
             composeToWindow(session, window);
-            glFinish();
+            finishGpu();
             auto composed = Clock::now();
             window.swapBuffers();
-            glFinish();
+            finishGpu();
             auto end = Clock::now();
             frame.push_back(ms(start, end));
             compose.push_back(ms(start, composed));
@@ -396,7 +398,7 @@ void runInteractive(Viewer& viewer, GlfwWindowContext& window) {
     while (!glfwWindowShouldClose(window.window()) && !viewer.quit()) {
         auto start = std::chrono::steady_clock::now();
         viewer.split().composeInto(session, 0, window.framebufferSize());
-        glFinish();
+        finishGpu();
         double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();
@@ -425,7 +427,7 @@ int runViewer(const ViewerOptions& o) {
 
     std::unique_ptr<GlfwWindowContext> window =
         GlfwWindowContext::create(o.windowSize.x, o.windowSize.y, "pcfscope", true);
-    Viewer viewer(o, *window);
+    Viewer viewer(o, *window, std::move(lesson));
     InputBinding input(window->window(), viewer);
     for (const ScriptedInput& k : keys) {
         // As on screen, where every key lands on a composed frame: the step's pages are known,

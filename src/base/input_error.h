@@ -1,5 +1,6 @@
 // input_error.h: the one exception for bad input (a malformed or missing scene or lesson file, a
-// value out of range). The app maps it to exit code 2 (DESIGN.md section 6).
+// value out of range). The app maps it to exit code 2 (docs/user-guide.md, "Files, errors and
+// interrupts").
 #pragma once
 
 #include <stdexcept>

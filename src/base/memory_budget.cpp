@@ -56,12 +56,12 @@ std::optional<std::uint64_t> availableMemoryBytes() {
     return least;
 }
 
-void requireMemory(const std::string& what, std::uint64_t bytes) {
+void requireMemory(const std::string& what, std::uint64_t bytes, bool force) {
     std::optional<std::uint64_t> available = availableMemoryBytes();
-    if (!available || bytes <= *available) return;
+    if (!available || bytes <= *available || force) return;
     throw InputError(what, 0,
                      "needs about " + gib(bytes) + " of memory; " + gib(*available) +
-                         " is available (use a smaller size)");
+                         " is available (use a smaller size, or -f to start it anyway)");
 }
 
 }  // namespace pcf

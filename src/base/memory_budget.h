@@ -15,8 +15,9 @@ namespace pcf {
 std::optional<std::uint64_t> availableMemoryBytes();
 
 // Throws InputError(what, 0, "needs about 9.8 GiB of memory; 7.5 GiB is available") when
-// `bytes` exceeds availableMemoryBytes(). `what` names the work, e.g. "--size 8192x8192".
-void requireMemory(const std::string& what, std::uint64_t bytes);
+// `bytes` exceeds availableMemoryBytes(), unless `force` (-f/--force: start it anyway). `what`
+// names the work, e.g. "--size 8192x8192".
+void requireMemory(const std::string& what, std::uint64_t bytes, bool force = false);
 
 // A command's estimate: `base` bytes (the process, the GL driver) plus `perPixel` bytes for each
 // of width x height pixels (in 64 bits: 8192 x 8192 x 420 overflows 32).

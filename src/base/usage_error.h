@@ -1,5 +1,6 @@
 // usage_error.h: bad input on the command line, or a name on it that names nothing (a lesson, a
-// scene). The app prints what() on one line and exits 2 (DESIGN.md section 6), as for InputError.
+// scene). The app prints what() on one line and exits 2 (docs/user-guide.md, "Files, errors and
+// interrupts"), as for InputError.
 #pragma once
 
 #include <stdexcept>

@@ -1,8 +1,8 @@
-// deck.h: a lesson's exported frames as one file to teach from or hand out (DESIGN.md 8b,
-// Students): an HTML deck (one self-contained file, one <section> per frame, every image, video
-// and script inside it as data), a PDF deck (one page per frame, the frame's pixels at the frame's
-// size) and an A4 handout (the frames two to a page, the step's words and the trace's table as
-// text beneath). Each is made from the frames `export` wrote, PNG and JSON sidecar, so a deck
+// deck.h: a lesson's exported frames as one file to teach from or hand out (docs/teaching.md,
+// "The handout"): an HTML deck (one self-contained file, one <section> per frame, every image,
+// video and script inside it as data), a PDF deck (one page per frame, the frame's pixels at the
+// frame's size) and an A4 handout (the frames two to a page, the step's words and the trace's table
+// as text beneath). Each is made from the frames `export` wrote, PNG and JSON sidecar, so a deck
 // shows exactly what the frames show.
 #pragma once
 

@@ -1,5 +1,5 @@
-// bias.h: the bias modes by name (the command line's, the lesson files', DESIGN.md 2), their
-// parameters, and which methods each can combine with. The per-tap math is in
+// bias.h: the bias modes by name (the command line's, the lesson files': docs/methods.md, "Bias
+// modes"), their parameters, and which methods each can combine with. The per-tap math is in
 // shaders/shared/pcf_kernel.h (pcfRefAt, pcfCompareSoft, pcfInterpolatedCompare); the per-lookup
 // part (constant, slope, normal offset) is applied where the normal is known: shaders/scene.frag.
 #pragma once
@@ -80,6 +80,6 @@ std::string biasNameList();
 // interpolated is a hard comparison (nearest only).
 std::optional<std::string> validateBias(int mode, int method);
 
-// Their ranges are the parameter table's: checkBiasSettings (kernel/settings.h).
+// Their ranges are the parameter table's: checkSettingRanges (kernel/settings.h).
 
 }  // namespace pcf

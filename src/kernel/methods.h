@@ -149,7 +149,7 @@ constexpr int MIN_KERNEL = 1;
 constexpr int MAX_KERNEL = 8;
 constexpr float MAX_POISSON_RADIUS = 64.0f;  // texels
 
-// Parameters with the defaults of DESIGN.md: N = 3, radius 1 texel, no rotation.
+// Parameters with the defaults of docs/methods.md: N = 3, radius 1 texel, no rotation.
 PcfParams makeParams(int method, int kernel = 3, float radius = 1.0f,
                      vec2 rotation = vec2(1.0f, 0.0f));
 

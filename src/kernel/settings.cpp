@@ -1,6 +1,7 @@
 #include "kernel/settings.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <span>
@@ -23,8 +24,12 @@ std::string nameOf(T value) {
 }
 constexpr std::string_view DEPTH_UNITS = "light depth units";
 
+// Every mode but none subtracts the constant bias (kernel/bias.h).
+constexpr unsigned BIASED_MODES = ((1u << PCF_BIAS_COUNT) - 1u) & ~biasModeBit(BiasMode::None);
+
 // The one parameter table (settings.h ParamInfo). Ranges are the named limits of methods.h and
-// this header; checkBiasSettings checks the bias parameters' here, checkParams the filter's.
+// this header, checked by paramRangeProblem; what depends on the method (tent's sizes) by
+// checkParams. After a row's kernel member come rawJsonMayLack and the bias modes it acts under.
 // clang-format off
 const ParamInfo PARAMS[] = {
     {"method", NamedField<int>{&ShadowSettings::method,
@@ -39,8 +44,12 @@ const ParamInfo PARAMS[] = {
      "poisson, pcss: rotate the disk per pixel", true},
     {"light_size", &ShadowSettings::lightSize, ParamGroup::Filter, "", "degrees", 0.0,
      MAX_LIGHT_SIZE_DEG, false,
-     "pcss: the light's angular diameter in degrees (0: the scene light's, or the sun's 0.53)",
-     true},
+     "pcss, the area-light truth: a directional light's angular diameter in degrees (0: the "
+     "scene light's; pcss takes the sun's 0.53 when it has none)", true, {}, true},
+    {"light_radius", &ShadowSettings::lightRadius, ParamGroup::Filter, "", "world units", 0.0,
+     MAX_LIGHT_RADIUS, false,
+     "pcss, the area-light truth: a spot light's radius in world units (0: the scene light's)",
+     true, {}, true},
     {"weights", NamedField<int>{&ShadowSettings::weights, nameOf<int, weightsName>, weightsFromName,
         [] { return std::string("box, binomial, gaussian"); }, "weights"}, ParamGroup::Filter,
      "", "", 0, 0, false,
@@ -57,29 +66,34 @@ const ParamInfo PARAMS[] = {
         depthFormatFromName, depthFormatNames, "depth format"},
      ParamGroup::Map, "", "", 0, 0, false, "shadow map depth format", true},
     {"map_size", &ShadowSettings::mapSize, ParamGroup::Map, "", TEXELS, MIN_MAP_SIZE,
-     MAX_MAP_SIZE, false, "shadow map size in texels (4..4096)", true},
+     MAX_MAP_SIZE, false, "shadow map size in texels (4..4096)", true, {}, true},
     {"bias", NamedField<BiasMode>{&ShadowSettings::bias, nameOf<BiasMode, biasModeName>,
         biasModeFromName,
         biasNameList, "bias mode"}, ParamGroup::Bias, "", "", 0, 0, false,
-     "bias mode (README \"Bias modes\"; every mode but none subtracts --constant-bias)", true},
+     "bias mode (README \"Bias modes\"; every mode but none subtracts --constant-bias)", true,
+     {}, true},
     {"constant_bias", &ShadowSettings::constantBias, ParamGroup::Bias, "uConstantBias",
      DEPTH_UNITS, -1.0, 1.0, false,
-     "depth subtracted from z in light depth units (ref = z - B)", true},
+     "depth subtracted from z in light depth units (ref = z - B)", true, {}, false,
+     BIASED_MODES},
     {"slope_bias", &ShadowSettings::slopeBias, ParamGroup::Bias, "uSlopeBias",
      "light depth units per unit of tan(theta)", 0.0, 1.0, false,
-     "slope: S in ref = z - min(B + S * tan(theta), M)", true},
+     "slope: S in ref = z - min(B + S * tan(theta), M)", true, {}, false,
+     biasModeBit(BiasMode::Slope)},
     {"slope_max", &ShadowSettings::slopeMax, ParamGroup::Bias, "uSlopeMax", DEPTH_UNITS, 0.0, 1.0,
-     false, "slope: the cap M, light depth units", true},
+     false, "slope: the cap M, light depth units", true, {}, false, biasModeBit(BiasMode::Slope)},
     {"normal_offset", &ShadowSettings::normalOffset, ParamGroup::Bias, "uNormalOffset", TEXELS,
      0.0, 64.0, false,
-     "normal: K, texels the receiver moves along its normal (times sin(theta))", true},
+     "normal: K, texels the receiver moves along its normal (times sin(theta))", true, {}, true,
+     biasModeBit(BiasMode::Normal)},
     {"soft_scale", &ShadowSettings::softScale, ParamGroup::Bias, "uSoftScale",
      "1 / light depth units", 1.0, 1.0e9, false,
-     "soft: lit = (depth > ref) * saturate((depth - ref) * SCALE)", true, &PcfBias::softScale},
+     "soft: lit = (depth > ref) * saturate((depth - ref) * SCALE)", true, &PcfBias::softScale,
+     true, biasModeBit(BiasMode::Soft)},
     {"rpdb_max", &ShadowSettings::rpdbMax, ParamGroup::Bias, "uRpdbMax",
      "light depth per uv unit", 0.0, 1.0e9, false,
      "receiver-plane: cap M on each component of dz/duv, light depth per uv unit (the whole map)",
-     true, &PcfBias::rpdbMax},
+     true, &PcfBias::rpdbMax, true, biasModeBit(BiasMode::ReceiverPlane)},
     {"cull", NamedField<CullMode>{&ShadowSettings::cull, nameOf<CullMode, cullModeName>,
         cullModeFromName,
         [] { return std::string(CULL_MODE_NAMES); }, "cull mode"}, ParamGroup::Map, "", "", 0, 0,
@@ -89,25 +103,26 @@ const ParamInfo PARAMS[] = {
         [] { return std::string(SHADING_NAMES); }, "shading"}, ParamGroup::View, "uShading", "",
      0, 0, false,
      "what the receivers show: lit (ambient + N.L x visibility) or visibility (alone, 0 black "
-     "to 1 white, no N.L)", true},
+     "to 1 white, no N.L)", true, {}, true},
     {"lbr", &ShadowSettings::lbr, ParamGroup::Filter, "uLbr", "", 0.0, 0.99, false,
      "vsm, evsm2, evsm4: light-bleeding reduction, the bound's cut (linstep(lbr, 1, p))", true,
-     &PcfParams::lbr},
+     &PcfParams::lbr, true},
     {"min_variance", &ShadowSettings::minVariance, ParamGroup::Filter, "uMinVariance",
      "light depth squared", 0.0, 0.01, false,
      "vsm, evsm2, evsm4: the variance's floor (the warps' scaled by their slope)", true,
-     &PcfParams::minVariance},
+     &PcfParams::minVariance, true},
     {"evsm_exponents", NamedField<vec2>{&ShadowSettings::evsmExponents, exponentsText,
         exponentsFromText, [] { return std::string("POS,NEG, each in (0, 100]"); },
         "EVSM exponents"}, ParamGroup::Filter, "", "", 0, 0, false,
-     "evsm2, evsm4: the warps' exponents POS,NEG (used up to 42 in 32f, 5.54 in 16f)", true},
+     "evsm2, evsm4: the warps' exponents POS,NEG (used up to 42 in 32f, 5.54 in 16f)", true, {},
+     true},
     {"moment_bias", &ShadowSettings::momentBias, ParamGroup::Filter, "uMomentBias", "", 0.0, 0.5,
      false, "msm, msm-hausdorff: the moment bias alpha, b' = lerp(b, 0.5, alpha)", true,
-     &PcfParams::momentBias},
+     &PcfParams::momentBias, true},
     {"moment_format", NamedField<int>{&ShadowSettings::momentBits, nameOf<int, momentFormatName>,
         momentFormatFromName, [] { return std::string("16f, 32f"); }, "moment format"},
      ParamGroup::Map, "", "", 0, 0, false,
-     "the moment methods: the moments map's floats, 16f or 32f", true},
+     "the moment methods: the moments map's floats, 16f or 32f", true, {}, true},
 };
 // clang-format on
 
@@ -188,18 +203,122 @@ std::string settingText(const ParamInfo& p, const ShadowSettings& s) {
         p.field);
 }
 
-std::optional<ParamProblem> checkBiasSettings(const ShadowSettings& s) {
+std::string exactNumberText(double v) {
+    char text[32];
+    auto [end, ec] = std::to_chars(text, text + sizeof text, v);
+    return ec == std::errc() ? std::string(text, end) : numberText(v);
+}
+
+namespace {
+
+// A float limit as the decimal it was written as: MIN_SIGMA (0.05f) is 0.0500000007 as a double,
+// which a typed 0.05 is below. The shortest decimal that reads back as the float is 0.05.
+double decimalLimit(double limit) {
+    char text[32];
+    auto [end, ec] = std::to_chars(text, text + sizeof text, static_cast<float>(limit));
+    double v = limit;
+    if (ec == std::errc()) std::from_chars(text, end, v);
+    return v;
+}
+
+std::string floatText(float v) {
+    char text[32];
+    auto [end, ec] = std::to_chars(text, text + sizeof text, v);
+    return ec == std::errc() ? std::string(text, end) : numberText(v);
+}
+
+// Whether v is in p's range: an integer's, whole; a float parameter's, either as a decimal
+// against the decimal limits (a typed 10.000000001 is above 10, though its float is 10), or, for
+// a value that is a float already (a setting as stored), as a float against the float limits
+// (0.3f is above the decimal 0.3 but is the limit itself).
+bool inRange(const ParamInfo& p, double v, bool whole) {
+    if (!std::isfinite(v)) return false;
+    if (whole) return v >= p.min && v <= p.max && v == std::floor(v);
+    double lo = decimalLimit(p.min), hi = decimalLimit(p.max);
+    if ((p.minOpen ? v > lo : v >= lo) && v <= hi) return true;
+    auto f = static_cast<float>(v);
+    if (static_cast<double>(f) != v) return false;
+    auto flo = static_cast<float>(p.min), fhi = static_cast<float>(p.max);
+    return (p.minOpen ? f > flo : f >= flo) && f <= fhi;
+}
+
+}  // namespace
+
+std::optional<ParamProblem> paramRangeProblem(const ParamInfo& p, double v,
+                                              std::string_view given) {
+    bool whole = std::holds_alternative<int ShadowSettings::*>(p.field);
+    if (!whole && !std::holds_alternative<float ShadowSettings::*>(p.field)) return std::nullopt;
+    if (inRange(p, v, whole)) return std::nullopt;
+    std::string got = given.empty() ? exactNumberText(v) : std::string(given);
+    std::string lo = exactNumberText(whole ? p.min : decimalLimit(p.min));
+    std::string hi = exactNumberText(whole ? p.max : decimalLimit(p.max));
+    if (whole)
+        return ParamProblem{std::string(p.key), "", " must be " + lo + ".." + hi + ", got " + got};
+    return ParamProblem{std::string(p.key), "",
+                        " must be in " + std::string(p.minOpen ? "(" : "[") + lo + ", " + hi + "]" +
+                            (p.unit.empty() ? "" : " ") + std::string(p.unit) + ", got " + got};
+}
+
+std::optional<ParamProblem> checkSettingRanges(const ShadowSettings& s) {
     for (const ParamInfo& p : PARAMS) {
-        const auto* field = std::get_if<float ShadowSettings::*>(&p.field);
-        if (p.group != ParamGroup::Bias || !field) continue;
-        double v = static_cast<double>(s.*(*field));
-        if (std::isfinite(v) && (p.minOpen ? v > p.min : v >= p.min) && v <= p.max) continue;
-        return ParamProblem{std::string(p.key), "",
-                            " must be in " + std::string(p.minOpen ? "(" : "[") +
-                                numberText(p.min) + ", " + numberText(p.max) + "], got " +
-                                numberText(v)};
+        std::optional<ParamProblem> problem;
+        if (const auto* f = std::get_if<float ShadowSettings::*>(&p.field)) {
+            // A stored float printed as the float it is ("0.3", not "0.30000001192092896").
+            problem = paramRangeProblem(p, static_cast<double>(s.*(*f)), floatText(s.*(*f)));
+        } else if (const auto* i = std::get_if<int ShadowSettings::*>(&p.field)) {
+            problem = paramRangeProblem(p, static_cast<double>(s.*(*i)));
+        }
+        if (problem) return problem;
     }
     return std::nullopt;
+}
+
+namespace {
+
+// A decimal number filling all of `text` (from_chars: no leading +, no hex), or nullopt.
+std::optional<double> decimalNumber(std::string_view text) {
+    double v = 0.0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+    return v;
+}
+
+}  // namespace
+
+std::optional<ParamProblem> setParamFromText(ShadowSettings& s, const ParamInfo& p,
+                                             std::string_view text) {
+    std::string key(p.key);
+    auto problem = [&](std::string after) { return ParamProblem{key, "", std::move(after)}; };
+    return std::visit(
+        [&](const auto& field) -> std::optional<ParamProblem> {
+            using F = std::decay_t<decltype(field)>;
+            if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
+                if (text != "true" && text != "false") {
+                    return problem(" must be true or false, got '" + std::string(text) + "'");
+                }
+                s.*field = text == "true";
+            } else if constexpr (std::is_same_v<F, int ShadowSettings::*> ||
+                                 std::is_same_v<F, float ShadowSettings::*>) {
+                std::optional<double> v = decimalNumber(text);
+                if (!v) {
+                    return problem(" must be a decimal number, got '" + std::string(text) + "'");
+                }
+                if (auto why = paramRangeProblem(p, *v, text)) return why;
+                using T = std::remove_reference_t<decltype(s.*field)>;
+                s.*field = static_cast<T>(*v);
+            } else {
+                auto v = field.fromName(text);
+                if (!v || field.name(*v) != text) {
+                    return ParamProblem{"",
+                                        "unknown " + std::string(field.noun) + " '" +
+                                            std::string(text) + "' (known: " + field.known() + ")",
+                                        ""};
+                }
+                s.*field.field = *v;
+            }
+            return std::nullopt;
+        },
+        p.field);
 }
 
 std::string_view depthFormatName(TexelKind format) { return texelKindName(format); }

@@ -28,9 +28,13 @@ enum class Shading { Lit, Visibility };
 // The shadow map is N x N texels, N in this range.
 constexpr int MIN_MAP_SIZE = 4;
 constexpr int MAX_MAP_SIZE = 4096;
-// pcss's light size, degrees: the same bound as a scene light's angular_diameter (scene/light.h
-// MAX_ANGULAR_DIAMETER_DEG; scene/pcss.cpp asserts the two equal).
+// The largest light sizes, a directional light's angular diameter in degrees and a spot light's
+// radius in world units: the ranges of light_size and light_radius, which scene files'
+// angular_diameter and radius are read in too (scene/light.h). A sun disk wider than 10 degrees
+// (19 suns) would no longer be a small light (the truth's disk is flat in angle, tan(r) ~ r); a
+// spot disk 100 wide is larger than any teaching scene (the presets span 12).
 constexpr float MAX_LIGHT_SIZE_DEG = 10.0f;
+constexpr float MAX_LIGHT_RADIUS = 100.0f;
 // The largest frame side (window, export, chart) in pixels.
 constexpr int MAX_FRAME_SIDE = 8192;
 
@@ -68,9 +72,12 @@ struct ShadowSettings : BiasSettings {
     int kernel = 3;           // N
     float radius = 1.0f;      // poisson, texels
     bool rotate = false;      // poisson, pcss: rotate the disk per pixel
-    // pcss: the light's angular diameter in degrees; 0 = the scene light's (its
-    // angular_diameter, or the sun's when it has none): scene/pcss.h effectiveLightSizeDeg
+    // The light's size where it is used (pcss, the area-light truth), instead of the scene
+    // light's: a directional light's angular diameter in degrees (lightSize) or a spot light's
+    // radius in world units (lightRadius); 0 keeps the scene light's. Each applies to its own kind
+    // of light only (scene/light.h lightSizeProblem, applyLightSize).
     float lightSize = 0.0f;
+    float lightRadius = 0.0f;
     int weights = PCF_WEIGHTS_BOX;        // pcf-naive, pcf-gather: PCF_WEIGHTS_*
     float sigma = 1.0f;                   // gaussian weights, texels
     int precision = PCF_PRECISION_EXACT;  // hardware taps and gathers: PCF_PRECISION_*
@@ -144,7 +151,21 @@ struct ParamInfo {
     std::string_view help;  // one line, the command line's help
     bool rawJson = false;   // in render --raw's render.json (what `verify` repeats)
     KernelMember member{};  // what the uniform fills in the kernel's structs
+    // A rawJson parameter that render.json files written before it existed lack: `verify` then
+    // takes its default (the value those folders were rendered with). The others are required.
+    bool rawJsonMayLack = false;
+    // The bias modes this parameter acts under, one bit per mode (biasModeBit); 0 for the
+    // parameters that are no bias's. The trace's words, the status line and `verify` ask it
+    // which parameters a mode reads.
+    unsigned biasModes = 0;
 };
+
+// A bias mode's bit in ParamInfo::biasModes.
+constexpr unsigned biasModeBit(BiasMode mode) { return 1u << static_cast<unsigned>(mode); }
+// Whether parameter p acts under bias mode `mode` (its biasModes column).
+inline bool paramActsUnder(const ParamInfo& p, BiasMode mode) {
+    return (p.biasModes & biasModeBit(mode)) != 0;
+}
 
 // Every parameter, in the order the JSON sidecars write them.
 std::span<const ParamInfo> allParams();
@@ -155,9 +176,25 @@ std::string settingFlag(std::string_view key);
 // The parameter's value in `s` as text: "pcf-gather", "3", "0.002", "true".
 std::string settingText(const ParamInfo& p, const ShadowSettings& s);
 
-// Why a bias parameter is out of its range, or nullopt: in the kernel's words, the setting named
-// as the lesson files' key ("slope_max must be in [0, 1], got 2"); the command line says it as
-// its flag (app/cli_util.h: cliWords, "--slope-max").
-std::optional<ParamProblem> checkBiasSettings(const ShadowSettings& s);
+// The shortest text that reads back as exactly v: "89.0000000001", "1e-300", "0.002". Values in
+// messages are printed so, never rounded to a limit they exceed.
+std::string exactNumberText(double v);
+
+// The one range check of a parameter: why v is outside p's range (a number's [min, max] or
+// (min, max]; an integer's min..max, whole), or nullopt; names and flags have no range. In the
+// kernel's words, the setting named as the lesson files' key ("light_size must be in [0, 10]
+// degrees, got 11", "kernel must be 1..8, got 9"); the command line says it as its flag
+// (app/cli_util.h: cliWords, "--light-size"). `given` is the value as the user wrote it, printed
+// instead of exactNumberText(v) when not empty.
+std::optional<ParamProblem> paramRangeProblem(const ParamInfo& p, double v,
+                                              std::string_view given = {});
+// Every numeric parameter of `s` in its range: the first that is not, or nullopt.
+std::optional<ParamProblem> checkSettingRanges(const ShadowSettings& s);
+
+// Sets parameter p of `s` from its text as written in a lesson's compare or on the command line
+// ("0.002", "3", "true", "pcf-gather"): a number in decimal (no hex, no inf or nan) in its range,
+// true or false, or a name in its canonical spelling. The problem, or nullopt with `s` set.
+std::optional<ParamProblem> setParamFromText(ShadowSettings& s, const ParamInfo& p,
+                                             std::string_view text);
 
 }  // namespace pcf

@@ -60,7 +60,8 @@ namespace {
 // pcss records its search taps with weight 0 (pcf_kernel.h pcfPcssEstimate): they choose the
 // filter's width, the filter's taps make the visibility. When no search tap blocks there is no
 // filter and the visibility, 1, is the mean of the 16 search bits (all 1): the search taps then
-// weigh 1/16 each, so visibility = sum(weight * lit) holds for every lookup (DESIGN.md 4).
+// weigh 1/16 each, so visibility = sum(weight * lit) holds for every lookup (docs/user-guide.md,
+// "trace").
 void weighPcssSearch(Trace& tr) {
     if (tr.taps.size() != static_cast<size_t>(PCF_PCSS_TAPS)) return;
     float w = 1.0f / static_cast<float>(PCF_PCSS_TAPS);
@@ -88,6 +89,7 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
     tr.bias = bias;
     tr.dzduv = dzduv;
     tr.pos = pcfTexelPos(uv, map.size());
+    tr.lookup = pcfLookupRef(PcfRef(ref, uv, bias.kernelBias(dzduv)));
     Recording rec;
     tr.visibility = filterRecorded(map, uv, ref, prm, bias.kernelBias(dzduv), rec);
     tr.taps = std::move(rec.taps);
@@ -113,9 +115,8 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
             tr.footprint = pcfTentBase(uv, map.size());
             break;
         case Method::Pcss:
-            tr.pcss = pcfPcssEstimate(plainMap(map, prm), uv,
-                                      pcfLookupRef(PcfRef(ref, uv, bias.kernelBias(dzduv))),
-                                      prm.penumbraScale, prm.depthNear, prm.depthFar, prm.rotation);
+            tr.pcss = pcfPcssEstimate(plainMap(map, prm), uv, tr.lookup, prm.penumbraScale,
+                                      prm.depthNear, prm.depthFar, prm.rotation);
             break;
         case Method::Vsm:
         case Method::Evsm2:

@@ -72,8 +72,13 @@ struct Trace {
     // The bias mode and its parameters. Each tap's own ref (TapRecord::ref) differs from `ref`
     // under receiver-plane bias.
     BiasSettings bias{};
-    vec2 dzduv{0.0f};   // receiver-plane: the receiver's plane given, light depth per uv unit
-    PcfTexelPos pos{};  // GL bilinear position of uv: p, base, frac
+    vec2 dzduv{0.0f};  // receiver-plane: the receiver's plane given, light depth per uv unit
+    // What every tap's comparison starts from, as the kernel derived it from ref, uv, the bias
+    // and dzduv (pcfLookupRef, the first thing pcfFilterRef does): under receiver-plane bias its
+    // bias.dzduv is the slope the taps used (capped). The words and the JSON print these values,
+    // never a second derivation of them.
+    PcfRef lookup{0.0f, vec2(0.0f), PcfBias(PCF_BIAS_NONE, vec2(0.0f), 0.0f, 0.0f)};
+    PcfTexelPos pos{};                 // GL bilinear position of uv: p, base, frac
     std::vector<TapRecord> taps;       // one per texel read, in read order, duplicates kept
     std::vector<FetchRecord> fetches;  // one per fetch instruction, in issue order
     WeightGrid weights;

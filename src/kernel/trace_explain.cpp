@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "kernel/settings.h"
@@ -196,6 +197,20 @@ void addStep(Steps& out, K kind, std::string text) {
     out.push_back({kind, stepTitle(kind), std::move(text)});
 }
 
+// The table's rows that act under the mode and fill a PcfBias member, with the values the kernel
+// read: "rpdb_max = 100 light depth per uv unit (--rpdb-max)", joined (none named by hand here).
+std::string kernelBiasSettings(const Trace& tr) {
+    std::string out;
+    for (const ParamInfo& p : allParams()) {
+        const auto* member = std::get_if<float PcfBias::*>(&p.member);
+        if (member == nullptr || !paramActsUnder(p, tr.bias.bias)) continue;
+        out += (out.empty() ? "" : ", ") + std::string(p.key) + " = " +
+               num(tr.lookup.bias.*(*member)) + (p.unit.empty() ? "" : " ") + std::string(p.unit) +
+               " (" + settingFlag(p.key) + ")";
+    }
+    return out.empty() ? "no setting" : out;
+}
+
 // What the bias mode did to this lookup's ref, in words (kernel/bias.h has the formulas).
 std::string biasSentence(const Trace& tr) {
     const BiasSettings& b = tr.bias;
@@ -218,26 +233,22 @@ std::string biasSentence(const Trace& tr) {
                  "depth less "
               << num(b.constantBias) << " gives ref = " << num(tr.ref) << " " << moved << ".";
             break;
-        case BiasMode::ReceiverPlane: {
+        case BiasMode::ReceiverPlane:
             s << "Receiver-plane bias: ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
               << " holds at uv only. The receiver's depth changes across the map by dz/duv = "
               << pair(tr.dzduv)
               << " (the receiver's slope in the map; the renderer derives it from screen-space "
-                 "derivatives), so each tap compares against "
-                 "the plane's own depth where it reads: ref + dot(dz/duv, tap uv - uv).";
-            vec2 used = pcfClampDzDuv(tr.dzduv, b.rpdbMax);
-            if (used != tr.dzduv) {
-                s << " The slope is capped at " << num(b.rpdbMax)
-                  << " depth per uv unit (--rpdb-max), so the taps use dz/duv = " << pair(used)
-                  << ".";
-            }
+                 "derivatives), so each tap compares against the plane's own depth where it "
+                 "reads: ref + dot(dz/duv, tap uv - uv).";
+            s << " The kernel takes the slope with " << kernelBiasSettings(tr) << ": the taps use "
+              << "dz/duv = " << pair(tr.lookup.bias.dzduv)
+              << (tr.lookup.bias.dzduv == tr.dzduv ? ", as given." : ".");
             break;
-        }
         case BiasMode::Soft:
             s << "ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
               << ". Soft comparison (\"PCF Shadow Acne\" part 2): a tap is lit by "
                  "(depth > ref) * saturate((depth - ref) * "
-              << num(b.softScale) << "), so a texel just beyond ref counts only in part.";
+              << num(tr.lookup.bias.softScale) << "): a texel just beyond ref counts in part.";
             break;
         case BiasMode::Interpolated:
             s << "ref = z - " << num(b.constantBias) << " = " << num(tr.ref)

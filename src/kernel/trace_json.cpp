@@ -68,15 +68,13 @@ const char* perTapName(const Trace& tr) {
 }
 
 // The trace's bias: the mode and every parameter (the table's rows, under the lesson files'
-// keys), and the receiver plane as given and as used.
+// keys), and the receiver plane as given and as the kernel used it.
 Json biasJson(const Trace& tr) {
     ShadowSettings settings;
     static_cast<BiasSettings&>(settings) = tr.bias;
     Json j = paramsJson(settings, ParamSet::Bias);
     j["dzduv"] = jsonPair(tr.dzduv);
-    j["dzduv_used"] =
-        jsonPair(tr.bias.bias == BiasMode::ReceiverPlane ? pcfClampDzDuv(tr.dzduv, tr.bias.rpdbMax)
-                                                         : tr.dzduv);
+    j["dzduv_used"] = jsonPair(tr.lookup.bias.dzduv);  // as the kernel took it (pcfLookupRef)
     j["per_tap"] = perTapName(tr);
     return j;
 }

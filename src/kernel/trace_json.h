@@ -1,5 +1,5 @@
-// trace_json.h: a trace (trace.h) written out: DESIGN.md section 4's JSON object, and the text
-// `pcfscope trace` prints.
+// trace_json.h: a trace (trace.h) written out: the JSON object of docs/user-guide.md ("trace"), and
+// the text `pcfscope trace` prints.
 #pragma once
 
 #include <cstdint>
@@ -48,7 +48,7 @@ Json mapSpecJson(const MapSpec& map);
 // mapSpecJson read back; nullopt with `why` set (a sentence naming the key) when `j` is not one.
 std::optional<MapSpec> mapSpecFromJson(const Json& j, std::string& why);
 
-// DESIGN.md section 4's object.
+// The trace as that object.
 Json traceJson(const Trace& trace);
 
 // traceJson as one line of JSON.

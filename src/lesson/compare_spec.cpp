@@ -13,60 +13,6 @@
 
 namespace pcf {
 
-namespace {
-
-std::string rangeText(const ParamInfo& p) {
-    std::ostringstream s;
-    s << (p.minOpen ? "(" : "[") << p.min << ", " << p.max << "]";
-    if (!p.unit.empty()) s << " " << p.unit;
-    return s.str();
-}
-
-// Sets one parameter from its text as the lesson files write it; the problem in words, or "".
-std::string setFromText(LessonSettings& s, const ParamInfo& p, const std::string& text) {
-    std::string key(p.key);
-    return std::visit(
-        [&](const auto& field) -> std::string {
-            using F = std::decay_t<decltype(field)>;
-            if constexpr (std::is_same_v<F, int ShadowSettings::*>) {
-                int v = 0;
-                auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-                if (ec != std::errc() || end != text.data() + text.size() || v < p.min ||
-                    v > p.max) {
-                    return key + " must be an integer " + rangeText(p) + ", got '" + text + "'";
-                }
-                s.*field = v;
-            } else if constexpr (std::is_same_v<F, float ShadowSettings::*>) {
-                char* end = nullptr;
-                double v = std::strtod(text.c_str(), &end);
-                bool number =
-                    !text.empty() && end == text.c_str() + text.size() && std::isfinite(v);
-                bool inRange = (p.minOpen ? v > p.min : v >= p.min) && v <= p.max;
-                if (!number || (p.group != ParamGroup::Bias && !inRange)) {
-                    return key + " must be a number in " + rangeText(p) + ", got '" + text + "'";
-                }
-                s.*field = static_cast<float>(v);
-                if (auto why = checkBiasSettings(s)) return why->text();
-            } else if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
-                if (text != "true" && text != "false") {
-                    return key + " must be true or false, got '" + text + "'";
-                }
-                s.*field = text == "true";
-            } else {
-                auto v = field.fromName(text);
-                if (!v || field.name(*v) != text) {
-                    return "unknown " + std::string(field.noun) + " '" + text +
-                           "' (known: " + field.known() + ")";
-                }
-                s.*field.field = *v;
-            }
-            return "";
-        },
-        p.field);
-}
-
-}  // namespace
-
 void addCompareKey(CompareSpec& spec, const std::string& key, std::vector<std::string> values) {
     if (!findParam(key)) {
         std::string known;
@@ -133,8 +79,11 @@ LessonSettings comparePart(const LessonSettings& base, const CompareSpec& spec, 
     bool kernelGiven = std::find(spec.keys.begin(), spec.keys.end(), "kernel") != spec.keys.end();
     for (size_t k = 0; k < spec.keys.size(); ++k) {
         const std::string& value = spec.values[k].at(static_cast<size_t>(part));
-        std::string problem = setFromText(s, *findParam(spec.keys[k]), value);
-        if (!problem.empty()) throw std::invalid_argument("compare: " + problem);
+        // The parameter table's reader: the value in decimal, in its range, as given.
+        if (std::optional<ParamProblem> problem =
+                setParamFromText(s, *findParam(spec.keys[k]), value)) {
+            throw std::invalid_argument("compare: " + problem->text());
+        }
     }
     if (!kernelGiven) s.kernel = fitKernel(s.method, s.kernel);
     std::string label = comparePartLabel(spec, part);

@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -29,6 +30,9 @@
 namespace pcf {
 
 namespace {
+
+// lessonParseCount's count.
+std::atomic<long> gLessonParses{0};
 
 // The keys a [settings] table and a [[step]] may set besides the parameter table's: the view's
 // (`pixel` only to be refused with what to write instead).
@@ -81,6 +85,7 @@ class LessonParser {
     }
 
     Lesson parse() {
+        ++gLessonParses;
         toml::table root;
         try {
             root = toml::parse(mText, mSource);
@@ -121,12 +126,16 @@ class LessonParser {
                        "focus", "animate", "compare", "predict"});
             applySettings(table, what, state, lines);
             lesson.steps.push_back(readStep(table, what, state, lines));
-            // The step's own focus, else the lesson's (checked by the app: overlay/inspector.h).
+            // The step's own focus, else the lesson's (lesson_focus.h).
             const toml::table& owner = table.get("focus") ? table : root;
             if (const toml::node* f = owner.get("focus")) {
                 attempt([&] {
-                    lesson.steps.back().focus = requireText(owner, "focus", what, owner);
+                    std::string name = requireText(owner, "focus", what, owner);
                     lesson.steps.back().focusLine = lineOf(*f);
+                    lesson.steps.back().focus = parseFocus(name);
+                    if (!lesson.steps.back().focus) {
+                        fail(*f, what + " focus '" + name + "' is not one of: " + focusNames());
+                    }
                 });
             }
         }
@@ -257,10 +266,16 @@ class LessonParser {
             std::string view = hash == std::string::npos ? "" : chart.substr(hash);
             std::filesystem::path p =
                 std::filesystem::path(mSource).parent_path() / chart.substr(0, hash);
+            // What is there, said as it is: a FIFO or a folder is not "not found".
             std::error_code ec;
-            if (!std::filesystem::is_regular_file(p, ec)) {
+            std::filesystem::file_status status = std::filesystem::status(p, ec);
+            if (!std::filesystem::is_regular_file(status)) {
+                std::string why = !std::filesystem::exists(status) ? "not found"
+                                  : std::filesystem::is_directory(status)
+                                      ? "is a directory"
+                                      : "is not a regular file (a FIFO, device or socket)";
                 fail(*table.get("chart"),
-                     what + " chart '" + chart + "' not found (looked at " + p.string() + ")");
+                     what + " chart '" + chart + "' " + why + " (looked at " + p.string() + ")");
             }
             step.chart = p.string() + view;
             step.chartLine = lineOf(*table.get("chart"));
@@ -352,7 +367,14 @@ class LessonParser {
         }
         StepAnimation anim;
         anim.line = lineOf(*node);
-        anim.sweep = requireText(*a, "sweep", where, *a);
+        std::string sweep = requireText(*a, "sweep", where, *a);
+        std::optional<AnimationSweep> known = animationSweepFromName(sweep);
+        if (!known) {
+            fail(*node, where + " sweep '" + sweep +
+                            "' is not one of: " + std::string(ANIMATION_SWEEP_NAMES));
+        }
+        anim.sweep = *known;
+        if (!step.chart.empty()) fail(*node, where + ": a chart step cannot move");
         auto integer = [&](const char* key, int lo, int hi, int& out) {
             const toml::node* n = a->get(key);
             if (!n) return;
@@ -367,7 +389,9 @@ class LessonParser {
         integer("fps", 1, 60, anim.fps);
         for (const char* key : {"from", "to"}) {
             if (const toml::node* n = a->get(key)) {
-                (key[0] == 'f' ? anim.from : anim.to) = number(*n, where + " " + key);
+                double v = number(*n, where + " " + key);
+                if (auto why = animationEndProblem(anim.sweep, v)) fail(*node, where + *why);
+                (key[0] == 'f' ? anim.from : anim.to) = v;
             }
         }
         if (const toml::node* n = a->get("snap")) {
@@ -400,7 +424,11 @@ class LessonParser {
                 addCompareKey(step.compare, std::string(key.str()), std::move(texts));
             }
             for (int part = 0; part < step.compare.parts(); ++part) {
-                comparePart(step.settings, step.compare, part);
+                LessonSettings s = comparePart(step.settings, step.compare, part);
+                if (std::optional<ParamProblem> why =
+                        mScene ? lightSizeProblem(mScene->light, s) : std::nullopt) {
+                    fail(*node, what + " compare: " + why->text());
+                }
             }
         } catch (const std::invalid_argument& e) {
             fail(*node, what + " " + e.what());
@@ -580,38 +608,22 @@ class LessonParser {
         attempt([&] { applyViewKeys(table, what, s); });
     }
 
-    // One parameter of the table, by its type: an integer in its range.
+    // One parameter of the table, by its type: an integer, then a number, each in the table's
+    // range (paramRangeProblem: the one range check of the command line, the compare values and
+    // these files).
     void readParam(const toml::node& n, const std::string& what, const ParamInfo& p,
                    int ShadowSettings::*field, LessonSettings& s) const {
-        std::string name = what + " " + std::string(p.key);
-        int64_t v = integer(n, name);
-        if (v < static_cast<int64_t>(p.min) || v > static_cast<int64_t>(p.max)) {
-            fail(n, name + " must be " + formatValue(p.min) + ".." + formatValue(p.max) + ", got " +
-                        std::to_string(v));
+        int64_t v = integer(n, what + " " + std::string(p.key));
+        if (auto why = paramRangeProblem(p, static_cast<double>(v), std::to_string(v))) {
+            fail(n, what + " " + why->text());
         }
         s.*field = static_cast<int>(v);
     }
 
-    // A number: the bias parameters checked as the command line checks them (the kernel's
-    // words are the lesson's keys), the others in their range, stating texels.
     void readParam(const toml::node& n, const std::string& what, const ParamInfo& p,
                    float ShadowSettings::*field, LessonSettings& s) const {
-        std::string name = what + " " + std::string(p.key);
-        double v = number(n, name);
-        if (p.group == ParamGroup::Bias) {
-            float old = s.*field;
-            s.*field = static_cast<float>(v);
-            if (auto why = checkBiasSettings(s)) {
-                s.*field = old;
-                fail(n, what + " " + why->text());
-            }
-            return;
-        }
-        if (!((p.minOpen ? v > p.min : v >= p.min) && v <= p.max)) {
-            fail(n, name + " must be in " + (p.minOpen ? "(" : "[") + formatValue(p.min) + ", " +
-                        formatValue(p.max) + "]" + (p.unit.empty() ? "" : " ") +
-                        std::string(p.unit) + ", got " + formatValue(v));
-        }
+        double v = number(n, what + " " + std::string(p.key));
+        if (auto why = paramRangeProblem(p, v)) fail(n, what + " " + why->text());
         s.*field = static_cast<float>(v);
     }
 
@@ -705,6 +717,13 @@ class LessonParser {
             int line = std::max(lines.bias, lines.method);
             throw InputError(mSource, line > 0 ? line : lineOf(step), what + ": " + *why);
         }
+        // light_size for a spot light, light_radius for a directional one: blamed on the key.
+        if (std::optional<ParamProblem> why =
+                mScene ? lightSizeProblem(mScene->light, s) : std::nullopt) {
+            const toml::node* key = step.get(why->setting);
+            throw InputError(mSource, lineOf(key ? *key : static_cast<const toml::node&>(step)),
+                             what + ": " + why->text());
+        }
         std::optional<ParamProblem> problem = checkParams(s.ShadowSettings::pcfParams());
         if (!problem) return;
         std::string text = problem->text();  // the kernel's words are the lesson's keys
@@ -722,11 +741,27 @@ class LessonParser {
             makeParams(step.settings.method, step.settings.kernel, step.settings.radius));
         for (const PlaceholderProblem& problem :
              placeholderProblems(step.text, static_cast<int>(trace.taps.size()),
-                                 static_cast<int>(trace.fetches.size()), step.compare.parts())) {
+                                 static_cast<int>(trace.fetches.size()), step.compare.parts(),
+                                 trace.weights.size)) {
             attempt([&] {
                 throw InputError(mSource, stepTextLine(step, problem.offset),
                                  what + " text: " + problem.problem);
             });
+        }
+        // A claim's placeholders index the same reads: past them is the same mistake.
+        for (const StepClaim& claim : step.claims) {
+            for (const std::string& inside : claimPlaceholders(claim)) {
+                if (std::optional<PlaceholderProblem> problem =
+                        checkPlaceholders("{" + inside + "}", static_cast<int>(trace.taps.size()),
+                                          static_cast<int>(trace.fetches.size()),
+                                          step.compare.parts(), trace.weights.size)) {
+                    attempt([&] {
+                        throw InputError(
+                            mSource, claim.line,
+                            what + " claim \"" + claim.text + "\": " + problem->problem);
+                    });
+                }
+            }
         }
     }
 
@@ -749,6 +784,8 @@ PcfParams LessonSettings::pcfParams(glm::vec2 uv, int mapSizeTexels, float penum
     if (rotate) rotation = pcfTexelRotation(uv, ivec2(mapSizeTexels));
     return ShadowSettings::pcfParams(rotation, penumbraScale);
 }
+
+long lessonParseCount() { return gLessonParses.load(); }
 
 Lesson parseLessonFile(const std::string& path) {
     return parseLessonString(readInputFile(path), path);

@@ -92,6 +92,8 @@
 #include "kernel/pcf.h"
 #include "kernel/settings.h"
 #include "lesson/compare_spec.h"
+#include "lesson/lesson_animation.h"
+#include "lesson/lesson_focus.h"
 #include "scene/scene.h"
 
 namespace pcf {
@@ -138,11 +140,11 @@ struct StepClaim {
 };
 
 // `animate = { sweep = "sun", from = 90, to = 2, frames = 60 }`: the step plays as an animation
-// of its frame with one quantity swept (app/animation.h: the sweeps of `pcfscope animate`): the
+// of its frame with one quantity swept (lesson_animation.h; app/animation.h plays it): the
 // viewer plays it, `export` writes it as LESSON-stepNN.mp4 beside the still. The sweep's name and
-// its from/to range are checked by the app (loadLessonChecked) at `line`.
+// its from/to range are checked here, at `line`; a chart step cannot move.
 struct StepAnimation {
-    std::string sweep;           // light, camera, sun, bias, map-size
+    AnimationSweep sweep = AnimationSweep::Light;
     std::optional<double> from;  // the swept quantity's first value (sun, bias, map-size); nullopt:
     std::optional<double> to;    // the sweep's own ends
     int frames = 60;             // 2..MAX_ANIMATION_FRAMES
@@ -154,9 +156,9 @@ constexpr int MAX_ANIMATION_FRAMES = 600;
 
 // `predict = { ask = "...", choices = ["{depth_bias*-1}", "{depth_bias}"], answer =
 // "{depth_bias}" }` or `{ ask = "...", answer = "{visibility}", tolerance = 0.05 }`: the step
-// asks before it tells (DESIGN.md 8b, Students). Its frame first shows `ask` with the numbers
-// that would give the answer away hidden; a key (or, exported, the next frame) reveals the
-// answer, filled from the trace, above the step's text. ask and choices may hold placeholders
+// asks before it tells (docs/teaching.md, "Predict, then reveal"). Its frame first shows `ask` with
+// the numbers that would give the answer away hidden; a key (or, exported, the next frame) reveals
+// the answer, filled from the trace, above the step's text. ask and choices may hold placeholders
 // (none of the quantities the answer hides: app/predict.h checks). The answer is one number
 // placeholder; with choices it must equal exactly one of them at every size (lesson check), and
 // a typed answer is judged by the choice it names; without, a typed number is right within
@@ -202,10 +204,10 @@ struct LessonStep {
     std::vector<std::string> keys;
     int keysLine = 0;
     // `focus = "neighbourhood"` (in the step, or at the lesson's top for every step): what the
-    // step's words are about, which decides the frame's composition (overlay/inspector.h: Focus,
-    // whose names the app checks at focusLine). Empty: derived from the method and the step
-    // (app/session.h: stepFocus).
-    std::string focus;
+    // step's words are about, which decides the frame's composition (lesson_focus.h: its names,
+    // checked here at focusLine). nullopt: derived from the method and the step (app/session.h:
+    // stepFocus).
+    std::optional<Focus> focus;
     int focusLine = 0;
     // `animate = {...}`: the step is an animation (StepAnimation). Not inherited.
     std::optional<StepAnimation> animate;
@@ -243,6 +245,10 @@ Lesson parseLessonString(std::string_view text, const std::string& sourceName);
 // (`lesson check` reports them all). The lesson returned is then as far as it could be read.
 Lesson parseLessonString(std::string_view text, const std::string& sourceName,
                          std::vector<InputError>& problems);
+
+// How many times this process has parsed a lesson (file or string): a command parses and checks
+// its lesson once, then hands the Lesson on (tests/lesson_once_test.cpp counts).
+long lessonParseCount();
 
 // The line of the lesson file that holds offset `offset` of the step's text.
 int stepTextLine(const LessonStep& step, size_t offset);

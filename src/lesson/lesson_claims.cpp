@@ -53,6 +53,11 @@ std::vector<Token> tokenize(std::string_view s) {
                 throw std::invalid_argument("unexpected '" + std::string(s.substr(i)) +
                                             "' (write placeholders in braces: {visibility})");
             }
+            // from_chars reads "inf" and "nan" too: nothing compares with them as a claim means.
+            if (!std::isfinite(v)) {
+                throw std::invalid_argument("'" + std::string(s.substr(i, end - (s.data() + i))) +
+                                            "' is not a finite number");
+            }
             out.push_back({Token::Number, v, {}, 0});
             i = static_cast<size_t>(end - s.data());
         }
@@ -65,7 +70,9 @@ using Lookup = std::function<std::optional<double>(const std::string&)>;
 
 // Recursive descent: expr = term (+|- term)*, term = factor (*|/ factor)*,
 // factor = number | {name} | ( expr ) | - factor. A value nullopt (an index past the trace's
-// reads) makes the whole nullopt.
+// reads) makes the whole nullopt. Each ( and unary - nests one level deeper on the stack: past
+// MAX_CLAIM_NESTING the claim is refused (a claim nested 60,000 deep overflowed the stack; a
+// sanitized build's frames are larger and overflowed at about 5,000).
 class Evaluator {
   public:
     Evaluator(const std::vector<Token>& t, Lookup lookup) : mT(t), mLookup(std::move(lookup)) {}
@@ -104,22 +111,30 @@ class Evaluator {
         const Token& t = mT[mAt++];
         if (t.kind == Token::Number) return t.number;
         if (t.kind == Token::Name) return mLookup(t.name);
-        if (t.op == '-') {
-            std::optional<double> v = factor();
-            return v ? std::optional<double>(-*v) : std::nullopt;
+        if (t.op != '-' && t.op != '(') {
+            throw std::invalid_argument(std::string("unexpected '") + t.op + "'");
         }
-        if (t.op == '(') {
-            std::optional<double> v = expr();
+        if (++mDepth > MAX_CLAIM_NESTING) {
+            throw std::invalid_argument("nested deeper than " + std::to_string(MAX_CLAIM_NESTING) +
+                                        " levels of ( and unary -");
+        }
+        std::optional<double> v;
+        if (t.op == '-') {
+            v = factor();
+            if (v) v = -*v;
+        } else {
+            v = expr();
             if (!isOp(')')) throw std::invalid_argument("a ( with no )");
             ++mAt;
-            return v;
         }
-        throw std::invalid_argument(std::string("unexpected '") + t.op + "'");
+        --mDepth;
+        return v;
     }
 
     const std::vector<Token>& mT;
     Lookup mLookup;
     size_t mAt = 0;
+    int mDepth = 0;  // ( and unary - open around the current token
 };
 
 // The first comparison operator outside braces: its position and spelling.
@@ -241,8 +256,9 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
         std::string tol = trim(rhs.substr(pm + 2));
         double v = 0.0;
         auto [end, ec] = std::from_chars(tol.data(), tol.data() + tol.size(), v);
-        if (ec != std::errc() || end != tol.data() + tol.size() || !(v >= 0.0)) {
-            throw std::invalid_argument("the tolerance after +- must be a number >= 0");
+        if (ec != std::errc() || end != tol.data() + tol.size() || !(v >= 0.0) ||
+            !std::isfinite(v)) {
+            throw std::invalid_argument("the tolerance after +- must be a finite number >= 0");
         }
         c->tolerance = v;
         rhs = rhs.substr(0, pm);
@@ -254,6 +270,17 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
     Evaluator(c->lhs, ones).run();
     Evaluator(c->rhs, ones).run();
     return c;
+}
+
+std::vector<std::string> claimPlaceholders(const StepClaim& claim) {
+    std::vector<std::string> names;
+    if (!claim.parsed || claim.parsed->kind != ParsedClaim::Compare) return names;
+    for (const auto* side : {&claim.parsed->lhs, &claim.parsed->rhs}) {
+        for (const ClaimToken& t : *side) {
+            if (t.kind == ClaimToken::Name) names.push_back(t.name);
+        }
+    }
+    return names;
 }
 
 std::string chartFactOf(const StepClaim& claim) {

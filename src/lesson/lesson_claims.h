@@ -75,9 +75,19 @@ struct ClaimWorld {
     std::function<std::variant<std::vector<float>, std::string>()> flickerCurve;
 };
 
+// The deepest a claim's expression may nest ( and unary -: TOML's own limit on nested arrays and
+// tables (toml++ TOML_MAX_NESTED_VALUES), far below where the parser's recursion would overflow
+// the stack of any build.
+constexpr int MAX_CLAIM_NESTING = 256;
+
 // Parses a claim; std::invalid_argument naming what is wrong (an unknown placeholder, a missing
-// operator, a near without +-).
+// operator, a near without +-, a non-finite number, nesting past MAX_CLAIM_NESTING).
 std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text);
+
+// What the braces of a comparison claim's placeholders hold ("visibility", "tap[2].margin"), in
+// order; empty for a keyword or chart claim. The lesson reader checks their indices against the
+// step's reads, as it checks its text's (lesson_text.h checkPlaceholders).
+std::vector<std::string> claimPlaceholders(const StepClaim& claim);
 
 // Whether the claim holds for this trace; `why` gets the values that decided it ("{frac.x} =
 // 0.2022, not within 0.0005 of 0.2"). Charts claims are held when world.chartLess is unset.

@@ -467,7 +467,8 @@ std::vector<std::string> placeholderNames() {
 }
 
 std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int tapCount,
-                                                    int fetchCount, int partCount) {
+                                                    int fetchCount, int partCount,
+                                                    ivec2 weightSize) {
     return scan(
         text, [](std::string_view) {},
         [&](const Placeholder& ph, size_t) -> std::optional<std::string> {
@@ -487,17 +488,27 @@ std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int t
                 return "part[" + std::to_string(n.index) + "] is past the " +
                        std::to_string(partCount) + " parts of this step's compare";
             }
+            if (n.family == "weight" && weightSize.x >= 0 &&
+                (n.index >= weightSize.x || n.index2 >= weightSize.y)) {
+                return "weight[" + std::to_string(n.index) + "," + std::to_string(n.index2) +
+                       "] is past the " + std::to_string(weightSize.x) + " x " +
+                       std::to_string(weightSize.y) +
+                       " weights this step's method merges (I is 0.." +
+                       std::to_string(weightSize.x - 1) + ", J is 0.." +
+                       std::to_string(weightSize.y - 1) + ")";
+            }
             return std::nullopt;
         });
 }
 
 std::vector<PlaceholderProblem> placeholderProblems(std::string_view text, int tapCount,
-                                                    int fetchCount, int partCount) {
+                                                    int fetchCount, int partCount,
+                                                    ivec2 weightSize) {
     std::vector<PlaceholderProblem> out;
     size_t from = 0;
     while (from < text.size()) {
         std::optional<PlaceholderProblem> p =
-            checkPlaceholders(text.substr(from), tapCount, fetchCount, partCount);
+            checkPlaceholders(text.substr(from), tapCount, fetchCount, partCount, weightSize);
         if (!p) break;
         p->offset += from;
         // Read on after the offending braces: past its }, or past a lone brace (a { with no }

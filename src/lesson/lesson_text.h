@@ -108,14 +108,17 @@ struct PlaceholderProblem {
 // The first problem with the placeholders of text, or nullopt: an unknown name, a malformed
 // index or number format, an unmatched brace. tapCount, fetchCount and partCount, when not
 // negative, are the reads and fetch instructions the step's method issues (fetchCounts) and the
-// parts of its `compare`: a tap[K], fetch[K] or part[K] past them is a problem too.
+// parts of its `compare`, and weightSize the columns and rows of its merged weights (the trace's
+// WeightGrid): a tap[K], fetch[K], part[K] or weight[I,J] past them is a problem too.
 std::optional<PlaceholderProblem> checkPlaceholders(std::string_view text, int tapCount = -1,
-                                                    int fetchCount = -1, int partCount = -1);
+                                                    int fetchCount = -1, int partCount = -1,
+                                                    ivec2 weightSize = ivec2(-1));
 
 // Every problem checkPlaceholders finds, in text order: after each, the text is read on past the
 // offending placeholder (or lone brace).
 std::vector<PlaceholderProblem> placeholderProblems(std::string_view text, int tapCount = -1,
-                                                    int fetchCount = -1, int partCount = -1);
+                                                    int fetchCount = -1, int partCount = -1,
+                                                    ivec2 weightSize = ivec2(-1));
 
 // The text with every placeholder replaced by its value for this trace. Throws
 // std::invalid_argument on text that checkPlaceholders refuses (lesson files are checked when

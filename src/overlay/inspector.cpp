@@ -8,6 +8,7 @@
 
 #include "overlay/flicker_trace.h"
 #include "overlay/inspector_plan.h"
+#include "render/frame_ops.h"
 
 namespace pcf {
 
@@ -143,55 +144,6 @@ InspectorLayout inspectorLayout(glm::ivec2 frameSize, bool presentation) {
     return l;
 }
 
-namespace {
-
-// The parts of a focus, in the order names list them.
-struct FocusPart {
-    const char* name;
-    bool Focus::*flag;
-};
-constexpr FocusPart FOCUS_PARTS[] = {{"scene", &Focus::scene},
-                                     {"neighbourhood", &Focus::neighbourhood},
-                                     {"formula", &Focus::formula},
-                                     {"chart", &Focus::chart}};
-
-}  // namespace
-
-std::optional<Focus> parseFocus(std::string_view name) {
-    Focus f;
-    int parts = 0;
-    while (true) {
-        size_t plus = name.find('+');
-        std::string_view part = name.substr(0, plus);
-        bool known = false;
-        for (const FocusPart& p : FOCUS_PARTS) {
-            if (part == p.name && !(f.*p.flag)) {
-                f.*p.flag = true;
-                known = true;
-            }
-        }
-        if (!known || ++parts > 2) return std::nullopt;
-        if (plus == std::string_view::npos) break;
-        name = name.substr(plus + 1);
-    }
-    return f;
-}
-
-std::string focusName(const Focus& focus) {
-    std::string out;
-    for (const FocusPart& p : FOCUS_PARTS) {
-        if (!(focus.*p.flag)) continue;
-        if (!out.empty()) out.push_back('+');
-        out.append(p.name);
-    }
-    return out;
-}
-
-const char* focusNames() {
-    return "scene, neighbourhood, formula, chart, or two joined by '+' "
-           "(\"neighbourhood+formula\")";
-}
-
 bool cellsAlone(const Focus& focus) { return focus == Focus{.neighbourhood = true}; }
 
 InspectorLayout focusLayout(const InspectorLayout& l, const Focus& focus) {
@@ -307,19 +259,15 @@ void clearInspectorPanels(GLuint framebuffer, const InspectorLayout& l) {
     Panel* largest =
         std::max_element(std::begin(panels), std::end(panels),
                          [&](const Panel& a, const Panel& b) { return area(a) < area(b); });
-    GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
-    glDisable(GL_SCISSOR_TEST);
-    glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, &largest->colour.x);
-    glEnable(GL_SCISSOR_TEST);
+    clearColour(framebuffer, largest->colour);
     for (const Panel& p : panels) {
         if (&p == largest || p.rect->empty()) continue;  // a chart step has no inspector
         const Rect& r = *p.rect;
         int frameH = l.frameSize.y;
-        glScissor(static_cast<GLint>(r.x), frameH - static_cast<GLint>(r.bottom()),
-                  static_cast<GLsizei>(r.w), static_cast<GLsizei>(r.h));
-        glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, &p.colour.x);
+        int x = static_cast<int>(r.x), y = frameH - static_cast<int>(r.bottom());
+        clearColourRect(framebuffer, {x, y, x + static_cast<int>(r.w), y + static_cast<int>(r.h)},
+                        p.colour);
     }
-    if (!scissor) glDisable(GL_SCISSOR_TEST);
 }
 
 void drawInspectorTop(Canvas& c, const InspectorLayout& l, const InspectorModel& m) {

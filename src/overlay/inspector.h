@@ -17,22 +17,12 @@
 #include "draw/rect.h"
 #include "kernel/shadow_map.h"
 #include "kernel/trace.h"
+#include "lesson/lesson_focus.h"
 #include "render/gl_objects.h"
 
 namespace pcf {
 
-// What a step is about (DESIGN.md 8, lesson key `focus`): the parts of the frame its words refer
-// to. The frame gives them the room and shows them whole; the rest shrinks (focusLayout). Names:
-// "scene", "neighbourhood", "formula", "chart", or two joined by '+' ("neighbourhood+formula").
-struct Focus {
-    bool scene = false, neighbourhood = false, formula = false, chart = false;
-    bool operator==(const Focus&) const = default;
-};
-// A focus from its name; nullopt for an unknown part, more than two, or none.
-std::optional<Focus> parseFocus(std::string_view name);
-std::string focusName(const Focus& focus);
-// The names parseFocus knows, for an error message.
-const char* focusNames();
+// What a step is about is its Focus (lesson/lesson_focus.h, the lesson's key `focus`).
 // A focus on the neighbourhood alone (a step about the texels, the gathers or the taps drawn in
 // the cells, not about the sum): the cells take the inspector's room, and the formula follows on
 // a page of its own instead of sharing the first. Any other focus puts the formula under the

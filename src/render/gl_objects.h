@@ -6,7 +6,7 @@
 //   - readPixelsRgba8 / readPixelsFloat return rows TOP-DOWN (first row = top of the picture),
 //     ready for writePngRgba8 / writeExr (image_io.h).
 //   - readDepthTexture returns rows in GL order (row 0 = GL texel row 0), which is the row order
-//     of ShadowMap (DESIGN.md 2: row 0 = first scanline = GL texel row 0).
+//     of ShadowMap (docs/methods.md, "Conventions": row 0 = first scanline = GL texel row 0).
 #pragma once
 
 #include <epoxy/gl.h>
@@ -107,7 +107,8 @@ GlTexture createTexture2d(GLenum internalFormat, int width, int height);
 GlTexture createDepthTexture(const ShadowMap& map);
 
 // The sampler behind pcf_prelude.h's uPcfCompare: hardware depth comparison (GL_LEQUAL),
-// GL_LINEAR (so one tap is the bilinear 2x2 of DESIGN.md 2), clamped to the edge.
+// GL_LINEAR (so one tap is the bilinear 2x2 of docs/methods.md, "Conventions"), clamped to the
+// edge.
 GlSampler createCompareSampler();
 // Plain nearest-texel reads, clamped to the edge: the kernel reads the map through it.
 GlSampler createNearestSampler();

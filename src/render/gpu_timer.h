@@ -1,5 +1,5 @@
 // gpu_timer.h: how long GL work takes, measured the way that is honest on the machine at hand
-// (DESIGN.md 8).
+// (docs/measurement.md, "Speed against accuracy: bench").
 //
 // llvmpipe (and softpipe) run the work when it is flushed, not when it is submitted, so a
 // GL_TIME_ELAPSED query there measures submission only (0.02 ms for a 3 ms pass). On those,

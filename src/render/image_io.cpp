@@ -1,7 +1,5 @@
 #include "render/image_io.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -16,6 +14,7 @@
 #include <system_error>
 
 #include "base/input_error.h"
+#include "render/image_codec.h"
 #include "render/sanitizer_build.h"
 
 namespace pcf {
@@ -97,21 +96,15 @@ void writeBytesAtomically(const std::string& path, const std::string& target,
     if (ec) fail(ec.value());
 }
 
-// Encodes the image into memory (OIIO's writers do not all report a failed fwrite: a PNG on a
-// full disk came out as 0 bytes with success), then writes the bytes with writeBytesAtomically.
-// The plugin is chosen from the final path's extension.
-void writeImageAtomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
-                          const void* data) {
+// Writes the bytes an encoder made (through the codec module, render/image_codec.h) with
+// writeBytesAtomically, under the write gate. `encode` returns "" or the encoder's reason.
+template <class Encode>
+void writeImageAtomically(const std::string& path, Encode encode) {
     std::shared_lock gate(outputWriteGate());
-    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
-    if (!out) throw ImageError(path + ": cannot write image (" + firstLine(OIIO::geterror()) + ")");
-    OIIO::Filesystem::IOVecOutput memory;
-    if (!out->supports("ioproxy") || !out->set_ioproxy(&memory) || !out->open(path, spec) ||
-        !out->write_image(type, data) || !out->close()) {
-        throw ImageError(path + ": cannot write image (" + firstLine(out->geterror()) + ")");
-    }
-    out.reset();
-    writeBytesAtomically(path, resolveLinks(path), memory.buffer(), "image");
+    std::vector<unsigned char> bytes;
+    std::string error = encode(imageCodec(), bytes);
+    if (!error.empty()) throw ImageError(path + ": cannot write image (" + firstLine(error) + ")");
+    writeBytesAtomically(path, resolveLinks(path), bytes, "image");
 }
 
 }  // namespace
@@ -147,19 +140,9 @@ void checkSize(const std::string& path, int width, int height, size_t have, size
 
 void writePngRgba8(const std::string& path, int width, int height, std::span<const uint8_t> rgba) {
     checkSize(path, width, height, rgba.size(), 4);
-    OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
-    // The bytes are PNG's own straight (unassociated) alpha: without this OIIO would take them
-    // as premultiplied and divide the colour by alpha on the way out.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    // zlib level 1: exported frames are flat UI colours and compress well anyway, and at the
-    // default level 6 compression was a third of an export's time.
-    spec.attribute("png:compressionLevel", 1);
-    // One row filter, "up" (each byte minus the one above: flat panels and vertical gradients
-    // become runs of zeros), instead of libpng's per-row trial of all five, which cost more
-    // than the compression (22 % of an export's CPU against zlib's 11 %, perf). 0x20 is
-    // libpng's PNG_FILTER_UP.
-    spec.attribute("png:filter", 0x20);
-    writeImageAtomically(path, spec, OIIO::TypeDesc::UINT8, rgba.data());
+    writeImageAtomically(path, [&](const ImageCodec& codec, std::vector<unsigned char>& bytes) {
+        return codec.encodePng(path, width, height, rgba.data(), bytes);
+    });
 }
 
 void writeExr(const std::string& path, int width, int height, int channels,
@@ -169,18 +152,9 @@ void writeExr(const std::string& path, int width, int height, int channels,
                          " channels, " + std::to_string(channelNames.size()) + " names)");
     }
     checkSize(path, width, height, data.size(), static_cast<size_t>(channels));
-    OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
-    // OIIO stamps "DateTime" (the time of writing) into every EXR unless told otherwise: with
-    // it two runs of the same command give different bytes. An empty value writes no header.
-    spec.attribute("DateTime", "");
-    spec.channelnames = channelNames;
-    spec.alpha_channel = -1;
-    spec.z_channel = -1;
-    for (int c = 0; c < channels; ++c) {
-        if (channelNames[c] == "A") spec.alpha_channel = c;
-        if (channelNames[c] == "Z") spec.z_channel = c;
-    }
-    writeImageAtomically(path, spec, OIIO::TypeDesc::FLOAT, data.data());
+    writeImageAtomically(path, [&](const ImageCodec& codec, std::vector<unsigned char>& bytes) {
+        return codec.encodeExr(path, width, height, data.data(), channelNames, bytes);
+    });
 }
 
 void writeDepthImage(const std::string& path, const ShadowMap& map) {
@@ -274,12 +248,35 @@ void checkExrHeader(const std::string& path, std::ifstream& in, std::uintmax_t f
     }
 }
 
+// An image opened by the codec module, closed when it goes.
+class OpenImage {
+  public:
+    OpenImage(const ImageCodec& codec, void* handle, ImageCodecSpec spec)
+        : mCodec(codec), mHandle(handle), mSpec(std::move(spec)) {}
+    ~OpenImage() { mCodec.close(mHandle); }
+    OpenImage(const OpenImage&) = delete;
+    OpenImage& operator=(const OpenImage&) = delete;
+    const ImageCodecSpec& spec() const { return mSpec; }
+    // The first `channels` channels as floats; throws ImageError.
+    void read(const std::string& path, int channels, float* out) const {
+        std::string error = mCodec.readFloats(mHandle, channels, out);
+        if (!error.empty()) {
+            throw ImageError(path + ": cannot read image (" + firstLine(error) + ")");
+        }
+    }
+
+  private:
+    const ImageCodec& mCodec;
+    void* mHandle;
+    ImageCodecSpec mSpec;
+};
+
 // The one way an image input is opened (`trace --map`, `verify`'s folder): a regular file (a
 // FIFO or a device would block OIIO or never end), at most MAX_IMAGE_FILE_BYTES, an EXR's
 // header attribute sizes within the file, a flat 2D image of at most MAX_IMAGE_SIDE per side.
 // All of it is asked before a pixel is allocated. `what` names the thing in the side message.
-std::unique_ptr<OIIO::ImageInput> openImageInput(const std::string& path, const char* unit,
-                                                 const char* what) {
+std::unique_ptr<OpenImage> openImageInput(const std::string& path, const char* unit,
+                                          const char* what) {
     namespace fs = std::filesystem;
     std::error_code ec;
     fs::file_status status = fs::status(path, ec);
@@ -300,15 +297,19 @@ std::unique_ptr<OIIO::ImageInput> openImageInput(const std::string& path, const 
         in.read(reinterpret_cast<char*>(magic), 4);
         if (!ec && in && std::memcmp(magic, EXR_MAGIC, 4) == 0) checkExrHeader(path, in, size);
     }
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
-    if (!in) throw ImageError(path + ": cannot read image (" + firstLine(OIIO::geterror()) + ")");
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.deep || spec.width <= 0 || spec.height <= 0 || spec.depth > 1) {
+    const ImageCodec& codec = imageCodec();
+    void* handle = nullptr;
+    ImageCodecSpec spec;
+    std::string error = codec.open(path, handle, spec);
+    if (!error.empty()) throw ImageError(path + ": cannot read image (" + firstLine(error) + ")");
+    auto in = std::make_unique<OpenImage>(codec, handle, std::move(spec));
+    const ImageCodecSpec& s = in->spec();
+    if (s.deep || s.width <= 0 || s.height <= 0 || s.depth > 1) {
         throw ImageError(path + ": cannot read image (not a flat 2D image)");
     }
-    if (spec.width > MAX_IMAGE_SIDE || spec.height > MAX_IMAGE_SIDE) {
-        throw ImageError(path + ": is " + std::to_string(spec.width) + " x " +
-                         std::to_string(spec.height) + " " + unit + "; " + what + " is at most " +
+    if (s.width > MAX_IMAGE_SIDE || s.height > MAX_IMAGE_SIDE) {
+        throw ImageError(path + ": is " + std::to_string(s.width) + " x " +
+                         std::to_string(s.height) + " " + unit + "; " + what + " is at most " +
                          std::to_string(MAX_IMAGE_SIDE) + " on a side");
     }
     return in;
@@ -318,39 +319,33 @@ std::unique_ptr<OIIO::ImageInput> openImageInput(const std::string& path, const 
 
 FloatImage readFloatImage(const std::string& path) {
     QuietStderr quiet;
-    std::unique_ptr<OIIO::ImageInput> in = openImageInput(path, "pixels", "an image");
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.nchannels < 1 || spec.nchannels > 4) {
-        throw ImageError(path + ": has " + std::to_string(spec.nchannels) +
+    std::unique_ptr<OpenImage> in = openImageInput(path, "pixels", "an image");
+    const ImageCodecSpec& spec = in->spec();
+    if (spec.channels < 1 || spec.channels > 4) {
+        throw ImageError(path + ": has " + std::to_string(spec.channels) +
                          " channels; an image has 1 to 4");
     }
-    FloatImage img{spec.width, spec.height, spec.nchannels, {}};
-    img.data.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.data.data())) {
-        throw ImageError(path + ": cannot read image (" + firstLine(in->geterror()) + ")");
-    }
+    FloatImage img{spec.width, spec.height, spec.channels, {}};
+    img.data.resize(static_cast<size_t>(spec.width) * spec.height * spec.channels);
+    in->read(path, spec.channels, img.data.data());
     return img;
 }
 
 ShadowMap readDepthImage(const std::string& path) {
     QuietStderr quiet;
-    std::unique_ptr<OIIO::ImageInput> in = openImageInput(path, "texels", "a depth map");
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.nchannels != 1) {
-        throw ImageError(path + ": has " + std::to_string(spec.nchannels) +
+    std::unique_ptr<OpenImage> in = openImageInput(path, "texels", "a depth map");
+    const ImageCodecSpec& spec = in->spec();
+    if (spec.channels != 1) {
+        throw ImageError(path + ": has " + std::to_string(spec.channels) +
                          " channels; a depth map has 1");
     }
-    OIIO::TypeDesc::BASETYPE base = static_cast<OIIO::TypeDesc::BASETYPE>(spec.format.basetype);
-    if (base != OIIO::TypeDesc::HALF && base != OIIO::TypeDesc::FLOAT &&
-        base != OIIO::TypeDesc::DOUBLE) {
-        throw ImageError(path + ": holds " + std::string(spec.format.c_str()) +
+    if (!spec.floats) {
+        throw ImageError(path + ": holds " + spec.formatName +
                          " integers; a depth map holds floats (half or float)");
     }
     std::vector<float> depths(static_cast<size_t>(spec.width) * spec.height);
-    // OIIO hands scanlines in file order, first scanline first: that is ShadowMap's row 0.
-    if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, depths.data())) {
-        throw ImageError(path + ": cannot read image (" + firstLine(in->geterror()) + ")");
-    }
+    // Scanlines in file order, first scanline first: that is ShadowMap's row 0.
+    in->read(path, 1, depths.data());
     ShadowMap map(spec.width, spec.height, std::move(depths));
     if (std::optional<std::string> bad = map.findInvalidTexel()) {
         throw ImageError(path + ": " + *bad);
@@ -362,8 +357,7 @@ ShadowMap readMapImage(const std::string& path) {
     int channels = 1;
     {
         QuietStderr quiet;
-        std::unique_ptr<OIIO::ImageInput> in = openImageInput(path, "texels", "a map");
-        channels = in->spec().nchannels;
+        channels = openImageInput(path, "texels", "a map")->spec().channels;
     }
     if (channels == 1) return readDepthImage(path);
     if (channels != 2 && channels != 4) {
@@ -371,20 +365,26 @@ ShadowMap readMapImage(const std::string& path) {
                          " channels; a map has 1 (depth), 2 or 4 (moments)");
     }
     QuietStderr quiet;
-    std::unique_ptr<OIIO::ImageInput> in = openImageInput(path, "texels", "a map");
-    const OIIO::ImageSpec& spec = in->spec();
-    std::vector<float> texels(static_cast<size_t>(spec.width) * spec.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, texels.data())) {
-        throw ImageError(path + ": cannot read image (" + firstLine(in->geterror()) + ")");
+    std::unique_ptr<OpenImage> in = openImageInput(path, "texels", "a map");
+    const ImageCodecSpec& spec = in->spec();
+    if (!spec.floats) {
+        throw ImageError(path + ": holds " + spec.formatName +
+                         " integers; a moments map holds floats (half or float)");
     }
+    std::vector<float> texels(static_cast<size_t>(spec.width) * spec.height * channels);
+    // Scanlines in file order, first scanline first: that is ShadowMap's row 0.
+    in->read(path, channels, texels.data());
     MapSpec map;
     map.size = {spec.width, spec.height};
     map.texels = channels == 2 ? TexelKind::Moments2F32 : TexelKind::Moments4F32;
     ShadowMap out(map, std::move(texels));
-    if (std::optional<std::string> bad = out.findInvalidTexel())
+    if (std::optional<std::string> bad = out.findInvalidTexel()) {
         throw ImageError(path + ": " + *bad);
+    }
     return out;
 }
+
+std::string outputTarget(const std::string& path) { return resolveLinks(path); }
 
 bool fileExists(const std::string& path) {
     std::error_code ec;

@@ -3,7 +3,8 @@
 //
 // Row order: the writers take rows TOP-DOWN (first row = top of the picture = first scanline
 // in the file), which is what readPixelsRgba8 / readPixelsFloat (gl_objects.h) return.
-// readDepthImage gives a ShadowMap whose row 0 is the file's first scanline (DESIGN.md 2).
+// readDepthImage gives a ShadowMap whose row 0 is the file's first scanline (docs/methods.md,
+// "Conventions").
 //
 // Writes are atomic: the image goes to PATH.tmp-XXXXXX in the same directory and is renamed
 // over PATH only when complete, so a failed write never leaves a half-written PATH behind.
@@ -78,6 +79,12 @@ FloatImage readFloatImage(const std::string& path);
 // channels (M1 .. M4, as writeDepthImage writes them), labelled 32F; every value finite.
 ShadowMap readMapImage(const std::string& path);
 bool fileExists(const std::string& path);
+
+// The file a write to `path` replaces: `path`, or where its chain of symbolic links ends. An
+// output that is a link is written through (the file it points at is replaced, the link stays:
+// a link the user made is theirs), by every writer here and by the staged outputs that
+// app/output_files.h moves into place.
+std::string outputTarget(const std::string& path);
 
 // Writers (writeTextFile, writePngRgba8, writeExr) hold this shared from before the temporary
 // file exists until after the rename. Whoever holds it exclusively (the interrupt cleanup of

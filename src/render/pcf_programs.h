@@ -97,8 +97,8 @@ void setParamUniforms(GLuint program, const PcfParams& prm, const PcfBias& bias,
                       const ShadowSettings* settings = nullptr);
 
 // The files of a fragment stage that filters: prelude, kernel, shading, the table's uniforms
-// (paramUniformsGlsl), then the stage itself, with the variant's defines (DESIGN.md 5:
-// #version, defines, prelude, kernel, stage).
+// (paramUniformsGlsl), then the stage itself, with the variant's defines (docs/architecture.md,
+// "One kernel for the CPU and the GPU": #version, defines, prelude, kernel, stage).
 class PcfProgramCache {
   public:
     // extraDefines: more "#define NAME VALUE" lines for every program of this cache.

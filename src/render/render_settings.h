@@ -18,7 +18,7 @@ namespace pcf {
 struct RenderSettings : ShadowSettings {
     // Slope-scaled bias in the shadow pass: glPolygonOffset(factor, units); 0, 0 = off.
     glm::vec2 polygonOffset{0.0f, 0.0f};
-    // Also fill the world-position target (tests, --raw); the viewer does without.
+    // Also fill the world-position and normal targets (tests, --raw); the viewer does without.
     bool writePositions = false;
     glm::ivec2 frameSize{1280, 720};
 };

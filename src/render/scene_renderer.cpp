@@ -125,11 +125,11 @@ void SceneRenderer::renderMomentsPass(const RenderSettings& settings) {
 }
 
 void SceneRenderer::ensureTargets(const RenderSettings& settings) {
-    size_t attachments = settings.writePositions ? 5 : 4;
+    size_t attachments = settings.writePositions ? 6 : 4;
     if (mFrame.width != settings.frameSize.x || mFrame.height != settings.frameSize.y ||
         !mFrame.framebuffer || mFrame.colors.size() != attachments) {
         std::vector<GLenum> formats = {GL_RGBA8, GL_RGBA32F, GL_R32F, GL_RGBA32F};
-        if (settings.writePositions) formats.push_back(GL_RGBA32F);
+        if (settings.writePositions) formats.insert(formats.end(), {GL_RGBA32F, GL_RGBA32F});
         mFrame = createOffscreenTarget(settings.frameSize.x, settings.frameSize.y, formats,
                                        GL_DEPTH_COMPONENT24);
     }
@@ -303,6 +303,14 @@ std::vector<float> SceneRenderer::readPositions() const {
         throw std::logic_error("readPositions: render with RenderSettings::writePositions");
     }
     return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT4, mFrame.width,
+                           mFrame.height, 4);
+}
+
+std::vector<float> SceneRenderer::readNormals() const {
+    if (mFrame.colors.size() < 6) {
+        throw std::logic_error("readNormals: render with RenderSettings::writePositions");
+    }
+    return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT5, mFrame.width,
                            mFrame.height, 4);
 }
 

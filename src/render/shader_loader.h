@@ -1,7 +1,8 @@
 // shader_loader.h: the GLSL under shaders/, embedded in the binary at build time
 // (cmake/embed_shaders.cmake), and the program builder that assembles it.
 //
-// One stage is handed to glShaderSource as separate strings, in this order (DESIGN.md 5):
+// One stage is handed to glShaderSource as separate strings, in this order (docs/architecture.md,
+// "One kernel for the CPU and the GPU"):
 //   0: "#version 450 core"
 //   1: "#line 10001 1" and the stage's defines
 //   K = 2, 3...: "#line K*10000+1 K" and each file, then each raw text

@@ -117,6 +117,29 @@ bool hasSize(const Light& light) {
                                                 : light.radius > 0.0f;
 }
 
+std::optional<ParamProblem> lightSizeProblem(const Light& light, const ShadowSettings& s) {
+    bool spot = light.type == LightType::Spot;
+    if (spot && s.lightSize > 0.0f) {
+        return ParamProblem{"light_size", "",
+                            " (a directional light's angular diameter) does not apply to a spot "
+                            "light, whose size is its radius"};
+    }
+    if (!spot && s.lightRadius > 0.0f) {
+        return ParamProblem{"light_radius", "",
+                            " (a spot light's radius) does not apply to a directional light, "
+                            "whose size is its angular diameter"};
+    }
+    return std::nullopt;
+}
+
+Light applyLightSize(Light light, const ShadowSettings& s) {
+    if (light.type == LightType::Directional && s.lightSize > 0.0f) {
+        light.angularDiameterDeg = s.lightSize;
+    }
+    if (light.type == LightType::Spot && s.lightRadius > 0.0f) light.radius = s.lightRadius;
+    return light;
+}
+
 LightSample towardLight(const Light& light, glm::vec3 posWs) {
     glm::vec3 dir = glm::normalize(light.directionWs);
     if (light.type == LightType::Directional) {

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <optional>
 
+#include "kernel/settings.h"
 #include "scene/aabb.h"
 
 namespace pcf {
@@ -14,7 +16,8 @@ struct Light {
     LightType type = LightType::Directional;
     // The unit direction the light travels (from the light into the scene).
     glm::vec3 directionWs = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
-    // Spot only: where the light is, and the half-angle of its cone in degrees, in (0, 89].
+    // Spot only: where the light is, and the half-angle of its cone in degrees, in
+    // [MIN_SPOT_CONE_DEG, MAX_SPOT_CONE_DEG].
     glm::vec3 positionWs{0.0f, 5.0f, 0.0f};
     float coneDeg = 30.0f;
     // The light's size, 0 for an ideal point or direction (the default). It shapes only the
@@ -28,14 +31,28 @@ struct Light {
     float radius = 0.0f;
 };
 
-// A sun disk wider than this would no longer be a small light (the truth's disk is flat in
-// angle, tan(r) ~ r, see ground_truth.h); 10 degrees is 19 suns.
-constexpr float MAX_ANGULAR_DIAMETER_DEG = 10.0f;
-// A spot disk this wide (scene units) is larger than any teaching scene (the presets span 12).
-constexpr float MAX_SPOT_RADIUS = 100.0f;
+// A spot's cone, half-angle in degrees: below 0.01 degrees the map's perspective divides by a
+// tangent that float cannot hold (1e-45 gave infinite light-space coordinates); at 90 the map
+// would see a half-space.
+constexpr double MIN_SPOT_CONE_DEG = 0.01;
+constexpr double MAX_SPOT_CONE_DEG = 89.0;
+
+// A light's size is in the ranges of the settings that override it (kernel/settings.h
+// light_size and light_radius); scene files are read in the same.
+constexpr float MAX_ANGULAR_DIAMETER_DEG = MAX_LIGHT_SIZE_DEG;
+constexpr float MAX_SPOT_RADIUS = MAX_LIGHT_RADIUS;
 
 // Whether the light has an area (a size above 0): the area-light truth applies.
 bool hasSize(const Light& light);
+
+// Why the settings' light size does not fit this light, or nullopt: light_size is a directional
+// light's angular diameter, light_radius a spot light's radius, and each given (above 0) for the
+// other kind of light is a mistake, not something to ignore. In the kernel's words (the
+// settings named as the lesson files' keys).
+std::optional<ParamProblem> lightSizeProblem(const Light& light, const ShadowSettings& s);
+// The light with the settings' size where one is given (above 0): the light pcss filters for and
+// the area-light truth integrates over.
+Light applyLightSize(Light light, const ShadowSettings& s);
 
 // The shadow pass's view: right-handed, looking down -z along the light direction, y up as far
 // as the direction allows (world Y, or world Z when the light is within ~8 degrees of vertical).

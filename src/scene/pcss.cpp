@@ -5,8 +5,6 @@
 
 namespace pcf {
 
-static_assert(MAX_LIGHT_SIZE_DEG == MAX_ANGULAR_DIAMETER_DEG);
-
 float effectiveLightSizeDeg(const Light& light, float lightSizeDeg) {
     if (lightSizeDeg > 0.0f) return lightSizeDeg;
     if (light.type == LightType::Directional && light.angularDiameterDeg > 0.0f) {
@@ -57,8 +55,9 @@ float penumbraScale(const Light& light, const glm::mat4& shadowClipFromWorld, in
 PcfParams pcssPcfParams(const Light& light, const PcfMapLayer& layer, const ShadowSettings& s,
                         vec2 rotation) {
     bool searches = methodInfo(s.method).searchesBlockers;
-    float scale =
-        searches ? penumbraScale(light, layer.shadowClipFromWorld, s.mapSize, s.lightSize) : 0.0f;
+    float scale = searches ? penumbraScale(applyLightSize(light, s), layer.shadowClipFromWorld,
+                                           s.mapSize, s.lightSize)
+                           : 0.0f;
     PcfParams p = s.pcfParams(rotation, scale);
     if (searches && light.type == LightType::Spot) {
         p.depthNear = layer.depthRange.x;

@@ -25,7 +25,8 @@ float effectiveLightSizeDeg(const Light& light, float lightSizeDeg);
 //   S = 2 tan(theta / 2) * (2 / L2) / texelWs
 // The matrix, not the scene: a widened depth range or a shifted grid (light.h) changes S with
 // the map.
-// A spot light of radius R (light.radius; lightSizeDeg does not apply): its map is perspective,
+// A spot light of radius R (light.radius; lightSizeDeg does not apply, light_radius does through
+// pcssPcfParams): its map is perspective,
 // and the kernel works in linear distance (pcf_kernel.h, Fernando 2005 with w_light = 2 R):
 //   S = 2 R * P00 * mapSize / 2 = R * P00 * mapSize
 // P00 the projection's x scale (the u row of the matrix, without the part along its w row that
@@ -42,7 +43,8 @@ float penumbraScale(const Light& light, const glm::mat4& shadowClipFromWorld, in
 glm::vec2 pcssDepthRange(const glm::mat4& shadowClipFromWorld);
 
 // The settings' kernel parameters, with what a blocker search (pcss) takes from the light and
-// the map's layer it reads (kernel/shadow_map.h): the penumbraScale for this light and the
+// the map's layer it reads (kernel/shadow_map.h): the penumbraScale for this light (its size the
+// settings' where given: light.h applyLightSize) and the
 // layer's fit, and under a spot the layer's depth range (PcfMapLayer::depthRange).
 PcfParams pcssPcfParams(const Light& light, const PcfMapLayer& layer, const ShadowSettings& s,
                         vec2 rotation = vec2(1.0f, 0.0f));

@@ -1,13 +1,9 @@
 // presets.h: the built-in scenes, by name, each a small TOML scene (scene_file.h) kept in
-// presets.cpp and parsed by the same parser as any scene file.
-//
-//   box-on-plane       a box resting on the ground, sun at ~40 degrees: the classic
-//   sphere-over-plane  a sphere floating above the ground: its shadow is an ellipse
-//   pole               a thin tall pole standing on the ground: peter panning opens a gap
-//                      between its foot and its shadow
-//   grazing            light 82 degrees from the ground's normal: shadow acne across the ground
-//   stairs             four steps of rising height: receivers at several depths, each step
-//                      shadowing the next
+// presets.cpp and parsed by the same parser as any scene file. The list of them is PRESETS
+// there, one place: each entry's name and its TOML, which opens with what the scene shows (the
+// box on the ground, the sphere's ellipse, the pole's peter panning, the post in a wide sun and
+// under a spot with a radius, the grazing light's acne, the stairs' receivers at several
+// depths). `pcfscope render --help` lists the names.
 #pragma once
 
 #include <optional>
@@ -19,7 +15,7 @@
 
 namespace pcf {
 
-// In the order above.
+// In PRESETS' order.
 std::vector<std::string_view> presetNames();
 // "box-on-plane, sphere-over-plane, ...": every name, for help and errors.
 std::string presetNameList();

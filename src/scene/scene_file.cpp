@@ -16,11 +16,9 @@ namespace pcf {
 
 namespace {
 
-std::string formatNumber(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
+// A value in a message, as the file gave it: the shortest text that reads back as the same
+// double, never rounded to a limit it exceeds ("got 89.0000000001", not "got 89").
+std::string formatNumber(double v) { return exactNumberText(v); }
 
 template <int N>
 std::string formatVector(const glm::vec<N, double>& v) {
@@ -265,10 +263,9 @@ Light readLight(const std::string& source, const toml::table& table) {
         light.directionWs = glm::vec3(r.direction("direction"));
         if (const toml::node* sizeNode = r.find("angular_diameter")) {
             double size = r.number(*sizeNode, "angular_diameter");
-            if (!(size >= 0.0 && size <= MAX_ANGULAR_DIAMETER_DEG)) {
-                r.fail(sizeNode, "directional light angular_diameter must be in [0, " +
-                                     formatNumber(MAX_ANGULAR_DIAMETER_DEG) + "] degrees, got " +
-                                     formatNumber(size));
+            // The range of the setting that overrides it (kernel/settings.h light_size).
+            if (auto why = paramRangeProblem(*findParam("light_size"), size)) {
+                r.fail(sizeNode, why->say("directional light angular_diameter"));
             }
             light.angularDiameterDeg = static_cast<float>(size);
         }
@@ -280,17 +277,17 @@ Light readLight(const std::string& source, const toml::table& table) {
         light.positionWs = glm::vec3(r.vector<3>("position"));
         const toml::node& coneNode = r.require("cone");
         double cone = r.number(coneNode, "cone");
-        if (!(cone > 0.0 && cone <= 89.0)) {
-            r.fail(&coneNode,
-                   "spot light cone must be in (0, 89] degrees, got " + formatNumber(cone));
+        if (!(cone >= MIN_SPOT_CONE_DEG && cone <= MAX_SPOT_CONE_DEG)) {
+            r.fail(&coneNode, "spot light cone must be in [" + formatNumber(MIN_SPOT_CONE_DEG) +
+                                  ", " + formatNumber(MAX_SPOT_CONE_DEG) + "] degrees, got " +
+                                  formatNumber(cone));
         }
         light.coneDeg = static_cast<float>(cone);
         if (const toml::node* radiusNode = r.find("radius")) {
             double radius = r.number(*radiusNode, "radius");
-            if (!(radius >= 0.0 && radius <= MAX_SPOT_RADIUS)) {
-                r.fail(radiusNode, "spot light radius must be in [0, " +
-                                       formatNumber(MAX_SPOT_RADIUS) + "] scene units, got " +
-                                       formatNumber(radius));
+            // The range of the setting that overrides it (kernel/settings.h light_radius).
+            if (auto why = paramRangeProblem(*findParam("light_radius"), radius)) {
+                r.fail(radiusNode, why->say("spot light radius"));
             }
             light.radius = static_cast<float>(radius);
         }

@@ -15,7 +15,7 @@
 //   direction = [-0.4, -1.0, -0.3] required, the way the light travels; not zero, need not be
 //                                  unit
 //   position  = [0.0, 6.0, 0.0]    spot only, required
-//   cone      = 30.0               spot only, required: half-angle in degrees, in (0, 89]
+//   cone      = 30.0               spot only, required: half-angle in degrees, in [0.01, 89]
 //   angular_diameter = 0.53        directional only, optional (default 0, an ideal direction):
 //                                  the light disk's angular diameter in degrees, in [0, 10]
 //   radius    = 0.1                spot only, optional (default 0, a point): the radius of the

@@ -11,13 +11,7 @@
 #include <string>
 #include <thread>
 
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libavutil/error.h>
-#include <libavutil/opt.h>
-#include <libswscale/swscale.h>
-}
+#include "video/av_library.h"
 
 namespace pcf {
 
@@ -65,7 +59,7 @@ uint8_t levelValue(int level, int levels) {
 
 std::string avError(int code) {
     char buf[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(code, buf, sizeof buf);
+    avLibrary().av_strerror(code, buf, sizeof buf);
     return buf;
 }
 
@@ -103,6 +97,7 @@ std::vector<uint32_t> gifPalette() {
 }
 
 struct VideoWriter::Impl {
+    const AvLibrary& av = avLibrary();  // FFmpeg, opened by the first video
     std::filesystem::path path;
     VideoFormat format = VideoFormat::Mp4;
     int width = 0, height = 0;
@@ -141,11 +136,11 @@ struct VideoWriter::Impl {
 
     void openCodec(int fps) {
         const char* name = format == VideoFormat::Mp4 ? "libx264" : "gif";
-        const AVCodec* c = avcodec_find_encoder_by_name(name);
+        const AVCodec* c = av.avcodec_find_encoder_by_name(name);
         if (!c) {
             throw VideoError(path.string() + ": FFmpeg has no " + name + " encoder");
         }
-        codec = avcodec_alloc_context3(c);
+        codec = av.avcodec_alloc_context3(c);
         codec->width = width;
         codec->height = height;
         // A GIF counts its frame delays in 1/100 s.
@@ -156,43 +151,43 @@ struct VideoWriter::Impl {
             codec->gop_size = 2 * fps;
             // crf 18: visually lossless for these flat-shaded frames; "fast" keeps the encoder's
             // share of an annotated frame's time small on two cores.
-            av_opt_set(codec->priv_data, "preset", "fast", 0);
-            av_opt_set(codec->priv_data, "crf", "18", 0);
+            av.av_opt_set(codec->priv_data, "preset", "fast", 0);
+            av.av_opt_set(codec->priv_data, "crf", "18", 0);
         }
         if (output->oformat->flags & AVFMT_GLOBALHEADER) {
             codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
         }
-        check(avcodec_open2(codec, c, nullptr),
+        check(av.avcodec_open2(codec, c, nullptr),
               std::string("cannot open the ") + name + " encoder");
-        stream = avformat_new_stream(output, nullptr);
+        stream = av.avformat_new_stream(output, nullptr);
         if (!stream) throw VideoError(path.string() + ": cannot add a video stream");
         stream->time_base = codec->time_base;
-        check(avcodec_parameters_from_context(stream->codecpar, codec), "codec parameters");
+        check(av.avcodec_parameters_from_context(stream->codecpar, codec), "codec parameters");
     }
 
     void open(int fps) {
         std::string file = path.string();
         const char* muxer = format == VideoFormat::Mp4 ? "mp4" : "gif";
-        check(avformat_alloc_output_context2(&output, nullptr, muxer, file.c_str()),
+        check(av.avformat_alloc_output_context2(&output, nullptr, muxer, file.c_str()),
               "cannot make the output");
         openCodec(fps);
-        check(avio_open(&output->pb, file.c_str(), AVIO_FLAG_WRITE), "cannot open");
+        check(av.avio_open(&output->pb, file.c_str(), AVIO_FLAG_WRITE), "cannot open");
         AVDictionary* options = nullptr;
         // The index in front, so a browser starts playing before the whole file has arrived.
-        if (format == VideoFormat::Mp4) av_dict_set(&options, "movflags", "+faststart", 0);
-        int r = avformat_write_header(output, &options);
-        av_dict_free(&options);
+        if (format == VideoFormat::Mp4) av.av_dict_set(&options, "movflags", "+faststart", 0);
+        int r = av.avformat_write_header(output, &options);
+        av.av_dict_free(&options);
         check(r, "cannot write the header");
         headerWritten = true;
-        frame = av_frame_alloc();
-        packet = av_packet_alloc();
+        frame = av.av_frame_alloc();
+        packet = av.av_packet_alloc();
         frame->format = codec->pix_fmt;
         frame->width = width;
         frame->height = height;
-        check(av_frame_get_buffer(frame, 0), "frame buffer");
+        check(av.av_frame_get_buffer(frame, 0), "frame buffer");
         if (format == VideoFormat::Mp4) {
-            scaler = sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height,
-                                    AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr, nullptr);
+            scaler = av.sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height,
+                                       AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr, nullptr);
             if (!scaler) throw VideoError(path.string() + ": no RGBA -> yuv420p");
         }
     }
@@ -200,26 +195,26 @@ struct VideoWriter::Impl {
     // Writes every packet the encoder has ready.
     void drain() {
         for (;;) {
-            int r = avcodec_receive_packet(codec, packet);
+            int r = av.avcodec_receive_packet(codec, packet);
             if (r == AVERROR(EAGAIN) || r == AVERROR_EOF) return;
             check(r, "encoding");
             // Each frame lasts one frame: without it the MP4's edit list ends at the last
             // frame's start and players drop that frame.
             if (format == VideoFormat::Mp4) packet->duration = 1;
-            av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
+            av.av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
             packet->stream_index = stream->index;
-            r = av_interleaved_write_frame(output, packet);
+            r = av.av_interleaved_write_frame(output, packet);
             check(r, "write");
             if (output->pb->error < 0) fail("write", output->pb->error);
         }
     }
 
     void fillFrame(const std::vector<uint8_t>& rgba) {
-        check(av_frame_make_writable(frame), "frame buffer");
+        check(av.av_frame_make_writable(frame), "frame buffer");
         if (format == VideoFormat::Mp4) {
             const uint8_t* src[1] = {rgba.data()};
             int stride[1] = {4 * width};
-            sws_scale(scaler, src, stride, 0, height, frame->data, frame->linesize);
+            av.sws_scale(scaler, src, stride, 0, height, frame->data, frame->linesize);
             frame->pts = next++;
             return;
         }
@@ -263,7 +258,7 @@ struct VideoWriter::Impl {
     void encode(const std::vector<uint8_t>& rgba) {
         auto start = std::chrono::steady_clock::now();
         fillFrame(rgba);
-        check(avcodec_send_frame(codec, frame), "encoding");
+        check(av.avcodec_send_frame(codec, frame), "encoding");
         drain();
         seconds += secondsSince(start);
     }
@@ -320,12 +315,12 @@ struct VideoWriter::Impl {
 
     void close() {
         stopWorker();
-        if (output && output->pb) avio_closep(&output->pb);
-        sws_freeContext(scaler);
-        av_packet_free(&packet);
-        av_frame_free(&frame);
-        avcodec_free_context(&codec);
-        avformat_free_context(output);
+        if (output && output->pb) av.avio_closep(&output->pb);
+        av.sws_freeContext(scaler);
+        av.av_packet_free(&packet);
+        av.av_frame_free(&frame);
+        av.avcodec_free_context(&codec);
+        av.avformat_free_context(output);
         output = nullptr;
         scaler = nullptr;
     }
@@ -342,7 +337,7 @@ VideoWriter::VideoWriter(const std::filesystem::path& path, VideoFormat format, 
         throw VideoError(path.string() + ": " + *problem);
     }
     if (fps < 1 || fps > 60) throw VideoError(path.string() + ": fps must be 1..60");
-    av_log_set_level(AV_LOG_ERROR);
+    mImpl->av.av_log_set_level(AV_LOG_ERROR);
     try {
         mImpl->open(fps);
     } catch (...) {
@@ -387,12 +382,12 @@ void VideoWriter::finish() {
     m.stopWorker();
     if (m.error) std::rethrow_exception(m.error);
     auto start = std::chrono::steady_clock::now();
-    m.check(avcodec_send_frame(m.codec, nullptr), "flushing the encoder");
+    m.check(m.av.avcodec_send_frame(m.codec, nullptr), "flushing the encoder");
     m.drain();
-    m.check(av_write_trailer(m.output), "cannot write the trailer");
-    avio_flush(m.output->pb);
+    m.check(m.av.av_write_trailer(m.output), "cannot write the trailer");
+    m.av.avio_flush(m.output->pb);
     if (m.output->pb->error < 0) m.fail("write", m.output->pb->error);
-    m.check(avio_closep(&m.output->pb), "cannot close");
+    m.check(m.av.avio_closep(&m.output->pb), "cannot close");
     m.finished = true;
     double flush = secondsSince(start);
     m.seconds += flush;

@@ -45,7 +45,7 @@ fs::path makeFolder() {
     pcf::writeTextFile((dir / "render.json").string(),
                        R"({"method":"nearest","kernel":1,"radius":1,"rotate":false,)"
                        R"("weights":"box","sigma":1,"precision":"exact","depth_format":"32f",)"
-                       R"("map_size":4,"bias":"constant","soft_scale":0,"rpdb_max":0.5,)"
+                       R"("map_size":4,"bias":"constant","soft_scale":2048,"rpdb_max":0.5,)"
                        R"("constant_bias":0.01,"slope_bias":0,"slope_max":0.01,)"
                        R"("normal_offset":0})"
                        "\n");
