@@ -131,7 +131,7 @@ TEST_F(GpuParity, RandomLookupsOnRandomMapsMatchTheCpuKernel) {
     }
 }
 
-// The shader's dispatch (pcf_kernel.h pcfFilterRef, compiled as GLSL with the method a define)
+// The shader's dispatch (pcf_filter.h pcfFilterRef, compiled as GLSL with the method a define)
 // has a branch for every method of the table and every weighting: none gives PCF_UNDISPATCHED,
 // which an id without a branch gets on the GPU as on the CPU (so parity alone cannot tell).
 TEST_F(GpuParity, TheShadersDispatchHasABranchForEveryMethod) {

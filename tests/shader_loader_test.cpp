@@ -15,6 +15,7 @@
 #include "kernel/pcf.h"
 #include "render/gl_context.h"
 #include "render/gl_objects.h"
+#include "render/pcf_programs.h"
 
 namespace pcf {
 namespace {
@@ -179,7 +180,8 @@ TEST_F(ShaderLoader, LinkErrorSaysItDidNotLink) {
     EXPECT_NE(message.find("does not link"), std::string::npos) << message;
 }
 
-// The point of shaders/shared/: pcf_prelude.h + pcf_kernel.h are valid GLSL 4.50.
+// The point of shaders/shared/: the shared kernel's files (pcfSharedFiles: the prelude, the
+// kernel, the moment methods, the dispatch) are valid GLSL 4.50.
 const char* PCF_FRAG = R"(
 uniform sampler2D uMap;
 uniform int uMethod;
@@ -196,11 +198,9 @@ void main() {
 )";
 
 TEST_F(ShaderLoader, SharedPcfKernelCompilesAndLinks) {
-    GlProgram program = buildProgram({{GL_VERTEX_SHADER, {}, "", {{"full.vert", FULL_VERT}}},
-                                      {GL_FRAGMENT_SHADER,
-                                       {"shared/pcf_prelude.h", "shared/pcf_kernel.h"},
-                                       "",
-                                       {{"pcf_test.frag", PCF_FRAG}}}});
+    GlProgram program =
+        buildProgram({{GL_VERTEX_SHADER, {}, "", {{"full.vert", FULL_VERT}}},
+                      {GL_FRAGMENT_SHADER, pcfSharedFiles(), "", {{"pcf_test.frag", PCF_FRAG}}}});
     ASSERT_TRUE(program);
     GLint linked = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
@@ -213,11 +213,9 @@ TEST_F(ShaderLoader, SharedPcfKernelCompilesAndLinks) {
 // (docs/architecture.md's parity, in small: one 16 x 16 map, every method, a 32 x 32 grid of
 // lookups reaching past the map's edges). The renderer's own parity test covers scenes and sizes.
 TEST_F(ShaderLoader, SharedPcfKernelMatchesTheCpuKernel) {
-    GlProgram program = buildProgram({{GL_VERTEX_SHADER, {}, "", {{"full.vert", FULL_VERT}}},
-                                      {GL_FRAGMENT_SHADER,
-                                       {"shared/pcf_prelude.h", "shared/pcf_kernel.h"},
-                                       "",
-                                       {{"pcf_test.frag", PCF_FRAG}}}});
+    GlProgram program =
+        buildProgram({{GL_VERTEX_SHADER, {}, "", {{"full.vert", FULL_VERT}}},
+                      {GL_FRAGMENT_SHADER, pcfSharedFiles(), "", {{"pcf_test.frag", PCF_FRAG}}}});
     const int mapSize = 16;
     ShadowMap map(mapSize, mapSize);
     uint32_t state = 12345u;

@@ -201,7 +201,7 @@ const PcfProgram& PcfProgramCache::get(const PcfVariant& variant) {
     GlProgram program = buildProgram({
         ShaderStage{GL_VERTEX_SHADER, {mVertexFile}, "", {}},
         ShaderStage{GL_FRAGMENT_SHADER,
-                    {"shared/pcf_prelude.h", "shared/pcf_kernel.h", "shared/pcf_shading.h"},
+                    pcfSharedFiles({"shared/pcf_shading.h"}),
                     defines,
                     {{"<parameter uniforms>", paramUniformsGlsl()},
                      {"shaders/" + mFragmentFile, std::string(embeddedShader(mFragmentFile))}}},
@@ -209,6 +209,13 @@ const PcfProgram& PcfProgramCache::get(const PcfVariant& variant) {
     ParamUniformLocations uniforms = paramUniformLocations(program.id());
     return mPrograms.emplace(variant, PcfProgram{std::move(program), std::move(uniforms)})
         .first->second;
+}
+
+std::vector<std::string> pcfSharedFiles(std::vector<std::string> after) {
+    std::vector<std::string> files = {"shared/pcf_prelude.h", "shared/pcf_kernel.h",
+                                      "shared/pcf_moments.h", "shared/pcf_filter.h"};
+    files.insert(files.end(), after.begin(), after.end());
+    return files;
 }
 
 PcfSamplers createPcfSamplers() { return {createNearestSampler(), createCompareSampler()}; }
