@@ -83,9 +83,10 @@ TEST(Methods, WeightsChangeTheResultOfTheMethodsThatTakeThem) {
             return momentsMap(map, p, mapTexelKind(m.id, TexelKind::D32F));
         };
         // At some receiver depth behind part of the footprint (a moment method is 1 wherever
-        // the receiver is before the mean).
+        // the receiver is before the mean; evsm2's warp exp(40 (2z - 1)) puts the mean of a
+        // footprint holding a depth of 1 beyond every receiver but one at 1).
         bool differs = false;
-        for (float ref : {0.5f, 0.7f, 0.9f}) {
+        for (float ref : {0.5f, 0.7f, 0.9f, 1.0f}) {
             differs = differs || filterVisibility(read(box), uv, ref, box) !=
                                      filterVisibility(read(binomial), uv, ref, binomial);
         }
@@ -113,7 +114,7 @@ std::vector<vec2> spreadLookups(int count) {
     return out;
 }
 
-// The kernel's dispatch (pcf_kernel.h pcfFilterRef) has a branch for every method of the table:
+// The kernel's dispatch (pcf_filter.h pcfFilterRef) has a branch for every method of the table:
 // none returns PCF_UNDISPATCHED, what an id without a branch gets (instead of another method's
 // answer). tests/gpu_parity_test.cpp holds the GLSL to the same.
 TEST(Methods, TheKernelsDispatchHasABranchForEveryMethod) {
@@ -144,7 +145,9 @@ TEST(Methods, HardMethodsGiveOnlyZeroOrOne) {
         ShadowMap read = mapForMethod(map, prm);  // a moment method reads the map's moments
         bool between = false;
         for (vec2 uv : spreadLookups(64)) {
-            for (float ref : {0.45f, 0.75f}) {
+            // 1: evsm2's warped mean lies beyond every other receiver
+            // (WeightsChangeTheResultOfTheMethodsThatTakeThem).
+            for (float ref : {0.45f, 0.75f, 1.0f}) {
                 float v = filterVisibility(read, uv, ref, prm);
                 between = between || (v > 0.0f && v < 1.0f);
             }
