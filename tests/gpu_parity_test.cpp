@@ -26,7 +26,7 @@ namespace {
 
 constexpr float PARITY_TOLERANCE = 1e-5f;
 
-// The moment methods are held to MOMENT_TOLERANCE (analysis/conformance.h): their visibility
+// The moment methods are held to MOMENT_TOLERANCE (measure/conformance.h): their visibility
 // goes through exp (EVSM's warps) and divisions whose last bits a GLSL compiler may round
 // otherwise (llvmpipe: up to 2.5e-5 from the CPU on the rendered scenes); the others to 1e-5.
 float parityTolerance(int method) {

@@ -8,10 +8,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/conformance.h"
 #include "kernel/methods.h"
 #include "kernel/moments.h"
 #include "kernel/pcf.h"
+#include "measure/conformance.h"
 #include "random_map.h"
 #include "render/gl_context.h"
 #include "render/gpu_lookup.h"
