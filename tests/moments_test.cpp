@@ -12,6 +12,7 @@
 #include "kernel/methods.h"
 #include "kernel/settings.h"
 #include "kernel/trace.h"
+#include "kernel/trace_json.h"
 #include "render/image_io.h"
 #include "run_command.h"
 
@@ -178,6 +179,28 @@ TEST(Moments, MsmPointsAndWeightsGiveBackTheMoments) {
     }
     EXPECT_GT(hausdorffFour, 0);  // the four-point case was reached
     EXPECT_GT(fourthHeld, 300);   // and most lookups hold all four moments
+}
+
+// The text trace's table of texels: a moments map's texel holds filtered moments, and no texel has
+// a comparison bit (the one visibility is the bound's), so each cell is its first moment and its
+// bilinear weight; a depth method's cell keeps its depth, bit and weight.
+TEST(Moments, TheTextTableShowsFirstMomentsAndWeightsNoBits) {
+    ShadowMap depth(8, 8);
+    for (int j = 0; j < 8; ++j) {
+        for (int i = 0; i < 8; ++i) depth.setDepth(i, j, i < 4 ? 0.25f : 0.75f);
+    }
+    PcfParams prm = makeParams(PCF_VSM, 1);
+    ShadowMap moments = momentsMap(depth, prm, TexelKind::Moments2F32);
+    // uv between texels 3 and 4 of row 3 and 4: weights 0.25 each, m1 0.25 and 0.75.
+    std::string text = traceToText(traceLookup(moments, vec2(0.5f), 0.5f, 0.5f, prm));
+    EXPECT_NE(text.find("Texels read (first moment m1 / bilinear weight)"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find("0.25 / 0.25 "), std::string::npos) << text;
+    EXPECT_NE(text.find("0.75 / 0.25 "), std::string::npos) << text;
+    std::string pcf =
+        traceToText(traceLookup(depth, vec2(0.5f), 0.5f, 0.5f, makeParams(PCF_BILINEAR2X2)));
+    EXPECT_NE(pcf.find("Texels read (depth / bit / weight)"), std::string::npos) << pcf;
+    EXPECT_NE(pcf.find("0.25 / 0 / 0.25 "), std::string::npos) << pcf;
 }
 
 }  // namespace

@@ -348,9 +348,14 @@ std::string traceToJson(const Trace& tr) { return jsonDump(traceJson(tr)); }
 
 namespace {
 
-// The neighbourhood as a table: depth, bit and merged weight per texel, rows as stored.
+// The neighbourhood as a table: depth, bit and merged weight per texel, rows as stored. A moments
+// map's texel holds filtered moments, not a depth, and no texel has a bit of its own (the one
+// visibility comes from the bound): its first moment and its bilinear weight.
 void writeTexelTable(const Trace& tr, std::ostringstream& s) {
-    s << "Texels read (depth / bit / weight), row j down, column i across:\n";
+    bool moments = methodInfo(tr.params.method).mapPass != MapPass::Depth;
+    s << (moments ? "Texels read (first moment m1 / bilinear weight)"
+                  : "Texels read (depth / bit / weight)")
+      << ", row j down, column i across:\n";
     const WeightGrid& g = tr.weights;
     bool anyClamped = false;
     s << "        ";
@@ -376,8 +381,9 @@ void writeTexelTable(const Trace& tr, std::ostringstream& s) {
             bool clamped = false;
             for (const TapRecord& t : tr.taps) clamped = clamped || (t.texel == texel && t.clamped);
             anyClamped = anyClamped || clamped;
-            std::string cell = tap ? formatNumber(tap->depth) + " / " + formatBit(tap->lit) +
-                                         " / " + formatNumber(g.at(texel)) + (clamped ? " *" : "")
+            std::string bit = moments || !tap ? "" : " / " + formatBit(tap->lit);
+            std::string cell = tap ? formatNumber(tap->depth) + bit + " / " +
+                                         formatNumber(g.at(texel)) + (clamped ? " *" : "")
                                    : "-";
             char buf[40];
             std::snprintf(buf, sizeof buf, " %-18s", cell.c_str());
