@@ -157,10 +157,10 @@ class AdviseStepChart : public ::testing::Test {
     // A one-step lesson charting `folder`/advise.csv; the chart line is line 6.
     std::string lesson(const std::filesystem::path& folder, const std::string& claims = "") {
         std::string path = (mDir / "advise.toml").string();
-        std::ofstream(path) << "title = \"Advice\"\n"               // 1
-                               "scene = \"box-on-plane\"\n"         // 2
-                               "[[step]]\n"                         // 3
-                               "title = \"The chart\"\n"            // 4
+        std::ofstream(path) << "title = \"Advice\"\n"                 // 1
+                               "scene = \"box-on-plane\"\n"           // 2
+                               "[[step]]\n"                           // 3
+                               "title = \"The chart\"\n"              // 4
                                "text = \"The settings measured.\"\n"  // 5
                                "chart = \""
                             << (folder / "advise.csv").string() << "\"\n"  // 6
@@ -179,7 +179,8 @@ TEST_F(AdviseStepChart, ABadFolderIsRefusedAtTheChartsLine) {
     std::ofstream(folder / "advise.csv") << w.csv;
     std::string path = lesson(folder);
     std::string out = (mDir / "out-advise").string();
-    for (std::string command : {std::string("lesson check "), "export -o " + out + " --size 640x360 "}) {
+    for (std::string command :
+         {std::string("lesson check "), "export -o " + out + " --size 640x360 "}) {
         testutil::CommandResult r = testutil::runPcfscope(command + path);
         EXPECT_EQ(r.exitCode, 2) << command << r.out << r.err;
         EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
@@ -196,10 +197,11 @@ TEST_F(AdviseStepChart, ABadFolderIsRefusedAtTheChartsLine) {
 // one this chart's facts do not know is a bad file (exit 2).
 TEST_F(AdviseStepChart, AFalseClaimAboutTheCommittedFiguresFailsAtItsLine) {
     std::filesystem::path figures = PCFSCOPE_SOURCE_DIR "/lessons/figures/box_advise";
-    std::string path = lesson(figures,
-                              "claims = [\"chart: the choice is nearest map 256 bias none\",\n"  // 7
-                              "  \"chart: nearest map 256 bias none meets the budget\",\n"       // 8
-                              "  \"chart: the budget is edge 0.2\"]\n");                         // 9
+    std::string path =
+        lesson(figures,
+               "claims = [\"chart: the choice is nearest map 256 bias none\",\n"  // 7
+               "  \"chart: nearest map 256 bias none meets the budget\",\n"       // 8
+               "  \"chart: the budget is edge 0.2\"]\n");                         // 9
     testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
     EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
     EXPECT_EQ(testutil::lineCount(r.out), 3) << r.out;

@@ -52,7 +52,8 @@ enum Column : size_t {
 // "leak+shimmer" or "-", as advise_report.cpp writes a candidate's broken budgets.
 std::string brokenText(const std::vector<AdviseConstraint>& broken) {
     std::string s;
-    for (AdviseConstraint k : broken) s += (s.empty() ? "" : "+") + std::string(adviseConstraintName(k));
+    for (AdviseConstraint k : broken)
+        s += (s.empty() ? "" : "+") + std::string(adviseConstraintName(k));
     return s.empty() ? "-" : s;
 }
 
@@ -162,8 +163,9 @@ AdviseReport parseAdviseReport(std::string_view csvText, const std::string& csvS
     report.result.gridSize = static_cast<size_t>(grid);
     std::vector<CsvLine> lines = csvLines(csvText);
     if (lines.empty() || lines.front().text != ADVISE_CSV_HEADER) {
-        throw InputError(csvSource, 1,
-                         "not an advise.csv header: expected '" + std::string(ADVISE_CSV_HEADER) + "'");
+        throw InputError(
+            csvSource, 1,
+            "not an advise.csv header: expected '" + std::string(ADVISE_CSV_HEADER) + "'");
     }
     std::optional<size_t> chosen;
     for (size_t k = 1; k < lines.size(); ++k) {
@@ -186,9 +188,9 @@ AdviseReport parseAdviseReport(std::string_view csvText, const std::string& csvS
     if (report.result.measured.empty()) throw InputError(csvSource, 0, "no settings measured");
     if (report.result.measured.size() > report.result.gridSize) {
         throw InputError(jsonSource, 0,
-                         "\"grid_size\" " + std::to_string(report.result.gridSize) + " is less than the " +
-                             std::to_string(report.result.measured.size()) + " settings of " +
-                             csvSource);
+                         "\"grid_size\" " + std::to_string(report.result.gridSize) +
+                             " is less than the " + std::to_string(report.result.measured.size()) +
+                             " settings of " + csvSource);
     }
     chooseAdvice(report.result, report.budget);
     if (report.result.choice != chosen) {
