@@ -5,10 +5,12 @@
 // again from scratch meets every bound. Also the chart's layout and picture.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 
 #include "charts/advise_chart.h"
+#include "charts/step_chart.h"
 #include "measure/advise.h"
 #include "measure/advise_measure.h"
 #include "measure/advise_report.h"
@@ -225,6 +227,40 @@ TEST_F(AdviseGl, TheSettingsTableAndJsonNameTheChoice) {
     std::string json = adviseJson(r, budget(), context);
     EXPECT_NE(json.find("\"grid_size\": 60"), std::string::npos);
     EXPECT_NE(json.find("\"binding\": \"" + adviseBinding(r, budget()) + "\""), std::string::npos);
+}
+
+// A lesson step's advise chart (step_chart.h: "DIR/advise.csv", here the committed
+// lessons/figures/box_advise) is the advise chart drawn at the frame's size with the frame's type
+// floor: the picture is of that size and the choice the folder's files make is ringed in orange
+// where the step's layout puts its dot.
+TEST(AdviseStepChart, DrawsTheFolderAtTheFramesSizeWithItsChoiceRinged) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    std::string chart = PCFSCOPE_SOURCE_DIR "/lessons/figures/box_advise/advise.csv";
+    AdviseReport a = readStepAdvise(stepChartRef(chart));
+    ASSERT_TRUE(a.result.choice.has_value());
+    size_t k = *a.result.choice;
+    for (glm::ivec2 size : {glm::ivec2(1024, 430), glm::ivec2(617, 347), glm::ivec2(1600, 900)}) {
+        StepChart step{chart, "", 18.0f, true};
+        std::vector<uint8_t> rgba = drawStepChart(step, size);
+        ASSERT_EQ(rgba.size(), static_cast<size_t>(size.x * size.y * 4));
+        std::optional<SpeedChartLayout> layout = stepSpeedChartLayout(step, size);
+        ASSERT_TRUE(layout.has_value());
+        glm::vec2 dot = layout->points[k];
+        float ring = speedChartMarkRadius(*layout, k) + 5.5f * layout->scale;
+        // Round the ring (every 10 degrees, a pixel in and out): orange, far from the other
+        // inks of the chart (the method colours, the green ring, the grey and black).
+        int orange = 0, samples = 0;
+        for (int degrees = 0; degrees < 360; degrees += 10) {
+            for (float dr : {-1.0f, 0.0f, 1.0f}) {
+                float angle = glm::radians(static_cast<float>(degrees));
+                glm::ivec2 q(dot + (ring + dr) * glm::vec2(std::cos(angle), std::sin(angle)));
+                const uint8_t* p = &rgba[(static_cast<size_t>(q.y) * size.x + q.x) * 4];
+                orange += p[0] > 200 && p[1] > 90 && p[1] < 190 && p[2] < 90;
+                ++samples;
+            }
+        }
+        EXPECT_GT(orange, samples / 6) << size.x << "x" << size.y;
+    }
 }
 
 }  // namespace

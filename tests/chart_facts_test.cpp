@@ -115,10 +115,10 @@ TEST_F(ChartFacts, MostAndLeastAccurateReadTheChartsOwnAxis) {
 TEST_F(ChartFacts, AContactChartSaysWhatItMeasured) {
     std::string csv = write("bench.csv", benchCsv(contactRows()));
     StepChartRef ref = stepChartRef(csv + "#contact");
-    EXPECT_TRUE(ref.bench);
+    EXPECT_TRUE(ref.bench());
     EXPECT_EQ(ref.accuracy, ChartAccuracy::ContactRmse);
     EXPECT_EQ(ref.path, csv);
-    EXPECT_FALSE(stepChartRef(csv + "#tradeoff").bench);
+    EXPECT_FALSE(stepChartRef(csv + "#tradeoff").bench());
     EXPECT_NO_THROW(checkStepChart(csv + "#contact"));
     std::string title, subtitle, axis;
     for (const ChartTextBox& b :

@@ -25,6 +25,7 @@
 #include "charts/advise_chart.h"
 #include "measure/advise.h"
 #include "measure/advise_measure.h"
+#include "measure/advise_read.h"
 #include "measure/advise_report.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
@@ -35,8 +36,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* ADVISE_CSV = "advise.csv";
-constexpr const char* ADVISE_JSON = "advise.json";
+constexpr const char* ADVISE_CSV = ADVISE_CSV_NAME;  // a lesson step's chart reads these two
+constexpr const char* ADVISE_JSON = ADVISE_JSON_NAME;
 constexpr const char* ADVISE_TOML = "settings.toml";
 constexpr const char* ADVISE_CHART = "advise.png";
 // The options the search sets itself; RenderOptions registers them for the commands that render.
@@ -255,7 +256,7 @@ int runAdvise(const AdviseCommandOptions& o) {
     writeTextFile((staging.path() / ADVISE_CSV).string(), adviseCsv(r, bench->rows()));
     writeTextFile((staging.path() / ADVISE_JSON).string(), adviseJson(r, plan.budget, context));
     writeTextFile((staging.path() / ADVISE_TOML).string(), toml);
-    std::string title = "Settings measured for " + plan.scene.name + " against the budget";
+    std::string title = adviseChartTitle(plan.scene.name);
     std::vector<uint8_t> png =
         drawAdviseChart(r, bench->rows(), plan.budget, plan.chartSize, title, gl->renderer());
     writePngRgba8((staging.path() / ADVISE_CHART).string(), plan.chartSize.x, plan.chartSize.y,

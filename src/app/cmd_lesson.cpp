@@ -53,7 +53,7 @@ ClaimWorld chartWorld(const LessonStep& step) {
     world.chartLess = [&step](const std::string& a, const std::string& b,
                               const std::string& metric) -> std::variant<bool, std::string> {
         StepChartRef ref = stepChartRef(step.chart);
-        if (step.chart.empty() || !ref.bench) return std::string("the step shows no bench chart");
+        if (step.chart.empty() || !ref.bench()) return std::string("the step shows no bench chart");
         std::vector<BenchRow> rows = parseBenchCsv(readInputFile(ref.path), ref.path);
         const BenchRow* picks[2] = {nullptr, nullptr};
         const std::string* labels[2] = {&a, &b};

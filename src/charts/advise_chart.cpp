@@ -36,29 +36,41 @@ float distanceTo(const Rect& r, glm::vec2 p) {
     return glm::length(p - nearest);
 }
 
-// A label's box beside its dot: right, left, above, below, then the diagonals, the first in the
-// plot on no text, dot, bar or other label and nearer its own dot than any other; else right of
-// the dot.
+// A label's place beside its dot: right, left, above, below, then the diagonals, at `reach`
+// times the gap.
+std::vector<Rect> labelPlaces(glm::vec2 dot, glm::vec2 size, float g) {
+    const glm::vec2 offsets[] = {{g, -size.y / 2},           {-g - size.x, -size.y / 2},
+                                 {-size.x / 2, -g - size.y}, {-size.x / 2, g},
+                                 {g, -g - size.y},           {g, g},
+                                 {-g - size.x, -g - size.y}, {-g - size.x, g}};
+    std::vector<Rect> places;
+    for (glm::vec2 o : offsets) places.push_back({dot.x + o.x, dot.y + o.y, size.x, size.y});
+    return places;
+}
+
+// A label's box: the first place in the plot on no text, dot, bar or other label (a space
+// apart, so that two names do not read as one) and nearer its own dot than any other (but one
+// that covers it), tried beside the dot and then farther out (where a crowd of dots and names
+// sits about the budget line; drawAdviseChart draws a leader to a name placed out there); then
+// the first such place however near another dot; else right of the dot.
 Rect placeLabel(glm::vec2 dot, glm::vec2 size, float gap, const Rect& plot,
                 const std::vector<Rect>& taken, const std::vector<glm::vec2>& dots) {
-    const glm::vec2 offsets[] = {{gap, -size.y / 2},
-                                 {-gap - size.x, -size.y / 2},
-                                 {-size.x / 2, -gap - size.y},
-                                 {-size.x / 2, gap},
-                                 {gap, -gap - size.y},
-                                 {gap, gap},
-                                 {-gap - size.x, -gap - size.y},
-                                 {-gap - size.x, gap}};
-    for (glm::vec2 o : offsets) {
-        Rect r{dot.x + o.x, dot.y + o.y, size.x, size.y};
-        bool inside = r.x >= plot.x && r.right() <= plot.right() && r.y >= plot.y &&
-                      r.bottom() <= plot.bottom();
-        bool own = std::all_of(dots.begin(), dots.end(), [&](glm::vec2 other) {
-            return other == dot || distanceTo(r, other) > distanceTo(r, dot);
-        });
-        if (inside && own && !overlapsAny(r, taken)) return r;
+    float pad = 0.25f * size.y;
+    for (bool ownOnly : {true, false}) {
+        for (float reach : {1.0f, 2.5f, 4.0f, 6.0f, 8.0f}) {
+            for (const Rect& r : labelPlaces(dot, size, gap * reach)) {
+                bool inside = r.x >= plot.x && r.right() <= plot.right() && r.y >= plot.y &&
+                              r.bottom() <= plot.bottom();
+                bool own = std::all_of(dots.begin(), dots.end(), [&](glm::vec2 other) {
+                    return glm::length(other - dot) < gap ||
+                           distanceTo(r, other) > distanceTo(r, dot);
+                });
+                Rect padded{r.x - pad, r.y - 1.0f, r.w + 2.0f * pad, r.h + 2.0f};
+                if (inside && (own || !ownOnly) && !overlapsAny(padded, taken)) return r;
+            }
+        }
     }
-    return {dot.x + offsets[0].x, dot.y + offsets[0].y, size.x, size.y};
+    return {dot.x + gap, dot.y - size.y / 2, size.x, size.y};
 }
 
 }  // namespace
@@ -88,37 +100,45 @@ bool adviseBudgetLineShown(const AdviseResult& result, const AdviseBudget& budge
                        [&](const auto& c) { return c.metrics.edgeRmse >= budget.maxEdgeRmse; });
 }
 
+std::string adviseChartTitle(const std::string& scene) {
+    return "Settings measured for " + scene + " against the budget";
+}
+
 SpeedChartText adviseChartText(const AdviseResult& result, const AdviseBudget& budget,
-                               const std::string& title, const std::string& glRenderer) {
+                               const std::string& title, const std::string& glRenderer,
+                               float minFontPx) {
     SpeedChartText text;
     text.title = title;
     text.subtitle =
         chartRendererLine(glRenderer) +
-        "\ngreen ring: meets the whole budget; orange ring: the choice; the words beside a "
-        "dot: the budgets it breaks; " +
+        "\ngreen ring: meets the budget; orange: the choice; beside a dot: the budgets it "
+        "breaks; " +
         (adviseBudgetLineShown(result, budget)
-             ? std::string("dashed: the edge-RMSE budget, ")
-             : std::string("every dot is within the edge-RMSE budget, ")) +
+             ? std::string("dashed: edge budget ")
+             : std::string("every dot is within the edge budget ")) +
         chartTickText(budget.maxEdgeRmse);
     text.xLabel = "lookup pass, process CPU time, ms (log scale)";
     text.yLabel = "edge-band RMSE of visibility";
-    text.minFontPx = STANDALONE_CHART_MIN_PX;
+    text.minFontPx = minFontPx;
     text.keptLabelsOnly = true;
     return text;
 }
 
 AdviseChartOverlay layoutAdviseChart(const AdviseResult& result, const std::vector<BenchRow>& rows,
                                      const AdviseBudget& budget, glm::ivec2 size,
-                                     const std::string& title, const std::string& glRenderer) {
+                                     const std::string& title, const std::string& glRenderer,
+                                     float minFontPx) {
     std::vector<BenchRow> chartRows = adviseChartRows(result, rows);
-    SpeedChartText text = speedChartTextFor(
-        chartRows, adviseChartText(result, budget, title, glRenderer), size, ChartTiming::Lookup);
+    SpeedChartText text =
+        speedChartTextFor(chartRows, adviseChartText(result, budget, title, glRenderer, minFontPx),
+                          size, ChartTiming::Lookup);
     AdviseChartOverlay o;
+    o.text = text;
     o.chart = layoutSpeedChart(chartRows, size, ChartTiming::Lookup, ChartAccuracy::EdgeRmse,
                                text.highlight, text.minFontPx, text.keptLabelsOnly,
                                subtitleLineCount(text.subtitle));
     const SpeedChartLayout& L = o.chart;
-    o.fontPx = std::max(STANDALONE_CHART_MIN_PX, L.labelPx);
+    o.fontPx = std::max(minFontPx, L.labelPx);
     std::vector<Rect> taken;
     for (const ChartTextBox& b : speedChartTextBoxes(L, text)) taken.push_back(b.rect);
     for (size_t k = 0; k < chartRows.size(); ++k) {
@@ -132,9 +152,15 @@ AdviseChartOverlay layoutAdviseChart(const AdviseResult& result, const std::vect
         taken.push_back({L.plot.x, o.budgetY - 2.0f * L.scale, L.plot.w, 4.0f * L.scale});
     o.labels.assign(chartRows.size(), "");
     o.labelBoxes.assign(chartRows.size(), Rect{});
+    // The choice's name first: it takes the nearest free place, before the names of what the
+    // settings about it break.
+    std::vector<size_t> order;
+    if (result.choice && *result.choice < chartRows.size()) order.push_back(*result.choice);
     for (size_t k = 0; k < chartRows.size(); ++k) {
+        if (!result.measured[k].feasible()) order.push_back(k);
+    }
+    for (size_t k : order) {
         bool chosen = result.choice && *result.choice == k;
-        if (result.measured[k].feasible() && !chosen) continue;
         o.labels[k] =
             chosen ? "choice: " + chartLabel(chartRows[k].point) : brokenLabel(result.measured[k]);
         glm::vec2 extent = measureText(FontFace::Sans, o.fontPx, o.labels[k]);
@@ -145,14 +171,25 @@ AdviseChartOverlay layoutAdviseChart(const AdviseResult& result, const std::vect
     return o;
 }
 
+std::vector<ChartTextBox> adviseChartTextBoxes(const AdviseChartOverlay& overlay) {
+    std::vector<ChartTextBox> boxes = speedChartTextBoxes(overlay.chart, overlay.text);
+    for (size_t k = 0; k < overlay.labels.size(); ++k) {
+        if (overlay.labels[k].empty()) continue;
+        boxes.push_back({overlay.labelBoxes[k], overlay.fontPx, "chart-label", overlay.labels[k]});
+    }
+    return boxes;
+}
+
 std::vector<uint8_t> drawAdviseChart(const AdviseResult& result, const std::vector<BenchRow>& rows,
                                      const AdviseBudget& budget, glm::ivec2 size,
-                                     const std::string& title, const std::string& glRenderer) {
+                                     const std::string& title, const std::string& glRenderer,
+                                     float minFontPx) {
     std::vector<BenchRow> chartRows = adviseChartRows(result, rows);
-    std::vector<uint8_t> base =
-        drawSpeedChart(chartRows, size, adviseChartText(result, budget, title, glRenderer),
-                       ChartTiming::Lookup, ChartAccuracy::EdgeRmse);
-    AdviseChartOverlay o = layoutAdviseChart(result, rows, budget, size, title, glRenderer);
+    std::vector<uint8_t> base = drawSpeedChart(
+        chartRows, size, adviseChartText(result, budget, title, glRenderer, minFontPx),
+        ChartTiming::Lookup, ChartAccuracy::EdgeRmse);
+    AdviseChartOverlay o =
+        layoutAdviseChart(result, rows, budget, size, title, glRenderer, minFontPx);
     const SpeedChartLayout& L = o.chart;
     std::vector<glm::vec4> pixels(base.size() / 4);
     for (size_t k = 0; k < pixels.size(); ++k) {
@@ -185,6 +222,15 @@ std::vector<uint8_t> drawAdviseChart(const AdviseResult& result, const std::vect
                 TextStyle style{FontFace::Sans, o.fontPx, chosen ? CHART_INK : CHART_SOFT_INK,
                                 TextAlign::Left};
                 c.text(o.labelBoxes[k].position(), o.labels[k], style);
+                // A name placed out past the first ring of places gets a leader to its dot.
+                float mark = speedChartMarkRadius(L, k) + 2.0f * s;
+                glm::vec2 dot = L.points[k];
+                glm::vec2 to = glm::clamp(dot, o.labelBoxes[k].position(),
+                                          o.labelBoxes[k].position() + o.labelBoxes[k].size());
+                if (glm::length(to - dot) > 2.0f * mark) {
+                    glm::vec2 from = dot + glm::normalize(to - dot) * mark;
+                    c.line(from, to, std::max(1.0f, s), style.colour);
+                }
             }
         }
     });

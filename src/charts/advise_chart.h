@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "charts/chart_axes.h"
 #include "charts/speed_chart.h"
 #include "draw/rect.h"
 #include "measure/advise.h"
@@ -23,10 +24,14 @@ namespace pcf {
 std::vector<BenchRow> adviseChartRows(const AdviseResult& result,
                                       const std::vector<BenchRow>& rows);
 
+// The chart's title: "Settings measured for box-on-plane against the budget".
+std::string adviseChartTitle(const std::string& scene);
+
 // The speed chart's text for advise.png: the title, the subtitle (renderer, what the marks
-// mean), the cost axis's name.
+// mean), the cost axis's name; no type under minFontPx (a lesson frame asks for its floor).
 SpeedChartText adviseChartText(const AdviseResult& result, const AdviseBudget& budget,
-                               const std::string& title, const std::string& glRenderer);
+                               const std::string& title, const std::string& glRenderer,
+                               float minFontPx = STANDALONE_CHART_MIN_PX);
 // Whether the budget's line is drawn: some setting's error reaches it (else the line would lie
 // above the plot, and the subtitle says every dot is within the budget).
 bool adviseBudgetLineShown(const AdviseResult& result, const AdviseBudget& budget);
@@ -36,6 +41,7 @@ bool adviseBudgetLineShown(const AdviseResult& result, const AdviseBudget& budge
 // line's y (budgetShown: adviseBudgetLineShown).
 struct AdviseChartOverlay {
     SpeedChartLayout chart;
+    SpeedChartText text;  // the speed chart's texts as drawn (speedChartTextFor)
     std::vector<std::string> labels;
     std::vector<Rect> labelBoxes;
     float budgetY = 0.0f;
@@ -44,11 +50,17 @@ struct AdviseChartOverlay {
 };
 AdviseChartOverlay layoutAdviseChart(const AdviseResult& result, const std::vector<BenchRow>& rows,
                                      const AdviseBudget& budget, glm::ivec2 size,
-                                     const std::string& title, const std::string& glRenderer);
+                                     const std::string& title, const std::string& glRenderer,
+                                     float minFontPx = STANDALONE_CHART_MIN_PX);
+
+// Every text the chart draws: the speed chart's (speedChartTextBoxes) and the overlay's labels
+// ("chart-label"), for a lesson frame's layout.
+std::vector<ChartTextBox> adviseChartTextBoxes(const AdviseChartOverlay& overlay);
 
 // The chart as RGBA8, rows top-down. Needs a current OpenGL 4.5 context.
 std::vector<uint8_t> drawAdviseChart(const AdviseResult& result, const std::vector<BenchRow>& rows,
                                      const AdviseBudget& budget, glm::ivec2 size,
-                                     const std::string& title, const std::string& glRenderer);
+                                     const std::string& title, const std::string& glRenderer,
+                                     float minFontPx = STANDALONE_CHART_MIN_PX);
 
 }  // namespace pcf

@@ -14,6 +14,7 @@
 #include "charts/stability_chart.h"
 #include "charts/stability_figures.h"
 #include "charts/step_chart.h"
+#include "measure/advise_read.h"
 #include "measure/bench_report.h"
 #include "measure/stability_report.h"
 
@@ -21,8 +22,11 @@ namespace pcf {
 
 namespace {
 
-// A chart as the step names it (step_chart.h): the file, the view, bench or stability.
+// A chart as the step names it (step_chart.h): the file, the view, bench, stability or advise.
 using ChartData = StepChartRef;
+
+// The view of the facts an advise chart answers (FACTS below).
+constexpr std::string_view ADVISE_FACTS = "advise.csv";
 
 std::string percent(double share) {
     char buf[32];
@@ -33,7 +37,9 @@ std::string percent(double share) {
 // "measured on NAME": the renderer the file records contains NAME.
 ChartFactAnswer measuredOn(const ChartData& c, const std::string& name) {
     std::string renderer;
-    if (c.bench) {
+    if (c.kind == StepChartKind::Advise) {
+        renderer = readStepAdvise(c).glRenderer;
+    } else if (c.bench()) {
         renderer = speedChartRenderer(readChartRows(c.path));
     } else {
         std::vector<StabilityRow> rows = parseStabilityCsv(readInputFile(c.path), c.path);
@@ -238,13 +244,149 @@ ChartFactAnswer frontIs(const ChartData& c, const std::string& names) {
     return {got == names, "the front is " + (got.empty() ? std::string("empty") : got)};
 }
 
+// An advise chart's facts: the folder read back (step_chart.h readStepAdvise), settings named as
+// advise names them (adviseSettingName: "hw2x2 map 512 bias none").
+
+// "edge", "edge and shimmer", "edge, acne and leak": constraints as a sentence lists them.
+std::string constraintList(const std::vector<AdviseConstraint>& cs) {
+    std::string s;
+    for (size_t k = 0; k < cs.size(); ++k) {
+        s += (k == 0               ? ""
+              : k + 1 == cs.size() ? " and "
+                                   : ", ") +
+             std::string(adviseConstraintName(cs[k]));
+    }
+    return s.empty() ? "none" : s;
+}
+
+// The measured setting `name` names, or std::invalid_argument naming the measured ones.
+size_t settingNamed(const AdviseReport& a, const std::string& name) {
+    std::string names;
+    for (size_t k = 0; k < a.result.measured.size(); ++k) {
+        std::string mine = adviseSettingName(a.result.measured[k].setting);
+        if (mine == name) return k;
+        names += (names.empty() ? "" : ", ") + mine;
+    }
+    throw std::invalid_argument("'" + name + "' is no setting the chart measured (" + names + ")");
+}
+
+std::string nameOf(const AdviseReport& a, std::optional<size_t> k) {
+    return k ? adviseSettingName(a.result.measured[*k].setting) : std::string("none");
+}
+
+// "the choice is X" / "the runner-up is X".
+ChartFactAnswer choiceIs(const ChartData& c, const std::string& name) {
+    AdviseReport a = readStepAdvise(c);
+    settingNamed(a, name);
+    return {nameOf(a, a.result.choice) == name, "the choice is " + nameOf(a, a.result.choice)};
+}
+
+// ("the runner-up is none": no other measured setting meets the budget.)
+ChartFactAnswer runnerUpIs(const ChartData& c, const std::string& name) {
+    AdviseReport a = readStepAdvise(c);
+    if (name != "none") settingNamed(a, name);
+    return {nameOf(a, a.result.runnerUp) == name,
+            "the runner-up is " + nameOf(a, a.result.runnerUp)};
+}
+
+// "X meets the budget": X breaks none of its bounds.
+ChartFactAnswer meetsBudget(const ChartData& c, const std::string& name) {
+    AdviseReport a = readStepAdvise(c);
+    const AdviseCandidate& x = a.result.measured[settingNamed(a, name)];
+    return {x.feasible(), name + " breaks " + constraintList(x.broken)};
+}
+
+// "X breaks the edge and shimmer budget(s)": the bounds X breaks are exactly those.
+ChartFactAnswer breaksBudgets(const ChartData& c, const std::string& arg) {
+    const std::string verb = " breaks the ";
+    size_t at = arg.rfind(verb);
+    AdviseReport a = readStepAdvise(c);
+    const AdviseCandidate& x = a.result.measured[settingNamed(a, arg.substr(0, at))];
+    std::string got = constraintList(x.broken);
+    return {got == arg.substr(at + verb.size()), "it breaks " + got};
+}
+
+// "the edge and shimmer budgets bind" (or "the edge budget binds"): adviseBinds names those.
+ChartFactAnswer budgetsBind(const ChartData& c, const std::string& list) {
+    std::string got = constraintList(adviseBinds(readStepAdvise(c).result));
+    return {got == list, "binds: " + got};
+}
+
+// "X reads N texels": the texel reads per lookup advise.csv records for X (the method table's).
+ChartFactAnswer readsTexels(const ChartData& c, const std::string& arg) {
+    size_t at = arg.rfind(" reads ");
+    AdviseReport a = readStepAdvise(c);
+    const AdviseCandidate& x = a.result.measured[settingNamed(a, arg.substr(0, at))];
+    return {std::to_string(x.texelReads) == arg.substr(at + 7),
+            "it reads " + std::to_string(x.texelReads)};
+}
+
+// "the search measured M of G settings": the CSV's settings and advise.json's grid_size.
+ChartFactAnswer measuredOf(const ChartData& c, const std::string& counts) {
+    AdviseReport a = readStepAdvise(c);
+    std::string got =
+        std::to_string(a.result.measured.size()) + " of " + std::to_string(a.result.gridSize);
+    return {got == counts, "measured " + got};
+}
+
+// "N settings meet the budget".
+ChartFactAnswer feasibleCount(const ChartData& c, const std::string& count) {
+    AdviseReport a = readStepAdvise(c);
+    size_t n = static_cast<size_t>(std::count_if(a.result.measured.begin(), a.result.measured.end(),
+                                                 [](const auto& m) { return m.feasible(); }));
+    return {std::to_string(n) == count, std::to_string(n) + " meet it"};
+}
+
+// "the budget is edge 0.1, acne 0.01, leak 2, shimmer 0.5": each bound advise.json sets, in
+// the constraints' order, as chartTickText writes a number.
+ChartFactAnswer budgetIs(const ChartData& c, const std::string& words) {
+    AdviseReport a = readStepAdvise(c);
+    std::string got;
+    for (AdviseConstraint k : ALL_ADVISE_CONSTRAINTS) {
+        if (std::optional<double> limit = adviseLimit(a.budget, k)) {
+            got += (got.empty() ? "" : ", ") + std::string(adviseConstraintName(k)) + " " +
+                   chartTickText(*limit);
+        }
+    }
+    return {got == words, "the budget is " + got};
+}
+
+// "the timer cannot order X and Y": the choice's tie (AdviseResult::tied) is exactly X and Y.
+ChartFactAnswer timerTie(const ChartData& c, const std::string& pair) {
+    size_t and_ = pair.find(" and ");
+    AdviseReport a = readStepAdvise(c);
+    std::vector<size_t> named = {settingNamed(a, pair.substr(0, and_)),
+                                 settingNamed(a, pair.substr(and_ + 5))};
+    std::vector<size_t> tied = a.result.tied;
+    std::sort(named.begin(), named.end());
+    std::sort(tied.begin(), tied.end());
+    std::string got;
+    for (size_t k : tied) got += (got.empty() ? "" : ", ") + nameOf(a, k);
+    return {named == tied, "tied: " + (got.empty() ? std::string("none") : got)};
+}
+
+// "X costs more than Y": X's cost median is above Y's and their spreads (median -+ IQR/2) lie
+// apart, so the timer can order them.
+ChartFactAnswer costsMore(const ChartData& c, const std::string& pair) {
+    size_t than = pair.find(" costs more than ");
+    AdviseReport a = readStepAdvise(c);
+    const AdviseMetrics& x = a.result.measured[settingNamed(a, pair.substr(0, than))].metrics;
+    const AdviseMetrics& y = a.result.measured[settingNamed(a, pair.substr(than + 17))].metrics;
+    return {x.costMs > y.costMs && !adviseSpreadsOverlap(x, y),
+            chartTickText(x.costMs) + " ms (IQR " + chartTickText(x.costIqr) + ") against " +
+                chartTickText(y.costMs) + " ms (IQR " + chartTickText(y.costIqr) + ")"};
+}
+
 // A fact's words around its one argument: PREFIX ARG SUFFIX; `view` the chart it applies to
-// ("" any bench chart, "*" any chart, else a stability chart's name).
+// ("" any bench chart, "*" any chart, ADVISE_FACTS an advise chart, else a stability chart's
+// name).
 struct FactEntry {
     std::string_view prefix;
     std::string_view suffix;
     std::string_view view;
     ChartFactAnswer (*test)(const ChartData&, const std::string& arg);
+    // Words the argument must hold (its two parts' joint: "X costs more than Y"); "" none.
+    std::string_view infix = {};
 };
 
 constexpr FactEntry FACTS[] = {
@@ -259,19 +401,38 @@ constexpr FactEntry FACTS[] = {
     {"", ": over the onset at every elevation", "acne", acneEverywhere},
     {"", " degrees", "acne", acneCrossing},
     {"", ": rises over the onset and falls back", "acne", acneHump},
+    {"the choice is ", "", ADVISE_FACTS, choiceIs},
+    {"the runner-up is ", "", ADVISE_FACTS, runnerUpIs},
+    {"", " settings meet the budget", ADVISE_FACTS, feasibleCount},
+    {"", " meets the budget", ADVISE_FACTS, meetsBudget},
+    {"", " budgets", ADVISE_FACTS, breaksBudgets, " breaks the "},
+    {"", " budget", ADVISE_FACTS, breaksBudgets, " breaks the "},
+    {"the ", " budgets bind", ADVISE_FACTS, budgetsBind},
+    {"the ", " budget binds", ADVISE_FACTS, budgetsBind},
+    {"the search measured ", " settings", ADVISE_FACTS, measuredOf, " of "},
+    {"", " texels", ADVISE_FACTS, readsTexels, " reads "},
+    {"the budget is ", "", ADVISE_FACTS, budgetIs},
+    {"the timer cannot order ", "", ADVISE_FACTS, timerTie, " and "},
+    {"", "", ADVISE_FACTS, costsMore, " costs more than "},
 };
 
 // The entry whose words match `fact` on this chart, and its argument; or invalid_argument.
 std::pair<const FactEntry*, std::string> matchFact(const ChartData& c, const std::string& fact) {
     std::string known;
     for (const FactEntry& e : FACTS) {
-        bool applies = e.view == "*" || (e.view.empty() ? c.bench : !c.bench && e.view == c.view);
+        bool applies = e.view == "*" ||
+                       (e.view == ADVISE_FACTS ? c.kind == StepChartKind::Advise
+                        : e.view.empty()       ? c.bench()
+                                         : c.kind == StepChartKind::Stability && e.view == c.view);
         if (!applies) continue;
         known += std::string(known.empty() ? "" : "; ") + std::string(e.prefix) + "X" +
-                 std::string(e.suffix);
+                 (e.infix.empty() ? "" : std::string(e.infix) + "Y") + std::string(e.suffix);
         if (fact.size() <= e.prefix.size() + e.suffix.size()) continue;
         if (!fact.starts_with(e.prefix) || !fact.ends_with(e.suffix)) continue;
-        return {&e, fact.substr(e.prefix.size(), fact.size() - e.prefix.size() - e.suffix.size())};
+        std::string arg =
+            fact.substr(e.prefix.size(), fact.size() - e.prefix.size() - e.suffix.size());
+        if (!e.infix.empty() && arg.find(e.infix) == std::string::npos) continue;
+        return {&e, arg};
     }
     throw std::invalid_argument("unknown chart fact '" + fact +
                                 "' (this chart knows: " + (known.empty() ? "none" : known) + ")");

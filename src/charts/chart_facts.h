@@ -30,6 +30,23 @@
 //   L: rises over the onset and falls back    #acne: L starts under the onset at the highest sun,
 //                                             reaches it, and ends under it at the lowest
 //
+//   the choice is X                           an advise chart (step_chart.h: DIR/advise.csv):
+//   the runner-up is X                        the setting advise chose (the cheapest other one
+//                                             that meets the budget; "none": no other does) is
+//                                             X, named as advise names it ("hw2x2 map 512 bias
+//                                             none")
+//   X meets the budget                        X breaks none of the budget's bounds
+//   X breaks the C budget(s)                  the bounds X breaks are exactly C ("edge",
+//                                             "edge and shimmer", "edge, acne and leak")
+//   the C budget binds / budgets bind         what rules out the cheaper settings
+//                                             (advise.h: adviseBinds) is exactly C
+//   X reads N texels                          advise.csv's texel reads per lookup of X
+//   the search measured M of G settings       advise.csv's settings and advise.json's grid
+//   N settings meet the budget                how many measured settings meet every bound
+//   the budget is edge E, acne A, ...         advise.json's bounds, each one set, in that order
+//   the timer cannot order X and Y            the choice's timing tie is exactly X and Y
+//   X costs more than Y                       X's cost median is above Y's, spreads apart
+//
 // M is the chart's panel title ("pcf-gather 5x5", "nearest"); L a panel's title, a space and the
 // line's bias mode ("pcf-gather 5x5 normal").
 #pragma once

@@ -6,6 +6,7 @@
 
 #include "base/input_error.h"
 #include "base/input_file.h"
+#include "charts/advise_chart.h"
 #include "charts/chart_axes.h"
 #include "charts/stability_figures.h"
 #include "measure/stability_report.h"
@@ -80,11 +81,26 @@ std::vector<BenchRow> readBenchChartRows(const StepChartRef& ref) {
 
 StepChartRef stepChartRef(const std::string& chart) {
     size_t hash = chart.rfind('#');
-    if (hash == std::string::npos) return {chart, "", true, ChartAccuracy::EdgeRmse};
-    std::string view = chart.substr(hash + 1);
+    std::string path = chart.substr(0, hash);
+    std::string view = hash == std::string::npos ? "" : chart.substr(hash + 1);
+    if (std::filesystem::path(path).filename() == ADVISE_CSV_NAME) {
+        return {path, view, StepChartKind::Advise, ChartAccuracy::EdgeRmse};
+    }
+    if (hash == std::string::npos)
+        return {chart, "", StepChartKind::Bench, ChartAccuracy::EdgeRmse};
     bool contact = view == CONTACT_CHART_VIEW;
-    return {chart.substr(0, hash), view, contact,
+    return {path, view, contact ? StepChartKind::Bench : StepChartKind::Stability,
             contact ? ChartAccuracy::ContactRmse : ChartAccuracy::EdgeRmse};
+}
+
+AdviseReport readStepAdvise(const StepChartRef& ref) {
+    if (!ref.view.empty()) {
+        throw InputError(
+            ref.path, 0,
+            "an advise chart has no views ('#" + ref.view + "'): name its " + ADVISE_CSV_NAME);
+    }
+    std::string json = (std::filesystem::path(ref.path).parent_path() / ADVISE_JSON_NAME).string();
+    return parseAdviseReport(readInputFile(ref.path), ref.path, readInputFile(json), json);
 }
 
 std::vector<BenchRow> readChartRows(const std::string& csvPath) {
@@ -93,7 +109,11 @@ std::vector<BenchRow> readChartRows(const std::string& csvPath) {
 
 void checkStepChart(const std::string& chart) {
     StepChartRef ref = stepChartRef(chart);
-    if (ref.bench) {
+    if (ref.kind == StepChartKind::Advise) {
+        readStepAdvise(ref);
+        return;
+    }
+    if (ref.bench()) {
         readBenchChartRows(ref);
         return;
     }
@@ -107,7 +127,7 @@ void checkStepChart(const std::string& chart) {
 
 void checkStepChartHighlight(const std::string& chart, const std::string& highlight) {
     StepChartRef ref = stepChartRef(chart);
-    if (!ref.bench) {
+    if (!ref.bench()) {
         throw std::invalid_argument("needs a bench chart (chart = \"....csv\" or \"....csv#" +
                                     std::string(CONTACT_CHART_VIEW) + "\")");
     }
@@ -116,7 +136,12 @@ void checkStepChartHighlight(const std::string& chart, const std::string& highli
 
 std::vector<uint8_t> drawStepChart(const StepChart& chart, glm::ivec2 size) {
     StepChartRef ref = stepChartRef(chart.chart);
-    if (ref.bench) {
+    if (ref.kind == StepChartKind::Advise) {
+        AdviseReport a = readStepAdvise(ref);
+        return drawAdviseChart(a.result, a.rows, a.budget, size, adviseChartTitle(a.scene),
+                               a.glRenderer, chart.minFontPx);
+    }
+    if (ref.bench()) {
         std::vector<BenchRow> rows = readBenchChartRows(ref);
         return drawSpeedChart(rows, size, speedChartText(chart, ref, rows), ChartTiming::Scene,
                               ref.accuracy);
@@ -141,17 +166,28 @@ std::pair<SpeedChartText, SpeedChartLayout> speedChartOf(const StepChart& chart,
     return {text, layout};
 }
 
+// An advise chart's layout at `size`: the speed chart under it and its marks' labels.
+AdviseChartOverlay adviseChartOf(const StepChart& chart, const StepChartRef& ref, glm::ivec2 size) {
+    AdviseReport a = readStepAdvise(ref);
+    return layoutAdviseChart(a.result, a.rows, a.budget, size, adviseChartTitle(a.scene),
+                             a.glRenderer, chart.minFontPx);
+}
+
 }  // namespace
 
 std::optional<SpeedChartLayout> stepSpeedChartLayout(const StepChart& chart, glm::ivec2 size) {
     StepChartRef ref = stepChartRef(chart.chart);
-    if (!ref.bench) return std::nullopt;
+    if (ref.kind == StepChartKind::Advise) return adviseChartOf(chart, ref, size).chart;
+    if (!ref.bench()) return std::nullopt;
     return speedChartOf(chart, ref, size).second;
 }
 
 std::vector<ChartTextBox> stepChartTexts(const StepChart& chart, glm::ivec2 size) {
     StepChartRef ref = stepChartRef(chart.chart);
-    if (ref.bench) {
+    if (ref.kind == StepChartKind::Advise) {
+        return adviseChartTextBoxes(adviseChartOf(chart, ref, size));
+    }
+    if (ref.bench()) {
         auto [text, layout] = speedChartOf(chart, ref, size);
         return speedChartTextBoxes(layout, text);
     }

@@ -1,9 +1,11 @@
 // step_chart.h: the chart a lesson step shows in the scene's place (lesson.h: LessonStep::chart
 // and chart_highlight): "PATH", a bench.csv's speed against accuracy (speed_chart.h, the edge
 // band's RMSE: speed_vs_accuracy.png), "PATH#contact", the same bench.csv's speed against the
-// edge RMSE near the casters (speed_vs_contact.png: bench --contact D), or "PATH#NAME", one of a
-// stability.csv's sweep charts (stability_figures.h: sweepCharts). Read, checked, drawn and its
-// texts placed here, for every command that shows a step.
+// edge RMSE near the casters (speed_vs_contact.png: bench --contact D), "PATH#NAME", one of a
+// stability.csv's sweep charts (stability_figures.h: sweepCharts), or "DIR/advise.csv", an
+// advise output folder (advise.csv with advise.json beside it: measure/advise_read.h) drawn as
+// advise.png is (advise_chart.h). Read, checked, drawn and its texts placed here, for every
+// command that shows a step.
 #pragma once
 
 #include <cstddef>
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "charts/speed_chart.h"
+#include "measure/advise_read.h"
 #include "measure/bench_report.h"
 
 namespace pcf {
@@ -27,13 +30,17 @@ constexpr std::size_t MAX_CHART_ROWS = 2000;
 // less): a command that draws a step's chart checks its size against this first.
 constexpr int MIN_CHART_SIDE = 64;
 
-// A step's chart as its name says: the file, the view after '#', and for a bench.csv which
-// accuracy its y axis shows.
+// Which measurements a step's chart draws: a bench.csv, a stability.csv's sweep, an advise folder.
+enum class StepChartKind { Bench, Stability, Advise };
+
+// A step's chart as its name says: the file, the view after '#', its kind (a file named
+// advise.csv is an advise folder's), and for a bench.csv which accuracy its y axis shows.
 struct StepChartRef {
     std::string path;
-    std::string view;  // "" or "contact" for a bench chart, else a stability chart's name
-    bool bench = true;
+    std::string view;  // "" or "contact" for a bench chart, a stability chart's name, else ""
+    StepChartKind kind = StepChartKind::Bench;
     ChartAccuracy accuracy = ChartAccuracy::EdgeRmse;
+    bool bench() const { return kind == StepChartKind::Bench; }
 };
 // The bench chart's view of its contact chart: "PATH#contact".
 inline constexpr std::string_view CONTACT_CHART_VIEW = "contact";
@@ -51,8 +58,12 @@ struct StepChart {
 // Throws InputError.
 std::vector<BenchRow> readChartRows(const std::string& csvPath);
 
+// An advise chart's folder read back (advise.csv and the advise.json beside it). Throws
+// InputError.
+AdviseReport readStepAdvise(const StepChartRef& ref);
+
 // Throws InputError unless `chart` can be drawn: its file is read, has rows (for a sweep chart,
-// of that sweep) and names a sweep chart that exists.
+// of that sweep) and names a sweep chart that exists; an advise folder's two files agree.
 void checkStepChart(const std::string& chart);
 // Throws std::invalid_argument unless the chart is a bench chart and `highlight` names rows of
 // its bench.csv (chartRowsMatching), InputError for the file.
@@ -61,7 +72,8 @@ void checkStepChartHighlight(const std::string& chart, const std::string& highli
 // The chart as RGBA8 of `size`, rows top-down. Throws InputError for a bad chart file.
 std::vector<uint8_t> drawStepChart(const StepChart& chart, glm::ivec2 size);
 // A bench chart's layout at `size` (its dots, bars, labels and leaders: speed_chart.h), as
-// drawStepChart draws it; nullopt for a stability chart. Throws InputError.
+// drawStepChart draws it (for an advise chart, the speed chart under its marks); nullopt for a
+// stability chart. Throws InputError.
 std::optional<SpeedChartLayout> stepSpeedChartLayout(const StepChart& chart, glm::ivec2 size);
 // The texts it draws, placed in a chart of `size` (origin top-left). Throws InputError.
 std::vector<ChartTextBox> stepChartTexts(const StepChart& chart, glm::ivec2 size);

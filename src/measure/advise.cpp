@@ -392,6 +392,18 @@ const AdviseCandidate* cheaperFailure(const AdviseResult& r, const AdviseCandida
 
 }  // namespace
 
+std::vector<AdviseConstraint> adviseBinds(const AdviseResult& result) {
+    if (!result.choice) return {};
+    const AdviseCandidate& choice = result.measured[*result.choice];
+    if (const AdviseCandidate* below = smallerMap(result, choice); below && !below->feasible()) {
+        return below->broken;
+    }
+    if (const AdviseCandidate* cheaper = cheaperFailure(result, choice)) {
+        return {cheaper->broken.front()};
+    }
+    return {};
+}
+
 std::string adviseBinding(const AdviseResult& result, const AdviseBudget& budget) {
     if (!result.choice) return "";
     const AdviseCandidate& choice = result.measured[*result.choice];

@@ -168,6 +168,10 @@ AdviseResult searchAdvice(const AdviseSpace& space, const AdviseBudget& budget,
 // its own: searchAdvice ends with it.
 void chooseAdvice(AdviseResult& result, const AdviseBudget& budget);
 
+// The constraints that bind, as adviseBinding names them: those the same filter on the next
+// smaller map broke, else the first one the cheapest cheaper setting broke; empty when nothing
+// binds (or nothing was chosen).
+std::vector<AdviseConstraint> adviseBinds(const AdviseResult& result);
 // Why the choice is what it is, one sentence: the constraint that binds, as "map 512 is needed
 // for the leak budget; 256 leaks 3.1 texels", or what the cheaper settings measured broke.
 std::string adviseBinding(const AdviseResult& result, const AdviseBudget& budget);
