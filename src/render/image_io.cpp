@@ -158,7 +158,8 @@ void writeExr(const std::string& path, int width, int height, int channels,
 }
 
 void writeDepthImage(const std::string& path, const ShadowMap& map) {
-    writeExr(path, map.width(), map.height(), 1, map.depths(), {"Z"});
+    // A map of several layers (cascades): the layers one above the other, layer 0 first.
+    writeExr(path, map.width(), map.height() * map.layers(), 1, map.depths(), {"Z"});
 }
 
 namespace {
