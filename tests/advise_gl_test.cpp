@@ -1,4 +1,4 @@
-// The advise search on a real scene (analysis/advise_measure.h, llvmpipe): a small grid measured
+// The advise search on a real scene (measure/advise_measure.h, llvmpipe): a small grid measured
 // whole, then searched through those very measurements, so the search and the full grid see the
 // same numbers: no setting of the grid whose whole cost spread lies below the choice's meets the
 // budget, the search measures at most a quarter of the grid, and the chosen setting measured
@@ -8,11 +8,11 @@
 #include <map>
 #include <memory>
 
-#include "analysis/advise.h"
-#include "analysis/advise_chart.h"
-#include "analysis/advise_measure.h"
-#include "analysis/advise_report.h"
-#include "analysis/bench_report.h"
+#include "charts/advise_chart.h"
+#include "measure/advise.h"
+#include "measure/advise_measure.h"
+#include "measure/advise_report.h"
+#include "measure/bench_report.h"
 #include "render/gl_context.h"
 #include "scene/presets.h"
 

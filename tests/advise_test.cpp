@@ -1,8 +1,8 @@
-// The advise search (analysis/advise.h) over synthetic measurements with known numbers: the
+// The advise search (measure/advise.h) over synthetic measurements with known numbers: the
 // choice against every setting of the full grid (no setting whose whole cost spread is below the
 // choice's meets the budget), the share of the grid measured, the timing tie rule, the binding
 // sentence and the refusals. The search on a real scene: advise_gl_test.cpp.
-#include "analysis/advise.h"
+#include "measure/advise.h"
 
 #include <gtest/gtest.h>
 

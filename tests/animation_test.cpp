@@ -15,9 +15,9 @@
 #include <memory>
 #include <string>
 
-#include "analysis/failure_measures.h"
-#include "analysis/stability.h"
 #include "json_lite.h"
+#include "measure/failure_measures.h"
+#include "measure/stability.h"
 #include "render/gl_context.h"
 #include "run_command.h"
 #include "video_read.h"

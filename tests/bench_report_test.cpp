@@ -1,5 +1,5 @@
 // bench.csv read back: what a lesson's chart is drawn from.
-#include "analysis/bench_report.h"
+#include "measure/bench_report.h"
 
 #include <gtest/gtest.h>
 

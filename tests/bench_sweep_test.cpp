@@ -8,8 +8,8 @@
 #include <memory>
 #include <variant>
 
-#include "analysis/bench.h"
 #include "kernel/methods.h"
+#include "measure/bench.h"
 #include "render/gl_context.h"
 #include "scene/presets.h"
 

@@ -1,8 +1,8 @@
-// The facts a lesson step states about its bench chart (analysis/chart_facts.h), read from the
+// The facts a lesson step states about its bench chart (charts/chart_facts.h), read from the
 // CSV the chart draws: the truth it was measured against, the most and least accurate dot on
 // the chart's own accuracy axis (the edge band's RMSE, or near the casters on a "#contact"
 // chart, step_chart.h).
-#include "analysis/chart_facts.h"
+#include "charts/chart_facts.h"
 
 #include <gtest/gtest.h>
 
@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "analysis/bench_report.h"
-#include "analysis/speed_chart.h"
-#include "analysis/step_chart.h"
 #include "base/input_error.h"
+#include "charts/speed_chart.h"
+#include "charts/step_chart.h"
 #include "kernel/methods.h"
+#include "measure/bench_report.h"
 #include "run_command.h"
 
 namespace pcf {

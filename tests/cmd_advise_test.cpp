@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "analysis/advise_report.h"
 #include "image_read.h"
 #include "json_lite.h"
+#include "measure/advise_report.h"
 #include "run_command.h"
 
 namespace pcf {

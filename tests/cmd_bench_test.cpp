@@ -8,9 +8,9 @@
 #include <set>
 #include <sstream>
 
-#include "analysis/bench_report.h"
 #include "image_read.h"
 #include "kernel/methods.h"
+#include "measure/bench_report.h"
 #include "run_command.h"
 
 namespace pcf {

@@ -8,8 +8,8 @@
 #include <set>
 #include <sstream>
 
-#include "analysis/stability_report.h"
 #include "image_read.h"
+#include "measure/stability_report.h"
 #include "run_command.h"
 
 namespace pcf {

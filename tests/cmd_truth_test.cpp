@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "analysis/ground_truth.h"
 #include "image_read.h"
+#include "measure/ground_truth.h"
 #include "run_command.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"

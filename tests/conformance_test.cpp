@@ -1,5 +1,5 @@
-// The conformance envelope (analysis/conformance.h) and `pcfscope verify`, issue 10.
-#include "analysis/conformance.h"
+// The conformance envelope (measure/conformance.h) and `pcfscope verify`, issue 10.
+#include "measure/conformance.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // csv_lines: the line and field reading that stability.csv and bench.csv share.
-#include "analysis/csv_lines.h"
+#include "measure/csv_lines.h"
 
 #include <gtest/gtest.h>
 

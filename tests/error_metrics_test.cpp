@@ -1,6 +1,6 @@
 // Error metrics, difference images, the Pareto front, the bench's CSV and table, and the chart's
 // layout and drawing, on small hand-made inputs whose answers are known.
-#include "analysis/error_metrics.h"
+#include "measure/error_metrics.h"
 
 #include <gtest/gtest.h>
 
@@ -13,13 +13,13 @@
 #include <memory>
 #include <sstream>
 
-#include "analysis/bench_report.h"
-#include "analysis/chart_axes.h"
-#include "analysis/difference_image.h"
-#include "analysis/pareto.h"
-#include "analysis/speed_chart.h"
-#include "analysis/step_chart.h"
+#include "charts/chart_axes.h"
+#include "charts/speed_chart.h"
+#include "charts/step_chart.h"
 #include "kernel/methods.h"
+#include "measure/bench_report.h"
+#include "measure/difference_image.h"
+#include "measure/pareto.h"
 #include "render/gl_context.h"
 #include "speed_chart_checks.h"
 

@@ -1,7 +1,7 @@
 // The leak's width (failure_measures.h: leakWidth) on synthetic frames: a band of leaking pixels
 // along a contact sets it, a stray pixel far from the caster does not, and the support says how
 // many pixels the width stands on.
-#include "analysis/failure_measures.h"
+#include "measure/failure_measures.h"
 
 #include <gtest/gtest.h>
 

@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <random>
 
-#include "analysis/conformance.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/pcf.h"
+#include "measure/conformance.h"
 #include "random_map.h"
 #include "render/depth_readback.h"
 #include "render/gl_context.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/ground_truth.h"
+#include "measure/ground_truth.h"
 #include "scene/presets.h"
 
 namespace pcf {

@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/ground_truth.h"
+#include "measure/ground_truth.h"
 #include "scene/presets.h"
 #include "scene/raycast.h"
 #include "scene/scene_file.h"

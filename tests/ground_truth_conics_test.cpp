@@ -1,6 +1,6 @@
 // The pieces of ground_truth_conics.h that do not need a scene: polynomial roots (simple and
 // double), a conic's cuts along a row, and the rows where the cuts of conics change.
-#include "analysis/ground_truth_conics.h"
+#include "measure/ground_truth_conics.h"
 
 #include <gtest/gtest.h>
 

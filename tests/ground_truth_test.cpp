@@ -5,7 +5,7 @@
 // uniform scale), and the exact shadowed fraction of each pixel is the area of the shadow
 // polygon clipped to that rectangle over the rectangle's area, without the ray caster. Every
 // pixel's truth must lie within its own stated bound of that.
-#include "analysis/ground_truth.h"
+#include "measure/ground_truth.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include <functional>
 #include <memory>
 
-#include "analysis/error_metrics.h"
+#include "measure/error_metrics.h"
 #include "render/gl_context.h"
 #include "render/scene_renderer.h"
 #include "scene/camera.h"

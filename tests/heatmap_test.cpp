@@ -1,6 +1,6 @@
 // The viewer's aliasing heat map (A; lesson key `heatmap`): the session colours each receiver
 // pixel by its screen pixels per shadow-map texel, the measure of `pcfscope stability`'s aliasing
-// sweep (analysis/stability.h), in the window and in exports alike (both draw Session's frame).
+// sweep (measure/stability.h), in the window and in exports alike (both draw Session's frame).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,8 +9,8 @@
 #include <fstream>
 #include <memory>
 
-#include "analysis/stability.h"
 #include "app/session.h"
+#include "measure/stability.h"
 #include "render/gl_context.h"
 #include "run_command.h"
 

@@ -1,7 +1,8 @@
 // layers_test.cpp: two rules of docs/architecture.md that the compiler cannot see, held on the
 // sources: OpenGL is called only from src/render/ and src/draw/ (the layers above call their
 // functions: render/frame_ops.h), and no code outside the method table (src/kernel/methods.*)
-// compares method ids; a question about a method is a column of MethodInfo.
+// compares method ids; a question about a method is a column of MethodInfo. And measuring draws
+// nothing: no source of src/measure/ includes charts/ or draw/ (nor overlay/ or app/ above them).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -44,7 +45,7 @@ std::vector<SourceLine> sourceLines(const std::vector<std::string>& skipPrefixes
 
 TEST(Layers, OpenGlIsCalledOnlyFromRenderAndDraw) {
     // glFoo( but not glfwFoo( (the window library) nor glm::, nor bench's own glRowLookups and
-    // glRowDzDuv (analysis/bench.cpp: a read-back target's rows in GL order, no GL call).
+    // glRowDzDuv (measure/bench.cpp: a read-back target's rows in GL order, no GL call).
     const std::regex call(R"((^|[^A-Za-z0-9_:.])gl(?!Row)[A-Z][A-Za-z0-9]*\s*\()");
     int lines = 0;
     for (const SourceLine& l : sourceLines({"render/", "draw/"})) {
@@ -88,6 +89,24 @@ TEST(Layers, NoMethodIdIsComparedOutsideTheMethodTable) {
         EXPECT_FALSE(std::regex_search(l.code, compared)) << l.where << ": " << l.code;
     }
     EXPECT_GT(lines, 10000);
+}
+
+TEST(Layers, MeasureIncludesNothingThatDraws) {
+    // An #include naming a folder above measure/ in the layers (docs/architecture.md).
+    const std::regex upward(R"(^\s*#\s*include\s*[<"](charts|draw|overlay|app)/)");
+    int files = 0;
+    for (const auto& e : fs::directory_iterator(SRC / "measure")) {
+        std::string ext = e.path().extension().string();
+        if (!e.is_regular_file() || (ext != ".cpp" && ext != ".h")) continue;
+        ++files;
+        std::ifstream in(e.path());
+        std::string line;
+        for (int n = 1; std::getline(in, line); ++n) {
+            EXPECT_FALSE(std::regex_search(line, upward))
+                << "measure/" << e.path().filename().string() << ":" << n << ": " << line;
+        }
+    }
+    EXPECT_GT(files, 40);  // the scan saw the folder
 }
 
 }  // namespace

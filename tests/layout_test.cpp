@@ -20,20 +20,20 @@
 #include <string>
 #include <vector>
 
-#include "analysis/bench_report.h"
-#include "analysis/speed_chart.h"
-#include "analysis/step_chart.h"
 #include "app/lesson_step.h"
 #include "app/session.h"
 #include "app/step_view.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
+#include "charts/speed_chart.h"
+#include "charts/step_chart.h"
 #include "draw/text_layout.h"
 #include "kernel/methods.h"
 #include "kernel/trace.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_pick.h"
 #include "lesson/lesson_text.h"
+#include "measure/bench_report.h"
 #include "overlay/inspector.h"
 #include "render/gl_context.h"
 #include "render/render_settings.h"

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "analysis/bench_report.h"
+#include "measure/bench_report.h"
 #include "run_command.h"
 
 namespace {

@@ -96,7 +96,7 @@ TEST(LessonClaims, ChartClaimsAskTheChart) {
     StepClaim s{"", 1, parseClaim("chart: tent3 less accurate than naive3")};
     claimHolds(s, t, StepContext{}, world);
     EXPECT_EQ(asked, "naive3<tent3 rmse");
-    // Any other statement is a fact the chart's table answers (analysis/chart_facts.h), with
+    // Any other statement is a fact the chart's table answers (charts/chart_facts.h), with
     // the numbers that decided it; unset, it holds (the viewer does not read charts).
     StepClaim f{"", 1, parseClaim("chart: pcf-gather 5x5: acne falls as the bias grows")};
     EXPECT_TRUE(isChartClaim(f));

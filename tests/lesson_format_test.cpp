@@ -6,11 +6,11 @@
 #include <fstream>
 #include <string>
 
-#include "analysis/bench_report.h"
-#include "analysis/speed_chart.h"
 #include "base/input_error.h"
+#include "charts/speed_chart.h"
 #include "kernel/pcf.h"
 #include "lesson/lesson.h"
+#include "measure/bench_report.h"
 #include "scene/presets.h"
 
 namespace pcf {

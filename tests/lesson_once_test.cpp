@@ -70,5 +70,21 @@ TEST(LessonOnce, TheViewerParsesItsLessonOnce) {
     fs::remove_all(dir);
 }
 
+// N opens an exercise drawn from the lesson and N again goes back to the lesson's step: the lesson
+// it goes back to is the one the viewer read (it was read again from its path).
+TEST(LessonOnce, LeavingAnExerciseDoesNotReadTheLessonAgain) {
+    const testutil::VirtualDisplay& x = DISPLAY_FOR_VIEWER;
+    ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
+    ASSERT_EQ(setenv("DISPLAY", x.display().c_str(), 1), 0);
+    fs::path dir = testutil::makeTempDir("lesson-once-exercise");
+    long before = lessonParseCount();
+    ASSERT_EQ(runHere({"view", std::string(PCFSCOPE_SOURCE_DIR) + "/lessons/05-gather-weights.toml",
+                       "--keys", "right n n right", "--screenshot", (dir / "shot.png").string()}),
+              0);
+    EXPECT_EQ(lessonParseCount() - before, 1);
+    EXPECT_TRUE(fs::exists(dir / "shot.png"));
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace pcf

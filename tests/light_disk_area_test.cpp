@@ -7,7 +7,7 @@
 //   sqrt(1 - x^2);
 // - a polygon inside the disk keeps its own area (the shoelace sum), one around it gives pi;
 // - any convex polygons against a grid count of the disk's cells (midpoint rule).
-#include "analysis/light_disk_area.h"
+#include "measure/light_disk_area.h"
 
 #include <gtest/gtest.h>
 

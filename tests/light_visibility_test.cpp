@@ -8,7 +8,7 @@
 // - a sphere straight toward the light's centre from the point is a disk of radius tan(beta)
 //   (beta = asin(r / distance)) centred on the sun's: an annular eclipse, visible
 //   1 - tan^2(beta) / R^2, or nothing when tan(beta) >= R.
-#include "analysis/light_visibility.h"
+#include "measure/light_visibility.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include <string>
 #include <thread>
 
-#include "analysis/ground_truth.h"
+#include "measure/ground_truth.h"
 #include "scene/camera.h"
 #include "scene/presets.h"
 #include "scene/raycast.h"

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/speed_chart.h"
-#include "analysis/speed_chart_labels.h"
+#include "charts/speed_chart.h"
+#include "charts/speed_chart_labels.h"
 
 namespace pcf {
 

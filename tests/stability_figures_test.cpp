@@ -4,16 +4,16 @@
 // over); the shimmer bars all stand on the one edge population; coincident lines stay visible;
 // the heat map carries its colour scale and map size; at the default chart size every text is
 // at least 14 px and no two overlap.
-#include "analysis/stability_figures.h"
+#include "charts/stability_figures.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "analysis/chart_axes.h"
-#include "analysis/failure_measures.h"
-#include "analysis/stability_report.h"
+#include "charts/chart_axes.h"
 #include "kernel/methods.h"
+#include "measure/failure_measures.h"
+#include "measure/stability_report.h"
 
 namespace pcf {
 namespace {

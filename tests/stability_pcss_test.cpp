@@ -1,18 +1,18 @@
-// pcss's failure sweeps (analysis/stability_pcss.h) on llvmpipe, as properties at --quick sizes:
+// pcss's failure sweeps (measure/stability_pcss.h) on llvmpipe, as properties at --quick sizes:
 // a pole thinner than the search's tap spacing drops out where pcf-gather 5x5 still sees it; a
 // low block under a plank's shadow edge makes pcss's penumbra worse than the plank's alone; a
 // wider filter needs more than the constant bias (and receiver-plane cures the small ones). Plus
 // the sweeps' own checks and their charts' rows.
-#include "analysis/stability_pcss.h"
+#include "measure/stability_pcss.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
 
-#include "analysis/stability_pcss_figures.h"
-#include "analysis/stability_report.h"
+#include "charts/stability_pcss_figures.h"
 #include "kernel/methods.h"
+#include "measure/stability_report.h"
 #include "render/gl_context.h"
 #include "scene/presets.h"
 

@@ -2,15 +2,15 @@
 // and snapping the map to whole texels stills both; no bias is never better than a constant one
 // and acne grows as the light sinks; a larger bias leaks more light under the caster. Plus the
 // pieces the sweeps are made of: the aliasing measure, the CSV round trip.
-#include "analysis/stability.h"
+#include "measure/stability.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
 
-#include "analysis/stability_report.h"
 #include "kernel/methods.h"
+#include "measure/stability_report.h"
 #include "render/gl_context.h"
 #include "scene/presets.h"
 

@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <memory>
 
-#include "analysis/failure_measures.h"
-#include "analysis/stability.h"
 #include "base/input_error.h"
 #include "kernel/methods.h"
 #include "kernel/trace_explain.h"
+#include "measure/failure_measures.h"
+#include "measure/stability.h"
 #include "scene/light.h"
 
 namespace pcf {
@@ -17,7 +17,7 @@ namespace pcf {
 namespace {
 
 // The ends of the sweeps: the elevations and constant biases of `stability`'s acne and leak
-// sweeps (analysis/stability.h, StabilityOptions), map sizes from coarse to fine.
+// sweeps (measure/stability.h, StabilityOptions), map sizes from coarse to fine.
 constexpr double SUN_FROM_DEG = 90.0, SUN_TO_DEG = 2.0;
 constexpr double BIAS_FROM = 0.0005, BIAS_TO = 0.064;
 constexpr double MAP_FROM = 32.0, MAP_TO = 2048.0;

@@ -1,6 +1,6 @@
 // pcfscope advise: the cheapest shadow settings, by the lookup pass's CPU time, that meet an error
-// and stability budget on one scene, and why. The search is analysis/advise.h's, measured by
-// analysis/advise_measure.h (bench's sweep, one setting at a time); this file parses the budget
+// and stability budget on one scene, and why. The search is measure/advise.h's, measured by
+// measure/advise_measure.h (bench's sweep, one setting at a time); this file parses the budget
 // and the space, checks the outputs, reports progress and writes, into DIR:
 //   advise.csv      every setting measured, every measure, the cost's median and IQR
 //   advise.json     the choice, the runner-up, the binding constraint, the candidates
@@ -16,16 +16,16 @@
 #include <string>
 #include <vector>
 
-#include "analysis/advise.h"
-#include "analysis/advise_chart.h"
-#include "analysis/advise_measure.h"
-#include "analysis/advise_report.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
 #include "app/truth_option.h"
 #include "base/usage_error.h"
+#include "charts/advise_chart.h"
+#include "measure/advise.h"
+#include "measure/advise_measure.h"
+#include "measure/advise_report.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 

@@ -1,7 +1,7 @@
-// pcfscope bench: speed against accuracy. The sweep is analysis/bench.h's (truth, error split,
+// pcfscope bench: speed against accuracy. The sweep is measure/bench.h's (truth, error split,
 // shimmer, round-robin timing); this file parses the options (the shared ones through
 // RenderOptions), checks the outputs, reports progress and writes, into DIR:
-//   bench.csv                one row per run (analysis/bench_report.h has the columns)
+//   bench.csv                one row per run (measure/bench_report.h has the columns)
 //   bench.md                 the same as a table, with the machine and the timer
 //   speed_vs_accuracy.png    GPU time (log; --timing scene or lookup) with IQR bars against
 //                            edge-band RMSE, the Pareto front of the medians drawn
@@ -28,14 +28,6 @@
 #include <string>
 #include <vector>
 
-#include "analysis/bench.h"
-#include "analysis/bench_report.h"
-#include "analysis/chart_axes.h"
-#include "analysis/difference_image.h"
-#include "analysis/light_visibility.h"
-#include "analysis/speed_chart.h"
-#include "analysis/stability.h"
-#include "analysis/step_chart.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/output_files.h"
@@ -44,9 +36,17 @@
 #include "base/input_error.h"
 #include "base/memory_budget.h"
 #include "base/work_estimate.h"
+#include "charts/chart_axes.h"
+#include "charts/speed_chart.h"
+#include "charts/step_chart.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
+#include "measure/bench.h"
+#include "measure/bench_report.h"
+#include "measure/difference_image.h"
+#include "measure/light_visibility.h"
+#include "measure/stability.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "scene/pcss.h"
@@ -549,7 +549,7 @@ Command addBenchCommand(CLI::App& app) {
         "CSV, table, charts");
     o->sub = sub;
     // The map holds back faces by default (front faces culled): shadow acne, a bias problem,
-    // stays off the lit faces, so the edge error measures the filter (analysis/bench.h).
+    // stays off the lit faces, so the edge error measures the filter (measure/bench.h).
     o->render.defaults.cull = CullMode::Front;
     o->render.addTo(sub, BENCH_DEFAULT_SCENE);
     // The single-run options bench refuses (baseSettings) stay out of its help.

@@ -11,21 +11,21 @@
 #include <string>
 #include <vector>
 
-#include "analysis/bench_report.h"
-#include "analysis/chart_facts.h"
-#include "analysis/speed_chart.h"
-#include "analysis/step_chart.h"
 #include "app/animation.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/session.h"
 #include "app/step_view.h"
 #include "base/input_file.h"
+#include "charts/chart_facts.h"
+#include "charts/speed_chart.h"
+#include "charts/step_chart.h"
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_keys.h"
 #include "lesson/lesson_pick.h"
 #include "lesson/lesson_predict.h"
 #include "lesson/lesson_words.h"
+#include "measure/bench_report.h"
 #include "render/gl_context.h"
 #include "render/scene_renderer.h"
 
@@ -47,7 +47,7 @@ std::string msWithSpread(const BenchRow& r) {
 // A bench chart's order: whether a's metric is less than b's (time: the median scene pass, as
 // the chart's x axis, refused where the two bars overlap; rmse: its y axis, the edge RMSE, or near
 // the contacts on a "#contact" chart). Each label must pick one row. Any other chart claim is a
-// fact of the chart's table (analysis/chart_facts.h).
+// fact of the chart's table (charts/chart_facts.h).
 ClaimWorld chartWorld(const LessonStep& step) {
     ClaimWorld world;
     world.chartLess = [&step](const std::string& a, const std::string& b,

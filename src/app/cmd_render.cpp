@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "analysis/cascade_density.h"
+#include "measure/cascade_density.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/magnifier.h"
@@ -108,7 +108,7 @@ void printCameraTiming(SceneRenderer& renderer, const RenderSettings& settings, 
 }
 
 // render.json with a cascaded map's measured texel density added to each of its "map" cascades
-// (analysis/cascade_density.h); as it is for a map of one layer.
+// (measure/cascade_density.h); as it is for a map of one layer.
 std::string withCascadeDensities(const std::string& json, const SceneRenderer& renderer,
                                  const std::vector<float>& lightSpace,
                                  const std::vector<float>& positions) {

@@ -1,4 +1,4 @@
-// pcfscope stability: where methods fail (analysis/stability.h). Runs the sweeps (acne, leak,
+// pcfscope stability: where methods fail (measure/stability.h). Runs the sweeps (acne, leak,
 // tradeoff, shimmer, precision, aliasing) for a list of methods and bias modes and writes, into
 // DIR:
 //   stability.csv          one row per measured point: sweep,method,kernel,bias,x_name,x,metric,y
@@ -24,11 +24,6 @@
 #include <string>
 #include <vector>
 
-#include "analysis/chart_axes.h"
-#include "analysis/ground_truth.h"
-#include "analysis/stability.h"
-#include "analysis/stability_figures.h"
-#include "analysis/stability_report.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/output_files.h"
@@ -37,9 +32,14 @@
 #include "base/input_file.h"
 #include "base/memory_budget.h"
 #include "base/work_estimate.h"
+#include "charts/chart_axes.h"
+#include "charts/stability_figures.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
+#include "measure/ground_truth.h"
+#include "measure/stability.h"
+#include "measure/stability_report.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 

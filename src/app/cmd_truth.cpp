@@ -1,4 +1,4 @@
-// pcfscope truth: the exact shadow of a scene by ray casting (analysis/ground_truth.h), as an
+// pcfscope truth: the exact shadow of a scene by ray casting (measure/ground_truth.h), as an
 // EXR of visibility and its error bound per pixel, rows top-down like every image pcfscope writes.
 #include <algorithm>
 #include <chrono>
@@ -7,14 +7,14 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/ground_truth.h"
-#include "analysis/ground_truth_conics.h"
-#include "analysis/light_visibility.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/output_files.h"
 #include "app/render_options.h"
 #include "base/memory_budget.h"
+#include "measure/ground_truth.h"
+#include "measure/ground_truth_conics.h"
+#include "measure/light_visibility.h"
 #include "render/image_io.h"
 #include "scene/presets.h"
 

@@ -1,5 +1,5 @@
 // pcfscope verify DIR: is every receiver pixel of a `render --raw` folder inside the visibility
-// envelope a conformant texture unit may produce (analysis/conformance.h)? Exit 0: all inside;
+// envelope a conformant texture unit may produce (measure/conformance.h)? Exit 0: all inside;
 // 1: some outside (the worst is printed with its pixel); 2: bad input.
 #include <algorithm>
 #include <cmath>
@@ -16,7 +16,6 @@
 #include <variant>
 #include <vector>
 
-#include "analysis/conformance.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/render_options.h"
@@ -26,6 +25,7 @@
 #include "kernel/settings.h"
 #include "kernel/shading.h"
 #include "kernel/trace_json.h"
+#include "measure/conformance.h"
 #include "render/image_io.h"
 #include "render/render_settings.h"
 

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "analysis/chart_facts.h"
 #include "app/animation.h"
 #include "app/predict.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/usage_error.h"
+#include "charts/chart_facts.h"
 #include "kernel/methods.h"
 #include "lesson/lesson_claims.h"
 
@@ -26,7 +26,7 @@ void checkStep(const LessonStep& step, const std::string& path, int number,
     if (step.predict) {
         if (auto why = predictStepProblem(*step.predict)) problem(step.predict->line, " " + *why);
     }
-    // A fact about a chart names one its chart's table knows (analysis/chart_facts.h).
+    // A fact about a chart names one its chart's table knows (charts/chart_facts.h).
     for (const StepClaim& claim : step.claims) {
         std::string about = " claim \"" + claim.text + "\": ";
         // A claim about the frames reads the step's sweep (animation.h: stepFlickerCurves).

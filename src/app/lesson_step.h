@@ -1,5 +1,5 @@
 // lesson_step.h: what a lesson step's frame shows besides the scene: its focus (which panels the
-// frame gives room to) and its chart (analysis/step_chart.h) at the frame's type sizes, and the
+// frame gives room to) and its chart (charts/step_chart.h) at the frame's type sizes, and the
 // lesson read with every chart it shows checked.
 #pragma once
 
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/step_chart.h"
+#include "charts/step_chart.h"
 #include "lesson/lesson.h"
 #include "overlay/inspector.h"
 

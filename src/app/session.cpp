@@ -6,7 +6,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "analysis/stability.h"
 #include "app/cli_util.h"
 #include "app/frame_json.h"
 #include "app/magnifier.h"
@@ -16,6 +15,7 @@
 #include "lesson/lesson_claims.h"
 #include "lesson/lesson_pick.h"
 #include "lesson/lesson_text.h"
+#include "measure/stability.h"
 #include "render/frame_ops.h"
 
 namespace pcf {

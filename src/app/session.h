@@ -107,7 +107,7 @@ class Session {
     bool grid() const { return mGrid; }
     void setGrid(bool on) { mGrid = on; }
     // The aliasing heat map over the scene (A; lesson key `heatmap`): each receiver pixel
-    // coloured by its screen pixels per shadow-map texel (analysis/stability.h, pixelsPerTexel,
+    // coloured by its screen pixels per shadow-map texel (measure/stability.h, pixelsPerTexel,
     // aliasingHeatColour), with a legend. heatValues(): the values the last compose() drew,
     // scene pixels top-down, -1 where not measured; empty when the heat map is off.
     bool heatmap() const { return mHeatmap; }

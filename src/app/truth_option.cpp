@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "analysis/light_visibility.h"
 #include "app/render_options.h"
 #include "base/usage_error.h"
+#include "measure/light_visibility.h"
 #include "scene/pcss.h"
 
 namespace pcf {

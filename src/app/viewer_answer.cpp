@@ -101,13 +101,14 @@ void ViewerAnswers::toggleExercise(Session& session) {
     mRight = 0;
     if (mExercise) {
         mExercise = false;
-        session.loadLesson(mLessonPath);
+        session.setLesson(std::move(*mLesson));
+        mLesson.reset();
         session.goToStep(mLessonStep);
         return;
     }
     try {
         Lesson items = makeExercise(session.lesson(), VIEWER_EXERCISE_ITEMS, mSeed++);
-        mLessonPath = session.lesson().sourcePath;
+        mLesson = session.lesson();
         mLessonStep = session.step();
         mTitle = items.title;
         session.setLesson(std::move(items));

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -33,10 +34,11 @@ class ViewerAnswers {
     void showScore(Session& session) const;
 
     bool mExercise = false;
-    std::string mLessonPath;  // the lesson the exercise was drawn from, to go back to
-    int mLessonStep = 0;      // and its step
-    std::string mTitle;       // the exercise's title, before the score
-    std::set<int> mJudged;    // the items answered (each scored once)
+    // The lesson the exercise was drawn from, as it was read (never read again), and its step.
+    std::optional<Lesson> mLesson;
+    int mLessonStep = 0;
+    std::string mTitle;     // the exercise's title, before the score
+    std::set<int> mJudged;  // the items answered (each scored once)
     int mRight = 0;
     std::uint64_t mSeed = 1;  // a new set of questions each time N is pressed
 };

@@ -16,7 +16,28 @@ namespace {
 constexpr std::array<std::string_view, PCF_BIAS_COUNT> BIAS_NAMES = {
     "none", "constant", "slope", "normal", "receiver-plane", "soft", "interpolated"};
 
+// In the order of BIAS_NAMES; the formulas of the comment on BiasSettings (bias.h).
+constexpr std::array<std::string_view, PCF_BIAS_COUNT> BIAS_FORMULAS = {
+    "ref = z",
+    "ref = z - constant_bias",
+    "ref = z - min(constant_bias + slope_bias * tan(theta), slope_max), theta the angle between "
+    "the surface normal and the light",
+    "the receiver point moves along its normal by normal_offset texels * sin(theta) before "
+    "projection (so uv is the moved point's), then ref = z' - constant_bias with z' the moved "
+    "point's depth",
+    "ref = z - constant_bias at uv; each tap compares against ref + dot(dz/duv, tap uv - uv), "
+    "each component of dz/duv clamped to [-rpdb_max, rpdb_max]",
+    "ref = z - constant_bias; a tap is lit by (depth > ref) * saturate((depth - ref) * "
+    "soft_scale), so a texel just beyond ref counts in part (\"PCF Shadow Acne\" part 2)",
+    "ref = z - constant_bias, compared once with the map's depth lerped at uv (\"PCF Shadow "
+    "Acne\", Solution 2)"};
+
 }  // namespace
+
+std::string_view biasFormula(int mode) {
+    if (mode < 0 || mode >= PCF_BIAS_COUNT) return "?";
+    return BIAS_FORMULAS[static_cast<size_t>(mode)];
+}
 
 float BiasSettings::lookupBias(float cosTheta) const {
     if (bias == BiasMode::Slope) return pcfSlopeBias(cosTheta, constantBias, slopeBias, slopeMax);

@@ -74,6 +74,10 @@ std::string_view biasName(int mode);
 std::optional<int> biasFromName(std::string_view name);
 // "none, constant, slope, ..." for error messages.
 std::string biasNameList();
+// What the mode does, in the parameter table's keys (the table above, spelt as the lesson files
+// and the trace's words spell them): "ref = z - min(constant_bias + slope_bias * tan(theta),
+// slope_max)". The trace's words print it with the values of every row acting under the mode.
+std::string_view biasFormula(int mode);
 
 // Why this bias mode cannot combine with this method (one sentence, no trailing period), or
 // nullopt when it can. soft needs the depths in the shader (not hw2x2, pcf-hw, tent);

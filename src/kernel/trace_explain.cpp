@@ -184,71 +184,41 @@ void addStep(Steps& out, K kind, std::string text) {
     out.push_back({kind, stepTitle(kind), std::move(text)});
 }
 
-// The table's rows that act under the mode and fill a PcfBias member, with the values the kernel
-// read: "rpdb_max = 100 light depth per uv unit (--rpdb-max)", joined (none named by hand here).
-std::string kernelBiasSettings(const Trace& tr) {
+// The parameter table's rows that act under the lookup's bias mode, with this lookup's values:
+// "constant_bias = 0.002 light depth units (--constant-bias), rpdb_max = 100 ..." (none named by
+// hand here; the kernel's PcfBias is made of the same values, Trace::lookup).
+std::string modeSettings(const Trace& tr) {
+    ShadowSettings set;
+    static_cast<BiasSettings&>(set) = tr.bias;
     std::string out;
     for (const ParamInfo& p : allParams()) {
-        const auto* member = std::get_if<float PcfBias::*>(&p.member);
-        if (member == nullptr || !paramActsUnder(p, tr.bias.bias)) continue;
-        out += (out.empty() ? "" : ", ") + std::string(p.key) + " = " +
-               num(tr.lookup.bias.*(*member)) + (p.unit.empty() ? "" : " ") + std::string(p.unit) +
-               " (" + settingFlag(p.key) + ")";
+        if (!paramActsUnder(p, tr.bias.bias)) continue;
+        out += (out.empty() ? "" : ", ") + std::string(p.key) + " = " + settingText(p, set) +
+               (p.unit.empty() ? "" : " ") + std::string(p.unit) + " (" + settingFlag(p.key) + ")";
     }
-    return out.empty() ? "no setting" : out;
+    return out;
 }
 
-// What the bias mode did to this lookup's ref, in words (kernel/bias.h has the formulas).
+// What the bias mode did to this lookup's ref, in words: the mode's formula in the table's keys
+// (kernel/bias.h, biasFormula), the ref it gave, and every setting it read with its value.
 std::string biasSentence(const Trace& tr) {
-    const BiasSettings& b = tr.bias;
     std::ostringstream s;
-    std::string moved =
-        "(z " + std::string(tr.ref < tr.z ? "- " : "+ ") + num(std::fabs(tr.z - tr.ref)) + ")";
-    switch (b.bias) {
-        case BiasMode::None:
-            s << "No bias: the comparison depth is ref = z = " << num(tr.ref) << ".";
-            break;
-        case BiasMode::Slope:
-            s << "Slope-scaled bias: ref = z - min(" << num(b.constantBias) << " + "
-              << num(b.slopeBias) << " * tan(theta), " << num(b.slopeMax) << ") = " << num(tr.ref)
-              << " " << moved << "; theta is the angle between the surface normal and the light.";
-            break;
-        case BiasMode::Normal:
-            s << "Normal offset: before projection the receiver point moved along its normal by "
-              << num(b.normalOffset)
-              << " texels times sin(theta), so uv above is the moved point's; the moved point's "
-                 "depth less "
-              << num(b.constantBias) << " gives ref = " << num(tr.ref) << " " << moved << ".";
-            break;
-        case BiasMode::ReceiverPlane:
-            s << "Receiver-plane bias: ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
-              << " holds at uv only. The receiver's depth changes across the map by dz/duv = "
-              << pair(tr.dzduv)
-              << " (the receiver's slope in the map; the renderer derives it from screen-space "
-                 "derivatives), so each tap compares against the plane's own depth where it "
-                 "reads: ref + dot(dz/duv, tap uv - uv).";
-            s << " The kernel takes the slope with " << kernelBiasSettings(tr) << ": the taps use "
-              << "dz/duv = " << pair(tr.lookup.bias.dzduv)
-              << (tr.lookup.bias.dzduv == tr.dzduv ? ", as given." : ".");
-            break;
-        case BiasMode::Soft:
-            s << "ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
-              << ". Soft comparison (\"PCF Shadow Acne\" part 2): a tap is lit by "
-                 "(depth > ref) * saturate((depth - ref) * "
-              << num(tr.lookup.bias.softScale) << "): a texel just beyond ref counts in part.";
-            break;
-        case BiasMode::Interpolated:
-            s << "ref = z - " << num(b.constantBias) << " = " << num(tr.ref)
-              << ". Interpolated depth (\"PCF Shadow Acne\", Solution 2): the map's depth is "
-                 "lerped at uv and compared once.";
-            break;
-        case BiasMode::Constant:
-            if (tr.ref == tr.z) {
-                s << "No bias: the comparison depth is ref = z = " << num(tr.ref) << ".";
-            } else {
-                s << "After bias the comparison depth is ref = " << num(tr.ref) << " " << moved
-                  << ".";
-            }
+    int mode = tr.bias.modeId();
+    if (tr.ref == tr.z && (mode == PCF_BIAS_NONE || mode == PCF_BIAS_CONSTANT)) {
+        s << "No bias: the comparison depth is ref = z = " << num(tr.ref) << ".";
+        if (mode == PCF_BIAS_NONE) return s.str();
+    } else {
+        s << "Bias " << biasName(mode) << ": " << biasFormula(mode)
+          << ". Here ref = " << num(tr.ref) << " (z " << (tr.ref < tr.z ? "- " : "+ ")
+          << num(std::fabs(tr.z - tr.ref)) << ").";
+    }
+    s << " Settings: " << modeSettings(tr) << ".";
+    if (mode == PCF_BIAS_RECEIVER_PLANE) {
+        s << " dz/duv = " << pair(tr.dzduv)
+          << " is the receiver's slope in the map (the renderer derives it from screen-space "
+             "derivatives); the taps use dz/duv = "
+          << pair(tr.lookup.bias.dzduv)
+          << (tr.lookup.bias.dzduv == tr.dzduv ? ", as given." : ", clamped.");
     }
     return s.str();
 }

@@ -285,7 +285,7 @@ class LessonParser {
     void readHighlights(const toml::table& table, const std::string& what, LessonStep& step) const {
         if (const toml::node* h = table.get("chart_highlight")) {
             // That the chart is a bench chart (not a stability chart, "PATH#NAME") is checked
-            // with the file (analysis/step_chart.h: checkStepChartHighlight).
+            // with the file (charts/step_chart.h: checkStepChartHighlight).
             if (step.chart.empty()) {
                 fail(*h, what + " chart_highlight needs a bench chart (chart = \"....csv\")");
             }

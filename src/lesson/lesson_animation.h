@@ -13,7 +13,7 @@ namespace pcf {
 
 // What moves:
 //   light     the light's texel grid slid under the world 1/32 texel a frame (looping each
-//             texel), exactly as `stability`'s shimmer sweep (analysis/stability.h:
+//             texel), exactly as `stability`'s shimmer sweep (measure/stability.h:
 //             shimmerShadowFit); with `snap`, snapped to whole texels (Valient's stable fit)
 //   camera    the camera slid right and up by 1/6 pixel a frame (stability's camera shimmer)
 //   sun       the light's elevation from 90 down to 2 degrees (acne arriving, per bias mode)

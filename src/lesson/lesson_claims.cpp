@@ -210,7 +210,7 @@ void parseChartClaim(ParsedClaim& c, const std::string& rest) {
         c.metric = metric;
         return;
     }
-    // Anything else is a fact the chart's own table knows (analysis/chart_facts.h), or
+    // Anything else is a fact the chart's own table knows (charts/chart_facts.h), or
     // `lesson check` says which it knows.
     if (rest.empty()) throw std::invalid_argument("'chart:' says nothing about the chart");
     c.kind = ParsedClaim::ChartFact;

@@ -28,7 +28,7 @@
 // accurate than` / `less accurate than` (the chart's y axis: the edge RMSE against the ray-cast
 // truth, or near the contacts on a "PATH#contact" chart); A and B are dot labels or their first
 // word, as chart_highlight takes them. Any other `chart: FACT` is one of the facts the chart's data
-// answers (analysis/chart_facts.h: the renderer it was measured on, the truth it was measured
+// answers (charts/chart_facts.h: the renderer it was measured on, the truth it was measured
 // against, the Pareto front, where acne and leak lie on the bias axis); `lesson check` names the
 // facts it knows when one is not among them.
 //

@@ -86,7 +86,7 @@ class SceneRenderer {
     // penumbraScale for this light and this shadow matrix (scene/pcss.h).
     PcfParams pcfParams(const ShadowSettings& settings, vec2 rotation = vec2(1.0f, 0.0f)) const;
     glm::mat4 clipFromWorld() const;
-    // What the sweeps of analysis/stability.h change between frames without re-uploading the
+    // What the sweeps of measure/stability.h change between frames without re-uploading the
     // meshes: the light (the shadow matrix is re-fitted to it), the camera, or the shadow
     // matrix itself (e.g. light.h's shiftShadowOrigin); each takes effect at the next pass.
     void setLight(const Light& light);

@@ -21,7 +21,7 @@ struct Light {
     glm::vec3 positionWs{0.0f, 5.0f, 0.0f};
     float coneDeg = 30.0f;
     // The light's size, 0 for an ideal point or direction (the default). It shapes only the
-    // area-light truth (analysis/ground_truth.h) and penumbra estimates: the shadow map is
+    // area-light truth (measure/ground_truth.h) and penumbra estimates: the shadow map is
     // always rendered from the light's centre (the direction, or positionWs).
     // Directional: the angular diameter of the light's disk in degrees, in [0,
     // MAX_ANGULAR_DIAMETER_DEG] (the sun's is about 0.53).

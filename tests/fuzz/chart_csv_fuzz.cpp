@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "analysis/bench_report.h"
 #include "base/input_error.h"
+#include "measure/bench_report.h"
 #include "tests/fuzz/fuzz_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
