@@ -127,6 +127,8 @@ TEST_F(CascadesCommand, RefusesASpotLightPcssAndADistanceBeforeTheNearPlane) {
                "pcfscope: --cascades 3 do not work with pcss (one penumbra scale per map)"},
           Case{"--scene-file " + writeScene() + " --cascades 2 --shadow-distance 0.05",
                "pcfscope: --shadow-distance 0.05 must lie beyond the camera's near plane 0.1"},
+          Case{"--scene box-on-plane --cascades 2 --method vsm",
+               "pcfscope: --cascades 2 do not work with vsm (a moments map has one layer)"},
           Case{"--scene box-on-plane --cascades 5", "pcfscope: --cascades must be 1..4, got 5"}}) {
         testutil::CommandResult r =
             testutil::runPcfscope("render " + c.args + " --size 64x36 -o " + path("x.png"));

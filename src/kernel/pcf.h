@@ -11,14 +11,15 @@ namespace pcf {
 // The map as the batch path sees it, with the texture unit's state the lookup needs: one layer
 // of it (a cascade; the GPU's pcfMapLayer, shared/pcf_prelude.h).
 inline PlainMap plainMap(const ShadowMap& map, const PcfParams& prm, int layer = 0) {
-    return PlainMap{map.layerTexels(layer), map.size(), map.isFixedPoint() ? 1 : 0, prm.precision};
+    return PlainMap{map.layerTexels(layer), map.size(), map.isFixedPoint() ? 1 : 0, prm.precision,
+                    map.spec().texel().channels};
 }
 
 // The map as the tracer sees it, recording into `out`.
 inline RecordingMap recordingMap(const ShadowMap& map, const PcfParams& prm, Recording& out,
                                  int layer = 0) {
-    return RecordingMap{map.layerTexels(layer), map.size(), &out, map.isFixedPoint() ? 1 : 0,
-                        prm.precision};
+    return RecordingMap{map.layerTexels(layer),     map.size(),    &out,
+                        map.isFixedPoint() ? 1 : 0, prm.precision, map.spec().texel().channels};
 }
 
 // Visibility of one lookup on the CPU, nothing recorded (the batch path).

@@ -84,19 +84,53 @@ void SceneRenderer::setShadowClipFromWorld(const glm::mat4& shadowClipFromWorld)
     mShadowClipFromWorld = shadowClipFromWorld;
 }
 
-void SceneRenderer::ensureShadowTarget(const MapSpec& map) {
-    if (mShadow.framebuffer && mShadow.width == map.size.x && mShadow.height == map.size.y &&
-        mMap.texels == map.texels && mMap.layers.size() == map.layers.size()) {
-        return;
-    }
+void SceneRenderer::ensureShadowTarget(const MapSpec& map, TexelKind depthFormat) {
     if (auto why = checkMapSpec(map)) throw std::invalid_argument(*why);
+    if (map.layers.size() != 1 && !map.texel().depth) {
+        throw std::invalid_argument("a moments map has one layer, not " +
+                                    std::to_string(map.layers.size()));
+    }
     // One layer: a 2D texture; cascades: a 2D array, one layer each (shared/pcf_prelude.h reads
-    // it as sampler2DArray when the program's PCF_MAP_LAYERS says so).
-    mShadow =
-        map.layers.size() == 1
-            ? createOffscreenTarget(map.size.x, map.size.y, {}, glTexelFormat(map.texels))
-            : createLayeredDepthTarget(map.size.x, map.size.y, static_cast<int>(map.layers.size()),
-                                       glTexelFormat(map.texels));
+    // it as sampler2DArray when the program's PCF_MAP_LAYERS says so). mMap is the map the
+    // target holds now.
+    if (!mShadow.framebuffer || mShadow.width != map.size.x || mShadow.height != map.size.y ||
+        mShadowDepthFormat != depthFormat || mMap.layers.size() != map.layers.size()) {
+        mShadow = map.layers.size() == 1
+                      ? createOffscreenTarget(map.size.x, map.size.y, {}, glTexelFormat(depthFormat))
+                      : createLayeredDepthTarget(map.size.x, map.size.y,
+                                                 static_cast<int>(map.layers.size()),
+                                                 glTexelFormat(depthFormat));
+        mShadowDepthFormat = depthFormat;
+    }
+    if (map.texel().depth) return;
+    if (!mMoments.framebuffer || mMoments.width != map.size.x || mMoments.height != map.size.y ||
+        mMap.texels != map.texels) {
+        mMoments = createOffscreenTarget(map.size.x, map.size.y, {glTexelFormat(map.texels)});
+    }
+}
+
+GLuint SceneRenderer::mapTexture() const {
+    return mMap.texel().depth ? mShadow.depth.id() : mMoments.colors.front().id();
+}
+
+void SceneRenderer::renderMomentsPass(const RenderSettings& settings) {
+    PcfParams prm = settings.pcfParams();
+    const PcfProgram& program = mMomentsPrograms.get(pcfVariant(prm, false, mMap));
+    GLuint id = program.id();
+    glUseProgram(id);
+    setParamUniforms(program, prm, settings.kernelBias(), &settings);
+    glBindFramebuffer(GL_FRAMEBUFFER, mMoments.framebuffer.id());
+    glViewport(0, 0, mMoments.width, mMoments.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    bindShadowMap(id, mShadow.depth.id(), mSamplers);
+    if (!mEmptyVao) mEmptyVao = createVertexArray();
+    glBindVertexArray(mEmptyVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glBindSampler(0, 0);
+    glBindSampler(1, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 void SceneRenderer::ensureTargets(const RenderSettings& settings) {
@@ -130,7 +164,7 @@ void SceneRenderer::drawObjects(GLuint program, bool castersOnly, bool setMateri
 void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
     MapSpec map =
         shadowMapSpec(mScene, settings, mShadowClipFromWorld, frameAspect(settings.frameSize));
-    ensureShadowTarget(map);
+    ensureShadowTarget(map, settings.depthFormat);
     mMap = std::move(map);
     ensureTargets(settings);
     glBindFramebuffer(GL_FRAMEBUFFER, mShadow.framebuffer.id());
@@ -165,6 +199,7 @@ void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
     if (offset) glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (!mMap.texel().depth) renderMomentsPass(settings);
 }
 
 void SceneRenderer::renderCameraPass(const RenderSettings& settings) {
@@ -233,7 +268,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glm::vec3 viewDir = cameraViewDirWs(mScene.camera);
     glProgramUniform3fv(program, uniform(program, "uEyeWs"), 1, &mScene.camera.eyeWs.x);
     glProgramUniform3fv(program, uniform(program, "uViewDirWs"), 1, &viewDir.x);
-    bindShadowMap(program, mShadow.depth.id(), mSamplers);
+    bindShadowMap(program, mapTexture(), mShadow.depth.id(), mSamplers);
     drawObjects(program, false, true);
     glBindSampler(0, 0);
     glBindSampler(1, 0);
@@ -332,8 +367,6 @@ std::vector<float> SceneRenderer::readRegion(GLenum attachment, glm::ivec2 topLe
 }
 
 // The map the sampler compares against (depth_readback.h), not glGetTextureImage's conversion.
-ShadowMap SceneRenderer::readShadowMap() const {
-    return readSampledDepth(mShadow.depth.id(), mMap);
-}
+ShadowMap SceneRenderer::readShadowMap() const { return readSampledDepth(mapTexture(), mMap); }
 
 }  // namespace pcf

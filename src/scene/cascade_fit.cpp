@@ -50,6 +50,12 @@ std::optional<ParamProblem> cascadeProblem(const Scene& scene, const ShadowSetti
                             count + " do not work with " + std::string(methodInfo(s.method).name) +
                                 " (one penumbra scale per map)"};
     }
+    // A moments map is made from one depth map by its own pass (render/scene_renderer).
+    if (!texelKindInfo(mapTexelKind(s.method, s.depthFormat, s.momentBits)).depth) {
+        return ParamProblem{"cascades", "",
+                            count + " do not work with " + std::string(methodInfo(s.method).name) +
+                                " (a moments map has one layer)"};
+    }
     if (!(cascadeFarDepth(scene.camera, s) > scene.camera.nearZ)) {
         return ParamProblem{"shadow_distance", "",
                             " " + cascadeNumberText(cascadeFarDepth(scene.camera, s)) +

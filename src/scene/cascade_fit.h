@@ -31,7 +31,8 @@ std::vector<CascadeRange> cascadeRanges(const Camera& camera, const ShadowSettin
 // Why the settings' cascades do not fit this scene, in the kernel's words (the setting named as
 // its key; the command line says its flag, app/cli_util.h cliWords), or nullopt: more than one
 // is for a directional light only, not for a method that searches blockers (pcss's penumbra
-// scale is one number per map), and the shadow distance must lie beyond the camera's near plane.
+// scale is one number per map) nor one that reads a moments map (made from one depth map), and
+// the shadow distance must lie beyond the camera's near plane.
 std::optional<ParamProblem> cascadeProblem(const Scene& scene, const ShadowSettings& s);
 
 // The eight corners of the camera frustum between view depths nearZ and farZ, world space

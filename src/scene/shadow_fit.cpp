@@ -16,7 +16,7 @@ MapSpec shadowMapSpec(const Scene& scene, const ShadowSettings& s, const glm::ma
                       float aspect) {
     MapSpec spec;
     spec.size = {s.mapSize, s.mapSize};
-    spec.texels = mapTexelKind(s.method, s.depthFormat);
+    spec.texels = mapTexelKind(s.method, s.depthFormat, s.momentBits);
     if (s.cascades <= 1) {
         spec.layers = {shadowMapLayer(scene, fit, s.mapSize)};
         return spec;
