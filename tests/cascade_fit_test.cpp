@@ -27,7 +27,8 @@ Scene groundScene() {
     scene.light.directionWs = glm::normalize(glm::vec3(0.5f, -1.0f, 0.3f));
     scene.objects.push_back({"ground", *makePlane(glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f),
                                                   glm::vec2(120.0f, 120.0f))});
-    scene.objects.push_back({"post", Box{glm::vec3(3.0f, 1.0f, -6.0f), glm::vec3(0.2f, 1.0f, 0.2f)}});
+    scene.objects.push_back(
+        {"post", Box{glm::vec3(3.0f, 1.0f, -6.0f), glm::vec3(0.2f, 1.0f, 0.2f)}});
     scene.camera.eyeWs = glm::vec3(0.0f, 2.0f, 0.0f);
     scene.camera.targetWs = glm::vec3(0.0f, 1.0f, -10.0f);
     scene.camera.nearZ = 0.1f;
@@ -53,7 +54,8 @@ Camera turningCamera(int step) {
     float yaw = glm::radians(static_cast<float>(step) * 7.3f);
     float pitch = glm::radians(-10.0f + 8.0f * std::sin(static_cast<float>(step) * 0.4f));
     c.eyeWs = glm::vec3(0.05f * static_cast<float>(step), 2.0f, -0.03f * static_cast<float>(step));
-    glm::vec3 forward(std::sin(yaw) * std::cos(pitch), std::sin(pitch), -std::cos(yaw) * std::cos(pitch));
+    glm::vec3 forward(std::sin(yaw) * std::cos(pitch), std::sin(pitch),
+                      -std::cos(yaw) * std::cos(pitch));
     c.targetWs = c.eyeWs + forward;
     return c;
 }
@@ -156,7 +158,8 @@ TEST(CascadeStability, TheSphereFitsTexelIsConstantAndTheBoxFitsIsNot) {
         // The sphere's square holds the slice's light-space box at every turn: never finer.
         EXPECT_GE(sphere.lo[i], box.hi[i] * (1.0f - 1e-5f)) << i;
         std::printf(
-            "cascade %d: box texel %.5f .. %.5f (x%.3f), sphere %.5f (area x%.2f .. x%.2f of box)\n",
+            "cascade %d: box texel %.5f .. %.5f (x%.3f), sphere %.5f (area x%.2f .. x%.2f of "
+            "box)\n",
             i, static_cast<double>(box.lo[i]), static_cast<double>(box.hi[i]),
             static_cast<double>(box.hi[i] / box.lo[i]), static_cast<double>(sphere.lo[i]),
             static_cast<double>(sphere.lo[i] * sphere.lo[i] / (box.hi[i] * box.hi[i])),
@@ -178,8 +181,7 @@ TEST(CascadeStability, SnappingPutsTheOriginOnWholeTexels) {
                 for (int a = 0; a < 2; ++a) {
                     double texels = static_cast<double>(o[a] / o.w) * MAP_SIZE / 2.0;
                     double frac = std::fabs(texels - std::round(texels));
-                    (snap ? worst : worstUnsnapped) =
-                        std::max(snap ? worst : worstUnsnapped, frac);
+                    (snap ? worst : worstUnsnapped) = std::max(snap ? worst : worstUnsnapped, frac);
                 }
             }
         }

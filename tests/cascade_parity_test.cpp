@@ -38,9 +38,9 @@ Scene postsAlongGround() {
     Scene scene;
     scene.name = "posts along the ground";
     scene.light.directionWs = glm::normalize(glm::vec3(0.8f, -1.0f, 0.2f));
-    scene.objects.push_back({"ground", *makePlane(glm::vec3(0.0f, 0.0f, -48.0f),
-                                                  glm::vec3(0.0f, 1.0f, 0.0f),
-                                                  glm::vec2(24.0f, 104.0f))});
+    scene.objects.push_back(
+        {"ground", *makePlane(glm::vec3(0.0f, 0.0f, -48.0f), glm::vec3(0.0f, 1.0f, 0.0f),
+                              glm::vec2(24.0f, 104.0f))});
     for (int k = 0; k < 12; ++k) {
         float z = -2.0f - 8.0f * static_cast<float>(k);
         scene.objects.push_back({"post" + std::to_string(k),
@@ -130,8 +130,7 @@ TEST_F(CascadeParity, EveryMethodOnEveryCascadeMatchesTheCpuKernel) {
         for (int fit : {CASCADE_FIT_BOX, CASCADE_FIT_SPHERE}) {
             RenderSettings s = cascaded(m.id, kernel, fit, fit == CASCADE_FIT_SPHERE);
             CascadeAgreement a = renderAndCompare(renderer, scene, s);
-            expectAgreement(a, s,
-                            std::string(m.name) + " fit " + std::string(cascadeFitName(fit)));
+            expectAgreement(a, s, std::string(m.name) + " fit " + std::string(cascadeFitName(fit)));
             worst = std::max(worst, a.worst);
         }
     }
@@ -150,9 +149,8 @@ TEST_F(CascadeParity, TexelSizedBiasesScalePerCascade) {
             s.bias = mode;
             s.normalOffset = 1.5f;
             CascadeAgreement a = renderAndCompare(renderer, scene, s);
-            expectAgreement(a, s,
-                            std::string(biasModeName(mode)) + " " +
-                                std::string(methodInfo(method).name));
+            expectAgreement(
+                a, s, std::string(biasModeName(mode)) + " " + std::string(methodInfo(method).name));
         }
     }
     // The layers' texel sizes grow from cascade to cascade, so the same K texels of normal

@@ -43,9 +43,9 @@ class CascadesCommand : public ::testing::Test {
     Json renderJson(const std::string& options) {
         std::string raw = path("raw");
         std::filesystem::remove_all(raw);
-        testutil::CommandResult r = testutil::runPcfscope(
-            "render --scene-file " + writeScene() + " --size 320x180 --map-size 128 " + options +
-            " --raw " + raw);
+        testutil::CommandResult r =
+            testutil::runPcfscope("render --scene-file " + writeScene() +
+                                  " --size 320x180 --map-size 128 " + options + " --raw " + raw);
         EXPECT_EQ(r.exitCode, 0) << r.err;
         return Json::parse(testutil::readAll(raw + "/render.json"));
     }
@@ -85,9 +85,10 @@ TEST_F(CascadesCommand, RenderJsonListsTheIssuesSplits) {
         double median = c[i]["texels_per_pixel_median"].get<double>();
         EXPECT_GT(median, 0.0) << i;
         EXPECT_GE(c[i]["texels_per_pixel_max"].get<double>(), median) << i;
-        std::printf("cascade %d: far %.4f, texel_world %.5f, texels per pixel median %.4f max %.4f\n",
-                    i, c[i]["far"].get<double>(), c[i]["texel_world"].get<double>(), median,
-                    c[i]["texels_per_pixel_max"].get<double>());
+        std::printf(
+            "cascade %d: far %.4f, texel_world %.5f, texels per pixel median %.4f max %.4f\n", i,
+            c[i]["far"].get<double>(), c[i]["texel_world"].get<double>(), median,
+            c[i]["texels_per_pixel_max"].get<double>());
     }
 }
 
@@ -103,7 +104,9 @@ TEST_F(CascadesCommand, RenderJsonsSplitsFollowTheFormulaForWhatItReports) {
         double n = map["camera_near"].get<double>();
         double f = map["shadow_distance"].get<double>();
         std::string split = j["cascade_split"].get<std::string>();
-        double lambda = split == "log" ? 1.0 : split == "uniform" ? 0.0 : j["cascade_lambda"].get<double>();
+        double lambda = split == "log"       ? 1.0
+                        : split == "uniform" ? 0.0
+                                             : j["cascade_lambda"].get<double>();
         int count = j["cascades"].get<int>();
         ASSERT_EQ(map["cascades"].size(), static_cast<size_t>(count)) << options;
         for (int i = 0; i < count; ++i) {

@@ -6,7 +6,6 @@
 #include <optional>
 #include <string>
 
-#include "measure/cascade_density.h"
 #include "app/cli_util.h"
 #include "app/commands.h"
 #include "app/magnifier.h"
@@ -17,6 +16,7 @@
 #include "kernel/methods.h"
 #include "kernel/trace_json.h"
 #include "lesson/lesson_pick.h"
+#include "measure/cascade_density.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "render/scene_renderer.h"

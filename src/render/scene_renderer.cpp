@@ -95,11 +95,12 @@ void SceneRenderer::ensureShadowTarget(const MapSpec& map, TexelKind depthFormat
     // target holds now.
     if (!mShadow.framebuffer || mShadow.width != map.size.x || mShadow.height != map.size.y ||
         mShadowDepthFormat != depthFormat || mMap.layers.size() != map.layers.size()) {
-        mShadow = map.layers.size() == 1
-                      ? createOffscreenTarget(map.size.x, map.size.y, {}, glTexelFormat(depthFormat))
-                      : createLayeredDepthTarget(map.size.x, map.size.y,
-                                                 static_cast<int>(map.layers.size()),
-                                                 glTexelFormat(depthFormat));
+        mShadow =
+            map.layers.size() == 1
+                ? createOffscreenTarget(map.size.x, map.size.y, {}, glTexelFormat(depthFormat))
+                : createLayeredDepthTarget(map.size.x, map.size.y,
+                                           static_cast<int>(map.layers.size()),
+                                           glTexelFormat(depthFormat));
         mShadowDepthFormat = depthFormat;
     }
     if (map.texel().depth) return;

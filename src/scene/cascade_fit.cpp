@@ -17,8 +17,8 @@ float cascadeFarDepth(const Camera& camera, const ShadowSettings& s) {
 
 std::vector<CascadeRange> cascadeRanges(const Camera& camera, const ShadowSettings& s) {
     double n = camera.nearZ;
-    std::vector<double> splits = cascadeSplits(n, cascadeFarDepth(camera, s), s.cascades,
-                                               s.cascadeSplit, s.cascadeLambda);
+    std::vector<double> splits =
+        cascadeSplits(n, cascadeFarDepth(camera, s), s.cascades, s.cascadeSplit, s.cascadeLambda);
     std::vector<CascadeRange> ranges;
     for (double far : splits) {
         float from = ranges.empty() ? camera.nearZ : ranges.back().farZ;
@@ -119,8 +119,8 @@ LightBox boxAround(const glm::mat4& lightView, const std::array<glm::vec3, 8>& c
 LightBox sphereBox(const Scene& scene, const glm::mat4& lightView, float aspect, CascadeRange r) {
     SliceSphere sphere = sliceSphere(scene.camera, aspect, r);
     glm::mat4 worldFromView = glm::inverse(viewFromWorld(scene.camera));
-    glm::vec4 centreWs = worldFromView * glm::vec4(0.0f, 0.0f, -static_cast<float>(sphere.depth),
-                                                   1.0f);
+    glm::vec4 centreWs =
+        worldFromView * glm::vec4(0.0f, 0.0f, -static_cast<float>(sphere.depth), 1.0f);
     glm::vec2 c(lightView * centreWs);
     auto radius = static_cast<float>(sphere.radius);
     return {c - radius, c + radius};
@@ -130,15 +130,17 @@ LightBox sphereBox(const Scene& scene, const glm::mat4& lightView, float aspect,
 // scale of clip x (or y) per world unit, the length of the matrix's first (second) row, of the
 // wider axis (as shadowTexelWs, with the light's rotation folded in).
 float orthoTexelWs(const glm::mat4& clipFromWorld, int mapSize) {
-    float sx = glm::length(glm::vec3(clipFromWorld[0][0], clipFromWorld[1][0], clipFromWorld[2][0]));
-    float sy = glm::length(glm::vec3(clipFromWorld[0][1], clipFromWorld[1][1], clipFromWorld[2][1]));
+    float sx =
+        glm::length(glm::vec3(clipFromWorld[0][0], clipFromWorld[1][0], clipFromWorld[2][0]));
+    float sy =
+        glm::length(glm::vec3(clipFromWorld[0][1], clipFromWorld[1][1], clipFromWorld[2][1]));
     return 2.0f / (std::min(sx, sy) * static_cast<float>(mapSize));
 }
 
 }  // namespace
 
-glm::mat4 cascadeClipFromWorld(const Scene& scene, float aspect, CascadeRange r, int fit,
-                               bool snap, int mapSize) {
+glm::mat4 cascadeClipFromWorld(const Scene& scene, float aspect, CascadeRange r, int fit, bool snap,
+                               int mapSize) {
     Aabb bounds = sceneBounds(scene);
     glm::mat4 lightView = lightFromWorld(scene.light, bounds);
     LightBox box = fit == CASCADE_FIT_SPHERE
@@ -161,9 +163,9 @@ glm::mat4 cascadeClipFromWorld(const Scene& scene, float aspect, CascadeRange r,
         hi = std::max(hi, z);
     }
     float margin = std::max(SHADOW_FIT_MARGIN * glm::length(bounds.extentWs()), 1e-4f);
-    glm::mat4 clip = glm::orthoRH_NO(box.lo.x, box.hi.x, box.lo.y, box.hi.y, -hi - margin,
-                                     -lo + margin) *
-                     lightView;
+    glm::mat4 clip =
+        glm::orthoRH_NO(box.lo.x, box.hi.x, box.lo.y, box.hi.y, -hi - margin, -lo + margin) *
+        lightView;
     return snap ? shiftShadowOrigin(clip, glm::vec2(0.0f), mapSize, true) : clip;
 }
 

@@ -54,8 +54,8 @@ SliceSphere sliceSphere(const Camera& camera, float aspect, CascadeRange r);
 // corners; CASCADE_FIT_SPHERE: the square around its bounding sphere), deep enough for every
 // caster of the scene; with snap, one texel wider on every side and the world origin moved onto a
 // texel corner (shiftShadowOrigin), which shifts the box by up to half a texel.
-glm::mat4 cascadeClipFromWorld(const Scene& scene, float aspect, CascadeRange r, int fit,
-                               bool snap, int mapSize);
+glm::mat4 cascadeClipFromWorld(const Scene& scene, float aspect, CascadeRange r, int fit, bool snap,
+                               int mapSize);
 
 // The camera's unit view direction, from the eye to the target: what a receiver's view depth is
 // measured along (shared/pcf_shading.h pcfViewDepth; the camera pass's uViewDirWs).
