@@ -17,7 +17,7 @@
 in vec3 vPosWs;
 in vec3 vNormalWs;
 
-uniform sampler2D uPcfDepth;          // the shadow map, texelFetch side (pcf_prelude.h)
+uniform Map uPcfDepth;  // the shadow map, nearest side (pcf_prelude.h; an array for cascades)
 uniform vec3 uAlbedoEncoded;          // pow(linear colour of this object, 1 / 2.2)
 uniform int uReceives;                // 1: look the shadow map up; 0: never shadowed
 uniform vec3 uLightDirWs;             // the direction the light travels (unit)
@@ -26,6 +26,8 @@ uniform float uSpotCosCone;           // spot only: cos of the cone's half angle
 uniform ivec2 uPickPixel;             // a lesson's pinned point's pixel (window coords); -1: none
 uniform vec4 uPickLookup;             // its u, v, ref, z0, computed on the CPU
 uniform vec2 uPickDzDuv;              // its receiver plane, dz/du, dz/dv
+uniform vec3 uEyeWs;                  // the camera's eye and unit view direction: which cascade
+uniform vec3 uViewDirWs;              // a receiver reads (pcfViewDepth)
 
 layout(location = 0) out vec4 oColour;
 #if PCF_ALL_TARGETS
@@ -60,8 +62,21 @@ void main() {
     // function the CPU runs for a lesson's pinned point). BIAS_MODE is a constant: the driver
     // folds the modes this program does not use.
     // The layer of the map this receiver reads (uPcfMapLayers: render/pcf_programs.h): the
-    // map's one layer.
-    PcfMapLayer layer = uPcfMapLayers[0];
+    // map's one layer, or the cascade whose view depths hold this receiver's (shared/
+    // pcf_shading.h pcfViewDepth and pcfCascadeLayer, which the CPU runs on the same point: the
+    // parity test, `verify` and a lesson's pinned point). Past the last cascade: lit.
+    int layerIndex = 0;
+    bool covered = true;
+#if PCF_MAP_LAYERS > 1
+    vec4 cascadeFar = vec4(1e30f);
+    for (int k = 0; k < PCF_MAP_LAYERS; ++k) cascadeFar[k] = uPcfMapLayers[k].viewDepth.y;
+    layerIndex = pcfCascadeLayer(pcfViewDepth(vPosWs, uEyeWs, uViewDirWs), cascadeFar,
+                                 PCF_MAP_LAYERS);
+    covered = layerIndex < PCF_MAP_LAYERS;
+    layerIndex = min(layerIndex, PCF_MAP_LAYERS - 1);
+    pcfMapLayer = layerIndex;
+#endif
+    PcfMapLayer layer = uPcfMapLayers[layerIndex];
     PcfReceiverLookup at = pcfReceiverLookup(layer.shadowClipFromWorld, vPosWs, n, cosTheta,
                                              BIAS_MODE, uConstantBias, uSlopeBias, uSlopeMax,
                                              uNormalOffset, layer.texelWs);
@@ -93,10 +108,10 @@ void main() {
     }
 
     float visibility = 1.0f;
-    if (uReceives != 0) {
+    if (uReceives != 0 && covered) {
         // The disk turns with the texel looked up, not the screen pixel (pcfTexelRotation).
         vec2 rotation = PCF_ROTATE_PER_PIXEL != 0
-                            ? pcfTexelRotation(vec2(u, v), textureSize(uPcfDepth, 0))
+                            ? pcfTexelRotation(vec2(u, v), mapSize(uPcfDepth))
                             : vec2(1.0f, 0.0f);
         PcfRef lookupRef = PcfRef(ref, vec2(u, v), pcfProgramBias(BIAS_MODE, dzduv));
         visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef, pcfProgramParams(rotation));
@@ -113,6 +128,14 @@ void main() {
     // level, what reaches the point of the light (outside a spot's cone none does), with no N.L,
     // so that acne under a low sun is black on white (shared/pcf_shading.h).
     if (uShading == PCF_SHADING_VISIBILITY) oColour = vec4(vec3(visibility * cone), 1.0f);
+    // --shading cascades: the lit picture over the colour of the cascade read (red, green, blue,
+    // yellow for cascades 0..3), untinted past the last and with one map.
+    if (uShading == PCF_SHADING_CASCADES) {
+        const vec3 CASCADE_TINTS[4] = vec3[4](vec3(1.0f, 0.35f, 0.35f), vec3(0.35f, 1.0f, 0.35f),
+                                              vec3(0.45f, 0.55f, 1.0f), vec3(1.0f, 0.9f, 0.2f));
+        vec3 tint = PCF_MAP_LAYERS > 1 && covered ? CASCADE_TINTS[layerIndex] : vec3(1.0f);
+        oColour = vec4(tint * uAlbedoEncoded * pcfGammaEncode(light), 1.0f);
+    }
 #if PCF_ALL_TARGETS
     oLightSpace = uReceives != 0 ? vec4(u, v, ref, 1.0f) : vec4(0.0f);
     oVisibility = visibility;

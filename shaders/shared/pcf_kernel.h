@@ -80,6 +80,9 @@ struct PcfMapLayer {
     vec2 depthRange;
     // One texel's world size at clip w = 1 (normal offset's unit); 0 when not known
     float texelWs;
+    // A cascade's view depths (scene units along the camera's view direction, near and far):
+    // the receivers it serves (scene/cascade_fit.h); (0, 0): not a cascade, every receiver
+    vec2 viewDepth PCF_DEFAULT(vec2(0.0f));
 };
 
 // What a method needs besides the lookup itself.

@@ -61,10 +61,28 @@ uniform float uPcssReciprocals[17];
 // In GLSL the map is the depth texture behind a non-comparison sampler (nearest), and the
 // same texture is bound a second time behind a comparison sampler (GL_LINEAR,
 // GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL, clamp to edge) for hardware taps and gathers.
+// A map of more than one layer (cascades, PCF_MAP_LAYERS > 1) is an array texture; the kernel
+// reads the layer pcfMapLayer names, which the stage sets before it filters (scene.frag), so the
+// kernel's code is the same for one layer or four. The CPU reads one layer's texels instead
+// (kernel/pcf.h plainMap).
+#ifndef PCF_MAP_LAYERS
+#define PCF_MAP_LAYERS 1
+#endif
+#if PCF_MAP_LAYERS > 1
+#define Map sampler2DArray
+uniform sampler2DArrayShadow uPcfCompare;
+int pcfMapLayer = 0;
+// A map texture coordinate with the layer: (uv, layer) to sample, (uv, layer, ref) to compare.
+#define PCF_MAP_UV(uv) vec3(uv, float(pcfMapLayer))
+#define PCF_MAP_UV_REF(uv, ref) vec4(uv, float(pcfMapLayer), ref)
+#else
 #define Map sampler2D
 uniform sampler2DShadow uPcfCompare;
+#define PCF_MAP_UV(uv) (uv)
+#define PCF_MAP_UV_REF(uv, ref) vec3(uv, ref)
+#endif
 
-ivec2 mapSize(Map map) { return textureSize(map, 0); }
+ivec2 mapSize(Map map) { return textureSize(map, 0).xy; }
 
 // The texture unit's state the kernel needs (issue 10): PCF_FIXED_POINT is 1 when the depth
 // texture is fixed-point (16, 24 bit: D_ref clamped to [0,1]); PCF_PRECISION is the precision
@@ -93,18 +111,18 @@ int mapPrecision(Map map) { return PCF_PRECISION; }
 // GPU's nearest rounding lands on that texel (GL 4.5 core, 8.14.2: floor(u * size)), whether it
 // keeps 8 sub-texel bits (NVIDIA, AMD) or a float (llvmpipe): exactly texelFetch's value.
 float fetchDepth(Map map, ivec2 texel) {
-    return textureLod(map, (vec2(texel) + 0.5f) * (1.0f / vec2(textureSize(map, 0))), 0.0f).r;
+    return textureLod(map, PCF_MAP_UV((vec2(texel) + 0.5f) * (1.0f / vec2(mapSize(map)))), 0.0f).r;
 }
 // The depth of the texel that texel position p (uv * size) falls in, floor(p), clamped to the
 // edge: fetchDepth(map, clamp(ivec2(floor(p)))). The same centre read, in float: the sampler's
 // clamp to edge is the clamp, and no int conversions (Poisson's 16 taps: 1.24x -> 1.12x).
 float pointDepth(Map map, vec2 p) {
-    return textureLod(map, (floor(p) + 0.5f) * (1.0f / vec2(textureSize(map, 0))), 0.0f).r;
+    return textureLod(map, PCF_MAP_UV((floor(p) + 0.5f) * (1.0f / vec2(mapSize(map)))), 0.0f).r;
 }
 // A moments map's texel (kernel/shadow_map.h TexelKind::Moments*), the same centre read: a
 // two-channel texture reads (m1, m2, 0, 1).
 vec4 fetchMoments(Map map, ivec2 texel) {
-    return textureLod(map, (vec2(texel) + 0.5f) * (1.0f / vec2(textureSize(map, 0))), 0.0f);
+    return textureLod(map, PCF_MAP_UV((vec2(texel) + 0.5f) * (1.0f / vec2(mapSize(map)))), 0.0f);
 }
 void pcfTap(Map map, ivec2 texel, float depth, float ref, float lit, float weight) {}
 void pcfFetch(Map map, int kind, vec2 uv, float weight) {}
@@ -112,17 +130,17 @@ void pcfTapWanted(Map map, ivec2 texel) {}
 
 // One hardware comparison tap: four comparisons lerped by the texture unit.
 float hwTap(Map map, vec2 uv, float ref, float weight) {
-    return texture(uPcfCompare, vec3(uv, ref));
+    return texture(uPcfCompare, PCF_MAP_UV_REF(uv, ref));
 }
 
 // One comparison gather: the four bits around uv, in GL's component order
 // x = texel (0,1), y = (1,1), z = (1,0), w = (0,0) relative to the 2x2 block's lower corner.
 vec4 gatherCompare(Map map, vec2 uv, float ref, vec4 weights) {
-    return textureGather(uPcfCompare, uv, ref);
+    return textureGather(uPcfCompare, PCF_MAP_UV(uv), ref);
 }
 
 // One gather of raw depths (no comparison), same component order: through the nearest side's
 // non-comparison sampler (clamp to edge), for comparisons made in the shader (soft bias).
-vec4 gatherDepth(Map map, vec2 uv) { return textureGather(map, uv, 0); }
+vec4 gatherDepth(Map map, vec2 uv) { return textureGather(map, PCF_MAP_UV(uv), 0); }
 
 #endif

@@ -41,12 +41,36 @@ PCF_FN PcfReceiverLookup pcfReceiverLookup(mat4 shadowClipFromWorld, vec3 posWs,
     return PcfReceiverLookup(u, v, z, z0, z - bias);
 }
 
+// A receiver point's view depth: its distance from the camera's eye along the unit view
+// direction, scene units, in the one order of operations both sides keep (PCF_PRECISE: no fused
+// multiply-add), so the CPU, given the point the GPU shaded, picks the very same cascade.
+PCF_FN float pcfViewDepth(vec3 posWs, vec3 eyeWs, vec3 viewDirWs) {
+    PCF_PRECISE float dx = posWs.x - eyeWs.x;
+    PCF_PRECISE float dy = posWs.y - eyeWs.y;
+    PCF_PRECISE float dz = posWs.z - eyeWs.z;
+    PCF_PRECISE float d = dx * viewDirWs.x + dy * viewDirWs.y + dz * viewDirWs.z;
+    return d;
+}
+
+// Which cascade a receiver at view depth `viewDepth` reads, of `count` (1..4) whose view depths
+// end at cascadeFar (x, y, z, w: cascades 0..3, scene/cascade_fit.h): the first that ends beyond
+// it. `count` for a receiver beyond the last (past the shadow distance), which no cascade
+// covers: it is lit.
+PCF_FN int pcfCascadeLayer(float viewDepth, vec4 cascadeFar, int count) {
+    int layer = 0;
+    for (int k = 0; k < count; ++k) {
+        if (viewDepth >= cascadeFar[k]) layer = k + 1;
+    }
+    return layer;
+}
+
 // What the camera pass draws on the receivers (the `shading` setting, kernel/settings.h Shading):
 // lit, the picture, albedo * (ambient + diffuse * N.L * visibility) gamma-encoded; or the
 // visibility alone, the grey level v (0 black, 1 white: the byte is 255 v), no N.L, no albedo,
 // no gamma, so that a pixel's byte reads back as the filter's result.
 PCF_CONST int PCF_SHADING_LIT = 0;
 PCF_CONST int PCF_SHADING_VISIBILITY = 1;
+PCF_CONST int PCF_SHADING_CASCADES = 2;
 
 // Gamma 2.2, encode: g(x) = x^(1/2.2) for the scene's light factor x in [0.25, 1] (ambient 0.25
 // to full sun; scene.frag). The exponent is the conventional display gamma of "GPU Gems 3,

@@ -16,6 +16,7 @@
 #include "kernel/methods.h"
 #include "kernel/trace_json.h"
 #include "lesson/lesson_pick.h"
+#include "measure/cascade_density.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "render/scene_renderer.h"
@@ -106,6 +107,25 @@ void printCameraTiming(SceneRenderer& renderer, const RenderSettings& settings, 
                 t.timer.c_str());
 }
 
+// render.json with a cascaded map's measured texel density added to each of its "map" cascades
+// (measure/cascade_density.h); as it is for a map of one layer.
+std::string withCascadeDensities(const std::string& json, const SceneRenderer& renderer,
+                                 const std::vector<float>& lightSpace,
+                                 const std::vector<float>& positions) {
+    if (renderer.mapSpec().layers.size() < 2) return json;
+    Json j = Json::parse(json);
+    std::vector<CascadeDensity> d = cascadeDensities(lightSpace, positions, renderer.frameSize(),
+                                                     renderer.mapSpec(), renderer.scene().camera);
+    for (size_t k = 0; k < d.size(); ++k) {
+        Json& cascade = j["map"]["cascades"][k];
+        cascade["texels_per_pixel_max"] = jsonNumber(static_cast<float>(d[k].texelsPerPixelMax));
+        cascade["texels_per_pixel_median"] =
+            jsonNumber(static_cast<float>(d[k].texelsPerPixelMedian));
+        cascade["pixels_measured"] = d[k].pixels;
+    }
+    return jsonDump(j) + "\n";
+}
+
 // The intermediate buffers of the rendered frame, as EXR, and its settings as JSON.
 void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderSettings& settings,
                      glm::ivec2 size) {
@@ -121,7 +141,9 @@ void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderS
     std::vector<float> receiver = renderer.readReceiver();
     writeExr(raw.receiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
     writeTextFile(raw.settings,
-                  settingsJson(settings, renderer.pcfParams(settings), renderer.mapSpec()));
+                  withCascadeDensities(
+                      settingsJson(settings, renderer.pcfParams(settings), renderer.mapSpec()),
+                      renderer, ls, pos));
 }
 
 // Says what was written, like export does (a silent success left users looking for it).
@@ -153,6 +175,7 @@ int runRender(const RenderCommandOptions& o) {
     outputs.addInput("--scene-file", o.render.sceneFile);
     LessonRender lesson = lessonRenderOf(o, settings, outputs);
     if (lesson.camera) scene.camera = *lesson.camera;
+    checkCascades(scene, settings);
     if (lesson.chartStep && !o.out.empty() &&
         std::min(settings.frameSize.x, settings.frameSize.y) < MIN_CHART_SIDE) {
         throw UsageError("--size " + o.render.size + ": lesson step " +
@@ -172,11 +195,12 @@ int runRender(const RenderCommandOptions& o) {
 
     // Measured peaks of `render --raw -o` (box-on-plane, map 1024): 339 MB at 1024x1024, 686 MB
     // at 2048x2048, so 113 bytes a pixel over about 220 MB; the encoded EXR held in memory
-    // while it is written adds up to 16 more. The map: depth, its read-back, its EXR.
+    // while it is written adds up to 16 more. The map: depth, its read-back, its EXR, each as
+    // many times as it has layers (cascades).
     requireMemory("--size " + std::to_string(settings.frameSize.x) + "x" +
                       std::to_string(settings.frameSize.y),
                   memoryEstimate(256 * MIB, 130, settings.frameSize.x, settings.frameSize.y) +
-                      memoryEstimate(0, 12, settings.mapSize, settings.mapSize),
+                      memoryEstimate(0, 12 * settings.cascades, settings.mapSize, settings.mapSize),
                   o.force);
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(scene);
@@ -204,6 +228,7 @@ Command addRenderCommand(CLI::App& app) {
     auto o = std::make_shared<RenderCommandOptions>();
     CLI::App* sub = app.add_subcommand("render", "render one frame headless (no display needed)");
     o->render.picture = true;  // --shading: what the frame draws
+    o->render.cascades = true;
     o->render.addTo(sub, "");
     sub->add_option("-o,--out", o->out, "the frame as PNG");
     sub->add_option("--raw", o->rawDir,

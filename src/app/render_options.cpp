@@ -9,10 +9,12 @@
 #include "app/cli_util.h"
 #include "app/session.h"
 #include "kernel/bias.h"
+#include "kernel/cascades.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
 #include "kernel/trace_json.h"
 #include "lesson/lesson.h"
+#include "scene/cascade_fit.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"
 
@@ -48,7 +50,8 @@ void SettingOptions::addTo(CLI::App* sub, std::initializer_list<ParamGroup> grou
     mValues = defaults;
     for (const ParamInfo& p : allParams()) {
         if (std::find(groups.begin(), groups.end(), p.group) == groups.end() ||
-            std::find(except.begin(), except.end(), p.key) != except.end()) {
+            std::find(except.begin(), except.end(), p.key) != except.end() ||
+            (!cascades && isCascadeSetting(p.key))) {
             continue;
         }
         addParam(p, defaults);
@@ -176,6 +179,11 @@ void checkLightSize(const Light& light, const ShadowSettings& s) {
     }
 }
 
+void checkCascades(const Scene& scene, const ShadowSettings& s) {
+    if (std::optional<ParamProblem> why = cascadeProblem(scene, s))
+        throw UsageError(cliWords(*why));
+}
+
 void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene,
                           std::initializer_list<std::string_view> except) {
     mDefaultScene = defaultScene;
@@ -186,6 +194,7 @@ void RenderOptions::addTo(CLI::App* sub, const std::string& defaultScene,
     sub->add_option("--step", lessonStep, "with --lesson: the step whose settings to use");
     sub->add_option("--scene", scene, "built-in scene: " + presetNameList());
     sub->add_option("--scene-file", sceneFile, "scene file (TOML)");
+    shadow.cascades = cascades;
     if (picture) {
         shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias, ParamGroup::Map, ParamGroup::View},
                      defaults, except);
@@ -213,6 +222,11 @@ RenderSettings RenderOptions::settings() const {
         s = renderSettingsFor(l.steps[static_cast<size_t>(lessonStep - 1)].settings, frame);
     }
     shadow.applyTo(s, fromLesson);
+    if (fromLesson && s.cascades > 1) {
+        throw UsageError("--cascades " + std::to_string(s.cascades) +
+                         " with --lesson: a lesson step shows one map over its scene (cascades "
+                         "render with --scene or --scene-file)");
+    }
     if (auto why = cliParamsProblem(s.pcfParams())) throw UsageError(*why);
     checkBiasOptions(s);
     if (!fromLesson || given("--polygon-offset")) {

@@ -32,6 +32,9 @@ class SettingOptions {
                  const ShadowSettings& defaults);
     // Whether the user gave the parameter's option.
     bool given(std::string_view key) const;
+    // Whether the command takes the cascades' settings (kernel/cascades.h isCascadeSetting);
+    // set before addTo.
+    bool cascades = false;
     // The name given for a named parameter (or its default): "pcf-gather"; set it to override.
     std::string& name(std::string_view key);
     const std::string& name(std::string_view key) const;
@@ -77,6 +80,9 @@ void checkBiasOptions(const ShadowSettings& s);
 // --light-size on a spot light, or --light-radius on a directional one: UsageError in the flags'
 // words (scene/light.h lightSizeProblem).
 void checkLightSize(const Light& light, const ShadowSettings& s);
+// --cascades on a spot light or with pcss, or a --shadow-distance before the camera's near
+// plane: UsageError in the flags' words (scene/cascade_fit.h cascadeProblem).
+void checkCascades(const Scene& scene, const ShadowSettings& s);
 
 struct RenderOptions {
     std::string scene;      // preset name
@@ -92,6 +98,10 @@ struct RenderOptions {
     // Whether the command shows its frames (render): then it also takes the parameters of what
     // a frame draws (ParamGroup::View, --shading); the commands that measure do not.
     bool picture = false;
+    // Whether the command renders a cascaded map (render): then it also takes --cascades and
+    // the other cascade settings. The commands that measure a frame's lookups (bench,
+    // stability, advise) read one layer, and lessons show one map.
+    bool cascades = false;
 
     // Registers the options on `sub`; `defaultScene` is used when neither --scene nor
     // --scene-file is given (empty: one of them is required). The parameters named in `except`

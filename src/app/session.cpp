@@ -302,7 +302,8 @@ void Session::renderScene() {
     // or fit: the texel grid slid and snapped as the lesson says, light.h shiftShadowOrigin), or
     // the depth pass draws it otherwise (culling, polygon offset).
     bool mapChanged = !mRendered ||
-                      shadowMapSpec(mRenderer->scene(), r, view.fit) != mRenderer->mapSpec() ||
+                      shadowMapSpec(mRenderer->scene(), r, view.fit, frameAspect(r.frameSize)) !=
+                          mRenderer->mapSpec() ||
                       mRendered->cull != r.cull || mRendered->polygonOffset != r.polygonOffset;
     if (mapChanged) mRenderer->setShadowClipFromWorld(view.fit);
     mHeatDirty = true;

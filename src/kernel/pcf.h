@@ -8,15 +8,17 @@
 
 namespace pcf {
 
-// The map as the batch path sees it, with the texture unit's state the lookup needs.
-inline PlainMap plainMap(const ShadowMap& map, const PcfParams& prm) {
-    return PlainMap{map.depths().data(), map.size(), map.isFixedPoint() ? 1 : 0, prm.precision,
+// The map as the batch path sees it, with the texture unit's state the lookup needs: one layer
+// of it (a cascade; the GPU's pcfMapLayer, shared/pcf_prelude.h).
+inline PlainMap plainMap(const ShadowMap& map, const PcfParams& prm, int layer = 0) {
+    return PlainMap{map.layerTexels(layer), map.size(), map.isFixedPoint() ? 1 : 0, prm.precision,
                     map.spec().texel().channels};
 }
 
 // The map as the tracer sees it, recording into `out`.
-inline RecordingMap recordingMap(const ShadowMap& map, const PcfParams& prm, Recording& out) {
-    return RecordingMap{map.depths().data(),        map.size(),    &out,
+inline RecordingMap recordingMap(const ShadowMap& map, const PcfParams& prm, Recording& out,
+                                 int layer = 0) {
+    return RecordingMap{map.layerTexels(layer),     map.size(),    &out,
                         map.isFixedPoint() ? 1 : 0, prm.precision, map.spec().texel().channels};
 }
 
@@ -40,6 +42,12 @@ inline float filterVisibility(const ShadowMap& map, vec2 uv, float ref, const Pc
 inline float filterRecorded(const ShadowMap& map, vec2 uv, float ref, const PcfParams& prm,
                             const PcfBias& bias, Recording& out) {
     return pcfFilterRef(recordingMap(map, prm, out), uv, PcfRef(ref, uv, bias), prm);
+}
+
+// The batch path on one layer of a layered map (a cascade).
+inline float filterLayerVisibility(const ShadowMap& map, int layer, vec2 uv, float ref,
+                                   const PcfParams& prm, const PcfBias& bias) {
+    return pcfFilterRef(plainMap(map, prm, layer), uv, PcfRef(ref, uv, bias), prm);
 }
 
 }  // namespace pcf

@@ -102,8 +102,8 @@ const ParamInfo PARAMS[] = {
         shadingFromName,
         [] { return std::string(SHADING_NAMES); }, "shading"}, ParamGroup::View, "uShading", "",
      0, 0, false,
-     "what the receivers show: lit (ambient + N.L x visibility) or visibility (alone, 0 black "
-     "to 1 white, no N.L)", true, {}, true},
+     "what the receivers show: lit (ambient + N.L x visibility), visibility (alone, 0 black "
+     "to 1 white, no N.L) or cascades (lit, tinted by the cascade read)", true, {}, true},
     {"lbr", &ShadowSettings::lbr, ParamGroup::Filter, "uLbr", "", 0.0, 0.99, false,
      "vsm, evsm2, evsm4: light-bleeding reduction, the bound's cut (linstep(lbr, 1, p))", true,
      &PcfParams::lbr, true},
@@ -123,6 +123,24 @@ const ParamInfo PARAMS[] = {
         momentFormatFromName, [] { return std::string("16f, 32f"); }, "moment format"},
      ParamGroup::Map, "", "", 0, 0, false,
      "the moment methods: the moments map's floats, 16f or 32f", true, {}, true},
+    {"cascades", &ShadowSettings::cascades, ParamGroup::Map, "", "", 1, MAX_CASCADES, false,
+     "directional light: cascades of the map, 1..4 (1: one map over the whole scene)", true, {},
+     true},
+    {"cascade_split", NamedField<int>{&ShadowSettings::cascadeSplit, nameOf<int, cascadeSplitName>,
+        cascadeSplitFromName, cascadeSplitNames, "cascade split"}, ParamGroup::Map, "", "", 0, 0,
+     false, "cascades: where the view depth splits: uniform, log, practical (by --cascade-lambda)",
+     true, {}, true},
+    {"cascade_lambda", &ShadowSettings::cascadeLambda, ParamGroup::Map, "", "", 0.0, 1.0, false,
+     "cascades, practical split: 0 uniform .. 1 log (Zhang et al. 2006)", true, {}, true},
+    {"shadow_distance", &ShadowSettings::shadowDistance, ParamGroup::Map, "", "scene units", 0.0,
+     1.0e6, false, "cascades: the view depth the last one ends at (0: the camera's far plane)",
+     true, {}, true},
+    {"cascade_fit", NamedField<int>{&ShadowSettings::cascadeFit, nameOf<int, cascadeFitName>,
+        cascadeFitFromName, cascadeFitNames, "cascade fit"}, ParamGroup::Map, "", "", 0, 0, false,
+     "cascades: the light box around each slice: box (tight) or sphere (the same size as the "
+     "camera turns)", true, {}, true},
+    {"cascade_snap", &ShadowSettings::cascadeSnap, ParamGroup::Map, "", "", 0, 0, false,
+     "cascades: move each light box's origin to whole texels", true, {}, true},
 };
 // clang-format on
 
@@ -370,7 +388,8 @@ std::string_view cullModeName(CullMode mode) {
 
 // The shader tests the setting's uniform against the shared header's ids.
 static_assert(static_cast<int>(Shading::Lit) == PCF_SHADING_LIT &&
-              static_cast<int>(Shading::Visibility) == PCF_SHADING_VISIBILITY);
+              static_cast<int>(Shading::Visibility) == PCF_SHADING_VISIBILITY &&
+              static_cast<int>(Shading::Cascades) == PCF_SHADING_CASCADES);
 
 std::string_view shadingName(Shading shading) {
     switch (shading) {
@@ -378,6 +397,8 @@ std::string_view shadingName(Shading shading) {
             return "lit";
         case Shading::Visibility:
             return "visibility";
+        case Shading::Cascades:
+            return "cascades";
     }
     return "?";
 }
@@ -385,6 +406,7 @@ std::string_view shadingName(Shading shading) {
 std::optional<Shading> shadingFromName(std::string_view name) {
     if (name == "lit") return Shading::Lit;
     if (name == "visibility") return Shading::Visibility;
+    if (name == "cascades") return Shading::Cascades;
     return std::nullopt;
 }
 

@@ -14,6 +14,7 @@
 #include <variant>
 
 #include "kernel/bias.h"
+#include "kernel/cascades.h"
 #include "kernel/methods.h"
 
 namespace pcf {
@@ -23,7 +24,9 @@ enum class CullMode { Back, Front, None };
 // N.L times the visibility), or `visibility`, the filter's visibility alone as a grey level (0
 // black, 1 white), with no N.L: under a low sun N.L is near 0 and the lit picture squeezes acne
 // into a few grey levels, while the visibility alone shows it black on white.
-enum class Shading { Lit, Visibility };
+// `cascades`: the lit picture tinted by the cascade each receiver reads (kernel/cascades.h; one
+// colour per cascade, none past the last), to see where the splits fall.
+enum class Shading { Lit, Visibility, Cascades };
 
 // The shadow map is N x N texels, N in this range.
 constexpr int MIN_MAP_SIZE = 4;
@@ -58,9 +61,9 @@ std::string_view cullModeName(CullMode mode);  // "back", "front", "none"
 std::optional<CullMode> cullModeFromName(std::string_view name);
 constexpr std::string_view CULL_MODE_NAMES = "back, front, none";
 
-std::string_view shadingName(Shading shading);  // "lit", "visibility"
+std::string_view shadingName(Shading shading);  // "lit", "visibility", "cascades"
 std::optional<Shading> shadingFromName(std::string_view name);
-constexpr std::string_view SHADING_NAMES = "lit, visibility";
+constexpr std::string_view SHADING_NAMES = "lit, visibility, cascades";
 
 // The settings one frame, one trace or one lesson step is made with: the filter, the bias and
 // the shadow map. Declared once here, the bias's in BiasSettings (kernel/bias.h), which the
@@ -97,6 +100,17 @@ struct ShadowSettings : BiasSettings {
     // The EVSM exponents pcfParams hands the kernel: evsmExponents, each clamped to what
     // momentBits holds (evsmExponentLimit).
     vec2 evsmExponentsUsed() const;
+
+    // Cascades of a directional light's map (kernel/cascades.h, scene/cascade_fit.h): how many
+    // (1: one map fitted to the whole scene, no cascades), where they split the view depths
+    // [camera near, shadowDistance] (0: the camera's far plane), and how each light box is fitted
+    // to its slice of the camera frustum.
+    int cascades = 1;
+    int cascadeSplit = CASCADE_SPLIT_PRACTICAL;
+    float cascadeLambda = 0.5f;
+    float shadowDistance = 0.0f;
+    int cascadeFit = CASCADE_FIT_BOX;
+    bool cascadeSnap = false;
 
     // The kernel's parameters; `rotation` is the Poisson disk's (cos, sin), when rotate says so
     // the caller's per-pixel one.

@@ -24,7 +24,7 @@ constexpr TexelKindInfo MOMENTS4_F32_INFO{"moments4-32f", 4, 32, false, false};
 
 bool sameLayer(const PcfMapLayer& a, const PcfMapLayer& b) {
     return a.shadowClipFromWorld == b.shadowClipFromWorld && a.depthRange == b.depthRange &&
-           a.texelWs == b.texelWs;
+           a.texelWs == b.texelWs && a.viewDepth == b.viewDepth;
 }
 
 }  // namespace

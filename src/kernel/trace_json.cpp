@@ -198,6 +198,27 @@ Json paramsJson(const ShadowSettings& s, ParamSet which) {
     return j;
 }
 
+namespace {
+
+// A cascaded map's layers as its cascades (scene/cascade_fit.h): the view depths [n, f] they
+// split (n the camera's near plane, f where the last ends: the shadow distance), and each
+// cascade's view depths and texel size in world units. Read from the layers, never stored apart.
+Json cascadesJson(const MapSpec& map) {
+    Json cascades = Json::array();
+    for (size_t k = 0; k < map.layers.size(); ++k) {
+        const PcfMapLayer& layer = map.layers[k];
+        cascades.push_back({{"index", k},
+                            {"near", jsonNumber(layer.viewDepth.x)},
+                            {"far", jsonNumber(layer.viewDepth.y)},
+                            {"texel_world", jsonNumber(layer.texelWs)}});
+    }
+    return {{"camera_near", jsonNumber(map.layers.front().viewDepth.x)},
+            {"shadow_distance", jsonNumber(map.layers.back().viewDepth.y)},
+            {"cascades", cascades}};
+}
+
+}  // namespace
+
 Json mapSpecJson(const MapSpec& map) {
     Json layers = Json::array();
     for (const PcfMapLayer& layer : map.layers) {
@@ -208,10 +229,13 @@ Json mapSpecJson(const MapSpec& map) {
         }
         layers.push_back({{"shadow_clip_from_world", matrix},
                           {"depth_range", jsonPair(layer.depthRange)},
-                          {"texel_ws", jsonNumber(layer.texelWs)}});
+                          {"texel_ws", jsonNumber(layer.texelWs)},
+                          {"view_depth", jsonPair(layer.viewDepth)}});
     }
-    return {
+    Json j = {
         {"size", jsonPair(map.size)}, {"texels", texelKindName(map.texels)}, {"layers", layers}};
+    if (map.layers.size() > 1) j.update(cascadesJson(map));
+    return j;
 }
 
 namespace {
@@ -255,6 +279,15 @@ std::optional<PcfMapLayer> mapLayerFromJson(const Json& j, std::string& why) {
     for (int k = 0; k < 16; ++k) layer.shadowClipFromWorld[k / 4][k % 4] = (*matrix)[k];
     layer.depthRange = vec2((*range)[0], (*range)[1]);
     layer.texelWs = *texel;
+    // A cascade's view depths; files written before cascades have none (not a cascade).
+    if (j.contains("view_depth")) {
+        auto viewDepth = jsonFloats(j["view_depth"], 2);
+        if (!viewDepth) {
+            why = "a map layer's view_depth is not 2 numbers";
+            return std::nullopt;
+        }
+        layer.viewDepth = vec2((*viewDepth)[0], (*viewDepth)[1]);
+    }
     return layer;
 }
 

@@ -429,6 +429,10 @@ class LessonParser {
                         mScene ? lightSizeProblem(mScene->light, s) : std::nullopt) {
                     fail(*node, what + " compare: " + why->text());
                 }
+                if (s.cascades > 1) {
+                    fail(*node, what + " compare: cascades " + std::to_string(s.cascades) +
+                                    ": a lesson step shows one map over its scene");
+                }
             }
         } catch (const std::invalid_argument& e) {
             fail(*node, what + " " + e.what());
@@ -723,6 +727,14 @@ class LessonParser {
             const toml::node* key = step.get(why->setting);
             throw InputError(mSource, lineOf(key ? *key : static_cast<const toml::node&>(step)),
                              what + ": " + why->text());
+        }
+        // The trace, the inspector and a pinned point follow one map over the scene; cascades are
+        // `render`'s (app/render_options.h RenderOptions::cascades).
+        if (s.cascades > 1) {
+            const toml::node* key = step.get("cascades");
+            throw InputError(mSource, lineOf(key ? *key : static_cast<const toml::node&>(step)),
+                             what + ": cascades " + std::to_string(s.cascades) +
+                                 ": a lesson step shows one map over its scene");
         }
         std::optional<ParamProblem> problem = checkParams(s.ShadowSettings::pcfParams());
         if (!problem) return;

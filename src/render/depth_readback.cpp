@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "render/gl_objects.h"
+#include "render/render_settings.h"
 #include "render/shader_loader.h"
 
 namespace pcf {
@@ -19,11 +20,10 @@ GLenum floatTargetFormat(int channels) {
 
 }  // namespace
 
-ShadowMap readSampledDepth(GLuint texture, const MapSpec& map) {
-    if (auto why = checkMapSpec(map)) throw std::invalid_argument(*why);
-    int width = map.size.x;
-    int height = map.size.y;
-    int channels = map.texel().channels;
+namespace {
+
+// One 2D texture's texels as texelFetch returns them, `channels` floats each, GL row order.
+std::vector<float> readSampledTexels(GLuint texture, int width, int height, int channels) {
     GlProgram program = buildProgram({
         ShaderStage{GL_VERTEX_SHADER, {"fullscreen.vert"}, "", {}},
         ShaderStage{GL_FRAGMENT_SHADER, {"depth_fetch.frag"}, "", {}},
@@ -59,6 +59,24 @@ ShadowMap readSampledDepth(GLuint texture, const MapSpec& map) {
     glViewport(oldViewport[0], oldViewport[1], oldViewport[2], oldViewport[3]);
     if (depthTest) glEnable(GL_DEPTH_TEST);
     if (blend) glEnable(GL_BLEND);
+    return texels;
+}
+
+}  // namespace
+
+ShadowMap readSampledDepth(GLuint texture, const MapSpec& map) {
+    if (auto why = checkMapSpec(map)) throw std::invalid_argument(*why);
+    int channels = map.texel().channels;
+    if (map.layers.size() == 1) {
+        return ShadowMap(map, readSampledTexels(texture, map.size.x, map.size.y, channels));
+    }
+    // An array texture (cascades): each layer through a 2D view of it, layer after layer.
+    std::vector<float> texels;
+    for (size_t k = 0; k < map.layers.size(); ++k) {
+        GlTexture view = textureLayerView(texture, glTexelFormat(map.texels), static_cast<int>(k));
+        std::vector<float> layer = readSampledTexels(view.id(), map.size.x, map.size.y, channels);
+        texels.insert(texels.end(), layer.begin(), layer.end());
+    }
     return ShadowMap(map, std::move(texels));
 }
 

@@ -236,6 +236,40 @@ OffscreenTarget createOffscreenTarget(int width, int height,
     return t;
 }
 
+OffscreenTarget createLayeredDepthTarget(int width, int height, int layers, GLenum depthFormat) {
+    checkSize(width, height, "layered depth target");
+    OffscreenTarget t;
+    t.width = width;
+    t.height = height;
+    t.framebuffer = createFramebuffer();
+    t.depth = createTexture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(t.depth.id(), 1, depthFormat, width, height, layers);
+    glTextureParameteri(t.depth.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t.depth.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(t.depth.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.depth.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glNamedFramebufferDrawBuffer(t.framebuffer.id(), GL_NONE);
+    glNamedFramebufferReadBuffer(t.framebuffer.id(), GL_NONE);
+    attachDepthLayer(t, 0);
+    checkFramebufferComplete(t.framebuffer.id(), std::to_string(width) + " x " +
+                                                     std::to_string(height) + " x " +
+                                                     std::to_string(layers) + " layers of depth");
+    return t;
+}
+
+void attachDepthLayer(const OffscreenTarget& target, int layer) {
+    glNamedFramebufferTextureLayer(target.framebuffer.id(), GL_DEPTH_ATTACHMENT, target.depth.id(),
+                                   0, layer);
+}
+
+GlTexture textureLayerView(GLuint arrayTexture, GLenum internalFormat, int layer) {
+    GLuint id = 0;
+    glGenTextures(1, &id);  // a view needs a name never bound (not glCreateTextures)
+    glTextureView(id, GL_TEXTURE_2D, arrayTexture, internalFormat, 0, 1, static_cast<GLuint>(layer),
+                  1);
+    return GlTexture(id);
+}
+
 std::vector<uint8_t> readPixelsRgba8(GLuint framebuffer, GLenum attachment, int width, int height) {
     checkSize(width, height, "readPixelsRgba8");
     return readPixelsTopDown<uint8_t>(framebuffer, attachment, width, height, 4, GL_RGBA,

@@ -130,6 +130,14 @@ OffscreenTarget createOffscreenTarget(int width, int height,
                                       const std::vector<GLenum>& colorFormats,
                                       GLenum depthFormat = GL_NONE);
 
+// A depth-only target of `layers` layers (a cascaded map): `depth` is a 2D array texture of
+// depthFormat, layer 0 attached; attachDepthLayer attaches another for the next draw.
+OffscreenTarget createLayeredDepthTarget(int width, int height, int layers, GLenum depthFormat);
+void attachDepthLayer(const OffscreenTarget& target, int layer);
+// One layer of a 2D array texture as a texture of its own (glTextureView: the same texels, no
+// copy), for the passes that read a single 2D texture (render/depth_readback).
+GlTexture textureLayerView(GLuint arrayTexture, GLenum internalFormat, int layer);
+
 // Throws std::runtime_error("framebuffer WHAT is incomplete: GL_FRAMEBUFFER_...") unless the
 // framebuffer (0 = the default one) is complete.
 void checkFramebufferComplete(GLuint framebuffer, const std::string& what);

@@ -158,13 +158,15 @@ void writeExr(const std::string& path, int width, int height, int channels,
 }
 
 void writeDepthImage(const std::string& path, const ShadowMap& map) {
+    // A map of several layers (cascades): the layers one above the other, layer 0 first.
     int channels = map.spec().texel().channels;
+    int rows = map.height() * map.layers();
     if (channels == 1) {
-        writeExr(path, map.width(), map.height(), 1, map.depths(), {"Z"});
+        writeExr(path, map.width(), rows, 1, map.depths(), {"Z"});
     } else if (channels == 2) {
-        writeExr(path, map.width(), map.height(), 2, map.depths(), {"M1", "M2"});
+        writeExr(path, map.width(), rows, 2, map.depths(), {"M1", "M2"});
     } else {
-        writeExr(path, map.width(), map.height(), 4, map.depths(), {"M1", "M2", "M3", "M4"});
+        writeExr(path, map.width(), rows, 4, map.depths(), {"M1", "M2", "M3", "M4"});
     }
 }
 

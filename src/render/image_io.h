@@ -41,7 +41,8 @@ void writeExr(const std::string& path, int width, int height, int channels,
               std::span<const float> data, const std::vector<std::string>& channelNames);
 
 // The shadow map as a one-channel ("Z") float EXR, its row 0 as the first scanline: what
-// readDepthImage reads back unchanged.
+// readDepthImage reads back unchanged. A map of several layers (cascades) is W x (H * layers),
+// layer 0's rows first.
 void writeDepthImage(const std::string& path, const ShadowMap& map);
 
 // The largest side of an image readDepthImage and readFloatImage accept: GL's common

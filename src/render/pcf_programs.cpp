@@ -180,6 +180,8 @@ void setMapUniforms(GLuint program, const MapSpec& map) {
                             &layer.depthRange.x);
         glProgramUniform1f(program, glGetUniformLocation(program, (at + "texelWs").c_str()),
                            layer.texelWs);
+        glProgramUniform2fv(program, glGetUniformLocation(program, (at + "viewDepth").c_str()), 1,
+                            &layer.viewDepth.x);
     }
 }
 

@@ -9,6 +9,7 @@
 #include "kernel/methods.h"
 #include "render/depth_readback.h"
 #include "render/shader_loader.h"
+#include "scene/cascade_fit.h"
 #include "scene/mesh.h"
 #include "scene/pcss.h"
 
@@ -84,13 +85,22 @@ void SceneRenderer::setShadowClipFromWorld(const glm::mat4& shadowClipFromWorld)
 }
 
 void SceneRenderer::ensureShadowTarget(const MapSpec& map, TexelKind depthFormat) {
-    if (map.layers.size() != 1) {
-        throw std::invalid_argument("the depth pass draws one layer, not " +
+    if (auto why = checkMapSpec(map)) throw std::invalid_argument(*why);
+    if (map.layers.size() != 1 && !map.texel().depth) {
+        throw std::invalid_argument("a moments map has one layer, not " +
                                     std::to_string(map.layers.size()));
     }
+    // One layer: a 2D texture; cascades: a 2D array, one layer each (shared/pcf_prelude.h reads
+    // it as sampler2DArray when the program's PCF_MAP_LAYERS says so). mMap is the map the
+    // target holds now.
     if (!mShadow.framebuffer || mShadow.width != map.size.x || mShadow.height != map.size.y ||
-        mShadowDepthFormat != depthFormat) {
-        mShadow = createOffscreenTarget(map.size.x, map.size.y, {}, glTexelFormat(depthFormat));
+        mShadowDepthFormat != depthFormat || mMap.layers.size() != map.layers.size()) {
+        mShadow =
+            map.layers.size() == 1
+                ? createOffscreenTarget(map.size.x, map.size.y, {}, glTexelFormat(depthFormat))
+                : createLayeredDepthTarget(map.size.x, map.size.y,
+                                           static_cast<int>(map.layers.size()),
+                                           glTexelFormat(depthFormat));
         mShadowDepthFormat = depthFormat;
     }
     if (map.texel().depth) return;
@@ -153,7 +163,8 @@ void SceneRenderer::drawObjects(GLuint program, bool castersOnly, bool setMateri
 }
 
 void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
-    MapSpec map = shadowMapSpec(mScene, settings, mShadowClipFromWorld);
+    MapSpec map =
+        shadowMapSpec(mScene, settings, mShadowClipFromWorld, frameAspect(settings.frameSize));
     ensureShadowTarget(map, settings.depthFormat);
     mMap = std::move(map);
     ensureTargets(settings);
@@ -163,7 +174,6 @@ void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glClearDepth(1.0);
-    glClear(GL_DEPTH_BUFFER_BIT);
     if (settings.cull == CullMode::None) {
         glDisable(GL_CULL_FACE);
     } else {
@@ -179,10 +189,14 @@ void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
     }
     GLuint program = mDepthProgram.id();
     glUseProgram(program);
-    const PcfMapLayer& layer = mMap.layers.front();
-    glProgramUniformMatrix4fv(program, uniform(program, "uShadowClipFromWorld"), 1, GL_FALSE,
-                              &layer.shadowClipFromWorld[0][0]);
-    drawObjects(program, true, false);
+    // Each layer (cascade) seen through its own fit, into its own layer of the texture.
+    for (size_t k = 0; k < mMap.layers.size(); ++k) {
+        if (mMap.layers.size() > 1) attachDepthLayer(mShadow, static_cast<int>(k));
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glProgramUniformMatrix4fv(program, uniform(program, "uShadowClipFromWorld"), 1, GL_FALSE,
+                                  &mMap.layers[k].shadowClipFromWorld[0][0]);
+        drawObjects(program, true, false);
+    }
     if (offset) glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -251,6 +265,10 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform2iv(program, uniform(program, "uPickPixel"), 1, &pickPixel.x);
     glProgramUniform4fv(program, uniform(program, "uPickLookup"), 1, &pickLookup.x);
     glProgramUniform2fv(program, uniform(program, "uPickDzDuv"), 1, &pickDzDuv.x);
+    // The camera as the cascades split it (pcfViewDepth); unused with one layer.
+    glm::vec3 viewDir = cameraViewDirWs(mScene.camera);
+    glProgramUniform3fv(program, uniform(program, "uEyeWs"), 1, &mScene.camera.eyeWs.x);
+    glProgramUniform3fv(program, uniform(program, "uViewDirWs"), 1, &viewDir.x);
     bindShadowMap(program, mapTexture(), mShadow.depth.id(), mSamplers);
     drawObjects(program, false, true);
     glBindSampler(0, 0);

@@ -1,5 +1,8 @@
 #include "scene/shadow_fit.h"
 
+#include <stdexcept>
+
+#include "scene/cascade_fit.h"
 #include "scene/pcss.h"
 
 namespace pcf {
@@ -9,11 +12,17 @@ PcfMapLayer shadowMapLayer(const Scene& scene, const glm::mat4& shadowClipFromWo
                        shadowTexelWs(scene, mapSize)};
 }
 
-MapSpec shadowMapSpec(const Scene& scene, const ShadowSettings& s, const glm::mat4& fit) {
+MapSpec shadowMapSpec(const Scene& scene, const ShadowSettings& s, const glm::mat4& fit,
+                      float aspect) {
     MapSpec spec;
     spec.size = {s.mapSize, s.mapSize};
     spec.texels = mapTexelKind(s.method, s.depthFormat, s.momentBits);
-    spec.layers = {shadowMapLayer(scene, fit, s.mapSize)};
+    if (s.cascades <= 1) {
+        spec.layers = {shadowMapLayer(scene, fit, s.mapSize)};
+        return spec;
+    }
+    if (auto why = cascadeProblem(scene, s)) throw std::invalid_argument(why->text());
+    spec.layers = cascadeLayers(scene, s, aspect);
     return spec;
 }
 

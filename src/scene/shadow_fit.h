@@ -18,7 +18,16 @@ PcfMapLayer shadowMapLayer(const Scene& scene, const glm::mat4& shadowClipFromWo
 
 // The map the depth pass makes for settings `s`: mapSize x mapSize texels of the kind the
 // method reads (mapTexelKind: a depth in --depth-format), one layer fitted by `fit` (the scene's
-// own fit, shadowClipFromWorld(scene), or a lesson's shifted one).
-MapSpec shadowMapSpec(const Scene& scene, const ShadowSettings& s, const glm::mat4& fit);
+// own fit, shadowClipFromWorld(scene), or a lesson's shifted one), or with more than one cascade
+// one layer per cascade, each fitted to its slice of the camera's frustum (scene/cascade_fit.h;
+// `aspect` is the camera frame's width / height), `fit` unused. Throws std::invalid_argument
+// when the cascades do not fit the scene (cascadeProblem).
+MapSpec shadowMapSpec(const Scene& scene, const ShadowSettings& s, const glm::mat4& fit,
+                      float aspect);
+
+// A frame's width / height, 1 for an empty frame: the camera's aspect.
+inline float frameAspect(glm::ivec2 size) {
+    return size.y > 0 ? static_cast<float>(size.x) / static_cast<float>(size.y) : 1.0f;
+}
 
 }  // namespace pcf

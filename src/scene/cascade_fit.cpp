@@ -1,0 +1,197 @@
+#include "scene/cascade_fit.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <limits>
+
+#include "kernel/cascades.h"
+#include "kernel/shading.h"
+
+namespace pcf {
+
+float cascadeFarDepth(const Camera& camera, const ShadowSettings& s) {
+    return s.shadowDistance > 0.0f ? s.shadowDistance : camera.farZ;
+}
+
+std::vector<CascadeRange> cascadeRanges(const Camera& camera, const ShadowSettings& s) {
+    double n = camera.nearZ;
+    std::vector<double> splits =
+        cascadeSplits(n, cascadeFarDepth(camera, s), s.cascades, s.cascadeSplit, s.cascadeLambda);
+    std::vector<CascadeRange> ranges;
+    for (double far : splits) {
+        float from = ranges.empty() ? camera.nearZ : ranges.back().farZ;
+        ranges.push_back({from, static_cast<float>(far)});
+    }
+    return ranges;
+}
+
+namespace {
+
+// A float as the shortest decimal that reads back as it ("0.05", not "0.0500000007").
+std::string cascadeNumberText(float v) {
+    char text[32];
+    auto [end, ec] = std::to_chars(text, text + sizeof text, v);
+    return ec == std::errc() ? std::string(text, end) : exactNumberText(v);
+}
+
+}  // namespace
+
+std::optional<ParamProblem> cascadeProblem(const Scene& scene, const ShadowSettings& s) {
+    if (s.cascades <= 1) return std::nullopt;
+    std::string count = " " + std::to_string(s.cascades);
+    if (scene.light.type != LightType::Directional) {
+        return ParamProblem{"cascades", "",
+                            count + " are for a directional light; the scene's light is a spot"};
+    }
+    if (methodInfo(s.method).searchesBlockers) {
+        return ParamProblem{"cascades", "",
+                            count + " do not work with " + std::string(methodInfo(s.method).name) +
+                                " (one penumbra scale per map)"};
+    }
+    // A moments map is made from one depth map by its own pass (render/scene_renderer).
+    if (!texelKindInfo(mapTexelKind(s.method, s.depthFormat, s.momentBits)).depth) {
+        return ParamProblem{"cascades", "",
+                            count + " do not work with " + std::string(methodInfo(s.method).name) +
+                                " (a moments map has one layer)"};
+    }
+    if (!(cascadeFarDepth(scene.camera, s) > scene.camera.nearZ)) {
+        return ParamProblem{"shadow_distance", "",
+                            " " + cascadeNumberText(cascadeFarDepth(scene.camera, s)) +
+                                " must lie beyond the camera's near plane " +
+                                cascadeNumberText(scene.camera.nearZ)};
+    }
+    return std::nullopt;
+}
+
+std::array<glm::vec3, 8> frustumSliceWs(const Camera& camera, float aspect, CascadeRange r) {
+    glm::mat4 worldFromView = glm::inverse(viewFromWorld(camera));
+    float tanY = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    float tanX = tanY * aspect;
+    std::array<glm::vec3, 8> corners;
+    for (int k = 0; k < 8; ++k) {
+        float d = (k & 4) ? r.farZ : r.nearZ;
+        glm::vec4 posVs((k & 1 ? 1.0f : -1.0f) * d * tanX, (k & 2 ? 1.0f : -1.0f) * d * tanY, -d,
+                        1.0f);
+        corners[k] = glm::vec3(worldFromView * posVs);
+    }
+    return corners;
+}
+
+// The smallest sphere around a frustum slice (symmetric about the view axis, so its centre is on
+// the axis): with a and b the near and far depths and A, B the squared half-diagonals of the near
+// and far rectangles, the centre depth z that is as far from a near corner as from a far one,
+//   (z - a)^2 + A = (b - z)^2 + B  =>  z = (b^2 + B - a^2 - A) / (2 (b - a)),
+// held to [a, b] (a deep narrow slice's far rectangle alone decides: z = b).
+SliceSphere sliceSphere(const Camera& camera, float aspect, CascadeRange r) {
+    double tanY = std::tan(glm::radians(static_cast<double>(camera.fovYDeg)) * 0.5);
+    double tanX = tanY * aspect;
+    double diag2 = tanX * tanX + tanY * tanY;
+    double a = r.nearZ, b = r.farZ;
+    double nearCorner2 = a * a * diag2, farCorner2 = b * b * diag2;
+    double z = (b * b + farCorner2 - a * a - nearCorner2) / (2.0 * (b - a));
+    z = std::clamp(z, a, b);
+    double radius =
+        std::sqrt(std::max((z - a) * (z - a) + nearCorner2, (b - z) * (b - z) + farCorner2));
+    // Rounded up to 1/16: the size is the same float from frame to frame.
+    return {z, std::ceil(radius * 16.0) / 16.0};
+}
+
+namespace {
+
+struct LightBox {
+    glm::vec2 lo;
+    glm::vec2 hi;
+};
+
+LightBox boxAround(const glm::mat4& lightView, const std::array<glm::vec3, 8>& corners) {
+    LightBox box{glm::vec2(std::numeric_limits<float>::infinity()),
+                 glm::vec2(-std::numeric_limits<float>::infinity())};
+    for (const glm::vec3& c : corners) {
+        glm::vec2 p(lightView * glm::vec4(c, 1.0f));
+        box.lo = glm::min(box.lo, p);
+        box.hi = glm::max(box.hi, p);
+    }
+    return box;
+}
+
+LightBox sphereBox(const Scene& scene, const glm::mat4& lightView, float aspect, CascadeRange r) {
+    SliceSphere sphere = sliceSphere(scene.camera, aspect, r);
+    glm::mat4 worldFromView = glm::inverse(viewFromWorld(scene.camera));
+    glm::vec4 centreWs =
+        worldFromView * glm::vec4(0.0f, 0.0f, -static_cast<float>(sphere.depth), 1.0f);
+    glm::vec2 c(lightView * centreWs);
+    auto radius = static_cast<float>(sphere.radius);
+    return {c - radius, c + radius};
+}
+
+// One texel's world size in an orthographic map of mapSize texels: 2 / (s * mapSize), s the
+// scale of clip x (or y) per world unit, the length of the matrix's first (second) row, of the
+// wider axis (as shadowTexelWs, with the light's rotation folded in).
+float orthoTexelWs(const glm::mat4& clipFromWorld, int mapSize) {
+    float sx =
+        glm::length(glm::vec3(clipFromWorld[0][0], clipFromWorld[1][0], clipFromWorld[2][0]));
+    float sy =
+        glm::length(glm::vec3(clipFromWorld[0][1], clipFromWorld[1][1], clipFromWorld[2][1]));
+    return 2.0f / (std::min(sx, sy) * static_cast<float>(mapSize));
+}
+
+}  // namespace
+
+glm::mat4 cascadeClipFromWorld(const Scene& scene, float aspect, CascadeRange r, int fit, bool snap,
+                               int mapSize) {
+    Aabb bounds = sceneBounds(scene);
+    glm::mat4 lightView = lightFromWorld(scene.light, bounds);
+    LightBox box = fit == CASCADE_FIT_SPHERE
+                       ? sphereBox(scene, lightView, aspect, r)
+                       : boxAround(lightView, frustumSliceWs(scene.camera, aspect, r));
+    // Snapping moves the box by up to half a texel: one texel more on every side keeps the whole
+    // slice inside it (half-extent e -> e * size / (size - 2), so the pad is one new texel).
+    if (snap && mapSize > 2) {
+        glm::vec2 centre = 0.5f * (box.lo + box.hi);
+        glm::vec2 half = 0.5f * (box.hi - box.lo) * static_cast<float>(mapSize) /
+                         static_cast<float>(mapSize - 2);
+        box = {centre - half, centre + half};
+    }
+    // Deep enough for every caster of the scene, whatever the slice holds: the scene's bounds in
+    // the light's view depth (view space looks down -z), with clipFromLight's margin.
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (int k = 0; k < 8; ++k) {
+        float z = (lightView * glm::vec4(bounds.cornerWs(k), 1.0f)).z;
+        lo = std::min(lo, z);
+        hi = std::max(hi, z);
+    }
+    float margin = std::max(SHADOW_FIT_MARGIN * glm::length(bounds.extentWs()), 1e-4f);
+    glm::mat4 clip =
+        glm::orthoRH_NO(box.lo.x, box.hi.x, box.lo.y, box.hi.y, -hi - margin, -lo + margin) *
+        lightView;
+    return snap ? shiftShadowOrigin(clip, glm::vec2(0.0f), mapSize, true) : clip;
+}
+
+glm::vec3 cameraViewDirWs(const Camera& camera) {
+    return glm::normalize(camera.targetWs - camera.eyeWs);
+}
+
+int cascadeOfPoint(const MapSpec& map, const Camera& camera, glm::vec3 posWs) {
+    int count = static_cast<int>(map.layers.size());
+    if (count <= 1) return 0;
+    vec4 cascadeFar(1e30f);
+    for (int k = 0; k < count; ++k) cascadeFar[k] = map.layers[k].viewDepth.y;
+    return pcfCascadeLayer(pcfViewDepth(posWs, camera.eyeWs, cameraViewDirWs(camera)), cascadeFar,
+                           count);
+}
+
+std::vector<PcfMapLayer> cascadeLayers(const Scene& scene, const ShadowSettings& s, float aspect) {
+    std::vector<PcfMapLayer> layers;
+    for (const CascadeRange& r : cascadeRanges(scene.camera, s)) {
+        glm::mat4 clip =
+            cascadeClipFromWorld(scene, aspect, r, s.cascadeFit, s.cascadeSnap, s.mapSize);
+        PcfMapLayer layer{clip, vec2(0.0f), orthoTexelWs(clip, s.mapSize)};
+        layer.viewDepth = vec2(r.nearZ, r.farZ);
+        layers.push_back(layer);
+    }
+    return layers;
+}
+
+}  // namespace pcf

@@ -1,0 +1,166 @@
+// Cascaded maps on the GPU equal the CPU kernel (docs/architecture.md, "One kernel for the CPU
+// and the GPU"): the depth pass draws each cascade into its layer of an array texture, the camera
+// pass picks a layer per receiver by its view depth, and the CPU, given the GPU's own targets
+// (the receiver's world position, u, v, ref and receiver plane), picks the same layer and gives
+// the same visibility, for every method, both fits, and the bias modes whose size is a texel's.
+// Runs on llvmpipe through EGL.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "kernel/cascades.h"
+#include "kernel/methods.h"
+#include "kernel/pcf.h"
+#include "render/gl_context.h"
+#include "render/scene_renderer.h"
+#include "scene/cascade_fit.h"
+
+namespace pcf {
+namespace {
+
+constexpr float PARITY_TOLERANCE = 1e-5f;
+
+class CascadeParity : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() { sContext = createHeadlessContext(); }
+    static void TearDownTestSuite() { sContext.reset(); }
+    static std::unique_ptr<GlContext> sContext;
+};
+std::unique_ptr<GlContext> CascadeParity::sContext;
+
+// A ground 100 units long with a post every 8 units along it, a low sun from the side, and the
+// camera near the ground looking along it: every cascade has posts' shadows to agree about.
+Scene postsAlongGround() {
+    Scene scene;
+    scene.name = "posts along the ground";
+    scene.light.directionWs = glm::normalize(glm::vec3(0.8f, -1.0f, 0.2f));
+    scene.objects.push_back(
+        {"ground", *makePlane(glm::vec3(0.0f, 0.0f, -48.0f), glm::vec3(0.0f, 1.0f, 0.0f),
+                              glm::vec2(24.0f, 104.0f))});
+    for (int k = 0; k < 12; ++k) {
+        float z = -2.0f - 8.0f * static_cast<float>(k);
+        scene.objects.push_back({"post" + std::to_string(k),
+                                 Box{glm::vec3(-1.5f, 1.0f, z), glm::vec3(0.25f, 1.0f, 0.25f)}});
+    }
+    scene.camera.eyeWs = glm::vec3(0.5f, 1.6f, 4.0f);
+    scene.camera.targetWs = glm::vec3(-0.5f, 0.2f, -20.0f);
+    fitCameraPlanes(scene.camera, sceneBounds(scene));
+    return scene;
+}
+
+struct CascadeAgreement {
+    float worst = 0.0f;
+    int receivers = 0;
+    int shadowed = 0;
+    int beyond = 0;  // receivers past the last cascade (lit, on both sides)
+    std::vector<int> perLayer = std::vector<int>(MAX_CASCADES, 0);
+};
+
+// Renders `s` and runs the CPU kernel on the GPU's own targets, each receiver on the layer the
+// CPU picks for its world position.
+CascadeAgreement renderAndCompare(SceneRenderer& renderer, const Scene& scene, RenderSettings s) {
+    s.writePositions = true;
+    renderer.render(s);
+    ShadowMap map = renderer.readShadowMap();
+    std::vector<float> ls = renderer.readLightSpace();
+    std::vector<float> rc = renderer.readReceiver();
+    std::vector<float> pos = renderer.readPositions();
+    std::vector<float> vis = renderer.readVisibility();
+    CascadeAgreement a;
+    for (size_t k = 0; k < vis.size(); ++k) {
+        if (ls[4 * k + 3] != 1.0f) continue;
+        ++a.receivers;
+        int layer = cascadeOfPoint(map.spec(), scene.camera,
+                                   glm::vec3(pos[4 * k], pos[4 * k + 1], pos[4 * k + 2]));
+        float cpu = 1.0f;
+        if (layer < map.layers()) {
+            ++a.perLayer[static_cast<size_t>(layer)];
+            PcfBias b = s.kernelBias();
+            b.dzduv = glm::vec2(rc[4 * k], rc[4 * k + 1]);
+            cpu = filterLayerVisibility(map, layer, glm::vec2(ls[4 * k], ls[4 * k + 1]),
+                                        ls[4 * k + 2], renderer.pcfParams(s), b);
+        } else {
+            ++a.beyond;
+        }
+        a.shadowed += vis[k] < 0.5f ? 1 : 0;
+        a.worst = std::max(a.worst, std::fabs(cpu - vis[k]));
+    }
+    return a;
+}
+
+RenderSettings cascaded(int method, int kernel, int fit, bool snap) {
+    RenderSettings s;
+    s.method = method;
+    s.kernel = kernel;
+    s.cascades = 4;
+    s.cascadeSplit = CASCADE_SPLIT_PRACTICAL;
+    s.cascadeLambda = 0.7f;
+    s.shadowDistance = 60.0f;
+    s.cascadeFit = fit;
+    s.cascadeSnap = snap;
+    s.mapSize = 256;
+    s.frameSize = {240, 136};
+    return s;
+}
+
+void expectAgreement(const CascadeAgreement& a, const RenderSettings& s, const std::string& what) {
+    EXPECT_LE(a.worst, PARITY_TOLERANCE) << what;
+    EXPECT_GT(a.receivers, s.frameSize.x * s.frameSize.y / 4) << what;
+    EXPECT_GT(a.shadowed, 100) << what;  // there are shadows to agree about
+    for (int layer = 0; layer < s.cascades; ++layer) {
+        EXPECT_GT(a.perLayer[static_cast<size_t>(layer)], 200) << what << " layer " << layer;
+    }
+    EXPECT_GT(a.beyond, 50) << what;  // the ground runs past the shadow distance
+}
+
+TEST_F(CascadeParity, EveryMethodOnEveryCascadeMatchesTheCpuKernel) {
+    Scene scene = postsAlongGround();
+    SceneRenderer renderer(scene);
+    float worst = 0.0f;
+    for (const MethodInfo& m : allMethods()) {
+        // Refused with cascades (cascadeProblem): pcss, and the methods that read a moments map.
+        if (m.searchesBlockers || !texelKindInfo(mapTexelKind(m.id, TexelKind::D32F, 32)).depth) {
+            continue;
+        }
+        int kernel = m.kernelSizes.empty() ? 3 : m.kernelSizes.front();
+        for (int fit : {CASCADE_FIT_BOX, CASCADE_FIT_SPHERE}) {
+            RenderSettings s = cascaded(m.id, kernel, fit, fit == CASCADE_FIT_SPHERE);
+            CascadeAgreement a = renderAndCompare(renderer, scene, s);
+            expectAgreement(a, s, std::string(m.name) + " fit " + std::string(cascadeFitName(fit)));
+            worst = std::max(worst, a.worst);
+        }
+    }
+    std::printf("cascade parity, every method, box and sphere: max |GPU - CPU| = %g\n",
+                static_cast<double>(worst));
+}
+
+// Normal offset moves each receiver by texels of its own cascade (the layer's texelWs), and the
+// receiver plane is the chosen layer's: both agree with the CPU per cascade.
+TEST_F(CascadeParity, TexelSizedBiasesScalePerCascade) {
+    Scene scene = postsAlongGround();
+    SceneRenderer renderer(scene);
+    for (BiasMode mode : {BiasMode::Normal, BiasMode::ReceiverPlane, BiasMode::Slope}) {
+        for (int method : {PCF_GATHER, PCF_NAIVE, PCF_HW2X2}) {
+            RenderSettings s = cascaded(method, 3, CASCADE_FIT_SPHERE, true);
+            s.bias = mode;
+            s.normalOffset = 1.5f;
+            CascadeAgreement a = renderAndCompare(renderer, scene, s);
+            expectAgreement(
+                a, s, std::string(biasModeName(mode)) + " " + std::string(methodInfo(method).name));
+        }
+    }
+    // The layers' texel sizes grow from cascade to cascade, so the same K texels of normal
+    // offset move a far receiver further than a near one.
+    RenderSettings s = cascaded(PCF_GATHER, 3, CASCADE_FIT_SPHERE, true);
+    renderer.render(s);
+    const MapSpec& map = renderer.mapSpec();
+    ASSERT_EQ(map.layers.size(), 4u);
+    for (size_t k = 1; k < 4; ++k) EXPECT_GT(map.layers[k].texelWs, map.layers[k - 1].texelWs);
+}
+
+}  // namespace
+}  // namespace pcf

@@ -1,0 +1,175 @@
+// `pcfscope render --cascades N`: a directional light's map in N cascades, and render.json's
+// account of them under "map" (camera_near, shadow_distance, and per cascade its view depths and
+// texel size), which follows Zhang et al.'s practical split for the n, f and lambda it reports.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "image_read.h"
+#include "kernel/trace_json.h"
+#include "run_command.h"
+
+namespace {
+
+using pcf::Json;
+
+class CascadesCommand : public ::testing::Test {
+  protected:
+    void SetUp() override { mDir = testutil::makeTempDir("cascades"); }
+    void TearDown() override {
+        if (!HasFailure()) std::filesystem::remove_all(mDir);
+    }
+    std::string path(const std::string& name) const { return (mDir / name).string(); }
+    // A ground 120 units long, posts along it, the camera near the ground with near = 0.1.
+    std::string writeScene() const {
+        std::string scene = path("ground.toml");
+        std::ofstream f(scene);
+        f << "[camera]\neye = [0.0, 1.5, 5.0]\ntarget = [0.0, 0.5, -20.0]\nfov = 45.0\n"
+             "near = 0.1\nfar = 150.0\n\n[light]\ntype = \"directional\"\n"
+             "direction = [0.7, -1.0, 0.3]\n\n[[object]]\ntype = \"plane\"\nname = \"ground\"\n"
+             "centre = [0.0, 0.0, -55.0]\nnormal = [0.0, 1.0, 0.0]\nsize = [30.0, 120.0]\n";
+        for (int k = 0; k < 6; ++k) {
+            f << "\n[[object]]\ntype = \"box\"\nname = \"post" << k << "\"\ncentre = [-2.0, 1.0, "
+              << -4.0 - 15.0 * k << "]\nhalf = [0.3, 1.0, 0.3]\n";
+        }
+        return scene;
+    }
+    Json renderJson(const std::string& options) {
+        std::string raw = path("raw");
+        std::filesystem::remove_all(raw);
+        testutil::CommandResult r =
+            testutil::runPcfscope("render --scene-file " + writeScene() +
+                                  " --size 320x180 --map-size 128 " + options + " --raw " + raw);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return Json::parse(testutil::readAll(raw + "/render.json"));
+    }
+    std::filesystem::path mDir;
+};
+
+// C_i = lambda n (f/n)^(i/N) + (1 - lambda)(n + (f - n) i/N): Zhang, Sun, Xu and Lau,
+// "Parallel-Split Shadow Maps for Large-scale Virtual Environments" (2006), written out here as
+// the paper gives it.
+double practicalSplit(double n, double f, int i, int count, double lambda) {
+    double t = static_cast<double>(i) / count;
+    return lambda * n * std::pow(f / n, t) + (1.0 - lambda) * (n + (f - n) * t);
+}
+
+TEST_F(CascadesCommand, RenderJsonListsTheIssuesSplits) {
+    Json j = renderJson("--cascades 4 --cascade-lambda 0.5 --shadow-distance 100");
+    const Json& map = j["map"];
+    EXPECT_EQ(j["cascades"], 4);
+    ASSERT_EQ(map["layers"].size(), 4u);
+    EXPECT_NEAR(map["camera_near"].get<double>(), 0.1, 1e-6);
+    EXPECT_NEAR(map["shadow_distance"].get<double>(), 100.0, 1e-6);
+    const Json& c = map["cascades"];
+    ASSERT_EQ(c.size(), 4u);
+    double want[] = {12.8187, 26.6061, 46.4039, 100.0};
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_EQ(c[i]["index"], i);
+        EXPECT_NEAR(c[i]["far"].get<double>(), want[i], 1e-3) << i;
+        EXPECT_EQ(c[i]["near"], i == 0 ? map["camera_near"] : c[i - 1]["far"]) << i;
+        // Each farther cascade covers more of the world with the same texels.
+        if (i > 0) {
+            EXPECT_GT(c[i]["texel_world"].get<double>(), c[i - 1]["texel_world"].get<double>());
+        }
+        // Measured on the frame: the receivers that read this cascade, its texels per pixel (the
+        // farthest cascade holds a few rows under the horizon, where most neighbours are more
+        // than 32 texels apart and are not measured).
+        EXPECT_GT(c[i]["pixels_measured"].get<int>(), i < 3 ? 200 : 0) << i;
+        double median = c[i]["texels_per_pixel_median"].get<double>();
+        EXPECT_GT(median, 0.0) << i;
+        EXPECT_GE(c[i]["texels_per_pixel_max"].get<double>(), median) << i;
+        std::printf(
+            "cascade %d: far %.4f, texel_world %.5f, texels per pixel median %.4f max %.4f\n", i,
+            c[i]["far"].get<double>(), c[i]["texel_world"].get<double>(), median,
+            c[i]["texels_per_pixel_max"].get<double>());
+    }
+}
+
+// For any n, f and lambda it reports, render.json's splits are the formula's.
+TEST_F(CascadesCommand, RenderJsonsSplitsFollowTheFormulaForWhatItReports) {
+    for (const char* options :
+         {"--cascades 3 --cascade-lambda 0.8 --shadow-distance 60",
+          "--cascades 4 --cascade-split log --shadow-distance 90",
+          "--cascades 2 --cascade-split uniform --cascade-fit sphere --cascade-snap",
+          "--cascades 4 --cascade-lambda 0.25"}) {
+        Json j = renderJson(options);
+        const Json& map = j["map"];
+        double n = map["camera_near"].get<double>();
+        double f = map["shadow_distance"].get<double>();
+        std::string split = j["cascade_split"].get<std::string>();
+        double lambda = split == "log"       ? 1.0
+                        : split == "uniform" ? 0.0
+                                             : j["cascade_lambda"].get<double>();
+        int count = j["cascades"].get<int>();
+        ASSERT_EQ(map["cascades"].size(), static_cast<size_t>(count)) << options;
+        for (int i = 0; i < count; ++i) {
+            double far = map["cascades"][i]["far"].get<double>();
+            EXPECT_NEAR(far, practicalSplit(n, f, i + 1, count, lambda), 1e-5 * f)
+                << options << " cascade " << i;
+        }
+    }
+    // No --shadow-distance: the camera's far plane.
+    EXPECT_NEAR(renderJson("--cascades 2")["map"]["shadow_distance"].get<double>(), 150.0, 1e-4);
+}
+
+TEST_F(CascadesCommand, RefusesASpotLightPcssAndADistanceBeforeTheNearPlane) {
+    struct Case {
+        std::string args, message;
+    };
+    for (const Case& c :
+         {Case{"--scene post-under-spot --cascades 2",
+               "pcfscope: --cascades 2 are for a directional light; the scene's light is a spot"},
+          Case{"--scene box-on-plane --cascades 3 --method pcss",
+               "pcfscope: --cascades 3 do not work with pcss (one penumbra scale per map)"},
+          Case{"--scene-file " + writeScene() + " --cascades 2 --shadow-distance 0.05",
+               "pcfscope: --shadow-distance 0.05 must lie beyond the camera's near plane 0.1"},
+          Case{"--scene box-on-plane --cascades 2 --method vsm",
+               "pcfscope: --cascades 2 do not work with vsm (a moments map has one layer)"},
+          Case{"--scene box-on-plane --cascades 5", "pcfscope: --cascades must be 1..4, got 5"}}) {
+        testutil::CommandResult r =
+            testutil::runPcfscope("render " + c.args + " --size 64x36 -o " + path("x.png"));
+        EXPECT_EQ(r.exitCode, 2) << c.args;
+        EXPECT_EQ(r.err, c.message + "\n") << c.args;
+        EXPECT_FALSE(std::filesystem::exists(path("x.png"))) << c.args;
+    }
+}
+
+// --shading cascades tints each pixel by the cascade it reads: with four cascades over the
+// ground running away from the camera, each of the four tints covers part of the frame, the
+// nearest (red) at the bottom, and the ground past the shadow distance stays untinted (grey).
+TEST_F(CascadesCommand, CascadeShadingShowsEachCascadesColour) {
+    std::string png = path("tinted.png");
+    testutil::CommandResult r = testutil::runPcfscope(
+        "render --scene-file " + writeScene() +
+        " --size 160x90 --map-size 128 --cascades 4 --shadow-distance 60 --shading cascades -o " +
+        png);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<unsigned char> rgba = readImageBytes(png, 4);
+    ASSERT_EQ(rgba.size(), 160u * 90u * 4u);
+    int red = 0, green = 0, blue = 0, yellow = 0, grey = 0, redBottom = 0;
+    for (size_t k = 0; k < rgba.size() / 4; ++k) {
+        int cr = rgba[4 * k], cg = rgba[4 * k + 1], cb = rgba[4 * k + 2];
+        bool isRed = cr > cg + 40 && cr > cb + 40 && cg < cb + 20;
+        red += isRed ? 1 : 0;
+        redBottom += isRed && k / 160 >= 60 ? 1 : 0;  // rows top-down: the bottom third
+        green += cg > cr + 40 && cg > cb + 40 ? 1 : 0;
+        blue += cb > cr + 30 && cb > cg + 20 ? 1 : 0;
+        yellow += cr > cb + 60 && cg > cb + 60 ? 1 : 0;
+        grey += std::abs(cr - cg) < 8 && std::abs(cg - cb) < 8 && cr > 60 ? 1 : 0;
+    }
+    EXPECT_GT(red, 200);
+    EXPECT_GT(redBottom, red / 2);
+    EXPECT_GT(green, 100);
+    EXPECT_GT(blue, 50);
+    EXPECT_GT(yellow, 20);
+    EXPECT_GT(grey, 20);  // the ground past 60 units
+}
+
+}  // namespace
