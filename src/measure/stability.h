@@ -1,6 +1,7 @@
 // stability.h: where shadow-map filtering fails, measured. Six sweeps, each a curve of numbers
 // against the exact ground truth (ground_truth.h), for any list of methods and bias modes, and
-// four of pcss's own (stability_pcss.h: pcss-thin, pcss-overlap, pcss-noise, pcss-bias):
+// four of pcss's own (stability_pcss.h: pcss-thin, pcss-overlap, pcss-noise, pcss-bias), and
+// light bleeding on two stacked occluders (stability_bleed.h: bleed):
 //
 //   acne       the light's elevation swept from 90 down to 2 degrees over the scene; the
 //              false-shadow rate = share of the CLEAN LIT pixels where visibility < 0.99, and the
@@ -77,10 +78,12 @@ enum class Sweep {
     PcssOverlap,
     PcssNoise,
     PcssBias,
+    // light bleeding on stacked cards (stability_bleed.h)
+    Bleed,
 };
 
 // "acne", "leak", "tradeoff", "shimmer", "precision", "aliasing", "pcss-thin", "pcss-overlap",
-// "pcss-noise", "pcss-bias"
+// "pcss-noise", "pcss-bias", "bleed"
 std::string_view sweepName(Sweep sweep);
 std::optional<Sweep> sweepFromName(std::string_view name);
 std::vector<Sweep> allSweeps();
@@ -138,6 +141,9 @@ struct StabilityOptions {
     std::vector<float> pcssLightSizes{1, 2, 4, 8};
     std::vector<float> pcssRadii{1, 2, 4, 8, 16};
     float pcssBiasElevation = 87.0f;
+    // The bleed sweep's gaps between the stacked cards, world units (presets.h: stacked-cards'
+    // gap; its default, 1, is the chart's).
+    std::vector<float> bleedGaps{0.25f, 0.5f, 1.0f, 2.0f};
     // The area truth's per-pixel bound for pcss's sweeps (ground_truth.h: targetBound): looser
     // than the bench's 1/512, as the sweeps count pixels by thresholds (1/2, 0.02, 0.98).
     float pcssTruthBound = 1.0f / 64.0f;
@@ -165,7 +171,8 @@ glm::mat4 shimmerShadowFit(const glm::mat4& fitted, int mapSize, int frame, bool
 Camera cameraSlidByPixels(const Camera& camera, int frameHeight, float pixels);
 
 // --quick: 160x90 frame, 128 map, 1x1 truth sample, 6 elevations, 3 leak biases, 3 camera frames,
-// 3 depth ranges, 2 or 3 points of each pcss sweep; the methods nearest and pcf-gather N=3.
+// 3 depth ranges, 2 or 3 points of each pcss sweep, 2 gaps; the methods nearest and pcf-gather
+// N=3.
 StabilityOptions quickStabilityOptions();
 
 // Why the options cannot run, nullopt when they can: one sentence naming the option list at fault

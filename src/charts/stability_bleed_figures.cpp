@@ -1,0 +1,101 @@
+// The bleed sweep's chart (stability_bleed_figures.h): leak against penumbra darkening.
+#include "charts/stability_bleed_figures.h"
+
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "charts/chart_axes.h"
+#include "kernel/methods.h"
+#include "measure/number_text.h"
+#include "measure/stability_bleed.h"
+#include "measure/stability_report.h"
+#include "scene/presets.h"
+
+namespace pcf {
+
+namespace {
+
+std::string methodLabel(int method, int kernel) {
+    std::string label(methodInfo(method).name);
+    if (kernel > 0) label += " " + std::to_string(kernel) + "x" + std::to_string(kernel);
+    return label;
+}
+
+// "stacked-cards, gap G; frame, map; bias, cull" over the renderer's line; `source` alone
+// without a setup.
+std::string bleedSubtitle(std::span<const StabilityRow> rows, double gap,
+                          const std::string& source) {
+    std::optional<StabilitySetup> setup = stabilitySetupOf(rows);
+    if (!setup) return source;
+    const StabilitySetup& s = *setup;
+    std::string bias;
+    for (const StabilityRow& r : rows) {
+        if (r.sweep == sweepName(Sweep::Bleed)) bias = r.bias;
+    }
+    return std::string(BLEED_PRESET) + ", gap " + chartTickText(gap) + " between the cards, " +
+           "1 degree sun; " + std::to_string(s.frameSize.x) + "x" + std::to_string(s.frameSize.y) +
+           " frame, map " + std::to_string(s.mapSize) + "^2; bias mode " + bias + ", " + s.settings +
+           "\n" + chartRendererLine(s.glRenderer);
+}
+
+}  // namespace
+
+double bleedChartGap(std::span<const StabilityRow> rows) {
+    const double preferred = presetParams(BLEED_PRESET).front().defaultValue;
+    double best = 0.0;
+    for (const BleedPoint& p : bleedPoints(rows)) {
+        if (best == 0.0 || std::abs(p.gap - preferred) < std::abs(best - preferred)) best = p.gap;
+    }
+    return best;
+}
+
+LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
+                             float minFontPx) {
+    LineChartSpec spec;
+    spec.minFontPx = minFontPx;
+    std::vector<BleedPoint> points = bleedPoints(rows);
+    if (points.empty()) return spec;
+    const double gap = bleedChartGap(rows);
+    spec.title = "Light bleeding: leak in the lower card's umbra against penumbra darkening";
+    spec.subtitle = bleedSubtitle(rows, gap, subtitle);
+    spec.xLabel = "penumbra darkening: mean of truth - v over the area truth's penumbra";
+    spec.yLabel = "leak: 99th percentile of v over the lower card's clean umbra";
+    spec.logY = true;
+    spec.yFloor = 1e-4;
+    ChartPanel panel{"a dot: a method's defaults; a line: a setting swept", {}};
+    // A line per method and swept setting, in the rows' order; a method's defaults alone as a
+    // dot when no setting of it was swept.
+    std::map<std::pair<int, int>, bool> swept;
+    for (const BleedPoint& p : points) swept[{p.method, p.kernel}] |= !p.key.empty();
+    std::vector<std::pair<std::string, std::vector<const BleedPoint*>>> lines;
+    for (const BleedPoint& p : points) {
+        if (p.gap != gap || (p.key.empty() && swept[{p.method, p.kernel}])) continue;
+        std::string label = methodLabel(p.method, p.kernel) + (p.key.empty() ? "" : ", " + p.key);
+        if (lines.empty() || lines.back().first != label) lines.push_back({label, {}});
+        lines.back().second.push_back(&p);
+    }
+    for (const auto& [label, line] : lines) {
+        ChartLine l{label, methodInfo(line.front()->method).chartColour, false, {}};
+        const BleedPoint* under = nullptr;
+        std::string values;
+        for (const BleedPoint* p : line) {
+            l.points.emplace_back(-p->penumbraError, p->leakP99);
+            values += (values.empty() ? "" : ", ") + p->value;
+            if (!under && p->leakP99 < BLEED_LEAK_TARGET) under = p;
+        }
+        panel.lines.push_back(std::move(l));
+        if (line.front()->key.empty()) continue;
+        std::string note = label + " " + values;
+        if (under) {
+            note += "; leak under " + chartTickText(BLEED_LEAK_TARGET) + " from " + under->key +
+                    " " + under->value + ", darkening " + chartTickText(-under->penumbraError);
+        }
+        spec.notes.push_back(note);
+    }
+    spec.panels.push_back(std::move(panel));
+    return spec;
+}
+
+}  // namespace pcf
