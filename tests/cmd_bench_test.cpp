@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -69,8 +70,9 @@ TEST_F(BenchCommand, QuickWritesTheFilesWithOneRowPerPoint) {
             EXPECT_LT(std::stod(f[iqr]), std::stod(f[median])) << line;
         }
         methods.insert(f[0]);
-        bool kernelMethod =
-            f[0] == "pcf-naive" || f[0] == "pcf-gather" || f[0] == "pcf-hw" || f[0] == "tent";
+        std::optional<int> method = methodFromName(f[0]);
+        ASSERT_TRUE(method.has_value()) << line;
+        bool kernelMethod = methodInfo(*method).usesKernel;
         EXPECT_EQ(f[1], kernelMethod ? "3" : "0") << line;
         EXPECT_TRUE(f[2] == "128" || f[2] == "256") << line;
         EXPECT_GT(std::stod(f[3]), 0.0) << line;  // gpu_ms

@@ -376,15 +376,16 @@ TEST_F(DocCommands, EveryConcreteCommandRunsAndShowsWhatItsDocSays) {
         return results[c];
     };
     std::string readme = testutil::readAll(SOURCE_DIR / "README.md");
-    // "`build/pcfscope methods` lists the ten methods": one line each, up to the first blank.
+    // "`build/pcfscope methods` lists the fifteen methods": one line each, up to the first blank.
     {
         std::istringstream out(result("build/pcfscope methods").out);
         std::string line;
         std::getline(out, line);  // the header
         int methods = 0;
         while (std::getline(out, line) && !line.empty()) ++methods;
-        EXPECT_EQ(methods, 10);
-        EXPECT_NE(readme.find("`build/pcfscope methods` lists the ten methods"), std::string::npos);
+        EXPECT_EQ(methods, 15);
+        EXPECT_NE(readme.find("`build/pcfscope methods` lists the fifteen methods"),
+                  std::string::npos);
     }
     // The worked example's visibility of 0.8.
     EXPECT_NE(readme.find("give a visibility of 0.8"), std::string::npos);

@@ -9,17 +9,19 @@
 #include <utility>
 #include <vector>
 
+#include "kernel/moments.h"
 #include "kernel/settings.h"
 #include "kernel/trace.h"
 
 namespace pcf {
 namespace {
 
-TEST(Methods, TheTenIdsOfTheDesignInOrder) {
+TEST(Methods, TheFifteenIdsOfTheDesignInOrder) {
     const char* ids[] = {"nearest",    "box2x2", "bilinear2x2", "hw2x2",   "pcf-naive",
-                         "pcf-gather", "pcf-hw", "tent",        "poisson", "pcss"};
-    ASSERT_EQ(allMethods().size(), 10u);
-    for (int k = 0; k < 10; ++k) {
+                         "pcf-gather", "pcf-hw", "tent",        "poisson", "pcss",
+                         "vsm",        "evsm2",  "evsm4",       "msm",     "msm-hausdorff"};
+    ASSERT_EQ(allMethods().size(), 15u);
+    for (int k = 0; k < 15; ++k) {
         EXPECT_EQ(allMethods()[k].name, ids[k]);
         EXPECT_EQ(allMethods()[k].id, k);
         EXPECT_EQ(methodFromName(ids[k]), k);
@@ -75,8 +77,20 @@ TEST(Methods, WeightsChangeTheResultOfTheMethodsThatTakeThem) {
         EXPECT_EQ(checkParams(binomial).has_value(), !m.takesWeights) << m.name;
         if (!m.takesWeights) continue;
         vec2 uv(0.43f, 0.57f);
-        EXPECT_NE(filterVisibility(map, uv, 0.5f, box), filterVisibility(map, uv, 0.5f, binomial))
-            << m.name;
+        // A moment method reads the moments its weights blurred (kernel/moments.h).
+        auto read = [&](const PcfParams& p) {
+            if (!readsMoments(m.id)) return map;
+            return momentsMap(map, p, mapTexelKind(m.id, TexelKind::D32F));
+        };
+        // At some receiver depth behind part of the footprint (a moment method is 1 wherever
+        // the receiver is before the mean; evsm2's warp exp(40 (2z - 1)) puts the mean of a
+        // footprint holding a depth of 1 beyond every receiver but one at 1).
+        bool differs = false;
+        for (float ref : {0.5f, 0.7f, 0.9f, 1.0f}) {
+            differs = differs || filterVisibility(read(box), uv, ref, box) !=
+                                     filterVisibility(read(binomial), uv, ref, binomial);
+        }
+        EXPECT_TRUE(differs) << m.name;
     }
 }
 
@@ -100,7 +114,7 @@ std::vector<vec2> spreadLookups(int count) {
     return out;
 }
 
-// The kernel's dispatch (pcf_kernel.h pcfFilterRef) has a branch for every method of the table:
+// The kernel's dispatch (pcf_filter.h pcfFilterRef) has a branch for every method of the table:
 // none returns PCF_UNDISPATCHED, what an id without a branch gets (instead of another method's
 // answer). tests/gpu_parity_test.cpp holds the GLSL to the same.
 TEST(Methods, TheKernelsDispatchHasABranchForEveryMethod) {
@@ -128,10 +142,15 @@ TEST(Methods, HardMethodsGiveOnlyZeroOrOne) {
     for (const MethodInfo& m : allMethods()) {
         PcfParams prm = makeParams(m.id, fitKernel(m.id, 3), 2.0f);
         prm.penumbraScale = 8.0f;
+        ShadowMap read = mapForMethod(map, prm);  // a moment method reads the map's moments
         bool between = false;
         for (vec2 uv : spreadLookups(64)) {
-            float v = filterVisibility(map, uv, 0.45f, prm);
-            between = between || (v > 0.0f && v < 1.0f);
+            // 1: evsm2's warped mean lies beyond every other receiver
+            // (WeightsChangeTheResultOfTheMethodsThatTakeThem).
+            for (float ref : {0.45f, 0.75f, 1.0f}) {
+                float v = filterVisibility(read, uv, ref, prm);
+                between = between || (v > 0.0f && v < 1.0f);
+            }
         }
         EXPECT_EQ(!between, m.hard) << m.name;
     }
@@ -212,6 +231,12 @@ TEST(Methods, ReachIsHalfTheFootprintsWidth) {
                 << m.name;
             continue;
         }
+        // A moment method's taps are the moments map's 2x2 read; the depths behind them reach
+        // (N + 1) / 2 texels through the moments pass's N x N blur, as pcf-naive's do.
+        if (readsMoments(m.id)) {
+            EXPECT_EQ(reachTexels(m.id, 3, 1.0f), reachTexels(PCF_NAIVE, 3, 1.0f)) << m.name;
+            continue;
+        }
         for (int n : {3, 5, 7}) {
             Trace tr = traceLookup(map, vec2(0.4321f, 0.5678f), 0.45f, 0.45f,
                                    makeParams(m.id, fitKernel(m.id, n)));
@@ -227,12 +252,19 @@ TEST(Methods, ReachIsHalfTheFootprintsWidth) {
     }
 }
 
-// The map a method reads comes from its map pass: every method today reads the depth pass's
-// map, in the depth format asked for.
+// The map a method reads comes from its map pass: the depth pass's map in the depth format
+// asked for, or the moments pass's in the moment format (2 or 4 channels, whatever the depths).
 TEST(Methods, EveryMethodReadsTheDepthMapInTheFormatAsked) {
     for (const MethodInfo& m : allMethods()) {
         for (TexelKind f : {TexelKind::D16, TexelKind::D24, TexelKind::D32F}) {
-            EXPECT_EQ(mapTexelKind(m.id, f), f) << m.name;
+            if (m.mapPass == MapPass::Depth) {
+                EXPECT_EQ(mapTexelKind(m.id, f), f) << m.name;
+                continue;
+            }
+            int channels = m.mapPass == MapPass::Moments2 ? 2 : 4;
+            EXPECT_EQ(texelKindInfo(mapTexelKind(m.id, f, 16)).channels, channels) << m.name;
+            EXPECT_EQ(texelKindInfo(mapTexelKind(m.id, f, 16)).bits, 16) << m.name;
+            EXPECT_EQ(texelKindInfo(mapTexelKind(m.id, f, 32)).bits, 32) << m.name;
         }
     }
 }

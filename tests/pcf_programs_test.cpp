@@ -51,6 +51,8 @@ float settingValue(const ParamInfo& p, const ShadowSettings& s) {
             using F = std::decay_t<decltype(field)>;
             if constexpr (std::is_member_object_pointer_v<F>) {
                 return static_cast<float>(s.*field);
+            } else if constexpr (std::is_same_v<F, NamedField<vec2>>) {
+                return (s.*field.field).x;  // no uniform: the exponents are uEvsmExponents
             } else {
                 return static_cast<float>(static_cast<int>(s.*field.field));
             }
@@ -66,7 +68,13 @@ std::vector<PcfParams> variantParams(const ShadowSettings& s) {
     gather.weights = PCF_WEIGHTS_GAUSSIAN;
     ShadowSettings poisson = s;
     poisson.method = PCF_POISSON;
-    return {gather.pcfParams(), poisson.pcfParams()};
+    // The moment methods read lbr and min_variance (evsm4) and moment_bias (msm).
+    ShadowSettings evsm = s;
+    evsm.method = PCF_EVSM4;
+    evsm.kernel = 3;
+    ShadowSettings msm = evsm;
+    msm.method = PCF_MSM;
+    return {gather.pcfParams(), poisson.pcfParams(), evsm.pcfParams(), msm.pcfParams()};
 }
 
 // For each table uniform, the values it read back with in the programs where it is live.

@@ -9,7 +9,9 @@
 #include <cmath>
 
 #include "kernel/methods.h"
+#include "kernel/moments.h"
 #include "kernel/pcf.h"
+#include "measure/conformance.h"
 #include "random_map.h"
 #include "render/gl_context.h"
 #include "render/gpu_lookup.h"
@@ -19,7 +21,9 @@ namespace pcf {
 namespace {
 
 // Both passes run on the same GL; they differ only in the order of float operations (a sum
-// divided at the end against weights scaled first), so 1e-5, the parity tests' tolerance.
+// divided at the end against weights scaled first), so 1e-5, the parity tests' tolerance. The
+// moment methods' bound and reconstruction amplify that rounding (a variance that is a small
+// difference of large moments; MSM's Cholesky solve), so they are held to MOMENT_TOLERANCE.
 constexpr float REFERENCE_TOLERANCE = 1e-5f;
 
 class ReferencePass : public ::testing::Test {
@@ -35,6 +39,16 @@ std::vector<PcfParams> referenceCases() {
     for (const MethodInfo& m : allMethods()) {
         if (m.id == PCF_TENT) {
             for (int n : {3, 5, 7}) cases.push_back(makeParams(m.id, n));
+        } else if (m.reconstructs) {
+            // MSM's Hankel matrix of a footprint with four depths or fewer (N = 1: the four texels
+            // of the bilinear read) is singular but for the moment bias; at the default 3e-5 the
+            // float solve's answer is decided by rounding (0.27 apart between two orders of the
+            // same operations), so here the bias is 1e-3, where it is not.
+            for (int n : {1, 2, 3, 4, 5, 8}) {
+                PcfParams p = makeParams(m.id, n);
+                p.momentBias = 1.0e-3f;
+                cases.push_back(p);
+            }
         } else if (m.usesKernel) {
             for (int n : {1, 2, 3, 4, 5, 8}) cases.push_back(makeParams(m.id, n));
         } else if (m.id == PCF_POISSON) {
@@ -59,9 +73,10 @@ TEST_F(ReferencePass, EveryMethodGivesTheKernelsVisibility) {
     ShadowMap map = randomMap(size.x, size.y, 23);
     const int width = 64;
     std::vector<glm::vec4> lookups = randomLookups(size, width, 48, 24);
-    gpu.setMap(map);
     gpu.setLookups(lookups, width);
     for (const PcfParams& prm : referenceCases()) {
+        // A moment method reads the moments map the shared kernel's moments pass makes of it.
+        gpu.setMap(mapForMethod(map, prm));
         std::string what = std::string(methodInfo(prm.method).name) +
                            " N=" + std::to_string(prm.kernel) + " R=" + std::to_string(prm.radius);
         gpu.draw(prm, false);
@@ -75,11 +90,15 @@ TEST_F(ReferencePass, EveryMethodGivesTheKernelsVisibility) {
             worst = std::max(worst, std::fabs(reference[k] - kernel[k]));
             partial += reference[k] > 0.0f && reference[k] < 1.0f;
         }
-        EXPECT_LE(worst, REFERENCE_TOLERANCE) << what;
+        EXPECT_LE(worst, readsMoments(prm.method) ? MOMENT_TOLERANCE : REFERENCE_TOLERANCE) << what;
         // Random depths against random refs: every method but nearest mixes bits in most
-        // lookups, so a pass that wrote one constant or only hard bits fails here.
+        // lookups, so a pass that wrote one constant or only hard bits fails here. A moment
+        // method's bound is 1 wherever the receiver is at or before the mean (about half the
+        // random refs), and evsm2's warp exp(40 (2z - 1)) leaves few values between 0 and 1
+        // (177 of 3072 at N = 8): a twentieth.
+        int least = static_cast<int>(kernel.size()) / (readsMoments(prm.method) ? 20 : 2);
         if (prm.method != PCF_NEAREST) {
-            EXPECT_GT(partial, static_cast<int>(kernel.size()) / 2) << what;
+            EXPECT_GT(partial, least) << what;
         }
     }
 }

@@ -15,6 +15,7 @@
 #include "kernel/pcf.h"
 #include "render/gl_context.h"
 #include "render/gl_objects.h"
+#include "render/pcf_programs.h"
 
 namespace pcf {
 namespace {
@@ -179,7 +180,8 @@ TEST_F(ShaderLoader, LinkErrorSaysItDidNotLink) {
     EXPECT_NE(message.find("does not link"), std::string::npos) << message;
 }
 
-// The point of shaders/shared/: pcf_prelude.h + pcf_kernel.h are valid GLSL 4.50.
+// The point of shaders/shared/: the shared kernel's files (pcfSharedFiles: the prelude, the
+// kernel, the moment methods, the dispatch) are valid GLSL 4.50.
 const char* PCF_FRAG = R"(
 uniform sampler2D uMap;
 uniform int uMethod;
@@ -190,17 +192,15 @@ void main() {
     // uv from the pixel with power-of-two arithmetic only, so the CPU can repeat it exactly.
     vec2 uv = gl_FragCoord.xy * (1.0f / 32.0f) - vec2(0.125f);
     PcfParams prm = PcfParams(uMethod, uKernel, 1.0f, pcfPixelRotation(ivec2(gl_FragCoord.xy)), 0, 1.0f, 0.0f,
-                              0.0f, 0.0f);
+                              0.0f, 0.0f, 0.0f, 1.0e-7f, vec2(40.0f, 5.0f), 3.0e-5f);
     outVisibility = pcfFilter(uMap, uv, uRef, prm);
 }
 )";
 
 TEST_F(ShaderLoader, SharedPcfKernelCompilesAndLinks) {
-    GlProgram program = buildProgram({{GL_VERTEX_SHADER, {}, "", {{"full.vert", FULL_VERT}}},
-                                      {GL_FRAGMENT_SHADER,
-                                       {"shared/pcf_prelude.h", "shared/pcf_kernel.h"},
-                                       "",
-                                       {{"pcf_test.frag", PCF_FRAG}}}});
+    GlProgram program =
+        buildProgram({{GL_VERTEX_SHADER, {}, "", {{"full.vert", FULL_VERT}}},
+                      {GL_FRAGMENT_SHADER, pcfSharedFiles(), "", {{"pcf_test.frag", PCF_FRAG}}}});
     ASSERT_TRUE(program);
     GLint linked = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
@@ -213,11 +213,9 @@ TEST_F(ShaderLoader, SharedPcfKernelCompilesAndLinks) {
 // (docs/architecture.md's parity, in small: one 16 x 16 map, every method, a 32 x 32 grid of
 // lookups reaching past the map's edges). The renderer's own parity test covers scenes and sizes.
 TEST_F(ShaderLoader, SharedPcfKernelMatchesTheCpuKernel) {
-    GlProgram program = buildProgram({{GL_VERTEX_SHADER, {}, "", {{"full.vert", FULL_VERT}}},
-                                      {GL_FRAGMENT_SHADER,
-                                       {"shared/pcf_prelude.h", "shared/pcf_kernel.h"},
-                                       "",
-                                       {{"pcf_test.frag", PCF_FRAG}}}});
+    GlProgram program =
+        buildProgram({{GL_VERTEX_SHADER, {}, "", {{"full.vert", FULL_VERT}}},
+                      {GL_FRAGMENT_SHADER, pcfSharedFiles(), "", {{"pcf_test.frag", PCF_FRAG}}}});
     const int mapSize = 16;
     ShadowMap map(mapSize, mapSize);
     uint32_t state = 12345u;

@@ -91,8 +91,10 @@ TEST(Weights, SameFetchesAndWeightsThatSumToOne) {
 
 TEST(Weights, ValidationNamesTheOption) {
     EXPECT_FALSE(validateParams(weighted(PCF_GATHER, 3, PCF_WEIGHTS_BINOMIAL)).has_value());
-    EXPECT_EQ(validateParams(weighted(PCF_TENT, 3, PCF_WEIGHTS_BINOMIAL)).value(),
-              "weights binomial applies to pcf-naive and pcf-gather, not tent");
+    EXPECT_EQ(
+        validateParams(weighted(PCF_TENT, 3, PCF_WEIGHTS_BINOMIAL)).value(),
+        "weights binomial applies to pcf-naive, pcf-gather, vsm, evsm2, evsm4, msm, msm-hausdorff, "
+        "not tent");
     EXPECT_EQ(validateParams(weighted(PCF_NAIVE, 3, PCF_WEIGHTS_GAUSSIAN, 0.0f)).value(),
               "sigma 0 is out of range [0.05, 16] texels");
     EXPECT_EQ(weightsFromName("gaussian"), PCF_WEIGHTS_GAUSSIAN);

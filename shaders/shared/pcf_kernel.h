@@ -1,5 +1,7 @@
-// pcf_kernel.h: every PCF method of pcfscope, written once for C++ and GLSL (see pcf_prelude.h
-// for the rules this file follows). C++ side: src/kernel/pcf.h. GLSL side: shaders/scene.frag.
+// pcf_kernel.h: the PCF methods of pcfscope that compare depths, written once for C++ and GLSL
+// (see pcf_prelude.h for the rules this file follows); the moment methods follow in
+// pcf_moments.h and the dispatch over all of them in pcf_filter.h. C++ side: src/kernel/pcf.h.
+// GLSL side: shaders/scene.frag.
 //
 // Conventions (docs/methods.md, "Conventions"):
 //   shadow map W x H, depth in [0,1], 0 = near the light; texel (i, j) = column i, row j as
@@ -21,7 +23,12 @@ PCF_CONST int PCF_HW = 6;
 PCF_CONST int PCF_TENT = 7;
 PCF_CONST int PCF_POISSON = 8;
 PCF_CONST int PCF_PCSS = 9;
-PCF_CONST int PCF_METHOD_COUNT = 10;
+PCF_CONST int PCF_VSM = 10;
+PCF_CONST int PCF_EVSM2 = 11;
+PCF_CONST int PCF_EVSM4 = 12;
+PCF_CONST int PCF_MSM = 13;
+PCF_CONST int PCF_MSM_HAUSDORFF = 14;
+PCF_CONST int PCF_METHOD_COUNT = 15;
 // What pcfFilterRef returns for a method id it has no branch for: outside [0,1], so a method
 // missing from the dispatch fails the tests instead of running another method.
 PCF_CONST float PCF_UNDISPATCHED = -1.0f;
@@ -95,6 +102,14 @@ struct PcfParams {
     // choice is the define PCF_PRECISION, read through mapPrecision(map) (pcf_prelude.h).
     int precision = 0;
 #endif
+    // The moment methods (vsm .. msm-hausdorff, pcf_moments.h): the light-bleeding
+    // reduction's cut (linstep's low end, 0: none), the least variance the bound takes (light
+    // depth squared), the EVSM exponents (positive, negative) as used, after the clamp to what
+    // the moment format holds, and MSM's moment bias alpha.
+    float lbr PCF_DEFAULT(0.0f);
+    float minVariance PCF_DEFAULT(0.0f);
+    vec2 evsmExponents PCF_DEFAULT(vec2(0.0f));
+    float momentBias PCF_DEFAULT(0.0f);
 };
 
 // Where a lookup falls in texel space.
@@ -890,56 +905,4 @@ PCF_MAP_FN float pcfPcss(Map map, vec2 uv, PcfRef ref, PcfParams prm) {
         pcfPcssEstimate(map, uv, ref, prm.penumbraScale, prm.depthNear, prm.depthFar, prm.rotation);
     if (e.blockers == 0) return 1.0f;
     return pcfPoisson(map, uv, ref, e.filterRadius, prm.rotation);
-}
-
-// The entry point with a bias mode: visibility of a receiver seen at uv, compared per tap as
-// ref (PcfRef) says. Weighted sums can land an ulp above 1; the result is clamped to [0,1].
-// The ref every method's taps see: under receiver-plane bias, the plane's slope capped.
-PCF_FN PcfRef pcfLookupRef(PcfRef ref) {
-    if (ref.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
-        ref.bias.dzduv = pcfClampDzDuv(ref.bias.dzduv, ref.bias.rpdbMax);
-    }
-    return ref;
-}
-
-PCF_MAP_FN float pcfFilterRef(Map map, vec2 uv, PcfRef lookupRef, PcfParams prm) {
-    PcfRef ref = pcfLookupRef(lookupRef);
-    float v;
-    if (prm.method == PCF_NEAREST) {
-        v = pcfNearest(map, uv, ref, 1.0f);
-    } else if (prm.method == PCF_BOX2X2) {
-        v = pcfBox2x2(map, uv, ref);
-    } else if (prm.method == PCF_BILINEAR2X2) {
-        v = pcfBilinearLookup(map, uv, ref, 1.0f);
-    } else if (prm.method == PCF_HW2X2) {
-        v = pcfHwTap(map, uv, ref, 1.0f);
-    } else if (prm.method == PCF_NAIVE && prm.weights != PCF_WEIGHTS_BOX) {
-        v = pcfNaiveWeighted(map, uv, ref, prm.kernel, prm.weights, prm.sigma);
-    } else if (prm.method == PCF_NAIVE) {
-        v = pcfNaive(map, uv, ref, prm.kernel);
-    } else if (prm.method == PCF_GATHER && prm.weights != PCF_WEIGHTS_BOX) {
-        v = pcfGatherWeighted(map, uv, ref, prm.kernel, prm.weights, prm.sigma);
-    } else if (prm.method == PCF_GATHER) {
-        v = pcfGather(map, uv, ref, prm.kernel);
-    } else if (prm.method == PCF_HW) {
-        v = pcfHw(map, uv, ref, prm.kernel);
-    } else if (prm.method == PCF_TENT) {
-        v = pcfTent(map, uv, ref, prm.kernel);
-    } else if (prm.method == PCF_POISSON) {
-        v = pcfPoisson(map, uv, ref, prm.radius, prm.rotation);
-    } else if (prm.method == PCF_PCSS) {
-        v = pcfPcss(map, uv, ref, prm);
-    } else {
-        // A method this dispatch does not know: no other method's answer, but a value that no
-        // visibility takes, returned unclamped (tests/methods_test.cpp and gpu_parity_test.cpp
-        // run every method of the table through this dispatch and look for it).
-        return PCF_UNDISPATCHED;
-    }
-    return clamp(v, 0.0f, 1.0f);
-}
-
-// The one entry point without a per-tap bias: visibility of a receiver at depth ref (after
-// bias) seen at uv, every tap compared with the same ref.
-PCF_MAP_FN float pcfFilter(Map map, vec2 uv, float ref, PcfParams prm) {
-    return pcfFilterRef(map, uv, pcfPlainRef(ref, uv), prm);
 }

@@ -10,7 +10,7 @@
 //   - no out-parameters: return a struct, built with Type(a, b, ...) (C++20 aggregate init);
 //   - every function is marked PCF_FN, or PCF_MAP_FN when it reads the shadow map;
 //   - the map is read only through fetchDepth(map, ivec2), pointDepth(map, vec2), hwTap(...),
-//     gatherCompare(...) and gatherDepth(...);
+//     gatherCompare(...), gatherDepth(...) and, for a moments map, fetchMoments(map, ivec2);
 //     each texel read is reported through pcfTap(...), which records on the CPU and is
 //     nothing in GLSL;
 //   - values that feed floor() are PCF_PRECISE, so the GLSL compiler cannot fuse a multiply
@@ -100,6 +100,11 @@ float fetchDepth(Map map, ivec2 texel) {
 // clamp to edge is the clamp, and no int conversions (Poisson's 16 taps: 1.24x -> 1.12x).
 float pointDepth(Map map, vec2 p) {
     return textureLod(map, (floor(p) + 0.5f) * (1.0f / vec2(textureSize(map, 0))), 0.0f).r;
+}
+// A moments map's texel (kernel/shadow_map.h TexelKind::Moments*), the same centre read: a
+// two-channel texture reads (m1, m2, 0, 1).
+vec4 fetchMoments(Map map, ivec2 texel) {
+    return textureLod(map, (vec2(texel) + 0.5f) * (1.0f / vec2(textureSize(map, 0))), 0.0f);
 }
 void pcfTap(Map map, ivec2 texel, float depth, float ref, float lit, float weight) {}
 void pcfFetch(Map map, int kind, vec2 uv, float weight) {}

@@ -10,8 +10,10 @@
 #include "app/render_options.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "kernel/moments.h"
 #include "kernel/settings.h"
 #include "kernel/trace.h"
+#include "kernel/trace_explain.h"
 #include "kernel/trace_json.h"
 #include "render/image_io.h"
 
@@ -33,9 +35,10 @@ struct TraceOptions {
     // The filter's and the bias's options, the parameter table's (trace's defaults: bilinear2x2,
     // no bias).
     SettingOptions shadow;
-    float angleDeg = 0.0f;    // slope: the angle between the receiver's normal and the light
-    std::string dzduv;        // receiver-plane: "DU,DV"
-    CLI::App* sub = nullptr;  // to ask which options were given
+    SettingOptions mapOptions;  // the map group's --moment-format
+    float angleDeg = 0.0f;      // slope: the angle between the receiver's normal and the light
+    std::string dzduv;          // receiver-plane: "DU,DV"
+    CLI::App* sub = nullptr;    // to ask which options were given
     float rotationDeg = 0.0f;
     float penumbraScale = DEFAULT_TRACE_PENUMBRA_SCALE;
     bool json = false;
@@ -56,6 +59,7 @@ constexpr float EXAMPLE_Z = 0.5f;
 ShadowSettings traceSettings(const TraceOptions& o) {
     ShadowSettings s;
     o.shadow.applyTo(s, false);
+    o.mapOptions.applyTo(s, false);
     return s;
 }
 
@@ -129,6 +133,19 @@ int runTrace(const TraceOptions& o) {
         }
     }
     map.setTexelKind(format);
+    // The moment methods read the moments map the moments pass makes of these depths.
+    if (readsMoments(prm.method)) {
+        map = momentsMap(map, prm, mapTexelKind(prm.method, format, settings.momentBits));
+        bool warps = methodInfo(prm.method).warps > 0;
+        if (warps && prm.evsmExponents != settings.evsmExponents) {
+            std::string note = "trace: --evsm-exponents " + exponentsText(settings.evsmExponents) +
+                               " used as " + exponentsText(prm.evsmExponents) + " (" +
+                               std::string(momentFormatName(settings.momentBits)) +
+                               " moments hold exponents up to " +
+                               formatNumber(evsmExponentLimit(settings.momentBits)) + ")\n";
+            std::fputs(note.c_str(), stderr);
+        }
+    }
     // Any finite uv: texels outside the map clamp to the edge, as the GPU's sampler does; the
     // trace marks the taps that did.
     vec2 uv = glm::clamp(parseVec2("--uv", uvText), vec2(-UV_LIMIT), vec2(1.0f + UV_LIMIT));
@@ -164,6 +181,7 @@ Command addTraceCommand(CLI::App& app) {
     // pcss's light size is --penumbra-scale here: trace has no scene to measure the light in.
     o->shadow.addTo(sub, {ParamGroup::Filter, ParamGroup::Bias}, defaults,
                     {"rotate", "light_size", "light_radius"});
+    o->mapOptions.addTo(sub, {ParamGroup::Map}, defaults, {"depth_format", "map_size", "cull"});
     sub->add_option(
         "--angle", o->angleDeg,
         "slope: angle in degrees between the receiver's normal and the light (default 0)");

@@ -197,9 +197,15 @@ RawSettings readRawSettings(const std::filesystem::path& dir) {
 // once the image has been checked against that format); for a folder without one, the image's
 // size, one layer.
 MapSpec rawMapSpec(const ShadowMap& image, const RawSettings& r, const std::string& where) {
-    TexelKind kind = mapTexelKind(r.settings.method, r.settings.depthFormat);
+    TexelKind kind = mapTexelKind(r.settings.method, r.settings.depthFormat, r.settings.momentBits);
     MapSpec spec = r.map.value_or(MapSpec{image.size(), kind, {MapSpec::unfittedLayer()}});
     spec.texels = kind;
+    if (texelKindInfo(kind).channels != image.spec().texel().channels) {
+        throw UsageError("shadowmap.exr has " + std::to_string(image.spec().texel().channels) +
+                         " channel(s), but " + std::string(methodInfo(r.settings.method).name) +
+                         " reads a map of " + std::to_string(texelKindInfo(kind).channels) + " (" +
+                         where + ")");
+    }
     if (spec.size != image.size() || spec.layers.size() != 1) {
         throw UsageError("render.json: \"map\" is " + std::to_string(spec.size.x) + "x" +
                          std::to_string(spec.size.y) + " in " + std::to_string(spec.layers.size()) +
@@ -212,7 +218,7 @@ MapSpec rawMapSpec(const ShadowMap& image, const RawSettings& r, const std::stri
 
 // render.json's "map" names the texel kind its method reads in its depth_format.
 void checkMapTexels(const RawSettings& r, const std::string& where) {
-    TexelKind kind = mapTexelKind(r.settings.method, r.settings.depthFormat);
+    TexelKind kind = mapTexelKind(r.settings.method, r.settings.depthFormat, r.settings.momentBits);
     if (!r.map || r.map->texels == kind) return;
     throw UsageError("render.json: \"map\" holds texels " +
                      std::string(texelKindName(r.map->texels)) + ", but " +
@@ -252,7 +258,7 @@ FloatImage readOptionalImage(const std::filesystem::path& path, const FloatImage
 RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) {
     RawImages img;
     try {
-        img.map = readDepthImage((dir / "shadowmap.exr").string());
+        img.map = readMapImage((dir / "shadowmap.exr").string());
     } catch (const ImageError& e) {
         throw UsageError(e.what());
     }

@@ -24,9 +24,14 @@ namespace {
 // ("unknown method 'x'", "unknown bias mode 'x'"); the others name their flag.
 template <class T>
 T parseNamed(const ParamInfo& p, const NamedField<T>& named, const std::string& text) {
-    if (p.key == "method") return static_cast<T>(methodOption(text));
-    if (p.key == "bias") return static_cast<T>(biasModeOption(text));
+    if constexpr (!std::is_same_v<T, vec2>) {
+        if (p.key == "method") return static_cast<T>(methodOption(text));
+        if (p.key == "bias") return static_cast<T>(biasModeOption(text));
+    }
     std::optional<T> v = named.fromName(text);
+    if (!v && std::is_same_v<T, vec2>) {
+        throw UsageError(settingFlag(p.key) + " takes " + named.known() + ", not '" + text + "'");
+    }
     if (!v) {
         throw UsageError("unknown " + settingFlag(p.key) + " '" + text +
                          "' (known: " + named.known() + ")");

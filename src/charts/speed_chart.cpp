@@ -601,51 +601,6 @@ Rect speedChartBarBox(const SpeedChartLayout& L, size_t row) {
 
 float speedChartLegendGap(const SpeedChartLayout& L) { return legendGap(L.scale, L.legendPx); }
 
-std::vector<ChartTextBox> speedChartTextBoxes(const SpeedChartLayout& L,
-                                              const SpeedChartText& text) {
-    std::vector<ChartTextBox> out;
-    float s = L.scale;
-    auto add = [&](glm::vec2 pos, TextAlign align, float px, const std::string& role,
-                   const std::string& words) -> ChartTextBox& {
-        return addChartTextBox(out, pos, align, px, role, words);
-    };
-    float pad = std::round(12.0f * s);
-    float titleH = fontMetrics(FontFace::Sans, L.titlePx).lineHeight;
-    float subH = fontMetrics(FontFace::Sans, L.subtitlePx).lineHeight;
-    add({pad, pad * 0.6f}, TextAlign::Left, L.titlePx, "chart-title", text.title);
-    add({pad, std::round(pad * 0.6f) + titleH}, TextAlign::Left, L.subtitlePx, "chart-subtitle",
-        text.subtitle);
-    // The y axis's name above it (the canvas draws no rotated text).
-    add({L.plot.x, std::round(pad * 0.6f) + titleH + L.subtitleLines * subH + 4.0f * s},
-        TextAlign::Left, L.axisPx, "chart-axis", text.yLabel);
-    for (const ChartTick& t : L.xTicks) {
-        if (t.text.empty()) continue;
-        add({std::round(t.pixel) + 0.5f, L.plot.bottom() + 5.0f * s}, TextAlign::Center, L.tickPx,
-            "chart-tick", t.text);
-    }
-    float tickH = fontMetrics(FontFace::Sans, L.tickPx).lineHeight;
-    for (const ChartTick& t : L.yTicks) {
-        add({L.plot.x - 6.0f * s, std::round(t.pixel) + 0.5f - tickH / 2}, TextAlign::Right,
-            L.tickPx, "chart-tick", t.text);
-    }
-    add({L.plot.centre().x, L.plot.bottom() + 8.0f * s + tickH}, TextAlign::Center, L.axisPx,
-        "chart-axis", text.xLabel);
-    speedChartNameBoxes(L, out);
-    float lineH = fontMetrics(FontFace::Sans, L.legendPx).lineHeight;
-    for (size_t k = 0; k < L.legendSwatches.size(); ++k) {
-        bool method = k < L.legendMethods.size();
-        float y = L.legendSwatches[k].centre().y - 0.5f * lineH;  // the line its mark centres
-        std::string name = method ? std::string(methodInfo(L.legendMethods[k]).name)
-                           : k == L.legendMethods.size() ? FRONT_LEGEND
-                                                         : HIGHLIGHT_LEGEND;
-        add({L.legendTextX, y}, TextAlign::Left, L.legendPx, "chart-legend", name).method =
-            method ? L.legendMethods[k] : -1;
-        out.push_back({L.legendSwatches[k], 0.0f, "chart-swatch", name});
-        out.back().method = method ? L.legendMethods[k] : -1;
-    }
-    return out;
-}
-
 namespace {
 
 // The grid lines at the ticks and the plot's frame.

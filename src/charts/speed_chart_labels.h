@@ -6,7 +6,8 @@
 // 160 px from its own). A dot the chart must name whose name finds no such spot within
 // speedChartNameReach gets a numbered badge instead, touching the dot or its outer ring where
 // such a spot is clean, else drawn in the dot's place (a badge centred on its dot names no other),
-// and the key under the x axis gives the number its name. No GL: the names are measured with the
+// and the key under the x axis gives the number its name. Also every other text the chart draws,
+// with the names (speedChartTextBoxes, speed_chart.h). No GL: the texts are measured with the
 // fonts.
 #pragma once
 

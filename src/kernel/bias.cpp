@@ -69,6 +69,12 @@ std::optional<std::string> validateBias(int mode, int method) {
                " gets its comparisons from the texture unit (hardware taps); use nearest, "
                "box2x2, bilinear2x2, pcf-naive, pcf-gather or poisson";
     }
+    if ((mode == PCF_BIAS_SOFT || mode == PCF_BIAS_RECEIVER_PLANE) && readsMoments(method)) {
+        return "bias " + std::string(biasName(mode)) + " changes each tap's comparison, but " +
+               name +
+               " compares no taps: it reads the filtered moments once; use none, constant, "
+               "slope or normal";
+    }
     if (mode == PCF_BIAS_INTERPOLATED && !methodInfo(method).hard) {
         return "bias interpolated compares one bilinearly interpolated depth, a hard edge; " +
                name +

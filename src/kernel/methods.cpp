@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "kernel/settings.h"
 #include "kernel/sigma_limits.h"
 
 namespace pcf {
@@ -15,6 +16,8 @@ namespace {
 // Tent builds its N x N tent from 2, 3 or 4 hardware taps per axis (Castano, 2013, "Shadow
 // Mapping Summary Part 1"): N = 3, 5 or 7.
 constexpr int TENT_SIZES[] = {3, 5, 7};
+// The moments pass blurs each texel over the N x N texels centred on it: N odd.
+constexpr int MOMENT_SIZES[] = {1, 3, 5, 7};
 
 // The charts' colours: Tableau 10, with the yellow and pink darkened to read on white.
 constexpr std::array<MethodInfo, PCF_METHOD_COUNT> METHODS = {{
@@ -122,6 +125,73 @@ constexpr std::array<MethodInfo, PCF_METHOD_COUNT> METHODS = {{
      .hasDisk = true,
      .searchesBlockers = true,
      .reach = MethodReach::BlockerDisk},
+    {.id = PCF_VSM,
+     .name = "vsm",
+     .shortName = "vsm",
+     .summary = "variance shadow map: mean and variance of the filtered depths, Chebyshev's "
+                "bound",
+     .usesKernel = true,
+     .takesWeights = true,
+     .reads = MethodReads::Texels,
+     .kernelSizes = MOMENT_SIZES,
+     .chartColour = {0.09f, 0.55f, 0.80f, 1.0f},
+     .referencePass = "reference/vsm.frag",
+     .reach = MethodReach::Kernel,
+     .mapPass = MapPass::Moments2},
+    {.id = PCF_EVSM2,
+     .name = "evsm2",
+     .shortName = "evsm2",
+     .summary = "exponential variance shadow map: Chebyshev's bound on exp(c+ (2z - 1))",
+     .usesKernel = true,
+     .takesWeights = true,
+     .reads = MethodReads::Texels,
+     .kernelSizes = MOMENT_SIZES,
+     .chartColour = {0.55f, 0.34f, 0.75f, 1.0f},
+     .referencePass = "reference/evsm2.frag",
+     .reach = MethodReach::Kernel,
+     .mapPass = MapPass::Moments2,
+     .warps = 1},
+    {.id = PCF_EVSM4,
+     .name = "evsm4",
+     .shortName = "evsm4",
+     .summary = "evsm2 and the negative warp -exp(-c- (2z - 1)), the smaller bound",
+     .usesKernel = true,
+     .takesWeights = true,
+     .reads = MethodReads::Texels,
+     .kernelSizes = MOMENT_SIZES,
+     .chartColour = {0.36f, 0.20f, 0.55f, 1.0f},
+     .referencePass = "reference/evsm4.frag",
+     .reach = MethodReach::Kernel,
+     .mapPass = MapPass::Moments4,
+     .warps = 2},
+    {.id = PCF_MSM,
+     .name = "msm",
+     .shortName = "msm",
+     .summary = "moment shadow map (Hamburger): four moments, the least shadow of any "
+                "three-depth distribution with them",
+     .usesKernel = true,
+     .takesWeights = true,
+     .reads = MethodReads::Texels,
+     .kernelSizes = MOMENT_SIZES,
+     .chartColour = {0.05f, 0.50f, 0.40f, 1.0f},
+     .referencePass = "reference/msm.frag",
+     .reach = MethodReach::Kernel,
+     .mapPass = MapPass::Moments4,
+     .reconstructs = true},
+    {.id = PCF_MSM_HAUSDORFF,
+     .name = "msm-hausdorff",
+     .shortName = "msm-h",
+     .summary = "msm with the depths held to [0, 1] (Hausdorff): a four-depth distribution "
+                "where three fall outside",
+     .usesKernel = true,
+     .takesWeights = true,
+     .reads = MethodReads::Texels,
+     .kernelSizes = MOMENT_SIZES,
+     .chartColour = {0.60f, 0.40f, 0.10f, 1.0f},
+     .referencePass = "reference/msm_hausdorff.frag",
+     .reach = MethodReach::Kernel,
+     .mapPass = MapPass::Moments4,
+     .reconstructs = true},
 }};
 
 // The table is in id order: methodInfo indexes it by id.
@@ -132,7 +202,8 @@ constexpr bool inIdOrder() {
     return true;
 }
 static_assert(inIdOrder());
-static_assert(static_cast<int>(Method::Pcss) == PCF_PCSS && PCF_METHOD_COUNT == 10);
+static_assert(static_cast<int>(Method::MsmHausdorff) == PCF_MSM_HAUSDORFF &&
+              PCF_METHOD_COUNT == 15);
 
 }  // namespace
 
@@ -194,6 +265,12 @@ FetchCounts fetchCounts(int method, int kernel) {
             return {16, 0, 0};
         case Method::Pcss:  // at most: the 16 search taps, then 16 filter taps unless none blocks
             return {2 * PCF_PCSS_TAPS, 0, 0};
+        case Method::Vsm:    // the lookup's one bilinear read of the moments map (the blur is
+        case Method::Evsm2:  // the moments pass's, once per texel, not per lookup)
+        case Method::Evsm4:
+        case Method::Msm:
+        case Method::MsmHausdorff:
+            return {4, 0, 0};
     }
     throw std::out_of_range("fetchCounts: unknown method");
 }
@@ -214,13 +291,30 @@ float reachTexels(int method, int kernel, float radius) {
     throw std::out_of_range("reachTexels: unknown reach");
 }
 
-TexelKind mapTexelKind(int method, TexelKind depthFormat) {
+TexelKind mapTexelKind(int method, TexelKind depthFormat, int momentBits) {
+    bool half = momentBits == 16;
     switch (methodInfo(method).mapPass) {
         case MapPass::Depth:
             return depthFormat;
+        case MapPass::Moments2:
+            return half ? TexelKind::Moments2F16 : TexelKind::Moments2F32;
+        case MapPass::Moments4:
+            return half ? TexelKind::Moments4F16 : TexelKind::Moments4F32;
     }
     throw std::out_of_range("mapTexelKind: unknown map pass");
 }
+
+bool readsMoments(int method) { return methodInfo(method).mapPass != MapPass::Depth; }
+
+std::optional<int> momentFormatFromName(std::string_view name) {
+    if (name == "16f" || name == "16") return 16;
+    if (name == "32f" || name == "32") return 32;
+    return std::nullopt;
+}
+
+std::string_view momentFormatName(int bits) { return bits == 16 ? "16f" : "32f"; }
+
+float evsmExponentLimit(int momentBits) { return momentBits == 16 ? 5.54f : 42.0f; }
 
 PcfParams makeParams(int method, int kernel, float radius, vec2 rotation) {
     // Member by member: a parameter added to PcfParams starts at zero here without an edit, and
@@ -232,6 +326,12 @@ PcfParams makeParams(int method, int kernel, float radius, vec2 rotation) {
     p.rotation = rotation;
     p.weights = PCF_WEIGHTS_BOX;
     p.sigma = 1.0f;
+    // The moment methods' parameters at the settings' defaults (kernel/settings.h).
+    const ShadowSettings defaults;
+    p.lbr = defaults.lbr;
+    p.minVariance = defaults.minVariance;
+    p.evsmExponents = defaults.evsmExponentsUsed();
+    p.momentBias = defaults.momentBias;
     return p;
 }
 
@@ -273,8 +373,8 @@ std::optional<ParamProblem> checkParams(const PcfParams& prm) {
                        MAX_KERNEL, ")");
     }
     if (!kernelFits(prm.method, prm.kernel)) {
-        return problem("kernel", "tent takes ", " ", kernelSizesText(prm.method), ", not ",
-                       prm.kernel);
+        return problem("kernel", std::string(info.name) + " takes ", " ",
+                       kernelSizesText(prm.method), ", not ", prm.kernel);
     }
     if (info.usesRadius &&
         !(std::isfinite(prm.radius) && prm.radius > 0.0f && prm.radius <= MAX_POISSON_RADIUS)) {
@@ -285,13 +385,28 @@ std::optional<ParamProblem> checkParams(const PcfParams& prm) {
         return problem("", "unknown weights id ", prm.weights);
     }
     if (prm.weights != PCF_WEIGHTS_BOX && !info.takesWeights) {
-        return problem("weights", "", " ", weightsName(prm.weights),
-                       " applies to pcf-naive and pcf-gather, not ", info.name);
+        std::string takers;
+        for (const MethodInfo& m : METHODS) {
+            if (m.takesWeights) takers += (takers.empty() ? "" : ", ") + std::string(m.name);
+        }
+        return problem("weights", "", " ", weightsName(prm.weights), " applies to ", takers,
+                       ", not ", info.name);
     }
     if (prm.weights == PCF_WEIGHTS_GAUSSIAN &&
         !(std::isfinite(prm.sigma) && prm.sigma >= MIN_SIGMA && prm.sigma <= MAX_SIGMA)) {
         return problem("sigma", "", " ", prm.sigma, " is out of range [", MIN_SIGMA, ", ",
                        MAX_SIGMA, "] texels");
+    }
+    // The moment methods' numbers, in their rows' ranges (kernel/settings.cpp PARAMS).
+    const std::pair<const char*, float> momentValues[] = {
+        {"lbr", prm.lbr}, {"min_variance", prm.minVariance}, {"moment_bias", prm.momentBias}};
+    for (const auto& [key, value] : momentValues) {
+        const ParamInfo* row = findParam(key);
+        if (std::isfinite(value) && value >= static_cast<float>(row->min) &&
+            value <= static_cast<float>(row->max)) {
+            continue;
+        }
+        return problem(key, "", " ", value, " is out of range [", row->min, ", ", row->max, "]");
     }
     if (prm.precision != PCF_PRECISION_EXACT && prm.precision != PCF_PRECISION_HW8) {
         return problem("", "unknown precision id ", prm.precision);

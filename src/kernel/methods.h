@@ -15,7 +15,23 @@ namespace pcf {
 // The methods, typed: the kernel's PCF_* ids (shaders/shared/pcf_kernel.h, where GLSL selects
 // by define) as C++ switches on them. Switches over Method have no `default:`, so the compiler
 // names every place a new method must be handled.
-enum class Method { Nearest, Box2x2, Bilinear2x2, Hw2x2, Naive, Gather, Hw, Tent, Poisson, Pcss };
+enum class Method {
+    Nearest,
+    Box2x2,
+    Bilinear2x2,
+    Hw2x2,
+    Naive,
+    Gather,
+    Hw,
+    Tent,
+    Poisson,
+    Pcss,
+    Vsm,
+    Evsm2,
+    Evsm4,
+    Msm,
+    MsmHausdorff
+};
 
 // How a method reads the map: where receiver-plane bias takes each tap's ref (per texel, per
 // gather, per hardware tap), whether soft bias can see the depths (not through the texture
@@ -33,13 +49,15 @@ enum class MethodReach {
 };
 
 // Which pass makes the map a method reads, and so the map's texel kind (mapTexelKind): the
-// light's depth pass (a depth in --depth-format). Switches over MapPass have no `default:`.
-enum class MapPass { Depth };
+// light's depth pass (a depth in --depth-format), or the moments pass after it, which writes 2
+// or 4 filtered moments per texel in --moment-format (16f, 32f). Switches over MapPass have no
+// `default:`.
+enum class MapPass { Depth, Moments2, Moments4 };
 
 // Everything pcfscope says about a method, in its one table entry (methods.cpp). Every question
 // about a method asked outside kernel/methods is a column here, never a comparison of ids.
 struct MethodInfo {
-    int id = 0;                               // PCF_NEAREST .. PCF_PCSS, the kernel's id
+    int id = 0;                               // PCF_NEAREST .. PCF_MSM_HAUSDORFF, the kernel's id
     std::string_view name{};                  // the command line's id, e.g. "pcf-gather"
     std::string_view shortName{};             // the charts' label, e.g. "gather"
     std::string_view summary{};               // one line for `pcfscope methods`
@@ -73,6 +91,11 @@ struct MethodInfo {
     bool overlappingLookups = false;
     MethodReach reach = MethodReach::OneTexel;
     MapPass mapPass = MapPass::Depth;
+    // evsm: how many exponential warps its moments are of (evsm2 1, evsm4 2; 0 for the others):
+    // it takes --evsm-exponents, clamped to the moment format's limit.
+    int warps = 0;
+    // msm: reconstructs a distribution of depths from the moments (its points and weights).
+    bool reconstructs = false;
 
     Method method() const { return static_cast<Method>(id); }
 };
@@ -98,8 +121,19 @@ float poissonSetReach();
 // farthest texel it reads.
 float reachTexels(int method, int kernel, float radius);
 
-// The texel kind of the map `method` reads, made with settings' formats (--depth-format).
-TexelKind mapTexelKind(int method, TexelKind depthFormat);
+// The texel kind of the map `method` reads, made with settings' formats (--depth-format, and
+// --moment-format's bits per channel, 16 or 32).
+TexelKind mapTexelKind(int method, TexelKind depthFormat, int momentBits = 32);
+// Whether `method` reads a moments map (its mapPass is not the depth pass).
+bool readsMoments(int method);
+
+// --moment-format: the moments' float bits per channel by name ("16f" 16, "32f" 32).
+std::optional<int> momentFormatFromName(std::string_view name);
+std::string_view momentFormatName(int bits);
+// The largest EVSM exponent a moment format holds (Lauritzen and McCool 2008's warp exp(c x),
+// x in [-1, 1], and its square, both finite): 42 in 32F (exp(84) < 3.4e38), 5.54 in 16F
+// (exp(11.08) < 65504).
+float evsmExponentLimit(int momentBits);
 
 // What the GPU issues for one lookup: texel reads (every texel any instruction touches, so a
 // hardware tap or a gather counts 4), gathers and hardware taps.

@@ -10,13 +10,14 @@ namespace pcf {
 
 // The map as the batch path sees it, with the texture unit's state the lookup needs.
 inline PlainMap plainMap(const ShadowMap& map, const PcfParams& prm) {
-    return PlainMap{map.depths().data(), map.size(), map.isFixedPoint() ? 1 : 0, prm.precision};
+    return PlainMap{map.depths().data(), map.size(), map.isFixedPoint() ? 1 : 0, prm.precision,
+                    map.spec().texel().channels};
 }
 
 // The map as the tracer sees it, recording into `out`.
 inline RecordingMap recordingMap(const ShadowMap& map, const PcfParams& prm, Recording& out) {
-    return RecordingMap{map.depths().data(), map.size(), &out, map.isFixedPoint() ? 1 : 0,
-                        prm.precision};
+    return RecordingMap{map.depths().data(),        map.size(),    &out,
+                        map.isFixedPoint() ? 1 : 0, prm.precision, map.spec().texel().channels};
 }
 
 // Visibility of one lookup on the CPU, nothing recorded (the batch path).

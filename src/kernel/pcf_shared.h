@@ -16,6 +16,7 @@ using glm::clamp;
 using glm::dot;
 using glm::exp;
 using glm::floor;
+using glm::isnan;
 using glm::ivec2;
 using glm::mat4;
 using glm::max;
@@ -29,11 +30,13 @@ using glm::vec4;
 
 // The map as the batch path sees it: reads depths, records nothing. Cheap to copy.
 // mFixedPoint: 1 for a 16/24-bit map (D_ref clamped to [0,1]); mPrecision: PCF_PRECISION_*.
+// mChannels: floats per texel (1 for a depth map, 2 or 4 for a moments map).
 struct PlainMap {
     const float* mDepths;
     ivec2 mSize;
     int mFixedPoint = 0;
     int mPrecision = 0;
+    int mChannels = 1;
 };
 
 // The map as the tracer sees it: the same reads, and every tap and fetch written down.
@@ -65,7 +68,15 @@ struct RecordingMap {
     Recording* mRecording;
     int mFixedPoint = 0;
     int mPrecision = 0;
+    int mChannels = 1;
 };
+
+// A moments map's texel t as a texture reads it: channels it lacks are GL's (0, 0, 0, 1).
+inline vec4 texelMoments(const float* texels, ivec2 size, int channels, ivec2 t) {
+    const float* p = texels + (static_cast<size_t>(t.y) * size.x + t.x) * channels;
+    return vec4(p[0], channels > 1 ? p[1] : 0.0f, channels > 2 ? p[2] : 0.0f,
+                channels > 3 ? p[3] : 1.0f);
+}
 
 // The hooks pcf_kernel.h reads the map through (see pcf_prelude.h). Texels arrive clamped.
 inline ivec2 mapSize(const PlainMap& m) { return m.mSize; }
@@ -76,6 +87,12 @@ inline int mapPrecision(const PlainMap& m) { return m.mPrecision; }
 inline int mapPrecision(const RecordingMap& m) { return m.mPrecision; }
 inline float fetchDepth(const PlainMap& m, ivec2 t) { return m.mDepths[t.y * m.mSize.x + t.x]; }
 inline float fetchDepth(const RecordingMap& m, ivec2 t) { return m.mDepths[t.y * m.mSize.x + t.x]; }
+inline vec4 fetchMoments(const PlainMap& m, ivec2 t) {
+    return texelMoments(m.mDepths, m.mSize, m.mChannels, t);
+}
+inline vec4 fetchMoments(const RecordingMap& m, ivec2 t) {
+    return texelMoments(m.mDepths, m.mSize, m.mChannels, t);
+}
 inline void pcfTap(const PlainMap&, ivec2, float, float, float, float) {}
 inline void pcfTap(const RecordingMap& m, ivec2 texel, float depth, float ref, float lit,
                    float weight) {
@@ -94,6 +111,8 @@ inline void pcfFetch(const RecordingMap& m, int kind, vec2 uv, float weight) {
 // clang-format off
 #include "shaders/shared/pcf_prelude.h"
 #include "shaders/shared/pcf_kernel.h"
+#include "shaders/shared/pcf_moments.h"
+#include "shaders/shared/pcf_filter.h"
 // clang-format on
 
 }  // namespace pcf

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <span>
 #include <sstream>
 #include <type_traits>
@@ -15,6 +16,12 @@ namespace pcf {
 namespace {
 
 constexpr std::string_view TEXELS = "texels";
+
+// A name function of the table's: the text of a value.
+template <class T, std::string_view (*F)(T)>
+std::string nameOf(T value) {
+    return std::string(F(value));
+}
 constexpr std::string_view DEPTH_UNITS = "light depth units";
 
 // Every mode but none subtracts the constant bias (kernel/bias.h).
@@ -25,7 +32,8 @@ constexpr unsigned BIASED_MODES = ((1u << PCF_BIAS_COUNT) - 1u) & ~biasModeBit(B
 // checkParams. After a row's kernel member come rawJsonMayLack and the bias modes it acts under.
 // clang-format off
 const ParamInfo PARAMS[] = {
-    {"method", NamedField<int>{&ShadowSettings::method, [](int m) { return methodInfo(m).name; },
+    {"method", NamedField<int>{&ShadowSettings::method,
+        [](int m) { return std::string(methodInfo(m).name); },
         methodFromName, methodNameList, "method"}, ParamGroup::Filter, "", "", 0, 0, false,
      "PCF method id (see `pcfscope methods`)", true},
     {"kernel", &ShadowSettings::kernel, ParamGroup::Filter, "", "", MIN_KERNEL, MAX_KERNEL, false,
@@ -42,22 +50,25 @@ const ParamInfo PARAMS[] = {
      MAX_LIGHT_RADIUS, false,
      "pcss, the area-light truth: a spot light's radius in world units (0: the scene light's)",
      true, {}, true},
-    {"weights", NamedField<int>{&ShadowSettings::weights, weightsName, weightsFromName,
+    {"weights", NamedField<int>{&ShadowSettings::weights, nameOf<int, weightsName>, weightsFromName,
         [] { return std::string("box, binomial, gaussian"); }, "weights"}, ParamGroup::Filter,
      "", "", 0, 0, false,
      "pcf-naive, pcf-gather: weights of the N x N lookups: box, binomial, gaussian", true},
     {"sigma", &ShadowSettings::sigma, ParamGroup::Filter, "uSigma", TEXELS, MIN_SIGMA, MAX_SIGMA, false,
      "gaussian weights: standard deviation in texels", true, &PcfParams::sigma},
-    {"precision", NamedField<int>{&ShadowSettings::precision, precisionName, precisionFromName,
+    {"precision", NamedField<int>{&ShadowSettings::precision, nameOf<int, precisionName>,
+        precisionFromName,
         [] { return std::string("exact, hw8"); }, "precision"}, ParamGroup::Filter,
      "", "", 0, 0, false,
      "texel position inside hardware taps and gathers: exact, hw8 (1/256 texel)", true},
-    {"depth_format", NamedField<TexelKind>{&ShadowSettings::depthFormat, depthFormatName,
+    {"depth_format", NamedField<TexelKind>{&ShadowSettings::depthFormat,
+        nameOf<TexelKind, depthFormatName>,
         depthFormatFromName, depthFormatNames, "depth format"},
      ParamGroup::Map, "", "", 0, 0, false, "shadow map depth format", true},
     {"map_size", &ShadowSettings::mapSize, ParamGroup::Map, "", TEXELS, MIN_MAP_SIZE,
      MAX_MAP_SIZE, false, "shadow map size in texels (4..4096)", true, {}, true},
-    {"bias", NamedField<BiasMode>{&ShadowSettings::bias, biasModeName, biasModeFromName,
+    {"bias", NamedField<BiasMode>{&ShadowSettings::bias, nameOf<BiasMode, biasModeName>,
+        biasModeFromName,
         biasNameList, "bias mode"}, ParamGroup::Bias, "", "", 0, 0, false,
      "bias mode (README \"Bias modes\"; every mode but none subtracts --constant-bias)", true,
      {}, true},
@@ -83,14 +94,35 @@ const ParamInfo PARAMS[] = {
      "light depth per uv unit", 0.0, 1.0e9, false,
      "receiver-plane: cap M on each component of dz/duv, light depth per uv unit (the whole map)",
      true, &PcfBias::rpdbMax, true, biasModeBit(BiasMode::ReceiverPlane)},
-    {"cull", NamedField<CullMode>{&ShadowSettings::cull, cullModeName, cullModeFromName,
+    {"cull", NamedField<CullMode>{&ShadowSettings::cull, nameOf<CullMode, cullModeName>,
+        cullModeFromName,
         [] { return std::string(CULL_MODE_NAMES); }, "cull mode"}, ParamGroup::Map, "", "", 0, 0,
      false, "faces culled in the shadow pass: back, front, none", false},
-    {"shading", NamedField<Shading>{&ShadowSettings::shading, shadingName, shadingFromName,
+    {"shading", NamedField<Shading>{&ShadowSettings::shading, nameOf<Shading, shadingName>,
+        shadingFromName,
         [] { return std::string(SHADING_NAMES); }, "shading"}, ParamGroup::View, "uShading", "",
      0, 0, false,
      "what the receivers show: lit (ambient + N.L x visibility) or visibility (alone, 0 black "
      "to 1 white, no N.L)", true, {}, true},
+    {"lbr", &ShadowSettings::lbr, ParamGroup::Filter, "uLbr", "", 0.0, 0.99, false,
+     "vsm, evsm2, evsm4: light-bleeding reduction, the bound's cut (linstep(lbr, 1, p))", true,
+     &PcfParams::lbr, true},
+    {"min_variance", &ShadowSettings::minVariance, ParamGroup::Filter, "uMinVariance",
+     "light depth squared", 0.0, 0.01, false,
+     "vsm, evsm2, evsm4: the variance's floor (the warps' scaled by their slope)", true,
+     &PcfParams::minVariance, true},
+    {"evsm_exponents", NamedField<vec2>{&ShadowSettings::evsmExponents, exponentsText,
+        exponentsFromText, [] { return std::string("POS,NEG, each in (0, 100]"); },
+        "EVSM exponents"}, ParamGroup::Filter, "", "", 0, 0, false,
+     "evsm2, evsm4: the warps' exponents POS,NEG (used up to 42 in 32f, 5.54 in 16f)", true, {},
+     true},
+    {"moment_bias", &ShadowSettings::momentBias, ParamGroup::Filter, "uMomentBias", "", 0.0, 0.5,
+     false, "msm, msm-hausdorff: the moment bias alpha, b' = lerp(b, 0.5, alpha)", true,
+     &PcfParams::momentBias, true},
+    {"moment_format", NamedField<int>{&ShadowSettings::momentBits, nameOf<int, momentFormatName>,
+        momentFormatFromName, [] { return std::string("16f, 32f"); }, "moment format"},
+     ParamGroup::Map, "", "", 0, 0, false,
+     "the moment methods: the moments map's floats, 16f or 32f", true, {}, true},
 };
 // clang-format on
 
@@ -108,7 +140,36 @@ PcfParams ShadowSettings::pcfParams(vec2 rotation, float penumbraScale) const {
     p.weights = weights;
     p.sigma = sigma;
     p.precision = precision;
+    p.lbr = lbr;
+    p.minVariance = minVariance;
+    p.evsmExponents = evsmExponentsUsed();
+    p.momentBias = momentBias;
     return p;
+}
+
+vec2 ShadowSettings::evsmExponentsUsed() const {
+    return glm::min(evsmExponents, vec2(evsmExponentLimit(momentBits)));
+}
+
+std::string exponentsText(vec2 exponents) {
+    return numberText(exponents.x) + "," + numberText(exponents.y);
+}
+
+std::optional<vec2> exponentsFromText(std::string_view text) {
+    size_t comma = text.find(',');
+    if (comma == std::string_view::npos) return std::nullopt;
+    vec2 out(0.0f);
+    for (int k = 0; k < 2; ++k) {
+        std::string part(k == 0 ? text.substr(0, comma) : text.substr(comma + 1));
+        char* end = nullptr;
+        double v = std::strtod(part.c_str(), &end);
+        if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(v) || v <= 0.0 ||
+            v > MAX_EVSM_EXPONENT) {
+            return std::nullopt;
+        }
+        out[k] = static_cast<float>(v);
+    }
+    return out;
 }
 
 std::span<const ParamInfo> allParams() { return PARAMS; }

@@ -45,6 +45,11 @@ std::string depthFormatNames();                                       // "16, 24
 // The depth format after `format` (after the last, the first): the viewer's D key.
 TexelKind nextDepthFormat(TexelKind format);
 
+// --evsm-exponents: "POS,NEG", each a number in (0, MAX_EVSM_EXPONENT].
+constexpr float MAX_EVSM_EXPONENT = 100.0f;
+std::string exponentsText(vec2 exponents);                     // "40,5"
+std::optional<vec2> exponentsFromText(std::string_view text);  // nullopt: not two such numbers
+
 // "none", "constant", "slope", ...: the names of kernel/bias.h, the one table of them.
 std::string_view biasModeName(BiasMode mode);
 std::optional<BiasMode> biasModeFromName(std::string_view name);
@@ -80,6 +85,18 @@ struct ShadowSettings : BiasSettings {
     int mapSize = 1024;              // the shadow map is mapSize x mapSize texels
     CullMode cull = CullMode::Back;  // faces culled in the shadow pass
     Shading shading = Shading::Lit;  // what the camera pass draws (the picture, not the lookup)
+    // The moment methods (vsm .. msm-hausdorff): the light-bleeding reduction, the variance's
+    // floor (light depth squared), the EVSM exponents (positive, negative) as asked (pcfParams
+    // clamps them to evsmExponentLimit), MSM's moment bias, the moments' float bits (16, 32).
+    float lbr = 0.0f;
+    float minVariance = 1.0e-7f;
+    vec2 evsmExponents = vec2(40.0f, 5.0f);
+    float momentBias = 3.0e-5f;
+    int momentBits = 32;
+
+    // The EVSM exponents pcfParams hands the kernel: evsmExponents, each clamped to what
+    // momentBits holds (evsmExponentLimit).
+    vec2 evsmExponentsUsed() const;
 
     // The kernel's parameters; `rotation` is the Poisson disk's (cos, sin), when rotate says so
     // the caller's per-pixel one.
@@ -95,16 +112,17 @@ struct ShadowSettings : BiasSettings {
 template <class T>
 struct NamedField {
     T ShadowSettings::*field;
-    std::string_view (*name)(T value);
+    std::string (*name)(T value);
     std::optional<T> (*fromName)(std::string_view name);
     std::string (*known)();  // "none, constant, ...": every name, for errors and help
     std::string_view noun;
 };
 
 // A parameter's field, by how it is written: a number, a flag (true/false) or a name.
-using ParamField = std::variant<int ShadowSettings::*, float ShadowSettings::*,
-                                bool ShadowSettings::*, NamedField<int>, NamedField<BiasMode>,
-                                NamedField<CullMode>, NamedField<TexelKind>, NamedField<Shading>>;
+using ParamField =
+    std::variant<int ShadowSettings::*, float ShadowSettings::*, bool ShadowSettings::*,
+                 NamedField<int>, NamedField<BiasMode>, NamedField<CullMode>, NamedField<TexelKind>,
+                 NamedField<Shading>, NamedField<vec2>>;
 
 // Which of the command line's option groups a parameter is in (render_options.h). View: what the
 // frame draws of the lookups, which changes no lookup (commands that measure do not take it).

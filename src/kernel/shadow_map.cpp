@@ -131,7 +131,9 @@ std::optional<std::string> ShadowMap::findInvalidTexel() const {
     size_t perLayer = w * static_cast<size_t>(height());
     for (size_t k = 0; k < mTexels.size(); ++k) {
         float d = mTexels[k];
-        if (!std::isnan(d) && !std::isinf(d) && d >= 0.0f && d <= 1.0f) continue;
+        // A depth is in [0, 1]; moments (EVSM's warps) may be any finite number.
+        bool inRange = !mSpec.texel().depth || (d >= 0.0f && d <= 1.0f);
+        if (!std::isnan(d) && !std::isinf(d) && inRange) continue;
         size_t texel = k / channels;
         std::ostringstream s;
         s << "texel (" << texel % w << ", " << (texel % perLayer) / w << ") ";

@@ -101,7 +101,8 @@ class ShadowMap {
     bool isFixedPoint() const { return mSpec.texel().fixedPoint; }
 
     // The first value that is not a depth in [0,1] (NaN, infinite, out of range), described in
-    // words ("texel (3, 4) is NaN"); nullopt when every value is fine. For depth maps.
+    // words ("texel (3, 4) is NaN"); nullopt when every value is fine. A moments map's values
+    // need only be finite.
     std::optional<std::string> findInvalidTexel() const;
 
   private:

@@ -118,6 +118,13 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
             tr.pcss = pcfPcssEstimate(plainMap(map, prm), uv, tr.lookup, prm.penumbraScale,
                                       prm.depthNear, prm.depthFar, prm.rotation);
             break;
+        case Method::Vsm:
+        case Method::Evsm2:
+        case Method::Evsm4:
+        case Method::Msm:
+        case Method::MsmHausdorff:
+            tr.moments = pcfMomentEstimate(plainMap(map, prm), uv, ref, prm);
+            break;
         case Method::Nearest:
         case Method::Box2x2:
         case Method::Bilinear2x2:

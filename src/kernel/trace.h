@@ -47,6 +47,9 @@ enum class TraceStepKind {
     BlockerSearch,        // pcss: the search disk's texels, the blockers and their mean depth
     PenumbraWidth,        // pcss: the penumbra's width from the blocker's depth, the filter radius
     InterpolatedCompare,  // interpolated depth: one comparison against the lerped depth
+    MomentsRead,          // the moment methods: the filtered moments read, mean and variance
+    MomentBound,          // vsm, evsm: Chebyshev's bound (each warp), the light-bleeding cut
+    MomentReconstruct,    // msm: the depths and weights of the reconstructed distribution
     Precision,            // hw8: the texture unit's 1/256 texel steps
     Result,               // the visibility: the last step (box2x2 ends with AverageBits)
 };
@@ -89,6 +92,11 @@ struct Trace {
     // when none blocks and they alone give the visibility, 1), the rest the filter's. Zero
     // otherwise.
     PcfPcssEstimate pcss{0.0f, 0, 0.0f, 0.0f, 0.0f};
+    // The moment methods: what the filtered moments at the lookup say, as the kernel computed
+    // it (pcfMomentEstimate): the moments, mean, variance, the bounds, msm's points and weights.
+    // The exponents used are params.evsmExponents. Zero otherwise.
+    PcfMomentEstimate moments{vec4(0.0f), 0.0f,       0.0f,       0.0f, 0.0f,
+                              0.0f,       vec4(0.0f), vec4(0.0f), 0.0f};
     // The texture unit's precision (issue 10): the lookup's sub-texel fraction as a float and
     // rounded to 1/256 texel (hw8), and the visibility the kernel gives under each model.
     bool usesTextureUnit = false;  // the method issues hardware taps or gathers

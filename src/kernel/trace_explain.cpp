@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "kernel/settings.h"
+#include "kernel/trace_moments.h"
 
 namespace pcf {
 
@@ -54,6 +55,12 @@ const char* stepTitle(TraceStepKind kind) {
             return "Estimate the penumbra's width";
         case TraceStepKind::InterpolatedCompare:
             return "Compare against the interpolated depth";
+        case TraceStepKind::MomentsRead:
+            return "Read the filtered moments";
+        case TraceStepKind::MomentBound:
+            return "Bound the lit fraction";
+        case TraceStepKind::MomentReconstruct:
+            return "Reconstruct the depths";
         case TraceStepKind::Precision:
             return "The texture unit's 256 steps";
         case TraceStepKind::Result:
@@ -102,6 +109,12 @@ const char* stepKindName(TraceStepKind kind) {
             return "penumbra_width";
         case TraceStepKind::InterpolatedCompare:
             return "interpolated_compare";
+        case TraceStepKind::MomentsRead:
+            return "moments_read";
+        case TraceStepKind::MomentBound:
+            return "moment_bound";
+        case TraceStepKind::MomentReconstruct:
+            return "moment_reconstruct";
         case TraceStepKind::Precision:
             return "precision";
         case TraceStepKind::Result:
@@ -760,6 +773,14 @@ std::vector<TraceStep> explainTrace(const Trace& tr) {
             break;
         case Method::Pcss:
             explainPcss(tr, out);
+            break;
+        case Method::Vsm:
+        case Method::Evsm2:
+        case Method::Evsm4:
+        case Method::Msm:
+        case Method::MsmHausdorff:
+            stepTexelPosition(tr, out);
+            for (auto& [kind, text] : momentSteps(tr)) addStep(out, kind, std::move(text));
             break;
     }
     if (tr.usesTextureUnit && tr.params.precision == PCF_PRECISION_HW8) stepPrecision(tr, out);

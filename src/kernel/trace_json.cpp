@@ -145,6 +145,37 @@ Json pcssJson(const Trace& tr) {
             {"search", search}};
 }
 
+// The moment methods: what the filtered moments say (pcfMomentEstimate), and the parameters
+// used: the exponents after the clamp to what the map's floats hold (exponent_limit).
+Json momentsJson(const Trace& tr) {
+    const PcfMomentEstimate& e = tr.moments;
+    int bits = texelKindInfo(tr.map.texels).bits;
+    Json points = Json::array();
+    Json weights = Json::array();
+    bool msm = methodInfo(tr.params.method).reconstructs;
+    // Hausdorff's four-point distribution ends with the depth 1 (pcfHausdorffEstimate).
+    int count = e.points.w == 1.0f ? 4 : 3;
+    for (int k = 0; msm && k < count; ++k) {
+        points.push_back(jsonNumber(e.points[k]));
+        weights.push_back(jsonNumber(e.weights[k]));
+    }
+    return {{"moments",
+             {jsonNumber(e.moments.x), jsonNumber(e.moments.y), jsonNumber(e.moments.z),
+              jsonNumber(e.moments.w)}},
+            {"mean", jsonNumber(e.mean)},
+            {"variance", jsonNumber(e.variance)},
+            {"receiver", jsonNumber(e.receiver)},
+            {"bound", jsonNumber(e.bound)},
+            {"negative_bound", jsonNumber(e.negBound)},
+            {"lbr", jsonNumber(tr.params.lbr)},
+            {"min_variance", jsonNumber(tr.params.minVariance)},
+            {"exponents_used", jsonPair(tr.params.evsmExponents)},
+            {"exponent_limit", jsonNumber(evsmExponentLimit(bits))},
+            {"moment_bias", jsonNumber(tr.params.momentBias)},
+            {"points", points},
+            {"point_weights", weights}};
+}
+
 }  // namespace
 
 Json paramsJson(const ShadowSettings& s, ParamSet which) {
@@ -307,6 +338,7 @@ Json traceJson(const Trace& tr) {
               {"steps", steps}};
     // pcss: the blocker search and the penumbra estimate (its first 16 taps are the search's).
     if (methodInfo(tr.params.method).searchesBlockers) j["pcss"] = pcssJson(tr);
+    if (readsMoments(tr.params.method)) j["moments"] = momentsJson(tr);
     j["map"] = mapSpecJson(tr.map);
     j["layer"] = tr.layer;
     return j;

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <stdexcept>
+#include <tuple>
 
 #include "kernel/methods.h"
 #include "kernel/settings.h"
@@ -20,8 +22,6 @@
 namespace pcf {
 
 namespace {
-
-const ShadowMap& map(const std::map<int, ShadowMap>& maps, int size) { return maps.at(size); }
 
 std::vector<int> methodsOf(const BenchOptions& options) {
     if (!options.methods.empty()) return options.methods;
@@ -257,9 +257,27 @@ class BenchRun {
     ErrorRegions mRegions;
     ErrorRegions mContactRegions;        // the edge band near the casters (contactDistance > 0)
     std::vector<glm::vec4> mCpuLookups;  // receiver pixels the CPU kernel is timed on
-    std::map<int, ShadowMap> mMaps;
+    // What a point's map depends on: its size, and for a method that reads moments the moments
+    // pass's inputs (the method: its texel kind and warp; the blur's kernel and weights). Points
+    // with equal keys read one map.
+    using MapKey = std::tuple<int, int, int, int, float>;
+    static MapKey mapKeyOf(const BenchPoint& p) {
+        if (!readsMoments(p.method)) return {p.mapSize, -1, 0, 0, 0.0f};
+        return {p.mapSize, p.method, p.kernel, p.weights, p.sigma};
+    }
+    ShadowMap mMap;  // the map of mCurrentMap, read back (the lookup pass's, the CPU kernel's)
     GpuLookup mLookupPass;
-    int mCurrentMap = -1;
+    std::optional<MapKey> mCurrentMap;
+
+    // Draws the point's map, unless the map drawn last is the one it reads.
+    void useMap(const BenchPoint& p, const RenderSettings& s) {
+        MapKey key = mapKeyOf(p);
+        if (mCurrentMap == key) return;
+        mRenderer.renderShadowPass(s);
+        mMap = mRenderer.readShadowMap();
+        mLookupPass.setMap(mMap);
+        mCurrentMap = key;
+    }
     std::vector<std::optional<Hit>> mHits;  // the clean masks' surface points, once
     // Clean lit and clean umbra masks per (footprint reach, map size).
     std::map<std::pair<float, int>, std::pair<std::vector<uint8_t>, std::vector<uint8_t>>> mClean;
@@ -293,12 +311,7 @@ class BenchRun {
 
     void measurePoint(BenchRow& row, const BenchPoint& p) {
         RenderSettings s = settingsFor(mOptions, p);
-        if (p.mapSize != mCurrentMap) {
-            mRenderer.renderShadowPass(s);
-            mMaps[p.mapSize] = mRenderer.readShadowMap();
-            mLookupPass.setMap(mMaps[p.mapSize]);
-            mCurrentMap = p.mapSize;
-        }
+        useMap(p, s);
         mRenderer.renderCameraPass(s);
         if (mRegions.compared.empty()) readGeometry();
         std::vector<float> visibility = mRenderer.readVisibility();
@@ -323,9 +336,9 @@ class BenchRun {
         mLookupPass.draw(prm, s.rotate, s.kernelBias());
         if (mOptions.reference) mLookupPass.drawReference(prm);
         finishGpu();
-        row.cpuNsPerPixel = timeCpuKernel(map(mMaps, p.mapSize), mCpuLookups, prm,
-                                          mOptions.cpuPasses, mOptions.cpuThreads)
-                                .nsPerPixel;
+        row.cpuNsPerPixel =
+            timeCpuKernel(mMap, mCpuLookups, prm, mOptions.cpuPasses, mOptions.cpuThreads)
+                .nsPerPixel;
         row.cpuPixels = static_cast<int>(mCpuLookups.size());
         row.texelReads = fetchCounts(p.method, s.kernel).texels;
         if (mContext.onPoint) mContext.onPoint(row, visibility, mRegions);
@@ -404,16 +417,12 @@ class BenchRun {
 
     // One timing round: each point of `order` once, in that order.
     void timeRound(const std::vector<size_t>& order, std::vector<PointSamples>& samples) {
-        mCurrentMap = -1;
+        mCurrentMap.reset();
         for (size_t k : order) {
             const BenchPoint& p = mPoints[k];
             RenderSettings s = settingsFor(mOptions, p);
-            if (p.mapSize != mCurrentMap) {
-                mRenderer.renderShadowPass(s);
-                mLookupPass.setMap(mMaps[p.mapSize]);
-                finishGpu();
-                mCurrentMap = p.mapSize;
-            }
+            useMap(p, s);
+            finishGpu();
             timePoint(s, samples[k]);
         }
     }

@@ -125,9 +125,13 @@ GlTexture createTexture2d(GLenum internalFormat, int width, int height) {
 }
 
 GlTexture createDepthTexture(const ShadowMap& map) {
-    if (!map.spec().texel().depth || map.layers() != 1) {
-        throw std::invalid_argument("createDepthTexture: the map is not one layer of depths");
+    if (map.layers() != 1) {
+        throw std::invalid_argument("createDepthTexture: the map is not one layer");
     }
+    // A moments map: its 2 or 4 floats per texel as RG or RGBA (16F targets round them).
+    static const GLenum MOMENT_FORMATS[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+    int channels = map.spec().texel().channels;
+    GLenum format = map.spec().texel().depth ? GL_DEPTH_COMPONENT : MOMENT_FORMATS[channels - 1];
     GlTexture t = createTexture2d(glTexelFormat(map.spec().texels), map.width(), map.height());
     GLint unpackBuffer = 0;
     GLint alignment = 4;
@@ -136,7 +140,7 @@ GlTexture createDepthTexture(const ShadowMap& map) {
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     // GL takes the first row given as texel row 0, which is ShadowMap's row 0: no flip.
-    glTextureSubImage2D(t.id(), 0, 0, 0, map.width(), map.height(), GL_DEPTH_COMPONENT, GL_FLOAT,
+    glTextureSubImage2D(t.id(), 0, 0, 0, map.width(), map.height(), format, GL_FLOAT,
                         map.depths().data());
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer));
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);

@@ -102,7 +102,8 @@ GlTexture createTexture2d(GLenum internalFormat, int width, int height);
 
 // A depth map as a texture of its texel kind (glTexelFormat: GL_DEPTH_COMPONENT16, 24 or 32F;
 // GL rounds the floats of a fixed-point kind to its integers): depth(i, j) lands in GL texel
-// (i, j), so ShadowMap row 0 is GL texel row 0 (no flip).
+// (i, j), so ShadowMap row 0 is GL texel row 0 (no flip). A moments map likewise, as RG or RGBA
+// 16F or 32F (its kind's glTexelFormat).
 GlTexture createDepthTexture(const ShadowMap& map);
 
 // The sampler behind pcf_prelude.h's uPcfCompare: hardware depth comparison (GL_LEQUAL),

@@ -158,7 +158,14 @@ void writeExr(const std::string& path, int width, int height, int channels,
 }
 
 void writeDepthImage(const std::string& path, const ShadowMap& map) {
-    writeExr(path, map.width(), map.height(), 1, map.depths(), {"Z"});
+    int channels = map.spec().texel().channels;
+    if (channels == 1) {
+        writeExr(path, map.width(), map.height(), 1, map.depths(), {"Z"});
+    } else if (channels == 2) {
+        writeExr(path, map.width(), map.height(), 2, map.depths(), {"M1", "M2"});
+    } else {
+        writeExr(path, map.width(), map.height(), 4, map.depths(), {"M1", "M2", "M3", "M4"});
+    }
 }
 
 namespace {
@@ -344,6 +351,37 @@ ShadowMap readDepthImage(const std::string& path) {
         throw ImageError(path + ": " + *bad);
     }
     return map;
+}
+
+ShadowMap readMapImage(const std::string& path) {
+    int channels = 1;
+    {
+        QuietStderr quiet;
+        channels = openImageInput(path, "texels", "a map")->spec().channels;
+    }
+    if (channels == 1) return readDepthImage(path);
+    if (channels != 2 && channels != 4) {
+        throw ImageError(path + ": has " + std::to_string(channels) +
+                         " channels; a map has 1 (depth), 2 or 4 (moments)");
+    }
+    QuietStderr quiet;
+    std::unique_ptr<OpenImage> in = openImageInput(path, "texels", "a map");
+    const ImageCodecSpec& spec = in->spec();
+    if (!spec.floats) {
+        throw ImageError(path + ": holds " + spec.formatName +
+                         " integers; a moments map holds floats (half or float)");
+    }
+    std::vector<float> texels(static_cast<size_t>(spec.width) * spec.height * channels);
+    // Scanlines in file order, first scanline first: that is ShadowMap's row 0.
+    in->read(path, channels, texels.data());
+    MapSpec map;
+    map.size = {spec.width, spec.height};
+    map.texels = channels == 2 ? TexelKind::Moments2F32 : TexelKind::Moments4F32;
+    ShadowMap out(map, std::move(texels));
+    if (std::optional<std::string> bad = out.findInvalidTexel()) {
+        throw ImageError(path + ": " + *bad);
+    }
+    return out;
 }
 
 std::string outputTarget(const std::string& path) { return resolveLinks(path); }

@@ -75,6 +75,9 @@ struct FloatImage {
 };
 FloatImage readFloatImage(const std::string& path);
 
+// A map image of any kind: a depth map (readDepthImage) or a moments map of 2 or 4 float
+// channels (M1 .. M4, as writeDepthImage writes them), labelled 32F; every value finite.
+ShadowMap readMapImage(const std::string& path);
 bool fileExists(const std::string& path);
 
 // The file a write to `path` replaces: `path`, or where its chain of symbolic links ends. An

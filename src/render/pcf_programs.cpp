@@ -47,6 +47,7 @@ std::string paramUniformsGlsl() {
     out += "uniform PcfMapLayer uPcfMapLayers[PCF_MAP_LAYERS];  // the map's layers (MapSpec)\n";
     out += "uniform float uPenumbraScale;  // pcss: texels of penumbra per unit of light depth\n";
     out += "uniform vec2 uPcssDepthRange;  // pcss: a spot map's near, far; 0: orthographic\n";
+    out += "uniform vec2 uEvsmExponents;  // evsm: the exponents used (clamped to the format)\n";
     out +=
         "PcfParams pcfProgramParams(vec2 rotation) {\n"
         "    PcfParams p;\n"
@@ -55,6 +56,7 @@ std::string paramUniformsGlsl() {
         "    p.weights = PCF_WEIGHTS;\n"
         "    p.rotation = rotation;\n"
         "    p.penumbraScale = uPenumbraScale;\n"
+        "    p.evsmExponents = uEvsmExponents;\n"
         "#if PCF_PERSPECTIVE\n"
         "    p.depthNear = uPcssDepthRange.x;\n"
         "    p.depthFar = uPcssDepthRange.y;\n"
@@ -84,6 +86,7 @@ ParamUniformLocations paramUniformLocations(GLuint program) {
     }
     out.penumbraScale = glGetUniformLocation(program, "uPenumbraScale");
     out.pcssDepthRange = glGetUniformLocation(program, "uPcssDepthRange");
+    out.evsmExponents = glGetUniformLocation(program, "uEvsmExponents");
     out.pcssReciprocals = glGetUniformLocation(program, "uPcssReciprocals");
     return out;
 }
@@ -117,6 +120,8 @@ void setUniformsAt(GLuint program, const ParamUniformLocations& where, const Pcf
                     glProgramUniform1i(program, at, s.*field);
                 } else if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
                     glProgramUniform1i(program, at, s.*field ? 1 : 0);
+                } else if constexpr (std::is_same_v<F, NamedField<vec2>>) {
+                    glProgramUniform2f(program, at, (s.*field.field).x, (s.*field.field).y);
                 } else {
                     glProgramUniform1i(program, at, static_cast<int>(s.*field.field));
                 }
@@ -125,6 +130,7 @@ void setUniformsAt(GLuint program, const ParamUniformLocations& where, const Pcf
     }
     glProgramUniform1f(program, where.penumbraScale, prm.penumbraScale);
     glProgramUniform2f(program, where.pcssDepthRange, prm.depthNear, prm.depthFar);
+    glProgramUniform2f(program, where.evsmExponents, prm.evsmExponents.x, prm.evsmExponents.y);
     glProgramUniform1fv(program, where.pcssReciprocals,
                         static_cast<GLsizei>(std::size(PCF_PCSS_RECIPROCALS)),
                         PCF_PCSS_RECIPROCALS);
@@ -195,7 +201,7 @@ const PcfProgram& PcfProgramCache::get(const PcfVariant& variant) {
     GlProgram program = buildProgram({
         ShaderStage{GL_VERTEX_SHADER, {mVertexFile}, "", {}},
         ShaderStage{GL_FRAGMENT_SHADER,
-                    {"shared/pcf_prelude.h", "shared/pcf_kernel.h", "shared/pcf_shading.h"},
+                    pcfSharedFiles({"shared/pcf_shading.h"}),
                     defines,
                     {{"<parameter uniforms>", paramUniformsGlsl()},
                      {"shaders/" + mFragmentFile, std::string(embeddedShader(mFragmentFile))}}},
@@ -205,10 +211,22 @@ const PcfProgram& PcfProgramCache::get(const PcfVariant& variant) {
         .first->second;
 }
 
+std::vector<std::string> pcfSharedFiles(std::vector<std::string> after) {
+    std::vector<std::string> files = {"shared/pcf_prelude.h", "shared/pcf_kernel.h",
+                                      "shared/pcf_moments.h", "shared/pcf_filter.h"};
+    files.insert(files.end(), after.begin(), after.end());
+    return files;
+}
+
 PcfSamplers createPcfSamplers() { return {createNearestSampler(), createCompareSampler()}; }
 
 void bindShadowMap(GLuint program, GLuint depthTexture, const PcfSamplers& samplers) {
-    glBindTextureUnit(0, depthTexture);
+    bindShadowMap(program, depthTexture, depthTexture, samplers);
+}
+
+void bindShadowMap(GLuint program, GLuint mapTexture, GLuint depthTexture,
+                   const PcfSamplers& samplers) {
+    glBindTextureUnit(0, mapTexture);
     glBindSampler(0, samplers.nearest.id());
     glBindTextureUnit(1, depthTexture);
     glBindSampler(1, samplers.compare.id());

@@ -13,11 +13,15 @@
 
 namespace pcf {
 
+// The shared kernel's files, in the order GLSL needs them (each uses what the ones before it
+// declare; src/kernel/pcf_shared.h includes them so in C++), then `after` (relative to shaders/).
+std::vector<std::string> pcfSharedFiles(std::vector<std::string> after = {});
+
 // Everything that picks which code of the kernel a fragment runs. Each is a define of the
 // program, not a uniform (issue 23): llvmpipe runs every side of a branch on a uniform under a
 // lane mask, so a uniform choice costs the bodies of all its choices on every fragment; as a
 // define the driver folds the choice and keeps one body. One program per variant used.
-//   PCF_METHOD, PCF_KERNEL      the method and N (pcf_kernel.h's pcfFilterRef dispatch)
+//   PCF_METHOD, PCF_KERNEL      the method and N (pcf_filter.h's pcfFilterRef dispatch)
 //   PCF_WEIGHTS                 PCF_WEIGHTS_*: pcf-naive's and pcf-gather's box or weighted path
 //   PCF_PRECISION               PCF_PRECISION_*: the texture unit's model (mapPrecision)
 //   PCF_FIXED_POINT             1 for a 16/24-bit depth map: D_ref clamped (mapFixedPoint)
@@ -73,6 +77,7 @@ struct ParamUniformLocations {
     std::vector<GLint> params;
     GLint penumbraScale = -1;
     GLint pcssDepthRange = -1;
+    GLint evsmExponents = -1;
     GLint pcssReciprocals = -1;  // pcss: the table of 1 / k (pcf_prelude.h)
 };
 ParamUniformLocations paramUniformLocations(GLuint program);
@@ -124,5 +129,9 @@ struct PcfSamplers {
 };
 PcfSamplers createPcfSamplers();
 void bindShadowMap(GLuint program, GLuint depthTexture, const PcfSamplers& samplers);
+// The same with the map the kernel reads apart from the depth texture the comparison sampler
+// takes: a moments map (unit 0, nearest) beside the light's depths (unit 1, compare).
+void bindShadowMap(GLuint program, GLuint mapTexture, GLuint depthTexture,
+                   const PcfSamplers& samplers);
 
 }  // namespace pcf

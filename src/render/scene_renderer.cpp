@@ -83,16 +83,45 @@ void SceneRenderer::setShadowClipFromWorld(const glm::mat4& shadowClipFromWorld)
     mShadowClipFromWorld = shadowClipFromWorld;
 }
 
-void SceneRenderer::ensureShadowTarget(const MapSpec& map) {
-    if (mShadow.framebuffer && mShadow.width == map.size.x && mShadow.height == map.size.y &&
-        mMap.texels == map.texels) {
-        return;
-    }
+void SceneRenderer::ensureShadowTarget(const MapSpec& map, TexelKind depthFormat) {
     if (map.layers.size() != 1) {
         throw std::invalid_argument("the depth pass draws one layer, not " +
                                     std::to_string(map.layers.size()));
     }
-    mShadow = createOffscreenTarget(map.size.x, map.size.y, {}, glTexelFormat(map.texels));
+    if (!mShadow.framebuffer || mShadow.width != map.size.x || mShadow.height != map.size.y ||
+        mShadowDepthFormat != depthFormat) {
+        mShadow = createOffscreenTarget(map.size.x, map.size.y, {}, glTexelFormat(depthFormat));
+        mShadowDepthFormat = depthFormat;
+    }
+    if (map.texel().depth) return;
+    if (!mMoments.framebuffer || mMoments.width != map.size.x || mMoments.height != map.size.y ||
+        mMap.texels != map.texels) {
+        mMoments = createOffscreenTarget(map.size.x, map.size.y, {glTexelFormat(map.texels)});
+    }
+}
+
+GLuint SceneRenderer::mapTexture() const {
+    return mMap.texel().depth ? mShadow.depth.id() : mMoments.colors.front().id();
+}
+
+void SceneRenderer::renderMomentsPass(const RenderSettings& settings) {
+    PcfParams prm = settings.pcfParams();
+    const PcfProgram& program = mMomentsPrograms.get(pcfVariant(prm, false, mMap));
+    GLuint id = program.id();
+    glUseProgram(id);
+    setParamUniforms(program, prm, settings.kernelBias(), &settings);
+    glBindFramebuffer(GL_FRAMEBUFFER, mMoments.framebuffer.id());
+    glViewport(0, 0, mMoments.width, mMoments.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    bindShadowMap(id, mShadow.depth.id(), mSamplers);
+    if (!mEmptyVao) mEmptyVao = createVertexArray();
+    glBindVertexArray(mEmptyVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glBindSampler(0, 0);
+    glBindSampler(1, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 void SceneRenderer::ensureTargets(const RenderSettings& settings) {
@@ -125,7 +154,7 @@ void SceneRenderer::drawObjects(GLuint program, bool castersOnly, bool setMateri
 
 void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
     MapSpec map = shadowMapSpec(mScene, settings, mShadowClipFromWorld);
-    ensureShadowTarget(map);
+    ensureShadowTarget(map, settings.depthFormat);
     mMap = std::move(map);
     ensureTargets(settings);
     glBindFramebuffer(GL_FRAMEBUFFER, mShadow.framebuffer.id());
@@ -157,6 +186,7 @@ void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
     if (offset) glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (!mMap.texel().depth) renderMomentsPass(settings);
 }
 
 void SceneRenderer::renderCameraPass(const RenderSettings& settings) {
@@ -221,7 +251,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform2iv(program, uniform(program, "uPickPixel"), 1, &pickPixel.x);
     glProgramUniform4fv(program, uniform(program, "uPickLookup"), 1, &pickLookup.x);
     glProgramUniform2fv(program, uniform(program, "uPickDzDuv"), 1, &pickDzDuv.x);
-    bindShadowMap(program, mShadow.depth.id(), mSamplers);
+    bindShadowMap(program, mapTexture(), mShadow.depth.id(), mSamplers);
     drawObjects(program, false, true);
     glBindSampler(0, 0);
     glBindSampler(1, 0);
@@ -320,8 +350,6 @@ std::vector<float> SceneRenderer::readRegion(GLenum attachment, glm::ivec2 topLe
 }
 
 // The map the sampler compares against (depth_readback.h), not glGetTextureImage's conversion.
-ShadowMap SceneRenderer::readShadowMap() const {
-    return readSampledDepth(mShadow.depth.id(), mMap);
-}
+ShadowMap SceneRenderer::readShadowMap() const { return readSampledDepth(mapTexture(), mMap); }
 
 }  // namespace pcf

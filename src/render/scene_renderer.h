@@ -105,8 +105,14 @@ class SceneRenderer {
         GLsizei indexCount = 0;
     };
     void ensureTargets(const RenderSettings& settings);
-    // The depth target for `map` (re-created when its size or texel kind change).
-    void ensureShadowTarget(const MapSpec& map);
+    // The depth target for `map` in `depthFormat`, and for a moments map its moments target
+    // (each re-created when its size or texel kind change).
+    void ensureShadowTarget(const MapSpec& map, TexelKind depthFormat);
+    // The moments pass: the depth target's depths into the moments target (moments.frag).
+    void renderMomentsPass(const RenderSettings& settings);
+    // The texture the camera pass reads as its map: the moments target's for a moments map,
+    // else the depth target's.
+    GLuint mapTexture() const;
     std::vector<float> readRegion(GLenum attachment, glm::ivec2 topLeft, glm::ivec2 size) const;
     void drawObjects(GLuint program, bool castersOnly, bool setMaterial);
     // The camera pass into `target`, writing `targets` (scene.frag's PCF_ALL_TARGETS: 0 colour
@@ -125,6 +131,10 @@ class SceneRenderer {
     std::map<std::tuple<int, int, int>, PcfProgramCache> mPrograms;
     PcfSamplers mSamplers;
     OffscreenTarget mShadow;
+    TexelKind mShadowDepthFormat = TexelKind::D32F;  // mShadow's depth format
+    OffscreenTarget mMoments;  // the moments pass's target (moment methods only)
+    PcfProgramCache mMomentsPrograms{"fullscreen.vert", "moments.frag", ""};
+    GlVertexArray mEmptyVao;
     MapSpec mMap;  // what the last depth pass made (the target's size and texel kind)
     OffscreenTarget mFrame;
     OffscreenTarget mTimingFrame;

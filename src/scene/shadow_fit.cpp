@@ -12,7 +12,7 @@ PcfMapLayer shadowMapLayer(const Scene& scene, const glm::mat4& shadowClipFromWo
 MapSpec shadowMapSpec(const Scene& scene, const ShadowSettings& s, const glm::mat4& fit) {
     MapSpec spec;
     spec.size = {s.mapSize, s.mapSize};
-    spec.texels = mapTexelKind(s.method, s.depthFormat);
+    spec.texels = mapTexelKind(s.method, s.depthFormat, s.momentBits);
     spec.layers = {shadowMapLayer(scene, fit, s.mapSize)};
     return spec;
 }
