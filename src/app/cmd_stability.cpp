@@ -447,7 +447,7 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
     writeTextFile((staging.path() / csvName).string(), stabilityCsv(rows));
     writeTextFile((staging.path() / mdName).string(), markdown);
     if (has(options.sweeps, Sweep::Bleed)) {
-        writeTextFile((staging.path() / BLEED_CSV_NAME).string(), bleedCsv(rows));
+        writeTextFile((staging.path() / BLEED_CSV_NAME).string(), bleedCsv(rows, options.base));
     }
     writeCharts(staging.path(), rows, result.images, options.sweeps, chartSize);
     outputs.commitStaged(staging.path(), outDir, finalNames);

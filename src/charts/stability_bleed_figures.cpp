@@ -2,7 +2,7 @@
 #include "charts/stability_bleed_figures.h"
 
 #include <cmath>
-#include <map>
+#include <cstdio>
 #include <utility>
 #include <vector>
 
@@ -36,8 +36,8 @@ std::string bleedSubtitle(std::span<const StabilityRow> rows, double gap,
     }
     return std::string(BLEED_PRESET) + ", gap " + chartTickText(gap) + " between the cards, " +
            "1 degree sun; " + std::to_string(s.frameSize.x) + "x" + std::to_string(s.frameSize.y) +
-           " frame, map " + std::to_string(s.mapSize) + "^2; bias mode " + bias + ", " + s.settings +
-           "\n" + chartRendererLine(s.glRenderer);
+           " frame, map " + std::to_string(s.mapSize) + "^2; bias mode " + bias + ", " +
+           s.settings + "\n" + chartRendererLine(s.glRenderer);
 }
 
 }  // namespace
@@ -64,14 +64,12 @@ LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::stri
     spec.yLabel = "leak: 99th percentile of v over the lower card's clean umbra";
     spec.logY = true;
     spec.yFloor = 1e-4;
-    ChartPanel panel{"a dot: a method's defaults; a line: a setting swept", {}};
-    // A line per method and swept setting, in the rows' order; a method's defaults alone as a
-    // dot when no setting of it was swept.
-    std::map<std::pair<int, int>, bool> swept;
-    for (const BleedPoint& p : points) swept[{p.method, p.kernel}] |= !p.key.empty();
+    ChartPanel panel{"a line per setting swept", {}};
+    // A line per method and swept setting, in the rows' order; a method measured at the run's
+    // settings alone, a dot.
     std::vector<std::pair<std::string, std::vector<const BleedPoint*>>> lines;
     for (const BleedPoint& p : points) {
-        if (p.gap != gap || (p.key.empty() && swept[{p.method, p.kernel}])) continue;
+        if (p.gap != gap) continue;
         std::string label = methodLabel(p.method, p.kernel) + (p.key.empty() ? "" : ", " + p.key);
         if (lines.empty() || lines.back().first != label) lines.push_back({label, {}});
         lines.back().second.push_back(&p);
@@ -81,18 +79,23 @@ LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::stri
         const BleedPoint* under = nullptr;
         std::string values;
         for (const BleedPoint* p : line) {
-            l.points.emplace_back(-p->penumbraError, p->leakP99);
+            // x to a thousandth: the chart's x ticks stand at the points' own values, and
+            // darkening read closer than that says nothing (the CSV keeps every digit).
+            l.points.emplace_back(std::round(-p->penumbraError * 1000.0) / 1000.0, p->leakP99);
             values += (values.empty() ? "" : ", ") + p->value;
             if (!under && p->leakP99 < BLEED_LEAK_TARGET) under = p;
         }
         panel.lines.push_back(std::move(l));
         if (line.front()->key.empty()) continue;
-        std::string note = label + " " + values;
+        // Short lines: the notes stand under the legend, beside the plot.
+        spec.notes.push_back(label + " " + values);
         if (under) {
-            note += "; leak under " + chartTickText(BLEED_LEAK_TARGET) + " from " + under->key +
-                    " " + under->value + ", darkening " + chartTickText(-under->penumbraError);
+            char darkening[32];
+            std::snprintf(darkening, sizeof darkening, "%.2g", -under->penumbraError);
+            spec.notes.push_back("  leak < " + chartTickText(BLEED_LEAK_TARGET) + " from " +
+                                 under->key + " " + under->value);
+            spec.notes.push_back("  at darkening " + std::string(darkening));
         }
-        spec.notes.push_back(note);
     }
     spec.panels.push_back(std::move(panel));
     return spec;

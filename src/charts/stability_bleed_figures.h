@@ -4,7 +4,8 @@
 // (99th percentile, log scale) against how much it darkens the truth's penumbra (the mean of
 // truth - v there): a dot per method at its defaults, and a line through the values of each
 // setting swept for it (light-bleeding reduction: leak falls, darkening grows); the notes name,
-// per line, the first value whose leak is under BLEED_LEAK_TARGET and the darkening it costs.
+// per line, its values, the first whose leak is under BLEED_LEAK_TARGET and the darkening it
+// costs.
 #pragma once
 
 #include <span>

@@ -107,6 +107,12 @@ std::string stabilityMethodName(const StabilityMethod& m);
 constexpr int MIN_STABILITY_FRAME_SIDE = 16;
 constexpr int SHIMMER_STEPS = 32;  // the light's grid moves 1/32 texel per frame
 
+// A setting the bleed sweep sweeps: its key in the settings table and its values as text.
+struct BleedSetting {
+    std::string key;
+    std::vector<std::string> values;
+};
+
 struct StabilityOptions {
     // The extremes of the filters (one texel, a 5x5 footprint) and the biases that differ most;
     // every other method and bias mode runs with --methods / --biases.
@@ -144,6 +150,16 @@ struct StabilityOptions {
     // The bleed sweep's gaps between the stacked cards, world units (presets.h: stacked-cards'
     // gap; its default, 1, is the chart's).
     std::vector<float> bleedGaps{0.25f, 0.5f, 1.0f, 2.0f};
+    // The methods that filter moments, measured by the bleed sweep beside `methods` (the ones
+    // that compare depths), and the settings it sweeps on each method they act for
+    // (kernel/settings.h: paramActsFor), one at a time, the others at the run's values: by
+    // their keys in the settings table and their values as the command line writes them.
+    std::vector<StabilityMethod> bleedMethods{
+        {PCF_VSM, 5}, {PCF_EVSM2, 5}, {PCF_EVSM4, 5}, {PCF_MSM, 5}, {PCF_MSM_HAUSDORFF, 5}};
+    std::vector<BleedSetting> bleedSettings{{"lbr", {"0", "0.1", "0.2", "0.3", "0.4", "0.5"}},
+                                            {"evsm_exponents", {"5,5", "20,5", "40,5", "42,42"}},
+                                            {"moment_bias", {"3e-5", "3e-4", "3e-3"}},
+                                            {"moment_format", {"16f", "32f"}}};
     // The area truth's per-pixel bound for pcss's sweeps (ground_truth.h: targetBound): looser
     // than the bench's 1/512, as the sweeps count pixels by thresholds (1/2, 0.02, 0.98).
     float pcssTruthBound = 1.0f / 64.0f;
@@ -172,7 +188,7 @@ Camera cameraSlidByPixels(const Camera& camera, int frameHeight, float pixels);
 
 // --quick: 160x90 frame, 128 map, 1x1 truth sample, 6 elevations, 3 leak biases, 3 camera frames,
 // 3 depth ranges, 2 or 3 points of each pcss sweep, 2 gaps; the methods nearest and pcf-gather
-// N=3.
+// N=3, and for bleed vsm N=3 over 4 light-bleeding reductions.
 StabilityOptions quickStabilityOptions();
 
 // Why the options cannot run, nullopt when they can: one sentence naming the option list at fault

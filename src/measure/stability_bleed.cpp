@@ -68,6 +68,33 @@ BleedMeasure measureBleed(const std::vector<float>& vis, const GroundTruth& trut
     return m;
 }
 
+// One point of a method: its settings, and the metric's prefix naming the swept setting and its
+// value ("lbr=0.3:"; "" at the run's values).
+struct BleedVariant {
+    RenderSettings settings;
+    std::string prefix;
+};
+
+// Each swept setting that acts for the method at each of its values, the others at the run's;
+// the run's values alone when none acts for it (the options are checked: every key and value is
+// valid).
+std::vector<BleedVariant> bleedVariants(const StabilityOptions& o, const RenderSettings& base) {
+    std::vector<BleedVariant> variants;
+    for (const BleedSetting& swept : o.bleedSettings) {
+        const ParamInfo& p = *findParam(swept.key);
+        if (!paramActsFor(p, base.method)) continue;
+        for (const std::string& value : swept.values) {
+            BleedVariant v{base, swept.key + "=" + value + ":"};
+            if (setParamFromText(v.settings, p, value)) {
+                throw std::invalid_argument("bleed setting " + swept.key + " " + value);
+            }
+            variants.push_back(std::move(v));
+        }
+    }
+    if (variants.empty()) variants.push_back({base, ""});
+    return variants;
+}
+
 }  // namespace
 
 Scene bleedScene(double gap) {
@@ -97,6 +124,17 @@ std::optional<ParamProblem> validateBleedOptions(const StabilityOptions& o) {
                                 " " + exactNumberText(g) + " is out of range (" +
                                     exactNumberText(gap.min) + ".." + exactNumberText(gap.max) +
                                     ")"};
+        }
+    }
+    for (const BleedSetting& swept : o.bleedSettings) {
+        const ParamInfo* p = findParam(swept.key);
+        if (!p) {
+            return ParamProblem{"", "the bleed sweep's setting '" + swept.key + "' is unknown", ""};
+        }
+        if (swept.values.empty()) return ParamProblem{"bleed_settings", "", " is empty"};
+        for (const std::string& value : swept.values) {
+            ShadowSettings s;
+            if (std::optional<ParamProblem> why = setParamFromText(s, *p, value)) return why;
         }
     }
     return std::nullopt;
@@ -132,16 +170,20 @@ class BleedSweeper {
         std::vector<std::optional<Hit>> hits =
             centreHits(scene, mOptions.frameSize, mOptions.threads);
         std::vector<uint8_t> lower = objectUmbra(scene, hits, lowerCard(scene));
-        for (const StabilityMethod& m : mOptions.methods) {
+        std::vector<StabilityMethod> methods = mOptions.methods;
+        methods.insert(methods.end(), mOptions.bleedMethods.begin(), mOptions.bleedMethods.end());
+        for (const StabilityMethod& m : methods) {
             float reach = footprintReachTexels(m, mOptions.base.radius) + 0.5f;
             std::vector<uint8_t> umbra =
                 cleanPixelMask(scene, truth, regions, hits, renderer.shadowClipFromWorld(),
                                mOptions.mapSize, reach, false, mOptions.threads);
             for (size_t k = 0; k < umbra.size(); ++k) umbra[k] = umbra[k] && lower[k];
-            RenderSettings s = settings(m);
-            renderer.renderShadowPass(s);
-            renderer.renderCameraPass(s);
-            add(m, gap, "", measureBleed(renderer.readVisibility(), truth, regions, umbra));
+            for (const BleedVariant& v : bleedVariants(mOptions, settings(m))) {
+                renderer.renderShadowPass(v.settings);
+                renderer.renderCameraPass(v.settings);
+                add(m, gap, v.prefix,
+                    measureBleed(renderer.readVisibility(), truth, regions, umbra));
+            }
         }
     }
 
@@ -211,7 +253,7 @@ std::vector<BleedPoint> bleedPoints(std::span<const StabilityRow> rows) {
     return points;
 }
 
-std::string bleedCsv(std::span<const StabilityRow> rows) {
+std::string bleedCsv(std::span<const StabilityRow> rows, const ShadowSettings& base) {
     std::string out(BLEED_CSV_HEADER);
     out += "\n";
     auto number = [](double v) {
@@ -221,13 +263,18 @@ std::string bleedCsv(std::span<const StabilityRow> rows) {
     };
     for (const BleedPoint& p : bleedPoints(rows)) {
         std::string line = std::string(sweepName(Sweep::Bleed)) + "," +
-                           std::string(methodInfo(p.method).name) + "," +
-                           std::to_string(p.kernel) + "," + number(p.gap);
+                           std::string(methodInfo(p.method).name) + "," + std::to_string(p.kernel) +
+                           "," + number(p.gap);
         for (const BleedColumn& c : BLEED_COLUMNS) {
+            const ParamInfo* param = findParam(c.key);
+            std::string value;
+            if (p.key == c.key) {
+                value = p.value;
+            } else if (param && paramActsFor(*param, p.method)) {
+                value = settingText(*param, base);
+            }
             // A value with a comma (the exponents' POS,NEG) quoted, as CSV has it.
-            bool quote = p.key == c.key && p.value.find(',') != std::string::npos;
-            line += "," + std::string(p.key == c.key ? (quote ? "\"" + p.value + "\"" : p.value)
-                                                       : "");
+            line += "," + (value.find(',') != std::string::npos ? "\"" + value + "\"" : value);
         }
         line += "," + number(p.leakMean) + "," + number(p.leakP99) + "," + number(p.penumbraError);
         out += line + "\n";

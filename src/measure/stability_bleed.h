@@ -1,7 +1,9 @@
 // stability_bleed.h: where filtering the depths mixes two occluders, measured (stability.h's
 // bleed sweep). On the stacked-cards preset (presets.h: a small card above a larger one, the
-// gap between them swept), per method and per value of each setting swept (by its key in the
-// settings table, kernel/settings.h), against the area-light truth (ground_truth.h):
+// gap between them swept), per method (the run's methods and StabilityOptions::bleedMethods) at
+// the run's settings and at each value of each setting swept that acts for it (by its key in the
+// settings table, kernel/settings.h: paramActsFor), against the area-light truth
+// (ground_truth.h):
 //   leak            visibility over the lower card's CLEAN UMBRA: the pixels whose ray toward
 //                   the light's centre hits the lower card (lowerCardUmbra) and that the truth
 //                   calls fully shadowed at the pixel and over the method's whole footprint
@@ -11,7 +13,8 @@
 //   penumbra_error  the mean of v - truth over the truth's penumbra (PCSS_PENUMBRA_LO < truth <
 //                   PCSS_PENUMBRA_HI, compared pixels): negative = darkened.
 // The rows (stability.csv, x_name "gap") carry the setting in the metric's prefix,
-// "KEY=VALUE:leak_mean", none for a method at its defaults; stability_bleed.csv lays them out one
+// "KEY=VALUE:leak_mean", none for a method no swept setting acts for (measured at the run's
+// settings alone); stability_bleed.csv lays them out one
 // line per point (bleedCsv).
 #pragma once
 
@@ -22,6 +25,7 @@
 #include <string_view>
 #include <vector>
 
+#include "kernel/settings.h"
 #include "measure/stability.h"
 
 namespace pcf {
@@ -70,9 +74,10 @@ inline constexpr std::string_view BLEED_CSV_HEADER =
     "sweep,method,kernel,gap,lbr,exponents,moment_bias,moment_format,leak_mean,leak_p99,"
     "penumbra_error";
 
-// The header, then one line per point: the method's name, its kernel (0 for none), the gap, the
-// swept setting's value in its column and the other setting columns empty, the three numbers
-// with 9 significant digits.
-std::string bleedCsv(std::span<const StabilityRow> rows);
+// The header, then one line per point: the method's name, its kernel (0 for none), the gap; in
+// each setting's column the swept value, or the run's (`base`) where the setting acts for the
+// method (kernel/settings.h: paramActsFor), empty where it does not (every setting column of a
+// method that compares depths); the three numbers with 9 significant digits.
+std::string bleedCsv(std::span<const StabilityRow> rows, const ShadowSettings& base);
 
 }  // namespace pcf

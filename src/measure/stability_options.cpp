@@ -32,6 +32,8 @@ StabilityOptions quickStabilityOptions() {
     o.pcssRadii = {1, 4, 16};
     o.pcssTruthBound = 1.0f / 16.0f;
     o.bleedGaps = {0.25f, 1.0f};
+    o.bleedMethods = {{PCF_VSM, 3}};
+    o.bleedSettings = {{"lbr", {"0", "0.2", "0.3", "0.5"}}};
     return o;
 }
 
