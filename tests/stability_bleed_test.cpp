@@ -187,15 +187,35 @@ TEST_F(StabilityBleed, VsmLeaksAtTheDefaultGapUntilTheReductionTheChartNames) {
     EXPECT_NEAR(line->points.front().x, -v("lbr=0:penumbra_error"), 5e-4);
     bool named = false;
     for (const std::string& note : spec.notes) {
-        named = named || note == "  leak < 0.001 from lbr " + cut;
+        named = named || note.starts_with("  leak < 0.001 from " + cut + ", darkening");
     }
     EXPECT_TRUE(named) << "the chart names lbr " << cut;
+    EXPECT_EQ(spec.notes.front(), "vsm 3x3: lbr 0 to 0.5");
 
     // stability_bleed.csv: vsm's lines carry the swept lbr, and the run's moment format where it
     // was not swept; exponents and moment bias do not act for vsm.
     std::string csv = bleedCsv(rows, o.base);
     EXPECT_NE(csv.find("bleed,vsm,3,1,0.3,,,32f,"), std::string::npos) << csv;
     EXPECT_NE(csv.find("bleed,pcf-gather,3,1,,,,,0,0,"), std::string::npos) << csv;
+}
+
+// A setting whose value holds a comma (evsm's exponents POS,NEG) travels through stability.csv
+// as POS;NEG (its fields hold no comma, so the CSV reads back) and comes out of
+// stability_bleed.csv quoted as the command line writes it.
+TEST(StabilityBleedRows, ExponentsKeepTheirCommaOutOfStabilityCsv) {
+    std::vector<StabilityRow> rows;
+    for (const char* metric : {"leak_mean", "leak_p99", "penumbra_error"}) {
+        rows.push_back({"bleed", PCF_EVSM2, 5, "constant", "gap", 1.0,
+                        std::string("evsm_exponents=20;5:") + metric, 0.5});
+    }
+    std::vector<StabilityRow> back = parseStabilityCsv(stabilityCsv(rows), "stability.csv");
+    std::vector<BleedPoint> points = bleedPoints(back);
+    ASSERT_EQ(points.size(), 1u);
+    EXPECT_EQ(points[0].key, "evsm_exponents");
+    EXPECT_EQ(points[0].value, "20,5");
+    std::string csv = bleedCsv(back, ShadowSettings{});
+    EXPECT_NE(csv.find("\nbleed,evsm2,5,1,0,\"20,5\",,32f,0.5,0.5,0.5\n"), std::string::npos)
+        << csv;
 }
 
 }  // namespace

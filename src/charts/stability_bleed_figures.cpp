@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -64,12 +65,15 @@ LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::stri
     spec.yLabel = "leak: 99th percentile of v over the lower card's clean umbra";
     spec.logY = true;
     spec.yFloor = 1e-4;
-    ChartPanel panel{"a line per setting swept", {}};
-    // A line per method and swept setting, in the rows' order; a method measured at the run's
-    // settings alone, a dot.
+    ChartPanel panel{"a line per method over its first setting swept", {}};
+    // A line per method over the first setting swept for it (the sweep's order: the
+    // light-bleeding reduction first; the others are in stability_bleed.csv), in the rows' order;
+    // a method measured at the run's settings alone, a dot.
     std::vector<std::pair<std::string, std::vector<const BleedPoint*>>> lines;
+    std::map<std::pair<int, int>, std::string> firstKey;
     for (const BleedPoint& p : points) {
         if (p.gap != gap) continue;
+        if (firstKey.try_emplace({p.method, p.kernel}, p.key).first->second != p.key) continue;
         std::string label = methodLabel(p.method, p.kernel) + (p.key.empty() ? "" : ", " + p.key);
         if (lines.empty() || lines.back().first != label) lines.push_back({label, {}});
         lines.back().second.push_back(&p);
@@ -77,24 +81,23 @@ LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::stri
     for (const auto& [label, line] : lines) {
         ChartLine l{label, methodInfo(line.front()->method).chartColour, false, {}};
         const BleedPoint* under = nullptr;
-        std::string values;
         for (const BleedPoint* p : line) {
             // x to a thousandth: the chart's x ticks stand at the points' own values, and
             // darkening read closer than that says nothing (the CSV keeps every digit).
             l.points.emplace_back(std::round(-p->penumbraError * 1000.0) / 1000.0, p->leakP99);
-            values += (values.empty() ? "" : ", ") + p->value;
             if (!under && p->leakP99 < BLEED_LEAK_TARGET) under = p;
         }
         panel.lines.push_back(std::move(l));
-        if (line.front()->key.empty()) continue;
+        const BleedPoint& first = *line.front();
+        if (first.key.empty()) continue;
         // Short lines: the notes stand under the legend, beside the plot.
-        spec.notes.push_back(label + " " + values);
+        spec.notes.push_back(methodLabel(first.method, first.kernel) + ": " + first.key + " " +
+                             first.value + " to " + line.back()->value);
         if (under) {
             char darkening[32];
             std::snprintf(darkening, sizeof darkening, "%.2g", -under->penumbraError);
             spec.notes.push_back("  leak < " + chartTickText(BLEED_LEAK_TARGET) + " from " +
-                                 under->key + " " + under->value);
-            spec.notes.push_back("  at darkening " + std::string(darkening));
+                                 under->value + ", darkening " + darkening);
         }
     }
     spec.panels.push_back(std::move(panel));

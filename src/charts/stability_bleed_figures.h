@@ -2,10 +2,10 @@
 // stability_figures.h's sweepCharts: at one gap (the stacked-cards preset's default when the
 // sweep ran it, else the nearest it ran), each method's leak in the lower card's clean umbra
 // (99th percentile, log scale) against how much it darkens the truth's penumbra (the mean of
-// truth - v there): a dot per method at its defaults, and a line through the values of each
-// setting swept for it (light-bleeding reduction: leak falls, darkening grows); the notes name,
-// per line, its values, the first whose leak is under BLEED_LEAK_TARGET and the darkening it
-// costs.
+// truth - v there): a dot per method measured at the run's settings, and a line per method
+// through the values of the first setting swept for it (the light-bleeding reduction where it
+// acts: leak falls, darkening grows); the notes name, per line, its values, the first whose
+// leak is under BLEED_LEAK_TARGET and the darkening it costs.
 #pragma once
 
 #include <span>

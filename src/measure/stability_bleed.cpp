@@ -2,6 +2,7 @@
 // leak in the lower card's clean umbra and the signed error in the truth's penumbra.
 #include "measure/stability_bleed.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
@@ -84,7 +85,10 @@ std::vector<BleedVariant> bleedVariants(const StabilityOptions& o, const RenderS
         const ParamInfo& p = *findParam(swept.key);
         if (!paramActsFor(p, base.method)) continue;
         for (const std::string& value : swept.values) {
-            BleedVariant v{base, swept.key + "=" + value + ":"};
+            // stability.csv's fields hold no comma: the exponents' POS,NEG is written POS;NEG.
+            std::string field = value;
+            std::replace(field.begin(), field.end(), ',', ';');
+            BleedVariant v{base, swept.key + "=" + field + ":"};
             if (setParamFromText(v.settings, p, value)) {
                 throw std::invalid_argument("bleed setting " + swept.key + " " + value);
             }
@@ -240,6 +244,7 @@ std::vector<BleedPoint> bleedPoints(std::span<const StabilityRow> rows) {
         size_t eq = setting.find('=');
         std::string key = eq == std::string::npos ? "" : setting.substr(0, eq);
         std::string value = eq == std::string::npos ? "" : setting.substr(eq + 1);
+        std::replace(value.begin(), value.end(), ';', ',');
         if (metric == LEAK_MEAN) {
             points.push_back({r.method, r.kernel, r.x, key, value, r.y, 0.0, 0.0});
             continue;

@@ -13,9 +13,9 @@
 //   penumbra_error  the mean of v - truth over the truth's penumbra (PCSS_PENUMBRA_LO < truth <
 //                   PCSS_PENUMBRA_HI, compared pixels): negative = darkened.
 // The rows (stability.csv, x_name "gap") carry the setting in the metric's prefix,
-// "KEY=VALUE:leak_mean", none for a method no swept setting acts for (measured at the run's
-// settings alone); stability_bleed.csv lays them out one
-// line per point (bleedCsv).
+// "KEY=VALUE:leak_mean" (a comma in VALUE written ';'), none for a method no swept setting acts for
+// (measured at the run's settings alone); stability_bleed.csv lays them out one line per point
+// (bleedCsv).
 #pragma once
 
 #include <functional>
