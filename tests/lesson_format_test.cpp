@@ -253,7 +253,8 @@ TEST(LessonFormat, UnknownNamesAreRefused) {
     e = errorOf("title = \"T\"\nscene = \"poles\"\n[[step]]\ntitle = \"S\"\ntext = \"x\"\n");
     EXPECT_EQ(e,
               "bad.toml:2: unknown scene preset 'poles' (known: box-on-plane, "
-              "sphere-over-plane, pole, post-in-sun, post-under-spot, grazing, stairs)");
+              "sphere-over-plane, pole, post-in-sun, post-under-spot, grazing, stairs, "
+              "stacked-cards)");
 }
 
 TEST(LessonFormat, ValuesOutOfRangeAreRefused) {

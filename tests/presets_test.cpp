@@ -18,7 +18,7 @@ TEST(Presets, NamesInOrder) {
     std::vector<std::string_view> names = presetNames();
     std::vector<std::string_view> expected = {"box-on-plane", "sphere-over-plane", "pole",
                                               "post-in-sun",  "post-under-spot",   "grazing",
-                                              "stairs"};
+                                              "stairs",       "stacked-cards"};
     EXPECT_EQ(names, expected);
     EXPECT_FALSE(presetScene("no-such-scene"));
     EXPECT_FALSE(presetSceneToml("no-such-scene"));
@@ -143,6 +143,44 @@ TEST(Presets, EachShowsWhatItIsFor) {
     FrameStats st = frameStats(stairs);
     EXPECT_GE(st.shadowedObjects.size(), 3u);
     EXPECT_GE(st.shadowHeights.size(), 3u);
+}
+
+// stacked-cards' gap: the upper card's underside that far above the lower card's top, on the
+// light's ray through the lower card's centre (so its shadow stays put); the default is the
+// preset's own.
+TEST(Presets, StackedCardsGapLiftsTheUpperCardAlongTheLight) {
+    ASSERT_EQ(presetParams("stacked-cards").size(), 1u);
+    const PresetParam& gap = presetParams("stacked-cards").front();
+    EXPECT_EQ(gap.key, "gap");
+    EXPECT_TRUE(presetParams("pole").empty());
+    for (double g : {gap.min, 0.4, gap.defaultValue, gap.max}) {
+        SCOPED_TRACE(g);
+        const double values[] = {g};
+        Scene scene = *presetScene("stacked-cards", values);
+        const Box& lower = std::get<Box>(objectNamed(scene, "lower-card").shape);
+        const Box& upper = std::get<Box>(objectNamed(scene, "upper-card").shape);
+        float clear =
+            (upper.centreWs.y - upper.halfExtents.y) - (lower.centreWs.y + lower.halfExtents.y);
+        EXPECT_NEAR(clear, g, 1e-5);
+        glm::vec3 along =
+            glm::cross(upper.centreWs - lower.centreWs, glm::normalize(scene.light.directionWs));
+        EXPECT_LT(glm::length(along), 1e-5f);
+        // Two thin squares, the upper one smaller: its edges throw their shadow inside the
+        // lower card's.
+        EXPECT_EQ(lower.halfExtents.x, lower.halfExtents.z);
+        EXPECT_EQ(upper.halfExtents.x, upper.halfExtents.z);
+        EXPECT_LT(upper.halfExtents.x, lower.halfExtents.x);
+        EXPECT_LT(lower.halfExtents.y, 0.05f * lower.halfExtents.x);
+        EXPECT_GT(scene.camera.farZ, scene.camera.nearZ);
+    }
+    Scene byDefault = *presetScene("stacked-cards");
+    const double values[] = {gap.defaultValue};
+    EXPECT_EQ(std::get<Box>(objectNamed(byDefault, "upper-card").shape).centreWs,
+              std::get<Box>(objectNamed(*presetScene("stacked-cards", values), "upper-card").shape)
+                  .centreWs);
+    const double outside[] = {gap.max * 2.0};
+    EXPECT_THROW(presetScene("stacked-cards", outside), std::invalid_argument);
+    EXPECT_THROW(presetScene("stacked-cards", std::span<const double>{}), std::invalid_argument);
 }
 
 TEST(Presets, FormatRoundTripsEveryPreset) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "glm_expect.h"
+#include "scene/presets.h"
 
 namespace pcf {
 namespace {
@@ -409,6 +410,58 @@ TEST(SceneFile, InputErrorIsARuntimeError) {
     // One line always: a newline in the problem (or a file name) is written \n (oneLine).
     EXPECT_STREQ(InputError("x.toml", 2, "two\nlines").what(), "x.toml:2: two\\nlines");
     EXPECT_STREQ(InputError("a\tb.toml", 0, "x").what(), "a\\tb.toml: x");
+}
+
+}  // namespace
+}  // namespace pcf
+
+namespace pcf {
+namespace {
+
+std::string presetFileError(const std::string& text) {
+    try {
+        parseSceneString(text, "cards.toml");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+// A scene file may be a preset with its numbers: [preset] name and gap set stacked-cards'
+// gap; a number out of range, an unknown one, an unknown preset, or other scene tables beside
+// it are refused with one line saying where.
+TEST(SceneFile, APresetTableSetsThePresetsNumbers) {
+    Scene scene = parseSceneString("[preset]\nname = \"stacked-cards\"\ngap = 0.3\n", "cards.toml");
+    const double values[] = {0.3};
+    Scene expected = *presetScene("stacked-cards", values);
+    EXPECT_EQ(scene.name, "cards.toml");
+    ASSERT_EQ(scene.objects.size(), expected.objects.size());
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        EXPECT_EQ(bounds(scene.objects[i].shape).minWs, bounds(expected.objects[i].shape).minWs);
+        EXPECT_EQ(bounds(scene.objects[i].shape).maxWs, bounds(expected.objects[i].shape).maxWs);
+    }
+    // Without gap: the preset's default.
+    Scene plain = parseSceneString("[preset]\nname = \"stacked-cards\"\n", "cards.toml");
+    EXPECT_EQ(bounds(plain.objects.back().shape).minWs,
+              bounds(presetScene("stacked-cards")->objects.back().shape).minWs);
+
+    EXPECT_EQ(presetFileError("[preset]\nname = \"stacked-cards\"\ngap = 5\n"),
+              "cards.toml:3: stacked-cards gap must be in [0.05, 2] world units, got 5");
+    EXPECT_EQ(presetFileError("[preset]\nname = \"stacked-cards\"\ngap = \"wide\"\n"),
+              "cards.toml:3: preset gap must be a number, got string");
+    EXPECT_EQ(presetFileError("[preset]\nname = \"stacked-cards\"\n\nspace = 1\n"),
+              "cards.toml:4: preset stacked-cards has no parameter 'space' (it takes gap)");
+    EXPECT_EQ(presetFileError("[preset]\nname = \"pole\"\ngap = 1\n"),
+              "cards.toml:3: preset pole has no parameter 'gap' (it takes none)");
+    EXPECT_EQ(presetFileError("[preset]\nname = \"cards\"\n").substr(0, 41),
+              "cards.toml:2: unknown preset 'cards' (kno");
+    EXPECT_EQ(presetFileError("[preset]\ngap = 1\n"),
+              "cards.toml:1: preset is missing required key 'name'");
+    EXPECT_EQ(presetFileError("preset = 1\n"),
+              "cards.toml:1: preset must be a table ([preset]), got integer");
+    EXPECT_EQ(presetFileError("[preset]\nname = \"pole\"\n[light]\ntype = \"spot\"\n"),
+              "cards.toml:3: a scene file with [preset] takes no light table (the preset has its "
+              "own)");
 }
 
 }  // namespace

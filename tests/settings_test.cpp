@@ -373,5 +373,26 @@ TEST(ParameterTable, ATracesBiasIsTheTablesBiasRows) {
     EXPECT_EQ(j["normal_offset"].number, 1.5);
 }
 
+// The moment methods' parameters act for the methods that read them (the bleed sweep sweeps a
+// setting only there): the light-bleeding reduction and the variance's floor for the Chebyshev
+// bound's three, the exponents for evsm's two, the moment bias for msm's two, the moment format
+// for all five; the other parameters for every method.
+TEST(ParameterTable, EachMomentParameterActsForTheMethodsThatReadIt) {
+    auto actsFor = [](const char* key) {
+        std::set<std::string> names;
+        for (const MethodInfo& m : allMethods()) {
+            if (paramActsFor(*findParam(key), m.id)) names.insert(std::string(m.name));
+        }
+        return names;
+    };
+    using Names = std::set<std::string>;
+    EXPECT_EQ(actsFor("lbr"), (Names{"vsm", "evsm2", "evsm4"}));
+    EXPECT_EQ(actsFor("min_variance"), (Names{"vsm", "evsm2", "evsm4"}));
+    EXPECT_EQ(actsFor("evsm_exponents"), (Names{"evsm2", "evsm4"}));
+    EXPECT_EQ(actsFor("moment_bias"), (Names{"msm", "msm-hausdorff"}));
+    EXPECT_EQ(actsFor("moment_format"), (Names{"vsm", "evsm2", "evsm4", "msm", "msm-hausdorff"}));
+    EXPECT_EQ(actsFor("constant_bias").size(), allMethods().size());
+}
+
 }  // namespace
 }  // namespace pcf

@@ -9,6 +9,8 @@
 //   stability_shimmer.png  shimmer at the shadow edges per method and bias
 //   stability_precision.png false-shadow rate against the light's depth range, per format
 //   aliasing_heatmap.png   screen pixels per shadow-map texel over the frame, with its scale
+//   stability_bleed.csv    the bleed sweep's points, one line each (stability_bleed.h: bleedCsv)
+//   stability_bleed.png    leak against penumbra darkening on stacked-cards
 // (a chart only when its sweep ran). `stability --replot CSV -o DIR` measures nothing: it draws
 // the charts of an existing stability.csv into DIR (at --chart-size), every chart whose sweep has
 // rows, all but the heat map (an image, not in the CSV). As `bench` does, everything is written
@@ -39,6 +41,7 @@
 #include "kernel/settings.h"
 #include "measure/ground_truth.h"
 #include "measure/stability.h"
+#include "measure/stability_bleed.h"
 #include "measure/stability_report.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
@@ -217,6 +220,7 @@ std::vector<std::string> outputNames(const std::vector<Sweep>& sweeps) {
     std::vector<std::string> names = {"stability.csv", "stability.md"};
     for (const std::string& chart : chartNames(sweeps)) names.push_back(chart);
     if (has(sweeps, Sweep::Aliasing)) names.push_back("aliasing_heatmap.png");
+    if (has(sweeps, Sweep::Bleed)) names.emplace_back(BLEED_CSV_NAME);
     return names;
 }
 
@@ -286,6 +290,10 @@ WorkEstimate stabilityEstimate(const StabilityOptions& s) {
             case Sweep::PcssBias:
                 frames += 4.0 * (n(s.pcssPoleWidths) + n(s.pcssRadii));
                 truths += AREA_TRUTH_FACTOR * 4.0;
+                break;
+            case Sweep::Bleed:
+                frames += n(s.bleedGaps) * (m + 1.0);
+                truths += AREA_TRUTH_FACTOR * n(s.bleedGaps);
                 break;
         }
     }
@@ -438,6 +446,9 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
     std::string markdown = stabilityMarkdown(rows, setup, options.base.constantBias);
     writeTextFile((staging.path() / csvName).string(), stabilityCsv(rows));
     writeTextFile((staging.path() / mdName).string(), markdown);
+    if (has(options.sweeps, Sweep::Bleed)) {
+        writeTextFile((staging.path() / BLEED_CSV_NAME).string(), bleedCsv(rows, options.base));
+    }
     writeCharts(staging.path(), rows, result.images, options.sweeps, chartSize);
     outputs.commitStaged(staging.path(), outDir, finalNames);
     std::fputs(markdown.c_str(), stdout);

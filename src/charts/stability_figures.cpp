@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "charts/chart_axes.h"
+#include "charts/stability_bleed_figures.h"
 #include "charts/stability_pcss_figures.h"
 #include "kernel/methods.h"
 #include "measure/failure_measures.h"
@@ -496,6 +497,8 @@ constexpr SweepChart SWEEP_CHARTS[] = {
      lineTexts<pcssNoiseChartSpec>, linePoints<pcssNoiseChartSpec>},
     {Sweep::PcssBias, "stability_pcss_bias.png", drawPcssSweepChart<pcssBiasChartSpec>,
      lineTexts<pcssBiasChartSpec>, linePoints<pcssBiasChartSpec>},
+    {Sweep::Bleed, "stability_bleed.png", drawPcssSweepChart<bleedChartSpec>,
+     lineTexts<bleedChartSpec>, linePoints<bleedChartSpec>},
 };
 
 }  // namespace

@@ -27,9 +27,20 @@ constexpr std::string_view DEPTH_UNITS = "light depth units";
 // Every mode but none subtracts the constant bias (kernel/bias.h).
 constexpr unsigned BIASED_MODES = ((1u << PCF_BIAS_COUNT) - 1u) & ~biasModeBit(BiasMode::None);
 
+// What the moment methods' own parameters act for, asked of the methods' table entries: the
+// Chebyshev bound's (moments read without a reconstruction: vsm, evsm2, evsm4), the warps' (evsm),
+// the reconstruction's (msm) and the moments map's (every moment method).
+bool boundsByChebyshev(const MethodInfo& m) {
+    return m.mapPass != MapPass::Depth && !m.reconstructs;
+}
+bool warpsDepths(const MethodInfo& m) { return m.warps > 0; }
+bool reconstructsDepths(const MethodInfo& m) { return m.reconstructs; }
+bool readsMomentsMap(const MethodInfo& m) { return m.mapPass != MapPass::Depth; }
+
 // The one parameter table (settings.h ParamInfo). Ranges are the named limits of methods.h and
 // this header, checked by paramRangeProblem; what depends on the method (tent's sizes) by
-// checkParams. After a row's kernel member come rawJsonMayLack and the bias modes it acts under.
+// checkParams. After a row's kernel member come rawJsonMayLack, the bias modes it acts under and
+// the methods it acts for.
 // clang-format off
 const ParamInfo PARAMS[] = {
     {"method", NamedField<int>{&ShadowSettings::method,
@@ -106,23 +117,24 @@ const ParamInfo PARAMS[] = {
      "to 1 white, no N.L) or cascades (lit, tinted by the cascade read)", true, {}, true},
     {"lbr", &ShadowSettings::lbr, ParamGroup::Filter, "uLbr", "", 0.0, 0.99, false,
      "vsm, evsm2, evsm4: light-bleeding reduction, the bound's cut (linstep(lbr, 1, p))", true,
-     &PcfParams::lbr, true},
+     &PcfParams::lbr, true, 0, boundsByChebyshev},
     {"min_variance", &ShadowSettings::minVariance, ParamGroup::Filter, "uMinVariance",
      "light depth squared", 0.0, 0.01, false,
      "vsm, evsm2, evsm4: the variance's floor (the warps' scaled by their slope)", true,
-     &PcfParams::minVariance, true},
+     &PcfParams::minVariance, true, 0, boundsByChebyshev},
     {"evsm_exponents", NamedField<vec2>{&ShadowSettings::evsmExponents, exponentsText,
         exponentsFromText, [] { return std::string("POS,NEG, each in (0, 100]"); },
         "EVSM exponents"}, ParamGroup::Filter, "", "", 0, 0, false,
      "evsm2, evsm4: the warps' exponents POS,NEG (used up to 42 in 32f, 5.54 in 16f)", true, {},
-     true},
+     true, 0, warpsDepths},
     {"moment_bias", &ShadowSettings::momentBias, ParamGroup::Filter, "uMomentBias", "", 0.0, 0.5,
      false, "msm, msm-hausdorff: the moment bias alpha, b' = lerp(b, 0.5, alpha)", true,
-     &PcfParams::momentBias, true},
+     &PcfParams::momentBias, true, 0, reconstructsDepths},
     {"moment_format", NamedField<int>{&ShadowSettings::momentBits, nameOf<int, momentFormatName>,
         momentFormatFromName, [] { return std::string("16f, 32f"); }, "moment format"},
      ParamGroup::Map, "", "", 0, 0, false,
-     "the moment methods: the moments map's floats, 16f or 32f", true, {}, true},
+     "the moment methods: the moments map's floats, 16f or 32f", true, {}, true, 0,
+     readsMomentsMap},
     {"cascades", &ShadowSettings::cascades, ParamGroup::Map, "", "", 1, MAX_CASCADES, false,
      "directional light: cascades of the map, 1..4 (1: one map over the whole scene)", true, {},
      true},

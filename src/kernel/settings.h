@@ -172,6 +172,10 @@ struct ParamInfo {
     // parameters that are no bias's. The trace's words, the status line and `verify` ask it
     // which parameters a mode reads.
     unsigned biasModes = 0;
+    // The methods it acts for, a question to their table entries (methods.h); nullptr for a
+    // parameter of every method (what is looked up, the map, the bias). The moment methods' own
+    // parameters answer it (the bleed sweep sweeps a setting only where it acts).
+    bool (*actsFor)(const MethodInfo& method) = nullptr;
 };
 
 // A bias mode's bit in ParamInfo::biasModes.
@@ -179,6 +183,11 @@ constexpr unsigned biasModeBit(BiasMode mode) { return 1u << static_cast<unsigne
 // Whether parameter p acts under bias mode `mode` (its biasModes column).
 inline bool paramActsUnder(const ParamInfo& p, BiasMode mode) {
     return (p.biasModes & biasModeBit(mode)) != 0;
+}
+
+// Whether parameter p acts for kernel id `method` (its actsFor column).
+inline bool paramActsFor(const ParamInfo& p, int method) {
+    return !p.actsFor || p.actsFor(methodInfo(method));
 }
 
 // Every parameter, in the order the JSON sidecars write them.

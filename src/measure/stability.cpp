@@ -12,6 +12,7 @@
 #include "measure/error_metrics.h"
 #include "measure/failure_measures.h"
 #include "measure/ground_truth.h"
+#include "measure/stability_bleed.h"
 #include "measure/stability_pcss.h"
 #include "render/scene_renderer.h"
 #include "scene/camera.h"
@@ -57,6 +58,9 @@ class Sweeper {
             case Sweep::PcssNoise:
             case Sweep::PcssBias:
                 runPcssSweep(sweep, mOptions, *mContext.scene, mContext.progress, result.rows);
+                break;
+            case Sweep::Bleed:
+                runBleedSweep(mOptions, mContext.progress, result.rows);
                 break;
         }
     }
@@ -555,6 +559,8 @@ std::string_view sweepName(Sweep sweep) {
             return "aliasing";
         case Sweep::PcssBias:
             return "pcss-bias";
+        case Sweep::Bleed:
+            return "bleed";
     }
     return "";  // not reached: the switch names every sweep (the compiler checks it)
 }
@@ -569,7 +575,7 @@ std::optional<Sweep> sweepFromName(std::string_view name) {
 std::vector<Sweep> allSweeps() {
     return {Sweep::Acne,      Sweep::Leak,     Sweep::Tradeoff, Sweep::Shimmer,
             Sweep::Precision, Sweep::Aliasing, Sweep::PcssThin, Sweep::PcssOverlap,
-            Sweep::PcssNoise, Sweep::PcssBias};
+            Sweep::PcssNoise, Sweep::PcssBias, Sweep::Bleed};
 }
 
 std::string sweepNameList() {

@@ -1,6 +1,7 @@
 // stability.h: where shadow-map filtering fails, measured. Six sweeps, each a curve of numbers
 // against the exact ground truth (ground_truth.h), for any list of methods and bias modes, and
-// four of pcss's own (stability_pcss.h: pcss-thin, pcss-overlap, pcss-noise, pcss-bias):
+// four of pcss's own (stability_pcss.h: pcss-thin, pcss-overlap, pcss-noise, pcss-bias), and
+// light bleeding on two stacked occluders (stability_bleed.h: bleed):
 //
 //   acne       the light's elevation swept from 90 down to 2 degrees over the scene; the
 //              false-shadow rate = share of the CLEAN LIT pixels where visibility < 0.99, and the
@@ -77,10 +78,12 @@ enum class Sweep {
     PcssOverlap,
     PcssNoise,
     PcssBias,
+    // light bleeding on stacked cards (stability_bleed.h)
+    Bleed,
 };
 
 // "acne", "leak", "tradeoff", "shimmer", "precision", "aliasing", "pcss-thin", "pcss-overlap",
-// "pcss-noise", "pcss-bias"
+// "pcss-noise", "pcss-bias", "bleed"
 std::string_view sweepName(Sweep sweep);
 std::optional<Sweep> sweepFromName(std::string_view name);
 std::vector<Sweep> allSweeps();
@@ -103,6 +106,12 @@ std::string stabilityMethodName(const StabilityMethod& m);
 // The smallest frame side the sweeps accept (the CLI states it in --size's help).
 constexpr int MIN_STABILITY_FRAME_SIDE = 16;
 constexpr int SHIMMER_STEPS = 32;  // the light's grid moves 1/32 texel per frame
+
+// A setting the bleed sweep sweeps: its key in the settings table and its values as text.
+struct BleedSetting {
+    std::string key;
+    std::vector<std::string> values;
+};
 
 struct StabilityOptions {
     // The extremes of the filters (one texel, a 5x5 footprint) and the biases that differ most;
@@ -138,6 +147,19 @@ struct StabilityOptions {
     std::vector<float> pcssLightSizes{1, 2, 4, 8};
     std::vector<float> pcssRadii{1, 2, 4, 8, 16};
     float pcssBiasElevation = 87.0f;
+    // The bleed sweep's gaps between the stacked cards, world units (presets.h: stacked-cards'
+    // gap; its default, 1, is the chart's).
+    std::vector<float> bleedGaps{0.25f, 0.5f, 1.0f, 2.0f};
+    // The methods that filter moments, measured by the bleed sweep beside `methods` (the ones
+    // that compare depths), and the settings it sweeps on each method they act for
+    // (kernel/settings.h: paramActsFor), one at a time, the others at the run's values: by
+    // their keys in the settings table and their values as the command line writes them.
+    std::vector<StabilityMethod> bleedMethods{
+        {PCF_VSM, 5}, {PCF_EVSM2, 5}, {PCF_EVSM4, 5}, {PCF_MSM, 5}, {PCF_MSM_HAUSDORFF, 5}};
+    std::vector<BleedSetting> bleedSettings{{"lbr", {"0", "0.1", "0.2", "0.3", "0.4", "0.5"}},
+                                            {"evsm_exponents", {"5,5", "20,5", "40,5", "42,42"}},
+                                            {"moment_bias", {"3e-5", "3e-4", "3e-3"}},
+                                            {"moment_format", {"16f", "32f"}}};
     // The area truth's per-pixel bound for pcss's sweeps (ground_truth.h: targetBound): looser
     // than the bench's 1/512, as the sweeps count pixels by thresholds (1/2, 0.02, 0.98).
     float pcssTruthBound = 1.0f / 64.0f;
@@ -165,7 +187,8 @@ glm::mat4 shimmerShadowFit(const glm::mat4& fitted, int mapSize, int frame, bool
 Camera cameraSlidByPixels(const Camera& camera, int frameHeight, float pixels);
 
 // --quick: 160x90 frame, 128 map, 1x1 truth sample, 6 elevations, 3 leak biases, 3 camera frames,
-// 3 depth ranges, 2 or 3 points of each pcss sweep; the methods nearest and pcf-gather N=3.
+// 3 depth ranges, 2 or 3 points of each pcss sweep, 2 gaps; the methods nearest and pcf-gather
+// N=3, and for bleed vsm N=3 over 4 light-bleeding reductions.
 StabilityOptions quickStabilityOptions();
 
 // Why the options cannot run, nullopt when they can: one sentence naming the option list at fault

@@ -8,6 +8,7 @@
 #include "kernel/methods.h"
 #include "measure/ground_truth.h"
 #include "measure/stability.h"
+#include "measure/stability_bleed.h"
 #include "measure/stability_pcss.h"
 #include "scene/presets.h"
 
@@ -30,6 +31,9 @@ StabilityOptions quickStabilityOptions() {
     o.pcssLightSizes = {2, 8};
     o.pcssRadii = {1, 4, 16};
     o.pcssTruthBound = 1.0f / 16.0f;
+    o.bleedGaps = {0.25f, 1.0f};
+    o.bleedMethods = {{PCF_VSM, 3}};
+    o.bleedSettings = {{"lbr", {"0", "0.2", "0.3", "0.5"}}};
     return o;
 }
 
@@ -135,7 +139,8 @@ std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) 
             return plain("aliasing map size " + std::to_string(size) + " is out of range");
         }
     }
-    return validatePcssSweepOptions(o);
+    if (std::optional<ParamProblem> p = validatePcssSweepOptions(o)) return p;
+    return validateBleedOptions(o);
 }
 
 }  // namespace pcf

@@ -391,6 +391,7 @@ void runPcssSweep(Sweep sweep, const StabilityOptions& options, const Scene& sce
         case Sweep::Shimmer:
         case Sweep::Precision:
         case Sweep::Aliasing:
+        case Sweep::Bleed:
             throw std::invalid_argument("runPcssSweep: not a pcss sweep");
     }
     rows.insert(rows.end(), sweeper.rows.begin(), sweeper.rows.end());

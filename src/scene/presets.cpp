@@ -1,5 +1,9 @@
 #include "scene/presets.h"
 
+#include <glm/glm.hpp>
+#include <stdexcept>
+#include <variant>
+
 #include "scene/scene_file.h"
 
 namespace pcf {
@@ -9,7 +13,34 @@ namespace {
 struct Preset {
     std::string_view name;
     std::string_view toml;
+    // The numbers a scene file's [preset] table may set, and what sets them on the parsed scene
+    // (one value per parameter, in order, each in its range); none for most presets.
+    std::span<const PresetParam> params{};
+    void (*apply)(Scene& scene, std::span<const double> values) = nullptr;
 };
+
+Box& boxNamed(Scene& scene, std::string_view name) {
+    for (SceneObject& o : scene.objects) {
+        if (o.name == name) return std::get<Box>(o.shape);
+    }
+    throw std::logic_error("preset has no box named " + std::string(name));
+}
+
+constexpr PresetParam STACKED_CARDS_PARAMS[] = {
+    {"gap", 1.0, 0.05, 2.0, "world units",
+     "the clear height between the lower card's top and the upper card's underside"},
+};
+
+// stacked-cards' gap: the upper card's underside `gap` above the lower card's top, its centre
+// on the light's ray through the lower card's centre (moved along the light, so its shadow on
+// the ground stays put).
+void placeUpperCard(Scene& scene, std::span<const double> values) {
+    const Box& lower = boxNamed(scene, "lower-card");
+    Box& upper = boxNamed(scene, "upper-card");
+    float rise = lower.halfExtents.y + static_cast<float>(values[0]) + upper.halfExtents.y;
+    glm::vec3 toLight = -glm::normalize(scene.light.directionWs);
+    upper.centreWs = lower.centreWs + toLight * (rise / toLight.y);
+}
 
 // Every camera frames its shadow in a 16:9 image. The light directions are given as the way the
 // light travels; the angle from the ground's normal is acos(-direction.y / |direction|).
@@ -243,6 +274,46 @@ centre = [0.9, 0.6, 0.0]
 half = [0.3, 0.6, 1.0]
 colour = [0.75, 0.55, 0.4]
 )"},
+    {"stacked-cards",
+     R"(# Two thin square cards, the upper one smaller, centred over the lower one along the light,
+# over the ground; the sun 45 degrees from the zenith and 1 degree wide. The upper card's edges
+# throw their shadow inside the lower card's umbra on the ground, where the depth map holds
+# both cards: a filter that blurs depths mixes the two there and lets light through (light
+# bleeding). The gap between the cards is the scene file's [preset] gap (presets.h); the upper
+# card slides along the light with it, so its shadow stays where it is.
+[camera]
+eye = [3.0, 2.4, 3.2]
+target = [-0.1, 0.55, 0.0]
+fov = 40.0
+
+[light]
+type = "directional"
+direction = [1.0, -1.0, 0.0]
+angular_diameter = 1.0
+
+[[object]]
+type = "plane"
+name = "ground"
+centre = [0.5, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+size = [3.0, 3.0]
+colour = [0.8, 0.8, 0.8]
+
+[[object]]
+type = "box"
+name = "lower-card"
+centre = [0.0, 0.5, 0.0]
+half = [0.4, 0.01, 0.4]
+colour = [0.85, 0.45, 0.25]
+
+[[object]]
+type = "box"
+name = "upper-card"
+centre = [-1.02, 1.52, 0.0]
+half = [0.2, 0.01, 0.2]
+colour = [0.3, 0.5, 0.85]
+)",
+     STACKED_CARDS_PARAMS, placeUpperCard},
 };
 
 }  // namespace
@@ -266,13 +337,46 @@ std::optional<std::string_view> presetSceneToml(std::string_view name) {
     return std::nullopt;
 }
 
-std::optional<Scene> presetScene(std::string_view name) {
-    std::optional<std::string_view> toml = presetSceneToml(name);
-    if (!toml) return std::nullopt;
+std::span<const PresetParam> presetParams(std::string_view name) {
+    for (const Preset& p : PRESETS) {
+        if (p.name == name) return p.params;
+    }
+    return {};
+}
+
+std::optional<Scene> presetScene(std::string_view name, std::span<const double> values) {
+    const Preset* preset = nullptr;
+    for (const Preset& p : PRESETS) {
+        if (p.name == name) preset = &p;
+    }
+    if (!preset) return std::nullopt;
+    if (values.size() != preset->params.size()) {
+        throw std::invalid_argument("preset " + std::string(name) + " takes " +
+                                    std::to_string(preset->params.size()) + " parameters");
+    }
+    for (size_t i = 0; i < values.size(); ++i) {
+        const PresetParam& p = preset->params[i];
+        if (!(values[i] >= p.min && values[i] <= p.max)) {
+            throw std::invalid_argument("preset " + std::string(name) + " " + std::string(p.key) +
+                                        " out of range");
+        }
+    }
     std::string source = "preset:" + std::string(name);
-    Scene scene = parseSceneString(*toml, source);
+    Scene scene = parseSceneString(preset->toml, source);
+    if (preset->apply) {
+        preset->apply(scene, values);
+        // The objects moved: the camera's planes (left to the fit in every preset) fitted anew.
+        scene.camera.nearZ = scene.camera.farZ = 0.0f;
+        fitCameraPlanes(scene.camera, sceneBounds(scene));
+    }
     scene.name = std::string(name);
     return scene;
+}
+
+std::optional<Scene> presetScene(std::string_view name) {
+    std::vector<double> defaults;
+    for (const PresetParam& p : presetParams(name)) defaults.push_back(p.defaultValue);
+    return presetScene(name, defaults);
 }
 
 }  // namespace pcf

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "base/input_file.h"
+#include "scene/presets.h"
 
 namespace pcf {
 
@@ -395,6 +396,56 @@ std::string tomlString(const std::string& s) {
     return out + "\"";
 }
 
+// A scene file that is a preset with its numbers set: [preset] with the preset's name and any
+// of its parameters (presets.h), and no other scene table.
+Scene readPresetTable(const std::string& source, const toml::table& root,
+                      const toml::node& presetNode) {
+    const toml::table* table = presetNode.as_table();
+    if (!table) {
+        throw InputError(source, TableReader::lineOf(presetNode),
+                         "preset must be a table ([preset]), got " + typeName(presetNode));
+    }
+    for (std::string_view other : {"camera", "light", "object"}) {
+        if (const toml::node* node = root.get(other)) {
+            throw InputError(source, TableReader::lineOf(*node),
+                             "a scene file with [preset] takes no " + std::string(other) +
+                                 " table (the preset has its own)");
+        }
+    }
+    TableReader r(source, *table, "preset");
+    const toml::node& nameNode = r.require("name");
+    std::string name = r.string(nameNode, "name");
+    if (!presetSceneToml(name)) {
+        r.fail(&nameNode, "unknown preset '" + name + "' (known: " + presetNameList() + ")");
+    }
+    std::span<const PresetParam> params = presetParams(name);
+    std::vector<double> values;
+    for (const PresetParam& p : params) values.push_back(p.defaultValue);
+    for (auto&& [key, node] : *table) {
+        if (key.str() == "name") continue;
+        size_t i = 0;
+        while (i < params.size() && params[i].key != key.str()) ++i;
+        if (i == params.size()) {
+            std::string known;
+            for (const PresetParam& p : params)
+                known += (known.empty() ? "" : ", ") + std::string(p.key);
+            r.fail(&node, "preset " + name + " has no parameter '" + std::string(key.str()) +
+                              "' (it takes " + (known.empty() ? "none" : known) + ")");
+        }
+        const PresetParam& p = params[i];
+        double v = r.number(node, std::string(p.key));
+        if (!(v >= p.min && v <= p.max)) {
+            r.fail(&node, name + " " + std::string(p.key) + " must be in [" + formatNumber(p.min) +
+                              ", " + formatNumber(p.max) + "] " + std::string(p.unit) + ", got " +
+                              formatNumber(v));
+        }
+        values[i] = v;
+    }
+    Scene scene = *presetScene(name, values);
+    scene.name = source;
+    return scene;
+}
+
 }  // namespace
 
 Scene parseSceneFile(const std::string& path) {
@@ -408,6 +459,9 @@ Scene parseSceneString(std::string_view text, const std::string& sourceName) {
     } catch (const toml::parse_error& e) {
         throw InputError(sourceName, std::max(1, static_cast<int>(e.source().begin.line)),
                          std::string(e.description()));
+    }
+    if (const toml::node* presetNode = root.get("preset")) {
+        return readPresetTable(sourceName, root, *presetNode);
     }
     return parseSceneToml(root, sourceName);
 }

@@ -41,6 +41,12 @@
 //                                  counter-clockwise seen from above
 //   sphere: centre = [0, 1, 0]; radius = 0.5                (required; radius > 0)
 //
+// A scene file may instead be a built-in scene with its numbers set (presets.h), alone:
+//   [preset]
+//   name = "stacked-cards"         required, a preset's name
+//   gap  = 0.5                     any of that preset's numbers (presets.h: presetParams), each
+//                                  in its range; the others keep their defaults
+//
 // Numbers may be integers or floats; nan and inf are refused. Every problem throws InputError
 // with the line of the offending value (or of its table when a key is missing), e.g.
 // `scene.toml:7: sphere radius must be positive, got -1`.
