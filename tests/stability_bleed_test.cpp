@@ -8,7 +8,9 @@
 #include <memory>
 #include <sstream>
 
+#include "charts/chart_axes.h"
 #include "charts/stability_bleed_figures.h"
+#include "charts/stability_chart.h"
 #include "kernel/methods.h"
 #include "measure/failure_measures.h"
 #include "measure/ground_truth.h"
@@ -191,6 +193,28 @@ TEST_F(StabilityBleed, VsmLeaksAtTheDefaultGapUntilTheReductionTheChartNames) {
     }
     EXPECT_TRUE(named) << "the chart names lbr " << cut;
     EXPECT_EQ(spec.notes.front(), "vsm 3x3: lbr 0 to 0.5");
+    // Whole and apart at --quick's chart size and the default one: no text on another (the
+    // panel's title ran under the legend at 640x360).
+    // The long subtitle a run writes, and the stand-alone type floor `stability` draws with.
+    LineChartSpec drawn = bleedChartSpec(
+        rows, "rendered on llvmpipe (LLVM 15.0.6; 256 bits) (llvmpipe: a CPU rasteriser)",
+        STANDALONE_CHART_MIN_PX);
+    for (glm::ivec2 size : {glm::ivec2(640, 360), glm::ivec2(1280, 720)}) {
+        std::vector<ChartTextBox> boxes = lineChartTextBoxes(drawn, size);
+        ASSERT_GT(boxes.size(), 5u);
+        for (size_t i = 0; i < boxes.size(); ++i) {
+            const Rect& a = boxes[i].rect;
+            EXPECT_TRUE(a.x >= 0.0f && a.right() <= size.x && a.y >= 0.0f && a.bottom() <= size.y)
+                << boxes[i].text << " at " << size.x;
+            for (size_t j = i + 1; j < boxes.size(); ++j) {
+                if (boxes[i].role == "chart-swatch" && boxes[j].role == "chart-swatch") continue;
+                const Rect& b = boxes[j].rect;
+                EXPECT_TRUE(a.right() <= b.x || b.right() <= a.x || a.bottom() <= b.y ||
+                            b.bottom() <= a.y)
+                    << "'" << boxes[i].text << "' overlaps '" << boxes[j].text << "' at " << size.x;
+            }
+        }
+    }
 
     // stability_bleed.csv: vsm's lines carry the swept lbr, and the run's moment format where it
     // was not swept; exponents and moment bias do not act for vsm.

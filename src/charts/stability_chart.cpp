@@ -334,7 +334,12 @@ void paintPanel(Painter& c, const LineChartSpec& spec, const LineAxes& axes,
               std::round(cell.w - left - 12.0f * s),
               std::round(cell.h - titleRoom - 1.5f * tickH - 14.0f * s)};
     if (plot.w < 8.0f || plot.h < 8.0f) return;
-    c.text({plot.centre().x, cell.y}, panel.title,
+    // Centred over the plot, moved in so it stays inside its cell (a long title on a small
+    // chart ran under the legend beside the cell).
+    float titleW = measureText(FontFace::Sans, px(14, s, mn), panel.title).x;
+    float titleX = std::clamp(plot.centre().x, cell.x + 0.5f * titleW,
+                              std::max(cell.x + 0.5f * titleW, cell.right() - 0.5f * titleW));
+    c.text({titleX, cell.y}, panel.title,
            {FontFace::Sans, px(14, s, mn), CHART_INK, TextAlign::Center}, "chart-title");
     PanelPlot pp{spec, axes, plot};
     if (panel.band) {
