@@ -60,12 +60,25 @@ struct TraceStep {
     std::string text;
 };
 
+// A cascaded map's blend band at the lookup (shared/pcf_shading.h pcfCascadeBlendWeight): the
+// next cascade blended in (-1: none, outside the band), its weight, the next cascade's own
+// visibility of the point and the blended result pcfCascadeBlend gives. Filled by whoever traces
+// a cascaded frame's point (scene/cascade_fit.h cascadeVisibilityAt finds them); the taps are
+// the layer read's.
+struct TraceCascadeBlend {
+    int next = -1;
+    float weight = 0.0f;
+    float nextVisibility = 1.0f;
+    float blended = 1.0f;
+};
+
 struct Trace {
     PcfParams params{};
     // The map looked up, as a value (kernel/shadow_map.h): its size, texel kind and layers with
     // their fits; and the layer this lookup read.
     MapSpec map;
     int layer = 0;
+    TraceCascadeBlend cascadeBlend{};  // a cascaded map's blend band at the lookup
     vec2 uv{0.0f};
     float z = 0.0f;    // receiver depth in the light's [0,1] depth, before bias
     float ref = 0.0f;  // the depth compared with the map, after bias
