@@ -35,8 +35,8 @@ std::string cascadeSubtitle(std::span<const StabilityRow> rows, const CascadePoi
     char distance[32];
     std::snprintf(distance, sizeof distance, "%g", static_cast<double>(CASCADE_SWEEP_DISTANCE));
     std::string method(methodInfo(first.method).name);
-    if (first.kernel > 0) method += " " + std::to_string(first.kernel) + "x" +
-                                    std::to_string(first.kernel);
+    if (first.kernel > 0)
+        method += " " + std::to_string(first.kernel) + "x" + std::to_string(first.kernel);
     return "a wall and posts along a ground, " + std::to_string(CASCADE_SWEEP_CASCADES) +
            " cascades to " + distance + "; " + std::to_string(s.frameSize.x) + "x" +
            std::to_string(s.frameSize.y) + " frame, map " + std::to_string(s.mapSize) +
@@ -85,6 +85,8 @@ LineChartSpec cascadeChartSpec(std::span<const StabilityRow> rows, const std::st
         if (!panel.lines.empty()) spec.panels.push_back(std::move(panel));
     }
     spec.notes.push_back("below 1: a texel spreads over several pixels");
+    spec.notes.push_back("a line ends where its cascade");
+    spec.notes.push_back("holds no receiver on screen");
     return spec;
 }
 

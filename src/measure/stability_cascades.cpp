@@ -231,11 +231,10 @@ class CascadePath {
             ReceiverTrack& t = tracks[k];
             if (t.layer == -1) continue;
             const StaticReceiver& p = receivers[k];
-            CascadeLookup c =
-                cascadeVisibilityAt(map, camera, s, prm, p.pos, p.normal, p.cosTheta);
-            bool inside = c.layer < map.layers() &&
-                          insideLayer(map.spec().layers[static_cast<size_t>(c.layer)], p.pos,
-                                      map.width());
+            CascadeLookup c = cascadeVisibilityAt(map, camera, s, prm, p.pos, p.normal, p.cosTheta);
+            bool inside =
+                c.layer < map.layers() &&
+                insideLayer(map.spec().layers[static_cast<size_t>(c.layer)], p.pos, map.width());
             if (!inside || (t.layer != -2 && t.layer != c.layer)) {
                 t.layer = -1;
                 continue;
@@ -296,8 +295,8 @@ std::optional<ParamProblem> validateCascadeOptions(const StabilityOptions& o) {
     if (o.cascadeLambdas.empty()) return ParamProblem{"cascade_lambdas", "", " is empty"};
     for (float l : o.cascadeLambdas) {
         if (!(l >= 0.0f && l <= 1.0f)) {
-            return ParamProblem{"cascade_lambdas", "", " " + std::to_string(l) +
-                                                           " is out of range (0..1)"};
+            return ParamProblem{"cascade_lambdas", "",
+                                " " + std::to_string(l) + " is out of range (0..1)"};
         }
     }
     if (o.cascadePathSteps < 2 || o.cascadePathSteps > 64) {
@@ -307,8 +306,10 @@ std::optional<ParamProblem> validateCascadeOptions(const StabilityOptions& o) {
         return ParamProblem{"", "the cascade sweep's blend band is out of range (0..1]", ""};
     }
     if (cascadeMethods(o, cascadeSweepScene()).empty()) {
-        return ParamProblem{"", "the cascades sweep needs a method that cascades work with (not "
-                                "pcss nor a moment method)", ""};
+        return ParamProblem{"",
+                            "the cascades sweep needs a method that cascades work with (not "
+                            "pcss nor a moment method)",
+                            ""};
     }
     return std::nullopt;
 }
@@ -343,8 +344,8 @@ void runCascadeSweep(const StabilityOptions& options,
                 std::string fitSnap = fitSnapName(std::string(cascadeFitName(fit)), snap);
                 if (say) {
                     char line[96];
-                    std::snprintf(line, sizeof line, "cascades %d/%d: lambda %g, %s", ++done,
-                                  total, static_cast<double>(lambda), fitSnap.c_str());
+                    std::snprintf(line, sizeof line, "cascades %d/%d: lambda %g, %s", ++done, total,
+                                  static_cast<double>(lambda), fitSnap.c_str());
                     say(line);
                 }
                 PathResult r = CascadePath(renderer, scene, run, s).run();
@@ -361,8 +362,7 @@ std::vector<CascadePoint> cascadePoints(std::span<const StabilityRow> rows) {
     for (const StabilityRow& r : rows) {
         if (r.sweep != sweep) continue;
         // "FIT:SNAP:cN:METRIC"
-        size_t a = r.metric.find(':'), b = r.metric.find(':', a + 1),
-               c = r.metric.find(':', b + 1);
+        size_t a = r.metric.find(':'), b = r.metric.find(':', a + 1), c = r.metric.find(':', b + 1);
         if (c == std::string::npos || r.metric[b + 1] != 'c') continue;
         std::string key = std::to_string(r.method) + "," + std::to_string(r.kernel) + "," +
                           std::to_string(r.x) + "," + r.metric.substr(0, c);
@@ -407,8 +407,8 @@ std::string cascadeCsv(std::span<const StabilityRow> rows) {
     };
     for (const CascadePoint& p : cascadePoints(rows)) {
         out += std::string(methodInfo(p.method).name) + "," + std::to_string(p.kernel) + "," +
-               std::string(cascadeSplitOfLambda(p.lambda)) + "," + lambdaText(p.lambda) + "," + p.fit +
-               "," + (p.snap ? "true" : "false") + "," + std::to_string(p.cascade) + "," +
+               std::string(cascadeSplitOfLambda(p.lambda)) + "," + lambdaText(p.lambda) + "," +
+               p.fit + "," + (p.snap ? "true" : "false") + "," + std::to_string(p.cascade) + "," +
                num(p.texelWorldMin) + "," + num(p.texelWorldMax) + "," + num(p.flickerRate) + "," +
                num(p.staticReceivers) + "," + optional(p.seamDifference) + "," +
                optional(p.seamDifferenceBlended) + "," + num(p.texelsPerPixelMedian) + "\n";

@@ -62,14 +62,14 @@ struct FrameSurfaces {
 
 // The seam probe at the split between cascade i and i + 1 (i < layers - 1): every receiver of
 // the frame that lies within CASCADE_SEAM_REACH of the split's view depth (a share of it) from
-// the split along its own surface, is moved along that surface onto the split (a surface seen edge-on, whose view
-// depth barely changes along it, is left out), and looked up from both sides at the split's view
-// depth: as the last depth of cascade i (its lookup, blended with cascade i + 1's by the band's
-// weight there, pcfCascadeBlendWeight) and as the first of cascade i + 1 (its lookup alone).
-// `difference`: the largest |left - right| over the points, `points` how many, `edgePoints` how
-// many lie on a shadow edge (either side strictly between 0.02 and 0.98, or the two differing by
-// more than 0.02). With a band the two sides meet; without, they differ where the cascades' texels
-// draw the edge differently.
+// the split along its own surface, is moved along that surface onto the split (a surface seen
+// edge-on, whose view depth barely changes along it, is left out), and looked up from both sides at
+// the split's view depth: as the last depth of cascade i (its lookup, blended with cascade i + 1's
+// by the band's weight there, pcfCascadeBlendWeight) and as the first of cascade i + 1 (its lookup
+// alone). `difference`: the largest |left - right| over the points, `points` how many, `edgePoints`
+// how many lie on a shadow edge (either side strictly between 0.02 and 0.98, or the two differing
+// by more than 0.02). With a band the two sides meet; without, they differ where the cascades'
+// texels draw the edge differently.
 constexpr float CASCADE_SEAM_REACH = 0.05f;
 struct SeamProbe {
     double difference = 0.0;
@@ -84,8 +84,8 @@ SeamProbe seamProbe(const ShadowMap& map, const Camera& camera, const ShadowSett
 // none: part of validateStabilityOptions.
 std::optional<ParamProblem> validateCascadeOptions(const StabilityOptions& options);
 
-// Runs the sweep with the run's methods that cascades work with and appends its rows. Needs a current OpenGL 4.5
-// context.
+// Runs the sweep with the run's methods that cascades work with and appends its rows. Needs a
+// current OpenGL 4.5 context.
 void runCascadeSweep(const StabilityOptions& options,
                      const std::function<void(const std::string&)>& say,
                      std::vector<StabilityRow>& rows);
