@@ -148,6 +148,36 @@ TEST_F(CascadesCommand, RefusesASpotLightPcssAndADistanceBeforeTheNearPlane) {
     }
 }
 
+// --cascade-blend B reaches the frame and render.json, and a band outside [0, 1] is refused. The
+// band changes the picture where the two cascades on either side of a split differ (a post's
+// shadow edge), and only there: the frames with and without it differ, but in few pixels.
+TEST_F(CascadesCommand, TheBlendBandIsASettingOfTheFrame) {
+    Json j = renderJson("--cascades 4 --shadow-distance 60 --cascade-blend 0.25");
+    EXPECT_NEAR(j["cascade_blend"].get<double>(), 0.25, 1e-7);
+    std::vector<std::vector<unsigned char>> frames;
+    for (const char* blend : {"0", "0.3"}) {
+        std::string png = path(std::string("blend") + blend + ".png");
+        testutil::CommandResult r = testutil::runPcfscope(
+            "render --scene-file " + writeScene() +
+            " --size 160x90 --map-size 64 --cascades 4 --shadow-distance 60 --shading visibility "
+            "--cascade-blend " +
+            blend + " -o " + png);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        frames.push_back(readImageBytes(png, 4));
+    }
+    ASSERT_EQ(frames[0].size(), frames[1].size());
+    int differ = 0;
+    for (size_t k = 0; k < frames[0].size(); k += 4) differ += frames[0][k] != frames[1][k];
+    EXPECT_GT(differ, 5);
+    EXPECT_LT(differ, 160 * 90 / 4);
+    testutil::CommandResult bad = testutil::runPcfscope(
+        "render --scene box-on-plane --cascades 2 --cascade-blend 1.5 --size 64x36 -o " +
+        path("bad.png"));
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_EQ(bad.err, "pcfscope: --cascade-blend must be in [0, 1], got 1.5\n");
+    EXPECT_FALSE(std::filesystem::exists(path("bad.png")));
+}
+
 // --shading cascades tints each pixel by the cascade it reads: with four cascades over the
 // ground running away from the camera, each of the four tints covers part of the frame, the
 // nearest (red) at the bottom, and the ground past the shadow distance stays untinted (grey).
