@@ -178,6 +178,24 @@ TEST_F(CascadesCommand, TheBlendBandIsASettingOfTheFrame) {
     EXPECT_FALSE(std::filesystem::exists(path("bad.png")));
 }
 
+// `verify` on a blended render --raw folder: a pixel in a band holds the mix of two cascades'
+// lookups, which verify bounds by the same mix of their envelopes; every pixel inside, with a
+// method of hardware taps (tent) and one of nearest texels (poisson).
+TEST_F(CascadesCommand, VerifyHoldsABlendedFolderToTheMixOfTwoCascades) {
+    for (const char* method : {"tent --kernel 5", "poisson --radius 2 --rotate"}) {
+        std::string raw = path("blended");
+        std::filesystem::remove_all(raw);
+        testutil::CommandResult r = testutil::runPcfscope(
+            std::string("render --scene long-ground --cascades 4 --map-size 256 --size 320x180 "
+                        "--bias normal --cascade-blend 0.3 --method ") +
+            method + " --raw " + raw);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        testutil::CommandResult v = testutil::runPcfscope("verify " + raw);
+        EXPECT_EQ(v.exitCode, 0) << method << v.out << v.err;
+        EXPECT_NE(v.out.find("(100.0000 %)"), std::string::npos) << method << v.out;
+    }
+}
+
 // --shading cascades tints each pixel by the cascade it reads: with four cascades over the
 // ground running away from the camera, each of the four tints covers part of the frame, the
 // nearest (red) at the bottom, and the ground past the shadow distance stays untinted (grey).
