@@ -148,6 +148,54 @@ TEST_F(CascadesCommand, RefusesASpotLightPcssAndADistanceBeforeTheNearPlane) {
     }
 }
 
+// --cascade-blend B reaches the frame and render.json, and a band outside [0, 1] is refused. The
+// band changes the picture where the two cascades on either side of a split differ (a post's
+// shadow edge), and only there: the frames with and without it differ, but in few pixels.
+TEST_F(CascadesCommand, TheBlendBandIsASettingOfTheFrame) {
+    Json j = renderJson("--cascades 4 --shadow-distance 60 --cascade-blend 0.25");
+    EXPECT_NEAR(j["cascade_blend"].get<double>(), 0.25, 1e-7);
+    std::vector<std::vector<unsigned char>> frames;
+    for (const char* blend : {"0", "0.3"}) {
+        std::string png = path(std::string("blend") + blend + ".png");
+        testutil::CommandResult r = testutil::runPcfscope(
+            "render --scene-file " + writeScene() +
+            " --size 160x90 --map-size 64 --cascades 4 --shadow-distance 60 --shading visibility "
+            "--cascade-blend " +
+            blend + " -o " + png);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        frames.push_back(readImageBytes(png, 4));
+    }
+    ASSERT_EQ(frames[0].size(), frames[1].size());
+    int differ = 0;
+    for (size_t k = 0; k < frames[0].size(); k += 4) differ += frames[0][k] != frames[1][k];
+    EXPECT_GT(differ, 5);
+    EXPECT_LT(differ, 160 * 90 / 4);
+    testutil::CommandResult bad = testutil::runPcfscope(
+        "render --scene box-on-plane --cascades 2 --cascade-blend 1.5 --size 64x36 -o " +
+        path("bad.png"));
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_EQ(bad.err, "pcfscope: --cascade-blend must be in [0, 1], got 1.5\n");
+    EXPECT_FALSE(std::filesystem::exists(path("bad.png")));
+}
+
+// `verify` on a blended render --raw folder: a pixel in a band holds the mix of two cascades'
+// lookups, which verify bounds by the same mix of their envelopes; every pixel inside, with a
+// method of hardware taps (tent) and one of nearest texels (poisson).
+TEST_F(CascadesCommand, VerifyHoldsABlendedFolderToTheMixOfTwoCascades) {
+    for (const char* method : {"tent --kernel 5", "poisson --radius 2 --rotate"}) {
+        std::string raw = path("blended");
+        std::filesystem::remove_all(raw);
+        testutil::CommandResult r = testutil::runPcfscope(
+            std::string("render --scene long-ground --cascades 4 --map-size 256 --size 320x180 "
+                        "--bias normal --cascade-blend 0.3 --method ") +
+            method + " --raw " + raw);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        testutil::CommandResult v = testutil::runPcfscope("verify " + raw);
+        EXPECT_EQ(v.exitCode, 0) << method << v.out << v.err;
+        EXPECT_NE(v.out.find("(100.0000 %)"), std::string::npos) << method << v.out;
+    }
+}
+
 // --shading cascades tints each pixel by the cascade it reads: with four cascades over the
 // ground running away from the camera, each of the four tints covers part of the frame, the
 // nearest (red) at the bottom, and the ground past the shadow distance stays untinted (grey).

@@ -113,6 +113,13 @@ TEST_F(PcfPrograms, EveryTableUniformIsReadAndSetInTheSceneAndTheLookupPass) {
             setParamUniforms(lookupProgram, prm, bias);
             collectLive(lookupProgram.id(), lookup);
         }
+        // Cascades with a blend band: the scene program that reads uCascadeBlend.
+        PcfVariant blended = pcfVariant(variantParams(s).front(), false, MapSpec{});
+        blended.layers = MAX_CASCADES;
+        blended.cascadeBlend = 1;
+        const PcfProgram& blendedProgram = scenePrograms.get(blended);
+        setParamUniforms(blendedProgram, variantParams(s).front(), bias, &s);
+        collectLive(blendedProgram.id(), scene);
     }
     ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     for (const ParamInfo& p : allParams()) {

@@ -163,6 +163,38 @@ struct EnvelopeTally {
     VisibilityEnvelope worstEnv;
 };
 
+// A pixel in a cascade's blend band (cascade_blend; shared/pcf_shading.h pcfCascadeBlendWeight):
+// the camera pass mixed the next cascade's lookup of its point into `env`'s, by the band's
+// weight, so its envelope is the same mix of the two cascades' envelopes (a mix of a value in
+// each interval lies in the mixed interval). The next lookup is recomputed from the pixel's world
+// position and normal (as recomputedLookup); under receiver-plane bias its plane is the GPU's own
+// derivative, which the folder does not hold, so that cascade's side is left unbounded [0, 1].
+VisibilityEnvelope blendedEnvelope(const RawImages& img, const RawSettings& r, size_t k, int layer,
+                                   VisibilityEnvelope env, PcfParams p, PcfBias b,
+                                   const ConformancePrecision& prec) {
+    int count = static_cast<int>(img.layers.size());
+    if (!r.cascadeEyeDir || layer + 1 >= count || !(r.settings.cascadeBlend > 0.0f)) return env;
+    const ShadowSettings& s = r.settings;
+    const float* pos = &img.positions.data[4 * k];
+    const float* n = &img.normals.data[4 * k];
+    vec3 posWs(pos[0], pos[1], pos[2]);
+    float depth = pcfViewDepth(posWs, r.cascadeEyeDir->first, r.cascadeEyeDir->second);
+    float w = pcfCascadeBlendWeight(depth, r.map->layers[static_cast<size_t>(layer)].viewDepth,
+                                    s.cascadeBlend, layer, count);
+    if (!(w > 0.0f)) return env;
+    const PcfMapLayer& next = *lookupLayer(r, layer + 1);
+    PcfReceiverLookup at =
+        pcfReceiverLookup(next.shadowClipFromWorld, posWs, vec3(n[0], n[1], n[2]), n[3], s.modeId(),
+                          s.constantBias, s.slopeBias, s.slopeMax, s.normalOffset, next.texelWs);
+    const ShadowMap& map = img.layers[static_cast<size_t>(layer + 1)];
+    if (s.rotate) p.rotation = pcfTexelRotation(vec2(at.u, at.v), ivec2(map.width(), map.height()));
+    VisibilityEnvelope other{0.0f, 1.0f};
+    if (b.mode != PCF_BIAS_RECEIVER_PLANE) {
+        other = visibilityEnvelope(map, vec2(at.u, at.v), at.ref, p, b, prec);
+    }
+    return {pcfCascadeBlend(env.lo, other.lo, w), pcfCascadeBlend(env.hi, other.hi, w)};
+}
+
 EnvelopeTally checkEnvelopes(const RawImages& img, const RawSettings& r,
                              const ConformancePrecision& prec) {
     const FloatImage& ls = img.lightSpace;
@@ -192,6 +224,7 @@ EnvelopeTally checkEnvelopes(const RawImages& img, const RawSettings& r,
             if (layer < static_cast<int>(img.layers.size())) {
                 env =
                     visibilityEnvelope(img.layers[static_cast<size_t>(layer)], uv, ref, p, b, prec);
+                env = blendedEnvelope(img, r, k, layer, env, r.prm, b, prec);
             }
             float v = img.visibility.data[k];
             if (env.contains(v)) {

@@ -84,7 +84,9 @@ struct Trace {
     // frame the lookup was traced on (measure/cascade_density.h: the most map texels per screen
     // pixel over that cascade's receivers); negative when no frame measured it (`trace --map`).
     float cascadeTexelsPerPixelMax = -1.0f;
-    TraceCascadeBlend cascadeBlend{};  // a cascaded map's blend band at the lookup
+    // Where cascades blend (cascade_blend, a band at each cascade's end), the second lookup, in
+    // the next cascade, and the blend weight beside the taps of the layer read.
+    TraceCascadeBlend cascadeBlend{};
     vec2 uv{0.0f};
     float z = 0.0f;    // receiver depth in the light's [0,1] depth, before bias
     float ref = 0.0f;  // the depth compared with the map, after bias
