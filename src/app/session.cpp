@@ -312,6 +312,8 @@ void Session::renderScene() {
     mRenderer->renderCameraPass(r);
     if (mapChanged) {
         mMap = mRenderer->readShadowMap();
+        // A moments map's depths, for the inspector's footprint (kernel/moment_footprint.h).
+        mDepthMap = mMap.spec().texel().depth ? ShadowMap() : mRenderer->readDepthMap();
         mThumbnailDirty = true;
     }
     mRendered = r;
@@ -326,7 +328,7 @@ void Session::traceAtPixel() {
     mLightSpaceOrigin = mPixel - glm::ivec2(radius);
     mLightSpaceSize = glm::ivec2(2 * radius + 1);
     mLightSpace = mRenderer->readLightSpaceRegion(mLightSpaceOrigin, mLightSpaceSize);
-    mLookup = tracePixel(*mRenderer, mMap, mSettings, mPixel);
+    mLookup = tracePixel(*mRenderer, mMap, mSettings, mPixel, &mDepthMap);
     if (mLookup) mTrace = mLookup->trace;
     tracePartsOfText();
 }

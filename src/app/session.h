@@ -281,6 +281,7 @@ class Session {
     bool mSceneDirty = true;
     std::optional<RenderSettings> mRendered;
     ShadowMap mMap;
+    ShadowMap mDepthMap;             // a moments map's depths (empty for a depth map)
     std::vector<float> mLightSpace;  // a region around the pixel (gridRadius), rows top-down
     glm::ivec2 mLightSpaceOrigin{0, 0};
     glm::ivec2 mLightSpaceSize{0, 0};
