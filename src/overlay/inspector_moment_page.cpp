@@ -88,8 +88,8 @@ std::string resultText(const Trace& tr, const MomentFigure& f) {
                  "(t) = " + formatNumber(c.atReceiver);
         }
         if (tr.params.lbr > 0.0f) {
-            s += "; linstep(" + formatNumber(tr.params.lbr) + ", 1, p) = " +
-                 formatNumber(f.curves.back().atReceiver);
+            s += "; linstep(" + formatNumber(tr.params.lbr) +
+                 ", 1, p) = " + formatNumber(f.curves.back().atReceiver);
         }
     }
     s += "\n" + std::string(methodInfo(tr.params.method).name) +
@@ -303,9 +303,8 @@ float placeBlock(Planner& pl, const FittedText& f, float x, float y, float width
 
 // The curves' plots in `box`: one, or evsm4's two warps side by side, each under a label that
 // names its exponent and says which bound was taken. LBR's curve goes with the bound it cuts.
-void planCurves(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
-                const TypeSizes& t, const MomentFigure& f, const Axis& whole, float subcaption,
-                LegendNeeds& need) {
+void planCurves(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t,
+                const MomentFigure& f, const Axis& whole, float subcaption, LegendNeeds& need) {
     std::vector<std::vector<const MomentFigure::Curve*>> plots;
     for (const MomentFigure::Curve& c : f.curves) {
         if (c.afterLbr) continue;
@@ -394,7 +393,8 @@ void planMomentPart(Planner& pl, const InspectorLayout& l, const InspectorModel&
         h.r.h = histH;
         planHistogram(pl, l, tr, f, h, need);
         y = planAxisLabels(pl, h, t) + x.gap;
-        y = placeBlock(pl, x.numbers, x0, y, width, m.hidden.any() ? FontFace::Sans : FontFace::Mono,
+        y = placeBlock(pl, x.numbers, x0, y, width,
+                       m.hidden.any() ? FontFace::Sans : FontFace::Mono,
                        m.hidden.any() ? "masked" : "moment-numbers", x.gap);
         for (size_t k = 0; k < tr.fetches.size(); ++k) {
             pl.plan.drawnFetches.push_back(static_cast<int>(k));
@@ -431,14 +431,15 @@ void planMomentInspector(Planner& pl, const InspectorLayout& l, const InspectorM
     float bottom = l.inspector.bottom() - margin;
     // Bins about a label's size wide; the figure's numbers for this width.
     float indent = measureText(FontFace::Mono, t.label, "1").x + 8.0f;
-    int bins = std::clamp(static_cast<int>((width - indent) / std::max(6.0f, t.label * 0.7f)), 8,
-                          40);
+    int bins =
+        std::clamp(static_cast<int>((width - indent) / std::max(6.0f, t.label * 0.7f)), 8, 40);
     MomentFigure f = momentFigure(tr, bins);
     MomentTexts x = momentTexts(m, t, f, width);
     MomentRoom room = momentRoom(x, t, !f.curves.empty());
     FramePlan scratch;
     Planner sp{scratch};
-    float legendH = planLegend(sp, l, m, figureNeeds(tr, f, pl.plan.footprintShown), t, margin, 0.0f);
+    float legendH =
+        planLegend(sp, l, m, figureNeeds(tr, f, pl.plan.footprintShown), t, margin, 0.0f);
     float plots = (room.curves ? 2.0f : 1.0f) * room.minPlot;
     bool onePage = bottom - top - legendH - room.fixed0 - room.fixed1 >= plots;
     int parts = onePage ? 1 : 2;

@@ -33,8 +33,8 @@ struct MomentFigure {
         bool taken = true;        // evsm4: this warp's bound is the smaller at t
     };
     float axisLo = 0.0f, axisHi = 1.0f;  // the depth axis, in the map's [0, 1] depth
-    float receiver = 0.0f;               // t: the lookup's ref, clamped to [0, 1] as the kernel does
-    bool hasFootprint = false;           // the depths under the moments are known
+    float receiver = 0.0f;      // t: the lookup's ref, clamped to [0, 1] as the kernel does
+    bool hasFootprint = false;  // the depths under the moments are known
     std::vector<Bin> bins;
     std::vector<Curve> curves;
     std::vector<glm::vec2> points;  // msm: the reconstructed depths and their weights
