@@ -3,8 +3,6 @@
 // 64-127 at another, as in issue 33), the plan's histogram holds the texels the moments
 // average, its curves pass through the trace's bounds at the receiver's t, msm's points are the
 // trace's, and PCF of the same footprint is pcf-naive's; `trace --json` carries the footprint.
-#include "overlay/inspector_moments.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +15,7 @@
 #include "kernel/moments.h"
 #include "kernel/trace.h"
 #include "overlay/inspector.h"
+#include "overlay/inspector_moments.h"
 #include "render/image_io.h"
 #include "run_command.h"
 
@@ -182,8 +181,8 @@ TEST(MomentFigure, TraceJsonCarriesTheFootprint) {
     std::filesystem::path dir = testutil::makeTempDir("moment_figure");
     std::string file = (dir / "map.exr").string();
     writeDepthImage(file, twoColumns(0.2f, 0.5f));
-    auto r = testutil::runPcfscope("trace --map " + file +
-                                   " --uv 0.5,0.5 --z 0.6 --method vsm --json");
+    auto r =
+        testutil::runPcfscope("trace --map " + file + " --uv 0.5,0.5 --z 0.6 --method vsm --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     jsonlite::Value j = jsonlite::parse(r.out);
     const jsonlite::Value& fp = j["moments"]["footprint"];

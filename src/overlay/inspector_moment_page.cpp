@@ -162,6 +162,9 @@ void planHistogram(Planner& pl, const InspectorLayout& l, const Trace& tr, const
         });
         need.meanLine = true;
     }
+    // t under msm's points: the receiver's own point (z_f) stands on it.
+    planReceiverLine(pl, a, f.receiver, w);
+    need.receiverLine = true;
     for (glm::vec2 p : f.points) {
         if (!(p.x >= a.lo && p.x <= a.hi)) continue;
         glm::vec2 foot{a.x(p.x), a.r.bottom()};
@@ -173,8 +176,6 @@ void planHistogram(Planner& pl, const InspectorLayout& l, const Trace& tr, const
         });
         need.msmPoints = true;
     }
-    planReceiverLine(pl, a, f.receiver, w);
-    need.receiverLine = true;
 }
 
 // The values read off the curves at t: a label beside each dot, right of the line where it
