@@ -99,6 +99,29 @@ TEST(MomentFigure, TheHistogramHoldsTheFootprintsTexelsAndWeights) {
     EXPECT_GE(f.axisHi, 0.6f);
 }
 
+// Off the texel corner the bilinear read weighs the columns unevenly: the footprint's weights
+// are still the ones the moments average (the histogram's bars are their weights).
+TEST(MomentFigure, TheFootprintsWeightsAreTheMomentsOffTheTexelCorner) {
+    ShadowMap depth = twoColumns(0.2f, 0.5f);
+    PcfParams prm = params(PCF_VSM);
+    ShadowMap moments = momentsMap(depth, prm, mapTexelKind(prm.method, TexelKind::D32F));
+    Trace tr = traceLookup(moments, vec2(0.5f + 0.3f / 128.0f, 0.5f), 0.6f, 0.6f, prm);
+    addMomentFootprint(tr, depth);
+    double m1 = 0.0, m2 = 0.0, nearWeight = 0.0;
+    for (const FootprintTexel& t : tr.depths.texels) {
+        m1 += t.weight * t.depth;
+        m2 += t.weight * t.depth * t.depth;
+        if (t.depth == 0.2f) nearWeight += t.weight;
+    }
+    EXPECT_NEAR(m1, tr.moments.moments.x, 1e-6);
+    EXPECT_NEAR(m2, tr.moments.moments.y, 1e-6);
+    // p.x = 63.8: the read takes 0.2 of moments texel 63 (two of its box's three columns at
+    // 0.2) and 0.8 of texel 64 (one of three): 0.2 * 2/3 + 0.8 * 1/3 = 0.4.
+    EXPECT_NEAR(nearWeight, 0.4, 1e-5);  // (uv in float: frac is 0.8 to 1e-6)
+    MomentFigure f = plannedFigure(tr);
+    EXPECT_NEAR(binOf(f, 0.2f)->weight, nearWeight, 1e-6);
+}
+
 // The curve passes through the trace's bound at t (0.2647, light bleeding), and with LBR 0.3
 // the linstep's curve through the visibility (0); PCF of the same footprint says 0 (every
 // depth is in front of the receiver).

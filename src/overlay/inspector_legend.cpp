@@ -34,7 +34,10 @@ void momentEntries(const LegendNeeds& need, std::vector<LegendEntry>& entries) {
     if (need.meanLine) entries.push_back({ACCENT, "mean", VLINE});
     if (need.receiverLine) entries.push_back({POINT, "receiver t", VLINE});
     if (need.msmPoints) entries.push_back({GATHER, "reconstructed points", STEM});
-    if (need.boundCurve) entries.push_back({LIT_COLOUR, "bound p_max(t)", BAR});
+    if (need.boundCurve) {
+        entries.push_back(
+            {LIT_COLOUR, need.negCurve ? "positive warp's bound" : "bound p_max(t)", BAR});
+    }
     if (need.negCurve) entries.push_back({MOMENT_NEG_CURVE, "negative warp's bound", BAR});
     if (need.lbrCurve) entries.push_back({WEIGHT_BAR, "after LBR linstep", BAR});
 }

@@ -48,7 +48,9 @@ std::string numbersText(const Trace& tr) {
     }
     s += ")";
     if (info.reconstructs) s += " after moment bias " + g4(tr.params.momentBias);
-    s += "\nmean " + g4(e.mean) + "  variance " + g4(e.variance);
+    // evsm's mean and variance are of the positive warp's w+, not of the depth.
+    std::string of = info.warps > 0 ? " of w+" : "";
+    s += "\nmean" + of + " " + g4(e.mean) + "  variance" + of + " " + g4(e.variance);
     if (info.warps > 0) {
         int bits = texelKindInfo(tr.map.texels).bits;
         s += "\nexponents used: c+ " + g4(tr.params.evsmExponents.x);
@@ -82,10 +84,11 @@ std::string resultText(const Trace& tr, const MomentFigure& f) {
         for (glm::vec2 p : f.points) s += " z " + g4(p.x) + " w " + g4(p.y) + ";";
         s += " the weight below t is the shadow.";
     } else {
+        bool two = methodInfo(tr.params.method).warps == 2;
         for (const MomentFigure::Curve& c : f.curves) {
             if (c.afterLbr) continue;
-            s += std::string(s.empty() ? "" : "; ") + (c.warp < 0 ? "p_max-" : "p_max") +
-                 "(t) = " + formatNumber(c.atReceiver);
+            s += std::string(s.empty() ? "p_max(t) = " : ", ") + formatNumber(c.atReceiver);
+            if (two) s += c.warp < 0 ? " (negative warp)" : " (positive warp)";
         }
         if (tr.params.lbr > 0.0f) {
             s += "; linstep(" + formatNumber(tr.params.lbr) +
@@ -124,6 +127,12 @@ float planAxisLabels(Planner& pl, const Axis& a, const TypeSizes& t) {
     pl.text({a.r.x, y}, fixed(a.lo, 3), st, BoxKind::Label, "inspector", "moment-axis");
     st.align = TextAlign::Right;
     pl.text({a.r.right(), y}, fixed(a.hi, 3), st, BoxKind::Label, "inspector", "moment-axis");
+    // The axis's name between its ends, where they leave it room.
+    std::string ends = fixed(a.lo, 3) + "  depth  " + fixed(a.hi, 3);
+    if (measureText(FontFace::Mono, t.label, ends).x * 1.5f <= a.r.w) {
+        st.align = TextAlign::Center;
+        pl.text({a.r.centre().x, y}, "depth", st, BoxKind::Label, "inspector", "moment-axis");
+    }
     return y + lineHeightOf(t.label);
 }
 
