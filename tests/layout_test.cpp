@@ -1596,6 +1596,9 @@ TEST_F(Layout, MomentPagesFitAndShowTheFootprintAtEverySize) {
             EXPECT_LE(first.textPages, 2) << where;
             std::vector<FramePlan> pages;
             int histograms = 0, curves = 0;
+            // PCF of the same footprint, read off beside the bound at t (not for msm: no curve).
+            std::string pcfLabel = "pcf " + formatNumber(tr.depths.pcfVisibility);
+            bool pcfShown = false;
             for (int page = 0; page < first.textPages; ++page) {
                 m.textPage = page;
                 pages.push_back(planFrame(l, m));
@@ -1605,6 +1608,7 @@ TEST_F(Layout, MomentPagesFitAndShowTheFootprintAtEverySize) {
                 for (const LayoutBox& b : pages.back().boxes) {
                     histograms += b.role == "moment-histogram";
                     curves += b.role == "moment-curve";
+                    pcfShown |= b.role == "moment-value" && b.text == pcfLabel;
                     EXPECT_EQ(b.text.find("ref <= depth"), std::string::npos) << where;
                     EXPECT_FALSE(b.role.starts_with("cell-")) << where << ": " << b.role;
                 }
@@ -1619,6 +1623,7 @@ TEST_F(Layout, MomentPagesFitAndShowTheFootprintAtEverySize) {
             bool msm = methodInfo(tr.params.method).reconstructs;
             int warps = methodInfo(tr.params.method).warps;
             EXPECT_EQ(curves, msm ? 0 : std::max(1, warps)) << where;
+            EXPECT_EQ(pcfShown, !msm) << where;
         }
     }
 }

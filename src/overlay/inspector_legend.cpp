@@ -40,6 +40,10 @@ void momentEntries(const LegendNeeds& need, std::vector<LegendEntry>& entries) {
     }
     if (need.negCurve) entries.push_back({MOMENT_NEG_CURVE, "negative warp's bound", BAR});
     if (need.lbrCurve) entries.push_back({WEIGHT_BAR, "after LBR linstep", BAR});
+    if (need.pcfMark) {
+        std::string pcf(methodInfo(sameFootprintPcfMethod()).name);
+        entries.push_back({PCF_MARK, pcf + " of the same texels", SQUARE});
+    }
 }
 
 // One entry for every kind of mark this frame draws.

@@ -7,6 +7,7 @@
 // msm's reconstructed points over the histogram; and PCF of the same footprint beside it. The
 // figure's numbers are MomentFigure's (inspector_moments.h): the trace's and the kernel's.
 #include <algorithm>
+#include <optional>
 
 #include "kernel/methods.h"
 #include "kernel/trace_explain.h"
@@ -187,39 +188,71 @@ void planHistogram(Planner& pl, const InspectorLayout& l, const Trace& tr, const
     }
 }
 
-// The values read off the curves at t: a label beside each dot, right of the line where it
-// fits, each under the one before when they would meet.
+// A value at the receiver's t: a curve's (a dot in its colour) or PCF's of the same footprint
+// (a square), with its label.
+struct ValueAtT {
+    float v = 0.0f;
+    Colour colour;
+    std::string label;
+    bool pcf = false;
+};
+
+// The values read off the plot at t: a label beside each mark, right of the line where it
+// fits, each under the one above when they would meet (highest first).
 void planReadouts(Planner& pl, const TypeSizes& t, const Axis& a, float x,
-                  const std::vector<std::pair<float, Colour>>& values) {
+                  std::vector<ValueAtT> values) {
+    std::stable_sort(values.begin(), values.end(),
+                     [](const ValueAtT& p, const ValueAtT& q) { return p.v > q.v; });
     TextStyle st{FontFace::Mono, t.label, TEXT};
     float lh = lineHeightOf(t.label);
     float below = a.r.y;
-    for (const auto& [v, col] : values) {
-        std::string s = formatNumber(v);
-        float tw = measureText(st.face, st.pixelSize, s).x;
-        float y = std::clamp(a.y(v, 1.0f) - lh, a.r.y, a.r.bottom() - lh);
+    for (const ValueAtT& value : values) {
+        float tw = measureText(st.face, st.pixelSize, value.label).x;
+        float y = std::clamp(a.y(value.v, 1.0f) - lh, a.r.y, a.r.bottom() - lh);
         if (y < below) y = below;
         if (y + lh > a.r.bottom()) continue;  // no room left in the plot: the words give it
-        bool right = x + 6.0f + tw <= a.r.right() - 2.0f;
-        float lx = right ? x + 6.0f : x - 6.0f - tw;
+        bool right = x + 8.0f + tw <= a.r.right() - 2.0f;
+        float lx = right ? x + 8.0f : x - 8.0f - tw;
         Rect plate{std::round(lx) - 2.0f, std::round(y), tw + 4.0f, lh};
         pl.fill(plate, Colour{PLOT_BACK.r, PLOT_BACK.g, PLOT_BACK.b, 0.85f});
-        st.colour = col;
-        pl.text({lx, y}, s, st, BoxKind::Label, "inspector", "moment-value");
+        st.colour = value.colour;
+        pl.text({lx, y}, value.label, st, BoxKind::Label, "inspector", "moment-value");
         below = y + lh;
     }
 }
 
+// The marks at t: a dot on each curve, a square at PCF's value.
+void planValueMarks(Planner& pl, const InspectorLayout& l, const Axis& a, float x,
+                    const std::vector<ValueAtT>& values) {
+    float dot = std::max(4.0f, lineOf(l) + 2.0f);
+    for (const ValueAtT& value : values) {
+        glm::vec2 at{x, a.y(value.v, 1.0f)};
+        Colour c = value.colour;
+        bool square = value.pcf;
+        pl.op([=](Canvas& cv) {
+            if (square) {
+                cv.fillRect({at.x - dot - 1.5f, at.y - dot - 1.5f, 2 * dot + 3, 2 * dot + 3},
+                            Colour{0, 0, 0, 0.9f});
+                cv.fillRect({at.x - dot, at.y - dot, 2 * dot, 2 * dot}, c);
+            } else {
+                cv.circle(at, dot + 1.5f, Colour{0, 0, 0, 0.9f});
+                cv.circle(at, dot, c);
+            }
+        });
+    }
+}
+
 // One plot of the bound over depth: its curve(s), t with a dot on each and the value read off
-// it (unless the step hides the result), 0 and 1 on its left.
+// it, and (`pcf`) a square at PCF's visibility of the same footprint (unless the step hides
+// the result); 0 and 1 on its left.
 void planCurvePlot(Planner& pl, const InspectorLayout& l, const TypeSizes& t, const Axis& a,
                    float receiver, const std::vector<const MomentFigure::Curve*>& curves,
-                   bool hideValue, LegendNeeds& need) {
+                   std::optional<float> pcf, bool hideValue, LegendNeeds& need) {
     pl.fill(a.r, PLOT_BACK);
     pl.box(BoxKind::Mark, a.r, "inspector", "moment-curve");
     float w = lineOf(l);
     Rect clip = a.r;
-    std::vector<std::pair<float, Colour>> values;
+    std::vector<ValueAtT> values;
     for (const MomentFigure::Curve* c : curves) {
         std::vector<glm::vec2> px;
         for (glm::vec2 p : c->points) px.push_back({a.x(p.x), a.y(p.y, 1.0f)});
@@ -230,21 +263,17 @@ void planCurvePlot(Planner& pl, const InspectorLayout& l, const TypeSizes& t, co
             cv.popClip();
         });
         (c->afterLbr ? need.lbrCurve : c->warp < 0 ? need.negCurve : need.boundCurve) = true;
-        values.push_back({c->atReceiver, col});
+        values.push_back({c->atReceiver, col, formatNumber(c->atReceiver), false});
     }
     planReceiverLine(pl, a, receiver, w);
     need.receiverLine = true;
     float x = std::round(a.x(receiver));
     if (!hideValue) {
-        float dot = std::max(4.0f, w + 2.0f);
-        for (const auto& [v, col] : values) {
-            glm::vec2 at{x, a.y(v, 1.0f)};
-            Colour edge = col;
-            pl.op([=](Canvas& cv) {
-                cv.circle(at, dot + 1.5f, Colour{0, 0, 0, 0.9f});
-                cv.circle(at, dot, edge);
-            });
+        if (pcf) {
+            values.push_back({*pcf, PCF_MARK, "pcf " + formatNumber(*pcf), true});
+            need.pcfMark = true;
         }
+        planValueMarks(pl, l, a, x, values);
         planReadouts(pl, t, a, x, values);
     }
     TextStyle st{FontFace::Mono, t.label, TEXT_DIM, TextAlign::Right};
@@ -264,6 +293,7 @@ LegendNeeds figureNeeds(const Trace& tr, const MomentFigure& f, bool sceneTint) 
     n.meanLine = methodInfo(tr.params.method).warps == 0;
     n.msmPoints = !f.points.empty();
     n.receiverLine = true;
+    n.pcfMark = f.hasFootprint && !f.curves.empty();
     for (const MomentFigure::Curve& c : f.curves) {
         (c.afterLbr ? n.lbrCurve : c.warp < 0 ? n.negCurve : n.boundCurve) = true;
     }
@@ -342,7 +372,10 @@ void planCurves(Planner& pl, const InspectorLayout& l, const InspectorModel& m, 
                     {FontFace::Sans, t.label, c.taken ? TEXT : TEXT_DIM}, BoxKind::Text,
                     "inspector", "moment-warp");
         }
-        planCurvePlot(pl, l, t, a, f.receiver, plots[k], m.hidden.any(), need);
+        // PCF of the same footprint on the plot whose bound gave the visibility.
+        std::optional<float> pcf;
+        if (f.hasFootprint && plots[k].front()->taken) pcf = f.pcfVisibility;
+        planCurvePlot(pl, l, t, a, f.receiver, plots[k], pcf, m.hidden.any(), need);
         planAxisLabels(pl, a, t);
     }
 }
@@ -381,7 +414,7 @@ void planMomentPart(Planner& pl, const InspectorLayout& l, const InspectorModel&
     LegendNeeds all = figureNeeds(tr, f, pl.plan.footprintShown);
     LegendNeeds need = all;
     need.momentBars = need.meanLine = need.msmPoints = false;
-    need.boundCurve = need.negCurve = need.lbrCurve = need.receiverLine = false;
+    need.boundCurve = need.negCurve = need.lbrCurve = need.receiverLine = need.pcfMark = false;
     FramePlan scratch;
     Planner sp{scratch};
     float legendH = planLegend(sp, l, m, all, t, margin, 0.0f);

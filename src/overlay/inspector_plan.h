@@ -47,6 +47,7 @@ constexpr Colour PCSS_GRID{0.45f, 0.47f, 0.53f, 1.0f};   // pcss's figures: the 
 constexpr Colour HIDDEN_BIT{0.42f, 0.36f, 0.52f, 1.0f};  // a cell whose bit a question hides
 constexpr Colour MOMENT_BAR{0.55f, 0.64f, 0.80f, 1.0f};  // the moment figure's histogram bars
 constexpr Colour MOMENT_NEG_CURVE{0.62f, 0.88f, 0.42f, 1.0f};  // evsm4's negative warp's bound
+constexpr Colour PCF_MARK{0.95f, 0.95f, 0.98f, 1.0f};  // pcf-naive of the moments' footprint
 
 // A texel narrower than this on screen makes the grid's lines a moire that reads as acne: the
 // grid is hidden then (the tint of the texels read stays). Lesson 8's acne stripes, one texel
@@ -278,6 +279,7 @@ struct LegendNeeds {
     // msm's reconstructed points.
     bool momentBars = false, meanLine = false, receiverLine = false, boundCurve = false,
          negCurve = false, lbrCurve = false, msmPoints = false;
+    bool pcfMark = false;  // PCF of the same footprint at t, on the bound's plot
 };
 
 // The legend: a swatch and a word for every kind of mark this frame draws, flowing onto more
