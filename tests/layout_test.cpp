@@ -1549,9 +1549,10 @@ Lesson momentLesson(const std::string& method, const std::string& extra) {
 }
 
 // Every page of a moment method's frame at the sizes a class meets (1024x768 and 1280x720 on a
-// projector, 1600x900 on a screen): its texts inside the panel, over no other text or number,
-// at or above their floors; the histogram holding every depth texel its moments average; its
-// numbers and the "lit: ref <= depth" legend of cells it no longer draws gone.
+// projector, 1600x900 on a screen, and 960x540, where the bound goes on a page of its own): its
+// texts inside the panel, over no other text or number, at or above their floors; the histogram
+// holding every depth texel its moments average; its numbers and the "lit: ref <= depth" legend of
+// cells it no longer draws gone.
 TEST_F(Layout, MomentPagesFitAndShowTheFootprintAtEverySize) {
     struct Case {
         const char* method;
@@ -1563,6 +1564,7 @@ TEST_F(Layout, MomentPagesFitAndShowTheFootprintAtEverySize) {
                           {"msm", ""},
                           {"msm-hausdorff", ""}};
     glm::ivec2 renderScene(inspectorLayout({1280, 720}, false).scene.size());
+    int pagedFrames = 0;  // frames whose figure took two pages (960x540's, at least)
     for (const Case& c : cases) {
         Lesson lesson = momentLesson(c.method, c.extra);
         const LessonSettings& s = lesson.steps[0].settings;
@@ -1585,7 +1587,9 @@ TEST_F(Layout, MomentPagesFitAndShowTheFootprintAtEverySize) {
         m.stepText = "visibility";
         for (auto [size, presentation] :
              {std::pair{glm::ivec2(1024, 768), true}, std::pair{glm::ivec2(1280, 720), true},
-              std::pair{glm::ivec2(1600, 900), false}}) {
+              std::pair{glm::ivec2(1600, 900), false},
+              // (Too small for the whole: the bound goes on a page of its own.)
+              std::pair{glm::ivec2(960, 540), true}}) {
             InspectorLayout l = inspectorLayout(size, presentation);
             m.presentation = presentation;
             m.sceneSize = glm::ivec2(l.scene.size());
@@ -1594,6 +1598,7 @@ TEST_F(Layout, MomentPagesFitAndShowTheFootprintAtEverySize) {
                                 std::to_string(size.x) + "x" + std::to_string(size.y);
             FramePlan first = planFrame(l, m);
             EXPECT_LE(first.textPages, 2) << where;
+            pagedFrames += first.textPages > 1;
             std::vector<FramePlan> pages;
             int histograms = 0, curves = 0;
             // PCF of the same footprint, read off beside the bound at t (not for msm: no curve).
@@ -1626,6 +1631,7 @@ TEST_F(Layout, MomentPagesFitAndShowTheFootprintAtEverySize) {
             EXPECT_EQ(pcfShown, !msm) << where;
         }
     }
+    EXPECT_GT(pagedFrames, 0);
 }
 
 }  // namespace

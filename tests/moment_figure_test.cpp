@@ -14,6 +14,7 @@
 #include "kernel/moment_footprint.h"
 #include "kernel/moments.h"
 #include "kernel/trace.h"
+#include "kernel/trace_explain.h"
 #include "overlay/inspector.h"
 #include "overlay/inspector_moments.h"
 #include "render/image_io.h"
@@ -196,6 +197,30 @@ TEST(MomentFigure, MsmPointsAreTheTracesReconstruction) {
         }
         EXPECT_NEAR(tr.visibility, 0.0016f, 5e-4f);
     }
+}
+
+// A predict step that hides the result: the page draws the histogram and the curve but no value
+// read off it, no number of the result anywhere, and says the numbers are hidden.
+TEST(MomentFigure, AHiddenResultIsNotReadOffTheCurve) {
+    Trace tr = momentTrace(twoColumns(0.2f, 0.5f), params(PCF_VSM));
+    InspectorModel m;
+    m.trace = tr;
+    m.presentation = true;
+    m.hidden.visibility = true;
+    InspectorLayout l = inspectorLayout({1280, 720}, true);
+    m.sceneSize = glm::ivec2(l.scene.size());
+    int masked = 0, curves = 0;
+    for (int page = 0; page < 2; ++page) {
+        m.textPage = page;
+        for (const LayoutBox& b : planFrame(l, m).boxes) {
+            EXPECT_NE(b.role, "moment-value");
+            EXPECT_EQ(b.text.find(formatNumber(tr.visibility)), std::string::npos) << b.text;
+            masked += b.role == "masked";
+            curves += b.role == "moment-curve";
+        }
+    }
+    EXPECT_GT(masked, 0);
+    EXPECT_GT(curves, 0);
 }
 
 // `trace --map FILE --method vsm --json`: the moments made of FILE's depths, and the depths

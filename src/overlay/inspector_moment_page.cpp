@@ -30,13 +30,14 @@ std::string g4(float v) {
 
 bool isMsm(const Trace& tr) { return methodInfo(tr.params.method).reconstructs; }
 
-std::string footprintCaption(const Trace& tr, const MomentFigure& f) {
+// hideRef: a question hides the ref (HiddenNumbers::refs): t is named, not given.
+std::string footprintCaption(const Trace& tr, const MomentFigure& f, bool hideRef) {
     if (!f.hasFootprint) return "The depths under the moments are not known for this lookup.";
     return "Footprint: the " + std::to_string(tr.depths.texels.size()) +
            " depth texels the moments average (the " + std::to_string(tr.params.kernel) + " x " +
            std::to_string(tr.params.kernel) + " " + std::string(weightsName(tr.params.weights)) +
-           " blur, then the bilinear read); a bar is their weight, the line t = " +
-           fixed(f.receiver, 4) + " the receiver.";
+           " blur, then the bilinear read); a bar is their weight, the line t" +
+           (hideRef ? std::string() : " = " + fixed(f.receiver, 4)) + " the receiver.";
 }
 
 // The filtered moments and what they say, in the kernel's numbers (Trace::moments).
@@ -319,7 +320,7 @@ MomentTexts momentTexts(const InspectorModel& m, const TypeSizes& t, const Momen
     auto mono = [&](const std::string& s) {
         return fitText(s, FontFace::Mono, t.number, t.numberFloor, width, 1e6f);
     };
-    x.caption = sans(footprintCaption(tr, f));
+    x.caption = sans(footprintCaption(tr, f, m.hidden.refs));
     x.numbers = hidden ? sans(MASKED) : mono(numbersText(tr));
     if (!isMsm(tr)) x.bound = sans(boundCaption(tr));
     x.result = hidden ? sans(MASKED) : mono(resultText(tr, f));
