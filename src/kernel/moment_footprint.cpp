@@ -16,7 +16,7 @@ void addMomentFootprint(Trace& tr, const ShadowMap& depthMap) {
     }
     PcfParams prm = tr.params;
     prm.method = sameFootprintPcfMethod();
-    Trace pcfTrace = traceLookup(depthMap, tr.uv, tr.z, tr.ref, prm, tr.bias, tr.dzduv);
+    Trace pcfTrace = traceLookup(depthMap, tr.uv, tr.z, tr.ref, prm, tr.bias, tr.dzduv, tr.layer);
     MomentFootprint out;
     out.present = true;
     out.pcfMethod = prm.method;
