@@ -121,7 +121,20 @@ std::vector<std::string> cropped(const std::vector<FramePlan>& pages, const Trac
         fetches.insert(p.drawnFetches.begin(), p.drawnFetches.end());
         formula |= p.formulaWhole;
     }
+    // A moment method's page draws the depths its moments average, not the moments texels:
+    // every texel of its footprint is in the histogram, the moments read (its one fetch) in its
+    // numbers, and its result (the "formula") whole.
+    if (tr.depths.present) {
+        for (const FootprintTexel& t : tr.depths.texels) {
+            if (!texels.count({t.texel.x, t.texel.y})) {
+                out.push_back("footprint texel (" + std::to_string(t.texel.x) + ", " +
+                              std::to_string(t.texel.y) + ") not in the histogram");
+            }
+        }
+    }
     for (const TapRecord& t : tr.taps) {
+        if (tr.depths.present)
+            break;  // (the moments texels have no cells, nor numbers of their own)
         // Drawn as its cell, or as a mark with its numbers (pcss's figures have no cells).
         if (!texels.count({t.texel.x, t.texel.y}) && !numbered.count({t.texel.x, t.texel.y})) {
             out.push_back("texel (" + std::to_string(t.texel.x) + ", " + std::to_string(t.texel.y) +
@@ -631,7 +644,11 @@ TEST_F(Layout, EveryStepAtEverySizeKeepsTextInPanelsMarksOffNumbersAndTypeAboveF
                     }
                     EXPECT_TRUE(stepText) << where;
                     // (A chart step in presentation gives the chart the inspector's room.)
-                    if (m.trace && !l.inspector.empty()) {
+                    // A moment method's page has no cells: its figure instead (cropped()
+                    // checks its histogram holds the footprint).
+                    if (m.trace && !l.inspector.empty() && plan.moments) {
+                        EXPECT_TRUE(plan.moments->hasFootprint) << where;
+                    } else if (m.trace && !l.inspector.empty()) {
                         EXPECT_GE(cellNumbers + tableRows, 4) << where;
                         // The lookup point sits beside its cell's numbers, never in place of
                         // one: that cell keeps its depth (1600x900 13.1 lost it).
@@ -1517,6 +1534,104 @@ TEST_F(Layout, NeighbourhoodAloneGivesTheCellsTheFormulasRoom) {
         }
     }
     EXPECT_GE(larger, 6);
+}
+
+// ---- A moment method's page (overlay/inspector_moment_page.cpp). ----
+
+// A moment method's step on box-on-plane, its point in the box's penumbra (the footprint
+// straddles the box's edge), with `extra` settings lines.
+Lesson momentLesson(const std::string& method, const std::string& extra) {
+    std::string text = "title = \"moments\"\nscene = \"box-on-plane\"\n[settings]\nmethod = \"" +
+                       method + "\"\nmap_size = 128\nkernel = 5\npoint = [0.9794, 0, -0.4338]\n" +
+                       extra +
+                       "\n[[step]]\ntitle = \"Look\"\ntext = \"visibility = {visibility}\"\n";
+    return parseLessonString(text, "moments.toml");
+}
+
+// Every page of a moment method's frame at the sizes a class meets (1024x768 and 1280x720 on a
+// projector, 1600x900 on a screen, and 960x540, where the bound goes on a page of its own): its
+// texts inside the panel, over no other text or number, at or above their floors; the histogram
+// holding every depth texel its moments average; its numbers and the "lit: ref <= depth" legend of
+// cells it no longer draws gone.
+TEST_F(Layout, MomentPagesFitAndShowTheFootprintAtEverySize) {
+    struct Case {
+        const char* method;
+        const char* extra;
+    };
+    const Case cases[] = {{"vsm", ""},
+                          {"vsm", "lbr = 0.3"},
+                          {"evsm4", "evsm_exponents = \"40,5\""},
+                          {"msm", ""},
+                          {"msm-hausdorff", ""}};
+    glm::ivec2 renderScene(inspectorLayout({1280, 720}, false).scene.size());
+    int pagedFrames = 0;  // frames whose figure took two pages (960x540's, at least)
+    for (const Case& c : cases) {
+        Lesson lesson = momentLesson(c.method, c.extra);
+        const LessonSettings& s = lesson.steps[0].settings;
+        SceneRenderer renderer(lesson.scene);
+        std::optional<ScenePoint> pinned = stepPoint(lesson.scene, s);
+        renderStepView(renderer, stepView(lesson.scene, s, pinned, renderScene));
+        ShadowMap map = renderer.readShadowMap();
+        glm::ivec2 px = stepPick(lesson.scene, s, renderScene).pixel;
+        std::optional<PixelLookup> lookup = tracePixel(renderer, map, s, px);
+        ASSERT_TRUE(lookup) << c.method;
+        const Trace& tr = lookup->trace;
+        // The footprint straddles the edge: (N + 1)^2 texels, not all one depth.
+        ASSERT_TRUE(tr.depths.present) << c.method;
+        EXPECT_EQ(tr.depths.texels.size(), 36u) << c.method;
+        InspectorModel m;
+        m.title = lesson.title;
+        m.stepTitles = {"Look"};
+        m.map = &map;
+        m.trace = tr;
+        m.stepText = "visibility";
+        for (auto [size, presentation] :
+             {std::pair{glm::ivec2(1024, 768), true}, std::pair{glm::ivec2(1280, 720), true},
+              std::pair{glm::ivec2(1600, 900), false},
+              // (Too small for the whole: the bound goes on a page of its own.)
+              std::pair{glm::ivec2(960, 540), true}}) {
+            InspectorLayout l = inspectorLayout(size, presentation);
+            m.presentation = presentation;
+            m.sceneSize = glm::ivec2(l.scene.size());
+            m.pixel = stepPick(lesson.scene, s, m.sceneSize).pixel;
+            std::string where = std::string(c.method) + " " + c.extra + " at " +
+                                std::to_string(size.x) + "x" + std::to_string(size.y);
+            FramePlan first = planFrame(l, m);
+            EXPECT_LE(first.textPages, 2) << where;
+            pagedFrames += first.textPages > 1;
+            std::vector<FramePlan> pages;
+            int histograms = 0, curves = 0;
+            // PCF of the same footprint, read off beside the bound at t (not for msm: no curve).
+            std::string pcfLabel = "pcf " + formatNumber(tr.depths.pcfVisibility);
+            bool pcfShown = false;
+            for (int page = 0; page < first.textPages; ++page) {
+                m.textPage = page;
+                pages.push_back(planFrame(l, m));
+                for (const std::string& problem : problems(pages.back(), l)) {
+                    ADD_FAILURE() << where << " page " << page + 1 << ": " << problem;
+                }
+                for (const LayoutBox& b : pages.back().boxes) {
+                    histograms += b.role == "moment-histogram";
+                    curves += b.role == "moment-curve";
+                    pcfShown |= b.role == "moment-value" && b.text == pcfLabel;
+                    EXPECT_EQ(b.text.find("ref <= depth"), std::string::npos) << where;
+                    EXPECT_FALSE(b.role.starts_with("cell-")) << where << ": " << b.role;
+                }
+                ASSERT_TRUE(pages.back().moments) << where;
+            }
+            m.textPage = 0;
+            for (const std::string& problem : cropped(pages, tr)) {
+                ADD_FAILURE() << where << ": " << problem;
+            }
+            EXPECT_EQ(histograms, 1) << where;
+            // vsm one curve, evsm4 one per warp; msm none (its points stand on the histogram).
+            bool msm = methodInfo(tr.params.method).reconstructs;
+            int warps = methodInfo(tr.params.method).warps;
+            EXPECT_EQ(curves, msm ? 0 : std::max(1, warps)) << where;
+            EXPECT_EQ(pcfShown, !msm) << where;
+        }
+    }
+    EXPECT_GT(pagedFrames, 0);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "app/render_options.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "kernel/moment_footprint.h"
 #include "kernel/moments.h"
 #include "kernel/settings.h"
 #include "kernel/shading.h"
@@ -194,7 +195,9 @@ int runTrace(const TraceOptions& o) {
     }
     map.setTexelKind(format);
     // The moment methods read the moments map the moments pass makes of these depths.
+    ShadowMap depthMap;
     if (readsMoments(prm.method)) {
+        depthMap = map;
         map = momentsMap(map, prm, mapTexelKind(prm.method, format, settings.momentBits));
         bool warps = methodInfo(prm.method).warps > 0;
         if (warps && prm.evsmExponents != settings.evsmExponents) {
@@ -214,6 +217,8 @@ int runTrace(const TraceOptions& o) {
     // The per-lookup bias (kernel/bias.h); normal offset has already moved the point given.
     float ref = z - settings.lookupBias(std::cos(o.angleDeg * 0.0174532925f));
     Trace tr = traceLookup(map, uv, z, ref, prm, settings, dzduv);
+    // The depths the moments average, and PCF of them (kernel/moment_footprint.h).
+    if (readsMoments(prm.method)) addMomentFootprint(tr, depthMap);
     std::string out = o.json ? traceToJson(tr) + "\n" : traceToText(tr);
     std::fwrite(out.data(), 1, out.size(), stdout);
     return 0;

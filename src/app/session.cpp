@@ -332,6 +332,8 @@ void Session::renderScene() {
     mRenderer->renderCameraPass(r);
     if (mapChanged) {
         mMap = mRenderer->readShadowMap();
+        // A moments map's depths, for the inspector's footprint (kernel/moment_footprint.h).
+        mDepthMap = mMap.spec().texel().depth ? ShadowMap() : mRenderer->readDepthMap();
         mThumbnailDirty = true;
     }
     measureCascades(r);
@@ -368,7 +370,7 @@ void Session::traceAtPixel() {
     mLightSpaceOrigin = mPixel - glm::ivec2(radius);
     mLightSpaceSize = glm::ivec2(2 * radius + 1);
     mLightSpace = mRenderer->readLightSpaceRegion(mLightSpaceOrigin, mLightSpaceSize);
-    mLookup = tracePixel(*mRenderer, mMap, mSettings, mPixel);
+    mLookup = tracePixel(*mRenderer, mMap, mSettings, mPixel, &mDepthMap);
     // A cascaded map: the density of the cascade read, as measured on this frame.
     if (mLookup && mLookup->trace.layer < static_cast<int>(mCascadeDensity.size())) {
         mLookup->trace.cascadeTexelsPerPixelMax = static_cast<float>(

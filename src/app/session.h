@@ -291,6 +291,7 @@ class Session {
     bool mSceneDirty = true;
     std::optional<RenderSettings> mRendered;
     ShadowMap mMap;
+    ShadowMap mDepthMap;                          // a moments map's depths (empty for a depth map)
     std::vector<CascadeDensity> mCascadeDensity;  // per cascade (measureCascades)
     int mThumbnailLayer = 0;                      // the layer the thumbnail shows
     std::vector<float> mLightSpace;  // a region around the pixel (gridRadius), rows top-down

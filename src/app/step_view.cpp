@@ -1,5 +1,7 @@
 #include "app/step_view.h"
 
+#include "kernel/methods.h"
+#include "kernel/moment_footprint.h"
 #include "scene/light.h"
 
 namespace pcf {
@@ -52,7 +54,8 @@ void renderStepView(SceneRenderer& renderer, const StepView& view) {
 }
 
 std::optional<PixelLookup> tracePixel(const SceneRenderer& renderer, const ShadowMap& map,
-                                      const LessonSettings& s, glm::ivec2 pixel) {
+                                      const LessonSettings& s, glm::ivec2 pixel,
+                                      const ShadowMap* depthMap) {
     std::vector<float> ls = renderer.readLightSpaceRegion(pixel, glm::ivec2(1));
     if (ls[3] != 1.0f) return std::nullopt;
     PixelLookup out;
@@ -79,6 +82,9 @@ std::optional<PixelLookup> tracePixel(const SceneRenderer& renderer, const Shado
     }
     out.trace = traceLookup(map, out.uv, out.z, out.ref, prm, out.bias, out.dzduv, layer);
     if (!out.cascade.covered) out.trace.visibility = 1.0f;
+    if (readsMoments(prm.method)) {
+        addMomentFootprint(out.trace, depthMap ? *depthMap : renderer.readDepthMap());
+    }
     return out;
 }
 

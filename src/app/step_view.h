@@ -70,8 +70,11 @@ struct PixelLookup {
 // The lookup the last camera pass drew at a scene pixel (origin top-left), traced by the CPU
 // kernel on `map` with settings `s`; nullopt when the pixel is not on a shadow receiver, or, for
 // a cascaded map, not the pinned point's pixel (the one whose layer is known: CameraPick::layer).
+// A moment method's trace also gets the depths its moments average (kernel/moment_footprint.h)
+// from `depthMap`, the depth map under `map` (null: read back from the renderer).
 std::optional<PixelLookup> tracePixel(const SceneRenderer& renderer, const ShadowMap& map,
-                                      const LessonSettings& s, glm::ivec2 pixel);
+                                      const LessonSettings& s, glm::ivec2 pixel,
+                                      const ShadowMap* depthMap = nullptr);
 
 // What a step's text and claims say of its split view (lesson_text.h: part[K].visibility): each
 // part's visibility at `point`, the map rendered by `renderer` with that part's settings (`s` with

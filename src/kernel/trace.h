@@ -12,6 +12,7 @@
 
 #include "kernel/bias.h"
 #include "kernel/methods.h"
+#include "kernel/moment_footprint.h"
 #include "kernel/pcf.h"
 #include "kernel/shadow_map.h"
 
@@ -118,6 +119,9 @@ struct Trace {
     // The exponents used are params.evsmExponents. Zero otherwise.
     PcfMomentEstimate moments{vec4(0.0f), 0.0f,       0.0f,       0.0f, 0.0f,
                               0.0f,       vec4(0.0f), vec4(0.0f), 0.0f};
+    // The moment methods, when the depth map under the moments is known (addMomentFootprint):
+    // the depth texels the lookup's moments average, with their weights, and PCF of them.
+    MomentFootprint depths;
     // The texture unit's precision (issue 10): the lookup's sub-texel fraction as a float and
     // rounded to 1/256 texel (hw8), and the visibility the kernel gives under each model.
     bool usesTextureUnit = false;  // the method issues hardware taps or gathers

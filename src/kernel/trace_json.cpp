@@ -145,6 +145,20 @@ Json pcssJson(const Trace& tr) {
             {"search", search}};
 }
 
+// The depths a moment method's moments average (kernel/moment_footprint.h), each texel with its
+// weight, and PCF of the same texels at the same ref.
+Json footprintJson(const MomentFootprint& f) {
+    Json texels = Json::array();
+    for (const FootprintTexel& t : f.texels) {
+        texels.push_back({{"texel", jsonPair(t.texel)},
+                          {"depth", jsonNumber(t.depth)},
+                          {"weight", jsonNumber(t.weight)}});
+    }
+    return {{"texels", texels},
+            {"pcf_method", std::string(methodInfo(f.pcfMethod).name)},
+            {"pcf_visibility", jsonNumber(f.pcfVisibility)}};
+}
+
 // The moment methods: what the filtered moments say (pcfMomentEstimate), and the parameters
 // used: the exponents after the clamp to what the map's floats hold (exponent_limit).
 Json momentsJson(const Trace& tr) {
@@ -159,21 +173,23 @@ Json momentsJson(const Trace& tr) {
         points.push_back(jsonNumber(e.points[k]));
         weights.push_back(jsonNumber(e.weights[k]));
     }
-    return {{"moments",
-             {jsonNumber(e.moments.x), jsonNumber(e.moments.y), jsonNumber(e.moments.z),
-              jsonNumber(e.moments.w)}},
-            {"mean", jsonNumber(e.mean)},
-            {"variance", jsonNumber(e.variance)},
-            {"receiver", jsonNumber(e.receiver)},
-            {"bound", jsonNumber(e.bound)},
-            {"negative_bound", jsonNumber(e.negBound)},
-            {"lbr", jsonNumber(tr.params.lbr)},
-            {"min_variance", jsonNumber(tr.params.minVariance)},
-            {"exponents_used", jsonPair(tr.params.evsmExponents)},
-            {"exponent_limit", jsonNumber(evsmExponentLimit(bits))},
-            {"moment_bias", jsonNumber(tr.params.momentBias)},
-            {"points", points},
-            {"point_weights", weights}};
+    Json j = {{"moments",
+               {jsonNumber(e.moments.x), jsonNumber(e.moments.y), jsonNumber(e.moments.z),
+                jsonNumber(e.moments.w)}},
+              {"mean", jsonNumber(e.mean)},
+              {"variance", jsonNumber(e.variance)},
+              {"receiver", jsonNumber(e.receiver)},
+              {"bound", jsonNumber(e.bound)},
+              {"negative_bound", jsonNumber(e.negBound)},
+              {"lbr", jsonNumber(tr.params.lbr)},
+              {"min_variance", jsonNumber(tr.params.minVariance)},
+              {"exponents_used", jsonPair(tr.params.evsmExponents)},
+              {"exponent_limit", jsonNumber(evsmExponentLimit(bits))},
+              {"moment_bias", jsonNumber(tr.params.momentBias)},
+              {"points", points},
+              {"point_weights", weights}};
+    if (tr.depths.present) j["footprint"] = footprintJson(tr.depths);
+    return j;
 }
 
 }  // namespace

@@ -91,7 +91,14 @@ std::vector<MomentStep> momentSteps(const Trace& tr) {
     } else {
         out.emplace_back(TraceStepKind::MomentBound, boundText(tr));
     }
-    out.emplace_back(TraceStepKind::Result, "visibility = " + n4(tr.visibility) + ".");
+    std::string result = "visibility = " + n4(tr.visibility) + ".";
+    // PCF of the very depths the moments average (kernel/moment_footprint.h), when known.
+    if (tr.depths.present) {
+        result += " " + std::string(methodInfo(tr.depths.pcfMethod).name) + " of the same " +
+                  std::to_string(tr.depths.texels.size()) +
+                  " depth texels at the same ref: " + n4(tr.depths.pcfVisibility) + ".";
+    }
+    out.emplace_back(TraceStepKind::Result, result);
     return out;
 }
 

@@ -18,6 +18,7 @@
 #include "kernel/shadow_map.h"
 #include "kernel/trace.h"
 #include "lesson/lesson_focus.h"
+#include "overlay/inspector_moments.h"
 #include "render/gl_objects.h"
 
 namespace pcf {
@@ -204,6 +205,9 @@ struct FramePlan {
         Rect clip;  // the ring is drawn clipped to this (the cells, a figure's square)
     };
     std::vector<Ring> rings;
+    // A moment method's figure as this page planned it (inspector_moments.h): the histogram's
+    // bins, the curves, msm's points. None for the other methods.
+    std::optional<MomentFigure> moments;
 };
 FramePlan planFrame(const InspectorLayout& layout, const InspectorModel& model);
 void drawPlan(Canvas& canvas, const std::vector<std::function<void(Canvas&)>>& ops);

@@ -6,7 +6,7 @@ namespace pcf::inspector_detail {
 
 namespace {
 
-enum SwatchShape { SQUARE, DOT, RING, OUTLINE, BAR, TICK, CIRCLE, DISC, GRID };
+enum SwatchShape { SQUARE, DOT, RING, OUTLINE, BAR, TICK, CIRCLE, DISC, GRID, VLINE, STEM };
 
 struct LegendEntry {
     Colour colour;
@@ -28,6 +28,24 @@ void pcssEntries(const LegendNeeds& need, std::vector<LegendEntry>& entries) {
     if (need.texelGrid) entries.push_back({PCSS_GRID, "grid: the map's texels", GRID});
 }
 
+// A moment method's figure (inspector_moment_page.cpp): its colours, as it draws them.
+void momentEntries(const LegendNeeds& need, std::vector<LegendEntry>& entries) {
+    if (need.momentBars) entries.push_back({MOMENT_BAR, "depth texels (weight)", SQUARE});
+    if (need.meanLine) entries.push_back({ACCENT, "mean", VLINE});
+    if (need.receiverLine) entries.push_back({POINT, "receiver t", VLINE});
+    if (need.msmPoints) entries.push_back({GATHER, "reconstructed points", STEM});
+    if (need.boundCurve) {
+        entries.push_back(
+            {LIT_COLOUR, need.negCurve ? "positive warp's bound" : "bound p_max(t)", BAR});
+    }
+    if (need.negCurve) entries.push_back({MOMENT_NEG_CURVE, "negative warp's bound", BAR});
+    if (need.lbrCurve) entries.push_back({WEIGHT_BAR, "after LBR linstep", BAR});
+    if (need.pcfMark) {
+        std::string pcf(methodInfo(sameFootprintPcfMethod()).name);
+        entries.push_back({PCF_MARK, pcf + " of the same texels", SQUARE});
+    }
+}
+
 // One entry for every kind of mark this frame draws.
 std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeeds& need) {
     std::vector<LegendEntry> entries;
@@ -39,6 +57,7 @@ std::vector<LegendEntry> legendEntries(const InspectorModel& m, const LegendNeed
         entries.push_back({SHADOWED_COLOUR, "shadowed", SQUARE});
     }
     pcssEntries(need, entries);
+    momentEntries(need, entries);
     if (need.padding) entries.push_back({PADDING, "not read", SQUARE});
     if (need.zeroWeight) {
         entries.push_back({glm::mix(LIT_COLOUR, PADDING, 0.55f), "read, weight 0", SQUARE});
@@ -104,6 +123,13 @@ void planSwatch(Planner& pl, Rect sw, SwatchShape shape, Colour col, float lg, C
                 break;
             case SQUARE:
                 c.fillRect(sw, col);
+                break;
+            case VLINE:  // a line across a plot, as the moment figure's t and mean
+                c.fillRect({cc.x - 1.5f, sw.y, 3.0f, sw.h}, col);
+                break;
+            case STEM:  // msm's point: a stem with a dot on it
+                c.fillRect({cc.x - 1.0f, sw.y + sw.h * 0.3f, 2.0f, sw.h * 0.7f}, col);
+                c.circle({cc.x, sw.y + sw.h * 0.3f}, lg * 0.18f, col);
                 break;
             case TICK:  // a tick across a cell border, as in the cells
                 c.fillRect({sw.x, sw.y + sw.h * 0.5f - 0.5f, sw.w, 1.0f}, TEXT_DIM);

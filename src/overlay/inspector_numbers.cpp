@@ -248,6 +248,8 @@ void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& 
     const Trace& tr = *m.trace;
     // pcss: its figures, page by page, instead of its disks' hundreds of small cells.
     if (pcssFigures(tr)) return planPcssInspector(pl, l, m, t);
+    // The moment methods: the statistics their moments hold, not taps (no texel has a bit).
+    if (momentFigures(tr)) return planMomentInspector(pl, l, m, t);
     InspectorPanel panel = inspectorPanel(l, m, t, pl.onTop, pl.plan.footprintShown);
     const PanelLayout& layout = panel.layout;
     planHeader(pl, l, layout.header, t, margin, tr, m.hidden);

@@ -45,6 +45,9 @@ constexpr Colour FOOTPRINT_TINT{0.2f, 0.85f, 1.0f, 0.18f};
 constexpr Colour SEARCH{0.80f, 0.58f, 1.0f, 1.0f};       // pcss: the blocker search's taps and disk
 constexpr Colour PCSS_GRID{0.45f, 0.47f, 0.53f, 1.0f};   // pcss's figures: the faint texel grid
 constexpr Colour HIDDEN_BIT{0.42f, 0.36f, 0.52f, 1.0f};  // a cell whose bit a question hides
+constexpr Colour MOMENT_BAR{0.55f, 0.64f, 0.80f, 1.0f};  // the moment figure's histogram bars
+constexpr Colour MOMENT_NEG_CURVE{0.62f, 0.88f, 0.42f, 1.0f};  // evsm4's negative warp's bound
+constexpr Colour PCF_MARK{0.95f, 0.95f, 0.98f, 1.0f};  // pcf-naive of the moments' footprint
 
 // A texel narrower than this on screen makes the grid's lines a moire that reads as acne: the
 // grid is hidden then (the tint of the texels read stays). Lesson 8's acne stripes, one texel
@@ -271,6 +274,12 @@ struct LegendNeeds {
     // pcss's figures (inspector_pcss.cpp): the search's taps as discs, blocker or not; the
     // filter's taps, lit or shadowed; the faint texel grid under them.
     bool blockerTaps = false, filterTaps = false, texelGrid = false;
+    // A moment method's figure (inspector_moment_page.cpp): the footprint's histogram, its mean,
+    // the receiver's t, the bound's curves (evsm4's negative warp's, after the LBR linstep), and
+    // msm's reconstructed points.
+    bool momentBars = false, meanLine = false, receiverLine = false, boundCurve = false,
+         negCurve = false, lbrCurve = false, msmPoints = false;
+    bool pcfMark = false;  // PCF of the same footprint at t, on the bound's plot
 };
 
 // The legend: a swatch and a word for every kind of mark this frame draws, flowing onto more
@@ -301,6 +310,15 @@ void planPcssInspector(Planner& pl, const InspectorLayout& l, const InspectorMod
 // trace's distances, and the words that give w with its numbers, between top and bottom.
 void planPenumbraPage(Planner& pl, const InspectorLayout& l, const Trace& tr, const TypeSizes& t,
                       float top, float bottom);
+
+// ---- inspector_moment_page.cpp: the moment methods' page (vsm, evsm2, evsm4, msm, ...). ----
+// Their map holds averages and no texel a bit: the panel shows the statistics instead of cells,
+// the footprint's depths as a histogram, the moments, the bound over depth or msm's points, and
+// PCF of the same footprint (inspector_moments.h has the numbers; FramePlan::moments, what
+// was drawn).
+bool momentFigures(const Trace& tr);
+void planMomentInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
+                         const TypeSizes& t);
 
 // ---- inspector_disks.cpp: the disks poisson's and pcss's points lie on. ----
 // The rings planDisks draws round the lookup point, radii in texels (0: none): pcss's blocker

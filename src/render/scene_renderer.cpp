@@ -383,4 +383,11 @@ std::vector<float> SceneRenderer::readRegion(GLenum attachment, glm::ivec2 topLe
 // The map the sampler compares against (depth_readback.h), not glGetTextureImage's conversion.
 ShadowMap SceneRenderer::readShadowMap() const { return readSampledDepth(mapTexture(), mMap); }
 
+ShadowMap SceneRenderer::readDepthMap() const {
+    if (mMap.texel().depth) return readShadowMap();
+    MapSpec depth = mMap;
+    depth.texels = mShadowDepthFormat;
+    return readSampledDepth(mShadow.depth.id(), depth);
+}
+
 }  // namespace pcf

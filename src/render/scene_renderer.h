@@ -76,6 +76,9 @@ class SceneRenderer {
     std::vector<float> readReceiverRegion(glm::ivec2 topLeft, glm::ivec2 size) const;
     // The map the last depth pass made, its texels as the sampler reads them, GL row order.
     ShadowMap readShadowMap() const;
+    // The depths the last depth pass wrote, as the moments pass read them: for a moments map the
+    // depth map under it (kernel/moment_footprint.h), else readShadowMap's map.
+    ShadowMap readDepthMap() const;
     // What the last depth pass made: size, texel kind, each layer's fit. The camera pass's
     // uniforms, readShadowMap's spec and render.json's "map" all come from it.
     const MapSpec& mapSpec() const { return mMap; }
