@@ -18,11 +18,7 @@ namespace pcf {
 
 namespace {
 
-std::string methodLabel(int method, int kernel) {
-    std::string label(methodInfo(method).name);
-    if (kernel > 0) label += " " + std::to_string(kernel) + "x" + std::to_string(kernel);
-    return label;
-}
+std::string methodLabel(int method, int kernel) { return bleedLineLabel(method, kernel); }
 
 // "lbr 0 to 0.5 (6 values), moment_format 16f, 32f": each setting swept at `gap`, the values
 // as the command line writes them.
@@ -90,6 +86,12 @@ std::string bleedCleanNote(const BleedSeries& s) {
 }
 
 }  // namespace
+
+std::string bleedLineLabel(int method, int kernel) {
+    std::string label(methodInfo(method).name);
+    if (kernel > 0) label += " " + std::to_string(kernel) + "x" + std::to_string(kernel);
+    return label;
+}
 
 LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
                              float minFontPx) {
