@@ -26,6 +26,7 @@ uniform float uSpotCosCone;           // spot only: cos of the cone's half angle
 uniform ivec2 uPickPixel;             // a lesson's pinned point's pixel (window coords); -1: none
 uniform vec4 uPickLookup;             // its u, v, ref, z0, computed on the CPU
 uniform vec2 uPickDzDuv;              // its receiver plane, dz/du, dz/dv
+uniform int uPickLayer;               // the layer (cascade) its lookup is in
 uniform vec3 uEyeWs;                  // the camera's eye and unit view direction: which cascade
 uniform vec3 uViewDirWs;              // a receiver reads (pcfViewDepth)
 
@@ -105,6 +106,11 @@ void main() {
         ref = uPickLookup.z;
         z0 = uPickLookup.w;
         dzduv = uPickDzDuv;
+#if PCF_MAP_LAYERS > 1
+        covered = uPickLayer < PCF_MAP_LAYERS;
+        layerIndex = min(uPickLayer, PCF_MAP_LAYERS - 1);
+        pcfMapLayer = layerIndex;
+#endif
     }
 
     float visibility = 1.0f;

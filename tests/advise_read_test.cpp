@@ -1,7 +1,7 @@
-// An advise folder read back (measure/advise_read.h) and shown as a lesson step's chart
-// (charts/step_chart.h, "DIR/advise.csv"): what advise_report.h writes reads back to the same
-// settings, measures, budget and choice; a folder whose marks disagree with its own budget, or
-// that lacks advise.json, is refused in one line naming the file (and the CSV's line).
+// An advise folder read back (measure/advise_read.h): what advise_report.h writes reads back to
+// the same settings, measures, budget and choice; marks that disagree with the folder's own
+// budget are refused in one line naming the file and the CSV's line. No GL context: it runs in
+// CI's sanitized list (scripts/test); advise_step_chart_test draws the folder as a lesson step.
 #include "measure/advise_read.h"
 
 #include <gtest/gtest.h>
@@ -11,61 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "advise_written.h"
 #include "base/input_error.h"
 #include "charts/step_chart.h"
-#include "measure/advise_report.h"
-#include "run_command.h"
 
 namespace pcf {
 namespace {
 
-// Three settings of box-on-plane's shape of numbers: nearest breaks the edge and the shimmer,
-// hw2x2 on 256 the edge, hw2x2 on 512 meets the budget (the choice), tent on 512 meets it too
-// at a higher cost (the runner-up).
-struct Written {
-    AdviseResult result;
-    std::vector<BenchRow> rows;
-    AdviseBudget budget;
-    std::string csv, json;
-};
-
-Written written() {
-    Written w;
-    w.budget.maxEdgeRmse = 0.1;
-    w.budget.maxShimmer = 0.5;
-    w.budget.maxLeakTexels = 2.0;
-    struct Dot {
-        int method, kernel, map;
-        double edge, shimmer, cost;
-    };
-    const Dot dots[] = {{PCF_NEAREST, 0, 256, 0.33, 1.0, 0.8},
-                        {PCF_HW2X2, 0, 256, 0.25, 0.4, 0.9},
-                        {PCF_HW2X2, 0, 512, 0.09, 0.4, 1.0},
-                        {PCF_TENT, 3, 512, 0.08, 0.1, 2.5}};
-    for (const Dot& d : dots) {
-        AdviseCandidate c;
-        c.setting.filter = {d.method, d.kernel};
-        c.setting.mapSize = d.map;
-        c.texelReads = adviseTexelReads(c.setting.filter);
-        c.metrics.edgeRmse = d.edge;
-        c.metrics.shimmerP99 = d.shimmer;
-        c.metrics.leakTexels = 0.5;
-        c.metrics.costMs = d.cost;
-        c.metrics.costIqr = 0.05;
-        c.broken = adviseBroken(w.budget, c.metrics);
-        w.result.measured.push_back(c);
-        BenchRow r;
-        r.point = {d.method, d.kernel, d.map};
-        r.error.edgeRmse = d.edge;
-        w.rows.push_back(r);
-    }
-    w.result.gridSize = 24;
-    chooseAdvice(w.result, w.budget);
-    AdviseContext context{"box-on-plane", 480, 270, "hard (the light's centre)", "llvmpipe", {}};
-    w.csv = adviseCsv(w.result, w.rows);
-    w.json = adviseJson(w.result, w.budget, context);
-    return w;
-}
+using advise_test::Written;
+using advise_test::written;
 
 // The CSV with one field of one data line (1-based, the header line 1) replaced.
 std::string withField(const std::string& csv, int line, size_t field, const std::string& value) {
@@ -146,84 +100,6 @@ TEST(AdviseRead, AFileNamedAdviseCsvIsAnAdviseChart) {
     EXPECT_THROW(checkStepChart(figures + "#acne"), InputError);
     // No highlight on it: the chart rings its own choice.
     EXPECT_THROW(checkStepChartHighlight(figures, "hw2x2 512"), std::invalid_argument);
-}
-
-class AdviseStepChart : public ::testing::Test {
-  protected:
-    void SetUp() override { mDir = testutil::makeTempDir("advise-step"); }
-    void TearDown() override {
-        if (!HasFailure()) std::filesystem::remove_all(mDir);
-    }
-    // A one-step lesson charting `folder`/advise.csv; the chart line is line 6.
-    std::string lesson(const std::filesystem::path& folder, const std::string& claims = "") {
-        std::string path = (mDir / "advise.toml").string();
-        std::ofstream(path) << "title = \"Advice\"\n"                 // 1
-                               "scene = \"box-on-plane\"\n"           // 2
-                               "[[step]]\n"                           // 3
-                               "title = \"The chart\"\n"              // 4
-                               "text = \"The settings measured.\"\n"  // 5
-                               "chart = \""
-                            << (folder / "advise.csv").string() << "\"\n"  // 6
-                            << claims;                                     // 7..
-        return path;
-    }
-    std::filesystem::path mDir;
-};
-
-// A folder without its advise.json, or one whose CSV is not advise's, is a bad lesson: one line
-// at the chart's line, exit 2, from `lesson check` and from `export`.
-TEST_F(AdviseStepChart, ABadFolderIsRefusedAtTheChartsLine) {
-    Written w = written();
-    std::filesystem::path folder = mDir / "run";
-    std::filesystem::create_directories(folder);
-    std::ofstream(folder / "advise.csv") << w.csv;
-    std::string path = lesson(folder);
-    std::string out = (mDir / "out-advise").string();
-    for (std::string command :
-         {std::string("lesson check "), "export -o " + out + " --size 640x360 "}) {
-        testutil::CommandResult r = testutil::runPcfscope(command + path);
-        EXPECT_EQ(r.exitCode, 2) << command << r.out << r.err;
-        EXPECT_EQ(testutil::lineCount(r.err), 1) << r.err;
-        EXPECT_NE(r.err.find(path + ":6:"), std::string::npos) << r.err;
-        EXPECT_NE(r.err.find("advise.json"), std::string::npos) << r.err;
-    }
-    EXPECT_FALSE(std::filesystem::exists(mDir / "out-advise"));
-    std::ofstream(folder / "advise.json") << w.json;
-    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
-    EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
-}
-
-// A claim false for the committed figures fails at its line with what the chart shows (exit 1);
-// one this chart's facts do not know is a bad file (exit 2).
-TEST_F(AdviseStepChart, AFalseClaimAboutTheCommittedFiguresFailsAtItsLine) {
-    std::filesystem::path figures = PCFSCOPE_SOURCE_DIR "/lessons/figures/box_advise";
-    std::string path =
-        lesson(figures,
-               "claims = [\"chart: the choice is nearest map 256 bias none\",\n"  // 7
-               "  \"chart: nearest map 256 bias none meets the budget\",\n"       // 8
-               "  \"chart: the budget is edge 0.2\"]\n");                         // 9
-    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
-    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
-    EXPECT_EQ(testutil::lineCount(r.out), 3) << r.out;
-    EXPECT_NE(r.out.find(path + ":7: step 1 claim \"chart: the choice is nearest map 256 bias "
-                                "none\" fails: the choice is "),
-              std::string::npos)
-        << r.out;
-    EXPECT_NE(r.out.find(path + ":8: step 1 claim \"chart: nearest map 256 bias none meets the "
-                                "budget\" fails: nearest map 256 bias none breaks edge"),
-              std::string::npos)
-        << r.out;
-    EXPECT_NE(r.out.find(path + ":9: step 1 claim \"chart: the budget is edge 0.2\" fails: the "
-                                "budget is edge 0.1, "),
-              std::string::npos)
-        << r.out;
-    path = lesson(figures, "claims = [\"chart: the front is nearest 256\"]\n");
-    r = testutil::runPcfscope("lesson check " + path);
-    EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
-    EXPECT_NE(r.err.find(path + ":7: step 1 claim \"chart: the front is nearest 256\": unknown "
-                                "chart fact"),
-              std::string::npos)
-        << r.err;
 }
 
 }  // namespace

@@ -254,7 +254,7 @@ TEST(LessonFormat, UnknownNamesAreRefused) {
     EXPECT_EQ(e,
               "bad.toml:2: unknown scene preset 'poles' (known: box-on-plane, "
               "sphere-over-plane, pole, post-in-sun, post-under-spot, grazing, stairs, "
-              "stacked-cards)");
+              "stacked-cards, long-ground)");
 }
 
 TEST(LessonFormat, ValuesOutOfRangeAreRefused) {

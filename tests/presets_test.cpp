@@ -18,7 +18,7 @@ TEST(Presets, NamesInOrder) {
     std::vector<std::string_view> names = presetNames();
     std::vector<std::string_view> expected = {"box-on-plane", "sphere-over-plane", "pole",
                                               "post-in-sun",  "post-under-spot",   "grazing",
-                                              "stairs",       "stacked-cards"};
+                                              "stairs",       "stacked-cards",     "long-ground"};
     EXPECT_EQ(names, expected);
     EXPECT_FALSE(presetScene("no-such-scene"));
     EXPECT_FALSE(presetSceneToml("no-such-scene"));

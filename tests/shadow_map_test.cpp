@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -64,6 +65,24 @@ TEST(ShadowMap, EveryTexelKindHasItsOwnNameAndItsChannels) {
     EXPECT_EQ(texelKindInfo(TexelKind::Moments2F32).bits, 32);
     EXPECT_EQ(texelKindFromName("32"), TexelKind::D32F);
     EXPECT_FALSE(texelKindFromName("8").has_value());
+}
+
+// Every value of the enum is in allTexelKinds() (the list the names, the command line and the
+// parity test read): texelKindInfo's switch names every kind (no `default:`) and throws past the
+// last, so walking the values until it throws visits each kind once.
+TEST(ShadowMap, EveryTexelKindIsListed) {
+    std::span<const TexelKind> listed = allTexelKinds();
+    int k = 0;
+    for (;; ++k) {
+        TexelKind kind = static_cast<TexelKind>(k);
+        try {
+            texelKindInfo(kind);
+        } catch (const std::out_of_range&) {
+            break;
+        }
+        EXPECT_NE(std::find(listed.begin(), listed.end(), kind), listed.end()) << k;
+    }
+    EXPECT_EQ(static_cast<size_t>(k), listed.size());
 }
 
 // A map made from depths is one layer of 32F depths, fitted by nothing (identity, orthographic,

@@ -20,6 +20,7 @@
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "render/scene_renderer.h"
+#include "scene/cascade_fit.h"
 
 namespace pcf {
 
@@ -44,6 +45,8 @@ struct LessonRender {
     std::optional<CameraPick> pick;
     // The camera the step is seen through: a `magnify` step's close-up (magnifier.h: stepCamera).
     std::optional<Camera> camera;
+    // The camera the cascades are fitted to: the lesson's own, whatever the step is seen through.
+    std::optional<Camera> cascadeCamera;
 };
 
 // The lesson's step (-o writes its chart, as `export` shows it in the scene's place; --raw
@@ -63,8 +66,10 @@ LessonRender lessonRenderOf(const RenderCommandOptions& o, const RenderSettings&
     std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
     Scene seen = lesson.scene;
     seen.camera = stepCamera(lesson.scene, s, point, settings.frameSize);
-    StepView view = stepView(seen, s, point, settings.frameSize);
+    // The cascades stay fitted to the lesson's camera (a close-up or a frozen view moves away).
+    StepView view = stepView(seen, s, point, settings.frameSize, std::nullopt, lesson.scene.camera);
     out.camera = seen.camera;
+    out.cascadeCamera = lesson.scene.camera;
     out.fit = view.fit;
     out.pick = view.pick;
     if (!step.chart.empty()) {
@@ -114,8 +119,16 @@ std::string withCascadeDensities(const std::string& json, const SceneRenderer& r
                                  const std::vector<float>& positions) {
     if (renderer.mapSpec().layers.size() < 2) return json;
     Json j = Json::parse(json);
-    std::vector<CascadeDensity> d = cascadeDensities(lightSpace, positions, renderer.frameSize(),
-                                                     renderer.mapSpec(), renderer.scene().camera);
+    const Camera& camera = renderer.cascadeCamera();
+    std::vector<CascadeDensity> d =
+        cascadeDensities(lightSpace, positions, renderer.frameSize(), renderer.mapSpec(), camera);
+    // The camera as the camera pass measured view depths with (its uniforms): what `verify`
+    // chooses each pixel's cascade again by.
+    glm::vec3 dir = cameraViewDirWs(camera);
+    j["map"]["cascade_camera"] = {
+        {"eye",
+         {jsonNumber(camera.eyeWs.x), jsonNumber(camera.eyeWs.y), jsonNumber(camera.eyeWs.z)}},
+        {"view_dir", {jsonNumber(dir.x), jsonNumber(dir.y), jsonNumber(dir.z)}}};
     for (size_t k = 0; k < d.size(); ++k) {
         Json& cascade = j["map"]["cascades"][k];
         cascade["texels_per_pixel_max"] = jsonNumber(static_cast<float>(d[k].texelsPerPixelMax));
@@ -206,6 +219,7 @@ int runRender(const RenderCommandOptions& o) {
     SceneRenderer renderer(scene);
     if (lesson.fit) renderer.setShadowClipFromWorld(*lesson.fit);
     renderer.setPick(lesson.pick);
+    renderer.setCascadeCamera(lesson.cascadeCamera);
     renderer.render(settings);
     if (o.verbose)
         std::fprintf(stderr, "pcfscope: rendered on %s\n", context->description().c_str());

@@ -1,17 +1,21 @@
 // pcfscope trace: one lookup's step-through, as text or as the JSON object of docs/user-guide.md,
 // "trace".
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/raw_folder.h"
 #include "app/render_options.h"
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/moments.h"
 #include "kernel/settings.h"
+#include "kernel/shading.h"
 #include "kernel/trace.h"
 #include "kernel/trace_explain.h"
 #include "kernel/trace_json.h"
@@ -30,6 +34,8 @@ constexpr float MAX_TRACE_PENUMBRA_SCALE = 1.0e6f;
 struct TraceOptions {
     std::string mapPath;
     bool example = false;
+    std::string rawDir;  // a `render --raw` folder: trace one of its pixels (--pixel)
+    std::string pixel;
     std::string uv;
     float z = 0.0f;
     // The filter's and the bias's options, the parameter table's (trace's defaults: bilinear2x2,
@@ -106,10 +112,64 @@ vec2 traceDzDuv(const TraceOptions& o, const ShadowSettings& s) {
     return dzduv;
 }
 
-int runTrace(const TraceOptions& o) {
-    if (o.example == !o.mapPath.empty()) {
-        throw UsageError("trace needs exactly one of --map FILE or --example");
+// --raw DIR --pixel X,Y: the lookup the camera pass made at that pixel (top-left origin) of a
+// `render --raw` folder, traced by the CPU kernel on the layer it read (a cascaded map's: the
+// cascade its view depth falls in, raw_folder.h pixelLayer), with the settings and the map
+// render.json names; a cascade's density from render.json's "cascades".
+Trace traceRawPixel(const TraceOptions& o) {
+    // Everything else the folder's render.json says.
+    for (const CLI::Option* opt : o.sub->get_options()) {
+        std::string name = opt->get_name();
+        if (opt->count() > 0 && name != "--raw" && name != "--pixel" && name != "--json") {
+            throw UsageError(name + " does not go with --raw (render.json says it)");
+        }
     }
+    if (o.pixel.empty()) throw UsageError("trace --raw needs --pixel X,Y");
+    std::filesystem::path dir(o.rawDir);
+    RawSettings r = readRawSettings(dir);
+    RawImages img = readRawImages(dir, r);
+    checkMapTexels(r, (dir / "render.json").string());
+    glm::ivec2 px = parseIvec2("--pixel", o.pixel);
+    const FloatImage& ls = img.lightSpace;
+    if (px.x < 0 || px.y < 0 || px.x >= ls.width || px.y >= ls.height) {
+        throw UsageError("--pixel " + o.pixel + " is outside the " + std::to_string(ls.width) +
+                         "x" + std::to_string(ls.height) + " frame of " + o.rawDir);
+    }
+    size_t k = static_cast<size_t>(px.y) * ls.width + px.x;
+    if (ls.data[4 * k + 3] != 1.0f) {
+        throw UsageError("--pixel " + o.pixel + " is not on a shadow receiver");
+    }
+    if (img.map.layers() > 1 && img.positions.data.empty()) {
+        throw UsageError(o.rawDir +
+                         " has no positions.exr: a cascaded pixel's layer is chosen "
+                         "from its position");
+    }
+    vec2 uv(ls.data[4 * k], ls.data[4 * k + 1]);
+    float ref = ls.data[4 * k + 2];
+    PcfParams prm = r.prm;
+    if (r.settings.rotate) prm.rotation = pcfTexelRotation(uv, img.map.size());
+    vec2 dzduv(img.planes.data[4 * k], img.planes.data[4 * k + 1]);
+    int layer = pixelLayer(img, r, k);
+    bool covered = layer < img.map.layers();
+    Trace tr = traceLookup(img.map, uv, img.planes.data[4 * k + 2], ref, prm, r.settings, dzduv,
+                           std::min(layer, img.map.layers() - 1));
+    if (!covered) tr.visibility = 1.0f;  // past the shadow distance: drawn lit
+    if (img.map.layers() > 1) tr.cascadeTexelsPerPixelMax = rawCascadeDensity(dir, tr.layer);
+    return tr;
+}
+
+int runTrace(const TraceOptions& o) {
+    int sources = (o.example ? 1 : 0) + (o.mapPath.empty() ? 0 : 1) + (o.rawDir.empty() ? 0 : 1);
+    if (sources != 1) {
+        throw UsageError("trace needs exactly one of --map FILE, --example or --raw DIR");
+    }
+    if (!o.rawDir.empty()) {
+        Trace tr = traceRawPixel(o);
+        std::string out = o.json ? traceToJson(tr) + "\n" : traceToText(tr);
+        std::fwrite(out.data(), 1, out.size(), stdout);
+        return 0;
+    }
+    if (!o.pixel.empty()) throw UsageError("--pixel is for --raw DIR");
     ShadowSettings settings = traceSettings(o);
     PcfParams prm = traceParams(o, settings);
     TexelKind format = depthFormatOption(o.depthFormat);
@@ -169,6 +229,10 @@ Command addTraceCommand(CLI::App& app) {
                     "single-channel float depth image (EXR, TIFF); row 0 = first scanline");
     sub->add_flag("--example", o->example,
                   "use the built-in 8x8 example map (default lookup: What Is PCF's 0.8 example)");
+    sub->add_option("--raw", o->rawDir,
+                    "a `render --raw` folder: trace the lookup drawn at --pixel, with its "
+                    "render.json's settings (a cascaded map: in the cascade the pixel read)");
+    sub->add_option("--pixel", o->pixel, "with --raw: X,Y, the frame pixel from the top left");
     sub->add_option("--uv", o->uv,
                     "shadow-map coordinates U,V; any finite values (outside [0,1] the taps clamp "
                     "to the edge)");

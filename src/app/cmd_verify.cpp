@@ -18,6 +18,7 @@
 
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/raw_folder.h"
 #include "app/render_options.h"
 #include "base/input_file.h"
 #include "kernel/bias.h"
@@ -39,245 +40,6 @@ struct VerifyOptions {
     int weightBits = 8;
     int referenceBits = 0;
 };
-
-// The render.json that `render --raw` writes, read by nlohmann-json. Throws UsageError naming
-// the file when it is not JSON, or a key is missing or of the wrong type.
-Json readRenderJson(const std::string& text, const std::string& path) {
-    Json j = Json::parse(text, nullptr, false);
-    if (j.is_discarded() || !j.is_object()) {
-        throw UsageError("render.json is not a JSON object (" + path + ")");
-    }
-    return j;
-}
-
-std::string jsonField(const Json& json, const std::string& key, const std::string& path) {
-    auto it = json.find(key);
-    if (it == json.end()) throw UsageError("render.json has no \"" + key + "\" (" + path + ")");
-    if (!it->is_string()) {
-        throw UsageError("render.json: \"" + key + "\" is not a string (" + path + ")");
-    }
-    return it->get<std::string>();
-}
-
-float jsonFloat(const Json& json, const std::string& key, const std::string& path) {
-    auto it = json.find(key);
-    if (it == json.end()) throw UsageError("render.json has no \"" + key + "\" (" + path + ")");
-    // Asked as a double: 1e300 is a JSON number, but no float (the cast would be undefined).
-    if (!it->is_number() || !std::isfinite(it->get<double>()) ||
-        std::abs(it->get<double>()) > static_cast<double>(std::numeric_limits<float>::max())) {
-        throw UsageError("render.json: \"" + key + "\" is not a number (" + path + ")");
-    }
-    return it->get<float>();
-}
-
-bool jsonBool(const Json& json, const std::string& key, const std::string& path) {
-    auto it = json.find(key);
-    if (it == json.end()) throw UsageError("render.json has no \"" + key + "\" (" + path + ")");
-    if (!it->is_boolean()) {
-        throw UsageError("render.json: \"" + key + "\" is not true or false (" + path + ")");
-    }
-    return it->get<bool>();
-}
-
-FloatImage readImage(const std::filesystem::path& path, int channels) {
-    FloatImage img;
-    try {
-        img = readFloatImage(path.string());
-    } catch (const ImageError& e) {
-        throw UsageError(e.what());
-    }
-    if (img.channels != channels) {
-        throw UsageError(path.string() + ": has " + std::to_string(img.channels) +
-                         " channels, expected " + std::to_string(channels));
-    }
-    return img;
-}
-
-// A whole number in render.json, within the table's range of parameter p. Checked as a double
-// before the cast: a float outside int's range (1e30) is undefined behaviour there.
-int jsonInt(const Json& json, const ParamInfo& p, const std::string& path) {
-    std::string key(p.key);
-    double v = static_cast<double>(jsonFloat(json, key, path));
-    if (!(v >= p.min && v <= p.max) || v != std::floor(v)) {
-        throw UsageError("render.json: \"" + key + "\" is not a whole number in [" +
-                         std::to_string(static_cast<int>(p.min)) + ", " +
-                         std::to_string(static_cast<int>(p.max)) + "] (" + path + ")");
-    }
-    return static_cast<int>(v);
-}
-
-// Parameter p's value in render.json, into s: written as the table's field says
-// (app/render_options.h settingsJson): a number, true or false, or a name.
-void readParam(const Json& json, const ParamInfo& p, ShadowSettings& s, const std::string& path) {
-    std::string key(p.key);
-    std::visit(
-        [&](const auto& field) {
-            using F = std::decay_t<decltype(field)>;
-            if constexpr (std::is_same_v<F, float ShadowSettings::*>) {
-                s.*field = jsonFloat(json, key, path);
-            } else if constexpr (std::is_same_v<F, int ShadowSettings::*>) {
-                s.*field = jsonInt(json, p, path);
-            } else if constexpr (std::is_same_v<F, bool ShadowSettings::*>) {
-                s.*field = jsonBool(json, key, path);
-            } else {
-                std::string name = jsonField(json, key, path);
-                auto value = field.fromName(name);
-                if (!value) {
-                    throw UsageError("render.json: unknown " + std::string(field.noun) + " '" +
-                                     name + "' (" + path + ")");
-                }
-                s.*field.field = *value;
-            }
-        },
-        p.field);
-}
-
-// What `render --raw` rendered with, from its render.json: the settings the parameter table
-// marks rawJson, what the kernel filtered with, and the map (whose layer's fit each pixel's
-// lookup was computed from besides its position and normal).
-struct RawSettings {
-    ShadowSettings settings;
-    // The map as render.json describes it ("map"); folders written before it have none.
-    std::optional<MapSpec> map;
-    PcfParams prm;
-    PcfBias bias = PcfBias(PCF_BIAS_CONSTANT, vec2(0.0f), 0.0f, DEFAULT_RPDB_MAX);
-};
-
-// The layer scene.frag looked each pixel up with besides its position and normal: its fit (the
-// light's clip matrix) and one texel's world size at clip w = 1. None for a folder written before
-// render.json held the map, or a map without a texel size.
-const PcfMapLayer* lookupLayer(const RawSettings& r) {
-    if (!r.map || r.map->layers.size() != 1 || !(r.map->layers.front().texelWs > 0.0f)) {
-        return nullptr;
-    }
-    return &r.map->layers.front();
-}
-
-RawSettings readRawSettings(const std::filesystem::path& dir) {
-    std::filesystem::path jsonPath = dir / "render.json";
-    std::string where = jsonPath.string();
-    // The input path every text input takes (base/input_file.h): a FIFO or a device is
-    // refused before it is opened, a file over the size limit before it is read.
-    Json json = readRenderJson(readInputFile(where), where);
-
-    RawSettings r;
-    for (const ParamInfo& p : allParams()) {
-        if (!p.rawJson) continue;
-        // Keys that folders written before the parameter lack: its default (the table says which).
-        if (p.rawJsonMayLack && !json.contains(std::string(p.key))) continue;
-        readParam(json, p, r.settings, where);
-    }
-    // In the table's ranges, as every command line and lesson value is.
-    if (std::optional<ParamProblem> why = checkSettingRanges(r.settings)) {
-        throw UsageError("render.json: " + why->text() + " (" + where + ")");
-    }
-    // pcss's light size in the map; folders written before pcss have none (0: no method used it).
-    float penumbraScale = 0.0f;
-    if (json.contains("penumbra_scale")) penumbraScale = jsonFloat(json, "penumbra_scale", where);
-    r.prm = r.settings.pcfParams(vec2(1.0f, 0.0f), penumbraScale);
-    // A spot map's near and far for pcss; folders written before them have none (0: linear).
-    if (json.contains("pcss_depth_near") || json.contains("pcss_depth_far")) {
-        r.prm.depthNear = jsonFloat(json, "pcss_depth_near", where);
-        r.prm.depthFar = jsonFloat(json, "pcss_depth_far", where);
-    }
-    r.bias = r.settings.kernelBias();
-    if (json.contains("map")) {
-        std::string why;
-        r.map = mapSpecFromJson(json["map"], why);
-        if (!r.map) throw UsageError("render.json: " + why + " (" + where + ")");
-    }
-    // render.json's keys are the kernel's words.
-    if (auto why = validateParams(r.prm))
-        throw UsageError("render.json: " + *why + " (" + where + ")");
-    return r;
-}
-
-// The map shadowmap.exr holds: render.json's "map", which must match the image's size, in the
-// texel kind the method reads in the folder's depth_format (checkMapTexels holds "map" to it
-// once the image has been checked against that format); for a folder without one, the image's
-// size, one layer.
-MapSpec rawMapSpec(const ShadowMap& image, const RawSettings& r, const std::string& where) {
-    TexelKind kind = mapTexelKind(r.settings.method, r.settings.depthFormat, r.settings.momentBits);
-    MapSpec spec = r.map.value_or(MapSpec{image.size(), kind, {MapSpec::unfittedLayer()}});
-    spec.texels = kind;
-    if (texelKindInfo(kind).channels != image.spec().texel().channels) {
-        throw UsageError("shadowmap.exr has " + std::to_string(image.spec().texel().channels) +
-                         " channel(s), but " + std::string(methodInfo(r.settings.method).name) +
-                         " reads a map of " + std::to_string(texelKindInfo(kind).channels) + " (" +
-                         where + ")");
-    }
-    if (spec.size != image.size() || spec.layers.size() != 1) {
-        throw UsageError("render.json: \"map\" is " + std::to_string(spec.size.x) + "x" +
-                         std::to_string(spec.size.y) + " in " + std::to_string(spec.layers.size()) +
-                         " layer(s), but shadowmap.exr is one layer of " +
-                         std::to_string(image.width()) + "x" + std::to_string(image.height()) +
-                         " (" + where + ")");
-    }
-    return spec;
-}
-
-// render.json's "map" names the texel kind its method reads in its depth_format.
-void checkMapTexels(const RawSettings& r, const std::string& where) {
-    TexelKind kind = mapTexelKind(r.settings.method, r.settings.depthFormat, r.settings.momentBits);
-    if (!r.map || r.map->texels == kind) return;
-    throw UsageError("render.json: \"map\" holds texels " +
-                     std::string(texelKindName(r.map->texels)) + ", but " +
-                     std::string(methodInfo(r.settings.method).name) + " reads depth_format " +
-                     std::string(texelKindName(kind)) + " (" + where + ")");
-}
-
-// The folder's images: the map compared with, each pixel's lookup and visibility, each pixel's
-// plane (dzduv.exr), and where present what the lookup was computed from: the world position
-// (positions.exr) and the normal with cos(theta) (normals.exr).
-struct RawImages {
-    ShadowMap map;
-    FloatImage lightSpace;  // u, v, ref, receiver (1 or 0)
-    FloatImage visibility;
-    FloatImage planes;     // dz/du, dz/dv, z before bias, 1 on receivers (dzduv.exr)
-    FloatImage positions;  // world x, y, z, 1 where drawn; empty when the folder has none
-    FloatImage normals;    // n facing the camera, cos(theta); empty when the folder has none
-};
-
-// Whether each pixel's lookup can be recomputed whole: the layer's fit, positions and normals.
-bool recomputesWhole(const RawImages& img, const RawSettings& r) {
-    return lookupLayer(r) && !img.positions.data.empty() && !img.normals.data.empty();
-}
-
-// An image of the folder the size of lightspace.exr with 4 channels, or an empty one when the
-// file does not exist.
-FloatImage readOptionalImage(const std::filesystem::path& path, const FloatImage& like) {
-    std::error_code ec;
-    if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec))) return {};
-    FloatImage img = readImage(path, 4);
-    if (img.width != like.width || img.height != like.height) {
-        throw UsageError(path.string() + " and lightspace.exr differ in size");
-    }
-    return img;
-}
-
-RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) {
-    RawImages img;
-    try {
-        img.map = readMapImage((dir / "shadowmap.exr").string());
-    } catch (const ImageError& e) {
-        throw UsageError(e.what());
-    }
-    img.map.setSpec(rawMapSpec(img.map, r, (dir / "render.json").string()));
-    img.lightSpace = readImage(dir / "lightspace.exr", 4);
-    img.visibility = readImage(dir / "visibility.exr", 1);
-    const FloatImage& ls = img.lightSpace;
-    if (ls.width != img.visibility.width || ls.height != img.visibility.height) {
-        throw UsageError("lightspace.exr and visibility.exr differ in size (" + dir.string() + ")");
-    }
-    // Each pixel's plane (dz/du, dz/dv, as the shader derived them) and depth before bias.
-    img.planes = readImage(dir / "dzduv.exr", 4);
-    if (img.planes.width != ls.width || img.planes.height != ls.height) {
-        throw UsageError("dzduv.exr and lightspace.exr differ in size (" + dir.string() + ")");
-    }
-    img.positions = readOptionalImage(dir / "positions.exr", ls);
-    img.normals = readOptionalImage(dir / "normals.exr", ls);
-    return img;
-}
 
 // How far a recomputed lookup may be from the shader's: GLSL rounds each float operation
 // correctly, but the driver may order a matrix product's sums otherwise, or turn a division by
@@ -308,7 +70,9 @@ PcfReceiverLookup recomputedLookup(const RawImages& img, const RawSettings& r, s
     const float* ls = &img.lightSpace.data[4 * k];
     float z0 = img.planes.data[4 * k + 2];
     if (!recomputesWhole(img, r)) return PcfReceiverLookup(ls[0], ls[1], z0, z0, z0 - s.baseBias());
-    const PcfMapLayer& layer = *lookupLayer(r);
+    // Past the last cascade scene.frag looks up in the last (and draws the pixel lit).
+    int count = static_cast<int>(r.map->layers.size());
+    const PcfMapLayer& layer = *lookupLayer(r, std::min(pixelLayer(img, r, k), count - 1));
     const float* p = &img.positions.data[4 * k];
     const float* n = &img.normals.data[4 * k];
     return pcfReceiverLookup(layer.shadowClipFromWorld, vec3(p[0], p[1], p[2]),
@@ -322,6 +86,12 @@ PcfReceiverLookup recomputedLookup(const RawImages& img, const RawSettings& r, s
 // number of pixels checked.
 long checkLookups(const RawImages& img, const RawSettings& r, const std::string& dir) {
     const ShadowSettings& s = r.settings;
+    if (!recomputesWhole(img, r) && r.map && r.map->layers.size() > 1) {
+        throw UsageError(dir +
+                         ": a cascaded map's pixels are checked from positions.exr, "
+                         "normals.exr and each layer's fit, which the folder lacks; render it "
+                         "again with `pcfscope render --raw`");
+    }
     if (!recomputesWhole(img, r) && (s.bias == BiasMode::Slope || s.bias == BiasMode::Normal)) {
         throw UsageError(dir + ": bias " + std::string(biasModeName(s.bias)) +
                          " depends on each pixel's angle to the light, and the folder lacks "
@@ -416,7 +186,13 @@ EnvelopeTally checkEnvelopes(const RawImages& img, const RawSettings& r,
             if (r.bias.mode == PCF_BIAS_RECEIVER_PLANE) {
                 b.dzduv = vec2(img.planes.data[4 * k], img.planes.data[4 * k + 1]);
             }
-            VisibilityEnvelope env = visibilityEnvelope(img.map, uv, ref, p, b, prec);
+            // The layer the pixel read; past the last cascade the camera pass draws it lit.
+            int layer = pixelLayer(img, r, k);
+            VisibilityEnvelope env{1.0f, 1.0f};
+            if (layer < static_cast<int>(img.layers.size())) {
+                env =
+                    visibilityEnvelope(img.layers[static_cast<size_t>(layer)], uv, ref, p, b, prec);
+            }
             float v = img.visibility.data[k];
             if (env.contains(v)) {
                 ++t.inside;

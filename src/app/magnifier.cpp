@@ -79,6 +79,8 @@ Camera magnifierCamera(const Camera& wide, glm::ivec2 sceneSize, const ScenePoin
 
 Camera stepCamera(const Scene& scene, const LessonSettings& s,
                   const std::optional<ScenePoint>& point, glm::ivec2 sceneSize) {
+    // A frozen view backs away from the camera the cascades stay fitted to.
+    if (s.freezeCascades && s.cascades > 1) return cascadeOverviewCamera(scene.camera, s);
     if (!s.magnify || !point || sceneSize.x <= 0 || sceneSize.y <= 0) return scene.camera;
     LessonSettings unslid = s;
     unslid.originShift = 0.0f;

@@ -43,7 +43,9 @@ Camera magnifierCamera(const Camera& wide, glm::ivec2 sceneSize, const ScenePoin
 // The camera a lesson step is seen through in a scene of sceneSize: the scene's own (the lesson's
 // camera), or with the step's `magnify` (lesson.h) magnifierCamera on the step's point for its
 // map as fitted before any slide (origin_shift 0, not snapped), so that steps that only slide
-// or snap the grid are seen through the very same camera and differ by the slide alone.
+// or snap the grid are seen through the very same camera and differ by the slide alone. With
+// `freeze_cascades` (and cascades), the frozen view's camera behind and above the scene's
+// (scene/cascade_view.h cascadeOverviewCamera).
 Camera stepCamera(const Scene& scene, const LessonSettings& s,
                   const std::optional<ScenePoint>& point, glm::ivec2 sceneSize);
 

@@ -222,11 +222,6 @@ RenderSettings RenderOptions::settings() const {
         s = renderSettingsFor(l.steps[static_cast<size_t>(lessonStep - 1)].settings, frame);
     }
     shadow.applyTo(s, fromLesson);
-    if (fromLesson && s.cascades > 1) {
-        throw UsageError("--cascades " + std::to_string(s.cascades) +
-                         " with --lesson: a lesson step shows one map over its scene (cascades "
-                         "render with --scene or --scene-file)");
-    }
     if (auto why = cliParamsProblem(s.pcfParams())) throw UsageError(*why);
     checkBiasOptions(s);
     if (!fromLesson || given("--polygon-offset")) {

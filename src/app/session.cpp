@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/cascade_lines.h"
 #include "app/cli_util.h"
 #include "app/frame_json.h"
 #include "app/magnifier.h"
@@ -91,14 +92,20 @@ void Session::goToStep(int step) {
 }
 
 void Session::applyStepCamera() {
-    if (!mSettings.magnify && !mStepMagnified) return;
+    bool frozen = mSettings.freezeCascades && mSettings.cascades > 1;
+    if (!mSettings.magnify && !frozen && !mStepMagnified) return;
     Scene wide = mLesson.scene;
     wide.camera = mLessonCamera;
     Camera camera = stepCamera(wide, mSettings, mPoint, glm::ivec2(mLayout.scene.size()));
     mLesson.scene.camera = camera;
     if (mRenderer) mRenderer->setCamera(camera);
-    mStepMagnified = mSettings.magnify && mPoint.has_value();
+    mStepMagnified = (mSettings.magnify && mPoint.has_value()) || frozen;
     mSceneDirty = true;
+}
+
+std::optional<Camera> Session::cascadeCamera() const {
+    if (mStepMagnified) return mLessonCamera;
+    return std::nullopt;
 }
 
 void Session::repick() {
@@ -128,7 +135,13 @@ bool samePicture(LessonSettings a, const LessonSettings& b) {
 void Session::setSettings(const LessonSettings& s) {
     // Moving the pixel re-traces without re-rendering.
     if (!samePicture(s, mSettings) || !mRendered) mSceneDirty = true;
+    bool refreeze = s.freezeCascades != mSettings.freezeCascades;
     mSettings = s;
+    // Y froze or thawed the cascades: the camera backs away from the lesson's, or returns.
+    if (refreeze) {
+        applyStepCamera();
+        if (mPoint) repick();
+    }
     // The sun the keys moved (lesson_pick.h: lessonLight): a new light is a new map.
     if (glm::vec2(s.sunTilt, s.sunTurn) != mLitSun) {
         mLitSun = glm::vec2(s.sunTilt, s.sunTurn);
@@ -228,9 +241,14 @@ void Session::blitThumbnail(const InspectorLayout& layout) {
     Rect r = thumbnailRect(layout, mPresentation);
     int side = static_cast<int>(r.w);
     if (side <= 0 || mMap.width() <= 0) return;
-    if (mThumbnailDirty || mThumbnail.width != side) {
+    if (mThumbnailDirty || mThumbnail.width != side ||
+        (mMap.layers() > 1 && mTrace && mTrace->layer != mThumbnailLayer)) {
         mThumbnail = createOffscreenTarget(side, side, {GL_RGBA8});
-        std::vector<uint8_t> rgba = thumbnailImage(mMap, side);
+        // A cascaded map: the layer the traced lookup read.
+        int layer = mTrace ? mTrace->layer : 0;
+        std::vector<uint8_t> rgba =
+            thumbnailImage(mMap.layers() > 1 ? mMap.layerMap(layer) : mMap, side);
+        mThumbnailLayer = layer;
         uploadBottomUp(mThumbnail, side, side, rgba);
         mThumbnailDirty = false;
     }
@@ -294,18 +312,20 @@ void Session::blitChart(const InspectorLayout& layout) {
 void Session::renderScene() {
     // The step's view (step_view.h): an animation's fit (setShadowFit), else the lesson's, and
     // the pinned point's pixel showing the point's own lookup.
-    StepView view =
-        stepView(mLesson.scene, mSettings, mPoint, glm::ivec2(mLayout.scene.size()), mShadowFit);
-    const RenderSettings& r = view.render;
+    StepView view = stepView(mLesson.scene, mSettings, mPoint, glm::ivec2(mLayout.scene.size()),
+                             mShadowFit, cascadeCamera());
+    RenderSettings r = view.render;
+    // A cascaded map's density is measured on the frame, from its world positions.
+    r.writePositions = r.cascades > 1;
     mRenderer->setPick(view.pick);
+    mRenderer->setCascadeCamera(view.cascadeCamera);
     // The map is drawn again when the one it would draw is another value (its size, texel kind,
-    // or fit: the texel grid slid and snapped as the lesson says, light.h shiftShadowOrigin), or
-    // the depth pass draws it otherwise (culling, polygon offset).
-    bool mapChanged = !mRendered ||
-                      shadowMapSpec(mRenderer->scene(), r, view.fit, frameAspect(r.frameSize)) !=
-                          mRenderer->mapSpec() ||
+    // or fit: the texel grid slid and snapped as the lesson says, light.h shiftShadowOrigin, or
+    // the cascades refitted to a moved camera), or the depth pass draws it otherwise (culling,
+    // polygon offset).
+    mRenderer->setShadowClipFromWorld(view.fit);
+    bool mapChanged = !mRendered || mRenderer->mapSpecFor(r) != mRenderer->mapSpec() ||
                       mRendered->cull != r.cull || mRendered->polygonOffset != r.polygonOffset;
-    if (mapChanged) mRenderer->setShadowClipFromWorld(view.fit);
     mHeatDirty = true;
     // Only what changed: the shadow pass when the map did (renderStepView renders both).
     if (mapChanged) mRenderer->renderShadowPass(r);
@@ -314,8 +334,30 @@ void Session::renderScene() {
         mMap = mRenderer->readShadowMap();
         mThumbnailDirty = true;
     }
+    measureCascades(r);
     mRendered = r;
     mSceneDirty = false;
+}
+
+void Session::drawFrozenCascades(const Rect& sceneRect) {
+    std::optional<Camera> frozen = cascadeCamera();
+    if (!mSettings.freezeCascades || !frozen || mRenderer->mapSpec().layers.size() < 2) return;
+    std::vector<CascadeLine> lines =
+        cascadeFrameLines(mRenderer->mapSpec(), *frozen, LESSON_CASCADE_ASPECT);
+    float scale = std::max(1.0f, static_cast<float>(mLayout.frameSize.y) / 720.0f);
+    mCanvas.pushClip(sceneRect);
+    drawCascadeLines(mCanvas, sceneRect, glm::ivec2(mLayout.scene.size()), mLesson.scene.camera,
+                     lines, scale);
+    mCanvas.popClip();
+}
+
+void Session::measureCascades(const RenderSettings& r) {
+    mCascadeDensity.clear();
+    if (mRenderer->mapSpec().layers.size() < 2) return;
+    if (!r.writePositions) return;
+    mCascadeDensity =
+        cascadeDensities(mRenderer->readLightSpace(), mRenderer->readPositions(),
+                         mRenderer->frameSize(), mRenderer->mapSpec(), mRenderer->cascadeCamera());
 }
 
 void Session::traceAtPixel() {
@@ -327,6 +369,11 @@ void Session::traceAtPixel() {
     mLightSpaceSize = glm::ivec2(2 * radius + 1);
     mLightSpace = mRenderer->readLightSpaceRegion(mLightSpaceOrigin, mLightSpaceSize);
     mLookup = tracePixel(*mRenderer, mMap, mSettings, mPixel);
+    // A cascaded map: the density of the cascade read, as measured on this frame.
+    if (mLookup && mLookup->trace.layer < static_cast<int>(mCascadeDensity.size())) {
+        mLookup->trace.cascadeTexelsPerPixelMax = static_cast<float>(
+            mCascadeDensity[static_cast<size_t>(mLookup->trace.layer)].texelsPerPixelMax);
+    }
     if (mLookup) mTrace = mLookup->trace;
     tracePartsOfText();
 }
@@ -415,6 +462,7 @@ void Session::composeInto(GLuint fbo) {
     bindFramebuffer(fbo);
     mCanvas.begin(frame);
     drawPlan(mCanvas, plan.base);
+    if (chart.empty()) drawFrozenCascades(layout.scene);
     mCanvas.flush();
     blitThumbnail(layout);
     bindFramebuffer(fbo);

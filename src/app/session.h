@@ -23,6 +23,7 @@
 #include "lesson/lesson_catalogue.h"
 #include "lesson/lesson_pick.h"
 #include "lesson/lesson_predict.h"
+#include "measure/cascade_density.h"
 #include "overlay/flicker_trace.h"
 #include "overlay/inspector.h"
 #include "render/gl_objects.h"
@@ -192,6 +193,9 @@ class Session {
     // the lesson's own: an animation creeps the light's texel grid exactly as `stability` does.
     void setShadowFit(const std::optional<glm::mat4>& shadowClipFromWorld);
     const std::optional<glm::mat4>& shadowFit() const { return mShadowFit; }
+    // The camera the cascades are fitted to when it is not the one the scene is seen through: a
+    // `magnify` step's or a frozen view's (the lesson's own camera); nullopt: the scene's.
+    std::optional<Camera> cascadeCamera() const;
     // The fit the next compose() renders the map with: shadowFit(), else the lesson's.
     glm::mat4 renderedShadowFit() const;
     // Pins this scene point (a split view's parts pin their main view's point; the magnifier
@@ -225,6 +229,11 @@ class Session {
     // Steps without it leave the camera alone (an animation's sweep, the viewer's Z).
     void applyStepCamera();
     void traceAtPixel();
+    // A cascaded map's texel density per cascade on the frame just rendered (mCascadeDensity,
+    // measure/cascade_density.h); cleared for a map of one layer.
+    void measureCascades(const RenderSettings& r);
+    // A frozen view's light boxes and split planes over the scene (app/cascade_lines.h).
+    void drawFrozenCascades(const Rect& sceneRect);
     void tracePartsOfText();
     void blitThumbnail(const InspectorLayout& layout);
     // A step with a chart shows it where the scene goes (lesson.h: LessonStep::chart).
@@ -255,8 +264,9 @@ class Session {
     // move the sun from the lesson's light (setSettings).
     Light mBaseLight;
     glm::vec2 mLitSun{0.0f};
-    Camera mLessonCamera;         // the lesson scene's own camera, which `magnify` moves from
-    bool mStepMagnified = false;  // the camera is a `magnify` step's close-up
+    Camera mLessonCamera;  // the lesson scene's own camera, which `magnify` moves from
+    // The camera is a `magnify` step's close-up or a frozen view's (magnifier.h stepCamera).
+    bool mStepMagnified = false;
     bool mHeatDirty = true;
     std::vector<float> mHeatValues;
     OffscreenTarget mHeat;  // the heat map, rows top-down, blitted over the scene
@@ -281,6 +291,8 @@ class Session {
     bool mSceneDirty = true;
     std::optional<RenderSettings> mRendered;
     ShadowMap mMap;
+    std::vector<CascadeDensity> mCascadeDensity;  // per cascade (measureCascades)
+    int mThumbnailLayer = 0;                      // the layer the thumbnail shows
     std::vector<float> mLightSpace;  // a region around the pixel (gridRadius), rows top-down
     glm::ivec2 mLightSpaceOrigin{0, 0};
     glm::ivec2 mLightSpaceSize{0, 0};

@@ -59,7 +59,9 @@ std::optional<float> Session::visibilityWith(int method, int kernel) const {
     prm.depthNear = pcss.depthNear;
     prm.depthFar = pcss.depthFar;
     const PixelLookup& at = *mLookup;
-    return traceLookup(mMap, at.uv, at.z, at.ref, prm, at.bias, at.dzduv).visibility;
+    if (!at.cascade.covered) return 1.0f;  // past the shadow distance: drawn lit
+    return traceLookup(mMap, at.uv, at.z, at.ref, prm, at.bias, at.dzduv, at.cascade.index)
+        .visibility;
 }
 
 // The scene over the whole frame, the pinned point ringed, and the flicker trace when set.
@@ -71,6 +73,7 @@ void Session::composeSceneOnly(GLuint fbo) {
     mBoxes.clear();
     bindFramebuffer(fbo);
     mCanvas.begin(frame);
+    drawFrozenCascades(mLayout.scene);
     float r = std::max(6.0f, std::round(frame.y / 90.0f));
     glm::vec2 centre = glm::vec2(mPixel) + 0.5f;
     mCanvas.ring(centre, r + 1.0f, 3.0f, {0.0f, 0.0f, 0.0f, 0.8f});

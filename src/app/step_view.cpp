@@ -8,6 +8,7 @@ RenderSettings renderSettingsFor(const LessonSettings& s, glm::ivec2 sceneSize) 
     RenderSettings r;
     static_cast<ShadowSettings&>(r) = s;
     r.frameSize = sceneSize;
+    r.cascadeAspect = LESSON_CASCADE_ASPECT;
     return r;
 }
 
@@ -19,26 +20,33 @@ glm::mat4 lessonShadowFit(const Scene& scene, const LessonSettings& s, int mapSi
 
 std::optional<CameraPick> cameraPickOf(const Scene& scene, const glm::mat4& shadowFit,
                                        const LessonSettings& s, const ScenePoint& point,
-                                       glm::ivec2 frameSize) {
+                                       glm::ivec2 frameSize,
+                                       const std::optional<Camera>& cascadeCamera) {
     FramePick at = framePick(scene.camera, point.posWs, frameSize);
     if (!at.inFrame) return std::nullopt;
-    PinnedLookup lookup = pinnedLookup(scene, shadowFit, s, point);
+    PinnedLookup lookup =
+        pinnedLookup(scene, shadowFit, s, point, cascadeCamera ? *cascadeCamera : scene.camera);
     glm::ivec2 gl(at.pixel.x, frameSize.y - 1 - at.pixel.y);
-    return CameraPick{gl, at.jitterNdc, glm::vec4(lookup.uv, lookup.ref, lookup.z0), lookup.dzduv};
+    // Past the shadow distance: a layer beyond the last, which the camera pass draws lit.
+    int layer = lookup.cascade.covered ? lookup.cascade.index : lookup.cascade.count;
+    return CameraPick{gl, at.jitterNdc, glm::vec4(lookup.uv, lookup.ref, lookup.z0), lookup.dzduv,
+                      layer};
 }
 
 StepView stepView(const Scene& scene, const LessonSettings& s,
                   const std::optional<ScenePoint>& point, glm::ivec2 sceneSize,
-                  const std::optional<glm::mat4>& fit) {
+                  const std::optional<glm::mat4>& fit, const std::optional<Camera>& cascadeCamera) {
     StepView view;
     view.render = renderSettingsFor(s, sceneSize);
     view.fit = fit ? *fit : lessonShadowFit(scene, s, view.render.mapSize);
-    if (point) view.pick = cameraPickOf(scene, view.fit, s, *point, sceneSize);
+    view.cascadeCamera = cascadeCamera;
+    if (point) view.pick = cameraPickOf(scene, view.fit, s, *point, sceneSize, cascadeCamera);
     return view;
 }
 
 void renderStepView(SceneRenderer& renderer, const StepView& view) {
     renderer.setShadowClipFromWorld(view.fit);
+    renderer.setCascadeCamera(view.cascadeCamera);
     renderer.setPick(view.pick);
     renderer.render(view.render);
 }
@@ -59,7 +67,18 @@ std::optional<PixelLookup> tracePixel(const SceneRenderer& renderer, const Shado
     PcfParams prm = s.pcfParams(out.uv, map.width(), pcss.penumbraScale);
     prm.depthNear = pcss.depthNear;
     prm.depthFar = pcss.depthFar;
-    out.trace = traceLookup(map, out.uv, out.z, out.ref, prm, out.bias, out.dzduv);
+    // The layer the pixel read: a cascaded map's is known at the pinned point's pixel (the
+    // camera pass reads the pick's layer there); past the shadow distance the pixel is lit.
+    int layer = 0;
+    if (map.layers() > 1) {
+        const std::optional<CameraPick>& pick = renderer.pick();
+        glm::ivec2 gl(pixel.x, renderer.frameSize().y - 1 - pixel.y);
+        if (!pick || pick->pixelGl != gl) return std::nullopt;
+        out.cascade = pointCascadeOfLayer(map.spec(), pick->layer);
+        layer = out.cascade.index;
+    }
+    out.trace = traceLookup(map, out.uv, out.z, out.ref, prm, out.bias, out.dzduv, layer);
+    if (!out.cascade.covered) out.trace.visibility = 1.0f;
     return out;
 }
 

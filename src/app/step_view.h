@@ -31,21 +31,29 @@ glm::mat4 lessonShadowFit(const Scene& scene, const LessonSettings& s, int mapSi
 // How the camera pass shows a scene point in a frame of frameSize: the camera's sub-pixel jitter
 // that centres the point on its pixel and the point's own lookup there (lesson_pick.h,
 // SceneRenderer::setPick); nullopt when the frame does not show it.
+// With cascades, the layer of the cascade the point falls in, the cascades fitted to
+// cascadeCamera (nullopt: the scene's camera; lesson_pick.h pinnedLookup).
 std::optional<CameraPick> cameraPickOf(const Scene& scene, const glm::mat4& shadowFit,
                                        const LessonSettings& s, const ScenePoint& point,
-                                       glm::ivec2 frameSize);
+                                       glm::ivec2 frameSize,
+                                       const std::optional<Camera>& cascadeCamera = std::nullopt);
 
 // What a step's scene is rendered with.
 struct StepView {
     RenderSettings render;           // the settings at the scene's size
     glm::mat4 fit{1.0f};             // the shadow map's fit
     std::optional<CameraPick> pick;  // the pinned point, where the frame shows it
+    // The camera the cascades are fitted to (SceneRenderer::setCascadeCamera): nullopt, the
+    // scene's; a magnified step's wide view or a frozen view's.
+    std::optional<Camera> cascadeCamera;
 };
 // The view of settings `s` with the pinned `point` (none: no pick) in a scene of sceneSize; `fit`
-// replaces lessonShadowFit's (an animation's creeping grid).
+// replaces lessonShadowFit's (an animation's creeping grid); cascadeCamera the scene camera as
+// the cascades' (their fit and the choice of a receiver's cascade).
 StepView stepView(const Scene& scene, const LessonSettings& s,
                   const std::optional<ScenePoint>& point, glm::ivec2 sceneSize,
-                  const std::optional<glm::mat4>& fit = std::nullopt);
+                  const std::optional<glm::mat4>& fit = std::nullopt,
+                  const std::optional<Camera>& cascadeCamera = std::nullopt);
 // Renders both passes of the view. Needs the renderer's context current.
 void renderStepView(SceneRenderer& renderer, const StepView& view);
 
@@ -57,9 +65,11 @@ struct PixelLookup {
     float ref = 0.0f;       // the depth compared
     BiasSettings bias;      // the settings' bias
     glm::vec2 dzduv{0.0f};  // the receiver plane the shader used
+    PointCascade cascade;   // the layer read (a cascade) and its view depths and texel size
 };
 // The lookup the last camera pass drew at a scene pixel (origin top-left), traced by the CPU
-// kernel on `map` with settings `s`; nullopt when the pixel is not on a shadow receiver.
+// kernel on `map` with settings `s`; nullopt when the pixel is not on a shadow receiver, or, for
+// a cascaded map, not the pinned point's pixel (the one whose layer is known: CameraPick::layer).
 std::optional<PixelLookup> tracePixel(const SceneRenderer& renderer, const ShadowMap& map,
                                       const LessonSettings& s, glm::ivec2 pixel);
 

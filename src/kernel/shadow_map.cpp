@@ -125,6 +125,14 @@ const float* ShadowMap::layerTexels(int layer) const {
     return mTexels.data() + perLayer * static_cast<size_t>(layer);
 }
 
+ShadowMap ShadowMap::layerMap(int layer) const {
+    const float* texels = layerTexels(layer);
+    size_t perLayer = static_cast<size_t>(width()) * height() * mSpec.texel().channels;
+    MapSpec one = mSpec;
+    one.layers = {mSpec.layers[static_cast<size_t>(layer)]};
+    return ShadowMap(one, std::vector<float>(texels, texels + perLayer));
+}
+
 std::optional<std::string> ShadowMap::findInvalidTexel() const {
     size_t channels = static_cast<size_t>(mSpec.texel().channels);
     size_t w = static_cast<size_t>(width());

@@ -93,6 +93,8 @@ class ShadowMap {
     const std::vector<float>& depths() const { return mTexels; }
     // One layer's texels (the kernel reads one layer at a time).
     const float* layerTexels(int layer) const;
+    // One layer as a map of its own (its spec's layers: that one); std::out_of_range for none.
+    ShadowMap layerMap(int layer) const;
 
     // The bits of the fixed-point format the depths were stored in (16 or 24), 0 for float.
     // A fixed-point map clamps D_ref to [0,1] in every comparison (GL 4.5, 8.23.1), and its

@@ -2,6 +2,8 @@
 // text in trace_json.cpp.
 #include "kernel/trace.h"
 
+#include <stdexcept>
+
 namespace pcf {
 
 float WeightGrid::at(ivec2 texel) const {
@@ -71,6 +73,14 @@ void weighPcssSearch(Trace& tr) {
 
 }  // namespace
 
+std::optional<TraceCascade> cascadeOfTrace(const Trace& trace) {
+    if (trace.map.layers.size() < 2) return std::nullopt;
+    const PcfMapLayer& layer = trace.map.layers[static_cast<size_t>(trace.layer)];
+    return TraceCascade{trace.layer,       static_cast<int>(trace.map.layers.size()),
+                        layer.viewDepth.x, layer.viewDepth.y,
+                        layer.texelWs,     trace.cascadeTexelsPerPixelMax};
+}
+
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm) {
     BiasSettings b;
     b.bias = ref == z ? BiasMode::None : BiasMode::Constant;
@@ -79,10 +89,12 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
 }
 
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm,
-                  const BiasSettings& bias, vec2 dzduv) {
+                  const BiasSettings& bias, vec2 dzduv, int layer) {
+    if (layer < 0 || layer >= map.layers()) throw std::invalid_argument("no such map layer");
     Trace tr;
     tr.params = prm;
     tr.map = map.spec();
+    tr.layer = layer;
     tr.uv = uv;
     tr.z = z;
     tr.ref = ref;
@@ -91,7 +103,8 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
     tr.pos = pcfTexelPos(uv, map.size());
     tr.lookup = pcfLookupRef(PcfRef(ref, uv, bias.kernelBias(dzduv)));
     Recording rec;
-    tr.visibility = filterRecorded(map, uv, ref, prm, bias.kernelBias(dzduv), rec);
+    PcfRef at(ref, uv, bias.kernelBias(dzduv));
+    tr.visibility = pcfFilterRef(recordingMap(map, prm, rec, layer), uv, at, prm);
     tr.taps = std::move(rec.taps);
     tr.fetches = std::move(rec.fetches);
     if (methodInfo(prm.method).searchesBlockers) weighPcssSearch(tr);
@@ -103,8 +116,8 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
     exact.precision = PCF_PRECISION_EXACT;
     PcfParams hw8 = prm;
     hw8.precision = PCF_PRECISION_HW8;
-    tr.visibilityExact = filterVisibility(map, uv, ref, exact, bias.kernelBias(dzduv));
-    tr.visibilityHw8 = filterVisibility(map, uv, ref, hw8, bias.kernelBias(dzduv));
+    tr.visibilityExact = pcfFilterRef(plainMap(map, exact, layer), uv, at, exact);
+    tr.visibilityHw8 = pcfFilterRef(plainMap(map, hw8, layer), uv, at, hw8);
 
     // The footprint the method floors: a gather kernel's (N+1)^2 block, tent's base.
     switch (methodOf(prm.method)) {
@@ -115,7 +128,7 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
             tr.footprint = pcfTentBase(uv, map.size());
             break;
         case Method::Pcss:
-            tr.pcss = pcfPcssEstimate(plainMap(map, prm), uv, tr.lookup, prm.penumbraScale,
+            tr.pcss = pcfPcssEstimate(plainMap(map, prm, layer), uv, tr.lookup, prm.penumbraScale,
                                       prm.depthNear, prm.depthFar, prm.rotation);
             break;
         case Method::Vsm:
@@ -123,7 +136,7 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
         case Method::Evsm4:
         case Method::Msm:
         case Method::MsmHausdorff:
-            tr.moments = pcfMomentEstimate(plainMap(map, prm), uv, ref, prm);
+            tr.moments = pcfMomentEstimate(plainMap(map, prm, layer), uv, ref, prm);
             break;
         case Method::Nearest:
         case Method::Box2x2:

@@ -6,6 +6,7 @@
 // as steps in English, trace_json.h writes it as JSON or as the text `pcfscope trace` prints.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,13 @@ struct Trace {
     // their fits; and the layer this lookup read.
     MapSpec map;
     int layer = 0;
+    // A cascaded map (more than one layer): the cascade read is `layer`, its view depths and
+    // texel size are map.layers[layer]'s (cascadeOfTrace). Its texel density as measured on the
+    // frame the lookup was traced on (measure/cascade_density.h: the most map texels per screen
+    // pixel over that cascade's receivers); negative when no frame measured it (`trace --map`).
+    // Where cascades blend (a band at each cascade's end), the second lookup, in the next
+    // cascade, and the blend weight would sit beside these; this trace has one lookup.
+    float cascadeTexelsPerPixelMax = -1.0f;
     vec2 uv{0.0f};
     float z = 0.0f;    // receiver depth in the light's [0,1] depth, before bias
     float ref = 0.0f;  // the depth compared with the map, after bias
@@ -112,9 +120,23 @@ Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfPa
 // Under a bias mode: ref is the lookup's ref with the per-lookup bias applied (for normal offset,
 // uv and ref are the moved point's and z the receiver's own depth); `bias` and, under
 // receiver-plane bias, the receiver's plane dzduv (light depth per uv unit) say how each tap's
-// comparison varies from it.
+// comparison varies from it. `layer`: the map's layer looked up (a cascade; Trace::layer);
+// std::invalid_argument when the map has no such layer.
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm,
-                  const BiasSettings& bias, vec2 dzduv = vec2(0.0f));
+                  const BiasSettings& bias, vec2 dzduv = vec2(0.0f), int layer = 0);
+
+// The cascade a lookup read, from its trace: its index and count, the view depths it covers
+// (scene units along the camera's view direction) and one texel's side in world units, and the
+// texel density measured on the frame (negative: not measured). nullopt for a map of one layer.
+struct TraceCascade {
+    int index = 0;
+    int count = 0;
+    float nearZ = 0.0f;
+    float farZ = 0.0f;
+    float texelWs = 0.0f;
+    float texelsPerPixelMax = -1.0f;
+};
+std::optional<TraceCascade> cascadeOfTrace(const Trace& trace);
 
 // How many taps a single ref for every tap would have judged otherwise (receiver-plane bias:
 // the taps the plane rescued from acne, or darkened). 0 for the other modes.

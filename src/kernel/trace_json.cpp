@@ -327,6 +327,24 @@ std::optional<MapSpec> mapSpecFromJson(const Json& j, std::string& why) {
     return spec;
 }
 
+namespace {
+
+// A cascaded map: the cascade read, named apart from the layers so a reader need not look it up
+// (the same numbers as "map" -> "cascades"[layer], and the frame's density when measured).
+Json cascadeJson(const TraceCascade& c) {
+    Json cascade = {{"index", c.index},
+                    {"count", c.count},
+                    {"near", jsonNumber(c.nearZ)},
+                    {"far", jsonNumber(c.farZ)},
+                    {"texel_world", jsonNumber(c.texelWs)}};
+    if (c.texelsPerPixelMax >= 0.0f) {
+        cascade["texels_per_pixel_max"] = jsonNumber(c.texelsPerPixelMax);
+    }
+    return cascade;
+}
+
+}  // namespace
+
 Json traceJson(const Trace& tr) {
     Json bias = biasJson(tr);
     Json taps = tapsJson(tr);
@@ -374,6 +392,7 @@ Json traceJson(const Trace& tr) {
     if (readsMoments(tr.params.method)) j["moments"] = momentsJson(tr);
     j["map"] = mapSpecJson(tr.map);
     j["layer"] = tr.layer;
+    if (std::optional<TraceCascade> c = cascadeOfTrace(tr)) j["cascade"] = cascadeJson(*c);
     return j;
 }
 
@@ -429,6 +448,17 @@ void writeTexelTable(const Trace& tr, std::ostringstream& s) {
 
 }  // namespace
 
+std::string cascadeLine(const TraceCascade& c) {
+    std::string line = "cascade " + std::to_string(c.index) + " of " + std::to_string(c.count) +
+                       " (0 nearest): view depths " + formatNumber(c.nearZ) + " to " +
+                       formatNumber(c.farZ) + ", a texel " + formatNumber(c.texelWs) +
+                       " world units wide";
+    if (c.texelsPerPixelMax >= 0.0f) {
+        line += ", at most " + formatNumber(c.texelsPerPixelMax) + " texels per screen pixel";
+    }
+    return line;
+}
+
 std::string traceToText(const Trace& tr) {
     std::ostringstream s;
     const MethodInfo& info = methodInfo(tr.params.method);
@@ -436,6 +466,7 @@ std::string traceToText(const Trace& tr) {
     if (info.usesKernel) s << ", N = " << tr.params.kernel;
     if (info.usesRadius) s << ", radius " << formatNumber(tr.params.radius) << " texels";
     s << "  (" << info.summary << ")\n\n";
+    if (std::optional<TraceCascade> c = cascadeOfTrace(tr)) s << cascadeLine(*c) << "\n\n";
     std::vector<TraceStep> steps = explainTrace(tr);
     for (size_t k = 0; k < steps.size(); ++k) {
         s << k + 1 << ". " << steps[k].title << "\n   ";

@@ -54,7 +54,12 @@ Json traceJson(const Trace& trace);
 // traceJson as one line of JSON.
 std::string traceToJson(const Trace& trace);
 
-// The step-through as a student reads it, with the texel neighbourhood as a table.
+// The step-through as a student reads it, with the texel neighbourhood as a table; for a
+// cascaded map, cascadeLine first.
 std::string traceToText(const Trace& trace);
+
+// The cascade a lookup read in words: "cascade 2 of 4 (0 nearest): view depths 12.8187 to
+// 26.6061, a texel 0.0493 world units wide[, at most 1.2 texels per screen pixel]".
+std::string cascadeLine(const TraceCascade& cascade);
 
 }  // namespace pcf

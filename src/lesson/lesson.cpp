@@ -24,6 +24,7 @@
 #include "lesson/lesson_predict.h"
 #include "lesson/lesson_text.h"
 #include "lesson/lesson_text_lines.h"
+#include "scene/cascade_view.h"
 #include "scene/presets.h"
 #include "scene/scene_file.h"
 
@@ -36,8 +37,8 @@ std::atomic<long> gLessonParses{0};
 
 // The keys a [settings] table and a [[step]] may set besides the parameter table's: the view's
 // (`pixel` only to be refused with what to write instead).
-constexpr std::string_view VIEW_KEYS[] = {"point",        "pixel", "grid",   "heatmap",
-                                          "origin_shift", "snap",  "magnify"};
+constexpr std::string_view VIEW_KEYS[] = {"point",        "pixel", "grid",    "heatmap",
+                                          "origin_shift", "snap",  "magnify", "freeze_cascades"};
 
 int lineOf(const toml::node& node) {
     return std::max(1, static_cast<int>(node.source().begin.line));
@@ -656,9 +657,11 @@ class LessonParser {
     // its aliasing over the scene, and the magnifier's close-up on its texels.
     void applyMapKeys(const toml::table& table, const std::string& what, LessonSettings& s) const {
         auto name = [&](std::string_view key) { return what + " " + std::string(key); };
-        for (auto [key, field] : {std::pair<const char*, bool*>{"heatmap", &s.heatmap},
-                                  std::pair<const char*, bool*>{"snap", &s.snap},
-                                  std::pair<const char*, bool*>{"magnify", &s.magnify}}) {
+        for (auto [key, field] :
+             {std::pair<const char*, bool*>{"heatmap", &s.heatmap},
+              std::pair<const char*, bool*>{"snap", &s.snap},
+              std::pair<const char*, bool*>{"magnify", &s.magnify},
+              std::pair<const char*, bool*>{"freeze_cascades", &s.freezeCascades}}) {
             if (const toml::node* n = table.get(key)) {
                 const auto* b = n->as_boolean();
                 if (!b) fail(*n, name(key) + " must be true or false, got " + typeName(*n));
@@ -728,13 +731,10 @@ class LessonParser {
             throw InputError(mSource, lineOf(key ? *key : static_cast<const toml::node&>(step)),
                              what + ": " + why->text());
         }
-        // The trace, the inspector and a pinned point follow one map over the scene; cascades are
-        // `render`'s (app/render_options.h RenderOptions::cascades).
-        if (s.cascades > 1) {
-            const toml::node* key = step.get("cascades");
-            throw InputError(mSource, lineOf(key ? *key : static_cast<const toml::node&>(step)),
-                             what + ": cascades " + std::to_string(s.cascades) +
-                                 ": a lesson step shows one map over its scene");
+        // Cascades where they work, frozen only where there are some (scene/cascade_view.h).
+        if (auto why = mScene ? lessonCascadeProblem(*mScene, s, s.freezeCascades) : std::nullopt) {
+            const toml::node* key = step.get(why->setting) ? step.get(why->setting) : &step;
+            throw InputError(mSource, lineOf(*key), what + ": " + why->text());
         }
         std::optional<ParamProblem> problem = checkParams(s.ShadowSettings::pcfParams());
         if (!problem) return;

@@ -31,7 +31,7 @@
 //                                     (lesson_pick.h). `pcfscope view` prints the point of a click
 //                                     (the step's JSON "point" too)
 //   heatmap, origin_shift, snap,      the view's: see LessonSettings
-//   magnify
+//   magnify, freeze_cascades
 //
 //   [[step]]                          one table per step, at least one, shown in file order
 //   title = "..."                     required, not empty
@@ -109,6 +109,11 @@ struct LessonSettings : ShadowSettings {
     // moved toward the point until a texel of the step's map, unslid, is a sixteenth of the
     // scene's height, so that a quarter-texel slide moves the stair steps by several pixels.
     bool magnify = false;
+    // A cascaded map's cascades frozen (viewer key Y): they stay fitted to the lesson's camera
+    // while the scene is seen from behind and above it (scene/cascade_view.h
+    // cascadeOverviewCamera), each cascade's light box and split plane drawn in the scene. Needs
+    // cascades 2..4.
+    bool freezeCascades = false;
     // The shadow map's texel grid slid under the world by (s, s) texels (light.h's
     // shiftShadowOrigin), then with `snap` moved to the nearest whole-texel fit (viewer keys
     // O / Shift+O step s by 1/8 texel, S toggles snap). 0 and false: the plain fit.

@@ -5,6 +5,7 @@
 #include "kernel/bias.h"
 #include "kernel/methods.h"
 #include "kernel/settings.h"
+#include "scene/cascade_view.h"
 
 namespace pcf {
 
@@ -12,8 +13,12 @@ namespace {
 
 // The next method (back: the previous), its kernel fitted to it; a bias the new method cannot
 // take (soft on hardware taps) falls back to constant, weights it cannot take to box.
+// With cascades, the methods cascades cannot take (scene/cascade_view.h
+// cascadeMethodProblem) are skipped.
 void nextMethod(LessonSettings& s, bool back) {
-    s.method = (s.method + (back ? PCF_METHOD_COUNT - 1 : 1)) % PCF_METHOD_COUNT;
+    do {
+        s.method = (s.method + (back ? PCF_METHOD_COUNT - 1 : 1)) % PCF_METHOD_COUNT;
+    } while (cascadeMethodProblem(s));
     s.kernel = fitKernel(s.method, s.kernel);
     if (validateBias(static_cast<int>(s.bias), s.method)) s.bias = BiasMode::Constant;
     if (!methodInfo(s.method).takesWeights) s.weights = PCF_WEIGHTS_BOX;
@@ -66,6 +71,12 @@ std::optional<LessonSettings> afterLiveKey(LessonSettings s, std::string_view ke
         s.depthFormat = nextDepthFormat(s.depthFormat);
     } else if (key == "N") {
         s.shading = s.shading == Shading::Lit ? Shading::Visibility : Shading::Lit;
+    } else if (key == "J") {
+        // The colour of the cascade each receiver reads over the lit picture, and back.
+        s.shading = s.shading == Shading::Cascades ? Shading::Lit : Shading::Cascades;
+    } else if (key == "Y") {
+        // Frozen cascades need some: with one map the key does nothing.
+        if (s.cascades > 1) s.freezeCascades = !s.freezeCascades;
     } else {
         return std::nullopt;
     }
@@ -87,7 +98,7 @@ const std::vector<std::string>& settingKeyNames() {
     static const std::vector<std::string> names = {
         "M", "Shift+M", "[", "]",       "-",       "+", "B",       "Shift+B", "Q",
         "O", "Shift+O", "S", "V",       "Shift+V", "U", "Shift+U", "T",       "Shift+T",
-        "W", "Shift+W", "I", "Shift+I", "K",       "D", "N"};
+        "W", "Shift+W", "I", "Shift+I", "K",       "D", "N",       "J",       "Y"};
     return names;
 }
 

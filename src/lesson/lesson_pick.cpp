@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "kernel/shading.h"
+#include "scene/cascade_view.h"
 #include "scene/pcss.h"
 #include "scene/raycast.h"
 #include "scene/shadow_fit.h"
@@ -120,22 +121,40 @@ float lightElevationDeg(const Light& light) {
 
 Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
                   const LessonSettings& s, const ScenePoint& point) {
-    PinnedLookup at = pinnedLookup(scene, shadowClipFromWorld, s, point);
+    return tracePinned(map, scene, shadowClipFromWorld, s, point, scene.camera);
+}
+
+Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
+                  const LessonSettings& s, const ScenePoint& point, const Camera& cascadeCamera) {
+    PinnedLookup at = pinnedLookup(scene, shadowClipFromWorld, s, point, cascadeCamera);
     PcfParams pcss =
         pcssPcfParams(scene.light, shadowMapLayer(scene, shadowClipFromWorld, s.mapSize), s);
     PcfParams prm = s.pcfParams(at.uv, map.width(), pcss.penumbraScale);
     prm.depthNear = pcss.depthNear;
     prm.depthFar = pcss.depthFar;
-    return traceLookup(map, at.uv, at.z0, at.ref, prm, s, at.dzduv);
+    Trace trace = traceLookup(map, at.uv, at.z0, at.ref, prm, s, at.dzduv, at.cascade.index);
+    // Past the shadow distance no cascade covers the point: the camera pass draws it lit.
+    if (!at.cascade.covered) trace.visibility = 1.0f;
+    return trace;
 }
 
 PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
                           const LessonSettings& s, const ScenePoint& point) {
+    return pinnedLookup(scene, shadowClipFromWorld, s, point, scene.camera);
+}
+
+PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& fit, const LessonSettings& s,
+                          const ScenePoint& point, const Camera& cascadeCamera) {
+    // The layer the point reads (one, or its cascade) and that layer's fit and texel size.
+    MapSpec map = cascadedMapSpec(scene, s, fit, cascadeCamera, LESSON_CASCADE_ASPECT);
+    PointCascade cascade = pointCascade(map, cascadeCamera, point.posWs);
+    const PcfMapLayer& layer = map.layers[static_cast<size_t>(cascade.index)];
+    const glm::mat4& shadowClipFromWorld = layer.shadowClipFromWorld;
     glm::vec3 n = point.normalWs;
     glm::vec3 toLight = toLightWs(scene.light, point.posWs);
-    PcfReceiverLookup at = pcfReceiverLookup(
-        shadowClipFromWorld, point.posWs, n, glm::dot(n, toLight), s.modeId(), s.baseBias(),
-        s.slopeBias, s.slopeMax, s.normalOffset, shadowTexelWs(scene, s.mapSize));
+    PcfReceiverLookup at =
+        pcfReceiverLookup(shadowClipFromWorld, point.posWs, n, glm::dot(n, toLight), s.modeId(),
+                          s.baseBias(), s.slopeBias, s.slopeMax, s.normalOffset, layer.texelWs);
     // The receiver's plane, from two steps along the surface instead of two screen pixels: any
     // two independent directions give the same dz/duv of a plane (pcfReceiverPlaneDzDuv). In
     // double, so the steps' differences keep their digits.
@@ -154,6 +173,8 @@ PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWor
     out.z0 = at.z0;
     out.ref = at.ref;
     out.dzduv = pcfReceiverPlaneDzDuv(glm::vec3(d1), glm::vec3(d2));
+    out.cascade = cascade;
+    out.layerFit = shadowClipFromWorld;
     return out;
 }
 

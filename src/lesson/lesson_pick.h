@@ -15,6 +15,7 @@
 #include "lesson/lesson.h"
 #include "lesson/lesson_text.h"
 #include "scene/camera.h"
+#include "scene/cascade_view.h"
 #include "scene/scene.h"
 
 namespace pcf {
@@ -59,15 +60,22 @@ FramePick framePick(const Camera& camera, glm::vec3 posWs, glm::ivec2 frameSize)
 FramePick stepPick(const Scene& scene, const LessonSettings& s, glm::ivec2 frameSize);
 
 // What the camera pass looks up for the point (scene.frag's formulas) with the step's bias and
-// map, in the map fitted by shadowClipFromWorld.
+// map, in the map fitted by shadowClipFromWorld; with cascades (s.cascades > 1), in the layer of
+// the cascade the point falls in, the cascades fitted to cascadeCamera (default: the scene's) at
+// LESSON_CASCADE_ASPECT (scene/cascade_view.h), the fit unused.
 struct PinnedLookup {
     glm::vec2 uv{0.0f};
-    float z0 = 0.0f;        // the depth before bias
-    float ref = 0.0f;       // the depth compared
-    glm::vec2 dzduv{0.0f};  // the receiver's plane in the map (Isidoro 2006), unclamped
+    float z0 = 0.0f;           // the depth before bias
+    float ref = 0.0f;          // the depth compared
+    glm::vec2 dzduv{0.0f};     // the receiver's plane in the map (Isidoro 2006), unclamped
+    PointCascade cascade;      // the layer read: index 0 of one
+    glm::mat4 layerFit{1.0f};  // that layer's light clip from world
 };
 PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
                           const LessonSettings& s, const ScenePoint& point);
+PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
+                          const LessonSettings& s, const ScenePoint& point,
+                          const Camera& cascadeCamera);
 
 // The angle between the point's normal and the direction to the light, degrees: 0 the light
 // straight above, 90 grazing, more: the point faces away from the light.
@@ -87,8 +95,12 @@ constexpr float MIN_SUN_ELEVATION_DEG = 1.0f;
 // The trace of the point's lookup on `map` (the shadow map rendered with the step's settings and
 // shadowClipFromWorld): what the session traces at the point's pixel, without rendering the
 // camera pass (the pixel shows this very lookup: SceneRenderer::setPick).
+// With cascades, the layer pinnedLookup names (Trace::layer); past the shadow distance the
+// visibility is 1, as the camera pass draws it.
 Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
                   const LessonSettings& s, const ScenePoint& point);
+Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
+                  const LessonSettings& s, const ScenePoint& point, const Camera& cascadeCamera);
 
 // The context of a step: its state, and the pixel that shows its point in the frame rendered
 // (framePick).

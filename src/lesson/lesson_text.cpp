@@ -6,8 +6,10 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <set>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <variant>
 
@@ -54,6 +56,20 @@ int litCount(const Trace& tr) {
 PcfFootprint footprint(const Trace& tr) {
     int n = std::max(1, tr.params.kernel);
     return pcfKernelFootprint(tr.uv, tr.map.size, n);
+}
+
+// A field of the cascade the lookup read: a count or index as an integer; missing for a map of
+// one layer, and a density no frame measured (negative).
+template <class T>
+Value cascadeValue(const Trace& t, T TraceCascade::*field) {
+    std::optional<TraceCascade> c = cascadeOfTrace(t);
+    if (!c) return {};
+    if constexpr (std::is_same_v<T, int>) {
+        return integer((*c).*field);
+    } else {
+        if ((*c).*field < 0.0f) return {};
+        return number((*c).*field);
+    }
 }
 
 const std::vector<Simple>& simpleNames() {
@@ -208,6 +224,23 @@ const std::vector<Simple>& simpleNames() {
          [](const Trace&, const StepContext& c) {
              TexelKind format = c.settings.depthFormat;
              return text(std::string(depthFormatName(format)));
+         }},
+        // The cascade the lookup read (kernel/trace.h cascadeOfTrace); n/a with one map.
+        {"cascade", [](const Trace& t,
+                       const StepContext&) { return cascadeValue(t, &TraceCascade::index); }},
+        {"cascade.count", [](const Trace& t,
+                             const StepContext&) { return cascadeValue(t, &TraceCascade::count); }},
+        {"cascade.near", [](const Trace& t,
+                            const StepContext&) { return cascadeValue(t, &TraceCascade::nearZ); }},
+        {"cascade.far", [](const Trace& t,
+                           const StepContext&) { return cascadeValue(t, &TraceCascade::farZ); }},
+        {"cascade.texel_world",
+         [](const Trace& t, const StepContext&) {
+             return cascadeValue(t, &TraceCascade::texelWs);
+         }},
+        {"cascade.texels_per_pixel_max",
+         [](const Trace& t, const StepContext&) {
+             return cascadeValue(t, &TraceCascade::texelsPerPixelMax);
          }},
     };
     return names;

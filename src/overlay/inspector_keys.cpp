@@ -34,6 +34,8 @@ const std::vector<std::pair<std::string, std::string>>& viewerKeys() {
         {"K", "cull mode of the shadow pass"},
         {"D", "depth format: " + depthFormatNames()},
         {"N", "shading: lit / the visibility alone (no N.L)"},
+        {"J", "shading: tinted by the cascade each pixel reads / lit"},
+        {"Y", "cascades frozen: the camera backs away, their boxes and splits drawn"},
         {"X", "marks on the scene on / off"},
         {"C", "split view: the step's compare, or this method and nearest"},
         {"Z", "magnifier: a close-up on the point, a texel many pixels wide"},

@@ -26,6 +26,8 @@ std::string countsText(const Trace& tr, const HiddenNumbers& hidden) {
     counts += "\nuv (" + fixed(tr.uv.x, 4) + ", " + fixed(tr.uv.y, 4) + ")  ref " +
               (hidden.refs ? std::string(HIDDEN_NUMBER) : fixed(tr.ref, 4)) + "  bias " +
               std::string(biasName(tr.bias.modeId()));
+    std::string cascade = cascadeHeaderText(tr);
+    if (!cascade.empty()) counts += "\n" + cascade;
     return counts;
 }
 
@@ -34,6 +36,7 @@ std::vector<std::string> countsLines(const std::string& counts, const TypeSizes&
     std::string oneLine = counts;
     std::replace(oneLine.begin(), oneLine.end(), '\n', ' ');
     oneLine.insert(oneLine.find(" uv ("), "  ");
+    if (size_t c = oneLine.find(" cascade "); c != std::string::npos) oneLine.insert(c, "  ");
     if (measureText(FontFace::Mono, t.number, oneLine).x <= width) return {oneLine};
     return wrapText(FontFace::Mono, t.number, counts, width);
 }

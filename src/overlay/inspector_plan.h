@@ -430,6 +430,9 @@ constexpr Colour HW8_POINT{0.72f, 1.0f, 0.28f, 1.0f};
 // ---- One function per panel (the files named at the top). ----
 
 Header headerOf(const Trace& tr, const TypeSizes& t, float width);
+// The header's line on the cascade a cascaded map's lookup read (inspector_cascade.cpp): its
+// index of the count, view depths, texel size and measured density; empty with one map.
+std::string cascadeHeaderText(const Trace& tr);
 void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t);
 void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
                    const TypeSizes& t);

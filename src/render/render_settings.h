@@ -21,6 +21,9 @@ struct RenderSettings : ShadowSettings {
     // Also fill the world-position and normal targets (tests, --raw); the viewer does without.
     bool writePositions = false;
     glm::ivec2 frameSize{1280, 720};
+    // The frame shape (width / height) cascades are fitted to; 0: the frame's own (a lesson's
+    // is fixed: scene/cascade_view.h LESSON_CASCADE_ASPECT).
+    float cascadeAspect = 0.0f;
 };
 
 // The GL internal format a map of this texel kind is stored in (kernel/shadow_map.h TexelKind):

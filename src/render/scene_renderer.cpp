@@ -10,6 +10,7 @@
 #include "render/depth_readback.h"
 #include "render/shader_loader.h"
 #include "scene/cascade_fit.h"
+#include "scene/cascade_view.h"
 #include "scene/mesh.h"
 #include "scene/pcss.h"
 
@@ -162,9 +163,18 @@ void SceneRenderer::drawObjects(GLuint program, bool castersOnly, bool setMateri
     glBindVertexArray(0);
 }
 
+void SceneRenderer::setCascadeCamera(const std::optional<Camera>& camera) {
+    mCascadeCamera = camera;
+}
+
+MapSpec SceneRenderer::mapSpecFor(const RenderSettings& settings) const {
+    float aspect =
+        settings.cascadeAspect > 0.0f ? settings.cascadeAspect : frameAspect(settings.frameSize);
+    return cascadedMapSpec(mScene, settings, mShadowClipFromWorld, cascadeCamera(), aspect);
+}
+
 void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
-    MapSpec map =
-        shadowMapSpec(mScene, settings, mShadowClipFromWorld, frameAspect(settings.frameSize));
+    MapSpec map = mapSpecFor(settings);
     ensureShadowTarget(map, settings.depthFormat);
     mMap = std::move(map);
     ensureTargets(settings);
@@ -265,9 +275,11 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glProgramUniform2iv(program, uniform(program, "uPickPixel"), 1, &pickPixel.x);
     glProgramUniform4fv(program, uniform(program, "uPickLookup"), 1, &pickLookup.x);
     glProgramUniform2fv(program, uniform(program, "uPickDzDuv"), 1, &pickDzDuv.x);
+    glProgramUniform1i(program, uniform(program, "uPickLayer"), mPick ? mPick->layer : 0);
     // The camera as the cascades split it (pcfViewDepth); unused with one layer.
-    glm::vec3 viewDir = cameraViewDirWs(mScene.camera);
-    glProgramUniform3fv(program, uniform(program, "uEyeWs"), 1, &mScene.camera.eyeWs.x);
+    const Camera& cascades = cascadeCamera();
+    glm::vec3 viewDir = cameraViewDirWs(cascades);
+    glProgramUniform3fv(program, uniform(program, "uEyeWs"), 1, &cascades.eyeWs.x);
     glProgramUniform3fv(program, uniform(program, "uViewDirWs"), 1, &viewDir.x);
     bindShadowMap(program, mapTexture(), mShadow.depth.id(), mSamplers);
     drawObjects(program, false, true);

@@ -35,6 +35,9 @@ struct CameraPick {
     glm::vec2 jitterNdc{0.0f};   // added to every ndc position: the point lands on the centre
     glm::vec4 lookup{0.0f};      // u, v, ref, z0 (shared/pcf_shading.h: pcfReceiverLookup)
     glm::vec2 dzduv{0.0f};       // the receiver plane, dz/du and dz/dv
+    // The map's layer the lookup is in (a cascade; scene/cascade_view.h pointCascade): the pixel
+    // reads it whatever cascade its own interpolated position would pick near a split.
+    int layer = 0;
 };
 
 // clipFromWorld followed by a shift of every ndc position by jitterNdc.
@@ -96,6 +99,16 @@ class SceneRenderer {
     // the camera is jittered by jitterNdc and the fragment at pixelGl (GL window coordinates)
     // takes the CPU's lookup of the point instead of its interpolated one. nullopt: none.
     void setPick(const std::optional<CameraPick>& pick);
+    const std::optional<CameraPick>& pick() const { return mPick; }
+    // The camera a cascaded map is fitted to and its receivers pick their cascade by (nullopt:
+    // the scene's camera): a magnified step's wide view, a frozen view's cascades
+    // (scene/cascade_view.h). Takes effect at the next depth pass.
+    void setCascadeCamera(const std::optional<Camera>& camera);
+    const Camera& cascadeCamera() const { return mCascadeCamera ? *mCascadeCamera : mScene.camera; }
+    // The map the depth pass makes for these settings with the current fit, light and cascade
+    // camera (scene/cascade_view.h cascadedMapSpec), the frame shape settings.cascadeAspect
+    // (0: settings.frameSize's).
+    MapSpec mapSpecFor(const RenderSettings& settings) const;
 
   private:
     struct GpuMesh {
@@ -125,6 +138,7 @@ class SceneRenderer {
     Scene mScene;
     glm::mat4 mShadowClipFromWorld{1.0f};
     std::optional<CameraPick> mPick;
+    std::optional<Camera> mCascadeCamera;
     std::vector<GpuMesh> mMeshes;
     GlProgram mDepthProgram;
     // By (targets, bias mode, spot light): one PcfProgramCache per combination used.

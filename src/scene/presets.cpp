@@ -314,6 +314,200 @@ half = [0.2, 0.01, 0.2]
 colour = [0.3, 0.5, 0.85]
 )",
      STACKED_CARDS_PARAMS, placeUpperCard},
+    {"long-ground",
+     R"(# What a game sees: a ground running 100 units ahead of a camera 1.6 units above it, and a
+# row of 2-unit posts on either side every 8 units, from 4 to 92 units away. The camera's near
+# and far planes are 0.1 and 100, so cascades over its whole view depth split [0.1, 100] (at
+# practical lambda 0.5, 4 cascades: 12.8187, 26.6061, 46.4039, 100). The sun is 58 degrees from
+# the zenith, ahead and to the right: each post's shadow falls 3.2 units back across the ground.
+[camera]
+eye = [0.0, 1.6, 2.0]
+target = [0.0, 0.9, -18.0]
+fov = 40.0
+near = 0.1
+far = 100.0
+
+[light]
+type = "directional"
+direction = [-1.4, -1.0, 0.8]
+
+[[object]]
+type = "plane"
+name = "ground"
+centre = [0.0, 0.0, -48.0]
+normal = [0.0, 1.0, 0.0]
+tangent = [1.0, 0.0, 0.0]
+size = [24.0, 100.0]
+colour = [0.8, 0.8, 0.8]
+
+[[object]]
+type = "box"
+name = "post-left-1"
+centre = [-2.5, 1.0, -4.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-1"
+centre = [2.5, 1.0, -4.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-left-2"
+centre = [-2.5, 1.0, -12.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-2"
+centre = [2.5, 1.0, -12.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-left-3"
+centre = [-2.5, 1.0, -20.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-3"
+centre = [2.5, 1.0, -20.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-left-4"
+centre = [-2.5, 1.0, -28.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-4"
+centre = [2.5, 1.0, -28.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-left-5"
+centre = [-2.5, 1.0, -36.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-5"
+centre = [2.5, 1.0, -36.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-left-6"
+centre = [-2.5, 1.0, -44.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-6"
+centre = [2.5, 1.0, -44.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-left-7"
+centre = [-2.5, 1.0, -52.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-7"
+centre = [2.5, 1.0, -52.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-left-8"
+centre = [-2.5, 1.0, -60.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-8"
+centre = [2.5, 1.0, -60.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-left-9"
+centre = [-2.5, 1.0, -68.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-9"
+centre = [2.5, 1.0, -68.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-left-10"
+centre = [-2.5, 1.0, -76.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-10"
+centre = [2.5, 1.0, -76.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-left-11"
+centre = [-2.5, 1.0, -84.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-11"
+centre = [2.5, 1.0, -84.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-left-12"
+centre = [-2.5, 1.0, -92.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+
+[[object]]
+type = "box"
+name = "post-right-12"
+centre = [2.5, 1.0, -92.0]
+half = [0.15, 1.0, 0.15]
+colour = [0.75, 0.55, 0.4]
+)"},
 };
 
 }  // namespace
