@@ -68,11 +68,12 @@ void main() {
     // parity test, `verify` and a lesson's pinned point). Past the last cascade: lit.
     int layerIndex = 0;
     bool covered = true;
+    float viewDepth = 0.0f;
 #if PCF_MAP_LAYERS > 1
     vec4 cascadeFar = vec4(1e30f);
     for (int k = 0; k < PCF_MAP_LAYERS; ++k) cascadeFar[k] = uPcfMapLayers[k].viewDepth.y;
-    layerIndex = pcfCascadeLayer(pcfViewDepth(vPosWs, uEyeWs, uViewDirWs), cascadeFar,
-                                 PCF_MAP_LAYERS);
+    viewDepth = pcfViewDepth(vPosWs, uEyeWs, uViewDirWs);
+    layerIndex = pcfCascadeLayer(viewDepth, cascadeFar, PCF_MAP_LAYERS);
     covered = layerIndex < PCF_MAP_LAYERS;
     layerIndex = min(layerIndex, PCF_MAP_LAYERS - 1);
     pcfMapLayer = layerIndex;
@@ -94,6 +95,20 @@ void main() {
     if (PCF_ALL_TARGETS != 0 || BIAS_MODE == PCF_BIAS_RECEIVER_PLANE) {
         dzduv = pcfReceiverPlaneDzDuv(dFdx(vec3(u, v, z)), dFdy(vec3(u, v, z)));
     }
+
+#if PCF_CASCADE_BLEND
+    // The next cascade's lookup of this point, for the blend band below; its receiver plane
+    // from its own derivatives, taken here where every lane of the quad runs.
+    PcfMapLayer nextLayer = uPcfMapLayers[min(layerIndex + 1, PCF_MAP_LAYERS - 1)];
+    PcfReceiverLookup next = pcfReceiverLookup(nextLayer.shadowClipFromWorld, vPosWs, n, cosTheta,
+                                               BIAS_MODE, uConstantBias, uSlopeBias, uSlopeMax,
+                                               uNormalOffset, nextLayer.texelWs);
+    vec2 nextDzduv = vec2(0.0f);
+    if (BIAS_MODE == PCF_BIAS_RECEIVER_PLANE) {
+        vec3 nextUvz = vec3(next.u, next.v, next.z);
+        nextDzduv = pcfReceiverPlaneDzDuv(dFdx(nextUvz), dFdy(nextUvz));
+    }
+#endif
 
     // A lesson's pinned scene point (src/lesson/lesson_pick.h): the camera is jittered so that
     // the point projects to this pixel's centre, and its lookup, computed once on the CPU from
@@ -121,6 +136,26 @@ void main() {
                             : vec2(1.0f, 0.0f);
         PcfRef lookupRef = PcfRef(ref, vec2(u, v), pcfProgramBias(BIAS_MODE, dzduv));
         visibility = pcfFilterRef(uPcfDepth, vec2(u, v), lookupRef, pcfProgramParams(rotation));
+#if PCF_CASCADE_BLEND
+        // In the blend band the next cascade looks the same point up (its own fit, texel size
+        // and receiver plane) and the two visibilities are mixed (shared/pcf_shading.h
+        // pcfCascadeBlendWeight, pcfCascadeBlend; the CPU: scene/cascade_fit.h
+        // cascadeVisibilityAt).
+        float blendWeight = pcfCascadeBlendWeight(viewDepth, layer.viewDepth, uCascadeBlend,
+                                                  layerIndex, PCF_MAP_LAYERS);
+        if (blendWeight > 0.0f) {
+            pcfMapLayer = layerIndex + 1;
+            vec2 nextUv = vec2(next.u, next.v);
+            vec2 nextRotation = PCF_ROTATE_PER_PIXEL != 0
+                                    ? pcfTexelRotation(nextUv, mapSize(uPcfDepth))
+                                    : vec2(1.0f, 0.0f);
+            PcfRef nextRef = PcfRef(next.ref, nextUv, pcfProgramBias(BIAS_MODE, nextDzduv));
+            float nextVisibility =
+                pcfFilterRef(uPcfDepth, nextUv, nextRef, pcfProgramParams(nextRotation));
+            visibility = pcfCascadeBlend(visibility, nextVisibility, blendWeight);
+            pcfMapLayer = layerIndex;
+        }
+#endif
     }
     // Gamma 2.2 of albedo * light, light = ambient + diffuse * visibility (a scalar):
     //   (albedo * light)^(1/2.2) = albedo^(1/2.2) * light^(1/2.2)

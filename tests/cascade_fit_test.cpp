@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "kernel/cascades.h"
+#include "kernel/shading.h"
 #include "scene/light.h"
 #include "scene/shadow_fit.h"
 
@@ -210,6 +211,37 @@ TEST(CascadeFit, TheMapHasOneLayerPerCascadeWithItsViewDepths) {
     ASSERT_EQ(one.layers.size(), 1u);
     EXPECT_EQ(one.layers[0].shadowClipFromWorld, shadowClipFromWorld(scene));
     EXPECT_EQ(one.layers[0].viewDepth, vec2(0.0f));
+}
+
+// Normal offset is K texels of the cascade read (its layer's texelWs): the same point moves as
+// many of its own cascade's texels across the map in every cascade, K sin^2(theta) (the normal's
+// d = K texelWs sin(theta), of which sin(theta) lies across the light), so a far cascade's
+// coarser texels move it further in the world; its depth moves by d cos(theta) of a depth range
+// every cascade shares, so in proportion to the texel's world size.
+TEST(CascadeFit, NormalOffsetIsTexelsOfTheCascadeRead) {
+    Scene scene = groundScene();
+    ShadowSettings s = cascaded(CASCADE_FIT_SPHERE, true);
+    MapSpec spec = shadowMapSpec(scene, s, shadowClipFromWorld(scene), ASPECT);
+    glm::vec3 p(1.0f, 0.0f, -8.0f), n(0.0f, 1.0f, 0.0f);
+    float cosTheta = glm::dot(n, -glm::normalize(scene.light.directionWs));
+    float sin2 = 1.0f - cosTheta * cosTheta;
+    const float k = 2.0f;
+    std::vector<float> depthShift;
+    for (const PcfMapLayer& layer : spec.layers) {
+        PcfReceiverLookup at =
+            pcfReceiverLookup(layer.shadowClipFromWorld, p, n, cosTheta, PCF_BIAS_CONSTANT, 0.0f,
+                              0.0f, 0.0f, k, layer.texelWs);
+        PcfReceiverLookup moved =
+            pcfReceiverLookup(layer.shadowClipFromWorld, p, n, cosTheta, PCF_BIAS_NORMAL, 0.0f,
+                              0.0f, 0.0f, k, layer.texelWs);
+        float texelsMoved = glm::length(glm::vec2(moved.u - at.u, moved.v - at.v)) * MAP_SIZE;
+        EXPECT_NEAR(texelsMoved, k * sin2, 2e-3f);
+        depthShift.push_back(std::fabs(moved.z - at.z));
+    }
+    for (size_t i = 1; i < spec.layers.size(); ++i) {
+        float texelRatio = spec.layers[i].texelWs / spec.layers[0].texelWs;
+        EXPECT_NEAR(depthShift[i] / depthShift[0], texelRatio, 1e-2f * texelRatio) << i;
+    }
 }
 
 TEST(CascadeFit, CascadesAreRefusedForASpotAndAShadowDistanceBeforeTheNearPlane) {

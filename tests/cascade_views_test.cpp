@@ -180,6 +180,48 @@ TEST_F(CascadeViews, TheTraceNamesTheCascadeItsPointReads) {
     EXPECT_LT(near->texelWs, c->texelWs);
 }
 
+// The inspector's header has a line for the cascade read, with its view depths and texel; a
+// step over one map has none.
+TEST_F(CascadeViews, TheInspectorsHeaderNamesTheCascade) {
+    Lesson lesson = parseLessonString(LESSON, "cascades.toml");
+    auto headerLines = [&](const Lesson& l) {
+        Session session({1600, 900}, false);
+        session.setLesson(l);
+        session.compose();
+        std::string text;
+        for (const LayoutBox& b : session.boxes()) {
+            if (b.panel == "inspector") text += b.text + "\n";
+        }
+        return text;
+    };
+    std::string header = headerLines(lesson);
+    EXPECT_NE(header.find("cascade 2 of 4 view 26.61..46.40 texel "), std::string::npos) << header;
+    std::string one = std::string(LESSON);
+    one.replace(one.find("cascades = 4"), 12, "cascades = 1");
+    one.replace(one.find("freeze_cascades = true"), 22, "grid = true");
+    EXPECT_EQ(headerLines(parseLessonString(one, "one.toml")).find("cascade "), std::string::npos);
+}
+
+// `render --lesson` renders a step's cascades as the viewer does: fitted to the lesson's camera,
+// which render.json names, and verify holds the frame to the kernel.
+TEST(CascadeRender, RendersALessonStepsCascades) {
+    std::filesystem::path dir = testutil::makeTempDir("cascade-lesson");
+    std::ofstream(dir / "cascades.toml") << LESSON;
+    std::string raw = (dir / "raw").string();
+    auto r = testutil::runPcfscope("render --lesson " + (dir / "cascades.toml").string() +
+                                   " --step 1 --size 320x180 --raw " + raw);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Json j = Json::parse(testutil::readAll(raw + "/render.json"));
+    ASSERT_EQ(j["map"]["layers"].size(), 4u);
+    Scene scene = *presetScene("long-ground");
+    EXPECT_EQ(j["map"]["cascade_camera"]["eye"][2].get<float>(), scene.camera.eyeWs.z);
+    EXPECT_NEAR(j["map"]["cascades"][2]["far"].get<double>(), SPLITS[3], 1e-3);
+    auto v = testutil::runPcfscope("verify " + raw);
+    EXPECT_EQ(v.exitCode, 0) << v.out << v.err;
+    EXPECT_NE(v.out.find("(100.0000 %)"), std::string::npos) << v.out;
+    if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir);
+}
+
 // The same step traces the same lookup at every frame size and mode: the cascades are fitted at
 // the lessons' one aspect, whatever the scene panel's shape.
 TEST_F(CascadeViews, TheLookupIsTheSameAtEverySize) {

@@ -85,6 +85,13 @@ TEST_F(CascadesCommand, RenderJsonListsTheIssuesSplits) {
         double median = c[i]["texels_per_pixel_median"].get<double>();
         EXPECT_GT(median, 0.0) << i;
         EXPECT_GE(c[i]["texels_per_pixel_max"].get<double>(), median) << i;
+        // Lloyd's per-direction measure, the larger singular value s1 of each pixel's Jacobian:
+        // s1 >= sqrt(s1 s2) = sqrt(area ratio) at every pixel, so at every quantile too.
+        double svMedian = c[i]["texels_per_pixel_sv_median"].get<double>();
+        double svMax = c[i]["texels_per_pixel_sv_max"].get<double>();
+        EXPECT_GE(svMedian, std::sqrt(median) * (1.0 - 1e-6)) << i;
+        EXPECT_GE(svMax, svMedian) << i;
+        EXPECT_GE(svMax, std::sqrt(c[i]["texels_per_pixel_max"].get<double>()) * (1.0 - 1e-6)) << i;
         std::printf(
             "cascade %d: far %.4f, texel_world %.5f, texels per pixel median %.4f max %.4f\n", i,
             c[i]["far"].get<double>(), c[i]["texel_world"].get<double>(), median,

@@ -50,10 +50,10 @@ TEST_F(StabilityCommand, QuickWritesEveryFile) {
         EXPECT_TRUE(std::isfinite(std::stod(f[7]))) << line;
     }
     EXPECT_GT(rows, 100);
-    // The ten sweeps, and the setup the charts state (stability_report.h: stabilitySetupRows).
+    // The twelve sweeps, and the setup the charts state (stability_report.h: stabilitySetupRows).
     EXPECT_EQ(sweeps, (std::set<std::string>{"setup", "acne", "leak", "tradeoff", "shimmer",
                                              "precision", "aliasing", "pcss-thin", "pcss-overlap",
-                                             "pcss-noise", "pcss-bias", "bleed"}));
+                                             "pcss-noise", "pcss-bias", "bleed", "cascades"}));
     std::string md = testutil::readAll(out + "/stability.md");
     EXPECT_NE(md.find("| pcf-gather N=3 | constant |"), std::string::npos) << md;
     EXPECT_EQ(r.out, md);
@@ -61,7 +61,7 @@ TEST_F(StabilityCommand, QuickWritesEveryFile) {
          {"stability_acne.png", "stability_leak.png", "stability_tradeoff.png",
           "stability_shimmer.png", "stability_precision.png", "aliasing_heatmap.png",
           "stability_pcss_thin.png", "stability_pcss_overlap.png", "stability_pcss_noise.png",
-          "stability_pcss_bias.png", "stability_bleed.png"}) {
+          "stability_pcss_bias.png", "stability_bleed.png", "stability_cascades.png"}) {
         ImageSize size = readImageSize(out + "/" + chart);
         EXPECT_EQ(size.width, 640) << chart;
         EXPECT_EQ(size.height, 360) << chart;
@@ -69,9 +69,11 @@ TEST_F(StabilityCommand, QuickWritesEveryFile) {
     // No staging folder left behind.
     int entries = 0;
     for (const auto& e : fs::directory_iterator(out)) entries += e.is_regular_file() ? 1 : 100;
-    EXPECT_EQ(entries, 14);  // the charts, the heat map, the two CSVs and the table
+    EXPECT_EQ(entries, 16);  // the charts, the heat map, the three CSVs and the table
     EXPECT_EQ(testutil::readAll(out + "/stability_bleed.csv").substr(0, 20),
               "sweep,method,kernel,");
+    EXPECT_EQ(testutil::readAll(out + "/stability_cascades.csv").substr(0, 20),
+              "method,kernel,split,");
 
     // Written once: a second run without -f is refused and leaves the files alone.
     auto again = testutil::runPcfscope("stability --quick --sweep aliasing -o " + out);
@@ -89,11 +91,11 @@ TEST_F(StabilityCommand, QuickWritesEveryFile) {
         names.insert(e.path().filename().string());
     }
     EXPECT_EQ(names,
-              (std::set<std::string>{"stability_acne.png", "stability_leak.png",
-                                     "stability_tradeoff.png", "stability_shimmer.png",
-                                     "stability_precision.png", "stability_pcss_thin.png",
-                                     "stability_pcss_overlap.png", "stability_pcss_noise.png",
-                                     "stability_pcss_bias.png", "stability_bleed.png"}));
+              (std::set<std::string>{
+                  "stability_acne.png", "stability_leak.png", "stability_tradeoff.png",
+                  "stability_shimmer.png", "stability_precision.png", "stability_pcss_thin.png",
+                  "stability_pcss_overlap.png", "stability_pcss_noise.png",
+                  "stability_pcss_bias.png", "stability_bleed.png", "stability_cascades.png"}));
     for (const std::string& chart : names) {
         EXPECT_EQ(readImageBytes(redrawn + "/" + chart, 4), readImageBytes(out + "/" + chart, 4))
             << chart;

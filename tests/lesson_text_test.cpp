@@ -189,6 +189,37 @@ TEST(LessonText, PartsOfTheSplitViewAreTheContextsVisibilities) {
     EXPECT_TRUE(checkPlaceholders("{part[0].depth}"));
 }
 
+// A trace's map given three cascades (view depths 0.1..5, 5..20, 20..60; texels 0.01, 0.04,
+// 0.12 world units wide) and its lookup said to be in the middle one, measured at 2.5 texels
+// per pixel.
+void makeCascaded(Trace& tr) {
+    PcfMapLayer layer = tr.map.layers.front();
+    const float depths[] = {0.1f, 5.0f, 20.0f, 60.0f};
+    const float texels[] = {0.01f, 0.04f, 0.12f};
+    tr.map.layers.clear();
+    for (int k = 0; k < 3; ++k) {
+        layer.viewDepth = vec2(depths[k], depths[k + 1]);
+        layer.texelWs = texels[k];
+        tr.map.layers.push_back(layer);
+    }
+    tr.layer = 1;
+    tr.cascadeTexelsPerPixelMax = 2.5f;
+}
+
+// The cascade placeholders read the layer the lookup read; n/a with one map, and the density
+// n/a where no frame measured it.
+TEST(LessonText, CascadesAreTheLayerRead) {
+    Trace tr = exampleTrace(PCF_NAIVE);
+    EXPECT_EQ(fill("{cascade} {cascade.near}", tr), "n/a n/a");
+    makeCascaded(tr);
+    EXPECT_EQ(fill("{cascade} of {cascade.count}: {cascade.near} to {cascade.far}, texel "
+                   "{cascade.texel_world}, {cascade.texels_per_pixel_max} per pixel",
+                   tr),
+              "1 of 3: 5 to 20, texel 0.04, 2.5 per pixel");
+    tr.cascadeTexelsPerPixelMax = -1.0f;
+    EXPECT_EQ(fill("{cascade.texels_per_pixel_max}", tr), "n/a");
+}
+
 // Two occluders side by side, 0.2 | 0.5 over a receiver at 0.6 (issue 33's example): a 3x3 box
 // of the moments read halfway between the columns holds each depth half: mean 0.35, E[z^2]
 // (0.04 + 0.25) / 2 = 0.145, variance 0.15^2, Chebyshev's bound 0.0225 / (0.0225 + 0.25^2).
@@ -215,6 +246,7 @@ TEST(LessonText, MomentNamesComeFromTheMomentMethodsTrace) {
 
 TEST(LessonText, EveryListedNameFills) {
     Trace naive = exampleTrace(PCF_NAIVE);
+    makeCascaded(naive);  // the cascade's names fill for a cascaded map only
     Trace vsm = twoOccluderVsmTrace();
     for (std::string name : placeholderNames()) {
         for (std::string_view from : {"[K]", "[I,J]"}) {

@@ -156,7 +156,7 @@ TEST_F(Reliability, VerifyRecomputesRefAndChecksTheDepthFormat) {
                   fs::copy_options::overwrite_existing);
     setJson(raw, "size", "[32");
     expectOneLine(runPcfscope("verify " + raw),
-                  "\"map\" is 32x64 in 1 layer(s), but shadowmap.exr is one layer of 64x64");
+                  "\"map\" is 32x64 in 1 layer(s), but shadowmap.exr is 64x64");
     fs::copy_file(sRaw / "raw" / "render.json", raw + "/render.json",
                   fs::copy_options::overwrite_existing);
     setJson(raw, "texel_ws", "\"wide\"");

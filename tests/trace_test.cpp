@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "json_lite.h"
+#include "kernel/shading.h"
 #include "kernel/trace_explain.h"
 #include "kernel/trace_json.h"
 
@@ -146,6 +147,27 @@ TEST(Trace, JsonHasTheDesignFieldsAndItsNumbersAreTheKernels) {
         EXPECT_EQ(j["steps"].size(), explainTrace(tr).size());
         EXPECT_EQ(j["steps"][0]["title"].string, explainTrace(tr)[0].title);
     }
+}
+
+// A cascaded map's trace carries the blend band's second lookup beside the taps of the layer
+// read: the next cascade, its weight, its own visibility and the blended result; a map of one
+// layer has no band.
+TEST(Trace, JsonOfACascadedMapCarriesTheBlendBand) {
+    Trace tr = exampleTrace(PCF_BILINEAR2X2);
+    EXPECT_FALSE(jsonlite::parse(traceToJson(tr)).has("cascade_blend"));
+    tr.map.layers.push_back(tr.map.layers.front());
+    tr.map.layers[0].viewDepth = vec2(0.1f, 10.0f);
+    tr.map.layers[1].viewDepth = vec2(10.0f, 40.0f);
+    tr.cascadeBlend = {1, 0.25f, 0.4f, pcfCascadeBlend(tr.visibility, 0.4f, 0.25f)};
+    jsonlite::Value j = jsonlite::parse(traceToJson(tr));
+    ASSERT_TRUE(j.has("cascade_blend"));
+    const jsonlite::Value& b = j["cascade_blend"];
+    EXPECT_EQ(b["next_layer"].number, 1);
+    EXPECT_FLOAT_EQ(static_cast<float>(b["weight"].number), 0.25f);
+    EXPECT_FLOAT_EQ(static_cast<float>(b["next_visibility"].number), 0.4f);
+    // 0.8 (the layer read's) * 0.75 + 0.4 * 0.25
+    EXPECT_NEAR(b["visibility"].number, 0.7, 1e-6);
+    EXPECT_FLOAT_EQ(static_cast<float>(j["visibility"].number), tr.visibility);
 }
 
 TEST(Trace, TextShowsStepsTableAndResult) {

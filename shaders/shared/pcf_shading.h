@@ -64,6 +64,32 @@ PCF_FN int pcfCascadeLayer(float viewDepth, vec4 cascadeFar, int count) {
     return layer;
 }
 
+// The blend band between cascades (--cascade-blend B). Without it a receiver's visibility jumps
+// where its view depth crosses a split, since the two cascades' texels differ in size (a seam).
+// The band is the blending between cascades of Microsoft's "Cascaded Shadow Maps" (Windows
+// DirectX technical article, 2011) and of MJP's Shadows sample (Pettineo, "A Sampling of Shadow
+// Techniques", 2013): the last fraction B of cascade i's view depths [near, far] fades into
+// cascade i + 1's lookup of the same point,
+//   start = far - B (far - near),   w = clamp((d - start) / (far - start), 0, 1)
+//   visibility = (1 - w) v_i + w v_(i+1)
+// so that w reaches 1 where the next cascade begins and the two sides of the split agree. The
+// weight is 0 for B = 0, before the band, past the last cascade and in the last (nothing comes
+// after it). d: the receiver's view depth (pcfViewDepth), scene units; w in [0, 1].
+PCF_FN float pcfCascadeBlendWeight(float viewDepth, vec2 layerViewDepth, float blend, int layer,
+                                   int count) {
+    if (!(blend > 0.0f) || layer + 1 >= count) return 0.0f;
+    float farZ = layerViewDepth.y;
+    float band = blend * (farZ - layerViewDepth.x);
+    float start = farZ - band;
+    return clamp((viewDepth - start) / band, 0.0f, 1.0f);
+}
+
+// The blended visibility of a receiver in the band: its own cascade's visibility v, the next
+// cascade's vNext, the weight w of pcfCascadeBlendWeight: v + w (vNext - v), in [0, 1].
+PCF_FN float pcfCascadeBlend(float visibility, float nextVisibility, float weight) {
+    return visibility + weight * (nextVisibility - visibility);
+}
+
 // What the camera pass draws on the receivers (the `shading` setting, kernel/settings.h Shading):
 // lit, the picture, albedo * (ambient + diffuse * N.L * visibility) gamma-encoded; or the
 // visibility alone, the grey level v (0 black, 1 white: the byte is 255 v), no N.L, no albedo,

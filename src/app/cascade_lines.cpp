@@ -50,10 +50,17 @@ void drawCascadeLines(Canvas& canvas, const Rect& sceneRect, glm::ivec2 sceneSiz
             glm::vec2 a = sceneRect.position() + ends[0] * toRect;
             glm::vec2 b = sceneRect.position() + ends[1] * toRect;
             if (!clipSegment(sceneRect, a, b)) continue;
-            float width = (split ? 3.0f : 1.5f) * scale;
-            // A dark edge under each line keeps it apart from a ground of the same colour.
-            canvas.line(a, b, width + 2.0f * scale, Colour{0.0f, 0.0f, 0.0f, 0.55f});
-            canvas.line(a, b, width, cascadeLineColour(line.cascade));
+            Colour colour = cascadeLineColour(line.cascade);
+            if (!split) {
+                // The light boxes run deep (every caster of the scene): thin and see-through, so
+                // that the split planes, what the frame is about, stand out.
+                colour.a = 0.6f;
+                canvas.line(a, b, 1.0f * scale, colour);
+                continue;
+            }
+            // A dark edge under a split plane's line keeps it apart from a ground of its colour.
+            canvas.line(a, b, 5.0f * scale, Colour{0.0f, 0.0f, 0.0f, 0.6f});
+            canvas.line(a, b, 3.0f * scale, colour);
         }
     }
 }

@@ -134,6 +134,9 @@ std::string withCascadeDensities(const std::string& json, const SceneRenderer& r
         cascade["texels_per_pixel_max"] = jsonNumber(static_cast<float>(d[k].texelsPerPixelMax));
         cascade["texels_per_pixel_median"] =
             jsonNumber(static_cast<float>(d[k].texelsPerPixelMedian));
+        cascade["texels_per_pixel_sv_max"] = jsonNumber(static_cast<float>(d[k].singularValueMax));
+        cascade["texels_per_pixel_sv_median"] =
+            jsonNumber(static_cast<float>(d[k].singularValueMedian));
         cascade["pixels_measured"] = d[k].pixels;
     }
     return jsonDump(j) + "\n";

@@ -11,6 +11,8 @@
 //   aliasing_heatmap.png   screen pixels per shadow-map texel over the frame, with its scale
 //   stability_bleed.csv    the bleed sweep's points, one line each (stability_bleed.h: bleedCsv)
 //   stability_bleed.png    leak against penumbra darkening on stacked-cards
+//   stability_cascades.csv the cascades sweep's points, one line per cascade (cascadeCsv)
+//   stability_cascades.png texels per pixel of each cascade against the split's lambda
 // (a chart only when its sweep ran). `stability --replot CSV -o DIR` measures nothing: it draws
 // the charts of an existing stability.csv into DIR (at --chart-size), every chart whose sweep has
 // rows, all but the heat map (an image, not in the CSV). As `bench` does, everything is written
@@ -42,6 +44,7 @@
 #include "measure/ground_truth.h"
 #include "measure/stability.h"
 #include "measure/stability_bleed.h"
+#include "measure/stability_cascades.h"
 #include "measure/stability_report.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
@@ -221,6 +224,7 @@ std::vector<std::string> outputNames(const std::vector<Sweep>& sweeps) {
     for (const std::string& chart : chartNames(sweeps)) names.push_back(chart);
     if (has(sweeps, Sweep::Aliasing)) names.push_back("aliasing_heatmap.png");
     if (has(sweeps, Sweep::Bleed)) names.emplace_back(BLEED_CSV_NAME);
+    if (has(sweeps, Sweep::Cascades)) names.emplace_back(CASCADE_CSV_NAME);
     return names;
 }
 
@@ -244,6 +248,18 @@ void writeCharts(const fs::path& dir, const std::vector<StabilityRow>& rows,
     for (const StabilityImage& image : images) {
         chart(image.name,
               drawImageChart(aliasingHeatmapSpec(image, rows, source, minPx), chartSize));
+    }
+}
+
+// The CSV files of the sweeps that lay their points out one line each (bleed, cascades), into
+// dir, for the sweeps run.
+void writeSweepCsvs(const fs::path& dir, const std::vector<StabilityRow>& rows,
+                    const StabilityOptions& options) {
+    if (has(options.sweeps, Sweep::Bleed)) {
+        writeTextFile((dir / BLEED_CSV_NAME).string(), bleedCsv(rows, options.base));
+    }
+    if (has(options.sweeps, Sweep::Cascades)) {
+        writeTextFile((dir / CASCADE_CSV_NAME).string(), cascadeCsv(rows));
     }
 }
 
@@ -294,6 +310,9 @@ WorkEstimate stabilityEstimate(const StabilityOptions& s) {
             case Sweep::Bleed:
                 frames += n(s.bleedGaps) * (m + 1.0);
                 truths += AREA_TRUTH_FACTOR * n(s.bleedGaps);
+                break;
+            case Sweep::Cascades:  // a frame and a path of depth passes per lambda, fit, snap
+                frames += 4.0 * n(s.cascadeLambdas) * (1.0 + 0.25 * s.cascadePathSteps);
                 break;
         }
     }
@@ -446,9 +465,7 @@ int runStabilityCommand(const StabilityCommandOptions& o) {
     std::string markdown = stabilityMarkdown(rows, setup, options.base.constantBias);
     writeTextFile((staging.path() / csvName).string(), stabilityCsv(rows));
     writeTextFile((staging.path() / mdName).string(), markdown);
-    if (has(options.sweeps, Sweep::Bleed)) {
-        writeTextFile((staging.path() / BLEED_CSV_NAME).string(), bleedCsv(rows, options.base));
-    }
+    writeSweepCsvs(staging.path(), rows, options);
     writeCharts(staging.path(), rows, result.images, options.sweeps, chartSize);
     outputs.commitStaged(staging.path(), outDir, finalNames);
     std::fputs(markdown.c_str(), stdout);

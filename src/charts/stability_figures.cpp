@@ -6,6 +6,7 @@
 
 #include "charts/chart_axes.h"
 #include "charts/stability_bleed_figures.h"
+#include "charts/stability_cascades_figures.h"
 #include "charts/stability_pcss_figures.h"
 #include "kernel/methods.h"
 #include "measure/failure_measures.h"
@@ -499,6 +500,8 @@ constexpr SweepChart SWEEP_CHARTS[] = {
      lineTexts<pcssBiasChartSpec>, linePoints<pcssBiasChartSpec>},
     {Sweep::Bleed, "stability_bleed.png", drawPcssSweepChart<bleedChartSpec>,
      lineTexts<bleedChartSpec>, linePoints<bleedChartSpec>},
+    {Sweep::Cascades, "stability_cascades.png", drawPcssSweepChart<cascadeChartSpec>,
+     lineTexts<cascadeChartSpec>, linePoints<cascadeChartSpec>},
 };
 
 }  // namespace

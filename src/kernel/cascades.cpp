@@ -31,7 +31,8 @@ std::string cascadeFitNames() { return "box, sphere"; }
 
 bool isCascadeSetting(std::string_view key) {
     return key == "cascades" || key == "cascade_split" || key == "cascade_lambda" ||
-           key == "shadow_distance" || key == "cascade_fit" || key == "cascade_snap";
+           key == "shadow_distance" || key == "cascade_fit" || key == "cascade_snap" ||
+           key == "cascade_blend";
 }
 
 double splitLambda(int split, double lambda) {

@@ -2,7 +2,8 @@
 // scene. A directional light's map may have up to MAX_MAP_LAYERS cascades (kernel/shadow_map.h:
 // one layer each); cascade i covers the view depths [C_i, C_(i+1)] of [n, f] (n = the camera's
 // near plane, f = shadow_distance). The settings rows (kernel/settings.cpp: cascades,
-// cascade_split, cascade_lambda, shadow_distance, cascade_fit, cascade_snap) name these ids; the
+// cascade_split, cascade_lambda, shadow_distance, cascade_fit, cascade_snap, cascade_blend) name
+// these ids; the
 // fit of each cascade's light box to its slice of the camera frustum is scene/cascade_fit.h.
 #pragma once
 
@@ -37,8 +38,8 @@ std::optional<int> cascadeFitFromName(std::string_view name);
 std::string cascadeFitNames();  // "box, sphere"
 
 // Whether a setting (its key) is one of the cascades' rows: cascades, cascade_split,
-// cascade_lambda, shadow_distance, cascade_fit, cascade_snap. Only the commands that render a
-// cascaded map take them (app/render_options.h: RenderOptions::cascades).
+// cascade_lambda, shadow_distance, cascade_fit, cascade_snap, cascade_blend. Only the commands that
+// render a cascaded map take them (app/render_options.h: RenderOptions::cascades).
 bool isCascadeSetting(std::string_view key);
 
 // The lambda a split scheme blends with: uniform 0, log 1, practical `lambda` (in [0, 1]).

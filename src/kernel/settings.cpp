@@ -153,6 +153,10 @@ const ParamInfo PARAMS[] = {
      "camera turns)", true, {}, true},
     {"cascade_snap", &ShadowSettings::cascadeSnap, ParamGroup::Map, "", "", 0, 0, false,
      "cascades: move each light box's origin to whole texels", true, {}, true},
+    {"cascade_blend", &ShadowSettings::cascadeBlend, ParamGroup::Map, "uCascadeBlend", "", 0.0,
+     1.0, false,
+     "cascades: the last B of each cascade's view depths fades into the next one's lookup (0: "
+     "none)", true, {}, true},
 };
 // clang-format on
 

@@ -103,14 +103,17 @@ struct ShadowSettings : BiasSettings {
 
     // Cascades of a directional light's map (kernel/cascades.h, scene/cascade_fit.h): how many
     // (1: one map fitted to the whole scene, no cascades), where they split the view depths
-    // [camera near, shadowDistance] (0: the camera's far plane), and how each light box is fitted
-    // to its slice of the camera frustum.
+    // [camera near, shadowDistance] (0: the camera's far plane), how each light box is fitted
+    // to its slice of the camera frustum, and how the last part of each fades into the next.
     int cascades = 1;
     int cascadeSplit = CASCADE_SPLIT_PRACTICAL;
     float cascadeLambda = 0.5f;
     float shadowDistance = 0.0f;
     int cascadeFit = CASCADE_FIT_BOX;
     bool cascadeSnap = false;
+    // The blend band (shared/pcf_shading.h pcfCascadeBlendWeight): the fraction of each
+    // cascade's view depths, at its far end, whose visibility fades into the next cascade's.
+    float cascadeBlend = 0.0f;
 
     // The kernel's parameters; `rotation` is the Poisson disk's (cos, sin), when rotate says so
     // the caller's per-pixel one.

@@ -61,6 +61,18 @@ struct TraceStep {
     std::string text;
 };
 
+// A cascaded map's blend band at the lookup (shared/pcf_shading.h pcfCascadeBlendWeight): the
+// next cascade blended in (-1: none, outside the band), its weight, the next cascade's own
+// visibility of the point and the blended result pcfCascadeBlend gives. Filled by whoever traces
+// a cascaded frame's point (scene/cascade_fit.h cascadeVisibilityAt finds them); the taps are
+// the layer read's.
+struct TraceCascadeBlend {
+    int next = -1;
+    float weight = 0.0f;
+    float nextVisibility = 1.0f;
+    float blended = 1.0f;
+};
+
 struct Trace {
     PcfParams params{};
     // The map looked up, as a value (kernel/shadow_map.h): its size, texel kind and layers with
@@ -71,9 +83,8 @@ struct Trace {
     // texel size are map.layers[layer]'s (cascadeOfTrace). Its texel density as measured on the
     // frame the lookup was traced on (measure/cascade_density.h: the most map texels per screen
     // pixel over that cascade's receivers); negative when no frame measured it (`trace --map`).
-    // Where cascades blend (a band at each cascade's end), the second lookup, in the next
-    // cascade, and the blend weight would sit beside these; this trace has one lookup.
     float cascadeTexelsPerPixelMax = -1.0f;
+    TraceCascadeBlend cascadeBlend{};  // a cascaded map's blend band at the lookup
     vec2 uv{0.0f};
     float z = 0.0f;    // receiver depth in the light's [0,1] depth, before bias
     float ref = 0.0f;  // the depth compared with the map, after bias

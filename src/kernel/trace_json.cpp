@@ -393,6 +393,13 @@ Json traceJson(const Trace& tr) {
     j["map"] = mapSpecJson(tr.map);
     j["layer"] = tr.layer;
     if (std::optional<TraceCascade> c = cascadeOfTrace(tr)) j["cascade"] = cascadeJson(*c);
+    // A cascaded map: the blend band's second lookup beside the taps of the layer read.
+    if (tr.map.layers.size() > 1) {
+        j["cascade_blend"] = {{"next_layer", tr.cascadeBlend.next},
+                              {"weight", jsonNumber(tr.cascadeBlend.weight)},
+                              {"next_visibility", jsonNumber(tr.cascadeBlend.nextVisibility)},
+                              {"visibility", jsonNumber(tr.cascadeBlend.blended)}};
+    }
     return j;
 }
 

@@ -432,7 +432,7 @@ class LessonParser {
                 }
                 if (s.cascades > 1) {
                     fail(*node, what + " compare: cascades " + std::to_string(s.cascades) +
-                                    ": a lesson step shows one map over its scene");
+                                    ": a split view compares maps of one layer");
                 }
             }
         } catch (const std::invalid_argument& e) {

@@ -1,10 +1,23 @@
 #include "measure/cascade_density.h"
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
 #include "measure/failure_measures.h"
 #include "measure/stability.h"
 #include "scene/cascade_fit.h"
 
 namespace pcf {
+
+double largerSingularValue(const glm::mat2& j) {
+    double a = 0.0;
+    for (int c = 0; c < 2; ++c) {
+        for (int r = 0; r < 2; ++r) a += static_cast<double>(j[c][r]) * j[c][r];
+    }
+    double d = std::abs(static_cast<double>(glm::determinant(j)));
+    return std::sqrt(0.5 * (a + std::sqrt(std::max(a * a - 4.0 * d * d, 0.0))));
+}
 
 std::vector<CascadeDensity> cascadeDensities(const std::vector<float>& lightSpace,
                                              const std::vector<float>& positions,
@@ -24,15 +37,20 @@ std::vector<CascadeDensity> cascadeDensities(const std::vector<float>& lightSpac
         for (size_t k = 0; k < pixels; ++k) {
             if (layerOf[k] != layer) only[4 * k + 3] = 0.0f;
         }
-        std::vector<float> texelsPerPixel;
-        for (float ppt : pixelsPerTexel(only, frameSize, map.size.x)) {
-            if (ppt > 0.0f) texelsPerPixel.push_back(1.0f / ppt);
+        std::vector<float> areas, sigmas;
+        for (const std::optional<glm::mat2>& j : texelJacobians(only, frameSize, map.size.x)) {
+            float det = j ? std::abs(glm::determinant(*j)) : 0.0f;
+            if (!(det > 0.0f)) continue;
+            areas.push_back(det);
+            sigmas.push_back(static_cast<float>(largerSingularValue(*j)));
         }
         CascadeDensity d;
-        d.pixels = static_cast<int>(texelsPerPixel.size());
-        if (!texelsPerPixel.empty()) {
-            d.texelsPerPixelMax = quantileOf(texelsPerPixel, 1.0);
-            d.texelsPerPixelMedian = quantileOf(texelsPerPixel, 0.5);
+        d.pixels = static_cast<int>(areas.size());
+        if (!areas.empty()) {
+            d.texelsPerPixelMax = quantileOf(areas, 1.0);
+            d.texelsPerPixelMedian = quantileOf(areas, 0.5);
+            d.singularValueMax = quantileOf(sigmas, 1.0);
+            d.singularValueMedian = quantileOf(sigmas, 0.5);
         }
         out.push_back(d);
     }

@@ -13,6 +13,7 @@
 #include "measure/failure_measures.h"
 #include "measure/ground_truth.h"
 #include "measure/stability_bleed.h"
+#include "measure/stability_cascades.h"
 #include "measure/stability_pcss.h"
 #include "render/scene_renderer.h"
 #include "scene/camera.h"
@@ -61,6 +62,9 @@ class Sweeper {
                 break;
             case Sweep::Bleed:
                 runBleedSweep(mOptions, mContext.progress, result.rows);
+                break;
+            case Sweep::Cascades:
+                runCascadeSweep(mOptions, mContext.progress, result.rows);
                 break;
         }
     }
@@ -561,6 +565,8 @@ std::string_view sweepName(Sweep sweep) {
             return "pcss-bias";
         case Sweep::Bleed:
             return "bleed";
+        case Sweep::Cascades:
+            return "cascades";
     }
     return "";  // not reached: the switch names every sweep (the compiler checks it)
 }
@@ -575,7 +581,7 @@ std::optional<Sweep> sweepFromName(std::string_view name) {
 std::vector<Sweep> allSweeps() {
     return {Sweep::Acne,      Sweep::Leak,     Sweep::Tradeoff, Sweep::Shimmer,
             Sweep::Precision, Sweep::Aliasing, Sweep::PcssThin, Sweep::PcssOverlap,
-            Sweep::PcssNoise, Sweep::PcssBias, Sweep::Bleed};
+            Sweep::PcssNoise, Sweep::PcssBias, Sweep::Bleed,    Sweep::Cascades};
 }
 
 std::string sweepNameList() {
@@ -619,9 +625,9 @@ float footprintReachTexels(const StabilityMethod& m, float poissonRadius) {
     return reachTexels(m.method, m.kernel, poissonRadius);
 }
 
-std::vector<float> pixelsPerTexel(const std::vector<float>& lightSpace, glm::ivec2 size,
-                                  int mapSize) {
-    std::vector<float> out(static_cast<size_t>(size.x) * size.y, -1.0f);
+std::vector<std::optional<glm::mat2>> texelJacobians(const std::vector<float>& lightSpace,
+                                                     glm::ivec2 size, int mapSize) {
+    std::vector<std::optional<glm::mat2>> out(static_cast<size_t>(size.x) * size.y);
     float n = static_cast<float>(mapSize);
     auto at = [&](int x, int y) { return &lightSpace[(static_cast<size_t>(y) * size.x + x) * 4]; };
     auto receiver = [&](int x, int y) {
@@ -650,10 +656,19 @@ std::vector<float> pixelsPerTexel(const std::vector<float>& lightSpace, glm::ive
                 dy = delta(x, y, 0, 1);
                 if (dy) *dy = -*dy;
             }
-            if (!dx || !dy) continue;
-            float det = std::abs(dx->x * dy->y - dx->y * dy->x);
-            if (det > 0.0f) out[static_cast<size_t>(y) * size.x + x] = 1.0f / det;
+            if (dx && dy) out[static_cast<size_t>(y) * size.x + x] = glm::mat2(*dx, *dy);
         }
+    }
+    return out;
+}
+
+std::vector<float> pixelsPerTexel(const std::vector<float>& lightSpace, glm::ivec2 size,
+                                  int mapSize) {
+    std::vector<std::optional<glm::mat2>> j = texelJacobians(lightSpace, size, mapSize);
+    std::vector<float> out(j.size(), -1.0f);
+    for (size_t k = 0; k < j.size(); ++k) {
+        float det = j[k] ? std::abs(glm::determinant(*j[k])) : 0.0f;
+        if (det > 0.0f) out[k] = 1.0f / det;
     }
     return out;
 }

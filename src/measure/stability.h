@@ -1,7 +1,8 @@
 // stability.h: where shadow-map filtering fails, measured. Six sweeps, each a curve of numbers
 // against the exact ground truth (ground_truth.h), for any list of methods and bias modes, and
-// four of pcss's own (stability_pcss.h: pcss-thin, pcss-overlap, pcss-noise, pcss-bias), and
-// light bleeding on two stacked occluders (stability_bleed.h: bleed):
+// four of pcss's own (stability_pcss.h: pcss-thin, pcss-overlap, pcss-noise, pcss-bias), light
+// bleeding on two stacked occluders (stability_bleed.h: bleed), and cascaded maps one cascade at
+// a time along a turning camera path (stability_cascades.h: cascades):
 //
 //   acne       the light's elevation swept from 90 down to 2 degrees over the scene; the
 //              false-shadow rate = share of the CLEAN LIT pixels where visibility < 0.99, and the
@@ -80,10 +81,12 @@ enum class Sweep {
     PcssBias,
     // light bleeding on stacked cards (stability_bleed.h)
     Bleed,
+    // cascades along a camera path: texel size, flicker, seams (stability_cascades.h)
+    Cascades,
 };
 
 // "acne", "leak", "tradeoff", "shimmer", "precision", "aliasing", "pcss-thin", "pcss-overlap",
-// "pcss-noise", "pcss-bias", "bleed"
+// "pcss-noise", "pcss-bias", "bleed", "cascades"
 std::string_view sweepName(Sweep sweep);
 std::optional<Sweep> sweepFromName(std::string_view name);
 std::vector<Sweep> allSweeps();
@@ -160,6 +163,11 @@ struct StabilityOptions {
                                             {"evsm_exponents", {"5,5", "20,5", "40,5", "42,42"}},
                                             {"moment_bias", {"3e-5", "3e-4", "3e-3"}},
                                             {"moment_format", {"16f", "32f"}}};
+    // The cascades sweep (stability_cascades.h): the split's lambdas (0 is the uniform split, 1
+    // the log split), the steps of the camera path, and the blend band of its blended seams.
+    std::vector<float> cascadeLambdas{0.0f, 0.25f, 0.5f, 0.75f, 1.0f};
+    int cascadePathSteps = 8;
+    float cascadeBlend = 0.2f;
     // The area truth's per-pixel bound for pcss's sweeps (ground_truth.h: targetBound): looser
     // than the bench's 1/512, as the sweeps count pixels by thresholds (1/2, 0.02, 0.98).
     float pcssTruthBound = 1.0f / 64.0f;
@@ -187,8 +195,9 @@ glm::mat4 shimmerShadowFit(const glm::mat4& fitted, int mapSize, int frame, bool
 Camera cameraSlidByPixels(const Camera& camera, int frameHeight, float pixels);
 
 // --quick: 160x90 frame, 128 map, 1x1 truth sample, 6 elevations, 3 leak biases, 3 camera frames,
-// 3 depth ranges, 2 or 3 points of each pcss sweep, 2 gaps; the methods nearest and pcf-gather
-// N=3, and for bleed vsm N=3 over 4 light-bleeding reductions.
+// 3 depth ranges, 2 or 3 points of each pcss sweep, 2 gaps, 2 cascade lambdas over a path of 4
+// steps; the methods nearest and pcf-gather N=3, and for bleed vsm N=3 over 4 light-bleeding
+// reductions.
 StabilityOptions quickStabilityOptions();
 
 // Why the options cannot run, nullopt when they can: one sentence naming the option list at fault
@@ -239,6 +248,10 @@ float footprintReachTexels(const StabilityMethod& m, float poissonRadius);
 // a receiver, no receiver neighbour, or a jump of more than 32 texels to it).
 std::vector<float> pixelsPerTexel(const std::vector<float>& lightSpace, glm::ivec2 frameSize,
                                   int mapSize);
+// The Jacobian J itself per pixel: its columns the texel-space steps (mapSize texels per uv unit)
+// to the next pixel right and up, where both are measured (as above), nullopt elsewhere.
+std::vector<std::optional<glm::mat2>> texelJacobians(const std::vector<float>& lightSpace,
+                                                     glm::ivec2 frameSize, int mapSize);
 
 // The heat map's colour of one pixels-per-texel value (aliasing_heatmap.png and the viewer's A
 // key): log2 of it from -4 (deep blue: 16 texels per pixel) through white (one texel per pixel)

@@ -9,6 +9,7 @@
 #include "measure/ground_truth.h"
 #include "measure/stability.h"
 #include "measure/stability_bleed.h"
+#include "measure/stability_cascades.h"
 #include "measure/stability_pcss.h"
 #include "scene/presets.h"
 
@@ -34,6 +35,8 @@ StabilityOptions quickStabilityOptions() {
     o.bleedGaps = {0.25f, 1.0f};
     o.bleedMethods = {{PCF_VSM, 3}};
     o.bleedSettings = {{"lbr", {"0", "0.2", "0.3", "0.5"}}};
+    o.cascadeLambdas = {0.5f, 1.0f};
+    o.cascadePathSteps = 4;
     return o;
 }
 
@@ -78,6 +81,13 @@ std::optional<ParamProblem> validateStabilityPairs(const StabilityOptions& o) {
                             ": " + *validateBias(static_cast<int>(b), o.methods.front().method)};
     }
     return std::nullopt;
+}
+
+// The sweeps' own options, in order: pcss's, the cascades', bleed's.
+std::optional<ParamProblem> validateSweepOptions(const StabilityOptions& o) {
+    if (std::optional<ParamProblem> p = validatePcssSweepOptions(o)) return p;
+    if (std::optional<ParamProblem> p = validateCascadeOptions(o)) return p;
+    return validateBleedOptions(o);
 }
 
 }  // namespace
@@ -139,8 +149,7 @@ std::optional<ParamProblem> validateStabilityOptions(const StabilityOptions& o) 
             return plain("aliasing map size " + std::to_string(size) + " is out of range");
         }
     }
-    if (std::optional<ParamProblem> p = validatePcssSweepOptions(o)) return p;
-    return validateBleedOptions(o);
+    return validateSweepOptions(o);
 }
 
 }  // namespace pcf

@@ -392,6 +392,7 @@ void runPcssSweep(Sweep sweep, const StabilityOptions& options, const Scene& sce
         case Sweep::Precision:
         case Sweep::Aliasing:
         case Sweep::Bleed:
+        case Sweep::Cascades:
             throw std::invalid_argument("runPcssSweep: not a pcss sweep");
     }
     rows.insert(rows.end(), sweeper.rows.begin(), sweeper.rows.end());

@@ -157,8 +157,9 @@ std::vector<StabilitySummary> summarizeStability(std::span<const StabilityRow> r
         return nullptr;
     };
     for (const StabilityRow& r : rows) {
-        // pcss's sweeps have their own lines (pcssLines): no row of the method-and-bias table.
-        if (r.method < 0 || r.sweep.starts_with("pcss-")) continue;
+        // pcss's sweeps have their own lines (pcssLines), and the cascades sweep its own CSV
+        // (stability_cascades.h): no row of the method-and-bias table.
+        if (r.method < 0 || r.sweep.starts_with("pcss-") || r.sweep == "cascades") continue;
         StabilitySummary* s = find(r);
         if (s == nullptr) {
             out.push_back({});

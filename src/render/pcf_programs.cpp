@@ -193,7 +193,8 @@ std::string pcfVariantDefines(const PcfVariant& variant) {
            line("PCF_WEIGHTS", variant.weights) + line("PCF_PRECISION", variant.precision) +
            line("PCF_FIXED_POINT", variant.fixedPoint) +
            line("PCF_ROTATE_PER_PIXEL", variant.rotatePerPixel) +
-           line("PCF_PERSPECTIVE", variant.perspective) + line("PCF_MAP_LAYERS", variant.layers);
+           line("PCF_PERSPECTIVE", variant.perspective) + line("PCF_MAP_LAYERS", variant.layers) +
+           line("PCF_CASCADE_BLEND", variant.cascadeBlend);
 }
 
 const PcfProgram& PcfProgramCache::get(const PcfVariant& variant) {

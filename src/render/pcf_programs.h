@@ -28,6 +28,7 @@ std::vector<std::string> pcfSharedFiles(std::vector<std::string> after = {});
 //   PCF_ROTATE_PER_PIXEL        1: poisson's disk turned per lookup, by its texel
 //   (pcfTexelRotation)
 //   PCF_MAP_LAYERS              the map's layers: the length of uPcfMapLayers
+//   PCF_CASCADE_BLEND           1: cascades with a blend band (cascade_blend > 0)
 struct PcfVariant {
     int method = 0;
     int kernel = 3;
@@ -37,10 +38,14 @@ struct PcfVariant {
     int rotatePerPixel = 0;
     int perspective = 0;  // pcss under a spot: depth made linear (a uniform would cost every tap)
     int layers = 1;
+    // Cascades with a blend band (--cascade-blend > 0): the camera pass also filters the next
+    // cascade in the band (scene.frag). A define, since llvmpipe pays for a branch's body on
+    // every fragment even when no fragment takes it.
+    int cascadeBlend = 0;
 
     auto key() const {
         return std::make_tuple(method, kernel, weights, precision, fixedPoint, rotatePerPixel,
-                               perspective, layers);
+                               perspective, layers, cascadeBlend);
     }
     bool operator<(const PcfVariant& o) const { return key() < o.key(); }
 };

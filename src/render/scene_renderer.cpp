@@ -253,8 +253,9 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
     glDisable(GL_BLEND);
 
     PcfParams prm = pcfParams(settings);
-    const PcfProgram& pcfProgram =
-        programsFor(targets, settings.modeId()).get(pcfVariant(prm, settings.rotate, mMap));
+    PcfVariant variant = pcfVariant(prm, settings.rotate, mMap);
+    variant.cascadeBlend = mMap.layers.size() > 1 && settings.cascadeBlend > 0.0f ? 1 : 0;
+    const PcfProgram& pcfProgram = programsFor(targets, settings.modeId()).get(variant);
     GLuint program = pcfProgram.id();
     glUseProgram(program);
     glm::mat4 clip = clipFromWorld();

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "kernel/cascades.h"
+#include "kernel/pcf.h"
 #include "kernel/shading.h"
 
 namespace pcf {
@@ -180,6 +181,59 @@ int cascadeOfPoint(const MapSpec& map, const Camera& camera, glm::vec3 posWs) {
     for (int k = 0; k < count; ++k) cascadeFar[k] = map.layers[k].viewDepth.y;
     return pcfCascadeLayer(pcfViewDepth(posWs, camera.eyeWs, cameraViewDirWs(camera)), cascadeFar,
                            count);
+}
+
+namespace {
+
+// One cascade's visibility of the point, its lookup as scene.frag makes it.
+float cascadeLayerVisibility(const ShadowMap& map, int layer, const ShadowSettings& s,
+                             const PcfParams& prm, glm::vec3 posWs, glm::vec3 normalWs,
+                             float cosTheta, glm::vec2 dzduv) {
+    const PcfMapLayer& fit = map.spec().layers[static_cast<size_t>(layer)];
+    PcfReceiverLookup at =
+        pcfReceiverLookup(fit.shadowClipFromWorld, posWs, normalWs, cosTheta, s.modeId(),
+                          s.constantBias, s.slopeBias, s.slopeMax, s.normalOffset, fit.texelWs);
+    return filterLayerVisibility(map, layer, vec2(at.u, at.v), at.ref, prm, s.kernelBias(dzduv));
+}
+
+}  // namespace
+
+CascadeLookup cascadeVisibilityIn(const ShadowMap& map, int layer, float viewDepth,
+                                  const ShadowSettings& s, const PcfParams& prm, glm::vec3 posWs,
+                                  glm::vec3 normalWs, float cosTheta, glm::vec2 dzduv,
+                                  glm::vec2 nextDzduv) {
+    CascadeLookup out;
+    out.layer = layer;
+    out.viewDepth = viewDepth;
+    out.visibility = cascadeLayerVisibility(map, layer, s, prm, posWs, normalWs, cosTheta, dzduv);
+    out.nextVisibility = out.visibility;
+    out.blended = out.visibility;
+    const PcfMapLayer& fit = map.spec().layers[static_cast<size_t>(layer)];
+    out.weight =
+        pcfCascadeBlendWeight(viewDepth, fit.viewDepth, s.cascadeBlend, layer, map.layers());
+    if (out.weight > 0.0f) {
+        out.next = layer + 1;
+        out.nextVisibility =
+            cascadeLayerVisibility(map, out.next, s, prm, posWs, normalWs, cosTheta, nextDzduv);
+        out.blended = pcfCascadeBlend(out.visibility, out.nextVisibility, out.weight);
+    }
+    return out;
+}
+
+CascadeLookup cascadeVisibilityAt(const ShadowMap& map, const Camera& camera,
+                                  const ShadowSettings& s, const PcfParams& prm, glm::vec3 posWs,
+                                  glm::vec3 normalWs, float cosTheta, glm::vec2 dzduv,
+                                  glm::vec2 nextDzduv) {
+    float viewDepth = pcfViewDepth(posWs, camera.eyeWs, cameraViewDirWs(camera));
+    int layer = cascadeOfPoint(map.spec(), camera, posWs);
+    if (layer >= map.layers()) {  // past the last cascade: lit
+        CascadeLookup lit;
+        lit.layer = layer;
+        lit.viewDepth = viewDepth;
+        return lit;
+    }
+    return cascadeVisibilityIn(map, layer, viewDepth, s, prm, posWs, normalWs, cosTheta, dzduv,
+                               nextDzduv);
 }
 
 std::vector<PcfMapLayer> cascadeLayers(const Scene& scene, const ShadowSettings& s, float aspect) {

@@ -66,6 +66,40 @@ glm::vec3 cameraViewDirWs(const Camera& camera);
 // the point's, or map.layers.size() for a point past the last (lit: no cascade covers it).
 int cascadeOfPoint(const MapSpec& map, const Camera& camera, glm::vec3 posWs);
 
+// A receiver point's visibility in a cascaded map on the CPU, as the camera pass computes it
+// (shaders/scene.frag): the cascade its view depth falls in, that cascade's lookup of the point
+// (shared/pcf_shading.h pcfReceiverLookup, the settings' bias), and in the blend band the next
+// cascade's lookup of the same point and the weight that mixes them (pcfCascadeBlendWeight,
+// pcfCascadeBlend). What a trace of a cascaded frame shows beside the taps.
+struct CascadeLookup {
+    int layer = 0;                // the cascade read; map.layers() when past the last (lit)
+    int next = -1;                // the cascade blended in, -1 outside the blend band
+    float viewDepth = 0.0f;       // the point's view depth (pcfViewDepth), scene units
+    float weight = 0.0f;          // the next cascade's weight, in [0, 1]
+    float visibility = 1.0f;      // the cascade read's own visibility
+    float nextVisibility = 1.0f;  // the next cascade's (its own lookup); = visibility outside
+    float blended = 1.0f;         // the result: pcfCascadeBlend(visibility, nextVisibility, weight)
+};
+
+// The lookup of point posWs (its unit normal facing the camera, cos(theta) to the light), with
+// the receiver plane dzduv for the cascade read and nextDzduv for the next one (receiver-plane
+// bias; light depth per uv unit, each in its own cascade's uv). prm: the settings' parameters
+// (SceneRenderer::pcfParams); `blend` the band (ShadowSettings::cascadeBlend).
+CascadeLookup cascadeVisibilityAt(const ShadowMap& map, const Camera& camera,
+                                  const ShadowSettings& s, const PcfParams& prm, glm::vec3 posWs,
+                                  glm::vec3 normalWs, float cosTheta,
+                                  glm::vec2 dzduv = glm::vec2(0.0f),
+                                  glm::vec2 nextDzduv = glm::vec2(0.0f));
+
+// The same with the cascade and the view depth given instead of found from the camera (the seam
+// probe's two sides of a split, stability_cascades.h): the point looked up in `layer` (< the
+// map's layers), blended with the next by the band's weight at viewDepth.
+CascadeLookup cascadeVisibilityIn(const ShadowMap& map, int layer, float viewDepth,
+                                  const ShadowSettings& s, const PcfParams& prm, glm::vec3 posWs,
+                                  glm::vec3 normalWs, float cosTheta,
+                                  glm::vec2 dzduv = glm::vec2(0.0f),
+                                  glm::vec2 nextDzduv = glm::vec2(0.0f));
+
 // One layer per cascade (shadowMapLayer's fields, plus the view depths it covers), for a map of
 // s.mapSize texels seen by a camera whose frame is `aspect` wide per unit of height.
 std::vector<PcfMapLayer> cascadeLayers(const Scene& scene, const ShadowSettings& s, float aspect);
