@@ -11,6 +11,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "base/input_error.h"
@@ -18,6 +19,7 @@
 #include "charts/step_chart.h"
 #include "kernel/methods.h"
 #include "measure/bench_report.h"
+#include "measure/stability_report.h"
 #include "run_command.h"
 
 namespace pcf {
@@ -207,6 +209,41 @@ TEST_F(ChartFacts, AcneLinesAreReadAsTheSunSets) {
     // These facts belong to the acne chart, not to another view of the same file.
     EXPECT_THROW(checkChartFactKnown(write("s2.csv", acneCsv()) + "#leak",
                                      "nearest none: over the onset at every elevation"),
+                 std::invalid_argument);
+}
+
+// A bleed sweep's rows (stability.csv): vsm 5x5 over lbr, its leak (99th percentile) under 1e-3
+// from 0.3; evsm2 5x5 over lbr, never.
+std::string bleedCsv() {
+    std::vector<StabilityRow> rows;
+    const std::tuple<const char*, int, const char*, double> points[] = {
+        {"vsm", PCF_VSM, "0", 0.25},     {"vsm", PCF_VSM, "0.2", 0.01},
+        {"vsm", PCF_VSM, "0.3", 0.0},    {"vsm", PCF_VSM, "0.5", 0.0},
+        {"evsm2", PCF_EVSM2, "0", 0.02}, {"evsm2", PCF_EVSM2, "0.5", 0.002}};
+    for (const auto& [name, method, lbr, leak] : points) {
+        for (const char* metric : {"leak_mean", "leak_p99", "penumbra_error"}) {
+            rows.push_back({"bleed", method, 5, "constant", "gap", 1.0,
+                            std::string("lbr=") + lbr + ":" + metric, leak});
+        }
+    }
+    return stabilityCsv(rows);
+}
+
+TEST_F(ChartFacts, BleedLinesNameTheFirstValueUnderTheLeakTarget) {
+    std::string chart = write("stability.csv", bleedCsv()) + "#bleed";
+    auto holds = [&](const std::string& fact) { return chartFactHolds(chart, fact).holds; };
+    EXPECT_TRUE(holds("vsm 5x5: leak falls under 0.001 from lbr 0.3"));
+    EXPECT_FALSE(holds("vsm 5x5: leak falls under 0.001 from lbr 0.2"));
+    EXPECT_FALSE(holds("vsm 5x5: leak falls under 0.001 from lbr 0.5"));
+    EXPECT_FALSE(holds("evsm2 5x5: leak falls under 0.001 from lbr 0.5"));
+    EXPECT_EQ(chartFactHolds(chart, "vsm 5x5: leak falls under 0.001 from lbr 0.2").why,
+              "first under it at 0.3 (leak 0)");
+    // A line or setting the chart does not have is refused with the lines it has.
+    EXPECT_THROW(holds("msm 5x5: leak falls under 0.001 from lbr 0"), std::invalid_argument);
+    EXPECT_THROW(holds("vsm 5x5: leak falls under 0.001 from moment_bias 3e-5"),
+                 std::invalid_argument);
+    EXPECT_THROW(checkChartFactKnown(write("s2.csv", bleedCsv()) + "#acne",
+                                     "vsm 5x5: leak falls under 0.001 from lbr 0.3"),
                  std::invalid_argument);
 }
 

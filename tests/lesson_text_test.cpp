@@ -7,6 +7,7 @@
 #include <string>
 
 #include "kernel/methods.h"
+#include "kernel/moments.h"
 #include "kernel/trace.h"
 #include "lesson/lesson_pick.h"
 
@@ -219,9 +220,34 @@ TEST(LessonText, CascadesAreTheLayerRead) {
     EXPECT_EQ(fill("{cascade.texels_per_pixel_max}", tr), "n/a");
 }
 
+// Two occluders side by side, 0.2 | 0.5 over a receiver at 0.6 (issue 33's example): a 3x3 box
+// of the moments read halfway between the columns holds each depth half: mean 0.35, E[z^2]
+// (0.04 + 0.25) / 2 = 0.145, variance 0.15^2, Chebyshev's bound 0.0225 / (0.0225 + 0.25^2).
+Trace twoOccluderVsmTrace() {
+    ShadowMap depth(16, 16);
+    for (int j = 0; j < 16; ++j) {
+        for (int i = 0; i < 16; ++i) depth.setDepth(i, j, i < 8 ? 0.2f : 0.5f);
+    }
+    PcfParams prm = makeParams(PCF_VSM, 3);
+    return traceLookup(mapForMethod(depth, prm), vec2(0.5f), 0.6f, 0.6f, prm);
+}
+
+TEST(LessonText, MomentNamesComeFromTheMomentMethodsTrace) {
+    Trace tr = twoOccluderVsmTrace();
+    EXPECT_EQ(fill("{moment[0]} {moment[1]} {mean} {variance} {receiver} {bound} {visibility}", tr),
+              "0.35 0.145 0.35 0.0225 0.6 0.2647 0.2647");
+    EXPECT_EQ(fill("{lbr} {neg_bound}", tr), "0 1");
+    // vsm's map holds two moments; a depth-comparing method has none.
+    EXPECT_EQ(fill("{moment[2]}", tr), "n/a");
+    EXPECT_EQ(fill("{mean} {moment[0]}", exampleTrace(PCF_NAIVE)), "n/a n/a");
+    EXPECT_TRUE(checkPlaceholders("{moment[4]}"));
+    EXPECT_TRUE(checkPlaceholders("{moment[0].x}"));
+}
+
 TEST(LessonText, EveryListedNameFills) {
-    Trace tr = exampleTrace(PCF_NAIVE);
-    makeCascaded(tr);  // the cascade's names fill for a cascaded map only
+    Trace naive = exampleTrace(PCF_NAIVE);
+    makeCascaded(naive);  // the cascade's names fill for a cascaded map only
+    Trace vsm = twoOccluderVsmTrace();
     for (std::string name : placeholderNames()) {
         for (std::string_view from : {"[K]", "[I,J]"}) {
             size_t at = name.find(from);
@@ -230,7 +256,10 @@ TEST(LessonText, EveryListedNameFills) {
         }
         std::string text = "{" + name + "}";
         EXPECT_FALSE(checkPlaceholders(text)) << name;
-        std::string filled = fill(text, tr);
+        // The moment methods' names fill from a moment method's trace.
+        const bool moments =
+            name.starts_with("moment[") || (fill(text, naive) == "n/a" && fill(text, vsm) != "n/a");
+        std::string filled = fill(text, moments ? vsm : naive);
         EXPECT_FALSE(filled.empty()) << name;
         EXPECT_EQ(filled.find('{'), std::string::npos) << name;
         EXPECT_NE(filled, "n/a") << name;

@@ -140,6 +140,7 @@ TEST_F(StabilityBleed, PcfGatherLeaksNothingIntoTheCleanUmbraAtEveryGap) {
         ASSERT_EQ(l.points.size(), 1u);
         EXPECT_EQ(l.points[0].y, 0.0);
     }
+    EXPECT_EQ(spec.panels[0].title, "at the run's settings");
     EXPECT_EQ(spec.panels[0].lines[0].label, "pcf-gather 3x3");
 }
 
@@ -181,18 +182,24 @@ TEST_F(StabilityBleed, VsmLeaksAtTheDefaultGapUntilTheReductionTheChartNames) {
     ASSERT_EQ(spec.panels.size(), 1u);
     const ChartLine* line = nullptr;
     for (const ChartLine& l : spec.panels[0].lines) {
-        if (l.label == "vsm 3x3, lbr") line = &l;
+        if (l.label == "vsm 3x3") line = &l;
     }
     ASSERT_TRUE(line);
     EXPECT_EQ(line->points.size(), o.bleedSettings.front().values.size());
     EXPECT_DOUBLE_EQ(line->points.front().y, v("lbr=0:leak_p99"));
     EXPECT_NEAR(line->points.front().x, -v("lbr=0:penumbra_error"), 5e-4);
-    bool named = false;
-    for (const std::string& note : spec.notes) {
-        named = named || note.starts_with("  leak < 0.001 from " + cut + ", darkening");
-    }
-    EXPECT_TRUE(named) << "the chart names lbr " << cut;
-    EXPECT_EQ(spec.notes.front(), "vsm 3x3: lbr 0 to 0.5");
+    ASSERT_EQ(spec.notes.size(), 1u);
+    EXPECT_TRUE(
+        spec.notes.front().starts_with("vsm 3x3: leak < 0.001 from lbr " + cut + ", darkening "))
+        << "the chart names lbr " << cut << ": " << spec.notes.front();
+    EXPECT_NE(spec.subtitle.find("swept: lbr 0 to 0.5 (5 values)"), std::string::npos)
+        << spec.subtitle;
+    // stability.md's paragraph names the same reduction.
+    EXPECT_NE(bleedMarkdown(rows).find("- vsm N=3, lbr 0 to 0.5: leak "), std::string::npos)
+        << bleedMarkdown(rows);
+    EXPECT_NE(bleedMarkdown(rows).find("under 0.001 from " + cut + ", darkening"),
+              std::string::npos)
+        << bleedMarkdown(rows);
     // Whole and apart at --quick's chart size and the default one: no text on another (the
     // panel's title ran under the legend at 640x360).
     // The long subtitle a run writes, and the stand-alone type floor `stability` draws with.
@@ -240,6 +247,100 @@ TEST(StabilityBleedRows, ExponentsKeepTheirCommaOutOfStabilityCsv) {
     std::string csv = bleedCsv(back, ShadowSettings{});
     EXPECT_NE(csv.find("\nbleed,evsm2,5,1,0,\"20,5\",,32f,0.5,0.5,0.5\n"), std::string::npos)
         << csv;
+}
+
+// Rows of a sweep over every setting, as runBleedSweep writes them: per method and swept value,
+// the three measures (leak falling and darkening growing along each setting's values).
+std::vector<StabilityRow> sweptRows() {
+    struct Point {
+        int method;
+        const char* setting;  // "" at the run's settings
+        double leak, error;
+    };
+    const Point points[] = {{PCF_GATHER, "", 0.0, -0.01},
+                            {PCF_VSM, "lbr=0:", 0.3, -0.004},
+                            {PCF_VSM, "lbr=0.2:", 0.01, -0.03},
+                            {PCF_VSM, "lbr=0.3:", 0.0005, -0.05},
+                            {PCF_VSM, "moment_format=16f:", 0.35, -0.004},
+                            {PCF_VSM, "moment_format=32f:", 0.3, -0.004},
+                            {PCF_EVSM2, "lbr=0:", 0.02, -0.01},
+                            {PCF_EVSM2, "lbr=0.3:", 0.002, -0.06},
+                            {PCF_EVSM2, "evsm_exponents=5;5:", 0.1, -0.002},
+                            {PCF_EVSM2, "evsm_exponents=50;50:", 0.0001, -0.01},
+                            {PCF_EVSM2, "moment_format=16f:", 0.2, -0.003},
+                            {PCF_MSM, "moment_bias=3e-5:", 0.002, -0.01},
+                            {PCF_MSM, "moment_bias=3e-3:", 0.0002, -0.02}};
+    std::vector<StabilityRow> rows;
+    for (const Point& p : points) {
+        const int kernel = p.method == PCF_GATHER ? 3 : 5;
+        const std::pair<const char*, double> measures[] = {
+            {"leak_mean", p.leak / 2}, {"leak_p99", p.leak}, {"penumbra_error", p.error}};
+        for (auto [metric, y] : measures) {
+            rows.push_back({"bleed", p.method, kernel, "constant", "gap", 1.0,
+                            std::string(p.setting) + metric, y});
+        }
+    }
+    return rows;
+}
+
+// The chart shows the trade-off over every setting swept, not the first alone: a panel per
+// setting in the sweep's order, in each a line per method it was swept for through all its
+// values and the depth-comparing method's dot; the subtitle lists the settings; the notes name
+// the first reduction that brings each line of the first panel under 1e-3.
+TEST(StabilityBleedChart, APanelPerSettingSweptWithEveryValue) {
+    std::vector<StabilityRow> rows = sweptRows();
+    LineChartSpec spec = bleedChartSpec(rows, "source");
+    ASSERT_EQ(spec.panels.size(), 4u);
+    const char* titles[] = {"over lbr", "over moment_format", "over evsm_exponents",
+                            "over moment_bias"};
+    // (label, points) per panel, in order.
+    const std::vector<std::vector<std::pair<std::string, size_t>>> lines = {
+        {{"pcf-gather 3x3", 1}, {"vsm 5x5", 3}, {"evsm2 5x5", 2}},
+        {{"pcf-gather 3x3", 1}, {"vsm 5x5", 2}, {"evsm2 5x5", 1}},
+        {{"pcf-gather 3x3", 1}, {"evsm2 5x5", 2}},
+        {{"pcf-gather 3x3", 1}, {"msm 5x5", 2}}};
+    for (size_t k = 0; k < 4; ++k) {
+        SCOPED_TRACE(titles[k]);
+        EXPECT_EQ(spec.panels[k].title, titles[k]);
+        ASSERT_EQ(spec.panels[k].lines.size(), lines[k].size());
+        for (size_t j = 0; j < lines[k].size(); ++j) {
+            EXPECT_EQ(spec.panels[k].lines[j].label, lines[k][j].first);
+            EXPECT_EQ(spec.panels[k].lines[j].points.size(), lines[k][j].second);
+        }
+    }
+    // vsm over lbr: leak against darkening, point by point.
+    const ChartLine& vsm = spec.panels[0].lines[1];
+    EXPECT_EQ(vsm.points[2], glm::dvec2(0.05, 0.0005));
+    EXPECT_EQ(vsm.points[0], glm::dvec2(0.004, 0.3));
+    EXPECT_EQ(spec.subtitle,
+              "source\nswept: lbr 0 to 0.3 (3 values); moment_format 16f, 32f; evsm_exponents "
+              "5,5, 50,50; moment_bias 3e-5, 3e-3");
+    ASSERT_EQ(spec.notes.size(), 2u);
+    EXPECT_EQ(spec.notes[0], "vsm 5x5: leak < 0.001 from lbr 0.3, darkening 0.05");
+    EXPECT_EQ(spec.notes[1], "evsm2 5x5: leak >= 0.001 at every lbr");
+
+    std::string md = bleedMarkdown(rows);
+    EXPECT_NE(md.find("- vsm N=5, lbr 0 to 0.3: leak 0.3 (darkening 0.004) at 0; under 0.001 "
+                      "from 0.3, darkening 0.05 there\n"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("- evsm2 N=5, lbr 0 to 0.3: leak 0.02 (darkening 0.01) at 0; never under "
+                      "0.001\n"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("- pcf-gather N=3: leak 0 (darkening 0.01)\n"), std::string::npos) << md;
+}
+
+// stability_bleed.csv's exponents column says what the warps used: the asked 50,50 clamped to
+// 42 in 32F, the run's 40,5 clamped to 5.54 on the 16F line; where exponents do not act, empty.
+TEST(StabilityBleedRows, TheExponentsColumnHoldsTheExponentsUsed) {
+    std::string csv = bleedCsv(sweptRows(), ShadowSettings{});
+    EXPECT_NE(csv.find("\nbleed,evsm2,5,1,0,\"42,42\",,32f,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\nbleed,evsm2,5,1,0,\"5,5\",,32f,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\nbleed,evsm2,5,1,0,\"5.54,5\",,16f,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\nbleed,evsm2,5,1,0.3,\"40,5\",,32f,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\nbleed,vsm,5,1,0,,,16f,"), std::string::npos) << csv;
+    EXPECT_EQ(csv.find("50,50"), std::string::npos) << csv;
 }
 
 }  // namespace

@@ -206,6 +206,8 @@ BenchOptions parseSweep(const BenchCommandOptions& o) {
     options.base = base;
     if (!o.quick || o.given("--size")) options.frameSize = base.frameSize;
     if (o.given("--methods")) options.methods = parseMethods(o.methods);
+    // A named culling holds for every method; else each method's (bench.h: cullByMethod).
+    options.cullByMethod = !o.given("--cull");
     if (o.given("--kernels")) options.kernels = parseIntList("--kernels", o.kernels);
     if (o.given("--map-sizes")) options.mapSizes = parseIntList("--map-sizes", o.mapSizes);
     if (o.given("--weights")) options.weights = parseWeightsList(o.render.shadow.name("weights"));
@@ -559,7 +561,8 @@ Command addBenchCommand(CLI::App& app) {
             "pcf-naive, pcf-gather: weightings of the N x N lookups, comma-separated: box, "
             "binomial, gaussian (default box; each given is a run)");
     sub->get_option("--cull")->description(
-        "faces culled in the shadow pass: front (the default here), back, none");
+        "faces culled in the shadow pass, for every method: front, back, none (default: front, "
+        "and back for the moment methods, whose bound wants the casters' lit faces)");
     addBenchSweepOptions(sub, *o);
     sub->add_option("--chart-size", o->chartSize,
                     sizeHelp("size of the two charts", CHART_SIZE_RANGE,

@@ -11,11 +11,13 @@
 #include "base/input_file.h"
 #include "charts/chart_axes.h"
 #include "charts/speed_chart.h"
+#include "charts/stability_bleed_figures.h"
 #include "charts/stability_chart.h"
 #include "charts/stability_figures.h"
 #include "charts/step_chart.h"
 #include "measure/advise_read.h"
 #include "measure/bench_report.h"
+#include "measure/stability_bleed.h"
 #include "measure/stability_report.h"
 
 namespace pcf {
@@ -380,6 +382,39 @@ ChartFactAnswer costsMore(const ChartData& c, const std::string& pair) {
 // A fact's words around its one argument: PREFIX ARG SUFFIX; `view` the chart it applies to
 // ("" any bench chart, "*" any chart, ADVISE_FACTS an advise chart, else a stability chart's
 // name).
+// The bleed chart's line `label` ("vsm 5x5") over setting `key` at the chart's gap, or
+// std::invalid_argument naming the lines.
+BleedSeries bleedLineOf(const ChartData& c, const std::string& label, const std::string& key) {
+    std::vector<StabilityRow> rows = parseStabilityCsv(readInputFile(c.path), c.path);
+    std::vector<BleedPoint> points = bleedPoints(rows);
+    std::string names;
+    for (const BleedSeries& s : bleedSeries(points, bleedChartGap(rows))) {
+        std::string name = bleedLineLabel(s.method, s.kernel);
+        if (name == label && s.key == key) return s;
+        if (!s.key.empty()) names += (names.empty() ? "" : ", ") + name + " over " + s.key;
+    }
+    throw std::invalid_argument(
+        "'" + label + "' over '" + key +
+        "' is no line of the bleed chart (lines: " + (names.empty() ? "none" : names) + ")");
+}
+
+// "vsm 5x5: leak falls under 0.001 from lbr 0.3": the line's first value with its leak's 99th
+// percentile under BLEED_LEAK_TARGET is that value.
+ChartFactAnswer bleedCleanFrom(const ChartData& c, const std::string& arg) {
+    const std::string infix = ": leak falls under " + chartTickText(BLEED_LEAK_TARGET) + " from ";
+    size_t at = arg.find(infix);
+    std::string setting = arg.substr(at + infix.size());
+    size_t space = setting.find(' ');
+    if (space == std::string::npos) {
+        throw std::invalid_argument("'" + setting + "' is no setting and value (lbr 0.3)");
+    }
+    BleedSeries s = bleedLineOf(c, arg.substr(0, at), setting.substr(0, space));
+    const BleedPoint* clean = firstCleanPoint(s);
+    if (!clean) return {false, "its leak stays at or over the target at every value"};
+    return {clean->value == setting.substr(space + 1),
+            "first under it at " + clean->value + " (leak " + chartTickText(clean->leakP99) + ")"};
+}
+
 struct FactEntry {
     std::string_view prefix;
     std::string_view suffix;
@@ -401,6 +436,7 @@ constexpr FactEntry FACTS[] = {
     {"", ": over the onset at every elevation", "acne", acneEverywhere},
     {"", " degrees", "acne", acneCrossing},
     {"", ": rises over the onset and falls back", "acne", acneHump},
+    {"", "", "bleed", bleedCleanFrom, ": leak falls under 0.001 from "},
     {"the choice is ", "", ADVISE_FACTS, choiceIs},
     {"the runner-up is ", "", ADVISE_FACTS, runnerUpIs},
     {"", " settings meet the budget", ADVISE_FACTS, feasibleCount},

@@ -29,6 +29,9 @@
 //                                             never reaches it is below every E
 //   L: rises over the onset and falls back    #acne: L starts under the onset at the highest sun,
 //                                             reaches it, and ends under it at the lowest
+//   L: leak falls under 0.001 from K V        #bleed: at the chart's gap, the first value of
+//                                             setting K on line L ("vsm 5x5") whose leak (99th
+//                                             percentile) is under 0.001 is V ("lbr 0.3")
 //
 //   the choice is X                           an advise chart (step_chart.h: DIR/advise.csv):
 //   the runner-up is X                        the setting advise chose (the cheapest other one

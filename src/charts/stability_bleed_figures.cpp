@@ -1,9 +1,9 @@
 // The bleed sweep's chart (stability_bleed_figures.h): leak against penumbra darkening.
 #include "charts/stability_bleed_figures.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -18,18 +18,40 @@ namespace pcf {
 
 namespace {
 
-std::string methodLabel(int method, int kernel) {
-    std::string label(methodInfo(method).name);
-    if (kernel > 0) label += " " + std::to_string(kernel) + "x" + std::to_string(kernel);
-    return label;
+std::string methodLabel(int method, int kernel) { return bleedLineLabel(method, kernel); }
+
+// "lbr 0 to 0.5 (6 values), moment_format 16f, 32f": each setting swept at `gap`, the values
+// as the command line writes them.
+std::string bleedSweptSettings(std::span<const BleedSeries> series) {
+    std::string out;
+    for (const std::string& key : bleedKeys(series)) {
+        std::vector<std::string> values;
+        for (const BleedSeries& s : series) {
+            if (s.key != key) continue;
+            for (const BleedPoint& p : s.points) {
+                if (std::find(values.begin(), values.end(), p.value) == values.end()) {
+                    values.push_back(p.value);
+                }
+            }
+        }
+        if (!out.empty()) out += "; ";
+        out += key + " ";
+        if (values.size() <= 2) {
+            out += values.front() + (values.size() == 2 ? ", " + values.back() : "");
+        } else {
+            out += values.front() + " to " + values.back() + " (" + std::to_string(values.size()) +
+                   " values)";
+        }
+    }
+    return out.empty() ? "no setting swept" : "swept: " + out;
 }
 
-// "stacked-cards, gap G; frame, map; bias, cull" over the renderer's line; `source` alone
-// without a setup.
-std::string bleedSubtitle(std::span<const StabilityRow> rows, double gap,
-                          const std::string& source) {
+// "stacked-cards, gap G; frame, map; bias, cull", the settings swept, over the renderer's line;
+// `source` alone without a setup.
+std::string bleedSubtitle(std::span<const StabilityRow> rows, std::span<const BleedSeries> series,
+                          double gap, const std::string& source) {
     std::optional<StabilitySetup> setup = stabilitySetupOf(rows);
-    if (!setup) return source;
+    if (!setup) return source + "\n" + bleedSweptSettings(series);
     const StabilitySetup& s = *setup;
     std::string bias;
     for (const StabilityRow& r : rows) {
@@ -38,18 +60,37 @@ std::string bleedSubtitle(std::span<const StabilityRow> rows, double gap,
     return std::string(BLEED_PRESET) + ", gap " + chartTickText(gap) + " between the cards, " +
            "1 degree sun; " + std::to_string(s.frameSize.x) + "x" + std::to_string(s.frameSize.y) +
            " frame, map " + std::to_string(s.mapSize) + "^2; bias mode " + bias + ", " +
-           s.settings + "\n" + chartRendererLine(s.glRenderer);
+           s.settings + "\n" + bleedSweptSettings(series) + "\n" + chartRendererLine(s.glRenderer);
+}
+
+ChartLine bleedChartLine(const BleedSeries& s) {
+    ChartLine l{methodLabel(s.method, s.kernel), methodInfo(s.method).chartColour, false, {}};
+    for (const BleedPoint& p : s.points) {
+        // x to a thousandth: the chart's x ticks stand at the points' own values, and
+        // darkening read closer than that says nothing (the CSV keeps every digit).
+        l.points.emplace_back(std::round(-p.penumbraError * 1000.0) / 1000.0, p.leakP99);
+    }
+    return l;
+}
+
+// "vsm 5x5: leak < 0.001 from lbr 0.3, darkening 0.052" (or "leak >= 0.001 at every lbr").
+std::string bleedCleanNote(const BleedSeries& s) {
+    std::string name = methodLabel(s.method, s.kernel);
+    std::string target = chartTickText(BLEED_LEAK_TARGET);
+    const BleedPoint* clean = firstCleanPoint(s);
+    if (!clean) return name + ": leak >= " + target + " at every " + s.key;
+    char darkening[32];
+    std::snprintf(darkening, sizeof darkening, "%.2g", -clean->penumbraError);
+    return name + ": leak < " + target + " from " + s.key + " " + clean->value + ", darkening " +
+           darkening;
 }
 
 }  // namespace
 
-double bleedChartGap(std::span<const StabilityRow> rows) {
-    const double preferred = presetParams(BLEED_PRESET).front().defaultValue;
-    double best = 0.0;
-    for (const BleedPoint& p : bleedPoints(rows)) {
-        if (best == 0.0 || std::abs(p.gap - preferred) < std::abs(best - preferred)) best = p.gap;
-    }
-    return best;
+std::string bleedLineLabel(int method, int kernel) {
+    std::string label(methodInfo(method).name);
+    if (kernel > 0) label += " " + std::to_string(kernel) + "x" + std::to_string(kernel);
+    return label;
 }
 
 LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
@@ -59,48 +100,27 @@ LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::stri
     std::vector<BleedPoint> points = bleedPoints(rows);
     if (points.empty()) return spec;
     const double gap = bleedChartGap(rows);
+    std::vector<BleedSeries> series = bleedSeries(points, gap);
     spec.title = "Light bleeding: leak in the lower card's umbra against penumbra darkening";
-    spec.subtitle = bleedSubtitle(rows, gap, subtitle);
+    spec.subtitle = bleedSubtitle(rows, series, gap, subtitle);
     spec.xLabel = "penumbra darkening: mean of truth - v over the area truth's penumbra";
     spec.yLabel = "leak: 99th percentile of v over the lower card's clean umbra";
     spec.logY = true;
     spec.yFloor = 1e-4;
-    ChartPanel panel{"a line per method over its first setting swept", {}};
-    // A line per method over the first setting swept for it (the sweep's order: the
-    // light-bleeding reduction first; the others are in stability_bleed.csv), in the rows' order;
-    // a method measured at the run's settings alone, a dot.
-    std::vector<std::pair<std::string, std::vector<const BleedPoint*>>> lines;
-    std::map<std::pair<int, int>, std::string> firstKey;
-    for (const BleedPoint& p : points) {
-        if (p.gap != gap) continue;
-        if (firstKey.try_emplace({p.method, p.kernel}, p.key).first->second != p.key) continue;
-        std::string label = methodLabel(p.method, p.kernel) + (p.key.empty() ? "" : ", " + p.key);
-        if (lines.empty() || lines.back().first != label) lines.push_back({label, {}});
-        lines.back().second.push_back(&p);
-    }
-    for (const auto& [label, line] : lines) {
-        ChartLine l{label, methodInfo(line.front()->method).chartColour, false, {}};
-        const BleedPoint* under = nullptr;
-        for (const BleedPoint* p : line) {
-            // x to a thousandth: the chart's x ticks stand at the points' own values, and
-            // darkening read closer than that says nothing (the CSV keeps every digit).
-            l.points.emplace_back(std::round(-p->penumbraError * 1000.0) / 1000.0, p->leakP99);
-            if (!under && p->leakP99 < BLEED_LEAK_TARGET) under = p;
+    std::vector<std::string> keys = bleedKeys(series);
+    // A panel per setting swept; the methods no setting acts for, dots in each.
+    if (keys.empty()) keys.push_back("");
+    for (const std::string& key : keys) {
+        ChartPanel panel{key.empty() ? "at the run's settings" : "over " + key, {}};
+        for (const BleedSeries& s : series) {
+            if (s.key.empty() || s.key == key) panel.lines.push_back(bleedChartLine(s));
         }
-        panel.lines.push_back(std::move(l));
-        const BleedPoint& first = *line.front();
-        if (first.key.empty()) continue;
-        // Short lines: the notes stand under the legend, beside the plot.
-        spec.notes.push_back(methodLabel(first.method, first.kernel) + ": " + first.key + " " +
-                             first.value + " to " + line.back()->value);
-        if (under) {
-            char darkening[32];
-            std::snprintf(darkening, sizeof darkening, "%.2g", -under->penumbraError);
-            spec.notes.push_back("  leak < " + chartTickText(BLEED_LEAK_TARGET) + " from " +
-                                 under->value + ", darkening " + darkening);
-        }
+        spec.panels.push_back(std::move(panel));
     }
-    spec.panels.push_back(std::move(panel));
+    // Short lines: the notes stand under the legend, beside the plots.
+    for (const BleedSeries& s : series) {
+        if (!s.key.empty() && s.key == keys.front()) spec.notes.push_back(bleedCleanNote(s));
+    }
     return spec;
 }
 

@@ -1,11 +1,14 @@
 // stability_bleed_figures.h: the bleed sweep's chart (stability_bleed.h), listed in
-// stability_figures.h's sweepCharts: at one gap (the stacked-cards preset's default when the
-// sweep ran it, else the nearest it ran), each method's leak in the lower card's clean umbra
-// (99th percentile, log scale) against how much it darkens the truth's penumbra (the mean of
-// truth - v there): a dot per method measured at the run's settings, and a line per method
-// through the values of the first setting swept for it (the light-bleeding reduction where it
-// acts: leak falls, darkening grows); the notes name, per line, its values, the first whose
-// leak is under BLEED_LEAK_TARGET and the darkening it costs.
+// stability_figures.h's sweepCharts: at one gap (stability_bleed.h: bleedChartGap), each
+// method's leak in the lower card's clean umbra (99th percentile, log scale) against how much it
+// darkens the truth's penumbra (the mean of truth - v there). A panel per setting swept, in the
+// sweep's order (lbr, evsm_exponents, moment_bias, moment_format by default): in it a line per
+// method the setting acts for, through the setting's values (the trade-off: lbr lowers the leak
+// and darkens the penumbra), and a dot per method measured at the run's settings alone (those
+// that compare depths), the same dots in every panel. The subtitle lists the settings swept and
+// their values; the notes name, for each line of the first panel (the light-bleeding reduction
+// in the default sweep), the first value whose leak is under BLEED_LEAK_TARGET and the darkening
+// it costs.
 #pragma once
 
 #include <span>
@@ -13,17 +16,16 @@
 
 #include "charts/stability_chart.h"
 #include "measure/stability.h"
+#include "measure/stability_bleed.h"
 
 namespace pcf {
 
-constexpr double BLEED_LEAK_TARGET = 1e-3;
+// A method's name on the chart: "vsm 5x5", "nearest" (kernel 0).
+std::string bleedLineLabel(int method, int kernel);
 
 // Empty of panels when the rows hold no bleed point. `subtitle`: the source line, used when the
 // rows carry no setup.
 LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
                              float minFontPx = 8.0f);
-
-// The gap the chart shows (0 when the rows hold no bleed point).
-double bleedChartGap(std::span<const StabilityRow> rows);
 
 }  // namespace pcf

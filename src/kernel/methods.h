@@ -96,6 +96,14 @@ struct MethodInfo {
     int warps = 0;
     // msm: reconstructs a distribution of depths from the moments (its points and weights).
     bool reconstructs = false;
+    // Wants the casters' faces toward the light in its map (back faces culled in the shadow
+    // pass): a bound from the footprint's moments is tight only where the occluders stand well
+    // in front of the receiver, and back faces lie on the receiver where a caster rests on it
+    // (box-on-plane: the box's bottom on the ground, so a penumbra mixes depths at the ground's
+    // and leaks). bench, which culls front faces for the depth-comparing methods (the map's back
+    // faces keep acne off the lit faces), culls back faces for such a method unless --cull is
+    // given; render culls back faces by default for every method.
+    bool wantsLitFacesInMap = false;
 
     Method method() const { return static_cast<Method>(id); }
 };

@@ -246,16 +246,64 @@ const std::vector<Simple>& simpleNames() {
     return names;
 }
 
+// The moment methods' estimate (trace.h: Trace::moments), as the kernel computed it; missing
+// for a method that compares depths.
+Getter momentField(float PcfMomentEstimate::*field) {
+    return [field](const Trace& t, const StepContext&) {
+        if (!readsMoments(t.params.method)) return Value{};
+        return number(t.moments.*field);
+    };
+}
+
+const std::vector<Simple>& momentNames() {
+    static const std::vector<Simple> names = {
+        {"mean", momentField(&PcfMomentEstimate::mean)},
+        {"variance", momentField(&PcfMomentEstimate::variance)},
+        {"receiver", momentField(&PcfMomentEstimate::receiver)},
+        {"bound", momentField(&PcfMomentEstimate::bound)},
+        {"neg_bound", momentField(&PcfMomentEstimate::negBound)},
+        {"lbr",
+         [](const Trace& t, const StepContext&) {
+             return readsMoments(t.params.method) ? number(t.params.lbr) : Value{};
+         }},
+    };
+    return names;
+}
+
+// Every simple name: the lookup's, then the moment methods'.
+const std::vector<Simple>& allSimpleNames() {
+    static const std::vector<Simple> names = [] {
+        std::vector<Simple> all = simpleNames();
+        all.insert(all.end(), momentNames().begin(), momentNames().end());
+        return all;
+    }();
+    return names;
+}
+
+// How many moments the method's map holds per texel (2 or 4; 0: it reads depths).
+int momentCount(int method) {
+    switch (methodInfo(method).mapPass) {
+        case MapPass::Depth:
+            return 0;
+        case MapPass::Moments2:
+            return 2;
+        case MapPass::Moments4:
+            return 4;
+    }
+    return 0;
+}
+
 constexpr std::string_view TAP_FIELDS[] = {"i",   "j",      "depth", "ref",          "margin",
                                            "lit", "weight", "shift", "lookup_margin"};
 constexpr std::string_view FETCH_FIELDS[] = {"value", "weight", "u", "v"};
 constexpr std::string_view PART_FIELDS[] = {"visibility"};
+constexpr int MAX_MOMENTS = 4;  // moment[K], K 0..3
 
 // A placeholder's name, taken apart: a simple name, or an indexed one (tap[K].field,
-// fetch[K].field, weight[I,J]).
+// fetch[K].field, weight[I,J], moment[K]).
 struct Name {
     const Simple* simple = nullptr;
-    std::string_view family;  // "tap", "fetch", "part" or "weight" for indexed names
+    std::string_view family;  // "tap", "fetch", "part", "weight" or "moment" for indexed names
     std::string_view field;   // tap / fetch field
     int index = 0;            // K, or I for weight
     int index2 = 0;           // J for weight
@@ -271,7 +319,7 @@ std::optional<int> parseIndex(std::string_view s) {
 }
 
 std::optional<Name> parseName(std::string_view s) {
-    for (const Simple& simple : simpleNames()) {
+    for (const Simple& simple : allSimpleNames()) {
         if (simple.name == s) return Name{&simple, {}, {}, 0, 0};
     }
     size_t open = s.find('[');
@@ -292,6 +340,12 @@ std::optional<Name> parseName(std::string_view s) {
         if (!i || !j) return std::nullopt;
         name.index = *i;
         name.index2 = *j;
+        return name;
+    }
+    if (family == "moment") {
+        std::optional<int> k = parseIndex(inside);
+        if (!k || *k >= MAX_MOMENTS || !rest.empty()) return std::nullopt;
+        name.index = *k;
         return name;
     }
     if (family != "tap" && family != "fetch" && family != "part") return std::nullopt;
@@ -315,6 +369,11 @@ Value valueOf(const Name& name, const Trace& tr, const StepContext& ctx) {
     if (name.simple) return name.simple->get(tr, ctx);
     if (name.family == "weight") {
         return number(tr.weights.at(tr.weights.origin + ivec2(name.index, name.index2)));
+    }
+    if (name.family == "moment") {
+        // The filtered moments read at the lookup (msm: after the moment bias).
+        if (name.index >= momentCount(tr.params.method)) return {};
+        return number(tr.moments.moments[name.index]);
     }
     if (name.family == "tap") {
         if (name.index >= static_cast<int>(tr.taps.size())) return {};
@@ -377,7 +436,7 @@ size_t editDistance(std::string_view a, std::string_view b) {
 std::string nearestNameHint(std::string_view name) {
     std::string_view best;
     size_t bestDistance = 3;
-    for (const Simple& s : simpleNames()) {
+    for (const Simple& s : allSimpleNames()) {
         size_t d = editDistance(name, s.name);
         if (d < bestDistance) best = s.name, bestDistance = d;
     }
@@ -491,11 +550,12 @@ std::optional<PlaceholderProblem> scan(std::string_view text, OnLiteral onLitera
 
 std::vector<std::string> placeholderNames() {
     std::vector<std::string> names;
-    for (const Simple& s : simpleNames()) names.emplace_back(s.name);
+    for (const Simple& s : allSimpleNames()) names.emplace_back(s.name);
     for (std::string_view f : TAP_FIELDS) names.push_back("tap[K]." + std::string(f));
     for (std::string_view f : FETCH_FIELDS) names.push_back("fetch[K]." + std::string(f));
     for (std::string_view f : PART_FIELDS) names.push_back("part[K]." + std::string(f));
     names.emplace_back("weight[I,J]");
+    names.emplace_back("moment[K]");
     return names;
 }
 

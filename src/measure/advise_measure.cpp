@@ -27,6 +27,8 @@ BenchOptions adviseBenchOptions(const AdviseMeasureOptions& options, const Advis
     o.cpuPasses = 1;
     o.cpuThreads = options.threads;
     o.base = adviseBiasSettings(options.base, s.bias);
+    // One culling for the whole search, the one advise's [settings] table states.
+    o.cullByMethod = false;
     return o;
 }
 

@@ -46,6 +46,7 @@ RenderSettings settingsFor(const BenchOptions& options, const BenchPoint& p) {
     // Methods without a kernel ignore it; 3 is what makeParams gives them.
     s.kernel = p.kernel > 0 ? p.kernel : 3;
     s.mapSize = p.mapSize;
+    s.cull = benchCull(options, p.method);
     s.frameSize = options.frameSize;
     s.weights = p.weights;
     if (p.weights == PCF_WEIGHTS_GAUSSIAN) s.sigma = p.sigma;
@@ -59,6 +60,11 @@ std::vector<int> weightsOf(int method, const BenchOptions& options) {
 }
 
 }  // namespace
+
+CullMode benchCull(const BenchOptions& options, int method) {
+    if (options.cullByMethod && methodInfo(method).wantsLitFacesInMap) return CullMode::Back;
+    return options.base.cull;
+}
 
 RenderSettings benchBaseSettings() {
     RenderSettings s;

@@ -88,7 +88,14 @@ struct BenchOptions {
     // of closed objects, so the error measures the filter. (Culling back faces instead, a
     // constant bias of 0.002 leaves acne over the whole ground at 128..512 texel maps.)
     RenderSettings base = benchBaseSettings();
+    // A method that wants the casters' lit faces in its map (kernel/methods.h:
+    // MethodInfo::wantsLitFacesInMap, the moment methods) has back faces culled instead of
+    // base.cull; false: base.cull for every method (bench --cull given).
+    bool cullByMethod = true;
 };
+
+// The faces the shadow pass culls for `method` under `options` (cullByMethod).
+CullMode benchCull(const BenchOptions& options, int method);
 
 // A point is noisy when the IQR of a timing is above this share of its median.
 constexpr double NOISY_IQR_SHARE = 0.10;

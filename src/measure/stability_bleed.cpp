@@ -3,6 +3,7 @@
 #include "measure/stability_bleed.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -258,33 +259,140 @@ std::vector<BleedPoint> bleedPoints(std::span<const StabilityRow> rows) {
     return points;
 }
 
+namespace {
+
+// The settings a point was measured with: the run's, and its swept value.
+ShadowSettings bleedPointSettings(const BleedPoint& p, const ShadowSettings& base) {
+    ShadowSettings s = base;
+    if (const ParamInfo* param = p.key.empty() ? nullptr : findParam(p.key)) {
+        if (setParamFromText(s, *param, p.value)) {
+            throw std::invalid_argument("bleed setting " + p.key + " " + p.value);
+        }
+    }
+    return s;
+}
+
+std::string bleedCsvNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", v);
+    return buf;
+}
+
+}  // namespace
+
 std::string bleedCsv(std::span<const StabilityRow> rows, const ShadowSettings& base) {
     std::string out(BLEED_CSV_HEADER);
     out += "\n";
-    auto number = [](double v) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.9g", v);
-        return std::string(buf);
-    };
     for (const BleedPoint& p : bleedPoints(rows)) {
         std::string line = std::string(sweepName(Sweep::Bleed)) + "," +
                            std::string(methodInfo(p.method).name) + "," + std::to_string(p.kernel) +
-                           "," + number(p.gap);
+                           "," + bleedCsvNumber(p.gap);
+        const ShadowSettings used = bleedPointSettings(p, base);
         for (const BleedColumn& c : BLEED_COLUMNS) {
             const ParamInfo* param = findParam(c.key);
             std::string value;
-            if (p.key == c.key) {
+            if (c.key == "evsm_exponents" && param && paramActsFor(*param, p.method)) {
+                // What the warps used, not what was asked: the moment format clamps them.
+                value = exponentsText(used.evsmExponentsUsed());
+            } else if (p.key == c.key) {
                 value = p.value;
             } else if (param && paramActsFor(*param, p.method)) {
-                value = settingText(*param, base);
+                value = settingText(*param, used);
             }
             // A value with a comma (the exponents' POS,NEG) quoted, as CSV has it.
             line += "," + (value.find(',') != std::string::npos ? "\"" + value + "\"" : value);
         }
-        line += "," + number(p.leakMean) + "," + number(p.leakP99) + "," + number(p.penumbraError);
+        line += "," + bleedCsvNumber(p.leakMean) + "," + bleedCsvNumber(p.leakP99) + "," +
+                bleedCsvNumber(p.penumbraError);
         out += line + "\n";
     }
     return out;
+}
+
+double bleedChartGap(std::span<const StabilityRow> rows) {
+    const double preferred = presetParams(BLEED_PRESET).front().defaultValue;
+    double best = 0.0;
+    for (const BleedPoint& p : bleedPoints(rows)) {
+        if (best == 0.0 || std::abs(p.gap - preferred) < std::abs(best - preferred)) best = p.gap;
+    }
+    return best;
+}
+
+std::vector<BleedSeries> bleedSeries(std::span<const BleedPoint> points, double gap) {
+    std::vector<BleedSeries> series;
+    for (const BleedPoint& p : points) {
+        if (p.gap != gap) continue;
+        if (series.empty() || series.back().method != p.method ||
+            series.back().kernel != p.kernel || series.back().key != p.key) {
+            series.push_back({p.method, p.kernel, p.key, {}});
+        }
+        series.back().points.push_back(p);
+    }
+    return series;
+}
+
+std::vector<std::string> bleedKeys(std::span<const BleedSeries> series) {
+    std::vector<std::string> keys;
+    for (const BleedSeries& s : series) {
+        if (!s.key.empty() && std::find(keys.begin(), keys.end(), s.key) == keys.end()) {
+            keys.push_back(s.key);
+        }
+    }
+    return keys;
+}
+
+const BleedPoint* firstCleanPoint(const BleedSeries& s) {
+    for (const BleedPoint& p : s.points) {
+        if (p.leakP99 < BLEED_LEAK_TARGET) return &p;
+    }
+    return nullptr;
+}
+
+namespace {
+
+std::string bleedNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return buf;
+}
+
+// "- vsm 5x5, lbr 0 to 0.5: leak 0.31 at 0 (darkening 0.004); under 0.001 from 0.3 (darkening
+// 0.052)"; a method at the run's settings alone: "- pcf-gather 3x3: leak 0 (darkening 0.01)".
+std::string bleedSeriesLine(const BleedSeries& s) {
+    std::string name = stabilityMethodName({s.method, s.kernel});
+    const BleedPoint& first = s.points.front();
+    auto at = [](const BleedPoint& p) {
+        return "leak " + bleedNumber(p.leakP99) + " (darkening " + bleedNumber(-p.penumbraError) +
+               ")";
+    };
+    if (s.key.empty()) return "- " + name + ": " + at(first) + "\n";
+    std::string line = "- " + name + ", " + s.key + " " + first.value + " to " +
+                       s.points.back().value + ": " + at(first) + " at " + first.value + "; ";
+    const BleedPoint* clean = firstCleanPoint(s);
+    if (clean) {
+        line += "under " + bleedNumber(BLEED_LEAK_TARGET) + " from " + clean->value +
+                ", darkening " + bleedNumber(-clean->penumbraError) + " there";
+    } else {
+        line += "never under " + bleedNumber(BLEED_LEAK_TARGET);
+    }
+    return line + "\n";
+}
+
+}  // namespace
+
+std::string bleedMarkdown(std::span<const StabilityRow> rows) {
+    std::vector<BleedPoint> points = bleedPoints(rows);
+    if (points.empty()) return "";
+    const double gap = bleedChartGap(rows);
+    std::string md =
+        "\nLight bleeding on " + std::string(BLEED_PRESET) + ", the cards " + bleedNumber(gap) +
+        " apart (stability_bleed.h; stability_bleed.csv has every gap and value): "
+        "leak, the 99th percentile of the visibility over the lower card's clean "
+        "umbra (0 = no light leaks in); darkening, the mean of truth - v over the "
+        "area truth's penumbra (what the light-bleeding reduction costs; negative: lighter "
+        "than the truth).\n\n";
+    for (const BleedSeries& s : bleedSeries(points, gap)) md += bleedSeriesLine(s);
+    return md;
 }
 
 }  // namespace pcf

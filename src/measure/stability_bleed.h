@@ -66,6 +66,37 @@ struct BleedPoint {
 // The bleed rows' points, in the rows' order.
 std::vector<BleedPoint> bleedPoints(std::span<const StabilityRow> rows);
 
+// The leak (99th percentile) the chart and the report call clean.
+inline constexpr double BLEED_LEAK_TARGET = 1e-3;
+
+// The gap the chart and the report show: the stacked-cards preset's default when the sweep ran
+// it, else the nearest it ran (0 when the rows hold no bleed point).
+double bleedChartGap(std::span<const StabilityRow> rows);
+
+// One method's points at one gap over one swept setting's values, in the sweep's order (`key`
+// "": the method measured at the run's settings alone, one point).
+struct BleedSeries {
+    int method = -1;
+    int kernel = 0;
+    std::string key;
+    std::vector<BleedPoint> points;
+};
+
+// The series of the points at `gap`, in the order they were measured.
+std::vector<BleedSeries> bleedSeries(std::span<const BleedPoint> points, double gap);
+
+// The swept settings' keys at `gap`, in the order they were swept.
+std::vector<std::string> bleedKeys(std::span<const BleedSeries> series);
+
+// The first point of `s` whose leak's 99th percentile is under BLEED_LEAK_TARGET, nullptr when
+// none is.
+const BleedPoint* firstCleanPoint(const BleedSeries& s);
+
+// stability.md's light-bleeding paragraph (empty without bleed rows): at the chart's gap, per
+// method and setting swept, the leak at its first value, the first value whose leak is under
+// BLEED_LEAK_TARGET and the penumbra darkening there.
+std::string bleedMarkdown(std::span<const StabilityRow> rows);
+
 // The file `pcfscope stability` writes bleedCsv into, beside stability.csv.
 inline constexpr std::string_view BLEED_CSV_NAME = "stability_bleed.csv";
 
@@ -77,7 +108,9 @@ inline constexpr std::string_view BLEED_CSV_HEADER =
 // The header, then one line per point: the method's name, its kernel (0 for none), the gap; in
 // each setting's column the swept value, or the run's (`base`) where the setting acts for the
 // method (kernel/settings.h: paramActsFor), empty where it does not (every setting column of a
-// method that compares depths); the three numbers with 9 significant digits.
+// method that compares depths); the exponents as used, clamped to what the point's moment
+// format holds (ShadowSettings::evsmExponentsUsed), not as asked; the three numbers with 9
+// significant digits.
 std::string bleedCsv(std::span<const StabilityRow> rows, const ShadowSettings& base);
 
 }  // namespace pcf

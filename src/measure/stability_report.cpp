@@ -10,6 +10,7 @@
 #include "measure/csv_lines.h"
 #include "measure/failure_measures.h"
 #include "measure/number_text.h"
+#include "measure/stability_bleed.h"
 
 namespace pcf {
 
@@ -371,6 +372,7 @@ std::string stabilityMarkdown(std::span<const StabilityRow> rows, const Stabilit
               aliasing + ".\n";
     }
     md += pcssLines(rows);
+    md += bleedMarkdown(rows);
     return md;
 }
 

@@ -90,7 +90,8 @@ std::vector<StabilityRow> stabilitySetupRows(const StabilitySetup& setup);
 // depth D"), or nullopt when they carry none (a CSV written before the setup rows).
 std::optional<StabilitySetup> stabilitySetupOf(std::span<const StabilityRow> rows);
 
-// Title, setup paragraph, the summary table and the aliasing line.
+// Title, setup paragraph, the summary table, the aliasing line, pcss's lines and the light
+// bleeding paragraph (stability_bleed.h: bleedMarkdown).
 std::string stabilityMarkdown(std::span<const StabilityRow> rows, const StabilitySetup& setup,
                               double constantBias);
 
