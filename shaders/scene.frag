@@ -140,11 +140,10 @@ void main() {
         // In the blend band the next cascade looks the same point up (its own fit, texel size
         // and receiver plane) and the two visibilities are mixed (shared/pcf_shading.h
         // pcfCascadeBlendWeight, pcfCascadeBlend; the CPU: scene/cascade_fit.h
-        // cascadeVisibilityAt). Not at a lesson's pinned pixel, which shows exactly the one
-        // lookup the inspector traces.
+        // cascadeVisibilityAt; at a lesson's pinned point lesson/lesson_pick.h addCascadeBlend,
+        // which the inspector shows beside the cascade's own lookup).
         float blendWeight = pcfCascadeBlendWeight(viewDepth, layer.viewDepth, uCascadeBlend,
                                                   layerIndex, PCF_MAP_LAYERS);
-        if (ivec2(gl_FragCoord.xy) == uPickPixel) blendWeight = 0.0f;
         if (blendWeight > 0.0f) {
             pcfMapLayer = layerIndex + 1;
             vec2 nextUv = vec2(next.u, next.v);

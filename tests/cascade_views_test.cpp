@@ -5,7 +5,9 @@
 // drawn); the long-ground preset is the scene they are for.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -200,6 +202,52 @@ TEST_F(CascadeViews, TheInspectorsHeaderNamesTheCascade) {
     one.replace(one.find("cascades = 4"), 12, "cascades = 1");
     one.replace(one.find("freeze_cascades = true"), 22, "grid = true");
     EXPECT_EQ(headerLines(parseLessonString(one, "one.toml")).find("cascade "), std::string::npos);
+}
+
+// In a blend band (cascade_blend 0.5: the last half of cascade 1's view depths, from 19.71 to
+// 26.61) the pinned point on a post's shadow edge is traced in cascade 1 and again in cascade 2;
+// the weight is how far into the band its view depth is, the frame shows the mix, and the
+// header, the trace's JSON and the step's words say all three.
+TEST_F(CascadeViews, InTheBlendBandBothCascadesAreTracedWithTheirWeight) {
+    std::string text = std::string(LESSON);
+    text.replace(text.find("cascade_lambda = 0.5"), 20,
+                 "cascade_lambda = 0.5\ncascade_blend = 0.5");
+    text.replace(text.find("point = [0.6, 0, -33.0]"), 23, "point = [1.184, 0, -19.05]");
+    text.replace(text.find("Cascade {cascade} of {cascade.count}"), 36,
+                 "w {cascade.blend_weight:4}, shown {cascade.blended:4}");
+    Session session({1600, 900}, false);
+    session.setLesson(parseLessonString(text, "blend.toml"));
+    session.compose();
+    ASSERT_TRUE(session.trace());
+    const Trace& tr = *session.trace();
+    EXPECT_EQ(tr.layer, 1);
+    ASSERT_EQ(tr.cascadeBlend.next, 2);
+    Scene scene = *presetScene("long-ground");
+    glm::vec3 eye = scene.camera.eyeWs;
+    glm::vec3 ahead = glm::normalize(scene.camera.targetWs - eye);
+    double depth = glm::dot(glm::vec3(1.184f, 0.0f, -19.05f) - eye, ahead);
+    double start = SPLITS[2] - 0.5 * (SPLITS[2] - SPLITS[1]);
+    EXPECT_NEAR(tr.cascadeBlend.weight, (depth - start) / (SPLITS[2] - start), 1e-4);
+    EXPECT_GT(tr.cascadeBlend.weight, 0.05f);
+    // On the shadow's edge the two cascades' texels disagree, and the mix lies between them.
+    EXPECT_GT(std::fabs(tr.cascadeBlend.nextVisibility - tr.visibility), 0.01f);
+    float lo = std::min(tr.visibility, tr.cascadeBlend.nextVisibility);
+    float hi = std::max(tr.visibility, tr.cascadeBlend.nextVisibility);
+    EXPECT_GT(tr.cascadeBlend.blended, lo);
+    EXPECT_LT(tr.cascadeBlend.blended, hi);
+    Json j = traceJson(tr);
+    EXPECT_EQ(j["cascade_blend"]["next_layer"], 2);
+    EXPECT_EQ(j["cascade_blend"]["visibility"].get<float>(), tr.cascadeBlend.blended);
+    std::string header;
+    for (const LayoutBox& b : session.boxes()) {
+        if (b.panel == "inspector") header += b.text + "\n";
+    }
+    EXPECT_NE(header.find("blend band: cascade 1 "), std::string::npos) << header;
+    EXPECT_NE(header.find(", cascade 2 "), std::string::npos) << header;
+    char words[64];
+    std::snprintf(words, sizeof words, "w %.4f, shown %.4f", tr.cascadeBlend.weight,
+                  tr.cascadeBlend.blended);
+    EXPECT_NE(session.stepText().find(words), std::string::npos) << session.stepText();
 }
 
 // `render --lesson` renders a step's cascades as the viewer does: fitted to the lesson's camera,

@@ -376,6 +376,11 @@ void Session::traceAtPixel() {
         mLookup->trace.cascadeTexelsPerPixelMax = static_cast<float>(
             mCascadeDensity[static_cast<size_t>(mLookup->trace.layer)].texelsPerPixelMax);
     }
+    // In a cascade's blend band the pixel mixes in the next cascade's lookup of the point.
+    if (mLookup && mPoint) {
+        addCascadeBlend(mLookup->trace, mMap, scene(), mSettings, *mPoint,
+                        mRenderer->cascadeCamera());
+    }
     if (mLookup) mTrace = mLookup->trace;
     tracePartsOfText();
 }

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "kernel/shading.h"
+#include "scene/cascade_fit.h"
 #include "scene/cascade_view.h"
 #include "scene/pcss.h"
 #include "scene/raycast.h"
@@ -135,7 +136,39 @@ Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& sha
     Trace trace = traceLookup(map, at.uv, at.z0, at.ref, prm, s, at.dzduv, at.cascade.index);
     // Past the shadow distance no cascade covers the point: the camera pass draws it lit.
     if (!at.cascade.covered) trace.visibility = 1.0f;
+    addCascadeBlend(trace, map, scene, s, point, cascadeCamera);
     return trace;
+}
+
+void addCascadeBlend(Trace& trace, const ShadowMap& map, const Scene& scene,
+                     const LessonSettings& s, const ScenePoint& point,
+                     const Camera& cascadeCamera) {
+    trace.cascadeBlend = TraceCascadeBlend{};
+    trace.cascadeBlend.nextVisibility = trace.visibility;
+    trace.cascadeBlend.blended = trace.visibility;
+    const MapSpec& spec = map.spec();
+    if (spec.layers.size() < 2 || trace.layer < 0 ||
+        trace.layer + 1 >= static_cast<int>(spec.layers.size())) {
+        return;
+    }
+    float viewDepth =
+        pcfViewDepth(point.posWs, cascadeCamera.eyeWs, cameraViewDirWs(cascadeCamera));
+    float weight =
+        pcfCascadeBlendWeight(viewDepth, spec.layers[static_cast<size_t>(trace.layer)].viewDepth,
+                              s.cascadeBlend, trace.layer, static_cast<int>(spec.layers.size()));
+    if (!(weight > 0.0f)) return;
+    // The next cascade's own lookup of the point: its fit, texel size and receiver plane.
+    PinnedLookup next =
+        pinnedLookupIn(scene, spec, pointCascadeOfLayer(spec, trace.layer + 1), s, point);
+    PcfParams prm = s.pcfParams(next.uv, map.width(), trace.params.penumbraScale);
+    prm.depthNear = trace.params.depthNear;
+    prm.depthFar = trace.params.depthFar;
+    Trace nextTrace =
+        traceLookup(map, next.uv, next.z0, next.ref, prm, s, next.dzduv, trace.layer + 1);
+    trace.cascadeBlend.next = trace.layer + 1;
+    trace.cascadeBlend.weight = weight;
+    trace.cascadeBlend.nextVisibility = nextTrace.visibility;
+    trace.cascadeBlend.blended = pcfCascadeBlend(trace.visibility, nextTrace.visibility, weight);
 }
 
 PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
@@ -147,7 +180,11 @@ PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& fit, const Lesson
                           const ScenePoint& point, const Camera& cascadeCamera) {
     // The layer the point reads (one, or its cascade) and that layer's fit and texel size.
     MapSpec map = cascadedMapSpec(scene, s, fit, cascadeCamera, LESSON_CASCADE_ASPECT);
-    PointCascade cascade = pointCascade(map, cascadeCamera, point.posWs);
+    return pinnedLookupIn(scene, map, pointCascade(map, cascadeCamera, point.posWs), s, point);
+}
+
+PinnedLookup pinnedLookupIn(const Scene& scene, const MapSpec& map, const PointCascade& cascade,
+                            const LessonSettings& s, const ScenePoint& point) {
     const PcfMapLayer& layer = map.layers[static_cast<size_t>(cascade.index)];
     const glm::mat4& shadowClipFromWorld = layer.shadowClipFromWorld;
     glm::vec3 n = point.normalWs;

@@ -76,6 +76,10 @@ PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWor
 PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
                           const LessonSettings& s, const ScenePoint& point,
                           const Camera& cascadeCamera);
+// The same in a layer already picked (`cascade`, of `map`'s layers): the next cascade's lookup
+// in the blend band.
+PinnedLookup pinnedLookupIn(const Scene& scene, const MapSpec& map, const PointCascade& cascade,
+                            const LessonSettings& s, const ScenePoint& point);
 
 // The angle between the point's normal and the direction to the light, degrees: 0 the light
 // straight above, 90 grazing, more: the point faces away from the light.
@@ -101,6 +105,13 @@ Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& sha
                   const LessonSettings& s, const ScenePoint& point);
 Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
                   const LessonSettings& s, const ScenePoint& point, const Camera& cascadeCamera);
+// A cascaded map's blend band (cascade_blend > 0) at a pinned point: the weight the camera pass
+// mixes the next cascade in with (shared/pcf_shading.h pcfCascadeBlendWeight), that cascade's
+// own lookup of the point (its fit, texel size and receiver plane) traced on its layer, and the
+// mix (pcfCascadeBlend), into trace.cascadeBlend; the trace's visibility stays the one of the
+// cascade it read. Outside the band, or with one layer, the band says weight 0.
+void addCascadeBlend(Trace& trace, const ShadowMap& map, const Scene& scene,
+                     const LessonSettings& s, const ScenePoint& point, const Camera& cascadeCamera);
 
 // The context of a step: its state, and the pixel that shows its point in the frame rendered
 // (framePick).

@@ -242,6 +242,15 @@ const std::vector<Simple>& simpleNames() {
          [](const Trace& t, const StepContext&) {
              return cascadeValue(t, &TraceCascade::texelsPerPixelMax);
          }},
+        // In the blend band: the next cascade's weight and the visibility the frame shows.
+        {"cascade.blend_weight",
+         [](const Trace& t, const StepContext&) {
+             return cascadeValue(t, &TraceCascade::blendWeight);
+         }},
+        {"cascade.blended",
+         [](const Trace& t, const StepContext&) {
+             return cascadeValue(t, &TraceCascade::blendedVisibility);
+         }},
     };
     return names;
 }

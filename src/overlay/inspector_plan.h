@@ -449,8 +449,9 @@ constexpr Colour HW8_POINT{0.72f, 1.0f, 0.28f, 1.0f};
 
 Header headerOf(const Trace& tr, const TypeSizes& t, float width);
 // The header's line on the cascade a cascaded map's lookup read (inspector_cascade.cpp): its
-// index of the count, view depths, texel size and measured density; empty with one map.
-std::string cascadeHeaderText(const Trace& tr);
+// index of the count, view depths, texel size and measured density, and in the blend band a
+// second line with both cascades' visibilities, the weight and the mix; empty with one map.
+std::string cascadeHeaderText(const Trace& tr, bool hideVisibility);
 void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t);
 void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
                    const TypeSizes& t);
