@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "kernel/shading.h"
+#include "scene/cascade_fit.h"
 #include "scene/cascade_view.h"
 #include "scene/pcss.h"
 #include "scene/raycast.h"
@@ -24,6 +25,23 @@ std::optional<ScenePoint> pointOfHit(const std::optional<Hit>& hit) {
 glm::dvec3 lightSpace(const glm::mat4& shadowClipFromWorld, glm::dvec3 posWs) {
     glm::dvec4 clip = glm::dmat4(shadowClipFromWorld) * glm::dvec4(posWs, 1.0);
     return glm::dvec3(clip) / clip.w * 0.5 + 0.5;
+}
+
+// The receiver's plane in the map fitted by shadowClipFromWorld, from two steps along the surface
+// instead of two screen pixels: any two independent directions give the same dz/duv of a plane
+// (pcfReceiverPlaneDzDuv). In double, so the steps' differences keep their digits.
+glm::vec2 receiverPlane(const glm::mat4& shadowClipFromWorld, const ScenePoint& point) {
+    glm::dvec3 nd(point.normalWs);
+    glm::dvec3 t1 = glm::normalize(
+        glm::cross(nd, std::fabs(nd.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    glm::dvec3 t2 = glm::cross(nd, t1);
+    const double step = 1e-3;
+    glm::dvec3 p(point.posWs);
+    glm::dvec3 d1 = lightSpace(shadowClipFromWorld, p + step * t1) -
+                    lightSpace(shadowClipFromWorld, p - step * t1);
+    glm::dvec3 d2 = lightSpace(shadowClipFromWorld, p + step * t2) -
+                    lightSpace(shadowClipFromWorld, p - step * t2);
+    return pcfReceiverPlaneDzDuv(glm::vec3(d1), glm::vec3(d2));
 }
 
 }  // namespace
@@ -135,7 +153,29 @@ Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& sha
     Trace trace = traceLookup(map, at.uv, at.z0, at.ref, prm, s, at.dzduv, at.cascade.index);
     // Past the shadow distance no cascade covers the point: the camera pass draws it lit.
     if (!at.cascade.covered) trace.visibility = 1.0f;
+    if (at.cascade.covered && map.layers() > 1) {
+        trace.cascadeBlend = pinnedCascadeBlend(map, scene.light, s, trace.params, point,
+                                                at.cascade.index, at.dzduv, cascadeCamera);
+    }
     return trace;
+}
+
+TraceCascadeBlend pinnedCascadeBlend(const ShadowMap& map, const Light& light,
+                                     const LessonSettings& s, const PcfParams& prm,
+                                     const ScenePoint& point, int layer, glm::vec2 dzduv,
+                                     const Camera& cascadeCamera) {
+    const std::vector<PcfMapLayer>& layers = map.spec().layers;
+    glm::vec2 nextPlane(0.0f);
+    if (layer + 1 < static_cast<int>(layers.size())) {
+        nextPlane =
+            receiverPlane(layers[static_cast<size_t>(layer) + 1].shadowClipFromWorld, point);
+    }
+    float viewDepth =
+        pcfViewDepth(point.posWs, cascadeCamera.eyeWs, cameraViewDirWs(cascadeCamera));
+    float cosTheta = glm::dot(point.normalWs, toLightWs(light, point.posWs));
+    CascadeLookup c = cascadeVisibilityIn(map, layer, viewDepth, s, prm, point.posWs,
+                                          point.normalWs, cosTheta, dzduv, nextPlane);
+    return {c.next, c.weight, c.nextVisibility, c.blended};
 }
 
 PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
@@ -155,24 +195,11 @@ PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& fit, const Lesson
     PcfReceiverLookup at =
         pcfReceiverLookup(shadowClipFromWorld, point.posWs, n, glm::dot(n, toLight), s.modeId(),
                           s.baseBias(), s.slopeBias, s.slopeMax, s.normalOffset, layer.texelWs);
-    // The receiver's plane, from two steps along the surface instead of two screen pixels: any
-    // two independent directions give the same dz/duv of a plane (pcfReceiverPlaneDzDuv). In
-    // double, so the steps' differences keep their digits.
-    glm::dvec3 nd(n);
-    glm::dvec3 t1 = glm::normalize(
-        glm::cross(nd, std::fabs(nd.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
-    glm::dvec3 t2 = glm::cross(nd, t1);
-    const double step = 1e-3;
-    glm::dvec3 p(point.posWs);
-    glm::dvec3 d1 = lightSpace(shadowClipFromWorld, p + step * t1) -
-                    lightSpace(shadowClipFromWorld, p - step * t1);
-    glm::dvec3 d2 = lightSpace(shadowClipFromWorld, p + step * t2) -
-                    lightSpace(shadowClipFromWorld, p - step * t2);
     PinnedLookup out;
     out.uv = glm::vec2(at.u, at.v);
     out.z0 = at.z0;
     out.ref = at.ref;
-    out.dzduv = pcfReceiverPlaneDzDuv(glm::vec3(d1), glm::vec3(d2));
+    out.dzduv = receiverPlane(shadowClipFromWorld, point);
     out.cascade = cascade;
     out.layerFit = shadowClipFromWorld;
     return out;
