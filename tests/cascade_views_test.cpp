@@ -461,6 +461,17 @@ TEST_F(CascadeViews, TheBlendBandTracesBothLookups) {
     EXPECT_NEAR(b.blended, seen.visibility + b.weight * (b.nextVisibility - seen.visibility),
                 1e-6f);
     EXPECT_EQ(fillText("{cascade.next}", seen, makeStepContext(lesson.steps[0], {0, 0})), "1");
+    // The inspector's header shows both lookups, the weight and the result side by side.
+    auto header = [&] {
+        std::string words;
+        for (const LayoutBox& box : session.boxes()) {
+            if (box.panel == "inspector") words += box.text + "\n";
+        }
+        return words;
+    };
+    EXPECT_NE(header().find("blend cascade 0 "), std::string::npos) << header();
+    EXPECT_NE(header().find(" cascade 1 "), std::string::npos) << header();
+    EXPECT_NE(header().find(" shown "), std::string::npos) << header();
 
     const LessonSettings& s = lesson.steps[0].settings;
     std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
@@ -479,6 +490,7 @@ TEST_F(CascadeViews, TheBlendBandTracesBothLookups) {
     EXPECT_EQ(session.trace()->cascadeBlend.next, -1);
     EXPECT_EQ(session.trace()->cascadeBlend.weight, 0.0f);
     EXPECT_EQ(session.trace()->cascadeBlend.blended, session.trace()->visibility);
+    EXPECT_EQ(header().find("blend "), std::string::npos) << header();
 }
 
 }  // namespace

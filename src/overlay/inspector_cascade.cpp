@@ -19,4 +19,18 @@ std::string cascadeHeaderText(const Trace& tr) {
     return text;
 }
 
+std::string cascadeBlendText(const Trace& tr, const HiddenNumbers& hidden) {
+    std::optional<TraceCascade> c = cascadeOfTrace(tr);
+    const TraceCascadeBlend& b = tr.cascadeBlend;
+    if (!c || b.next < 0) return "";
+    // The two lookups side by side, the next one's weight and the mix the pixel shows
+    // (shared/pcf_shading.h pcfCascadeBlend); each hides with the result it would give away.
+    auto shown = [&](float v) {
+        return hidden.visibility ? std::string(HIDDEN_NUMBER) : fixed(v, 4);
+    };
+    return "blend  cascade " + std::to_string(c->index) + " " + shown(tr.visibility) +
+           "  cascade " + std::to_string(b.next) + " " + shown(b.nextVisibility) + "  w " +
+           fixed(b.weight, 4) + "  shown " + shown(b.blended);
+}
+
 }  // namespace pcf::inspector_detail

@@ -28,6 +28,8 @@ std::string countsText(const Trace& tr, const HiddenNumbers& hidden) {
               std::string(biasName(tr.bias.modeId()));
     std::string cascade = cascadeHeaderText(tr);
     if (!cascade.empty()) counts += "\n" + cascade;
+    std::string blend = cascadeBlendText(tr, hidden);
+    if (!blend.empty()) counts += "\n" + blend;
     return counts;
 }
 

@@ -433,6 +433,10 @@ Header headerOf(const Trace& tr, const TypeSizes& t, float width);
 // The header's line on the cascade a cascaded map's lookup read (inspector_cascade.cpp): its
 // index of the count, view depths, texel size and measured density; empty with one map.
 std::string cascadeHeaderText(const Trace& tr);
+// In a cascaded map's blend band (Trace::cascadeBlend), the line under it: the cascade read's
+// visibility and the next cascade's side by side, the next one's weight and the result shown;
+// "" outside the band or with one map.
+std::string cascadeBlendText(const Trace& tr, const HiddenNumbers& hidden);
 void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t);
 void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
                    const TypeSizes& t);
