@@ -469,9 +469,9 @@ TEST_F(CascadeViews, TheBlendBandTracesBothLookups) {
         }
         return words;
     };
-    EXPECT_NE(header().find("blend cascade 0 "), std::string::npos) << header();
-    EXPECT_NE(header().find(" cascade 1 "), std::string::npos) << header();
-    EXPECT_NE(header().find(" shown "), std::string::npos) << header();
+    EXPECT_NE(header().find("blend: cascade 0 "), std::string::npos) << header();
+    EXPECT_NE(header().find(", cascade 1 "), std::string::npos) << header();
+    EXPECT_NE(header().find(", shown="), std::string::npos) << header();
 
     const LessonSettings& s = lesson.steps[0].settings;
     std::optional<ScenePoint> point = stepPoint(lesson.scene, s);

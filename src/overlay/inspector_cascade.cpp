@@ -28,9 +28,10 @@ std::string cascadeBlendText(const Trace& tr, const HiddenNumbers& hidden) {
     auto shown = [&](float v) {
         return hidden.visibility ? std::string(HIDDEN_NUMBER) : fixed(v, 4);
     };
-    return "blend  cascade " + std::to_string(c->index) + " " + shown(tr.visibility) +
-           "  cascade " + std::to_string(b.next) + " " + shown(b.nextVisibility) + "  w " +
-           fixed(b.weight, 4) + "  shown " + shown(b.blended);
+    // (w=0.93 and shown=0.41 one word each: a wrapped line never parts a number from its name.)
+    return "blend: cascade " + std::to_string(c->index) + " " + shown(tr.visibility) +
+           ", cascade " + std::to_string(b.next) + " " + shown(b.nextVisibility) +
+           ", w=" + fixed(b.weight, 4) + ", shown=" + shown(b.blended);
 }
 
 }  // namespace pcf::inspector_detail
