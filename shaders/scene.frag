@@ -140,7 +140,7 @@ void main() {
         // In the blend band the next cascade looks the same point up (its own fit, texel size
         // and receiver plane) and the two visibilities are mixed (shared/pcf_shading.h
         // pcfCascadeBlendWeight, pcfCascadeBlend; the CPU: scene/cascade_fit.h
-        // cascadeVisibilityAt; at a lesson's pinned point lesson/lesson_pick.h addCascadeBlend,
+        // cascadeVisibilityAt; at a lesson's pinned point lesson/lesson_pick.h pinnedCascadeBlend,
         // which the inspector shows beside the cascade's own lookup).
         float blendWeight = pcfCascadeBlendWeight(viewDepth, layer.viewDepth, uCascadeBlend,
                                                   layerIndex, PCF_MAP_LAYERS);

@@ -162,16 +162,24 @@ TEST(AnimationFrames, LessonAnimationsShowTheSceneTheTraceAndTheWordsWhole) {
         glm::ivec2 size;
         bool presentation;
     };
-    for (const char* name : {"08-acne-and-bias", "13-shimmer-and-snapping"}) {
-        const std::string lesson = std::string(PCFSCOPE_SOURCE_DIR) + "/lessons/" + name + ".toml";
+    struct Moving {
+        const char* name;
+        int step;  // 0-based
+    };
+    // Lesson 22's last: the camera turning with a cascaded map.
+    for (Moving m : {Moving{"08-acne-and-bias", 6}, Moving{"13-shimmer-and-snapping", 6},
+                     Moving{"22-cascades-that-do-not-shimmer", 5}}) {
+        const std::string lesson =
+            std::string(PCFSCOPE_SOURCE_DIR) + "/lessons/" + m.name + ".toml";
         for (Frame f :
              {Frame{{1280, 720}, true}, Frame{{1024, 768}, true}, Frame{{1600, 900}, false}}) {
-            SCOPED_TRACE(std::string(name) + " step 7 at " + std::to_string(f.size.x) + "x" +
-                         std::to_string(f.size.y) + (f.presentation ? " presentation" : ""));
+            SCOPED_TRACE(std::string(m.name) + " step " + std::to_string(m.step + 1) + " at " +
+                         std::to_string(f.size.x) + "x" + std::to_string(f.size.y) +
+                         (f.presentation ? " presentation" : ""));
             Session session(f.size, f.presentation);
             session.loadLesson(lesson);
-            session.goToStep(6);
-            const LessonStep& step = session.lesson().steps[6];
+            session.goToStep(m.step);
+            const LessonStep& step = session.lesson().steps[static_cast<size_t>(m.step)];
             ASSERT_TRUE(step.animate);
             AnimationOptions ao = stepAnimationOptions(step);
             Animation animation(session, ao);

@@ -14,7 +14,9 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "app/session.h"
 #include "json_lite.h"
 #include "measure/failure_measures.h"
 #include "measure/stability.h"
@@ -270,6 +272,56 @@ TEST(AnimateCommand, BadInputIsOneLineAndLeavesNothing) {
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(testutil::readAll(out + "/x.gif"), "mine");
     fs::remove_all(dir);
+}
+
+// The turn sweep (lesson 22): the camera turns about the vertical through the pinned point, which
+// keeps its pixel while the view turns; a cascaded map is fitted again on every frame, so a box
+// fit's texel changes with the turn and a sphere fit's does not; restore() puts the lesson's
+// camera back.
+TEST(Animation, TheTurnSweepTurnsTheCameraAboutThePinnedPoint) {
+    std::unique_ptr<GlContext> context = createHeadlessContext();
+    const std::string lesson =
+        std::string(PCFSCOPE_SOURCE_DIR) + "/lessons/22-cascades-that-do-not-shimmer.toml";
+    struct Seen {
+        glm::ivec2 pixel;
+        glm::vec3 point, eye;
+        float texel;
+    };
+    auto play = [&](int step) {
+        Session session({640, 360}, false);
+        session.loadLesson(lesson);
+        session.goToStep(step);
+        const Camera before = session.scene().camera;
+        AnimationOptions ao =
+            stepAnimationOptions(session.lesson().steps[static_cast<size_t>(step)]);
+        EXPECT_EQ(ao.sweep, AnimationSweep::Turn);
+        ao.frames = 3;
+        Animation animation(session, ao);
+        std::vector<Seen> seen;
+        for (int k = 0; k < ao.frames; ++k) {
+            animation.composeFrame(k);
+            seen.push_back({session.pixel(), session.point()->posWs, session.scene().camera.eyeWs,
+                            session.shadowMap().spec().layers[0].texelWs});
+        }
+        animation.restore();
+        EXPECT_EQ(session.scene().camera.eyeWs, before.eyeWs);
+        return seen;
+    };
+    std::vector<Seen> box = play(1);  // the box fit, turning 0 to 45 degrees
+    ASSERT_EQ(box.size(), 3u);
+    glm::vec2 axis(box[0].point.x, box[0].point.z);
+    for (const Seen& f : box) {
+        EXPECT_EQ(f.pixel, box[0].pixel);
+        EXPECT_EQ(f.point, box[0].point);
+        // The eye keeps its height and its distance from the point's vertical.
+        EXPECT_NEAR(f.eye.y, box[0].eye.y, 1e-4f);
+        EXPECT_NEAR(glm::distance(glm::vec2(f.eye.x, f.eye.z), axis),
+                    glm::distance(glm::vec2(box[0].eye.x, box[0].eye.z), axis), 1e-3f);
+    }
+    EXPECT_GT(glm::distance(box[2].eye, box[0].eye), 1.0f);
+    EXPECT_GT(std::fabs(box[2].texel / box[0].texel - 1.0f), 0.01f) << "a box refitted";
+    std::vector<Seen> sphere = play(5);  // the sphere fit, snapped
+    for (const Seen& f : sphere) EXPECT_NEAR(f.texel / sphere[0].texel, 1.0f, 1e-4f);
 }
 
 }  // namespace

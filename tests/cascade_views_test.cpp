@@ -11,14 +11,17 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/cascade_lines.h"
 #include "app/session.h"
+#include "app/step_view.h"
 #include "kernel/trace_json.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_keys.h"
+#include "lesson/lesson_pick.h"
 #include "lesson/lesson_text.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
@@ -242,7 +245,7 @@ TEST_F(CascadeViews, InTheBlendBandBothCascadesAreTracedWithTheirWeight) {
     for (const LayoutBox& b : session.boxes()) {
         if (b.panel == "inspector") header += b.text + "\n";
     }
-    EXPECT_NE(header.find("blend band: cascade 1 "), std::string::npos) << header;
+    EXPECT_NE(header.find("blend: cascade 1 "), std::string::npos) << header;
     EXPECT_NE(header.find(", cascade 2 "), std::string::npos) << header;
     char words[64];
     std::snprintf(words, sizeof words, "w %.4f, shown %.4f", tr.cascadeBlend.weight,
@@ -479,6 +482,63 @@ TEST(CascadeVerify, ChecksEveryPixelOnTheLayerItRead) {
     EXPECT_EQ(testutil::lineCount(none.err), 1) << none.err;
     EXPECT_NE(none.err.find("cascade_camera"), std::string::npos) << none.err;
     if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir);
+}
+
+// The blend band at the pinned point (lesson_pick.h pinnedCascadeBlend): a point on a post's
+// shadow just before the first split, in the band, names the next cascade, its weight and its own
+// lookup, and the result the pixel shows is the mix of the two; the viewer's trace (the pixel's
+// lookup as the GPU drew it) and lesson check's (the point's, on the CPU) say the same. Past the
+// band the trace names no next cascade and the result is the cascade's own visibility.
+TEST_F(CascadeViews, TheBlendBandTracesBothLookups) {
+    std::string text = LESSON;
+    text.replace(text.find("point = [0.6, 0, -33.0]"), 23,
+                 "cascade_blend = 0.2\npoint = [-0.2, 0, -10.65]");
+    Lesson lesson = parseLessonString(text, "blend.toml");
+    Session session({1280, 720}, false);
+    session.setLesson(lesson);
+    session.compose();
+    ASSERT_TRUE(session.trace());
+    const Trace& seen = *session.trace();
+    const TraceCascadeBlend& b = seen.cascadeBlend;
+    EXPECT_EQ(seen.layer, 0);
+    EXPECT_EQ(b.next, 1);
+    EXPECT_GT(b.weight, 0.5f);
+    EXPECT_LT(b.weight, 1.0f);
+    // The two cascades disagree here (the seam the band hides), and the pixel shows their mix.
+    EXPECT_GT(std::fabs(b.nextVisibility - seen.visibility), 0.05f);
+    EXPECT_NEAR(b.blended, seen.visibility + b.weight * (b.nextVisibility - seen.visibility),
+                1e-6f);
+    EXPECT_EQ(fillText("{cascade.next}", seen, makeStepContext(lesson.steps[0], {0, 0})), "1");
+    // The inspector's header shows both lookups, the weight and the result side by side.
+    auto header = [&] {
+        std::string words;
+        for (const LayoutBox& box : session.boxes()) {
+            if (box.panel == "inspector") words += box.text + "\n";
+        }
+        return words;
+    };
+    EXPECT_NE(header().find("blend: cascade 0 "), std::string::npos) << header();
+    EXPECT_NE(header().find(", cascade 1 "), std::string::npos) << header();
+    EXPECT_NE(header().find(", shown="), std::string::npos) << header();
+
+    const LessonSettings& s = lesson.steps[0].settings;
+    std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
+    ASSERT_TRUE(point);
+    Trace checked = tracePinned(session.shadowMap(), lesson.scene,
+                                lessonShadowFit(lesson.scene, s, s.mapSize), s, *point);
+    EXPECT_EQ(checked.cascadeBlend.next, b.next);
+    EXPECT_NEAR(checked.cascadeBlend.weight, b.weight, 1e-4f);
+    EXPECT_NEAR(checked.cascadeBlend.nextVisibility, b.nextVisibility, 1e-3f);
+    EXPECT_NEAR(checked.cascadeBlend.blended, b.blended, 1e-3f);
+
+    // The second step's point lies mid-cascade, outside the band.
+    session.goToStep(1);
+    session.compose();
+    ASSERT_TRUE(session.trace());
+    EXPECT_EQ(session.trace()->cascadeBlend.next, -1);
+    EXPECT_EQ(session.trace()->cascadeBlend.weight, 0.0f);
+    EXPECT_EQ(session.trace()->cascadeBlend.blended, session.trace()->visibility);
+    EXPECT_EQ(header().find("blend "), std::string::npos) << header();
 }
 
 }  // namespace

@@ -247,5 +247,54 @@ TEST_F(ChartFacts, BleedLinesNameTheFirstValueUnderTheLeakTarget) {
                  std::invalid_argument);
 }
 
+// The cascades chart's lines (texels per pixel against the split's lambda, sphere fit snapped):
+// at lambda 0 cascade 0 reads far fewer texels per pixel than cascade 3, at 0.5 the spread is
+// narrower, and at 1 the first two cascades hold no receiver. A box fit's row (100 texels per
+// pixel in cascade 0) is not on the chart and changes none of its facts.
+std::string cascadesCsv() {
+    std::string csv = "sweep,method,kernel,bias,x_name,x,metric,y\n";
+    const double lambdas[] = {0.0, 0.5, 1.0};
+    const double medians[4][3] = {{0.2, 0.6, -1}, {3, 1.5, -1}, {9, 4, 0.4}, {14, 5, 0.8}};
+    for (int c = 0; c < 4; ++c) {
+        for (int k = 0; k < 3; ++k) {
+            if (medians[c][k] < 0.0) continue;
+            csv += "cascades,pcf-gather,3,normal,lambda," + std::to_string(lambdas[k]) +
+                   ",sphere:snap:c" + std::to_string(c) + ":texels_per_pixel_median," +
+                   std::to_string(medians[c][k]) + "\n";
+        }
+    }
+    return csv + "cascades,pcf-gather,3,normal,lambda,0,box:free:c0:texels_per_pixel_median,100\n";
+}
+
+TEST_F(ChartFacts, CascadeLinesAreReadAtEachLambda) {
+    std::string chart = write("stability.csv", cascadesCsv()) + "#cascades";
+    auto holds = [&](const std::string& fact) { return chartFactHolds(chart, fact).holds; };
+    EXPECT_TRUE(holds("at lambda 0, cascade 0 reads the fewest texels per pixel"));
+    EXPECT_FALSE(holds("at lambda 0, cascade 1 reads the fewest texels per pixel"));
+    EXPECT_TRUE(holds("at lambda 0, cascade 3 reads the most texels per pixel"));
+    EXPECT_FALSE(holds("at lambda 0, cascade 0 reads the most texels per pixel"));
+    EXPECT_TRUE(holds("at lambda 1, cascade 2 reads the fewest texels per pixel"));
+    // A cascade with no receiver at that lambda is neither.
+    EXPECT_FALSE(holds("at lambda 1, cascade 0 reads the fewest texels per pixel"));
+    EXPECT_TRUE(holds("at lambda 1, cascade 0 holds no receiver"));
+    EXPECT_TRUE(holds("at lambda 1, cascade 1 holds no receiver"));
+    EXPECT_FALSE(holds("at lambda 1, cascade 2 holds no receiver"));
+    EXPECT_FALSE(holds("at lambda 0.5, cascade 0 holds no receiver"));
+    // 14 / 0.2 = 70x at lambda 0, 5 / 0.6 = 8.3x at 0.5.
+    EXPECT_TRUE(holds("the cascades spread less at lambda 0.5 than at lambda 0"));
+    EXPECT_FALSE(holds("the cascades spread less at lambda 0 than at lambda 0.5"));
+    EXPECT_EQ(chartFactHolds(chart, "the cascades spread less at lambda 0.5 than at lambda 0").why,
+              "at lambda 0.5 0.6 to 5 (8.33x); at lambda 0 0.2 to 14 (70x)");
+    EXPECT_THROW(holds("at lambda 0, cascade 7 reads the most texels per pixel"),
+                 std::invalid_argument);
+    EXPECT_THROW(holds("at lambda zero, cascade 0 holds no receiver"), std::invalid_argument);
+    EXPECT_THROW(holds("at lambda 0, cascade 0 reads the best texels per pixel"),
+                 std::invalid_argument);
+    // These facts belong to the cascades chart.
+    EXPECT_THROW(checkChartFactKnown(write("s2.csv", cascadesCsv()) + "#acne",
+                                     "at lambda 1, cascade 0 holds no receiver"),
+                 std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace pcf

@@ -802,7 +802,7 @@ TEST_F(Layout, ChartStepsInPresentationSetTheChartAtProjectorSize) {
     std::vector<LessonStep> steps;
     for (const char* file :
          {"11-speed-and-accuracy", "13-shimmer-and-snapping", "14-bias-trade-off",
-          "18-which-setting-a-scene-needs", "20-light-bleeding"}) {
+          "18-which-setting-a-scene-needs", "20-light-bleeding", "21-cascades-and-splits"}) {
         Lesson lesson =
             parseLessonFile(PCFSCOPE_SOURCE_DIR "/lessons/" + std::string(file) + ".toml");
         for (const LessonStep& step : lesson.steps) steps.push_back(step);

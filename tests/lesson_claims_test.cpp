@@ -151,6 +151,31 @@ TEST(LessonClaims, FlickersReadsTheStepsFlickerTrace) {
     EXPECT_EQ(why, "no sweep");
 }
 
+// `steady` reads the same curve: it holds when no two consecutive frames differ by STEADY_CHANGE
+// (1/512) or more, and not where the point is off every receiver.
+TEST(LessonClaims, SteadyReadsTheStepsFlickerTrace) {
+    Trace t = bilinearTrace();
+    StepClaim c{"steady", 1, parseClaim("steady")};
+    EXPECT_TRUE(isMotionClaim(c));
+    ClaimWorld world;
+    std::vector<float> curve;
+    world.flickerCurve = [&]() { return std::variant<std::vector<float>, std::string>(curve); };
+    std::string why;
+    curve = {0.375f, 0.375f, 0.375f};
+    EXPECT_TRUE(claimHolds(c, t, StepContext{}, world, &why));
+    EXPECT_NE(why.find("largest change between two frames 0 over 3 frames"), std::string::npos)
+        << why;
+    curve = {0.375f, 0.375f + 0.5f * STEADY_CHANGE, 0.375f};  // under a quarter grey level
+    EXPECT_TRUE(claimHolds(c, t, StepContext{}, world));
+    curve = {0.375f, 0.375f, 0.375f + STEADY_CHANGE};  // a creep of 1/512 is a change
+    EXPECT_FALSE(claimHolds(c, t, StepContext{}, world, &why));
+    curve = {0.0f, 1.0f, 0.0f};
+    EXPECT_FALSE(claimHolds(c, t, StepContext{}, world));
+    curve = {0.5f, -1.0f, 0.5f};
+    EXPECT_FALSE(claimHolds(c, t, StepContext{}, world, &why));
+    EXPECT_EQ(why, "frame 1: the point is on no receiver");
+}
+
 TEST(LessonClaims, BadClaimsAreRefusedWithTheReason) {
     auto problem = [](const std::string& text) {
         try {

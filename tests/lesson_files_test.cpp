@@ -111,6 +111,17 @@ TEST(LessonFiles, EveryPlaceholderIsKnownAndFillsFromATrace) {
             const LessonSettings& s = step.settings;
             Trace trace = traceLookup(map, vec2(0.4625f, 0.3875f), 0.5f, 0.5f - s.baseBias(),
                                       s.pcfParams(vec2(0.4625f, 0.3875f), map.width()), s);
+            // A cascaded step's trace names its cascade and the blend band: the example map's
+            // layer stands in for each cascade, the lookup in the first, in its band.
+            if (s.cascades > 1) {
+                PcfMapLayer layer = trace.map.layers.front();
+                trace.map.layers.assign(static_cast<size_t>(s.cascades), layer);
+                for (int k = 0; k < s.cascades; ++k) {
+                    trace.map.layers[static_cast<size_t>(k)].viewDepth = vec2(k, k + 1);
+                }
+                trace.cascadeTexelsPerPixelMax = 1.0f;
+                trace.cascadeBlend = {1, 0.5f, 0.5f, 0.5f * (trace.visibility + 0.5f)};
+            }
             int taps = static_cast<int>(trace.taps.size());
             int fetches = static_cast<int>(trace.fetches.size());
             EXPECT_FALSE(checkPlaceholders(step.text, taps, fetches, step.compare.parts()));

@@ -74,7 +74,9 @@ std::vector<RenderedStep> renderLesson(const std::string& name, glm::ivec2 frame
         renderer.setCamera(seen.camera);
         FramePick pick = framePick(seen.camera, point->posWs, frameSize);
         glm::ivec2 px = pick.pixel;
-        StepView view = stepView(seen, s, point, frameSize);
+        // Cascades are fitted to the lesson's camera, also where the view moves away from it
+        // (magnify, freeze_cascades), as the session fits them.
+        StepView view = stepView(seen, s, point, frameSize, std::nullopt, lesson.scene.camera);
         view.render.writePositions = true;
         renderStepView(renderer, view);
         std::vector<float> visibility = renderer.readVisibility();
@@ -84,6 +86,13 @@ std::vector<RenderedStep> renderLesson(const std::string& name, glm::ivec2 frame
         std::optional<PixelLookup> lookup = tracePixel(renderer, map, s, px);
         EXPECT_TRUE(lookup) << name << ": the step's point is on no receiver";
         if (!lookup) return out;
+        // In a cascaded map's blend band the pixel shows the mix of two cascades' lookups: the
+        // trace names both, as the viewer's does (session.cpp traceAtPixel).
+        if (map.layers() > 1 && lookup->cascade.covered) {
+            lookup->trace.cascadeBlend =
+                pinnedCascadeBlend(map, lesson.scene.light, s, lookup->trace.params, *point,
+                                   lookup->cascade.index, lookup->dzduv, lesson.scene.camera);
+        }
         glm::vec3 drawn(positions[at0 * 4], positions[at0 * 4 + 1], positions[at0 * 4 + 2]);
         bool plane = std::holds_alternative<Plane>(
             lesson.scene.objects[static_cast<size_t>(point->object)].shape);
@@ -155,7 +164,9 @@ TEST_F(LessonPixels, EveryStepsPixelShowsWhatItsTextSays) {
                              std::to_string(frameSize.x) + "x" + std::to_string(frameSize.y));
                 EXPECT_TRUE(r.inFrame);
                 EXPECT_LT(r.pointMiss, 1e-3f);
-                EXPECT_NEAR(r.gpuVisibility, t.visibility, 1e-5f);
+                // What the pixel shows: the lookup's visibility, or in a blend band the mix.
+                float shown = t.cascadeBlend.next >= 0 ? t.cascadeBlend.blended : t.visibility;
+                EXPECT_NEAR(r.gpuVisibility, shown, 1e-5f);
                 for (int k = 0; k < 2; ++k) {
                     EXPECT_NEAR(t.uv[k], t0.uv[k], 1e-6f);
                     EXPECT_NEAR(t.pos.frac[k], t0.pos.frac[k], 1e-6f);

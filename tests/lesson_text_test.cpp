@@ -204,6 +204,8 @@ void makeCascaded(Trace& tr) {
     }
     tr.layer = 1;
     tr.cascadeTexelsPerPixelMax = 2.5f;
+    // In the blend band: cascade 2 weighs 0.25 and sees 0.4.
+    tr.cascadeBlend = {2, 0.25f, 0.4f, tr.visibility + 0.25f * (0.4f - tr.visibility)};
 }
 
 // The cascade placeholders read the layer the lookup read; n/a with one map, and the density
@@ -242,6 +244,26 @@ TEST(LessonText, MomentNamesComeFromTheMomentMethodsTrace) {
     EXPECT_EQ(fill("{mean} {moment[0]}", exampleTrace(PCF_NAIVE)), "n/a n/a");
     EXPECT_TRUE(checkPlaceholders("{moment[4]}"));
     EXPECT_TRUE(checkPlaceholders("{moment[0].x}"));
+}
+
+// The blend band's names: the next cascade, its weight, its own visibility and the mix the pixel
+// shows; outside the band the weight is 0, no next cascade is named and the result is the
+// cascade's own visibility; n/a with one map.
+TEST(LessonText, TheBlendBandNamesBothLookups) {
+    Trace tr = exampleTrace(PCF_NAIVE);
+    EXPECT_EQ(fill("{cascade.blend_weight} {cascade.blended}", tr), "n/a n/a");
+    makeCascaded(tr);
+    tr.visibility = 0.8f;
+    tr.cascadeBlend.blended = 0.7f;
+    EXPECT_EQ(fill("{cascade.next} {cascade.blend_weight} {cascade.next_visibility} "
+                   "{cascade.blended}",
+                   tr),
+              "2 0.25 0.4 0.7");
+    tr.cascadeBlend = {};
+    EXPECT_EQ(fill("{cascade.next} {cascade.blend_weight} {cascade.next_visibility} "
+                   "{cascade.blended}",
+                   tr),
+              "n/a 0 n/a 0.8");
 }
 
 TEST(LessonText, EveryListedNameFills) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 
 #include "base/input_error.h"
@@ -21,6 +22,8 @@ namespace {
 constexpr double SUN_FROM_DEG = 90.0, SUN_TO_DEG = 2.0;
 constexpr double BIAS_FROM = 0.0005, BIAS_TO = 0.064;
 constexpr double MAP_FROM = 32.0, MAP_TO = 2048.0;
+// The turn: an eighth of a turn, the stability cascades sweep's (measure/stability_cascades.h).
+constexpr double TURN_FROM_DEG = 0.0, TURN_TO_DEG = 45.0;
 
 // t in [0,1] across the frames.
 double progress(int k, int frames) {
@@ -51,6 +54,10 @@ double animationSweepValue(const AnimationOptions& o, int k) {
             return logLerp(o.from.value_or(BIAS_FROM), o.to.value_or(BIAS_TO), t);
         case AnimationSweep::MapSize:
             return std::round(logLerp(o.from.value_or(MAP_FROM), o.to.value_or(MAP_TO), t));
+        case AnimationSweep::Turn: {
+            double from = o.from.value_or(TURN_FROM_DEG), to = o.to.value_or(TURN_TO_DEG);
+            return from + (to - from) * t;
+        }
     }
     return 0.0;
 }
@@ -92,6 +99,11 @@ std::string animationSweepWords(const AnimationOptions& o, int k) {
             return frame + "The shadow map " + (last >= first ? "grows" : "shrinks") + " from " +
                    numberWords(first, 0) + " to " + numberWords(last, 0) +
                    " texels a side; now it has " + numberWords(now, 0) + ".";
+        case AnimationSweep::Turn:
+            return frame + "The camera turns about the ringed point from " + numberWords(first, 0) +
+                   " to " + numberWords(last, 0) +
+                   " degrees while the sun stands still; now it has turned " + numberWords(now, 1) +
+                   " degrees.";
     }
     return frame;
 }
@@ -121,7 +133,11 @@ AnimationOptions stepAnimationOptions(const LessonStep& step) {
 }
 
 Animation::Animation(Session& session, const AnimationOptions& options)
-    : mSession(session), mOptions(options), mBase(session.settings()), mScene(session.scene()) {
+    : mSession(session),
+      mOptions(options),
+      mBase(session.settings()),
+      mScene(session.scene()),
+      mPivot(session.point()) {
     const Lesson& lesson = session.lesson();
     int step = session.step();
     if (step >= 0 && step < session.stepCount()) {
@@ -188,11 +204,29 @@ void Animation::apply(int k) {
         case AnimationSweep::MapSize:
             s.mapSize = static_cast<int>(v);
             break;
+        case AnimationSweep::Turn:
+            turnCamera(static_cast<float>(v));
+            break;
     }
     mSession.setSettings(s);
     mSession.setMotion(FrameMotion{animationSweepWords(mOptions, k), mBase, mStepsOwn,
                                    std::string(animationSweepName(mOptions.sweep)), k + 1,
                                    mOptions.frames, v});
+}
+
+// The camera turned by `degrees` about the vertical line through the pinned point (else the
+// view's target): eye and target move round it together, so the point keeps its place in the
+// camera's view (its pixel and view depth) while the view direction turns under the light. The
+// point stays pinned, as the lesson pins it.
+void Animation::turnCamera(float degrees) {
+    glm::vec3 pivot = mPivot ? mPivot->posWs : mScene.camera.targetWs;
+    glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0, 1, 0));
+    auto turned = [&](glm::vec3 p) { return pivot + glm::vec3(turn * glm::vec4(p - pivot, 0.0f)); };
+    Camera camera = mScene.camera;
+    camera.eyeWs = turned(camera.eyeWs);
+    camera.targetWs = turned(camera.targetWs);
+    mSession.setCamera(camera);
+    if (mPivot) mSession.pinPoint(*mPivot);
 }
 
 void Animation::restore() {
@@ -202,6 +236,10 @@ void Animation::restore() {
     // Only what the sweep moved: setting the camera again would re-pin the point under its pixel.
     if (mOptions.sweep == AnimationSweep::Sun) mSession.setLight(mScene.light);
     if (mOptions.sweep == AnimationSweep::Camera) mSession.setCamera(mScene.camera);
+    if (mOptions.sweep == AnimationSweep::Turn) {
+        mSession.setCamera(mScene.camera);
+        if (mPivot) mSession.pinPoint(*mPivot);
+    }
     mSession.setSettings(mBase);
 }
 

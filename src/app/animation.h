@@ -92,6 +92,7 @@ class Animation {
 
   private:
     void apply(int k);
+    void turnCamera(float degrees);
     // The pinned point's visibility (and the comparison's) from the session's last trace.
     void record();
     FlickerTrace flickerTrace() const;
@@ -102,6 +103,7 @@ class Animation {
     LessonSettings mBase;
     bool mStepsOwn = false;  // the step's own `animate` (its motion claims are about it)
     Scene mScene;
+    std::optional<ScenePoint> mPivot;  // the turn sweep's: the point pinned before the first frame
     std::vector<float> mCurve;
     std::vector<float> mCompare;
     CompareView* mSplit = nullptr;

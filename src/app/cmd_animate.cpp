@@ -396,8 +396,9 @@ Command addAnimateCommand(CLI::App& app) {
     sub->add_option("--step", o->step, "the lesson step animated (default 1)");
     sub->add_option("--sweep", o->sweep,
                     "what moves: light (texel grid creeping 1/32 texel a frame), camera (1/6 pixel "
-                    "a frame), sun (90 -> 2 deg), bias (0.0005 -> 0.064), map-size (32 -> 2048); "
-                    "default: the step's own `animate`, else light");
+                    "a frame), sun (90 -> 2 deg), bias (0.0005 -> 0.064), map-size (32 -> 2048), "
+                    "turn (the camera turned 0 -> 45 deg about the point); default: the step's "
+                    "own `animate`, else light");
     sub->add_flag("--snap", o->snap, "light: the creeping grid snapped to whole texels");
     sub->add_option("--frames", o->frames, "frames (default 120, or the step's own `animate`'s)");
     sub->add_option("--fps", o->fps, "frames per second of the videos (default 12)");

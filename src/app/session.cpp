@@ -376,10 +376,11 @@ void Session::traceAtPixel() {
         mLookup->trace.cascadeTexelsPerPixelMax = static_cast<float>(
             mCascadeDensity[static_cast<size_t>(mLookup->trace.layer)].texelsPerPixelMax);
     }
-    // In a cascade's blend band the pixel mixes in the next cascade's lookup of the point.
-    if (mLookup && mPoint) {
-        addCascadeBlend(mLookup->trace, mMap, scene(), mSettings, *mPoint,
-                        mRenderer->cascadeCamera());
+    // A cascaded map's blend band at the pinned point: the next cascade's lookup and its weight.
+    if (mLookup && mPoint && mMap.layers() > 1 && mLookup->cascade.covered) {
+        mLookup->trace.cascadeBlend = pinnedCascadeBlend(
+            mMap, mLesson.scene.light, mSettings, mLookup->trace.params, *mPoint,
+            mLookup->cascade.index, mLookup->dzduv, cascadeCamera().value_or(mLesson.scene.camera));
     }
     if (mLookup) mTrace = mLookup->trace;
     tracePartsOfText();

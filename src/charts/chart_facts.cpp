@@ -1,8 +1,10 @@
 #include "charts/chart_facts.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string_view>
@@ -12,6 +14,7 @@
 #include "charts/chart_axes.h"
 #include "charts/speed_chart.h"
 #include "charts/stability_bleed_figures.h"
+#include "charts/stability_cascades_figures.h"
 #include "charts/stability_chart.h"
 #include "charts/stability_figures.h"
 #include "charts/step_chart.h"
@@ -183,6 +186,116 @@ ChartFactAnswer acneHump(const ChartData& c, const std::string& line) {
                  points.back().y < TRADEOFF_ONSET;
     return {holds,
             rateAt(points.front()) + ", peak " + rateAt(*peak) + ", " + rateAt(points.back())};
+}
+
+// The cascades chart's lines (stability_cascades_figures.h, as it draws them): per cascade
+// ("cascade K"), its texels per pixel (the median over its receivers) at each lambda swept.
+std::vector<ChartLine> cascadeLines(const ChartData& c) {
+    std::vector<StabilityRow> rows = parseStabilityCsv(readInputFile(c.path), c.path);
+    LineChartSpec spec = cascadeChartSpec(rows, "", 0.0f);
+    if (spec.panels.empty()) return {};
+    return spec.panels.front().lines;
+}
+
+// A number of the words ("0.5"), or std::invalid_argument naming what it should be.
+double factNumber(const std::string& text, const char* what) {
+    char* end = nullptr;
+    double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size()) {
+        throw std::invalid_argument("'" + text + "' is not " + what);
+    }
+    return v;
+}
+
+// Line `label`'s value at lambda x; nullopt where the line has no point there (its cascade holds
+// no receiver on screen).
+std::optional<double> cascadeAt(const ChartLine& line, double lambda) {
+    for (glm::dvec2 p : line.points) {
+        if (std::fabs(p.x - lambda) < 1e-9) return p.y;
+    }
+    return std::nullopt;
+}
+
+std::string cascadeValueText(const ChartLine& line, double lambda) {
+    std::optional<double> v = cascadeAt(line, lambda);
+    return line.label + " " + (v ? chartTickText(*v) : std::string("none"));
+}
+
+// "at lambda L, cascade K reads the fewest texels per pixel" (or "the most"): at L, line
+// "cascade K" is strictly below (above) every other line with a point there.
+ChartFactAnswer cascadeExtreme(const ChartData& c, const std::string& arg) {
+    size_t comma = arg.find(", cascade ");
+    size_t verb = arg.find(" reads the ");
+    if (comma == std::string::npos || verb == std::string::npos || verb < comma) {
+        throw std::invalid_argument(
+            "say: at lambda L, cascade K reads the fewest (most) texels "
+            "per pixel");
+    }
+    double lambda = factNumber(arg.substr(0, comma), "a lambda");
+    std::string name = "cascade " + arg.substr(comma + 10, verb - comma - 10);
+    std::string which = arg.substr(verb + 11);
+    if (which != "fewest" && which != "most") {
+        throw std::invalid_argument("'" + which + "': say the fewest or the most");
+    }
+    std::vector<ChartLine> lines = cascadeLines(c);
+    auto mine = std::find_if(lines.begin(), lines.end(),
+                             [&](const ChartLine& l) { return l.label == name; });
+    if (mine == lines.end()) throw std::invalid_argument("'" + name + "' is no line of the chart");
+    std::optional<double> v = cascadeAt(*mine, lambda);
+    if (!v) return {false, cascadeValueText(*mine, lambda)};
+    std::string why;
+    bool holds = true;
+    for (const ChartLine& other : lines) {
+        why += (why.empty() ? "" : ", ") + cascadeValueText(other, lambda);
+        std::optional<double> o = cascadeAt(other, lambda);
+        if (&other == &*mine || !o) continue;
+        if (which == "fewest" ? *o <= *v : *o >= *v) holds = false;
+    }
+    return {holds, "at lambda " + chartTickText(lambda) + ": " + why};
+}
+
+// "at lambda L, cascade K holds no receiver": line "cascade K" has no point at L.
+ChartFactAnswer cascadeEmpty(const ChartData& c, const std::string& arg) {
+    size_t comma = arg.find(", cascade ");
+    if (comma == std::string::npos) {
+        throw std::invalid_argument("say: at lambda L, cascade K holds no receiver");
+    }
+    double lambda = factNumber(arg.substr(0, comma), "a lambda");
+    std::string name = "cascade " + arg.substr(comma + 10);
+    for (const ChartLine& line : cascadeLines(c)) {
+        if (line.label == name) return {!cascadeAt(line, lambda), cascadeValueText(line, lambda)};
+    }
+    throw std::invalid_argument("'" + name + "' is no line of the chart");
+}
+
+// The ratio of the most to the fewest texels per pixel over the cascades at lambda (those with
+// a point there), and the words that show it.
+std::pair<double, std::string> cascadeSpread(const std::vector<ChartLine>& lines, double lambda) {
+    double lo = 0.0, hi = 0.0;
+    for (const ChartLine& line : lines) {
+        std::optional<double> v = cascadeAt(line, lambda);
+        if (!v || !(*v > 0.0)) continue;
+        lo = lo > 0.0 ? std::min(lo, *v) : *v;
+        hi = std::max(hi, *v);
+    }
+    double ratio = lo > 0.0 ? hi / lo : 0.0;
+    char times[32];
+    std::snprintf(times, sizeof times, "%.3gx", ratio);
+    return {ratio, "at lambda " + chartTickText(lambda) + " " + chartTickText(lo) + " to " +
+                       chartTickText(hi) + " (" + times + ")"};
+}
+
+// "the cascades spread less at lambda A than at lambda B": the ratio of the most to the fewest
+// texels per pixel over the cascades (those with receivers) is smaller at A than at B, both
+// measured on two cascades or more.
+ChartFactAnswer cascadesSpreadLess(const ChartData& c, const std::string& arg) {
+    size_t than = arg.find(" than at lambda ");
+    double a = factNumber(arg.substr(0, than), "a lambda");
+    double b = factNumber(arg.substr(than + 16), "a lambda");
+    std::vector<ChartLine> lines = cascadeLines(c);
+    auto [ra, wa] = cascadeSpread(lines, a);
+    auto [rb, wb] = cascadeSpread(lines, b);
+    return {ra > 0.0 && rb > 0.0 && ra < rb, wa + "; " + wb};
 }
 
 // "measured against the KIND truth": every row's truth (bench.csv's truth column) is KIND.
@@ -437,6 +550,9 @@ constexpr FactEntry FACTS[] = {
     {"", " degrees", "acne", acneCrossing},
     {"", ": rises over the onset and falls back", "acne", acneHump},
     {"", "", "bleed", bleedCleanFrom, ": leak falls under 0.001 from "},
+    {"at lambda ", " texels per pixel", "cascades", cascadeExtreme},
+    {"at lambda ", " holds no receiver", "cascades", cascadeEmpty},
+    {"the cascades spread less at lambda ", "", "cascades", cascadesSpreadLess, " than at lambda "},
     {"the choice is ", "", ADVISE_FACTS, choiceIs},
     {"the runner-up is ", "", ADVISE_FACTS, runnerUpIs},
     {"", " settings meet the budget", ADVISE_FACTS, feasibleCount},

@@ -32,6 +32,14 @@
 //   L: leak falls under 0.001 from K V        #bleed: at the chart's gap, the first value of
 //                                             setting K on line L ("vsm 5x5") whose leak (99th
 //                                             percentile) is under 0.001 is V ("lbr 0.3")
+//   at lambda L, cascade K reads the fewest   #cascades: at split lambda L, cascade K's texels
+//     texels per pixel (or the most)          per screen pixel (the median its line draws) is
+//                                             strictly below (above) every other cascade's there
+//   at lambda L, cascade K holds no receiver  #cascades: K's line has no point at L (no receiver
+//                                             on screen reads it)
+//   the cascades spread less at lambda A than #cascades: the most over the fewest texels per
+//     at lambda B                             pixel over the cascades with receivers is smaller
+//                                             at A than at B
 //
 //   the choice is X                           an advise chart (step_chart.h: DIR/advise.csv):
 //   the runner-up is X                        the setting advise chose (the cheapest other one

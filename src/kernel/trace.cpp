@@ -76,15 +76,9 @@ void weighPcssSearch(Trace& tr) {
 std::optional<TraceCascade> cascadeOfTrace(const Trace& trace) {
     if (trace.map.layers.size() < 2) return std::nullopt;
     const PcfMapLayer& layer = trace.map.layers[static_cast<size_t>(trace.layer)];
-    bool band = trace.cascadeBlend.next >= 0 && trace.cascadeBlend.weight > 0.0f;
-    return TraceCascade{trace.layer,
-                        static_cast<int>(trace.map.layers.size()),
-                        layer.viewDepth.x,
-                        layer.viewDepth.y,
-                        layer.texelWs,
-                        trace.cascadeTexelsPerPixelMax,
-                        band ? trace.cascadeBlend.weight : 0.0f,
-                        band ? trace.cascadeBlend.blended : trace.visibility};
+    return TraceCascade{trace.layer,       static_cast<int>(trace.map.layers.size()),
+                        layer.viewDepth.x, layer.viewDepth.y,
+                        layer.texelWs,     trace.cascadeTexelsPerPixelMax};
 }
 
 Trace traceLookup(const ShadowMap& map, vec2 uv, float z, float ref, const PcfParams& prm) {

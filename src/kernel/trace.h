@@ -152,10 +152,6 @@ struct TraceCascade {
     float farZ = 0.0f;
     float texelWs = 0.0f;
     float texelsPerPixelMax = -1.0f;
-    // The blend band at the lookup (Trace::cascadeBlend): the weight of the next cascade's
-    // visibility in the frame (0 outside the band) and the visibility the frame shows.
-    float blendWeight = 0.0f;
-    float blendedVisibility = 1.0f;
 };
 std::optional<TraceCascade> cascadeOfTrace(const Trace& trace);
 

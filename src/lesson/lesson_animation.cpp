@@ -17,13 +17,15 @@ std::string_view animationSweepName(AnimationSweep sweep) {
             return "bias";
         case AnimationSweep::MapSize:
             return "map-size";
+        case AnimationSweep::Turn:
+            return "turn";
     }
     return "?";
 }
 
 std::optional<AnimationSweep> animationSweepFromName(std::string_view name) {
     for (AnimationSweep s : {AnimationSweep::Light, AnimationSweep::Camera, AnimationSweep::Sun,
-                             AnimationSweep::Bias, AnimationSweep::MapSize}) {
+                             AnimationSweep::Bias, AnimationSweep::MapSize, AnimationSweep::Turn}) {
         if (animationSweepName(s) == name) return s;
     }
     return std::nullopt;
@@ -41,6 +43,8 @@ std::string_view animationSweepUnit(AnimationSweep sweep) {
             return "constant bias";
         case AnimationSweep::MapSize:
             return "texels a side";
+        case AnimationSweep::Turn:
+            return "deg turned";
     }
     return "";
 }
@@ -64,6 +68,9 @@ std::optional<std::string> animationEndProblem(AnimationSweep sweep, double valu
             break;
         case AnimationSweep::MapSize:
             lo = MIN_MAP_SIZE, hi = MAX_MAP_SIZE;
+            break;
+        case AnimationSweep::Turn:
+            lo = -180.0, hi = 180.0;
             break;
     }
     if (value <= hi && value >= lo && !(openLo && value == lo)) return std::nullopt;

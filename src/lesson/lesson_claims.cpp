@@ -174,6 +174,7 @@ class ParsedClaim {
         OnGround,
         Bits,
         Flickers,
+        Steady,
         Compare,
         Chart,
         ChartFact
@@ -228,6 +229,7 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
     if (t == "failing taps nearer") c->kind = ParsedClaim::FailingNearer;
     if (t == "on the ground") c->kind = ParsedClaim::OnGround;
     if (t == "flickers") c->kind = ParsedClaim::Flickers;
+    if (t == "steady") c->kind = ParsedClaim::Steady;
     if (t.rfind("bits ", 0) == 0) {
         c->kind = ParsedClaim::Bits;
         c->bits = trim(std::string_view(t).substr(5));
@@ -244,7 +246,7 @@ std::shared_ptr<const ParsedClaim> parseClaim(std::string_view text) {
     if (at == std::string_view::npos) {
         throw std::invalid_argument(
             "no comparison (=, !=, <, <=, >, >=, ~) and not a keyword (lit, shadowed, penumbra, "
-            "failing taps nearer, on the ground, flickers, chart: ...)");
+            "failing taps nearer, on the ground, flickers, steady, chart: ...)");
     }
     c->op = op;
     std::string_view rhs = std::string_view(t).substr(at + op.size());
@@ -293,7 +295,8 @@ bool isChartClaim(const StepClaim& claim) {
 }
 
 bool isMotionClaim(const StepClaim& claim) {
-    return claim.parsed && claim.parsed->kind == ParsedClaim::Flickers;
+    return claim.parsed && (claim.parsed->kind == ParsedClaim::Flickers ||
+                            claim.parsed->kind == ParsedClaim::Steady);
 }
 
 namespace {
@@ -369,6 +372,9 @@ std::string claimInWords(const StepClaim& claim) {
             return "the reads' comparison bits are " + claim.parsed->bits;
         case ParsedClaim::Flickers:
             return "the point's visibility jumps between frames of the step's own sweep";
+        case ParsedClaim::Steady:
+            return "the point's visibility stays the same over every frame of the step's own "
+                   "sweep";
         case ParsedClaim::Chart:
         case ParsedClaim::ChartFact:
             return "";
@@ -401,10 +407,11 @@ bool failingNearer(const Trace& t, std::string* why) {
     return true;
 }
 
-// Whether the curve jumps by FLICKER_JUMP or more between two consecutive frames; `why` gets its
-// largest change and where, or the frame whose point is on no receiver.
-bool curveFlickers(const std::vector<float>& curve, std::string* why) {
-    float most = 0.0f;
+// The curve's largest change between two consecutive frames, in `most`; `why` gets it and where,
+// with `rule` (what the claim asks of it), or the frame whose point is on no receiver (false).
+bool largestChange(const std::vector<float>& curve, const std::string& rule, float& most,
+                   std::string* why) {
+    most = 0.0f;
     size_t at = 0;
     for (size_t k = 0; k < curve.size(); ++k) {
         if (curve[k] < 0.0f) {
@@ -423,10 +430,23 @@ bool curveFlickers(const std::vector<float>& curve, std::string* why) {
             "largest change between two frames " + numberText(most) +
             (most > 0.0f ? " (frame " + std::to_string(at - 1) + " to " + std::to_string(at) + ")"
                          : std::string()) +
-            " over " + std::to_string(curve.size()) + " frames; flicker is a jump of " +
-            numberText(FLICKER_JUMP) + " or more";
+            " over " + std::to_string(curve.size()) + " frames; " + rule;
     }
-    return most >= FLICKER_JUMP;
+    return true;
+}
+
+// Whether the curve jumps by FLICKER_JUMP or more between two consecutive frames.
+bool curveFlickers(const std::vector<float>& curve, std::string* why) {
+    float most = 0.0f;
+    std::string rule = "flicker is a jump of " + numberText(FLICKER_JUMP) + " or more";
+    return largestChange(curve, rule, most, why) && most >= FLICKER_JUMP;
+}
+
+// Whether the curve changes by less than STEADY_CHANGE between every two consecutive frames.
+bool curveSteady(const std::vector<float>& curve, std::string* why) {
+    float most = 0.0f;
+    std::string rule = "steady is a change under 1/512 every frame";
+    return largestChange(curve, rule, most, why) && most < STEADY_CHANGE;
 }
 
 bool compare(double a, const std::string& op, double b, double tolerance) {
@@ -452,15 +472,17 @@ bool bitsHold(const ParsedClaim& c, const Trace& trace, std::string* why) {
     return got == c.bits;
 }
 
-// flickers: decided on the step's flicker curve, which the world computes (held without one).
-bool flickerClaimHolds(const ClaimWorld& world, std::string* why) {
+// flickers, steady: decided on the step's flicker curve, which the world computes (held without
+// one).
+bool flickerClaimHolds(const ClaimWorld& world, bool steady, std::string* why) {
     if (!world.flickerCurve) return true;
     std::variant<std::vector<float>, std::string> curve = world.flickerCurve();
     if (auto* problem = std::get_if<std::string>(&curve)) {
         tellWhy(why, *problem);
         return false;
     }
-    return curveFlickers(std::get<std::vector<float>>(curve), why);
+    const std::vector<float>& values = std::get<std::vector<float>>(curve);
+    return steady ? curveSteady(values, why) : curveFlickers(values, why);
 }
 
 // chart: A faster (more accurate) than B, read off the step's chart by the world (held without
@@ -526,7 +548,9 @@ bool claimHolds(const StepClaim& claim, const Trace& trace, const StepContext& c
             tellWhy(why, "the point is not on a plane");
             return world.onPlane;
         case ParsedClaim::Flickers:
-            return flickerClaimHolds(world, why);
+            return flickerClaimHolds(world, false, why);
+        case ParsedClaim::Steady:
+            return flickerClaimHolds(world, true, why);
         case ParsedClaim::Chart:
             return chartOrderHolds(c, world, why);
         case ParsedClaim::ChartFact:

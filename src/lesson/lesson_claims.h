@@ -56,6 +56,10 @@ namespace pcf {
 // the range, which a filter's smooth creep (1/32 texel a frame) never makes and nearest's 0 <-> 1
 // always does.
 constexpr float FLICKER_JUMP = 0.5f;
+// The largest change between two consecutive frames that `steady` allows: 1/512, a quarter of
+// an 8-bit grey level, the change the stability sweeps count as visible
+// (measure/failure_measures.h VISIBLE_CHANGE).
+constexpr float STEADY_CHANGE = 1.0f / 512.0f;
 
 // What a claim may read besides the trace and the step's context.
 struct ClaimWorld {

@@ -27,6 +27,23 @@ glm::dvec3 lightSpace(const glm::mat4& shadowClipFromWorld, glm::dvec3 posWs) {
     return glm::dvec3(clip) / clip.w * 0.5 + 0.5;
 }
 
+// The receiver's plane in the map fitted by shadowClipFromWorld, from two steps along the surface
+// instead of two screen pixels: any two independent directions give the same dz/duv of a plane
+// (pcfReceiverPlaneDzDuv). In double, so the steps' differences keep their digits.
+glm::vec2 receiverPlane(const glm::mat4& shadowClipFromWorld, const ScenePoint& point) {
+    glm::dvec3 nd(point.normalWs);
+    glm::dvec3 t1 = glm::normalize(
+        glm::cross(nd, std::fabs(nd.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    glm::dvec3 t2 = glm::cross(nd, t1);
+    const double step = 1e-3;
+    glm::dvec3 p(point.posWs);
+    glm::dvec3 d1 = lightSpace(shadowClipFromWorld, p + step * t1) -
+                    lightSpace(shadowClipFromWorld, p - step * t1);
+    glm::dvec3 d2 = lightSpace(shadowClipFromWorld, p + step * t2) -
+                    lightSpace(shadowClipFromWorld, p - step * t2);
+    return pcfReceiverPlaneDzDuv(glm::vec3(d1), glm::vec3(d2));
+}
+
 }  // namespace
 
 std::optional<ScenePoint> seenPoint(const Scene& scene, glm::vec3 pointWs) {
@@ -136,39 +153,29 @@ Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& sha
     Trace trace = traceLookup(map, at.uv, at.z0, at.ref, prm, s, at.dzduv, at.cascade.index);
     // Past the shadow distance no cascade covers the point: the camera pass draws it lit.
     if (!at.cascade.covered) trace.visibility = 1.0f;
-    addCascadeBlend(trace, map, scene, s, point, cascadeCamera);
+    if (at.cascade.covered && map.layers() > 1) {
+        trace.cascadeBlend = pinnedCascadeBlend(map, scene.light, s, trace.params, point,
+                                                at.cascade.index, at.dzduv, cascadeCamera);
+    }
     return trace;
 }
 
-void addCascadeBlend(Trace& trace, const ShadowMap& map, const Scene& scene,
-                     const LessonSettings& s, const ScenePoint& point,
-                     const Camera& cascadeCamera) {
-    trace.cascadeBlend = TraceCascadeBlend{};
-    trace.cascadeBlend.nextVisibility = trace.visibility;
-    trace.cascadeBlend.blended = trace.visibility;
-    const MapSpec& spec = map.spec();
-    if (spec.layers.size() < 2 || trace.layer < 0 ||
-        trace.layer + 1 >= static_cast<int>(spec.layers.size())) {
-        return;
+TraceCascadeBlend pinnedCascadeBlend(const ShadowMap& map, const Light& light,
+                                     const LessonSettings& s, const PcfParams& prm,
+                                     const ScenePoint& point, int layer, glm::vec2 dzduv,
+                                     const Camera& cascadeCamera) {
+    const std::vector<PcfMapLayer>& layers = map.spec().layers;
+    glm::vec2 nextPlane(0.0f);
+    if (layer + 1 < static_cast<int>(layers.size())) {
+        nextPlane =
+            receiverPlane(layers[static_cast<size_t>(layer) + 1].shadowClipFromWorld, point);
     }
     float viewDepth =
         pcfViewDepth(point.posWs, cascadeCamera.eyeWs, cameraViewDirWs(cascadeCamera));
-    float weight =
-        pcfCascadeBlendWeight(viewDepth, spec.layers[static_cast<size_t>(trace.layer)].viewDepth,
-                              s.cascadeBlend, trace.layer, static_cast<int>(spec.layers.size()));
-    if (!(weight > 0.0f)) return;
-    // The next cascade's own lookup of the point: its fit, texel size and receiver plane.
-    PinnedLookup next =
-        pinnedLookupIn(scene, spec, pointCascadeOfLayer(spec, trace.layer + 1), s, point);
-    PcfParams prm = s.pcfParams(next.uv, map.width(), trace.params.penumbraScale);
-    prm.depthNear = trace.params.depthNear;
-    prm.depthFar = trace.params.depthFar;
-    Trace nextTrace =
-        traceLookup(map, next.uv, next.z0, next.ref, prm, s, next.dzduv, trace.layer + 1);
-    trace.cascadeBlend.next = trace.layer + 1;
-    trace.cascadeBlend.weight = weight;
-    trace.cascadeBlend.nextVisibility = nextTrace.visibility;
-    trace.cascadeBlend.blended = pcfCascadeBlend(trace.visibility, nextTrace.visibility, weight);
+    float cosTheta = glm::dot(point.normalWs, toLightWs(light, point.posWs));
+    CascadeLookup c = cascadeVisibilityIn(map, layer, viewDepth, s, prm, point.posWs,
+                                          point.normalWs, cosTheta, dzduv, nextPlane);
+    return {c.next, c.weight, c.nextVisibility, c.blended};
 }
 
 PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
@@ -192,24 +199,11 @@ PinnedLookup pinnedLookupIn(const Scene& scene, const MapSpec& map, const PointC
     PcfReceiverLookup at =
         pcfReceiverLookup(shadowClipFromWorld, point.posWs, n, glm::dot(n, toLight), s.modeId(),
                           s.baseBias(), s.slopeBias, s.slopeMax, s.normalOffset, layer.texelWs);
-    // The receiver's plane, from two steps along the surface instead of two screen pixels: any
-    // two independent directions give the same dz/duv of a plane (pcfReceiverPlaneDzDuv). In
-    // double, so the steps' differences keep their digits.
-    glm::dvec3 nd(n);
-    glm::dvec3 t1 = glm::normalize(
-        glm::cross(nd, std::fabs(nd.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
-    glm::dvec3 t2 = glm::cross(nd, t1);
-    const double step = 1e-3;
-    glm::dvec3 p(point.posWs);
-    glm::dvec3 d1 = lightSpace(shadowClipFromWorld, p + step * t1) -
-                    lightSpace(shadowClipFromWorld, p - step * t1);
-    glm::dvec3 d2 = lightSpace(shadowClipFromWorld, p + step * t2) -
-                    lightSpace(shadowClipFromWorld, p - step * t2);
     PinnedLookup out;
     out.uv = glm::vec2(at.u, at.v);
     out.z0 = at.z0;
     out.ref = at.ref;
-    out.dzduv = pcfReceiverPlaneDzDuv(glm::vec3(d1), glm::vec3(d2));
+    out.dzduv = receiverPlane(shadowClipFromWorld, point);
     out.cascade = cascade;
     out.layerFit = shadowClipFromWorld;
     return out;

@@ -76,8 +76,7 @@ PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWor
 PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
                           const LessonSettings& s, const ScenePoint& point,
                           const Camera& cascadeCamera);
-// The same in a layer already picked (`cascade`, of `map`'s layers): the next cascade's lookup
-// in the blend band.
+// The same in a layer already picked (`cascade`, of `map`'s layers).
 PinnedLookup pinnedLookupIn(const Scene& scene, const MapSpec& map, const PointCascade& cascade,
                             const LessonSettings& s, const ScenePoint& point);
 
@@ -105,13 +104,19 @@ Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& sha
                   const LessonSettings& s, const ScenePoint& point);
 Trace tracePinned(const ShadowMap& map, const Scene& scene, const glm::mat4& shadowClipFromWorld,
                   const LessonSettings& s, const ScenePoint& point, const Camera& cascadeCamera);
-// A cascaded map's blend band (cascade_blend > 0) at a pinned point: the weight the camera pass
-// mixes the next cascade in with (shared/pcf_shading.h pcfCascadeBlendWeight), that cascade's
-// own lookup of the point (its fit, texel size and receiver plane) traced on its layer, and the
-// mix (pcfCascadeBlend), into trace.cascadeBlend; the trace's visibility stays the one of the
-// cascade it read. Outside the band, or with one layer, the band says weight 0.
-void addCascadeBlend(Trace& trace, const ShadowMap& map, const Scene& scene,
-                     const LessonSettings& s, const ScenePoint& point, const Camera& cascadeCamera);
+
+// A cascaded map's blend band at the point, which reads cascade `layer` with the receiver plane
+// dzduv (kernel/trace.h TraceCascadeBlend): in the last `cascade_blend` of that cascade's view
+// depths (measured from cascadeCamera), the next cascade's own lookup of the point (its receiver
+// plane in that cascade's fit) and the weight the camera pass mixes it in with (the shared
+// kernel's pcfCascadeBlendWeight and pcfCascadeBlend, through scene/cascade_fit.h
+// cascadeVisibilityIn); next -1, weight 0 and the cascade's own visibility elsewhere. prm: the
+// lookup's parameters (Trace::params). tracePinned fills a trace's with it; the session its
+// pinned pixel's.
+TraceCascadeBlend pinnedCascadeBlend(const ShadowMap& map, const Light& light,
+                                     const LessonSettings& s, const PcfParams& prm,
+                                     const ScenePoint& point, int layer, glm::vec2 dzduv,
+                                     const Camera& cascadeCamera);
 
 // The context of a step: its state, and the pixel that shows its point in the frame rendered
 // (framePick).

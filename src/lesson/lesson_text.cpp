@@ -242,14 +242,28 @@ const std::vector<Simple>& simpleNames() {
          [](const Trace& t, const StepContext&) {
              return cascadeValue(t, &TraceCascade::texelsPerPixelMax);
          }},
-        // In the blend band: the next cascade's weight and the visibility the frame shows.
+        // The blend band (kernel/trace.h TraceCascadeBlend): the weight of the next cascade, 0
+        // outside the band; the next cascade and its own visibility, n/a outside the band; the
+        // result shown, the cascade's own visibility outside the band.
         {"cascade.blend_weight",
          [](const Trace& t, const StepContext&) {
-             return cascadeValue(t, &TraceCascade::blendWeight);
+             return cascadeOfTrace(t) ? number(t.cascadeBlend.weight) : Value{};
+         }},
+        {"cascade.next",
+         [](const Trace& t, const StepContext&) {
+             return cascadeOfTrace(t) && t.cascadeBlend.next >= 0 ? integer(t.cascadeBlend.next)
+                                                                   : Value{};
+         }},
+        {"cascade.next_visibility",
+         [](const Trace& t, const StepContext&) {
+             return cascadeOfTrace(t) && t.cascadeBlend.next >= 0
+                        ? number(t.cascadeBlend.nextVisibility)
+                        : Value{};
          }},
         {"cascade.blended",
          [](const Trace& t, const StepContext&) {
-             return cascadeValue(t, &TraceCascade::blendedVisibility);
+             if (!cascadeOfTrace(t)) return Value{};
+             return number(t.cascadeBlend.next >= 0 ? t.cascadeBlend.blended : t.visibility);
          }},
     };
     return names;

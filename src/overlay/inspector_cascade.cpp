@@ -4,7 +4,7 @@
 
 namespace pcf::inspector_detail {
 
-std::string cascadeHeaderText(const Trace& tr, bool hideVisibility) {
+std::string cascadeHeaderText(const Trace& tr) {
     std::optional<TraceCascade> c = cascadeOfTrace(tr);
     if (!c) return "";
     // Texel sizes run from millimetres to metres: three significant digits.
@@ -16,18 +16,22 @@ std::string cascadeHeaderText(const Trace& tr, bool hideVisibility) {
     if (c->texelsPerPixelMax >= 0.0f) {
         text += "  max " + fixed(c->texelsPerPixelMax, 2) + " texels/pixel";
     }
-    // In the blend band the frame mixes in the next cascade's lookup of the point
-    // (shared/pcf_shading.h pcfCascadeBlend): both, the weight and what the frame shows.
-    const TraceCascadeBlend& b = tr.cascadeBlend;
-    if (b.next >= 0 && b.weight > 0.0f) {
-        auto shown = [&](float v) {
-            return hideVisibility ? std::string(HIDDEN_NUMBER) : fixed(v, 4);
-        };
-        text += "\nblend band: cascade " + std::to_string(tr.layer) + " " + shown(tr.visibility) +
-                ", cascade " + std::to_string(b.next) + " " + shown(b.nextVisibility) + ", w " +
-                fixed(b.weight, 3) + " -> " + shown(b.blended);
-    }
     return text;
+}
+
+std::string cascadeBlendText(const Trace& tr, const HiddenNumbers& hidden) {
+    std::optional<TraceCascade> c = cascadeOfTrace(tr);
+    const TraceCascadeBlend& b = tr.cascadeBlend;
+    if (!c || b.next < 0) return "";
+    // The two lookups side by side, the next one's weight and the mix the pixel shows
+    // (shared/pcf_shading.h pcfCascadeBlend); each hides with the result it would give away.
+    auto shown = [&](float v) {
+        return hidden.visibility ? std::string(HIDDEN_NUMBER) : fixed(v, 4);
+    };
+    // (w=0.93 and shown=0.41 one word each: a wrapped line never parts a number from its name.)
+    return "blend: cascade " + std::to_string(c->index) + " " + shown(tr.visibility) +
+           ", cascade " + std::to_string(b.next) + " " + shown(b.nextVisibility) +
+           ", w=" + fixed(b.weight, 4) + ", shown=" + shown(b.blended);
 }
 
 }  // namespace pcf::inspector_detail

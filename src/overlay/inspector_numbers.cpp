@@ -26,8 +26,10 @@ std::string countsText(const Trace& tr, const HiddenNumbers& hidden) {
     counts += "\nuv (" + fixed(tr.uv.x, 4) + ", " + fixed(tr.uv.y, 4) + ")  ref " +
               (hidden.refs ? std::string(HIDDEN_NUMBER) : fixed(tr.ref, 4)) + "  bias " +
               std::string(biasName(tr.bias.modeId()));
-    std::string cascade = cascadeHeaderText(tr, hidden.visibility);
+    std::string cascade = cascadeHeaderText(tr);
     if (!cascade.empty()) counts += "\n" + cascade;
+    std::string blend = cascadeBlendText(tr, hidden);
+    if (!blend.empty()) counts += "\n" + blend;
     return counts;
 }
 
@@ -37,7 +39,6 @@ std::vector<std::string> countsLines(const std::string& counts, const TypeSizes&
     std::replace(oneLine.begin(), oneLine.end(), '\n', ' ');
     oneLine.insert(oneLine.find(" uv ("), "  ");
     if (size_t c = oneLine.find(" cascade "); c != std::string::npos) oneLine.insert(c, "  ");
-    if (size_t c = oneLine.find(" blend band:"); c != std::string::npos) oneLine.insert(c, "  ");
     if (measureText(FontFace::Mono, t.number, oneLine).x <= width) return {oneLine};
     return wrapText(FontFace::Mono, t.number, counts, width);
 }

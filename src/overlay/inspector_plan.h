@@ -449,9 +449,12 @@ constexpr Colour HW8_POINT{0.72f, 1.0f, 0.28f, 1.0f};
 
 Header headerOf(const Trace& tr, const TypeSizes& t, float width);
 // The header's line on the cascade a cascaded map's lookup read (inspector_cascade.cpp): its
-// index of the count, view depths, texel size and measured density, and in the blend band a
-// second line with both cascades' visibilities, the weight and the mix; empty with one map.
-std::string cascadeHeaderText(const Trace& tr, bool hideVisibility);
+// index of the count, view depths, texel size and measured density; empty with one map.
+std::string cascadeHeaderText(const Trace& tr);
+// In a cascaded map's blend band (Trace::cascadeBlend), the line under it: the cascade read's
+// visibility and the next cascade's side by side, the next one's weight and the result shown;
+// "" outside the band or with one map.
+std::string cascadeBlendText(const Trace& tr, const HiddenNumbers& hidden);
 void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, const TypeSizes& t);
 void planInspector(Planner& pl, const InspectorLayout& l, const InspectorModel& m,
                    const TypeSizes& t);
