@@ -8,6 +8,7 @@
 #include <memory>
 #include <sstream>
 
+#include "chart_text_checks.h"
 #include "charts/chart_axes.h"
 #include "charts/stability_bleed_figures.h"
 #include "charts/stability_chart.h"
@@ -209,18 +210,8 @@ TEST_F(StabilityBleed, VsmLeaksAtTheDefaultGapUntilTheReductionTheChartNames) {
     for (glm::ivec2 size : {glm::ivec2(640, 360), glm::ivec2(1280, 720)}) {
         std::vector<ChartTextBox> boxes = lineChartTextBoxes(drawn, size);
         ASSERT_GT(boxes.size(), 5u);
-        for (size_t i = 0; i < boxes.size(); ++i) {
-            const Rect& a = boxes[i].rect;
-            EXPECT_TRUE(a.x >= 0.0f && a.right() <= size.x && a.y >= 0.0f && a.bottom() <= size.y)
-                << boxes[i].text << " at " << size.x;
-            for (size_t j = i + 1; j < boxes.size(); ++j) {
-                if (boxes[i].role == "chart-swatch" && boxes[j].role == "chart-swatch") continue;
-                const Rect& b = boxes[j].rect;
-                EXPECT_TRUE(a.right() <= b.x || b.right() <= a.x || a.bottom() <= b.y ||
-                            b.bottom() <= a.y)
-                    << "'" << boxes[i].text << "' overlaps '" << boxes[j].text << "' at " << size.x;
-            }
-        }
+        std::vector<std::string> faults = testutil::chartTextFaults(boxes, size);
+        EXPECT_TRUE(faults.empty()) << faults.front();
     }
 
     // stability_bleed.csv: vsm's lines carry the swept lbr, and the run's moment format where it

@@ -12,6 +12,7 @@
 #include <memory>
 #include <sstream>
 
+#include "chart_text_checks.h"
 #include "charts/chart_axes.h"
 #include "charts/stability_cascades_figures.h"
 #include "kernel/cascades.h"
@@ -169,18 +170,8 @@ TEST_F(StabilityCascades, TheCsvAndTheChartCarryThePoints) {
     for (glm::ivec2 size : {glm::ivec2(640, 360), glm::ivec2(1280, 720)}) {
         std::vector<ChartTextBox> boxes = lineChartTextBoxes(spec, size);
         ASSERT_GT(boxes.size(), 5u);
-        for (size_t i = 0; i < boxes.size(); ++i) {
-            const Rect& a = boxes[i].rect;
-            EXPECT_TRUE(a.x >= 0.0f && a.right() <= size.x && a.y >= 0.0f && a.bottom() <= size.y)
-                << boxes[i].text << " at " << size.x;
-            for (size_t j = i + 1; j < boxes.size(); ++j) {
-                if (boxes[i].role == "chart-swatch" && boxes[j].role == "chart-swatch") continue;
-                const Rect& b = boxes[j].rect;
-                EXPECT_TRUE(a.right() <= b.x || b.right() <= a.x || a.bottom() <= b.y ||
-                            b.bottom() <= a.y)
-                    << "'" << boxes[i].text << "' overlaps '" << boxes[j].text << "' at " << size.x;
-            }
-        }
+        std::vector<std::string> faults = testutil::chartTextFaults(boxes, size);
+        EXPECT_TRUE(faults.empty()) << faults.front();
     }
 }
 
