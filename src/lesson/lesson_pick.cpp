@@ -187,11 +187,7 @@ PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& fit, const Lesson
                           const ScenePoint& point, const Camera& cascadeCamera) {
     // The layer the point reads (one, or its cascade) and that layer's fit and texel size.
     MapSpec map = cascadedMapSpec(scene, s, fit, cascadeCamera, LESSON_CASCADE_ASPECT);
-    return pinnedLookupIn(scene, map, pointCascade(map, cascadeCamera, point.posWs), s, point);
-}
-
-PinnedLookup pinnedLookupIn(const Scene& scene, const MapSpec& map, const PointCascade& cascade,
-                            const LessonSettings& s, const ScenePoint& point) {
+    PointCascade cascade = pointCascade(map, cascadeCamera, point.posWs);
     const PcfMapLayer& layer = map.layers[static_cast<size_t>(cascade.index)];
     const glm::mat4& shadowClipFromWorld = layer.shadowClipFromWorld;
     glm::vec3 n = point.normalWs;

@@ -76,9 +76,6 @@ PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWor
 PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& shadowClipFromWorld,
                           const LessonSettings& s, const ScenePoint& point,
                           const Camera& cascadeCamera);
-// The same in a layer already picked (`cascade`, of `map`'s layers).
-PinnedLookup pinnedLookupIn(const Scene& scene, const MapSpec& map, const PointCascade& cascade,
-                            const LessonSettings& s, const ScenePoint& point);
 
 // The angle between the point's normal and the direction to the light, degrees: 0 the light
 // straight above, 90 grazing, more: the point faces away from the light.
