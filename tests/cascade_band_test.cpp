@@ -43,8 +43,9 @@ class BlendBandFolder : public ::testing::Test {
         sDir = testutil::makeTempDir("cascade-band");
         sRaw = (sDir / "raw").string();
         testutil::CommandResult r = testutil::runPcfscope(
-            "render --scene long-ground --cascades 4 --shadow-distance 60 --map-size 128 --size 192x108 "
-            "--bias receiver-plane --method poisson --radius 2 --rotate --cascade-blend " +
+            "render --scene long-ground --cascades 4 --shadow-distance 60 --map-size 128 "
+            "--size 192x108 --bias receiver-plane --method poisson --radius 2 --rotate "
+            "--cascade-blend " +
             std::to_string(BAND) + " --raw " + sRaw);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         sVisibility = pcf::readFloatImage(sRaw + "/visibility.exr");
@@ -60,8 +61,7 @@ class BlendBandFolder : public ::testing::Test {
                          cam["view_dir"][c].get<double>();
             }
             BandPixel p{k, 0, 0.0};
-            while (p.layer < COUNT &&
-                   depth >= j["map"]["cascades"][p.layer]["far"].get<double>()) {
+            while (p.layer < COUNT && depth >= j["map"]["cascades"][p.layer]["far"].get<double>()) {
                 ++p.layer;
             }
             if (p.layer + 1 < COUNT) {
@@ -123,8 +123,8 @@ TEST_F(BlendBandFolder, TraceRawShowsTheBandsSecondLookup) {
         if (traced == 1) {  // the text trace says so before the steps
             testutil::CommandResult text =
                 testutil::runPcfscope("trace --raw " + sRaw + " --pixel " + pixelArg(p.k));
-            std::string line = "blend band: cascade " + std::to_string(p.layer + 1) +
-                               " looks the point up too";
+            std::string line =
+                "blend band: cascade " + std::to_string(p.layer + 1) + " looks the point up too";
             EXPECT_LT(text.out.find(line), text.out.find("1. ")) << text.out.substr(0, 600);
         }
     }

@@ -107,12 +107,12 @@ RawFiles rawFilesIn(const std::string& rawDir, bool band, OutputFiles& outputs) 
 // What rendering `settings` into `raw` (empty: no --raw) may take. Measured peaks of
 // `render --raw -o` (box-on-plane, map 1024): 339 MB at 1024x1024, 686 MB at 2048x2048, so 113
 // bytes a pixel over about 220 MB; the encoded EXR held in memory while it is written adds up
-// to 16 more. Added to those (not measured): the next cascade's receiver target, 16 bytes a
-// pixel, and with a blend band its read-back and EXR, 32 more. The map: depth, its read-back,
-// its EXR, each as many times as it has layers (cascades).
+// to 16 more. The next cascade's receiver target of --raw adds 16 bytes a pixel (measured at
+// 1024x1024: 386 -> 403 MB); its read-back and next_dzduv.exr, made after the other files',
+// did not raise the peak (long-ground, 4 cascades, band 0.3: 429 -> 445 MB). The map: depth,
+// its read-back, its EXR, each as many times as it has layers (cascades).
 std::uint64_t renderMemory(const RenderSettings& settings, const RawFiles& raw) {
-    std::uint64_t pixelBytes =
-        130 + (raw.shadow.empty() ? 0u : 16u) + (raw.nextReceiver.empty() ? 0u : 32u);
+    std::uint64_t pixelBytes = 130 + (raw.shadow.empty() ? 0u : 16u);
     return memoryEstimate(256 * MIB, pixelBytes, settings.frameSize.x, settings.frameSize.y) +
            memoryEstimate(0, 12 * settings.cascades, settings.mapSize, settings.mapSize);
 }
