@@ -136,11 +136,13 @@ void SceneRenderer::renderMomentsPass(const RenderSettings& settings) {
 }
 
 void SceneRenderer::ensureTargets(const RenderSettings& settings) {
-    size_t attachments = settings.writePositions ? 6 : 4;
+    size_t attachments = settings.writePositions ? 7 : 4;
     if (mFrame.width != settings.frameSize.x || mFrame.height != settings.frameSize.y ||
         !mFrame.framebuffer || mFrame.colors.size() != attachments) {
         std::vector<GLenum> formats = {GL_RGBA8, GL_RGBA32F, GL_R32F, GL_RGBA32F};
-        if (settings.writePositions) formats.insert(formats.end(), {GL_RGBA32F, GL_RGBA32F});
+        if (settings.writePositions) {
+            formats.insert(formats.end(), {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F});
+        }
         mFrame = createOffscreenTarget(settings.frameSize.x, settings.frameSize.y, formats,
                                        GL_DEPTH_COMPONENT24);
     }
@@ -245,6 +247,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
         glClearNamedFramebufferfv(fbo, GL_COLOR, 3, zero);
     }
     if (target.colors.size() >= 5) glClearNamedFramebufferfv(fbo, GL_COLOR, 4, zero);
+    if (target.colors.size() >= 7) glClearNamedFramebufferfv(fbo, GL_COLOR, 6, zero);
     const GLfloat farDepth = 1.0f;
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
     glEnable(GL_DEPTH_TEST);
@@ -342,6 +345,14 @@ std::vector<float> SceneRenderer::readNormals() const {
         throw std::logic_error("readNormals: render with RenderSettings::writePositions");
     }
     return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT5, mFrame.width,
+                           mFrame.height, 4);
+}
+
+std::vector<float> SceneRenderer::readNextReceiver() const {
+    if (mFrame.colors.size() < 7) {
+        throw std::logic_error("readNextReceiver: render with RenderSettings::writePositions");
+    }
+    return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT6, mFrame.width,
                            mFrame.height, 4);
 }
 

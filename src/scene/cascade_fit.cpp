@@ -185,14 +185,16 @@ int cascadeOfPoint(const MapSpec& map, const Camera& camera, glm::vec3 posWs) {
 
 namespace {
 
-// One cascade's visibility of the point, its lookup as scene.frag makes it.
+// One cascade's visibility of the point, its lookup as scene.frag makes it: with `rotate` the
+// disk turned by the texel this cascade looks up (pcfTexelRotation).
 float cascadeLayerVisibility(const ShadowMap& map, int layer, const ShadowSettings& s,
-                             const PcfParams& prm, glm::vec3 posWs, glm::vec3 normalWs,
-                             float cosTheta, glm::vec2 dzduv) {
+                             PcfParams prm, glm::vec3 posWs, glm::vec3 normalWs, float cosTheta,
+                             glm::vec2 dzduv) {
     const PcfMapLayer& fit = map.spec().layers[static_cast<size_t>(layer)];
     PcfReceiverLookup at =
         pcfReceiverLookup(fit.shadowClipFromWorld, posWs, normalWs, cosTheta, s.modeId(),
                           s.constantBias, s.slopeBias, s.slopeMax, s.normalOffset, fit.texelWs);
+    if (s.rotate) prm.rotation = pcfTexelRotation(vec2(at.u, at.v), map.size());
     return filterLayerVisibility(map, layer, vec2(at.u, at.v), at.ref, prm, s.kernelBias(dzduv));
 }
 

@@ -84,7 +84,9 @@ struct CascadeLookup {
 // The lookup of point posWs (its unit normal facing the camera, cos(theta) to the light), with
 // the receiver plane dzduv for the cascade read and nextDzduv for the next one (receiver-plane
 // bias; light depth per uv unit, each in its own cascade's uv). prm: the settings' parameters
-// (SceneRenderer::pcfParams); `blend` the band (ShadowSettings::cascadeBlend).
+// (SceneRenderer::pcfParams); with the settings' rotate each lookup's disk turns by the texel it
+// looks up (pcfTexelRotation), as scene.frag turns it; `blend` the band
+// (ShadowSettings::cascadeBlend).
 CascadeLookup cascadeVisibilityAt(const ShadowMap& map, const Camera& camera,
                                   const ShadowSettings& s, const PcfParams& prm, glm::vec3 posWs,
                                   glm::vec3 normalWs, float cosTheta,
