@@ -136,6 +136,9 @@ class SceneRenderer {
     GLuint mapTexture() const;
     std::vector<float> readRegion(GLenum attachment, glm::ivec2 topLeft, glm::ivec2 size) const;
     void drawObjects(GLuint program, bool castersOnly, bool setMaterial);
+    // depth_snapped.*'s uniforms: the pass's, and one layer's from its clip matrix.
+    void setSnappedDepthUniforms(GLuint program, const RenderSettings& settings);
+    void setSnappedLayerUniforms(GLuint program, const glm::mat4& clip);
     // The camera pass into `target`, writing `targets` (scene.frag's PCF_ALL_TARGETS: 0 colour
     // only, 1 the four targets, 2 and the world position).
     void drawCameraPass(const RenderSettings& settings, int targets, const OffscreenTarget& target);
@@ -149,6 +152,7 @@ class SceneRenderer {
     std::optional<Camera> mCascadeCamera;
     std::vector<GpuMesh> mMeshes;
     GlProgram mDepthProgram;
+    GlProgram mDepthSnappedProgram;  // snapped cascades (shaders/depth_snapped.*)
     // By (targets, bias mode, spot light): one PcfProgramCache per combination used.
     std::map<std::tuple<int, int, int>, PcfProgramCache> mPrograms;
     PcfSamplers mSamplers;

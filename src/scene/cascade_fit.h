@@ -52,8 +52,11 @@ SliceSphere sliceSphere(const Camera& camera, float aspect, CascadeRange r);
 // One cascade's light clip from world: the light's view (lightFromWorld, the scene's bounds),
 // an orthographic box around the slice (fit CASCADE_FIT_BOX: the light-space bounds of its
 // corners; CASCADE_FIT_SPHERE: the square around its bounding sphere), deep enough for every
-// caster of the scene; with snap, one texel wider on every side and the world origin moved onto a
-// texel corner (shiftShadowOrigin), which shifts the box by up to half a texel.
+// caster of the scene; with snap, one texel wider on every side and the world origin moved onto
+// the nearest texel corner, which shifts the box by up to half a texel. A snapped fit's rows are
+// the light view's rotation times one scale made from the half-extent alone (for the sphere, the
+// same float at every frame) and its translation whole texels, so that a snapped map is the last
+// one moved by whole texels (the depth pass draws it so: shaders/depth_snapped.*).
 glm::mat4 cascadeClipFromWorld(const Scene& scene, float aspect, CascadeRange r, int fit, bool snap,
                                int mapSize);
 
