@@ -49,6 +49,28 @@ const float AMBIENT = 0.25f;
 const int BIAS_MODE = PCF_SCENE_BIAS;  // PCF_BIAS_NONE .. (shared/pcf_kernel.h)
 const bool SPOT = PCF_SCENE_SPOT != 0;  // false: directional
 
+#if PCF_MAP_LAYERS > 1
+// The receiver plane in one cascade's map, for a cascaded map: the lanes of a pixel quad that
+// straddles a split read different cascades, and the derivatives of their (u, v, z) would mix
+// two maps' coordinates (a line of acne along every split under receiver-plane bias). Each lane
+// instead looks up its neighbours' world positions (this pixel's plus its screen-space
+// derivative) in its own cascade and takes the difference: the same plane as dFdx/dFdy of
+// (u, v, z) where the quad reads one cascade (Isidoro, "Shadow Mapping: GPU-based Tips and
+// Techniques", GDC 2006, pcfReceiverPlaneDzDuv). Called where every lane runs.
+vec3 layerUvz(PcfMapLayer layer, vec3 posWs, vec3 n, float cosTheta) {
+    PcfReceiverLookup at =
+        pcfReceiverLookup(layer.shadowClipFromWorld, posWs, n, cosTheta, BIAS_MODE, uConstantBias,
+                          uSlopeBias, uSlopeMax, uNormalOffset, layer.texelWs);
+    return vec3(at.u, at.v, at.z);
+}
+
+vec2 layerDzDuv(PcfMapLayer layer, vec3 uvz, vec3 n, float cosTheta) {
+    vec3 dx = layerUvz(layer, vPosWs + dFdx(vPosWs), n, cosTheta) - uvz;
+    vec3 dy = layerUvz(layer, vPosWs + dFdy(vPosWs), n, cosTheta) - uvz;
+    return pcfReceiverPlaneDzDuv(dx, dy);
+}
+#endif
+
 void main() {
     // Directional: a constant direction and no cone. Only a spot pays for the normalize and
     // the cone test.
@@ -97,12 +119,16 @@ void main() {
     // caps it (pcfClampDzDuv, uRpdbMax): the target holds the slope as measured.
     vec2 dzduv = vec2(0.0f);
     if (PCF_ALL_TARGETS != 0 || BIAS_MODE == PCF_BIAS_RECEIVER_PLANE) {
+#if PCF_MAP_LAYERS > 1
+        dzduv = layerDzDuv(layer, vec3(u, v, z), n, cosTheta);
+#else
         dzduv = pcfReceiverPlaneDzDuv(dFdx(vec3(u, v, z)), dFdy(vec3(u, v, z)));
+#endif
     }
 
 #if PCF_CASCADE_BLEND
     // The next cascade's lookup of this point, for the blend band below; its receiver plane
-    // from its own derivatives, taken here where every lane of the quad runs, and written out
+    // in that cascade (layerDzDuv), taken here where every lane of the quad runs, and written out
     // (oNextReceiver) so that the CPU filters the band with the very same slope.
     PcfMapLayer nextLayer = uPcfMapLayers[min(layerIndex + 1, PCF_MAP_LAYERS - 1)];
     PcfReceiverLookup next = pcfReceiverLookup(nextLayer.shadowClipFromWorld, vPosWs, n, cosTheta,
@@ -110,8 +136,7 @@ void main() {
                                                uNormalOffset, nextLayer.texelWs);
     vec2 nextDzduv = vec2(0.0f);
     if (PCF_ALL_TARGETS >= 2 || BIAS_MODE == PCF_BIAS_RECEIVER_PLANE) {
-        vec3 nextUvz = vec3(next.u, next.v, next.z);
-        nextDzduv = pcfReceiverPlaneDzDuv(dFdx(nextUvz), dFdy(nextUvz));
+        nextDzduv = layerDzDuv(nextLayer, vec3(next.u, next.v, next.z), n, cosTheta);
     }
 #endif
 

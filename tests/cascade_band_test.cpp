@@ -107,7 +107,7 @@ TEST_F(BlendBandFolder, TraceRawShowsTheBandsSecondLookup) {
     std::vector<bool> layerTraced(COUNT, false);
     for (const BandPixel& p : sPixels) {  // a shadow edge's pixel in each band
         float v = sVisibility.data[p.k];
-        if (p.weight < 0.1 || p.weight > 0.9 || v < 0.05f || v > 0.95f ||
+        if (p.weight < 0.1 || p.weight > 0.9 || v < 0.02f || v > 0.98f ||
             layerTraced[static_cast<size_t>(p.layer)]) {
             continue;
         }

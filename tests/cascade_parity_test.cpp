@@ -275,5 +275,76 @@ TEST_F(CascadeParity, NoBandBlendsNothing) {
     EXPECT_LE(a.worstOutside, PARITY_TOLERANCE);
 }
 
+// The receiver plane a ground pixel measures in the cascade it reads (and, in a blend band, in
+// the next one) is the ground's plane in that cascade's map, also where the pixel's 2x2 quad
+// straddles a split and its neighbours read another cascade: there the derivatives of (u, v, z)
+// would mix two maps' coordinates, a line of acne along every split under receiver-plane bias.
+// On the flat ground every pixel of one cascade measures the same plane: each is held to its
+// cascade's median.
+TEST_F(CascadeParity, TheReceiverPlaneIsOneCascadesAlsoWhereAQuadStraddlesASplit) {
+    Scene scene = postsAlongGround();
+    SceneRenderer renderer(scene);
+    RenderSettings s = cascaded(PCF_GATHER, 3, CASCADE_FIT_SPHERE, true);
+    s.bias = BiasMode::ReceiverPlane;
+    s.cascadeBlend = 0.3f;
+    FrameTargets t = renderTargets(renderer, s);
+    const int w = s.frameSize.x, h = s.frameSize.y;
+    auto ground = [&](int x, int y) {
+        size_t k = static_cast<size_t>(y) * w + x;
+        return t.isReceiver(k) && t.normal(k).y > 0.999f && std::fabs(t.position(k).y) < 1e-3f;
+    };
+    auto layerOf = [&](int x, int y) {
+        return cascadeOfPoint(t.map.spec(), scene.camera,
+                              t.position(static_cast<size_t>(y) * w + x));
+    };
+    // The pixels of whole-ground quads (window quads start at even x, y), by cascade read.
+    std::vector<std::vector<size_t>> byLayer(MAX_CASCADES);
+    int straddling = 0;
+    for (int y = 0; y + 1 < h; y += 2) {
+        for (int x = 0; x + 1 < w; x += 2) {
+            if (!ground(x, y) || !ground(x + 1, y) || !ground(x, y + 1) || !ground(x + 1, y + 1)) {
+                continue;
+            }
+            int l0 = layerOf(x, y);
+            bool mixed = false;
+            for (int q = 0; q < 4; ++q) {
+                int l = layerOf(x + (q & 1), y + (q >> 1));
+                mixed = mixed || l != l0;
+                if (l < t.map.layers()) {
+                    byLayer[static_cast<size_t>(l)].push_back(
+                        static_cast<size_t>(y + (q >> 1)) * w + x + (q & 1));
+                }
+            }
+            straddling += mixed ? 1 : 0;
+        }
+    }
+    EXPECT_GT(straddling, 20);  // quads across the splits, where the old derivatives mixed maps
+    auto median = [](std::vector<float> v) {
+        std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+        return v[v.size() / 2];
+    };
+    for (int l = 0; l < s.cascades; ++l) {
+        const std::vector<size_t>& pixels = byLayer[static_cast<size_t>(l)];
+        ASSERT_GT(pixels.size(), 100u) << "cascade " << l;
+        for (bool next : {false, true}) {
+            if (next && l + 1 == s.cascades) continue;  // the last blends into nothing
+            std::vector<float> du, dv;
+            for (size_t k : pixels) {
+                glm::vec2 d = next ? t.nextDzduv(k) : t.dzduv(k);
+                du.push_back(d.x);
+                dv.push_back(d.y);
+            }
+            glm::vec2 m(median(du), median(dv));
+            float worst = 0.0f;
+            for (size_t k : pixels) {
+                glm::vec2 d = next ? t.nextDzduv(k) : t.dzduv(k);
+                worst = std::max(worst, glm::length(d - m) / std::max(glm::length(m), 1e-3f));
+            }
+            EXPECT_LT(worst, 0.02f) << "cascade " << l << (next ? " (next)" : "") << ": median ("
+                                    << m.x << ", " << m.y << ")";
+        }
+    }
+}
+
 }  // namespace
 }  // namespace pcf
