@@ -134,8 +134,9 @@ TEST_F(CascadeBounds, DepthBoundsSplitTheVisibleReceiversAndEveryPixelReadsACasc
 
         // The same frame with the bounds tightened by a deliberate error (the far one by twice
         // the margin): its deepest receivers fall past the last cascade.
-        glm::vec2 tooTight(map.visibleDepths->x,
-                           map.visibleDepths->y * static_cast<float>(1.0 - 2.0 * CASCADE_BOUNDS_MARGIN));
+        glm::vec2 tooTight(
+            map.visibleDepths->x,
+            map.visibleDepths->y * static_cast<float>(1.0 - 2.0 * CASCADE_BOUNDS_MARGIN));
         MapSpec wrong = map;
         wrong.layers = cascadeLayers(scene, depth, frameAspect(depth.frameSize), tooTight);
         EXPECT_GT(frameReceivers(renderer, wrong).pastLast, 0) << what;

@@ -224,6 +224,16 @@ TEST_F(CascadesCommand, VerifyHoldsDepthBoundsToTheFramesReceivers) {
               std::string::npos)
         << v.out;
 
+    // trace --raw reads the same cascades: a pixel on the ground near the bottom of the frame
+    // is in cascade 0, which begins at the tightened near end, not at the camera's near plane.
+    testutil::CommandResult t =
+        testutil::runPcfscope("trace --raw " + raw + " --pixel 160,170 --json");
+    ASSERT_EQ(t.exitCode, 0) << t.err;
+    Json traced = Json::parse(t.out);
+    EXPECT_EQ(traced["cascade"]["index"], 0);
+    EXPECT_EQ(traced["cascade"]["near"], map["cascades"][0]["near"]);
+    EXPECT_GT(traced["cascade"]["near"].get<double>(), 1.0);
+
     // Altered: a depth_max the receivers do not reach, then a depth_min with the far end left.
     for (const char* key : {"depth_max", "depth_min"}) {
         Json tampered = j;
