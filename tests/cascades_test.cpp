@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "kernel/settings.h"
@@ -90,6 +91,53 @@ TEST(CascadeSettings, TheRowsHoldTheirRanges) {
     EXPECT_TRUE(setParamFromText(s, *findParam("cascade_fit"), "circle").has_value());
     EXPECT_FALSE(setParamFromText(s, *findParam("cascade_snap"), "true").has_value());
     EXPECT_TRUE(s.cascadeSnap);
+}
+
+// --cascade-bounds is a row of the table: a named field, fixed by default.
+TEST(CascadeSettings, TheBoundsRowNamesFixedAndDepth) {
+    ShadowSettings s;
+    EXPECT_EQ(s.cascadeBounds, CASCADE_BOUNDS_FIXED);
+    ASSERT_NE(findParam("cascade_bounds"), nullptr);
+    EXPECT_TRUE(isCascadeSetting("cascade_bounds"));
+    EXPECT_FALSE(setParamFromText(s, *findParam("cascade_bounds"), "depth").has_value());
+    EXPECT_EQ(s.cascadeBounds, CASCADE_BOUNDS_DEPTH);
+    EXPECT_TRUE(setParamFromText(s, *findParam("cascade_bounds"), "sdsm").has_value());
+    EXPECT_EQ(cascadeBoundsName(CASCADE_BOUNDS_FIXED), "fixed");
+    EXPECT_EQ(cascadeBoundsFromName("depth"), CASCADE_BOUNDS_DEPTH);
+}
+
+// The reduction of a hand-made 4 x 3 frame of view depths: 0 where no receiver is drawn (and a
+// negative value or a NaN, which no receiver writes, counts as none).
+TEST(CascadeBounds, TheReductionFindsTheNearestAndFarthestReceiver) {
+    const float nan = std::nanf("");
+    std::vector<float> frame = {0.0f,  0.0f,  41.5f,   0.0f,   //
+                                7.25f, 12.0f, 0.0f,    -3.0f,  //
+                                nan,   9.0f,  63.125f, 0.0f};
+    std::optional<glm::vec2> range = visibleDepthRange(frame.data(), frame.size());
+    ASSERT_TRUE(range.has_value());
+    EXPECT_EQ(range->x, 7.25f);
+    EXPECT_EQ(range->y, 63.125f);
+    // One receiver pixel: both ends are its depth.
+    std::vector<float> one(12, 0.0f);
+    one[5] = 2.5f;
+    EXPECT_EQ(visibleDepthRange(one.data(), one.size()), glm::vec2(2.5f, 2.5f));
+    // None: nothing to bound.
+    std::vector<float> none(12, 0.0f);
+    EXPECT_FALSE(visibleDepthRange(none.data(), none.size()).has_value());
+}
+
+// The span the splits share out: [n, f] tightened to the visible receivers, widened by the
+// margin, never beyond [n, f], and [n, f] when no visible receiver lies in it.
+TEST(CascadeBounds, TheSpanIsTheVisibleDepthsWidenedWithinNearAndFar) {
+    EXPECT_EQ(cascadeSplitSpan(0.1, 400.0, std::nullopt), glm::dvec2(0.1, 400.0));
+    glm::dvec2 tight = cascadeSplitSpan(0.1, 400.0, glm::vec2(4.0f, 100.0f));
+    EXPECT_DOUBLE_EQ(tight.x, 4.0 * 0.999);
+    EXPECT_DOUBLE_EQ(tight.y, 100.0 * 1.001);
+    glm::dvec2 capped = cascadeSplitSpan(0.1, 60.0, glm::vec2(4.0f, 100.0f));
+    EXPECT_DOUBLE_EQ(capped.x, 3.996);
+    EXPECT_EQ(capped.y, 60.0);
+    EXPECT_EQ(cascadeSplitSpan(0.1, 60.0, glm::vec2(0.05f, 50.0f)).x, 0.1);
+    EXPECT_EQ(cascadeSplitSpan(0.1, 60.0, glm::vec2(70.0f, 90.0f)), glm::dvec2(0.1, 60.0));
 }
 
 }  // namespace

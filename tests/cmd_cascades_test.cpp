@@ -3,6 +3,7 @@
 // texel size), which follows Zhang et al.'s practical split for the n, f and lambda it reports.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -194,6 +195,91 @@ TEST_F(CascadesCommand, VerifyHoldsABlendedFolderToTheMixOfTwoCascades) {
         EXPECT_EQ(v.exitCode, 0) << method << v.out << v.err;
         EXPECT_NE(v.out.find("(100.0000 %)"), std::string::npos) << method << v.out;
     }
+}
+
+// --cascade-bounds depth: render.json says what the cascades split ([n, f] as the settings name
+// it) and what it was tightened to (depth_min, depth_max: the frame's receivers' view depths);
+// `verify` passes on the folder and fails once render.json's bounds are altered.
+TEST_F(CascadesCommand, VerifyHoldsDepthBoundsToTheFramesReceivers) {
+    std::string raw = path("bounds");
+    testutil::CommandResult r = testutil::runPcfscope(
+        "render --scene long-ground --cascades 4 --shadow-distance 400 --cascade-bounds depth "
+        "--map-size 256 --size 320x180 --raw " +
+        raw);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Json j = Json::parse(testutil::readAll(raw + "/render.json"));
+    EXPECT_EQ(j["cascade_bounds"], "depth");
+    const Json& map = j["map"];
+    EXPECT_NEAR(map["camera_near"].get<double>(), 0.1, 1e-6);
+    EXPECT_NEAR(map["shadow_distance"].get<double>(), 400.0, 1e-4);
+    double lo = map["depth_min"].get<double>(), hi = map["depth_max"].get<double>();
+    EXPECT_GT(lo, 1.0);    // the ground starts ahead of the camera
+    EXPECT_LT(hi, 101.0);  // and ends within its far plane
+    EXPECT_LE(map["cascades"][0]["near"].get<double>(), lo);
+    EXPECT_GE(map["cascades"][3]["far"].get<double>(), hi);
+    EXPECT_LT(map["cascades"][3]["far"].get<double>(), 101.0);
+    testutil::CommandResult v = testutil::runPcfscope("verify " + raw);
+    EXPECT_EQ(v.exitCode, 0) << v.out << v.err;
+    EXPECT_NE(v.out.find("0 receiver pixels nearer than the shadow distance past the last"),
+              std::string::npos)
+        << v.out;
+
+    // trace --raw reads the same cascades: a pixel on the ground near the bottom of the frame
+    // is in cascade 0, which begins at the tightened near end, not at the camera's near plane.
+    testutil::CommandResult t =
+        testutil::runPcfscope("trace --raw " + raw + " --pixel 160,170 --json");
+    ASSERT_EQ(t.exitCode, 0) << t.err;
+    Json traced = Json::parse(t.out);
+    EXPECT_EQ(traced["cascade"]["index"], 0);
+    EXPECT_EQ(traced["cascade"]["near"], map["cascades"][0]["near"]);
+    EXPECT_GT(traced["cascade"]["near"].get<double>(), 1.0);
+
+    // Altered: a depth_max the receivers do not reach, then a depth_min with the far end left.
+    for (const char* key : {"depth_max", "depth_min"}) {
+        Json tampered = j;
+        tampered["map"][key] = tampered["map"][key].get<double>() * 0.95;
+        std::ofstream(raw + "/render.json") << tampered.dump();
+        testutil::CommandResult bad = testutil::runPcfscope("verify " + raw);
+        EXPECT_EQ(bad.exitCode, 2) << key << bad.out;
+        EXPECT_NE(bad.err.find("render.json does not describe these images"), std::string::npos)
+            << key << bad.err;
+    }
+    // Altered consistently (depth_max and the receivers' bounds agree, the splits do not): the
+    // last cascade's far end moved in.
+    Json split = j;
+    split["map"]["cascades"][3]["far"] = hi * 0.9;
+    split["map"]["layers"][3]["view_depth"][1] = hi * 0.9;
+    std::ofstream(raw + "/render.json") << split.dump();
+    testutil::CommandResult moved = testutil::runPcfscope("verify " + raw);
+    EXPECT_EQ(moved.exitCode, 2) << moved.out;
+    EXPECT_NE(moved.err.find("cascade 3 covers"), std::string::npos) << moved.err;
+}
+
+// A lesson fits its cascades once for every frame size, which bounds measured on a frame cannot
+// give: --cascade-bounds depth with --lesson is refused in one line, as is the key in a lesson.
+TEST_F(CascadesCommand, DepthBoundsAreRefusedForALesson) {
+    testutil::CommandResult r = testutil::runPcfscope(
+        "render --lesson 21 --step 2 --cascade-bounds depth --size 160x90 -o " + path("l.png"));
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--cascade-bounds depth is not for a lesson"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(path("l.png")));
+
+    // The key in a lesson's step: blamed on its line.
+    std::string text = testutil::readAll(std::string(PCFSCOPE_SOURCE_DIR) +
+                                         "/lessons/21-cascades-and-splits.toml");
+    std::string after = "cascade_lambda = 0.5\n";
+    size_t at = text.find(after);
+    ASSERT_NE(at, std::string::npos);
+    text.insert(at + after.size(), "cascade_bounds = \"depth\"\n");
+    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n')) + 1;
+    std::string lesson = path("depth-bounds.toml");
+    std::ofstream(lesson) << text;
+    testutil::CommandResult check = testutil::runPcfscope("lesson check " + lesson);
+    EXPECT_EQ(check.exitCode, 2) << check.out;
+    EXPECT_NE(check.err.find("depth-bounds.toml:" + std::to_string(line) + ":"), std::string::npos)
+        << check.err;
+    EXPECT_NE(check.err.find("cascade_bounds depth is not for a lesson"), std::string::npos)
+        << check.err;
 }
 
 // --shading cascades tints each pixel by the cascade it reads: with four cascades over the

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string_view>
@@ -108,12 +109,19 @@ TEST(ShadowMap, ItsSpecSaysWhatItHolds) {
     EXPECT_EQ(checkMapSpec(none).value(), "a map has 1 to 4 layers, not 0");
 
     // Moments: channels interleaved, depth() reads a texel's first.
-    MapSpec moments{glm::ivec2(2, 1), TexelKind::Moments2F32, {MapSpec::unfittedLayer()}};
+    MapSpec moments{glm::ivec2(2, 1),
+                    TexelKind::Moments2F32,
+                    {MapSpec::unfittedLayer()},
+                    glm::vec2(0.0f),
+                    std::nullopt};
     ShadowMap m(moments, {0.25f, 0.0625f, 0.5f, 0.25f});
     EXPECT_EQ(m.depth(1, 0), 0.5f);
     // Layers one after the other: layerTexels finds each.
-    MapSpec layered{
-        glm::ivec2(2, 1), TexelKind::D32F, {MapSpec::unfittedLayer(), MapSpec::unfittedLayer()}};
+    MapSpec layered{glm::ivec2(2, 1),
+                    TexelKind::D32F,
+                    {MapSpec::unfittedLayer(), MapSpec::unfittedLayer()},
+                    glm::vec2(0.0f),
+                    std::nullopt};
     ShadowMap l(layered, {0.1f, 0.2f, 0.3f, 0.4f});
     EXPECT_EQ(l.layerTexels(1)[0], 0.3f);
     EXPECT_THROW(l.layerTexels(2), std::out_of_range);
@@ -121,9 +129,14 @@ TEST(ShadowMap, ItsSpecSaysWhatItHolds) {
 
 // Two specs are equal when size, texel kind and every layer's fit are.
 TEST(ShadowMap, SpecsCompareByValue) {
-    MapSpec a{glm::ivec2(8), TexelKind::D16, {MapSpec::unfittedLayer()}};
+    MapSpec a{
+        glm::ivec2(8), TexelKind::D16, {MapSpec::unfittedLayer()}, glm::vec2(0.0f), std::nullopt};
     MapSpec b = a;
     EXPECT_EQ(a, b);
+    // A cascaded map's depth bounds are part of its value (render.json, verify).
+    MapSpec bounded = a;
+    bounded.visibleDepths = glm::vec2(4.0f, 95.0f);
+    EXPECT_NE(bounded, a);
     b.layers[0].texelWs = 0.5f;
     EXPECT_NE(a, b);
     b = a;

@@ -22,6 +22,7 @@
 #include "render/image_io.h"
 #include "render/scene_renderer.h"
 #include "scene/cascade_fit.h"
+#include "scene/cascade_view.h"
 
 namespace pcf {
 
@@ -64,6 +65,10 @@ LessonRender lessonRenderOf(const RenderCommandOptions& o, const RenderSettings&
     // render it (step_view.h), with the settings rendered (the step's, or flags over them).
     LessonSettings s = step.settings;
     static_cast<ShadowSettings&>(s) = settings;
+    // What the flags asked for must suit a lesson (its cascades fitted once for every size).
+    if (std::optional<ParamProblem> why = lessonCascadeProblem(lesson.scene, s, false)) {
+        throw UsageError(cliWords(*why));
+    }
     std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
     Scene seen = lesson.scene;
     seen.camera = stepCamera(lesson.scene, s, point, settings.frameSize);

@@ -29,6 +29,7 @@
 #include "measure/conformance.h"
 #include "render/image_io.h"
 #include "render/render_settings.h"
+#include "scene/cascade_fit.h"
 
 namespace pcf {
 
@@ -133,6 +134,77 @@ long checkLookups(const RawImages& img, const RawSettings& r, const std::string&
         }
     }
     return checked;
+}
+
+// How far, relative, the receivers' view depths recomputed from positions.exr may be from
+// render.json's depth_min and depth_max (the prepass measured them in another program, the GPU's
+// float arithmetic) and a cascade's ends from the split recomputed here.
+constexpr double BOUNDS_SLACK = 1.0e-5;
+
+// The smallest and largest view depth of the receiver pixels, along the cascade camera
+// (shared/pcf_shading.h pcfViewDepth of positions.exr), and how many lie past the last cascade
+// while nearer than the shadow distance (which a cascade should have covered).
+struct ReceiverDepths {
+    float lo = std::numeric_limits<float>::infinity();
+    float hi = -std::numeric_limits<float>::infinity();
+    long pastLast = 0;
+};
+
+ReceiverDepths receiverDepths(const RawImages& img, const RawSettings& r) {
+    ReceiverDepths d;
+    int count = static_cast<int>(r.map->layers.size());
+    for (size_t k = 0; k < img.lightSpace.data.size() / 4; ++k) {
+        if (img.lightSpace.data[4 * k + 3] != 1.0f) continue;
+        const float* p = &img.positions.data[4 * k];
+        float depth =
+            pcfViewDepth(vec3(p[0], p[1], p[2]), r.cascadeEyeDir->first, r.cascadeEyeDir->second);
+        d.lo = std::min(d.lo, depth);
+        d.hi = std::max(d.hi, depth);
+        if (pixelLayer(img, r, k) >= count && depth < r.map->cascadeDepths.y) ++d.pastLast;
+    }
+    return d;
+}
+
+// --cascade-bounds depth (render.json's "map" holds depth_min and depth_max, the frame's visible
+// receivers' view depths as the renderer measured them): they must be the receiver pixels' own,
+// and the cascades must split [camera_near, shadow_distance] tightened to them
+// (scene/cascade_fit.h cascadeRangesOver); a render.json that says otherwise does not describe
+// the images. Returns the receiver pixels past the last cascade though nearer than the shadow
+// distance (-1 for a folder without depth bounds).
+long checkCascadeBounds(const RawImages& img, const RawSettings& r, const std::string& dir) {
+    if (!r.map || !r.map->visibleDepths || !r.cascadeEyeDir || img.positions.data.empty())
+        return -1;
+    const MapSpec& map = *r.map;
+    ReceiverDepths d = receiverDepths(img, r);
+    auto near = [](double a, double b) { return std::abs(a - b) <= BOUNDS_SLACK * std::abs(b); };
+    char buf[200];
+    if (!near(d.lo, map.visibleDepths->x) || !near(d.hi, map.visibleDepths->y)) {
+        std::snprintf(buf, sizeof buf,
+                      "depth_min %.9g and depth_max %.9g, but its receiver pixels' view depths "
+                      "run from %.9g to %.9g",
+                      static_cast<double>(map.visibleDepths->x),
+                      static_cast<double>(map.visibleDepths->y), static_cast<double>(d.lo),
+                      static_cast<double>(d.hi));
+        throw UsageError(dir + ": render.json does not describe these images: it says " + buf);
+    }
+    std::vector<CascadeRange> ranges =
+        cascadeRangesOver(map.cascadeDepths.x, map.cascadeDepths.y, r.settings, map.visibleDepths);
+    for (size_t k = 0; k < ranges.size() && k < map.layers.size(); ++k) {
+        vec2 got = map.layers[k].viewDepth;
+        if (ranges.size() == map.layers.size() && near(got.x, ranges[k].nearZ) &&
+            near(got.y, ranges[k].farZ)) {
+            continue;
+        }
+        std::snprintf(buf, sizeof buf,
+                      "cascade %zu covers [%.9g, %.9g], but the split of [%.9g, %.9g] tightened to "
+                      "depth_min and depth_max gives [%.9g, %.9g]",
+                      k, static_cast<double>(got.x), static_cast<double>(got.y),
+                      static_cast<double>(map.cascadeDepths.x),
+                      static_cast<double>(map.cascadeDepths.y),
+                      static_cast<double>(ranges[k].nearZ), static_cast<double>(ranges[k].farZ));
+        throw UsageError(dir + ": render.json does not describe these images: " + buf);
+    }
+    return d.pastLast;
 }
 
 // A fixed-point map (16 or 24 bits) holds only the values k / (2^n - 1): the depth buffer keeps
@@ -258,6 +330,7 @@ int runVerify(const VerifyOptions& o) {
     checkDepthFormat(img.map, (dir / "shadowmap.exr").string());
     checkMapTexels(r, (dir / "render.json").string());
     long refsChecked = checkLookups(img, r, dir.string());
+    long pastLast = checkCascadeBounds(img, r, dir.string());
     ConformancePrecision prec{o.subTexelBits, o.weightBits, o.referenceBits};
     EnvelopeTally t = checkEnvelopes(img, r, prec);
     if (t.receivers == 0) throw UsageError("no receiver pixels in " + dir.string());
@@ -281,8 +354,16 @@ int runVerify(const VerifyOptions& o) {
                 recomputesWhole(img, r)
                     ? "position, normal and bias"
                     : "depth and bias (the folder has no normals: u, v not recomputed)");
+    if (pastLast >= 0) {
+        std::printf(
+            "cascade bounds depth [%.7g, %.7g]: the receivers' own view depths; %ld receiver "
+            "pixels nearer than the shadow distance past the last cascade\n",
+            static_cast<double>(r.map->visibleDepths->x),
+            static_cast<double>(r.map->visibleDepths->y), pastLast);
+    }
     std::printf("%ld of %ld receiver pixels inside the envelope (%.4f %%)\n", t.inside, t.receivers,
                 100.0 * static_cast<double>(t.inside) / static_cast<double>(t.receivers));
+    if (pastLast > 0) return 1;
     if (t.inside == t.receivers) return 0;
     std::printf(
         "worst outlier: pixel (%d, %d) (top-left origin): visibility %.7g, envelope "

@@ -221,7 +221,10 @@ namespace {
 // size, one layer.
 MapSpec rawMapSpec(const ShadowMap& image, const RawSettings& r, const std::string& where) {
     TexelKind kind = mapTexelKind(r.settings.method, r.settings.depthFormat, r.settings.momentBits);
-    MapSpec spec = r.map.value_or(MapSpec{image.size(), kind, {MapSpec::unfittedLayer()}});
+    MapSpec unfitted;  // one unfitted layer
+    unfitted.size = image.size();
+    unfitted.texels = kind;
+    MapSpec spec = r.map.value_or(unfitted);
     spec.texels = kind;
     if (texelKindInfo(kind).channels != image.spec().texel().channels) {
         throw UsageError("shadowmap.exr has " + std::to_string(image.spec().texel().channels) +

@@ -1,6 +1,8 @@
 #include "kernel/cascades.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pcf {
 
@@ -29,10 +31,22 @@ std::optional<int> cascadeFitFromName(std::string_view name) {
 
 std::string cascadeFitNames() { return "box, sphere"; }
 
+std::string_view cascadeBoundsName(int bounds) {
+    return bounds == CASCADE_BOUNDS_DEPTH ? "depth" : "fixed";
+}
+
+std::optional<int> cascadeBoundsFromName(std::string_view name) {
+    if (name == "fixed") return CASCADE_BOUNDS_FIXED;
+    if (name == "depth") return CASCADE_BOUNDS_DEPTH;
+    return std::nullopt;
+}
+
+std::string cascadeBoundsNames() { return "fixed, depth"; }
+
 bool isCascadeSetting(std::string_view key) {
     return key == "cascades" || key == "cascade_split" || key == "cascade_lambda" ||
            key == "shadow_distance" || key == "cascade_fit" || key == "cascade_snap" ||
-           key == "cascade_blend";
+           key == "cascade_blend" || key == "cascade_bounds";
 }
 
 double splitLambda(int split, double lambda) {
@@ -55,6 +69,26 @@ std::vector<double> cascadeSplits(double n, double f, int count, int split, doub
     // The last is f itself, not f as the sum of two rounded terms.
     if (!splits.empty()) splits.back() = f;
     return splits;
+}
+
+std::optional<glm::vec2> visibleDepthRange(const float* depths, size_t count) {
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (size_t k = 0; k < count; ++k) {
+        float d = depths[k];
+        if (!(d > 0.0f)) continue;  // no receiver at this pixel (NaN too)
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+    }
+    if (!(lo <= hi)) return std::nullopt;
+    return glm::vec2(lo, hi);
+}
+
+glm::dvec2 cascadeSplitSpan(double n, double f, std::optional<glm::vec2> visible) {
+    if (!visible) return {n, f};
+    double lo = std::max(n, static_cast<double>(visible->x) * (1.0 - CASCADE_BOUNDS_MARGIN));
+    double hi = std::min(f, static_cast<double>(visible->y) * (1.0 + CASCADE_BOUNDS_MARGIN));
+    if (!(lo < hi)) return {n, f};
+    return {lo, hi};
 }
 
 }  // namespace pcf

@@ -157,6 +157,12 @@ const ParamInfo PARAMS[] = {
      1.0, false,
      "cascades: the last B of each cascade's view depths fades into the next one's lookup (0: "
      "none)", true, {}, true},
+    {"cascade_bounds", NamedField<int>{&ShadowSettings::cascadeBounds,
+        nameOf<int, cascadeBoundsName>, cascadeBoundsFromName, cascadeBoundsNames,
+        "cascade bounds"}, ParamGroup::Map, "", "", 0, 0, false,
+     "cascades: the view depths they split: fixed (the camera's near plane to the shadow "
+     "distance) or depth (tightened to the frame's visible receivers, measured by a prepass)",
+     true, {}, true},
 };
 // clang-format on
 

@@ -114,6 +114,9 @@ struct ShadowSettings : BiasSettings {
     // The blend band (shared/pcf_shading.h pcfCascadeBlendWeight): the fraction of each
     // cascade's view depths, at its far end, whose visibility fades into the next cascade's.
     float cascadeBlend = 0.0f;
+    // The view depths the splits share out (kernel/cascades.h CASCADE_BOUNDS_*): [n, f] fixed, or
+    // tightened to the frame's visible receivers (depth), measured by the renderer's prepass.
+    int cascadeBounds = CASCADE_BOUNDS_FIXED;
 
     // The kernel's parameters; `rotation` is the Poisson disk's (cos, sin), when rotate says so
     // the caller's per-pixel one.

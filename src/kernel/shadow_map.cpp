@@ -64,7 +64,10 @@ std::span<const TexelKind> allTexelKinds() { return ALL_TEXEL_KINDS; }
 PcfMapLayer MapSpec::unfittedLayer() { return PcfMapLayer{glm::mat4(1.0f), vec2(0.0f), 0.0f}; }
 
 bool MapSpec::operator==(const MapSpec& o) const {
-    if (size != o.size || texels != o.texels || layers.size() != o.layers.size()) return false;
+    if (size != o.size || texels != o.texels || layers.size() != o.layers.size() ||
+        cascadeDepths != o.cascadeDepths || visibleDepths != o.visibleDepths) {
+        return false;
+    }
     for (size_t k = 0; k < layers.size(); ++k) {
         if (!sameLayer(layers[k], o.layers[k])) return false;
     }

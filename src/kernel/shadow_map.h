@@ -49,6 +49,13 @@ struct MapSpec {
     glm::ivec2 size{0, 0};
     TexelKind texels = TexelKind::D32F;
     std::vector<PcfMapLayer> layers{unfittedLayer()};
+    // A cascaded map (more than one layer, scene/cascade_fit.h): the view depths [n, f] the
+    // settings name (the camera's near plane, the shadow distance), and with cascade_bounds
+    // depth the view depths of the frame's visible receivers as measured (dmin, dmax), which
+    // narrowed what the layers split (kernel/cascades.h cascadeSplitSpan). (0, 0) and nullopt
+    // for one layer, or a map read from a file that does not say.
+    glm::vec2 cascadeDepths{0.0f};
+    std::optional<glm::vec2> visibleDepths;
 
     // The layer of a map with no light to it (a map read from a file, the built-in example):
     // identity fit, orthographic, texel size unknown (0).

@@ -216,9 +216,12 @@ Json paramsJson(const ShadowSettings& s, ParamSet which) {
 
 namespace {
 
-// A cascaded map's layers as its cascades (scene/cascade_fit.h): the view depths [n, f] they
-// split (n the camera's near plane, f where the last ends: the shadow distance), and each
-// cascade's view depths and texel size in world units. Read from the layers, never stored apart.
+// A cascaded map's layers as its cascades (scene/cascade_fit.h): the view depths [n, f] the
+// settings name (n the camera's near plane, f the shadow distance; a map that does not hold them,
+// where the first begins and the last ends), with cascade_bounds depth the frame's visible
+// receivers' view depths measured (depth_min, depth_max: what [n, f] was tightened to, before the
+// margin, kernel/cascades.h cascadeSplitSpan), and each cascade's view depths and texel size in
+// world units, read from the layers.
 Json cascadesJson(const MapSpec& map) {
     Json cascades = Json::array();
     for (size_t k = 0; k < map.layers.size(); ++k) {
@@ -228,9 +231,17 @@ Json cascadesJson(const MapSpec& map) {
                             {"far", jsonNumber(layer.viewDepth.y)},
                             {"texel_world", jsonNumber(layer.texelWs)}});
     }
-    return {{"camera_near", jsonNumber(map.layers.front().viewDepth.x)},
-            {"shadow_distance", jsonNumber(map.layers.back().viewDepth.y)},
-            {"cascades", cascades}};
+    bool spanKnown = map.cascadeDepths.y > 0.0f;
+    Json j = {{"camera_near",
+               jsonNumber(spanKnown ? map.cascadeDepths.x : map.layers.front().viewDepth.x)},
+              {"shadow_distance",
+               jsonNumber(spanKnown ? map.cascadeDepths.y : map.layers.back().viewDepth.y)},
+              {"cascades", cascades}};
+    if (map.visibleDepths) {
+        j["depth_min"] = jsonNumber(map.visibleDepths->x);
+        j["depth_max"] = jsonNumber(map.visibleDepths->y);
+    }
+    return j;
 }
 
 }  // namespace
@@ -307,6 +318,24 @@ std::optional<PcfMapLayer> mapLayerFromJson(const Json& j, std::string& why) {
     return layer;
 }
 
+// A cascaded map's camera_near and shadow_distance (files written before cascades kept them
+// may lack them) and, when it has them, depth_min and depth_max: both, finite, 0 < min <= max.
+bool readCascadeBounds(const Json& j, MapSpec& spec, std::string& why) {
+    auto number = [&](const char* key) {
+        return j.contains(key) ? jsonFiniteFloat(j[key]) : std::nullopt;
+    };
+    std::optional<float> n = number("camera_near"), f = number("shadow_distance");
+    if (n && f) spec.cascadeDepths = vec2(*n, *f);
+    if (!j.contains("depth_min") && !j.contains("depth_max")) return true;
+    std::optional<float> lo = number("depth_min"), hi = number("depth_max");
+    if (!lo || !hi || !(*lo > 0.0f) || !(*lo <= *hi)) {
+        why = "\"map\": depth_min and depth_max are not two view depths, 0 < min <= max";
+        return false;
+    }
+    spec.visibleDepths = vec2(*lo, *hi);
+    return true;
+}
+
 }  // namespace
 
 std::optional<MapSpec> mapSpecFromJson(const Json& j, std::string& why) {
@@ -340,6 +369,7 @@ std::optional<MapSpec> mapSpecFromJson(const Json& j, std::string& why) {
         if (!layer) return std::nullopt;
         spec.layers.push_back(*layer);
     }
+    if (spec.layers.size() > 1 && !readCascadeBounds(j, spec, why)) return std::nullopt;
     return spec;
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernel/cascades.h"
 #include "kernel/methods.h"
 #include "render/depth_readback.h"
 #include "render/shader_loader.h"
@@ -177,10 +178,63 @@ void SceneRenderer::setCascadeCamera(const std::optional<Camera>& camera) {
 MapSpec SceneRenderer::mapSpecFor(const RenderSettings& settings) const {
     float aspect =
         settings.cascadeAspect > 0.0f ? settings.cascadeAspect : frameAspect(settings.frameSize);
-    return cascadedMapSpec(mScene, settings, mShadowClipFromWorld, cascadeCamera(), aspect);
+    bool depthBounds = settings.cascades > 1 && settings.cascadeBounds == CASCADE_BOUNDS_DEPTH;
+    return cascadedMapSpec(mScene, settings, mShadowClipFromWorld, cascadeCamera(), aspect,
+                           depthBounds ? mVisibleDepths : std::nullopt);
+}
+
+std::optional<glm::vec2> SceneRenderer::visibleDepths(const RenderSettings& settings) {
+    if (mCascadeCamera || settings.cascadeAspect > 0.0f) {
+        throw std::invalid_argument(
+            "cascade_bounds depth measures the frame drawn, but these cascades are fitted to "
+            "another camera or frame shape (a lesson's)");
+    }
+    ensureTargets(settings);
+    if (mViewDepthFrame.width != mFrame.width || mViewDepthFrame.height != mFrame.height) {
+        mViewDepthFrame =
+            createOffscreenTarget(mFrame.width, mFrame.height, {GL_R32F}, GL_DEPTH_COMPONENT24);
+    }
+    if (!mViewDepthProgram) {
+        mViewDepthProgram = buildProgram({
+            ShaderStage{GL_VERTEX_SHADER, {"scene.vert"}, "", {}},
+            ShaderStage{GL_FRAGMENT_SHADER,
+                        pcfSharedFiles({"shared/pcf_shading.h", "view_depth.frag"}),
+                        pcfVariantDefines(PcfVariant{}),
+                        {}},
+        });
+    }
+    GLuint fbo = mViewDepthFrame.framebuffer.id();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, mViewDepthFrame.width, mViewDepthFrame.height);
+    const GLfloat none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const GLfloat farDepth = 1.0f;
+    glClearNamedFramebufferfv(fbo, GL_COLOR, 0, none);
+    glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    GLuint program = mViewDepthProgram.id();
+    glUseProgram(program);
+    // The camera pass's own clip (clipFromWorld) and cascade camera (drawCameraPass).
+    glm::mat4 clip = clipFromWorld();
+    glProgramUniformMatrix4fv(program, uniform(program, "uClipFromWorld"), 1, GL_FALSE,
+                              &clip[0][0]);
+    glm::vec3 viewDir = cameraViewDirWs(mScene.camera);
+    glProgramUniform3fv(program, uniform(program, "uEyeWs"), 1, &mScene.camera.eyeWs.x);
+    glProgramUniform3fv(program, uniform(program, "uViewDirWs"), 1, &viewDir.x);
+    drawObjects(program, false, true);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    std::vector<float> depths = readPixelsFloat(fbo, GL_COLOR_ATTACHMENT0, mViewDepthFrame.width,
+                                                mViewDepthFrame.height, 1);
+    return visibleDepthRange(depths.data(), depths.size());
 }
 
 void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
+    if (settings.cascades > 1 && settings.cascadeBounds == CASCADE_BOUNDS_DEPTH) {
+        mVisibleDepths = visibleDepths(settings);
+    }
     MapSpec map = mapSpecFor(settings);
     ensureShadowTarget(map, settings.depthFormat);
     mMap = std::move(map);

@@ -117,6 +117,14 @@ class SceneRenderer {
     // camera (scene/cascade_view.h cascadedMapSpec), the frame shape settings.cascadeAspect
     // (0: settings.frameSize's).
     MapSpec mapSpecFor(const RenderSettings& settings) const;
+    // --cascade-bounds depth: the depth prepass (shaders/view_depth.frag) through the frame's
+    // camera at the frame's size, exactly the fragments the camera pass will shade, each the
+    // view depth it will pick its cascade by; read back and reduced to the smallest and largest
+    // over the receivers shown (kernel/cascades.h visibleDepthRange); nullopt when none is.
+    // renderShadowPass runs it when the settings ask for depth bounds and fits the cascades to
+    // what it measured (mapSpecFor). The cascade camera must be the frame's own: a lesson's
+    // (fitted at one shape for every size) is refused (std::invalid_argument).
+    std::optional<glm::vec2> visibleDepths(const RenderSettings& settings);
 
   private:
     struct GpuMesh {
@@ -164,6 +172,11 @@ class SceneRenderer {
     MapSpec mMap;  // what the last depth pass made (the target's size and texel kind)
     OffscreenTarget mFrame;
     OffscreenTarget mTimingFrame;
+    // The depth prepass of --cascade-bounds depth (visibleDepths): its program, its R32F target,
+    // and what the last one measured, which mapSpecFor fits the cascades to.
+    GlProgram mViewDepthProgram;
+    OffscreenTarget mViewDepthFrame;
+    std::optional<glm::vec2> mVisibleDepths;
 };
 
 }  // namespace pcf

@@ -16,16 +16,23 @@ float cascadeFarDepth(const Camera& camera, const ShadowSettings& s) {
     return s.shadowDistance > 0.0f ? s.shadowDistance : camera.farZ;
 }
 
-std::vector<CascadeRange> cascadeRanges(const Camera& camera, const ShadowSettings& s) {
-    double n = camera.nearZ;
+std::vector<CascadeRange> cascadeRangesOver(double n, double f, const ShadowSettings& s,
+                                            std::optional<glm::vec2> visible) {
+    if (s.cascadeBounds != CASCADE_BOUNDS_DEPTH) visible = std::nullopt;
+    glm::dvec2 span = cascadeSplitSpan(n, f, visible);
     std::vector<double> splits =
-        cascadeSplits(n, cascadeFarDepth(camera, s), s.cascades, s.cascadeSplit, s.cascadeLambda);
+        cascadeSplits(span.x, span.y, s.cascades, s.cascadeSplit, s.cascadeLambda);
     std::vector<CascadeRange> ranges;
     for (double far : splits) {
-        float from = ranges.empty() ? camera.nearZ : ranges.back().farZ;
+        float from = ranges.empty() ? static_cast<float>(span.x) : ranges.back().farZ;
         ranges.push_back({from, static_cast<float>(far)});
     }
     return ranges;
+}
+
+std::vector<CascadeRange> cascadeRanges(const Camera& camera, const ShadowSettings& s,
+                                        std::optional<glm::vec2> visible) {
+    return cascadeRangesOver(camera.nearZ, cascadeFarDepth(camera, s), s, visible);
 }
 
 namespace {
@@ -258,9 +265,10 @@ CascadeLookup cascadeVisibilityAt(const ShadowMap& map, const Camera& camera,
                                nextDzduv);
 }
 
-std::vector<PcfMapLayer> cascadeLayers(const Scene& scene, const ShadowSettings& s, float aspect) {
+std::vector<PcfMapLayer> cascadeLayers(const Scene& scene, const ShadowSettings& s, float aspect,
+                                       std::optional<glm::vec2> visible) {
     std::vector<PcfMapLayer> layers;
-    for (const CascadeRange& r : cascadeRanges(scene.camera, s)) {
+    for (const CascadeRange& r : cascadeRanges(scene.camera, s, visible)) {
         glm::mat4 clip =
             cascadeClipFromWorld(scene, aspect, r, s.cascadeFit, s.cascadeSnap, s.mapSize);
         PcfMapLayer layer{clip, vec2(0.0f), orthoTexelWs(clip, s.mapSize)};

@@ -24,9 +24,15 @@ struct CascadeRange {
 
 // The view depths the cascades split: n = the camera's near plane, f = shadow_distance (0: the
 // camera's far plane), split by the settings' scheme and lambda (cascadeSplits). One range per
-// cascade, back to back from n to f.
+// cascade, back to back from n to f; with cascade_bounds depth and the frame's visible receivers'
+// view depths measured (`visible`, SceneRenderer's prepass), back to back over [n, f] tightened
+// to them (kernel/cascades.h cascadeSplitSpan). `visible` is ignored under cascade_bounds fixed.
 float cascadeFarDepth(const Camera& camera, const ShadowSettings& s);
-std::vector<CascadeRange> cascadeRanges(const Camera& camera, const ShadowSettings& s);
+std::vector<CascadeRange> cascadeRanges(const Camera& camera, const ShadowSettings& s,
+                                        std::optional<glm::vec2> visible = std::nullopt);
+// The same over [n, f] given (render.json's camera_near and shadow_distance, for `verify`).
+std::vector<CascadeRange> cascadeRangesOver(double n, double f, const ShadowSettings& s,
+                                            std::optional<glm::vec2> visible);
 
 // Why the settings' cascades do not fit this scene, in the kernel's words (the setting named as
 // its key; the command line says its flag, app/cli_util.h cliWords), or nullopt: more than one
@@ -106,7 +112,9 @@ CascadeLookup cascadeVisibilityIn(const ShadowMap& map, int layer, float viewDep
                                   glm::vec2 nextDzduv = glm::vec2(0.0f));
 
 // One layer per cascade (shadowMapLayer's fields, plus the view depths it covers), for a map of
-// s.mapSize texels seen by a camera whose frame is `aspect` wide per unit of height.
-std::vector<PcfMapLayer> cascadeLayers(const Scene& scene, const ShadowSettings& s, float aspect);
+// s.mapSize texels seen by a camera whose frame is `aspect` wide per unit of height; `visible` as
+// cascadeRanges.
+std::vector<PcfMapLayer> cascadeLayers(const Scene& scene, const ShadowSettings& s, float aspect,
+                                       std::optional<glm::vec2> visible = std::nullopt);
 
 }  // namespace pcf

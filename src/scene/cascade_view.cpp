@@ -1,16 +1,18 @@
 #include "scene/cascade_view.h"
 
+#include "kernel/cascades.h"
 #include "scene/cascade_fit.h"
 #include "scene/shadow_fit.h"
 
 namespace pcf {
 
 MapSpec cascadedMapSpec(const Scene& scene, const ShadowSettings& s, const glm::mat4& fit,
-                        const Camera& cascadeCamera, float aspect) {
+                        const Camera& cascadeCamera, float aspect,
+                        std::optional<glm::vec2> visible) {
     if (s.cascades <= 1) return shadowMapSpec(scene, s, fit, aspect);
     Scene seen = scene;
     seen.camera = cascadeCamera;
-    return shadowMapSpec(seen, s, fit, aspect);
+    return shadowMapSpec(seen, s, fit, aspect, visible);
 }
 
 std::optional<ParamProblem> cascadeMethodProblem(const ShadowSettings& s) {
@@ -27,6 +29,12 @@ std::optional<ParamProblem> cascadeMethodProblem(const ShadowSettings& s) {
 std::optional<ParamProblem> lessonCascadeProblem(const Scene& scene, const ShadowSettings& s,
                                                  bool freeze) {
     if (std::optional<ParamProblem> why = cascadeProblem(scene, s)) return why;
+    if (s.cascades > 1 && s.cascadeBounds == CASCADE_BOUNDS_DEPTH) {
+        return ParamProblem{"cascade_bounds", "",
+                            " depth is not for a lesson: its bounds are measured on the frame "
+                            "drawn, but a lesson's cascades are fitted once for every frame size "
+                            "(use fixed)"};
+    }
     if (freeze && s.cascades < 2) {
         return ParamProblem{"freeze_cascades", "",
                             " needs cascades 2..4, not " + std::to_string(s.cascades)};

@@ -25,16 +25,21 @@ namespace pcf {
 constexpr float LESSON_CASCADE_ASPECT = 16.0f / 9.0f;
 
 // The map the depth pass makes for settings `s` (scene/shadow_fit.h shadowMapSpec), its cascades
-// fitted to `cascadeCamera`'s view at `aspect` instead of the scene's camera.
+// fitted to `cascadeCamera`'s view at `aspect` instead of the scene's camera; `visible` as
+// shadowMapSpec's.
 MapSpec cascadedMapSpec(const Scene& scene, const ShadowSettings& s, const glm::mat4& fit,
-                        const Camera& cascadeCamera, float aspect);
+                        const Camera& cascadeCamera, float aspect,
+                        std::optional<glm::vec2> visible = std::nullopt);
 
 // Whether settings s name a method cascades cannot take (scene/cascade_fit.h cascadeProblem on
 // any directional light): nullopt with one map or a method that can.
 std::optional<ParamProblem> cascadeMethodProblem(const ShadowSettings& s);
 
 // Why a lesson step's cascades do not fit its scene (scene/cascade_fit.h cascadeProblem), or
-// why `freeze` asks for what is not there (freeze_cascades without cascades); nullopt when fine.
+// why `freeze` asks for what is not there (freeze_cascades without cascades), or why its
+// cascade_bounds cannot be depth (a lesson fits its cascades at LESSON_CASCADE_ASPECT and pins its
+// point's lookup on the CPU before any frame is drawn, so that the point traces the same lookup
+// at every size: bounds measured on a frame would differ from size to size); nullopt when fine.
 std::optional<ParamProblem> lessonCascadeProblem(const Scene& scene, const ShadowSettings& s,
                                                  bool freeze);
 

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "kernel/cascades.h"
 #include "scene/cascade_fit.h"
 #include "scene/pcss.h"
 
@@ -13,7 +14,7 @@ PcfMapLayer shadowMapLayer(const Scene& scene, const glm::mat4& shadowClipFromWo
 }
 
 MapSpec shadowMapSpec(const Scene& scene, const ShadowSettings& s, const glm::mat4& fit,
-                      float aspect) {
+                      float aspect, std::optional<glm::vec2> visible) {
     MapSpec spec;
     spec.size = {s.mapSize, s.mapSize};
     spec.texels = mapTexelKind(s.method, s.depthFormat, s.momentBits);
@@ -22,7 +23,10 @@ MapSpec shadowMapSpec(const Scene& scene, const ShadowSettings& s, const glm::ma
         return spec;
     }
     if (auto why = cascadeProblem(scene, s)) throw std::invalid_argument(why->text());
-    spec.layers = cascadeLayers(scene, s, aspect);
+    if (s.cascadeBounds != CASCADE_BOUNDS_DEPTH) visible = std::nullopt;
+    spec.layers = cascadeLayers(scene, s, aspect, visible);
+    spec.cascadeDepths = vec2(scene.camera.nearZ, cascadeFarDepth(scene.camera, s));
+    spec.visibleDepths = visible;
     return spec;
 }
 

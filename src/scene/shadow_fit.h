@@ -4,6 +4,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <optional>
 
 #include "kernel/settings.h"
 #include "kernel/shadow_map.h"
@@ -21,9 +22,12 @@ PcfMapLayer shadowMapLayer(const Scene& scene, const glm::mat4& shadowClipFromWo
 // own fit, shadowClipFromWorld(scene), or a lesson's shifted one), or with more than one cascade
 // one layer per cascade, each fitted to its slice of the camera's frustum (scene/cascade_fit.h;
 // `aspect` is the camera frame's width / height), `fit` unused. Throws std::invalid_argument
-// when the cascades do not fit the scene (cascadeProblem).
+// when the cascades do not fit the scene (cascadeProblem). With cascade_bounds depth, `visible`
+// is the frame's visible receivers' view depths as measured (SceneRenderer's prepass; nullopt
+// when the frame shows none): the cascades split [n, f] tightened to them, and the map keeps
+// both (MapSpec::cascadeDepths, visibleDepths).
 MapSpec shadowMapSpec(const Scene& scene, const ShadowSettings& s, const glm::mat4& fit,
-                      float aspect);
+                      float aspect, std::optional<glm::vec2> visible = std::nullopt);
 
 // A frame's width / height, 1 for an empty frame: the camera's aspect.
 inline float frameAspect(glm::ivec2 size) {
