@@ -225,7 +225,8 @@ std::string drawnStepText(std::string_view text);
 // A frame is drawn in layers: the panels' backgrounds (clearInspectorPanels) and the scene's
 // pixels blitted into layout.scene; then
 // drawInspector (everything but the map thumbnail's pixels), flushed; then thumbnailImage blitted
-// into thumbnailRect; then drawInspectorTop (the thumbnail's frame and box, the help), flushed.
+// into thumbnailRect; then drawInspectorTop (the picked pixel's ring and label, the thumbnail's
+// frame and box, the help), flushed.
 // Both plan the frame (planFrame) and replay their half of it.
 void drawInspector(Canvas& canvas, const InspectorLayout& layout, const InspectorModel& model);
 void drawInspectorTop(Canvas& canvas, const InspectorLayout& layout, const InspectorModel& model);

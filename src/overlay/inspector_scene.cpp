@@ -200,11 +200,19 @@ void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
     glm::vec2 centre = origin + (glm::vec2(m.pixel) + 0.5f) * scale;
     float lineWidth = l.presentation ? 3.0f : 2.0f;
     Rect scene = l.scene;
-    pl.op([=](Canvas& c) { c.pushClip(scene); });
-    if (!l.sceneInset) planTexelGrid(pl, l, m);
+    if (!l.sceneInset) {
+        pl.op([=](Canvas& c) { c.pushClip(scene); });
+        planTexelGrid(pl, l, m);
+        pl.op([](Canvas& c) { c.popClip(); });
+    }
+    // The ring and the label go on top, over what the session draws on the scene after the base
+    // plan (the frozen cascades' boxes and split planes, session.cpp drawFrozenCascades).
+    bool onTop = pl.onTop;
+    pl.onTop = true;
     // Wide enough that what lies at the pixel (9.3's light gap at the pole's foot) shows inside.
     float ringR = std::max(11.0f, 14.0f * l.scale);
     pl.op([=](Canvas& c) {
+        c.pushClip(scene);
         c.ring(centre, ringR, lineWidth, Colour{0, 0, 0, 0.8f});
         c.ring(centre, ringR, lineWidth * 0.5f, POINT);
         c.fillRect({centre.x - 0.5f, centre.y - 0.5f, 1.0f, 1.0f}, POINT);
@@ -214,6 +222,7 @@ void planScene(Planner& pl, const InspectorLayout& l, const InspectorModel& m, c
               2 * (ringR + lineWidth)};
     pl.box(BoxKind::Mark, ring.intersect(l.scene), "scene", "picked-pixel");
     planPixelLabel(pl, l, m, t, centre);
+    pl.onTop = onTop;
 }
 
 }  // namespace pcf::inspector_detail
