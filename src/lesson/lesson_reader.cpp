@@ -34,8 +34,8 @@ std::string formatValue(double v) {
     return s.str();
 }
 
-void LessonReader::checkLength(const toml::node& node, const std::string& what, const std::string& text,
-                 size_t limit) const {
+void LessonReader::checkLength(const toml::node& node, const std::string& what,
+                               const std::string& text, size_t limit) const {
     size_t chars = 0;
     for (char c : text) chars += (static_cast<unsigned char>(c) & 0xC0) != 0x80 ? 1 : 0;
     if (chars > limit) {
@@ -48,14 +48,13 @@ void LessonReader::fail(const toml::node& node, const std::string& problem) cons
     throw InputError(mSource, lineOf(node), problem);
 }
 
-std::string LessonReader::requireText(const toml::table& table, std::string_view key, const std::string& what,
-                        const toml::node& owner) const {
+std::string LessonReader::requireText(const toml::table& table, std::string_view key,
+                                      const std::string& what, const toml::node& owner) const {
     const toml::node* node = table.get(key);
     if (!node) fail(owner, what + " has no " + std::string(key));
     const auto* s = node->as_string();
     if (!s)
-        fail(*node,
-             what + " " + std::string(key) + " must be a string, got " + typeName(*node));
+        fail(*node, what + " " + std::string(key) + " must be a string, got " + typeName(*node));
     std::string value = s->get();
     if (value.find_first_not_of(" \t\r\n") == std::string::npos) {
         fail(*node, what + " " + std::string(key) + " must not be empty");
@@ -101,12 +100,14 @@ std::string LessonReader::valueText(const toml::node& v) {
     return "(" + typeName(v) + ")";
 }
 
-void LessonReader::readChartKeys(const toml::table& table, const std::string& what, LessonStep& step) const {
+void LessonReader::readChartKeys(const toml::table& table, const std::string& what,
+                                 LessonStep& step) const {
     attempt([&] { readChart(table, what, step); });
     attempt([&] { readHighlights(table, what, step); });
 }
 
-void LessonReader::readChart(const toml::table& table, const std::string& what, LessonStep& step) const {
+void LessonReader::readChart(const toml::table& table, const std::string& what,
+                             LessonStep& step) const {
     if (table.get("chart")) {
         std::string chart = requireText(table, "chart", what, table);
         // "figures/stability.csv#shimmer": which of a stability.csv's charts to show.
@@ -130,7 +131,8 @@ void LessonReader::readChart(const toml::table& table, const std::string& what, 
     }
 }
 
-void LessonReader::readHighlights(const toml::table& table, const std::string& what, LessonStep& step) const {
+void LessonReader::readHighlights(const toml::table& table, const std::string& what,
+                                  LessonStep& step) const {
     if (const toml::node* h = table.get("chart_highlight")) {
         // That the chart is a bench chart (not a stability chart, "PATH#NAME") is checked
         // with the file (charts/step_chart.h: checkStepChartHighlight).
@@ -152,7 +154,8 @@ void LessonReader::readHighlights(const toml::table& table, const std::string& w
     }
 }
 
-void LessonReader::readClaims(const toml::table& table, const std::string& what, LessonStep& step) const {
+void LessonReader::readClaims(const toml::table& table, const std::string& what,
+                              LessonStep& step) const {
     auto strings = [&](const char* key) {
         std::vector<std::pair<std::string, const toml::node*>> out;
         const toml::node* node = table.get(key);
@@ -161,8 +164,7 @@ void LessonReader::readClaims(const toml::table& table, const std::string& what,
         if (!array) fail(*node, what + " " + key + " must be an array of strings");
         for (const toml::node& e : *array) {
             const auto* s = e.as_string();
-            if (!s)
-                fail(e, what + " " + key + " must be an array of strings, got " + typeName(e));
+            if (!s) fail(e, what + " " + key + " must be an array of strings, got " + typeName(e));
             out.emplace_back(s->get(), &e);
         }
         return out;
@@ -195,7 +197,8 @@ void LessonReader::readClaims(const toml::table& table, const std::string& what,
     }
 }
 
-void LessonReader::readAnimation(const toml::table& table, const std::string& what, LessonStep& step) const {
+void LessonReader::readAnimation(const toml::table& table, const std::string& what,
+                                 LessonStep& step) const {
     const toml::node* node = table.get("animate");
     if (!node) return;
     const toml::table* a = node->as_table();
@@ -215,8 +218,8 @@ void LessonReader::readAnimation(const toml::table& table, const std::string& wh
     std::string sweep = requireText(*a, "sweep", where, *a);
     std::optional<AnimationSweep> known = animationSweepFromName(sweep);
     if (!known) {
-        fail(*node, where + " sweep '" + sweep +
-                        "' is not one of: " + std::string(ANIMATION_SWEEP_NAMES));
+        fail(*node,
+             where + " sweep '" + sweep + "' is not one of: " + std::string(ANIMATION_SWEEP_NAMES));
     }
     anim.sweep = *known;
     if (!step.chart.empty()) fail(*node, where + ": a chart step cannot move");
@@ -225,8 +228,8 @@ void LessonReader::readAnimation(const toml::table& table, const std::string& wh
         if (!n) return;
         const auto* v = n->as_integer();
         if (!v || v->get() < lo || v->get() > hi) {
-            fail(*n, where + " " + key + " must be a whole number in " + std::to_string(lo) +
-                         ".." + std::to_string(hi));
+            fail(*n, where + " " + key + " must be a whole number in " + std::to_string(lo) + ".." +
+                         std::to_string(hi));
         }
         out = static_cast<int>(v->get());
     };
@@ -247,7 +250,8 @@ void LessonReader::readAnimation(const toml::table& table, const std::string& wh
     step.animate = anim;
 }
 
-void LessonReader::readCompare(const toml::table& table, const std::string& what, LessonStep& step) const {
+void LessonReader::readCompare(const toml::table& table, const std::string& what,
+                               LessonStep& step) const {
     const toml::node* node = table.get("compare");
     if (!node) return;
     const toml::table* keys = node->as_table();
@@ -283,7 +287,8 @@ void LessonReader::readCompare(const toml::table& table, const std::string& what
     step.compareLine = lineOf(*node);
 }
 
-void LessonReader::readPredict(const toml::table& table, const std::string& what, LessonStep& step) const {
+void LessonReader::readPredict(const toml::table& table, const std::string& what,
+                               LessonStep& step) const {
     const toml::node* node = table.get("predict");
     if (!node) return;
     const toml::table* p = node->as_table();
@@ -312,9 +317,9 @@ void LessonReader::readPredict(const toml::table& table, const std::string& what
         predict.tolerance = number(*t, where + " tolerance");
     }
     ShadowMap probe(16, 16, 1.0f);
-    Trace trace = traceLookup(
-        probe, vec2(0.5f), 0.5f, 0.5f,
-        makeParams(step.settings.method, step.settings.kernel, step.settings.radius));
+    Trace trace =
+        traceLookup(probe, vec2(0.5f), 0.5f, 0.5f,
+                    makeParams(step.settings.method, step.settings.kernel, step.settings.radius));
     if (auto problem = predictProblem(
             predict, p->get("tolerance") != nullptr, static_cast<int>(trace.taps.size()),
             static_cast<int>(trace.fetches.size()), step.compare.parts())) {
