@@ -2,8 +2,9 @@
 // shared/pcf_kernel.h, the same source the CPU kernel compiles (the loader puts the prelude and
 // the kernel before this file). PCF_METHOD and PCF_KERNEL arrive as defines, so the driver
 // folds the method dispatch and unrolls the kernel loops. PCF_ALL_TARGETS adds outputs: 0 colour
-// only (timing), 1 + light-space, visibility and receiver (the inspector), 2 + world position
-// and normal (tests, --raw: what `verify` recomputes each pixel's lookup from). The bias mode (PCF_SCENE_BIAS) and the light type (PCF_SCENE_SPOT) are
+// only (timing), 1 + light-space, visibility and receiver (the inspector), 2 + world position,
+// normal and the next cascade's receiver (tests, --raw: what `verify` recomputes each pixel's
+// lookup from). The bias mode (PCF_SCENE_BIAS) and the light type (PCF_SCENE_SPOT) are
 // defines too, one program each: llvmpipe runs both sides of every branch under a lane mask,
 // even when the condition is a uniform, so a branch on a uniform costs its whole body on every
 // fragment. As uniforms, the bias modes' branches here and in the kernel's taps made the camera
@@ -39,6 +40,9 @@ layout(location = 3) out vec4 oReceiver;    // dz/du, dz/dv, z before bias, 1 on
 #if PCF_ALL_TARGETS >= 2
 layout(location = 4) out vec4 oPosWs;       // world position, w = 1 where drawn
 layout(location = 5) out vec4 oNormalWs;    // the unit normal facing the camera, cos(theta)
+// With a blend band: the receiver in the next cascade (the last's own in the last), as oReceiver
+// in the cascade read: dz/du, dz/dv, z before bias, 1 on receivers; 0 without a band.
+layout(location = 6) out vec4 oNextReceiver;
 #endif
 
 const float AMBIENT = 0.25f;
@@ -98,13 +102,14 @@ void main() {
 
 #if PCF_CASCADE_BLEND
     // The next cascade's lookup of this point, for the blend band below; its receiver plane
-    // from its own derivatives, taken here where every lane of the quad runs.
+    // from its own derivatives, taken here where every lane of the quad runs, and written out
+    // (oNextReceiver) so that the CPU filters the band with the very same slope.
     PcfMapLayer nextLayer = uPcfMapLayers[min(layerIndex + 1, PCF_MAP_LAYERS - 1)];
     PcfReceiverLookup next = pcfReceiverLookup(nextLayer.shadowClipFromWorld, vPosWs, n, cosTheta,
                                                BIAS_MODE, uConstantBias, uSlopeBias, uSlopeMax,
                                                uNormalOffset, nextLayer.texelWs);
     vec2 nextDzduv = vec2(0.0f);
-    if (BIAS_MODE == PCF_BIAS_RECEIVER_PLANE) {
+    if (PCF_ALL_TARGETS >= 2 || BIAS_MODE == PCF_BIAS_RECEIVER_PLANE) {
         vec3 nextUvz = vec3(next.u, next.v, next.z);
         nextDzduv = pcfReceiverPlaneDzDuv(dFdx(nextUvz), dFdy(nextUvz));
     }
@@ -186,5 +191,9 @@ void main() {
 #if PCF_ALL_TARGETS >= 2
     oPosWs = vec4(vPosWs, 1.0f);
     oNormalWs = vec4(n, cosTheta);
+    oNextReceiver = vec4(0.0f);
+#if PCF_CASCADE_BLEND
+    if (uReceives != 0) oNextReceiver = vec4(nextDzduv.x, nextDzduv.y, next.z0, 1.0f);
+#endif
 #endif
 }

@@ -61,34 +61,52 @@ struct CascadeAgreement {
     std::vector<int> perLayer = std::vector<int>(MAX_CASCADES, 0);
 };
 
+// One frame's GPU targets, read back (scene_renderer.h): what the CPU is held to, per pixel k.
+struct FrameTargets {
+    ShadowMap map;
+    std::vector<float> lightSpace, receiver, nextReceiver, positions, normals, visibility;
+    bool isReceiver(size_t k) const { return lightSpace[4 * k + 3] == 1.0f; }
+    glm::vec2 uv(size_t k) const { return {lightSpace[4 * k], lightSpace[4 * k + 1]}; }
+    float ref(size_t k) const { return lightSpace[4 * k + 2]; }
+    glm::vec2 dzduv(size_t k) const { return {receiver[4 * k], receiver[4 * k + 1]}; }
+    glm::vec2 nextDzduv(size_t k) const { return {nextReceiver[4 * k], nextReceiver[4 * k + 1]}; }
+    glm::vec3 position(size_t k) const {
+        return {positions[4 * k], positions[4 * k + 1], positions[4 * k + 2]};
+    }
+    glm::vec3 normal(size_t k) const {
+        return {normals[4 * k], normals[4 * k + 1], normals[4 * k + 2]};
+    }
+    float cosTheta(size_t k) const { return normals[4 * k + 3]; }
+};
+
+// Renders `s` with every target and reads them back.
+FrameTargets renderTargets(SceneRenderer& renderer, RenderSettings s) {
+    s.writePositions = true;
+    renderer.render(s);
+    return {renderer.readShadowMap(),    renderer.readLightSpace(), renderer.readReceiver(),
+            renderer.readNextReceiver(), renderer.readPositions(),  renderer.readNormals(),
+            renderer.readVisibility()};
+}
+
 // Renders `s` and runs the CPU kernel on the GPU's own targets, each receiver on the layer the
 // CPU picks for its world position.
 CascadeAgreement renderAndCompare(SceneRenderer& renderer, const Scene& scene, RenderSettings s) {
-    s.writePositions = true;
-    renderer.render(s);
-    ShadowMap map = renderer.readShadowMap();
-    std::vector<float> ls = renderer.readLightSpace();
-    std::vector<float> rc = renderer.readReceiver();
-    std::vector<float> pos = renderer.readPositions();
-    std::vector<float> vis = renderer.readVisibility();
+    FrameTargets t = renderTargets(renderer, s);
     CascadeAgreement a;
-    for (size_t k = 0; k < vis.size(); ++k) {
-        if (ls[4 * k + 3] != 1.0f) continue;
+    for (size_t k = 0; k < t.visibility.size(); ++k) {
+        if (!t.isReceiver(k)) continue;
         ++a.receivers;
-        int layer = cascadeOfPoint(map.spec(), scene.camera,
-                                   glm::vec3(pos[4 * k], pos[4 * k + 1], pos[4 * k + 2]));
+        int layer = cascadeOfPoint(t.map.spec(), scene.camera, t.position(k));
         float cpu = 1.0f;
-        if (layer < map.layers()) {
+        if (layer < t.map.layers()) {
             ++a.perLayer[static_cast<size_t>(layer)];
-            PcfBias b = s.kernelBias();
-            b.dzduv = glm::vec2(rc[4 * k], rc[4 * k + 1]);
-            cpu = filterLayerVisibility(map, layer, glm::vec2(ls[4 * k], ls[4 * k + 1]),
-                                        ls[4 * k + 2], renderer.pcfParams(s), b);
+            cpu = filterLayerVisibility(t.map, layer, t.uv(k), t.ref(k), renderer.pcfParams(s),
+                                        s.kernelBias(t.dzduv(k)));
         } else {
             ++a.beyond;
         }
-        a.shadowed += vis[k] < 0.5f ? 1 : 0;
-        a.worst = std::max(a.worst, std::fabs(cpu - vis[k]));
+        a.shadowed += t.visibility[k] < 0.5f ? 1 : 0;
+        a.worst = std::max(a.worst, std::fabs(cpu - t.visibility[k]));
     }
     return a;
 }
@@ -179,33 +197,24 @@ struct BlendAgreement {
 
 // A blended frame: the CPU looks each receiver up in its cascade (the GPU's own u, v, ref and
 // receiver plane, as renderAndCompare) and, in the band, in the next (cascadeVisibilityAt, from
-// the GPU's world position and normal), and mixes them by the shared weight.
+// the GPU's world position, normal and receiver plane in the next cascade), and mixes them by
+// the shared weight.
 BlendAgreement renderBlendedAndCompare(SceneRenderer& renderer, const Scene& scene,
                                        RenderSettings s) {
-    s.writePositions = true;
-    renderer.render(s);
-    ShadowMap map = renderer.readShadowMap();
-    std::vector<float> ls = renderer.readLightSpace();
-    std::vector<float> rc = renderer.readReceiver();
-    std::vector<float> pos = renderer.readPositions();
-    std::vector<float> nrm = renderer.readNormals();
-    std::vector<float> vis = renderer.readVisibility();
+    FrameTargets t = renderTargets(renderer, s);
     BlendAgreement a;
-    for (size_t k = 0; k < vis.size(); ++k) {
-        if (ls[4 * k + 3] != 1.0f) continue;
-        glm::vec2 dzduv(rc[4 * k], rc[4 * k + 1]);
-        CascadeLookup c = cascadeVisibilityAt(map, scene.camera, s, renderer.pcfParams(s),
-                                              glm::vec3(pos[4 * k], pos[4 * k + 1], pos[4 * k + 2]),
-                                              glm::vec3(nrm[4 * k], nrm[4 * k + 1], nrm[4 * k + 2]),
-                                              nrm[4 * k + 3], dzduv);
+    for (size_t k = 0; k < t.visibility.size(); ++k) {
+        if (!t.isReceiver(k)) continue;
+        CascadeLookup c =
+            cascadeVisibilityAt(t.map, scene.camera, s, renderer.pcfParams(s), t.position(k),
+                                t.normal(k), t.cosTheta(k), t.dzduv(k), t.nextDzduv(k));
         float cpu = 1.0f;
-        if (c.layer < map.layers()) {
-            PcfBias b = s.kernelBias(dzduv);
-            float own = filterLayerVisibility(map, c.layer, glm::vec2(ls[4 * k], ls[4 * k + 1]),
-                                              ls[4 * k + 2], renderer.pcfParams(s), b);
+        if (c.layer < t.map.layers()) {
+            float own = filterLayerVisibility(t.map, c.layer, t.uv(k), t.ref(k),
+                                              renderer.pcfParams(s), s.kernelBias(t.dzduv(k)));
             cpu = pcfCascadeBlend(own, c.nextVisibility, c.weight);
         }
-        float diff = std::fabs(cpu - vis[k]);
+        float diff = std::fabs(cpu - t.visibility[k]);
         if (c.weight > 0.0f) {
             ++a.inBand;
             a.seamVisible += std::fabs(c.visibility - c.nextVisibility) > 0.01f ? 1 : 0;
@@ -214,21 +223,23 @@ BlendAgreement renderBlendedAndCompare(SceneRenderer& renderer, const Scene& sce
             a.worstOutside = std::max(a.worstOutside, diff);
             a.worst = std::max(a.worst, diff);
         }
-        a.worstRecomputed = std::max(a.worstRecomputed, std::fabs(c.blended - vis[k]));
+        a.worstRecomputed = std::max(a.worstRecomputed, std::fabs(c.blended - t.visibility[k]));
     }
     return a;
 }
 
 // With a blend band the GPU filters the next cascade too where the band says so, and mixes the
-// two by the shared weight: the CPU gives the same, for every method and the bias modes that
-// need no second receiver plane (receiver-plane bias's next plane is the GPU's own derivative).
+// two by the shared weight: the CPU gives the same, for every method and bias mode (receiver-plane
+// bias filters the next cascade with the receiver's plane there, the GPU's own derivative, which
+// the next receiver target holds).
 TEST_F(CascadeParity, BlendedCascadesMatchTheCpuKernel) {
     Scene scene = postsAlongGround();
     SceneRenderer renderer(scene);
     float worst = 0.0f, worstOutside = 0.0f, worstRecomputed = 0.0f;
     int seamVisible = 0;
     for (int method : {PCF_GATHER, PCF_NAIVE, PCF_HW2X2, PCF_TENT, PCF_POISSON, PCF_NEAREST}) {
-        for (BiasMode mode : {BiasMode::Constant, BiasMode::Normal, BiasMode::Slope}) {
+        for (BiasMode mode :
+             {BiasMode::Constant, BiasMode::Normal, BiasMode::Slope, BiasMode::ReceiverPlane}) {
             RenderSettings s = cascaded(method, 3, CASCADE_FIT_SPHERE, true);
             s.bias = mode;
             s.cascadeBlend = 0.3f;

@@ -1,5 +1,6 @@
 // pcfscope render: one frame, headless (EGL); --raw writes the intermediate buffers as EXR.
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -80,24 +81,40 @@ LessonRender lessonRenderOf(const RenderCommandOptions& o, const RenderSettings&
     return out;
 }
 
-// The files of a --raw folder.
+// The files of a --raw folder; nextReceiver only with a blend band (empty without).
 struct RawFiles {
     std::string shadow, lightSpace, visibility, positions, normals, receiver, settings;
+    std::string nextReceiver;
 };
 
-// The --raw folder's files, each added to `outputs`.
-RawFiles rawFilesIn(const std::string& rawDir, OutputFiles& outputs) {
+// The --raw folder's files, each added to `outputs`; with cascades blended (`band`) the next
+// cascade's receiver plane too.
+RawFiles rawFilesIn(const std::string& rawDir, bool band, OutputFiles& outputs) {
     std::filesystem::path dir(rawDir);
     outputs.addDirectory("--raw", dir);
     RawFiles raw{(dir / "shadowmap.exr").string(),  (dir / "lightspace.exr").string(),
                  (dir / "visibility.exr").string(), (dir / "positions.exr").string(),
                  (dir / "normals.exr").string(),    (dir / "dzduv.exr").string(),
-                 (dir / "render.json").string()};
+                 (dir / "render.json").string(),    ""};
+    if (band) raw.nextReceiver = (dir / "next_dzduv.exr").string();
     for (const std::string& p : {raw.shadow, raw.lightSpace, raw.visibility, raw.positions,
-                                 raw.normals, raw.receiver, raw.settings}) {
-        outputs.add("--raw", p);
+                                 raw.normals, raw.receiver, raw.settings, raw.nextReceiver}) {
+        if (!p.empty()) outputs.add("--raw", p);
     }
     return raw;
+}
+
+// What rendering `settings` into `raw` (empty: no --raw) may take. Measured peaks of
+// `render --raw -o` (box-on-plane, map 1024): 339 MB at 1024x1024, 686 MB at 2048x2048, so 113
+// bytes a pixel over about 220 MB; the encoded EXR held in memory while it is written adds up
+// to 16 more. The next cascade's receiver target of --raw adds 16 bytes a pixel (measured at
+// 1024x1024: 386 -> 403 MB); its read-back and next_dzduv.exr, made after the other files',
+// did not raise the peak (long-ground, 4 cascades, band 0.3: 429 -> 445 MB). The map: depth,
+// its read-back, its EXR, each as many times as it has layers (cascades).
+std::uint64_t renderMemory(const RenderSettings& settings, const RawFiles& raw) {
+    std::uint64_t pixelBytes = 130 + (raw.shadow.empty() ? 0u : 16u);
+    return memoryEstimate(256 * MIB, pixelBytes, settings.frameSize.x, settings.frameSize.y) +
+           memoryEstimate(0, 12 * settings.cascades, settings.mapSize, settings.mapSize);
 }
 
 // --time: the camera pass's median over `repeats` draws, on stdout.
@@ -156,6 +173,10 @@ void writeRawBuffers(SceneRenderer& renderer, const RawFiles& raw, const RenderS
     writeExr(raw.normals, size.x, size.y, 4, normals, {"R", "G", "B", "A"});
     std::vector<float> receiver = renderer.readReceiver();
     writeExr(raw.receiver, size.x, size.y, 4, receiver, {"R", "G", "B", "A"});
+    if (!raw.nextReceiver.empty()) {
+        writeExr(raw.nextReceiver, size.x, size.y, 4, renderer.readNextReceiver(),
+                 {"R", "G", "B", "A"});
+    }
     writeTextFile(raw.settings,
                   withCascadeDensities(
                       settingsJson(settings, renderer.pcfParams(settings), renderer.mapSpec()),
@@ -205,19 +226,13 @@ int runRender(const RenderCommandOptions& o) {
     }
     RawFiles raw;
     if (!o.rawDir.empty()) {
-        raw = rawFilesIn(o.rawDir, outputs);
+        raw = rawFilesIn(o.rawDir, settings.cascades > 1 && settings.cascadeBlend > 0.0f, outputs);
         settings.writePositions = true;
     }
 
-    // Measured peaks of `render --raw -o` (box-on-plane, map 1024): 339 MB at 1024x1024, 686 MB
-    // at 2048x2048, so 113 bytes a pixel over about 220 MB; the encoded EXR held in memory
-    // while it is written adds up to 16 more. The map: depth, its read-back, its EXR, each as
-    // many times as it has layers (cascades).
     requireMemory("--size " + std::to_string(settings.frameSize.x) + "x" +
                       std::to_string(settings.frameSize.y),
-                  memoryEstimate(256 * MIB, 130, settings.frameSize.x, settings.frameSize.y) +
-                      memoryEstimate(0, 12 * settings.cascades, settings.mapSize, settings.mapSize),
-                  o.force);
+                  renderMemory(settings, raw), o.force);
     std::unique_ptr<GlContext> context = createHeadlessContext();
     SceneRenderer renderer(scene);
     if (lesson.fit) renderer.setShadowClipFromWorld(*lesson.fit);
@@ -252,7 +267,8 @@ Command addRenderCommand(CLI::App& app) {
                     "write shadowmap.exr, lightspace.exr (u, v, ref, receiver), "
                     "visibility.exr, positions.exr (world xyz, drawn), normals.exr (the normal "
                     "facing the camera, cos(theta) to the light), dzduv.exr (dz/du, dz/dv of "
-                    "the receiver plane, z before bias, receiver) and render.json (the "
+                    "the receiver plane, z before bias, receiver), with --cascade-blend "
+                    "next_dzduv.exr (the same in the next cascade) and render.json (the "
                     "settings, the light's clip matrix) into DIR");
     sub->add_flag("-f,--force", o->force,
                   "overwrite existing output files; start work larger than the memory estimate "

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/cli_util.h"
@@ -21,6 +22,7 @@
 #include "kernel/trace_explain.h"
 #include "kernel/trace_json.h"
 #include "render/image_io.h"
+#include "scene/cascade_fit.h"
 
 namespace pcf {
 
@@ -113,10 +115,43 @@ vec2 traceDzDuv(const TraceOptions& o, const ShadowSettings& s) {
     return dzduv;
 }
 
+// Pixel k of a `render --raw` folder in a blend band (cascade_blend): the next cascade's lookup
+// of its point and the band's weight, as scene/cascade_fit.h cascadeVisibilityIn gives them (the
+// CPU path tests/cascade_parity_test.cpp holds to the GPU), from the pixel's world position,
+// normal, planes in both cascades and render.json's cascade camera; the result mixes the
+// trace's own visibility (the taps it shows, from the pixel's u, v and ref) with the next one.
+// No band (next -1) outside it, in the last cascade, past it, or without a band.
+TraceCascadeBlend rawCascadeBlend(const RawImages& img, const RawSettings& r, size_t k, int layer,
+                                  const PcfParams& prm, float visibility, const std::string& dir) {
+    const ShadowSettings& s = r.settings;
+    if (!(s.cascadeBlend > 0.0f) || layer + 1 >= img.map.layers()) return {};
+    if (img.normals.data.empty()) {
+        throw UsageError(dir +
+                         " has no normals.exr: a blend band's next lookup is made from "
+                         "the pixel's normal");
+    }
+    std::optional<vec2> nextPlane = nextReceiverPlane(img, k);
+    if (s.bias == BiasMode::ReceiverPlane && !nextPlane) {
+        throw UsageError(dir +
+                         " has no next_dzduv.exr: under receiver-plane bias a blend band "
+                         "filters the next cascade with the receiver's plane there");
+    }
+    const float* p = &img.positions.data[4 * k];
+    const float* n = &img.normals.data[4 * k];
+    vec2 dzduv(img.planes.data[4 * k], img.planes.data[4 * k + 1]);
+    CascadeLookup c = cascadeVisibilityIn(img.map, layer, pixelViewDepth(img, r, k), s, prm,
+                                          vec3(p[0], p[1], p[2]), vec3(n[0], n[1], n[2]), n[3],
+                                          dzduv, nextPlane.value_or(vec2(0.0f)));
+    if (c.next < 0) return {};
+    return {c.next, c.weight, c.nextVisibility,
+            pcfCascadeBlend(visibility, c.nextVisibility, c.weight)};
+}
+
 // --raw DIR --pixel X,Y: the lookup the camera pass made at that pixel (top-left origin) of a
 // `render --raw` folder, traced by the CPU kernel on the layer it read (a cascaded map's: the
 // cascade its view depth falls in, raw_folder.h pixelLayer), with the settings and the map
-// render.json names; a cascade's density from render.json's "cascades".
+// render.json names; a cascade's density from render.json's "cascades"; in a blend band the
+// next cascade's lookup and the mix (rawCascadeBlend).
 Trace traceRawPixel(const TraceOptions& o) {
     // Everything else the folder's render.json says.
     for (const CLI::Option* opt : o.sub->get_options()) {
@@ -156,7 +191,30 @@ Trace traceRawPixel(const TraceOptions& o) {
                            std::min(layer, img.map.layers() - 1));
     if (!covered) tr.visibility = 1.0f;  // past the shadow distance: drawn lit
     if (img.map.layers() > 1) tr.cascadeTexelsPerPixelMax = rawCascadeDensity(dir, tr.layer);
+    if (covered)
+        tr.cascadeBlend = rawCascadeBlend(img, r, k, layer, r.prm, tr.visibility, o.rawDir);
     return tr;
+}
+
+// The trace on stdout, as text or (--json) as one JSON object.
+int printTrace(const TraceOptions& o, const Trace& tr) {
+    std::string out = o.json ? traceToJson(tr) + "\n" : traceToText(tr);
+    std::fwrite(out.data(), 1, out.size(), stdout);
+    return 0;
+}
+
+// The depth map --map FILE or --example names; for --map the lookup's --uv and --z are needed
+// (the example has its own).
+ShadowMap traceDepthMap(const TraceOptions& o) {
+    if (o.example) return exampleShadowMap();
+    if (o.uv.empty() || o.sub->count("--z") == 0) {
+        throw UsageError("trace --map needs --uv U,V and --z Z");
+    }
+    try {
+        return readDepthImage(o.mapPath);
+    } catch (const ImageError& e) {
+        throw UsageError(e.what());
+    }
 }
 
 int runTrace(const TraceOptions& o) {
@@ -164,35 +222,17 @@ int runTrace(const TraceOptions& o) {
     if (sources != 1) {
         throw UsageError("trace needs exactly one of --map FILE, --example or --raw DIR");
     }
-    if (!o.rawDir.empty()) {
-        Trace tr = traceRawPixel(o);
-        std::string out = o.json ? traceToJson(tr) + "\n" : traceToText(tr);
-        std::fwrite(out.data(), 1, out.size(), stdout);
-        return 0;
-    }
+    if (!o.rawDir.empty()) return printTrace(o, traceRawPixel(o));
     if (!o.pixel.empty()) throw UsageError("--pixel is for --raw DIR");
     ShadowSettings settings = traceSettings(o);
     PcfParams prm = traceParams(o, settings);
     TexelKind format = depthFormatOption(o.depthFormat);
     vec2 dzduv = traceDzDuv(o, settings);
 
-    ShadowMap map;
-    std::string uvText = o.uv;
-    bool zGiven = o.sub->count("--z") > 0;  // every float, NaN included, is a value
+    ShadowMap map = traceDepthMap(o);
+    std::string uvText = o.uv.empty() ? EXAMPLE_UV : o.uv;  // --map has its own (traceDepthMap)
+    bool zGiven = o.sub->count("--z") > 0;                  // every float, NaN included, is a value
     float z = zGiven ? o.z : EXAMPLE_Z;
-    if (o.example) {
-        map = exampleShadowMap();
-        if (uvText.empty()) uvText = EXAMPLE_UV;
-    } else {
-        if (uvText.empty() || !zGiven) {
-            throw UsageError("trace --map needs --uv U,V and --z Z");
-        }
-        try {
-            map = readDepthImage(o.mapPath);
-        } catch (const ImageError& e) {
-            throw UsageError(e.what());
-        }
-    }
     map.setTexelKind(format);
     // The moment methods read the moments map the moments pass makes of these depths.
     ShadowMap depthMap;
@@ -219,9 +259,7 @@ int runTrace(const TraceOptions& o) {
     Trace tr = traceLookup(map, uv, z, ref, prm, settings, dzduv);
     // The depths the moments average, and PCF of them (kernel/moment_footprint.h).
     if (readsMoments(prm.method)) addMomentFootprint(tr, depthMap);
-    std::string out = o.json ? traceToJson(tr) + "\n" : traceToText(tr);
-    std::fwrite(out.data(), 1, out.size(), stdout);
-    return 0;
+    return printTrace(o, tr);
 }
 
 }  // namespace

@@ -92,6 +92,13 @@ long checkLookups(const RawImages& img, const RawSettings& r, const std::string&
                          "normals.exr and each layer's fit, which the folder lacks; render it "
                          "again with `pcfscope render --raw`");
     }
+    if (img.layers.size() > 1 && s.cascadeBlend > 0.0f && s.bias == BiasMode::ReceiverPlane &&
+        img.nextPlanes.data.empty()) {
+        throw UsageError(dir +
+                         ": under receiver-plane bias a blend band filters the next cascade with "
+                         "the receiver's plane there (next_dzduv.exr), which the folder lacks; "
+                         "render it again with `pcfscope render --raw`");
+    }
     if (!recomputesWhole(img, r) && (s.bias == BiasMode::Slope || s.bias == BiasMode::Normal)) {
         throw UsageError(dir + ": bias " + std::string(biasModeName(s.bias)) +
                          " depends on each pixel's angle to the light, and the folder lacks "
@@ -167,31 +174,29 @@ struct EnvelopeTally {
 // the camera pass mixed the next cascade's lookup of its point into `env`'s, by the band's
 // weight, so its envelope is the same mix of the two cascades' envelopes (a mix of a value in
 // each interval lies in the mixed interval). The next lookup is recomputed from the pixel's world
-// position and normal (as recomputedLookup); under receiver-plane bias its plane is the GPU's own
-// derivative, which the folder does not hold, so that cascade's side is left unbounded [0, 1].
+// position and normal (as recomputedLookup); under receiver-plane bias it is filtered with the
+// pixel's plane in the next cascade, the GPU's own derivative (next_dzduv.exr).
 VisibilityEnvelope blendedEnvelope(const RawImages& img, const RawSettings& r, size_t k, int layer,
                                    VisibilityEnvelope env, PcfParams p, PcfBias b,
                                    const ConformancePrecision& prec) {
     int count = static_cast<int>(img.layers.size());
     if (!r.cascadeEyeDir || layer + 1 >= count || !(r.settings.cascadeBlend > 0.0f)) return env;
     const ShadowSettings& s = r.settings;
-    const float* pos = &img.positions.data[4 * k];
-    const float* n = &img.normals.data[4 * k];
-    vec3 posWs(pos[0], pos[1], pos[2]);
-    float depth = pcfViewDepth(posWs, r.cascadeEyeDir->first, r.cascadeEyeDir->second);
-    float w = pcfCascadeBlendWeight(depth, r.map->layers[static_cast<size_t>(layer)].viewDepth,
+    float w = pcfCascadeBlendWeight(pixelViewDepth(img, r, k),
+                                    r.map->layers[static_cast<size_t>(layer)].viewDepth,
                                     s.cascadeBlend, layer, count);
     if (!(w > 0.0f)) return env;
+    const float* pos = &img.positions.data[4 * k];
+    const float* n = &img.normals.data[4 * k];
     const PcfMapLayer& next = *lookupLayer(r, layer + 1);
-    PcfReceiverLookup at =
-        pcfReceiverLookup(next.shadowClipFromWorld, posWs, vec3(n[0], n[1], n[2]), n[3], s.modeId(),
-                          s.constantBias, s.slopeBias, s.slopeMax, s.normalOffset, next.texelWs);
+    PcfReceiverLookup at = pcfReceiverLookup(
+        next.shadowClipFromWorld, vec3(pos[0], pos[1], pos[2]), vec3(n[0], n[1], n[2]), n[3],
+        s.modeId(), s.constantBias, s.slopeBias, s.slopeMax, s.normalOffset, next.texelWs);
     const ShadowMap& map = img.layers[static_cast<size_t>(layer + 1)];
     if (s.rotate) p.rotation = pcfTexelRotation(vec2(at.u, at.v), ivec2(map.width(), map.height()));
-    VisibilityEnvelope other{0.0f, 1.0f};
-    if (b.mode != PCF_BIAS_RECEIVER_PLANE) {
-        other = visibilityEnvelope(map, vec2(at.u, at.v), at.ref, p, b, prec);
-    }
+    // checkLookups made sure the folder has the next planes receiver-plane bias needs.
+    if (b.mode == PCF_BIAS_RECEIVER_PLANE) b.dzduv = *nextReceiverPlane(img, k);
+    VisibilityEnvelope other = visibilityEnvelope(map, vec2(at.u, at.v), at.ref, p, b, prec);
     return {pcfCascadeBlend(env.lo, other.lo, w), pcfCascadeBlend(env.hi, other.hi, w)};
 }
 

@@ -251,16 +251,23 @@ void checkMapTexels(const RawSettings& r, const std::string& where) {
                      std::string(texelKindName(kind)) + " (" + where + ")");
 }
 
+float pixelViewDepth(const RawImages& img, const RawSettings& r, size_t k) {
+    const float* p = &img.positions.data[4 * k];
+    return pcfViewDepth(vec3(p[0], p[1], p[2]), r.cascadeEyeDir->first, r.cascadeEyeDir->second);
+}
+
 int pixelLayer(const RawImages& img, const RawSettings& r, size_t k) {
     if (!r.map || r.map->layers.size() < 2) return 0;
     int count = static_cast<int>(r.map->layers.size());
     vec4 cascadeFar(1e30f);
     for (int c = 0; c < count; ++c)
         cascadeFar[c] = r.map->layers[static_cast<size_t>(c)].viewDepth.y;
-    const float* p = &img.positions.data[4 * k];
-    float depth =
-        pcfViewDepth(vec3(p[0], p[1], p[2]), r.cascadeEyeDir->first, r.cascadeEyeDir->second);
-    return pcfCascadeLayer(depth, cascadeFar, count);
+    return pcfCascadeLayer(pixelViewDepth(img, r, k), cascadeFar, count);
+}
+
+std::optional<vec2> nextReceiverPlane(const RawImages& img, size_t k) {
+    if (img.nextPlanes.data.empty()) return std::nullopt;
+    return vec2(img.nextPlanes.data[4 * k], img.nextPlanes.data[4 * k + 1]);
 }
 
 bool recomputesWhole(const RawImages& img, const RawSettings& r) {
@@ -308,6 +315,7 @@ RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r) 
     }
     img.positions = readOptionalImage(dir / "positions.exr", ls);
     img.normals = readOptionalImage(dir / "normals.exr", ls);
+    img.nextPlanes = readOptionalImage(dir / "next_dzduv.exr", ls);
     for (int k = 0; k < img.map.layers(); ++k) img.layers.push_back(img.map.layerMap(k));
     return img;
 }

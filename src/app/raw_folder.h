@@ -52,6 +52,9 @@ struct RawImages {
     FloatImage planes;     // dz/du, dz/dv, z before bias, 1 on receivers (dzduv.exr)
     FloatImage positions;  // world x, y, z, 1 where drawn; empty when the folder has none
     FloatImage normals;    // n facing the camera, cos(theta); empty when the folder has none
+    // With a blend band, each pixel's plane in the next cascade (next_dzduv.exr, as planes:
+    // dz/du, dz/dv, z before bias, 1 on receivers); empty when the folder has none.
+    FloatImage nextPlanes;
     // Each layer of the map as a map of its own (a cascade's, looked up by the envelope).
     std::vector<ShadowMap> layers;
 };
@@ -63,6 +66,16 @@ int pixelLayer(const RawImages& img, const RawSettings& r, size_t k);
 
 // Whether each pixel's lookup can be recomputed whole: the layer's fit, positions and normals.
 bool recomputesWhole(const RawImages& img, const RawSettings& r);
+
+// Pixel k's view depth (shared/pcf_shading.h pcfViewDepth), from its world position and
+// render.json's cascade camera: what picks its cascade (pixelLayer) and weighs its blend band
+// (pcfCascadeBlendWeight). For a cascaded map's folder with positions.exr.
+float pixelViewDepth(const RawImages& img, const RawSettings& r, size_t k);
+
+// Pixel k's receiver plane in the next cascade (next_dzduv.exr's dz/du, dz/dv), with which the
+// camera pass filtered its blend band under receiver-plane bias; nullopt when the folder has
+// no next_dzduv.exr (rendered without a band, or before render --raw wrote it).
+std::optional<vec2> nextReceiverPlane(const RawImages& img, size_t k);
 
 RawImages readRawImages(const std::filesystem::path& dir, const RawSettings& r);
 

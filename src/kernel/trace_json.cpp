@@ -489,7 +489,19 @@ std::string traceToText(const Trace& tr) {
     if (info.usesKernel) s << ", N = " << tr.params.kernel;
     if (info.usesRadius) s << ", radius " << formatNumber(tr.params.radius) << " texels";
     s << "  (" << info.summary << ")\n\n";
-    if (std::optional<TraceCascade> c = cascadeOfTrace(tr)) s << cascadeLine(*c) << "\n\n";
+    std::optional<TraceCascade> cascade = cascadeOfTrace(tr);
+    if (cascade) s << cascadeLine(*cascade) << "\n\n";
+    // In a blend band: the next cascade's lookup and the mix (shared/pcf_shading.h
+    // pcfCascadeBlend), before the steps of the cascade read's own.
+    const TraceCascadeBlend& b = tr.cascadeBlend;
+    if (cascade && b.next >= 0) {
+        s << "blend band: cascade " << b.next << " looks the point up too and gives "
+          << formatNumber(b.nextVisibility) << ", weight " << formatNumber(b.weight)
+          << "; the pixel shows (1 - " << formatNumber(b.weight) << ") * "
+          << formatNumber(tr.visibility) << " + " << formatNumber(b.weight) << " * "
+          << formatNumber(b.nextVisibility) << " = " << formatNumber(b.blended)
+          << "; the steps below are cascade " << cascade->index << "'s\n\n";
+    }
     std::vector<TraceStep> steps = explainTrace(tr);
     for (size_t k = 0; k < steps.size(); ++k) {
         s << k + 1 << ". " << steps[k].title << "\n   ";

@@ -33,6 +33,11 @@ SceneRenderer::SceneRenderer(const Scene& scene)
         ShaderStage{GL_VERTEX_SHADER, {"depth.vert"}, "", {}},
         ShaderStage{GL_FRAGMENT_SHADER, {"depth.frag"}, "", {}},
     });
+    mDepthSnappedProgram = buildProgram({
+        ShaderStage{GL_VERTEX_SHADER, {"depth_snapped.vert"}, "", {}},
+        ShaderStage{GL_GEOMETRY_SHADER, {"depth_snapped.geom"}, "", {}},
+        ShaderStage{GL_FRAGMENT_SHADER, {"depth_snapped.frag"}, "", {}},
+    });
     for (const SceneObject& object : mScene.objects) {
         Mesh mesh = objectMesh(object);
         GpuMesh gpu;
@@ -136,11 +141,13 @@ void SceneRenderer::renderMomentsPass(const RenderSettings& settings) {
 }
 
 void SceneRenderer::ensureTargets(const RenderSettings& settings) {
-    size_t attachments = settings.writePositions ? 6 : 4;
+    size_t attachments = settings.writePositions ? 7 : 4;
     if (mFrame.width != settings.frameSize.x || mFrame.height != settings.frameSize.y ||
         !mFrame.framebuffer || mFrame.colors.size() != attachments) {
         std::vector<GLenum> formats = {GL_RGBA8, GL_RGBA32F, GL_R32F, GL_RGBA32F};
-        if (settings.writePositions) formats.insert(formats.end(), {GL_RGBA32F, GL_RGBA32F});
+        if (settings.writePositions) {
+            formats.insert(formats.end(), {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F});
+        }
         mFrame = createOffscreenTarget(settings.frameSize.x, settings.frameSize.y, formats,
                                        GL_DEPTH_COMPONENT24);
     }
@@ -197,20 +204,51 @@ void SceneRenderer::renderShadowPass(const RenderSettings& settings) {
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(settings.polygonOffset.x, settings.polygonOffset.y);
     }
-    GLuint program = mDepthProgram.id();
+    // Snapped cascades move by whole texels: their own pass draws each the same, bit for bit.
+    bool snapped = mMap.layers.size() > 1 && settings.cascadeSnap;
+    GLuint program = snapped ? mDepthSnappedProgram.id() : mDepthProgram.id();
     glUseProgram(program);
+    if (snapped) setSnappedDepthUniforms(program, settings);
     // Each layer (cascade) seen through its own fit, into its own layer of the texture.
     for (size_t k = 0; k < mMap.layers.size(); ++k) {
         if (mMap.layers.size() > 1) attachDepthLayer(mShadow, static_cast<int>(k));
         glClear(GL_DEPTH_BUFFER_BIT);
-        glProgramUniformMatrix4fv(program, uniform(program, "uShadowClipFromWorld"), 1, GL_FALSE,
-                                  &mMap.layers[k].shadowClipFromWorld[0][0]);
+        const glm::mat4& clip = mMap.layers[k].shadowClipFromWorld;
+        if (snapped) {
+            setSnappedLayerUniforms(program, clip);
+        } else {
+            glProgramUniformMatrix4fv(program, uniform(program, "uShadowClipFromWorld"), 1,
+                                      GL_FALSE, &clip[0][0]);
+        }
         drawObjects(program, true, false);
     }
     if (offset) glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (!mMap.texel().depth) renderMomentsPass(settings);
+}
+
+void SceneRenderer::setSnappedDepthUniforms(GLuint program, const RenderSettings& settings) {
+    glProgramUniform1f(program, uniform(program, "uHalfMap"),
+                       0.5f * static_cast<float>(mShadow.width));
+    glProgramUniform2fv(program, uniform(program, "uPolygonOffset"), 1, &settings.polygonOffset.x);
+    int bits = mMap.fixedPointBits();
+    glProgramUniform1f(program, uniform(program, "uDepthUnit"),
+                       bits > 0 ? std::ldexp(1.0f, -bits) : 0.0f);
+}
+
+void SceneRenderer::setSnappedLayerUniforms(GLuint program, const glm::mat4& clip) {
+    // The matrix's rows x and y in texels per world unit, and the world origin's texel corner
+    // (whole texels: shiftShadowOrigin snapped it).
+    float half = 0.5f * static_cast<float>(mShadow.width);
+    glm::vec3 texelsX(clip[0][0] * half, clip[1][0] * half, clip[2][0] * half);
+    glm::vec3 texelsY(clip[0][1] * half, clip[1][1] * half, clip[2][1] * half);
+    glm::vec4 clipZ(clip[0][2], clip[1][2], clip[2][2], clip[3][2]);
+    glm::vec2 origin = glm::round((glm::vec2(clip[3][0], clip[3][1]) + 1.0f) * half);
+    glProgramUniform3fv(program, uniform(program, "uTexelsX"), 1, &texelsX.x);
+    glProgramUniform3fv(program, uniform(program, "uTexelsY"), 1, &texelsY.x);
+    glProgramUniform4fv(program, uniform(program, "uClipZ"), 1, &clipZ.x);
+    glProgramUniform2fv(program, uniform(program, "uOrigin"), 1, &origin.x);
 }
 
 void SceneRenderer::renderCameraPass(const RenderSettings& settings) {
@@ -245,6 +283,7 @@ void SceneRenderer::drawCameraPass(const RenderSettings& settings, int targets,
         glClearNamedFramebufferfv(fbo, GL_COLOR, 3, zero);
     }
     if (target.colors.size() >= 5) glClearNamedFramebufferfv(fbo, GL_COLOR, 4, zero);
+    if (target.colors.size() >= 7) glClearNamedFramebufferfv(fbo, GL_COLOR, 6, zero);
     const GLfloat farDepth = 1.0f;
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
     glEnable(GL_DEPTH_TEST);
@@ -342,6 +381,14 @@ std::vector<float> SceneRenderer::readNormals() const {
         throw std::logic_error("readNormals: render with RenderSettings::writePositions");
     }
     return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT5, mFrame.width,
+                           mFrame.height, 4);
+}
+
+std::vector<float> SceneRenderer::readNextReceiver() const {
+    if (mFrame.colors.size() < 7) {
+        throw std::logic_error("readNextReceiver: render with RenderSettings::writePositions");
+    }
+    return readPixelsFloat(mFrame.framebuffer.id(), GL_COLOR_ATTACHMENT6, mFrame.width,
                            mFrame.height, 4);
 }
 

@@ -9,6 +9,9 @@
 //   position    RGBA32F  world position, alpha 1 where drawn (RenderSettings::writePositions)
 //   normal      RGBA32F  the unit normal facing the camera and cos(theta), its dot with the
 //                        direction to the light (RenderSettings::writePositions)
+//   next receiver RGBA32F with a blend band (cascade_blend), the receiver in the next cascade:
+//                        dz/du, dz/dv, z before bias; alpha 1 on receivers; 0 without a band
+//                        (RenderSettings::writePositions)
 // Readbacks are rows TOP-DOWN (first row = top of the frame) except the shadow map, which keeps
 // GL row order (ShadowMap's convention).
 #pragma once
@@ -69,6 +72,8 @@ class SceneRenderer {
     std::vector<float> readPositions() const;
     // The normal target: n.x, n.y, n.z, cos(theta) per pixel, top-down; as readPositions.
     std::vector<float> readNormals() const;
+    // The next receiver target: 4 floats per pixel, top-down; as readPositions.
+    std::vector<float> readNextReceiver() const;
     // The light-space target's pixels x..x+w-1, y..y+h-1 (top-left origin), clipped to the
     // frame: 4 floats per pixel, top-down, w * h pixels (outside the frame: zeros).
     std::vector<float> readLightSpaceRegion(glm::ivec2 topLeft, glm::ivec2 size) const;
@@ -131,6 +136,9 @@ class SceneRenderer {
     GLuint mapTexture() const;
     std::vector<float> readRegion(GLenum attachment, glm::ivec2 topLeft, glm::ivec2 size) const;
     void drawObjects(GLuint program, bool castersOnly, bool setMaterial);
+    // depth_snapped.*'s uniforms: the pass's, and one layer's from its clip matrix.
+    void setSnappedDepthUniforms(GLuint program, const RenderSettings& settings);
+    void setSnappedLayerUniforms(GLuint program, const glm::mat4& clip);
     // The camera pass into `target`, writing `targets` (scene.frag's PCF_ALL_TARGETS: 0 colour
     // only, 1 the four targets, 2 and the world position).
     void drawCameraPass(const RenderSettings& settings, int targets, const OffscreenTarget& target);
@@ -144,6 +152,7 @@ class SceneRenderer {
     std::optional<Camera> mCascadeCamera;
     std::vector<GpuMesh> mMeshes;
     GlProgram mDepthProgram;
+    GlProgram mDepthSnappedProgram;  // snapped cascades (shaders/depth_snapped.*)
     // By (targets, bias mode, spot light): one PcfProgramCache per combination used.
     std::map<std::tuple<int, int, int>, PcfProgramCache> mPrograms;
     PcfSamplers mSamplers;

@@ -101,30 +101,53 @@ SliceSphere sliceSphere(const Camera& camera, float aspect, CascadeRange r) {
 
 namespace {
 
+// A square (or rectangle) of the light's view, x and y: its centre and half-extents.
 struct LightBox {
-    glm::vec2 lo;
-    glm::vec2 hi;
+    glm::vec2 centre;
+    glm::vec2 half;
 };
 
 LightBox boxAround(const glm::mat4& lightView, const std::array<glm::vec3, 8>& corners) {
-    LightBox box{glm::vec2(std::numeric_limits<float>::infinity()),
-                 glm::vec2(-std::numeric_limits<float>::infinity())};
+    glm::vec2 lo(std::numeric_limits<float>::infinity()), hi(-lo);
     for (const glm::vec3& c : corners) {
         glm::vec2 p(lightView * glm::vec4(c, 1.0f));
-        box.lo = glm::min(box.lo, p);
-        box.hi = glm::max(box.hi, p);
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
     }
-    return box;
+    return {0.5f * (lo + hi), 0.5f * (hi - lo)};
 }
 
+// The half-extent is the sphere's radius itself, never hi - lo of a moved box: the same float at
+// every frame, as is every scale made from it.
 LightBox sphereBox(const Scene& scene, const glm::mat4& lightView, float aspect, CascadeRange r) {
     SliceSphere sphere = sliceSphere(scene.camera, aspect, r);
     glm::mat4 worldFromView = glm::inverse(viewFromWorld(scene.camera));
     glm::vec4 centreWs =
         worldFromView * glm::vec4(0.0f, 0.0f, -static_cast<float>(sphere.depth), 1.0f);
-    glm::vec2 c(lightView * centreWs);
-    auto radius = static_cast<float>(sphere.radius);
-    return {c - radius, c + radius};
+    return {glm::vec2(lightView * centreWs), glm::vec2(static_cast<float>(sphere.radius))};
+}
+
+// The snapped box's clip from world, the texel snapping of Valient, "Stable Rendering of Cascaded
+// Shadow Maps" (ShaderX6, 2008): x = s (R p) + 2 T / size - 1 (and y alike), where R p is
+// the light view's rotation of p (no translation), s = 1 / half the scale, and T the texel corner
+// the world origin lands on, the one nearest to where the box centred at `centre` puts it (so the
+// box moves by at most half a texel). The rotation rows scaled by s are the same floats whenever
+// half is, and the translation is whole texels: a map of the same half-extent is the last one
+// moved by T - T', every texel (shaders/depth_snapped.*). z is the ortho's, as the free box's.
+glm::mat4 snappedClip(const glm::mat4& lightView, const glm::mat4& zClip, LightBox box,
+                      int mapSize) {
+    glm::vec2 scale = 1.0f / box.half;
+    double halfMap = 0.5 * mapSize;
+    glm::mat4 clip = zClip;
+    for (int axis = 0; axis < 2; ++axis) {
+        for (int col = 0; col < 3; ++col) clip[col][axis] = scale[axis] * lightView[col][axis];
+        // Where the world origin lands, in texels from the map's corner, then rounded.
+        double origin =
+            (static_cast<double>(lightView[3][axis]) - box.centre[axis]) * scale[axis] + 1.0;
+        double corner = std::round(origin * halfMap);
+        clip[3][axis] = static_cast<float>(corner / halfMap - 1.0);
+    }
+    return clip;
 }
 
 // One texel's world size in an orthographic map of mapSize texels: 2 / (s * mapSize), s the
@@ -150,10 +173,7 @@ glm::mat4 cascadeClipFromWorld(const Scene& scene, float aspect, CascadeRange r,
     // Snapping moves the box by up to half a texel: one texel more on every side keeps the whole
     // slice inside it (half-extent e -> e * size / (size - 2), so the pad is one new texel).
     if (snap && mapSize > 2) {
-        glm::vec2 centre = 0.5f * (box.lo + box.hi);
-        glm::vec2 half = 0.5f * (box.hi - box.lo) * static_cast<float>(mapSize) /
-                         static_cast<float>(mapSize - 2);
-        box = {centre - half, centre + half};
+        box.half *= static_cast<float>(mapSize) / static_cast<float>(mapSize - 2);
     }
     // Deep enough for every caster of the scene, whatever the slice holds: the scene's bounds in
     // the light's view depth (view space looks down -z), with clipFromLight's margin.
@@ -164,10 +184,10 @@ glm::mat4 cascadeClipFromWorld(const Scene& scene, float aspect, CascadeRange r,
         hi = std::max(hi, z);
     }
     float margin = std::max(SHADOW_FIT_MARGIN * glm::length(bounds.extentWs()), 1e-4f);
+    glm::vec2 from = box.centre - box.half, to = box.centre + box.half;
     glm::mat4 clip =
-        glm::orthoRH_NO(box.lo.x, box.hi.x, box.lo.y, box.hi.y, -hi - margin, -lo + margin) *
-        lightView;
-    return snap ? shiftShadowOrigin(clip, glm::vec2(0.0f), mapSize, true) : clip;
+        glm::orthoRH_NO(from.x, to.x, from.y, to.y, -hi - margin, -lo + margin) * lightView;
+    return snap ? snappedClip(lightView, clip, box, mapSize) : clip;
 }
 
 glm::vec3 cameraViewDirWs(const Camera& camera) {
@@ -185,14 +205,16 @@ int cascadeOfPoint(const MapSpec& map, const Camera& camera, glm::vec3 posWs) {
 
 namespace {
 
-// One cascade's visibility of the point, its lookup as scene.frag makes it.
+// One cascade's visibility of the point, its lookup as scene.frag makes it: with `rotate` the
+// disk turned by the texel this cascade looks up (pcfTexelRotation).
 float cascadeLayerVisibility(const ShadowMap& map, int layer, const ShadowSettings& s,
-                             const PcfParams& prm, glm::vec3 posWs, glm::vec3 normalWs,
-                             float cosTheta, glm::vec2 dzduv) {
+                             PcfParams prm, glm::vec3 posWs, glm::vec3 normalWs, float cosTheta,
+                             glm::vec2 dzduv) {
     const PcfMapLayer& fit = map.spec().layers[static_cast<size_t>(layer)];
     PcfReceiverLookup at =
         pcfReceiverLookup(fit.shadowClipFromWorld, posWs, normalWs, cosTheta, s.modeId(),
                           s.constantBias, s.slopeBias, s.slopeMax, s.normalOffset, fit.texelWs);
+    if (s.rotate) prm.rotation = pcfTexelRotation(vec2(at.u, at.v), map.size());
     return filterLayerVisibility(map, layer, vec2(at.u, at.v), at.ref, prm, s.kernelBias(dzduv));
 }
 

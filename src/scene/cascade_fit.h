@@ -52,8 +52,11 @@ SliceSphere sliceSphere(const Camera& camera, float aspect, CascadeRange r);
 // One cascade's light clip from world: the light's view (lightFromWorld, the scene's bounds),
 // an orthographic box around the slice (fit CASCADE_FIT_BOX: the light-space bounds of its
 // corners; CASCADE_FIT_SPHERE: the square around its bounding sphere), deep enough for every
-// caster of the scene; with snap, one texel wider on every side and the world origin moved onto a
-// texel corner (shiftShadowOrigin), which shifts the box by up to half a texel.
+// caster of the scene; with snap, one texel wider on every side and the world origin moved onto
+// the nearest texel corner, which shifts the box by up to half a texel. A snapped fit's rows are
+// the light view's rotation times one scale made from the half-extent alone (for the sphere, the
+// same float at every frame) and its translation whole texels, so that a snapped map is the last
+// one moved by whole texels (the depth pass draws it so: shaders/depth_snapped.*).
 glm::mat4 cascadeClipFromWorld(const Scene& scene, float aspect, CascadeRange r, int fit, bool snap,
                                int mapSize);
 
@@ -84,7 +87,9 @@ struct CascadeLookup {
 // The lookup of point posWs (its unit normal facing the camera, cos(theta) to the light), with
 // the receiver plane dzduv for the cascade read and nextDzduv for the next one (receiver-plane
 // bias; light depth per uv unit, each in its own cascade's uv). prm: the settings' parameters
-// (SceneRenderer::pcfParams); `blend` the band (ShadowSettings::cascadeBlend).
+// (SceneRenderer::pcfParams); with the settings' rotate each lookup's disk turns by the texel it
+// looks up (pcfTexelRotation), as scene.frag turns it; `blend` the band
+// (ShadowSettings::cascadeBlend).
 CascadeLookup cascadeVisibilityAt(const ShadowMap& map, const Camera& camera,
                                   const ShadowSettings& s, const PcfParams& prm, glm::vec3 posWs,
                                   glm::vec3 normalWs, float cosTheta,
