@@ -100,6 +100,23 @@ std::string LessonReader::valueText(const toml::node& v) {
     return "(" + typeName(v) + ")";
 }
 
+const toml::table* LessonReader::optionalTable(
+    const toml::table& table, const char* key, const std::string& where, const char* shape,
+    std::initializer_list<std::string_view> known) const {
+    const toml::node* node = table.get(key);
+    if (!node) return nullptr;
+    const toml::table* t = node->as_table();
+    if (!t) fail(*node, where + " must be a table (" + shape + ")");
+    std::string names;
+    for (std::string_view k : known) names += (names.empty() ? "" : ", ") + std::string(k);
+    for (auto&& [k, value] : *t) {
+        if (std::find(known.begin(), known.end(), k.str()) != known.end()) continue;
+        fail(value,
+             where + " has unknown key '" + std::string(k.str()) + "' (known: " + names + ")");
+    }
+    return t;
+}
+
 void LessonReader::readChartKeys(const toml::table& table, const std::string& what,
                                  LessonStep& step) const {
     attempt([&] { readChart(table, what, step); });
@@ -199,20 +216,11 @@ void LessonReader::readClaims(const toml::table& table, const std::string& what,
 
 void LessonReader::readAnimation(const toml::table& table, const std::string& what,
                                  LessonStep& step) const {
-    const toml::node* node = table.get("animate");
-    if (!node) return;
-    const toml::table* a = node->as_table();
-    if (!a) fail(*node, what + " animate must be a table ({ sweep = \"sun\", ... })");
     std::string where = what + " animate";
-    for (auto&& [key, value] : *a) {
-        std::string_view k = key.str();
-        if (k == "sweep" || k == "from" || k == "to" || k == "frames" || k == "fps" ||
-            k == "snap") {
-            continue;
-        }
-        fail(value, where + " has unknown key '" + std::string(k) +
-                        "' (known: sweep, from, to, frames, fps, snap)");
-    }
+    const toml::table* a = optionalTable(table, "animate", where, "{ sweep = \"sun\", ... }",
+                                         {"sweep", "from", "to", "frames", "fps", "snap"});
+    if (!a) return;
+    const toml::node* node = table.get("animate");
     StepAnimation anim;
     anim.line = lineOf(*node);
     std::string sweep = requireText(*a, "sweep", where, *a);
@@ -289,17 +297,12 @@ void LessonReader::readCompare(const toml::table& table, const std::string& what
 
 void LessonReader::readPredict(const toml::table& table, const std::string& what,
                                LessonStep& step) const {
-    const toml::node* node = table.get("predict");
-    if (!node) return;
-    const toml::table* p = node->as_table();
     std::string where = what + " predict";
-    if (!p) fail(*node, where + " must be a table ({ ask = \"...\", answer = \"{...}\" })");
-    for (auto&& [key, value] : *p) {
-        std::string_view k = key.str();
-        if (k == "ask" || k == "choices" || k == "answer" || k == "tolerance") continue;
-        fail(value, where + " has unknown key '" + std::string(k) +
-                        "' (known: ask, choices, answer, tolerance)");
-    }
+    const toml::table* p =
+        optionalTable(table, "predict", where, "{ ask = \"...\", answer = \"{...}\" }",
+                      {"ask", "choices", "answer", "tolerance"});
+    if (!p) return;
+    const toml::node* node = table.get("predict");
     StepPredict predict;
     predict.line = lineOf(*node);
     predict.ask = requireText(*p, "ask", where, *p);

@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -85,6 +86,11 @@ class LessonReader {
     const Scene* mScene = nullptr;  // the lesson's, once read: points are checked against it
 
   private:
+    // table[key] as a table, nullptr when absent; another type fails ("WHERE must be a table
+    // (SHAPE)"), and so does a key of it not in `known`, naming them.
+    const toml::table* optionalTable(const toml::table& table, const char* key,
+                                     const std::string& where, const char* shape,
+                                     std::initializer_list<std::string_view> known) const;
     void readChart(const toml::table& table, const std::string& what, LessonStep& step) const;
     void readHighlights(const toml::table& table, const std::string& what, LessonStep& step) const;
 };
