@@ -207,10 +207,15 @@ TEST_F(CascadeViews, TheInspectorsHeaderNamesTheCascade) {
     EXPECT_EQ(headerLines(parseLessonString(one, "one.toml")).find("cascade "), std::string::npos);
 }
 
-// In a blend band (cascade_blend 0.5: the last half of cascade 1's view depths, from 19.71 to
-// 26.61) the pinned point on a post's shadow edge is traced in cascade 1 and again in cascade 2;
-// the weight is how far into the band its view depth is, the frame shows the mix, and the
-// header, the trace's JSON and the step's words say all three.
+// The blend band (lesson_pick.h pinnedCascadeBlend) at two pinned points on posts' shadow edges:
+// with cascade_blend 0.5 one in the last half of cascade 1's view depths (19.71 to 26.61), with
+// 0.2 one just before the first split. Each is traced in its cascade and again in the next; the
+// weight is how far into the band its view depth is, the two cascades disagree there (the seam
+// the band hides) and the pixel shows their mix; the header shows both lookups, the weight and
+// the result side by side, and the trace's JSON and the step's words say them; the viewer's
+// trace (the pixel's lookup as the GPU drew it) and lesson check's (the point's, on the CPU) say
+// the same. Past the band the trace names no next cascade and the result is the cascade's own
+// visibility.
 TEST_F(CascadeViews, InTheBlendBandBothCascadesAreTracedWithTheirWeight) {
     std::string text = std::string(LESSON);
     text.replace(text.find("cascade_lambda = 0.5"), 20,
@@ -218,39 +223,90 @@ TEST_F(CascadeViews, InTheBlendBandBothCascadesAreTracedWithTheirWeight) {
     text.replace(text.find("point = [0.6, 0, -33.0]"), 23, "point = [1.184, 0, -19.05]");
     text.replace(text.find("Cascade {cascade} of {cascade.count}"), 36,
                  "w {cascade.blend_weight:4}, shown {cascade.blended:4}");
-    Session session({1600, 900}, false);
-    session.setLesson(parseLessonString(text, "blend.toml"));
-    session.compose();
-    ASSERT_TRUE(session.trace());
-    const Trace& tr = *session.trace();
-    EXPECT_EQ(tr.layer, 1);
-    ASSERT_EQ(tr.cascadeBlend.next, 2);
+    text.replace(text.find("point = [0.6, 0, -6.0]"), 22,
+                 "cascade_blend = 0.2\npoint = [-0.2, 0, -10.65]");
+    text.replace(text.find("freeze_cascades = true\npoint = [0.6, 0, -33.0]"), 46,
+                 "point = [0.6, 0, -6.0]");
+    Lesson lesson = parseLessonString(text, "blend.toml");
+    Session session({1280, 720}, false);
+    session.setLesson(lesson);
+    auto header = [&] {
+        std::string words;
+        for (const LayoutBox& box : session.boxes()) {
+            if (box.panel == "inspector") words += box.text + "\n";
+        }
+        return words;
+    };
     Scene scene = *presetScene("long-ground");
     glm::vec3 eye = scene.camera.eyeWs;
     glm::vec3 ahead = glm::normalize(scene.camera.targetWs - eye);
-    double depth = glm::dot(glm::vec3(1.184f, 0.0f, -19.05f) - eye, ahead);
-    double start = SPLITS[2] - 0.5 * (SPLITS[2] - SPLITS[1]);
-    EXPECT_NEAR(tr.cascadeBlend.weight, (depth - start) / (SPLITS[2] - start), 1e-4);
-    EXPECT_GT(tr.cascadeBlend.weight, 0.05f);
-    // On the shadow's edge the two cascades' texels disagree, and the mix lies between them.
-    EXPECT_GT(std::fabs(tr.cascadeBlend.nextVisibility - tr.visibility), 0.01f);
-    float lo = std::min(tr.visibility, tr.cascadeBlend.nextVisibility);
-    float hi = std::max(tr.visibility, tr.cascadeBlend.nextVisibility);
-    EXPECT_GT(tr.cascadeBlend.blended, lo);
-    EXPECT_LT(tr.cascadeBlend.blended, hi);
-    Json j = traceJson(tr);
-    EXPECT_EQ(j["cascade_blend"]["next_layer"], 2);
-    EXPECT_EQ(j["cascade_blend"]["visibility"].get<float>(), tr.cascadeBlend.blended);
-    std::string header;
-    for (const LayoutBox& b : session.boxes()) {
-        if (b.panel == "inspector") header += b.text + "\n";
+    // Per band step: the cascade read, the band's share of it, the point, the least weight and
+    // the least gap between the two cascades' visibilities there.
+    struct Band {
+        int step, layer;
+        double share;
+        glm::vec3 point;
+        float minWeight, minGap;
+    };
+    for (const Band& band : {Band{0, 1, 0.5, {1.184f, 0.0f, -19.05f}, 0.05f, 0.01f},
+                             Band{1, 0, 0.2, {-0.2f, 0.0f, -10.65f}, 0.5f, 0.05f}}) {
+        SCOPED_TRACE("step " + std::to_string(band.step + 1));
+        session.goToStep(band.step);
+        session.compose();
+        ASSERT_TRUE(session.trace());
+        const Trace& tr = *session.trace();
+        const TraceCascadeBlend& b = tr.cascadeBlend;
+        EXPECT_EQ(tr.layer, band.layer);
+        ASSERT_EQ(b.next, band.layer + 1);
+        double end = SPLITS[band.layer + 1];
+        double start = end - band.share * (end - SPLITS[band.layer]);
+        double depth = glm::dot(band.point - eye, ahead);
+        EXPECT_NEAR(b.weight, (depth - start) / (end - start), 1e-4);
+        EXPECT_GT(b.weight, band.minWeight);
+        EXPECT_LT(b.weight, 1.0f);
+        EXPECT_GT(std::fabs(b.nextVisibility - tr.visibility), band.minGap);
+        EXPECT_NEAR(b.blended, tr.visibility + b.weight * (b.nextVisibility - tr.visibility),
+                    1e-6f);
+        EXPECT_GT(b.blended, std::min(tr.visibility, b.nextVisibility));
+        EXPECT_LT(b.blended, std::max(tr.visibility, b.nextVisibility));
+        Json j = traceJson(tr);
+        EXPECT_EQ(j["cascade_blend"]["next_layer"], band.layer + 1);
+        EXPECT_EQ(j["cascade_blend"]["visibility"].get<float>(), b.blended);
+        const LessonStep& step = lesson.steps[static_cast<size_t>(band.step)];
+        EXPECT_EQ(fillText("{cascade.next}", tr, makeStepContext(step, {0, 0})),
+                  std::to_string(band.layer + 1));
+        std::string h = header();
+        EXPECT_NE(h.find("blend: cascade " + std::to_string(band.layer) + " "), std::string::npos)
+            << h;
+        EXPECT_NE(h.find(", cascade " + std::to_string(band.layer + 1) + " "), std::string::npos)
+            << h;
+        EXPECT_NE(h.find(", shown="), std::string::npos) << h;
+
+        std::optional<ScenePoint> point = stepPoint(lesson.scene, step.settings);
+        ASSERT_TRUE(point);
+        Trace checked =
+            tracePinned(session.shadowMap(), lesson.scene,
+                        lessonShadowFit(lesson.scene, step.settings, step.settings.mapSize),
+                        step.settings, *point);
+        EXPECT_EQ(checked.cascadeBlend.next, b.next);
+        EXPECT_NEAR(checked.cascadeBlend.weight, b.weight, 1e-4f);
+        EXPECT_NEAR(checked.cascadeBlend.nextVisibility, b.nextVisibility, 1e-3f);
+        EXPECT_NEAR(checked.cascadeBlend.blended, b.blended, 1e-3f);
+        if (band.step == 0) {
+            char words[64];
+            std::snprintf(words, sizeof words, "w %.4f, shown %.4f", b.weight, b.blended);
+            EXPECT_NE(session.stepText().find(words), std::string::npos) << session.stepText();
+        }
     }
-    EXPECT_NE(header.find("blend: cascade 1 "), std::string::npos) << header;
-    EXPECT_NE(header.find(", cascade 2 "), std::string::npos) << header;
-    char words[64];
-    std::snprintf(words, sizeof words, "w %.4f, shown %.4f", tr.cascadeBlend.weight,
-                  tr.cascadeBlend.blended);
-    EXPECT_NE(session.stepText().find(words), std::string::npos) << session.stepText();
+
+    // The third step's point lies mid-cascade, outside the band.
+    session.goToStep(2);
+    session.compose();
+    ASSERT_TRUE(session.trace());
+    EXPECT_EQ(session.trace()->cascadeBlend.next, -1);
+    EXPECT_EQ(session.trace()->cascadeBlend.weight, 0.0f);
+    EXPECT_EQ(session.trace()->cascadeBlend.blended, session.trace()->visibility);
+    EXPECT_EQ(header().find("blend "), std::string::npos) << header();
 }
 
 // `render --lesson` renders a step's cascades as the viewer does: fitted to the lesson's camera,
@@ -518,63 +574,6 @@ TEST(CascadeVerify, ChecksEveryPixelOnTheLayerItRead) {
     EXPECT_EQ(testutil::lineCount(none.err), 1) << none.err;
     EXPECT_NE(none.err.find("cascade_camera"), std::string::npos) << none.err;
     if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir);
-}
-
-// The blend band at the pinned point (lesson_pick.h pinnedCascadeBlend): a point on a post's
-// shadow just before the first split, in the band, names the next cascade, its weight and its own
-// lookup, and the result the pixel shows is the mix of the two; the viewer's trace (the pixel's
-// lookup as the GPU drew it) and lesson check's (the point's, on the CPU) say the same. Past the
-// band the trace names no next cascade and the result is the cascade's own visibility.
-TEST_F(CascadeViews, TheBlendBandTracesBothLookups) {
-    std::string text = LESSON;
-    text.replace(text.find("point = [0.6, 0, -33.0]"), 23,
-                 "cascade_blend = 0.2\npoint = [-0.2, 0, -10.65]");
-    Lesson lesson = parseLessonString(text, "blend.toml");
-    Session session({1280, 720}, false);
-    session.setLesson(lesson);
-    session.compose();
-    ASSERT_TRUE(session.trace());
-    const Trace& seen = *session.trace();
-    const TraceCascadeBlend& b = seen.cascadeBlend;
-    EXPECT_EQ(seen.layer, 0);
-    EXPECT_EQ(b.next, 1);
-    EXPECT_GT(b.weight, 0.5f);
-    EXPECT_LT(b.weight, 1.0f);
-    // The two cascades disagree here (the seam the band hides), and the pixel shows their mix.
-    EXPECT_GT(std::fabs(b.nextVisibility - seen.visibility), 0.05f);
-    EXPECT_NEAR(b.blended, seen.visibility + b.weight * (b.nextVisibility - seen.visibility),
-                1e-6f);
-    EXPECT_EQ(fillText("{cascade.next}", seen, makeStepContext(lesson.steps[0], {0, 0})), "1");
-    // The inspector's header shows both lookups, the weight and the result side by side.
-    auto header = [&] {
-        std::string words;
-        for (const LayoutBox& box : session.boxes()) {
-            if (box.panel == "inspector") words += box.text + "\n";
-        }
-        return words;
-    };
-    EXPECT_NE(header().find("blend: cascade 0 "), std::string::npos) << header();
-    EXPECT_NE(header().find(", cascade 1 "), std::string::npos) << header();
-    EXPECT_NE(header().find(", shown="), std::string::npos) << header();
-
-    const LessonSettings& s = lesson.steps[0].settings;
-    std::optional<ScenePoint> point = stepPoint(lesson.scene, s);
-    ASSERT_TRUE(point);
-    Trace checked = tracePinned(session.shadowMap(), lesson.scene,
-                                lessonShadowFit(lesson.scene, s, s.mapSize), s, *point);
-    EXPECT_EQ(checked.cascadeBlend.next, b.next);
-    EXPECT_NEAR(checked.cascadeBlend.weight, b.weight, 1e-4f);
-    EXPECT_NEAR(checked.cascadeBlend.nextVisibility, b.nextVisibility, 1e-3f);
-    EXPECT_NEAR(checked.cascadeBlend.blended, b.blended, 1e-3f);
-
-    // The second step's point lies mid-cascade, outside the band.
-    session.goToStep(1);
-    session.compose();
-    ASSERT_TRUE(session.trace());
-    EXPECT_EQ(session.trace()->cascadeBlend.next, -1);
-    EXPECT_EQ(session.trace()->cascadeBlend.weight, 0.0f);
-    EXPECT_EQ(session.trace()->cascadeBlend.blended, session.trace()->visibility);
-    EXPECT_EQ(header().find("blend "), std::string::npos) << header();
 }
 
 }  // namespace

@@ -223,6 +223,38 @@ TEST(MomentFigure, AHiddenResultIsNotReadOffTheCurve) {
     EXPECT_GT(curves, 0);
 }
 
+// The header's counts say what a moment method reads: one bilinear read of the filtered moments,
+// four texels of the moments map, not four depths compared as a depth method's texel reads are
+// (pcf-naive beside it, on the same depths).
+TEST(MomentFigure, TheHeaderSaysTheMomentsAreReadBilinearly) {
+    auto counts = [](const Trace& tr) {
+        InspectorModel m;
+        m.trace = tr;
+        InspectorLayout l = inspectorLayout({1600, 900}, false);
+        m.sceneSize = glm::ivec2(l.scene.size());
+        std::string words;
+        for (const LayoutBox& b : planFrame(l, m).boxes) {
+            if (b.role == "counts") words += b.text + " ";
+        }
+        return words;
+    };
+    int moments = 0;
+    for (const MethodInfo& info : allMethods()) {
+        if (!readsMoments(info.id)) continue;
+        ++moments;
+        std::string words = counts(momentTrace(twoColumns(0.2f, 0.5f), params(info.id)));
+        EXPECT_NE(words.find("1 bilinear read of the filtered moments (4 texels)"),
+                  std::string::npos)
+            << info.name << ": " << words;
+        EXPECT_EQ(words.find("texel reads"), std::string::npos) << info.name << ": " << words;
+    }
+    EXPECT_EQ(moments, 5);
+    Trace naive = traceLookup(twoColumns(0.2f, 0.5f), vec2(0.5f), 0.6f, 0.6f, params(PCF_NAIVE));
+    std::string words = counts(naive);
+    EXPECT_NE(words.find("36 texel reads"), std::string::npos) << words;
+    EXPECT_EQ(words.find("bilinear read"), std::string::npos) << words;
+}
+
 // `trace --map FILE --method vsm --json`: the moments made of FILE's depths, and the depths
 // themselves with their weights and PCF of them; the text trace says PCF's value.
 TEST(MomentFigure, TraceJsonCarriesTheFootprint) {

@@ -181,7 +181,7 @@ TEST_F(ShaderLoader, LinkErrorSaysItDidNotLink) {
 }
 
 // The point of shaders/shared/: the shared kernel's files (pcfSharedFiles: the prelude, the
-// kernel, the moment methods, the dispatch) are valid GLSL 4.50.
+// kernel, the disk methods, the moment methods, the dispatch) are valid GLSL 4.50.
 const char* PCF_FRAG = R"(
 uniform sampler2D uMap;
 uniform int uMethod;

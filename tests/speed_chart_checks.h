@@ -1,6 +1,6 @@
 // speed_chart_checks.h: what a speed chart's layout (speed_chart.h) must keep true for a reader,
 // as readable lines (empty: all true). Shared by the stand-alone chart's tests
-// (error_metrics_test) and the lesson frames' (layout_test).
+// (error_metrics_test) and the lesson frames' (layout_chart_test).
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // pcf_filter.h: the shared kernel's entry points, pcfFilterRef (the dispatch over every method)
 // and pcfFilter, in the subset of C++ and GLSL that pcf_kernel.h is written in. It comes last,
-// after pcf_kernel.h and pcf_moments.h, whose methods it dispatches to.
+// after pcf_kernel.h, pcf_disk.h and pcf_moments.h, whose methods it dispatches to.
 
 // The entry point with a bias mode: visibility of a receiver seen at uv, compared per tap as
 // ref (PcfRef) says. Weighted sums can land an ulp above 1; the result is clamped to [0,1].

@@ -1,8 +1,9 @@
 // pcf_moments.h: the moment methods (vsm, evsm2, evsm4, msm, msm-hausdorff), in the subset of
 // C++ and GLSL that pcf_kernel.h is written in (pcf_prelude.h has the rules). It comes after
-// pcf_kernel.h (ids, PcfParams, the bilinear weights and the axis weights it uses) and before
-// pcf_filter.h, whose dispatch calls pcfMomentEstimate. The same files in the same order in both
-// languages: src/kernel/pcf_shared.h (C++) and render/pcf_programs.h PCF_SHARED_FILES (GLSL).
+// pcf_kernel.h (ids, PcfParams, the bilinear weights and the axis weights it uses) and
+// pcf_disk.h, and before pcf_filter.h, whose dispatch calls pcfMomentEstimate. The same files in
+// the same order in both languages: src/kernel/pcf_shared.h (C++) and render/pcf_programs.cpp
+// pcfSharedFiles (GLSL).
 // Each formula names its paper above it: Donnelly and Lauritzen, "Variance Shadow Maps", 2006;
 // Lauritzen and McCool, "Layered Variance Shadow Maps", 2008; Peters and Klein, "Moment Shadow
 // Mapping", 2015.

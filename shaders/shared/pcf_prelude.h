@@ -50,7 +50,7 @@
 #define PCF_ARRAY_BEGIN(T, n) T[n](
 #define PCF_ARRAY_END )
 #define PCF_DEFAULT(value)
-// pcss's table of 1 / k (pcf_kernel.h, PCF_PCSS_RECIPROCALS), as a uniform array the program
+// pcss's table of 1 / k (pcf_disk.h, PCF_PCSS_RECIPROCALS), as a uniform array the program
 // is given from the C++ copy of that table (render/pcf_programs.cpp, setParamUniforms): the same
 // floats, and a uniform read at a dynamic index costs one load, where llvmpipe turns a dynamic
 // index into the const array into a chain of selects (pcss's pass 1.24x -> 1.18x its textbook

@@ -502,7 +502,7 @@ BleedSeries bleedLineOf(const ChartData& c, const std::string& label, const std:
     std::vector<BleedPoint> points = bleedPoints(rows);
     std::string names;
     for (const BleedSeries& s : bleedSeries(points, bleedChartGap(rows))) {
-        std::string name = bleedLineLabel(s.method, s.kernel);
+        std::string name = chartMethodLabel(s.method, s.kernel);
         if (name == label && s.key == key) return s;
         if (!s.key.empty()) names += (names.empty() ? "" : ", ") + name + " over " + s.key;
     }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "charts/chart_axes.h"
+#include "charts/stability_figures.h"
 #include "kernel/methods.h"
 #include "measure/number_text.h"
 #include "measure/stability_bleed.h"
@@ -17,8 +18,6 @@
 namespace pcf {
 
 namespace {
-
-std::string methodLabel(int method, int kernel) { return bleedLineLabel(method, kernel); }
 
 // "lbr 0 to 0.5 (6 values), moment_format 16f, 32f": each setting swept at `gap`, the values
 // as the command line writes them.
@@ -64,7 +63,7 @@ std::string bleedSubtitle(std::span<const StabilityRow> rows, std::span<const Bl
 }
 
 ChartLine bleedChartLine(const BleedSeries& s) {
-    ChartLine l{methodLabel(s.method, s.kernel), methodInfo(s.method).chartColour, false, {}};
+    ChartLine l{chartMethodLabel(s.method, s.kernel), methodInfo(s.method).chartColour, false, {}};
     for (const BleedPoint& p : s.points) {
         // x to a thousandth: the chart's x ticks stand at the points' own values, and
         // darkening read closer than that says nothing (the CSV keeps every digit).
@@ -75,7 +74,7 @@ ChartLine bleedChartLine(const BleedSeries& s) {
 
 // "vsm 5x5: leak < 0.001 from lbr 0.3, darkening 0.052" (or "leak >= 0.001 at every lbr").
 std::string bleedCleanNote(const BleedSeries& s) {
-    std::string name = methodLabel(s.method, s.kernel);
+    std::string name = chartMethodLabel(s.method, s.kernel);
     std::string target = chartTickText(BLEED_LEAK_TARGET);
     const BleedPoint* clean = firstCleanPoint(s);
     if (!clean) return name + ": leak >= " + target + " at every " + s.key;
@@ -87,26 +86,17 @@ std::string bleedCleanNote(const BleedSeries& s) {
 
 }  // namespace
 
-std::string bleedLineLabel(int method, int kernel) {
-    std::string label(methodInfo(method).name);
-    if (kernel > 0) label += " " + std::to_string(kernel) + "x" + std::to_string(kernel);
-    return label;
-}
-
 LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
                              float minFontPx) {
-    LineChartSpec spec;
-    spec.minFontPx = minFontPx;
     std::vector<BleedPoint> points = bleedPoints(rows);
-    if (points.empty()) return spec;
+    if (points.empty()) return emptySweepChartSpec(minFontPx);
     const double gap = bleedChartGap(rows);
     std::vector<BleedSeries> series = bleedSeries(points, gap);
-    spec.title = "Light bleeding: leak in the lower card's umbra against penumbra darkening";
-    spec.subtitle = bleedSubtitle(rows, series, gap, subtitle);
-    spec.xLabel = "penumbra darkening: mean of truth - v over the area truth's penumbra";
-    spec.yLabel = "leak: 99th percentile of v over the lower card's clean umbra";
-    spec.logY = true;
-    spec.yFloor = 1e-4;
+    LineChartSpec spec = logSweepChartSpec(
+        "Light bleeding: leak in the lower card's umbra against penumbra darkening",
+        bleedSubtitle(rows, series, gap, subtitle),
+        "penumbra darkening: mean of truth - v over the area truth's penumbra",
+        "leak: 99th percentile of v over the lower card's clean umbra", 1e-4, minFontPx);
     std::vector<std::string> keys = bleedKeys(series);
     // A panel per setting swept; the methods no setting acts for, dots in each.
     if (keys.empty()) keys.push_back("");

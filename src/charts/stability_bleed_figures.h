@@ -20,9 +20,6 @@
 
 namespace pcf {
 
-// A method's name on the chart: "vsm 5x5", "nearest" (kernel 0).
-std::string bleedLineLabel(int method, int kernel);
-
 // Empty of panels when the rows hold no bleed point. `subtitle`: the source line, used when the
 // rows carry no setup.
 LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "charts/chart_axes.h"
+#include "charts/stability_figures.h"
 #include "kernel/methods.h"
 #include "measure/stability_cascades.h"
 #include "measure/stability_report.h"
@@ -34,9 +35,7 @@ std::string cascadeSubtitle(std::span<const StabilityRow> rows, const CascadePoi
     const StabilitySetup& s = *setup;
     char distance[32];
     std::snprintf(distance, sizeof distance, "%g", static_cast<double>(CASCADE_SWEEP_DISTANCE));
-    std::string method(methodInfo(first.method).name);
-    if (first.kernel > 0)
-        method += " " + std::to_string(first.kernel) + "x" + std::to_string(first.kernel);
+    std::string method = chartMethodLabel(first.method, first.kernel);
     return "a wall and posts along a ground, " + std::to_string(CASCADE_SWEEP_CASCADES) +
            " cascades to " + distance + "; " + std::to_string(s.frameSize.x) + "x" +
            std::to_string(s.frameSize.y) + " frame, map " + std::to_string(s.mapSize) +
@@ -47,22 +46,20 @@ std::string cascadeSubtitle(std::span<const StabilityRow> rows, const CascadePoi
 
 LineChartSpec cascadeChartSpec(std::span<const StabilityRow> rows, const std::string& subtitle,
                                float minFontPx) {
-    LineChartSpec spec;
-    spec.minFontPx = minFontPx;
     std::vector<CascadePoint> points = cascadePoints(rows);
-    if (points.empty()) return spec;
+    if (points.empty()) return emptySweepChartSpec(minFontPx);
     const CascadePoint& first = points.front();
-    spec.title = "Cascades: texel density against where the splits fall";
-    spec.subtitle = cascadeSubtitle(rows, first, subtitle);
-    spec.xLabel = "split lambda: 0 uniform .. 1 log (Zhang et al.'s practical split between)";
-    spec.yLabel = "texels per screen pixel, median over the cascade's receivers";
-    spec.logY = true;
     double lowest = 1e30;
     for (const CascadePoint& p : points) {
         if (p.texelsPerPixelMedian > 0.0) lowest = std::min(lowest, p.texelsPerPixelMedian);
     }
     // The floor: the decade at or below the smallest value measured.
-    spec.yFloor = lowest < 1e30 ? std::pow(10.0, std::floor(std::log10(lowest))) : 1e-3;
+    LineChartSpec spec = logSweepChartSpec(
+        "Cascades: texel density against where the splits fall",
+        cascadeSubtitle(rows, first, subtitle),
+        "split lambda: 0 uniform .. 1 log (Zhang et al.'s practical split between)",
+        "texels per screen pixel, median over the cascade's receivers",
+        lowest < 1e30 ? std::pow(10.0, std::floor(std::log10(lowest))) : 1e-3, minFontPx);
     // The sphere fit, snapped: its texels are the same along the whole path. (A box fit's
     // farthest cascade, with smaller texels, has most of its ground pixels more than 32 texels
     // from their neighbours near the horizon, which are not measured: the median there is over

@@ -16,11 +16,7 @@ namespace pcf {
 
 namespace {
 
-std::string shortMethod(const StabilityMethod& m) {
-    std::string s(methodInfo(m.method).name);
-    if (m.kernel > 0) s += " " + std::to_string(m.kernel) + "x" + std::to_string(m.kernel);
-    return s;
-}
+std::string shortMethod(const StabilityMethod& m) { return chartMethodLabel(m.method, m.kernel); }
 
 // The (method, kernel) pairs of the rows of one sweep, in order of appearance.
 std::vector<StabilityMethod> methodsOf(std::span<const StabilityRow> rows, std::string_view sweep) {
@@ -505,6 +501,31 @@ constexpr SweepChart SWEEP_CHARTS[] = {
 };
 
 }  // namespace
+
+std::string chartMethodLabel(int method, int kernel) {
+    std::string label(methodInfo(method).name);
+    if (kernel > 0) label += " " + std::to_string(kernel) + "x" + std::to_string(kernel);
+    return label;
+}
+
+LineChartSpec logSweepChartSpec(std::string title, std::string subtitle, std::string xLabel,
+                                std::string yLabel, double yFloor, float minFontPx) {
+    LineChartSpec spec;
+    spec.title = std::move(title);
+    spec.subtitle = std::move(subtitle);
+    spec.xLabel = std::move(xLabel);
+    spec.yLabel = std::move(yLabel);
+    spec.logY = true;
+    spec.yFloor = yFloor;
+    spec.minFontPx = minFontPx;
+    return spec;
+}
+
+LineChartSpec emptySweepChartSpec(float minFontPx) {
+    LineChartSpec spec;
+    spec.minFontPx = minFontPx;
+    return spec;
+}
 
 std::span<const SweepChart> sweepCharts() { return SWEEP_CHARTS; }
 

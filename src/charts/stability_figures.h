@@ -33,6 +33,16 @@ namespace pcf {
 constexpr float COINCIDENT_OFFSET_PX = 4.0f;
 void markCoincidentLines(LineChartSpec& spec);
 
+// A method's name on the sweep charts: "vsm 5x5", "nearest" (kernel 0).
+std::string chartMethodLabel(int method, int kernel);
+
+// A sweep's line chart on a log y axis from yFloor (a power of ten): its texts set, no panel yet
+// (the bleed and cascades charts start from it).
+LineChartSpec logSweepChartSpec(std::string title, std::string subtitle, std::string xLabel,
+                                std::string yLabel, double yFloor, float minFontPx);
+// The spec of a sweep chart whose rows hold no point: no panel, nothing to draw.
+LineChartSpec emptySweepChartSpec(float minFontPx);
+
 // The lines under a stability chart's title: the scene, frame, map and bias settings the rows
 // were measured with and the renderer (from the rows' setup, stability_report.h), and for
 // llvmpipe what carries over to a GPU (chart_axes.h: chartRendererLine). `source` (e.g.

@@ -111,6 +111,7 @@ inline void pcfFetch(const RecordingMap& m, int kind, vec2 uv, float weight) {
 // clang-format off
 #include "shaders/shared/pcf_prelude.h"
 #include "shaders/shared/pcf_kernel.h"
+#include "shaders/shared/pcf_disk.h"
 #include "shaders/shared/pcf_moments.h"
 #include "shaders/shared/pcf_filter.h"
 // clang-format on

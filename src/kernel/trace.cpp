@@ -59,7 +59,7 @@ int tapsChangedByPlane(const Trace& tr) {
 
 namespace {
 
-// pcss records its search taps with weight 0 (pcf_kernel.h pcfPcssEstimate): they choose the
+// pcss records its search taps with weight 0 (pcf_disk.h pcfPcssEstimate): they choose the
 // filter's width, the filter's taps make the visibility. When no search tap blocks there is no
 // filter and the visibility, 1, is the mean of the 16 search bits (all 1): the search taps then
 // weigh 1/16 each, so visibility = sum(weight * lit) holds for every lookup (docs/user-guide.md,

@@ -589,7 +589,7 @@ void explainPoisson(const Trace& tr, Steps& out) {
                 "banding for noise.");
 }
 
-// The distances pcss compares (pcf_kernel.h): a spot's perspective map stores depth, not the
+// The distances pcss compares (pcf_disk.h): a spot's perspective map stores depth, not the
 // distance along the light's axis, so its receiver and blockers are converted first; a
 // directional light's map depth is the distance already.
 struct PcssDistances {
@@ -695,7 +695,7 @@ void stepPcssFilter(const Trace& tr, size_t searchTaps, Steps& out) {
             "visibility = " + std::to_string(lit) + " lit / 16 = " + num(tr.visibility) + ".");
 }
 
-// pcss (Fernando 2005, see pcf_kernel.h): the search disk's taps, the penumbra from the mean
+// pcss (Fernando 2005, see pcf_disk.h): the search disk's taps, the penumbra from the mean
 // blocker depth, then the filter disk's taps; every number is the kernel's (tr.pcss, tr.taps).
 void explainPcss(const Trace& tr, Steps& out) {
     const PcfPcssEstimate& e = tr.pcss;

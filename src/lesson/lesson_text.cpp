@@ -72,7 +72,8 @@ Value cascadeValue(const Trace& t, T TraceCascade::*field) {
     }
 }
 
-const std::vector<Simple>& simpleNames() {
+// Where the lookup falls: its uv, depths, texel position and the fractions the methods lerp by.
+const std::vector<Simple>& positionNames() {
     static const std::vector<Simple> names = {
         {"uv.x", [](const Trace& t, const StepContext&) { return number(t.uv.x); }},
         {"uv.y", [](const Trace& t, const StepContext&) { return number(t.uv.y); }},
@@ -108,6 +109,13 @@ const std::vector<Simple>& simpleNames() {
                       const StepContext&) { return number(pcfTentBase(t.uv, t.map.size).frac.x); }},
         {"tent.t", [](const Trace& t,
                       const StepContext&) { return number(pcfTentBase(t.uv, t.map.size).frac.y); }},
+    };
+    return names;
+}
+
+// The result, as the texture unit's precisions give it and counted either way.
+const std::vector<Simple>& resultNames() {
+    static const std::vector<Simple> names = {
         {"visibility", [](const Trace& t, const StepContext&) { return number(t.visibility); }},
         // Issue 10: the texture unit's 8-bit position (hw8) next to the float one.
         {"frac_hw8.x", [](const Trace& t, const StepContext&) { return number(t.fracHw8.x); }},
@@ -124,6 +132,13 @@ const std::vector<Simple>& simpleNames() {
         {"1-visibility",
          [](const Trace& t, const StepContext&) { return number(1.0f - t.visibility); }},
         {"shadow", [](const Trace& t, const StepContext&) { return number(1.0f - t.visibility); }},
+    };
+    return names;
+}
+
+// The method, its parameters and what it read (fetch counts, taps, the weight table).
+const std::vector<Simple>& readNames() {
+    static const std::vector<Simple> names = {
         {"method",
          [](const Trace& t, const StepContext&) {
              if (t.params.method < 0 || t.params.method >= PCF_METHOD_COUNT) return text("?");
@@ -157,6 +172,14 @@ const std::vector<Simple>& simpleNames() {
          [](const Trace& t, const StepContext&) { return integer(t.weights.origin.y); }},
         {"weights.w", [](const Trace& t, const StepContext&) { return integer(t.weights.size.x); }},
         {"weights.h", [](const Trace& t, const StepContext&) { return integer(t.weights.size.y); }},
+    };
+    return names;
+}
+
+// The pick, the shadow pass's settings (bias, cull, depth format) and what the bias did to the
+// taps.
+const std::vector<Simple>& biasNames() {
+    static const std::vector<Simple> names = {
         {"pixel.x", [](const Trace&, const StepContext& c) { return integer(c.pixel.x); }},
         {"pixel.y", [](const Trace&, const StepContext& c) { return integer(c.pixel.y); }},
         {"bias",
@@ -185,8 +208,23 @@ const std::vector<Simple>& simpleNames() {
              for (const TapRecord& tap : t.taps) n += pcfCompare(tap.depth, t.ref) < 0.5f;
              return integer(n);
          }},
-        // pcss (Fernando 2005): the blocker search and the penumbra estimate, as the kernel found
-        // them (Trace::pcss); 0 for the other methods.
+        {"cull",
+         [](const Trace&, const StepContext& c) {
+             return text(std::string(cullModeName(c.settings.cull)));
+         }},
+        {"depth_format",
+         [](const Trace&, const StepContext& c) {
+             TexelKind format = c.settings.depthFormat;
+             return text(std::string(depthFormatName(format)));
+         }},
+    };
+    return names;
+}
+
+// pcss (Fernando 2005): the blocker search and the penumbra estimate, as the kernel found them
+// (Trace::pcss); 0 for the other methods. And the disk the poisson methods fill.
+const std::vector<Simple>& pcssNames() {
+    static const std::vector<Simple> names = {
         {"pcss.scale",
          [](const Trace& t, const StepContext&) { return number(t.params.penumbraScale); }},
         {"pcss.search_radius",
@@ -216,24 +254,21 @@ const std::vector<Simple>& simpleNames() {
              float scale = pcss ? t.pcss.filterRadius : t.params.radius;
              return number(scale * poissonSetReach());
          }},
-        {"cull",
-         [](const Trace&, const StepContext& c) {
-             return text(std::string(cullModeName(c.settings.cull)));
-         }},
-        {"depth_format",
-         [](const Trace&, const StepContext& c) {
-             TexelKind format = c.settings.depthFormat;
-             return text(std::string(depthFormatName(format)));
-         }},
-        // The cascade the lookup read (kernel/trace.h cascadeOfTrace); n/a with one map.
-        {"cascade", [](const Trace& t,
-                       const StepContext&) { return cascadeValue(t, &TraceCascade::index); }},
-        {"cascade.count", [](const Trace& t,
-                             const StepContext&) { return cascadeValue(t, &TraceCascade::count); }},
-        {"cascade.near", [](const Trace& t,
-                            const StepContext&) { return cascadeValue(t, &TraceCascade::nearZ); }},
-        {"cascade.far", [](const Trace& t,
-                           const StepContext&) { return cascadeValue(t, &TraceCascade::farZ); }},
+    };
+    return names;
+}
+
+// The cascade the lookup read (kernel/trace.h cascadeOfTrace); n/a with one map.
+const std::vector<Simple>& cascadeNames() {
+    static const std::vector<Simple> names = {
+        {"cascade",
+         [](const Trace& t, const StepContext&) { return cascadeValue(t, &TraceCascade::index); }},
+        {"cascade.count",
+         [](const Trace& t, const StepContext&) { return cascadeValue(t, &TraceCascade::count); }},
+        {"cascade.near",
+         [](const Trace& t, const StepContext&) { return cascadeValue(t, &TraceCascade::nearZ); }},
+        {"cascade.far",
+         [](const Trace& t, const StepContext&) { return cascadeValue(t, &TraceCascade::farZ); }},
         {"cascade.texel_world",
          [](const Trace& t, const StepContext&) {
              return cascadeValue(t, &TraceCascade::texelWs);
@@ -252,7 +287,7 @@ const std::vector<Simple>& simpleNames() {
         {"cascade.next",
          [](const Trace& t, const StepContext&) {
              return cascadeOfTrace(t) && t.cascadeBlend.next >= 0 ? integer(t.cascadeBlend.next)
-                                                                   : Value{};
+                                                                  : Value{};
          }},
         {"cascade.next_visibility",
          [](const Trace& t, const StepContext&) {
@@ -293,11 +328,15 @@ const std::vector<Simple>& momentNames() {
     return names;
 }
 
-// Every simple name: the lookup's, then the moment methods'.
+// Every simple name, group by group (placeholderNames lists them in this order).
 const std::vector<Simple>& allSimpleNames() {
     static const std::vector<Simple> names = [] {
-        std::vector<Simple> all = simpleNames();
-        all.insert(all.end(), momentNames().begin(), momentNames().end());
+        std::vector<Simple> all;
+        for (const std::vector<Simple>* group :
+             {&positionNames(), &resultNames(), &readNames(), &biasNames(), &pcssNames(),
+              &cascadeNames(), &momentNames()}) {
+            all.insert(all.end(), group->begin(), group->end());
+        }
         return all;
     }();
     return names;

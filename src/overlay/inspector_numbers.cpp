@@ -12,14 +12,21 @@ constexpr float HEADER_GAP_PX = 4.0f;
 
 namespace {
 
-// The header's counts: fetch counts, then uv, ref and bias; each hidden number a "?" (a count
-// hidden keeps the plural, which would give a 1 away).
+// The header's counts: fetch counts (a moment method's one bilinear read of its moments), then uv,
+// ref and bias; each hidden number a "?" (a count hidden keeps the plural, which would give a 1
+// away).
 std::string countsText(const Trace& tr, const HiddenNumbers& hidden) {
     auto plural = [&](int n, const char* one, const char* many) {
         if (hidden.counts) return std::string(HIDDEN_NUMBER) + " " + many;
         return std::to_string(n) + " " + (n == 1 ? one : many);
     };
-    std::string counts = plural(tr.counts.texels, "texel read", "texel reads");
+    // A moment method reads its filtered moments map once, bilinearly (its map pass is the
+    // moments pass, kernel/methods.h): its texels hold moments, not depths to compare.
+    std::string counts =
+        readsMoments(tr.params.method)
+            ? plural(static_cast<int>(tr.fetches.size()), "bilinear read", "bilinear reads") +
+                  " of the filtered moments (" + plural(tr.counts.texels, "texel", "texels") + ")"
+            : plural(tr.counts.texels, "texel read", "texel reads");
     if (tr.counts.gathers) counts += ", " + plural(tr.counts.gathers, "gather", "gathers");
     if (tr.counts.hwTaps)
         counts += ", " + plural(tr.counts.hwTaps, "hardware tap", "hardware taps");

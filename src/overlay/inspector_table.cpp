@@ -97,53 +97,60 @@ std::optional<float> commonRef(const Trace& tr) {
     return tr.taps.front().ref;
 }
 
-// The grid form: each quantity of the texels as a grid laid out as the cells sit (row j down,
-// column i across), its name in the corner: ref (where the reads compare with refs of their
-// own), depth, d - ref (where it fits the width) and w. A 7x7 tent's 64 texels take two grids
-// of nine lines instead of 64 rows. Empty when the texels do not fill their bounding box.
-std::vector<std::vector<std::string>> texelGrids(const Trace& tr, const HiddenNumbers& hide,
-                                                 const std::vector<glm::ivec2>& texels,
-                                                 bool refGrid, bool marginGrid) {
-    glm::ivec2 lo(INT32_MAX), hi(INT32_MIN);
-    for (glm::ivec2 x : texels) lo = glm::min(lo, x), hi = glm::max(hi, x);
-    glm::ivec2 size = hi - lo + 1;
-    if (texels.empty() || static_cast<size_t>(size.x) * size.y != texels.size()) return {};
-    struct Quantity {
-        std::string name;
-        std::function<std::string(const TapRecord&, glm::ivec2)> text;
-    };
-    std::vector<Quantity> quantities;
-    // A question's hidden numbers (app/predict.h) as "?", as the rows form draws them; with the
-    // bits hidden the depths keep a fourth decimal, and depth - ref (its sign is the bit) goes.
+// One quantity of the grid form: its name in the grid's corner and its text for a texel's first
+// read.
+struct GridQuantity {
+    std::string name;
+    std::function<std::string(const TapRecord&, glm::ivec2)> text;
+};
+
+// The grid form's quantities: ref (where the reads compare with refs of their own), depth,
+// d - ref (where it fits the width) and w. A question's hidden numbers (app/predict.h) as "?", as
+// the rows form draws them; with the bits hidden the depths keep a fourth decimal, and depth - ref
+// (its sign is the bit) goes.
+std::vector<GridQuantity> gridQuantities(const Trace& tr, const HiddenNumbers& hide, bool refGrid,
+                                         bool marginGrid) {
+    std::vector<GridQuantity> quantities;
     bool marginHidden = hide.bits || hide.refs || hide.depths;
     if (refGrid)
-        quantities.push_back({"ref", [&](const TapRecord& t, glm::ivec2) {
+        quantities.push_back({"ref", [hide](const TapRecord& t, glm::ivec2) {
                                   return hiddenOr(hide.refs, "", fixed(t.ref, 4));
                               }});
-    quantities.push_back({"depth", [&](const TapRecord& t, glm::ivec2) {
+    quantities.push_back({"depth", [hide](const TapRecord& t, glm::ivec2) {
                               return hiddenOr(hide.depths, "", fixed(t.depth, hide.bits ? 4 : 3));
                           }});
     if (marginGrid)
-        quantities.push_back({"d - ref", [&](const TapRecord& t, glm::ivec2) {
+        quantities.push_back({"d - ref", [marginHidden](const TapRecord& t, glm::ivec2) {
                                   return hiddenOr(marginHidden, "", fixed(t.depth - t.ref, 4));
                               }});
-    quantities.push_back({"w", [&](const TapRecord&, glm::ivec2 x) {
-                              return hiddenOr(hide.weights, "", weightText(tr.weights.at(x)));
+    const Trace* trace = &tr;
+    quantities.push_back({"w", [hide, trace](const TapRecord&, glm::ivec2 x) {
+                              return hiddenOr(hide.weights, "", weightText(trace->weights.at(x)));
                           }});
-    // Every grid's cells first, so that the columns of all the grids line up under each other.
-    std::vector<std::vector<std::vector<std::string>>> cells;
-    for (const Quantity& q : quantities) {
-        cells.emplace_back();
-        cells.back().push_back({q.name});
-        for (int i = 0; i < size.x; ++i) cells.back().back().push_back(std::to_string(lo.x + i));
-        for (int j = 0; j < size.y; ++j) {
-            cells.back().push_back({std::to_string(lo.y + j)});
-            for (int i = 0; i < size.x; ++i) {
-                const TapRecord* tap = firstTapAt(tr, lo + glm::ivec2(i, j));
-                cells.back().back().push_back(tap ? q.text(*tap, lo + glm::ivec2(i, j)) : "-");
-            }
+    return quantities;
+}
+
+// A grid's cells: its name and the columns i across the top, then per row j its label and each
+// texel's text ("-" for a texel not read).
+std::vector<std::vector<std::string>> gridCells(const Trace& tr, const GridQuantity& q,
+                                                glm::ivec2 lo, glm::ivec2 size) {
+    std::vector<std::vector<std::string>> cells;
+    cells.push_back({q.name});
+    for (int i = 0; i < size.x; ++i) cells.back().push_back(std::to_string(lo.x + i));
+    for (int j = 0; j < size.y; ++j) {
+        cells.push_back({std::to_string(lo.y + j)});
+        for (int i = 0; i < size.x; ++i) {
+            const TapRecord* tap = firstTapAt(tr, lo + glm::ivec2(i, j));
+            cells.back().push_back(tap ? q.text(*tap, lo + glm::ivec2(i, j)) : "-");
         }
     }
+    return cells;
+}
+
+// The grids as lines, their columns lined up under each other across all the grids: the labels
+// left-aligned to the widest, the numbers one space apart, right-aligned under their texel's i.
+std::vector<std::vector<std::string>> alignedGrids(
+    const std::vector<std::vector<std::vector<std::string>>>& cells) {
     size_t label = 0, number = 0;
     for (const auto& grid : cells) {
         for (const auto& row : grid) {
@@ -151,7 +158,6 @@ std::vector<std::vector<std::string>> texelGrids(const Trace& tr, const HiddenNu
             for (size_t c = 1; c < row.size(); ++c) number = std::max(number, row[c].size());
         }
     }
-    // One space apart: a grid's numbers right-aligned under their texel's i.
     std::vector<std::vector<std::string>> grids;
     for (const auto& grid : cells) {
         grids.emplace_back();
@@ -164,6 +170,24 @@ std::vector<std::vector<std::string>> texelGrids(const Trace& tr, const HiddenNu
         }
     }
     return grids;
+}
+
+// The grid form: each quantity of the texels (gridQuantities) as a grid laid out as the cells
+// sit (row j down, column i across), its name in the corner. A 7x7 tent's 64 texels take two
+// grids of nine lines instead of 64 rows. Empty when the texels do not fill their bounding box.
+std::vector<std::vector<std::string>> texelGrids(const Trace& tr, const HiddenNumbers& hide,
+                                                 const std::vector<glm::ivec2>& texels,
+                                                 bool refGrid, bool marginGrid) {
+    glm::ivec2 lo(INT32_MAX), hi(INT32_MIN);
+    for (glm::ivec2 x : texels) lo = glm::min(lo, x), hi = glm::max(hi, x);
+    glm::ivec2 size = hi - lo + 1;
+    if (texels.empty() || static_cast<size_t>(size.x) * size.y != texels.size()) return {};
+    // Every grid's cells first, so that the columns of all the grids line up under each other.
+    std::vector<std::vector<std::vector<std::string>>> cells;
+    for (const GridQuantity& q : gridQuantities(tr, hide, refGrid, marginGrid)) {
+        cells.push_back(gridCells(tr, q, lo, size));
+    }
+    return alignedGrids(cells);
 }
 
 // The table as a page draws it: the title wrapped to the panel (never cut short: it says what

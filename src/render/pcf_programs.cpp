@@ -216,7 +216,8 @@ const PcfProgram& PcfProgramCache::get(const PcfVariant& variant) {
 
 std::vector<std::string> pcfSharedFiles(std::vector<std::string> after) {
     std::vector<std::string> files = {"shared/pcf_prelude.h", "shared/pcf_kernel.h",
-                                      "shared/pcf_moments.h", "shared/pcf_filter.h"};
+                                      "shared/pcf_disk.h", "shared/pcf_moments.h",
+                                      "shared/pcf_filter.h"};
     files.insert(files.end(), after.begin(), after.end());
     return files;
 }

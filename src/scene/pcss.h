@@ -1,5 +1,5 @@
 // pcss.h: what percentage-closer soft shadows need from the scene: the light's size in the
-// shadow map's own units (the kernel's penumbraScale, shaders/shared/pcf_kernel.h pcfPcss).
+// shadow map's own units (the kernel's penumbraScale, shaders/shared/pcf_disk.h pcfPcss).
 #pragma once
 
 #include "kernel/settings.h"
@@ -27,7 +27,7 @@ float effectiveLightSizeDeg(const Light& light, float lightSizeDeg);
 // the map.
 // A spot light of radius R (light.radius; lightSizeDeg does not apply, light_radius does through
 // pcssPcfParams): its map is perspective,
-// and the kernel works in linear distance (pcf_kernel.h, Fernando 2005 with w_light = 2 R):
+// and the kernel works in linear distance (pcf_disk.h, Fernando 2005 with w_light = 2 R):
 //   S = 2 R * P00 * mapSize / 2 = R * P00 * mapSize
 // P00 the projection's x scale (the u row of the matrix, without the part along its w row that
 // a shifted grid adds; the least of the u and v rows'). R = 0: S = 0, and pcss filters as
