@@ -60,7 +60,7 @@ const bool SPOT = PCF_SCENE_SPOT != 0;  // false: directional
 vec3 layerUvz(PcfMapLayer layer, vec3 posWs, vec3 n, float cosTheta) {
     PcfReceiverLookup at =
         pcfReceiverLookup(layer.shadowClipFromWorld, posWs, n, cosTheta, BIAS_MODE, uConstantBias,
-                          uSlopeBias, uSlopeMax, uNormalOffset, layer.texelWs);
+                          uSlopeBias, uSlopeMax, uNormalOffset, layer.texelWs, true);
     return vec3(at.u, at.v, at.z);
 }
 
@@ -107,7 +107,7 @@ void main() {
     PcfMapLayer layer = uPcfMapLayers[layerIndex];
     PcfReceiverLookup at = pcfReceiverLookup(layer.shadowClipFromWorld, vPosWs, n, cosTheta,
                                              BIAS_MODE, uConstantBias, uSlopeBias, uSlopeMax,
-                                             uNormalOffset, layer.texelWs);
+                                             uNormalOffset, layer.texelWs, PCF_MAP_LAYERS > 1);
     float u = at.u;
     float v = at.v;
     float z = at.z;
@@ -133,7 +133,7 @@ void main() {
     PcfMapLayer nextLayer = uPcfMapLayers[min(layerIndex + 1, PCF_MAP_LAYERS - 1)];
     PcfReceiverLookup next = pcfReceiverLookup(nextLayer.shadowClipFromWorld, vPosWs, n, cosTheta,
                                                BIAS_MODE, uConstantBias, uSlopeBias, uSlopeMax,
-                                               uNormalOffset, nextLayer.texelWs);
+                                               uNormalOffset, nextLayer.texelWs, true);
     vec2 nextDzduv = vec2(0.0f);
     if (PCF_ALL_TARGETS >= 2 || BIAS_MODE == PCF_BIAS_RECEIVER_PLANE) {
         nextDzduv = layerDzDuv(nextLayer, vec3(next.u, next.v, next.z), n, cosTheta);

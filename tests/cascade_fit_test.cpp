@@ -231,10 +231,10 @@ TEST(CascadeFit, NormalOffsetIsTexelsOfTheCascadeRead) {
     for (const PcfMapLayer& layer : spec.layers) {
         PcfReceiverLookup at =
             pcfReceiverLookup(layer.shadowClipFromWorld, p, n, cosTheta, PCF_BIAS_CONSTANT, 0.0f,
-                              0.0f, 0.0f, k, layer.texelWs);
+                              0.0f, 0.0f, k, layer.texelWs, true);
         PcfReceiverLookup moved =
             pcfReceiverLookup(layer.shadowClipFromWorld, p, n, cosTheta, PCF_BIAS_NORMAL, 0.0f,
-                              0.0f, 0.0f, k, layer.texelWs);
+                              0.0f, 0.0f, k, layer.texelWs, true);
         float texelsMoved = glm::length(glm::vec2(moved.u - at.u, moved.v - at.v)) * MAP_SIZE;
         EXPECT_NEAR(texelsMoved, k * sin2, 2e-3f);
         depthShift.push_back(std::fabs(moved.z - at.z));

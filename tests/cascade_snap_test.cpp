@@ -111,10 +111,12 @@ TEST_F(CascadeSnap, TheMapMovesByWholeTexelsBitForBit) {
 }
 
 // The sweep at its full size, on the log split, where the fixed-function pass made 1.3 % of
-// cascade 3's static receivers flicker (pcf-gather 5x5): sphere and snap flicker in no cascade.
+// cascade 3's static receivers flicker (pcf-gather 5x5), and where nearest flickered at one
+// receiver of cascade 2 lying 1.5e-5 texel from a texel's edge until the lookup's clip
+// coordinates were made exact (pcfLightClip): sphere and snap flicker in no cascade, for either.
 TEST_F(CascadeSnap, SphereAndSnapNeverFlickerAtTheFullSize) {
     StabilityOptions o = fullSizeOptions();
-    o.methods = {{PCF_GATHER, 5}};
+    o.methods = {{PCF_GATHER, 5}, {PCF_NEAREST, 0}};
     o.cascadeLambdas = {1.0f};
     ASSERT_FALSE(validateStabilityOptions(o));
     std::vector<StabilityRow> rows;
@@ -123,12 +125,14 @@ TEST_F(CascadeSnap, SphereAndSnapNeverFlickerAtTheFullSize) {
     for (const CascadePoint& p : cascadePoints(rows)) {
         if (p.fit != "sphere" || !p.snap) continue;
         EXPECT_EQ(p.texelWorldMin, p.texelWorldMax) << "cascade " << p.cascade;
-        EXPECT_EQ(p.flickerRate, 0.0) << "cascade " << p.cascade << " of " << p.staticReceivers;
+        EXPECT_EQ(p.flickerRate, 0.0)
+            << p.method << " cascade " << p.cascade << " of " << p.staticReceivers;
         checked += p.staticReceivers > 100.0 ? 1 : 0;
         std::printf("cascade %d: flicker %g of %g receivers\n", p.cascade, p.flickerRate,
                     p.staticReceivers);
     }
-    EXPECT_EQ(checked, 2);  // the log split's cascades 2 and 3 hold the receivers on screen
+    // the log split's cascades 2 and 3 hold the receivers on screen, for each method
+    EXPECT_EQ(checked, 4);
 }
 
 }  // namespace

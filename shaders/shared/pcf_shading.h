@@ -21,16 +21,44 @@ struct PcfReceiverLookup {
     float ref;  // z - bias: the depth compared with the map
 };
 
+// A point's clip coordinates under the light's matrix m. On a cascade's grid (onGrid: a map of
+// cascades, whose matrices are orthographic, w = 1) x and y are the point's own part, the
+// rotation and scale rows times p, rounded to a multiple of 2^-23, plus the translation. A
+// snapped cascade's translation is a whole number of texels of its power-of-two map, a multiple
+// of 2 / size, so the sum is exact (both multiples of 2^-23, at most 1 in size inside the map),
+// and so are u = x * 0.5 + 0.5 and the texel position u * size after it: a point seen through the
+// map moved by whole texels lands in the same place of the same texel, bit for bit, and no tap
+// flips as the camera turns (the stabilised cascades of Valient, "Stable Rendering of Cascaded
+// Shadow Maps", ShaderX6, 2008). Without the rounding the sum's last bit depends on the
+// translation, which moves a point 1.5e-5 texel from a texel's edge from one side to the other.
+// The rounding moves a point by at most 2^-24 of the map's width. A map of one layer keeps the
+// plain product (its matrix may be a spot light's perspective).
+PCF_FN float pcfClipGrid(float a) {
+    if (abs(a) >= 1.0f) return a;               // a multiple of 2^-23 already
+    PCF_PRECISE float scaled = a * 8388608.0f;  // 2^23: exact
+    return floor(scaled + 0.5f) * (1.0f / 8388608.0f);
+}
+
+PCF_FN vec4 pcfLightClip(mat4 m, vec3 p, bool onGrid) {
+    vec4 clip = m * vec4(p, 1.0f);
+    if (!onGrid) return clip;
+    PCF_PRECISE float ax = m[0][0] * p.x + m[1][0] * p.y + m[2][0] * p.z;
+    PCF_PRECISE float ay = m[0][1] * p.x + m[1][1] * p.y + m[2][1] * p.z;
+    PCF_PRECISE float x = pcfClipGrid(ax) + m[3][0];
+    PCF_PRECISE float y = pcfClipGrid(ay) + m[3][1];
+    return vec4(x, y, clip.z, 1.0f);
+}
+
 PCF_FN PcfReceiverLookup pcfReceiverLookup(mat4 shadowClipFromWorld, vec3 posWs, vec3 n,
                                            float cosTheta, int biasMode, float constantBias,
                                            float slopeBias, float slopeMax, float normalOffset,
-                                           float shadowTexelWs) {
-    vec4 clip0 = shadowClipFromWorld * vec4(posWs, 1.0f);
+                                           float shadowTexelWs, bool onGrid) {
+    vec4 clip0 = pcfLightClip(shadowClipFromWorld, posWs, onGrid);
     float z0 = (clip0.z / clip0.w) * 0.5f + 0.5f;
     vec4 clip = clip0;
     if (biasMode == PCF_BIAS_NORMAL) {
         float d = pcfNormalOffsetDistance(cosTheta, normalOffset, shadowTexelWs * clip0.w);
-        clip = shadowClipFromWorld * vec4(posWs + n * d, 1.0f);
+        clip = pcfLightClip(shadowClipFromWorld, posWs + n * d, onGrid);
     }
     float u = (clip.x / clip.w) * 0.5f + 0.5f;
     float v = (clip.y / clip.w) * 0.5f + 0.5f;

@@ -78,7 +78,7 @@ PcfReceiverLookup recomputedLookup(const RawImages& img, const RawSettings& r, s
     const float* n = &img.normals.data[4 * k];
     return pcfReceiverLookup(layer.shadowClipFromWorld, vec3(p[0], p[1], p[2]),
                              vec3(n[0], n[1], n[2]), n[3], s.modeId(), s.constantBias, s.slopeBias,
-                             s.slopeMax, s.normalOffset, layer.texelWs);
+                             s.slopeMax, s.normalOffset, layer.texelWs, count > 1);
 }
 
 // Every receiver pixel's u, v, depth before bias and ref against recomputedLookup, within
@@ -263,7 +263,7 @@ VisibilityEnvelope blendedEnvelope(const RawImages& img, const RawSettings& r, s
     const PcfMapLayer& next = *lookupLayer(r, layer + 1);
     PcfReceiverLookup at = pcfReceiverLookup(
         next.shadowClipFromWorld, vec3(pos[0], pos[1], pos[2]), vec3(n[0], n[1], n[2]), n[3],
-        s.modeId(), s.constantBias, s.slopeBias, s.slopeMax, s.normalOffset, next.texelWs);
+        s.modeId(), s.constantBias, s.slopeBias, s.slopeMax, s.normalOffset, next.texelWs, true);
     const ShadowMap& map = img.layers[static_cast<size_t>(layer + 1)];
     if (s.rotate) p.rotation = pcfTexelRotation(vec2(at.u, at.v), ivec2(map.width(), map.height()));
     // checkLookups made sure the folder has the next planes receiver-plane bias needs.
