@@ -203,5 +203,53 @@ TEST_F(Layout, ClicksOnAChartPickNoScenePixel) {
     }
 }
 
+// A step that names a panel of the bleed chart ("#bleed:lbr", lesson 20) gives it the whole
+// plot: on a projector at 1024 x 768 its leak axis is at least three times as tall as in the
+// four-panel chart, and has room for the 0.001 tick the step's words read the lines against (the
+// four panels' axes drew only "1" and "<=0.0001").
+TEST_F(Layout, ANamedBleedPanelGetsThePlotAndItsDecades) {
+    Lesson lesson = parseLessonFile(PCFSCOPE_SOURCE_DIR "/lessons/20-light-bleeding.toml");
+    const LessonStep* named = nullptr;
+    for (const LessonStep& s : lesson.steps) {
+        if (s.chart.ends_with("#bleed:lbr")) named = &s;
+    }
+    ASSERT_NE(named, nullptr);
+    LessonStep all = *named;
+    all.chart = all.chart.substr(0, all.chart.rfind('#')) + "#bleed";
+    InspectorLayout l = chartStepLayout(inspectorLayout({1024, 768}, true));
+    // The top panel's leak axis: from its "1" tick down to its floor's, and whether a tick of the
+    // same column reads 0.001.
+    auto axisOf = [&](const LessonStep& step) {
+        std::vector<LayoutBox> ticks;
+        for (const LayoutBox& b : stepChartBoxes(step, l)) {
+            if (b.role == "chart-tick") ticks.push_back(b);
+        }
+        auto topmost = [&](const std::string& text) {
+            const LayoutBox* best = nullptr;
+            for (const LayoutBox& b : ticks) {
+                if (b.text == text && (!best || b.rect.y < best->rect.y)) best = &b;
+            }
+            return best;
+        };
+        const LayoutBox* one = topmost("1");
+        const LayoutBox* floor = topmost("<=0.0001");
+        EXPECT_TRUE(one && floor) << step.chart;
+        if (!one || !floor) return std::pair<float, bool>{0.0f, false};
+        bool thousandth = false;
+        for (const LayoutBox& b : ticks) {
+            thousandth |= b.text == "0.001" &&
+                          std::abs(b.rect.right() - one->rect.right()) < 1.0f &&
+                          b.rect.y > one->rect.y && b.rect.y < floor->rect.y;
+        }
+        return std::pair<float, bool>{floor->rect.y - one->rect.y, thousandth};
+    };
+    auto [fourHeight, fourThousandth] = axisOf(all);
+    auto [oneHeight, oneThousandth] = axisOf(*named);
+    EXPECT_GT(fourHeight, 0.0f);
+    EXPECT_GE(oneHeight, 3.0f * fourHeight) << fourHeight;
+    EXPECT_FALSE(fourThousandth);
+    EXPECT_TRUE(oneThousandth) << oneHeight;
+}
+
 }  // namespace
 }  // namespace pcf

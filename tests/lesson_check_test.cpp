@@ -269,4 +269,34 @@ TEST_F(LessonCheck, ChartFactsReadTheChartsCsv) {
     EXPECT_EQ(r.out.find(":11:"), std::string::npos) << r.out;
 }
 
+// A step names the panels of a stability chart it shows after a colon ("#bleed:lbr"): a name no
+// panel has is a bad file at the chart's line (exit 2), listing the panels there are; a chart
+// fact about a panel the step does not show fails at its claim's line (exit 1).
+TEST_F(LessonCheck, ANamedChartPanelMustExistAndHoldTheFacts) {
+    std::string csv = PCFSCOPE_SOURCE_DIR "/lessons/figures/bleed/stability.csv";
+    std::string path = write("chart = \"" + csv + "#bleed:lbrx\"\n");
+    testutil::CommandResult r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find(":9: step 1 chart: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("no panel 'lbrx' in the chart '#bleed' (its panels: lbr, "),
+              std::string::npos)
+        << r.err;
+    for (const char* name : {"moment_format", "evsm_exponents", "moment_bias"}) {
+        EXPECT_NE(r.err.find(name), std::string::npos) << name << ": " << r.err;
+    }
+    path = write(
+        "claims = [\"chart: vsm 5x5: leak falls under 0.001 from lbr 0.3\",\n"   // 9
+        "  \"chart: msm 5x5: leak falls under 0.001 from moment_bias 3e-5\"]\n"  // 10
+        "chart = \"" +
+        csv + "#bleed:lbr\"\n");
+    r = testutil::runPcfscope("lesson check " + path);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find(":10: step 1 claim \"chart: msm 5x5: leak falls under 0.001 from "
+                         "moment_bias 3e-5\" fails: the chart shows no 'moment_bias' panel (it "
+                         "names lbr)"),
+              std::string::npos)
+        << r.out;
+    EXPECT_EQ(r.out.find(":9:"), std::string::npos) << r.out;
+}
+
 }  // namespace

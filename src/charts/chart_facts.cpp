@@ -498,6 +498,11 @@ ChartFactAnswer costsMore(const ChartData& c, const std::string& pair) {
 // The bleed chart's line `label` ("vsm 5x5") over setting `key` at the chart's gap, or
 // std::invalid_argument naming the lines.
 BleedSeries bleedLineOf(const ChartData& c, const std::string& label, const std::string& key) {
+    // A step that names its panels ("#bleed:lbr") shows no line of the others.
+    if (!c.panels.empty() && std::find(c.panels.begin(), c.panels.end(), key) == c.panels.end()) {
+        throw std::invalid_argument("the chart shows no '" + key + "' panel (it names " +
+                                    chartPanelList(c.panels) + ")");
+    }
     std::vector<StabilityRow> rows = parseStabilityCsv(readInputFile(c.path), c.path);
     std::vector<BleedPoint> points = bleedPoints(rows);
     std::string names;

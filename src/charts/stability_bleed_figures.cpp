@@ -102,12 +102,14 @@ LineChartSpec bleedChartSpec(std::span<const StabilityRow> rows, const std::stri
     if (keys.empty()) keys.push_back("");
     for (const std::string& key : keys) {
         ChartPanel panel{key.empty() ? "at the run's settings" : "over " + key, {}};
+        panel.name = key;
         for (const BleedSeries& s : series) {
             if (s.key.empty() || s.key == key) panel.lines.push_back(bleedChartLine(s));
         }
         spec.panels.push_back(std::move(panel));
     }
     // Short lines: the notes stand under the legend, beside the plots.
+    spec.notesPanel = keys.front();
     for (const BleedSeries& s : series) {
         if (!s.key.empty() && s.key == keys.front()) spec.notes.push_back(bleedCleanNote(s));
     }

@@ -33,6 +33,8 @@ struct ChartPanel {
     // An x range shaded behind the lines (lowest, highest x; e.g. the trade-off chart's good
     // biases), at least a few pixels wide where the two are one point; a note names it.
     std::optional<glm::dvec2> band = std::nullopt;
+    // The name a lesson's chart anchor picks the panel by ("lbr" in "#bleed:lbr"); empty: none.
+    std::string name = {};
 };
 
 // The shade of a panel's band.
@@ -53,6 +55,7 @@ struct LineChartSpec {
     bool logY = false;
     std::vector<ChartPanel> panels;
     std::vector<std::string> notes;  // legend lines without a swatch (e.g. "dashed: pole")
+    std::string notesPanel;          // the named panel the notes speak of; empty: the whole chart
     float minFontPx = 8.0f;          // no text below this (a lesson frame asks for its floor)
 };
 

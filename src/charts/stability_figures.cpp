@@ -495,7 +495,7 @@ constexpr SweepChart SWEEP_CHARTS[] = {
     {Sweep::PcssBias, "stability_pcss_bias.png", drawPcssSweepChart<pcssBiasChartSpec>,
      lineTexts<pcssBiasChartSpec>, linePoints<pcssBiasChartSpec>},
     {Sweep::Bleed, "stability_bleed.png", drawPcssSweepChart<bleedChartSpec>,
-     lineTexts<bleedChartSpec>, linePoints<bleedChartSpec>},
+     lineTexts<bleedChartSpec>, linePoints<bleedChartSpec>, bleedChartSpec},
     {Sweep::Cascades, "stability_cascades.png", drawPcssSweepChart<cascadeChartSpec>,
      lineTexts<cascadeChartSpec>, linePoints<cascadeChartSpec>},
 };

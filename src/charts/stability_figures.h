@@ -118,6 +118,10 @@ struct SweepChart {
     // Whether `rows` hold anything the chart plots (a point, a bar): rows of its sweep whose
     // metrics it does not read would draw an empty chart.
     bool (*hasData)(std::span<const StabilityRow> rows);
+    // The chart's spec, for a line chart whose panels have names (ChartPanel::name) a lesson may
+    // pick ("#bleed:lbr"); nullptr for the others.
+    LineChartSpec (*lineSpec)(std::span<const StabilityRow> rows, const std::string& subtitle,
+                              float minFontPx) = nullptr;
 };
 std::span<const SweepChart> sweepCharts();
 // The entry of the sweep named so ("acne"); nullptr when no chart is.

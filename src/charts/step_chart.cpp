@@ -1,6 +1,8 @@
 #include "charts/step_chart.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -9,6 +11,7 @@
 #include "charts/advise_chart.h"
 #include "charts/chart_axes.h"
 #include "charts/stability_figures.h"
+#include "charts/stability_pcss_figures.h"
 #include "measure/stability_report.h"
 
 namespace pcf {
@@ -40,6 +43,37 @@ const SweepChart& sweepChartOf(const StepChartRef& ref) {
     throw InputError(
         ref.path, 0,
         "unknown stability chart '#" + ref.view + "' (known: " + sweepChartNames() + ")");
+}
+
+// The sweep chart's spec with only the panels `ref` names, each in its given order; InputError
+// for a name no panel has, listing the names there are.
+LineChartSpec namedPanelsSpec(const StepChartRef& ref, std::span<const StabilityRow> rows,
+                              float minFontPx) {
+    const SweepChart& chart = sweepChartOf(ref);
+    LineChartSpec spec;
+    if (chart.lineSpec) spec = chart.lineSpec(rows, stabilitySubtitle(ref), minFontPx);
+    std::vector<std::string> names;
+    for (const ChartPanel& p : spec.panels) {
+        if (!p.name.empty()) names.push_back(p.name);
+    }
+    std::vector<ChartPanel> kept;
+    for (const std::string& want : ref.panels) {
+        auto it = std::find_if(spec.panels.begin(), spec.panels.end(),
+                               [&](const ChartPanel& p) { return p.name == want; });
+        if (want.empty() || it == spec.panels.end()) {
+            throw InputError(ref.path, 0,
+                             "no panel '" + want + "' in the chart '#" + ref.view +
+                                 "' (its panels: " + chartPanelList(names) + ")");
+        }
+        kept.push_back(*it);
+    }
+    // The notes speak of one panel: gone with it.
+    if (!spec.notesPanel.empty() &&
+        std::find(ref.panels.begin(), ref.panels.end(), spec.notesPanel) == ref.panels.end()) {
+        spec.notes.clear();
+    }
+    spec.panels = std::move(kept);
+    return spec;
 }
 
 // The chart's text and type for a speed chart.
@@ -89,8 +123,26 @@ StepChartRef stepChartRef(const std::string& chart) {
     if (hash == std::string::npos)
         return {chart, "", StepChartKind::Bench, ChartAccuracy::EdgeRmse};
     bool contact = view == CONTACT_CHART_VIEW;
-    return {path, view, contact ? StepChartKind::Bench : StepChartKind::Stability,
-            contact ? ChartAccuracy::ContactRmse : ChartAccuracy::EdgeRmse};
+    StepChartRef ref{path, view, contact ? StepChartKind::Bench : StepChartKind::Stability,
+                     contact ? ChartAccuracy::ContactRmse : ChartAccuracy::EdgeRmse};
+    // "bleed:lbr,moment_format": the sweep chart's name, then the panels shown.
+    size_t colon = view.find(':');
+    if (!contact && colon != std::string::npos) {
+        ref.view = view.substr(0, colon);
+        std::string list = view.substr(colon + 1);
+        for (size_t at = 0; at <= list.size();) {
+            size_t comma = std::min(list.find(',', at), list.size());
+            ref.panels.push_back(list.substr(at, comma - at));
+            at = comma + 1;
+        }
+    }
+    return ref;
+}
+
+std::string chartPanelList(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out.empty() ? "none" : out;
 }
 
 AdviseReport readStepAdvise(const StepChartRef& ref) {
@@ -119,6 +171,7 @@ void checkStepChart(const std::string& chart) {
     }
     std::vector<StabilityRow> rows = readStabilityRows(ref.path);
     sweepChartOf(ref);
+    if (!ref.panels.empty()) namedPanelsSpec(ref, rows, 8.0f);
     for (const StabilityRow& r : rows) {
         if (r.sweep == ref.view) return;
     }
@@ -147,6 +200,9 @@ std::vector<uint8_t> drawStepChart(const StepChart& chart, glm::ivec2 size) {
                               ref.accuracy);
     }
     std::vector<StabilityRow> rows = readStabilityRows(ref.path);
+    if (!ref.panels.empty()) {
+        return drawPcssChart(namedPanelsSpec(ref, rows, chart.minFontPx), size);
+    }
     std::vector<uint8_t> rgba =
         sweepChartOf(ref).draw(rows, size, stabilitySubtitle(ref), chart.minFontPx);
     if (rgba.empty()) throw InputError(ref.path, 0, "no " + ref.view + " rows to chart");
@@ -192,6 +248,9 @@ std::vector<ChartTextBox> stepChartTexts(const StepChart& chart, glm::ivec2 size
         return speedChartTextBoxes(layout, text);
     }
     std::vector<StabilityRow> rows = readStabilityRows(ref.path);
+    if (!ref.panels.empty()) {
+        return lineChartTextBoxes(namedPanelsSpec(ref, rows, chart.minFontPx), size);
+    }
     return sweepChartOf(ref).texts(rows, size, stabilitySubtitle(ref), chart.minFontPx);
 }
 

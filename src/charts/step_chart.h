@@ -2,10 +2,11 @@
 // and chart_highlight): "PATH", a bench.csv's speed against accuracy (speed_chart.h, the edge
 // band's RMSE: speed_vs_accuracy.png), "PATH#contact", the same bench.csv's speed against the
 // edge RMSE near the casters (speed_vs_contact.png: bench --contact D), "PATH#NAME", one of a
-// stability.csv's sweep charts (stability_figures.h: sweepCharts), or "DIR/advise.csv", an
-// advise output folder (advise.csv with advise.json beside it: measure/advise_read.h) drawn as
-// advise.png is (advise_chart.h). Read, checked, drawn and its texts placed here, for every
-// command that shows a step.
+// stability.csv's sweep charts (stability_figures.h: sweepCharts), "PATH#NAME:P1,P2" only its
+// panels named so (ChartPanel::name, the bleed chart's settings), each given the plot area, or
+// "DIR/advise.csv", an advise output folder (advise.csv with advise.json beside it:
+// measure/advise_read.h) drawn as advise.png is (advise_chart.h). Read, checked, drawn and its
+// texts placed here, for every command that shows a step.
 #pragma once
 
 #include <cstddef>
@@ -40,11 +41,15 @@ struct StepChartRef {
     std::string view;  // "" or "contact" for a bench chart, a stability chart's name, else ""
     StepChartKind kind = StepChartKind::Bench;
     ChartAccuracy accuracy = ChartAccuracy::EdgeRmse;
+    // A stability chart's panels the step shows ("PATH#bleed:lbr,moment_format"); empty: all.
+    std::vector<std::string> panels = {};
     bool bench() const { return kind == StepChartKind::Bench; }
 };
 // The bench chart's view of its contact chart: "PATH#contact".
 inline constexpr std::string_view CONTACT_CHART_VIEW = "contact";
 StepChartRef stepChartRef(const std::string& chart);
+// "lbr, moment_format": panel names as a message lists them.
+std::string chartPanelList(const std::vector<std::string>& names);
 
 struct StepChart {
     std::string chart;      // "PATH" or "PATH#NAME"
