@@ -49,6 +49,14 @@ const float AMBIENT = 0.25f;
 const int BIAS_MODE = PCF_SCENE_BIAS;  // PCF_BIAS_NONE .. (shared/pcf_kernel.h)
 const bool SPOT = PCF_SCENE_SPOT != 0;  // false: directional
 
+// Where a receiver point is looked up in one layer of the map under the program's bias (shared/
+// pcf_shading.h pcfReceiverLookup; a map of cascades on its exact grid, pcfLightClip).
+PcfReceiverLookup layerLookup(PcfMapLayer layer, vec3 posWs, vec3 n, float cosTheta) {
+    return pcfReceiverLookup(layer.shadowClipFromWorld, posWs, n, cosTheta, BIAS_MODE,
+                             uConstantBias, uSlopeBias, uSlopeMax, uNormalOffset, layer.texelWs,
+                             PCF_MAP_LAYERS > 1);
+}
+
 #if PCF_MAP_LAYERS > 1
 // The receiver plane in one cascade's map, for a cascaded map: the lanes of a pixel quad that
 // straddles a split read different cascades, and the derivatives of their (u, v, z) would mix
@@ -58,9 +66,7 @@ const bool SPOT = PCF_SCENE_SPOT != 0;  // false: directional
 // (u, v, z) where the quad reads one cascade (Isidoro, "Shadow Mapping: GPU-based Tips and
 // Techniques", GDC 2006, pcfReceiverPlaneDzDuv). Called where every lane runs.
 vec3 layerUvz(PcfMapLayer layer, vec3 posWs, vec3 n, float cosTheta) {
-    PcfReceiverLookup at =
-        pcfReceiverLookup(layer.shadowClipFromWorld, posWs, n, cosTheta, BIAS_MODE, uConstantBias,
-                          uSlopeBias, uSlopeMax, uNormalOffset, layer.texelWs, true);
+    PcfReceiverLookup at = layerLookup(layer, posWs, n, cosTheta);
     return vec3(at.u, at.v, at.z);
 }
 
@@ -105,9 +111,7 @@ void main() {
     pcfMapLayer = layerIndex;
 #endif
     PcfMapLayer layer = uPcfMapLayers[layerIndex];
-    PcfReceiverLookup at = pcfReceiverLookup(layer.shadowClipFromWorld, vPosWs, n, cosTheta,
-                                             BIAS_MODE, uConstantBias, uSlopeBias, uSlopeMax,
-                                             uNormalOffset, layer.texelWs, PCF_MAP_LAYERS > 1);
+    PcfReceiverLookup at = layerLookup(layer, vPosWs, n, cosTheta);
     float u = at.u;
     float v = at.v;
     float z = at.z;
@@ -131,9 +135,7 @@ void main() {
     // in that cascade (layerDzDuv), taken here where every lane of the quad runs, and written out
     // (oNextReceiver) so that the CPU filters the band with the very same slope.
     PcfMapLayer nextLayer = uPcfMapLayers[min(layerIndex + 1, PCF_MAP_LAYERS - 1)];
-    PcfReceiverLookup next = pcfReceiverLookup(nextLayer.shadowClipFromWorld, vPosWs, n, cosTheta,
-                                               BIAS_MODE, uConstantBias, uSlopeBias, uSlopeMax,
-                                               uNormalOffset, nextLayer.texelWs, true);
+    PcfReceiverLookup next = layerLookup(nextLayer, vPosWs, n, cosTheta);
     vec2 nextDzduv = vec2(0.0f);
     if (PCF_ALL_TARGETS >= 2 || BIAS_MODE == PCF_BIAS_RECEIVER_PLANE) {
         nextDzduv = layerDzDuv(nextLayer, vec3(next.u, next.v, next.z), n, cosTheta);

@@ -61,6 +61,16 @@ std::string biasWords(const ShadowSettings& s) {
     return params.empty() ? words : words + " (" + params + ")";
 }
 
+// Receiver pixel k looked up in `layer` of render.json's map from its world position, normal and
+// cos(theta) (kernel/shading.h layerReceiverLookup, as scene.frag's layerLookup).
+PcfReceiverLookup pixelLookupIn(const RawImages& img, const RawSettings& r, size_t k,
+                                const PcfMapLayer& layer) {
+    const float* p = &img.positions.data[4 * k];
+    const float* n = &img.normals.data[4 * k];
+    return layerReceiverLookup(layer, r.settings, vec3(p[0], p[1], p[2]), vec3(n[0], n[1], n[2]),
+                               n[3], r.map->layers.size() > 1);
+}
+
 // The lookup of receiver pixel k as scene.frag made it (shaders/shared/pcf_shading.h
 // pcfReceiverLookup, the very function the shader runs), from its world position, its normal
 // and cos(theta), render.json's light matrix and bias: every bias mode recomputed exactly.
@@ -73,12 +83,7 @@ PcfReceiverLookup recomputedLookup(const RawImages& img, const RawSettings& r, s
     if (!recomputesWhole(img, r)) return PcfReceiverLookup(ls[0], ls[1], z0, z0, z0 - s.baseBias());
     // Past the last cascade scene.frag looks up in the last (and draws the pixel lit).
     int count = static_cast<int>(r.map->layers.size());
-    const PcfMapLayer& layer = *lookupLayer(r, std::min(pixelLayer(img, r, k), count - 1));
-    const float* p = &img.positions.data[4 * k];
-    const float* n = &img.normals.data[4 * k];
-    return pcfReceiverLookup(layer.shadowClipFromWorld, vec3(p[0], p[1], p[2]),
-                             vec3(n[0], n[1], n[2]), n[3], s.modeId(), s.constantBias, s.slopeBias,
-                             s.slopeMax, s.normalOffset, layer.texelWs, count > 1);
+    return pixelLookupIn(img, r, k, *lookupLayer(r, std::min(pixelLayer(img, r, k), count - 1)));
 }
 
 // Every receiver pixel's u, v, depth before bias and ref against recomputedLookup, within
@@ -258,12 +263,7 @@ VisibilityEnvelope blendedEnvelope(const RawImages& img, const RawSettings& r, s
                                     r.map->layers[static_cast<size_t>(layer)].viewDepth,
                                     s.cascadeBlend, layer, count);
     if (!(w > 0.0f)) return env;
-    const float* pos = &img.positions.data[4 * k];
-    const float* n = &img.normals.data[4 * k];
-    const PcfMapLayer& next = *lookupLayer(r, layer + 1);
-    PcfReceiverLookup at = pcfReceiverLookup(
-        next.shadowClipFromWorld, vec3(pos[0], pos[1], pos[2]), vec3(n[0], n[1], n[2]), n[3],
-        s.modeId(), s.constantBias, s.slopeBias, s.slopeMax, s.normalOffset, next.texelWs, true);
+    PcfReceiverLookup at = pixelLookupIn(img, r, k, *lookupLayer(r, layer + 1));
     const ShadowMap& map = img.layers[static_cast<size_t>(layer + 1)];
     if (s.rotate) p.rotation = pcfTexelRotation(vec2(at.u, at.v), ivec2(map.width(), map.height()));
     // checkLookups made sure the folder has the next planes receiver-plane bias needs.

@@ -192,9 +192,8 @@ PinnedLookup pinnedLookup(const Scene& scene, const glm::mat4& fit, const Lesson
     const glm::mat4& shadowClipFromWorld = layer.shadowClipFromWorld;
     glm::vec3 n = point.normalWs;
     glm::vec3 toLight = toLightWs(scene.light, point.posWs);
-    PcfReceiverLookup at = pcfReceiverLookup(
-        shadowClipFromWorld, point.posWs, n, glm::dot(n, toLight), s.modeId(), s.baseBias(),
-        s.slopeBias, s.slopeMax, s.normalOffset, layer.texelWs, map.layers.size() > 1);
+    PcfReceiverLookup at =
+        layerReceiverLookup(layer, s, point.posWs, n, glm::dot(n, toLight), map.layers.size() > 1);
     PinnedLookup out;
     out.uv = glm::vec2(at.u, at.v);
     out.z0 = at.z0;

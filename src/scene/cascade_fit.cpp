@@ -218,9 +218,7 @@ float cascadeLayerVisibility(const ShadowMap& map, int layer, const ShadowSettin
                              PcfParams prm, glm::vec3 posWs, glm::vec3 normalWs, float cosTheta,
                              glm::vec2 dzduv) {
     const PcfMapLayer& fit = map.spec().layers[static_cast<size_t>(layer)];
-    PcfReceiverLookup at = pcfReceiverLookup(fit.shadowClipFromWorld, posWs, normalWs, cosTheta,
-                                             s.modeId(), s.constantBias, s.slopeBias, s.slopeMax,
-                                             s.normalOffset, fit.texelWs, map.layers() > 1);
+    PcfReceiverLookup at = layerReceiverLookup(fit, s, posWs, normalWs, cosTheta, map.layers() > 1);
     if (s.rotate) prm.rotation = pcfTexelRotation(vec2(at.u, at.v), map.size());
     return filterLayerVisibility(map, layer, vec2(at.u, at.v), at.ref, prm, s.kernelBias(dzduv));
 }
